@@ -1,0 +1,43 @@
+# Every dependency is a Debian package found here; nothing is downloaded.
+find_package(PkgConfig REQUIRED)
+find_package(Threads REQUIRED)
+find_package(glm REQUIRED)
+find_package(nlohmann_json 3.10 REQUIRED)
+find_package(doctest REQUIRED)
+
+add_library(ks_glm INTERFACE)
+target_link_libraries(ks_glm INTERFACE glm::glm)
+# Radians everywhere, depth 0..1 not needed (GL default), experimental for gtx quaternion helpers.
+target_compile_definitions(ks_glm INTERFACE GLM_FORCE_RADIANS GLM_ENABLE_EXPERIMENTAL)
+
+add_library(ks_json INTERFACE)
+target_link_libraries(ks_json INTERFACE nlohmann_json::nlohmann_json)
+
+# stb from libstb-dev: headers plus libstb, which carries the compiled implementations.
+pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
+add_library(ks_stb INTERFACE)
+target_link_libraries(ks_stb INTERFACE PkgConfig::STB)
+
+if(KS_BUILD_GL)
+    find_package(OpenGL REQUIRED COMPONENTS OpenGL)
+    pkg_check_modules(GLFW3 REQUIRED IMPORTED_TARGET glfw3)
+    pkg_check_modules(EPOXY REQUIRED IMPORTED_TARGET epoxy)
+    pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
+    find_package(assimp REQUIRED)
+
+    add_library(ks_gl INTERFACE)
+    target_link_libraries(ks_gl INTERFACE PkgConfig::EPOXY PkgConfig::GLFW3 OpenGL::OpenGL)
+
+    # libimgui.a from libimgui-dev carries the GLFW and OpenGL3 backends; its pkg-config lists stb/glfw/epoxy.
+    add_library(ks_imgui INTERFACE)
+    target_include_directories(ks_imgui SYSTEM INTERFACE ${IMGUI_INCLUDE_DIRS})
+    target_link_libraries(ks_imgui INTERFACE ${IMGUI_LINK_LIBRARIES} PkgConfig::GLFW3 PkgConfig::EPOXY ${CMAKE_DL_LIBS})
+
+    add_library(ks_assimp INTERFACE)
+    if(TARGET assimp::assimp)
+        target_link_libraries(ks_assimp INTERFACE assimp::assimp)
+    else()
+        target_link_libraries(ks_assimp INTERFACE ${ASSIMP_LIBRARIES})
+        target_include_directories(ks_assimp SYSTEM INTERFACE ${ASSIMP_INCLUDE_DIRS})
+    endif()
+endif()

@@ -1,0 +1,27 @@
+#pragma once
+// File access that reports failures as values, and atomic writes: the data goes to a temporary file in the
+// same folder, is flushed to disk, then renamed over the target, so a crash mid-save leaves either the old
+// file or the new one, never a torn mix.
+#include "core/result.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace ks::files {
+
+Result<std::string> read_text(const std::filesystem::path& path);
+Result<void> write_atomic(const std::filesystem::path& path, std::string_view data);
+
+// Fault injection for tests: make the next atomic writes fail at a chosen stage, as a full disk, a crash
+// between write and rename, or a read-only folder would.
+enum class Fault : std::uint8_t {
+    None,
+    OpenTemp,      // the temporary file cannot be created (read-only folder)
+    ShortWrite,    // the disk fills up after half the data
+    BeforeRename,  // the process "dies" after writing the temp file, before the rename
+};
+void inject_fault(Fault fault); // applies to every write until reset with Fault::None
+
+} // namespace ks::files

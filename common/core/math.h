@@ -1,0 +1,37 @@
+#pragma once
+// The math vocabulary shared by every module: GLM types under short names, plus the few helpers that
+// several modules need. Angles are radians in code; level files store degrees.
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <cmath>
+#include <numbers>
+
+namespace ks {
+
+using Vec2 = glm::vec2;
+using Vec3 = glm::vec3;
+using Vec4 = glm::vec4;
+using Mat3 = glm::mat3;
+using Mat4 = glm::mat4;
+using Quat = glm::quat;
+using DVec3 = glm::dvec3;
+
+inline constexpr float kPi = std::numbers::pi_v<float>;
+
+constexpr float radians(float degrees) { return degrees * (kPi / 180.0f); }
+constexpr float degrees(float radians) { return radians * (180.0f / kPi); }
+
+inline bool is_finite(float v) { return std::isfinite(v); }
+inline bool is_finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+inline bool is_finite(const Quat& q) {
+    return std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z) && std::isfinite(q.w);
+}
+
+// Rotation from yaw (about +y), pitch (about +x), roll (about +z), applied roll, then pitch, then yaw
+// (radians); the order the level format documents.
+inline Quat quat_from_ypr(float yaw, float pitch, float roll) {
+    return glm::angleAxis(yaw, Vec3(0, 1, 0)) * glm::angleAxis(pitch, Vec3(1, 0, 0)) *
+           glm::angleAxis(roll, Vec3(0, 0, 1));
+}
+
+} // namespace ks

@@ -1,0 +1,50 @@
+#include "core/paths.h"
+
+#include <cstdlib>
+#include <unistd.h>
+
+namespace ks::paths {
+namespace fs = std::filesystem;
+
+namespace {
+bool holds_data(const fs::path& dir) {
+    std::error_code ec;
+    return fs::is_directory(dir / "assets", ec) && fs::is_directory(dir / "levels", ec);
+}
+
+fs::path find_data_root() {
+    if (const char* env = std::getenv("KS_DATA_DIR"); env && *env && holds_data(env)) return fs::path(env);
+    for (fs::path dir = executable_dir(); !dir.empty(); dir = dir.parent_path()) {
+        if (holds_data(dir)) return dir;
+        if (dir == dir.root_path()) break;
+    }
+#ifdef KS_SOURCE_DIR
+    if (holds_data(KS_SOURCE_DIR)) return fs::path(KS_SOURCE_DIR);
+#endif
+    return fs::current_path();
+}
+} // namespace
+
+fs::path executable_dir() {
+    std::error_code ec;
+    fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    if (ec) return fs::current_path();
+    return exe.parent_path();
+}
+
+const fs::path& data_root() {
+    static const fs::path root = find_data_root();
+    return root;
+}
+
+fs::path asset(std::string_view relative) { return data_root() / "assets" / relative; }
+fs::path level(std::string_view relative) { return data_root() / "levels" / relative; }
+
+fs::path resolve_user_path(const fs::path& given) {
+    std::error_code ec;
+    if (given.is_absolute() || fs::exists(given, ec)) return given;
+    if (fs::exists(data_root() / given, ec)) return data_root() / given;
+    return given;
+}
+
+} // namespace ks::paths

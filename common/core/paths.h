@@ -1,0 +1,18 @@
+#pragma once
+// Finding the data folders (assets/, levels/) from any working directory: next to the executable first
+// (an installed layout), then up from it (build/bin/ inside the source tree), then the source tree the
+// binary was built from. KS_DATA_DIR overrides all of them.
+#include <filesystem>
+#include <string_view>
+
+namespace ks::paths {
+
+std::filesystem::path executable_dir();
+// The folder that holds assets/ and levels/ (found once, then cached).
+const std::filesystem::path& data_root();
+std::filesystem::path asset(std::string_view relative);  // data_root()/assets/relative
+std::filesystem::path level(std::string_view relative);  // data_root()/levels/relative
+// A path given by the user: absolute or relative to the current folder, else relative to data_root().
+std::filesystem::path resolve_user_path(const std::filesystem::path& given);
+
+} // namespace ks::paths

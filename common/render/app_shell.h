@@ -1,0 +1,91 @@
+#pragma once
+// The window shell shared by the runtime and the editor: a GLFW window with an OpenGL 3.3+ core context,
+// Dear ImGui on its GLFW/OpenGL3 backends, a fixed-step loop, and the --screenshot/--frames mode that
+// renders N frames, writes a PNG and exits (used by tests and for looking at what we build).
+#include "core/result.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+struct GLFWwindow;
+struct ImFont;
+
+namespace ks {
+class CommandLine;
+}
+
+namespace ks::render {
+
+struct ShellConfig {
+    std::string title = "Killswitch";
+    int width = 1280;
+    int height = 720;
+    int msaa_samples = 4;
+    bool vsync = true;
+    double fixed_step = 1.0 / 120.0;
+    std::string screenshot_path; // when set: render `frames` frames, save, exit
+    int frames = 3;
+};
+
+// Reads --width, --height, --screenshot, --frames, --no-vsync into a config.
+Result<ShellConfig> shell_config_from_command_line(const CommandLine& cl, ShellConfig defaults);
+// The options shell_config_from_command_line understands (for the executables' unknown-option checks).
+const std::vector<std::string>& shell_options();
+
+// The fonts loaded for menus and HUD (assets/fonts/), at sizes good for 720p and 1080p.
+struct Fonts {
+    ImFont* body = nullptr;   // ~18 px at 720p
+    ImFont* title = nullptr;  // ~48 px
+    ImFont* hud = nullptr;    // ~24 px bold
+    ImFont* mono = nullptr;   // ~15 px monospace (debug text)
+};
+
+struct FrameInfo {
+    int width = 0, height = 0;  // framebuffer size in pixels
+    double frame_dt = 0.0;      // real (or, in screenshot mode, fixed 1/60 s) frame time
+    double alpha = 0.0;         // interpolation between the last two fixed steps
+    long long frame_index = 0;
+};
+
+struct ShellHooks {
+    std::function<void(double step)> fixed_update;     // called 0..n times per frame with the fixed step
+    std::function<void(const FrameInfo&)> render;       // draw the scene (GL)
+    std::function<void(const FrameInfo&)> imgui;        // build ImGui windows for this frame
+    std::function<bool()> wants_close;                  // return true to end the loop
+};
+
+// True when a window can be opened (an X11 or Wayland display is set).
+bool display_available();
+// The message printed when there is no display: how to run under xvfb-run instead.
+std::string no_display_message(const std::string& program);
+
+class AppShell {
+public:
+    static Result<AppShell*> create(const ShellConfig& config); // owned by caller via destroy()
+    static void destroy(AppShell* shell);
+
+    // Runs until the window closes or hooks.wants_close() says so; returns the process exit code.
+    int run(const ShellHooks& hooks);
+
+    GLFWwindow* window() const { return window_; }
+    const Fonts& fonts() const { return fonts_; }
+    const ShellConfig& config() const { return config_; }
+    bool screenshot_mode() const { return !config_.screenshot_path.empty(); }
+    std::string gl_renderer() const;
+
+private:
+    AppShell() = default;
+    ~AppShell();
+    Result<void> init(const ShellConfig& config);
+
+    ShellConfig config_;
+    GLFWwindow* window_ = nullptr;
+    Fonts fonts_;
+    bool imgui_ready_ = false;
+};
+
+// Reads the current framebuffer (bottom-up GL rows), flips it and writes an RGB PNG.
+Result<void> save_framebuffer_png(const std::string& path, int width, int height);
+
+} // namespace ks::render

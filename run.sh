@@ -1,0 +1,97 @@
+#!/usr/bin/env bash
+# Killswitch: one entry point for players, designers and CI.
+#   ./run.sh play     build (Release) and start the game
+#   ./run.sh test     build and run every test (under xvfb-run when there is no display)
+#   ./run.sh editor   build and start the level editor
+#   ./run.sh bench    build and run the benchmarks (tables on stdout, plots in docs/bench/)
+# Extra arguments after the command go to the program, e.g. ./run.sh play --level levels/dojo.json
+set -euo pipefail
+cd "$(dirname "$(readlink -f "$0")")"
+
+# The one list of Debian packages the project needs (build, run, test, bench).
+PACKAGES=(
+    build-essential cmake pkg-config git
+    libglfw3-dev libepoxy-dev libgl-dev libimgui-dev libglm-dev libassimp-dev nlohmann-json3-dev
+    libstb-dev doctest-dev
+    xvfb xauth libgl1-mesa-dri mesa-utils
+    gnuplot-nox
+)
+
+log() { printf '\033[1;34m[run.sh]\033[0m %s\n' "$*" >&2; }
+die() { printf '\033[1;31m[run.sh]\033[0m %s\n' "$*" >&2; exit 1; }
+
+install_missing_packages() {
+    local missing=()
+    for p in "${PACKAGES[@]}"; do
+        dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+    done
+    [ ${#missing[@]} -eq 0 ] && return 0
+    command -v apt-get >/dev/null || die "missing packages (${missing[*]}) and no apt-get: this needs Debian 12"
+    local sudo=""
+    if [ "$(id -u)" -ne 0 ]; then
+        command -v sudo >/dev/null || die "missing packages (${missing[*]}): run as root or install sudo"
+        sudo="sudo"
+    fi
+    log "installing missing packages: ${missing[*]}"
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+}
+
+jobs() { nproc 2>/dev/null || echo 2; }
+
+build() { # build PRESET
+    local preset="$1"
+    if [ ! -f "$(preset_dir "$preset")/CMakeCache.txt" ]; then
+        log "configuring ($preset)"
+        cmake --preset "$preset" >/dev/null
+    fi
+    log "building ($preset)"
+    cmake --build --preset "$preset" -j "$(jobs)"
+}
+
+preset_dir() {
+    case "$1" in release) echo build ;; debug) echo build-debug ;; asan) echo build-asan ;; esac
+}
+
+with_display() { # run a command, under a virtual X server when there is no display
+    if [ -n "${DISPLAY:-}" ] || [ -n "${WAYLAND_DISPLAY:-}" ]; then
+        "$@"
+    else
+        xvfb-run -a -s "-screen 0 1280x720x24" "$@"
+    fi
+}
+
+cmd="${1:-}"
+[ $# -gt 0 ] && shift
+case "$cmd" in
+    play)
+        install_missing_packages
+        build release
+        # Without a display, killswitch explains how to use xvfb-run and exits non-zero.
+        exec ./build/bin/killswitch "$@"
+        ;;
+    editor)
+        install_missing_packages
+        build release
+        exec ./build/bin/killswitch-editor "$@"
+        ;;
+    test)
+        install_missing_packages
+        build release
+        log "running tests"
+        export KS_TEST_TIMEOUT_SCALE=1
+        with_display ctest --test-dir build --output-on-failure -j "$(jobs)" "$@"
+        ;;
+    bench)
+        install_missing_packages
+        build release
+        mkdir -p docs/bench
+        with_display ./build/bin/ks_bench "${@:-all}"
+        ;;
+    ""|-h|--help|help)
+        sed -n '2,7p' "$0" | sed 's/^# \{0,1\}//'
+        ;;
+    *)
+        die "unknown command '$cmd' (use play, test, editor or bench)"
+        ;;
+esac

@@ -1,0 +1,34 @@
+#pragma once
+// Helpers shared by the test suites: where test data lives, scratch folders, running our binaries.
+#include <filesystem>
+#include <string>
+
+namespace ks::test {
+
+std::filesystem::path source_dir();            // the repository root
+std::filesystem::path data_dir();              // tests/data
+std::filesystem::path bin_dir();               // where killswitch, killswitch-editor live
+std::string read_file(const std::filesystem::path& path);
+
+// A fresh empty folder removed when the object dies.
+class ScratchDir {
+public:
+    ScratchDir();
+    ~ScratchDir();
+    ScratchDir(const ScratchDir&) = delete;
+    ScratchDir& operator=(const ScratchDir&) = delete;
+    const std::filesystem::path& path() const { return path_; }
+    std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+private:
+    std::filesystem::path path_;
+};
+
+struct CommandResult {
+    int exit_code = -1;
+    std::string output; // stdout and stderr together
+};
+// Runs a shell command line, capturing its output.
+CommandResult run_command(const std::string& command_line);
+
+} // namespace ks::test
