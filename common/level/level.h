@@ -1,0 +1,282 @@
+#pragma once
+// Level format v1: the one data model that the loader reads, the editor edits, and the game spawns from.
+// Each entity type's properties are defined once, as a struct with a visit() that lists every field with
+// its default, range, unit and tooltip; loading, saving, validation and the editor's inspector all walk
+// that list, so there are no parallel copies to keep in step. See docs/level-format.md.
+#include "core/math.h"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+namespace ks::level {
+
+inline constexpr std::string_view kFormatName = "killswitch-level";
+inline constexpr int kFormatVersion = 1;
+
+// Metadata a visitor receives with each field. Ranges are inclusive; a field outside its range is an error.
+struct FieldInfo {
+    const char* name;
+    const char* tooltip;
+    double min = -1e6;
+    double max = 1e6;
+    const char* unit = "";
+};
+
+// A colour as designers write it ("#ffcc80"), held as sRGB components in 0..1.
+struct Color {
+    float r = 1, g = 1, b = 1;
+    bool operator==(const Color&) const = default;
+};
+
+// An enumerated string field (pickup kind, texture names are free strings instead).
+struct Choice {
+    std::string value;
+    std::vector<std::string> options;
+    bool operator==(const Choice& o) const { return value == o.value; }
+};
+
+// ---- per-type properties -------------------------------------------------------------------------------
+// Positions: walls, stairs, doors, lights, robots, pickups, cylinders and the panel stand on `position`
+// (it is their bottom centre); floors have their walking surface at position.y (ceilings their underside).
+
+struct WallProps {
+    Vec3 size{10.0f, 16.0f, 0.5f}; // width (local x), height (y), thickness (z)
+    std::string texture = "concrete";
+    float texture_scale = 4.0f; // world units per texture repeat
+    template <class V>
+    void visit(V& v) {
+        v.field(size, {"size", "Width, height and thickness of the wall slab", 0.01, 1e4, "units"});
+        v.field(texture, {"texture", "Material name from assets/textures (concrete, wood, metal, tiles)"});
+        v.field(texture_scale, {"texture_scale", "World units covered by one repeat of the texture", 0.01, 1e4, "units"});
+    }
+    bool operator==(const WallProps&) const = default;
+};
+
+struct FloorProps {
+    Vec2 size{20.0f, 20.0f}; // extent along local x and z
+    float thickness = 0.5f;
+    bool ceiling = false; // a ceiling: the slab lies above position.y and faces down
+    std::string texture = "tiles";
+    float texture_scale = 2.0f;
+    template <class V>
+    void visit(V& v) {
+        v.field(size, {"size", "Extent along local x and z", 0.01, 1e4, "units"});
+        v.field(thickness, {"thickness", "Slab thickness (below the surface, or above it for a ceiling)", 0.01, 100, "units"});
+        v.field(ceiling, {"ceiling", "Acts as a ceiling: the slab is above position.y and faces down"});
+        v.field(texture, {"texture", "Material name from assets/textures"});
+        v.field(texture_scale, {"texture_scale", "World units covered by one repeat of the texture", 0.01, 1e4, "units"});
+    }
+    bool operator==(const FloorProps&) const = default;
+};
+
+struct StairProps {
+    Vec3 size{12.0f, 6.0f, 12.0f}; // width (x), total rise (y), run (z); rises toward local -z
+    int steps = 10;
+    std::string texture = "tiles";
+    template <class V>
+    void visit(V& v) {
+        v.field(size, {"size", "Width, total rise and total run; the stair rises toward its local -z", 0.01, 1e4, "units"});
+        v.field(steps, {"steps", "Number of steps", 1, 200});
+        v.field(texture, {"texture", "Material name from assets/textures"});
+    }
+    bool operator==(const StairProps&) const = default;
+};
+
+struct DoorProps {
+    float width = 5.0f;
+    float height = 5.0f;
+    bool open = false;          // initial state
+    float open_offset = 2.0f;   // how far each leaf slides sideways
+    float open_time = 0.5f;     // seconds to open or close
+    template <class V>
+    void visit(V& v) {
+        v.field(width, {"width", "Width of the doorway (two sliding leaves)", 0.5, 100, "units"});
+        v.field(height, {"height", "Height of the doorway", 0.5, 100, "units"});
+        v.field(open, {"open", "Open when the level starts"});
+        v.field(open_offset, {"open_offset", "How far each leaf slides when opening", 0, 100, "units"});
+        v.field(open_time, {"open_time", "Seconds to open or close", 0.01, 60, "s"});
+    }
+    bool operator==(const DoorProps&) const = default;
+};
+
+struct LightProps { // shared by floor_light (spot on a stand) and top_light (hanging point light)
+    Color color{1, 1, 1};
+    float intensity = 1.0f;
+    float range = 24.0f;
+    bool on = true;
+    template <class V>
+    void visit(V& v) {
+        v.field(color, {"color", "Light colour (sRGB hex)"});
+        v.field(intensity, {"intensity", "Brightness multiplier", 0, 100});
+        v.field(range, {"range", "Distance at which the light fades to nothing", 0.1, 1000, "units"});
+        v.field(on, {"on", "Lit when the level starts (E toggles floor lights)"});
+    }
+    bool operator==(const LightProps&) const = default;
+};
+
+struct FloorLightProps {
+    LightProps light{{1, 1, 1}, 0.8f, 20.0f, true};
+    float cone_angle = 35.0f; // half-angle of the spot, degrees
+    float height = 4.0f;      // lamp stand height
+    template <class V>
+    void visit(V& v) {
+        light.visit(v);
+        v.field(cone_angle, {"cone_angle", "Half-angle of the spot light cone", 1, 89, "deg"});
+        v.field(height, {"height", "Height of the lamp stand", 0.5, 20, "units"});
+    }
+    bool operator==(const FloorLightProps&) const = default;
+};
+
+struct TopLightProps {
+    LightProps light{{1, 1, 1}, 1.0f, 24.0f, true};
+    float hang = 2.0f; // the bulb hangs this far below position.y (the fixture is at the ceiling)
+    template <class V>
+    void visit(V& v) {
+        light.visit(v);
+        v.field(hang, {"hang", "How far below the fixture the bulb hangs", 0, 20, "units"});
+    }
+    bool operator==(const TopLightProps&) const = default;
+};
+
+struct RobotProps {
+    float health = 100.0f;
+    float velocity = 8.0f;             // chase speed
+    float rotation_velocity = 8.0f;    // turn rate
+    float shooting_distance = 11.0f;   // stops and shoots at or inside this distance
+    float eye_radius_min = 19.0f;      // notices the player inside this distance (with line of sight)
+    float eye_radius_max = 25.0f;      // keeps following inside this distance
+    float cooldown = 1.0f;             // seconds between shots
+    float hit_probability = 0.7f;      // chance that a shot is fired at all
+    float angry_duration = 10.0f;      // after being shot, follows regardless of distance
+    float damage = 10.0f;              // damage per hit on the player
+    template <class V>
+    void visit(V& v) {
+        v.field(health, {"health", "Hit points", 1, 1e5});
+        v.field(velocity, {"velocity", "Chase speed", 0, 200, "units/s"});
+        v.field(rotation_velocity, {"rotation_velocity", "Turn rate", 0, 100, "rad/s"});
+        v.field(shooting_distance, {"shooting_distance", "Stops and shoots at or inside this distance", 0, 1000, "units"});
+        v.field(eye_radius_min, {"eye_radius_min", "Notices the player inside this distance, with line of sight", 0, 1000, "units"});
+        v.field(eye_radius_max, {"eye_radius_max", "Keeps following the player inside this distance", 0, 1000, "units"});
+        v.field(cooldown, {"cooldown", "Seconds between shots", 0, 60, "s"});
+        v.field(hit_probability, {"hit_probability", "Chance that a shot is fired at all", 0, 1});
+        v.field(angry_duration, {"angry_duration", "After being shot, follows regardless of distance for this long", 0, 600, "s"});
+        v.field(damage, {"damage", "Damage dealt to the player per hit", 0, 1000});
+    }
+    bool operator==(const RobotProps&) const = default;
+};
+
+struct PickupProps {
+    Choice kind{"health", {"health", "ammo", "shield"}};
+    float amount = 10.0f;
+    template <class V>
+    void visit(V& v) {
+        v.field(kind, {"kind", "What the pickup restores"});
+        v.field(amount, {"amount", "How much it adds (capped at the player's maximum)", 0, 10000});
+    }
+    bool operator==(const PickupProps&) const = default;
+};
+
+struct GasCylinderProps {
+    float radius = 0.5f;
+    float height = 2.0f;
+    float damage = 30.0f;          // at the centre of the blast; falls off with distance
+    float blast_radius = 7.0f;
+    float explosion_power = 25.0f; // knock-back speed
+    template <class V>
+    void visit(V& v) {
+        v.field(radius, {"radius", "Cylinder radius", 0.05, 10, "units"});
+        v.field(height, {"height", "Cylinder height", 0.1, 20, "units"});
+        v.field(damage, {"damage", "Damage at the centre of the blast", 0, 1000});
+        v.field(blast_radius, {"blast_radius", "Radius of the blast", 0, 100, "units"});
+        v.field(explosion_power, {"explosion_power", "Knock-back speed given to bodies in the blast", 0, 500, "units/s"});
+    }
+    bool operator==(const GasCylinderProps&) const = default;
+};
+
+struct ControlPanelProps {
+    Vec3 size{2.94f, 4.0f, 5.34f};
+    template <class V>
+    void visit(V& v) {
+        v.field(size, {"size", "Collision box of the console", 0.1, 100, "units"});
+    }
+    bool operator==(const ControlPanelProps&) const = default;
+};
+
+// The variant's order is the EntityType order.
+using Props = std::variant<WallProps, FloorProps, StairProps, DoorProps, FloorLightProps, TopLightProps, RobotProps,
+                           PickupProps, GasCylinderProps, ControlPanelProps>;
+
+enum class EntityType : std::uint8_t {
+    Wall, Floor, Stair, Door, FloorLight, TopLight, Robot, Pickup, GasCylinder, ControlPanel, Count
+};
+
+// "wall", "floor", "stair", "door", "floor_light", "top_light", "robot", "pickup", "gas_cylinder", "control_panel"
+std::string_view type_name(EntityType type);
+bool type_from_name(std::string_view name, EntityType& out);
+const std::array<EntityType, static_cast<size_t>(EntityType::Count)>& all_types();
+Props default_props(EntityType type);
+
+struct Entity {
+    int id = 0;               // stable, unique within the level, never reused
+    std::string name;         // free text shown in the editor's outliner
+    Vec3 position{0.0f};
+    Vec3 rotation{0.0f};      // yaw (about +y), pitch (about +x), roll (about +z), degrees
+    Props props;
+
+    EntityType type() const { return static_cast<EntityType>(props.index()); }
+    template <class T> T& as() { return std::get<T>(props); }
+    template <class T> const T& as() const { return std::get<T>(props); }
+    template <class T> T* try_as() { return std::get_if<T>(&props); }
+    template <class T> const T* try_as() const { return std::get_if<T>(&props); }
+    Quat orientation() const { return quat_from_ypr(radians(rotation.x), radians(rotation.y), radians(rotation.z)); }
+    bool operator==(const Entity&) const = default;
+};
+
+struct Settings {
+    Color ambient_color{0.55f, 0.6f, 0.7f};
+    float ambient_intensity = 0.2f;
+    Color fog_color{0.05f, 0.06f, 0.08f};
+    float fog_density = 0.004f; // exponential fog; 0 disables
+    Vec3 sun_direction{-0.3f, -1.0f, -0.2f}; // the direction sunlight travels (normalised on load)
+    Color sun_color{1.0f, 0.96f, 0.9f};
+    float sun_intensity = 0.1f;
+    float gravity = -25.0f; // units/s^2 along y
+    template <class V>
+    void visit(V& v) {
+        v.field(ambient_color, {"ambient_color", "Colour of the ambient light"});
+        v.field(ambient_intensity, {"ambient_intensity", "Ambient light strength", 0, 10});
+        v.field(fog_color, {"fog_color", "Colour of the fog"});
+        v.field(fog_density, {"fog_density", "Exponential fog density (0 = no fog)", 0, 1});
+        v.field(sun_direction, {"sun_direction", "Direction the sunlight travels", -1, 1});
+        v.field(sun_color, {"sun_color", "Colour of the sun"});
+        v.field(sun_intensity, {"sun_intensity", "Sun strength", 0, 100});
+        v.field(gravity, {"gravity", "Vertical acceleration (negative is down)", -1000, 0, "units/s^2"});
+    }
+    bool operator==(const Settings&) const = default;
+};
+
+struct PlayerStart {
+    Vec3 position{0.0f}; // feet
+    float yaw = 0.0f;    // degrees; 0 faces -z
+    bool operator==(const PlayerStart&) const = default;
+};
+
+struct Level {
+    std::string name = "Untitled";
+    Settings settings;
+    PlayerStart player_start;
+    int next_id = 1;
+    std::vector<Entity> entities;
+
+    Entity* find(int id);
+    const Entity* find(int id) const;
+    // Adds an entity with a fresh id (next_id, then increments it) and returns it.
+    Entity& add(EntityType type, Vec3 position = Vec3(0.0f), std::string name = {});
+    bool operator==(const Level&) const = default;
+};
+
+} // namespace ks::level
