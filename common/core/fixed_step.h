@@ -16,9 +16,11 @@ public:
     int advance(double frame_dt) {
         if (!(frame_dt > 0.0)) frame_dt = 0.0; // dt = 0, negative or NaN adds nothing
         accumulator_ += frame_dt;
-        int steps = static_cast<int>(accumulator_ / step_);
+        // The small tolerance keeps rounding in the running sum from losing a step (1.0 s at 120 Hz must be
+        // 120 steps, not 119 and a remainder of 0.99999 step).
+        int steps = static_cast<int>(accumulator_ / step_ + 1e-7);
         steps = std::min(steps, max_steps_);
-        accumulator_ -= steps * step_;
+        accumulator_ = std::max(0.0, accumulator_ - steps * step_);
         total_steps_ += steps;
         return steps;
     }
