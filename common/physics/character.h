@@ -1,0 +1,69 @@
+#pragma once
+// Character controller used by the player and the robots: an upright capsule moved by swept
+// collide-and-slide. Each pass sweeps the capsule along what is left of the step's displacement
+// (conservative advancement on exact capsule distances, so a 5 cm wall stops a 50 m/s body), stops a skin
+// short of the first contact, and clips the rest of the motion against the contact planes seen so far:
+// one plane slides along it, two slide along their crease, a third stops. Then it steps up onto ledges
+// up to step_height, snaps down to the ground (not while rising from a jump) and resolves any remaining
+// overlap (e.g. a door leaf closing on it) by pushing out along the contact normals.
+#include "physics/collide.h"
+#include "physics/movement.h"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace ks::physics {
+
+struct CharacterSettings {
+    float step_height = 0.65f;       // climbs the 0.6-unit steps of box-built stairs
+    float max_slope_degrees = 50.0f; // the stair ramps are 26.6°
+    float skin = 0.01f;              // gap kept to surfaces, so resting contact is stable
+    float ground_snap = 0.7f;        // follows downward ramps and steps while walking
+    int max_slide_planes = 5;
+};
+
+struct CharacterState {
+    MovementState movement;
+    bool grounded = false;
+    bool jumping = false; // set by jump(), cleared on landing; disables ground snap while rising
+    Vec3 ground_normal{0.0f, 1.0f, 0.0f};
+};
+
+// One obstacle as the controller sees it: a shape placed in the world. `id` is opaque to the controller.
+struct Obstacle {
+    const Shape* shape = nullptr;
+    Transform transform;
+    std::uint32_t id = 0;
+    bool yaw_only = false;
+};
+
+// A contact the character made during its move (reported to collision callbacks).
+struct CharacterContact {
+    std::uint32_t obstacle_id = 0;
+    Contact contact; // normal points from the obstacle toward the character
+};
+
+// Where obstacles come from: the world gathers those whose bounds overlap a box.
+class ObstacleSource {
+  public:
+    virtual ~ObstacleSource() = default;
+    virtual void gather(const Aabb& region, std::vector<Obstacle>& out) const = 0;
+};
+
+struct CharacterScratch { // reused across calls: no allocation per step once warm
+    std::vector<Obstacle> obstacles;
+    std::vector<CharacterContact> contacts;
+};
+
+// Moves a capsule (radius, half segment) at `position` by one step of `dt`. Contacts go to scratch.contacts.
+void move_character(const ObstacleSource& world, float radius, float half_segment,
+                    const CharacterSettings& cs, CharacterState& state, Vec3& position, float dt,
+                    CharacterScratch& scratch);
+
+// Time of impact in [0, 1] of a capsule moving by `motion` against one obstacle, stopping `skin` short;
+// returns 1 when it does not hit. `normal` gets the contact normal at impact.
+float sweep_capsule(const Segment& s, float radius, const Vec3& motion, const Obstacle& o, float skin,
+                    Vec3& normal);
+
+} // namespace ks::physics

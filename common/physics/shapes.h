@@ -1,0 +1,110 @@
+#pragma once
+// The collision shapes a Killswitch scene needs, each modelled exactly (no polygonised curves):
+//   Box      oriented box: walls, floors, door leaves, pickups, the control panel
+//   Wedge    half-box ramp: the stairs' collision (rises toward local -z, like level StairProps)
+//   Capsule  upright capsule: player and robots (characters)
+//   Cylinder upright cylinder: gas cylinders, floor-light stands (static props)
+//   Hull     convex polyhedron built from a mesh's vertices, for any other prop
+// Every shape is centred on its body's position (the centre of its bounding box), in the body's frame.
+// Capsules and cylinders stay upright: their body rotation is ignored except for yaw (a no-op for them).
+#include "core/math.h"
+#include "core/result.h"
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace ks::physics {
+
+struct Transform {
+    Vec3 position{0.0f};
+    Quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
+
+    Vec3 to_world(const Vec3& local) const { return position + rotation * local; }
+    Vec3 to_local(const Vec3& world) const { return glm::conjugate(rotation) * (world - position); }
+    Vec3 dir_to_world(const Vec3& local) const { return rotation * local; }
+    Vec3 dir_to_local(const Vec3& world) const { return glm::conjugate(rotation) * world; }
+};
+
+struct Aabb {
+    Vec3 min{0.0f};
+    Vec3 max{0.0f};
+    bool overlaps(const Aabb& o) const {
+        return min.x <= o.max.x && o.min.x <= max.x && min.y <= o.max.y && o.min.y <= max.y &&
+               min.z <= o.max.z && o.min.z <= max.z;
+    }
+    Aabb expanded(float by) const { return {min - Vec3(by), max + Vec3(by)}; }
+    Vec3 centre() const { return (min + max) * 0.5f; }
+    float surface_area() const {
+        Vec3 d = max - min;
+        return 2.0f * (d.x * d.y + d.y * d.z + d.z * d.x);
+    }
+    void grow(const Vec3& p) {
+        min = glm::min(min, p);
+        max = glm::max(max, p);
+    }
+    void grow(const Aabb& b) {
+        min = glm::min(min, b.min);
+        max = glm::max(max, b.max);
+    }
+    static Aabb empty() { return {Vec3(3.4e38f), Vec3(-3.4e38f)}; }
+};
+
+// A convex polyhedron in local coordinates: vertices, polygonal faces (coplanar triangles merged) with
+// centre, outward unit normal and plane offset (normal·x = offset on the face), unique edges, and the edge
+// directions that are distinct up to sign (what SAT needs for its edge×edge axes).
+struct Polyhedron {
+    struct Face {
+        Vec3 normal{0.0f};
+        float offset = 0.0f;
+        Vec3 centre{0.0f};
+        std::uint16_t first = 0; // into face_vertices, counter-clockwise seen from outside
+        std::uint16_t count = 0;
+    };
+    std::vector<Vec3> vertices;
+    std::vector<Face> faces;
+    std::vector<std::uint16_t> face_vertices;
+    std::vector<std::array<std::uint16_t, 2>> edges;
+    std::vector<Vec3> edge_directions; // unit, distinct up to sign
+    Aabb bounds;
+
+    std::span<const std::uint16_t> face_indices(const Face& f) const {
+        return {face_vertices.data() + f.first, f.count};
+    }
+};
+
+// Box with half extents `half`, and the stair wedge inside the same bounding box.
+Polyhedron make_box_polyhedron(const Vec3& half);
+Polyhedron make_wedge_polyhedron(const Vec3& half);
+
+// Builds the convex hull of a mesh's vertices (a prop's collision mesh). Duplicate vertices are welded,
+// coplanar triangles merged into polygons. Errors (as values, naming `source`): fewer than 4 distinct
+// points, all points coplanar (zero volume), non-finite or absurd (> 1e6) coordinates, too many points.
+Result<Polyhedron> build_convex_hull(std::span<const Vec3> points, const std::string& source);
+
+enum class ShapeKind : std::uint8_t { Box, Wedge, Capsule, Cylinder, Hull };
+
+struct Shape {
+    ShapeKind kind = ShapeKind::Box;
+    Vec3 half_extents{0.5f};  // box/wedge/hull: half size of the local bounding box
+    float radius = 0.0f;      // capsule, cylinder
+    float half_height = 0.0f; // capsule: half length of the core segment; cylinder: half height
+    std::shared_ptr<const Polyhedron> polyhedron; // wedge and hull (boxes build theirs on demand)
+
+    static Shape box(const Vec3& half);
+    static Shape wedge(const Vec3& half);
+    // Upright capsule of total height 2·(half_segment + radius).
+    static Shape capsule(float radius, float half_segment);
+    static Shape cylinder(float radius, float half_height);
+    static Shape hull(Polyhedron polyhedron);
+
+    // Validates sizes (finite, > 0, < 1e5): a clear error instead of NaN later.
+    Result<void> validate(const std::string& what) const;
+    // World bounding box of the shape under `xf` (exact for boxes: |R|·half).
+    Aabb bounds(const Transform& xf) const;
+};
+
+} // namespace ks::physics

@@ -1,0 +1,204 @@
+#pragma once
+// The physics world: static bodies (in a SAH BVH, rebuilt only when the static set changes), kinematic
+// bodies (door leaves: moved by the game), characters (player, robots: moved by the character controller)
+// and triggers (pickups, gas-cylinder surrounds, door sensors: report enter/stay/exit, never block).
+// Bodies are named by handles with a generation, so a stale handle is detected instead of dangling.
+// One step: integrate and move every character (index order, deterministic), collect contacts and trigger
+// overlaps (broadphase: BVH for statics, sort-and-sweep on x for everything that moves), then dispatch
+// callbacks. Callbacks run after the step's collision pass, so adding or removing bodies inside one is safe
+// (removed bodies get no further events). Nothing allocates per step once buffers are warm.
+#include "core/fixed_step.h"
+#include "core/result.h"
+#include "physics/bvh.h"
+#include "physics/character.h"
+
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <vector>
+
+namespace ks::physics {
+
+// What a body is (its `layers`) and what a query or a character looks for (masks).
+namespace layer {
+inline constexpr std::uint32_t kSolid = 1u << 0;       // blocks characters
+inline constexpr std::uint32_t kShootable = 1u << 1;   // shots stop on it
+inline constexpr std::uint32_t kBlocksSight = 1u << 2; // robots cannot see through it
+inline constexpr std::uint32_t kCharacter = 1u << 3;
+inline constexpr std::uint32_t kTrigger = 1u << 4;
+inline constexpr std::uint32_t kAll = 0xffffffffu;
+inline constexpr std::uint32_t kDefault = kSolid | kShootable | kBlocksSight;
+} // namespace layer
+
+struct BodyId {
+    std::uint32_t index = 0xffffffffu;
+    std::uint32_t generation = 0;
+    bool is_null() const { return index == 0xffffffffu; }
+    bool operator==(const BodyId&) const = default;
+};
+
+enum class Motion : std::uint8_t { Static, Kinematic, Character };
+
+struct BodyDesc {
+    Shape shape;
+    Transform transform;
+    Motion motion = Motion::Static;
+    bool trigger = false;                                            // overlaps reported, never blocks
+    std::uint32_t layers = layer::kDefault;                          // what this body is
+    std::uint32_t collides_with = layer::kSolid | layer::kCharacter; // characters: what blocks them
+    std::uint64_t user_data = 0;
+    CharacterSettings character; // Motion::Character only
+    MovementState movement;      // Motion::Character only: initial velocity, gravity, max speed
+};
+
+// The reference's onCollision(other, point, normal, penetration, dt), for body `self`.
+struct Collision {
+    BodyId self, other;
+    Vec3 point{0.0f};
+    Vec3 normal{0.0f}; // points from `other` toward `self`
+    float penetration = 0.0f;
+    float dt = 0.0f;
+};
+
+struct TriggerEvent {
+    enum class Kind : std::uint8_t { Enter, Stay, Exit } kind = Kind::Enter;
+    BodyId trigger, other;
+};
+
+struct RayHit {
+    BodyId body;
+    Vec3 point{0.0f};
+    Vec3 normal{0.0f};
+    float distance = 0.0f;
+};
+
+struct RayFilter {
+    std::uint32_t layers = layer::kAll & ~layer::kTrigger; // hit bodies having any of these layers
+    BodyId ignore;                                         // e.g. the shooter's own capsule
+};
+
+enum class HitOrder : std::uint8_t { Ascending, Descending };
+
+struct WorldSettings {
+    double step = 1.0 / 120.0;     // fixed step, seconds
+    int max_steps_per_frame = 240; // a 2 s hitch is caught up in one frame; more waits for the next
+};
+
+class World {
+  public:
+    using CollisionCallback = std::function<void(World&, const Collision&)>;
+    using TriggerCallback = std::function<void(World&, const TriggerEvent&)>;
+
+    explicit World(WorldSettings settings = {});
+
+    // Validates the shape and transform (finite, sane sizes); errors name the body's `what`.
+    Result<BodyId> add(const BodyDesc& desc, const std::string& what = "body");
+    void remove(BodyId id);
+    bool valid(BodyId id) const;
+    // Disabled bodies are skipped by every query and the step (a collected pickup, a dead robot).
+    void set_enabled(BodyId id, bool enabled);
+    bool enabled(BodyId id) const;
+
+    Transform transform(BodyId id) const;
+    // Moves a body (kinematic doors; teleporting a character). Static bodies trigger a BVH refit later.
+    void set_transform(BodyId id, const Transform& xf);
+    // Position between the previous and the current step (alpha from advance()).
+    Vec3 interpolated_position(BodyId id, float alpha) const;
+    const Shape& shape(BodyId id) const;
+    std::uint64_t user_data(BodyId id) const;
+    std::uint32_t layers(BodyId id) const;
+
+    // Characters: velocity, gravity etc.; grounded state.
+    CharacterState& character(BodyId id);
+    const CharacterState& character(BodyId id) const;
+    // Sets vy = speed when grounded; returns whether it jumped.
+    bool jump(BodyId id, float speed);
+
+    void set_on_collision(BodyId id, CollisionCallback callback);
+    void set_on_trigger(BodyId trigger, TriggerCallback callback);
+
+    // One fixed step of `dt` seconds (dt <= 0 or NaN does nothing).
+    void step(float dt);
+    // Frame time in; runs the fixed steps due; returns the interpolation alpha in [0, 1).
+    float advance(double frame_dt);
+    const FixedStepClock& clock() const { return clock_; }
+
+    // Events of the last step (also dispatched to callbacks).
+    std::span<const Collision> collisions() const { return collisions_; }
+    std::span<const TriggerEvent> trigger_events() const { return trigger_events_; }
+
+    // Ray queries over static, kinematic and character bodies (triggers only if the filter asks).
+    bool ray_closest(const Ray& ray, RayHit& hit, const RayFilter& filter = {}) const;
+    bool ray_any(const Ray& ray, const RayFilter& filter = {}) const;
+    // Appends every hit (one per body) to `hits`, sorted; returns how many. No allocation when `hits` has
+    // capacity.
+    int ray_all(const Ray& ray, std::vector<RayHit>& hits, HitOrder order = HitOrder::Ascending,
+                const RayFilter& filter = {}) const;
+    // Bodies whose shape overlaps a capsule (the editor's walkability check, spawn checks).
+    int overlap_capsule(const Segment& s, float radius, std::vector<BodyId>& out,
+                        std::uint32_t layers = layer::kSolid) const;
+
+    // Rebuilds the static BVH now (otherwise done lazily by the next query or step after a change).
+    void build_static() const;
+    std::size_t body_count() const { return live_count_; }
+    const Bvh& static_bvh() const;
+
+  private:
+    struct Body {
+        Shape shape;
+        Transform transform;
+        Vec3 previous_position{0.0f};
+        Aabb bounds;
+        std::uint32_t generation = 0;
+        std::uint32_t layers = 0;
+        std::uint32_t collides_with = 0;
+        std::uint32_t character_slot = 0xffffffffu;
+        std::uint64_t user_data = 0;
+        Motion motion = Motion::Static;
+        bool trigger = false;
+        bool alive = false;
+        bool enabled = true;
+        bool yaw_only = false;
+    };
+    struct CharacterData {
+        std::uint32_t body = 0;
+        CharacterSettings settings;
+        CharacterState state;
+    };
+    class Obstacles;
+    friend class Obstacles;
+
+    Body* get(BodyId id);
+    const Body* get(BodyId id) const;
+    BodyId id_of(std::uint32_t index) const { return {index, bodies_[index].generation}; }
+    void mark_static_dirty() { static_dirty_ = true; }
+    bool ray_body(const Ray& ray, std::uint32_t index, ShapeHit& hit) const;
+    void update_triggers(float dt);
+    void dispatch();
+
+    WorldSettings settings_;
+    FixedStepClock clock_;
+    std::vector<Body> bodies_;
+    std::vector<std::uint32_t> free_slots_;
+    std::vector<CharacterData> characters_;
+    std::vector<CollisionCallback> on_collision_; // by body index
+    std::vector<TriggerCallback> on_trigger_;     // by body index
+    std::size_t live_count_ = 0;
+
+    // Static set: BVH over static bodies (non-trigger), rebuilt lazily.
+    mutable Bvh static_bvh_;
+    mutable std::vector<std::uint32_t> static_items_; // BVH item -> body index
+    mutable bool static_dirty_ = true;
+    // Moving set (kinematic, characters, triggers), sorted by min x each step for sort-and-sweep.
+    std::vector<std::uint32_t> movers_;
+    std::vector<std::uint32_t> static_triggers_;
+
+    // Per-step buffers, reused.
+    CharacterScratch scratch_;
+    std::vector<Collision> collisions_;
+    std::vector<TriggerEvent> trigger_events_;
+    std::vector<std::uint64_t> trigger_pairs_;      // (trigger index << 32 | other index), sorted, this step
+    std::vector<std::uint64_t> trigger_pairs_prev_; // last step
+};
+
+} // namespace ks::physics
