@@ -1,0 +1,46 @@
+#pragma once
+// Collects the problems found while reading or validating a level, each pinned to a JSON path and -- when
+// the text is at hand -- to its line:column, so that loading can report every problem at once.
+#include "level/json_positions.h"
+#include "level/level_io.h"
+
+#include <set>
+#include <string>
+#include <vector>
+
+namespace ks::level {
+
+class DiagnosticSink {
+  public:
+    explicit DiagnosticSink(std::string file, const PositionMap* positions = nullptr)
+        : file_(std::move(file)), positions_(positions) {}
+
+    void error(const std::string& path, std::string message, std::string hint = {});
+    void warning(const std::string& path, std::string message, std::string hint = {});
+    // An error at a known text position (syntax errors, before any path exists).
+    void error_at(TextPosition pos, const std::string& path, std::string message, std::string hint = {});
+
+    // A path whose value was already reported (e.g. a number that overflowed before parsing); readers skip it
+    // so one mistake gives one message.
+    void mark_reported(const std::string& path) { reported_.insert(path); }
+    bool already_reported(const std::string& path) const { return reported_.count(path) > 0; }
+
+    bool has_errors() const;
+    const std::string& file() const { return file_; }
+    // Diagnostics in document order (those without a position last, in the order they were found).
+    std::vector<Diagnostic> take_sorted();
+
+  private:
+    void add(Diagnostic::Severity severity, TextPosition pos, const std::string& path, std::string message,
+             std::string hint);
+    std::string file_;
+    const PositionMap* positions_;
+    std::vector<Diagnostic> list_;
+    std::set<std::string> reported_;
+};
+
+// "did you mean" help: the candidate closest to `word` by edit distance, or "" when none is close.
+std::string closest_match(std::string_view word, const std::vector<std::string>& candidates);
+std::string join(const std::vector<std::string>& words, std::string_view separator = ", ");
+
+} // namespace ks::level

@@ -1,0 +1,154 @@
+#include "level/level_checks.h"
+
+#include "level/json_text.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+namespace ks::level {
+namespace {
+
+std::string number_text(float v) {
+    return json_text::format_number(json_text::float_to_double(v));
+}
+
+std::string range_text(const FieldInfo& info) {
+    std::string out = json_text::format_number(info.min) + " .. " + json_text::format_number(info.max);
+    if (info.unit && *info.unit) out += std::string(" ") + info.unit;
+    return out;
+}
+
+void check_number(double v, const std::string& shown, const std::string& path, const FieldInfo& info,
+                  DiagnosticSink& sink) {
+    if (!std::isfinite(v)) {
+        sink.error(path, "value is " + shown + " (not a finite number)", "valid: " + range_text(info));
+    } else if (v < info.min || v > info.max) {
+        std::string hint = "valid: " + range_text(info);
+        if (info.tooltip && *info.tooltip) hint += " (" + std::string(info.tooltip) + ")";
+        sink.error(path, shown + " is out of range", hint);
+    }
+}
+
+// The read-only twin of FieldReader: walks the same visit() list and checks each value.
+class FieldChecker {
+  public:
+    FieldChecker(std::string path, DiagnosticSink& sink) : path_(std::move(path)), sink_(sink) {}
+
+    void field(float& v, const FieldInfo& info) {
+        check_number(v, number_text(v), path_of(info), info, sink_);
+    }
+    void field(int& v, const FieldInfo& info) {
+        check_number(v, std::to_string(v), path_of(info), info, sink_);
+    }
+    void field(bool&, const FieldInfo&) {}
+    void field(std::string& v, const FieldInfo& info) {
+        if (std::string_view(info.name) == "texture" && v.empty())
+            sink_.error(path_of(info), "texture name is empty",
+                        "name a material from assets/textures, e.g. \"concrete\"");
+    }
+    template <int N>
+    void field(glm::vec<N, float>& v, const FieldInfo& info) {
+        for (int i = 0; i < N; ++i)
+            check_number(v[i], number_text(v[i]), element_path(path_of(info), i), info, sink_);
+    }
+    void field(Color& c, const FieldInfo& info) {
+        const FieldInfo unit_range{info.name, info.tooltip, 0, 1, ""};
+        const float components[3] = {c.r, c.g, c.b};
+        static const char* const kNames[3] = {"red", "green", "blue"};
+        for (int i = 0; i < 3; ++i) {
+            if (!std::isfinite(components[i]) || components[i] < 0 || components[i] > 1)
+                check_number(components[i], std::string(kNames[i]) + " " + number_text(components[i]),
+                             path_of(info), unit_range, sink_);
+        }
+    }
+    void field(Choice& v, const FieldInfo& info) {
+        if (std::find(v.options.begin(), v.options.end(), v.value) == v.options.end())
+            sink_.error(path_of(info), "unknown " + std::string(info.name) + " \"" + v.value + "\"",
+                        "valid: " + join(v.options));
+    }
+
+  private:
+    std::string path_of(const FieldInfo& info) const { return member_path(path_, info.name); }
+    std::string path_;
+    DiagnosticSink& sink_;
+};
+
+// visit() is a non-const member (the same list serves readers that write); the checker only reads.
+template <class T>
+void check_fields(const T& object, const std::string& path, DiagnosticSink& sink) {
+    FieldChecker checker(path, sink);
+    const_cast<T&>(object).visit(checker);
+}
+
+void check_placement(const Vec3& position, const Vec3& rotation, const std::string& path,
+                     DiagnosticSink& sink) {
+    FieldChecker checker(path, sink);
+    Vec3 p = position, r = rotation;
+    checker.field(p, {"position", "Bottom centre of the entity", -kPositionLimit, kPositionLimit, "units"});
+    checker.field(r, {"rotation", "Yaw, pitch, roll", -kAngleLimit, kAngleLimit, "deg"});
+}
+
+} // namespace
+
+void check_entity(const Entity& entity, const std::string& path, DiagnosticSink& sink) {
+    if (entity.id < 1)
+        sink.error(member_path(path, "id"), "id " + std::to_string(entity.id) + " is not positive",
+                   "ids are whole numbers >= 1");
+    check_placement(entity.position, entity.rotation, path, sink);
+    const std::string props_path = member_path(path, "props");
+    std::visit([&](const auto& props) { check_fields(props, props_path, sink); }, entity.props);
+
+    if (const auto* robot = entity.try_as<RobotProps>()) {
+        if (robot->eye_radius_min > robot->eye_radius_max)
+            sink.error(member_path(props_path, "eye_radius_min"),
+                       "eye_radius_min " + number_text(robot->eye_radius_min) +
+                           " is larger than eye_radius_max " + number_text(robot->eye_radius_max),
+                       "the robot starts following inside eye_radius_min and keeps following inside "
+                       "eye_radius_max, so min <= max");
+    }
+}
+
+void check_level(const Level& level, DiagnosticSink& sink, const std::vector<size_t>& source_index) {
+    check_fields(level.settings, "settings", sink);
+    const Vec3 sun = level.settings.sun_direction;
+    if (is_finite(sun) && glm::dot(sun, sun) < 1e-12f)
+        sink.error("settings.sun_direction", "sun_direction is zero",
+                   "give the direction sunlight travels, e.g. [-0.3, -1, -0.2]");
+
+    {
+        FieldChecker checker("player_start", sink);
+        Vec3 position = level.player_start.position;
+        float yaw = level.player_start.yaw;
+        checker.field(position, {"position", "Feet of the player", -kPositionLimit, kPositionLimit, "units"});
+        checker.field(yaw, {"yaw", "Facing; 0 faces -z", -kAngleLimit, kAngleLimit, "deg"});
+    }
+
+    std::unordered_map<int, size_t> first_use; // id -> index of the entity that has it first
+    int largest_id = 0;
+    for (size_t i = 0; i < level.entities.size(); ++i) {
+        const Entity& entity = level.entities[i];
+        const size_t shown = i < source_index.size() ? source_index[i] : i;
+        const std::string path = element_path("entities", shown);
+        check_entity(entity, path, sink);
+        largest_id = std::max(largest_id, entity.id);
+        auto [it, inserted] = first_use.emplace(entity.id, i);
+        if (!inserted) {
+            const Entity& first = level.entities[it->second];
+            const size_t first_shown =
+                it->second < source_index.size() ? source_index[it->second] : it->second;
+            sink.error(member_path(path, "id"),
+                       "duplicate id " + std::to_string(entity.id) + " (also used by entities[" +
+                           std::to_string(first_shown) + "] \"" + first.name + "\")",
+                       "ids must be unique; give this entity an unused id such as " +
+                           std::to_string(std::max(level.next_id, largest_id + 1)));
+        }
+    }
+    if (level.next_id <= largest_id)
+        sink.error("next_id",
+                   "next_id " + std::to_string(level.next_id) + " is not above the largest id " +
+                       std::to_string(largest_id) + ", so a new entity would reuse an id",
+                   "set next_id to " + std::to_string(largest_id + 1) + " or more");
+}
+
+} // namespace ks::level

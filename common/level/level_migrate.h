@@ -1,0 +1,24 @@
+#pragma once
+// Older level files are upgraded in memory, one version step at a time, before they are read: migration
+// N turns a version-N document into a version-(N+1) one. Adding format version 2 means adding one function
+// to the table (1 -> 2) and bumping kFormatVersion; files on disk are only rewritten when a designer saves.
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace ks::level {
+
+struct Migration {
+    int from_version;
+    const char* summary; // what changed, for the docs and the load warning
+    void (*apply)(nlohmann::ordered_json& document);
+};
+
+// Index N holds the step from version N to N+1; its size is kFormatVersion.
+const std::vector<Migration>& migrations();
+
+// Upgrades `document` from `version` to kFormatVersion. Returns the summaries of the steps applied.
+std::vector<std::string> migrate(nlohmann::ordered_json& document, int version);
+
+} // namespace ks::level

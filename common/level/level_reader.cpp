@@ -1,0 +1,359 @@
+#include "level/level_reader.h"
+
+#include "level/json_text.h"
+
+#include <algorithm>
+#include <cfloat>
+#include <climits>
+#include <cmath>
+#include <cstdlib>
+
+namespace ks::level {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+std::string lower(std::string s) {
+    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+}
+
+std::string describe(const Json& value) {
+    if (value.is_string()) return "the string " + value.dump();
+    if (value.is_null()) return "null";
+    if (value.is_boolean()) return std::string("the boolean ") + (value.get<bool>() ? "true" : "false");
+    if (value.is_object()) return "an object";
+    if (value.is_array()) return "an array";
+    return "the number " + value.dump();
+}
+
+// A JSON number as a double. Strings such as "nan" or "inf" get their own message: JSON has no NaN, and a
+// designer who typed one needs to know the file cannot hold it, not just that a string is the wrong type.
+bool read_double(const Json& value, const std::string& path, const std::string& valid, DiagnosticSink& sink,
+                 double& out) {
+    if (sink.already_reported(path)) return false;
+    if (value.is_number()) {
+        out = value.get<double>();
+        if (!std::isfinite(out)) {
+            sink.error(path, "number is not finite", "write a finite number; valid: " + valid);
+            return false;
+        }
+        return true;
+    }
+    if (value.is_string()) {
+        const std::string text = lower(value.get<std::string>());
+        static const char* const kNonFinite[] = {"nan",  "-nan",     "+nan",      "inf",      "-inf",
+                                                 "+inf", "infinity", "-infinity", "+infinity"};
+        if (std::find(std::begin(kNonFinite), std::end(kNonFinite), text) != std::end(kNonFinite)) {
+            sink.error(path,
+                       "\"" + value.get<std::string>() +
+                           "\" is not a finite number (NaN and infinity are not allowed)",
+                       "write a finite number; valid: " + valid);
+            return false;
+        }
+        char* end = nullptr;
+        const std::string& raw = value.get_ref<const std::string&>();
+        std::strtod(raw.c_str(), &end);
+        if (!raw.empty() && end == raw.c_str() + raw.size()) {
+            sink.error(path, "number written as a string " + value.dump(),
+                       "remove the quotes; valid: " + valid);
+            return false;
+        }
+    }
+    sink.error(path, "expected a number, found " + describe(value), "valid: " + valid);
+    return false;
+}
+
+std::string range_text(const FieldInfo& info) {
+    std::string out = json_text::format_number(info.min) + " .. " + json_text::format_number(info.max);
+    if (info.unit && *info.unit) out += std::string(" ") + info.unit;
+    return out;
+}
+
+bool read_float(const Json& value, const std::string& path, const FieldInfo& info, DiagnosticSink& sink,
+                float& out) {
+    double d = 0;
+    if (!read_double(value, path, range_text(info), sink, d)) return false;
+    if (std::fabs(d) > FLT_MAX) {
+        sink.error(path, json_text::format_number(d) + " is too large (beyond a 32-bit float)",
+                   "valid: " + range_text(info));
+        return false;
+    }
+    out = static_cast<float>(d);
+    return true;
+}
+
+bool read_int(const Json& value, const std::string& path, const FieldInfo& info, DiagnosticSink& sink,
+              int& out) {
+    double d = 0;
+    if (!read_double(value, path, "whole numbers " + range_text(info), sink, d)) return false;
+    if (d != std::floor(d) || d < INT_MIN || d > INT_MAX) {
+        sink.error(path, json_text::format_number(d) + " is not a whole number",
+                   "valid: whole numbers " + range_text(info));
+        return false;
+    }
+    out = static_cast<int>(d);
+    return true;
+}
+
+template <int N>
+bool read_vec(const Json& value, const std::string& path, const FieldInfo& info, DiagnosticSink& sink,
+              glm::vec<N, float>& out) {
+    static const char* const kShapes[] = {"", "[x]", "[x, y]", "[x, y, z]"};
+    if (!value.is_array() || value.size() != N) {
+        sink.error(path,
+                   "expected an array of " + std::to_string(N) + " numbers " + kShapes[N] + ", found " +
+                       describe(value) + (value.is_array() ? " of " + std::to_string(value.size()) : ""),
+                   "valid components: " + range_text(info));
+        return false;
+    }
+    glm::vec<N, float> result = out;
+    bool ok = true;
+    for (int i = 0; i < N; ++i) ok &= read_float(value[i], element_path(path, i), info, sink, result[i]);
+    if (ok) out = result;
+    return ok;
+}
+
+int hex_digit(char c) {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    return -1;
+}
+
+bool read_color(const Json& value, const std::string& path, DiagnosticSink& sink, Color& out) {
+    const char* const kHint = "write a colour as \"#rrggbb\" (hex digits), e.g. \"#ffcc80\"";
+    if (!value.is_string()) {
+        sink.error(path, "expected a colour string, found " + describe(value), kHint);
+        return false;
+    }
+    const std::string& s = value.get_ref<const std::string&>();
+    int digits[6];
+    bool ok = s.size() == 7 && s[0] == '#';
+    for (int i = 0; ok && i < 6; ++i) ok = (digits[i] = hex_digit(s[static_cast<size_t>(i) + 1])) >= 0;
+    if (!ok) {
+        sink.error(path, "bad colour " + value.dump(), kHint);
+        return false;
+    }
+    out.r = static_cast<float>(digits[0] * 16 + digits[1]) / 255.0f;
+    out.g = static_cast<float>(digits[2] * 16 + digits[3]) / 255.0f;
+    out.b = static_cast<float>(digits[4] * 16 + digits[5]) / 255.0f;
+    return true;
+}
+
+bool read_string(const Json& value, const std::string& path, DiagnosticSink& sink, std::string& out) {
+    if (!value.is_string()) {
+        sink.error(path, "expected a string, found " + describe(value), "put the text in double quotes");
+        return false;
+    }
+    out = value.get<std::string>();
+    return true;
+}
+
+bool read_bool(const Json& value, const std::string& path, DiagnosticSink& sink, bool& out) {
+    if (!value.is_boolean()) {
+        sink.error(path, "expected true or false, found " + describe(value), "valid: true, false");
+        return false;
+    }
+    out = value.get<bool>();
+    return true;
+}
+
+// Walks a props struct's visit() list: reads each field that is present, leaves the others at their
+// defaults, then warns about members that no field claimed.
+class FieldReader {
+  public:
+    FieldReader(const Json& object, std::string path, DiagnosticSink& sink)
+        : object_(object), path_(std::move(path)), sink_(sink) {}
+
+    void field(float& v, const FieldInfo& info) {
+        if (const Json* j = member(info)) read_float(*j, path_of(info), info, sink_, v);
+    }
+    void field(int& v, const FieldInfo& info) {
+        if (const Json* j = member(info)) read_int(*j, path_of(info), info, sink_, v);
+    }
+    void field(bool& v, const FieldInfo& info) {
+        if (const Json* j = member(info)) read_bool(*j, path_of(info), sink_, v);
+    }
+    void field(std::string& v, const FieldInfo& info) {
+        if (const Json* j = member(info)) read_string(*j, path_of(info), sink_, v);
+    }
+    void field(Vec2& v, const FieldInfo& info) {
+        if (const Json* j = member(info)) read_vec<2>(*j, path_of(info), info, sink_, v);
+    }
+    void field(Vec3& v, const FieldInfo& info) {
+        if (const Json* j = member(info)) read_vec<3>(*j, path_of(info), info, sink_, v);
+    }
+    void field(Color& v, const FieldInfo& info) {
+        if (const Json* j = member(info)) read_color(*j, path_of(info), sink_, v);
+    }
+    void field(Choice& v, const FieldInfo& info) {
+        if (const Json* j = member(info)) read_string(*j, path_of(info), sink_, v.value);
+    }
+
+    // Names that are read elsewhere (an entity's id, type, ...), so they are not "unknown".
+    void claim(std::string name) { known_.push_back(std::move(name)); }
+
+    void warn_unknown(std::string_view what) {
+        for (const auto& [key, value] : object_.items()) {
+            if (std::find(known_.begin(), known_.end(), key) != known_.end()) continue;
+            std::string hint = "known " + std::string(what) + " fields: " + join(known_);
+            if (std::string near = closest_match(key, known_); !near.empty())
+                hint = "did you mean \"" + near + "\"? " + hint;
+            sink_.warning(member_path(path_, key), "unknown field \"" + key + "\" is ignored", hint);
+        }
+    }
+
+  private:
+    const Json* member(const FieldInfo& info) {
+        known_.emplace_back(info.name);
+        auto it = object_.find(info.name);
+        return it == object_.end() ? nullptr : &*it;
+    }
+    std::string path_of(const FieldInfo& info) const { return member_path(path_, info.name); }
+
+    const Json& object_;
+    std::string path_;
+    DiagnosticSink& sink_;
+    std::vector<std::string> known_;
+};
+
+bool expect_object(const Json& value, const std::string& path, std::string_view what, DiagnosticSink& sink) {
+    if (value.is_object()) return true;
+    sink.error(path, "expected " + std::string(what) + " as an object {...}, found " + describe(value));
+    return false;
+}
+
+std::vector<std::string> type_names() {
+    std::vector<std::string> names;
+    for (EntityType t : all_types()) names.emplace_back(type_name(t));
+    return names;
+}
+
+Settings read_settings(const Json& json, const std::string& path, DiagnosticSink& sink) {
+    Settings settings;
+    if (!expect_object(json, path, "settings", sink)) return settings;
+    FieldReader reader(json, path, sink);
+    settings.visit(reader);
+    reader.warn_unknown("settings");
+    return settings;
+}
+
+PlayerStart read_player_start(const Json& json, const std::string& path, DiagnosticSink& sink) {
+    PlayerStart start;
+    if (!expect_object(json, path, "player_start", sink)) return start;
+    FieldReader reader(json, path, sink);
+    reader.field(start.position, {"position", "Feet of the player", -1e5, 1e5, "units"});
+    reader.field(start.yaw, {"yaw", "Facing; 0 faces -z", -3600, 3600, "deg"});
+    reader.warn_unknown("player_start");
+    return start;
+}
+
+} // namespace
+
+std::optional<Entity> read_entity(const Json& json, const std::string& path, DiagnosticSink& sink) {
+    if (!expect_object(json, path, "an entity", sink)) return std::nullopt;
+    Entity entity;
+    bool complete = true;
+    FieldReader reader(json, path, sink);
+
+    auto required = [&](const char* name, std::string_view hint) -> const Json* {
+        auto it = json.find(name);
+        if (it != json.end()) return &*it;
+        sink.error(member_path(path, name), std::string("missing required field \"") + name + "\"",
+                   std::string(hint));
+        complete = false;
+        return nullptr;
+    };
+
+    reader.claim("id");
+    if (const Json* id = required("id", "every entity needs a unique whole-number id >= 1")) {
+        complete &= read_int(*id, member_path(path, "id"), {"id", "", 1, INT_MAX}, sink, entity.id);
+    }
+
+    reader.claim("type");
+    const std::vector<std::string> known_types = type_names();
+    bool typed = false;
+    if (const Json* type = required("type", "valid types: " + join(known_types))) {
+        EntityType t{};
+        if (!type->is_string()) {
+            sink.error(member_path(path, "type"),
+                       "expected the type name as a string, found " + describe(*type),
+                       "valid types: " + join(known_types));
+        } else if (!type_from_name(type->get<std::string>(), t)) {
+            std::string hint = "valid types: " + join(known_types);
+            if (std::string near = closest_match(type->get<std::string>(), known_types); !near.empty())
+                hint = "did you mean \"" + near + "\"? " + hint;
+            sink.error(member_path(path, "type"), "unknown entity type " + type->dump(), hint);
+        } else {
+            entity.props = default_props(t);
+            typed = true;
+        }
+    }
+    complete &= typed;
+
+    reader.field(entity.name, {"name", "Shown in the editor's outliner"});
+    reader.claim("position");
+    if (const Json* position = required("position", "write the bottom centre as [x, y, z]")) {
+        complete &= read_vec<3>(*position, member_path(path, "position"),
+                                {"position", "", -1e5, 1e5, "units"}, sink, entity.position);
+    }
+    reader.field(entity.rotation, {"rotation", "Yaw, pitch, roll", -3600, 3600, "deg"});
+
+    reader.claim("props");
+    if (auto props = json.find("props"); props != json.end() && typed) {
+        const std::string props_path = member_path(path, "props");
+        if (expect_object(*props, props_path, "props", sink)) {
+            FieldReader props_reader(*props, props_path, sink);
+            std::visit([&](auto& p) { p.visit(props_reader); }, entity.props);
+            props_reader.warn_unknown(std::string(type_name(entity.type())));
+        }
+    }
+    reader.warn_unknown("entity");
+    if (!complete) return std::nullopt;
+    return entity;
+}
+
+ReadLevel read_level(const Json& document, DiagnosticSink& sink) {
+    ReadLevel out;
+    Level& level = out.level;
+    FieldReader reader(document, "", sink);
+    reader.claim("format");
+    reader.claim("version");
+    reader.field(level.name, {"name", "Level name"});
+    if (auto it = document.find("settings"); it != document.end())
+        level.settings = read_settings(*it, "settings", sink);
+    reader.claim("settings");
+    if (auto it = document.find("player_start"); it != document.end())
+        level.player_start = read_player_start(*it, "player_start", sink);
+    reader.claim("player_start");
+
+    bool has_next_id = document.contains("next_id");
+    reader.field(level.next_id, {"next_id", "The id the next new entity gets", 1, INT_MAX});
+
+    reader.claim("entities");
+    auto entities = document.find("entities");
+    if (entities == document.end()) {
+        sink.error("entities", "missing required field \"entities\"",
+                   "add \"entities\": [] (it may be empty)");
+    } else if (!entities->is_array()) {
+        sink.error("entities", "expected \"entities\" to be an array [...], found " + describe(*entities));
+    } else {
+        level.entities.reserve(entities->size());
+        for (size_t i = 0; i < entities->size(); ++i) {
+            if (auto entity = read_entity((*entities)[i], element_path("entities", i), sink)) {
+                level.entities.push_back(std::move(*entity));
+                out.source_index.push_back(i);
+            }
+        }
+    }
+    if (!has_next_id) {
+        // Optional: hand-written files may leave it out; it then follows the largest id.
+        level.next_id = 1;
+        for (const Entity& e : level.entities) level.next_id = std::max(level.next_id, e.id + 1);
+    }
+    reader.warn_unknown("level");
+    return out;
+}
+
+} // namespace ks::level

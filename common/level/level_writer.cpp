@@ -1,0 +1,98 @@
+#include "level/level_writer.h"
+
+#include "level/json_text.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ks::level {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json number(float v) {
+    return json_text::float_to_double(v);
+}
+
+template <int N>
+Json vec_json(const glm::vec<N, float>& v) {
+    Json array = Json::array();
+    for (int i = 0; i < N; ++i) array.push_back(number(v[i]));
+    return array;
+}
+
+class FieldWriter {
+  public:
+    explicit FieldWriter(Json& object) : object_(object) {}
+    void field(float& v, const FieldInfo& info) { object_[info.name] = number(v); }
+    void field(int& v, const FieldInfo& info) { object_[info.name] = v; }
+    void field(bool& v, const FieldInfo& info) { object_[info.name] = v; }
+    void field(std::string& v, const FieldInfo& info) { object_[info.name] = v; }
+    void field(Vec2& v, const FieldInfo& info) { object_[info.name] = vec_json(v); }
+    void field(Vec3& v, const FieldInfo& info) { object_[info.name] = vec_json(v); }
+    void field(Color& v, const FieldInfo& info) { object_[info.name] = color_to_hex(v); }
+    void field(Choice& v, const FieldInfo& info) { object_[info.name] = v.value; }
+
+  private:
+    Json& object_;
+};
+
+// visit() is a non-const member (the same list serves readers); writing only reads the values.
+template <class T>
+Json fields_json(const T& object) {
+    Json json = Json::object();
+    FieldWriter writer(json);
+    const_cast<T&>(object).visit(writer);
+    return json;
+}
+
+} // namespace
+
+Vec3 normalized_direction(Vec3 direction) {
+    const float length = glm::length(direction);
+    if (std::isfinite(length) && length > 1e-6f && std::fabs(length - 1.0f) > 1e-4f) direction /= length;
+    return direction;
+}
+
+std::string color_to_hex(const Color& color) {
+    static const char kDigits[] = "0123456789abcdef";
+    std::string out = "#";
+    for (float c : {color.r, color.g, color.b}) {
+        const float clamped = std::isfinite(c) ? std::clamp(c, 0.0f, 1.0f) : 0.0f;
+        const int byte = static_cast<int>(std::lround(clamped * 255.0f));
+        out += kDigits[byte >> 4];
+        out += kDigits[byte & 15];
+    }
+    return out;
+}
+
+Json write_entity(const Entity& entity) {
+    Json json = Json::object();
+    json["id"] = entity.id;
+    json["type"] = std::string(type_name(entity.type()));
+    json["name"] = entity.name;
+    json["position"] = vec_json(entity.position);
+    json["rotation"] = vec_json(entity.rotation);
+    json["props"] = std::visit([](const auto& props) { return fields_json(props); }, entity.props);
+    return json;
+}
+
+Json write_level(const Level& level) {
+    Json json = Json::object();
+    json["format"] = std::string(kFormatName);
+    json["version"] = kFormatVersion;
+    json["name"] = level.name;
+    Settings settings = level.settings;
+    settings.sun_direction = normalized_direction(settings.sun_direction);
+    json["settings"] = fields_json(settings);
+    json["player_start"] = Json::object();
+    json["player_start"]["position"] = vec_json(level.player_start.position);
+    json["player_start"]["yaw"] = number(level.player_start.yaw);
+    json["next_id"] = level.next_id;
+    Json entities = Json::array();
+    for (const Entity& entity : level.entities) entities.push_back(write_entity(entity));
+    json["entities"] = std::move(entities);
+    return json;
+}
+
+} // namespace ks::level
