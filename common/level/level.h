@@ -51,8 +51,7 @@ struct WallProps {
     void visit(V& v) {
         v.field(size, {"size", "Width, height and thickness of the wall slab", 0.01, 1e4, "units"});
         v.field(texture, {"texture", "Material name from assets/textures (concrete, wood, metal, tiles)"});
-        v.field(texture_scale,
-                {"texture_scale", "World units covered by one repeat of the texture", 0.01, 1e4, "units"});
+        v.field(texture_scale, {"texture_scale", "World units covered by one repeat of the texture", 0.01, 1e4, "units"});
     }
     bool operator==(const WallProps&) const = default;
 };
@@ -66,12 +65,10 @@ struct FloorProps {
     template <class V>
     void visit(V& v) {
         v.field(size, {"size", "Extent along local x and z", 0.01, 1e4, "units"});
-        v.field(thickness, {"thickness", "Slab thickness (below the surface, or above it for a ceiling)",
-                            0.01, 100, "units"});
+        v.field(thickness, {"thickness", "Slab thickness (below the surface, or above it for a ceiling)", 0.01, 100, "units"});
         v.field(ceiling, {"ceiling", "Acts as a ceiling: the slab is above position.y and faces down"});
         v.field(texture, {"texture", "Material name from assets/textures"});
-        v.field(texture_scale,
-                {"texture_scale", "World units covered by one repeat of the texture", 0.01, 1e4, "units"});
+        v.field(texture_scale, {"texture_scale", "World units covered by one repeat of the texture", 0.01, 1e4, "units"});
     }
     bool operator==(const FloorProps&) const = default;
 };
@@ -82,8 +79,7 @@ struct StairProps {
     std::string texture = "tiles";
     template <class V>
     void visit(V& v) {
-        v.field(size, {"size", "Width, total rise and total run; the stair rises toward its local -z", 0.01,
-                       1e4, "units"});
+        v.field(size, {"size", "Width, total rise and total run; the stair rises toward its local -z", 0.01, 1e4, "units"});
         v.field(steps, {"steps", "Number of steps", 1, 200});
         v.field(texture, {"texture", "Material name from assets/textures"});
     }
@@ -93,9 +89,9 @@ struct StairProps {
 struct DoorProps {
     float width = 5.0f;
     float height = 5.0f;
-    bool open = false;        // initial state
-    float open_offset = 2.0f; // how far each leaf slides sideways
-    float open_time = 0.5f;   // seconds to open or close
+    bool open = false;          // initial state
+    float open_offset = 2.0f;   // how far each leaf slides sideways
+    float open_time = 0.5f;     // seconds to open or close
     template <class V>
     void visit(V& v) {
         v.field(width, {"width", "Width of the doorway (two sliding leaves)", 0.5, 100, "units"});
@@ -148,32 +144,26 @@ struct TopLightProps {
 
 struct RobotProps {
     float health = 100.0f;
-    float velocity = 8.0f;           // chase speed
-    float rotation_velocity = 8.0f;  // turn rate
-    float shooting_distance = 11.0f; // stops and shoots at or inside this distance
-    float eye_radius_min = 19.0f;    // notices the player inside this distance (with line of sight)
-    float eye_radius_max = 25.0f;    // keeps following inside this distance
-    float cooldown = 1.0f;           // seconds between shots
-    float hit_probability = 0.7f;    // chance that a shot is fired at all
-    float angry_duration = 10.0f;    // after being shot, follows regardless of distance
-    float damage = 10.0f;            // damage per hit on the player
+    float velocity = 8.0f;             // chase speed
+    float rotation_velocity = 8.0f;    // turn rate
+    float shooting_distance = 11.0f;   // stops and shoots at or inside this distance
+    float eye_radius_min = 19.0f;      // notices the player inside this distance (with line of sight)
+    float eye_radius_max = 25.0f;      // keeps following inside this distance
+    float cooldown = 1.0f;             // seconds between shots
+    float hit_probability = 0.7f;      // chance that a shot is fired at all
+    float angry_duration = 10.0f;      // after being shot, follows regardless of distance
+    float damage = 10.0f;              // damage per hit on the player
     template <class V>
     void visit(V& v) {
         v.field(health, {"health", "Hit points", 1, 1e5});
         v.field(velocity, {"velocity", "Chase speed", 0, 200, "units/s"});
         v.field(rotation_velocity, {"rotation_velocity", "Turn rate", 0, 100, "rad/s"});
-        v.field(shooting_distance,
-                {"shooting_distance", "Stops and shoots at or inside this distance", 0, 1000, "units"});
-        v.field(eye_radius_min,
-                {"eye_radius_min", "Notices the player inside this distance, with line of sight", 0, 1000,
-                 "units"});
-        v.field(eye_radius_max,
-                {"eye_radius_max", "Keeps following the player inside this distance", 0, 1000, "units"});
+        v.field(shooting_distance, {"shooting_distance", "Stops and shoots at or inside this distance", 0, 1000, "units"});
+        v.field(eye_radius_min, {"eye_radius_min", "Notices the player inside this distance, with line of sight", 0, 1000, "units"});
+        v.field(eye_radius_max, {"eye_radius_max", "Keeps following the player inside this distance", 0, 1000, "units"});
         v.field(cooldown, {"cooldown", "Seconds between shots", 0, 60, "s"});
         v.field(hit_probability, {"hit_probability", "Chance that a shot is fired at all", 0, 1});
-        v.field(angry_duration,
-                {"angry_duration", "After being shot, follows regardless of distance for this long", 0, 600,
-                 "s"});
+        v.field(angry_duration, {"angry_duration", "After being shot, follows regardless of distance for this long", 0, 600, "s"});
         v.field(damage, {"damage", "Damage dealt to the player per hit", 0, 1000});
     }
     bool operator==(const RobotProps&) const = default;
@@ -193,7 +183,7 @@ struct PickupProps {
 struct GasCylinderProps {
     float radius = 0.5f;
     float height = 2.0f;
-    float damage = 30.0f; // at the centre of the blast; falls off with distance
+    float damage = 30.0f;          // at the centre of the blast; falls off with distance
     float blast_radius = 7.0f;
     float explosion_power = 25.0f; // knock-back speed
     template <class V>
@@ -202,8 +192,7 @@ struct GasCylinderProps {
         v.field(height, {"height", "Cylinder height", 0.1, 20, "units"});
         v.field(damage, {"damage", "Damage at the centre of the blast", 0, 1000});
         v.field(blast_radius, {"blast_radius", "Radius of the blast", 0, 100, "units"});
-        v.field(explosion_power,
-                {"explosion_power", "Knock-back speed given to bodies in the blast", 0, 500, "units/s"});
+        v.field(explosion_power, {"explosion_power", "Knock-back speed given to bodies in the blast", 0, 500, "units/s"});
     }
     bool operator==(const GasCylinderProps&) const = default;
 };
@@ -218,57 +207,32 @@ struct ControlPanelProps {
 };
 
 // The variant's order is the EntityType order.
-using Props = std::variant<WallProps, FloorProps, StairProps, DoorProps, FloorLightProps, TopLightProps,
-                           RobotProps, PickupProps, GasCylinderProps, ControlPanelProps>;
+using Props = std::variant<WallProps, FloorProps, StairProps, DoorProps, FloorLightProps, TopLightProps, RobotProps,
+                           PickupProps, GasCylinderProps, ControlPanelProps>;
 
 enum class EntityType : std::uint8_t {
-    Wall,
-    Floor,
-    Stair,
-    Door,
-    FloorLight,
-    TopLight,
-    Robot,
-    Pickup,
-    GasCylinder,
-    ControlPanel,
-    Count
+    Wall, Floor, Stair, Door, FloorLight, TopLight, Robot, Pickup, GasCylinder, ControlPanel, Count
 };
 
-// "wall", "floor", "stair", "door", "floor_light", "top_light", "robot", "pickup", "gas_cylinder",
-// "control_panel"
+// "wall", "floor", "stair", "door", "floor_light", "top_light", "robot", "pickup", "gas_cylinder", "control_panel"
 std::string_view type_name(EntityType type);
 bool type_from_name(std::string_view name, EntityType& out);
 const std::array<EntityType, static_cast<size_t>(EntityType::Count)>& all_types();
 Props default_props(EntityType type);
 
 struct Entity {
-    int id = 0;       // stable, unique within the level, never reused
-    std::string name; // free text shown in the editor's outliner
+    int id = 0;               // stable, unique within the level, never reused
+    std::string name;         // free text shown in the editor's outliner
     Vec3 position{0.0f};
-    Vec3 rotation{0.0f}; // yaw (about +y), pitch (about +x), roll (about +z), degrees
+    Vec3 rotation{0.0f};      // yaw (about +y), pitch (about +x), roll (about +z), degrees
     Props props;
 
     EntityType type() const { return static_cast<EntityType>(props.index()); }
-    template <class T>
-    T& as() {
-        return std::get<T>(props);
-    }
-    template <class T>
-    const T& as() const {
-        return std::get<T>(props);
-    }
-    template <class T>
-    T* try_as() {
-        return std::get_if<T>(&props);
-    }
-    template <class T>
-    const T* try_as() const {
-        return std::get_if<T>(&props);
-    }
-    Quat orientation() const {
-        return quat_from_ypr(radians(rotation.x), radians(rotation.y), radians(rotation.z));
-    }
+    template <class T> T& as() { return std::get<T>(props); }
+    template <class T> const T& as() const { return std::get<T>(props); }
+    template <class T> T* try_as() { return std::get_if<T>(&props); }
+    template <class T> const T* try_as() const { return std::get_if<T>(&props); }
+    Quat orientation() const { return quat_from_ypr(radians(rotation.x), radians(rotation.y), radians(rotation.z)); }
     bool operator==(const Entity&) const = default;
 };
 
@@ -276,7 +240,7 @@ struct Settings {
     Color ambient_color{0.55f, 0.6f, 0.7f};
     float ambient_intensity = 0.2f;
     Color fog_color{0.05f, 0.06f, 0.08f};
-    float fog_density = 0.004f;              // exponential fog; 0 disables
+    float fog_density = 0.004f; // exponential fog; 0 disables
     Vec3 sun_direction{-0.3f, -1.0f, -0.2f}; // the direction sunlight travels (normalised on load)
     Color sun_color{1.0f, 0.96f, 0.9f};
     float sun_intensity = 0.1f;
