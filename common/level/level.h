@@ -153,6 +153,7 @@ struct RobotProps {
     float hit_probability = 0.7f;      // chance that a shot is fired at all
     float angry_duration = 10.0f;      // after being shot, follows regardless of distance
     float damage = 10.0f;              // damage per hit on the player
+    bool dummy = false;                // the dojo's test robot: no AI, no collision, keys 1-5 play animations
     template <class V>
     void visit(V& v) {
         v.field(health, {"health", "Hit points", 1, 1e5});
@@ -165,6 +166,7 @@ struct RobotProps {
         v.field(hit_probability, {"hit_probability", "Chance that a shot is fired at all", 0, 1});
         v.field(angry_duration, {"angry_duration", "After being shot, follows regardless of distance for this long", 0, 600, "s"});
         v.field(damage, {"damage", "Damage dealt to the player per hit", 0, 1000});
+        v.field(dummy, {"dummy", "Animation dummy (the dojo's test robot): no AI, cannot be shot or collided with; keys 1-5 play its animations"});
     }
     bool operator==(const RobotProps&) const = default;
 };
