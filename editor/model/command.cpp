@@ -1,0 +1,89 @@
+#include "model/command.h"
+
+#include <algorithm>
+#include <cassert>
+
+namespace ks::editor {
+namespace {
+void set_entity(Document& doc, const level::Entity& value) {
+    level::Entity* e = doc.level.find(value.id);
+    assert(e && "an update refers to an entity that is not in the level");
+    if (e) *e = value;
+}
+
+template <class T>
+void merge_field(std::optional<Change<T>>& into, const std::optional<Change<T>>& next) {
+    if (!next) return;
+    if (into)
+        into->after = next->after;
+    else
+        into = next;
+}
+} // namespace
+
+void LevelChange::apply(Document& doc) const {
+    auto& entities = doc.level.entities;
+    for (const auto& u : updates) set_entity(doc, u.after);
+    for (auto it = removals.rbegin(); it != removals.rend(); ++it) {
+        assert(it->index < entities.size() && entities[it->index].id == it->entity.id);
+        entities.erase(entities.begin() + static_cast<std::ptrdiff_t>(it->index));
+    }
+    for (const auto& ins : insertions)
+        entities.insert(entities.begin() + static_cast<std::ptrdiff_t>(ins.index), ins.entity);
+    if (level_name) doc.level.name = level_name->after;
+    if (settings) doc.level.settings = settings->after;
+    if (player_start) doc.level.player_start = player_start->after;
+    if (next_id) doc.level.next_id = next_id->after;
+    doc.selection = selection_after;
+}
+
+void LevelChange::revert(Document& doc) const {
+    auto& entities = doc.level.entities;
+    if (level_name) doc.level.name = level_name->before;
+    if (settings) doc.level.settings = settings->before;
+    if (player_start) doc.level.player_start = player_start->before;
+    if (next_id) doc.level.next_id = next_id->before;
+    for (auto it = insertions.rbegin(); it != insertions.rend(); ++it) {
+        assert(it->index < entities.size() && entities[it->index].id == it->entity.id);
+        entities.erase(entities.begin() + static_cast<std::ptrdiff_t>(it->index));
+    }
+    for (const auto& rem : removals)
+        entities.insert(entities.begin() + static_cast<std::ptrdiff_t>(rem.index), rem.entity);
+    for (auto it = updates.rbegin(); it != updates.rend(); ++it) set_entity(doc, it->before);
+    doc.selection = selection_before;
+}
+
+bool LevelChange::empty() const {
+    return updates.empty() && removals.empty() && insertions.empty() && !level_name && !settings &&
+           !player_start && !next_id;
+}
+
+bool LevelChange::try_merge(const LevelChange& next) {
+    if (merge_key.empty() || merge_key != next.merge_key) return false;
+    if (!removals.empty() || !insertions.empty() || !next.removals.empty() || !next.insertions.empty())
+        return false;
+    for (const auto& u : next.updates) {
+        auto it = std::find_if(updates.begin(), updates.end(),
+                               [&](const EntityUpdate& mine) { return mine.after.id == u.after.id; });
+        if (it != updates.end())
+            it->after = u.after;
+        else
+            updates.push_back(u);
+    }
+    merge_field(level_name, next.level_name);
+    merge_field(settings, next.settings);
+    merge_field(player_start, next.player_start);
+    merge_field(next_id, next.next_id);
+    selection_after = next.selection_after;
+    return true;
+}
+
+void CompoundCommand::apply(Document& doc) const {
+    for (const auto& c : children) c->apply(doc);
+}
+
+void CompoundCommand::revert(Document& doc) const {
+    for (auto it = children.rbegin(); it != children.rend(); ++it) (*it)->revert(doc);
+}
+
+} // namespace ks::editor

@@ -1,0 +1,68 @@
+#pragma once
+// The document an editor session edits: the level itself plus the editor-only state around it (selection,
+// hidden and locked entities, grid). Only commands change `level`; selection, visibility and locks are view
+// state that is not saved in the level file and not recorded as history steps.
+#include "level/level.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <vector>
+
+namespace ks::editor {
+
+struct GridSettings {
+    float step = 1.0f;           // origin snapping and nudge distance, units
+    float rotation_step = 15.0f; // degrees
+    bool snap = true;
+
+    float snap_value(float v) const { return snap && step > 0 ? std::round(v / step) * step : v; }
+    Vec3 snap_point(const Vec3& p) const { return {snap_value(p.x), snap_value(p.y), snap_value(p.z)}; }
+    float snap_angle(float degrees) const {
+        return snap && rotation_step > 0 ? std::round(degrees / rotation_step) * rotation_step : degrees;
+    }
+};
+
+// A sorted set of entity ids (small: a handful to a few hundred).
+class IdSet {
+  public:
+    bool contains(int id) const { return std::binary_search(ids_.begin(), ids_.end(), id); }
+    void insert(int id) {
+        auto it = std::lower_bound(ids_.begin(), ids_.end(), id);
+        if (it == ids_.end() || *it != id) ids_.insert(it, id);
+    }
+    void erase(int id) {
+        auto it = std::lower_bound(ids_.begin(), ids_.end(), id);
+        if (it != ids_.end() && *it == id) ids_.erase(it);
+    }
+    void clear() { ids_.clear(); }
+    bool empty() const { return ids_.empty(); }
+    size_t size() const { return ids_.size(); }
+    const std::vector<int>& ids() const { return ids_; }
+    bool operator==(const IdSet&) const = default;
+
+  private:
+    std::vector<int> ids_;
+};
+
+struct Document {
+    level::Level level;
+    // Selection in the order entities were picked (the first is the primary: gizmo pivot, inspector header).
+    std::vector<int> selection;
+    IdSet hidden;
+    IdSet locked;
+    GridSettings grid;
+
+    bool is_selected(int id) const {
+        return std::find(selection.begin(), selection.end(), id) != selection.end();
+    }
+    // Tools may pick and edit it: it exists and is not locked.
+    bool is_editable(int id) const { return level.find(id) != nullptr && !locked.contains(id); }
+    int index_of(int id) const {
+        for (size_t i = 0; i < level.entities.size(); ++i)
+            if (level.entities[i].id == id) return static_cast<int>(i);
+        return -1;
+    }
+};
+
+} // namespace ks::editor

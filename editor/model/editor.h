@@ -1,0 +1,152 @@
+#pragma once
+// The editor session: a document, its history, the clipboard and the file it belongs to. Every operation
+// the UI offers (and the script language runs) is a method here that builds a command and executes it
+// through History, so the ImGui front end only presents state and dispatches calls. Operations report
+// problems as Result errors and change nothing when they fail.
+#include "core/result.h"
+#include "model/bounds.h"
+#include "model/disk_fingerprint.h"
+#include "model/field_access.h"
+#include "model/history.h"
+#include "model/validation.h"
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ks::editor {
+
+class RecentFiles;
+
+enum class SelectMode { Replace, Add, Toggle, Remove };
+
+struct SaveOptions {
+    bool overwrite_existing = false;         // Save As onto a file that exists (the UI asked first)
+    bool overwrite_external_changes = false; // Save over a file someone changed since it was opened
+};
+
+struct SaveReport {
+    std::filesystem::path path;
+    bool draft = false; // saved with design errors: the level loads but should not ship
+    int error_count = 0;
+    int warning_count = 0;
+};
+
+struct RecoveryOffer {
+    std::filesystem::path level_file;
+    std::filesystem::path autosave; // newer than level_file and different from it
+};
+
+enum class DiskStatus { NoFile, Unchanged, Modified, Deleted };
+
+class Editor {
+  public:
+    Editor();
+
+    const Document& doc() const { return doc_; }
+    const level::Level& level() const { return doc_.level; }
+    const History& history() const { return history_; }
+    // Bumps on every change to the level (edit, undo, redo, open, new); views cache against it.
+    std::uint64_t revision() const { return history_.revision() + reloads_; }
+
+    // ---- selection (view state: not history steps) ----
+    // Unknown or locked ids are an error and leave the selection as it was.
+    Result<void> select(const std::vector<int>& ids, SelectMode mode = SelectMode::Replace);
+    // Tools: every visible, unlocked entity the predicate accepts (screen-space box select passes one).
+    int select_where(const std::function<bool(const level::Entity&)>& accept,
+                     SelectMode mode = SelectMode::Replace);
+    int select_in_box(const Aabb& box, SelectMode mode = SelectMode::Replace);
+    int select_all_of_type(level::EntityType type, SelectMode mode = SelectMode::Replace);
+    int select_all();
+    void clear_selection() { doc_.selection.clear(); }
+    std::vector<const level::Entity*> selected_entities() const;
+
+    void set_hidden(int id, bool hidden);
+    void set_locked(int id, bool locked); // locking drops the entity from the selection
+    GridSettings& grid() { return doc_.grid; }
+
+    // ---- edits (each one undoable step) ----
+    // Snapped to the grid (origin) and rotation step; selects the new entity and returns its id.
+    Result<int> place(level::EntityType type, Vec3 position, float yaw_degrees = 0.0f, std::string name = {});
+    // With snap, the primary selected entity lands on the grid and the others keep their offsets to it.
+    Result<void> move_selection(Vec3 delta, bool snap = false, std::string merge_key = {});
+    // One grid step along axis 0/1/2 in direction +1/-1 (arrow keys).
+    Result<void> nudge(int axis, int direction);
+    // Yaw about the selection's pivot (the entity itself, or the centre of several); snapped to the rotation
+    // step when the grid snaps.
+    Result<void> rotate_selection(float degrees, std::string merge_key = {});
+    // Multiplies size fields along local x, y, z (types without size fields are left alone).
+    Result<void> scale_selection(Vec3 factors, std::string merge_key = {});
+    // On every selected entity that has the field (multi-selection edits common fields).
+    Result<void> set_field(std::string_view name, const FieldValue& value, std::string merge_key = {});
+    Result<void> set_field_text(std::string_view name, std::string_view text);
+    Result<void> revert_field(std::string_view name);
+    Result<void> rename(int id, std::string name);
+    Result<void> duplicate(std::optional<Vec3> offset = std::nullopt); // default: one grid step in x and z
+    Result<void> delete_selection();
+    Result<void> delete_entities(const std::vector<int>& ids);
+    std::string copy();                             // the selection as JSON text (also kept as the clipboard)
+    Result<void> paste();                           // from the clipboard
+    Result<void> paste_text(std::string_view text); // fresh ids; works with text from another level
+    const std::string& clipboard() const { return clipboard_; }
+    Result<void> set_setting(std::string_view name, const FieldValue& value, std::string merge_key = {});
+    Result<void> set_setting_text(std::string_view name, std::string_view text);
+    Result<void> set_player_start(const level::PlayerStart& start);
+    Result<void> rename_level(std::string name);
+
+    bool undo();
+    bool redo();
+    // A drag or compound edit as one step.
+    void begin_transaction(std::string name) { history_.begin_transaction(std::move(name)); }
+    void commit_transaction() { history_.commit_transaction(); }
+    void cancel_transaction() { history_.cancel_transaction(doc_); }
+    void end_merging() { history_.seal(); }
+
+    // ---- validation (cached per revision) ----
+    const std::vector<Issue>& issues();
+    ValidationOptions& validation_options() { return validation_options_; }
+    Result<void> apply_quick_fix(const Issue& issue);
+    Result<void> select_issue(const Issue& issue);
+
+    // ---- files ----
+    void new_document();
+    Result<void> open(const std::filesystem::path& path);
+    Result<SaveReport> save(const SaveOptions& options = {});
+    Result<SaveReport> save_as(const std::filesystem::path& path, const SaveOptions& options = {});
+    const std::filesystem::path& file_path() const { return path_; }
+    bool has_unsaved_changes() const { return !history_.at_save_point(); }
+    // "main.json* [draft] - Killswitch Editor"
+    std::string title();
+    DiskStatus disk_status() const;
+    void set_recent_files(RecentFiles* recent) { recent_ = recent; }
+
+    // Offered after open when an autosave is newer than the file; accepting is one undoable step.
+    const std::optional<RecoveryOffer>& recovery_offer() const { return recovery_; }
+    Result<void> accept_recovery();
+    void decline_recovery() { recovery_.reset(); }
+
+  private:
+    // Builds one LevelChange updating every selected entity with `edit`; nothing changes if any edit fails.
+    Result<void> modify_selection(std::string name, const std::function<Result<void>(level::Entity&)>& edit,
+                                  std::string merge_key = {});
+    void execute(std::unique_ptr<LevelChange> change, std::vector<int> selection_after);
+    Result<SaveReport> write_to(const std::filesystem::path& path);
+    void replace_level(level::Level level, std::filesystem::path path);
+    void remember_recent(const std::filesystem::path& path);
+
+    Document doc_;
+    History history_;
+    std::string clipboard_;
+    std::filesystem::path path_;
+    DiskFingerprint disk_;
+    RecentFiles* recent_ = nullptr;
+    std::optional<RecoveryOffer> recovery_;
+    ValidationOptions validation_options_;
+    std::vector<Issue> issues_;
+    std::uint64_t issues_revision_ = ~0ull;
+    std::uint64_t reloads_ = 0;
+};
+
+} // namespace ks::editor

@@ -1,0 +1,367 @@
+// Editor: the edit operations. Each builds one LevelChange and executes it through History.
+#include "model/editor.h"
+
+#include "level/level_io.h"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+namespace ks::editor {
+namespace {
+using level::Entity;
+using level::EntityType;
+
+std::string describe(const Entity& e) {
+    return std::string(level::type_name(e.type())) + " " + std::to_string(e.id);
+}
+
+// sin/cos of a yaw in degrees, exact at multiples of 90 so that quarter turns keep grid positions exact.
+void sin_cos_degrees(float degrees, double& s, double& c) {
+    const double wrapped = std::fmod(static_cast<double>(degrees), 360.0);
+    if (std::fmod(wrapped, 90.0) == 0.0) {
+        const int quarter = (static_cast<int>(wrapped / 90.0) + 4) % 4;
+        static constexpr double kSin[4] = {0, 1, 0, -1}, kCos[4] = {1, 0, -1, 0};
+        s = kSin[quarter];
+        c = kCos[quarter];
+        return;
+    }
+    const double r = wrapped * std::numbers::pi / 180.0;
+    s = std::sin(r);
+    c = std::cos(r);
+}
+
+// Into (-180, 180], so repeated turns never walk out of the rotation field's range.
+float wrap_degrees(float degrees) {
+    float w = std::fmod(degrees, 360.0f);
+    if (w > 180.0f) w -= 360.0f;
+    if (w <= -180.0f) w += 360.0f;
+    return w;
+}
+
+constexpr const char* kClipboardKey = "killswitch-clipboard";
+} // namespace
+
+void Editor::execute(std::unique_ptr<LevelChange> change, std::vector<int> selection_after) {
+    change->selection_after = std::move(selection_after);
+    history_.execute(doc_, std::move(change));
+}
+
+bool Editor::undo() {
+    return history_.undo(doc_);
+}
+bool Editor::redo() {
+    return history_.redo(doc_);
+}
+
+Result<void> Editor::modify_selection(std::string name, const std::function<Result<void>(Entity&)>& edit,
+                                      std::string merge_key) {
+    if (doc_.selection.empty())
+        return Error(name + ": nothing is selected", Location{}, "select entities first");
+    auto change = std::make_unique<LevelChange>();
+    for (int id : doc_.selection) {
+        const Entity* current = doc_.level.find(id);
+        if (!current || doc_.locked.contains(id)) continue;
+        Entity after = *current;
+        if (auto r = edit(after); !r) {
+            Error e = r.error();
+            e.message = name + ": " + describe(*current) + ": " + e.message;
+            return e;
+        }
+        if (!(after == *current)) change->updates.push_back({*current, std::move(after)});
+    }
+    if (change->empty()) return ok(); // nothing actually changed: no history step
+    change->set_name(std::move(name));
+    change->merge_key = std::move(merge_key);
+    execute(std::move(change), doc_.selection);
+    return ok();
+}
+
+Result<int> Editor::place(EntityType type, Vec3 position, float yaw_degrees, std::string name) {
+    if (static_cast<size_t>(type) >= static_cast<size_t>(EntityType::Count))
+        return Error("unknown entity type", Location{}, "use one of the palette's types");
+    if (!is_finite(position) || !std::isfinite(yaw_degrees))
+        return Error("place: position and yaw must be finite numbers");
+    Entity e;
+    e.id = doc_.level.next_id;
+    e.name = std::move(name);
+    e.position = doc_.grid.snap_point(position);
+    e.rotation = {wrap_degrees(doc_.grid.snap_angle(yaw_degrees)), 0, 0};
+    e.props = level::default_props(type);
+    if (auto r = set_entity_field(e, "position", e.position); !r)
+        return Error("place: " + r.error().message, Location{}, r.error().hint);
+    auto change = std::make_unique<LevelChange>();
+    change->set_name("Place " + std::string(level::type_name(type)));
+    change->insertions.push_back({doc_.level.entities.size(), e});
+    change->next_id = Change<int>{doc_.level.next_id, doc_.level.next_id + 1};
+    execute(std::move(change), {e.id});
+    return e.id;
+}
+
+Result<void> Editor::move_selection(Vec3 delta, bool snap, std::string merge_key) {
+    if (!is_finite(delta)) return Error("move: the offset must be finite numbers");
+    if (snap && !doc_.selection.empty()) {
+        if (const Entity* primary = doc_.level.find(doc_.selection.front()))
+            delta = doc_.grid.snap_point(primary->position + delta) - primary->position;
+    }
+    return modify_selection(
+        "Move", [&](Entity& e) { return set_entity_field(e, "position", e.position + delta); },
+        std::move(merge_key));
+}
+
+Result<void> Editor::nudge(int axis, int direction) {
+    if (axis < 0 || axis > 2 || (direction != 1 && direction != -1))
+        return Error("nudge: axis must be 0..2 and direction +1 or -1");
+    Vec3 delta(0.0f);
+    delta[axis] = static_cast<float>(direction) * doc_.grid.step;
+    return move_selection(delta, false, "nudge");
+}
+
+Result<void> Editor::rotate_selection(float degrees, std::string merge_key) {
+    if (!std::isfinite(degrees)) return Error("rotate: the angle must be a finite number");
+    degrees = doc_.grid.snap_angle(degrees);
+    auto selected = selected_entities();
+    if (selected.empty()) return Error("Rotate: nothing is selected", Location{}, "select entities first");
+    // Pivot: the centre of the selected positions' bounds (a single entity turns in place).
+    Vec3 lo(selected.front()->position), hi(lo);
+    for (const auto* e : selected) lo = glm::min(lo, e->position), hi = glm::max(hi, e->position);
+    const glm::dvec3 pivot = (glm::dvec3(lo) + glm::dvec3(hi)) * 0.5;
+    double s = 0, c = 1;
+    sin_cos_degrees(degrees, s, c);
+    return modify_selection(
+        "Rotate",
+        [&](Entity& e) -> Result<void> {
+            const glm::dvec3 d = glm::dvec3(e.position) - pivot;
+            // Yaw turns +x toward -z (quat_from_ypr about +y).
+            const glm::dvec3 turned(d.x * c + d.z * s, d.y, -d.x * s + d.z * c);
+            Vec3 position = selected.size() == 1 ? e.position : Vec3(pivot + turned);
+            if (auto r = set_entity_field(e, "position", position); !r) return r;
+            return set_entity_field(e, "rotation",
+                                    Vec3(wrap_degrees(e.rotation.x + degrees), e.rotation.y, e.rotation.z));
+        },
+        std::move(merge_key));
+}
+
+Result<void> Editor::scale_selection(Vec3 factors, std::string merge_key) {
+    if (!is_finite(factors) || factors.x <= 0 || factors.y <= 0 || factors.z <= 0)
+        return Error("scale: factors must be positive finite numbers");
+    bool any = false;
+    auto result = modify_selection(
+        "Scale",
+        [&](Entity& e) -> Result<void> {
+            auto scale_field = [&](const char* field, auto scaled) -> Result<void> {
+                any = true;
+                auto current = get_entity_field(e, field);
+                if (!current) return current.error();
+                return set_entity_field(e, field, scaled(*current));
+            };
+            auto vec3 = [&](const FieldValue& v) { return FieldValue(std::get<Vec3>(v) * factors); };
+            auto by = [](float f) {
+                return [f](const FieldValue& v) {
+                    return FieldValue(std::get<double>(v) * static_cast<double>(f));
+                };
+            };
+            switch (e.type()) {
+            case EntityType::Wall:
+            case EntityType::Stair:
+            case EntityType::ControlPanel:
+                return scale_field("size", vec3);
+            case EntityType::Floor:
+                return scale_field("size", [&](const FieldValue& v) {
+                    return FieldValue(std::get<Vec2>(v) * Vec2(factors.x, factors.z));
+                });
+            case EntityType::Door:
+                if (auto r = scale_field("width", by(factors.x)); !r) return r;
+                return scale_field("height", by(factors.y));
+            case EntityType::GasCylinder:
+                if (auto r = scale_field("radius", by(factors.x)); !r) return r;
+                return scale_field("height", by(factors.y));
+            default:
+                return ok(); // no size fields: robots, pickups and lights keep their model size
+            }
+        },
+        std::move(merge_key));
+    if (result && !any && !doc_.selection.empty())
+        return Error("Scale: none of the selected entities has size fields", Location{},
+                     "walls, floors, stairs, doors, gas cylinders and the control panel can be scaled");
+    return result;
+}
+
+Result<void> Editor::set_field(std::string_view name, const FieldValue& value, std::string merge_key) {
+    return modify_selection(
+        "Set " + std::string(name), [&](Entity& e) { return set_entity_field(e, name, value); },
+        std::move(merge_key));
+}
+
+Result<void> Editor::set_field_text(std::string_view name, std::string_view text) {
+    return modify_selection("Set " + std::string(name), [&](Entity& e) -> Result<void> {
+        for (const auto& field : describe_entity_fields(e)) {
+            if (field.name != name) continue;
+            auto value = parse_field_value(field, text);
+            if (!value) return value.error();
+            return set_entity_field(e, name, *value);
+        }
+        return set_entity_field(e, name, FieldValue(0.0)); // reports the unknown field with the valid names
+    });
+}
+
+Result<void> Editor::revert_field(std::string_view name) {
+    return modify_selection("Revert " + std::string(name), [&](Entity& e) -> Result<void> {
+        auto value = default_entity_field(e, name);
+        if (!value) return value.error();
+        return set_entity_field(e, name, *value);
+    });
+}
+
+Result<void> Editor::rename(int id, std::string name) {
+    const Entity* current = doc_.level.find(id);
+    if (!current) return Error("rename: no entity with id " + std::to_string(id));
+    if (doc_.locked.contains(id)) return Error("rename: entity " + std::to_string(id) + " is locked");
+    Entity after = *current;
+    if (auto r = set_entity_field(after, "name", name); !r) return r;
+    if (after == *current) return ok();
+    auto change = std::make_unique<LevelChange>();
+    change->set_name("Rename " + describe(*current));
+    change->updates.push_back({*current, std::move(after)});
+    execute(std::move(change), doc_.selection);
+    return ok();
+}
+
+Result<void> Editor::duplicate(std::optional<Vec3> offset) {
+    const Vec3 delta = offset.value_or(Vec3(doc_.grid.step, 0.0f, doc_.grid.step));
+    if (!is_finite(delta)) return Error("duplicate: the offset must be finite numbers");
+    auto change = std::make_unique<LevelChange>();
+    std::vector<int> new_ids;
+    int next = doc_.level.next_id;
+    for (const auto& e : doc_.level.entities) { // level order, so copies keep their relative order
+        if (!doc_.is_selected(e.id) || doc_.locked.contains(e.id)) continue;
+        Entity copy = e;
+        copy.id = next++;
+        if (auto r = set_entity_field(copy, "position", e.position + delta); !r)
+            return Error("Duplicate: " + describe(e) + ": " + r.error().message, Location{}, r.error().hint);
+        change->insertions.push_back({doc_.level.entities.size() + new_ids.size(), copy});
+        new_ids.push_back(copy.id);
+    }
+    if (new_ids.empty()) return Error("Duplicate: nothing is selected", Location{}, "select entities first");
+    change->set_name(new_ids.size() == 1 ? "Duplicate"
+                                         : "Duplicate " + std::to_string(new_ids.size()) + " entities");
+    change->next_id = Change<int>{doc_.level.next_id, next};
+    execute(std::move(change), new_ids);
+    return ok();
+}
+
+Result<void> Editor::delete_entities(const std::vector<int>& ids) {
+    auto change = std::make_unique<LevelChange>();
+    for (size_t i = 0; i < doc_.level.entities.size(); ++i) {
+        const Entity& e = doc_.level.entities[i];
+        if (std::find(ids.begin(), ids.end(), e.id) == ids.end() || doc_.locked.contains(e.id)) continue;
+        change->removals.push_back({i, e});
+    }
+    if (change->removals.empty())
+        return Error("Delete: nothing to delete", Location{}, "select unlocked entities first");
+    change->set_name(change->removals.size() == 1
+                         ? "Delete " + describe(change->removals.front().entity)
+                         : "Delete " + std::to_string(change->removals.size()) + " entities");
+    std::vector<int> remaining;
+    for (int id : doc_.selection)
+        if (std::find(ids.begin(), ids.end(), id) == ids.end() || doc_.locked.contains(id))
+            remaining.push_back(id);
+    execute(std::move(change), remaining);
+    return ok();
+}
+
+Result<void> Editor::delete_selection() {
+    return delete_entities(doc_.selection);
+}
+
+std::string Editor::copy() {
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& e : doc_.level.entities)
+        if (doc_.is_selected(e.id)) list.push_back(level::entity_to_json(e));
+    nlohmann::json clip = {{kClipboardKey, 1}, {"entities", std::move(list)}};
+    clipboard_ = clip.dump(2);
+    return clipboard_;
+}
+
+Result<void> Editor::paste() {
+    return paste_text(clipboard_);
+}
+
+Result<void> Editor::paste_text(std::string_view text) {
+    const std::string context = "clipboard";
+    nlohmann::json json = nlohmann::json::parse(text, nullptr, false);
+    if (json.is_discarded())
+        return Error("paste: the clipboard does not hold JSON", Location{context},
+                     "copy entities in the editor first (Ctrl+C), or paste one entity's JSON object");
+    nlohmann::json list;
+    if (json.is_object() && json.contains(kClipboardKey))
+        list = json.value("entities", nlohmann::json::array());
+    else if (json.is_object())
+        list = nlohmann::json::array({json});
+    else if (json.is_array())
+        list = json;
+    if (!list.is_array() || list.empty())
+        return Error(
+            "paste: no entities in the clipboard", Location{context},
+            "expected {\"killswitch-clipboard\":1,\"entities\":[...]}, an entity object or an array of them");
+    auto change = std::make_unique<LevelChange>();
+    std::vector<int> new_ids;
+    int next = doc_.level.next_id;
+    for (size_t i = 0; i < list.size(); ++i) {
+        auto entity = level::entity_from_json(list[i], context + " entities[" + std::to_string(i) + "]");
+        if (!entity)
+            return Error("paste: " + entity.error().message, entity.error().where, entity.error().hint);
+        entity->id = next++;
+        change->insertions.push_back({doc_.level.entities.size() + i, std::move(*entity)});
+        new_ids.push_back(next - 1);
+    }
+    change->set_name(new_ids.size() == 1 ? "Paste" : "Paste " + std::to_string(new_ids.size()) + " entities");
+    change->next_id = Change<int>{doc_.level.next_id, next};
+    execute(std::move(change), new_ids);
+    return ok();
+}
+
+Result<void> Editor::set_setting(std::string_view name, const FieldValue& value, std::string merge_key) {
+    level::Settings after = doc_.level.settings;
+    if (auto r = set_settings_field(after, name, value); !r) return r;
+    if (after == doc_.level.settings) return ok();
+    auto change = std::make_unique<LevelChange>();
+    change->set_name("Set " + std::string(name));
+    change->settings = Change<level::Settings>{doc_.level.settings, after};
+    change->merge_key = std::move(merge_key);
+    execute(std::move(change), doc_.selection);
+    return ok();
+}
+
+Result<void> Editor::set_setting_text(std::string_view name, std::string_view text) {
+    for (const auto& field : describe_settings_fields()) {
+        if (field.name != name) continue;
+        auto value = parse_field_value(field, text);
+        if (!value) return value.error();
+        return set_setting(name, *value);
+    }
+    return set_settings_field(doc_.level.settings, name, FieldValue(0.0)); // unknown: lists the valid names
+}
+
+Result<void> Editor::set_player_start(const level::PlayerStart& start) {
+    if (!is_finite(start.position) || !std::isfinite(start.yaw))
+        return Error("player start: position and yaw must be finite numbers");
+    level::PlayerStart snapped{doc_.grid.snap_point(start.position),
+                               wrap_degrees(doc_.grid.snap_angle(start.yaw))};
+    if (snapped == doc_.level.player_start) return ok();
+    auto change = std::make_unique<LevelChange>();
+    change->set_name("Move player start");
+    change->player_start = Change<level::PlayerStart>{doc_.level.player_start, snapped};
+    execute(std::move(change), doc_.selection);
+    return ok();
+}
+
+Result<void> Editor::rename_level(std::string name) {
+    if (name == doc_.level.name) return ok();
+    auto change = std::make_unique<LevelChange>();
+    change->set_name("Rename level");
+    change->level_name = Change<std::string>{doc_.level.name, std::move(name)};
+    execute(std::move(change), doc_.selection);
+    return ok();
+}
+
+} // namespace ks::editor

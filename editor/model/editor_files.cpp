@@ -1,0 +1,189 @@
+// Editor: New, Open, Save, Save As, title and dirty state, external-change detection, autosave recovery,
+// and the validation panel's hooks.
+#include "model/editor.h"
+
+#include "core/files.h"
+#include "core/log.h"
+#include "level/level_io.h"
+#include "model/autosave.h"
+#include "model/recent_files.h"
+
+namespace ks::editor {
+namespace fs = std::filesystem;
+
+void Editor::replace_level(level::Level level, fs::path path) {
+    doc_ = Document{std::move(level), {}, {}, {}, doc_.grid};
+    history_.clear();
+    path_ = std::move(path);
+    disk_ = path_.empty() ? DiskFingerprint{} : fingerprint_file(path_);
+    recovery_.reset();
+    ++reloads_;
+}
+
+void Editor::new_document() {
+    replace_level(level::Level{}, {});
+}
+
+void Editor::remember_recent(const fs::path& path) {
+    if (!recent_) return;
+    recent_->add(path);
+    if (auto r = recent_->save(); !r) log::warn("could not save the recent files list: ", r.error().str());
+}
+
+Result<void> Editor::open(const fs::path& path) {
+    auto text = files::read_text(path);
+    if (!text) return text.error();
+    level::LoadReport report;
+    auto loaded = level::load_level_string(*text, path.string(), &report);
+    if (!loaded) return loaded.error();
+    for (const auto& d : report.diagnostics)
+        if (d.severity == level::Diagnostic::Severity::Warning) log::warn(d.error.str());
+    replace_level(std::move(*loaded), path);
+    disk_ = fingerprint_text(*text, disk_.mtime);
+    recovery_ = find_recovery(path);
+    remember_recent(path);
+    return ok();
+}
+
+Result<SaveReport> Editor::write_to(const fs::path& path) {
+    const std::string text = level::save_level_string(doc_.level);
+    if (auto r = files::write_atomic(path, text); !r) return r.error();
+    std::error_code ec;
+    disk_ = fingerprint_text(text, fs::last_write_time(path, ec));
+    path_ = path;
+    history_.mark_saved();
+    ++reloads_; // the title changes even when the level did not
+    SaveReport report{path, false, 0, 0};
+    for (const auto& issue : issues()) {
+        if (issue.severity == IssueSeverity::Error)
+            ++report.error_count;
+        else
+            ++report.warning_count;
+    }
+    report.draft = report.error_count > 0;
+    if (report.draft)
+        log::warn(path.string(), ": saved as a draft with ", report.error_count,
+                  " design error(s); see the validation panel");
+    remember_recent(path);
+    return report;
+}
+
+Result<SaveReport> Editor::save(const SaveOptions& options) {
+    if (path_.empty())
+        return Error("this level has no file yet", Location{}, "use Save As to choose where to save it");
+    if (!options.overwrite_external_changes && disk_.exists) {
+        DiskFingerprint now = fingerprint_file(path_);
+        if (now.exists && !now.same_content(disk_))
+            return Error("the file changed on disk since it was opened; saving would overwrite those changes",
+                         Location{path_.string()},
+                         "Save As to keep both, re-open to take the other version, or save with overwrite to "
+                         "replace it");
+    }
+    return write_to(path_);
+}
+
+Result<SaveReport> Editor::save_as(const fs::path& path, const SaveOptions& options) {
+    if (path.empty())
+        return Error("Save As needs a file name", Location{}, "for example levels/my_level.json");
+    std::error_code ec;
+    const bool same_file =
+        !path_.empty() && fs::weakly_canonical(path, ec) == fs::weakly_canonical(path_, ec);
+    if (same_file) return save(options);
+    if (fs::exists(path, ec) && !options.overwrite_existing)
+        return Error("a file with this name already exists", Location{path.string()},
+                     "choose another name, or confirm overwriting it");
+    if (path.has_parent_path() && !fs::is_directory(path.parent_path(), ec))
+        return Error("the folder does not exist", Location{path.parent_path().string()},
+                     "create it first or pick another");
+    return write_to(path);
+}
+
+std::string Editor::title() {
+    std::string t = path_.empty() ? std::string("Untitled") : path_.filename().string();
+    if (has_unsaved_changes()) t += "*";
+    if (count_errors(issues()) > 0) t += " [draft]";
+    return t + " - Killswitch Editor";
+}
+
+DiskStatus Editor::disk_status() const {
+    if (path_.empty() || !disk_.exists) return DiskStatus::NoFile;
+    DiskFingerprint now = fingerprint_file(path_);
+    if (!now.exists) return DiskStatus::Deleted;
+    return now.same_content(disk_) ? DiskStatus::Unchanged : DiskStatus::Modified;
+}
+
+Result<void> Editor::accept_recovery() {
+    if (!recovery_) return Error("there is no autosave to recover");
+    const RecoveryOffer offer = *recovery_;
+    auto text = files::read_text(offer.autosave);
+    if (!text) return text.error();
+    auto loaded = level::load_level_string(*text, offer.autosave.string());
+    if (!loaded) return loaded.error();
+    // One undoable step that swaps the whole level: undo returns to the file as it is on disk.
+    auto change = std::make_unique<LevelChange>();
+    change->set_name("Recover autosave " + offer.autosave.filename().string());
+    for (size_t i = 0; i < doc_.level.entities.size(); ++i)
+        change->removals.push_back({i, doc_.level.entities[i]});
+    for (size_t i = 0; i < loaded->entities.size(); ++i)
+        change->insertions.push_back({i, loaded->entities[i]});
+    change->level_name = Change<std::string>{doc_.level.name, loaded->name};
+    change->settings = Change<level::Settings>{doc_.level.settings, loaded->settings};
+    change->player_start = Change<level::PlayerStart>{doc_.level.player_start, loaded->player_start};
+    change->next_id = Change<int>{doc_.level.next_id, loaded->next_id};
+    execute(std::move(change), {});
+    recovery_.reset();
+    return ok();
+}
+
+const std::vector<Issue>& Editor::issues() {
+    if (issues_revision_ != history_.revision() + reloads_) {
+        issues_ = validate_design(doc_.level, validation_options_);
+        issues_revision_ = history_.revision() + reloads_;
+    }
+    return issues_;
+}
+
+Result<void> Editor::select_issue(const Issue& issue) {
+    if (issue.entity_id == 0) return ok();
+    return select({issue.entity_id});
+}
+
+Result<void> Editor::apply_quick_fix(const Issue& issue) {
+    const QuickFix& fix = issue.fix;
+    const std::string name = "Quick fix: " + fix.label;
+    auto update_entity = [&](const std::function<Result<void>(level::Entity&)>& edit) -> Result<void> {
+        const level::Entity* current = doc_.level.find(issue.entity_id);
+        if (!current)
+            return Error(name + ": entity " + std::to_string(issue.entity_id) + " no longer exists");
+        if (doc_.locked.contains(issue.entity_id))
+            return Error(name + ": entity " + std::to_string(issue.entity_id) + " is locked");
+        level::Entity after = *current;
+        if (auto r = edit(after); !r) return r;
+        auto change = std::make_unique<LevelChange>();
+        change->set_name(name);
+        change->updates.push_back({*current, std::move(after)});
+        execute(std::move(change), {issue.entity_id});
+        return ok();
+    };
+    switch (fix.kind) {
+    case QuickFix::Kind::None:
+        return Error("this issue has no quick fix", Location{}, issue.message);
+    case QuickFix::Kind::MoveEntity:
+        return update_entity([&](level::Entity& e) { return set_entity_field(e, "position", fix.position); });
+    case QuickFix::Kind::SetField:
+        return update_entity([&](level::Entity& e) { return set_entity_field(e, fix.field, fix.value); });
+    case QuickFix::Kind::DeleteEntity:
+        return delete_entities({issue.entity_id});
+    case QuickFix::Kind::MovePlayerStart: {
+        auto change = std::make_unique<LevelChange>();
+        change->set_name(name);
+        change->player_start =
+            Change<level::PlayerStart>{doc_.level.player_start, {fix.position, doc_.level.player_start.yaw}};
+        execute(std::move(change), doc_.selection);
+        return ok();
+    }
+    }
+    return ok();
+}
+
+} // namespace ks::editor

@@ -1,0 +1,188 @@
+#include "model/reachability.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <deque>
+
+namespace ks::editor {
+namespace {
+using level::Entity;
+using level::EntityType;
+
+constexpr int kMaxSurfaces = 4; // walkable layers per cell (ground, platform, stair tread, ...)
+
+struct Solid {
+    Obb box;
+    Aabb bounds;
+};
+
+bool blocks_walking(EntityType t) {
+    switch (t) {
+    case EntityType::Wall:
+    case EntityType::Floor: // slabs: a low ceiling or platform edge the body cannot pass through
+    case EntityType::FloorLight:
+    case EntityType::GasCylinder:
+    case EntityType::ControlPanel:
+        return true;
+    default:
+        return false; // doors open, robots and pickups move or vanish, stairs are walked on
+    }
+}
+} // namespace
+
+WalkGridStats walk_to_control_panel(const level::Level& level, const ValidationOptions& o) {
+    WalkGridStats stats;
+    const Entity* panel = nullptr;
+    std::vector<const Entity*> supports;
+    std::vector<Solid> solids;
+    Aabb area{Vec3(3e38f), Vec3(-3e38f)};
+    for (const auto& e : level.entities) {
+        if (!is_finite(e.position) || !is_finite(e.rotation)) continue;
+        if (!panel && e.type() == EntityType::ControlPanel) panel = &e;
+        const Obb box = entity_obb(e);
+        if (blocks_walking(e.type())) solids.push_back({box, box.aabb()});
+        const auto* floor = e.try_as<level::FloorProps>();
+        if (e.type() == EntityType::Stair || (floor && !floor->ceiling)) {
+            supports.push_back(&e);
+            const Aabb b = box.aabb();
+            area.min = glm::min(area.min, b.min);
+            area.max = glm::max(area.max, b.max);
+        }
+    }
+    if (!panel || supports.empty() || !is_finite(level.player_start.position)) return stats;
+
+    const auto& ch = o.character;
+    float cell = std::max(o.walk_cell, 0.05f);
+    const float width = area.max.x - area.min.x, depth = area.max.z - area.min.z;
+    while ((width / cell + 1) * (depth / cell + 1) > 2e6f) cell *= 2;
+    const int cols = static_cast<int>(std::ceil(width / cell)) + 1;
+    const int rows = static_cast<int>(std::ceil(depth / cell)) + 1;
+    stats.columns = cols, stats.rows = rows, stats.cell = cell;
+
+    const size_t cells = static_cast<size_t>(cols) * static_cast<size_t>(rows);
+    std::vector<std::array<float, kMaxSurfaces>> heights(cells);
+    std::vector<std::uint8_t> layer_count(cells, 0), open(cells * kMaxSurfaces, 0);
+    auto centre = [&](int c, int r) {
+        return Vec2(area.min.x + (static_cast<float>(c) + 0.5f) * cell,
+                    area.min.z + (static_cast<float>(r) + 0.5f) * cell);
+    };
+    const float body_half_height = (ch.height - ch.step_height) / 2;
+    for (int r = 0; r < rows; ++r) {
+        for (int c = 0; c < cols; ++c) {
+            const Vec2 p = centre(c, r);
+            std::array<float, 16> found{};
+            int n = 0;
+            for (const Entity* s : supports) {
+                auto h = surface_height_at(*s, p.x, p.y);
+                if (!h || n == static_cast<int>(found.size())) continue;
+                // A floor under a stair is buried inside the stair's solid.
+                bool buried = false;
+                if (s->type() == EntityType::Floor)
+                    for (const Entity* other : supports)
+                        if (other->type() == EntityType::Stair && other->position.y <= *h + 1e-3f)
+                            if (auto tread = surface_height_at(*other, p.x, p.y);
+                                tread && *tread > *h + 1e-3f)
+                                buried = true;
+                if (!buried) found[n++] = *h;
+            }
+            std::sort(found.begin(), found.begin() + n);
+            n = static_cast<int>(std::unique(found.begin(), found.begin() + n,
+                                             [](float a, float b) { return std::abs(a - b) < 1e-3f; }) -
+                                 found.begin());
+            const int first = std::max(0, n - kMaxSurfaces);
+            const size_t index = static_cast<size_t>(r) * cols + c;
+            for (int k = first; k < n; ++k) {
+                const float h = found[k];
+                const int slot = k - first;
+                heights[index][slot] = h;
+                Obb body;
+                body.center = {p.x, h + ch.step_height + body_half_height, p.y};
+                body.half = {ch.radius, body_half_height, ch.radius};
+                const Aabb body_bounds = body.aabb();
+                bool free = true;
+                for (const Solid& s : solids) {
+                    if (!s.bounds.intersects(body_bounds)) continue;
+                    if (obb_overlap(body, s.box).overlapping) {
+                        free = false;
+                        break;
+                    }
+                }
+                open[index * kMaxSurfaces + slot] = free;
+                stats.open_nodes += free;
+            }
+            layer_count[index] = static_cast<std::uint8_t>(n - first);
+        }
+    }
+
+    // Start: the highest surface under the player start's feet.
+    const Vec3 start = level.player_start.position;
+    const int sc = static_cast<int>(std::floor((start.x - area.min.x) / cell));
+    const int sr = static_cast<int>(std::floor((start.z - area.min.z) / cell));
+    if (sc < 0 || sr < 0 || sc >= cols || sr >= rows) return stats;
+    const size_t start_cell = static_cast<size_t>(sr) * cols + sc;
+    int start_layer = -1;
+    for (int k = 0; k < layer_count[start_cell]; ++k)
+        if (heights[start_cell][k] <= start.y + o.support_tolerance + ch.step_height) start_layer = k;
+    if (start_layer < 0) return stats;
+    stats.decided = true;
+
+    // Reached: the body touches the panel (its box grown by the body radius and a little reach).
+    Obb goal = entity_obb(*panel);
+    goal.half += Vec3(ch.radius + cell + 0.25f, 0.5f, ch.radius + cell + 0.25f);
+    std::vector<std::uint8_t> seen(cells * kMaxSurfaces, 0);
+    std::deque<size_t> queue{start_cell * kMaxSurfaces + static_cast<size_t>(start_layer)};
+    seen[queue.front()] = 1;
+    const int dc[4] = {1, -1, 0, 0}, dr[4] = {0, 0, 1, -1};
+    while (!queue.empty()) {
+        const size_t node = queue.front();
+        queue.pop_front();
+        ++stats.visited_nodes;
+        const size_t index = node / kMaxSurfaces;
+        const float h = heights[index][node % kMaxSurfaces];
+        const int c = static_cast<int>(index % static_cast<size_t>(cols)),
+                  r = static_cast<int>(index / static_cast<size_t>(cols));
+        const Vec2 p = centre(c, r);
+        if (goal.contains({p.x, h + ch.height / 2, p.y})) {
+            stats.reachable = true;
+            break;
+        }
+        for (int d = 0; d < 4; ++d) {
+            const int nc = c + dc[d], nr = r + dr[d];
+            if (nc < 0 || nr < 0 || nc >= cols || nr >= rows) continue;
+            const size_t ni = static_cast<size_t>(nr) * cols + nc;
+            // Step up at most step_height; otherwise land on the highest surface below (a drop).
+            int target = -1;
+            for (int k = 0; k < layer_count[ni]; ++k)
+                if (heights[ni][k] <= h + ch.step_height + 1e-3f) target = k;
+            if (target < 0) continue;
+            const size_t next = ni * kMaxSurfaces + static_cast<size_t>(target);
+            if (seen[next] || !open[next]) continue;
+            seen[next] = 1;
+            queue.push_back(next);
+        }
+    }
+    return stats;
+}
+
+void check_reachability(const level::Level& level, const ValidationOptions& options,
+                        std::vector<Issue>& out) {
+    const WalkGridStats stats = walk_to_control_panel(level, options);
+    if (!stats.decided || stats.reachable) return;
+    int panel_id = 0;
+    for (const auto& e : level.entities)
+        if (e.type() == EntityType::ControlPanel) {
+            panel_id = e.id;
+            break;
+        }
+    out.push_back(
+        {Rule::Reachability,
+         IssueSeverity::Warning,
+         panel_id,
+         "control panel " + std::to_string(panel_id) +
+             " cannot be reached on foot from the player start (doors count as open, jumps are not counted)",
+         {}});
+}
+
+} // namespace ks::editor

@@ -1,0 +1,100 @@
+#pragma once
+// Scripted mode: a line-based language that drives the same Editor operations the UI dispatches, for tests
+// and automation (`killswitch-editor --script FILE`). The whole script is parsed first, so a typo on line 40
+// is reported before line 1 changes anything; errors read "file:line:column: message (hint)".
+// The language is documented in docs/editor.md.
+#include "core/result.h"
+#include "model/editor.h"
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace ks::editor {
+
+enum class ScriptOp {
+    New,
+    Open,
+    Save,
+    SaveAs,
+    Place,
+    Select,
+    SelectAll,
+    SelectType,
+    SelectNone,
+    SelectBox,
+    Move,
+    Nudge,
+    Rotate,
+    Scale,
+    Set,
+    Reset,
+    Setting,
+    PlayerStart,
+    LevelName,
+    Delete,
+    Duplicate,
+    Copy,
+    Paste,
+    Undo,
+    Redo,
+    Grid,
+    Snap,
+    Lock,
+    Unlock,
+    Hide,
+    Show,
+    Begin,
+    Commit,
+    Cancel,
+    Fix,
+    Recover,
+    ExpectCount,
+    ExpectValid,
+    ExpectIssue,
+    ExpectNoIssue,
+    ExpectSelected,
+    ExpectField,
+    ExpectDirty,
+    ExpectClean,
+};
+
+// One parsed line. Which members matter depends on op (see script.cpp's parser).
+struct ScriptStep {
+    ScriptOp op = ScriptOp::New;
+    int line = 0;
+    level::EntityType type = level::EntityType::Wall;
+    Vec3 vec{0.0f}, vec2{0.0f};
+    bool has_vec = false;
+    float number = 0.0f;
+    bool has_number = false;
+    int count = 0;
+    std::vector<int> ids;
+    SelectMode mode = SelectMode::Replace;
+    std::string text, text2; // field names, values, paths, names
+};
+
+struct Script {
+    std::string file_name;
+    std::filesystem::path base_dir; // relative paths in the script resolve against it
+    std::vector<ScriptStep> steps;
+};
+
+struct ScriptReport {
+    int lines_run = 0;
+    int expectations_checked = 0;
+    std::vector<std::filesystem::path> saved; // every file written by `save`, in order
+};
+
+// Parses every line; all syntax errors at once, one per line of the combined Error.
+Result<Script> parse_script(std::string_view text, const std::string& file_name);
+// Runs a parsed script on `editor`; stops at the first failing line.
+Result<ScriptReport> run_parsed_script(const Script& script, Editor& editor);
+// Reads, parses and runs a script file on a fresh editor (paths relative to the script's folder).
+Result<ScriptReport> run_script(const std::filesystem::path& path);
+// The same on an existing editor, for tests and a script console.
+Result<ScriptReport> run_script_text(std::string_view text, const std::string& file_name,
+                                     const std::filesystem::path& base_dir, Editor& editor);
+
+} // namespace ks::editor

@@ -1,0 +1,327 @@
+#include "model/validation.h"
+
+#include "level/level_io.h"
+#include "model/reachability.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace ks::editor {
+namespace {
+using level::Entity;
+using level::EntityType;
+using level::Level;
+
+std::string describe(const Entity& e) {
+    std::string s = std::string(level::type_name(e.type())) + " " + std::to_string(e.id);
+    if (!e.name.empty()) s += " '" + e.name + "'";
+    return s;
+}
+
+std::string num(float v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.2f", static_cast<double>(v));
+    return buf;
+}
+
+// "entities[12].size" -> the id of entity 12, else 0.
+int entity_id_from_path(const Level& level, const std::string& path) {
+    const std::string prefix = "entities[";
+    if (path.compare(0, prefix.size(), prefix) != 0) return 0;
+    size_t index = 0, i = prefix.size();
+    bool digits = false;
+    for (; i < path.size() && std::isdigit(static_cast<unsigned char>(path[i])); ++i, digits = true)
+        index = index * 10 + static_cast<size_t>(path[i] - '0');
+    if (!digits || i >= path.size() || path[i] != ']' || index >= level.entities.size()) return 0;
+    return level.entities[index].id;
+}
+
+struct Support {
+    bool over_any = false;      // some floor or stair lies under or over (x, z)
+    std::optional<float> below; // highest surface at or below y (within tolerance)
+    std::optional<float> sunk;  // lowest surface a little above y: the entity is sunk into it
+};
+
+Support find_support(const Level& level, int self_id, Vec3 p, const ValidationOptions& o) {
+    Support s;
+    for (const auto& e : level.entities) {
+        if (e.id == self_id) continue;
+        auto h = surface_height_at(e, p.x, p.z);
+        if (!h) continue;
+        s.over_any = true;
+        if (*h <= p.y + o.support_tolerance) {
+            if (!s.below || *h > *s.below) s.below = h;
+        } else if (*h <= p.y + o.sink_limit) {
+            if (!s.sunk || *h < *s.sunk) s.sunk = h;
+        }
+    }
+    return s;
+}
+
+bool stands_on_ground(EntityType t) {
+    switch (t) {
+    case EntityType::Stair:
+    case EntityType::Door:
+    case EntityType::FloorLight:
+    case EntityType::Robot:
+    case EntityType::Pickup:
+    case EntityType::GasCylinder:
+    case EntityType::ControlPanel:
+        return true;
+    default:
+        return false; // walls (lintels float by design), floors, ceiling lights
+    }
+}
+
+bool is_gameplay_body(EntityType t) {
+    switch (t) {
+    case EntityType::FloorLight:
+    case EntityType::Robot:
+    case EntityType::Pickup:
+    case EntityType::GasCylinder:
+    case EntityType::ControlPanel:
+        return true;
+    default:
+        return false; // architecture meets walls on purpose; doors sit in wall gaps (own rule)
+    }
+}
+
+// Checks the ground under p; returns an issue message and the fixed height when something is wrong.
+struct SupportProblem {
+    std::string message;
+    IssueSeverity severity = IssueSeverity::Warning;
+    std::optional<float> fixed_y;
+};
+std::optional<SupportProblem> support_problem(const Level& level, int self_id, Vec3 p,
+                                              const ValidationOptions& o) {
+    Support s = find_support(level, self_id, p, o);
+    if (s.below && p.y - *s.below <= o.support_tolerance) return std::nullopt;
+    if (s.sunk)
+        return SupportProblem{"is sunk " + num(*s.sunk - p.y) + " units into the floor",
+                              IssueSeverity::Warning, s.sunk};
+    if (s.below)
+        return SupportProblem{"floats " + num(p.y - *s.below) + " units above the floor",
+                              IssueSeverity::Warning, s.below};
+    if (s.over_any)
+        return SupportProblem{"is below every floor at its spot", IssueSeverity::Error, std::nullopt};
+    return SupportProblem{"is outside every floor", IssueSeverity::Error, std::nullopt};
+}
+
+// Horizontal push that takes `box` out of a wall it overlaps by `ov` (none for vertical overlaps).
+std::optional<Vec3> push_out(const Overlap& ov) {
+    Vec3 horizontal(ov.axis.x, 0.0f, ov.axis.z);
+    const float len = glm::length(horizontal);
+    if (len < 0.3f) return std::nullopt;
+    return horizontal / len * (ov.depth / len + 0.01f);
+}
+
+void check_format(const Level& level, std::vector<Issue>& out) {
+    const auto report = level::validate(level);
+    for (const auto& d : report.diagnostics) {
+        Issue issue;
+        issue.rule = Rule::Format;
+        issue.severity =
+            d.severity == level::Diagnostic::Severity::Error ? IssueSeverity::Error : IssueSeverity::Warning;
+        issue.entity_id = entity_id_from_path(level, d.error.where.path);
+        issue.message = d.error.str();
+        out.push_back(std::move(issue));
+    }
+}
+
+void check_player_start(const Level& level, const std::vector<const Entity*>& walls,
+                        const ValidationOptions& o, std::vector<Issue>& out) {
+    const auto& start = level.player_start;
+    auto add = [&](IssueSeverity sev, std::string msg, QuickFix fix = {}) {
+        out.push_back({Rule::PlayerStart, sev, 0, "player start " + std::move(msg), std::move(fix)});
+    };
+    if (!is_finite(start.position) || !std::isfinite(start.yaw)) {
+        add(IssueSeverity::Error, "has a non-finite position or yaw");
+        return;
+    }
+    if (auto problem = support_problem(level, 0, start.position, o)) {
+        QuickFix fix;
+        if (problem->fixed_y) {
+            fix.kind = QuickFix::Kind::MovePlayerStart;
+            fix.label = "Drop to floor";
+            fix.position = {start.position.x, *problem->fixed_y, start.position.z};
+        }
+        // Without ground under it the player falls forever: that is an error, not a nit.
+        add(problem->fixed_y ? problem->severity : IssueSeverity::Error, problem->message, std::move(fix));
+    }
+    const Obb body = player_obb(start);
+    for (const Entity* w : walls) {
+        Overlap ov = obb_overlap(body, entity_obb(*w));
+        if (!ov.overlapping) continue;
+        QuickFix fix;
+        if (auto delta = push_out(ov)) {
+            fix.kind = QuickFix::Kind::MovePlayerStart;
+            fix.label = "Push out of the wall";
+            fix.position = start.position + *delta;
+        }
+        add(IssueSeverity::Error, "is inside " + describe(*w) + " (by " + num(ov.depth) + ")",
+            std::move(fix));
+        break;
+    }
+}
+
+void check_control_panels(const Level& level, std::vector<Issue>& out) {
+    int count = 0;
+    for (const auto& e : level.entities) {
+        if (e.type() != EntityType::ControlPanel) continue;
+        if (++count == 1) continue;
+        QuickFix fix{QuickFix::Kind::DeleteEntity, "Delete", {}, {}, {}};
+        out.push_back({Rule::ControlPanel, IssueSeverity::Warning, e.id,
+                       describe(e) + " is an extra control panel; the level needs exactly one", fix});
+    }
+    if (count == 0)
+        out.push_back({Rule::ControlPanel,
+                       IssueSeverity::Error,
+                       0,
+                       "the level has no control panel, so it cannot be won; place one",
+                       {}});
+}
+
+void check_wall_overlaps(const Level& level, const std::vector<const Entity*>& walls,
+                         std::vector<Issue>& out) {
+    for (const auto& e : level.entities) {
+        if (!is_gameplay_body(e.type())) continue;
+        const Obb box = entity_obb(e);
+        const Aabb bounds = box.aabb();
+        for (const Entity* w : walls) {
+            const Obb wall = entity_obb(*w);
+            if (!bounds.intersects(wall.aabb())) continue;
+            Overlap ov = obb_overlap(box, wall, 0.01f);
+            if (!ov.overlapping) continue;
+            QuickFix fix;
+            if (auto delta = push_out(ov)) {
+                fix.kind = QuickFix::Kind::MoveEntity;
+                fix.label = "Push out of the wall";
+                fix.position = e.position + *delta;
+            }
+            out.push_back({Rule::WallOverlap, IssueSeverity::Error, e.id,
+                           describe(e) + " overlaps " + describe(*w) + " by " + num(ov.depth),
+                           std::move(fix)});
+            break;
+        }
+    }
+}
+
+void check_support(const Level& level, const ValidationOptions& o, std::vector<Issue>& out) {
+    for (const auto& e : level.entities) {
+        if (!stands_on_ground(e.type()) || !is_finite(e.position)) continue;
+        auto problem = support_problem(level, e.id, e.position, o);
+        if (!problem) continue;
+        QuickFix fix{QuickFix::Kind::DeleteEntity, "Delete", {}, {}, {}};
+        if (problem->fixed_y) {
+            fix.kind = QuickFix::Kind::MoveEntity;
+            fix.label = "Drop to floor";
+            fix.position = {e.position.x, *problem->fixed_y, e.position.z};
+        }
+        out.push_back(
+            {Rule::Support, problem->severity, e.id, describe(e) + " " + problem->message, std::move(fix)});
+    }
+}
+
+void check_stairs(const Level& level, const ValidationOptions& o, std::vector<Issue>& out) {
+    const float limit = o.character.max_slope_degrees;
+    for (const auto& e : level.entities) {
+        const auto* s = e.try_as<level::StairProps>();
+        if (!s) continue;
+        const float slope = degrees(std::atan2(s->size.y, s->size.z));
+        if (!(slope > limit + 1e-3f)) continue;
+        // The shortest run the character can still climb, rounded up to a hundredth.
+        const float run = std::ceil(s->size.y / std::tan(radians(limit)) * 100.0f) / 100.0f;
+        QuickFix fix{QuickFix::Kind::SetField,
+                     "Lengthen the run to " + num(run),
+                     {},
+                     "size",
+                     FieldValue(Vec3(s->size.x, s->size.y, run))};
+        out.push_back(
+            {Rule::StairSlope, IssueSeverity::Error, e.id,
+             describe(e) + " rises at " + num(slope) + " degrees; the character climbs at most " + num(limit),
+             std::move(fix)});
+    }
+}
+
+void check_doors(const Level& level, const std::vector<const Entity*>& walls, std::vector<Issue>& out) {
+    for (const auto& e : level.entities) {
+        const auto* d = e.try_as<level::DoorProps>();
+        if (!d) continue;
+        const Obb door = entity_obb(e);
+        // Probes just beyond each jamb, at mid height, must be inside a wall; the doorway must be free.
+        auto wall_at = [&](float side) {
+            const Vec3 probe = door.center + door.axes[0] * (side * (d->width / 2 + 0.25f));
+            for (const Entity* w : walls)
+                if (entity_obb(*w).contains(probe, 0.05f)) return true;
+            return false;
+        };
+        const bool left = wall_at(-1.0f), right = wall_at(1.0f);
+        std::string problem;
+        if (!left && !right)
+            problem = "stands in the open: no wall on either side";
+        else if (!left)
+            problem = "has no wall beside its -x jamb";
+        else if (!right)
+            problem = "has no wall beside its +x jamb";
+        Obb doorway = door;
+        doorway.half = {std::max(d->width / 2 - 0.1f, 0.01f), std::max(d->height / 2 - 0.1f, 0.01f), 0.05f};
+        for (const Entity* w : walls) {
+            if (!problem.empty()) break;
+            if (obb_overlap(doorway, entity_obb(*w)).overlapping) problem = "is blocked by " + describe(*w);
+        }
+        if (!problem.empty())
+            out.push_back({Rule::DoorGap,
+                           IssueSeverity::Error,
+                           e.id,
+                           describe(e) + " is not in a wall gap: it " + problem,
+                           {}});
+    }
+}
+} // namespace
+
+const char* rule_name(Rule rule) {
+    switch (rule) {
+    case Rule::Format:
+        return "format";
+    case Rule::PlayerStart:
+        return "player_start";
+    case Rule::ControlPanel:
+        return "control_panel";
+    case Rule::WallOverlap:
+        return "wall_overlap";
+    case Rule::Support:
+        return "support";
+    case Rule::StairSlope:
+        return "stair_slope";
+    case Rule::DoorGap:
+        return "door_gap";
+    case Rule::Reachability:
+        return "reachability";
+    }
+    return "?";
+}
+
+int count_errors(const std::vector<Issue>& issues) {
+    int n = 0;
+    for (const auto& i : issues) n += i.severity == IssueSeverity::Error;
+    return n;
+}
+
+std::vector<Issue> validate_design(const Level& level, const ValidationOptions& options) {
+    std::vector<Issue> out;
+    check_format(level, out);
+    std::vector<const Entity*> walls;
+    for (const auto& e : level.entities)
+        if (e.type() == EntityType::Wall && is_finite(e.position) && is_finite(e.rotation))
+            walls.push_back(&e);
+    check_player_start(level, walls, options, out);
+    check_control_panels(level, out);
+    check_wall_overlaps(level, walls, out);
+    check_support(level, options, out);
+    check_stairs(level, options, out);
+    check_doors(level, walls, out);
+    if (options.check_reachability) check_reachability(level, options, out);
+    return out;
+}
+
+} // namespace ks::editor

@@ -1,0 +1,54 @@
+#pragma once
+// Live design checks on a level, beyond the format's own ranges: things a level can be saved with (as a
+// draft) but should not ship with. Each issue names the entity it is about, so the validation panel can
+// select it, and carries a quick fix where the fix is obvious.
+#include "model/bounds.h"
+#include "model/field_access.h"
+
+#include <string>
+#include <vector>
+
+namespace ks::editor {
+
+enum class Rule {
+    Format,       // a range / NaN / id problem that level_io::validate reports
+    PlayerStart,  // the player start is not on a floor, or is inside a wall
+    ControlPanel, // missing, or more than one
+    WallOverlap,  // a gameplay entity intersects a wall
+    Support,      // floating above, sunk into, or outside any floor
+    StairSlope,   // steeper than the character can climb
+    DoorGap,      // a door that does not sit in a gap between walls
+    Reachability, // the control panel cannot be walked to from the player start
+};
+const char* rule_name(Rule rule);
+
+enum class IssueSeverity { Warning, Error };
+
+struct QuickFix {
+    enum class Kind { None, MoveEntity, MovePlayerStart, DeleteEntity, SetField } kind = Kind::None;
+    std::string label;   // "Drop to floor", shown on the button
+    Vec3 position{0.0f}; // MoveEntity / MovePlayerStart
+    std::string field;   // SetField
+    FieldValue value;    // SetField
+};
+
+struct Issue {
+    Rule rule = Rule::Format;
+    IssueSeverity severity = IssueSeverity::Error;
+    int entity_id = 0; // 0: the level itself or its player start
+    std::string message;
+    QuickFix fix;
+};
+
+struct ValidationOptions {
+    CharacterLimits character;
+    float support_tolerance = 0.05f; // how far above/below a surface still counts as standing on it
+    float sink_limit = 1.0f;         // deeper than this under a surface, the entity belongs to a lower one
+    bool check_reachability = true;
+    float walk_cell = 0.5f; // grid cell of the reachability check, units (capped at 2M cells)
+};
+
+std::vector<Issue> validate_design(const level::Level& level, const ValidationOptions& options = {});
+int count_errors(const std::vector<Issue>& issues);
+
+} // namespace ks::editor
