@@ -1,7 +1,7 @@
 #pragma once
-// A static bounding-volume hierarchy over AABBs, built once with the surface-area heuristic (full sweep on
-// the three axes), stored as one contiguous array of 32-byte nodes. Queries allocate nothing: traversal
-// uses a fixed stack; the caller's visitor is inlined (templates).
+// A static bounding-volume hierarchy over AABBs, built once with the surface-area heuristic (binned, 32
+// bins on the widest centroid axis), stored as one contiguous array of 32-byte nodes. Queries allocate
+// nothing: traversal uses a fixed stack; the caller's visitor is inlined (templates).
 #include "physics/ray.h"
 #include "physics/shapes.h"
 
@@ -30,11 +30,12 @@ class Bvh {
     std::span<const std::uint32_t> item_order() const { return order_; }
     int depth() const { return depth_; }
 
-    // Visits items whose box the ray crosses within [0, max_t], nearest node first. visit(item, max_t&)
+    // Visits leaf slots (positions in item_order(), so per-item data stored in that order is read
+    // contiguously) whose box the ray crosses within [0, max_t], nearest node first. visit(slot, max_t&)
     // returns false to stop; it may shrink max_t (closest-hit queries) to prune the rest.
     template <class Visit>
     void ray_query(const Ray& ray, float max_t, Visit&& visit) const;
-    // Visits items whose box overlaps `box`. visit(item) returns false to stop.
+    // Visits leaf slots whose node box overlaps `box`. visit(slot) returns false to stop.
     template <class Visit>
     void aabb_query(const Aabb& box, Visit&& visit) const;
 
@@ -61,7 +62,7 @@ void Bvh::ray_query(const Ray& ray, float max_t, Visit&& visit) const {
         const Node& node = nodes_[current];
         if (node.count > 0) {
             for (std::uint32_t i = 0; i < node.count; ++i)
-                if (!visit(order_[node.left_or_first + i], max_t)) return;
+                if (!visit(node.left_or_first + i, max_t)) return;
         } else {
             const std::uint32_t l = node.left_or_first, r = l + 1;
             float tl, tr;
@@ -105,7 +106,7 @@ void Bvh::aabb_query(const Aabb& box, Visit&& visit) const {
         if (!box.overlaps({node.min, node.max})) continue;
         if (node.count > 0) {
             for (std::uint32_t i = 0; i < node.count; ++i)
-                if (!visit(order_[node.left_or_first + i])) return;
+                if (!visit(node.left_or_first + i)) return;
         } else {
             stack[top++] = node.left_or_first + 1;
             stack[top++] = node.left_or_first;

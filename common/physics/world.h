@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -181,17 +182,38 @@ class World {
     std::vector<Body> bodies_;
     std::vector<std::uint32_t> free_slots_;
     std::vector<CharacterData> characters_;
-    std::vector<CollisionCallback> on_collision_; // by body index
-    std::vector<TriggerCallback> on_trigger_;     // by body index
+    // By body index. Shared so a callback that adds bodies (growing these arrays) or replaces itself keeps
+    // running on a live object.
+    std::vector<std::shared_ptr<CollisionCallback>> on_collision_;
+    std::vector<std::shared_ptr<TriggerCallback>> on_trigger_;
     std::size_t live_count_ = 0;
 
-    // Static set: BVH over static bodies (non-trigger), rebuilt lazily.
+    // Static set: BVH over static bodies (non-trigger), rebuilt lazily. What rays need of each static body
+    // is copied into a compact array in BVH leaf order, so leaves are read contiguously.
+    struct StaticPrim {
+        Vec3 position;
+        std::uint32_t body;
+        Quat rotation;
+        Vec3 half;
+        std::uint32_t layers;
+        ShapeKind kind;
+        bool axis_aligned;
+        bool enabled;
+    };
     mutable Bvh static_bvh_;
-    mutable std::vector<std::uint32_t> static_items_; // BVH item -> body index
+    mutable std::vector<StaticPrim> static_prims_;      // by BVH leaf slot
+    mutable std::vector<std::uint32_t> static_slot_of_; // body index -> leaf slot (or ~0)
     mutable bool static_dirty_ = true;
+    bool ray_static(const Ray& ray, const StaticPrim& prim, ShapeHit& hit) const;
     // Moving set (kinematic, characters, triggers), sorted by min x each step for sort-and-sweep.
     std::vector<std::uint32_t> movers_;
+    std::vector<float> mover_keys_; // min x of each mover's bounds at the start of the step (sorted)
+    float mover_max_width_ = 0.0f;
+    float mover_slack_ = 0.0f; // how far a mover may travel in this step (its bounds stay inside key range)
     std::vector<std::uint32_t> static_triggers_;
+    void sort_movers(float dt);
+    template <class Visit>
+    void movers_overlapping(const Aabb& region, Visit&& visit) const;
 
     // Per-step buffers, reused.
     CharacterScratch scratch_;

@@ -1,0 +1,129 @@
+#include "physics/bvh.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ks::physics {
+namespace {
+
+constexpr int kBins = 32;
+
+struct Builder {
+    std::span<const Aabb> boxes;
+    std::vector<Vec3> centres;
+    std::vector<std::uint32_t>& order;
+    std::vector<Bvh::Node>& nodes;
+    int max_depth = 0;
+
+    Aabb bounds_of(std::uint32_t first, std::uint32_t count) const {
+        Aabb b = Aabb::empty();
+        for (std::uint32_t i = first; i < first + count; ++i) b.grow(boxes[order[i]]);
+        return b;
+    }
+
+    void build(std::uint32_t node_index, std::uint32_t first, std::uint32_t count, int depth) {
+        max_depth = std::max(max_depth, depth);
+        Aabb b = bounds_of(first, count);
+        // Widen by a few ulps so the node test is conservative for every primitive inside it.
+        const Vec3 pad = (glm::abs(b.min) + glm::abs(b.max)) * 1e-6f + Vec3(1e-6f);
+        nodes[node_index].min = b.min - pad;
+        nodes[node_index].max = b.max + pad;
+        if (count <= 1 || depth >= Bvh::kMaxDepth - 2) return make_leaf(node_index, first, count);
+
+        Aabb cb = Aabb::empty();
+        for (std::uint32_t i = first; i < first + count; ++i) cb.grow(centres[order[i]]);
+        const Vec3 ext = cb.max - cb.min;
+        int axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : (ext.y >= ext.z ? 1 : 2);
+        std::uint32_t mid = first + count / 2;
+        bool split_found = false;
+        if (ext[axis] > 0.0f) {
+            Aabb bin_box[kBins];
+            std::uint32_t bin_count[kBins] = {};
+            for (auto& bb : bin_box) bb = Aabb::empty();
+            const float scale = kBins / ext[axis];
+            auto bin_of = [&](std::uint32_t item) {
+                int k = static_cast<int>((centres[item][axis] - cb.min[axis]) * scale);
+                return std::clamp(k, 0, kBins - 1);
+            };
+            for (std::uint32_t i = first; i < first + count; ++i) {
+                const int k = bin_of(order[i]);
+                bin_box[k].grow(boxes[order[i]]);
+                ++bin_count[k];
+            }
+            float right_area[kBins];
+            std::uint32_t right_count[kBins];
+            Aabb acc = Aabb::empty();
+            std::uint32_t n = 0;
+            for (int k = kBins - 1; k > 0; --k) {
+                if (bin_count[k]) acc.grow(bin_box[k]);
+                n += bin_count[k];
+                right_area[k] = n ? acc.surface_area() : 0.0f;
+                right_count[k] = n;
+            }
+            float best_cost = 3.4e38f;
+            int best_split = -1;
+            acc = Aabb::empty();
+            n = 0;
+            for (int k = 0; k < kBins - 1; ++k) {
+                if (bin_count[k]) acc.grow(bin_box[k]);
+                n += bin_count[k];
+                if (n == 0 || right_count[k + 1] == 0) continue;
+                const float cost = acc.surface_area() * n + right_area[k + 1] * right_count[k + 1];
+                if (cost < best_cost) best_cost = cost, best_split = k;
+            }
+            const float leaf_cost = b.surface_area() * count;
+            // Traversal costs about one box test per child; a leaf of <= kMaxLeafSize stays when cheaper.
+            if (best_split >= 0) {
+                if (count <= Bvh::kMaxLeafSize && best_cost + 2.0f * b.surface_area() >= leaf_cost)
+                    return make_leaf(node_index, first, count);
+                auto it = std::partition(order.begin() + first, order.begin() + first + count,
+                                         [&](std::uint32_t item) { return bin_of(item) <= best_split; });
+                mid = static_cast<std::uint32_t>(it - order.begin());
+                split_found = mid > first && mid < first + count;
+            }
+        }
+        if (!split_found) {
+            if (count <= Bvh::kMaxLeafSize) return make_leaf(node_index, first, count);
+            // Coincident centroids: split by index (median) so depth stays logarithmic.
+            std::nth_element(
+                order.begin() + first, order.begin() + mid, order.begin() + first + count,
+                [&](std::uint32_t a, std::uint32_t b2) { return centres[a][axis] < centres[b2][axis]; });
+        }
+        const auto left = static_cast<std::uint32_t>(nodes.size());
+        nodes.emplace_back();
+        nodes.emplace_back();
+        nodes[node_index].left_or_first = left;
+        nodes[node_index].count = 0;
+        build(left, first, mid - first, depth + 1);
+        build(left + 1, mid, first + count - mid, depth + 1);
+    }
+
+    void make_leaf(std::uint32_t node_index, std::uint32_t first, std::uint32_t count) {
+        nodes[node_index].left_or_first = first;
+        nodes[node_index].count = count;
+    }
+};
+
+} // namespace
+
+void Bvh::build(std::span<const Aabb> items) {
+    clear();
+    if (items.empty()) return;
+    order_.resize(items.size());
+    for (std::uint32_t i = 0; i < items.size(); ++i) order_[i] = i;
+    nodes_.reserve(items.size() * 2);
+    nodes_.emplace_back();
+    Builder b{items, {}, order_, nodes_};
+    b.centres.resize(items.size());
+    for (std::size_t i = 0; i < items.size(); ++i) b.centres[i] = items[i].centre();
+    b.build(0, 0, static_cast<std::uint32_t>(items.size()), 1);
+    depth_ = b.max_depth;
+}
+
+void Bvh::clear() {
+    nodes_.clear();
+    order_.clear();
+    depth_ = 0;
+}
+
+} // namespace ks::physics

@@ -1,0 +1,255 @@
+#include "physics/character.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ks::physics {
+namespace {
+
+constexpr float kGapTolerance = 1e-5f;     // a gap within skin + this counts as resting contact
+constexpr float kApproachFraction = 1e-4f; // slower approach than this (relative) counts as sliding along
+
+struct Planes {
+    Vec3 n[8];
+    int count = 0;
+    void add(const Vec3& p) {
+        for (int i = 0; i < count; ++i)
+            if (glm::dot(n[i], p) > 0.9999f) return;
+        if (count < 8) n[count++] = p;
+    }
+};
+
+// Removes the parts of `v` that go into any plane: one plane projects, two slide along their crease,
+// three or more (or an acute corner) stop.
+Vec3 clip_to_planes(const Vec3& v, const Planes& planes) {
+    auto into = [](const Vec3& x, const Vec3& n) { return std::min(glm::dot(x, n), 0.0f); };
+    auto ok = [&](const Vec3& x, int skip_a, int skip_b) {
+        for (int k = 0; k < planes.count; ++k)
+            if (k != skip_a && k != skip_b && glm::dot(x, planes.n[k]) < -1e-6f) return false;
+        return true;
+    };
+    if (ok(v, -1, -1)) return v;
+    for (int i = 0; i < planes.count; ++i) {
+        const Vec3 p = v - planes.n[i] * into(v, planes.n[i]);
+        if (ok(p, i, -1)) return p;
+    }
+    for (int i = 0; i < planes.count; ++i)
+        for (int j = i + 1; j < planes.count; ++j) {
+            Vec3 crease = glm::cross(planes.n[i], planes.n[j]);
+            const float len = glm::length(crease);
+            if (len < 1e-6f) continue;
+            crease /= len;
+            const Vec3 p = crease * glm::dot(crease, v);
+            if (ok(p, i, j)) return p;
+        }
+    return Vec3(0.0f);
+}
+
+struct Mover {
+    const std::vector<Obstacle>& obstacles;
+    float radius, half;
+    const CharacterSettings& cs;
+    float cos_slope;
+    std::vector<int>& touched; // obstacle indices contacted
+
+    Segment segment_at(const Vec3& p) const {
+        return {p - Vec3(0.0f, half, 0.0f), p + Vec3(0.0f, half, 0.0f)};
+    }
+
+    // Earliest hit along `motion` from p: t in [0, 1], -1 index when free.
+    float sweep(const Vec3& p, const Vec3& motion, Vec3& normal, int& which) const {
+        which = -1;
+        float best = 1.0f;
+        const Segment s = segment_at(p);
+        for (std::size_t i = 0; i < obstacles.size(); ++i) {
+            Vec3 n(0.0f, 1.0f, 0.0f);
+            const float t = sweep_capsule(s, radius, motion, obstacles[i], cs.skin, n);
+            if (t < best || (t == best && which >= 0 && t < 1.0f && n.y > normal.y)) {
+                best = t, normal = n, which = static_cast<int>(i);
+            }
+        }
+        if (which < 0) best = 1.0f;
+        return best;
+    }
+
+    void touch(int i) {
+        if (std::find(touched.begin(), touched.end(), i) == touched.end()) touched.push_back(i);
+    }
+
+    // Collide-and-slide. Returns whether a steep (non-walkable) surface blocked the motion.
+    bool slide(Vec3& p, Vec3 motion, bool grounded, Planes& planes) {
+        const Vec3 original = motion;
+        bool steep = false;
+        for (int iter = 0; iter < cs.max_slide_planes; ++iter) {
+            if (glm::dot(motion, motion) < 1e-14f) break;
+            Vec3 n(0.0f, 1.0f, 0.0f);
+            int which;
+            const float t = sweep(p, motion, n, which);
+            p += motion * t;
+            if (which < 0) break;
+            touch(which);
+            Vec3 plane = n;
+            if (n.y < cos_slope) {
+                steep = true;
+                // On the ground a steep face acts as a vertical wall: it must not lift the character.
+                if (grounded && n.y > 0.0f) {
+                    plane.y = 0.0f;
+                    const float len = glm::length(plane);
+                    plane = len > 1e-3f ? plane / len : n;
+                }
+            }
+            planes.add(plane);
+            motion = clip_to_planes(motion * (1.0f - t), planes);
+            // Never turn back against the intended direction: that is what makes corners jitter.
+            if (glm::dot(motion, original) <= 0.0f) break;
+        }
+        return steep;
+    }
+};
+
+} // namespace
+
+float sweep_capsule(const Segment& s, float radius, const Vec3& motion, const Obstacle& o, float skin,
+                    Vec3& normal) {
+    const float len = glm::length(motion);
+    if (!(len > 0.0f)) return 1.0f;
+    float t = 0.0f;
+    // Conservative advancement with Newton steps: the distance between convex sets along a translation is
+    // a convex function of t, so its tangent never overshoots the first touch: t only grows toward it.
+    for (int iter = 0; iter < 32; ++iter) {
+        const Segment st{s.p0 + motion * t, s.p1 + motion * t};
+        const auto c =
+            collide_capsule_shape(st, radius, *o.shape, o.transform, len * (1.0f - t) + skin + 1e-3f);
+        if (!c) return 1.0f;
+        const float gap = -c->penetration;
+        const float rate = -glm::dot(c->normal, motion);
+        if (gap <= skin + kGapTolerance) {
+            if (rate <= kApproachFraction * len) return 1.0f; // resting or leaving: not blocking
+            normal = c->normal;
+            return t;
+        }
+        if (rate <= kApproachFraction * len) return 1.0f;
+        t += (gap - skin) / rate;
+        if (t >= 1.0f) return 1.0f;
+        normal = c->normal;
+    }
+    return t;
+}
+
+void move_character(const ObstacleSource& world, float radius, float half_segment,
+                    const CharacterSettings& cs, CharacterState& state, Vec3& position, float dt,
+                    CharacterScratch& scratch) {
+    scratch.contacts.clear();
+    if (!(dt > 0.0f) || !is_finite(position)) return;
+    sanitize(state.movement);
+    MovementState& m = state.movement;
+    const float cos_slope = std::cos(radians(std::clamp(cs.max_slope_degrees, 0.0f, 89.0f)));
+    const bool was_grounded = state.grounded && !state.jumping;
+
+    Vec3 disp;
+    if (was_grounded) {
+        // On the ground: no gravity into the floor; walk along the ground plane at the same horizontal speed.
+        MovementState flat = m;
+        flat.gravity = 0.0f;
+        flat.velocity.y = 0.0f;
+        flat.acceleration.y = std::max(flat.acceleration.y, 0.0f);
+        disp = integrate(flat, dt);
+        m.velocity = flat.velocity;
+        const Vec3& n = state.ground_normal;
+        if (n.y >= cos_slope && disp.y <= 0.0f) disp.y = -(disp.x * n.x + disp.z * n.z) / n.y;
+    } else {
+        disp = integrate(m, dt);
+    }
+
+    const float reach = std::max(cs.step_height, cs.ground_snap) + 2.0f * cs.skin + 0.05f;
+    Aabb region{position - Vec3(radius, half_segment + radius, radius),
+                position + Vec3(radius, half_segment + radius, radius)};
+    region.grow(Aabb{region.min + disp, region.max + disp});
+    scratch.obstacles.clear();
+    world.gather(region.expanded(reach), scratch.obstacles);
+
+    static thread_local std::vector<int> touched;
+    touched.clear();
+    Mover mover{scratch.obstacles, radius, half_segment, cs, cos_slope, touched};
+
+    // Resolve overlaps first (a door leaf closed on us, a spawn inside a crate): push out along the
+    // exact contact normal to the skin distance.
+    for (int iter = 0; iter < 4; ++iter) {
+        bool any = false;
+        for (std::size_t i = 0; i < scratch.obstacles.size(); ++i) {
+            const Obstacle& o = scratch.obstacles[i];
+            const auto c = collide_capsule_shape(mover.segment_at(position), radius, *o.shape, o.transform);
+            if (c && c->penetration > 0.0f) {
+                position += c->normal * (c->penetration + cs.skin);
+                mover.touch(static_cast<int>(i));
+                any = true;
+            }
+        }
+        if (!any) break;
+    }
+
+    const Vec3 start = position;
+    Planes planes;
+    Vec3 moved = start;
+    const bool steep = mover.slide(moved, disp, was_grounded, planes);
+
+    // Step up: the same horizontal motion lifted by step_height, then down onto walkable ground.
+    if (steep && was_grounded && cs.step_height > 0.0f) {
+        Vec3 n(0.0f, 1.0f, 0.0f);
+        int which;
+        Vec3 p = start;
+        const Vec3 up(0.0f, cs.step_height, 0.0f);
+        const float tu = mover.sweep(p, up, n, which);
+        p += up * tu;
+        Planes planes2;
+        mover.slide(p, Vec3(disp.x, 0.0f, disp.z), true, planes2);
+        const Vec3 down(0.0f, -(cs.step_height * tu + 2.0f * cs.skin + std::max(0.0f, -disp.y)), 0.0f);
+        const float td = mover.sweep(p, down, n, which);
+        auto horizontal = [&](const Vec3& a) {
+            return glm::length(Vec3(a.x - start.x, 0.0f, a.z - start.z));
+        };
+        if (which >= 0 && n.y >= cos_slope && horizontal(p + down * td) > horizontal(moved) + 1e-5f) {
+            moved = p + down * td;
+            planes = planes2;
+        }
+    }
+    position = moved;
+    m.velocity = clip_to_planes(m.velocity, planes);
+
+    // Ground: probe (and snap while walking) unless rising.
+    state.grounded = false;
+    if (m.velocity.y <= 1e-4f) {
+        const float probe = was_grounded ? cs.ground_snap : 2.0f * cs.skin;
+        Vec3 n(0.0f, 1.0f, 0.0f);
+        int which;
+        const Vec3 down(0.0f, -probe, 0.0f);
+        const float t = mover.sweep(position, down, n, which);
+        if (which >= 0 && n.y >= cos_slope) {
+            position += down * t;
+            state.grounded = true;
+            state.jumping = false;
+            state.ground_normal = n;
+            m.velocity.y = 0.0f;
+            mover.touch(which);
+        }
+    }
+    if (!state.grounded) state.ground_normal = Vec3(0.0f, 1.0f, 0.0f);
+
+    // Report each touched obstacle once, with the exact contact at the final position.
+    for (int i : touched) {
+        const Obstacle& o = scratch.obstacles[i];
+        auto c =
+            collide_capsule_shape(mover.segment_at(position), radius, *o.shape, o.transform, 4.0f * cs.skin);
+        Contact contact;
+        if (c)
+            contact = *c;
+        else { // touched on the way but left behind (slid past an edge)
+            contact.normal = Vec3(0.0f, 1.0f, 0.0f);
+            contact.point = position;
+        }
+        contact.penetration = std::max(0.0f, contact.penetration);
+        scratch.contacts.push_back({o.id, contact});
+    }
+}
+
+} // namespace ks::physics

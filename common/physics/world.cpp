@@ -1,0 +1,572 @@
+#include "physics/world.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+namespace ks::physics {
+
+namespace {
+constexpr std::uint32_t kNone = 0xffffffffu;
+constexpr float kMaxCoordinate = 1e7f; // beyond this float spacing is > 1 unit: refuse instead of drifting
+} // namespace
+
+// What the character controller may collide with: static bodies from the BVH, then movers from the
+// sorted sweep list, excluding the character itself and anything its mask ignores.
+class World::Obstacles final : public ObstacleSource {
+  public:
+    explicit Obstacles(const World& w) : world_(w) {}
+    std::uint32_t self = kNone;
+    std::uint32_t mask = 0;
+    void gather(const Aabb& region, std::vector<Obstacle>& out) const override {
+        const World& w = world_;
+        w.static_bvh_.aabb_query(region, [&](std::uint32_t slot) {
+            const StaticPrim& p = w.static_prims_[slot];
+            const Body& b = w.bodies_[p.body];
+            if (p.enabled && (p.layers & mask) && b.bounds.overlaps(region))
+                out.push_back({&b.shape, b.transform, p.body, b.yaw_only});
+            return true;
+        });
+        w.movers_overlapping(region, [&](std::uint32_t index) {
+            const Body& b = w.bodies_[index];
+            if (index != self && b.enabled && !b.trigger && (b.layers & mask))
+                out.push_back({&b.shape, b.transform, index, b.yaw_only});
+        });
+    }
+
+  private:
+    const World& world_;
+};
+
+World::World(WorldSettings settings)
+    : settings_(settings),
+      clock_(settings.step > 0.0 ? settings.step : 1.0 / 120.0, settings.max_steps_per_frame) {}
+
+World::Body* World::get(BodyId id) {
+    if (id.index >= bodies_.size()) return nullptr;
+    Body& b = bodies_[id.index];
+    return b.alive && b.generation == id.generation ? &b : nullptr;
+}
+const World::Body* World::get(BodyId id) const {
+    return const_cast<World*>(this)->get(id);
+}
+bool World::valid(BodyId id) const {
+    return get(id) != nullptr;
+}
+
+Result<BodyId> World::add(const BodyDesc& desc, const std::string& what) {
+    if (auto v = desc.shape.validate(what); !v) return v.error();
+    const Vec3& p = desc.transform.position;
+    if (!is_finite(p) || std::abs(p.x) > kMaxCoordinate || std::abs(p.y) > kMaxCoordinate ||
+        std::abs(p.z) > kMaxCoordinate)
+        return Error(what + ": position is not finite or beyond 1e7", Location(what),
+                     "place bodies within +-1e7 units of the origin");
+    if (!is_finite(desc.transform.rotation) || std::abs(glm::length(desc.transform.rotation) - 1.0f) > 1e-3f)
+        return Error(what + ": rotation is not a unit quaternion", Location(what),
+                     "build rotations with quat_from_ypr");
+    if (desc.motion == Motion::Character && (desc.shape.kind != ShapeKind::Capsule || desc.trigger))
+        return Error(what + ": a character must be a (non-trigger) capsule", Location(what),
+                     "use Shape::capsule(radius, half_segment) for player and robots");
+    std::uint32_t index;
+    if (!free_slots_.empty()) {
+        index = free_slots_.back();
+        free_slots_.pop_back();
+    } else {
+        index = static_cast<std::uint32_t>(bodies_.size());
+        bodies_.emplace_back();
+        on_collision_.emplace_back();
+        on_trigger_.emplace_back();
+    }
+    Body& b = bodies_[index];
+    const std::uint32_t generation = b.generation + 1;
+    b = Body{};
+    b.generation = generation;
+    b.shape = desc.shape;
+    b.transform = desc.transform;
+    b.transform.rotation = glm::normalize(desc.transform.rotation);
+    b.previous_position = p;
+    b.bounds = b.shape.bounds(b.transform);
+    b.layers = desc.layers | (desc.trigger ? layer::kTrigger : 0u) |
+               (desc.motion == Motion::Character ? layer::kCharacter : 0u);
+    b.collides_with = desc.collides_with;
+    b.user_data = desc.user_data;
+    b.motion = desc.motion;
+    b.trigger = desc.trigger;
+    b.alive = true;
+    b.yaw_only = is_yaw_only(b.transform.rotation);
+    ++live_count_;
+    if (b.motion == Motion::Character) {
+        b.character_slot = static_cast<std::uint32_t>(characters_.size());
+        CharacterData cd;
+        cd.body = index;
+        cd.settings = desc.character;
+        cd.state.movement = desc.movement;
+        characters_.push_back(cd);
+    }
+    if (b.motion == Motion::Static && !b.trigger)
+        mark_static_dirty();
+    else if (b.motion == Motion::Static)
+        static_triggers_.push_back(index);
+    else {
+        movers_.push_back(index);
+        mover_keys_.push_back(b.bounds.min.x);
+    }
+    return BodyId{index, generation};
+}
+
+void World::remove(BodyId id) {
+    Body* b = get(id);
+    if (!b) return;
+    const std::uint32_t index = id.index;
+    if (b->motion == Motion::Static && !b->trigger) {
+        mark_static_dirty();
+    } else if (b->motion == Motion::Static) {
+        static_triggers_.erase(std::find(static_triggers_.begin(), static_triggers_.end(), index));
+    } else {
+        auto it = std::find(movers_.begin(), movers_.end(), index);
+        mover_keys_.erase(mover_keys_.begin() + (it - movers_.begin()));
+        movers_.erase(it);
+    }
+    if (b->character_slot != kNone) {
+        const std::uint32_t slot = b->character_slot;
+        characters_[slot] = characters_.back();
+        characters_.pop_back();
+        if (slot < characters_.size()) bodies_[characters_[slot].body].character_slot = slot;
+    }
+    b->alive = false;
+    ++b->generation; // stale handles no longer resolve
+    on_collision_[index].reset();
+    on_trigger_[index].reset();
+    free_slots_.push_back(index);
+    --live_count_;
+}
+
+void World::set_enabled(BodyId id, bool enabled) {
+    if (Body* b = get(id)) {
+        b->enabled = enabled;
+        if (!static_dirty_ && id.index < static_slot_of_.size() && static_slot_of_[id.index] != kNone)
+            static_prims_[static_slot_of_[id.index]].enabled = enabled;
+    }
+}
+bool World::enabled(BodyId id) const {
+    const Body* b = get(id);
+    return b && b->enabled;
+}
+
+Transform World::transform(BodyId id) const {
+    const Body* b = get(id);
+    return b ? b->transform : Transform{};
+}
+
+void World::set_transform(BodyId id, const Transform& xf) {
+    Body* b = get(id);
+    if (!b || !is_finite(xf.position) || !is_finite(xf.rotation)) return;
+    b->transform = xf;
+    b->transform.rotation = glm::normalize(xf.rotation);
+    b->yaw_only = is_yaw_only(b->transform.rotation);
+    b->bounds = b->shape.bounds(b->transform);
+    if (b->motion == Motion::Character) b->previous_position = xf.position; // a teleport: no interpolation
+    if (b->motion == Motion::Static && !b->trigger) mark_static_dirty();
+}
+
+Vec3 World::interpolated_position(BodyId id, float alpha) const {
+    const Body* b = get(id);
+    if (!b) return Vec3(0.0f);
+    return glm::mix(b->previous_position, b->transform.position, std::clamp(alpha, 0.0f, 1.0f));
+}
+
+const Shape& World::shape(BodyId id) const {
+    static const Shape none;
+    const Body* b = get(id);
+    return b ? b->shape : none;
+}
+std::uint64_t World::user_data(BodyId id) const {
+    const Body* b = get(id);
+    return b ? b->user_data : 0;
+}
+std::uint32_t World::layers(BodyId id) const {
+    const Body* b = get(id);
+    return b ? b->layers : 0;
+}
+
+CharacterState& World::character(BodyId id) {
+    Body* b = get(id);
+    assert(b && b->character_slot != kNone);
+    return characters_[b->character_slot].state;
+}
+const CharacterState& World::character(BodyId id) const {
+    return const_cast<World*>(this)->character(id);
+}
+
+bool World::jump(BodyId id, float speed) {
+    Body* b = get(id);
+    if (!b || b->character_slot == kNone || !std::isfinite(speed)) return false;
+    CharacterState& s = characters_[b->character_slot].state;
+    if (!s.grounded) return false;
+    s.movement.velocity.y = speed;
+    s.grounded = false;
+    s.jumping = true;
+    return true;
+}
+
+void World::set_on_collision(BodyId id, CollisionCallback callback) {
+    if (get(id))
+        on_collision_[id.index] =
+            callback ? std::make_shared<CollisionCallback>(std::move(callback)) : nullptr;
+}
+void World::set_on_trigger(BodyId id, TriggerCallback callback) {
+    if (get(id))
+        on_trigger_[id.index] = callback ? std::make_shared<TriggerCallback>(std::move(callback)) : nullptr;
+}
+
+void World::build_static() const {
+    if (!static_dirty_) return;
+    std::vector<Aabb> boxes;
+    std::vector<std::uint32_t> items;
+    for (std::uint32_t i = 0; i < bodies_.size(); ++i) {
+        const Body& b = bodies_[i];
+        if (b.alive && b.motion == Motion::Static && !b.trigger) {
+            boxes.push_back(b.bounds);
+            items.push_back(i);
+        }
+    }
+    static_bvh_.build(boxes);
+    static_prims_.resize(items.size());
+    static_slot_of_.assign(bodies_.size(), kNone);
+    auto order = static_bvh_.item_order();
+    for (std::size_t slot = 0; slot < order.size(); ++slot) {
+        const std::uint32_t bi = items[order[slot]];
+        const Body& b = bodies_[bi];
+        StaticPrim& p = static_prims_[slot];
+        p.position = b.transform.position;
+        p.body = bi;
+        p.rotation = b.transform.rotation;
+        p.half = b.shape.half_extents;
+        p.layers = b.layers;
+        p.kind = b.shape.kind;
+        p.axis_aligned = b.transform.rotation == Quat(1.0f, 0.0f, 0.0f, 0.0f);
+        p.enabled = b.enabled;
+        static_slot_of_[bi] = static_cast<std::uint32_t>(slot);
+    }
+    static_dirty_ = false;
+}
+
+const Bvh& World::static_bvh() const {
+    build_static();
+    return static_bvh_;
+}
+
+// ---- movers: sort-and-sweep on x ----------------------------------------------------------------------
+
+void World::sort_movers(float dt) {
+    mover_max_width_ = 0.0f;
+    float max_speed = 0.0f;
+    for (std::size_t i = 0; i < movers_.size(); ++i) {
+        const Body& b = bodies_[movers_[i]];
+        mover_keys_[i] = b.bounds.min.x;
+        mover_max_width_ = std::max(mover_max_width_, b.bounds.max.x - b.bounds.min.x);
+        if (b.character_slot != kNone) {
+            const auto& m = characters_[b.character_slot].state.movement;
+            const float v =
+                glm::length(m.velocity) + (glm::length(m.acceleration) + std::abs(m.gravity)) * dt;
+            if (std::isfinite(v)) max_speed = std::max(max_speed, std::min(v, 2.0f * m.max_speed));
+        }
+    }
+    // Insertion sort: the order barely changes between steps, so this is linear in practice.
+    for (std::size_t i = 1; i < movers_.size(); ++i) {
+        const float key = mover_keys_[i];
+        const std::uint32_t value = movers_[i];
+        std::size_t j = i;
+        while (j > 0 && (mover_keys_[j - 1] > key || (mover_keys_[j - 1] == key && movers_[j - 1] > value))) {
+            mover_keys_[j] = mover_keys_[j - 1];
+            movers_[j] = movers_[j - 1];
+            --j;
+        }
+        mover_keys_[j] = key;
+        movers_[j] = value;
+    }
+    // Ground snap and depenetration move a character beyond its velocity: allow for them too.
+    mover_slack_ = max_speed * dt + 2.0f;
+}
+
+template <class Visit>
+void World::movers_overlapping(const Aabb& region, Visit&& visit) const {
+    const float lo = region.min.x - mover_max_width_ - mover_slack_, hi = region.max.x + mover_slack_;
+    auto first = std::lower_bound(mover_keys_.begin(), mover_keys_.end(), lo);
+    for (auto it = first; it != mover_keys_.end() && *it <= hi; ++it) {
+        const std::uint32_t index = movers_[it - mover_keys_.begin()];
+        if (bodies_[index].bounds.overlaps(region)) visit(index);
+    }
+}
+
+// ---- step ---------------------------------------------------------------------------------------------
+
+void World::step(float dt) {
+    if (!(dt > 0.0f) || !std::isfinite(dt)) return;
+    build_static();
+    collisions_.clear();
+    trigger_events_.clear();
+    sort_movers(dt);
+    for (std::uint32_t index : movers_) bodies_[index].previous_position = bodies_[index].transform.position;
+    Obstacles obstacles(*this);
+    for (std::size_t c = 0; c < characters_.size(); ++c) {
+        CharacterData& cd = characters_[c];
+        Body& b = bodies_[cd.body];
+        if (!b.enabled) continue;
+        obstacles.self = cd.body;
+        obstacles.mask = b.collides_with;
+        move_character(obstacles, b.shape.radius, b.shape.half_height, cd.settings, cd.state,
+                       b.transform.position, dt, scratch_);
+        b.bounds = b.shape.bounds(b.transform);
+        const BodyId self = id_of(cd.body);
+        for (const CharacterContact& cc : scratch_.contacts) {
+            const BodyId other = id_of(cc.obstacle_id);
+            collisions_.push_back(
+                {self, other, cc.contact.point, cc.contact.normal, cc.contact.penetration, dt});
+            collisions_.push_back(
+                {other, self, cc.contact.point, -cc.contact.normal, cc.contact.penetration, dt});
+        }
+    }
+    update_triggers(dt);
+    dispatch();
+}
+
+float World::advance(double frame_dt) {
+    const int steps = clock_.advance(frame_dt);
+    for (int i = 0; i < steps; ++i) step(static_cast<float>(clock_.step()));
+    return static_cast<float>(clock_.alpha());
+}
+
+void World::update_triggers(float) {
+    std::swap(trigger_pairs_prev_, trigger_pairs_);
+    trigger_pairs_.clear();
+    auto test = [&](std::uint32_t trig) {
+        const Body& t = bodies_[trig];
+        if (!t.enabled) return;
+        movers_overlapping(t.bounds, [&](std::uint32_t index) {
+            const Body& b = bodies_[index];
+            if (b.character_slot == kNone || !b.enabled) return;
+            if (collide_capsule_shape(capsule_segment(b.shape, b.transform.position), b.shape.radius, t.shape,
+                                      t.transform))
+                trigger_pairs_.push_back(static_cast<std::uint64_t>(trig) << 32 | index);
+        });
+    };
+    for (std::uint32_t trig : static_triggers_) test(trig);
+    for (std::uint32_t index : movers_)
+        if (bodies_[index].trigger) test(index);
+    std::sort(trigger_pairs_.begin(), trigger_pairs_.end());
+    // Merge the two sorted lists: only in the new one = enter, in both = stay, only in the old one = exit.
+    std::size_t i = 0, j = 0;
+    auto event = [&](std::uint64_t pair, TriggerEvent::Kind kind) {
+        const auto trig = static_cast<std::uint32_t>(pair >> 32), other = static_cast<std::uint32_t>(pair);
+        trigger_events_.push_back({kind, id_of(trig), id_of(other)});
+    };
+    while (i < trigger_pairs_.size() || j < trigger_pairs_prev_.size()) {
+        if (j == trigger_pairs_prev_.size() ||
+            (i < trigger_pairs_.size() && trigger_pairs_[i] < trigger_pairs_prev_[j])) {
+            event(trigger_pairs_[i++], TriggerEvent::Kind::Enter);
+        } else if (i == trigger_pairs_.size() || trigger_pairs_prev_[j] < trigger_pairs_[i]) {
+            event(trigger_pairs_prev_[j++], TriggerEvent::Kind::Exit);
+        } else {
+            event(trigger_pairs_[i++], TriggerEvent::Kind::Stay);
+            ++j;
+        }
+    }
+}
+
+void World::dispatch() {
+    // Indices, not iterators: callbacks may add bodies; events of bodies removed meanwhile are skipped.
+    const std::size_t n = collisions_.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const Collision c = collisions_[i];
+        if (!valid(c.self) || !valid(c.other)) continue;
+        if (auto cb = on_collision_[c.self.index]) (*cb)(*this, c);
+    }
+    const std::size_t m = trigger_events_.size();
+    for (std::size_t i = 0; i < m; ++i) {
+        const TriggerEvent e = trigger_events_[i];
+        if (!valid(e.trigger)) continue;
+        if (e.kind != TriggerEvent::Kind::Exit && !valid(e.other)) continue;
+        if (auto cb = on_trigger_[e.trigger.index]) (*cb)(*this, e);
+    }
+}
+
+// ---- queries ------------------------------------------------------------------------------------------
+
+bool World::ray_static(const Ray& ray, const StaticPrim& p, ShapeHit& hit) const {
+    if (p.kind == ShapeKind::Box) {
+        if (p.axis_aligned) {
+            // Slab test relative to the box centre (exact subtraction nearby: precision kept far away).
+            const Vec3 o = ray.origin - p.position;
+            float tmin = -3.4e38f, tmax = 3.4e38f;
+            int axis = 0;
+            for (int i = 0; i < 3; ++i) {
+                const float d = ray.direction[i] == 0.0f ? 1e-30f : ray.direction[i];
+                const float inv = 1.0f / d;
+                float t0 = (-p.half[i] - o[i]) * inv, t1 = (p.half[i] - o[i]) * inv;
+                if (t0 > t1) std::swap(t0, t1);
+                if (t0 > tmin) tmin = t0, axis = i;
+                tmax = std::min(tmax, t1);
+            }
+            tmax *= 1.0f + 4.0f * 1.1920929e-7f;
+            if (!(tmin <= tmax) || !(tmax > 0.0f) || tmin > ray.max_distance) return false;
+            if (tmin <= 0.0f) {
+                hit.distance = 0.0f;
+                hit.normal = -ray.direction;
+                return true;
+            }
+            hit.distance = tmin;
+            hit.normal = Vec3(0.0f);
+            hit.normal[axis] = ray.direction[axis] > 0.0f ? -1.0f : 1.0f;
+            return true;
+        }
+        return ray_box(ray, p.half, {p.position, p.rotation}, hit);
+    }
+    const Body& b = bodies_[p.body];
+    return ray_shape(ray, b.shape, b.transform, hit);
+}
+
+bool World::ray_body(const Ray& ray, std::uint32_t index, ShapeHit& hit) const {
+    const Body& b = bodies_[index];
+    return ray_shape(ray, b.shape, b.transform, hit);
+}
+
+namespace {
+bool finite_ray(const Ray& r) {
+    return is_finite(r.origin) && is_finite(r.direction) && !std::isnan(r.max_distance) &&
+           glm::dot(r.direction, r.direction) > 0.5f;
+}
+} // namespace
+
+bool World::ray_closest(const Ray& ray, RayHit& out, const RayFilter& filter) const {
+    if (!finite_ray(ray)) return false;
+    build_static();
+    float best = ray.max_distance;
+    std::uint32_t best_body = kNone;
+    Vec3 best_normal(0.0f);
+    static_bvh_.ray_query(ray, ray.max_distance, [&](std::uint32_t slot, float& max_t) {
+        const StaticPrim& p = static_prims_[slot];
+        if (!p.enabled || !(p.layers & filter.layers) || p.body == filter.ignore.index) return true;
+        ShapeHit h;
+        Ray r = ray;
+        r.max_distance = max_t;
+        if (ray_static(r, p, h) && (h.distance < best || best_body == kNone)) {
+            best = h.distance, best_body = p.body, best_normal = h.normal;
+            max_t = h.distance;
+        }
+        return true;
+    });
+    for (std::uint32_t index : movers_) {
+        const Body& b = bodies_[index];
+        if (!b.enabled || !(b.layers & filter.layers) || index == filter.ignore.index) continue;
+        Ray r = ray;
+        r.max_distance = best;
+        ShapeHit h;
+        if (ray_body(r, index, h) && (h.distance < best || best_body == kNone))
+            best = h.distance, best_body = index, best_normal = h.normal;
+    }
+    if (filter.layers & layer::kTrigger)
+        for (std::uint32_t index : static_triggers_) {
+            const Body& b = bodies_[index];
+            if (!b.enabled || index == filter.ignore.index) continue;
+            Ray r = ray;
+            r.max_distance = best;
+            ShapeHit h;
+            if (ray_body(r, index, h) && (h.distance < best || best_body == kNone))
+                best = h.distance, best_body = index, best_normal = h.normal;
+        }
+    if (best_body == kNone) return false;
+    out.body = id_of(best_body);
+    out.distance = best;
+    out.normal = best_normal;
+    out.point = ray.origin + ray.direction * best;
+    return true;
+}
+
+bool World::ray_any(const Ray& ray, const RayFilter& filter) const {
+    if (!finite_ray(ray)) return false;
+    build_static();
+    bool found = false;
+    static_bvh_.ray_query(ray, ray.max_distance, [&](std::uint32_t slot, float&) {
+        const StaticPrim& p = static_prims_[slot];
+        if (!p.enabled || !(p.layers & filter.layers) || p.body == filter.ignore.index) return true;
+        ShapeHit h;
+        found = ray_static(ray, p, h);
+        return !found;
+    });
+    if (found) return true;
+    for (std::uint32_t index : movers_) {
+        const Body& b = bodies_[index];
+        ShapeHit h;
+        if (b.enabled && (b.layers & filter.layers) && index != filter.ignore.index &&
+            ray_body(ray, index, h))
+            return true;
+    }
+    if (filter.layers & layer::kTrigger)
+        for (std::uint32_t index : static_triggers_) {
+            ShapeHit h;
+            if (bodies_[index].enabled && index != filter.ignore.index && ray_body(ray, index, h))
+                return true;
+        }
+    return false;
+}
+
+int World::ray_all(const Ray& ray, std::vector<RayHit>& hits, HitOrder order, const RayFilter& filter) const {
+    if (!finite_ray(ray)) return 0;
+    build_static();
+    const std::size_t start = hits.size();
+    auto add = [&](std::uint32_t index, const ShapeHit& h) {
+        hits.push_back({id_of(index), ray.origin + ray.direction * h.distance, h.normal, h.distance});
+    };
+    static_bvh_.ray_query(ray, ray.max_distance, [&](std::uint32_t slot, float&) {
+        const StaticPrim& p = static_prims_[slot];
+        if (!p.enabled || !(p.layers & filter.layers) || p.body == filter.ignore.index) return true;
+        ShapeHit h;
+        if (ray_static(ray, p, h)) add(p.body, h);
+        return true;
+    });
+    auto scan = [&](const std::vector<std::uint32_t>& list, bool triggers) {
+        for (std::uint32_t index : list) {
+            const Body& b = bodies_[index];
+            if (!b.enabled || index == filter.ignore.index) continue;
+            if (!triggers && !(b.layers & filter.layers)) continue;
+            ShapeHit h;
+            if (ray_body(ray, index, h)) add(index, h);
+        }
+    };
+    scan(movers_, false);
+    if (filter.layers & layer::kTrigger) scan(static_triggers_, true);
+    auto first = hits.begin() + static_cast<std::ptrdiff_t>(start);
+    // Ties broken by body index so the order is deterministic.
+    if (order == HitOrder::Ascending)
+        std::sort(first, hits.end(), [](const RayHit& a, const RayHit& b) {
+            return a.distance < b.distance || (a.distance == b.distance && a.body.index < b.body.index);
+        });
+    else
+        std::sort(first, hits.end(), [](const RayHit& a, const RayHit& b) {
+            return a.distance > b.distance || (a.distance == b.distance && a.body.index < b.body.index);
+        });
+    return static_cast<int>(hits.size() - start);
+}
+
+int World::overlap_capsule(const Segment& s, float radius, std::vector<BodyId>& out,
+                           std::uint32_t layers) const {
+    build_static();
+    Aabb region{glm::min(s.p0, s.p1) - Vec3(radius), glm::max(s.p0, s.p1) + Vec3(radius)};
+    const std::size_t start = out.size();
+    auto test = [&](std::uint32_t index) {
+        const Body& b = bodies_[index];
+        if (!b.enabled || !(b.layers & layers) || !b.bounds.overlaps(region)) return;
+        if (auto c = collide_capsule_shape(s, radius, b.shape, b.transform); c && c->penetration > 0.0f)
+            out.push_back(id_of(index));
+    };
+    static_bvh_.aabb_query(region, [&](std::uint32_t slot) {
+        test(static_prims_[slot].body);
+        return true;
+    });
+    for (std::uint32_t index : movers_) test(index);
+    for (std::uint32_t index : static_triggers_) test(index);
+    return static_cast<int>(out.size() - start);
+}
+
+} // namespace ks::physics
