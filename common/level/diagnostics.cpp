@@ -1,5 +1,7 @@
 #include "level/diagnostics.h"
 
+#include "level/json_text.h"
+
 #include <algorithm>
 #include <climits>
 
@@ -71,6 +73,12 @@ std::string closest_match(std::string_view word, const std::vector<std::string>&
         }
     }
     return best;
+}
+
+std::string range_text(const FieldInfo& info) {
+    std::string out = json_text::format_readable(info.min) + " .. " + json_text::format_readable(info.max);
+    if (info.unit && *info.unit) out += std::string(" ") + info.unit;
+    return out;
 }
 
 std::string join(const std::vector<std::string>& words, std::string_view separator) {

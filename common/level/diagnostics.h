@@ -41,6 +41,8 @@ class DiagnosticSink {
 
 // "did you mean" help: the candidate closest to `word` by edit distance, or "" when none is close.
 std::string closest_match(std::string_view word, const std::vector<std::string>& candidates);
+// "0.01 .. 10000 units": a field's valid range as messages show it.
+std::string range_text(const FieldInfo& info);
 std::string join(const std::vector<std::string>& words, std::string_view separator = ", ");
 
 } // namespace ks::level

@@ -86,6 +86,12 @@ std::string format_number(double value) {
     return std::string(buffer, result.ptr);
 }
 
+std::string format_readable(double value) {
+    if (std::isfinite(value) && value == std::floor(value) && std::fabs(value) < 1e15)
+        return std::to_string(static_cast<long long>(value));
+    return format_number(value);
+}
+
 std::string write(const nlohmann::ordered_json& document) {
     std::string out;
     out.reserve(4096);

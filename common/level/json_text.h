@@ -15,6 +15,9 @@ double float_to_double(float value);
 // The shortest decimal text that reads back to exactly `value`; -0 prints as 0, non-finite as null.
 std::string format_number(double value);
 
+// For messages: whole numbers below 1e15 in plain digits (100000, not 1e+05), others as format_number.
+std::string format_readable(double value);
+
 std::string write(const nlohmann::ordered_json& document);
 
 } // namespace ks::level::json_text

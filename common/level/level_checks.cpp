@@ -10,13 +10,7 @@ namespace ks::level {
 namespace {
 
 std::string number_text(float v) {
-    return json_text::format_number(json_text::float_to_double(v));
-}
-
-std::string range_text(const FieldInfo& info) {
-    std::string out = json_text::format_number(info.min) + " .. " + json_text::format_number(info.max);
-    if (info.unit && *info.unit) out += std::string(" ") + info.unit;
-    return out;
+    return json_text::format_readable(json_text::float_to_double(v));
 }
 
 void check_number(double v, const std::string& shown, const std::string& path, const FieldInfo& info,
@@ -25,7 +19,7 @@ void check_number(double v, const std::string& shown, const std::string& path, c
         sink.error(path, "value is " + shown + " (not a finite number)", "valid: " + range_text(info));
     } else if (v < info.min || v > info.max) {
         std::string hint = "valid: " + range_text(info);
-        if (info.tooltip && *info.tooltip) hint += " (" + std::string(info.tooltip) + ")";
+        if (info.tooltip && *info.tooltip) hint += "; " + std::string(info.tooltip);
         sink.error(path, shown + " is out of range", hint);
     }
 }

@@ -132,8 +132,7 @@ std::optional<Level> parse_level(std::string_view text, DiagnosticSink& sink, Po
     if (!positions.overflowing_numbers().empty()) {
         patched = std::string(text);
         for (const OverflowingNumber& n : positions.overflowing_numbers()) {
-            sink.error_at(n.position, n.path,
-                          "number " + n.token + " is too large (it overflows to infinity)",
+            sink.error_at(n.position, n.path, "number " + n.token + " overflows to infinity",
                           "write a finite number within the field's range");
             sink.mark_reported(n.path);
             patched.replace(n.offset, n.length,
@@ -148,9 +147,13 @@ std::optional<Level> parse_level(std::string_view text, DiagnosticSink& sink, Po
     } catch (const nlohmann::json::parse_error& e) {
         const size_t offset = e.byte > 0 ? e.byte - 1 : 0;
         const bool at_end = offset >= text.size();
-        sink.error_at(position_of_offset(text, offset), "",
-                      clean_parse_message(e.what()) + (at_end ? " (the file ends early: truncated?)" : ""),
-                      "fix the JSON syntax at this place");
+        if (at_end)
+            sink.error_at(position_of_offset(text, offset), "",
+                          "file ends early (truncated?): " + clean_parse_message(e.what()),
+                          "complete the file or restore it from a backup");
+        else
+            sink.error_at(position_of_offset(text, offset), "", clean_parse_message(e.what()),
+                          "fix the JSON syntax at this place");
         return std::nullopt;
     } catch (const nlohmann::json::exception& e) {
         sink.error_at({}, "", std::string("JSON could not be read: ") + e.what(), "fix the JSON syntax");
@@ -165,8 +168,8 @@ std::optional<Level> parse_level(std::string_view text, DiagnosticSink& sink, Po
 
     if (!document.is_object()) {
         sink.error_at(positions.find(""), "",
-                      "expected the level as a JSON object {...}, found a " +
-                          std::string(document.type_name()),
+                      "expected the level as a JSON object {...}, found " +
+                          std::string(document.is_array() ? "an array" : document.type_name()),
                       kFormatHint);
         return std::nullopt;
     }

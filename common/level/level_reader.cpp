@@ -64,12 +64,6 @@ bool read_double(const Json& value, const std::string& path, const std::string& 
     return false;
 }
 
-std::string range_text(const FieldInfo& info) {
-    std::string out = json_text::format_number(info.min) + " .. " + json_text::format_number(info.max);
-    if (info.unit && *info.unit) out += std::string(" ") + info.unit;
-    return out;
-}
-
 bool read_float(const Json& value, const std::string& path, const FieldInfo& info, DiagnosticSink& sink,
                 float& out) {
     double d = 0;
@@ -122,7 +116,7 @@ int hex_digit(char c) {
 }
 
 bool read_color(const Json& value, const std::string& path, DiagnosticSink& sink, Color& out) {
-    const char* const kHint = "write a colour as \"#rrggbb\" (hex digits), e.g. \"#ffcc80\"";
+    const char* const kHint = "write a colour as \"#rrggbb\" in hex digits, e.g. \"#ffcc80\"";
     if (!value.is_string()) {
         sink.error(path, "expected a colour string, found " + describe(value), kHint);
         return false;
@@ -220,7 +214,8 @@ class FieldReader {
 
 bool expect_object(const Json& value, const std::string& path, std::string_view what, DiagnosticSink& sink) {
     if (value.is_object()) return true;
-    sink.error(path, "expected " + std::string(what) + " as an object {...}, found " + describe(value));
+    sink.error(path, "expected " + std::string(what) + " as an object {...}, found " + describe(value),
+               "write it as {\"key\": value, ...}; docs/level-format.md lists every field");
     return false;
 }
 
@@ -335,9 +330,10 @@ ReadLevel read_level(const Json& document, DiagnosticSink& sink) {
     auto entities = document.find("entities");
     if (entities == document.end()) {
         sink.error("entities", "missing required field \"entities\"",
-                   "add \"entities\": [] (it may be empty)");
+                   "add \"entities\": [], which may be empty");
     } else if (!entities->is_array()) {
-        sink.error("entities", "expected \"entities\" to be an array [...], found " + describe(*entities));
+        sink.error("entities", "expected \"entities\" to be an array [...], found " + describe(*entities),
+                   "write \"entities\": [ {...}, {...} ]");
     } else {
         level.entities.reserve(entities->size());
         for (size_t i = 0; i < entities->size(); ++i) {
