@@ -1,0 +1,89 @@
+#pragma once
+// The double-precision reference for ray casts: brute force over every shape, with its own slab and plane
+// clipping code in double (independent of the float fast path), for the benchmark's error columns and the
+// tests. Conventions match the fast path: a ray starting inside hits at 0; a ray lying exactly in a slab
+// plane is inside on the min plane and outside on the max plane (half-open), so stacked boxes share a face
+// without double hits.
+#include "core/math.h"
+#include "physics/shapes.h"
+
+#include <cmath>
+#include <limits>
+#include <span>
+
+namespace ks::physics::reference {
+
+using DQuat = glm::dquat;
+
+struct RefBox {
+    DVec3 centre;
+    DQuat rotation;
+    DVec3 half;
+};
+
+// Distance to the box or -1.
+inline double ray_box(const DVec3& origin, const DVec3& dir, const RefBox& b, double max_distance) {
+    const DQuat inv = glm::conjugate(b.rotation);
+    const DVec3 o = inv * (origin - b.centre), d = inv * dir;
+    double tmin = -std::numeric_limits<double>::infinity(), tmax = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < 3; ++i) {
+        if (d[i] == 0.0) {
+            if (!(o[i] >= -b.half[i] && o[i] < b.half[i])) return -1.0;
+            continue;
+        }
+        double t0 = (-b.half[i] - o[i]) / d[i], t1 = (b.half[i] - o[i]) / d[i];
+        if (t0 > t1) std::swap(t0, t1);
+        tmin = std::max(tmin, t0);
+        tmax = std::min(tmax, t1);
+    }
+    if (tmin > tmax || tmax <= 0.0 || tmin > max_distance) return -1.0;
+    return std::max(tmin, 0.0);
+}
+
+// Convex polyhedron given by its float vertices and faces; planes recomputed here in double.
+inline double ray_polyhedron(const DVec3& origin, const DVec3& dir, const Polyhedron& p, const DVec3& centre,
+                             const DQuat& rotation, double max_distance) {
+    const DQuat inv = glm::conjugate(rotation);
+    const DVec3 o = inv * (origin - centre), d = inv * dir;
+    double tmin = -std::numeric_limits<double>::infinity(), tmax = std::numeric_limits<double>::infinity();
+    for (const auto& f : p.faces) {
+        auto idx = p.face_indices(f);
+        DVec3 n(0.0), c(0.0);
+        for (std::size_t i = 0; i < idx.size(); ++i) {
+            const DVec3 a(p.vertices[idx[i]]), b(p.vertices[idx[(i + 1) % idx.size()]]);
+            n += DVec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+            c += a;
+        }
+        n = glm::normalize(n);
+        c /= static_cast<double>(idx.size());
+        const double dist = glm::dot(n, o - c), dn = glm::dot(n, d);
+        if (dn == 0.0) {
+            if (dist > 0.0) return -1.0;
+            continue;
+        }
+        const double t = -dist / dn;
+        if (dn < 0.0)
+            tmin = std::max(tmin, t);
+        else
+            tmax = std::min(tmax, t);
+    }
+    if (tmin > tmax || tmax <= 0.0 || tmin > max_distance) return -1.0;
+    return std::max(tmin, 0.0);
+}
+
+struct RefHit {
+    double distance = -1.0;
+    int index = -1;
+};
+
+inline RefHit closest(const DVec3& origin, const DVec3& dir, std::span<const RefBox> boxes,
+                      double max_distance) {
+    RefHit best;
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        const double t = ray_box(origin, dir, boxes[i], max_distance);
+        if (t >= 0.0 && (best.index < 0 || t < best.distance)) best = {t, static_cast<int>(i)};
+    }
+    return best;
+}
+
+} // namespace ks::physics::reference
