@@ -1,0 +1,53 @@
+#pragma once
+// Shared helpers for the editor model tests.
+#include "level/level_io.h"
+#include "model/editor.h"
+#include "test_support.h"
+
+#include <doctest/doctest.h>
+
+#include <string>
+
+namespace ks::editor_test {
+
+inline std::string text_of(const editor::Editor& editor) {
+    return level::save_level_string(editor.level());
+}
+
+inline level::Level load_shipped(const char* name) {
+    auto loaded = level::load_level_file(ks::test::source_dir() / "levels" / name);
+    REQUIRE_MESSAGE(loaded.ok(), (loaded.ok() ? std::string() : loaded.error().str()));
+    return *loaded;
+}
+
+// A small valid level: two rooms joined by a door, a floor, a robot, a pickup and the control panel.
+inline const char* kTwoRoomScript = R"(# two rooms along z, joined by a door in the wall at z = 0
+level_name Two rooms
+grid 0.5 15
+place floor at 0,0,0 name Ground
+set size 20,40
+place wall at -10,0,0 yaw 90 name West
+set size 40,16,0.5
+place wall at 10,0,0 yaw 90 name East
+set size 40,16,0.5
+place wall at 0,0,20 name South
+set size 20,16,0.5
+place wall at 0,0,-20 name North
+set size 20,16,0.5
+place wall at -6.25,0,0 name Door west side
+set size 7.5,16,0.5
+place wall at 6.25,0,0 name Door east side
+set size 7.5,16,0.5
+place wall at 0,5,0 name Lintel
+set size 5,11,0.5
+place door at 0,0,0 name Door
+place robot at 3,0,-10 yaw 90
+place pickup at -5,0,10
+set kind ammo
+place pickup at 5,0,10
+set kind shield
+place control_panel at 0,0,-15 name Panel
+player_start 0,0,15
+)";
+
+} // namespace ks::editor_test
