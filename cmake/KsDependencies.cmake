@@ -19,14 +19,15 @@ add_library(ks_stb INTERFACE)
 target_link_libraries(ks_stb INTERFACE PkgConfig::STB)
 
 if(KS_BUILD_GL)
-    find_package(OpenGL REQUIRED COMPONENTS OpenGL)
+    set(OpenGL_GL_PREFERENCE GLVND)
+    find_package(OpenGL REQUIRED)
     pkg_check_modules(GLFW3 REQUIRED IMPORTED_TARGET glfw3)
     pkg_check_modules(EPOXY REQUIRED IMPORTED_TARGET epoxy)
     pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
     find_package(assimp REQUIRED)
 
     add_library(ks_gl INTERFACE)
-    target_link_libraries(ks_gl INTERFACE PkgConfig::EPOXY PkgConfig::GLFW3 OpenGL::OpenGL)
+    target_link_libraries(ks_gl INTERFACE PkgConfig::EPOXY PkgConfig::GLFW3 OpenGL::GL)
 
     # libimgui.a from libimgui-dev carries the GLFW and OpenGL3 backends; its pkg-config lists stb/glfw/epoxy.
     add_library(ks_imgui INTERFACE)
