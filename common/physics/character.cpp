@@ -57,15 +57,18 @@ struct Mover {
     }
 
     // Earliest hit along `motion` from p: t in [0, 1], -1 index when free.
-    float sweep(const Vec3& p, const Vec3& motion, Vec3& normal, int& which) const {
+    float sweep(const Vec3& p, const Vec3& motion, Vec3& normal, int& which, Vec3* surface = nullptr) const {
         which = -1;
         float best = 1.0f;
         const Segment s = segment_at(p);
         for (std::size_t i = 0; i < obstacles.size(); ++i) {
-            Vec3 n(0.0f, 1.0f, 0.0f);
-            const float t = sweep_capsule(s, radius, motion, obstacles[i], cs.skin, n);
-            if (t < best || (t == best && which >= 0 && t < 1.0f && n.y > normal.y)) {
+            Vec3 n(0.0f, 1.0f, 0.0f), sn(0.0f, 1.0f, 0.0f);
+            const float t =
+                sweep_capsule(s, radius, motion, obstacles[i], cs.skin, n, surface ? &sn : nullptr);
+            const float sy = surface ? sn.y : n.y;
+            if (t < best || (t == best && which >= 0 && t < 1.0f && sy > (surface ? surface->y : normal.y))) {
                 best = t, normal = n, which = static_cast<int>(i);
+                if (surface) *surface = sn;
             }
         }
         if (which < 0) best = 1.0f;
@@ -77,7 +80,9 @@ struct Mover {
     }
 
     // Collide-and-slide. Returns whether a steep (non-walkable) surface blocked the motion.
-    bool slide(Vec3& p, Vec3 motion, bool grounded, Planes& planes) {
+    // `velocity_planes` get walkable contacts as flat ground: sliding up a ramp must not turn into upward
+    // velocity (which would read as a jump next step).
+    bool slide(Vec3& p, Vec3 motion, bool grounded, Planes& planes, Planes& velocity_planes) {
         const Vec3 original = motion;
         bool steep = false;
         for (int iter = 0; iter < cs.max_slide_planes; ++iter) {
@@ -99,6 +104,7 @@ struct Mover {
                 }
             }
             planes.add(plane);
+            velocity_planes.add(n.y >= cos_slope ? Vec3(0.0f, 1.0f, 0.0f) : plane);
             motion = clip_to_planes(motion * (1.0f - t), planes);
             // Never turn back against the intended direction: that is what makes corners jitter.
             if (glm::dot(motion, original) <= 0.0f) break;
@@ -109,8 +115,41 @@ struct Mover {
 
 } // namespace
 
+Vec3 surface_normal(const Shape& shape, const Transform& xf, const Vec3& point, const Vec3& contact_normal) {
+    const Vec3 p = xf.to_local(point);
+    const float tol = 1e-3f;
+    Vec3 best = contact_normal;
+    float best_y = -2.0f;
+    auto consider = [&](const Vec3& local_normal) {
+        const Vec3 n = xf.dir_to_world(local_normal);
+        if (n.y > best_y) best_y = n.y, best = n;
+    };
+    switch (shape.kind) {
+    case ShapeKind::Box:
+        for (int i = 0; i < 3; ++i)
+            for (float side : {-1.0f, 1.0f})
+                if (std::abs(p[i] - side * shape.half_extents[i]) <= tol + 1e-6f * shape.half_extents[i]) {
+                    Vec3 n(0.0f);
+                    n[i] = side;
+                    consider(n);
+                }
+        break;
+    case ShapeKind::Wedge:
+    case ShapeKind::Hull:
+        for (const auto& f : shape.polyhedron->faces)
+            if (std::abs(glm::dot(f.normal, p) - f.offset) <= tol) consider(f.normal);
+        break;
+    case ShapeKind::Cylinder:
+        if (std::abs(p.y - shape.half_height) <= tol) return Vec3(0.0f, 1.0f, 0.0f);
+        break;
+    case ShapeKind::Capsule:
+        break;
+    }
+    return best_y > -2.0f ? best : contact_normal;
+}
+
 float sweep_capsule(const Segment& s, float radius, const Vec3& motion, const Obstacle& o, float skin,
-                    Vec3& normal) {
+                    Vec3& normal, Vec3* surface) {
     const float len = glm::length(motion);
     if (!(len > 0.0f)) return 1.0f;
     float t = 0.0f;
@@ -126,6 +165,9 @@ float sweep_capsule(const Segment& s, float radius, const Vec3& motion, const Ob
         if (gap <= skin + kGapTolerance) {
             if (rate <= kApproachFraction * len) return 1.0f; // resting or leaving: not blocking
             normal = c->normal;
+            if (surface)
+                *surface =
+                    surface_normal(*o.shape, o.transform, c->point - c->normal * (gap * 0.5f), c->normal);
             return t;
         }
         if (rate <= kApproachFraction * len) return 1.0f;
@@ -133,6 +175,7 @@ float sweep_capsule(const Segment& s, float radius, const Vec3& motion, const Ob
         if (t >= 1.0f) return 1.0f;
         normal = c->normal;
     }
+    if (surface) *surface = normal;
     return t;
 }
 
@@ -144,6 +187,10 @@ void move_character(const ObstacleSource& world, float radius, float half_segmen
     sanitize(state.movement);
     MovementState& m = state.movement;
     const float cos_slope = std::cos(radians(std::clamp(cs.max_slope_degrees, 0.0f, 89.0f)));
+    if (state.grounded && m.velocity.y > 1e-4f) { // the game launched it (jump, explosion): leave the ground
+        state.grounded = false;
+        state.jumping = true;
+    }
     const bool was_grounded = state.grounded && !state.jumping;
 
     Vec3 disp;
@@ -189,46 +236,49 @@ void move_character(const ObstacleSource& world, float radius, float half_segmen
     }
 
     const Vec3 start = position;
-    Planes planes;
+    Planes planes, velocity_planes;
     Vec3 moved = start;
-    const bool steep = mover.slide(moved, disp, was_grounded, planes);
+    mover.slide(moved, disp, was_grounded, planes, velocity_planes);
+    auto horizontal = [&](const Vec3& a) { return glm::length(Vec3(a.x - start.x, 0.0f, a.z - start.z)); };
+    const float wanted = glm::length(Vec3(disp.x, 0.0f, disp.z));
 
-    // Step up: the same horizontal motion lifted by step_height, then down onto walkable ground.
-    if (steep && was_grounded && cs.step_height > 0.0f) {
+    // Step up when walking was blocked (a step's edge, a low crate): the same horizontal motion lifted by
+    // step_height, then down onto walkable ground; kept only if it got further.
+    if (was_grounded && cs.step_height > 0.0f && wanted > 1e-6f && horizontal(moved) < 0.99f * wanted) {
         Vec3 n(0.0f, 1.0f, 0.0f);
         int which;
         Vec3 p = start;
         const Vec3 up(0.0f, cs.step_height, 0.0f);
         const float tu = mover.sweep(p, up, n, which);
         p += up * tu;
-        Planes planes2;
-        mover.slide(p, Vec3(disp.x, 0.0f, disp.z), true, planes2);
+        Planes planes2, velocity_planes2;
+        mover.slide(p, Vec3(disp.x, 0.0f, disp.z), true, planes2, velocity_planes2);
         const Vec3 down(0.0f, -(cs.step_height * tu + 2.0f * cs.skin + std::max(0.0f, -disp.y)), 0.0f);
-        const float td = mover.sweep(p, down, n, which);
-        auto horizontal = [&](const Vec3& a) {
-            return glm::length(Vec3(a.x - start.x, 0.0f, a.z - start.z));
-        };
-        if (which >= 0 && n.y >= cos_slope && horizontal(p + down * td) > horizontal(moved) + 1e-5f) {
+        Vec3 ground(0.0f, 1.0f, 0.0f);
+        const float td = mover.sweep(p, down, n, which, &ground);
+        if (which >= 0 && std::max(n.y, ground.y) >= cos_slope &&
+            horizontal(p + down * td) > horizontal(moved) + 1e-5f) {
             moved = p + down * td;
-            planes = planes2;
+            velocity_planes = velocity_planes2;
         }
     }
     position = moved;
-    m.velocity = clip_to_planes(m.velocity, planes);
+    m.velocity = clip_to_planes(m.velocity, velocity_planes);
 
-    // Ground: probe (and snap while walking) unless rising.
+    // Ground: probe (and snap while walking) unless rising from a jump.
     state.grounded = false;
-    if (m.velocity.y <= 1e-4f) {
+    if (!(state.jumping && m.velocity.y > 0.0f)) {
         const float probe = was_grounded ? cs.ground_snap : 2.0f * cs.skin;
         Vec3 n(0.0f, 1.0f, 0.0f);
         int which;
         const Vec3 down(0.0f, -probe, 0.0f);
-        const float t = mover.sweep(position, down, n, which);
-        if (which >= 0 && n.y >= cos_slope) {
+        Vec3 ground(0.0f, 1.0f, 0.0f);
+        const float t = mover.sweep(position, down, n, which, &ground);
+        if (which >= 0 && std::max(n.y, ground.y) >= cos_slope) {
             position += down * t;
             state.grounded = true;
             state.jumping = false;
-            state.ground_normal = n;
+            state.ground_normal = n.y >= ground.y ? n : ground;
             m.velocity.y = 0.0f;
             mover.touch(which);
         }

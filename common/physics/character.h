@@ -63,7 +63,13 @@ void move_character(const ObstacleSource& world, float radius, float half_segmen
 
 // Time of impact in [0, 1] of a capsule moving by `motion` against one obstacle, stopping `skin` short;
 // returns 1 when it does not hit. `normal` gets the contact normal at impact.
+// `surface` (optional) gets the obstacle's own face normal at the contact (see surface_normal).
 float sweep_capsule(const Segment& s, float radius, const Vec3& motion, const Obstacle& o, float skin,
-                    Vec3& normal);
+                    Vec3& normal, Vec3* surface = nullptr);
+
+// The normal of the obstacle's face at a point on its surface; where faces meet (a step's edge) the most
+// upward one. Ground is judged by this, not by the capsule's contact normal: a capsule resting on the edge
+// of a step touches it at an angle, yet stands on the step's flat top.
+Vec3 surface_normal(const Shape& shape, const Transform& xf, const Vec3& point, const Vec3& contact_normal);
 
 } // namespace ks::physics
