@@ -95,7 +95,7 @@ Result<ClipSet> compile(const AnimationFile& file, const Rig& rig) {
         Clip clip;
         clip.name = def.name;
         clip.loop = def.loop;
-        clip.duration = static_cast<float>(def.duration());
+        clip.duration = def.duration();
 
         // Which channels the clip has: every node it names, plus the rest nodes when unlisted ones go home.
         std::vector<char> has_rot(static_cast<std::size_t>(rig.size()), 0), has_pos(has_rot);
@@ -122,14 +122,14 @@ Result<ClipSet> compile(const AnimationFile& file, const Rig& rig) {
                 ch.node = n;
                 ch.is_position = position;
                 ch.first_key = static_cast<std::uint32_t>(clip.keys.size());
-                clip.keys.push_back(Key{0.0f, Vec3(0), KeyMode::FromStart, Ease::linear()});
+                clip.keys.push_back(Key{0.0, Vec3(0), KeyMode::FromStart, Ease::linear()});
                 Resolved current;
                 double time = 0;
                 for (const PhaseDef& phase : def.phases) {
                     time += phase.duration;
                     const TargetDef* t = find_target(phase, name);
                     Key key;
-                    key.time = static_cast<float>(time);
+                    key.time = time;
                     key.ease = t && t->ease ? *t->ease : phase.ease;
                     const auto& absolute =
                         position ? (t ? t->pos : std::nullopt) : (t ? t->rot : std::nullopt);

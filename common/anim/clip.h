@@ -87,7 +87,7 @@ enum class KeyMode : std::uint8_t {
 };
 
 struct Key {
-    float time = 0; // seconds from the clip's start
+    double time = 0; // seconds from the clip's start (double: loop phases stay exact over hours)
     Vec3 value{0};
     KeyMode mode = KeyMode::Absolute;
     Ease ease; // easing of the segment that ends at this key
@@ -101,7 +101,7 @@ struct Channel {
 
 struct Clip {
     std::string name;
-    float duration = 0;
+    double duration = 0;
     LoopMode loop = LoopMode::Once;
     int next = -1; // clip index for LoopMode::Next
     std::vector<Channel> channels;

@@ -47,7 +47,6 @@ void sample_clip(const Clip& clip, std::span<const Vec3> start_euler, std::span<
     } else if (local > duration) {
         local = duration;
     }
-    const float lt = static_cast<float>(local);
 
     for (const Channel& ch : clip.channels) {
         const auto node = static_cast<std::size_t>(ch.node);
@@ -60,14 +59,14 @@ void sample_clip(const Clip& clip, std::span<const Vec3> start_euler, std::span<
         }
         Vec3 value, rate(0);
         std::uint32_t k = 1;
-        while (k < ch.key_count && !(keys[k].time > lt)) ++k;
+        while (k < ch.key_count && !(keys[k].time > local)) ++k;
         if (k >= ch.key_count) {
             value = resolve(keys[ch.key_count - 1], start);
         } else {
             const Key& k0 = keys[k - 1];
             const Key& k1 = keys[k];
             const Vec3 a = resolve(k0, start), b = resolve(k1, start);
-            const double span = static_cast<double>(k1.time) - k0.time;
+            const double span = k1.time - k0.time;
             const double u = (local - k0.time) / span;
             value = a + (b - a) * static_cast<float>(k1.ease(u));
             if (want_velocity) rate = (b - a) * static_cast<float>(k1.ease.derivative(u) / span);
