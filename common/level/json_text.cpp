@@ -7,6 +7,11 @@
 namespace ks::level::json_text {
 namespace {
 
+// Strings in memory may hold invalid UTF-8 (typed or pasted in the editor); saving must not throw over them.
+std::string dump(const nlohmann::ordered_json& value) {
+    return value.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+}
+
 bool is_scalar(const nlohmann::ordered_json& value) {
     return !value.is_object() && !value.is_array();
 }
@@ -21,7 +26,7 @@ void write_scalar(const nlohmann::ordered_json& value, std::string& out) {
     if (value.is_number_float()) {
         out += format_number(value.get<double>());
     } else {
-        out += value.dump(); // strings (escaped), integers, booleans, null
+        out += dump(value); // strings (escaped), integers, booleans, null
     }
 }
 
@@ -39,7 +44,7 @@ void write_value(const nlohmann::ordered_json& value, int depth, std::string& ou
             if (!first) out += ",\n";
             first = false;
             out += indent;
-            out += nlohmann::ordered_json(key).dump();
+            out += dump(nlohmann::ordered_json(key));
             out += ": ";
             write_value(member, depth + 1, out);
         }
@@ -90,6 +95,12 @@ std::string format_readable(double value) {
     if (std::isfinite(value) && value == std::floor(value) && std::fabs(value) < 1e15)
         return std::to_string(static_cast<long long>(value));
     return format_number(value);
+}
+
+std::string quote(const nlohmann::ordered_json& value) {
+    std::string text = dump(value);
+    if (text.size() > 80) text = text.substr(0, 77) + "...";
+    return text;
 }
 
 std::string write(const nlohmann::ordered_json& document) {

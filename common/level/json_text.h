@@ -18,6 +18,9 @@ std::string format_number(double value);
 // For messages: whole numbers below 1e15 in plain digits (100000, not 1e+05), others as format_number.
 std::string format_readable(double value);
 
+// A JSON value as text for messages: invalid UTF-8 replaced rather than thrown over, long values cut short.
+std::string quote(const nlohmann::ordered_json& value);
+
 std::string write(const nlohmann::ordered_json& document);
 
 } // namespace ks::level::json_text

@@ -239,12 +239,13 @@ struct Entity {
 };
 
 struct Settings {
-    Color ambient_color{0.55f, 0.6f, 0.7f};
+    // Default colours sit on the file's 8-bit grid ("#8c99b3"...), so a new level survives save/load exactly.
+    Color ambient_color{140 / 255.0f, 153 / 255.0f, 179 / 255.0f};
     float ambient_intensity = 0.2f;
-    Color fog_color{0.05f, 0.06f, 0.08f};
+    Color fog_color{13 / 255.0f, 15 / 255.0f, 20 / 255.0f};
     float fog_density = 0.004f; // exponential fog; 0 disables
-    Vec3 sun_direction{-0.3f, -1.0f, -0.2f}; // the direction sunlight travels (normalised on load)
-    Color sun_color{1.0f, 0.96f, 0.9f};
+    Vec3 sun_direction{-0.28221625f, -0.94072086f, -0.18814416f}; // the direction sunlight travels: (-0.3, -1, -0.2) normalised, as loading keeps it
+    Color sun_color{1.0f, 245 / 255.0f, 230 / 255.0f};
     float sun_intensity = 0.1f;
     float gravity = -25.0f; // units/s^2 along y
     template <class V>

@@ -13,15 +13,33 @@ std::string number_text(float v) {
     return json_text::format_readable(json_text::float_to_double(v));
 }
 
-void check_number(double v, const std::string& shown, const std::string& path, const FieldInfo& info,
-                  DiagnosticSink& sink) {
-    if (!std::isfinite(v)) {
-        sink.error(path, "value is " + shown + " (not a finite number)", "valid: " + range_text(info));
-    } else if (v < info.min || v > info.max) {
-        std::string hint = "valid: " + range_text(info);
-        if (info.tooltip && *info.tooltip) hint += "; " + std::string(info.tooltip);
-        sink.error(path, shown + " is out of range", hint);
-    }
+void report_not_finite(const std::string& shown, const std::string& path, const FieldInfo& info,
+                       DiagnosticSink& sink) {
+    sink.error(path, "value is " + shown + " (not a finite number)", "valid: " + range_text(info));
+}
+
+void report_out_of_range(const std::string& shown, const std::string& path, const FieldInfo& info,
+                         DiagnosticSink& sink) {
+    std::string hint = "valid: " + range_text(info);
+    if (info.tooltip && *info.tooltip) hint += "; " + std::string(info.tooltip);
+    sink.error(path, shown + " is out of range", hint);
+}
+
+void check_int(int v, const std::string& path, const FieldInfo& info, DiagnosticSink& sink) {
+    if (v < info.min || v > info.max) report_out_of_range(std::to_string(v), path, info, sink);
+}
+
+// Float fields are compared in float precision: 0.01 in a file becomes 0.00999999978f, which must still
+// pass a documented minimum of 0.01. (Not by rounding the bounds through float into a copied FieldInfo:
+// GCC 12.2 at -O2 drops that double->float->double round trip when it merges the struct copy.)
+void check_float(float v, const std::string& shown, const std::string& path, const FieldInfo& info,
+                 DiagnosticSink& sink) {
+    const float lo = static_cast<float>(info.min);
+    const float hi = static_cast<float>(info.max);
+    if (!std::isfinite(v))
+        report_not_finite(shown, path, info, sink);
+    else if (v < lo || v > hi)
+        report_out_of_range(shown, path, info, sink);
 }
 
 // The read-only twin of FieldReader: walks the same visit() list and checks each value.
@@ -30,11 +48,9 @@ class FieldChecker {
     FieldChecker(std::string path, DiagnosticSink& sink) : path_(std::move(path)), sink_(sink) {}
 
     void field(float& v, const FieldInfo& info) {
-        check_number(v, number_text(v), path_of(info), info, sink_);
+        check_float(v, number_text(v), path_of(info), info, sink_);
     }
-    void field(int& v, const FieldInfo& info) {
-        check_number(v, std::to_string(v), path_of(info), info, sink_);
-    }
+    void field(int& v, const FieldInfo& info) { check_int(v, path_of(info), info, sink_); }
     void field(bool&, const FieldInfo&) {}
     void field(std::string& v, const FieldInfo& info) {
         if (std::string_view(info.name) == "texture" && v.empty())
@@ -44,7 +60,7 @@ class FieldChecker {
     template <int N>
     void field(glm::vec<N, float>& v, const FieldInfo& info) {
         for (int i = 0; i < N; ++i)
-            check_number(v[i], number_text(v[i]), element_path(path_of(info), i), info, sink_);
+            check_float(v[i], number_text(v[i]), element_path(path_of(info), i), info, sink_);
     }
     void field(Color& c, const FieldInfo& info) {
         const FieldInfo unit_range{info.name, info.tooltip, 0, 1, ""};
@@ -52,8 +68,8 @@ class FieldChecker {
         static const char* const kNames[3] = {"red", "green", "blue"};
         for (int i = 0; i < 3; ++i) {
             if (!std::isfinite(components[i]) || components[i] < 0 || components[i] > 1)
-                check_number(components[i], std::string(kNames[i]) + " " + number_text(components[i]),
-                             path_of(info), unit_range, sink_);
+                check_float(components[i], std::string(kNames[i]) + " " + number_text(components[i]),
+                            path_of(info), unit_range, sink_);
         }
     }
     void field(Choice& v, const FieldInfo& info) {

@@ -74,7 +74,7 @@ int read_version(const Json& document, DiagnosticSink& sink) {
         return -1;
     }
     if (!it->is_number_integer() && !it->is_number_unsigned()) {
-        sink.error("version", "version must be a whole number, found " + it->dump(),
+        sink.error("version", "version must be a whole number, found " + json_text::quote(*it),
                    "this build reads version 1");
         return -1;
     }
@@ -179,7 +179,7 @@ std::optional<Level> parse_level(std::string_view text, DiagnosticSink& sink, Po
         return std::nullopt;
     }
     if (!format->is_string() || format->get<std::string>() != kFormatName) {
-        sink.error("format", "not a Killswitch level: format is " + format->dump(),
+        sink.error("format", "not a Killswitch level: format is " + json_text::quote(*format),
                    "a level file has \"format\": \"killswitch-level\"");
         return std::nullopt;
     }
@@ -192,6 +192,8 @@ std::optional<Level> parse_level(std::string_view text, DiagnosticSink& sink, Po
     }
 
     ReadLevel read = read_level(document, sink);
+    // Settings::sun_direction is stored unit length; a designer may write any non-zero direction.
+    read.level.settings.sun_direction = normalized_direction(read.level.settings.sun_direction);
     check_level(read.level, sink, read.source_index);
     return std::move(read.level);
 }
@@ -241,9 +243,6 @@ Result<Level> load_level_string(std::string_view text, const std::string& file_n
     PositionMap positions;
     DiagnosticSink sink(file_name, &positions);
     std::optional<Level> level = parse_level(text, sink, positions);
-    if (level) {
-        level->settings.sun_direction = normalized_direction(level->settings.sun_direction);
-    }
     return finish(std::move(level), sink, file_name, report);
 }
 

@@ -19,12 +19,12 @@ std::string lower(std::string s) {
 }
 
 std::string describe(const Json& value) {
-    if (value.is_string()) return "the string " + value.dump();
+    if (value.is_string()) return "the string " + json_text::quote(value);
     if (value.is_null()) return "null";
     if (value.is_boolean()) return std::string("the boolean ") + (value.get<bool>() ? "true" : "false");
     if (value.is_object()) return "an object";
     if (value.is_array()) return "an array";
-    return "the number " + value.dump();
+    return "the number " + json_text::quote(value);
 }
 
 // A JSON number as a double. Strings such as "nan" or "inf" get their own message: JSON has no NaN, and a
@@ -55,7 +55,7 @@ bool read_double(const Json& value, const std::string& path, const std::string& 
         const std::string& raw = value.get_ref<const std::string&>();
         std::strtod(raw.c_str(), &end);
         if (!raw.empty() && end == raw.c_str() + raw.size()) {
-            sink.error(path, "number written as a string " + value.dump(),
+            sink.error(path, "number written as a string " + json_text::quote(value),
                        "remove the quotes; valid: " + valid);
             return false;
         }
@@ -126,7 +126,7 @@ bool read_color(const Json& value, const std::string& path, DiagnosticSink& sink
     bool ok = s.size() == 7 && s[0] == '#';
     for (int i = 0; ok && i < 6; ++i) ok = (digits[i] = hex_digit(s[static_cast<size_t>(i) + 1])) >= 0;
     if (!ok) {
-        sink.error(path, "bad colour " + value.dump(), kHint);
+        sink.error(path, "bad colour " + json_text::quote(value), kHint);
         return false;
     }
     out.r = static_cast<float>(digits[0] * 16 + digits[1]) / 255.0f;
@@ -279,7 +279,7 @@ std::optional<Entity> read_entity(const Json& json, const std::string& path, Dia
             std::string hint = "valid types: " + join(known_types);
             if (std::string near = closest_match(type->get<std::string>(), known_types); !near.empty())
                 hint = "did you mean \"" + near + "\"? " + hint;
-            sink.error(member_path(path, "type"), "unknown entity type " + type->dump(), hint);
+            sink.error(member_path(path, "type"), "unknown entity type " + json_text::quote(*type), hint);
         } else {
             entity.props = default_props(t);
             typed = true;

@@ -1,0 +1,148 @@
+#include "level_builders.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace ks::test {
+namespace {
+
+using namespace ks::level;
+
+// A float inside [lo, hi] with a random number of significant digits, or a full-precision one, or a tiny
+// one: the shapes that shortest round-trip printing has to get right.
+float random_float(Rng& rng, double lo, double hi) {
+    const double span = hi - lo;
+    switch (rng.below(4)) {
+    case 0:
+        return static_cast<float>(lo + span * rng.uniform_double()); // all 24 bits
+    case 1: {                                                        // a short decimal such as 0.8 or 12.25
+        const double scale = std::pow(10.0, rng.below(4));
+        const double v = std::round((lo + span * rng.uniform_double()) * scale) / scale;
+        return static_cast<float>(std::clamp(v, lo, hi));
+    }
+    case 2: { // small magnitudes near the low end of the range
+        const double v =
+            lo + span * std::pow(10.0, -static_cast<double>(rng.below(8))) * rng.uniform_double();
+        return static_cast<float>(std::clamp(v, lo, hi));
+    }
+    default:
+        return static_cast<float>(rng.chance(0.5f) ? lo : hi); // the range's own ends
+    }
+}
+
+std::string random_name(Rng& rng) {
+    static const char* const kPieces[] = {"Wall", "robot", "\"quoted\"",  "back\\slash", "tab\there",
+                                          "Café", "Ä-ß",   "line\nbreak", "  spaces  ",  "{brace}",
+                                          "",     "数字",  "#1"};
+    std::string name;
+    const int parts = static_cast<int>(rng.below(4));
+    for (int i = 0; i < parts; ++i) name += kPieces[rng.below(std::size(kPieces))];
+    return name;
+}
+
+class RandomFiller {
+  public:
+    explicit RandomFiller(Rng& rng) : rng_(rng) {}
+    void field(float& v, const FieldInfo& info) { v = random_float(rng_, info.min, info.max); }
+    void field(int& v, const FieldInfo& info) {
+        v = static_cast<int>(info.min) +
+            static_cast<int>(rng_.below(static_cast<std::uint32_t>(info.max - info.min) + 1));
+    }
+    void field(bool& v, const FieldInfo&) { v = rng_.chance(0.5f); }
+    void field(std::string& v, const FieldInfo& info) {
+        static const char* const kTextures[] = {"concrete", "wood", "tiles", "ceiling", "metal"};
+        v = std::string_view(info.name) == "texture" ? kTextures[rng_.below(5)] : random_name(rng_);
+    }
+    void field(Vec2& v, const FieldInfo& info) {
+        for (int i = 0; i < 2; ++i) v[i] = random_float(rng_, info.min, info.max);
+    }
+    void field(Vec3& v, const FieldInfo& info) {
+        for (int i = 0; i < 3; ++i) v[i] = random_float(rng_, info.min, info.max);
+    }
+    void field(Color& c, const FieldInfo&) {
+        c = {static_cast<float>(rng_.below(256)) / 255.0f, static_cast<float>(rng_.below(256)) / 255.0f,
+             static_cast<float>(rng_.below(256)) / 255.0f};
+    }
+    void field(Choice& v, const FieldInfo&) {
+        v.value = v.options[rng_.below(static_cast<std::uint32_t>(v.options.size()))];
+    }
+
+  private:
+    Rng& rng_;
+};
+
+} // namespace
+
+Level level_with_every_type() {
+    Level level;
+    level.name = "Every type";
+    level.settings.ambient_color = {1, 204 / 255.0f, 128 / 255.0f};
+    level.settings.fog_density = 0.01f;
+    level.settings.sun_direction = {0, -1, 0};
+    level.settings.gravity = -9.81f;
+    level.player_start = {{1.5f, 0.25f, -3}, 45};
+
+    auto& wall = level.add(EntityType::Wall, {1, 2, 3}, "Wall").as<WallProps>();
+    wall = {{7.5f, 11, 0.25f}, "wood", 3.3f};
+    auto& floor = level.add(EntityType::Floor, {0, 16, 0}, "Ceiling").as<FloorProps>();
+    floor = {{120, 200}, 0.75f, true, "ceiling", 1.5f};
+    auto& stair = level.add(EntityType::Stair, {8, 0, -84}, "Stair").as<StairProps>();
+    stair = {{12, 6, 12}, 12, "metal"};
+    auto& door = level.add(EntityType::Door, {0, 0, -30}, "Door").as<DoorProps>();
+    door = {6, 5.5f, true, 2.1f, 0.8f};
+    auto& floor_light = level.add(EntityType::FloorLight, {7, 0, -6}, "Floor light").as<FloorLightProps>();
+    floor_light = {{{1, 204 / 255.0f, 128 / 255.0f}, 0.8f, 20, false}, 40, 3.8f};
+    auto& top_light = level.add(EntityType::TopLight, {0, 16, 20}, "Top light").as<TopLightProps>();
+    top_light = {{{128 / 255.0f, 1, 1}, 1.25f, 30, true}, 1.5f};
+    auto& robot = level.add(EntityType::Robot, {54, 6, -37}, "Robot").as<RobotProps>();
+    robot = {150, 9, 7, 12, 18, 26, 0.8f, 0.65f, 12, 15, true};
+    auto& pickup = level.add(EntityType::Pickup, {-2, 6, -82}, "Pickup").as<PickupProps>();
+    pickup.kind.value = "shield";
+    pickup.amount = 25;
+    auto& gas = level.add(EntityType::GasCylinder, {-5, 0, 12}, "Gas").as<GasCylinderProps>();
+    gas = {0.6f, 2.2f, 35, 7.5f, 30};
+    auto& panel = level.add(EntityType::ControlPanel, {90, 0, 50}, "Panel").as<ControlPanelProps>();
+    panel.size = {3, 4.5f, 5};
+    int yaw = -144;
+    for (Entity& e : level.entities) e.rotation = {static_cast<float>(yaw += 37), 0.5f, -1.25f};
+    return level;
+}
+
+Level random_level(Rng& rng, int entity_count) {
+    Level level;
+    level.name = random_name(rng);
+    RandomFiller filler(rng);
+    level.settings.visit(filler);
+    // Unit length within 1e-4 (as the loader keeps it), never zero.
+    Vec3 sun(random_float(rng, -1, 1), -0.5f - rng.uniform(), random_float(rng, -1, 1));
+    level.settings.sun_direction = sun / glm::length(sun);
+    level.player_start = {
+        {random_float(rng, -1000, 1000), random_float(rng, -10, 50), random_float(rng, -1000, 1000)},
+        random_float(rng, -360, 360)};
+
+    std::vector<int> ids(static_cast<size_t>(entity_count));
+    for (int i = 0; i < entity_count; ++i)
+        ids[static_cast<size_t>(i)] = 1 + i * 3 + static_cast<int>(rng.below(3));
+    for (size_t i = ids.size(); i > 1; --i)
+        std::swap(ids[i - 1], ids[rng.below(static_cast<std::uint32_t>(i))]);
+
+    for (int i = 0; i < entity_count; ++i) {
+        Entity e;
+        e.id = ids[static_cast<size_t>(i)];
+        e.name = random_name(rng);
+        e.position = {random_float(rng, -1e4, 1e4), random_float(rng, -100, 100),
+                      random_float(rng, -1e4, 1e4)};
+        e.rotation = {random_float(rng, -720, 720), random_float(rng, -90, 90), random_float(rng, -180, 180)};
+        e.props =
+            default_props(static_cast<EntityType>(rng.below(static_cast<std::uint32_t>(EntityType::Count))));
+        std::visit([&](auto& props) { props.visit(filler); }, e.props);
+        if (auto* robot = e.try_as<RobotProps>(); robot && robot->eye_radius_min > robot->eye_radius_max)
+            std::swap(robot->eye_radius_min, robot->eye_radius_max);
+        level.entities.push_back(std::move(e));
+    }
+    level.next_id = entity_count * 3 + 1 + static_cast<int>(rng.below(5));
+    return level;
+}
+
+} // namespace ks::test
