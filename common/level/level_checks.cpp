@@ -10,6 +10,8 @@ namespace ks::level {
 namespace {
 
 std::string number_text(float v) {
+    if (std::isnan(v)) return "NaN";
+    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
     return json_text::format_readable(json_text::float_to_double(v));
 }
 
