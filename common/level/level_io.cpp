@@ -111,6 +111,8 @@ Error combined_error(const std::vector<Diagnostic>& diagnostics, const std::stri
 
 // Parses, migrates, reads and checks; every problem goes to the sink.
 std::optional<Level> parse_level(std::string_view text, DiagnosticSink& sink, PositionMap& positions) {
+    // Some Windows editors start UTF-8 files with a byte-order mark; it is not JSON, but it is not an error.
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
     if (is_blank(text)) {
         sink.error_at({}, "", "file is empty", kFormatHint);
         return std::nullopt;

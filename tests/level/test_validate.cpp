@@ -122,3 +122,18 @@ TEST_CASE("many errors are all reported, in document order") {
     // The combined error stays readable: the first errors, then a count of the rest.
     CHECK(level.error().message.find("... and 70 more errors") != std::string::npos);
 }
+
+TEST_CASE("Windows line endings and a byte-order mark load, with the right positions") {
+    const std::string text = "\xEF\xBB\xBF{\r\n"
+                             "  \"format\": \"killswitch-level\",\r\n"
+                             "  \"version\": 1,\r\n"
+                             "  \"entities\": [{\"id\": 1, \"type\": \"wall\", \"position\": [0, 0, 0], "
+                             "\"props\": {\"size\": [0, 1, 1]}}]\r\n"
+                             "}\r\n";
+    LoadReport report;
+    REQUIRE_FALSE(load_level_string(text, "crlf.json", &report).ok());
+    REQUIRE(report.diagnostics.size() == 1);
+    CHECK(report.diagnostics[0].error.where.line == 4);
+    CHECK(report.diagnostics[0].error.where.column == 84);
+    CHECK(report.diagnostics[0].error.where.path == "entities[0].props.size[0]");
+}
