@@ -1,6 +1,13 @@
+// Every design rule: it fires on a level built to break it, names the offender, and its quick fix (where
+// there is one) makes it go away. The shipped main level and the scripted two-room level pass them all.
 #include "editor_test_util.h"
+
+#include "core/log.h"
 #include "model/reachability.h"
+#include "model/script.h"
 #include "model/validation.h"
+
+#include <cmath>
 
 using namespace ks;
 using namespace ks::editor;
@@ -13,20 +20,273 @@ std::string dump(const std::vector<Issue>& issues) {
         s += std::string(rule_name(i.rule)) + " #" + std::to_string(i.entity_id) + ": " + i.message + "\n";
     return s;
 }
-[[maybe_unused]] int count_rule(const std::vector<Issue>& issues, Rule rule, int id = -1) {
-    int n = 0;
-    for (const auto& i : issues) n += i.rule == rule && (id < 0 || i.entity_id == id);
-    return n;
+
+std::vector<Issue> of_rule(const std::vector<Issue>& issues, Rule rule) {
+    std::vector<Issue> out;
+    for (const auto& i : issues)
+        if (i.rule == rule) out.push_back(i);
+    return out;
+}
+
+// The two-room level of editor_test_util.h, built through the script language.
+void build_two_rooms(Editor& ed) {
+    auto r = run_script_text(editor_test::kTwoRoomScript, "two_rooms.kss", {}, ed);
+    REQUIRE_MESSAGE(r.ok(), (r.ok() ? std::string() : r.error().str()));
+}
+
+int id_named(const Editor& ed, const std::string& name) {
+    for (const auto& e : ed.level().entities)
+        if (e.name == name) return e.id;
+    FAIL("no entity named " << name);
+    return 0;
 }
 } // namespace
 
-TEST_CASE("validation: the shipped main level passes every design rule") {
+TEST_CASE("validation: the shipped main level passes every design rule, reachability included") {
     const auto level = editor_test::load_shipped("main.json");
     auto issues = validate_design(level);
     INFO(dump(issues));
-    CHECK(count_errors(issues) == 0);
     CHECK(issues.empty());
     auto walk = walk_to_control_panel(level, {});
     CHECK(walk.decided);
     CHECK(walk.reachable);
+    CHECK(walk.open_nodes > 10000);
+}
+
+TEST_CASE("validation: the scripted two-room level is valid") {
+    Editor ed;
+    build_two_rooms(ed);
+    INFO(dump(ed.issues()));
+    CHECK(ed.issues().empty());
+}
+
+TEST_CASE("rule format: range problems from the level checks point at their entity") {
+    level::Level level;
+    auto& robot = level.add(EntityType::Robot, {0, 0, 0});
+    robot.as<level::RobotProps>().eye_radius_min = 50; // above eye_radius_max
+    auto issues = of_rule(validate_design(level), Rule::Format);
+    REQUIRE(issues.size() == 1);
+    CHECK(issues[0].entity_id == robot.id);
+    CHECK(issues[0].message.find("eye_radius_min") != std::string::npos);
+}
+
+TEST_CASE("rule player_start: floating (drop fix), outside every floor, inside a wall (push-out fix)") {
+    Editor ed;
+    build_two_rooms(ed);
+    REQUIRE(ed.set_player_start({{0, 2, 15}, 0}).ok());
+    auto issues = of_rule(ed.issues(), Rule::PlayerStart);
+    REQUIRE(issues.size() == 1);
+    CHECK(issues[0].entity_id == 0);
+    CHECK(issues[0].message.find("floats 2.00") != std::string::npos);
+    REQUIRE(issues[0].fix.kind == QuickFix::Kind::MovePlayerStart);
+    REQUIRE(ed.apply_quick_fix(issues[0]).ok());
+    CHECK(ed.level().player_start.position == Vec3(0, 0, 15));
+    CHECK(of_rule(ed.issues(), Rule::PlayerStart).empty());
+
+    REQUIRE(ed.set_player_start({{50, 0, 0}, 0}).ok());
+    issues = of_rule(ed.issues(), Rule::PlayerStart);
+    REQUIRE(issues.size() == 1);
+    CHECK(issues[0].severity == IssueSeverity::Error);
+    CHECK(issues[0].message.find("outside every floor") != std::string::npos);
+
+    REQUIRE(ed.set_player_start({{-9.5f, 0, 10}, 0}).ok()); // the west wall is at x = -10
+    issues = of_rule(ed.issues(), Rule::PlayerStart);
+    REQUIRE(issues.size() == 1);
+    CHECK(issues[0].message.find("inside wall") != std::string::npos);
+    REQUIRE(ed.apply_quick_fix(issues[0]).ok());
+    CHECK(ed.level().player_start.position.x == doctest::Approx(-8.74).epsilon(0.01));
+    CHECK(of_rule(ed.issues(), Rule::PlayerStart).empty());
+}
+
+TEST_CASE("rule control_panel: missing is an error, extras are warnings with a delete fix") {
+    Editor ed;
+    build_two_rooms(ed);
+    const int panel = id_named(ed, "Panel");
+    REQUIRE(ed.select({panel}).ok());
+    REQUIRE(ed.duplicate(Vec3(-4, 0, 0)).ok());
+    auto issues = of_rule(ed.issues(), Rule::ControlPanel);
+    REQUIRE(issues.size() == 1);
+    CHECK(issues[0].severity == IssueSeverity::Warning);
+    CHECK(issues[0].entity_id == ed.level().next_id - 1);
+    REQUIRE(ed.apply_quick_fix(issues[0]).ok());
+    CHECK(of_rule(ed.issues(), Rule::ControlPanel).empty());
+
+    REQUIRE(ed.delete_entities({panel}).ok());
+    issues = of_rule(ed.issues(), Rule::ControlPanel);
+    REQUIRE(issues.size() == 1);
+    CHECK(issues[0].severity == IssueSeverity::Error);
+    CHECK(issues[0].entity_id == 0);
+    CHECK(issues[0].fix.kind == QuickFix::Kind::None);
+    CHECK_FALSE(ed.apply_quick_fix(issues[0]).ok());
+}
+
+TEST_CASE("rule wall_overlap: a robot in a wall is found by its oriented box and pushed out") {
+    Editor ed;
+    build_two_rooms(ed);
+    int robot = *ed.place(EntityType::Robot, {-9.5f, 0, 10}, 30); // turned, half inside the west wall
+    auto issues = of_rule(ed.issues(), Rule::WallOverlap);
+    REQUIRE(issues.size() == 1);
+    CHECK(issues[0].entity_id == robot);
+    CHECK(issues[0].message.find("West") != std::string::npos);
+    REQUIRE(issues[0].fix.kind == QuickFix::Kind::MoveEntity);
+    REQUIRE(ed.apply_quick_fix(issues[0]).ok());
+    CHECK(ed.doc().selection == std::vector<int>{robot});
+    CHECK(of_rule(ed.issues(), Rule::WallOverlap).empty());
+    CHECK(ed.level().find(robot)->position.x > -9.5f);
+
+    // Touching the wall's face is fine; a rotated control panel reaching through it is not.
+    REQUIRE(ed.select({robot}).ok());
+    REQUIRE(ed.set_field("rotation", FieldValue(Vec3(0))).ok());
+    REQUIRE(ed.set_field("position", FieldValue(Vec3(-9.75f + 0.8f, 0, 10))).ok());
+    CHECK(of_rule(ed.issues(), Rule::WallOverlap).empty());
+    int panel = id_named(ed, "Panel");
+    REQUIRE(ed.select({panel}).ok());
+    REQUIRE(ed.set_field("rotation", FieldValue(Vec3(90, 0, 0))).ok()); // 5.34 deep along x: fits (20 wide)
+    CHECK(of_rule(ed.issues(), Rule::WallOverlap).empty());
+    REQUIRE(
+        ed.set_field("position", FieldValue(Vec3(0, 0, -19))).ok()); // 1.47 half-depth: into the north wall
+    issues = of_rule(ed.issues(), Rule::WallOverlap);
+    REQUIRE(issues.size() == 1);
+    CHECK(issues[0].entity_id == panel);
+}
+
+TEST_CASE("rule support: floating and sunk entities drop to the floor; outside every floor offers delete") {
+    Editor ed;
+    build_two_rooms(ed);
+    ed.grid().snap = false;
+    int pickup = *ed.place(EntityType::Pickup, {-5, 3, 5});
+    int gas = *ed.place(EntityType::GasCylinder, {5, -0.5f, 5});
+    int robot = *ed.place(EntityType::Robot, {40, 0, 0});
+    auto issues = of_rule(ed.issues(), Rule::Support);
+    INFO(dump(issues));
+    REQUIRE(issues.size() == 3);
+    CHECK(issues[0].entity_id == pickup);
+    CHECK(issues[0].message.find("floats 3.00") != std::string::npos);
+    CHECK(issues[0].fix.label == "Drop to floor");
+    CHECK(issues[1].entity_id == gas);
+    CHECK(issues[1].message.find("sunk 0.50") != std::string::npos);
+    CHECK(issues[2].entity_id == robot);
+    CHECK(issues[2].severity == IssueSeverity::Error);
+    CHECK(issues[2].fix.kind == QuickFix::Kind::DeleteEntity);
+    for (const auto& issue : issues) REQUIRE(ed.apply_quick_fix(issue).ok());
+    CHECK(ed.level().find(pickup)->position.y == 0.0f);
+    CHECK(ed.level().find(gas)->position.y == 0.0f);
+    CHECK(ed.level().find(robot) == nullptr);
+    CHECK(of_rule(ed.issues(), Rule::Support).empty());
+    // Standing on a stair tread counts as supported.
+    const auto level = editor_test::load_shipped("main.json");
+    level::Level copy = level;
+    auto& p = copy.add(EntityType::Pickup, {-4, 3.6f, -72.5f}); // step 6 of S1 (treads every 0.6)
+    CHECK(of_rule(validate_design(copy), Rule::Support).empty());
+    p.position.y = 4.5f;
+    CHECK(of_rule(validate_design(copy), Rule::Support).size() == 1);
+}
+
+TEST_CASE("rule stair_slope: steeper than the character's limit, fixed by lengthening the run") {
+    Editor ed;
+    build_two_rooms(ed);
+    int stair = *ed.place(EntityType::Stair, {0, 0, 10});
+    REQUIRE(ed.set_field_text("size", "6,6,4").ok()); // 56°
+    auto issues = of_rule(ed.issues(), Rule::StairSlope);
+    REQUIRE(issues.size() == 1);
+    CHECK(issues[0].entity_id == stair);
+    CHECK(issues[0].message.find("56.31") != std::string::npos);
+    REQUIRE(ed.apply_quick_fix(issues[0]).ok());
+    const Vec3 size = ed.level().find(stair)->as<level::StairProps>().size;
+    CHECK(size.x == 6.0f);
+    CHECK(size.y == 6.0f);
+    const float slope = degrees(std::atan2(size.y, size.z));
+    CHECK(slope <= CharacterLimits{}.max_slope_degrees);
+    CHECK(slope > CharacterLimits{}.max_slope_degrees - 0.1f);
+    CHECK(of_rule(ed.issues(), Rule::StairSlope).empty());
+    REQUIRE(ed.set_field_text("size", "6,6,12").ok()); // the reference's 26.6°
+    CHECK(of_rule(ed.issues(), Rule::StairSlope).empty());
+}
+
+TEST_CASE("rule door_gap: in the open, beside one wall only, and blocked by a wall") {
+    Editor ed;
+    build_two_rooms(ed);
+    int door = id_named(ed, "Door");
+    CHECK(of_rule(ed.issues(), Rule::DoorGap).empty());
+    REQUIRE(ed.select({door}).ok());
+    REQUIRE(ed.move_selection({0, 0, 10}).ok());
+    auto issues = of_rule(ed.issues(), Rule::DoorGap);
+    REQUIRE(issues.size() == 1);
+    CHECK(issues[0].entity_id == door);
+    CHECK(issues[0].message.find("either side") != std::string::npos);
+    REQUIRE(ed.undo());
+
+    REQUIRE(ed.delete_entities({id_named(ed, "Door east side")}).ok());
+    issues = of_rule(ed.issues(), Rule::DoorGap);
+    REQUIRE(issues.size() == 1);
+    CHECK(issues[0].message.find("+x jamb") != std::string::npos);
+    REQUIRE(ed.undo());
+
+    // The shipped level: sliding the wall beside door 2 over the doorway.
+    level::Level main = editor_test::load_shipped("main.json");
+    main.find(10)->position.x += 1.0f;
+    issues = of_rule(validate_design(main), Rule::DoorGap);
+    REQUIRE(issues.size() == 1);
+    CHECK(issues[0].entity_id == 24);
+    CHECK(issues[0].message.find("blocked by wall 10") != std::string::npos);
+    // A door turned with its walls (both 90°) is still in its gap.
+    level::Level turned;
+    auto& f = turned.add(EntityType::Floor, {0, 0, 0});
+    f.as<level::FloorProps>().size = {40, 40};
+    for (float z : {-6.25f, 6.25f}) {
+        auto& w = turned.add(EntityType::Wall, {0, 0, z});
+        w.rotation.x = 90;
+        w.as<level::WallProps>().size = {7.5f, 16, 0.5f};
+    }
+    auto& d = turned.add(EntityType::Door, {0, 0, 0});
+    d.rotation.x = 90;
+    CHECK(of_rule(validate_design(turned), Rule::DoorGap).empty());
+    d.rotation.x = 0; // across the wall line: no longer in the gap
+    CHECK(of_rule(validate_design(turned), Rule::DoorGap).size() == 1);
+}
+
+TEST_CASE("rule reachability: a sealed room or a platform without stairs makes the panel unreachable") {
+    Editor ed;
+    build_two_rooms(ed);
+    CHECK(of_rule(ed.issues(), Rule::Reachability).empty());
+    // Seal the doorway with a wall (and remove the door, so door_gap does not mask the point).
+    REQUIRE(ed.delete_entities({id_named(ed, "Door")}).ok());
+    (void)ed.place(EntityType::Wall, {0, 0, 0});
+    REQUIRE(ed.set_field_text("size", "5,16,0.5").ok());
+    auto issues = of_rule(ed.issues(), Rule::Reachability);
+    REQUIRE(issues.size() == 1);
+    CHECK(issues[0].entity_id == id_named(ed, "Panel"));
+    CHECK(issues[0].severity == IssueSeverity::Warning);
+
+    // Main level: the health pickup's platform is reached by stair 27; put the panel there, then remove the
+    // stair.
+    level::Level main = editor_test::load_shipped("main.json");
+    main.find(56)->position = {56, 6, -39};
+    CHECK(walk_to_control_panel(main, {}).reachable);
+    std::erase_if(main.entities, [](const level::Entity& e) { return e.id == 27; });
+    auto walk = walk_to_control_panel(main, {});
+    CHECK(walk.decided);
+    CHECK_FALSE(walk.reachable);
+    CHECK(walk.visited_nodes > 1000); // it searched the rooms, not just gave up
+
+    // Nothing to decide without a panel (the control_panel rule reports that).
+    level::Level empty;
+    CHECK_FALSE(walk_to_control_panel(empty, {}).decided);
+}
+
+TEST_CASE("validation: issues are cached per revision and clicking one selects the offender") {
+    Editor ed;
+    build_two_rooms(ed);
+    int pickup = *ed.place(EntityType::Pickup, {-5, 3, 5});
+    const auto* first = &ed.issues();
+    CHECK(&ed.issues() == first);
+    REQUIRE(ed.select({}).ok());
+    auto issues = of_rule(ed.issues(), Rule::Support);
+    REQUIRE(issues.size() == 1);
+    REQUIRE(ed.select_issue(issues[0]).ok());
+    CHECK(ed.doc().selection == std::vector<int>{pickup});
+    // A locked offender cannot be selected or fixed.
+    ed.set_locked(pickup, true);
+    CHECK_FALSE(ed.select_issue(issues[0]).ok());
+    CHECK_FALSE(ed.apply_quick_fix(issues[0]).ok());
 }
