@@ -118,10 +118,86 @@ void Bvh::build(std::span<const Aabb> items) {
     for (std::size_t i = 0; i < items.size(); ++i) b.centres[i] = items[i].centre();
     b.build(0, 0, static_cast<std::uint32_t>(items.size()), 1);
     depth_ = b.max_depth;
+    build_wide();
+}
+
+void Bvh::build_wide() {
+    wide_.clear();
+    leaves_.clear();
+    // Each wide node takes a binary node's children, then repeatedly opens the largest inner child in place
+    // of itself until it holds four.
+    struct Work {
+        std::uint32_t binary;
+        std::uint32_t wide;
+    };
+    std::vector<Work> work;
+    auto child_ref = [&](std::uint32_t b) -> std::int32_t {
+        const Node& n = nodes_[b];
+        if (n.count > 0) {
+            leaves_.push_back({n.left_or_first, n.count});
+            return ~static_cast<std::int32_t>(leaves_.size() - 1);
+        }
+        wide_.emplace_back();
+        work.push_back({b, static_cast<std::uint32_t>(wide_.size() - 1)});
+        return static_cast<std::int32_t>(wide_.size() - 1);
+    };
+    if (nodes_[0].count > 0) { // a single leaf: wrap it
+        wide_.emplace_back();
+        WideNode& w = wide_[0];
+        const std::int32_t leaf = child_ref(0);
+        for (int k = 0; k < 4; ++k) {
+            w.min_x[k] = w.min_y[k] = w.min_z[k] = 3.4e38f;
+            w.max_x[k] = w.max_y[k] = w.max_z[k] = -3.4e38f;
+            w.child[k] = leaf;
+        }
+        w.min_x[0] = nodes_[0].min.x, w.min_y[0] = nodes_[0].min.y, w.min_z[0] = nodes_[0].min.z;
+        w.max_x[0] = nodes_[0].max.x, w.max_y[0] = nodes_[0].max.y, w.max_z[0] = nodes_[0].max.z;
+        w.lanes = 1;
+        return;
+    }
+    wide_.emplace_back();
+    work.push_back({0, 0});
+    while (!work.empty()) {
+        const Work job = work.back();
+        work.pop_back();
+        std::uint32_t kids[4] = {nodes_[job.binary].left_or_first, nodes_[job.binary].left_or_first + 1, 0,
+                                 0};
+        int count = 2;
+        while (count < 4) {
+            int best = -1;
+            float best_area = -1.0f;
+            for (int k = 0; k < count; ++k) {
+                const Node& n = nodes_[kids[k]];
+                const float area = Aabb{n.min, n.max}.surface_area();
+                if (n.count == 0 && area > best_area) best_area = area, best = k;
+            }
+            if (best < 0) break;
+            const std::uint32_t open = kids[best];
+            kids[best] = nodes_[open].left_or_first;
+            kids[count++] = nodes_[open].left_or_first + 1;
+        }
+        WideNode w;
+        w.lanes = (1 << count) - 1;
+        for (int k = 0; k < 4; ++k) {
+            if (k < count) {
+                const Node& n = nodes_[kids[k]];
+                w.min_x[k] = n.min.x, w.min_y[k] = n.min.y, w.min_z[k] = n.min.z;
+                w.max_x[k] = n.max.x, w.max_y[k] = n.max.y, w.max_z[k] = n.max.z;
+                w.child[k] = child_ref(kids[k]);
+            } else { // empty lane: an inverted box no ray enters
+                w.min_x[k] = w.min_y[k] = w.min_z[k] = 3.4e38f;
+                w.max_x[k] = w.max_y[k] = w.max_z[k] = -3.4e38f;
+                w.child[k] = 0;
+            }
+        }
+        wide_[job.wide] = w;
+    }
 }
 
 void Bvh::clear() {
     nodes_.clear();
+    wide_.clear();
+    leaves_.clear();
     order_.clear();
     depth_ = 0;
 }

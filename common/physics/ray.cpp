@@ -4,39 +4,6 @@
 #include <cmath>
 
 namespace ks::physics {
-namespace {
-
-// Rounding guard for the slab test (Ize, "Robust BVH Ray Traversal"): widening the exit distance by a few
-// ulps makes boundary crossings count, so a ray through the shared edge of two boxes is never lost.
-constexpr float kExitWiden = 1.0f + 4.0f * 1.1920929e-7f;
-
-// An exact zero direction component becomes this tiny positive value: the slab test then needs no inf·0
-// (NaN) and classifies a ray lying in a slab plane half-open (inside on the min plane, outside on the max
-// plane), so a ray along the face shared by two stacked boxes hits exactly one of them.
-constexpr float kTinyDirection = 1e-30f;
-
-float tiny_fix(float v) {
-    return v == 0.0f ? kTinyDirection : v;
-}
-
-} // namespace
-
-Vec3 safe_inverse(const Vec3& d) {
-    return {1.0f / tiny_fix(d.x), 1.0f / tiny_fix(d.y), 1.0f / tiny_fix(d.z)};
-}
-
-bool ray_aabb(const Ray& ray, const Vec3& inv, const Aabb& box, float max_t, float& t_enter) {
-    const float tx0 = (box.min.x - ray.origin.x) * inv.x, tx1 = (box.max.x - ray.origin.x) * inv.x;
-    const float ty0 = (box.min.y - ray.origin.y) * inv.y, ty1 = (box.max.y - ray.origin.y) * inv.y;
-    const float tz0 = (box.min.z - ray.origin.z) * inv.z, tz1 = (box.max.z - ray.origin.z) * inv.z;
-    const float tmin =
-        std::max(std::max(std::min(tx0, tx1), std::min(ty0, ty1)), std::max(std::min(tz0, tz1), 0.0f));
-    const float tmax =
-        std::min(std::min(std::max(tx0, tx1), std::max(ty0, ty1)), std::min(std::max(tz0, tz1), max_t));
-    t_enter = tmin;
-    return tmin <= tmax * kExitWiden;
-}
-
 bool ray_box(const Ray& ray, const Vec3& half, const Transform& xf, ShapeHit& hit) {
     // In the box frame, relative to its centre: the subtraction is exact for nearby points, so a box 10 km
     // from the origin is intersected as precisely as one at the origin.

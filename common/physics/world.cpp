@@ -393,33 +393,9 @@ void World::dispatch() {
 
 // ---- queries ------------------------------------------------------------------------------------------
 
-bool World::ray_static(const Ray& ray, const StaticPrim& p, ShapeHit& hit) const {
+bool World::ray_static(const Ray& ray, const Vec3& inv, const StaticPrim& p, ShapeHit& hit) const {
     if (p.kind == ShapeKind::Box) {
-        if (p.axis_aligned) {
-            // Slab test relative to the box centre (exact subtraction nearby: precision kept far away).
-            const Vec3 o = ray.origin - p.position;
-            float tmin = -3.4e38f, tmax = 3.4e38f;
-            int axis = 0;
-            for (int i = 0; i < 3; ++i) {
-                const float d = ray.direction[i] == 0.0f ? 1e-30f : ray.direction[i];
-                const float inv = 1.0f / d;
-                float t0 = (-p.half[i] - o[i]) * inv, t1 = (p.half[i] - o[i]) * inv;
-                if (t0 > t1) std::swap(t0, t1);
-                if (t0 > tmin) tmin = t0, axis = i;
-                tmax = std::min(tmax, t1);
-            }
-            tmax *= 1.0f + 4.0f * 1.1920929e-7f;
-            if (!(tmin <= tmax) || !(tmax > 0.0f) || tmin > ray.max_distance) return false;
-            if (tmin <= 0.0f) {
-                hit.distance = 0.0f;
-                hit.normal = -ray.direction;
-                return true;
-            }
-            hit.distance = tmin;
-            hit.normal = Vec3(0.0f);
-            hit.normal[axis] = ray.direction[axis] > 0.0f ? -1.0f : 1.0f;
-            return true;
-        }
+        if (p.axis_aligned) return ray_centred_aabb(ray, inv, p.position, p.half, hit);
         return ray_box(ray, p.half, {p.position, p.rotation}, hit);
     }
     const Body& b = bodies_[p.body];
@@ -444,13 +420,13 @@ bool World::ray_closest(const Ray& ray, RayHit& out, const RayFilter& filter) co
     float best = ray.max_distance;
     std::uint32_t best_body = kNone;
     Vec3 best_normal(0.0f);
-    static_bvh_.ray_query(ray, ray.max_distance, [&](std::uint32_t slot, float& max_t) {
+    static_bvh_.ray_query(ray, ray.max_distance, [&](std::uint32_t slot, const Vec3& inv, float& max_t) {
         const StaticPrim& p = static_prims_[slot];
         if (!p.enabled || !(p.layers & filter.layers) || p.body == filter.ignore.index) return true;
         ShapeHit h;
         Ray r = ray;
         r.max_distance = max_t;
-        if (ray_static(r, p, h) && (h.distance < best || best_body == kNone)) {
+        if (ray_static(r, inv, p, h) && (h.distance < best || best_body == kNone)) {
             best = h.distance, best_body = p.body, best_normal = h.normal;
             max_t = h.distance;
         }
@@ -487,11 +463,11 @@ bool World::ray_any(const Ray& ray, const RayFilter& filter) const {
     if (!finite_ray(ray)) return false;
     build_static();
     bool found = false;
-    static_bvh_.ray_query(ray, ray.max_distance, [&](std::uint32_t slot, float&) {
+    static_bvh_.ray_query(ray, ray.max_distance, [&](std::uint32_t slot, const Vec3& inv, float&) {
         const StaticPrim& p = static_prims_[slot];
         if (!p.enabled || !(p.layers & filter.layers) || p.body == filter.ignore.index) return true;
         ShapeHit h;
-        found = ray_static(ray, p, h);
+        found = ray_static(ray, inv, p, h);
         return !found;
     });
     if (found) return true;
@@ -518,11 +494,11 @@ int World::ray_all(const Ray& ray, std::vector<RayHit>& hits, HitOrder order, co
     auto add = [&](std::uint32_t index, const ShapeHit& h) {
         hits.push_back({id_of(index), ray.origin + ray.direction * h.distance, h.normal, h.distance});
     };
-    static_bvh_.ray_query(ray, ray.max_distance, [&](std::uint32_t slot, float&) {
+    static_bvh_.ray_query(ray, ray.max_distance, [&](std::uint32_t slot, const Vec3& inv, float&) {
         const StaticPrim& p = static_prims_[slot];
         if (!p.enabled || !(p.layers & filter.layers) || p.body == filter.ignore.index) return true;
         ShapeHit h;
-        if (ray_static(ray, p, h)) add(p.body, h);
+        if (ray_static(ray, inv, p, h)) add(p.body, h);
         return true;
     });
     auto scan = [&](const std::vector<std::uint32_t>& list, bool triggers) {

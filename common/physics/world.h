@@ -204,7 +204,7 @@ class World {
     mutable std::vector<StaticPrim> static_prims_;      // by BVH leaf slot
     mutable std::vector<std::uint32_t> static_slot_of_; // body index -> leaf slot (or ~0)
     mutable bool static_dirty_ = true;
-    bool ray_static(const Ray& ray, const StaticPrim& prim, ShapeHit& hit) const;
+    bool ray_static(const Ray& ray, const Vec3& inv_dir, const StaticPrim& prim, ShapeHit& hit) const;
     // Moving set (kinematic, characters, triggers), sorted by min x each step for sort-and-sweep.
     std::vector<std::uint32_t> movers_;
     std::vector<float> mover_keys_; // min x of each mover's bounds at the start of the step (sorted)
