@@ -338,7 +338,10 @@ Result<FieldValue> parse_field_value(const FieldDescriptor& field, std::string_v
     case FieldKind::Int: {
         double v = 0;
         if (!parse_double(text, v)) return bad(field.kind == FieldKind::Int ? "12" : "2.5");
-        value = v;
+        // Fields are floats: round now so that "0.7" compares equal to the stored 0.7f.
+        value = field.kind == FieldKind::Float && std::isfinite(v) && std::abs(v) < 3e38
+                    ? static_cast<double>(static_cast<float>(v))
+                    : v;
         break;
     }
     case FieldKind::Bool:
