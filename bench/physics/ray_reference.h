@@ -71,6 +71,21 @@ inline double ray_polyhedron(const DVec3& origin, const DVec3& dir, const Polyhe
     return std::max(tmin, 0.0);
 }
 
+// Distance from a point to the box (0 inside), in double.
+inline double point_box_distance(const DVec3& p, const RefBox& b) {
+    const DVec3 l = glm::abs(glm::conjugate(b.rotation) * (p - b.centre)) - b.half;
+    return glm::length(glm::max(l, DVec3(0.0)));
+}
+
+// A disagreement between the float fast path and this reference is a "boundary" case when it disappears
+// if the box grows or shrinks by `eps` (the ray passes within eps of an edge or a vertex: which side it is
+// on is decided by float rounding of the inputs) and a real mismatch otherwise.
+enum class Verdict { Match, Boundary, Mismatch };
+
+inline RefBox grown(const RefBox& b, double by) {
+    return {b.centre, b.rotation, glm::max(b.half + DVec3(by), DVec3(0.0))};
+}
+
 struct RefHit {
     double distance = -1.0;
     int index = -1;
@@ -84,6 +99,28 @@ inline RefHit closest(const DVec3& origin, const DVec3& dir, std::span<const Ref
         if (t >= 0.0 && (best.index < 0 || t < best.distance)) best = {t, static_cast<int>(i)};
     }
     return best;
+}
+
+// Judges a fast-path closest hit (`fast_index` < 0: no hit) against the reference brute force.
+inline Verdict judge(const DVec3& o, const DVec3& d, double max_distance, int fast_index,
+                     double fast_distance, std::span<const RefBox> boxes, double eps = 1e-4) {
+    const RefHit want = closest(o, d, boxes, max_distance);
+    if (fast_index < 0 && want.index < 0) return Verdict::Match;
+    if (fast_index >= 0 && want.index >= 0 && std::abs(fast_distance - want.distance) <= 1e-3)
+        return Verdict::Match;
+    // The fast path hit something the reference does not see there: fine if the hit point lies within eps of
+    // that box, and nothing in the reference is clearly nearer.
+    if (fast_index >= 0) {
+        const DVec3 p = o + d * fast_distance;
+        if (point_box_distance(p, boxes[fast_index]) > eps) return Verdict::Mismatch;
+        if (want.index >= 0 && want.distance < fast_distance - 1e-3 &&
+            ray_box(o, d, grown(boxes[want.index], -eps), max_distance) >= 0.0)
+            return Verdict::Mismatch;
+        return Verdict::Boundary;
+    }
+    // The fast path missed what the reference hits: fine only if the ray misses that box shrunk by eps.
+    return ray_box(o, d, grown(boxes[want.index], -eps), max_distance) >= 0.0 ? Verdict::Mismatch
+                                                                              : Verdict::Boundary;
 }
 
 } // namespace ks::physics::reference
