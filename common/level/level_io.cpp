@@ -73,25 +73,27 @@ int read_version(const Json& document, DiagnosticSink& sink) {
         sink.error("version", "missing required field \"version\"", "add \"version\": 1");
         return -1;
     }
-    if (!it->is_number_integer() && !it->is_number_unsigned()) {
+    const double number = it->is_number() ? it->get<double>() : 0.5;
+    const bool whole = it->is_number() && std::isfinite(number) && number == std::floor(number);
+    if (!whole) {
         sink.error("version", "version must be a whole number, found " + json_text::quote(*it),
-                   "this build reads version 1");
+                   "this build reads versions 0 to " + std::to_string(kFormatVersion));
         return -1;
     }
-    const auto version = it->get<long long>();
-    if (version > kFormatVersion) {
+    const std::string version_text = json_text::format_readable(number);
+    if (number > kFormatVersion) {
         sink.error("version",
-                   "this level was made by a newer Killswitch (format version " + std::to_string(version) +
+                   "this level was made by a newer Killswitch (format version " + version_text +
                        "; this build reads up to version " + std::to_string(kFormatVersion) + ")",
                    "update Killswitch to open it");
         return -1;
     }
-    if (version < 0) {
-        sink.error("version", "version " + std::to_string(version) + " is not a valid format version",
+    if (number < 0) {
+        sink.error("version", "version " + version_text + " is not a valid format version",
                    "this build reads versions 0 to " + std::to_string(kFormatVersion));
         return -1;
     }
-    return static_cast<int>(version);
+    return static_cast<int>(number);
 }
 
 Error combined_error(const std::vector<Diagnostic>& diagnostics, const std::string& file) {

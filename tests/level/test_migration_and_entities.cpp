@@ -90,3 +90,17 @@ TEST_CASE("entity_from_json applies the loader's checks and names the context") 
     nlohmann::json bad_utf8 = {{"id", 3}, {"type", std::string("wa\xffll")}, {"position", {0, 0, 0}}};
     CHECK_FALSE(entity_from_json(bad_utf8, "paste").ok());
 }
+
+TEST_CASE("version: 1.0 is version 1, 1.5 and huge numbers are not versions") {
+    auto with_version = [](const std::string& v) {
+        return "{\"format\": \"killswitch-level\", \"version\": " + v + ", \"entities\": []}";
+    };
+    CHECK(load_level_string(with_version("1.0"), "v.json").ok());
+    LoadReport report;
+    CHECK_FALSE(load_level_string(with_version("1.5"), "v.json", &report).ok());
+    CHECK(report.str().find("version must be a whole number, found 1.5") != std::string::npos);
+    CHECK_FALSE(load_level_string(with_version("18446744073709551615"), "v.json", &report).ok());
+    CHECK(report.str().find("newer Killswitch") != std::string::npos);
+    CHECK_FALSE(load_level_string(with_version("-1"), "v.json", &report).ok());
+    CHECK(report.str().find("not a valid format version") != std::string::npos);
+}
