@@ -1,0 +1,50 @@
+#include "output.h"
+
+namespace ks::assetgen {
+namespace fs = std::filesystem;
+
+namespace {
+Result<void> ensure_folder(const fs::path& folder) {
+    std::error_code ec;
+    fs::create_directories(folder, ec);
+    if (ec)
+        return Error("cannot create the output folder: " + ec.message(), Location{folder.string()},
+                     "pass --out a folder you can write to");
+    return ok();
+}
+} // namespace
+
+Result<void> Output::texture(const std::string& name, const Image& image, PngChannels channels) {
+    const fs::path path = root_ / "textures" / (name + ".png");
+    KS_ASSETGEN_TRY(ensure_folder(path.parent_path()));
+    KS_ASSETGEN_TRY(write_png(path, image, channels));
+    written_.push_back(path);
+    textures_[name] = image;
+    return ok();
+}
+
+Result<void> Output::material(const std::string& name, const MaterialMaps& maps) {
+    KS_ASSETGEN_TRY(texture(name + "_basecolor", maps.basecolor, PngChannels::Rgb));
+    KS_ASSETGEN_TRY(texture(name + "_normal", maps.normal, PngChannels::Rgb));
+    KS_ASSETGEN_TRY(texture(name + "_orm", maps.orm, PngChannels::Rgb));
+    if (maps.emissive) KS_ASSETGEN_TRY(texture(name + "_emissive", *maps.emissive, PngChannels::Rgb));
+    if (maps.height) KS_ASSETGEN_TRY(texture(name + "_height", grey(*maps.height), PngChannels::Grey));
+    return ok();
+}
+
+Result<void> Output::model(const Model& model) {
+    const fs::path folder = root_ / "models";
+    KS_ASSETGEN_TRY(ensure_folder(folder));
+    KS_ASSETGEN_TRY(write_gltf(model, folder));
+    written_.push_back(folder / (model.name() + ".gltf"));
+    written_.push_back(folder / (model.name() + ".bin"));
+    models_.push_back(model);
+    return ok();
+}
+
+const Image* Output::find_texture(const std::string& name) const {
+    auto it = textures_.find(name);
+    return it == textures_.end() ? nullptr : &it->second;
+}
+
+} // namespace ks::assetgen

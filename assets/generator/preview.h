@@ -1,0 +1,11 @@
+#pragma once
+// A debugging aid until the renderer can show models: flat-lit orthographic software renders of every
+// model written in this run (front, side and three-quarter views), textured with the base colour maps
+// generated in the same run.
+#include "output.h"
+
+namespace ks::assetgen {
+
+Result<void> write_previews(const Output& out, const std::filesystem::path& folder);
+
+} // namespace ks::assetgen
