@@ -145,20 +145,36 @@ void Bvh::ray_query(const Ray& ray, float max_t, Visit&& visit) const {
 
 template <class Visit>
 void Bvh::aabb_query(const Aabb& box, Visit&& visit) const {
-    if (nodes_.empty()) return;
-    std::uint32_t stack[kMaxDepth * 2];
+    if (wide_.empty()) return;
+    std::int32_t stack[kMaxDepth * 4];
     int top = 0;
     stack[top++] = 0;
     while (top > 0) {
-        const Node& node = nodes_[stack[--top]];
-        if (!box.overlaps({node.min, node.max})) continue;
-        if (node.count > 0) {
-            for (std::uint32_t i = 0; i < node.count; ++i)
-                if (!visit(node.left_or_first + i)) return;
-        } else {
-            stack[top++] = node.left_or_first + 1;
-            stack[top++] = node.left_or_first;
+        const std::int32_t ref = stack[--top];
+        if (ref < 0) {
+            const WideNode::Leaf leaf = leaves_[~ref];
+            for (std::uint32_t i = 0; i < leaf.count; ++i)
+                if (!visit(leaf.first + i)) return;
+            continue;
         }
+        const WideNode& n = wide_[ref];
+        int mask = n.lanes;
+#if defined(__SSE2__)
+        const __m128 lo = _mm_and_ps(_mm_and_ps(_mm_cmple_ps(_mm_loadu_ps(n.min_x), _mm_set1_ps(box.max.x)),
+                                                _mm_cmple_ps(_mm_loadu_ps(n.min_y), _mm_set1_ps(box.max.y))),
+                                     _mm_cmple_ps(_mm_loadu_ps(n.min_z), _mm_set1_ps(box.max.z)));
+        const __m128 hi = _mm_and_ps(_mm_and_ps(_mm_cmpge_ps(_mm_loadu_ps(n.max_x), _mm_set1_ps(box.min.x)),
+                                                _mm_cmpge_ps(_mm_loadu_ps(n.max_y), _mm_set1_ps(box.min.y))),
+                                     _mm_cmpge_ps(_mm_loadu_ps(n.max_z), _mm_set1_ps(box.min.z)));
+        mask &= _mm_movemask_ps(_mm_and_ps(lo, hi));
+#else
+        for (int k = 0; k < 4; ++k)
+            if (!(n.min_x[k] <= box.max.x && n.min_y[k] <= box.max.y && n.min_z[k] <= box.max.z &&
+                  n.max_x[k] >= box.min.x && n.max_y[k] >= box.min.y && n.max_z[k] >= box.min.z))
+                mask &= ~(1 << k);
+#endif
+        for (int k = 3; k >= 0; --k)
+            if (mask & (1 << k)) stack[top++] = n.child[k];
     }
 }
 

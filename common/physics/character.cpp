@@ -152,6 +152,10 @@ float sweep_capsule(const Segment& s, float radius, const Vec3& motion, const Ob
                     Vec3& normal, Vec3* surface) {
     const float len = glm::length(motion);
     if (!(len > 0.0f)) return 1.0f;
+    // Cheap reject: the capsule's box swept over the motion (plus the skin) misses the obstacle's box.
+    Aabb swept{glm::min(s.p0, s.p1) - Vec3(radius), glm::max(s.p0, s.p1) + Vec3(radius)};
+    swept.grow(Aabb{swept.min + motion, swept.max + motion});
+    if (!swept.expanded(skin + 1e-3f).overlaps(o.bounds)) return 1.0f;
     float t = 0.0f;
     // Conservative advancement with Newton steps: the distance between convex sets along a translation is
     // a convex function of t, so its tangent never overshoots the first touch: t only grows toward it.
@@ -223,8 +227,11 @@ void move_character(const ObstacleSource& world, float radius, float half_segmen
     // exact contact normal to the skin distance.
     for (int iter = 0; iter < 4; ++iter) {
         bool any = false;
+        const Aabb own{position - Vec3(radius, half_segment + radius, radius),
+                       position + Vec3(radius, half_segment + radius, radius)};
         for (std::size_t i = 0; i < scratch.obstacles.size(); ++i) {
             const Obstacle& o = scratch.obstacles[i];
+            if (!own.overlaps(o.bounds)) continue;
             const auto c = collide_capsule_shape(mover.segment_at(position), radius, *o.shape, o.transform);
             if (c && c->penetration > 0.0f) {
                 position += c->normal * (c->penetration + cs.skin);

@@ -36,6 +36,7 @@ struct Obstacle {
     Transform transform;
     std::uint32_t id = 0;
     bool yaw_only = false;
+    Aabb bounds{Vec3(-3.4e38f), Vec3(3.4e38f)}; // world bounds: lets sweeps skip far obstacles cheaply
 };
 
 // A contact the character made during its move (reported to collision callbacks).

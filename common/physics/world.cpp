@@ -24,13 +24,13 @@ class World::Obstacles final : public ObstacleSource {
             const StaticPrim& p = w.static_prims_[slot];
             const Body& b = w.bodies_[p.body];
             if (p.enabled && (p.layers & mask) && b.bounds.overlaps(region))
-                out.push_back({&b.shape, b.transform, p.body, b.yaw_only});
+                out.push_back({&b.shape, b.transform, p.body, b.yaw_only, b.bounds});
             return true;
         });
         w.movers_overlapping(region, [&](std::uint32_t index) {
             const Body& b = w.bodies_[index];
             if (index != self && b.enabled && !b.trigger && (b.layers & mask))
-                out.push_back({&b.shape, b.transform, index, b.yaw_only});
+                out.push_back({&b.shape, b.transform, index, b.yaw_only, b.bounds});
         });
     }
 

@@ -1,0 +1,116 @@
+// ks_bench world: world step time against the number of characters (10 -> 10k) running around a generated
+// 2k-box level, with the BVH + sort-and-sweep broadphase, and the same characters moved by the same
+// controller but gathering obstacles with an all-pairs AABB scan (the reference's broadphase) as the
+// baseline in the same run.
+#include "bench_registry.h"
+#include "bench_util.h"
+#include "scenes.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace ks::physics::bench {
+namespace {
+
+// The reference's broadphase: every static box's AABB against the character's (no structure).
+class AllPairs final : public ObstacleSource {
+  public:
+    std::vector<Shape> shapes;
+    std::vector<Transform> xfs;
+    std::vector<Aabb> boxes;
+    void gather(const Aabb& region, std::vector<Obstacle>& out) const override {
+        for (std::size_t i = 0; i < boxes.size(); ++i)
+            if (boxes[i].overlaps(region))
+                out.push_back(
+                    {&shapes[i], xfs[i], static_cast<std::uint32_t>(i), is_yaw_only(xfs[i].rotation)});
+    }
+};
+
+void steer(World& w, const std::vector<BodyId>& ids, Rng& rng) {
+    for (BodyId id : ids) {
+        auto& m = w.character(id).movement;
+        const float a = rng.uniform(0, 2 * kPi);
+        m.velocity.x = 15 * std::cos(a);
+        m.velocity.z = 15 * std::sin(a);
+    }
+}
+
+int world_command(int argc, const char* const* argv) {
+    bool quick = false;
+    for (int i = 1; i < argc; ++i) quick |= std::string(argv[i]) == "--quick";
+    const auto scene = scenes::make_rooms(2000, 1);
+    std::printf(
+        "World step (120 Hz) with N characters (capsule r 1, h 3, running at 15 u/s in random directions) in "
+        "a\n%zu-box level. Times are thread CPU time per step.\n",
+        scene.boxes.size());
+    std::printf("%8s %14s %16s %18s %16s %10s\n", "chars", "us/step", "us/char/step", "all-pairs us/step",
+                "contacts/step", "speedup");
+    std::vector<std::string> rows;
+    const std::vector<int> counts =
+        quick ? std::vector<int>{10, 100, 1000} : std::vector<int>{10, 100, 1000, 10000};
+    for (int n : counts) {
+        World w;
+        scenes::add_to_world(scene, w);
+        Rng rng(42);
+        std::vector<BodyId> ids;
+        for (int i = 0; i < n; ++i) {
+            BodyDesc d;
+            d.shape = Shape::capsule(1.0f, 0.5f);
+            d.motion = Motion::Character;
+            Vec3 p = scenes::random_origin(scene, rng);
+            p.y = 1.51f;
+            d.transform.position = p;
+            ids.push_back(*w.add(d, "character"));
+        }
+        steer(w, ids, rng);
+        for (int i = 0; i < 30; ++i) w.step(1.0f / 120.0f); // settle, spread out of crates
+        const int steps = std::clamp(200000 / n, 10, 240);
+        double cpu = 0;
+        long long contacts = 0;
+        for (int i = 0; i < steps; ++i) {
+            if (i % 120 == 0) steer(w, ids, rng);
+            const double t0 = cpu_seconds();
+            w.step(1.0f / 120.0f);
+            cpu += cpu_seconds() - t0;
+            contacts += static_cast<long long>(w.collisions().size() / 2);
+        }
+        const double us = cpu / steps * 1e6;
+
+        // Baseline: the same controller and characters, obstacles found by scanning every static box.
+        AllPairs all;
+        for (const auto& b : scene.boxes) {
+            all.shapes.push_back(Shape::box(b.half));
+            all.xfs.push_back({b.centre, b.rotation()});
+            all.boxes.push_back(all.shapes.back().bounds(all.xfs.back()));
+        }
+        std::vector<Vec3> pos;
+        std::vector<CharacterState> states;
+        for (BodyId id : ids) pos.push_back(w.transform(id).position), states.push_back(w.character(id));
+        CharacterScratch scratch;
+        const int base_steps = std::clamp(20000 / n, 2, 60);
+        const double t0 = cpu_seconds();
+        for (int s = 0; s < base_steps; ++s)
+            for (std::size_t i = 0; i < pos.size(); ++i)
+                move_character(all, 1.0f, 0.5f, {}, states[i], pos[i], 1.0f / 120.0f, scratch);
+        const double base_us = (cpu_seconds() - t0) / base_steps * 1e6;
+        std::printf("%8d %14.1f %16.3f %18.1f %16.1f %9.1fx\n", n, us, us / n, base_us,
+                    static_cast<double>(contacts) / steps, base_us / us);
+        std::fflush(stdout);
+        rows.push_back(std::to_string(n) + "," + fmt("%.2f", us) + "," + fmt("%.4f", us / n) + "," +
+                       fmt("%.2f", base_us));
+    }
+    write_csv("physics_world", "characters,us_per_step,us_per_character_step,all_pairs_us_per_step", rows);
+    plot("physics_world",
+         "set title 'World step time vs characters (2k-box level, 120 Hz)'\nset logscale xy\n"
+         "set xlabel 'characters'\nset ylabel 'CPU microseconds per step'\nset key top left\n"
+         "plot 'physics_world.csv' every ::1 using 1:2 with linespoints title 'BVH + sort-and-sweep (ours)', "
+         "\\\n"
+         "     '' every ::1 using 1:4 with linespoints title 'all-pairs AABB scan (reference broadphase)'\n");
+    return 0;
+}
+
+const ks::bench::Registrar registrar({"world", "world step time vs number of characters in a 2k-box level",
+                                      world_command});
+
+} // namespace
+} // namespace ks::physics::bench
