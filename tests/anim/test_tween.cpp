@@ -157,3 +157,30 @@ TEST_CASE("group time scale and an endless tween keeping the group busy") {
     group.update(1e6);
     CHECK_FALSE(group.idle());
 }
+
+TEST_CASE("hard cases: zero duration, NaN and huge times, huge repeat counts") {
+    Tween<float> instant(0.0f, 1.0f, timing(0.0, 0.25));
+    CHECK(instant.value_at(0.2) == 0.0f);
+    CHECK(instant.value_at(0.25) == 1.0f);
+    CHECK(instant.value_at(std::nan("")) == 0.0f);
+    Tween<float> tw(0.0f, 1.0f, timing(0.1, 0, 1000001, true)); // last iteration (1000001) runs backwards
+    CHECK(tw.value_at(1e12) == 0.0f);
+    CHECK(tw.value_at(0.1 * 1000001 + 0.05) == doctest::Approx(0.5f).epsilon(1e-3)); // last one, reversed
+    TweenTiming forever = timing(0.1, 0, kRepeatForever, true);
+    Tween<float> endless(0.0f, 1.0f, forever);
+    for (double t : {1e3, 1e9, 1e15}) {
+        const float v = endless.value_at(t + 0.05);
+        CHECK(std::isfinite(v));
+        CHECK(v >= 0.0f);
+        CHECK(v <= 1.0f);
+    }
+    CHECK(std::isfinite(endless.value_at(std::numeric_limits<double>::max())));
+    TweenGroup group; // zero-length iterations complete at once and fire every callback once
+    int completes = 0, repeats = 0;
+    auto& zero = group.add(Tween<float>(0, 1, timing(0.0, 0, 3)));
+    zero.on_complete = [&] { ++completes; };
+    zero.on_repeat = [&](long long) { ++repeats; };
+    group.update(0.0);
+    CHECK(completes == 1);
+    CHECK(repeats == 3);
+}
