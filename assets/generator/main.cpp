@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
     if (!cl) return fail(cl.error());
     const std::vector<std::string> known = {"out", "only", "contact-sheet", "preview", "list", "help"};
     if (auto unknown = cl->unknown(known); !unknown.empty())
-        return fail(Error("unknown option --" + unknown.front(), Location{"command line"},
+        return fail(Error("unknown option " + unknown.front(), Location{"command line"},
                           "known: --out, --only, --contact-sheet, --preview, --list"));
     if (cl->has("help")) {
         usage();

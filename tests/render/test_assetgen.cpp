@@ -1,0 +1,466 @@
+// The asset generator (assets/generator, ks_assetgen): it must reproduce the committed assets byte for byte,
+// write every asset the conventions name, write structurally valid glTF, and refuse bad command lines
+// with a clear message. Needs no GL context.
+#include "test_support.h"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+fs::path generator() {
+    return ks::test::bin_dir() / "ks_assetgen";
+}
+fs::path committed() {
+    return ks::test::source_dir() / "assets";
+}
+
+// The generated folders: models/*.gltf|*.bin and textures/**.png.
+std::set<std::string> generated_files(const fs::path& root) {
+    std::set<std::string> out;
+    for (const char* folder : {"models", "textures"}) {
+        if (!fs::exists(root / folder)) continue;
+        for (const auto& entry : fs::recursive_directory_iterator(root / folder)) {
+            if (!entry.is_regular_file()) continue;
+            const std::string ext = entry.path().extension().string();
+            if (ext == ".gltf" || ext == ".bin" || ext == ".png")
+                out.insert(fs::relative(entry.path(), root).generic_string());
+        }
+    }
+    return out;
+}
+
+const std::vector<std::string>& model_names() {
+    static const std::vector<std::string> names = {
+        "robot",         "rifle",        "door",          "floor_light", "top_light",
+        "control_panel", "gas_cylinder", "pickup_health", "pickup_ammo", "pickup_shield"};
+    return names;
+}
+
+// Every file the shared asset conventions promise.
+std::vector<std::string> expected_files() {
+    std::vector<std::string> files;
+    for (const std::string& m : model_names()) {
+        files.push_back("models/" + m + ".gltf");
+        files.push_back("models/" + m + ".bin");
+    }
+    for (const char* s : {"concrete", "wood", "tiles", "ceiling", "metal", "dojo_floor"})
+        for (const char* map : {"basecolor", "normal", "orm", "height"})
+            files.push_back(std::string("textures/") + s + "_" + map + ".png");
+    for (const char* p : {"fire", "smoke", "spark"})
+        files.push_back(std::string("textures/particles/") + p + ".png");
+    return files;
+}
+
+std::string shell_quote(const fs::path& p) {
+    return "'" + p.string() + "'";
+}
+
+struct Gltf {
+    json doc;
+    std::string bin;
+};
+
+Gltf load_model(const std::string& name) {
+    Gltf g;
+    const std::string text = ks::test::read_file(committed() / "models" / (name + ".gltf"));
+    g.doc = json::parse(text, nullptr, false);
+    g.bin = ks::test::read_file(committed() / "models" / (name + ".bin"));
+    return g;
+}
+
+int components(const std::string& type) {
+    static const std::map<std::string, int> n = {{"SCALAR", 1}, {"VEC2", 2}, {"VEC3", 3}, {"VEC4", 4}};
+    auto it = n.find(type);
+    return it == n.end() ? 0 : it->second;
+}
+
+int component_size(int component_type) {
+    switch (component_type) {
+    case 5126:
+    case 5125:
+        return 4;
+    case 5123:
+        return 2;
+    default:
+        return 0;
+    }
+}
+
+// Reads accessor `index` as doubles (float, uint16 or uint32 components).
+std::vector<double> read_accessor(const Gltf& g, int index) {
+    const json& a = g.doc["accessors"][index];
+    const json& v = g.doc["bufferViews"][a["bufferView"].get<int>()];
+    const size_t offset = v["byteOffset"].get<size_t>() + a.value("byteOffset", size_t{0});
+    const size_t count =
+        a["count"].get<size_t>() * static_cast<size_t>(components(a["type"].get<std::string>()));
+    const int ct = a["componentType"].get<int>();
+    std::vector<double> out(count);
+    for (size_t i = 0; i < count; ++i) {
+        const char* p = g.bin.data() + offset + i * static_cast<size_t>(component_size(ct));
+        if (ct == 5126) {
+            float f;
+            std::memcpy(&f, p, 4);
+            out[i] = f;
+        } else if (ct == 5125) {
+            std::uint32_t u;
+            std::memcpy(&u, p, 4);
+            out[i] = u;
+        } else {
+            std::uint16_t u;
+            std::memcpy(&u, p, 2);
+            out[i] = u;
+        }
+    }
+    return out;
+}
+
+int find_node(const json& doc, const std::string& name) {
+    for (size_t i = 0; i < doc["nodes"].size(); ++i)
+        if (doc["nodes"][i].value("name", "") == name) return static_cast<int>(i);
+    return -1;
+}
+
+int parent_of(const json& doc, int node) {
+    for (size_t i = 0; i < doc["nodes"].size(); ++i)
+        for (const json& c : doc["nodes"][i].value("children", json::array()))
+            if (c.get<int>() == node) return static_cast<int>(i);
+    return -1;
+}
+
+glm::mat4 local_matrix(const json& node) {
+    glm::vec3 t(0.0f), s(1.0f);
+    glm::quat r(1.0f, 0.0f, 0.0f, 0.0f);
+    if (node.contains("translation"))
+        t = {node["translation"][0], node["translation"][1], node["translation"][2]};
+    if (node.contains("rotation"))
+        r = glm::quat(node["rotation"][3].get<float>(), node["rotation"][0].get<float>(),
+                      node["rotation"][1].get<float>(), node["rotation"][2].get<float>());
+    if (node.contains("scale")) s = {node["scale"][0], node["scale"][1], node["scale"][2]};
+    return glm::translate(glm::mat4(1.0f), t) * glm::mat4_cast(r) * glm::scale(glm::mat4(1.0f), s);
+}
+
+glm::mat4 world_matrix(const json& doc, int node) {
+    glm::mat4 m(1.0f);
+    for (int n = node; n >= 0; n = parent_of(doc, n)) m = local_matrix(doc["nodes"][n]) * m;
+    return m;
+}
+
+// World-space bounds of every mesh in the model (from the accessors' min/max, transformed corner by corner).
+std::pair<glm::vec3, glm::vec3> model_bounds(const json& doc) {
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    for (size_t i = 0; i < doc["nodes"].size(); ++i) {
+        const json& node = doc["nodes"][i];
+        if (!node.contains("mesh")) continue;
+        const glm::mat4 w = world_matrix(doc, static_cast<int>(i));
+        for (const json& prim : doc["meshes"][node["mesh"].get<int>()]["primitives"]) {
+            const json& a = doc["accessors"][prim["attributes"]["POSITION"].get<int>()];
+            for (int c = 0; c < 8; ++c) {
+                const glm::vec3 p((c & 1 ? a["max"] : a["min"])[0].get<float>(),
+                                  (c & 2 ? a["max"] : a["min"])[1].get<float>(),
+                                  (c & 4 ? a["max"] : a["min"])[2].get<float>());
+                const glm::vec3 q = glm::vec3(w * glm::vec4(p, 1.0f));
+                lo = glm::min(lo, q);
+                hi = glm::max(hi, q);
+            }
+        }
+    }
+    return {lo, hi};
+}
+
+bool has_material(const json& doc, const std::string& name) {
+    for (const json& m : doc.value("materials", json::array()))
+        if (m.value("name", "") == name) return true;
+    return false;
+}
+
+} // namespace
+
+TEST_CASE("ks_assetgen regenerates every committed asset byte for byte") {
+    REQUIRE_MESSAGE(fs::exists(generator()), "build the ks_assetgen target first: " << generator());
+    ks::test::ScratchDir scratch;
+    const auto result =
+        ks::test::run_command(shell_quote(generator()) + " --out " + shell_quote(scratch.path()));
+    INFO(result.output);
+    REQUIRE(result.exit_code == 0);
+
+    const std::set<std::string> fresh = generated_files(scratch.path());
+    const std::set<std::string> repo = generated_files(committed());
+    for (const std::string& file : expected_files()) {
+        CHECK_MESSAGE(fresh.count(file) == 1, "the generator no longer writes " << file);
+        CHECK_MESSAGE(repo.count(file) == 1,
+                      "assets/" << file << " is not committed; run ks_assetgen --out assets");
+    }
+    for (const std::string& file : fresh) {
+        CAPTURE(file);
+        REQUIRE_MESSAGE(repo.count(file) == 1, "generated but not committed; run ks_assetgen --out assets");
+        // Compared as bytes: the generator must be deterministic, and the committed files current.
+        const bool same =
+            ks::test::read_file(scratch.path() / file) == ks::test::read_file(committed() / file);
+        CHECK_MESSAGE(
+            same, "assets/" << file << " differs from a fresh run; run ks_assetgen --out assets and commit");
+    }
+    for (const std::string& file : repo)
+        CHECK_MESSAGE(fresh.count(file) == 1,
+                      "assets/" << file << " is committed but no longer generated (stale)");
+}
+
+TEST_CASE("generated glTF files are structurally valid") {
+    for (const std::string& name : model_names()) {
+        CAPTURE(name);
+        const Gltf g = load_model(name);
+        const json& doc = g.doc;
+        REQUIRE_FALSE(doc.is_discarded());
+        CHECK(doc["asset"]["version"] == "2.0");
+        REQUIRE(doc["buffers"].size() == 1);
+        CHECK(doc["buffers"][0]["uri"] == name + ".bin");
+        CHECK(doc["buffers"][0]["byteLength"].get<size_t>() == g.bin.size());
+        for (const json& v : doc["bufferViews"]) {
+            CHECK(v["buffer"] == 0);
+            CHECK(v["byteOffset"].get<size_t>() % 4 == 0);
+            CHECK(v["byteOffset"].get<size_t>() + v["byteLength"].get<size_t>() <= g.bin.size());
+        }
+        for (const json& a : doc["accessors"]) {
+            const int n = components(a["type"].get<std::string>()),
+                      size = component_size(a["componentType"].get<int>());
+            REQUIRE(n > 0);
+            REQUIRE(size > 0);
+            CHECK(a["count"].get<size_t>() > 0);
+            const json& v = doc["bufferViews"][a["bufferView"].get<int>()];
+            CHECK(a["count"].get<size_t>() * static_cast<size_t>(n * size) <= v["byteLength"].get<size_t>());
+        }
+        // Images exist next to the model's folder, as their relative URIs say.
+        for (const json& image : doc.value("images", json::array())) {
+            const fs::path file = committed() / "models" / image["uri"].get<std::string>();
+            CHECK_MESSAGE(fs::exists(file), "missing texture " << file);
+        }
+        for (const json& t : doc.value("textures", json::array()))
+            CHECK(t["source"].get<size_t>() < doc["images"].size());
+        // Nodes form a forest: every child index valid and owned by exactly one parent; scene lists the
+        // roots.
+        std::vector<int> parents(doc["nodes"].size(), 0);
+        for (const json& node : doc["nodes"])
+            for (const json& c : node.value("children", json::array())) {
+                REQUIRE(c.get<size_t>() < doc["nodes"].size());
+                ++parents[c.get<size_t>()];
+            }
+        for (int p : parents) CHECK(p <= 1);
+        for (const json& root : doc["scenes"][doc["scene"].get<int>()]["nodes"])
+            CHECK(parents[root.get<size_t>()] == 0);
+
+        for (const json& mesh : doc.value("meshes", json::array()))
+            for (const json& prim : mesh["primitives"]) {
+                CHECK(prim["material"].get<size_t>() < doc["materials"].size());
+                const json& attr = prim["attributes"];
+                for (const char* key : {"POSITION", "NORMAL", "TANGENT", "TEXCOORD_0"})
+                    REQUIRE(attr.contains(key));
+                const int pos = attr["POSITION"].get<int>();
+                const size_t vertices = doc["accessors"][pos]["count"].get<size_t>();
+                for (const char* key : {"NORMAL", "TANGENT", "TEXCOORD_0"})
+                    CHECK(doc["accessors"][attr[key].get<int>()]["count"].get<size_t>() == vertices);
+                // POSITION min/max must match the data exactly (glTF requires them).
+                const std::vector<double> p = read_accessor(g, pos);
+                glm::dvec3 lo(1e300), hi(-1e300);
+                for (size_t i = 0; i < p.size(); i += 3) {
+                    lo = glm::min(lo, glm::dvec3(p[i], p[i + 1], p[i + 2]));
+                    hi = glm::max(hi, glm::dvec3(p[i], p[i + 1], p[i + 2]));
+                }
+                for (int k = 0; k < 3; ++k) {
+                    CHECK(doc["accessors"][pos]["min"][k].get<double>() == lo[k]);
+                    CHECK(doc["accessors"][pos]["max"][k].get<double>() == hi[k]);
+                }
+                const std::vector<double> normals = read_accessor(g, attr["NORMAL"].get<int>());
+                const std::vector<double> tangents = read_accessor(g, attr["TANGENT"].get<int>());
+                size_t bad_normals = 0, bad_tangents = 0;
+                for (size_t i = 0; i < vertices; ++i) {
+                    const glm::dvec3 n(normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]);
+                    const glm::dvec3 t(tangents[4 * i], tangents[4 * i + 1], tangents[4 * i + 2]);
+                    if (!(std::abs(glm::length(n) - 1.0) < 1e-3)) ++bad_normals;
+                    if (!(std::abs(glm::length(t) - 1.0) < 1e-3) || std::abs(glm::dot(n, t)) > 1e-2 ||
+                        std::abs(std::abs(tangents[4 * i + 3]) - 1.0) > 0.0)
+                        ++bad_tangents;
+                }
+                CHECK(bad_normals == 0);
+                CHECK(bad_tangents == 0);
+                const std::vector<double> idx = read_accessor(g, prim["indices"].get<int>());
+                CHECK(idx.size() % 3 == 0);
+                CHECK(*std::max_element(idx.begin(), idx.end()) < static_cast<double>(vertices));
+            }
+    }
+}
+
+TEST_CASE("generated models carry the node names and dimensions the conventions promise") {
+    const std::map<std::string, std::vector<std::string>> nodes = {
+        {"robot",
+         {"robot", "wheel_base", "wheels", "chest", "arm_r", "forearm_r", "hand_r", "hand_r_tip", "arm_l",
+          "forearm_l", "hand_l", "head"}},
+        {"rifle", {"rifle", "muzzle"}},
+        {"door", {"door", "frame", "door_l", "door_r"}},
+        {"floor_light", {"floor_light", "lamp_head", "light_origin"}},
+        {"top_light", {"top_light", "light_origin"}},
+        {"control_panel", {"control_panel"}},
+        {"gas_cylinder", {"gas_cylinder"}},
+        {"pickup_health", {"pickup"}},
+        {"pickup_ammo", {"pickup"}},
+        {"pickup_shield", {"pickup"}},
+    };
+    for (const auto& [model, names] : nodes) {
+        CAPTURE(model);
+        const json doc = load_model(model).doc;
+        for (const std::string& n : names) CHECK_MESSAGE(find_node(doc, n) >= 0, "missing node " << n);
+        CHECK(parent_of(doc, find_node(doc, names.front())) == -1); // the root is named after the model
+    }
+
+    SUBCASE("robot hierarchy, size and facing") {
+        const json doc = load_model("robot").doc;
+        auto parent = [&](const char* n) {
+            const int p = parent_of(doc, find_node(doc, n));
+            return p < 0 ? std::string() : doc["nodes"][p]["name"].get<std::string>();
+        };
+        CHECK(parent("wheel_base") == "robot");
+        CHECK(parent("wheels") == "wheel_base");
+        CHECK(parent("chest") == "wheel_base");
+        CHECK(parent("arm_r") == "chest");
+        CHECK(parent("forearm_r") == "arm_r");
+        CHECK(parent("hand_r") == "forearm_r");
+        CHECK(parent("hand_r_tip") == "hand_r");
+        CHECK(parent("arm_l") == "chest");
+        CHECK(parent("forearm_l") == "arm_l");
+        CHECK(parent("hand_l") == "forearm_l");
+        CHECK(parent("head") == "chest");
+        const auto [lo, hi] = model_bounds(doc);
+        CHECK(lo.y == doctest::Approx(0.0).epsilon(0.01));
+        CHECK(hi.y == doctest::Approx(3.0).epsilon(0.01));
+        CHECK(hi.z - lo.z == doctest::Approx(1.6).epsilon(0.1));
+        // Right arm on +Z, left on -Z; arms hang down from the shoulder pivots at rest.
+        const glm::vec3 arm_r = world_matrix(doc, find_node(doc, "arm_r"))[3];
+        const glm::vec3 arm_l = world_matrix(doc, find_node(doc, "arm_l"))[3];
+        const glm::vec3 tip = world_matrix(doc, find_node(doc, "hand_r_tip"))[3];
+        CHECK(arm_r.z > 0.3f);
+        CHECK(arm_l.z < -0.3f);
+        CHECK(tip.y < arm_r.y - 1.0f);
+        CHECK(std::abs(tip.x - arm_r.x) < 0.05f);
+        // The glowing visor is on the head's +X side: the robot faces +X.
+        const json& head = doc["nodes"][find_node(doc, "head")];
+        bool visor_forward = false;
+        for (const json& prim : doc["meshes"][head["mesh"].get<int>()]["primitives"])
+            if (doc["materials"][prim["material"].get<int>()]["name"] == "robot_visor")
+                visor_forward =
+                    visor_forward ||
+                    doc["accessors"][prim["attributes"]["POSITION"].get<int>()]["max"][0].get<double>() >
+                        0.25;
+        CHECK(visor_forward);
+        size_t triangles = 0;
+        for (const json& m : doc["meshes"])
+            for (const json& p : m["primitives"])
+                triangles += doc["accessors"][p["indices"].get<int>()]["count"].get<size_t>() / 3;
+        CHECK(triangles >= 3000);
+        CHECK(triangles <= 6500);
+    }
+    SUBCASE("rifle points along -Z with the muzzle at the barrel tip") {
+        const json doc = load_model("rifle").doc;
+        const auto [lo, hi] = model_bounds(doc);
+        CHECK(hi.z - lo.z == doctest::Approx(1.0).epsilon(0.1));
+        const glm::vec3 muzzle = world_matrix(doc, find_node(doc, "muzzle"))[3];
+        CHECK(muzzle.z == doctest::Approx(lo.z).epsilon(0.02));
+    }
+    SUBCASE("door leaves and doorway") {
+        const json doc = load_model("door").doc;
+        const glm::vec3 l = world_matrix(doc, find_node(doc, "door_l"))[3];
+        const glm::vec3 r = world_matrix(doc, find_node(doc, "door_r"))[3];
+        CHECK(l.x > 0.0f);
+        CHECK(r.x < 0.0f);
+        const json& leaf = doc["nodes"][find_node(doc, "door_l")];
+        const json& a =
+            doc["accessors"]
+               [doc["meshes"][leaf["mesh"].get<int>()]["primitives"][0]["attributes"]["POSITION"].get<int>()];
+        CHECK(a["max"][1].get<double>() - a["min"][1].get<double>() == doctest::Approx(5.36).epsilon(0.01));
+        CHECK(a["max"][2].get<double>() - a["min"][2].get<double>() == doctest::Approx(0.14).epsilon(0.01));
+    }
+    SUBCASE("lights: emissive lens material and light origins") {
+        const json floor = load_model("floor_light").doc;
+        CHECK(has_material(floor, "light_emissive"));
+        const glm::mat4 origin = world_matrix(floor, find_node(floor, "light_origin"));
+        CHECK(origin[3].y == doctest::Approx(3.8).epsilon(0.05));
+        const glm::vec3 aim = -glm::vec3(origin[2]); // local -Z in the model frame
+        CHECK(aim.z < -0.8f);
+        CHECK(aim.y == doctest::Approx(-0.5).epsilon(0.05)); // tilted 30 degrees down
+        const auto [flo, fhi] = model_bounds(floor);
+        CHECK(fhi.y == doctest::Approx(4.0).epsilon(0.05));
+
+        const json top = load_model("top_light").doc;
+        CHECK(has_material(top, "light_emissive"));
+        const auto [tlo, thi] = model_bounds(top);
+        CHECK(thi.y == doctest::Approx(0.0).epsilon(0.01));
+        CHECK(tlo.y == doctest::Approx(-2.0).epsilon(0.05));
+    }
+    SUBCASE("control panel footprint and screen") {
+        const json doc = load_model("control_panel").doc;
+        CHECK(has_material(doc, "screen_emissive"));
+        const auto [lo, hi] = model_bounds(doc);
+        CHECK(hi.x - lo.x == doctest::Approx(2.94).epsilon(0.01));
+        CHECK(hi.z - lo.z == doctest::Approx(5.34).epsilon(0.01));
+        CHECK(hi.y == doctest::Approx(4.0).epsilon(0.01));
+    }
+    SUBCASE("gas cylinder and pickups") {
+        const auto [lo, hi] = model_bounds(load_model("gas_cylinder").doc);
+        CHECK(hi.x == doctest::Approx(0.5).epsilon(0.01));
+        CHECK(hi.y == doctest::Approx(2.0).epsilon(0.01));
+        for (const char* p : {"pickup_health", "pickup_ammo", "pickup_shield"}) {
+            const json doc = load_model(p).doc;
+            const auto [plo, phi] = model_bounds(doc);
+            CHECK(phi.x - plo.x == doctest::Approx(0.8).epsilon(0.01));
+            CHECK(plo.y == doctest::Approx(-0.4).epsilon(0.01));
+            CHECK(doc["materials"][0].contains("emissiveTexture"));
+        }
+    }
+}
+
+TEST_CASE("ks_assetgen rejects bad command lines with a clear message") {
+    REQUIRE_MESSAGE(fs::exists(generator()), "build the ks_assetgen target first: " << generator());
+    ks::test::ScratchDir scratch;
+    const std::string exe = shell_quote(generator());
+
+    const auto no_out = ks::test::run_command(exe);
+    CHECK(no_out.exit_code != 0);
+    CHECK(no_out.output.find("--out is required") != std::string::npos);
+
+    const auto unknown =
+        ks::test::run_command(exe + " --out " + shell_quote(scratch.path()) + " --only unicorn");
+    CHECK(unknown.exit_code != 0);
+    CHECK(unknown.output.find("no asset named 'unicorn'") != std::string::npos);
+    CHECK(unknown.output.find("--list") != std::string::npos);
+
+    const auto typo = ks::test::run_command(exe + " --out " + shell_quote(scratch.path()) + " --onyl robot");
+    CHECK(typo.exit_code != 0);
+    CHECK(typo.output.find("unknown option --onyl") != std::string::npos);
+
+    // An output path that is a file, not a folder: a clear error naming it, not a crash.
+    ks::test::run_command("touch " + shell_quote(scratch / "blocker"));
+    const auto blocked =
+        ks::test::run_command(exe + " --out " + shell_quote(scratch / "blocker") + " --only particles");
+    CHECK(blocked.exit_code == 1);
+    CHECK(blocked.output.find("blocker") != std::string::npos);
+
+    // --only writes just that asset.
+    const auto one =
+        ks::test::run_command(exe + " --out " + shell_quote(scratch / "one") + " --only gas_cylinder");
+    CHECK(one.exit_code == 0);
+    CHECK(fs::exists(scratch / "one" / "models" / "gas_cylinder.gltf"));
+    CHECK_FALSE(fs::exists(scratch / "one" / "models" / "robot.gltf"));
+}
