@@ -82,6 +82,7 @@ Result<ClipSet> compile(const AnimationFile& file, const Rig& rig) {
                                 "the model must have every node the clips animate");
         return index;
     };
+    for (const NodeEase& ne : file.node_ease) need_node(ne.node, "node_ease");
     std::vector<int> rest_nodes;
     for (const std::string& name : file.rest_nodes) {
         int index = need_node(name, "rest_nodes");
@@ -118,6 +119,9 @@ Result<ClipSet> compile(const AnimationFile& file, const Rig& rig) {
                 const bool position = kind == 1;
                 if (!(position ? has_pos : has_rot)[static_cast<std::size_t>(n)]) continue;
                 const std::string& name = rig.node(n).name;
+                const Ease* node_ease = nullptr;
+                for (const NodeEase& ne : file.node_ease)
+                    if (ne.node == name) node_ease = &ne.ease;
                 Channel ch;
                 ch.node = n;
                 ch.is_position = position;
@@ -130,7 +134,7 @@ Result<ClipSet> compile(const AnimationFile& file, const Rig& rig) {
                     const TargetDef* t = find_target(phase, name);
                     Key key;
                     key.time = time;
-                    key.ease = t && t->ease ? *t->ease : phase.ease;
+                    key.ease = t && t->ease ? *t->ease : node_ease ? *node_ease : phase.ease;
                     const auto& absolute =
                         position ? (t ? t->pos : std::nullopt) : (t ? t->rot : std::nullopt);
                     const auto& relative =

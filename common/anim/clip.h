@@ -37,7 +37,7 @@ struct TargetDef {
     std::optional<DVec3> add_rot; // relative to the value at the phase's start (Tween.js "+x" strings)
     std::optional<DVec3> pos;     // offset from the node's rest position
     std::optional<DVec3> add_pos; // relative to the value at the phase's start
-    std::optional<Ease> ease;     // overrides the phase's easing for this node
+    std::optional<Ease> ease;     // overrides node_ease and the phase's easing for this node
 };
 
 struct PhaseDef {
@@ -68,10 +68,18 @@ struct BlendPair {
     double time = 0;      // seconds
 };
 
+// A node's easing in every phase unless its target names one (the reference tweens the head without easing,
+// i.e. Linear, whatever the phase's easing, including when the Rest rule sends it home).
+struct NodeEase {
+    std::string node;
+    Ease ease;
+};
+
 struct AnimationFile {
     std::vector<RigNodeDef> rig;
     std::vector<std::string> rest_nodes; // nodes the Rest rule sends home
-    double default_blend = 0.1;          // seconds, for pairs not listed in `blends`
+    std::vector<NodeEase> node_ease;
+    double default_blend = 0.1; // seconds, for pairs not listed in `blends`
     std::vector<BlendPair> blends;
     bool wrap_captured_angles = true; // captured start angles move into (-180, 180] (same rotation)
     std::vector<ClipDef> clips;

@@ -213,7 +213,8 @@ class Reader {
         const JsonPath top;
         if (!is_object(root, top, "the document")) return;
         known_keys(root, top,
-                   {"format", "version", "rig", "rest_nodes", "blend", "wrap_captured_angles", "clips"});
+                   {"format", "version", "rig", "rest_nodes", "node_ease", "blend", "wrap_captured_angles",
+                    "clips"});
         std::string format;
         if (!root.contains("format"))
             problem(top, "missing \"format\"", std::string("\"format\": \"") + kAnimationFormat + "\"");
@@ -260,6 +261,11 @@ class Reader {
                     file.blends.push_back(pair);
                 }
         }
+        if (root.contains("node_ease") && is_object(root["node_ease"], top / "node_ease", "node_ease"))
+            for (auto it = root["node_ease"].begin(); it != root["node_ease"].end(); ++it) {
+                NodeEase ne{it.key(), Ease::linear()};
+                if (ease(it.value(), top / "node_ease" / it.key(), ne.ease)) file.node_ease.push_back(ne);
+            }
         if (root.contains("wrap_captured_angles")) {
             if (root["wrap_captured_angles"].is_boolean())
                 file.wrap_captured_angles = root["wrap_captured_angles"].get<bool>();
@@ -440,6 +446,13 @@ std::vector<Issue> validate(const AnimationFile& file) {
         if (!is_node(file.rest_nodes[i]))
             problem((top / "rest_nodes")[i], "unknown node '" + file.rest_nodes[i] + "'",
                     suggestion(file.rest_nodes[i], node_names) + known_nodes);
+
+    for (const NodeEase& ne : file.node_ease) {
+        const JsonPath p = top / "node_ease" / ne.node;
+        if (!is_node(ne.node))
+            problem(p, "unknown node '" + ne.node + "'", suggestion(ne.node, node_names) + known_nodes);
+        if (std::string why = validate_ease(ne.ease); !why.empty()) problem(p, why);
+    }
 
     std::vector<std::string> clip_names;
     for (const ClipDef& c : file.clips) clip_names.push_back(c.name);
@@ -640,7 +653,15 @@ std::string save_animation_string(const AnimationFile& file) {
     out += "  ],\n  \"rest_nodes\": [";
     for (std::size_t i = 0; i < file.rest_nodes.size(); ++i)
         out += (i ? ", " : "") + quoted(file.rest_nodes[i]);
-    out += "],\n  \"blend\": {\n    \"default\": " + number_text(file.default_blend) + ",\n    \"pairs\": [";
+    out += "],\n";
+    if (!file.node_ease.empty()) {
+        out += "  \"node_ease\": {";
+        for (std::size_t i = 0; i < file.node_ease.size(); ++i)
+            out +=
+                (i ? ", " : "") + quoted(file.node_ease[i].node) + ": " + ease_text(file.node_ease[i].ease);
+        out += "},\n";
+    }
+    out += "  \"blend\": {\n    \"default\": " + number_text(file.default_blend) + ",\n    \"pairs\": [";
     for (std::size_t i = 0; i < file.blends.size(); ++i) {
         const BlendPair& b = file.blends[i];
         out += (i ? ",\n" : "\n");

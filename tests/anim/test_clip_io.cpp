@@ -26,6 +26,7 @@ TEST_CASE("load -> save -> load -> save is byte-identical for every feature of t
              {"a", "root", DVec3(0.1, 0.25, -3), DVec3(0, 90, 0)},
              {"b", "a", DVec3(0), DVec3(1e-7, -0.3, 12345.5)}};
     f.rest_nodes = {"a", "b"};
+    f.node_ease = {{"b", Ease::linear()}, {"a", Ease::power(1.5f, EaseMode::Out)}};
     f.default_blend = 0.2;
     f.blends = {{"*", "two", 0}, {"one", "two", 0.05}};
     f.wrap_captured_angles = false;
@@ -69,6 +70,8 @@ TEST_CASE("load -> save -> load -> save is byte-identical for every feature of t
     CHECK(reloaded->clips[0].phases[0].targets[1].rot->y == 0.13 * 180);
     CHECK(reloaded->clips[1].name == "two \"quoted\"");
     CHECK_FALSE(reloaded->wrap_captured_angles);
+    REQUIRE(reloaded->node_ease.size() == 2);
+    CHECK(reloaded->node_ease[1].ease == Ease::power(1.5f, EaseMode::Out));
 }
 
 TEST_CASE("saving is atomic: a failed write leaves the old file whole") {
@@ -144,6 +147,10 @@ TEST_CASE("malformed clip files give clear errors: file, line:column, JSON path,
         {"unknown_rest_node.json", {"unknown_rest_node.json:9:27", "rest_nodes[1]", "unknown node 'neck'"}},
         {"missing_clips.json",
          {"missing_clips.json:10:12", "unknown key 'clipz'", "did you mean 'clips'?", "missing \"clips\""}},
+        {"bad_node_ease.json",
+         {"2 problems", "bad_node_ease.json:10:25", "node_ease.haed", "unknown node 'haed'",
+          "did you mean 'head'?", "bad_node_ease.json:10:49", "unknown easing 'Bouncy.Out'",
+          "did you mean 'Bounce.Out'?"}},
         {"many_problems.json",
          {"3 problems", "duration -1 s is negative", "unknown easing 'Springy.Out'", "unknown node 'neck'"}},
     };

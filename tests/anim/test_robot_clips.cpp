@@ -251,3 +251,20 @@ TEST_CASE("world transforms follow the hierarchy: the shot marker moves with the
     CHECK(glm::length(Vec3(world[tip][3]) - Vec3(world[hand][3])) ==
           doctest::Approx(glm::length(lib.rig.node(static_cast<int>(tip)).rest_position)).epsilon(1e-5));
 }
+
+TEST_CASE("the head is tweened without easing in every clip, even when going home by the rest rule") {
+    const AnimationLibrary& lib = robot_library();
+    REQUIRE(lib.file.node_ease.size() == 1);
+    CHECK(lib.file.node_ease[0].node == "head");
+    Pose start;
+    start.set_rest(lib.rig);
+    const auto head = static_cast<std::size_t>(lib.rig.find("head"));
+    const auto chest = static_cast<std::size_t>(lib.rig.find("chest"));
+    start.euler[head] = Vec3(0, 0, 0.4f);
+    start.euler[chest] = Vec3(0, 0, 0.4f);
+    Pose out = start;
+    const Clip& pose = lib.clips.clips[static_cast<std::size_t>(lib.clips.find("shoot_pose"))];
+    sample_clip(pose, start.euler, start.position, 0.15, out.euler, out.position);
+    check_vec(out.euler[head], {0, 0, 0.4f * 0.5f});   // Linear: halfway home
+    check_vec(out.euler[chest], {0, 0, 0.4f * 0.75f}); // Quadratic.In: a quarter of the way
+}
