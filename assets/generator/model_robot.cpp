@@ -64,6 +64,24 @@ Mesh wheel(float radius, float width) {
         y_to_z());
     return w;
 }
+// Decal atlas (256 x 256): the top half a hazard-striped plate, the bottom half the unit number plate.
+Image robot_decals(const Font& font) {
+    constexpr int n = 256;
+    Field plate(n, n), stripes(n, n), ink(n, n), frame(n, n);
+    fill_rounded_rect(plate, Vec2f(0, 0), Vec2f(n, n), 0.0f);
+    hazard_stripes(stripes, Vec2f(0, 0), Vec2f(n, 128), 40.0f);
+    for (float y0 : {0.0f, 128.0f}) {
+        fill_rounded_rect(frame, Vec2f(0, y0), Vec2f(n, y0 + 128), 0.0f);
+        fill_rounded_rect(frame, Vec2f(6, y0 + 6), Vec2f(n - 6, y0 + 122), 4.0f, Stroke{0.0f, Paint::Set});
+    }
+    font.draw_centred(ink, "K-07", Vec2f(128, 192), 84.0f);
+    Image image(n, n, srgb(236, 182, 40));
+    blend(image, stripes, srgb(24, 22, 20));
+    blend(image, ink, srgb(24, 22, 20));
+    blend(image, frame, srgb(40, 36, 30));
+    return image;
+}
+
 // Appends a painted part; its uvs are shifted by where it sits, so the seams and rivets of the tiled paint
 // map do not line up through the centre of every part.
 void add_painted(Mesh& dst, Mesh part, const mat4& place) {
@@ -75,6 +93,7 @@ void add_painted(Mesh& dst, Mesh part, const mat4& place) {
 
 Result<void> make_robot(Output& out) {
     KS_ASSETGEN_TRY(out.material("robot", robot_paint()));
+    KS_ASSETGEN_TRY(out.texture("robot_decals_basecolor", robot_decals(out.font()), PngChannels::Rgb));
     Model model("robot");
     const int paint = model.add_material(textured("robot_paint", "robot", vec4(1.0f), 1.0f, 1.0f));
     // Body parts tile the paint map once per 2 units so panel seams stay sparse on small parts.
@@ -85,6 +104,15 @@ Result<void> make_robot(Output& out) {
     const int visor = model.add_material(
         plain("robot_visor", vec3(0.15f, 0.02f, 0.02f), 0.0f, 0.2f, vec3(1.0f, 0.12f, 0.04f)));
     const int steel = model.add_material(plain("robot_steel", vec3(0.72f), 1.0f, 0.3f));
+    Material decal_material = plain("robot_decal", vec3(1.0f), 0.0f, 0.5f);
+    decal_material.basecolor_texture = "robot_decals_basecolor";
+    const int decal = model.add_material(decal_material);
+    // A thin plate whose +X face shows one half of the decal atlas (top: hazard stripes, bottom: number).
+    auto decal_plate = [](vec3 size, bool number) {
+        Mesh m = rounded_box(size, 0.0f, 0, 1.0f, UvMode::PerFace);
+        m.transform_uvs(vec2(1.0f, 0.5f), vec2(0.0f, number ? 0.5f : 0.0f));
+        return m;
+    };
 
     const int root = model.add_node("robot", -1);
     // Base: chassis with four wheels; pivot at axle height.
@@ -98,6 +126,8 @@ Result<void> make_robot(Output& out) {
         base_dark.append(rounded_box(vec3(1.2f, 0.06f, 0.16f)), at(vec3(0, 0.33f, z * 1.12f)));
     base_dark.append(rounded_box(vec3(0.08f, 0.16f, 0.7f), 0.03f, 1), at(vec3(0.6f, 0.05f, 0))); // bumper
     base_dark.append(cylinder(0.22f, 0.18f, 14, 0.03f), at(vec3(0, 0.38f, 0)));                  // waist ring
+    model.node(base).part(decal).append(decal_plate(vec3(0.01f, 0.11f, 0.56f), false),
+                                        at(vec3(0.645f, 0.05f, 0)));
     Mesh& base_lamp = model.node(base).part(visor);
     for (float z : {-0.3f, 0.3f})
         base_lamp.append(cylinder(0.04f, 0.03f, 12), at(vec3(0.64f, 0.1f, z)) * y_to_x());
@@ -137,6 +167,8 @@ Result<void> make_robot(Output& out) {
     chest_dark.append(cylinder(0.14f, 0.12f, 16, 0.02f), at(vec3(0, 1.42f, 0))); // neck
     for (float z : {-0.36f, 0.36f})
         chest_dark.append(cylinder(0.035f, 0.3f, 10), at(vec3(-0.52f, 0.6f, z))); // exhaust pipes
+    model.node(chest).part(decal).append(decal_plate(vec3(0.01f, 0.12f, 0.24f), true),
+                                         at(vec3(0.395f, 1.0f, -0.2f)));
     Mesh& chest_glow = model.node(chest).part(visor);
     chest_glow.append(cylinder(0.06f, 0.03f, 16), at(vec3(0.43f, 1.0f, 0.28f)) * y_to_x()); // status lamp
 
