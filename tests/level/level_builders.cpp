@@ -1,5 +1,9 @@
 #include "level_builders.h"
 
+#include "level/level_io.h"
+
+#include <doctest/doctest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -146,3 +150,19 @@ Level random_level(Rng& rng, int entity_count) {
 }
 
 } // namespace ks::test
+
+TEST_CASE("test builders: every type is present and off its defaults; random levels are valid and seeded") {
+    using namespace ks::level;
+    const Level every = ks::test::level_with_every_type();
+    REQUIRE(every.entities.size() == all_types().size());
+    for (size_t i = 0; i < every.entities.size(); ++i) {
+        CHECK(every.entities[i].type() == all_types()[i]);
+        CHECK_FALSE(every.entities[i].props == default_props(all_types()[i]));
+    }
+    for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+        ks::Rng a(seed), b(seed);
+        const Level first = ks::test::random_level(a, 30);
+        CHECK(first == ks::test::random_level(b, 30));
+        CHECK_MESSAGE(validate(first).diagnostics.empty(), validate(first).str());
+    }
+}

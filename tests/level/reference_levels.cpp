@@ -1,5 +1,7 @@
 #include "reference_levels.h"
 
+#include <doctest/doctest.h>
+
 #include <cmath>
 
 namespace ks::test {
@@ -246,3 +248,23 @@ Level reference_dojo_level() {
 }
 
 } // namespace ks::test
+
+namespace {
+ks::Vec3 forward_of_yaw_degrees(float yaw_degrees) {
+    const float yaw = ks::radians(yaw_degrees);
+    return {-std::sin(yaw), 0.0f, -std::cos(yaw)};
+}
+} // namespace
+
+TEST_CASE("robot yaw conversion keeps the reference's facing") {
+    // The reference robot faces its local +X rotated by rotY: (cos rotY, 0, -sin rotY).
+    for (float rot_y : {0.0f, -ks::kPi / 2, -3 * ks::kPi / 4, 1.0f, 2.5f}) {
+        const ks::Vec3 reference(std::cos(rot_y), 0, -std::sin(rot_y));
+        const ks::Vec3 ours = forward_of_yaw_degrees(ks::test::robot_yaw_from_reference(rot_y));
+        CHECK(glm::dot(reference, ours) == doctest::Approx(1).epsilon(1e-5));
+        const float yaw = ks::test::robot_yaw_from_reference(rot_y);
+        CHECK(yaw > -180.0f);
+        CHECK(yaw <= 180.0f);
+    }
+    CHECK(ks::test::robot_yaw_from_reference(0) == -90.0f);
+}

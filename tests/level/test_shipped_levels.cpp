@@ -150,16 +150,3 @@ TEST_CASE("dojo.json loads cleanly, matches the reference and re-saves byte-iden
         if (const auto* floor = e.try_as<FloorProps>()) CHECK_FALSE(floor->ceiling);
     }
 }
-
-TEST_CASE("robot yaw conversion keeps the reference's facing") {
-    // The reference robot faces its local +X rotated by rotY: (cos rotY, 0, -sin rotY).
-    for (float rot_y : {0.0f, -ks::kPi / 2, -3 * ks::kPi / 4, 1.0f, 2.5f}) {
-        const ks::Vec3 reference(std::cos(rot_y), 0, -std::sin(rot_y));
-        const ks::Vec3 ours = forward_of_yaw(ks::test::robot_yaw_from_reference(rot_y));
-        CHECK(glm::dot(reference, ours) == doctest::Approx(1).epsilon(1e-5));
-        const float yaw = ks::test::robot_yaw_from_reference(rot_y);
-        CHECK(yaw > -180.0f);
-        CHECK(yaw <= 180.0f);
-    }
-    CHECK(ks::test::robot_yaw_from_reference(0) == -90.0f);
-}
