@@ -133,16 +133,20 @@ Overlap obb_overlap(const Obb& a, const Obb& b, float tolerance) {
 }
 
 std::optional<float> surface_height_at(const Entity& support, float x, float z) {
+    const auto t = support.type();
+    if (t != level::EntityType::Floor && t != level::EntityType::Stair) return std::nullopt;
+    return surface_height_at(support, entity_obb(support), x, z);
+}
+
+std::optional<float> surface_height_at(const Entity& support, const Obb& box, float x, float z) {
     using namespace level;
     if (const auto* f = support.try_as<FloorProps>()) {
         if (f->ceiling) return std::nullopt;
-        const Obb box = entity_obb(support);
-        const Vec3 l = box.to_local({x, support.position.y, z});
+        const Vec3 l = box.to_local({x, box.center.y, z});
         if (std::abs(l.x) > box.half.x || std::abs(l.z) > box.half.z) return std::nullopt;
         return support.position.y;
     }
     if (const auto* s = support.try_as<StairProps>()) {
-        const Obb box = entity_obb(support);
         const Vec3 l = box.to_local({x, box.center.y, z});
         if (std::abs(l.x) > box.half.x || std::abs(l.z) > box.half.z) return std::nullopt;
         // Rises toward local -z: step k (from the +z end) has its tread at (k + 1) * rise / steps.

@@ -136,9 +136,15 @@ Result<void> Editor::accept_recovery() {
 }
 
 const std::vector<Issue>& Editor::issues() {
-    if (issues_revision_ != history_.revision() + reloads_) {
-        issues_ = validate_design(doc_.level, validation_options_);
-        issues_revision_ = history_.revision() + reloads_;
+    // During a drag (an open transaction) the walk check (about 16 ms on the main level) waits for the
+    // commit; every other rule stays live (well under a millisecond).
+    const bool dragging = history_.in_transaction();
+    const std::uint64_t key = ((history_.revision() + reloads_) << 1) | (dragging ? 1u : 0u);
+    if (issues_revision_ != key) {
+        ValidationOptions options = validation_options_;
+        options.check_reachability = options.check_reachability && !dragging;
+        issues_ = validate_design(doc_.level, options);
+        issues_revision_ = key;
     }
     return issues_;
 }

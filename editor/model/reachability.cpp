@@ -11,7 +11,8 @@ namespace {
 using level::Entity;
 using level::EntityType;
 
-constexpr int kMaxSurfaces = 4; // walkable layers per cell (ground, platform, stair tread, ...)
+constexpr int kMaxSurfaces = 4; // walkable layers per cell kept for the search (ground, platform, tread, ...)
+constexpr int kMaxFound = 8;    // surfaces gathered per cell before buried ones are dropped
 
 struct Solid {
     Obb box;
@@ -35,7 +36,11 @@ bool blocks_walking(EntityType t) {
 WalkGridStats walk_to_control_panel(const level::Level& level, const ValidationOptions& o) {
     WalkGridStats stats;
     const Entity* panel = nullptr;
-    std::vector<const Entity*> supports;
+    struct SupportBox {
+        const Entity* entity;
+        Obb box;
+    };
+    std::vector<SupportBox> supports;
     std::vector<Solid> solids;
     Aabb area{Vec3(3e38f), Vec3(-3e38f)};
     for (const auto& e : level.entities) {
@@ -45,7 +50,7 @@ WalkGridStats walk_to_control_panel(const level::Level& level, const ValidationO
         if (blocks_walking(e.type())) solids.push_back({box, box.aabb()});
         const auto* floor = e.try_as<level::FloorProps>();
         if (e.type() == EntityType::Stair || (floor && !floor->ceiling)) {
-            supports.push_back(&e);
+            supports.push_back({&e, box});
             const Aabb b = box.aabb();
             area.min = glm::min(area.min, b.min);
             area.max = glm::max(area.max, b.max);
@@ -68,53 +73,90 @@ WalkGridStats walk_to_control_panel(const level::Level& level, const ValidationO
         return Vec2(area.min.x + (static_cast<float>(c) + 0.5f) * cell,
                     area.min.z + (static_cast<float>(r) + 0.5f) * cell);
     };
-    const float body_half_height = (ch.height - ch.step_height) / 2;
-    for (int r = 0; r < rows; ++r) {
-        for (int c = 0; c < cols; ++c) {
-            const Vec2 p = centre(c, r);
-            std::array<float, 16> found{};
-            int n = 0;
-            for (const Entity* s : supports) {
-                auto h = surface_height_at(*s, p.x, p.y);
-                if (!h || n == static_cast<int>(found.size())) continue;
-                // A floor under a stair is buried inside the stair's solid.
-                bool buried = false;
-                if (s->type() == EntityType::Floor)
-                    for (const Entity* other : supports)
-                        if (other->type() == EntityType::Stair && other->position.y <= *h + 1e-3f)
-                            if (auto tread = surface_height_at(*other, p.x, p.y);
-                                tread && *tread > *h + 1e-3f)
-                                buried = true;
-                if (!buried) found[n++] = *h;
+
+    // Pass 1: the walkable surfaces of every cell (each support only over the cells its bounds cover).
+    std::vector<std::array<float, kMaxFound>> found(cells);
+    std::vector<std::uint8_t> found_count(cells, 0);
+    // Per found surface: the stair's base height, or NaN for a floor.
+    std::vector<float> stair_base(cells * kMaxFound, 0.0f);
+    auto cell_range = [&](const Aabb& b, float grow, int& c0, int& c1, int& r0, int& r1) {
+        c0 = std::max(0, static_cast<int>(std::floor((b.min.x - grow - area.min.x) / cell)));
+        c1 = std::min(cols - 1, static_cast<int>(std::floor((b.max.x + grow - area.min.x) / cell)));
+        r0 = std::max(0, static_cast<int>(std::floor((b.min.z - grow - area.min.z) / cell)));
+        r1 = std::min(rows - 1, static_cast<int>(std::floor((b.max.z + grow - area.min.z) / cell)));
+    };
+    for (const auto& s : supports) {
+        int c0, c1, r0, r1;
+        cell_range(s.box.aabb(), 0.0f, c0, c1, r0, r1);
+        const bool stair = s.entity->type() == EntityType::Stair;
+        for (int r = r0; r <= r1; ++r)
+            for (int c = c0; c <= c1; ++c) {
+                const Vec2 p = centre(c, r);
+                auto h = surface_height_at(*s.entity, s.box, p.x, p.y);
+                const size_t index = static_cast<size_t>(r) * cols + c;
+                if (!h || found_count[index] == kMaxFound) continue;
+                stair_base[index * kMaxFound + found_count[index]] =
+                    stair ? s.entity->position.y : std::nanf("");
+                found[index][found_count[index]++] = *h;
             }
-            std::sort(found.begin(), found.begin() + n);
-            n = static_cast<int>(std::unique(found.begin(), found.begin() + n,
-                                             [](float a, float b) { return std::abs(a - b) < 1e-3f; }) -
-                                 found.begin());
-            const int first = std::max(0, n - kMaxSurfaces);
-            const size_t index = static_cast<size_t>(r) * cols + c;
-            for (int k = first; k < n; ++k) {
-                const float h = found[k];
-                const int slot = k - first;
-                heights[index][slot] = h;
-                Obb body;
-                body.center = {p.x, h + ch.step_height + body_half_height, p.y};
-                body.half = {ch.radius, body_half_height, ch.radius};
-                const Aabb body_bounds = body.aabb();
-                bool free = true;
-                for (const Solid& s : solids) {
-                    if (!s.bounds.intersects(body_bounds)) continue;
-                    if (obb_overlap(body, s.box).overlapping) {
-                        free = false;
+    }
+    for (size_t index = 0; index < cells; ++index) {
+        const int n_found = std::min<int>(found_count[index], kMaxFound);
+        if (n_found == 0) continue;
+        // A floor surface under a stair's tread is buried inside the stair's solid.
+        std::array<float, kMaxFound> kept{};
+        int n = 0;
+        for (int i = 0; i < n_found; ++i) {
+            bool buried = false;
+            const float h = found[index][i];
+            if (std::isnan(stair_base[index * kMaxFound + i]))
+                for (int j = 0; j < n_found; ++j) {
+                    const float base = stair_base[index * kMaxFound + j];
+                    if (!std::isnan(base) && base <= h + 1e-3f && found[index][j] > h + 1e-3f) {
+                        buried = true;
                         break;
                     }
                 }
-                open[index * kMaxSurfaces + slot] = free;
-                stats.open_nodes += free;
-            }
-            layer_count[index] = static_cast<std::uint8_t>(n - first);
+            if (!buried) kept[n++] = found[index][i];
         }
+        // At most kMaxFound values: insertion sort, then drop near-duplicates (two floors flush at a seam).
+        for (int i = 1; i < n; ++i)
+            for (int j = i; j > 0 && kept[j] < kept[j - 1]; --j) std::swap(kept[j], kept[j - 1]);
+        int unique = 0;
+        for (int i = 0; i < n; ++i)
+            if (unique == 0 || std::abs(kept[i] - kept[unique - 1]) >= 1e-3f) kept[unique++] = kept[i];
+        n = unique;
+        const int first = std::max(0, n - kMaxSurfaces);
+        for (int k = first; k < n; ++k) {
+            heights[index][k - first] = kept[k];
+            open[index * kMaxSurfaces + (k - first)] = 1;
+        }
+        layer_count[index] = static_cast<std::uint8_t>(n - first);
     }
+
+    // Pass 2: close every node where a solid intersects the body (from step height to full height),
+    // visiting only the cells each solid's bounds (grown by the body radius) can reach.
+    const float body_half_height = (ch.height - ch.step_height) / 2;
+    for (const Solid& s : solids) {
+        int c0, c1, r0, r1;
+        cell_range(s.bounds, ch.radius, c0, c1, r0, r1);
+        for (int r = r0; r <= r1; ++r)
+            for (int c = c0; c <= c1; ++c) {
+                const size_t index = static_cast<size_t>(r) * cols + c;
+                for (int k = 0; k < layer_count[index]; ++k) {
+                    std::uint8_t& node = open[index * kMaxSurfaces + k];
+                    const float h = heights[index][k];
+                    if (!node || s.bounds.min.y >= h + ch.height || s.bounds.max.y <= h + ch.step_height)
+                        continue;
+                    const Vec2 p = centre(c, r);
+                    Obb body;
+                    body.center = {p.x, h + ch.step_height + body_half_height, p.y};
+                    body.half = {ch.radius, body_half_height, ch.radius};
+                    if (obb_overlap(body, s.box).overlapping) node = 0;
+                }
+            }
+    }
+    for (size_t i = 0; i < open.size(); ++i) stats.open_nodes += open[i];
 
     // Start: the highest surface under the player start's feet.
     const Vec3 start = level.player_start.position;

@@ -172,3 +172,20 @@ TEST_CASE("history: step names list done and redoable steps for the History pane
     CHECK(ed.history().undo_count() == 2);
     CHECK(ed.history().redo_name() == "Delete pickup 2");
 }
+
+TEST_CASE("commands: large selections (indexed update path) undo and redo exactly") {
+    Editor ed;
+    for (int i = 0; i < 40; ++i) (void)ed.place(EntityType::Robot, {float(i % 8) * 3, 0, float(i / 8) * 3});
+    const std::string before = editor_test::text_of(ed);
+    CHECK(ed.select_all() == 40);
+    REQUIRE(ed.move_selection({1, 0, 2}).ok());
+    REQUIRE(ed.rotate_selection(45).ok());
+    REQUIRE(ed.set_field("health", FieldValue(42.0)).ok());
+    const std::string after = editor_test::text_of(ed);
+    for (const auto& e : ed.level().entities) CHECK(e.as<level::RobotProps>().health == 42.0f);
+    while (ed.history().undo_name() != "Place robot") REQUIRE(ed.undo());
+    CHECK(editor_test::text_of(ed) == before);
+    while (ed.redo()) {
+    }
+    CHECK(editor_test::text_of(ed) == after);
+}

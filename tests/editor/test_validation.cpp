@@ -269,6 +269,15 @@ TEST_CASE("rule reachability: a sealed room or a platform without stairs makes t
     CHECK_FALSE(walk.reachable);
     CHECK(walk.visited_nodes > 1000); // it searched the rooms, not just gave up
 
+    // During a drag (open transaction) the walk check waits for the commit; other rules stay live.
+    ed.begin_transaction("Drag");
+    REQUIRE(ed.select({id_named(ed, "Panel")}).ok());
+    REQUIRE(ed.move_selection({0, 3, 0}).ok());
+    CHECK(of_rule(ed.issues(), Rule::Reachability).empty());
+    CHECK(of_rule(ed.issues(), Rule::Support).size() == 1);
+    ed.commit_transaction();
+    CHECK(of_rule(ed.issues(), Rule::Reachability).size() == 1);
+
     // Nothing to decide without a panel (the control_panel rule reports that).
     level::Level empty;
     CHECK_FALSE(walk_to_control_panel(empty, {}).decided);
