@@ -3,6 +3,7 @@
 #include "level/json_text.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cfloat>
 #include <climits>
 #include <cmath>
