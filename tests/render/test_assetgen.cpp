@@ -300,6 +300,40 @@ TEST_CASE("generated glTF files are structurally valid") {
                 const std::vector<double> idx = read_accessor(g, prim["indices"].get<int>());
                 CHECK(idx.size() % 3 == 0);
                 CHECK(*std::max_element(idx.begin(), idx.end()) < static_cast<double>(vertices));
+                // Front faces are counter-clockwise: each triangle's winding normal agrees with its vertex
+                // normals. Tangents follow +u and the bitangent (cross(N, T) * w) points toward -v (image
+                // up).
+                const std::vector<double> uv = read_accessor(g, attr["TEXCOORD_0"].get<int>());
+                size_t inverted = 0, wrong_tangent = 0, wrong_handedness = 0, measured = 0;
+                for (size_t t = 0; t + 2 < idx.size(); t += 3) {
+                    const size_t i[3] = {static_cast<size_t>(idx[t]), static_cast<size_t>(idx[t + 1]),
+                                         static_cast<size_t>(idx[t + 2])};
+                    auto P = [&](size_t k) { return glm::dvec3(p[3 * k], p[3 * k + 1], p[3 * k + 2]); };
+                    auto N = [&](size_t k) {
+                        return glm::dvec3(normals[3 * k], normals[3 * k + 1], normals[3 * k + 2]);
+                    };
+                    auto UV = [&](size_t k) { return glm::dvec2(uv[2 * k], uv[2 * k + 1]); };
+                    const glm::dvec3 e1 = P(i[1]) - P(i[0]), e2 = P(i[2]) - P(i[0]);
+                    const glm::dvec3 face = glm::cross(e1, e2);
+                    if (glm::length(face) < 1e-10) continue; // degenerate
+                    if (glm::dot(face, N(i[0]) + N(i[1]) + N(i[2])) <= 0.0) ++inverted;
+                    const glm::dvec2 d1 = UV(i[1]) - UV(i[0]), d2 = UV(i[2]) - UV(i[0]);
+                    const double det = d1.x * d2.y - d2.x * d1.y;
+                    if (std::abs(det) < 1e-12) continue;
+                    const glm::dvec3 dpdu = (e1 * d2.y - e2 * d1.y) / det,
+                                     dpdv = (e2 * d1.x - e1 * d2.x) / det;
+                    ++measured;
+                    const size_t k = i[0];
+                    const glm::dvec3 tan(tangents[4 * k], tangents[4 * k + 1], tangents[4 * k + 2]);
+                    if (glm::dot(tan, dpdu) <= 0.0) ++wrong_tangent;
+                    if (glm::dot(glm::cross(N(k), tan) * tangents[4 * k + 3], -dpdv) <= 0.0)
+                        ++wrong_handedness;
+                }
+                CHECK(measured > 0);
+                CHECK(inverted == 0);
+                // Smoothed tangents can disagree with a sliver's own uv gradient; demand 99% agreement.
+                CHECK(wrong_tangent <= measured / 100);
+                CHECK(wrong_handedness <= measured / 100);
             }
     }
 }
