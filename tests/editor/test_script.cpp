@@ -233,3 +233,21 @@ expect valid
     REQUIRE_MESSAGE(r.ok(), (r.ok() ? std::string() : r.error().str()));
     CHECK_FALSE(run(ed, "recover accept\n").ok()); // nothing to recover
 }
+
+TEST_CASE("script: the example in docs/editor.md runs and builds a valid level") {
+    const std::string doc = ks::test::read_file(ks::test::source_dir() / "docs" / "editor.md");
+    const std::string marker = "Example (the two-room level";
+    size_t at = doc.find(marker);
+    REQUIRE(at != std::string::npos);
+    size_t begin = doc.find("```\n", at);
+    REQUIRE(begin != std::string::npos);
+    begin += 4;
+    const size_t end = doc.find("```", begin);
+    REQUIRE(end != std::string::npos);
+    ks::test::ScratchDir dir;
+    Editor ed;
+    auto r = run(ed, doc.substr(begin, end - begin), dir.path());
+    REQUIRE_MESSAGE(r.ok(), (r.ok() ? std::string() : r.error().str()));
+    CHECK(r->saved.size() == 1);
+    CHECK(level::load_level_file(dir / "two_rooms.json").ok());
+}
