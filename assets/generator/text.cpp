@@ -22,7 +22,8 @@ Result<Font> Font::load(const std::filesystem::path& path) {
     auto state = std::make_shared<State>();
     state->data = std::move(*data);
     const auto* bytes = reinterpret_cast<const unsigned char*>(state->data.data());
-    const int offset = stbtt_GetFontOffsetForIndex(bytes, 0);
+    // stb_truetype trusts its input; refuse anything too short to hold a font header before it looks.
+    const int offset = state->data.size() < 256 ? -1 : stbtt_GetFontOffsetForIndex(bytes, 0);
     if (offset < 0 || !stbtt_InitFont(&state->info, bytes, offset))
         return Error("not a TrueType font", Location{path.string()}, "replace it with DejaVuSans-Bold.ttf");
     Font font;

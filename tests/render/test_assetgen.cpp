@@ -491,6 +491,22 @@ TEST_CASE("ks_assetgen rejects bad command lines with a clear message") {
     CHECK(blocked.exit_code == 1);
     CHECK(blocked.output.find("blocker") != std::string::npos);
 
+    // The label font missing or corrupt: a clear error naming the file and the fix.
+    const fs::path data = scratch / "data";
+    fs::create_directories(data / "assets" / "fonts");
+    fs::create_directories(data / "levels");
+    const std::string with_data =
+        "KS_DATA_DIR=" + shell_quote(data) + " " + exe + " --out " + shell_quote(scratch / "x");
+    const auto no_font = ks::test::run_command(with_data + " --only pickups");
+    CHECK(no_font.exit_code == 1);
+    CHECK(no_font.output.find("DejaVuSans-Bold.ttf") != std::string::npos);
+    CHECK(no_font.output.find("restore it from git") != std::string::npos);
+    ks::test::run_command("printf 'not a font' > " +
+                          shell_quote(data / "assets" / "fonts" / "DejaVuSans-Bold.ttf"));
+    const auto bad_font = ks::test::run_command(with_data + " --only pickups");
+    CHECK(bad_font.exit_code == 1);
+    CHECK(bad_font.output.find("not a TrueType font") != std::string::npos);
+
     // --only writes just that asset.
     const auto one =
         ks::test::run_command(exe + " --out " + shell_quote(scratch / "one") + " --only gas_cylinder");
