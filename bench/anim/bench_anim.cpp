@@ -311,6 +311,43 @@ std::vector<ErrorRow> measure_fixed_step(const AnimationLibrary& lib, bool quick
     return rows;
 }
 
+void write_outputs(const std::vector<CostRow>& cost, const std::vector<ErrorRow>& errors) {
+    std::error_code ec;
+    std::filesystem::create_directories(out_dir(), ec);
+    if (FILE* f = std::fopen((out_dir() / "anim_cost.csv").string().c_str(), "w")) {
+        std::fprintf(f, "what,microseconds,unit\n");
+        for (const CostRow& r : cost)
+            std::fprintf(f, "\"%s\",%.4f,%s\n", r.what.c_str(), r.us, r.unit.c_str());
+        std::fclose(f);
+    }
+    const auto csv = out_dir() / "anim_fixed_step.csv";
+    if (FILE* f = std::fopen(csv.string().c_str(), "w")) {
+        std::fprintf(f, "rate_hz,method,max_error_rad,rms_error_rad,us_per_render_frame\n");
+        for (const ErrorRow& r : errors)
+            std::fprintf(f, "%d,%s,%.6e,%.6e,%.4f\n", r.rate_hz, r.method, r.max_error, r.rms_error,
+                         r.us_per_render_frame);
+        std::fclose(f);
+        const auto png = out_dir() / "anim_fixed_step.png";
+        const std::string plot =
+            "gnuplot -e \"set terminal pngcairo size 800,500; set output '" + png.string() +
+            "'; set datafile separator ','; set logscale xy; set format y '%g'; set xrange [20:320]; set "
+            "xlabel 'fixed step rate (Hz)'; "
+            "set ylabel 'pose error (rad)'; set key top right; set title 'Robot pose error vs exact "
+            "sampling'; "
+            "plot '" +
+            csv.string() + "' every 2::1 using 1:3 with linespoints title 'hold: max', '" + csv.string() +
+            "' every 2::1 using 1:4 with linespoints title 'hold: rms', '" + csv.string() +
+            "' every 2::2 using 1:3 with linespoints title 'slerp: max', '" + csv.string() +
+            "' every 2::2 using 1:4 with linespoints title 'slerp: rms'\" 2>/dev/null";
+        if (std::system("command -v gnuplot >/dev/null 2>&1") == 0 && std::system(plot.c_str()) == 0)
+            std::printf("\nwrote %s, %s and %s\n", (out_dir() / "anim_cost.csv").string().c_str(),
+                        csv.string().c_str(), png.string().c_str());
+        else
+            std::printf("\nwrote %s and %s (gnuplot unavailable: no plot)\n",
+                        (out_dir() / "anim_cost.csv").string().c_str(), csv.string().c_str());
+    }
+}
+
 int run(int argc, const char* const* argv) {
     bool quick = false, json = false;
     for (int i = 1; i < argc; ++i) {
@@ -348,39 +385,10 @@ int run(int argc, const char* const* argv) {
                     r.rate_hz ? (std::to_string(r.rate_hz) + " Hz").c_str() : "-", r.method, r.max_error,
                     r.rms_error, r.us_per_render_frame);
 
-    std::error_code ec;
-    std::filesystem::create_directories(out_dir(), ec);
-    if (FILE* f = std::fopen((out_dir() / "anim_cost.csv").string().c_str(), "w")) {
-        std::fprintf(f, "what,microseconds,unit\n");
-        for (const CostRow& r : cost)
-            std::fprintf(f, "\"%s\",%.4f,%s\n", r.what.c_str(), r.us, r.unit.c_str());
-        std::fclose(f);
-    }
-    const auto csv = out_dir() / "anim_fixed_step.csv";
-    if (FILE* f = std::fopen(csv.string().c_str(), "w")) {
-        std::fprintf(f, "rate_hz,method,max_error_rad,rms_error_rad,us_per_render_frame\n");
-        for (const ErrorRow& r : errors)
-            std::fprintf(f, "%d,%s,%.6e,%.6e,%.4f\n", r.rate_hz, r.method, r.max_error, r.rms_error,
-                         r.us_per_render_frame);
-        std::fclose(f);
-        const auto png = out_dir() / "anim_fixed_step.png";
-        const std::string plot =
-            "gnuplot -e \"set terminal pngcairo size 800,500; set output '" + png.string() +
-            "'; set datafile separator ','; set logscale xy; set format y '%g'; set xrange [20:320]; set "
-            "xlabel 'fixed step rate (Hz)'; "
-            "set ylabel 'pose error (rad)'; set key top right; set title 'Robot pose error vs exact "
-            "sampling'; "
-            "plot '" +
-            csv.string() + "' every 2::1 using 1:3 with linespoints title 'hold: max', '" + csv.string() +
-            "' every 2::1 using 1:4 with linespoints title 'hold: rms', '" + csv.string() +
-            "' every 2::2 using 1:3 with linespoints title 'slerp: max', '" + csv.string() +
-            "' every 2::2 using 1:4 with linespoints title 'slerp: rms'\" 2>/dev/null";
-        if (std::system("command -v gnuplot >/dev/null 2>&1") == 0 && std::system(plot.c_str()) == 0)
-            std::printf("\nwrote %s, %s and %s\n", (out_dir() / "anim_cost.csv").string().c_str(),
-                        csv.string().c_str(), png.string().c_str());
-        else
-            std::printf("\nwrote %s and %s (gnuplot unavailable: no plot)\n",
-                        (out_dir() / "anim_cost.csv").string().c_str(), csv.string().c_str());
+    if (quick) {
+        std::printf("\n--quick: shorter runs, docs/bench/anim_* left as they are\n");
+    } else {
+        write_outputs(cost, errors);
     }
     if (json) {
         std::printf(
