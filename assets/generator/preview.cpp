@@ -112,7 +112,7 @@ Result<void> write_previews(const Output& out, const std::filesystem::path& fold
     std::filesystem::create_directories(folder, ec);
     if (ec) return Error("cannot create the preview folder: " + ec.message(), Location{folder.string()});
     const glm::mat3 views[4] = {look(0.0f, 0.0f), look(1.5707963f, 0.0f), look(0.7853982f, 0.45f),
-                                look(3.926991f, 0.3f)};
+                                look(3.926991f, -0.45f)};
     for (const Model& model : out.models()) {
         Image sheet(kView * 4, kView);
         for (int v = 0; v < 4; ++v) {

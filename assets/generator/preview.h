@@ -1,7 +1,7 @@
 #pragma once
 // A debugging aid until the renderer can show models: flat-lit orthographic software renders of every
-// model written in this run (front, side and three-quarter views), textured with the base colour maps
-// generated in the same run.
+// model written in this run (side, front, three-quarter from above and from behind-below), textured with the
+// base colour maps generated in the same run.
 #include "output.h"
 
 namespace ks::assetgen {
