@@ -341,3 +341,22 @@ TEST_CASE("long runs stay finite and periodic (flick clock, loop iteration start
     b.advance(1e7);
     for (const Quat& q : b.pose().rotation) CHECK(is_finite(q));
 }
+
+TEST_CASE("extreme blend times: one flick and ten seconds stay jump-free and finite") {
+    const AnimationLibrary& lib = robot_library();
+    for (float blend : {1e-9f, 1e-6f, 10.0f}) {
+        Player player(lib.clips, lib.rig);
+        player.play(clip("alert"), 0.0f);
+        player.advance(0.2);
+        const Pose before = player.pose();
+        player.play(clip("death"), blend);
+        CHECK(jump(before, player.pose()).rotation < 1e-5f);
+        for (int i = 0; i < 200; ++i) {
+            player.advance(1.0 / 60);
+            for (const Quat& q : player.pose().rotation) REQUIRE(is_finite(q));
+        }
+        Rates rates(lib.rig.size());
+        player.velocity(rates.euler, rates.position);
+        for (const Vec3& v : rates.euler) CHECK(is_finite(v));
+    }
+}
