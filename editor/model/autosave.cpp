@@ -67,13 +67,26 @@ std::optional<RecoveryOffer> find_recovery(const fs::path& level_file) {
     return RecoveryOffer{level_file, newest};
 }
 
+fs::path untitled_autosave_dir(const AutosaveConfig& config) {
+    if (!config.untitled_dir.empty()) return config.untitled_dir;
+    fs::path base = default_config_dir();
+    return base.empty() ? fs::temp_directory_path() / "killswitch-autosave" : base / "autosave";
+}
+
+std::optional<RecoveryOffer> find_untitled_recovery(const AutosaveConfig& config) {
+    auto saves = list_autosaves(untitled_autosave_dir(config), stem_of({}));
+    if (saves.empty()) return std::nullopt;
+    return RecoveryOffer{{}, saves.back()};
+}
+
+void remove_autosaves(const fs::path& dir, const std::string& stem) {
+    std::error_code ec;
+    for (const auto& p : list_autosaves(dir, stem)) fs::remove(p, ec);
+}
+
 Autosaver::Autosaver(AutosaveConfig config, Clock clock)
     : config_(std::move(config)), clock_(std::move(clock)) {
-    if (config_.untitled_dir.empty()) {
-        fs::path base = default_config_dir();
-        config_.untitled_dir =
-            base.empty() ? fs::temp_directory_path() / "killswitch-autosave" : base / "autosave";
-    }
+    config_.untitled_dir = untitled_autosave_dir(config_);
     config_.keep = std::max(config_.keep, 1);
 }
 

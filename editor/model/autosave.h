@@ -29,6 +29,13 @@ std::filesystem::path autosave_dir_for(const std::filesystem::path& level_file);
 std::vector<std::filesystem::path> list_autosaves(const std::filesystem::path& dir, const std::string& stem);
 // The newest autosave of level_file if it is newer than the file and differs from it.
 std::optional<RecoveryOffer> find_recovery(const std::filesystem::path& level_file);
+// After a crash with an untitled level: the newest untitled autosave (offer it with Editor::offer_recovery
+// at start-up; the offer's level_file is empty).
+std::optional<RecoveryOffer> find_untitled_recovery(const AutosaveConfig& config);
+// Deletes the autosaves of `stem` in `dir` (after the user declined an untitled recovery, or saved it).
+void remove_autosaves(const std::filesystem::path& dir, const std::string& stem);
+// Where untitled levels autosave: config.untitled_dir, else <config dir>/autosave.
+std::filesystem::path untitled_autosave_dir(const AutosaveConfig& config);
 
 class Autosaver {
   public:

@@ -124,6 +124,8 @@ class Editor {
 
     // Offered after open when an autosave is newer than the file; accepting is one undoable step.
     const std::optional<RecoveryOffer>& recovery_offer() const { return recovery_; }
+    // Start-up after a crash with an untitled level (see find_untitled_recovery).
+    void offer_recovery(RecoveryOffer offer) { recovery_ = std::move(offer); }
     Result<void> accept_recovery();
     void decline_recovery() { recovery_.reset(); }
 

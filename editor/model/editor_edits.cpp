@@ -272,8 +272,7 @@ Result<void> Editor::delete_entities(const std::vector<int>& ids) {
                          : "Delete " + std::to_string(change->removals.size()) + " entities");
     std::vector<int> remaining;
     for (int id : doc_.selection)
-        if (std::find(ids.begin(), ids.end(), id) == ids.end() || doc_.locked.contains(id))
-            remaining.push_back(id);
+        if (!doomed.contains(id) || doc_.locked.contains(id)) remaining.push_back(id);
     execute(std::move(change), remaining);
     return ok();
 }

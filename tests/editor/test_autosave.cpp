@@ -142,3 +142,32 @@ TEST_CASE(
     CHECK_FALSE(after.recovery_offer().has_value());
     CHECK_FALSE(find_recovery(dir / "never_autosaved.json").has_value());
 }
+
+TEST_CASE("autosave: an untitled level is recovered at start-up as an unsaved untitled document") {
+    ks::test::ScratchDir dir;
+    FakeClock t;
+    AutosaveConfig config;
+    config.untitled_dir = dir / "untitled";
+    CHECK_FALSE(find_untitled_recovery(config).has_value());
+    std::string autosaved;
+    {
+        Editor crashed;
+        Autosaver autosaver(config, t.clock());
+        (void)crashed.place(EntityType::Robot, {0, 0, 0});
+        CHECK_FALSE(autosaver.update(crashed)->has_value());
+        t.now += 10;
+        REQUIRE(autosaver.update(crashed)->has_value());
+        autosaved = editor_test::text_of(crashed);
+    }
+    auto offer = find_untitled_recovery(config);
+    REQUIRE(offer.has_value());
+    CHECK(offer->level_file.empty());
+    Editor ed;
+    ed.offer_recovery(*offer);
+    REQUIRE(ed.accept_recovery().ok());
+    CHECK(editor_test::text_of(ed) == autosaved);
+    CHECK(ed.file_path().empty());
+    CHECK(ed.has_unsaved_changes());
+    remove_autosaves(untitled_autosave_dir(config), "untitled");
+    CHECK_FALSE(find_untitled_recovery(config).has_value());
+}
