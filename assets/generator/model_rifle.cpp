@@ -64,7 +64,7 @@ Result<void> make_rifle(Output& out) {
     const float uv = 4.0f; // one texture repeat per 0.25 units
     const int metal = model.add_material(textured("rifle_metal", "rifle", vec4(1.0f), 1.0f, 1.0f));
     const int polymer =
-        model.add_material(textured("rifle_polymer", "rifle", vec4(0.45f, 0.45f, 0.42f, 1.0f), 0.1f, 1.5f));
+        model.add_material(textured("rifle_polymer", "rifle", vec4(0.45f, 0.45f, 0.42f, 1.0f), 0.1f, 1.0f));
     const int lens = model.add_material(
         plain("rifle_lens", vec3(0.05f, 0.1f, 0.12f), 0.0f, 0.05f, vec3(0.05f, 0.25f, 0.3f)));
     const int accent = model.add_material(plain("rifle_accent", vec3(0.85f, 0.45f, 0.1f), 0.0f, 0.4f));

@@ -251,6 +251,16 @@ TEST_CASE("generated glTF files are structurally valid") {
         }
         for (const json& t : doc.value("textures", json::array()))
             CHECK(t["source"].get<size_t>() < doc["images"].size());
+        // Material factors within the ranges glTF allows.
+        auto in_unit = [](const json& v) { return v.get<double>() >= 0.0 && v.get<double>() <= 1.0; };
+        for (const json& m : doc.value("materials", json::array())) {
+            CAPTURE(m["name"].get<std::string>());
+            const json& pbr = m["pbrMetallicRoughness"];
+            for (const json& c : pbr["baseColorFactor"]) CHECK(in_unit(c));
+            CHECK(in_unit(pbr["metallicFactor"]));
+            CHECK(in_unit(pbr["roughnessFactor"]));
+            for (const json& c : m.value("emissiveFactor", json::array())) CHECK(in_unit(c));
+        }
         // Nodes form a forest: every child index valid and owned by exactly one parent; scene lists the
         // roots.
         std::vector<int> parents(doc["nodes"].size(), 0);
