@@ -180,13 +180,13 @@ Result<void> make_robot(Output& out) {
         a_dark.append(cylinder(0.17f, 0.22f, 14, 0.03f), at(vec3(0, 0, -0.11f)) * y_to_z()); // shoulder drum
         add_painted(model.node(arm).part(paint), rounded_box(vec3(0.3f, 0.26f, 0.3f), 0.07f, 1, uv),
                     at(vec3(0, 0.04f, z > 0 ? 0.05f : -0.05f)));
-        add_painted(model.node(arm).part(paint), rounded_box(vec3(0.22f, 0.5f, 0.22f), 0.05f, 1, uv),
+        add_painted(model.node(arm).part(paint), rounded_box(vec3(0.26f, 0.5f, 0.26f), 0.06f, 1, uv),
                     at(vec3(0, -0.36f, 0)));
-        a_dark.append(cylinder(0.03f, 0.42f, 8), at(vec3(0.13f, -0.55f, 0))); // hydraulic rod
+        a_dark.append(cylinder(0.03f, 0.42f, 8), at(vec3(0.16f, -0.55f, 0))); // hydraulic rod
         const int forearm = model.add_node("forearm_" + side, arm, vec3(0, -0.66f, 0));
         Mesh& f_dark = model.node(forearm).part(dark);
         f_dark.append(cylinder(0.1f, 0.26f, 14, 0.02f), at(vec3(0, 0, -0.13f)) * y_to_z()); // elbow
-        add_painted(model.node(forearm).part(paint), rounded_box(vec3(0.24f, 0.46f, 0.24f), 0.06f, 1, uv),
+        add_painted(model.node(forearm).part(paint), rounded_box(vec3(0.29f, 0.46f, 0.29f), 0.07f, 1, uv),
                     at(vec3(0, -0.3f, 0)));
         model.node(forearm).part(steel).append(rounded_box(vec3(0.26f, 0.06f, 0.26f), 0.02f, 1),
                                                at(vec3(0, -0.5f, 0)));
@@ -221,6 +221,9 @@ Result<void> make_robot(Output& out) {
     add_painted(h_paint, rounded_box(vec3(0.56f, 0.44f, 0.6f), 0.1f, 2, uv), at(vec3(-0.02f, 0.27f, 0)));
     Mesh& h_dark = model.node(head).part(dark);
     h_dark.append(rounded_box(vec3(0.1f, 0.2f, 0.56f), 0.05f, 1), at(vec3(0.25f, 0.3f, 0))); // visor housing
+    for (int k = 0; k < 3; ++k) // speaker grille under the visor
+        h_dark.append(rounded_box(vec3(0.03f, 0.022f, 0.26f)),
+                      at(vec3(0.265f, 0.16f - static_cast<float>(k) * 0.04f, 0)));
     for (float z : {-0.31f, 0.31f})
         h_dark.append(cylinder(0.11f, 0.06f, 14, 0.02f),
                       at(vec3(0, 0.27f, z)) * at(vec3(0, 0, -0.03f)) * y_to_z());
