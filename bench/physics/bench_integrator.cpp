@@ -129,8 +129,11 @@ int integrator_command(int, const char* const*) {
         for (const Mode& m : modes)
             row("fixed " + std::to_string(hz) + " Hz (ours)", m, our_jump(frames(m.fps, m.jitter, 1), hz));
     std::printf(
-        "(the apex error of the fixed-step rows comes only from sampling at render frames; the simulated\n"
-        " trajectory is the same at every frame rate, see tests/physics/test_character.cpp)\n");
+        "(fixed-step apex errors come only from sampling at render frames: the simulated trajectory is the\n"
+        " same at every frame rate, see tests/physics/test_character.cpp. The landing column is x at the "
+        "end\n"
+        " of the frame or step in which it landed: the reference's error depends on the frame rate; ours is\n"
+        " the same at every frame rate and is the run-on after touchdown within one fixed step.)\n");
     write_csv("physics_integrator", "method,fps,jitter,apex_error,landing_error,cpu_us_per_simulated_second",
               rows);
     plot(

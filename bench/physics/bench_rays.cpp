@@ -334,14 +334,15 @@ int run_level(const CommandLine& cli) {
     double checksum = 0.0, max_err = 0.0;
     for (std::size_t i = 0; i < rays.size(); ++i) {
         if (hit_flag[i]) ++hit_count, checksum += hits[i].distance;
-        const auto want =
-            reference::closest(DVec3(rays[i].origin), DVec3(rays[i].direction), scene.boxes, 100.0);
-        if (bool(hit_flag[i]) != (want.index >= 0))
-            ++mismatches;
-        else if (hit_flag[i]) {
-            const double err = std::abs(hits[i].distance - want.distance);
-            max_err = std::max(max_err, err);
-            if (err > 1e-3) ++mismatches;
+        const auto v =
+            reference::judge(DVec3(rays[i].origin), DVec3(rays[i].direction), 100.0,
+                             hit_flag[i] ? int(hits[i].body.index) : -1, hits[i].distance, scene.boxes);
+        mismatches += v == reference::Verdict::Mismatch;
+        boundary += v == reference::Verdict::Boundary;
+        if (hit_flag[i] && v == reference::Verdict::Match) {
+            const auto want =
+                reference::closest(DVec3(rays[i].origin), DVec3(rays[i].direction), scene.boxes, 100.0);
+            max_err = std::max(max_err, std::abs(hits[i].distance - want.distance));
         }
     }
     if (auto dump = cli.get("dump")) {

@@ -248,7 +248,8 @@ void characters(bool quick) {
               "wrong_contact_verdicts",
               rows);
     plot("physics_sat_characters",
-         "set title 'Character vs box: penetration error vs cost'\nset logscale y\nset xlabel 'ns per test'\n"
+         "set title 'Character vs box: penetration error vs cost'\nset logscale xy\nset format y '%.0e'\nset "
+         "xlabel 'ns per test'\n"
          "set ylabel 'mean |penetration error| (units)'\nset key top right\n"
          "plot 'physics_sat_characters.csv' every ::1 using ($2>0 && strstrt(strcol(1),'face-only')>0 ? $3 : "
          "1/0):4:2 "

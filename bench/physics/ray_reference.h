@@ -113,9 +113,12 @@ inline Verdict judge(const DVec3& o, const DVec3& d, double max_distance, int fa
     if (fast_index >= 0) {
         const DVec3 p = o + d * fast_distance;
         if (point_box_distance(p, boxes[fast_index]) > eps) return Verdict::Mismatch;
-        if (want.index >= 0 && want.distance < fast_distance - 1e-3 &&
-            ray_box(o, d, grown(boxes[want.index], -eps), max_distance) >= 0.0)
-            return Verdict::Mismatch;
+        // A nearer box in the reference counts against us only if the ray still enters it, clearly nearer,
+        // when it shrinks by eps (a grazing ray moves its entry by eps / sin(angle)).
+        if (want.index >= 0 && want.distance < fast_distance - 1e-3) {
+            const double t = ray_box(o, d, grown(boxes[want.index], -eps), max_distance);
+            if (t >= 0.0 && t < fast_distance - 1e-3) return Verdict::Mismatch;
+        }
         return Verdict::Boundary;
     }
     // The fast path missed what the reference hits: fine only if the ray misses that box shrunk by eps.
