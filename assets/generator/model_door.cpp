@@ -1,5 +1,6 @@
 // Sliding double door for a 5 x 5 doorway: leaves `door_l` (+X half) and `door_r` (-X half) of
-// 2.36 x 5.36 x 0.14 that slide 2.0 apart, inside a `frame` whose trims leave a slot for them.
+// 2.36 x 5.36 x 0.14 that slide 2.0 apart, inside a `frame` whose casings (9 wide) leave a slot for them
+// and hide them when open.
 #include "catalog.h"
 #include "material_builder.h"
 #include "model_kit.h"
@@ -95,10 +96,15 @@ Result<void> make_door(Output& out) {
     Mesh& f = model.node(frame).part(frame_mat);
     for (float zs : {-1.0f, 1.0f}) {
         const float z = zs * 0.195f;
-        for (float xs : {-1.0f, 1.0f})
-            f.append(rounded_box(vec3(0.45f, 5.55f, 0.21f), 0.04f, 1, 0.5f),
-                     at(vec3(xs * 2.725f, 2.775f, z)));
-        f.append(rounded_box(vec3(5.9f, 0.55f, 0.21f), 0.04f, 1, 0.5f), at(vec3(0, 5.275f, z)));
+        // Pocket casings (x 2.5..4.5) cover the leaves when they slide open; a raised jamb frames the
+        // opening.
+        for (float xs : {-1.0f, 1.0f}) {
+            f.append(rounded_box(vec3(2.0f, 5.55f, 0.21f), 0.04f, 1, 0.5f), at(vec3(xs * 3.5f, 2.775f, z)));
+            f.append(rounded_box(vec3(0.24f, 5.2f, 0.27f), 0.05f, 1, 0.5f),
+                     at(vec3(xs * 2.62f, 2.6f, z + zs * 0.03f)));
+        }
+        f.append(rounded_box(vec3(9.0f, 0.55f, 0.21f), 0.04f, 1, 0.5f), at(vec3(0, 5.275f, z)));
+        f.append(rounded_box(vec3(5.48f, 0.24f, 0.27f), 0.05f, 1, 0.5f), at(vec3(0, 5.12f, z + zs * 0.03f)));
         model.node(frame).part(lamp).append(rounded_box(vec3(0.6f, 0.12f, 0.06f), 0.03f, 1),
                                             at(vec3(0, 5.3f, zs * 0.32f)));
         // A hazard-striped sill plate: the leaf map's foot band, uv-placed on this strip.
