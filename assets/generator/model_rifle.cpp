@@ -107,12 +107,15 @@ Result<void> make_rifle(Output& out) {
                                at(vec3(0, 0.08f, -0.735f - static_cast<float>(k) * 0.012f)));
 
     // Magazine (curved), pistol grip, trigger guard, trigger.
-    r.part(polymer).append(side_profile({{-0.07f, 0.0f},
-                                         {-0.14f, 0.0f},
-                                         {-0.155f, -0.12f},
-                                         {-0.17f, -0.2f},
-                                         {-0.1f, -0.21f},
-                                         {-0.09f, -0.12f}},
+    r.part(polymer).append(side_profile({{-0.08f, 0.0f},
+                                         {-0.135f, 0.0f},
+                                         {-0.148f, -0.06f},
+                                         {-0.168f, -0.12f},
+                                         {-0.198f, -0.175f},
+                                         {-0.145f, -0.2f},
+                                         {-0.118f, -0.145f},
+                                         {-0.1f, -0.085f},
+                                         {-0.09f, -0.03f}},
                                         0.05f),
                            mat4(1.0f));
     r.part(polymer).append(side_profile({{0.02f, 0.0f},
@@ -127,18 +130,14 @@ Result<void> make_rifle(Output& out) {
                          at(vec3(0, -0.045f, -0.05f)));
     r.part(metal).append(rounded_box(vec3(0.006f, 0.035f, 0.006f), 0.002f, 1, uv),
                          at(vec3(0, -0.02f, -0.045f)));
-    // Stock: skeleton stock with a cheek rest and butt pad.
-    r.part(polymer).append(side_profile({{0.13f, 0.11f},
-                                         {0.13f, 0.01f},
-                                         {0.22f, 0.0f},
-                                         {0.36f, -0.07f},
-                                         {0.37f, 0.12f},
-                                         {0.3f, 0.125f},
-                                         {0.26f, 0.07f},
-                                         {0.2f, 0.07f},
-                                         {0.18f, 0.11f}},
-                                        0.04f),
-                           mat4(1.0f));
+    // Stock: a skeleton of three struts (comb, lower strut, butt) around a triangular opening.
+    r.part(polymer).append(
+        side_profile({{0.12f, 0.118f}, {0.12f, 0.075f}, {0.36f, 0.08f}, {0.36f, 0.122f}}, 0.04f), mat4(1.0f));
+    r.part(polymer).append(
+        side_profile({{0.12f, 0.0f}, {0.12f, 0.05f}, {0.35f, -0.02f}, {0.35f, -0.065f}}, 0.036f), mat4(1.0f));
+    r.part(polymer).append(
+        side_profile({{0.32f, 0.122f}, {0.32f, -0.06f}, {0.365f, -0.07f}, {0.365f, 0.122f}}, 0.044f),
+        mat4(1.0f));
     r.part(metal).append(rounded_box(vec3(0.05f, 0.19f, 0.02f), 0.008f, 1, uv), at(vec3(0, 0.025f, 0.37f)));
     r.part(accent).append(rounded_box(vec3(0.047f, 0.012f, 0.1f), 0.003f, 1), at(vec3(0, 0.116f, 0.28f)));
     // Optic: tube with bells and lenses on two rings.
