@@ -1,5 +1,7 @@
 #include "physics/world.h"
 
+#include "core/log.h"
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -86,8 +88,9 @@ Result<BodyId> World::add(const BodyDesc& desc, const std::string& what) {
     b.transform.rotation = glm::normalize(desc.transform.rotation);
     b.previous_position = p;
     b.bounds = b.shape.bounds(b.transform);
-    b.layers = desc.layers | (desc.trigger ? layer::kTrigger : 0u) |
-               (desc.motion == Motion::Character ? layer::kCharacter : 0u);
+    // A trigger is only a trigger: it never blocks, stops shots or hides anything (custom bits kept).
+    b.layers = desc.trigger ? (desc.layers & ~layer::kDefault) | layer::kTrigger
+                            : desc.layers | (desc.motion == Motion::Character ? layer::kCharacter : 0u);
     b.collides_with = desc.collides_with;
     b.user_data = desc.user_data;
     b.motion = desc.motion;
@@ -191,7 +194,14 @@ std::uint32_t World::layers(BodyId id) const {
 
 CharacterState& World::character(BodyId id) {
     Body* b = get(id);
-    assert(b && b->character_slot != kNone);
+    if (!b || b->character_slot == kNone) {
+        // A stale handle or a non-character: a harmless scratch state instead of a crash.
+        log::warn("physics: character() called with a handle that is not a live character (index ", id.index,
+                  ")");
+        static thread_local CharacterState scratch;
+        scratch = CharacterState{};
+        return scratch;
+    }
     return characters_[b->character_slot].state;
 }
 const CharacterState& World::character(BodyId id) const {

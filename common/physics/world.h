@@ -44,7 +44,7 @@ struct BodyDesc {
     Shape shape;
     Transform transform;
     Motion motion = Motion::Static;
-    bool trigger = false;                                            // overlaps reported, never blocks
+    bool trigger = false; // overlaps reported, never blocks; its layers become kTrigger (plus custom bits)
     std::uint32_t layers = layer::kDefault;                          // what this body is
     std::uint32_t collides_with = layer::kSolid | layer::kCharacter; // characters: what blocks them
     std::uint64_t user_data = 0;
@@ -76,6 +76,8 @@ struct RayHit {
 struct RayFilter {
     std::uint32_t layers = layer::kAll & ~layer::kTrigger; // hit bodies having any of these layers
     BodyId ignore;                                         // e.g. the shooter's own capsule
+    RayFilter() = default;
+    RayFilter(std::uint32_t layers_, BodyId ignore_ = {}) : layers(layers_), ignore(ignore_) {}
 };
 
 enum class HitOrder : std::uint8_t { Ascending, Descending };
@@ -109,7 +111,8 @@ class World {
     std::uint64_t user_data(BodyId id) const;
     std::uint32_t layers(BodyId id) const;
 
-    // Characters: velocity, gravity etc.; grounded state.
+    // Characters: velocity, gravity etc.; grounded state. A handle that is not a live character gets a
+    // warning and a scratch state (never a crash).
     CharacterState& character(BodyId id);
     const CharacterState& character(BodyId id) const;
     // Sets vy = speed when grounded; returns whether it jumped.

@@ -5,6 +5,7 @@
 
 #include "bench/physics/ray_reference.h"
 #include "bench/physics/scenes.h"
+#include "core/log.h"
 
 #include <cmath>
 #include <vector>
@@ -215,4 +216,33 @@ TEST_CASE("ray layer masks and ignore: a shot skips the shooter, sight rays skip
     CHECK(h.point.z == doctest::Approx(-9.75f));
     CHECK_FALSE(w.ray_any({{0, 2, 5}, {0, 0, 1}, 100}));
     CHECK_FALSE(w.ray_closest({{NAN, 0, 0}, {0, 0, 1}, 100}, h)); // bad ray: no hit, no crash
+}
+
+TEST_CASE(
+    "triggers never block rays or overlap checks unless asked for; bad character handles do not crash") {
+    World w;
+    BodyDesc t;
+    t.shape = Shape::box({2, 2, 2});
+    t.transform.position = {0, 2, -5};
+    t.trigger = true;
+    BodyId pickup = *w.add(t, "pickup");
+    t.motion = Motion::Kinematic;
+    t.transform.position = {0, 2, -10};
+    BodyId sensor = *w.add(t, "door sensor");
+    BodyId wall = add_box(w, {0, 2, -20}, {5, 5, 0.25f});
+    RayHit h;
+    REQUIRE(w.ray_closest({{0, 2, 0}, {0, 0, -1}, 100}, h));
+    CHECK(h.body == wall);
+    REQUIRE(w.ray_closest({{0, 2, 0}, {0, 0, -1}, 100}, h, {layer::kTrigger}));
+    CHECK(h.body == pickup);
+    REQUIRE(w.ray_closest({{0, 2, -7.5f}, {0, 0, -1}, 100}, h, {layer::kTrigger}));
+    CHECK(h.body == sensor);
+    std::vector<BodyId> overlaps;
+    CHECK(w.overlap_capsule({{0, 1.5f, -5}, {0, 2.5f, -5}}, 1.0f, overlaps) == 0);
+    CHECK(w.overlap_capsule({{0, 1.5f, -5}, {0, 2.5f, -5}}, 1.0f, overlaps, layer::kTrigger) == 1);
+    ks::log::Capture capture;
+    w.character(wall).movement.velocity = {1, 2, 3}; // not a character: a warning, no crash
+    w.remove(pickup);
+    CHECK_FALSE(w.character(pickup).grounded);
+    CHECK(capture.text().find("not a live character") != std::string::npos);
 }
