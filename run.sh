@@ -2,6 +2,7 @@
 # Killswitch: one entry point for players, designers and CI.
 #   ./run.sh play     build (Release) and start the game
 #   ./run.sh test     build and run every test (under xvfb-run when there is no display)
+#                     (./run.sh test --sanitize: the same in an ASan+UBSan build)
 #   ./run.sh editor   build and start the level editor
 #   ./run.sh bench    build and run the benchmarks (tables on stdout, plots in docs/bench/)
 # Extra arguments after the command go to the program, e.g. ./run.sh play --level levels/dojo.json
@@ -77,10 +78,16 @@ case "$cmd" in
         ;;
     test)
         install_missing_packages
-        build release
-        log "running tests"
-        export KS_TEST_TIMEOUT_SCALE=1
-        with_display ctest --test-dir build --output-on-failure -j "$(jobs)" "$@"
+        preset=release
+        if [ "${1:-}" = "--sanitize" ]; then # the same suite in an AddressSanitizer + UBSan build (build-asan/)
+            preset=asan
+            shift
+            export ASAN_OPTIONS="${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=0}"
+            export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
+        fi
+        build "$preset"
+        log "running tests ($preset)"
+        with_display ctest --test-dir "$(preset_dir "$preset")" --output-on-failure -j "$(jobs)" "$@"
         ;;
     bench)
         install_missing_packages
@@ -89,7 +96,7 @@ case "$cmd" in
         with_display ./build/bin/ks_bench "${@:-all}"
         ;;
     ""|-h|--help|help)
-        sed -n '2,7p' "$0" | sed 's/^# \{0,1\}//'
+        sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//'
         ;;
     *)
         die "unknown command '$cmd' (use play, test, editor or bench)"
