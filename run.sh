@@ -38,7 +38,7 @@ install_missing_packages() {
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 }
 
-jobs() { nproc 2>/dev/null || echo 2; }
+njobs() { nproc 2>/dev/null || echo 2; }
 
 build() { # build PRESET
     local preset="$1"
@@ -47,7 +47,7 @@ build() { # build PRESET
         cmake --preset "$preset" >/dev/null
     fi
     log "building ($preset)"
-    cmake --build --preset "$preset" -j "$(jobs)"
+    cmake --build --preset "$preset" -j "$(njobs)"
 }
 
 preset_dir() {
@@ -87,7 +87,7 @@ case "$cmd" in
         fi
         build "$preset"
         log "running tests ($preset)"
-        with_display ctest --test-dir "$(preset_dir "$preset")" --output-on-failure -j "$(jobs)" "$@"
+        with_display ctest --test-dir "$(preset_dir "$preset")" --output-on-failure -j "$(njobs)" "$@"
         ;;
     bench)
         install_missing_packages
