@@ -2,7 +2,8 @@
 // DIR/textures and DIR/models. Deterministic: the same binary always writes the same bytes, so the
 // committed assets/ can be checked against a fresh run.
 //
-//   ks_assetgen --out DIR [--only NAME] [--contact-sheet FILE.png] [--preview FOLDER] [--list]
+//   ks_assetgen --out DIR [--only NAME] [--contact-sheet FILE.png] [--preview FOLDER [--preview-size N]]
+//   [--list]
 #include "catalog.h"
 #include "contact_sheet.h"
 #include "preview.h"
@@ -24,7 +25,8 @@ int fail(const Error& e) {
 
 void usage() {
     std::printf(
-        "usage: ks_assetgen --out DIR [--only NAME] [--contact-sheet FILE.png] [--preview FOLDER] [--list]\n"
+        "usage: ks_assetgen --out DIR [--only NAME] [--contact-sheet FILE.png] [--preview FOLDER "
+        "[--preview-size N]] [--list]\n"
         "  writes DIR/textures/*.png and DIR/models/*.gltf|.bin; `--out assets` regenerates the committed "
         "files\n");
 }
@@ -33,10 +35,11 @@ void usage() {
 int main(int argc, char** argv) {
     auto cl = CommandLine::parse(argc, argv, {"list", "help"});
     if (!cl) return fail(cl.error());
-    const std::vector<std::string> known = {"out", "only", "contact-sheet", "preview", "list", "help"};
+    const std::vector<std::string> known = {"out",          "only", "contact-sheet", "preview",
+                                            "preview-size", "list", "help"};
     if (auto unknown = cl->unknown(known); !unknown.empty())
         return fail(Error("unknown option " + unknown.front(), Location{"command line"},
-                          "known: --out, --only, --contact-sheet, --preview, --list"));
+                          "known: --out, --only, --contact-sheet, --preview, --preview-size, --list"));
     if (cl->has("help")) {
         usage();
         return 0;
@@ -58,6 +61,9 @@ int main(int argc, char** argv) {
             return fail(Error("no asset named '" + only + "'", Location{"command line", 0, 0, "--only"},
                               "run ks_assetgen --list for the names"));
     }
+
+    const auto preview_size = cl->get_int("preview-size", 360, 64, 2048);
+    if (!preview_size) return fail(preview_size.error());
 
     auto font = Font::load(paths::asset("fonts/DejaVuSans-Bold.ttf"));
     if (!font) return fail(font.error());
@@ -83,6 +89,6 @@ int main(int argc, char** argv) {
     if (auto sheet = cl->get("contact-sheet"))
         if (auto r = write_contact_sheet(out, *sheet); !r) return fail(r.error());
     if (auto folder = cl->get("preview"))
-        if (auto r = write_previews(out, *folder); !r) return fail(r.error());
+        if (auto r = write_previews(out, *folder, *preview_size); !r) return fail(r.error());
     return 0;
 }

@@ -6,11 +6,14 @@
 
 namespace ks::assetgen {
 namespace {
-constexpr int kView = 360;
 
 struct Raster {
-    Image color{kView, kView, Color(0.2f, 0.22f, 0.25f, 1.0f)};
-    std::vector<float> depth = std::vector<float>(static_cast<size_t>(kView) * kView, -INFINITY);
+    explicit Raster(int size)
+        : size(size), color(size, size, Color(0.2f, 0.22f, 0.25f, 1.0f)),
+          depth(static_cast<size_t>(size) * size, -INFINITY) {}
+    int size;
+    Image color;
+    std::vector<float> depth;
 };
 
 struct ViewVertex {
@@ -43,6 +46,7 @@ void raster_triangle(Raster& r, const ViewVertex& a, const ViewVertex& b, const 
     const float area = (b.p.x - a.p.x) * (c.p.y - a.p.y) - (b.p.y - a.p.y) * (c.p.x - a.p.x);
     if (area >= 0.0f) return; // back face (y grows downward in the image, so front faces have negative area)
     const int x0 = std::max(0, static_cast<int>(std::floor(std::min({a.p.x, b.p.x, c.p.x}))));
+    const int kView = r.size;
     const int x1 = std::min(kView - 1, static_cast<int>(std::ceil(std::max({a.p.x, b.p.x, c.p.x}))));
     const int y0 = std::max(0, static_cast<int>(std::floor(std::min({a.p.y, b.p.y, c.p.y}))));
     const int y1 = std::min(kView - 1, static_cast<int>(std::ceil(std::max({a.p.y, b.p.y, c.p.y}))));
@@ -62,7 +66,7 @@ void raster_triangle(Raster& r, const ViewVertex& a, const ViewVertex& b, const 
         }
 }
 
-Image render_view(const Output& out, const Model& model, const glm::mat3& view) {
+Image render_view(const Output& out, const Model& model, const glm::mat3& view, int kView) {
     // Fit the model's bounds in this view.
     vec3 lo(INFINITY), hi(-INFINITY);
     for (size_t i = 0; i < model.nodes().size(); ++i) {
@@ -74,7 +78,7 @@ Image render_view(const Output& out, const Model& model, const glm::mat3& view) 
                 hi = glm::max(hi, p);
             }
     }
-    Raster r;
+    Raster r(kView);
     if (lo.x > hi.x) return r.color;
     const float scale = 0.9f * kView / std::max(hi.x - lo.x, hi.y - lo.y);
     const vec3 centre = (lo + hi) * 0.5f;
@@ -107,7 +111,7 @@ glm::mat3 look(float yaw, float pitch) {
 }
 } // namespace
 
-Result<void> write_previews(const Output& out, const std::filesystem::path& folder) {
+Result<void> write_previews(const Output& out, const std::filesystem::path& folder, int kView) {
     std::error_code ec;
     std::filesystem::create_directories(folder, ec);
     if (ec) return Error("cannot create the preview folder: " + ec.message(), Location{folder.string()});
@@ -116,7 +120,7 @@ Result<void> write_previews(const Output& out, const std::filesystem::path& fold
     for (const Model& model : out.models()) {
         Image sheet(kView * 4, kView);
         for (int v = 0; v < 4; ++v) {
-            const Image view = render_view(out, model, views[v]);
+            const Image view = render_view(out, model, views[v], kView);
             for (int y = 0; y < kView; ++y)
                 for (int x = 0; x < kView; ++x) sheet.at(v * kView + x, y) = view.at(x, y);
         }

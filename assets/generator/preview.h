@@ -6,6 +6,7 @@
 
 namespace ks::assetgen {
 
-Result<void> write_previews(const Output& out, const std::filesystem::path& folder);
+// Each view is `view_size` pixels square; the four sit side by side in <folder>/<model>.png.
+Result<void> write_previews(const Output& out, const std::filesystem::path& folder, int view_size = 360);
 
 } // namespace ks::assetgen

@@ -524,3 +524,39 @@ TEST_CASE("ks_assetgen rejects bad command lines with a clear message") {
     CHECK(fs::exists(scratch / "one" / "models" / "gas_cylinder.gltf"));
     CHECK_FALSE(fs::exists(scratch / "one" / "models" / "robot.gltf"));
 }
+
+TEST_CASE("ks_assetgen debug views: contact sheet and model previews") {
+    REQUIRE_MESSAGE(fs::exists(generator()), "build the ks_assetgen target first: " << generator());
+    ks::test::ScratchDir scratch;
+    const auto run =
+        ks::test::run_command(shell_quote(generator()) + " --out " + shell_quote(scratch / "out") +
+                              " --only pickups --contact-sheet " + shell_quote(scratch / "sheet.png") +
+                              " --preview " + shell_quote(scratch / "previews") + " --preview-size 100");
+    INFO(run.output);
+    REQUIRE(run.exit_code == 0);
+    // PNG width and height from the IHDR chunk (big-endian at bytes 16..23).
+    auto png_size = [](const fs::path& file) {
+        const std::string bytes = ks::test::read_file(file);
+        REQUIRE(bytes.size() > 24);
+        CHECK(bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0);
+        auto be32 = [&](size_t at) {
+            return (static_cast<unsigned>(static_cast<unsigned char>(bytes[at])) << 24) |
+                   (static_cast<unsigned>(static_cast<unsigned char>(bytes[at + 1])) << 16) |
+                   (static_cast<unsigned>(static_cast<unsigned char>(bytes[at + 2])) << 8) |
+                   static_cast<unsigned>(static_cast<unsigned char>(bytes[at + 3]));
+        };
+        return std::pair<unsigned, unsigned>(be32(16), be32(20));
+    };
+    // 12 pickup textures: 8 columns of 160 px, 2 rows of 178 px.
+    CHECK(png_size(scratch / "sheet.png") == std::pair<unsigned, unsigned>(1280, 356));
+    for (const char* model : {"pickup_health", "pickup_ammo", "pickup_shield"})
+        CHECK(png_size(scratch / "previews" / (std::string(model) + ".png")) ==
+              std::pair<unsigned, unsigned>(400, 100));
+
+    const auto bad =
+        ks::test::run_command(shell_quote(generator()) + " --out " + shell_quote(scratch / "out2") +
+                              " --preview " + shell_quote(scratch / "p") + " --preview-size 9");
+    CHECK(bad.exit_code == 1);
+    CHECK(bad.output.find("--preview-size must be a whole number from 64 to 2048") != std::string::npos);
+    CHECK_FALSE(fs::exists(scratch / "out2")); // refused before generating anything
+}
