@@ -5,10 +5,10 @@
 #include "core/log.h"
 #include "core/paths.h"
 
-#include <epoxy/gl.h>
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
+#include <epoxy/gl.h>
 #include <imgui.h>
 
 #include <cstdlib>
@@ -46,9 +46,12 @@ std::string no_display_message(const std::string& program) {
     return "No display found (DISPLAY is not set), so " + program +
            " cannot open a window.\n"
            "  On a desktop, run it from a terminal inside the graphical session.\n"
-           "  Without one, use a virtual display:  xvfb-run -s \"-screen 0 1280x720x24\" " + program +
+           "  Without one, use a virtual display:  xvfb-run -s \"-screen 0 1280x720x24\" " +
+           program +
            " ...\n"
-           "  or take a picture without looking:   " + program + " --screenshot out.png --frames 60 "
+           "  or take a picture without looking:   " +
+           program +
+           " --screenshot out.png --frames 60 "
            "(under xvfb-run).";
 }
 
@@ -83,14 +86,17 @@ Result<AppShell*> AppShell::create(const ShellConfig& config) {
     return shell;
 }
 
-void AppShell::destroy(AppShell* shell) { delete shell; }
+void AppShell::destroy(AppShell* shell) {
+    delete shell;
+}
 
 Result<void> AppShell::init(const ShellConfig& config) {
     config_ = config;
     if (!display_available()) return Error(no_display_message(config.title));
     glfwSetErrorCallback(glfw_error_callback);
     if (!glfwInit())
-        return Error("cannot initialise GLFW (is the X server reachable?)", Location{}, no_display_message(config.title));
+        return Error("cannot initialise GLFW (is the X server reachable?)", Location{},
+                     no_display_message(config.title));
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);

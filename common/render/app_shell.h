@@ -35,24 +35,24 @@ const std::vector<std::string>& shell_options();
 
 // The fonts loaded for menus and HUD (assets/fonts/), at sizes good for 720p and 1080p.
 struct Fonts {
-    ImFont* body = nullptr;   // ~18 px at 720p
-    ImFont* title = nullptr;  // ~48 px
-    ImFont* hud = nullptr;    // ~24 px bold
-    ImFont* mono = nullptr;   // ~15 px monospace (debug text)
+    ImFont* body = nullptr;  // ~18 px at 720p
+    ImFont* title = nullptr; // ~48 px
+    ImFont* hud = nullptr;   // ~24 px bold
+    ImFont* mono = nullptr;  // ~15 px monospace (debug text)
 };
 
 struct FrameInfo {
-    int width = 0, height = 0;  // framebuffer size in pixels
-    double frame_dt = 0.0;      // real (or, in screenshot mode, fixed 1/60 s) frame time
-    double alpha = 0.0;         // interpolation between the last two fixed steps
+    int width = 0, height = 0; // framebuffer size in pixels
+    double frame_dt = 0.0;     // real (or, in screenshot mode, fixed 1/60 s) frame time
+    double alpha = 0.0;        // interpolation between the last two fixed steps
     long long frame_index = 0;
 };
 
 struct ShellHooks {
-    std::function<void(double step)> fixed_update;     // called 0..n times per frame with the fixed step
-    std::function<void(const FrameInfo&)> render;       // draw the scene (GL)
-    std::function<void(const FrameInfo&)> imgui;        // build ImGui windows for this frame
-    std::function<bool()> wants_close;                  // return true to end the loop
+    std::function<void(double step)> fixed_update; // called 0..n times per frame with the fixed step
+    std::function<void(const FrameInfo&)> render;  // draw the scene (GL)
+    std::function<void(const FrameInfo&)> imgui;   // build ImGui windows for this frame
+    std::function<bool()> wants_close;             // return true to end the loop
 };
 
 // True when a window can be opened (an X11 or Wayland display is set).
@@ -61,7 +61,7 @@ bool display_available();
 std::string no_display_message(const std::string& program);
 
 class AppShell {
-public:
+  public:
     static Result<AppShell*> create(const ShellConfig& config); // owned by caller via destroy()
     static void destroy(AppShell* shell);
 
@@ -74,7 +74,7 @@ public:
     bool screenshot_mode() const { return !config_.screenshot_path.empty(); }
     std::string gl_renderer() const;
 
-private:
+  private:
     AppShell() = default;
     ~AppShell();
     Result<void> init(const ShellConfig& config);

@@ -1,0 +1,51 @@
+#include "render/asset_library.h"
+
+#include "core/log.h"
+
+namespace ks::render {
+
+namespace fs = std::filesystem;
+
+AssetLibrary::AssetLibrary(fs::path assets_root) : root_(std::move(assets_root)) {}
+
+const Model& AssetLibrary::model(const std::string& name_or_path) {
+    if (auto it = models_.find(name_or_path); it != models_.end()) return *it->second;
+    fs::path path(name_or_path);
+    bool is_path = path.has_extension();
+    if (!is_path) path = root_ / "models" / (name_or_path + ".gltf");
+    auto model = load_model(path, textures_, next_material_id_);
+    return *models_.emplace(name_or_path, std::move(model)).first->second;
+}
+
+const Material& AssetLibrary::surface(const std::string& name) {
+    if (auto it = surfaces_.find(name); it != surfaces_.end()) return *it->second;
+    auto mat = std::make_unique<Material>();
+    mat->name = name;
+    mat->id = next_material_id_++;
+    const fs::path dir = root_ / "textures";
+    auto optional = [&](const char* suffix, ColorSpace space) -> unsigned {
+        fs::path p = dir / (name + suffix);
+        std::error_code ec;
+        if (!fs::exists(p, ec)) return 0;
+        const Texture& t = textures_.get(p, space);
+        if (t.placeholder) mat->placeholder = true;
+        return t.id;
+    };
+    const Texture& base = textures_.get(dir / (name + "_basecolor.png"), ColorSpace::Srgb);
+    mat->base_map = base.id;
+    mat->placeholder = base.placeholder;
+    mat->normal_map = optional("_normal.png", ColorSpace::Linear);
+    mat->orm_map = optional("_orm.png", ColorSpace::Linear);
+    mat->height_map = mat->normal_map ? 0 : optional("_height.png", ColorSpace::Linear);
+    mat->emissive_map = optional("_emissive.png", ColorSpace::Srgb);
+    if (mat->emissive_map) mat->emissive_factor = Vec3(1.0f);
+    mat->metallic = 1.0f; // the ORM map's blue channel holds the metalness
+    mat->roughness = 1.0f;
+    if (!mat->orm_map) {
+        mat->metallic = 0.0f;
+        mat->roughness = 0.8f;
+    }
+    return *surfaces_.emplace(name, std::move(mat)).first->second;
+}
+
+} // namespace ks::render

@@ -1,0 +1,36 @@
+#pragma once
+// Models and surface materials by name, loaded once from assets/ and shared by every scene: model "robot"
+// is assets/models/robot.gltf; surface "concrete" is
+// assets/textures/concrete_{basecolor,normal,orm,height}.png.
+#include "render/material.h"
+#include "render/model.h"
+#include "render/texture_cache.h"
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+
+namespace ks::render {
+
+class AssetLibrary {
+  public:
+    explicit AssetLibrary(std::filesystem::path assets_root);
+
+    TextureCache& textures() { return textures_; }
+    // A model by name or by path (ending in .gltf/.glb/.obj); a placeholder cube when it cannot load.
+    const Model& model(const std::string& name_or_path);
+    // A level surface material; a missing base colour gives the placeholder (one warning).
+    const Material& surface(const std::string& name);
+    int next_material_id() { return next_material_id_++; }
+    const std::filesystem::path& root() const { return root_; }
+
+  private:
+    std::filesystem::path root_;
+    TextureCache textures_;
+    int next_material_id_ = 1;
+    std::map<std::string, std::unique_ptr<Model>> models_;
+    std::map<std::string, std::unique_ptr<Material>> surfaces_;
+};
+
+} // namespace ks::render

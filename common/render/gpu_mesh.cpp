@@ -1,0 +1,53 @@
+#include "render/gpu_mesh.h"
+
+#include <epoxy/gl.h>
+
+#include <cstddef>
+
+namespace ks::render {
+
+GpuMesh::GpuMesh(const MeshData& data)
+    : index_count_(static_cast<int>(data.indices.size())), bounds_(data.bounds()) {
+    glGenVertexArrays(1, &vao_);
+    glGenBuffers(1, &vbo_);
+    glGenBuffers(1, &ebo_);
+    glBindVertexArray(vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.vertices.size() * sizeof(Vertex)),
+                 data.vertices.data(), GL_STATIC_DRAW);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ebo_);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER,
+                 static_cast<GLsizeiptr>(data.indices.size() * sizeof(std::uint32_t)), data.indices.data(),
+                 GL_STATIC_DRAW);
+    auto attrib = [](GLuint index, GLint size, std::size_t offset) {
+        glEnableVertexAttribArray(index);
+        glVertexAttribPointer(index, size, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+                              reinterpret_cast<void*>(offset));
+    };
+    attrib(0, 3, offsetof(Vertex, position));
+    attrib(1, 3, offsetof(Vertex, normal));
+    attrib(2, 2, offsetof(Vertex, uv));
+    attrib(3, 4, offsetof(Vertex, tangent));
+    for (GLuint i = 4; i <= 8; ++i) {
+        glEnableVertexAttribArray(i);
+        glVertexAttribDivisor(i, 1);
+    }
+    glBindVertexArray(0);
+}
+
+GpuMesh::~GpuMesh() {
+    if (vao_) glDeleteVertexArrays(1, &vao_);
+    if (vbo_) glDeleteBuffers(1, &vbo_);
+    if (ebo_) glDeleteBuffers(1, &ebo_);
+}
+
+void GpuMesh::bind_instances(unsigned instance_buffer, std::size_t byte_offset) const {
+    glBindBuffer(GL_ARRAY_BUFFER, instance_buffer);
+    for (GLuint i = 0; i < 4; ++i)
+        glVertexAttribPointer(4 + i, 4, GL_FLOAT, GL_FALSE, sizeof(InstanceData),
+                              reinterpret_cast<void*>(byte_offset + sizeof(Vec4) * i));
+    glVertexAttribPointer(8, 4, GL_FLOAT, GL_FALSE, sizeof(InstanceData),
+                          reinterpret_cast<void*>(byte_offset + offsetof(InstanceData, params)));
+}
+
+} // namespace ks::render

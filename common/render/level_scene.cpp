@@ -1,0 +1,209 @@
+#include "render/level_scene.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+
+namespace ks::render {
+
+using level::EntityType;
+
+Vec3 to_linear(const level::Color& c) {
+    auto f = [](float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); };
+    return Vec3(f(c.r), f(c.g), f(c.b));
+}
+
+Environment environment_from_settings(const level::Settings& s) {
+    Environment env;
+    env.sky_color = to_linear(s.ambient_color) * s.ambient_intensity;
+    env.ground_color = env.sky_color * 0.6f;
+    Vec3 dir = s.sun_direction;
+    env.sun_direction = glm::length(dir) > 1e-6f && is_finite(dir) ? glm::normalize(dir) : Vec3(0, -1, 0);
+    env.sun_color = to_linear(s.sun_color) * s.sun_intensity;
+    env.fog_color = to_linear(s.fog_color);
+    env.fog_density = s.fog_density;
+    return env;
+}
+
+Camera player_start_camera(const level::Level& level, float aspect) {
+    Camera cam;
+    cam.position = level.player_start.position + Vec3(0.0f, 3.0f, 0.0f);
+    cam.yaw = radians(level.player_start.yaw);
+    cam.fov_y = radians(45.0f); // the reference's field of view
+    cam.aspect = aspect;
+    return cam;
+}
+
+namespace {
+Mat4 entity_matrix(const level::Entity& e) {
+    return glm::translate(Mat4(1.0f), e.position) * glm::mat4_cast(e.orientation());
+}
+} // namespace
+
+MeshData build_surface_mesh(const level::Entity& e) {
+    MeshData mesh;
+    const Mat4 m = entity_matrix(e);
+    if (const auto* wall = e.try_as<level::WallProps>()) {
+        append_box(mesh, Vec3(0.0f, wall->size.y * 0.5f, 0.0f), wall->size, m, wall->texture_scale);
+    } else if (const auto* floor = e.try_as<level::FloorProps>()) {
+        float y = floor->ceiling ? floor->thickness * 0.5f : -floor->thickness * 0.5f;
+        append_box(mesh, Vec3(0.0f, y, 0.0f), Vec3(floor->size.x, floor->thickness, floor->size.y), m,
+                   floor->texture_scale);
+    } else if (const auto* stair = e.try_as<level::StairProps>()) {
+        append_stairs(mesh, stair->size, stair->steps, m, 4.0f);
+    }
+    return mesh;
+}
+
+LevelScene::Prop LevelScene::make_prop(const level::Entity& e, const Model* model, const Mat4& root) {
+    Prop p;
+    p.entity_id = e.id;
+    p.type = e.type();
+    p.model = model;
+    p.root = root;
+    return p;
+}
+
+std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLibrary& assets) {
+    auto scene = std::unique_ptr<LevelScene>(new LevelScene());
+    scene->environment_ = environment_from_settings(level.settings);
+    for (const auto& e : level.entities) {
+        const Mat4 m = entity_matrix(e);
+        switch (e.type()) {
+        case EntityType::Wall:
+        case EntityType::Floor:
+        case EntityType::Stair: {
+            MeshData data = build_surface_mesh(e);
+            if (data.vertices.empty()) break;
+            std::string texture = e.try_as<level::WallProps>()    ? e.as<level::WallProps>().texture
+                                  : e.try_as<level::FloorProps>() ? e.as<level::FloorProps>().texture
+                                                                  : e.as<level::StairProps>().texture;
+            // Ceilings cast no sun shadow: the sun stands for the simulator's overhead light, as in the
+            // reference.
+            bool ceiling = e.try_as<level::FloorProps>() && e.as<level::FloorProps>().ceiling;
+            scene->bounds_ = merge(scene->bounds_, data.bounds());
+            scene->surfaces_.push_back({std::make_unique<GpuMesh>(data), &assets.surface(texture), !ceiling});
+            break;
+        }
+        case EntityType::Door: {
+            const auto& d = e.as<level::DoorProps>();
+            Prop p = make_prop(e, &assets.model("door"),
+                               m * glm::scale(Mat4(1.0f), Vec3(d.width / 5.0f, d.height / 5.0f, 1.0f)));
+            p.door_open = d.open ? 1.0f : 0.0f;
+            p.door_offset = d.open_offset / std::max(d.width / 5.0f, 1e-3f);
+            scene->props_.push_back(p);
+            break;
+        }
+        case EntityType::FloorLight: {
+            const auto& f = e.as<level::FloorLightProps>();
+            float s = f.height / 4.0f;
+            Prop p = make_prop(e, &assets.model("floor_light"), m * glm::scale(Mat4(1.0f), Vec3(s)));
+            p.light_on = f.light.on;
+            p.light.type = Light::Type::Spot;
+            p.light.color = to_linear(f.light.color);
+            p.light.intensity = f.light.intensity;
+            p.light.range = f.light.range;
+            p.light.cos_outer = std::cos(radians(f.cone_angle));
+            p.light.cos_inner = std::cos(radians(f.cone_angle * 0.7f));
+            std::vector<Mat4> world;
+            p.model->node_transforms(p.root, p.model->rest_pose(), world);
+            int origin = p.model->find_node("light_origin"), head = p.model->find_node("lamp_head");
+            p.light.position =
+                origin >= 0 ? Vec3(world[size_t(origin)][3]) : Vec3(m * Vec4(0, f.height * 0.95f, 0, 1));
+            Mat4 aim = head >= 0 ? world[size_t(head)] : (origin >= 0 ? world[size_t(origin)] : m);
+            p.light.direction = glm::normalize(-Vec3(aim[2]));
+            scene->props_.push_back(p);
+            break;
+        }
+        case EntityType::TopLight: {
+            const auto& t = e.as<level::TopLightProps>();
+            Prop p = make_prop(e, &assets.model("top_light"),
+                               m * glm::scale(Mat4(1.0f), Vec3(std::max(t.hang, 0.1f) / 2.0f)));
+            p.light_on = t.light.on;
+            p.light.type = Light::Type::Point;
+            p.light.color = to_linear(t.light.color);
+            p.light.intensity = t.light.intensity;
+            p.light.range = t.light.range;
+            p.light.position = e.position - Vec3(0.0f, t.hang, 0.0f);
+            scene->props_.push_back(p);
+            break;
+        }
+        case EntityType::Robot:
+            scene->props_.push_back(make_prop(e, &assets.model("robot"), m));
+            break;
+        case EntityType::Pickup: {
+            const auto& k = e.as<level::PickupProps>();
+            Mat4 lifted = glm::translate(Mat4(1.0f), e.position + Vec3(0.0f, 0.4f, 0.0f)) *
+                          glm::mat4_cast(e.orientation());
+            scene->props_.push_back(make_prop(e, &assets.model("pickup_" + k.kind.value), lifted));
+            break;
+        }
+        case EntityType::GasCylinder: {
+            const auto& g = e.as<level::GasCylinderProps>();
+            Vec3 s(g.radius / 0.5f, g.height / 2.0f, g.radius / 0.5f);
+            scene->props_.push_back(
+                make_prop(e, &assets.model("gas_cylinder"), m * glm::scale(Mat4(1.0f), s)));
+            break;
+        }
+        case EntityType::ControlPanel: {
+            const auto& c = e.as<level::ControlPanelProps>();
+            Vec3 s = c.size / Vec3(2.94f, 4.0f, 5.34f);
+            scene->props_.push_back(
+                make_prop(e, &assets.model("control_panel"), m * glm::scale(Mat4(1.0f), s)));
+            break;
+        }
+        case EntityType::Count:
+            break;
+        }
+    }
+    for (const auto& p : scene->props_)
+        scene->bounds_ = merge(scene->bounds_, transform_aabb(p.model->bounds, p.root));
+    if (!scene->bounds_.valid()) scene->bounds_ = {Vec3(-1.0f), Vec3(1.0f)};
+    return scene;
+}
+
+void LevelScene::set_light_on(int id, bool on) {
+    for (auto& p : props_)
+        if (p.entity_id == id) p.light_on = on;
+}
+
+void LevelScene::set_door_open(int id, float fraction) {
+    for (auto& p : props_)
+        if (p.entity_id == id) p.door_open = std::clamp(is_finite(fraction) ? fraction : 0.0f, 0.0f, 1.0f);
+}
+
+void LevelScene::emit(std::vector<MeshInstance>& instances, std::vector<Light>& lights) {
+    instances.clear();
+    lights.clear();
+    for (const auto& s : surfaces_) {
+        MeshInstance inst;
+        inst.mesh = s.mesh.get();
+        inst.material = s.material;
+        inst.casts_shadow = s.casts_shadow;
+        instances.push_back(inst);
+    }
+    for (auto& p : props_) {
+        const bool is_light = p.type == EntityType::FloorLight || p.type == EntityType::TopLight;
+        if (p.type == EntityType::Door) {
+            // Slide the leaves: door_l toward +x, door_r toward -x (the asset convention).
+            if (pose_.local.size() != p.model->nodes.size()) pose_ = p.model->rest_pose();
+            for (size_t i = 0; i < p.model->nodes.size(); ++i) pose_.local[i] = p.model->nodes[i].local;
+            int l = p.model->find_node("door_l"), r = p.model->find_node("door_r");
+            float shift = p.door_open * p.door_offset;
+            if (l >= 0)
+                pose_.local[size_t(l)] =
+                    glm::translate(Mat4(1.0f), Vec3(shift, 0, 0)) * pose_.local[size_t(l)];
+            if (r >= 0)
+                pose_.local[size_t(r)] =
+                    glm::translate(Mat4(1.0f), Vec3(-shift, 0, 0)) * pose_.local[size_t(r)];
+            p.model->emit(p.root, pose_, scratch_, instances);
+        } else {
+            // Light fixtures glow with their light; they cast no sun shadow (thin stands, lamp heads).
+            p.model->emit(p.root, scratch_, instances, is_light ? (p.light_on ? 1.5f : 0.0f) : 1.0f,
+                          !is_light);
+        }
+        if (is_light && p.light_on) lights.push_back(p.light);
+    }
+}
+
+} // namespace ks::render

@@ -1,0 +1,60 @@
+#pragma once
+// Turns a ks::level::Level into what the SceneRenderer draws: level geometry (walls, floors, ceilings,
+// stairs) baked into world-space meshes with box-mapped UVs, props as model instances (doors, lights,
+// robots, pickups, cylinders, the control panel) and the lights. Door openings and light switches are
+// state the game sets; emit() writes the current frame's instances and lights into reused vectors.
+#include "level/level.h"
+#include "render/asset_library.h"
+#include "render/gpu_mesh.h"
+#include "render/scene.h"
+
+#include <memory>
+#include <vector>
+
+namespace ks::render {
+
+// Per-axis surface geometry for one level entity, in world space (exposed for tests: no GL needed).
+MeshData build_surface_mesh(const level::Entity& entity);
+// Linear colour from a level's sRGB colour.
+Vec3 to_linear(const level::Color& c);
+Environment environment_from_settings(const level::Settings& settings);
+// The player's eye at the level start: feet + 3 (the reference's eye height), looking along the start yaw.
+Camera player_start_camera(const level::Level& level, float aspect);
+
+class LevelScene {
+  public:
+    static std::unique_ptr<LevelScene> build(const level::Level& level, AssetLibrary& assets);
+
+    void set_light_on(int entity_id, bool on);
+    void set_door_open(int entity_id, float fraction); // 0 closed .. 1 open
+    // Clears and fills `instances` and `lights` for the current state.
+    void emit(std::vector<MeshInstance>& instances, std::vector<Light>& lights);
+    const Environment& environment() const { return environment_; }
+    const Aabb& bounds() const { return bounds_; }
+    int surface_count() const { return static_cast<int>(surfaces_.size()); }
+
+  private:
+    struct Surface {
+        std::unique_ptr<GpuMesh> mesh;
+        const Material* material;
+        bool casts_shadow;
+    };
+    struct Prop {
+        int entity_id = 0;
+        level::EntityType type = level::EntityType::Wall;
+        const Model* model = nullptr;
+        Mat4 root{1.0f};
+        bool light_on = true;
+        float door_open = 0.0f, door_offset = 2.0f;
+        Light light; // for floor/top lights
+    };
+    static Prop make_prop(const level::Entity& e, const Model* model, const Mat4& root);
+    std::vector<Surface> surfaces_;
+    std::vector<Prop> props_;
+    Environment environment_;
+    Aabb bounds_ = empty_aabb();
+    std::vector<Mat4> scratch_;
+    ModelPose pose_;
+};
+
+} // namespace ks::render

@@ -1,0 +1,21 @@
+#pragma once
+// A metallic-roughness material (glTF's model). Maps left at 0 are absent; the shader then uses the factors.
+#include "core/math.h"
+
+#include <string>
+
+namespace ks::render {
+
+struct Material {
+    std::string name;
+    Vec4 base_factor{1.0f};     // linear rgb, alpha
+    Vec3 emissive_factor{0.0f}; // linear
+    float metallic = 0.0f;
+    float roughness = 1.0f;
+    float bump_strength = 0.02f; // height map scale in world units, used when there is no normal map
+    unsigned base_map = 0, normal_map = 0, orm_map = 0, emissive_map = 0, height_map = 0;
+    bool placeholder = false; // some map failed to load (magenta checker)
+    int id = 0;               // unique per material, the renderer's sort key
+};
+
+} // namespace ks::render

@@ -1,0 +1,49 @@
+#pragma once
+// What the game and the editor hand the SceneRenderer each frame: mesh instances, lights, the environment
+// (ambient, sun, fog) and a camera. Plain data, filled into reused vectors (no per-frame allocation).
+#include "render/camera.h"
+
+namespace ks::render {
+
+class GpuMesh;
+struct Material;
+
+struct MeshInstance {
+    const GpuMesh* mesh = nullptr;
+    const Material* material = nullptr;
+    Mat4 world{1.0f};
+    float emissive_scale = 1.0f; // follows a light's on/off state for `light_emissive` lenses
+    bool casts_shadow = true;
+};
+
+struct Light {
+    enum class Type { Point, Spot } type = Type::Point;
+    Vec3 position{0.0f};
+    Vec3 direction{0.0f, -1.0f, 0.0f}; // spot axis
+    Vec3 color{1.0f};                  // linear rgb
+    float intensity = 1.0f;
+    float range = 24.0f;
+    float cos_outer = 0.8f; // spot cone (cosines of half-angles)
+    float cos_inner = 0.9f;
+};
+
+struct Environment {
+    Vec3 sky_color{0.2f};                    // linear, times intensity: the upper hemisphere ambient
+    Vec3 ground_color{0.1f};                 // lower hemisphere
+    Vec3 sun_direction{-0.3f, -1.0f, -0.2f}; // the direction sunlight travels
+    Vec3 sun_color{0.1f};                    // linear, times intensity
+    Vec3 fog_color{0.0f};                    // linear
+    float fog_density = 0.0f;
+    float exposure = 1.0f;
+};
+
+struct FrameStats {
+    int draw_calls = 0;
+    long long triangles = 0;
+    int instances_drawn = 0;
+    int instances_culled = 0;
+    int lights_in_view = 0;
+    bool shadow_rendered = false;
+};
+
+} // namespace ks::render

@@ -1,0 +1,562 @@
+#include "render/scene_renderer.h"
+
+#include "core/log.h"
+#include "core/paths.h"
+#include "render/gpu_mesh.h"
+#include "render/material.h"
+#include "render/shaders.h"
+#include "render/texture_cache.h"
+
+#include <epoxy/gl.h>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <bit>
+#include <cstring>
+
+namespace ks::render {
+
+int default_msaa_for(const std::string& gl_renderer) {
+    for (const char* soft : {"llvmpipe", "softpipe", "SwiftShader", "Software Rasterizer"})
+        if (gl_renderer.find(soft) != std::string::npos) return 0;
+    return 4;
+}
+
+namespace {
+enum TextureUnit { kBase = 0, kNormal, kOrm, kEmissive, kHeight, kShadow };
+constexpr int kMaxLightsInView = 32;     // one bit each in a draw's light mask
+constexpr float kLegacyLightScale = kPi; // three.js legacy light units (see pbr.frag)
+} // namespace
+
+Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(TextureCache& textures,
+                                                             RendererSettings settings) {
+    std::unique_ptr<SceneRenderer> r(new SceneRenderer(textures, settings));
+    if (auto ok = r->init(); !ok) return ok.error();
+    return r;
+}
+
+Result<void> SceneRenderer::init() {
+    auto build = [](const ProgramSources& p, ShaderProgram& out) -> Result<void> {
+        auto program = ShaderProgram::build(p.vertex, p.fragment);
+        if (!program) return program.error();
+        out = std::move(*program);
+        return ok();
+    };
+    for (auto [src, dst] : {std::pair{&pbr_program(), &pbr_}, std::pair{&shadow_program(), &shadow_},
+                            std::pair{&particle_program(), &particle_}, std::pair{&line_program(), &line_}})
+        if (auto r = build(*src, *dst); !r) return r.error();
+
+    pbr_.use();
+    glUniform1i(pbr_.location("u_base_map"), kBase);
+    glUniform1i(pbr_.location("u_normal_map"), kNormal);
+    glUniform1i(pbr_.location("u_orm_map"), kOrm);
+    glUniform1i(pbr_.location("u_emissive_map"), kEmissive);
+    glUniform1i(pbr_.location("u_height_map"), kHeight);
+    glUniform1i(pbr_.location("u_shadow_map"), kShadow);
+    particle_.use();
+    glUniform1i(particle_.location("u_sprite"), 0);
+
+    glGenBuffers(1, &instance_buffer_);
+
+    // Particles: a unit quad (per vertex) plus a per-particle stream.
+    const float quad[] = {-0.5f, -0.5f, 0.5f, -0.5f, 0.5f, 0.5f, -0.5f, -0.5f, 0.5f, 0.5f, -0.5f, 0.5f};
+    glGenVertexArrays(1, &particle_vao_);
+    glGenBuffers(1, &particle_quad_);
+    glGenBuffers(1, &particle_buffer_);
+    glBindVertexArray(particle_vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, particle_quad_);
+    glBufferData(GL_ARRAY_BUFFER, sizeof(quad), quad, GL_STATIC_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glBindBuffer(GL_ARRAY_BUFFER, particle_buffer_);
+    for (GLuint i = 1; i <= 3; ++i) {
+        glEnableVertexAttribArray(i);
+        glVertexAttribDivisor(i, 1);
+    }
+    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(ParticleVertex), nullptr);
+    glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, sizeof(ParticleVertex),
+                          reinterpret_cast<void*>(sizeof(Vec4)));
+    glVertexAttribPointer(3, 1, GL_FLOAT, GL_FALSE, sizeof(ParticleVertex),
+                          reinterpret_cast<void*>(2 * sizeof(Vec4)));
+
+    glGenVertexArrays(1, &line_vao_);
+    glGenBuffers(1, &line_buffer_);
+    glBindVertexArray(line_vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, line_buffer_);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(DebugVertex), nullptr);
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(DebugVertex),
+                          reinterpret_cast<void*>(sizeof(Vec3)));
+    glBindVertexArray(0);
+
+    if (settings_.shadows) {
+        settings_.shadow_map_size = std::clamp(settings_.shadow_map_size, 256, 8192);
+        glGenTextures(1, &shadow_texture_);
+        glBindTexture(GL_TEXTURE_2D, shadow_texture_);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, settings_.shadow_map_size,
+                     settings_.shadow_map_size, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+        // Hardware comparison with linear filtering: 2x2 PCF for the price of one fetch.
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+        glGenFramebuffers(1, &shadow_fbo_);
+        glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo_);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, shadow_texture_, 0);
+        glDrawBuffer(GL_NONE);
+        glReadBuffer(GL_NONE);
+        GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        if (status != GL_FRAMEBUFFER_COMPLETE) {
+            log::warn("shadow map framebuffer incomplete (status ", status,
+                      "); rendering without sun shadows");
+            settings_.shadows = false;
+        }
+    }
+    return ok();
+}
+
+SceneRenderer::~SceneRenderer() {
+    glDeleteBuffers(1, &instance_buffer_);
+    glDeleteBuffers(1, &particle_quad_);
+    glDeleteBuffers(1, &particle_buffer_);
+    glDeleteBuffers(1, &line_buffer_);
+    glDeleteVertexArrays(1, &particle_vao_);
+    glDeleteVertexArrays(1, &line_vao_);
+    if (shadow_fbo_) glDeleteFramebuffers(1, &shadow_fbo_);
+    if (shadow_texture_) glDeleteTextures(1, &shadow_texture_);
+    if (msaa_fbo_) glDeleteFramebuffers(1, &msaa_fbo_);
+    if (msaa_color_) glDeleteRenderbuffers(1, &msaa_color_);
+    if (msaa_depth_) glDeleteRenderbuffers(1, &msaa_depth_);
+}
+
+std::uint64_t SceneRenderer::shadow_caster_hash(const std::vector<MeshInstance>& instances) const {
+    // FNV-1a over what decides the shadow map: which meshes cast and where they are, plus the sun.
+    std::uint64_t h = 1469598103934665603ULL;
+    auto mix = [&h](const void* data, size_t size) {
+        auto* bytes = static_cast<const unsigned char*>(data);
+        for (size_t i = 0; i < size; ++i) h = (h ^ bytes[i]) * 1099511628211ULL;
+    };
+    for (const auto& inst : instances) {
+        if (!inst.casts_shadow) continue;
+        mix(&inst.mesh, sizeof(inst.mesh));
+        mix(glm::value_ptr(inst.world), sizeof(Mat4));
+    }
+    return h | 1; // never 0, which means "invalid"
+}
+
+void SceneRenderer::pick_lights(const SceneFrame& frame, FrameStats& stats) {
+    lights_in_view_.clear();
+    if (!frame.lights) return;
+    Frustum frustum(frame.camera.projection() * frame.camera.view());
+    for (size_t i = 0; i < frame.lights->size() && lights_in_view_.size() < kMaxLightsInView; ++i) {
+        const Light& l = (*frame.lights)[i];
+        if (l.intensity <= 0.0f || l.range <= 0.0f) continue;
+        if (frustum.intersects_sphere(l.position, l.range)) lights_in_view_.push_back(static_cast<int>(i));
+    }
+    stats.lights_in_view = static_cast<int>(lights_in_view_.size());
+}
+
+namespace {
+float distance_to_box(const Vec3& p, const Aabb& b) {
+    Vec3 d = glm::max(glm::max(b.min - p, p - b.max), Vec3(0.0f));
+    return glm::length(d);
+}
+} // namespace
+
+void SceneRenderer::cull_and_batch(const SceneFrame& frame, FrameStats& stats) {
+    visible_.clear();
+    batches_.clear();
+    instance_data_.clear();
+    const Vec3 eye = frame.camera.position;
+    const bool view_model_pass = !view_world_.empty();
+    const std::vector<MeshInstance>& source = view_model_pass ? view_world_ : *frame.instances;
+    Frustum frustum(frame.camera.projection() * frame.camera.view());
+    for (const auto& inst : source) {
+        if (!inst.mesh || !inst.material) continue;
+        Aabb box = transform_aabb(inst.mesh->bounds(), inst.world);
+        if (!view_model_pass && !frustum.intersects(box)) {
+            ++stats.instances_culled;
+            continue;
+        }
+        // The lights whose range reaches this box; keep the nearest kMaxLightsPerDraw.
+        std::uint32_t mask = 0;
+        float nearest[kMaxLightsPerDraw];
+        int count = 0;
+        int slot_of[kMaxLightsPerDraw];
+        for (size_t k = 0; k < lights_in_view_.size(); ++k) {
+            const Light& l = (*frame.lights)[static_cast<size_t>(lights_in_view_[k])];
+            float d = distance_to_box(l.position, box);
+            if (d >= l.range) continue;
+            if (count < kMaxLightsPerDraw) {
+                nearest[count] = d;
+                slot_of[count++] = static_cast<int>(k);
+                mask |= 1u << k;
+            } else {
+                int worst = static_cast<int>(std::max_element(nearest, nearest + count) - nearest);
+                if (d < nearest[worst]) {
+                    mask &= ~(1u << slot_of[worst]);
+                    nearest[worst] = d;
+                    slot_of[worst] = static_cast<int>(k);
+                    mask |= 1u << k;
+                }
+            }
+        }
+        visible_.push_back({&inst, distance_to_box(eye, box), mask, box});
+    }
+    // Group identical (material, mesh, lights) together; each group is drawn at its nearest member's
+    // distance.
+    std::sort(visible_.begin(), visible_.end(), [](const Visible& a, const Visible& b) {
+        if (a.instance->material->id != b.instance->material->id)
+            return a.instance->material->id < b.instance->material->id;
+        if (a.instance->mesh != b.instance->mesh) return a.instance->mesh < b.instance->mesh;
+        if (a.light_mask != b.light_mask) return a.light_mask < b.light_mask;
+        return a.distance < b.distance;
+    });
+    std::vector<float>& batch_distance = batch_distance_;
+    batch_distance.clear();
+    for (size_t i = 0; i < visible_.size();) {
+        size_t j = i;
+        const Visible& head = visible_[i];
+        while (j < visible_.size() && visible_[j].instance->material == head.instance->material &&
+               visible_[j].instance->mesh == head.instance->mesh && visible_[j].light_mask == head.light_mask)
+            ++j;
+        batches_.push_back({head.instance->mesh, head.instance->material, head.light_mask,
+                            static_cast<int>(i), static_cast<int>(j - i)});
+        batch_distance.push_back(head.distance);
+        i = j;
+    }
+    // Nearest batch first (front to back); ties keep material order.
+    order_.resize(batches_.size());
+    for (size_t i = 0; i < order_.size(); ++i) order_[i] = static_cast<int>(i);
+    std::stable_sort(order_.begin(), order_.end(),
+                     [&](int a, int b) { return batch_distance[a] < batch_distance[b]; });
+    sorted_batches_.clear();
+    for (int b : order_) {
+        Batch batch = batches_[static_cast<size_t>(b)];
+        int first = static_cast<int>(instance_data_.size());
+        for (int k = 0; k < batch.count; ++k) {
+            const MeshInstance& inst = *visible_[static_cast<size_t>(batch.first + k)].instance;
+            instance_data_.push_back({inst.world, Vec4(inst.emissive_scale, 0, 0, 0)});
+        }
+        batch.first = first;
+        sorted_batches_.push_back(batch);
+    }
+    batches_.swap(sorted_batches_);
+}
+
+void SceneRenderer::upload_instances() {
+    glBindBuffer(GL_ARRAY_BUFFER, instance_buffer_);
+    // Orphan then fill: the driver hands back fresh storage instead of waiting for last frame's draws.
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(instance_data_.capacity() * sizeof(InstanceData)),
+                 nullptr, GL_STREAM_DRAW);
+    glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(instance_data_.size() * sizeof(InstanceData)),
+                    instance_data_.data());
+}
+
+void SceneRenderer::render_shadows(const SceneFrame& frame, FrameStats& stats) {
+    if (!settings_.shadows || !frame.instances) return;
+    std::uint64_t h = shadow_caster_hash(*frame.instances);
+    Vec3 sun = glm::normalize(frame.environment.sun_direction);
+    std::uint32_t sun_bits[3];
+    std::memcpy(sun_bits, glm::value_ptr(sun), sizeof(sun_bits));
+    h ^= (std::uint64_t(sun_bits[0]) << 32) ^ sun_bits[1] ^ (std::uint64_t(sun_bits[2]) << 16);
+    h |= 1;
+    if (h == shadow_hash_) return;
+    shadow_hash_ = h;
+    stats.shadow_rendered = true;
+
+    // Fit an orthographic box around every caster, seen from the sun.
+    instance_data_.clear();
+    shadow_batches_.clear();
+    Aabb bounds = empty_aabb();
+    shadow_order_.clear();
+    for (const auto& inst : *frame.instances)
+        if (inst.casts_shadow && inst.mesh) {
+            bounds = merge(bounds, transform_aabb(inst.mesh->bounds(), inst.world));
+            shadow_order_.push_back(&inst);
+        }
+    if (!bounds.valid()) return;
+    std::sort(shadow_order_.begin(), shadow_order_.end(),
+              [](const MeshInstance* a, const MeshInstance* b) { return a->mesh < b->mesh; });
+    for (size_t i = 0; i < shadow_order_.size();) {
+        size_t j = i;
+        while (j < shadow_order_.size() && shadow_order_[j]->mesh == shadow_order_[i]->mesh) {
+            instance_data_.push_back({shadow_order_[j]->world, Vec4(0.0f)});
+            ++j;
+        }
+        shadow_batches_.push_back(
+            {shadow_order_[i]->mesh, nullptr, 0, static_cast<int>(i), static_cast<int>(j - i)});
+        i = j;
+    }
+    Vec3 center = bounds.center();
+    float radius = glm::length(bounds.extent()) + 1.0f;
+    Vec3 up = std::abs(sun.y) > 0.99f ? Vec3(0, 0, 1) : Vec3(0, 1, 0);
+    Mat4 light_view = glm::lookAt(center - sun * radius, center, up);
+    Aabb ls = transform_aabb(bounds, light_view);
+    Mat4 light_proj = glm::ortho(ls.min.x, ls.max.x, ls.min.y, ls.max.y, -ls.max.z - 1.0f, -ls.min.z + 1.0f);
+    Mat4 light_vp = light_proj * light_view;
+    const Mat4 bias(0.5f, 0, 0, 0, 0, 0.5f, 0, 0, 0, 0, 0.5f, 0, 0.5f, 0.5f, 0.5f, 1.0f);
+    shadow_matrix_ = bias * light_vp;
+
+    upload_instances();
+    GLint previous_fbo = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous_fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo_);
+    glViewport(0, 0, settings_.shadow_map_size, settings_.shadow_map_size);
+    glEnable(GL_DEPTH_TEST);
+    glDepthMask(GL_TRUE);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(2.0f, 4.0f);
+    glDisable(GL_CULL_FACE);
+    shadow_.use();
+    glUniformMatrix4fv(shadow_.location("u_light_view_projection"), 1, GL_FALSE, glm::value_ptr(light_vp));
+    for (const Batch& b : shadow_batches_) {
+        glBindVertexArray(b.mesh->vao());
+        b.mesh->bind_instances(instance_buffer_, static_cast<size_t>(b.first) * sizeof(InstanceData));
+        glDrawElementsInstanced(GL_TRIANGLES, b.mesh->index_count(), GL_UNSIGNED_INT, nullptr, b.count);
+        ++stats.draw_calls;
+        stats.triangles += static_cast<long long>(b.mesh->index_count() / 3) * b.count;
+    }
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previous_fbo));
+    glViewport(0, 0, frame.width, frame.height);
+}
+
+void SceneRenderer::draw_batches(const Mat4& view_projection, const Vec3& eye, const SceneFrame& frame,
+                                 FrameStats& stats, bool view_model) {
+    upload_instances();
+    pbr_.use();
+    const Environment& env = frame.environment;
+    glUniformMatrix4fv(pbr_.location("u_view_projection"), 1, GL_FALSE, glm::value_ptr(view_projection));
+    glUniformMatrix4fv(pbr_.location("u_shadow_matrix"), 1, GL_FALSE, glm::value_ptr(shadow_matrix_));
+    glUniform3fv(pbr_.location("u_camera_position"), 1, glm::value_ptr(eye));
+    Vec3 to_sun = -glm::normalize(env.sun_direction);
+    glUniform3fv(pbr_.location("u_sun_direction"), 1, glm::value_ptr(to_sun));
+    Vec3 sun = env.sun_color * kLegacyLightScale;
+    glUniform3fv(pbr_.location("u_sun_color"), 1, glm::value_ptr(sun));
+    glUniform3fv(pbr_.location("u_sky_color"), 1, glm::value_ptr(env.sky_color));
+    glUniform3fv(pbr_.location("u_ground_color"), 1, glm::value_ptr(env.ground_color));
+    glUniform3fv(pbr_.location("u_fog_color"), 1, glm::value_ptr(env.fog_color));
+    glUniform1f(pbr_.location("u_fog_density"), view_model ? 0.0f : env.fog_density);
+    glUniform1f(pbr_.location("u_exposure"), env.exposure);
+    glActiveTexture(GL_TEXTURE0 + kShadow);
+    glBindTexture(GL_TEXTURE_2D, shadow_texture_);
+    const bool shadows = settings_.shadows && shadow_texture_ != 0 && !view_model;
+
+    const Material* bound_material = nullptr;
+    std::uint32_t bound_mask = ~0u;
+    const GLint loc_flags = pbr_.location("u_map_flags");
+    const GLint loc_base = pbr_.location("u_base_factor"), loc_emissive = pbr_.location("u_emissive_factor");
+    const GLint loc_mr = pbr_.location("u_metal_rough"), loc_bump = pbr_.location("u_bump_strength");
+    const GLint loc_count = pbr_.location("u_light_count"), loc_pos = pbr_.location("u_light_position");
+    const GLint loc_color = pbr_.location("u_light_color"), loc_dir = pbr_.location("u_light_direction");
+    const GLint loc_inner = pbr_.location("u_light_inner");
+    Vec4 pos[kMaxLightsPerDraw], color[kMaxLightsPerDraw], dir[kMaxLightsPerDraw];
+    float inner[kMaxLightsPerDraw];
+    for (const Batch& b : batches_) {
+        if (b.material != bound_material) {
+            const Material& m = *b.material;
+            auto bind = [&](int unit, unsigned id, unsigned fallback) {
+                glActiveTexture(GL_TEXTURE0 + unit);
+                glBindTexture(GL_TEXTURE_2D, id ? id : fallback);
+            };
+            bind(kBase, m.base_map, textures_.white().id);
+            bind(kNormal, m.normal_map, textures_.flat_normal().id);
+            bind(kOrm, m.orm_map, textures_.white().id);
+            bind(kEmissive, m.emissive_map, textures_.white().id);
+            bind(kHeight, m.height_map, textures_.white().id);
+            int flags = (m.normal_map ? 1 : 0) | (m.orm_map ? 2 : 0) | (m.emissive_map ? 4 : 0) |
+                        (m.height_map ? 8 : 0) | (shadows ? 16 : 0);
+            glUniform1i(loc_flags, flags);
+            glUniform4fv(loc_base, 1, glm::value_ptr(m.base_factor));
+            glUniform3fv(loc_emissive, 1, glm::value_ptr(m.emissive_factor));
+            glUniform2f(loc_mr, m.metallic, m.roughness);
+            glUniform1f(loc_bump, m.bump_strength);
+            bound_material = b.material;
+        }
+        if (b.light_mask != bound_mask) {
+            int n = 0;
+            for (std::uint32_t bits = b.light_mask; bits && n < kMaxLightsPerDraw; bits &= bits - 1) {
+                int k = std::countr_zero(bits);
+                const Light& l =
+                    (*frame.lights)[static_cast<size_t>(lights_in_view_[static_cast<size_t>(k)])];
+                pos[n] = Vec4(l.position, l.range);
+                color[n] = Vec4(l.color * l.intensity * kLegacyLightScale,
+                                l.type == Light::Type::Spot ? 1.0f : 0.0f);
+                dir[n] = Vec4(glm::normalize(l.direction), l.cos_outer);
+                inner[n] = std::max(l.cos_inner, l.cos_outer + 1e-3f);
+                ++n;
+            }
+            glUniform1i(loc_count, n);
+            if (n > 0) {
+                glUniform4fv(loc_pos, n, glm::value_ptr(pos[0]));
+                glUniform4fv(loc_color, n, glm::value_ptr(color[0]));
+                glUniform4fv(loc_dir, n, glm::value_ptr(dir[0]));
+                glUniform1fv(loc_inner, n, inner);
+            }
+            bound_mask = b.light_mask;
+        }
+        glBindVertexArray(b.mesh->vao());
+        b.mesh->bind_instances(instance_buffer_, static_cast<size_t>(b.first) * sizeof(InstanceData));
+        glDrawElementsInstanced(GL_TRIANGLES, b.mesh->index_count(), GL_UNSIGNED_INT, nullptr, b.count);
+        ++stats.draw_calls;
+        stats.triangles += static_cast<long long>(b.mesh->index_count() / 3) * b.count;
+        stats.instances_drawn += b.count;
+    }
+}
+
+void SceneRenderer::draw_particles(const SceneFrame& frame, FrameStats& stats) {
+    if (!frame.particles || frame.particles->empty()) return;
+    particle_.use();
+    const Mat4 view = frame.camera.view(), proj = frame.camera.projection();
+    glUniformMatrix4fv(particle_.location("u_view"), 1, GL_FALSE, glm::value_ptr(view));
+    glUniformMatrix4fv(particle_.location("u_projection"), 1, GL_FALSE, glm::value_ptr(proj));
+    glEnable(GL_BLEND);
+    glDepthMask(GL_FALSE);
+    glBindVertexArray(particle_vao_);
+    glActiveTexture(GL_TEXTURE0);
+    for (const ParticleEmitter* emitter : *frame.particles) {
+        if (!emitter || emitter->particles().empty()) continue;
+        const auto& ps = emitter->particles();
+        particle_vertices_.clear();
+        particle_order_.clear();
+        for (size_t i = 0; i < ps.size(); ++i)
+            particle_order_.push_back({(view * Vec4(ps[i].position, 1.0f)).z, static_cast<int>(i)});
+        const bool alpha = emitter->params().blend == ParticleBlend::Alpha;
+        if (alpha) // back to front: most negative view-space z first
+            std::sort(particle_order_.begin(), particle_order_.end(),
+                      [](auto& a, auto& b) { return a.first < b.first; });
+        for (auto [z, i] : particle_order_) {
+            const Particle& p = ps[static_cast<size_t>(i)];
+            particle_vertices_.push_back({Vec4(p.position, p.current_size), p.color, p.rotation});
+        }
+        auto it = sprite_ids_.find(emitter->params().texture);
+        if (it == sprite_ids_.end()) {
+            const Texture& t = textures_.get(
+                paths::asset("textures/particles/" + emitter->params().texture + ".png"), ColorSpace::Srgb);
+            it = sprite_ids_.emplace(emitter->params().texture, t.id).first;
+        }
+        glBindTexture(GL_TEXTURE_2D, it->second);
+        glBlendFunc(GL_ONE, alpha ? GL_ONE_MINUS_SRC_ALPHA : GL_ONE);
+        glBindBuffer(GL_ARRAY_BUFFER, particle_buffer_);
+        glBufferData(GL_ARRAY_BUFFER,
+                     static_cast<GLsizeiptr>(particle_vertices_.size() * sizeof(ParticleVertex)),
+                     particle_vertices_.data(), GL_STREAM_DRAW);
+        glDrawArraysInstanced(GL_TRIANGLES, 0, 6, static_cast<GLsizei>(particle_vertices_.size()));
+        ++stats.draw_calls;
+        stats.triangles += 2 * static_cast<long long>(particle_vertices_.size());
+    }
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+}
+
+void SceneRenderer::draw_debug(const SceneFrame& frame, FrameStats& stats) {
+    if (!frame.debug || frame.debug->vertices().empty()) return;
+    const auto& v = frame.debug->vertices();
+    line_.use();
+    Mat4 vp = frame.camera.projection() * frame.camera.view();
+    glUniformMatrix4fv(line_.location("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
+    glBindVertexArray(line_vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, line_buffer_);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(v.size() * sizeof(DebugVertex)), v.data(),
+                 GL_STREAM_DRAW);
+    glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(v.size()));
+    ++stats.draw_calls;
+}
+
+void SceneRenderer::ensure_msaa_target(int width, int height) {
+    if (msaa_fbo_ && width == msaa_width_ && height == msaa_height_) return;
+    if (!msaa_fbo_) {
+        glGenFramebuffers(1, &msaa_fbo_);
+        glGenRenderbuffers(1, &msaa_color_);
+        glGenRenderbuffers(1, &msaa_depth_);
+    }
+    glBindRenderbuffer(GL_RENDERBUFFER, msaa_color_);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, settings_.msaa_samples, GL_RGBA8, width, height);
+    glBindRenderbuffer(GL_RENDERBUFFER, msaa_depth_);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, settings_.msaa_samples, GL_DEPTH_COMPONENT24, width,
+                                     height);
+    glBindFramebuffer(GL_FRAMEBUFFER, msaa_fbo_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msaa_color_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msaa_depth_);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        log::warn("MSAA ", settings_.msaa_samples, "x framebuffer unsupported; rendering without MSAA");
+        settings_.msaa_samples = 0;
+    }
+    msaa_width_ = width;
+    msaa_height_ = height;
+}
+
+FrameStats SceneRenderer::render(const SceneFrame& frame) {
+    FrameStats stats;
+    GLint target_fbo = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target_fbo);
+    render_shadows(frame, stats);
+    if (settings_.msaa_samples > 0) {
+        ensure_msaa_target(frame.width, frame.height);
+        if (settings_.msaa_samples > 0) glBindFramebuffer(GL_FRAMEBUFFER, msaa_fbo_);
+    }
+    glViewport(0, 0, frame.width, frame.height);
+    const Vec3 fog_srgb =
+        frame.environment.fog_color; // the clear shows the fog colour, encoded like the shader
+    auto encode = [](float c) {
+        return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+    };
+    glClearColor(encode(fog_srgb.r), encode(fog_srgb.g), encode(fog_srgb.b), 1.0f);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE); // level slabs are seen from both sides in the editor; models are not all closed
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+    if (frame.instances) {
+        pick_lights(frame, stats);
+        view_world_.clear();
+        cull_and_batch(frame, stats);
+        draw_batches(frame.camera.projection() * frame.camera.view(), frame.camera.position, frame, stats,
+                     false);
+    }
+    draw_particles(frame, stats);
+    draw_debug(frame, stats);
+
+    if (frame.view_model && !frame.view_model->instances.empty()) {
+        // The view model: camera space -> world (so scene lights reach it), its own near plane and a
+        // cleared depth buffer so it never sinks into walls.
+        const Mat4 camera_to_world = glm::inverse(frame.camera.view());
+        for (const auto& inst : frame.view_model->instances) {
+            MeshInstance w = inst;
+            w.world = camera_to_world * inst.world;
+            view_world_.push_back(w);
+        }
+        glClear(GL_DEPTH_BUFFER_BIT);
+        cull_and_batch(frame, stats);
+        Camera vm = frame.camera;
+        vm.near_plane = 0.01f;
+        vm.far_plane = 20.0f;
+        vm.fov_y = frame.view_model->fov_y;
+        draw_batches(vm.projection() * vm.view(), vm.position, frame, stats, true);
+        view_world_.clear();
+    }
+
+    if (settings_.msaa_samples > 0) {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, msaa_fbo_);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target_fbo));
+        glBlitFramebuffer(0, 0, frame.width, frame.height, 0, 0, frame.width, frame.height,
+                          GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target_fbo));
+    glBindVertexArray(0);
+    glUseProgram(0);
+    glActiveTexture(GL_TEXTURE0);
+    glDepthMask(GL_TRUE);
+    return stats;
+}
+
+} // namespace ks::render

@@ -1,0 +1,118 @@
+#pragma once
+// The forward renderer the runtime, the game and the editor call: frustum-culls mesh instances, groups
+// repeats into instanced draws (nearest first, so llvmpipe's early depth test skips hidden fragments),
+// picks the lights that reach each draw, renders the sun's shadow map only when a shadow caster moved,
+// then particles (additive, or alpha-blended back to front), debug lines and the first-person view model.
+#include "core/result.h"
+#include "render/debug_draw.h"
+#include "render/gpu_mesh.h"
+#include "render/particles.h"
+#include "render/scene.h"
+#include "render/shader_program.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace ks::render {
+
+class TextureCache;
+
+struct RendererSettings {
+    int msaa_samples = 0; // 0: draw straight into the bound framebuffer; 2/4/8: multisampled target
+    int shadow_map_size = 2048;
+    bool shadows = true;
+};
+
+// MSAA 4x on real GPUs, none on software rasterisers (llvmpipe, softpipe, SwiftShader), where every
+// sample is CPU time; see docs/rendering.md for the measurements behind this.
+int default_msaa_for(const std::string& gl_renderer);
+
+struct ViewModel {
+    std::vector<MeshInstance> instances; // in camera space (x right, y up, -z forward)
+    float fov_y = radians(50.0f);
+};
+
+struct SceneFrame {
+    Camera camera;
+    Environment environment;
+    const std::vector<MeshInstance>* instances = nullptr;
+    const std::vector<Light>* lights = nullptr;
+    const std::vector<const ParticleEmitter*>* particles = nullptr;
+    const DebugDraw* debug = nullptr;
+    const ViewModel* view_model = nullptr;
+    int width = 1280, height = 720;
+};
+
+class SceneRenderer {
+  public:
+    static Result<std::unique_ptr<SceneRenderer>> create(TextureCache& textures,
+                                                         RendererSettings settings = {});
+    ~SceneRenderer();
+
+    // Draws into the framebuffer bound now (viewport = frame.width x frame.height).
+    FrameStats render(const SceneFrame& frame);
+    void invalidate_shadows() { shadow_hash_ = 0; }
+    const RendererSettings& settings() const { return settings_; }
+
+  private:
+    SceneRenderer(TextureCache& textures, RendererSettings settings)
+        : textures_(textures), settings_(settings) {}
+    Result<void> init();
+    void cull_and_batch(const SceneFrame& frame, FrameStats& stats);
+    void pick_lights(const SceneFrame& frame, FrameStats& stats);
+    void render_shadows(const SceneFrame& frame, FrameStats& stats);
+    void draw_batches(const Mat4& view_projection, const Vec3& eye, const SceneFrame& frame,
+                      FrameStats& stats, bool view_model);
+    void draw_particles(const SceneFrame& frame, FrameStats& stats);
+    void draw_debug(const SceneFrame& frame, FrameStats& stats);
+    void ensure_msaa_target(int width, int height);
+    std::uint64_t shadow_caster_hash(const std::vector<MeshInstance>& instances) const;
+    void upload_instances();
+
+    TextureCache& textures_;
+    RendererSettings settings_;
+    ShaderProgram pbr_, shadow_, particle_, line_;
+    unsigned instance_buffer_ = 0, particle_vao_ = 0, particle_quad_ = 0, particle_buffer_ = 0;
+    unsigned line_vao_ = 0, line_buffer_ = 0;
+    unsigned shadow_fbo_ = 0, shadow_texture_ = 0;
+    unsigned msaa_fbo_ = 0, msaa_color_ = 0, msaa_depth_ = 0;
+    int msaa_width_ = 0, msaa_height_ = 0;
+    std::uint64_t shadow_hash_ = 0;
+    Mat4 shadow_matrix_{1.0f};
+
+    // Per-frame scratch, reused (capacity grows to the largest frame, then stays).
+    struct Visible {
+        const MeshInstance* instance;
+        float distance;
+        std::uint32_t light_mask;
+        Aabb bounds;
+    };
+    struct Batch {
+        const GpuMesh* mesh;
+        const Material* material;
+        std::uint32_t light_mask;
+        int first, count; // into instance_data_
+    };
+    std::vector<Visible> visible_;
+    std::vector<Batch> batches_;
+    std::vector<InstanceData> instance_data_;
+    std::vector<int> lights_in_view_; // indices into frame.lights
+    std::vector<MeshInstance> view_world_;
+    struct ParticleVertex {
+        Vec4 position_size;
+        Vec4 color;
+        float rotation;
+    };
+    std::vector<ParticleVertex> particle_vertices_;
+    std::vector<std::pair<float, int>> particle_order_;
+    std::vector<float> batch_distance_;
+    std::vector<int> order_;
+    std::vector<Batch> sorted_batches_, shadow_batches_;
+    std::vector<const MeshInstance*> shadow_order_;
+    std::unordered_map<std::string, unsigned> sprite_ids_;
+};
+
+} // namespace ks::render

@@ -1,0 +1,42 @@
+#pragma once
+// A linked GLSL program. Compile and link errors come back as ks::Error naming "file:line: message" where
+// the file is the shader's name (e.g. "pbr.frag") and the line is the driver's line in that source.
+#include "core/result.h"
+
+#include <string>
+#include <string_view>
+#include <unordered_map>
+
+namespace ks::render {
+
+struct ShaderSource {
+    std::string name; // e.g. "pbr.vert", used in error messages
+    std::string text;
+};
+
+class ShaderProgram {
+  public:
+    ShaderProgram() = default;
+    ~ShaderProgram();
+    ShaderProgram(const ShaderProgram&) = delete;
+    ShaderProgram& operator=(const ShaderProgram&) = delete;
+    ShaderProgram(ShaderProgram&& other) noexcept;
+    ShaderProgram& operator=(ShaderProgram&& other) noexcept;
+
+    static Result<ShaderProgram> build(const ShaderSource& vertex, const ShaderSource& fragment);
+
+    unsigned id() const { return id_; }
+    void use() const;
+    // Uniform location, cached; -1 for names the compiler optimised away (setting those is a no-op in GL).
+    int location(const char* name) const;
+
+  private:
+    unsigned id_ = 0;
+    mutable std::unordered_map<std::string, int> locations_;
+};
+
+// Turns a driver info log ("0:12(5): error: ..." from Mesa, "0(12) : error ..." from NVIDIA) into lines
+// "name:12: error: ...". Exposed for tests.
+std::string format_shader_log(std::string_view log, const std::string& name);
+
+} // namespace ks::render

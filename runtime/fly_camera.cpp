@@ -1,0 +1,46 @@
+#include "fly_camera.h"
+
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cstdio>
+
+namespace ks::runtime {
+
+void FlyCamera::update(GLFWwindow* window, double dt, render::Camera& camera) {
+    auto down = [&](int key) { return glfwGetKey(window, key) == GLFW_PRESS; };
+    const float speed = static_cast<float>(dt) * (down(GLFW_KEY_LEFT_SHIFT) ? 40.0f : 12.0f);
+    Vec3 forward(-std::sin(camera.yaw), 0.0f, -std::cos(camera.yaw));
+    Vec3 right(std::cos(camera.yaw), 0.0f, -std::sin(camera.yaw));
+    if (down(GLFW_KEY_W)) camera.position += forward * speed;
+    if (down(GLFW_KEY_S)) camera.position -= forward * speed;
+    if (down(GLFW_KEY_D)) camera.position += right * speed;
+    if (down(GLFW_KEY_A)) camera.position -= right * speed;
+    if (down(GLFW_KEY_E) || down(GLFW_KEY_SPACE)) camera.position.y += speed;
+    if (down(GLFW_KEY_Q) || down(GLFW_KEY_C)) camera.position.y -= speed;
+    double x = 0, y = 0;
+    glfwGetCursorPos(window, &x, &y);
+    bool drag = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+    if (drag && dragging_) {
+        camera.yaw -= static_cast<float>(x - last_x_) * 0.004f;
+        camera.pitch = std::clamp(camera.pitch - static_cast<float>(y - last_y_) * 0.004f, -1.5f, 1.5f);
+    }
+    dragging_ = drag;
+    last_x_ = x;
+    last_y_ = y;
+}
+
+bool parse_camera(const std::string& text, render::Camera& camera) {
+    float v[5];
+    char tail = 0;
+    if (std::sscanf(text.c_str(), "%f,%f,%f,%f,%f%c", &v[0], &v[1], &v[2], &v[3], &v[4], &tail) != 5)
+        return false;
+    for (float f : v)
+        if (!is_finite(f)) return false;
+    camera.position = Vec3(v[0], v[1], v[2]);
+    camera.yaw = radians(v[3]);
+    camera.pitch = radians(std::clamp(v[4], -89.0f, 89.0f));
+    return true;
+}
+
+} // namespace ks::runtime
