@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
 
     auto font = Font::load(paths::asset("fonts/DejaVuSans-Bold.ttf"));
     if (!font) return fail(font.error());
-    Output out(*out_dir, *font);
+    Output out(*out_dir, *font, cl->has("contact-sheet") || cl->has("preview"));
     const auto start = std::chrono::steady_clock::now();
     for (const Recipe& r : catalog()) {
         if (!only.empty() && r.name != only) continue;

@@ -124,7 +124,7 @@ Result<void> make_floor_light(Output& out) {
 }
 
 Result<void> make_top_light(Output& out) {
-    if (!out.find_texture("light_lens_emissive"))
+    if (!out.has_written_texture("light_lens_emissive"))
         KS_ASSETGEN_TRY(out.texture("light_lens_emissive", lens_pattern(), PngChannels::Rgb));
     Model model("top_light");
     const int shade_mat = model.add_material(plain("lamp_shade", vec3(0.25f, 0.48f, 0.4f), 0.5f, 0.35f));

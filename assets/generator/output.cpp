@@ -19,7 +19,8 @@ Result<void> Output::texture(const std::string& name, const Image& image, PngCha
     KS_ASSETGEN_TRY(ensure_folder(path.parent_path()));
     KS_ASSETGEN_TRY(write_png(path, image, channels));
     written_.push_back(path);
-    textures_[name] = image;
+    texture_names_.insert(name);
+    if (keep_images_) textures_[name] = image;
     return ok();
 }
 

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -32,7 +33,10 @@ struct MaterialMaps {
 
 class Output {
   public:
-    Output(std::filesystem::path root, Font font) : root_(std::move(root)), font_(std::move(font)) {}
+    // `keep_images`: hold every texture in memory for the contact sheet and previews (about 4 MB per 512²
+    // map).
+    Output(std::filesystem::path root, Font font, bool keep_images = false)
+        : root_(std::move(root)), font_(std::move(font)), keep_images_(keep_images) {}
 
     Result<void> texture(const std::string& name, const Image& image, PngChannels channels);
     // Writes <name>_basecolor, _normal, _orm (+ _emissive, _height when present).
@@ -44,14 +48,17 @@ class Output {
     const std::vector<std::filesystem::path>& written() const { return written_; }
     const std::map<std::string, Image>& textures() const { return textures_; }
     const std::vector<Model>& models() const { return models_; }
-    // Texture lookup for previews (nullptr when not generated in this run).
+    // Texture lookup for previews (nullptr when not generated in this run or not kept).
     const Image* find_texture(const std::string& name) const;
+    bool has_written_texture(const std::string& name) const { return texture_names_.count(name) > 0; }
 
   private:
     std::filesystem::path root_;
     Font font_;
     std::vector<std::filesystem::path> written_;
+    bool keep_images_ = false;
     std::map<std::string, Image> textures_;
+    std::set<std::string> texture_names_;
     std::vector<Model> models_;
 };
 
