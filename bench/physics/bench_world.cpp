@@ -1,5 +1,5 @@
 // ks_bench world: world step time against the number of characters (10 -> 10k) running around a generated
-// 2k-box level, with the BVH + sort-and-sweep broadphase, and the same characters moved by the same
+// 2k-box level, with the BVH + hash-grid broadphase, and the same characters moved by the same
 // controller but gathering obstacles with an all-pairs AABB scan (the reference's broadphase) as the
 // baseline in the same run.
 #include "bench_registry.h"
@@ -103,7 +103,7 @@ int world_command(int argc, const char* const* argv) {
     plot("physics_world",
          "set title 'World step time vs characters (2k-box level, 120 Hz)'\nset logscale xy\n"
          "set xlabel 'characters'\nset ylabel 'CPU microseconds per step'\nset key top left\n"
-         "plot 'physics_world.csv' every ::1 using 1:2 with linespoints title 'BVH + sort-and-sweep (ours)', "
+         "plot 'physics_world.csv' every ::1 using 1:2 with linespoints title 'BVH + hash grid (ours)', "
          "\\\n"
          "     '' every ::1 using 1:4 with linespoints title 'all-pairs AABB scan (reference broadphase)'\n");
     return 0;

@@ -112,7 +112,7 @@ Result<BodyId> World::add(const BodyDesc& desc, const std::string& what) {
         static_triggers_.push_back(index);
     else {
         movers_.push_back(index);
-        mover_keys_.push_back(b.bounds.min.x);
+        grid_valid_ = false; // not in the grid until the next step indexes it
     }
     return BodyId{index, generation};
 }
@@ -126,9 +126,8 @@ void World::remove(BodyId id) {
     } else if (b->motion == Motion::Static) {
         static_triggers_.erase(std::find(static_triggers_.begin(), static_triggers_.end(), index));
     } else {
-        auto it = std::find(movers_.begin(), movers_.end(), index);
-        mover_keys_.erase(mover_keys_.begin() + (it - movers_.begin()));
-        movers_.erase(it);
+        movers_.erase(std::find(movers_.begin(), movers_.end(), index));
+        // Its grid entries stay until the next step; queries skip dead bodies.
     }
     if (b->character_slot != kNone) {
         const std::uint32_t slot = b->character_slot;
@@ -266,15 +265,22 @@ const Bvh& World::static_bvh() const {
     return static_bvh_;
 }
 
-// ---- movers: sort-and-sweep on x ----------------------------------------------------------------------
+// ---- movers: hash grid over x/z -----------------------------------------------------------------------
 
-void World::sort_movers(float dt) {
-    mover_max_width_ = 0.0f;
+namespace {
+std::uint32_t cell_hash(int ix, int iz) {
+    return static_cast<std::uint32_t>(ix) * 73856093u ^ static_cast<std::uint32_t>(iz) * 19349663u;
+}
+int cell_of(float v, float cell) {
+    return static_cast<int>(std::floor(v / cell));
+}
+constexpr int kMaxCellsPerMover = 64;
+} // namespace
+
+void World::index_movers(float dt) {
     float max_speed = 0.0f;
-    for (std::size_t i = 0; i < movers_.size(); ++i) {
-        const Body& b = bodies_[movers_[i]];
-        mover_keys_[i] = b.bounds.min.x;
-        mover_max_width_ = std::max(mover_max_width_, b.bounds.max.x - b.bounds.min.x);
+    for (std::uint32_t index : movers_) {
+        const Body& b = bodies_[index];
         if (b.character_slot != kNone) {
             const auto& m = characters_[b.character_slot].state.movement;
             const float v =
@@ -282,31 +288,74 @@ void World::sort_movers(float dt) {
             if (std::isfinite(v)) max_speed = std::max(max_speed, std::min(v, 2.0f * m.max_speed));
         }
     }
-    // Insertion sort: the order barely changes between steps, so this is linear in practice.
-    for (std::size_t i = 1; i < movers_.size(); ++i) {
-        const float key = mover_keys_[i];
-        const std::uint32_t value = movers_[i];
-        std::size_t j = i;
-        while (j > 0 && (mover_keys_[j - 1] > key || (mover_keys_[j - 1] == key && movers_[j - 1] > value))) {
-            mover_keys_[j] = mover_keys_[j - 1];
-            movers_[j] = movers_[j - 1];
-            --j;
-        }
-        mover_keys_[j] = key;
-        movers_[j] = value;
-    }
     // Ground snap and depenetration move a character beyond its velocity: allow for them too.
     mover_slack_ = max_speed * dt + 2.0f;
+
+    std::uint32_t buckets = 16;
+    while (buckets < 2 * movers_.size()) buckets *= 2;
+    grid_mask_ = buckets - 1;
+    grid_count_.assign(buckets + 1, 0);
+    grid_oversized_.clear();
+    auto for_cells = [&](const Aabb& b, auto&& fn) {
+        const int x0 = cell_of(b.min.x, kCell), x1 = cell_of(b.max.x, kCell);
+        const int z0 = cell_of(b.min.z, kCell), z1 = cell_of(b.max.z, kCell);
+        for (int x = x0; x <= x1; ++x)
+            for (int z = z0; z <= z1; ++z) fn(cell_hash(x, z) & grid_mask_);
+    };
+    auto cells = [&](const Aabb& b) {
+        const double nx = std::floor(b.max.x / kCell) - std::floor(b.min.x / kCell) + 1.0;
+        const double nz = std::floor(b.max.z / kCell) - std::floor(b.min.z / kCell) + 1.0;
+        return nx * nz;
+    };
+    for (std::uint32_t index : movers_) {
+        const Aabb& b = bodies_[index].bounds;
+        if (cells(b) > kMaxCellsPerMover)
+            grid_oversized_.push_back(index);
+        else
+            for_cells(b, [&](std::uint32_t k) { ++grid_count_[k + 1]; });
+    }
+    for (std::uint32_t k = 0; k < buckets; ++k) grid_count_[k + 1] += grid_count_[k];
+    grid_start_.assign(grid_count_.begin(), grid_count_.end());
+    grid_items_.resize(grid_count_[buckets]);
+    for (std::uint32_t index : movers_) { // fill in mover order: deterministic
+        const Aabb& b = bodies_[index].bounds;
+        if (cells(b) <= kMaxCellsPerMover)
+            for_cells(b, [&](std::uint32_t k) { grid_items_[grid_count_[k]++] = index; });
+    }
+    if (grid_stamp_.size() < bodies_.size()) grid_stamp_.resize(bodies_.size(), 0);
+    grid_valid_ = true;
 }
 
 template <class Visit>
 void World::movers_overlapping(const Aabb& region, Visit&& visit) const {
-    const float lo = region.min.x - mover_max_width_ - mover_slack_, hi = region.max.x + mover_slack_;
-    auto first = std::lower_bound(mover_keys_.begin(), mover_keys_.end(), lo);
-    for (auto it = first; it != mover_keys_.end() && *it <= hi; ++it) {
-        const std::uint32_t index = movers_[it - mover_keys_.begin()];
-        if (bodies_[index].bounds.overlaps(region)) visit(index);
+    if (!grid_valid_) { // bodies were added since the last step: scan them all
+        for (std::uint32_t index : movers_)
+            if (bodies_[index].bounds.overlaps(region)) visit(index);
+        return;
     }
+    if (++grid_query_ == 0) { // stamp wrap-around: clear once every 4 billion queries
+        std::fill(grid_stamp_.begin(), grid_stamp_.end(), 0u);
+        grid_query_ = 1;
+    }
+    auto consider = [&](std::uint32_t index) {
+        if (grid_stamp_[index] == grid_query_) return; // already seen through another cell
+        grid_stamp_[index] = grid_query_;
+        const Body& b = bodies_[index];
+        if (b.alive && b.motion != Motion::Static && b.bounds.overlaps(region)) visit(index);
+    };
+    const Aabb wide = region.expanded(mover_slack_);
+    const int x0 = cell_of(wide.min.x, kCell), x1 = cell_of(wide.max.x, kCell);
+    const int z0 = cell_of(wide.min.z, kCell), z1 = cell_of(wide.max.z, kCell);
+    if (static_cast<double>(x1 - x0 + 1) * (z1 - z0 + 1) > 4.0 * (grid_mask_ + 1)) {
+        for (std::uint32_t index : movers_) consider(index); // a query wider than the whole grid
+    } else {
+        for (int x = x0; x <= x1; ++x)
+            for (int z = z0; z <= z1; ++z) {
+                const std::uint32_t k = cell_hash(x, z) & grid_mask_;
+                for (std::uint32_t i = grid_start_[k]; i < grid_start_[k + 1]; ++i) consider(grid_items_[i]);
+            }
+    }
+    for (std::uint32_t index : grid_oversized_) consider(index);
 }
 
 // ---- step ---------------------------------------------------------------------------------------------
@@ -316,7 +365,7 @@ void World::step(float dt) {
     build_static();
     collisions_.clear();
     trigger_events_.clear();
-    sort_movers(dt);
+    index_movers(dt);
     for (std::uint32_t index : movers_) bodies_[index].previous_position = bodies_[index].transform.position;
     Obstacles obstacles(*this);
     for (std::size_t c = 0; c < characters_.size(); ++c) {

@@ -4,7 +4,7 @@
 // and triggers (pickups, gas-cylinder surrounds, door sensors: report enter/stay/exit, never block).
 // Bodies are named by handles with a generation, so a stale handle is detected instead of dangling.
 // One step: integrate and move every character (index order, deterministic), collect contacts and trigger
-// overlaps (broadphase: BVH for statics, sort-and-sweep on x for everything that moves), then dispatch
+// overlaps (broadphase: BVH for statics, a hash grid for everything that moves), then dispatch
 // callbacks. Callbacks run after the step's collision pass, so adding or removing bodies inside one is safe
 // (removed bodies get no further events). Nothing allocates per step once buffers are warm.
 #include "core/fixed_step.h"
@@ -208,13 +208,23 @@ class World {
     mutable std::vector<std::uint32_t> static_slot_of_; // body index -> leaf slot (or ~0)
     mutable bool static_dirty_ = true;
     bool ray_static(const Ray& ray, const Vec3& inv_dir, const StaticPrim& prim, ShapeHit& hit) const;
-    // Moving set (kinematic, characters, triggers), sorted by min x each step for sort-and-sweep.
+    // Moving set (kinematic bodies, characters, kinematic triggers).
     std::vector<std::uint32_t> movers_;
-    std::vector<float> mover_keys_; // min x of each mover's bounds at the start of the step (sorted)
-    float mover_max_width_ = 0.0f;
-    float mover_slack_ = 0.0f; // how far a mover may travel in this step (its bounds stay inside key range)
+    // Movers' broadphase: a hash grid over x/z rebuilt each step from the bounds at the start of the step
+    // (counting sort: no allocation once warm). Queries widen their box by how far a mover can travel in
+    // the step, so a mover's current bounds are always found.
+    static constexpr float kCell = 4.0f;
+    std::vector<std::uint32_t> grid_start_;     // bucket -> first entry in grid_items_ (size buckets + 1)
+    std::vector<std::uint32_t> grid_items_;     // body indices, bucket by bucket
+    std::vector<std::uint32_t> grid_oversized_; // movers spanning too many cells: always visited
+    std::vector<std::uint32_t> grid_count_;
+    mutable std::vector<std::uint32_t> grid_stamp_; // by body index: last query that visited it
+    mutable std::uint32_t grid_query_ = 0;
+    std::uint32_t grid_mask_ = 0;
+    bool grid_valid_ = false;
+    float mover_slack_ = 0.0f; // how far a mover may travel in this step
     std::vector<std::uint32_t> static_triggers_;
-    void sort_movers(float dt);
+    void index_movers(float dt);
     template <class Visit>
     void movers_overlapping(const Aabb& region, Visit&& visit) const;
 
