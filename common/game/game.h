@@ -1,0 +1,256 @@
+#pragma once
+// The game rules, headless and deterministic. A Game is built from a level: it owns the physics World and
+// every entity in contiguous arrays, advances one fixed step per Input, and appends what happened to an
+// event list (cleared each step) that the runtime turns into particles, flashes and recoil. Everything the
+// renderer draws is exposed read-only here; the game never calls rendering and never reads a clock.
+// All randomness comes from one seeded Rng, drawn in a fixed order (robots in index order).
+#include "anim/clip_io.h"
+#include "anim/player.h"
+#include "core/random.h"
+#include "core/result.h"
+#include "game/caption.h"
+#include "game/game_types.h"
+#include "level/level.h"
+#include "physics/world.h"
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace ks::game {
+
+// What a physics body belongs to (kept in BodyDesc::user_data as kind << 32 | index).
+enum class BodyKind : std::uint8_t {
+    None,
+    Player,
+    Robot,
+    Cylinder,
+    DoorLeaf,
+    DoorSensor,
+    Pickup,
+    Panel,
+    Scenery
+};
+inline std::uint64_t pack_user(BodyKind kind, std::uint32_t index) {
+    return static_cast<std::uint64_t>(kind) << 32 | index;
+}
+inline BodyKind user_kind(std::uint64_t user) {
+    return static_cast<BodyKind>(user >> 32);
+}
+inline std::uint32_t user_index(std::uint64_t user) {
+    return static_cast<std::uint32_t>(user);
+}
+
+struct PlayerState {
+    physics::BodyId body;
+    Vec3 feet{0.0f};
+    Vec3 velocity{0.0f};
+    Vec3 knockback{0.0f}; // horizontal push from explosions, fading
+    float yaw = 0.0f;     // radians, 0 faces -z, positive turns left
+    float pitch = 0.0f;   // radians, clamped to ±π/2
+    float health = 100.0f, shield = 0.0f;
+    int ammo = 150;
+    bool grounded = false;
+    float damage_flash = 0.0f; // seconds left of the red flash
+    float hit_marker = 0.0f;   // seconds left of the hit marker
+    float recoil = 0.0f;       // seconds since the last shot (large = at rest)
+    int shots = 0;
+    float damage_taken = 0.0f;
+    Vec3 eye() const { return feet + Vec3(0, 3.0f, 0); }
+    Vec3 view_direction() const;
+};
+
+enum class RobotMode : std::uint8_t { Idle, Alert, Chase, Aim, Shoot, Dying, Dead };
+
+struct Robot {
+    int entity_id = 0;
+    physics::BodyId body;
+    level::RobotProps props;
+    Vec3 feet{0.0f};
+    float yaw = 0.0f; // facing, level convention (0 faces -z); the model's +X points this way
+    float health = 100.0f;
+    RobotMode mode = RobotMode::Idle;
+    float mode_time = 0.0f;
+    float angry = 0.0f;    // seconds of anger left
+    float cooldown = 0.0f; // seconds until the next shot may fire
+    float hit_flash = 0.0f;
+    Vec3 knockback{0.0f};
+    // Idle wander (reference: turn ±(0.5..1)·π/2 over 1.4 s, then drive at 2.4 decaying over 3.2-4 s).
+    bool wander_turning = true;
+    float wander_from = 0.0f, wander_to = 0.0f, wander_length = 1.4f;
+    bool collided = false;
+    // Model yaw for the renderer: the level yaw + 90° (the reference's rotY; the model faces +X).
+    float model_yaw() const { return yaw + kPi * 0.5f; }
+    bool alive() const { return mode != RobotMode::Dying && mode != RobotMode::Dead; }
+};
+
+struct Door {
+    int entity_id = 0;
+    level::DoorProps props;
+    physics::Transform frame; // bottom centre, door yaw
+    physics::BodyId leaves[2], sensor;
+    float progress = 0.0f; // 0 closed .. 1 open (linear in time, as the reference)
+    bool opening = false;  // where it is heading
+    bool player_inside = false;
+    float leaf_offset() const { return progress * props.open_offset; } // each leaf slides this far
+};
+
+struct Light {
+    int entity_id = 0;
+    bool floor = false; // floor lights toggle with E; top lights are fixed
+    level::LightProps props;
+    Vec3 position{0.0f}; // bottom centre (floor) or fixture (top)
+    float yaw = 0.0f;
+    float cone_angle = 35.0f;
+    bool on = true;
+    float intensity() const { return on ? props.intensity : 0.0f; }
+    float emissive() const { return on ? 1.5f : 0.0f; }
+};
+
+enum class PickupKind : std::uint8_t { Health, Ammo, Shield };
+
+struct Pickup {
+    int entity_id = 0;
+    PickupKind kind = PickupKind::Health;
+    float amount = 10.0f;
+    Vec3 centre{0.0f};
+    physics::BodyId trigger;
+    bool taken = false;
+};
+
+struct Cylinder {
+    int entity_id = 0;
+    level::GasCylinderProps props;
+    Vec3 centre{0.0f};
+    float yaw = 0.0f;
+    physics::BodyId body;
+    float fuse = -1.0f; // seconds until it explodes; < 0 when not lit
+    bool exploded = false;
+};
+
+struct Panel {
+    int entity_id = 0;
+    Vec3 centre{0.0f};
+    Vec3 size{0.0f};
+    float yaw = 0.0f;
+    physics::BodyId body;
+};
+
+// The death camera (reference: eye drops to the body centre in 0.3 s Quadratic.In, then pitch +π/4 and
+// roll π/2 in 0.3 s Bounce.InOut, then 1 s until the death menu).
+struct DeathCamera {
+    float eye_drop = 0.0f; // subtract from the eye height
+    float pitch = 0.0f;    // added to the view pitch
+    float roll = 0.0f;
+    bool menu_ready = false;
+};
+
+struct GameOptions {
+    std::uint64_t seed = 1;
+    GameSettings settings;
+    // Robot clips and rig; loaded from assets/animations/robot.json when null.
+    std::shared_ptr<const anim::AnimationLibrary> animations;
+};
+
+class Game {
+  public:
+    // Builds the world from the level. Errors (bad shapes, missing clips) name the entity.
+    static Result<std::unique_ptr<Game>> create(const level::Level& level, GameOptions options = {});
+    Game(const Game&) = delete;
+    Game& operator=(const Game&) = delete;
+
+    // One fixed step. Non-finite or absurd input is sanitised. Clears and refills events().
+    void step(const Input& input);
+
+    Phase phase() const { return phase_; }
+    bool paused() const { return paused_; }
+    double time() const { return static_cast<double>(steps_) * settings_.step; }
+    std::int64_t steps() const { return steps_; }
+    double phase_time() const { return phase_time_; }
+    std::span<const Event> events() const { return events_; }
+
+    const PlayerState& player() const { return player_; }
+    std::span<const Robot> robots() const { return robots_; }
+    const anim::Pose& robot_pose(std::size_t index) const { return robot_anims_[index].pose(); }
+    std::span<const Door> doors() const { return doors_; }
+    std::span<const Light> lights() const { return lights_; }
+    std::span<const Pickup> pickups() const { return pickups_; }
+    float pickup_spin() const { return static_cast<float>(time()) * kPi * 0.5f; } // π/2 rad/s
+    std::span<const Cylinder> cylinders() const { return cylinders_; }
+    const std::vector<Panel>& panels() const { return panels_; }
+    const Caption& caption() const { return caption_; }
+    DeathCamera death_camera() const;
+    int robots_killed() const { return robots_killed_; }
+    const GameSettings& settings() const { return settings_; }
+    const physics::World& world() const { return world_; }
+    // Bounds of the level's static geometry (walls, floors, stairs, props).
+    const physics::Aabb& level_bounds() const { return level_bounds_; }
+    const Vec3& player_start() const { return player_start_; }
+    const anim::AnimationLibrary& animations() const { return *animations_; }
+    // World position of the right hand's tip (the robot's muzzle) in its current pose.
+    Vec3 robot_muzzle(std::size_t index) const;
+    // The entity E would act on now (level id), or -1.
+    int interact_target() const { return interact_target_; }
+    // FNV-1a over the whole simulation state (positions, velocities, health, timers, modes, the Rng).
+    std::uint64_t state_hash() const;
+
+    // Direct effects, also used by tests to stage scenarios.
+    void damage_player(float amount);
+    void damage_robot(std::size_t index, float amount, bool by_player);
+    void explode_cylinder(std::size_t index);
+    void teleport_player(const Vec3& feet, float yaw, float pitch = 0.0f);
+
+  private:
+    explicit Game(GameOptions options);
+    Result<void> build(const level::Level& level);
+    void update_player(const Input& input, float dt);
+    void fire_player_shot();
+    void update_robot(std::size_t index, float dt);
+    void robot_wander(Robot& r, std::size_t index, float dt);
+    void robot_fire(std::size_t index);
+    bool robot_sees_player(const Robot& r) const;
+    void update_doors(float dt);
+    void update_cylinders(float dt);
+    void handle_physics_events();
+    void update_interaction(const Input& input);
+    void interact(int entity_id);
+    void take_pickup(Pickup& p);
+    void set_phase(Phase phase);
+    void push(EventType type, Vec3 position = Vec3(0.0f), int entity = -1, float amount = 0.0f,
+              Vec3 end = Vec3(0.0f));
+    // Closest shootable hit along a ray, skipping `ignore` and (for robot shots) every robot.
+    bool shoot_ray(const physics::Ray& ray, physics::BodyId ignore, bool skip_robots, physics::RayHit& hit);
+
+    GameSettings settings_;
+    std::shared_ptr<const anim::AnimationLibrary> animations_;
+    Rng rng_;
+    physics::World world_;
+    PlayerState player_;
+    std::vector<Robot> robots_;
+    std::vector<anim::Player> robot_anims_; // parallel to robots_
+    std::vector<Door> doors_;
+    std::vector<Light> lights_;
+    std::vector<Pickup> pickups_;
+    std::vector<Cylinder> cylinders_;
+    std::vector<Panel> panels_;
+    Caption caption_;
+    physics::Aabb level_bounds_ = physics::Aabb::empty();
+    Vec3 player_start_{0.0f};
+    int interact_target_ = -1;
+    Phase phase_ = Phase::Playing;
+    double phase_time_ = 0.0;
+    bool paused_ = false;
+    std::int64_t steps_ = 0;
+    int robots_killed_ = 0;
+    std::vector<Event> events_;
+    std::vector<physics::RayHit> ray_hits_; // reused by shots
+    struct Clips {
+        int idle = -1, alert = -1, shoot_pose = -1, shooting = -1, shoot_pose_reverse = -1, death = -1;
+    } clips_;
+    int hand_tip_node_ = -1;
+    float alert_length_ = 0.6f, aim_length_ = 0.3f, death_length_ = 1.8f;
+};
+
+} // namespace ks::game

@@ -1,0 +1,77 @@
+#pragma once
+// The vocabulary the game shares with its drivers (keyboard, autoplay bot, replay file) and with the
+// renderer: the per-step input, the per-step events and the tunable game settings. Plain data only.
+#include "core/math.h"
+
+#include <cstdint>
+#include <string>
+
+namespace ks::game {
+
+// One fixed step of input. The keyboard, the bot and a replay file all produce exactly this.
+struct Input {
+    float move_forward = 0.0f; // -1..1 (W/S)
+    float move_right = 0.0f;   // -1..1 (D/A); the pair is normalised when longer than 1
+    float look_yaw = 0.0f;     // radians to add to the view yaw this step (positive turns left)
+    float look_pitch = 0.0f;   // radians to add to the view pitch (positive looks up)
+    bool jump = false;
+    bool fire = false;     // one shot this step (the runtime sets it on a click, not while held)
+    bool interact = false; // E pressed this step
+    bool pause = false;    // toggles pause (Esc); a paused game ignores everything else
+    bool operator==(const Input&) const = default;
+};
+
+enum class Phase : std::uint8_t { Playing, Dead, Won };
+
+enum class EventType : std::uint8_t {
+    ShotFired,      // player shot: position = rifle tip, end = where the ray stopped
+    RobotShot,      // robot shot (fired or dry): position = hand tip, end = where the ray stopped
+    Hit,            // a shot hit something: position = point, entity = what (level id, or -1 for the player)
+    RobotHurt,      // entity = robot, amount = damage
+    RobotAlerted,   // entity = robot
+    RobotDied,      // entity = robot, after its death clip; the robot is removed
+    Explosion,      // position = centre, amount = blast radius (robot deaths: 0, visual only)
+    PickupTaken,    // entity = pickup, amount = what was added
+    DoorToggled,    // entity = door, amount = 1 opening / 0 closing
+    LightToggled,   // entity = floor light, amount = 1 on / 0 off
+    CaptionChanged, // the caption text or visibility changed
+    PlayerDamaged,  // amount = damage before the shield
+    PlayerDied,
+    Won,
+    Paused, // amount = 1 paused / 0 resumed
+};
+
+struct Event {
+    EventType type = EventType::ShotFired;
+    Vec3 position{0.0f};
+    Vec3 end{0.0f};
+    int entity = -1; // level entity id
+    float amount = 0.0f;
+};
+
+// Gameplay numbers that are not per entity in the level file (reference values, seed-facts §5).
+struct GameSettings {
+    double step = 1.0 / 120.0;
+    float player_speed = 15.0f;
+    float jump_speed = 15.0f;
+    float player_radius = 1.0f; // capsule: radius 1, height 3, eye at feet + 3
+    float player_height = 3.0f;
+    float eye_height = 3.0f;
+    float max_health = 100.0f, start_health = 100.0f;
+    float max_shield = 50.0f, start_shield = 0.0f;
+    int max_ammo = 400, start_ammo = 150;
+    float shot_range = 500.0f;
+    float player_shot_damage = 20.0f; // damage a robot takes per player hit (5 hits kill a 100 hp robot)
+    float interact_reach = 6.0f;      // floor lights and the panel: eye-to-surface distance for E
+    float interact_view_cos = 0.34f;  // in view: within ~70° of the horizontal view direction
+    float robot_radius = 0.8f;        // robots: capsule of height 3
+    float robot_height = 3.0f;
+    float robot_same_level = 6.0f; // |Δy| below which a robot considers the player on its level
+    float robot_shot_range = 100.0f;
+    float robot_wander_speed = 2.4f; // 0.3 · velocity 8 in the reference
+    float cylinder_fuse = 0.12f;     // seconds between a cylinder taking blast damage and exploding
+    float knockback_decay = 4.0f;    // 1/s: how fast an explosion's push fades
+    float fall_limit = -50.0f;       // a character below this y is dead (fell out of the level)
+};
+
+} // namespace ks::game

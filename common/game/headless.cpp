@@ -1,0 +1,152 @@
+#include "game/headless.h"
+
+#include "core/files.h"
+#include "core/log.h"
+#include "core/paths.h"
+#include "game/autoplay.h"
+#include "game/replay.h"
+#include "level/level_io.h"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+
+namespace ks::game {
+
+std::string HeadlessStats::to_json() const {
+    nlohmann::json j;
+    j["outcome"] = outcome;
+    j["sim_time_s"] = sim_time_s;
+    j["robots_killed"] = robots_killed;
+    j["damage_taken"] = damage_taken;
+    j["shots"] = shots;
+    j["steps_per_second"] = steps_per_second;
+    char hash[32];
+    std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(state_hash));
+    j["state_hash"] = hash;
+    return j.dump();
+}
+
+std::string HeadlessStats::summary() const {
+    char buffer[256];
+    std::snprintf(buffer, sizeof buffer,
+                  "%s after %.2f s simulated (%lld steps): %d robots killed, %.0f damage taken, %d shots, "
+                  "%.0f steps/s, state %016llx",
+                  outcome.c_str(), sim_time_s, static_cast<long long>(steps), robots_killed,
+                  static_cast<double>(damage_taken), shots, steps_per_second,
+                  static_cast<unsigned long long>(state_hash));
+    return buffer;
+}
+
+const std::vector<std::string>& headless_flags() {
+    static const std::vector<std::string> flags{"headless", "autoplay"};
+    return flags;
+}
+
+const std::vector<std::string>& headless_option_names() {
+    static const std::vector<std::string> names{"headless", "autoplay", "level",  "seconds",
+                                                "seed",     "record",   "replay", "stats-json"};
+    return names;
+}
+
+Result<HeadlessOptions> parse_headless_options(const CommandLine& cl) {
+    HeadlessOptions o;
+    o.level = paths::resolve_user_path(cl.get_or("level", paths::level("main.json").string()));
+    auto seconds = cl.get_double("seconds", o.seconds);
+    if (!seconds) return seconds.error();
+    if (!(*seconds > 0.0 && *seconds <= 86400.0))
+        return Error("--seconds must be in (0, 86400]", Location("command line", 0, 0, "--seconds"),
+                     "give the simulated time limit in seconds, e.g. --seconds 300");
+    o.seconds = *seconds;
+    if (auto s = cl.get("seed")) {
+        char* end = nullptr;
+        o.seed = std::strtoull(s->c_str(), &end, 10);
+        if (s->empty() || *end != '\0' || (*s)[0] == '-')
+            return Error("--seed must be a non-negative integer", Location("command line", 0, 0, "--seed"),
+                         "e.g. --seed 42");
+    }
+    o.autoplay = cl.has("autoplay");
+    if (auto r = cl.get("record")) o.record = *r;
+    if (auto r = cl.get("replay")) o.replay = paths::resolve_user_path(*r);
+    if (auto r = cl.get("stats-json")) o.stats_json = *r;
+    if (!o.record.empty() && !o.replay.empty())
+        return Error("--record and --replay cannot be used together", Location("command line"),
+                     "record a run first, then replay that file in a second run");
+    if (o.autoplay && !o.replay.empty())
+        return Error("--autoplay and --replay cannot be used together", Location("command line"),
+                     "a replay supplies every input itself");
+    return o;
+}
+
+Result<HeadlessStats> run_headless(const HeadlessOptions& options) {
+    Recording replay;
+    std::uint64_t seed = options.seed;
+    if (!options.replay.empty()) {
+        auto loaded = load_recording_file(options.replay);
+        if (!loaded) return loaded.error();
+        replay = std::move(*loaded);
+        if (seed != replay.seed && seed != 1)
+            log::warn("--seed " + std::to_string(seed) + " ignored: the replay was recorded with seed " +
+                      std::to_string(replay.seed));
+        seed = replay.seed;
+    }
+    auto level = level::load_level_file(options.level);
+    if (!level) return level.error();
+    GameOptions game_options;
+    game_options.seed = seed;
+    auto created = Game::create(*level, game_options);
+    if (!created) return created.error();
+    Game& game = **created;
+
+    std::unique_ptr<Autoplay> bot;
+    if (options.autoplay) bot = std::make_unique<Autoplay>(game, seed);
+    Recording record;
+    record.seed = seed;
+    record.level = options.level.string();
+
+    const double step = game.settings().step;
+    std::int64_t max_steps = static_cast<std::int64_t>(options.seconds / step + 0.5);
+    if (!options.replay.empty()) max_steps = static_cast<std::int64_t>(replay.inputs.size());
+    if (!options.record.empty()) record.inputs.reserve(static_cast<std::size_t>(max_steps));
+
+    // Wall-clock time is read only to report the simulation speed; it never enters the simulation.
+    const auto start = std::chrono::steady_clock::now();
+    std::int64_t steps = 0;
+    while (steps < max_steps && game.phase() == Phase::Playing) {
+        Input input;
+        if (!options.replay.empty())
+            input = replay.inputs[static_cast<std::size_t>(steps)];
+        else if (bot)
+            input = bot->decide(game);
+        if (!options.record.empty()) record.inputs.push_back(input);
+        game.step(input);
+        ++steps;
+    }
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    HeadlessStats stats;
+    stats.outcome = game.phase() == Phase::Won ? "win" : game.phase() == Phase::Dead ? "death" : "timeout";
+    stats.sim_time_s = game.time();
+    stats.robots_killed = game.robots_killed();
+    stats.damage_taken = game.player().damage_taken;
+    stats.shots = game.player().shots;
+    stats.steps_per_second = wall > 0.0 ? static_cast<double>(steps) / wall : 0.0;
+    stats.state_hash = game.state_hash();
+    stats.steps = steps;
+
+    if (!options.record.empty())
+        if (auto saved = save_recording_file(options.record, record); !saved) return saved.error();
+    if (!options.stats_json.empty()) {
+        const std::string json = stats.to_json() + "\n";
+        if (options.stats_json == "-")
+            std::cout << json << std::flush;
+        else if (auto w = files::write_atomic(options.stats_json, json); !w)
+            return w.error();
+    }
+    return stats;
+}
+
+} // namespace ks::game

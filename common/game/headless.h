@@ -1,0 +1,46 @@
+#pragma once
+// Runs the game without a window: `killswitch --headless --level FILE [--seconds S] [--seed N] [--autoplay]
+// [--record FILE | --replay FILE] [--stats-json FILE|-]`. The runtime's main calls
+//   auto options = ks::game::parse_headless_options(command_line);   // Result<HeadlessOptions>
+//   auto stats = ks::game::run_headless(*options);                     // Result<HeadlessStats>
+// and returns exit code 0 on success (print stats->summary()). Without --autoplay or --replay the player
+// stands still (a soak test of the AI). A replay runs exactly its recorded steps with its recorded seed.
+#include "core/cli.h"
+#include "core/result.h"
+#include "game/game.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace ks::game {
+
+struct HeadlessOptions {
+    std::filesystem::path level;
+    double seconds = 300.0; // simulated time limit
+    std::uint64_t seed = 1;
+    bool autoplay = false;
+    std::filesystem::path record, replay, stats_json; // stats_json "-" = stdout
+};
+
+struct HeadlessStats {
+    std::string outcome = "timeout"; // win, death, timeout
+    double sim_time_s = 0.0;
+    int robots_killed = 0;
+    float damage_taken = 0.0f;
+    int shots = 0;
+    double steps_per_second = 0.0;
+    std::uint64_t state_hash = 0;
+    std::int64_t steps = 0;
+    std::string to_json() const; // one line
+    std::string summary() const;
+};
+
+// The option names (for the runtime's CommandLine::parse flags and unknown-option checks).
+const std::vector<std::string>& headless_flags();        // --headless, --autoplay
+const std::vector<std::string>& headless_option_names(); // every option above
+Result<HeadlessOptions> parse_headless_options(const CommandLine& command_line);
+Result<HeadlessStats> run_headless(const HeadlessOptions& options);
+
+} // namespace ks::game

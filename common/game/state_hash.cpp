@@ -1,0 +1,79 @@
+// FNV-1a over every piece of simulation state, so two runs (or a run and its replay) can be compared with
+// one number. Floats are hashed by their bits: equal hashes mean bit-identical states.
+#include "game/game.h"
+
+#include <cstring>
+
+namespace ks::game {
+namespace {
+
+class Hasher {
+  public:
+    template <class T>
+    void add(const T& value) {
+        unsigned char bytes[sizeof(T)];
+        std::memcpy(bytes, &value, sizeof(T));
+        for (unsigned char b : bytes) h_ = (h_ ^ b) * 0x100000001b3ull;
+    }
+    void add(const Vec3& v) {
+        add(v.x);
+        add(v.y);
+        add(v.z);
+    }
+    void add(bool b) { add(static_cast<unsigned char>(b)); }
+    std::uint64_t value() const { return h_; }
+
+  private:
+    std::uint64_t h_ = 0xcbf29ce484222325ull;
+};
+
+} // namespace
+
+std::uint64_t Game::state_hash() const {
+    Hasher h;
+    h.add(steps_);
+    h.add(static_cast<int>(phase_));
+    h.add(paused_);
+    h.add(rng_.state());
+    const PlayerState& p = player_;
+    h.add(world_.transform(p.body).position);
+    h.add(world_.character(p.body).movement.velocity);
+    h.add(p.knockback);
+    h.add(p.yaw);
+    h.add(p.pitch);
+    h.add(p.health);
+    h.add(p.shield);
+    h.add(p.ammo);
+    h.add(p.shots);
+    h.add(p.damage_taken);
+    for (std::size_t i = 0; i < robots_.size(); ++i) {
+        const Robot& r = robots_[i];
+        h.add(world_.transform(r.body).position);
+        h.add(world_.character(r.body).movement.velocity);
+        h.add(r.yaw);
+        h.add(r.health);
+        h.add(static_cast<int>(r.mode));
+        h.add(r.mode_time);
+        h.add(r.angry);
+        h.add(r.cooldown);
+        h.add(r.wander_to);
+        h.add(r.wander_length);
+        h.add(robot_anims_[i].ticks());
+        h.add(robot_anims_[i].current_clip());
+    }
+    for (const Door& d : doors_) {
+        h.add(d.progress);
+        h.add(d.opening);
+    }
+    for (const Light& l : lights_) h.add(l.on);
+    for (const Pickup& k : pickups_) h.add(k.taken);
+    for (const Cylinder& c : cylinders_) {
+        h.add(c.exploded);
+        h.add(c.fuse);
+    }
+    h.add(caption_.visible());
+    h.add(caption_.owner());
+    return h.value();
+}
+
+} // namespace ks::game

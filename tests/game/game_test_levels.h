@@ -1,0 +1,57 @@
+#pragma once
+// Small levels built in code for the game's scenario tests, and a helper that builds a Game from one.
+#include "game/game.h"
+#include "level/level.h"
+#include "test_support.h"
+
+#include <doctest/doctest.h>
+
+#include <memory>
+
+namespace ks::game::test {
+
+// A 200 x 200 ground floor at y 0, player at the origin facing -z, no robots.
+inline level::Level flat_level() {
+    level::Level lv;
+    lv.name = "test flat";
+    auto& floor = lv.add(level::EntityType::Floor, Vec3(0.0f), "ground");
+    floor.as<level::FloorProps>().size = Vec2(200.0f, 200.0f);
+    lv.player_start.position = Vec3(0.0f);
+    return lv;
+}
+
+inline level::Entity& add_robot(level::Level& lv, Vec3 feet, float yaw_degrees = 0.0f) {
+    auto& r = lv.add(level::EntityType::Robot, feet, "robot");
+    r.rotation.x = yaw_degrees;
+    return r;
+}
+
+inline level::Entity& add_wall(level::Level& lv, Vec3 base, Vec3 size, float yaw_degrees = 0.0f) {
+    auto& w = lv.add(level::EntityType::Wall, base, "wall");
+    w.as<level::WallProps>().size = size;
+    w.rotation.x = yaw_degrees;
+    return w;
+}
+
+inline std::unique_ptr<Game> make_game(const level::Level& lv, std::uint64_t seed = 1) {
+    GameOptions options;
+    options.seed = seed;
+    auto g = Game::create(lv, options);
+    if (!g) FAIL(g.error().str());
+    return std::move(*g);
+}
+
+// Steps `seconds` of simulated time with the same input each step.
+inline void run_for(Game& g, double seconds, const Input& in = {}) {
+    const auto n = static_cast<int>(seconds / g.settings().step + 0.5);
+    for (int i = 0; i < n; ++i) g.step(in);
+}
+
+inline int count_events(const Game& g, EventType type) {
+    int n = 0;
+    for (const Event& e : g.events())
+        if (e.type == type) ++n;
+    return n;
+}
+
+} // namespace ks::game::test
