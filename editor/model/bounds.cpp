@@ -138,7 +138,8 @@ std::optional<float> surface_height_at(const Entity& support, float x, float z) 
     return surface_height_at(support, entity_obb(support), x, z);
 }
 
-std::optional<float> surface_height_at(const Entity& support, const Obb& box, float x, float z) {
+std::optional<float> surface_height_at(const Entity& support, const Obb& box, float x, float z,
+                                       bool stair_as_ramp) {
     using namespace level;
     if (const auto* f = support.try_as<FloorProps>()) {
         if (f->ceiling) return std::nullopt;
@@ -149,6 +150,8 @@ std::optional<float> surface_height_at(const Entity& support, const Obb& box, fl
     if (const auto* s = support.try_as<StairProps>()) {
         const Vec3 l = box.to_local({x, box.center.y, z});
         if (std::abs(l.x) > box.half.x || std::abs(l.z) > box.half.z) return std::nullopt;
+        if (stair_as_ramp)
+            return support.position.y + s->size.y * std::clamp(0.5f - l.z / s->size.z, 0.0f, 1.0f);
         // Rises toward local -z: step k (from the +z end) has its tread at (k + 1) * rise / steps.
         const int steps = std::max(s->steps, 1);
         const float run_per_step = s->size.z / static_cast<float>(steps);

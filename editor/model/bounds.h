@@ -48,7 +48,10 @@ Overlap obb_overlap(const Obb& a, const Obb& b, float tolerance = 1e-3f);
 // The walkable top at (x, z) of a floor (not a ceiling) or a stair, if that point is over it.
 std::optional<float> surface_height_at(const level::Entity& support, float x, float z);
 // The same with the support's box already computed (entity_obb(support)), for loops over many points.
-std::optional<float> surface_height_at(const level::Entity& support, const Obb& box, float x, float z);
+// `stair_as_ramp`: a stair's collision in the game is a wedge (common/physics shapes.h), so walking follows
+// the ramp through the tread edges rather than the visible treads.
+std::optional<float> surface_height_at(const level::Entity& support, const Obb& box, float x, float z,
+                                       bool stair_as_ramp = false);
 
 // The character limits the editor's rules use: the player's body (seed facts §5.1) and the game's own
 // character-controller settings (common/physics/character.h), so the editor and the game agree.

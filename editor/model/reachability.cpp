@@ -92,7 +92,7 @@ WalkGridStats walk_to_control_panel(const level::Level& level, const ValidationO
         for (int r = r0; r <= r1; ++r)
             for (int c = c0; c <= c1; ++c) {
                 const Vec2 p = centre(c, r);
-                auto h = surface_height_at(*s.entity, s.box, p.x, p.y);
+                auto h = surface_height_at(*s.entity, s.box, p.x, p.y, /*stair_as_ramp=*/true);
                 const size_t index = static_cast<size_t>(r) * cols + c;
                 if (!h || found_count[index] == kMaxFound) continue;
                 stair_base[index * kMaxFound + found_count[index]] =

@@ -1,9 +1,9 @@
 #pragma once
 // "Can the player walk from the start to the control panel?" — a flood fill over a grid of walkable
-// surfaces (floor tops and stair treads), with the game's character limits: a cell is open where the
-// player's body (radius, height) fits between the surface and what is above, and the player can step up
-// at most step_height between neighbouring cells and drop any distance. Doors count as open (the player
-// opens them); robots and pickups do not block; jumps are not counted, so a level that needs a jump to
+// surfaces (floor tops and stair ramps, the game's wedge collision), with the game's character limits: a cell
+// is open where the player's body (radius, height) fits between the surface and what is above, and the player
+// can step up at most step_height between neighbouring cells and drop any distance. Doors count as open (the
+// player opens them); robots and pickups do not block; jumps are not counted, so a level that needs a jump to
 // finish is reported (as a warning).
 #include "model/validation.h"
 

@@ -263,6 +263,9 @@ TEST_CASE("rule reachability: a sealed room or a platform without stairs makes t
     level::Level main = editor_test::load_shipped("main.json");
     main.find(56)->position = {56, 6, -39};
     CHECK(walk_to_control_panel(main, {}).reachable);
+    // The game collides with a stair as a wedge: three 2-unit steps are as walkable as ten 0.6 ones.
+    main.find(27)->as<level::StairProps>().steps = 3;
+    CHECK(walk_to_control_panel(main, {}).reachable);
     std::erase_if(main.entities, [](const level::Entity& e) { return e.id == 27; });
     auto walk = walk_to_control_panel(main, {});
     CHECK(walk.decided);
