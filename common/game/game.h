@@ -174,6 +174,7 @@ class Game {
     const PlayerState& player() const { return player_; }
     std::span<const Robot> robots() const { return robots_; }
     const anim::Pose& robot_pose(std::size_t index) const { return robot_anims_[index].pose(); }
+    int robot_animation_clip(std::size_t index) const { return robot_anims_[index].current_clip(); }
     std::span<const Door> doors() const { return doors_; }
     std::span<const Light> lights() const { return lights_; }
     std::span<const Pickup> pickups() const { return pickups_; }

@@ -1,0 +1,152 @@
+// Robot AI: sight needs line of sight, anger after a hit, cooldown and probability, robots never hurt
+// robots, animation clips follow the AI state, muzzle at the hand tip.
+#include "game_test_levels.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+using namespace ks;
+using namespace ks::game;
+using namespace ks::game::test;
+
+namespace {
+
+int alerts_over(Game& g, double seconds, const Input& in = {}) {
+    int n = 0;
+    const auto steps = static_cast<int>(seconds / g.settings().step);
+    for (int i = 0; i < steps; ++i) {
+        g.step(in);
+        n += count_events(g, EventType::RobotAlerted);
+    }
+    return n;
+}
+
+} // namespace
+
+TEST_CASE("robots notice the player only with line of sight inside the minimum eye radius") {
+    SUBCASE("a wall between them hides the player") {
+        auto lv = flat_level();
+        add_robot(lv, Vec3(0, 0, -15));
+        add_wall(lv, Vec3(0, 0, -8), Vec3(60, 16, 0.5f));
+        auto g = make_game(lv);
+        CHECK(alerts_over(*g, 3.0) == 0);
+        CHECK(g->robots()[0].mode == RobotMode::Idle);
+    }
+    SUBCASE("in the open the same robot is alerted at once") {
+        auto lv = flat_level();
+        add_robot(lv, Vec3(0, 0, -15));
+        auto g = make_game(lv);
+        CHECK(alerts_over(*g, 0.1) == 1);
+        CHECK(g->robots()[0].mode == RobotMode::Alert);
+    }
+    SUBCASE("outside the minimum eye radius it does not notice") {
+        auto lv = flat_level();
+        add_robot(lv, Vec3(0, 0, -23)); // inside max (25) but outside min (19): hysteresis
+        auto g = make_game(lv);
+        CHECK(alerts_over(*g, 0.5) == 0);
+    }
+    SUBCASE("a different level (|dy| >= 6) is not seen") {
+        auto lv = flat_level();
+        auto& platform = lv.add(level::EntityType::Floor, Vec3(0, 7, -15), "platform");
+        platform.as<level::FloorProps>().size = Vec2(10, 10);
+        add_robot(lv, Vec3(0, 7, -15));
+        auto g = make_game(lv);
+        CHECK(alerts_over(*g, 1.0) == 0);
+    }
+}
+
+TEST_CASE("a robot shot by the player becomes angry and follows regardless of distance") {
+    auto lv = flat_level();
+    add_robot(lv, Vec3(0, 0, -60));
+    auto g = make_game(lv);
+    run_for(*g, 1.0);
+    CHECK(g->robots()[0].mode == RobotMode::Idle);
+    const float before = glm::length(g->robots()[0].feet - g->player().feet);
+    g->damage_robot(0, 20.0f, true);
+    CHECK(g->robots()[0].angry == doctest::Approx(10.0f));
+    run_for(*g, 3.0);
+    const float after = glm::length(g->robots()[0].feet - g->player().feet);
+    CHECK(after < before - 10.0f);
+    CHECK(g->robots()[0].mode == RobotMode::Chase);
+    CHECK(g->robot_pose(0).size() > 0);
+}
+
+TEST_CASE("robots shoot on their cooldown, with their hit probability, from the right hand's tip") {
+    auto lv = flat_level();
+    auto& r = add_robot(lv, Vec3(0, 0, -8));
+    r.as<level::RobotProps>().hit_probability = 1.0f;
+    r.as<level::RobotProps>().cooldown = 1.0f;
+    auto g = make_game(lv);
+    std::vector<double> times;
+    for (int i = 0; i < 6 * 120; ++i) {
+        g->step({});
+        for (const Event& e : g->events())
+            if (e.type == EventType::RobotShot) {
+                times.push_back(g->time());
+                // The muzzle is the hand tip: off the robot's axis and around chest height.
+                const Vec3 axis = g->robots()[0].feet;
+                CHECK(glm::length(Vec2(e.position.x - axis.x, e.position.z - axis.z)) > 0.3f);
+                CHECK(e.position.y > 0.8f);
+                CHECK(e.position.y < 3.5f);
+            }
+    }
+    REQUIRE(times.size() >= 4);
+    CHECK(times.size() <= 6);
+    for (std::size_t i = 1; i < times.size(); ++i) CHECK(times[i] - times[i - 1] >= 1.0 - 1e-6);
+    CHECK(g->player().health == doctest::Approx(100.0f - 10.0f * static_cast<float>(times.size())));
+
+    SUBCASE("probability 0: every shot fires no ray") {
+        auto lv0 = flat_level();
+        add_robot(lv0, Vec3(0, 0, -8)).as<level::RobotProps>().hit_probability = 0.0f;
+        auto g0 = make_game(lv0);
+        int shots = 0;
+        for (int i = 0; i < 4 * 120; ++i) {
+            g0->step({});
+            shots += count_events(*g0, EventType::RobotShot);
+        }
+        CHECK(shots >= 2);
+        CHECK(g0->player().health == 100.0f);
+    }
+}
+
+TEST_CASE("robots never hurt robots: shots pass through robots to the player") {
+    auto lv = flat_level();
+    for (float z : {-6.0f, -9.0f}) {
+        auto& r = add_robot(lv, Vec3(0, 0, z));
+        r.as<level::RobotProps>().hit_probability = 1.0f;
+    }
+    auto g = make_game(lv);
+    int hurt = 0;
+    for (int i = 0; i < 5 * 120; ++i) {
+        g->step({});
+        hurt += count_events(*g, EventType::RobotHurt);
+    }
+    CHECK(hurt == 0);
+    CHECK(g->robots()[0].health == 100.0f);
+    CHECK(g->robots()[1].health == 100.0f);
+    CHECK(g->player().health < 100.0f - 50.0f); // both robots' shots reached the player
+}
+
+TEST_CASE("AI states start the matching clips: alert, shoot pose, shooting, reverse, death") {
+    auto lv = flat_level();
+    add_robot(lv, Vec3(0, 0, -8));
+    auto g = make_game(lv);
+    const auto& clips = g->animations().clips;
+    g->step({});
+    CHECK(g->robots()[0].mode == RobotMode::Alert);
+    CHECK(clips.clips[static_cast<std::size_t>(g->robot_animation_clip(0))].name == "alert");
+    run_for(*g, 0.8);
+    CHECK(g->robots()[0].mode == RobotMode::Aim);
+    CHECK(clips.clips[static_cast<std::size_t>(g->robot_animation_clip(0))].name == "shoot_pose");
+    run_for(*g, 0.4);
+    CHECK(g->robots()[0].mode == RobotMode::Shoot);
+    CHECK(clips.clips[static_cast<std::size_t>(g->robot_animation_clip(0))].name == "shooting");
+    // The player runs away: shoot pose reverse, chase.
+    g->teleport_player(Vec3(0, 0, 10), 0.0f);
+    g->step({});
+    CHECK(g->robots()[0].mode == RobotMode::Chase);
+    CHECK(clips.clips[static_cast<std::size_t>(g->robot_animation_clip(0))].name == "shoot_pose_reverse");
+    g->damage_robot(0, 1000.0f, true);
+    CHECK(clips.clips[static_cast<std::size_t>(g->robot_animation_clip(0))].name == "death");
+}
