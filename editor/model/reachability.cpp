@@ -17,7 +17,12 @@ constexpr int kMaxFound = 8;    // surfaces gathered per cell before buried ones
 struct Solid {
     Obb box;
     Aabb bounds;
+    // Floor slabs only matter as headroom (a low ceiling or an overhang above the node): they are tested
+    // against the body's centre column. Their edges are not walls: climbing onto a slab is the step rule's
+    // business, and where a stair meets a platform the slab's edge hides inside the stair's wedge.
+    bool slab = false;
 };
+constexpr float kSlabColumn = 0.1f; // half width of the headroom column
 
 bool blocks_walking(EntityType t) {
     switch (t) {
@@ -47,7 +52,7 @@ WalkGridStats walk_to_control_panel(const level::Level& level, const ValidationO
         if (!is_finite(e.position) || !is_finite(e.rotation)) continue;
         if (!panel && e.type() == EntityType::ControlPanel) panel = &e;
         const Obb box = entity_obb(e);
-        if (blocks_walking(e.type())) solids.push_back({box, box.aabb()});
+        if (blocks_walking(e.type())) solids.push_back({box, box.aabb(), e.type() == EntityType::Floor});
         const auto* floor = e.try_as<level::FloorProps>();
         if (e.type() == EntityType::Stair || (floor && !floor->ceiling)) {
             supports.push_back({&e, box});
@@ -139,7 +144,8 @@ WalkGridStats walk_to_control_panel(const level::Level& level, const ValidationO
     const float body_half_height = (ch.height - ch.step_height) / 2;
     for (const Solid& s : solids) {
         int c0, c1, r0, r1;
-        cell_range(s.bounds, ch.radius, c0, c1, r0, r1);
+        const float reach = s.slab ? kSlabColumn : ch.radius;
+        cell_range(s.bounds, reach, c0, c1, r0, r1);
         for (int r = r0; r <= r1; ++r)
             for (int c = c0; c <= c1; ++c) {
                 const size_t index = static_cast<size_t>(r) * cols + c;
@@ -151,7 +157,7 @@ WalkGridStats walk_to_control_panel(const level::Level& level, const ValidationO
                     const Vec2 p = centre(c, r);
                     Obb body;
                     body.center = {p.x, h + ch.step_height + body_half_height, p.y};
-                    body.half = {ch.radius, body_half_height, ch.radius};
+                    body.half = {reach, body_half_height, reach};
                     if (obb_overlap(body, s.box).overlapping) node = 0;
                 }
             }

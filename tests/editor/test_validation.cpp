@@ -272,6 +272,24 @@ TEST_CASE("rule reachability: a sealed room or a platform without stairs makes t
     CHECK_FALSE(walk.reachable);
     CHECK(walk.visited_nodes > 1000); // it searched the rooms, not just gave up
 
+    // A slab too low to walk under (headroom 2 < the player's 3) across the doorway blocks it as well.
+    REQUIRE(ed.undo());
+    REQUIRE(ed.undo());
+    CHECK(of_rule(ed.issues(), Rule::Reachability).empty());
+    int low = *ed.place(EntityType::Floor, {0, 2.5f, 0});
+    REQUIRE(ed.set_field_text("size", "20,4").ok());
+    CHECK(of_rule(ed.issues(), Rule::Reachability).size() == 1);
+    REQUIRE(ed.select({low}).ok());
+    REQUIRE(ed.move_selection({0, 1, 0}).ok()); // headroom 3.5 - 0.5 thickness = 3: the player fits
+    CHECK(of_rule(ed.issues(), Rule::Reachability).empty());
+    REQUIRE(ed.undo()); // the move,
+    REQUIRE(ed.undo()); // the size,
+    REQUIRE(ed.undo()); // the slab: open again
+    CHECK(of_rule(ed.issues(), Rule::Reachability).empty());
+    REQUIRE(ed.redo());
+    REQUIRE(ed.redo()); // the low slab is back
+    CHECK(of_rule(ed.issues(), Rule::Reachability).size() == 1);
+
     // During a drag (open transaction) the walk check waits for the commit; other rules stay live.
     ed.begin_transaction("Drag");
     REQUIRE(ed.select({id_named(ed, "Panel")}).ok());
@@ -301,4 +319,27 @@ TEST_CASE("validation: issues are cached per revision and clicking one selects t
     ed.set_locked(pickup, true);
     CHECK_FALSE(ed.select_issue(issues[0]).ok());
     CHECK_FALSE(ed.apply_quick_fix(issues[0]).ok());
+}
+
+TEST_CASE(
+    "reachability: the default cell climbs the steepest stair the slope rule allows, and not a steeper one") {
+    auto level_with_stair = [](float slope_degrees) {
+        level::Level level;
+        level.add(EntityType::Floor, {0, 0, 0}).as<level::FloorProps>().size = {40, 60};
+        level.add(EntityType::Floor, {0, 6, -20}).as<level::FloorProps>().size = {12, 12}; // z -26..-14
+        const float run = 6.0f / std::tan(radians(slope_degrees));
+        auto& stair = level.add(EntityType::Stair, {0, 0, -14 + run / 2}); // top edge meets the platform
+        stair.as<level::StairProps>().size = {12, 6, run};
+        level.add(EntityType::ControlPanel, {0, 6, -22});
+        level.player_start.position = {0, 0, 10};
+        return level;
+    };
+    const float limit = CharacterLimits{}.max_slope_degrees;
+    auto allowed = level_with_stair(limit - 0.1f);
+    CHECK(of_rule(validate_design(allowed), Rule::StairSlope).empty());
+    CHECK(walk_to_control_panel(allowed, {}).reachable);
+    CHECK(of_rule(validate_design(allowed), Rule::Reachability).empty());
+    auto steep = level_with_stair(limit + 5.0f);
+    CHECK(of_rule(validate_design(steep), Rule::StairSlope).size() == 1);
+    CHECK_FALSE(walk_to_control_panel(steep, {}).reachable);
 }
