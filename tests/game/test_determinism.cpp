@@ -1,0 +1,166 @@
+// Determinism: equal seeds give equal state hashes; a recorded run replays to the same final hash; shipped
+// levels build; bad files and options give clear errors.
+#include "game/autoplay.h"
+#include "game/headless.h"
+#include "game/replay.h"
+#include "game_test_levels.h"
+#include "level/level_io.h"
+
+#include <string>
+
+using namespace ks;
+using namespace ks::game;
+using namespace ks::game::test;
+
+namespace {
+
+level::Level shipped(const char* name) {
+    auto lv = level::load_level_file(ks::test::source_dir() / "levels" / name);
+    if (!lv) FAIL(lv.error().str());
+    return std::move(*lv);
+}
+
+std::uint64_t hash_after(const level::Level& lv, std::uint64_t seed, double seconds) {
+    auto g = make_game(lv, seed);
+    Autoplay bot(*g, seed);
+    const int steps = static_cast<int>(seconds * 120);
+    for (int i = 0; i < steps && g->phase() == Phase::Playing; ++i) g->step(bot.decide(*g));
+    return g->state_hash();
+}
+
+} // namespace
+
+TEST_CASE("the same seed gives the same state hash; another seed another one") {
+    const auto lv = shipped("main.json");
+    const auto a = hash_after(lv, 7, 6.0);
+    CHECK(a == hash_after(lv, 7, 6.0));
+    CHECK(a != hash_after(lv, 8, 6.0)); // robots wander differently
+}
+
+TEST_CASE("a recorded autoplay run replays to the exact final state hash") {
+    ks::test::ScratchDir dir;
+    HeadlessOptions rec;
+    rec.level = ks::test::source_dir() / "levels/main.json";
+    rec.seconds = 12.0;
+    rec.seed = 5;
+    rec.autoplay = true;
+    rec.record = dir / "run.replay";
+    rec.stats_json = dir / "stats.json";
+    auto recorded = run_headless(rec);
+    if (!recorded) FAIL(recorded.error().str());
+    HeadlessOptions play;
+    play.level = rec.level;
+    play.replay = rec.record;
+    auto replayed = run_headless(play);
+    if (!replayed) FAIL(replayed.error().str());
+    CHECK(replayed->state_hash == recorded->state_hash);
+    CHECK(replayed->steps == recorded->steps);
+    CHECK(replayed->shots == recorded->shots);
+    CHECK(replayed->outcome == recorded->outcome);
+    const std::string json = ks::test::read_file(dir / "stats.json");
+    for (const char* key : {"\"outcome\"", "\"sim_time_s\"", "\"robots_killed\"", "\"damage_taken\"",
+                            "\"shots\"", "\"steps_per_second\"", "\"state_hash\""})
+        CHECK(json.find(key) != std::string::npos);
+
+    SUBCASE("an edited replay no longer matches") {
+        auto r = load_recording_file(rec.record);
+        REQUIRE(r.ok());
+        REQUIRE(r->inputs.size() > 200);
+        r->inputs[100].look_yaw += 0.01f;
+        REQUIRE(save_recording_file(dir / "edited.replay", *r).ok());
+        play.replay = dir / "edited.replay";
+        auto edited = run_headless(play);
+        REQUIRE(edited.ok());
+        CHECK(edited->state_hash != recorded->state_hash);
+    }
+}
+
+TEST_CASE("recordings round-trip bit-exactly and bad ones are reported with file and line") {
+    Recording r;
+    r.seed = 99;
+    r.level = "levels/main.json";
+    Input a;
+    a.move_forward = 0.1f;
+    a.look_yaw = -1.0e-7f;
+    a.look_pitch = 3.14159274f;
+    a.fire = a.jump = true;
+    Input b;
+    b.interact = b.pause = true;
+    r.inputs = {a, b, Input{}};
+    auto back = load_recording_string(save_recording_string(r), "mem");
+    REQUIRE(back.ok());
+    CHECK(back->seed == 99);
+    CHECK(back->inputs == r.inputs);
+
+    auto bad = [](const std::string& text) {
+        auto res = load_recording_string(text, "bad.replay");
+        REQUIRE_FALSE(res.ok());
+        CHECK(res.error().where.file == "bad.replay");
+        return res.error();
+    };
+    CHECK(bad("hello\n").where.line == 1);
+    CHECK(bad("killswitch-replay 1\nseed x\n").where.line == 2);
+    const Error nan = bad("killswitch-replay 1\nseed 1\nlevel a\nsteps 1\nnan 0 0 0 -\n");
+    CHECK(nan.where.line == 5);
+    CHECK(bad("killswitch-replay 1\nseed 1\nlevel a\nsteps 1\n0 0 0 0 z\n").message.find("flag") !=
+          std::string::npos);
+    CHECK(bad("killswitch-replay 1\nseed 1\nlevel a\nsteps 3\n0 0 0 0 -\n").message.find("3") !=
+          std::string::npos);
+}
+
+TEST_CASE("headless options: parsing, conflicts and missing files are errors, not crashes") {
+    auto parse = [](std::vector<const char*> args) {
+        args.insert(args.begin(), "killswitch");
+        auto cl = CommandLine::parse(static_cast<int>(args.size()), args.data(), headless_flags());
+        REQUIRE(cl.ok());
+        return parse_headless_options(*cl);
+    };
+    auto ok = parse({"--headless", "--level", "levels/main.json", "--seconds", "30", "--seed", "12",
+                     "--autoplay", "--stats-json", "-"});
+    REQUIRE(ok.ok());
+    CHECK(ok->seconds == 30.0);
+    CHECK(ok->seed == 12);
+    CHECK(ok->autoplay);
+    CHECK(ok->stats_json == "-");
+    CHECK_FALSE(parse({"--seconds", "-3"}).ok());
+    CHECK_FALSE(parse({"--seconds", "nan"}).ok());
+    CHECK_FALSE(parse({"--seed", "abc"}).ok());
+    CHECK_FALSE(parse({"--record", "a", "--replay", "b"}).ok());
+    CHECK_FALSE(parse({"--autoplay", "--replay", "b"}).ok());
+
+    HeadlessOptions missing;
+    missing.level = ks::test::source_dir() / "levels/does_not_exist.json";
+    auto r = run_headless(missing);
+    REQUIRE_FALSE(r.ok());
+    CHECK(r.error().str().find("does_not_exist") != std::string::npos);
+    HeadlessOptions no_replay;
+    no_replay.level = ks::test::source_dir() / "levels/main.json";
+    no_replay.replay = ks::test::source_dir() / "no_such.replay";
+    CHECK_FALSE(run_headless(no_replay).ok());
+}
+
+TEST_CASE("shipped levels build into games with the reference's entities") {
+    auto main_game = make_game(shipped("main.json"));
+    CHECK(main_game->robots().size() == 8);
+    CHECK(main_game->doors().size() == 2);
+    CHECK(main_game->pickups().size() == 3);
+    CHECK(main_game->cylinders().size() == 6);
+    CHECK(main_game->panels().size() == 1);
+    CHECK(main_game->lights().size() == 11);
+    CHECK(main_game->player().feet == Vec3(0, 0, 25));
+    run_for(*main_game, 2.0);
+    CHECK(main_game->player().feet.y == doctest::Approx(0.0f).epsilon(0.02)); // stands on the ground
+    for (const Robot& r : main_game->robots()) CHECK(r.feet.y >= -0.1f);
+    // The dojo's robot is an animation dummy: not simulated by the game.
+    auto dojo = make_game(shipped("dojo.json"));
+    CHECK(dojo->robots().empty());
+    CHECK(dojo->pickups().size() == 3);
+    run_for(*dojo, 1.0);
+    CHECK(dojo->phase() == Phase::Playing);
+}
+
+TEST_CASE("without input the player survives standing at the main level's start") {
+    auto g = make_game(shipped("main.json"), 3);
+    run_for(*g, 30.0);
+    CHECK(g->phase() == Phase::Playing); // room 1 has no robots; door 1 stays closed
+}
