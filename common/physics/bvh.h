@@ -60,7 +60,7 @@ class Bvh {
   private:
     // The binary tree collapsed to four children per node, bounds stored lane-wise: ray traversal tests four
     // boxes at once (SSE where available) and visits half as many nodes.
-    struct WideNode {
+    struct alignas(64) WideNode { // 128 bytes: exactly two cache lines
         float min_x[4], min_y[4], min_z[4], max_x[4], max_y[4], max_z[4];
         std::int32_t child[4]; // >= 0: wide node; < 0: ~leaf index
         std::int32_t lanes;    // bit k set when child k exists
