@@ -1,0 +1,675 @@
+// The runtime's state machine: Loading → Menu ⇄ (How to Play, Credits, Options) → Playing ⇄ Paused →
+// Dead / Won → Menu or a fresh game; the Dojo is Playing on levels/dojo.json with the test robot driven by
+// number keys. The game advances only in the shell's fixed steps (the game's 120 Hz); the picture is drawn
+// once per frame, interpolated between the last two steps.
+#include "game_app.h"
+
+#include "anim/dojo.h"
+#include "core/log.h"
+#include "core/paths.h"
+#include "game/game.h"
+#include "level/level_io.h"
+#include "menu_style.h"
+#include "options.h"
+#include "player_input.h"
+#include "render/hud.h"
+#include "render/scene_renderer.h"
+#include "screens.h"
+#include "world_view.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <functional>
+#include <optional>
+#include <sstream>
+
+namespace ks::runtime {
+
+const std::vector<std::string>& game_app_options() {
+    static const std::vector<std::string> names = {"level",     "dojo", "screen", "warp", "dojo-key",
+                                                   "dojo-time", "seed", "msaa",   "help"};
+    return names;
+}
+const std::vector<std::string>& game_app_flags() {
+    static const std::vector<std::string> flags = {"dojo", "help"};
+    return flags;
+}
+const std::vector<std::string>& game_app_screens() {
+    static const std::vector<std::string> screens = {"loading", "menu",  "howto", "credits", "options",
+                                                     "pause",   "death", "win",   "play",    "dojo"};
+    return screens;
+}
+
+namespace {
+
+enum class Screen { Loading, Menu, HowTo, Credits, Options, Playing, Paused, Dead, Won };
+
+// One loaded level with its game and view. The Dojo's controller borrows the game's clips, so it goes first.
+struct Session {
+    level::Level level;
+    bool dojo = false;
+    std::unique_ptr<game::Game> game;
+    std::unique_ptr<WorldView> view;
+    std::optional<anim::DojoController> dojo_controller;
+    DojoDummy dummy;
+    double play_seconds = 0.0;
+    int robots_total = 0;
+    ~Session() { dojo_controller.reset(); }
+};
+
+// Loading in steps, one per frame, so the progress bar moves while assets load.
+struct Loader {
+    struct Step {
+        std::string label;
+        std::function<Result<void>()> run;
+    };
+    std::vector<Step> steps;
+    std::size_t next = 0;
+    Screen then = Screen::Menu;
+    float fraction() const { return steps.empty() ? 1.0f : static_cast<float>(next) / steps.size(); }
+    bool done() const { return next >= steps.size(); }
+    std::string label() const { return done() ? "Ready" : steps[next].label; }
+};
+
+bool parse_floats(const std::string& text, float* out, int count) {
+    std::stringstream ss(text);
+    std::string item;
+    int n = 0;
+    while (std::getline(ss, item, ',')) {
+        if (n >= count) return false;
+        char* end = nullptr;
+        out[n] = std::strtof(item.c_str(), &end);
+        if (end == item.c_str() || *end != '\0' || !is_finite(out[n])) return false;
+        ++n;
+    }
+    return n == count;
+}
+
+class GameApp {
+  public:
+    GameApp(render::AppShell& shell, render::SceneRenderer& renderer, render::AssetLibrary& assets,
+            std::filesystem::path level_path, std::uint64_t seed)
+        : shell_(shell), renderer_(renderer), assets_(assets), level_path_(std::move(level_path)),
+          seed_(seed) {
+        options_ = load_options(options_path());
+    }
+
+    // Command-line automation: the screen to show and the scenario to set up (tests and screenshots).
+    struct Automation {
+        std::string screen;
+        bool dojo = false;
+        std::optional<std::array<float, 5>> warp;
+        char dojo_key = 0;
+        double dojo_time = -1.0;
+    };
+    Result<void> start(const Automation& a);
+    int run();
+
+  private:
+    void load(const std::filesystem::path& path, bool dojo, Screen then);
+    Result<void> finish_loading_now();
+    void step_loader();
+    void fixed_update(double dt);
+    void render(const render::FrameInfo& info);
+    void imgui(const render::FrameInfo& info);
+    void handle_keys();
+    void enter_play();
+    void pause();
+    void resume();
+    void to_menu();
+    void retry();
+    void open_sub(Screen s) {
+        return_to_ = screen_;
+        screen_ = s;
+    }
+    void save_options_now();
+    bool in_world() const { return screen_ == Screen::Playing; }
+
+    render::AppShell& shell_;
+    render::SceneRenderer& renderer_;
+    render::AssetLibrary& assets_;
+    std::filesystem::path level_path_;
+    std::uint64_t seed_;
+    Options options_;
+    bool options_dirty_ = false;
+    PlayerInput input_;
+    Screen screen_ = Screen::Loading, return_to_ = Screen::Menu;
+    std::unique_ptr<Session> session_, pending_;
+    Loader loader_;
+    bool freeze_loader_ = false, freeze_dojo_ = false;
+    std::string error_;
+    bool quit_ = false;
+    bool esc_was_down_ = true;
+    bool digit_was_down_[10] = {};
+    bool pause_requested_ = false;
+    render::FrameStats stats_;
+    WinStats win_;
+    std::vector<render::MeshInstance> no_instances_;
+    std::vector<render::Light> no_lights_;
+};
+
+void GameApp::load(const std::filesystem::path& path, bool dojo, Screen then) {
+    pending_ = std::make_unique<Session>();
+    pending_->dojo = dojo;
+    loader_ = Loader{};
+    loader_.then = then;
+    Session* s = pending_.get();
+    loader_.steps.push_back({"Reading " + path.filename().string(), [s, path]() -> Result<void> {
+                                 level::LoadReport report;
+                                 auto loaded = level::load_level_file(path, &report);
+                                 if (!loaded) return loaded.error();
+                                 for (const auto& d : report.diagnostics) log::warn(d.error.str());
+                                 s->level = std::move(*loaded);
+                                 return {};
+                             }});
+    loader_.steps.push_back({"Building the simulation", [this, s]() -> Result<void> {
+                                 game::GameOptions go;
+                                 go.seed = seed_;
+                                 auto g = game::Game::create(s->level, go);
+                                 if (!g) return g.error();
+                                 s->game = std::move(*g);
+                                 s->robots_total = static_cast<int>(s->game->robots().size());
+                                 return {};
+                             }});
+    // Models one per frame: their textures are the slow part of loading.
+    for (const char* model : {"robot", "rifle", "door", "gas_cylinder", "floor_light", "top_light",
+                              "control_panel", "pickup_health", "pickup_ammo", "pickup_shield"}) {
+        loader_.steps.push_back({std::string("Loading model ") + model, [this, model]() -> Result<void> {
+                                     (void)assets_.model(model);
+                                     return {};
+                                 }});
+    }
+    loader_.steps.push_back({"Building the level scene", [this, s]() -> Result<void> {
+                                 s->view = WorldView::build(s->level, *s->game, assets_);
+                                 return {};
+                             }});
+    if (dojo) {
+        loader_.steps.push_back({"Waking the test robot", [s]() -> Result<void> {
+                                     const auto& lib = s->game->animations();
+                                     auto c = anim::DojoController::create(lib.clips, lib.rig,
+                                                                           anim::reference_dojo_clips());
+                                     if (!c) return c.error();
+                                     s->dojo_controller.emplace(std::move(*c));
+                                     for (const auto& e : s->level.entities)
+                                         if (const auto* r = e.try_as<level::RobotProps>(); r && r->dummy) {
+                                             s->dummy.feet = e.position;
+                                             s->dummy.model_yaw = radians(e.rotation.x) + kPi * 0.5f;
+                                         }
+                                     s->dummy.pose = &s->dojo_controller->pose();
+                                     return {};
+                                 }});
+    }
+    screen_ = Screen::Loading;
+}
+
+void GameApp::step_loader() {
+    if (screen_ != Screen::Loading || loader_.done() || freeze_loader_) return;
+    auto result = loader_.steps[loader_.next].run();
+    if (!result) {
+        error_ = "Could not load: " + result.error().str();
+        log::error(result.error().str());
+        pending_.reset();
+        screen_ = session_ ? Screen::Menu : Screen::Menu;
+        loader_ = Loader{};
+        return;
+    }
+    ++loader_.next;
+    if (loader_.done()) {
+        session_ = std::move(pending_);
+        error_.clear();
+        if (loader_.then == Screen::Playing)
+            enter_play();
+        else
+            screen_ = loader_.then;
+    }
+}
+
+Result<void> GameApp::finish_loading_now() {
+    while (screen_ == Screen::Loading && !loader_.done()) {
+        step_loader();
+        if (!error_.empty()) return Error(error_, Location(level_path_.string()), "see the message above");
+    }
+    return {};
+}
+
+void GameApp::enter_play() {
+    screen_ = Screen::Playing;
+    pause_requested_ = false;
+    if (!shell_.screenshot_mode()) input_.capture(shell_.window());
+}
+
+void GameApp::pause() {
+    if (screen_ != Screen::Playing) return;
+    screen_ = Screen::Paused;
+    input_.release(shell_.window());
+    if (session_ && session_->game && !session_->game->paused()) {
+        game::Input in;
+        in.pause = true;
+        session_->view->before_step(*session_->game);
+        session_->game->step(in);
+        session_->view->after_step(*session_->game, 0.0f);
+    }
+}
+
+void GameApp::resume() {
+    if (session_ && session_->game && session_->game->paused()) {
+        game::Input in;
+        in.pause = true; // toggles back
+        session_->view->before_step(*session_->game);
+        session_->game->step(in);
+        session_->view->after_step(*session_->game, 0.0f);
+    }
+    enter_play();
+}
+
+void GameApp::to_menu() {
+    input_.release(shell_.window());
+    // The menu shows the main level behind it; a finished or Dojo session is replaced by a fresh main one.
+    if (!session_ || session_->dojo || session_->game->phase() != game::Phase::Playing ||
+        session_->play_seconds > 0.0)
+        load(level_path_, false, Screen::Menu);
+    else
+        screen_ = Screen::Menu;
+}
+
+void GameApp::retry() {
+    load(level_path_, session_ && session_->dojo, Screen::Playing);
+}
+
+void GameApp::save_options_now() {
+    if (!options_dirty_) return;
+    options_dirty_ = false;
+    if (auto saved = save_options(options_path(), options_); !saved) log::warn(saved.error().str());
+}
+
+void GameApp::fixed_update(double dt) {
+    if (!session_ || !session_->game) return;
+    auto& g = *session_->game;
+    const bool world_runs =
+        screen_ == Screen::Playing || (screen_ == Screen::Dead && !shell_.screenshot_mode());
+    if (session_->dojo_controller && !freeze_dojo_ && screen_ == Screen::Playing)
+        session_->dojo_controller->advance(dt);
+    if (!world_runs) return;
+    game::Input in = screen_ == Screen::Playing ? input_.gather(shell_.window(), options_) : game::Input{};
+    session_->view->before_step(g);
+    g.step(in);
+    session_->view->after_step(g, static_cast<float>(dt));
+    if (g.phase() == game::Phase::Playing) session_->play_seconds += dt;
+    if (g.phase() == game::Phase::Dead && g.death_camera().menu_ready && screen_ == Screen::Playing) {
+        screen_ = Screen::Dead;
+        input_.release(shell_.window());
+    }
+    if (g.phase() == game::Phase::Won && screen_ == Screen::Playing) {
+        win_ = {session_->play_seconds, g.robots_killed(), session_->robots_total};
+        screen_ = Screen::Won;
+        input_.release(shell_.window());
+    }
+}
+
+void GameApp::handle_keys() {
+    GLFWwindow* w = shell_.window();
+    const bool esc = glfwGetKey(w, GLFW_KEY_ESCAPE) == GLFW_PRESS;
+    const bool esc_pressed = esc && !esc_was_down_;
+    esc_was_down_ = esc;
+    if (shell_.screenshot_mode()) return;
+    if (screen_ == Screen::Playing && (esc_pressed || !glfwGetWindowAttrib(w, GLFW_FOCUSED))) {
+        pause();
+        return;
+    }
+    if (esc_pressed) {
+        if (screen_ == Screen::Paused)
+            resume();
+        else if (screen_ == Screen::HowTo || screen_ == Screen::Credits || screen_ == Screen::Options) {
+            save_options_now();
+            screen_ = return_to_;
+        }
+    }
+    if (screen_ == Screen::Playing && session_ && session_->dojo_controller) {
+        for (int k = 0; k <= 9; ++k) {
+            const bool down = glfwGetKey(w, GLFW_KEY_0 + k) == GLFW_PRESS;
+            if (down && !digit_was_down_[k]) session_->dojo_controller->press(static_cast<char>('0' + k));
+            digit_was_down_[k] = down;
+        }
+    }
+}
+
+void GameApp::render(const render::FrameInfo& info) {
+    step_loader();
+    handle_keys();
+    if (!session_ || !session_->view || screen_ == Screen::Loading) {
+        // Nothing loaded yet: an empty scene clears to the fog colour behind the loading panel.
+        render::SceneFrame empty;
+        empty.width = info.width;
+        empty.height = info.height;
+        empty.environment.fog_color = Vec3(0.02f, 0.025f, 0.04f);
+        empty.instances = &no_instances_;
+        empty.lights = &no_lights_;
+        stats_ = renderer_.render(empty);
+        return;
+    }
+    render::SceneFrame frame;
+    frame.width = info.width;
+    frame.height = info.height;
+    const DojoDummy* dummy = session_->dojo_controller ? &session_->dummy : nullptr;
+    session_->view->fill(*session_->game, static_cast<float>(info.alpha), options_.fov_degrees, dummy, frame);
+    if (screen_ != Screen::Playing && screen_ != Screen::Paused && screen_ != Screen::Dead)
+        frame.view_model = nullptr;
+    stats_ = renderer_.render(frame);
+}
+
+void GameApp::imgui(const render::FrameInfo& info) {
+    const float w = static_cast<float>(info.width), h = static_cast<float>(info.height);
+    const auto& fonts = shell_.fonts();
+    ImGuiIO& io = ImGui::GetIO();
+    if (input_.captured())
+        io.ConfigFlags |= ImGuiConfigFlags_NoMouse;
+    else
+        io.ConfigFlags &= ~ImGuiConfigFlags_NoMouse;
+
+    const bool world_visible =
+        session_ && session_->game &&
+        (screen_ == Screen::Playing || screen_ == Screen::Paused || screen_ == Screen::Dead);
+    if (world_visible) {
+        const auto& p = session_->game->player();
+        const auto& st = session_->game->settings();
+        render::HudState hud;
+        hud.health = p.health;
+        hud.health_max = st.max_health;
+        hud.shield = p.shield;
+        hud.shield_max = st.max_shield;
+        hud.ammo = static_cast<float>(p.ammo);
+        hud.ammo_max = static_cast<float>(st.max_ammo);
+        const auto& caption = session_->game->caption();
+        if (caption.visible() && screen_ == Screen::Playing) hud.caption = caption.text();
+        hud.damage_flash = std::clamp(p.damage_flash / 0.4f, 0.0f, 1.0f);
+        hud.crosshair = screen_ == Screen::Playing && session_->game->phase() == game::Phase::Playing;
+        ImDrawList* fg = ImGui::GetForegroundDrawList();
+        if (screen_ == Screen::Playing) {
+            render::draw_hud(fg, hud, render::HudFonts{fonts.hud}, w, h);
+            draw_hit_marker(fg, std::clamp(p.hit_marker / 0.3f, 0.0f, 1.0f), w, h);
+        }
+        if (session_->dojo_controller && screen_ == Screen::Playing)
+            dojo_legend(session_->dojo_controller->legend(), fonts, w, h);
+    }
+
+    MenuAction action = MenuAction::None;
+    switch (screen_) {
+    case Screen::Loading:
+        loading_screen(loader_.fraction(), loader_.label(), fonts, w, h);
+        break;
+    case Screen::Menu:
+        action = main_menu(error_, fonts, w, h);
+        break;
+    case Screen::HowTo:
+        action = how_to_play(fonts, w, h);
+        break;
+    case Screen::Credits:
+        action = credits(fonts, w, h);
+        break;
+    case Screen::Options: {
+        bool changed = false;
+        action = options_panel(options_, changed, fonts, w, h);
+        options_dirty_ |= changed;
+        break;
+    }
+    case Screen::Paused:
+        action = pause_menu(fonts, w, h);
+        // Clicking back into the game (outside the panel) resumes, as the reference's pointer lock.
+        if (action == MenuAction::None && !shell_.screenshot_mode() && ImGui::IsMouseClicked(0) &&
+            !io.WantCaptureMouse)
+            action = MenuAction::Resume;
+        break;
+    case Screen::Dead:
+        if (session_ && session_->game && session_->game->death_camera().menu_ready)
+            action = death_menu(fonts, w, h);
+        break;
+    case Screen::Won:
+        action = win_menu(win_, fonts, w, h);
+        break;
+    case Screen::Playing:
+        break;
+    }
+    switch (action) {
+    case MenuAction::Play:
+        if (session_ && !session_->dojo && session_->play_seconds == 0.0 &&
+            session_->game->phase() == game::Phase::Playing)
+            enter_play();
+        else
+            load(level_path_, false, Screen::Playing);
+        break;
+    case MenuAction::Dojo:
+        load(paths::level("dojo.json"), true, Screen::Playing);
+        break;
+    case MenuAction::HowTo:
+        open_sub(Screen::HowTo);
+        break;
+    case MenuAction::Credits:
+        open_sub(Screen::Credits);
+        break;
+    case MenuAction::Options:
+        open_sub(Screen::Options);
+        break;
+    case MenuAction::Back:
+        save_options_now();
+        screen_ = return_to_;
+        break;
+    case MenuAction::Quit:
+        quit_ = true;
+        break;
+    case MenuAction::Resume:
+        resume();
+        break;
+    case MenuAction::MainMenu:
+        to_menu();
+        break;
+    case MenuAction::Retry:
+        retry();
+        break;
+    case MenuAction::None:
+        break;
+    }
+
+    if (!shell_.screenshot_mode() && screen_ == Screen::Playing) {
+        char text[128];
+        std::snprintf(text, sizeof(text), "%.1f ms  %d draws", info.frame_dt * 1000.0, stats_.draw_calls);
+        ImGui::GetForegroundDrawList()->AddText(fonts.mono, 0.0f, ImVec2(10.0f, h - 22.0f),
+                                                IM_COL32(255, 255, 255, 140), text);
+    }
+}
+
+Result<void> GameApp::start(const Automation& a) {
+    const std::string& screen = a.screen;
+    const bool dojo = a.dojo || screen == "dojo";
+    const bool wants_world =
+        screen == "play" || screen == "pause" || screen == "death" || screen == "win" || dojo;
+    load(dojo ? paths::level("dojo.json") : level_path_, dojo, wants_world ? Screen::Playing : Screen::Menu);
+    if (screen == "loading") {
+        // Stop half way: the bar shows progress and the label the step in hand.
+        for (int i = 0; i < 6; ++i) step_loader();
+        freeze_loader_ = true;
+        return {};
+    }
+    if (screen.empty() && !dojo) return {}; // interactive: load across frames with the bar
+    if (auto done = finish_loading_now(); !done) return done;
+    if (!session_) return Error("loading failed", Location(level_path_.string()));
+    auto& g = *session_->game;
+    if (a.warp) {
+        const auto& v = *a.warp;
+        g.teleport_player(Vec3(v[0], v[1], v[2]), radians(v[3]), radians(v[4]));
+        // A few steps so the caption and interaction target settle at the new place.
+        for (int i = 0; i < 12; ++i) {
+            session_->view->before_step(g);
+            g.step({});
+            session_->view->after_step(g, static_cast<float>(g.settings().step));
+        }
+    }
+    if (session_->dojo_controller && a.dojo_key) {
+        if (!session_->dojo_controller->press(a.dojo_key))
+            return Error(std::string("--dojo-key '") + a.dojo_key + "' is not bound", Location("--dojo-key"),
+                         "use 1-5 (alert, shoot pose, shooting, shoot pose reverse, death) or 0 (reset)");
+    }
+    if (session_->dojo_controller && a.dojo_time >= 0.0) {
+        session_->dojo_controller->advance(a.dojo_time);
+        freeze_dojo_ = true;
+    }
+    if (screen == "menu") screen_ = Screen::Menu;
+    if (screen == "howto") open_sub(Screen::HowTo);
+    if (screen == "credits") open_sub(Screen::Credits);
+    if (screen == "options") open_sub(Screen::Options);
+    if (screen == "pause") pause();
+    if (screen == "death") {
+        g.damage_player(1.0e6f);
+        // Run the death camera to its end so the menu shows.
+        for (int i = 0; i < 1000 && !g.death_camera().menu_ready; ++i) {
+            session_->view->before_step(g);
+            g.step({});
+            session_->view->after_step(g, static_cast<float>(g.settings().step));
+        }
+        screen_ = Screen::Dead;
+    }
+    if (screen == "win") {
+        // The win screen with the session's own numbers (the panel is reached by playing; this is its look).
+        win_ = {session_->play_seconds + 83.4, g.robots_killed(), session_->robots_total};
+        screen_ = Screen::Won;
+    }
+    return {};
+}
+
+int GameApp::run() {
+    render::ShellHooks hooks;
+    hooks.fixed_update = [this](double dt) { fixed_update(dt); };
+    hooks.render = [this](const render::FrameInfo& info) { render(info); };
+    hooks.imgui = [this](const render::FrameInfo& info) { imgui(info); };
+    hooks.wants_close = [this]() { return quit_; };
+    const int code = shell_.run(hooks);
+    save_options_now();
+    session_.reset();
+    pending_.reset();
+    return code;
+}
+
+void print_help() {
+    std::printf(
+        "usage: killswitch [--level FILE] [--dojo] [--seed N] [--msaa N] [--width W] [--height H]\n"
+        "                  [--screen NAME --screenshot FILE --frames N] [--warp x,y,z,yaw,pitch]\n"
+        "                  [--dojo-key K --dojo-time S] [--no-vsync]\n"
+        "  (no option)       loading screen, then the main menu (Play, Dojo, How to Play, Credits, Options, "
+        "Quit)\n"
+        "  --level FILE      the level Play starts (default levels/main.json)\n"
+        "  --dojo            go straight to the Dojo (levels/dojo.json)\n"
+        "  --screen NAME     start on one screen: loading menu howto credits options pause death win play "
+        "dojo\n"
+        "  --warp ...        put the player's feet at x,y,z facing yaw,pitch (degrees) before the first "
+        "frame\n"
+        "  --dojo-key K      in the Dojo, press key K (0-5) before the first frame\n"
+        "  --dojo-time S     ... and advance the animation S seconds, then hold it (for screenshots)\n"
+        "  --seed N          the game's random seed (default 1)\n"
+        "  --view MODEL      (renderer) one model on a turntable; --camera x,y,z,yaw,pitch: render-only "
+        "view\n"
+        "  --headless ...    run the game without a window (see killswitch --headless --help)\n"
+        "controls: WASD/arrows move, mouse looks, click shoots, Space jumps, E interacts, Esc pauses\n"
+        "options file: $XDG_CONFIG_HOME/killswitch/options.json (or ~/.config/killswitch/options.json)\n");
+}
+
+} // namespace
+
+int run_game_app(const CommandLine& cl, const render::ShellConfig& shell_config) {
+    if (cl.has("help")) {
+        print_help();
+        return 0;
+    }
+    GameApp::Automation automation;
+    automation.screen = cl.get_or("screen", "");
+    const auto& screens = game_app_screens();
+    if (!automation.screen.empty() &&
+        std::find(screens.begin(), screens.end(), automation.screen) == screens.end()) {
+        log::error(
+            "--screen '", automation.screen,
+            "': not a screen; use one of loading menu howto credits options pause death win play dojo");
+        return 2;
+    }
+    automation.dojo = cl.has("dojo");
+    if (auto warp = cl.get("warp")) {
+        std::array<float, 5> v{};
+        if (!parse_floats(*warp, v.data(), 5)) {
+            log::error("--warp '", *warp,
+                       "': expected x,y,z,yaw,pitch with finite numbers, e.g. --warp 0,0,20,0,0");
+            return 2;
+        }
+        automation.warp = v;
+    }
+    if (auto key = cl.get("dojo-key")) {
+        if (key->size() != 1 || (*key)[0] < '0' || (*key)[0] > '9') {
+            log::error("--dojo-key '", *key, "': expected one digit 0-5");
+            return 2;
+        }
+        automation.dojo_key = (*key)[0];
+    }
+    if (cl.has("dojo-time")) {
+        auto t = cl.get_double("dojo-time", 0.0);
+        if (!t || !std::isfinite(*t) || *t < 0.0 || *t > 600.0) {
+            log::error("--dojo-time: expected seconds between 0 and 600");
+            return 2;
+        }
+        automation.dojo_time = *t;
+    }
+    auto seed = cl.get_int("seed", 1, 0, 2147483647);
+    if (!seed) {
+        log::error(seed.error().str());
+        return 2;
+    }
+    auto msaa = cl.get_int("msaa", -1, -1, 16);
+    if (!msaa) {
+        log::error(msaa.error().str());
+        return 2;
+    }
+    const auto level_path = paths::resolve_user_path(cl.get_or("level", paths::level("main.json").string()));
+    {
+        // Check the level before opening a window: a bad file is a command-line error.
+        level::LoadReport report;
+        auto loaded = level::load_level_file(level_path, &report);
+        if (!loaded) {
+            log::error(loaded.error().str());
+            return 2;
+        }
+    }
+    if (!render::display_available()) {
+        std::fprintf(stderr, "%s\n", render::no_display_message("killswitch").c_str());
+        return 3;
+    }
+    render::ShellConfig config = shell_config;
+    config.msaa_samples = 0; // the renderer owns MSAA
+    config.fixed_step = game::GameSettings{}.step;
+    auto shell = render::AppShell::create(config);
+    if (!shell) {
+        log::error(shell.error().str());
+        return 1;
+    }
+    int code = 0;
+    {
+        render::AssetLibrary assets(paths::asset(""));
+        render::RendererSettings settings;
+        settings.msaa_samples = *msaa >= 0 ? *msaa : render::default_msaa_for((*shell)->gl_renderer());
+        auto renderer = render::SceneRenderer::create(assets.textures(), settings);
+        if (!renderer) {
+            log::error(renderer.error().str());
+            render::AppShell::destroy(*shell);
+            return 1;
+        }
+        GameApp app(**shell, **renderer, assets, level_path, static_cast<std::uint64_t>(*seed));
+        if (auto started = app.start(automation); !started) {
+            log::error(started.error().str());
+            code = 2;
+        } else {
+            code = app.run();
+        }
+    }
+    render::AppShell::destroy(*shell);
+    return code;
+}
+
+} // namespace ks::runtime

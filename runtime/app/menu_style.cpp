@@ -1,0 +1,113 @@
+#include "menu_style.h"
+
+#include <algorithm>
+
+namespace ks::runtime::ui {
+
+float ui_scale(float height) {
+    return std::clamp(height / 720.0f, 0.6f, 3.0f);
+}
+
+void draw_backdrop(ImDrawList* d, float w, float h, float strength) {
+    const auto a = [&](float v) { return static_cast<int>(std::clamp(v * strength, 0.0f, 255.0f)); };
+    d->AddRectFilledMultiColor(ImVec2(0, 0), ImVec2(w, h), IM_COL32(30, 28, 60, a(200)),
+                               IM_COL32(14, 40, 70, a(190)), IM_COL32(10, 50, 80, a(205)),
+                               IM_COL32(40, 20, 50, a(215)));
+    // Vignette: darker bands along each edge read as depth of field around the panel.
+    const float band = std::min(w, h) * 0.22f;
+    const ImU32 dark = IM_COL32(0, 0, 0, a(150)), clear = IM_COL32(0, 0, 0, 0);
+    d->AddRectFilledMultiColor(ImVec2(0, 0), ImVec2(w, band), dark, dark, clear, clear);
+    d->AddRectFilledMultiColor(ImVec2(0, h - band), ImVec2(w, h), clear, clear, dark, dark);
+    d->AddRectFilledMultiColor(ImVec2(0, 0), ImVec2(band, h), dark, clear, clear, dark);
+    d->AddRectFilledMultiColor(ImVec2(w - band, 0), ImVec2(w, h), clear, dark, dark, clear);
+}
+
+void begin_panel(const char* id, const std::string& title, float panel_w, float panel_h, float w, float h,
+                 const render::Fonts& fonts) {
+    const float s = ui_scale(h);
+    const ImVec2 size(panel_w * s, panel_h * s);
+    const ImVec2 pos((w - size.x) * 0.5f, (h - size.y) * 0.5f + 20.0f * s);
+    ImDrawList* bg = ImGui::GetBackgroundDrawList();
+    // Shadow, border and body of the panel, then the title tab that overlaps its top edge.
+    const float r = 6.0f * s, border = 5.0f * s;
+    bg->AddRectFilled(ImVec2(pos.x + 6 * s, pos.y + 8 * s),
+                      ImVec2(pos.x + size.x + 6 * s, pos.y + size.y + 8 * s), IM_COL32(0, 0, 0, 90), r);
+    bg->AddRectFilled(pos, ImVec2(pos.x + size.x, pos.y + size.y), kAccent, r);
+    bg->AddRectFilled(ImVec2(pos.x + border, pos.y + border),
+                      ImVec2(pos.x + size.x - border, pos.y + size.y - border), kPanel, r);
+    ImFont* title_font = fonts.title ? fonts.title : ImGui::GetFont();
+    const float title_px = 52.0f * s;
+    const ImVec2 tsize = title_font->CalcTextSizeA(title_px, 10000.0f, 0.0f, title.c_str());
+    const ImVec2 tab_min(pos.x + (size.x - tsize.x) * 0.5f - 20 * s, pos.y - 42 * s);
+    const ImVec2 tab_max(pos.x + (size.x + tsize.x) * 0.5f + 20 * s, pos.y + 30 * s);
+    bg->AddRectFilled(tab_min, tab_max, kAccent, 16.0f * s, ImDrawFlags_RoundCornersTop);
+    bg->AddRectFilled(ImVec2(tab_min.x + border, tab_min.y + border),
+                      ImVec2(tab_max.x - border, tab_max.y + border), kPanel, 12.0f * s,
+                      ImDrawFlags_RoundCornersTop);
+    bg->AddText(title_font, title_px, ImVec2(pos.x + (size.x - tsize.x) * 0.5f, tab_min.y + 8 * s), kAccent,
+                title.c_str());
+
+    ImGui::SetNextWindowPos(ImVec2(pos.x, pos.y + 40 * s));
+    ImGui::SetNextWindowSize(ImVec2(size.x, size.y - 40 * s));
+    ImGui::PushStyleColor(ImGuiCol_WindowBg, IM_COL32(0, 0, 0, 0));
+    ImGui::PushStyleColor(ImGuiCol_Border, IM_COL32(0, 0, 0, 0));
+    ImGui::PushStyleColor(ImGuiCol_Text, kInk);
+    ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(10 * s, 14 * s));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(30 * s, 14 * s));
+    ImGui::Begin(id, nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoBringToFrontOnFocus);
+    ImGui::SetWindowFontScale(s);
+}
+
+void end_panel() {
+    ImGui::End();
+    ImGui::PopStyleVar(2);
+    ImGui::PopStyleColor(3);
+}
+
+bool big_button(const char* label, const render::Fonts& fonts, float width_720) {
+    const float s = ImGui::GetIO().DisplaySize.y > 0 ? ui_scale(ImGui::GetIO().DisplaySize.y) : 1.0f;
+    const ImVec2 size(width_720 * s, 52.0f * s);
+    ImGui::SetCursorPosX((ImGui::GetWindowWidth() - size.x) * 0.5f);
+    const ImVec2 p = ImGui::GetCursorScreenPos();
+    ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(p.x + 2 * s, p.y + 5 * s),
+                                              ImVec2(p.x + size.x + 2 * s, p.y + size.y + 5 * s),
+                                              IM_COL32(0, 0, 0, 60), 6.0f * s);
+    ImGui::PushStyleColor(ImGuiCol_Button, kAccent);
+    ImGui::PushStyleColor(ImGuiCol_ButtonHovered, kAccentHover);
+    ImGui::PushStyleColor(ImGuiCol_ButtonActive, kAccentActive);
+    ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 255, 255, 255));
+    ImGui::PushStyleVar(ImGuiStyleVar_FrameRounding, 6.0f * s);
+    if (fonts.hud) ImGui::PushFont(fonts.hud);
+    const bool clicked = ImGui::Button(label, size);
+    if (fonts.hud) ImGui::PopFont();
+    ImGui::PopStyleVar();
+    ImGui::PopStyleColor(4);
+    return clicked;
+}
+
+void centred_text(const std::string& text, ImFont* font, ImU32 colour) {
+    if (font) ImGui::PushFont(font);
+    const float tw = ImGui::CalcTextSize(text.c_str()).x;
+    ImGui::SetCursorPosX(std::max(0.0f, (ImGui::GetWindowWidth() - tw) * 0.5f));
+    ImGui::PushStyleColor(ImGuiCol_Text, colour);
+    ImGui::TextUnformatted(text.c_str());
+    ImGui::PopStyleColor();
+    if (font) ImGui::PopFont();
+}
+
+void progress_bar(float fraction, const std::string& label, const render::Fonts& fonts, float width_720) {
+    const float s = ui_scale(ImGui::GetIO().DisplaySize.y);
+    const ImVec2 size(width_720 * s, 26.0f * s);
+    ImGui::SetCursorPosX((ImGui::GetWindowWidth() - size.x) * 0.5f);
+    const ImVec2 p = ImGui::GetCursorScreenPos();
+    ImDrawList* d = ImGui::GetWindowDrawList();
+    const float f = std::clamp(fraction, 0.0f, 1.0f);
+    d->AddRectFilled(p, ImVec2(p.x + size.x, p.y + size.y), IM_COL32(200, 208, 212, 255), 6.0f * s);
+    if (f > 0.0f) d->AddRectFilled(p, ImVec2(p.x + size.x * f, p.y + size.y), kAccent, 6.0f * s);
+    ImGui::Dummy(size);
+    centred_text(label, fonts.body);
+}
+
+} // namespace ks::runtime::ui

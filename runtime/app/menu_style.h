@@ -1,0 +1,41 @@
+#pragma once
+// The look of the game's screens, drawn with ImGui: a darkened, vignetted backdrop over the level, a
+// centred light panel with a title tab (the reference menu's shape and colours), and big accent buttons.
+// Everything is sized from the window height so 720p and 1080p read the same.
+#include "render/app_shell.h"
+
+#include <imgui.h>
+
+#include <string>
+#include <vector>
+
+namespace ks::runtime::ui {
+
+// The reference menu's palette.
+inline constexpr ImU32 kAccent = IM_COL32(41, 171, 226, 255); // buttons, title, panel border
+inline constexpr ImU32 kAccentHover = IM_COL32(70, 190, 240, 255);
+inline constexpr ImU32 kAccentActive = IM_COL32(25, 140, 195, 255);
+inline constexpr ImU32 kPanel = IM_COL32(232, 238, 238, 242); // panel body
+inline constexpr ImU32 kInk = IM_COL32(40, 48, 58, 255);      // body text on the panel
+
+// Scale from the 720p layout to the current window.
+float ui_scale(float height);
+
+// Darkens the frame behind a menu: a vertical navy→plum gradient at ~80 % plus a vignette at the edges.
+void draw_backdrop(ImDrawList* draw, float width, float height, float strength = 1.0f);
+
+// Begins a centred panel window `panel_w` x `panel_h` (720p pixels) with `title` in a tab on top. Always
+// pair with end_panel().
+void begin_panel(const char* id, const std::string& title, float panel_w, float panel_h, float width,
+                 float height, const render::Fonts& fonts);
+void end_panel();
+
+// A big accent button centred in the panel; returns true when clicked.
+bool big_button(const char* label, const render::Fonts& fonts, float width_720 = 320.0f);
+// Centred body text lines.
+void centred_text(const std::string& text, ImFont* font, ImU32 colour = kInk);
+
+// A bar with a label (the loading screen's progress).
+void progress_bar(float fraction, const std::string& label, const render::Fonts& fonts, float width_720);
+
+} // namespace ks::runtime::ui

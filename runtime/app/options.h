@@ -1,0 +1,111 @@
+#pragma once
+// The player's options (mouse sensitivity, invert Y, field of view) and their file,
+// $XDG_CONFIG_HOME/killswitch/options.json (or ~/.config/killswitch/options.json). GL-free and header-only so
+// the tests use it directly (runtime/ sources are compiled only into the killswitch executable).
+// A missing file means defaults; a bad file (not JSON, wrong types, NaN, out of range) gives one warning
+// naming the file and the field, and the defaults for what could not be read — never a failure.
+#include "core/files.h"
+#include "core/log.h"
+#include "core/math.h"
+#include "core/result.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace ks::runtime {
+
+struct Options {
+    float mouse_sensitivity = 1.0f; // multiplies the base 0.0022 rad per pixel
+    bool invert_y = false;
+    float fov_degrees = 75.0f; // vertical field of view
+    bool operator==(const Options&) const = default;
+
+    static constexpr float kMinSensitivity = 0.1f, kMaxSensitivity = 5.0f;
+    static constexpr float kMinFov = 50.0f, kMaxFov = 110.0f;
+    static constexpr float kRadiansPerPixel = 0.0022f;
+};
+
+// Where the options live: $XDG_CONFIG_HOME/killswitch, else $HOME/.config/killswitch, else ./.killswitch.
+inline std::filesystem::path options_path() {
+    namespace fs = std::filesystem;
+    if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg)
+        return fs::path(xdg) / "killswitch" / "options.json";
+    if (const char* home = std::getenv("HOME"); home && *home)
+        return fs::path(home) / ".config" / "killswitch" / "options.json";
+    return fs::path(".killswitch") / "options.json";
+}
+
+inline std::string options_to_json(const Options& o) {
+    nlohmann::json j;
+    j["format"] = "killswitch-options";
+    j["version"] = 1;
+    j["mouse_sensitivity"] = o.mouse_sensitivity;
+    j["invert_y"] = o.invert_y;
+    j["fov_degrees"] = o.fov_degrees;
+    return j.dump(2) + "\n";
+}
+
+// Parses options text; every problem is appended to `problems` ("field: what, using default X").
+inline Options options_from_json(const std::string& text, std::vector<std::string>& problems) {
+    Options o;
+    auto j = nlohmann::json::parse(text, nullptr, false);
+    if (j.is_discarded() || !j.is_object()) {
+        problems.push_back("not a JSON object");
+        return o;
+    }
+    auto read_number = [&](const char* key, float& value, float lo, float hi) {
+        if (!j.contains(key)) return;
+        const auto& v = j[key];
+        // nlohmann reads NaN/inf as null or rejects them; anything not a finite number in range is refused.
+        if (!v.is_number() || !is_finite(v.get<float>()) || v.get<float>() < lo || v.get<float>() > hi) {
+            problems.push_back(std::string(key) + ": expected a number in " + std::to_string(lo) + ".." +
+                               std::to_string(hi) + ", got " + v.dump() + "; using the default " +
+                               std::to_string(value));
+            return;
+        }
+        value = v.get<float>();
+    };
+    read_number("mouse_sensitivity", o.mouse_sensitivity, Options::kMinSensitivity, Options::kMaxSensitivity);
+    read_number("fov_degrees", o.fov_degrees, Options::kMinFov, Options::kMaxFov);
+    if (j.contains("invert_y")) {
+        if (j["invert_y"].is_boolean())
+            o.invert_y = j["invert_y"].get<bool>();
+        else
+            problems.push_back("invert_y: expected true or false, got " + j["invert_y"].dump() +
+                               "; using the default false");
+    }
+    return o;
+}
+
+// Reads the options file; missing → defaults silently, bad → defaults (per field) with one warning.
+inline Options load_options(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) return Options{};
+    auto text = files::read_text(path);
+    if (!text) {
+        log::warn(text.error().str(), " (using default options)");
+        return Options{};
+    }
+    std::vector<std::string> problems;
+    Options o = options_from_json(*text, problems);
+    for (const auto& p : problems)
+        log::warn(path.string(), ": ", p, " (fix or delete the file; Options in the menu rewrites it)");
+    return o;
+}
+
+// Writes the options atomically (temporary file + rename), creating the folder.
+inline Result<void> save_options(const std::filesystem::path& path, const Options& o) {
+    std::error_code ec;
+    if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ec);
+    if (ec)
+        return Error("cannot create the options folder: " + ec.message(),
+                     Location(path.parent_path().string()),
+                     "check the folder's permissions or set XDG_CONFIG_HOME");
+    return files::write_atomic(path, options_to_json(o));
+}
+
+} // namespace ks::runtime

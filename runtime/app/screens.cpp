@@ -1,0 +1,257 @@
+#include "screens.h"
+
+#include "menu_style.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace ks::runtime {
+
+namespace {
+// The controls, shared by How to Play and the docs (seed doc: WASD/arrows, Space, E, mouse, Esc).
+const char* const kControls[][2] = {
+    {"W A S D / arrow keys", "move"},
+    {"Mouse", "look around"},
+    {"Left or right click", "shoot"},
+    {"Space", "jump"},
+    {"E", "open doors, switch lights, use the computer"},
+    {"Esc", "pause and free the mouse"},
+    {"Click in the window", "resume"},
+    {"1 - 5, 0 (Dojo)", "play robot animations, reset"},
+};
+
+void two_columns(const char* left, const char* right, float split) {
+    ImGui::SetCursorPosX(ImGui::GetWindowWidth() * split - ImGui::CalcTextSize(left).x - 12.0f);
+    ImGui::PushStyleColor(ImGuiCol_Text, ui::kAccentActive);
+    ImGui::TextUnformatted(left);
+    ImGui::PopStyleColor();
+    ImGui::SameLine(ImGui::GetWindowWidth() * split + 12.0f);
+    ImGui::TextUnformatted(right);
+}
+} // namespace
+
+std::string format_time(double seconds) {
+    if (!std::isfinite(seconds) || seconds < 0.0) seconds = 0.0;
+    const int minutes = static_cast<int>(seconds / 60.0);
+    char text[32];
+    std::snprintf(text, sizeof(text), "%d:%04.1f", minutes, seconds - minutes * 60.0);
+    return text;
+}
+
+void loading_screen(float fraction, const std::string& step, const render::Fonts& fonts, float w, float h) {
+    ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h, 1.25f);
+    ui::begin_panel("##loading", "Killswitch", 560, 200, w, h, fonts);
+    ImGui::Dummy(ImVec2(1, 16 * ui::ui_scale(h)));
+    ui::centred_text("Loading the simulation...", fonts.hud);
+    ui::progress_bar(fraction, step, fonts, 440);
+    ui::end_panel();
+}
+
+MenuAction main_menu(const std::string& error, const render::Fonts& fonts, float w, float h) {
+    ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
+    MenuAction action = MenuAction::None;
+    ui::begin_panel("##main", "Killswitch", 640, error.empty() ? 470 : 520, w, h, fonts);
+    ui::centred_text("A virtual disaster simulator. The robots went rogue.", fonts.body);
+    if (ui::big_button("Play", fonts)) action = MenuAction::Play;
+    if (ui::big_button("Dojo", fonts)) action = MenuAction::Dojo;
+    if (ui::big_button("How to Play", fonts)) action = MenuAction::HowTo;
+    if (ui::big_button("Credits", fonts)) action = MenuAction::Credits;
+    ImGui::SetCursorPosX((ImGui::GetWindowWidth() - 320 * ui::ui_scale(h)) * 0.5f);
+    // Options and Quit share a row: they are used less often.
+    {
+        const float s = ui::ui_scale(h);
+        const float x0 = (ImGui::GetWindowWidth() - 320 * s) * 0.5f;
+        ImGui::SetCursorPosX(x0);
+        ImGui::BeginGroup();
+        ImGui::PushID("row");
+        const float cursor_y = ImGui::GetCursorPosY();
+        ImGui::SetCursorPos(ImVec2(x0, cursor_y));
+        ImGui::PushStyleColor(ImGuiCol_Button, ui::kAccent);
+        ImGui::PushStyleColor(ImGuiCol_ButtonHovered, ui::kAccentHover);
+        ImGui::PushStyleColor(ImGuiCol_ButtonActive, ui::kAccentActive);
+        ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 255, 255, 255));
+        ImGui::PushStyleVar(ImGuiStyleVar_FrameRounding, 6.0f * s);
+        if (fonts.hud) ImGui::PushFont(fonts.hud);
+        if (ImGui::Button("Options", ImVec2(155 * s, 52 * s))) action = MenuAction::Options;
+        ImGui::SameLine(x0 + 165 * s);
+        ImGui::PushStyleColor(ImGuiCol_Button, IM_COL32(120, 130, 140, 255));
+        if (ImGui::Button("Quit", ImVec2(155 * s, 52 * s))) action = MenuAction::Quit;
+        ImGui::PopStyleColor();
+        if (fonts.hud) ImGui::PopFont();
+        ImGui::PopStyleVar();
+        ImGui::PopStyleColor(4);
+        ImGui::PopID();
+        ImGui::EndGroup();
+    }
+    if (!error.empty()) {
+        ImGui::PushTextWrapPos(ImGui::GetWindowWidth() - 30 * ui::ui_scale(h));
+        ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(190, 30, 30, 255));
+        ImGui::TextWrapped("%s", error.c_str());
+        ImGui::PopStyleColor();
+        ImGui::PopTextWrapPos();
+    }
+    ui::end_panel();
+    return action;
+}
+
+MenuAction pause_menu(const render::Fonts& fonts, float w, float h) {
+    ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h, 0.8f);
+    MenuAction action = MenuAction::None;
+    ui::begin_panel("##pause", "Paused", 560, 440, w, h, fonts);
+    ui::centred_text("Click outside this panel or press Resume to play on.", fonts.body);
+    if (ui::big_button("Resume", fonts)) action = MenuAction::Resume;
+    if (ui::big_button("How to Play", fonts)) action = MenuAction::HowTo;
+    if (ui::big_button("Options", fonts)) action = MenuAction::Options;
+    if (ui::big_button("Credits", fonts)) action = MenuAction::Credits;
+    if (ui::big_button("Main Menu", fonts)) action = MenuAction::MainMenu;
+    ui::end_panel();
+    return action;
+}
+
+MenuAction death_menu(const render::Fonts& fonts, float w, float h) {
+    // The death screen tints red: the simulation "killed" the player.
+    ImDrawList* bg = ImGui::GetBackgroundDrawList();
+    bg->AddRectFilled(ImVec2(0, 0), ImVec2(w, h), IM_COL32(120, 0, 0, 110));
+    ui::draw_backdrop(bg, w, h, 0.7f);
+    MenuAction action = MenuAction::None;
+    ui::begin_panel("##death", "You Died", 520, 270, w, h, fonts);
+    ui::centred_text("The robots got you. The simulation restarts on your call.", fonts.body);
+    if (ui::big_button("Retry", fonts)) action = MenuAction::Retry;
+    if (ui::big_button("Main Menu", fonts)) action = MenuAction::MainMenu;
+    ui::end_panel();
+    return action;
+}
+
+MenuAction win_menu(const WinStats& stats, const render::Fonts& fonts, float w, float h) {
+    ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h, 0.85f);
+    MenuAction action = MenuAction::None;
+    ui::begin_panel("##win", "You Won", 560, 380, w, h, fonts);
+    ui::centred_text("Simulation ended", fonts.hud, ui::kAccentActive);
+    ui::centred_text("Time  " + format_time(stats.seconds), fonts.hud);
+    ui::centred_text("Robots killed  " + std::to_string(stats.robots_killed) + " / " +
+                         std::to_string(stats.robots_total),
+                     fonts.hud);
+    if (ui::big_button("Play Again", fonts)) action = MenuAction::Retry;
+    if (ui::big_button("Main Menu", fonts)) action = MenuAction::MainMenu;
+    ui::end_panel();
+    return action;
+}
+
+MenuAction how_to_play(const render::Fonts& fonts, float w, float h) {
+    ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
+    MenuAction action = MenuAction::None;
+    ui::begin_panel("##howto", "How to Play", 760, 520, w, h, fonts);
+    ImGui::PushTextWrapPos(ImGui::GetWindowWidth() - 30 * ui::ui_scale(h));
+    ImGui::TextWrapped("Survive the rogue robots and reach the computer at the end of the level to end the "
+                       "simulation. Shoot gas cylinders to blow up robots near them - keep your distance. "
+                       "Pick up health (red), shield (blue) and ammo (yellow) on the way.");
+    ImGui::PopTextWrapPos();
+    if (fonts.body) ImGui::PushFont(fonts.body);
+    for (const auto& row : kControls) two_columns(row[0], row[1], 0.42f);
+    if (fonts.body) ImGui::PopFont();
+    if (ui::big_button("Back", fonts)) action = MenuAction::Back;
+    ui::end_panel();
+    return action;
+}
+
+MenuAction credits(const render::Fonts& fonts, float w, float h) {
+    ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
+    MenuAction action = MenuAction::None;
+    ui::begin_panel("##credits", "Credits", 760, 500, w, h, fonts);
+    if (fonts.body) ImGui::PushFont(fonts.body);
+    two_columns("Killswitch", "the Killswitch team: engine, physics, animation,", 0.3f);
+    two_columns("", "renderer, game rules, runtime, level editor, assets", 0.3f);
+    two_columns("Based on", "\"Interactive Graphics - Final Project\" (2021),", 0.3f);
+    two_columns("", "a three.js first-person shooter and robot Dojo", 0.3f);
+    two_columns("Fonts", "DejaVu Sans, Sans Bold and Sans Mono -", 0.3f);
+    two_columns("", "Bitstream Vera licence (free to use, modify and", 0.3f);
+    two_columns("", "redistribute); assets/fonts/LICENSE-DejaVu.txt", 0.3f);
+    two_columns("Libraries", "GLFW, Dear ImGui, GLM, assimp, stb, nlohmann/json,", 0.3f);
+    two_columns("", "libepoxy, doctest", 0.3f);
+    if (fonts.body) ImGui::PopFont();
+    if (ui::big_button("Back", fonts)) action = MenuAction::Back;
+    ui::end_panel();
+    return action;
+}
+
+MenuAction options_panel(Options& o, bool& changed, const render::Fonts& fonts, float w, float h) {
+    ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
+    MenuAction action = MenuAction::None;
+    const float s = ui::ui_scale(h);
+    ui::begin_panel("##options", "Options", 640, 400, w, h, fonts);
+    ImGui::PushStyleColor(ImGuiCol_FrameBg, IM_COL32(205, 214, 218, 255));
+    ImGui::PushStyleColor(ImGuiCol_FrameBgHovered, IM_COL32(190, 205, 212, 255));
+    ImGui::PushStyleColor(ImGuiCol_FrameBgActive, IM_COL32(180, 198, 206, 255));
+    ImGui::PushStyleColor(ImGuiCol_SliderGrab, ui::kAccent);
+    ImGui::PushStyleColor(ImGuiCol_SliderGrabActive, ui::kAccentActive);
+    ImGui::PushStyleColor(ImGuiCol_CheckMark, ui::kAccent);
+    ImGui::PushStyleVar(ImGuiStyleVar_FrameRounding, 5.0f * s);
+    ImGui::PushStyleVar(ImGuiStyleVar_GrabMinSize, 18.0f * s);
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(10 * s, 9 * s));
+    if (fonts.body) ImGui::PushFont(fonts.body);
+    const float label_w = 230 * s;
+    auto label = [&](const char* text) {
+        ImGui::SetCursorPosX(40 * s);
+        ImGui::AlignTextToFramePadding();
+        ImGui::TextUnformatted(text);
+        ImGui::SameLine(40 * s + label_w);
+        ImGui::SetNextItemWidth(ImGui::GetWindowWidth() - label_w - 80 * s);
+    };
+    label("Mouse sensitivity");
+    changed |= ImGui::SliderFloat("##sens", &o.mouse_sensitivity, Options::kMinSensitivity,
+                                  Options::kMaxSensitivity, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+    label("Field of view");
+    changed |= ImGui::SliderFloat("##fov", &o.fov_degrees, Options::kMinFov, Options::kMaxFov, "%.0f deg",
+                                  ImGuiSliderFlags_AlwaysClamp);
+    label("Invert mouse Y");
+    changed |= ImGui::Checkbox("##invert", &o.invert_y);
+    ImGui::SetCursorPosX(40 * s);
+    ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(90, 100, 110, 255));
+    ImGui::TextUnformatted(("Saved to " + options_path().string()).c_str());
+    ImGui::PopStyleColor();
+    if (fonts.body) ImGui::PopFont();
+    ImGui::PopStyleVar(3);
+    ImGui::PopStyleColor(6);
+    if (ui::big_button("Back", fonts)) action = MenuAction::Back;
+    ui::end_panel();
+    return action;
+}
+
+void dojo_legend(const std::vector<std::string>& lines, const render::Fonts& fonts, float w, float h) {
+    const float s = ui::ui_scale(h);
+    ImDrawList* d = ImGui::GetForegroundDrawList();
+    ImFont* font = fonts.body ? fonts.body : ImGui::GetFont();
+    const float px = 20.0f * s, line = px * 1.35f;
+    const float box_w = 330.0f * s, box_h = line * static_cast<float>(lines.size() + 1) + 16 * s;
+    const ImVec2 p(w - box_w - 16 * s, 16 * s);
+    d->AddRectFilled(p, ImVec2(p.x + box_w, p.y + box_h), IM_COL32(10, 16, 24, 190), 8 * s);
+    d->AddRect(p, ImVec2(p.x + box_w, p.y + box_h), ui::kAccent, 8 * s, 0, 2 * s);
+    d->AddText(fonts.hud ? fonts.hud : font, 22 * s, ImVec2(p.x + 14 * s, p.y + 8 * s), ui::kAccent,
+               "Dojo - robot animations");
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        const bool playing = lines[i].rfind("playing", 0) == 0;
+        d->AddText(font, px, ImVec2(p.x + 14 * s, p.y + 8 * s + line * static_cast<float>(i + 1)),
+                   playing ? IM_COL32(255, 220, 120, 255) : IM_COL32(235, 240, 245, 255), lines[i].c_str());
+    }
+    const char* hint = "WASD move  -  mouse look  -  Esc pause";
+    const ImVec2 hs = font->CalcTextSizeA(px, 10000.0f, 0.0f, hint);
+    d->AddText(font, px, ImVec2((w - hs.x) * 0.5f, h - hs.y - 60 * s), IM_COL32(235, 240, 245, 220), hint);
+}
+
+void draw_hit_marker(ImDrawList* d, float strength, float w, float h) {
+    if (!(strength > 0.0f)) return;
+    const float s = ui::ui_scale(h);
+    const auto a = static_cast<int>(std::clamp(strength, 0.0f, 1.0f) * 255.0f);
+    const ImVec2 c(w * 0.5f, h * 0.5f);
+    const float r0 = 7 * s, r1 = 15 * s;
+    for (int i = 0; i < 4; ++i) {
+        const float sx = (i & 1) ? 1.0f : -1.0f, sy = (i & 2) ? 1.0f : -1.0f;
+        d->AddLine(ImVec2(c.x + sx * r0, c.y + sy * r0), ImVec2(c.x + sx * r1, c.y + sy * r1),
+                   IM_COL32(255, 255, 255, a), 2.5f * s);
+    }
+}
+
+} // namespace ks::runtime

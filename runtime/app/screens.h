@@ -1,0 +1,39 @@
+#pragma once
+// The game's screens as immediate-mode functions: each draws itself centred in the window and returns what
+// the player chose this frame. The app's state machine (game_app.cpp) decides what each choice does.
+#include "options.h"
+#include "render/app_shell.h"
+
+#include <string>
+#include <vector>
+
+struct ImDrawList;
+
+namespace ks::runtime {
+
+enum class MenuAction { None, Play, Dojo, HowTo, Credits, Options, Quit, Resume, MainMenu, Retry, Back };
+
+struct WinStats {
+    double seconds = 0.0;
+    int robots_killed = 0;
+    int robots_total = 0;
+};
+
+void loading_screen(float fraction, const std::string& step, const render::Fonts& fonts, float w, float h);
+MenuAction main_menu(const std::string& error, const render::Fonts& fonts, float w, float h);
+MenuAction pause_menu(const render::Fonts& fonts, float w, float h);
+MenuAction death_menu(const render::Fonts& fonts, float w, float h);
+MenuAction win_menu(const WinStats& stats, const render::Fonts& fonts, float w, float h);
+MenuAction how_to_play(const render::Fonts& fonts, float w, float h);
+MenuAction credits(const render::Fonts& fonts, float w, float h);
+// Edits `options` in place; `changed` is set when a value moved this frame.
+MenuAction options_panel(Options& options, bool& changed, const render::Fonts& fonts, float w, float h);
+
+// The Dojo's key legend (top right) and a hint line at the bottom.
+void dojo_legend(const std::vector<std::string>& lines, const render::Fonts& fonts, float w, float h);
+// The hit marker: four short diagonal strokes around the crosshair, fading with `strength` (0..1).
+void draw_hit_marker(ImDrawList* draw, float strength, float w, float h);
+// "m:ss.s" for the win screen.
+std::string format_time(double seconds);
+
+} // namespace ks::runtime

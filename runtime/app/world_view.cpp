@@ -1,0 +1,239 @@
+#include "world_view.h"
+
+#include "render/view_model.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ks::runtime {
+
+level::Level static_part(const level::Level& level) {
+    level::Level out = level;
+    std::erase_if(out.entities, [](const level::Entity& e) {
+        const auto t = e.type();
+        return t == level::EntityType::Robot || t == level::EntityType::Pickup ||
+               t == level::EntityType::GasCylinder;
+    });
+    return out;
+}
+
+RigBinding::RigBinding(const anim::Rig& rig, const render::Model& model) : rig_(&rig), model_(&model) {
+    model_node_of_rig_.assign(static_cast<std::size_t>(rig.size()), -1);
+    for (int i = 0; i < rig.size(); ++i) {
+        model_node_of_rig_[static_cast<std::size_t>(i)] = model.find_node(rig.node(i).name);
+        if (model_node_of_rig_[static_cast<std::size_t>(i)] >= 0) ++mapped_;
+    }
+}
+
+void RigBinding::apply(const anim::Pose& pose, render::ModelPose& out) const {
+    if (!model_) return;
+    out.local.resize(model_->nodes.size());
+    for (std::size_t i = 0; i < model_->nodes.size(); ++i) out.local[i] = model_->nodes[i].local;
+    const int n = std::min(pose.size(), rig_->size());
+    for (int i = 0; i < n; ++i) {
+        const int m = model_node_of_rig_[static_cast<std::size_t>(i)];
+        if (m < 0) continue;
+        const auto k = static_cast<std::size_t>(i);
+        out.local[static_cast<std::size_t>(m)] = glm::translate(Mat4(1.0f), pose.position[k]) *
+                                                 glm::mat4_cast(pose.rotation[k]) *
+                                                 glm::scale(Mat4(1.0f), rig_->node(i).rest_scale);
+    }
+}
+
+std::unique_ptr<WorldView> WorldView::build(const level::Level& level, const game::Game& game,
+                                            render::AssetLibrary& assets) {
+    auto view = std::unique_ptr<WorldView>(new WorldView());
+    view->scene_ = render::LevelScene::build(static_part(level), assets);
+    view->robot_model_ = &assets.model("robot");
+    view->cylinder_model_ = &assets.model("gas_cylinder");
+    view->rifle_ = &assets.model("rifle");
+    view->pickup_models_[0] = &assets.model("pickup_health");
+    view->pickup_models_[1] = &assets.model("pickup_ammo");
+    view->pickup_models_[2] = &assets.model("pickup_shield");
+    view->robot_binding_ = RigBinding(game.animations().rig, *view->robot_model_);
+    view->robot_pose_ = view->robot_model_->rest_pose();
+    view->emitters_.reserve(64);
+    view->emitter_list_.reserve(64);
+    view->capture(game, view->current_);
+    view->previous_ = view->current_;
+    return view;
+}
+
+void WorldView::capture(const game::Game& game, Snapshot& s) const {
+    const auto& p = game.player();
+    const auto death = game.death_camera();
+    s.eye = p.eye() - Vec3(0.0f, death.eye_drop, 0.0f);
+    s.yaw = p.yaw;
+    s.pitch = std::clamp(p.pitch + death.pitch, -kPi * 0.5f, kPi * 0.5f);
+    const auto robots = game.robots();
+    s.robot_feet.resize(robots.size());
+    s.robot_yaw.resize(robots.size());
+    for (std::size_t i = 0; i < robots.size(); ++i) {
+        s.robot_feet[i] = robots[i].feet;
+        s.robot_yaw[i] = robots[i].model_yaw();
+    }
+}
+
+void WorldView::before_step(const game::Game& game) {
+    (void)game;
+    std::swap(previous_, current_);
+}
+
+void WorldView::after_step(const game::Game& game, float dt) {
+    capture(game, current_);
+    time_ += dt;
+    for (const auto& e : game.events()) on_event(e);
+    for (auto& e : emitters_) e->update(dt);
+    std::erase_if(emitters_, [](const auto& e) { return e->finished(); });
+}
+
+void WorldView::spawn(const render::ParticleParams& params) {
+    if (emitters_.size() >= 64) return; // a cap so a chain reaction cannot grow without bound
+    emitters_.push_back(std::make_unique<render::ParticleEmitter>(params, next_seed_++));
+}
+
+void WorldView::on_event(const game::Event& e) {
+    using game::EventType;
+    render::ParticleParams p;
+    p.max_particles = 96;
+    switch (e.type) {
+    case EventType::ShotFired:
+    case EventType::RobotShot: {
+        // Muzzle flash: a short burst of small bright sparks at the tip.
+        p.position = e.position;
+        p.spawn_radius = Vec3(0.05f);
+        p.size = e.type == EventType::ShotFired ? 0.18f : 0.3f;
+        p.life = 0.08f;
+        p.velocity = Vec3(0.6f);
+        p.per_frame = 3;
+        p.duration = 0.05f;
+        p.grow = 2.5f;
+        p.max_particles = 24;
+        if (e.type == EventType::RobotShot) {
+            p.color_start = Vec3(1.0f, 0.3f, 0.2f);
+            p.color_end = Vec3(1.0f, 0.1f, 0.05f);
+        }
+        spawn(p);
+        break;
+    }
+    case EventType::Hit: {
+        p.position = e.position;
+        p.spawn_radius = Vec3(0.08f);
+        p.size = 0.25f;
+        p.life = 0.25f;
+        p.velocity = Vec3(2.0f, 2.5f, 2.0f);
+        p.per_frame = 4;
+        p.duration = 0.06f;
+        p.grow = 1.5f;
+        p.max_particles = 32;
+        spawn(p);
+        break;
+    }
+    case EventType::Explosion: {
+        // Robot deaths carry radius 0 (visual only); cylinders their blast radius.
+        const float r = e.amount > 0.0f ? std::min(e.amount, 20.0f) : 2.5f;
+        p.position = e.position;
+        p.spawn_radius = Vec3(r * 0.25f);
+        p.size = r * 0.35f;
+        p.life = 0.7f;
+        p.velocity = Vec3(r * 0.6f, r * 0.9f, r * 0.6f);
+        p.per_frame = 6;
+        p.duration = 0.35f;
+        p.max_particles = 256;
+        spawn(p);
+        render::ParticleParams smoke = p;
+        smoke.texture = "smoke";
+        smoke.blend = render::ParticleBlend::Alpha;
+        smoke.life = 1.6f;
+        smoke.size = r * 0.5f;
+        smoke.velocity = Vec3(r * 0.2f, r * 0.5f, r * 0.2f);
+        smoke.per_frame = 2;
+        smoke.duration = 0.6f;
+        smoke.grow = 2.0f;
+        smoke.color_start = Vec3(0.3f);
+        smoke.color_end = Vec3(0.15f);
+        smoke.max_particles = 160;
+        spawn(smoke);
+        break;
+    }
+    default:
+        break;
+    }
+}
+
+void WorldView::fill(const game::Game& game, float alpha, float fov_degrees, const DojoDummy* dummy,
+                     render::SceneFrame& frame) {
+    const float a = std::clamp(is_finite(alpha) ? alpha : 1.0f, 0.0f, 1.0f);
+    // Doors and lights follow the game.
+    for (const auto& d : game.doors()) scene_->set_door_open(d.entity_id, d.progress);
+    for (const auto& l : game.lights()) scene_->set_light_on(l.entity_id, l.on);
+    scene_->emit(instances_, lights_);
+
+    // Robots: interpolated placement, posed from their animation player.
+    const auto robots = game.robots();
+    for (std::size_t i = 0; i < robots.size(); ++i) {
+        if (robots[i].mode == game::RobotMode::Dead) continue;
+        const bool have = i < previous_.robot_feet.size() && i < current_.robot_feet.size();
+        const Vec3 feet =
+            have ? glm::mix(previous_.robot_feet[i], current_.robot_feet[i], a) : robots[i].feet;
+        const float yaw = have ? current_.robot_yaw[i] : robots[i].model_yaw();
+        const Mat4 root = glm::rotate(glm::translate(Mat4(1.0f), feet), yaw, Vec3(0, 1, 0));
+        robot_binding_.apply(game.robot_pose(i), robot_pose_);
+        // A robot just hit glows (its emissive parts flare) for the hit flash.
+        const float glow = 1.0f + 4.0f * std::clamp(robots[i].hit_flash / 0.2f, 0.0f, 1.0f);
+        robot_model_->emit(root, robot_pose_, scratch_, instances_, glow);
+    }
+    if (dummy && dummy->pose) {
+        const Mat4 root =
+            glm::rotate(glm::translate(Mat4(1.0f), dummy->feet), dummy->model_yaw, Vec3(0, 1, 0));
+        robot_binding_.apply(*dummy->pose, robot_pose_);
+        robot_model_->emit(root, robot_pose_, scratch_, instances_);
+    }
+    // Pickups float and spin (the LevelScene's lift of 0.4 above the entity, the game's centre is +0.8).
+    const float spin = game.pickup_spin();
+    for (const auto& p : game.pickups()) {
+        if (p.taken) continue;
+        const float bob = 0.2f * std::sin(static_cast<float>(time_) * 2.5f + static_cast<float>(p.entity_id));
+        const Mat4 root = glm::rotate(glm::translate(Mat4(1.0f), p.centre + Vec3(0.0f, bob - 0.4f, 0.0f)),
+                                      spin, Vec3(0, 1, 0));
+        pickup_models_[static_cast<int>(p.kind)]->emit(root, scratch_, instances_);
+    }
+    for (const auto& c : game.cylinders()) {
+        if (c.exploded) continue;
+        const Vec3 s(c.props.radius / 0.5f, c.props.height / 2.0f, c.props.radius / 0.5f);
+        const Mat4 root = glm::scale(
+            glm::rotate(glm::translate(Mat4(1.0f), c.centre - Vec3(0.0f, c.props.height * 0.5f, 0.0f)), c.yaw,
+                        Vec3(0, 1, 0)),
+            s);
+        // A lit fuse makes the cylinder glow before it goes.
+        cylinder_model_->emit(root, scratch_, instances_, c.fuse >= 0.0f ? 3.0f : 1.0f);
+    }
+
+    // Camera from the interpolated eye; the death camera's drop and tilt are in the snapshot.
+    camera_.position = glm::mix(previous_.eye, current_.eye, a);
+    camera_.yaw = current_.yaw;
+    camera_.pitch = current_.pitch;
+    camera_.fov_y = radians(std::clamp(fov_degrees, 30.0f, 120.0f));
+    camera_.aspect = static_cast<float>(frame.width) / static_cast<float>(std::max(1, frame.height));
+
+    // The rifle kicks on each shot: recoil 1 at the shot, back to rest over 0.2 s (ease-out).
+    view_model_.instances.clear();
+    if (game.phase() == game::Phase::Playing) {
+        const float since = game.player().recoil;
+        const float k = std::clamp(1.0f - since / 0.2f, 0.0f, 1.0f);
+        rifle_->emit(render::rifle_view_transform(k * k), scratch_, view_model_.instances);
+    }
+    emitter_list_.clear();
+    for (const auto& e : emitters_) emitter_list_.push_back(e.get());
+
+    frame.camera = camera_;
+    frame.environment = scene_->environment();
+    frame.instances = &instances_;
+    frame.lights = &lights_;
+    frame.particles = &emitter_list_;
+    frame.view_model = &view_model_;
+}
+
+} // namespace ks::runtime

@@ -1,0 +1,97 @@
+#pragma once
+// What the player sees of a running game: the level scene with the game's door openings and light states,
+// the robots posed from their animation poses, pickups floating and spinning, the gas cylinders, the
+// first-person rifle with recoil, and particles spawned from the game's events (muzzle flashes, robot shots,
+// impacts, explosions). Positions are interpolated between the last two fixed steps.
+// Robots, pickups and cylinders are taken out of the level before the LevelScene is built: they move or
+// disappear, so this view draws them from the game's state instead.
+#include "anim/rig.h"
+#include "game/game.h"
+#include "level/level.h"
+#include "render/asset_library.h"
+#include "render/level_scene.h"
+#include "render/particles.h"
+#include "render/scene_renderer.h"
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace ks::runtime {
+
+// The level without the entities the game owns the look of (robots, pickups, gas cylinders).
+level::Level static_part(const level::Level& level);
+
+// Maps a rig's nodes onto a model's nodes by name, once; then writes a pose into the model's node locals.
+class RigBinding {
+  public:
+    RigBinding() = default;
+    RigBinding(const anim::Rig& rig, const render::Model& model);
+    // Rest locals for unmapped model nodes, the pose's T·R·S for mapped ones.
+    void apply(const anim::Pose& pose, render::ModelPose& out) const;
+    int mapped() const { return mapped_; }
+
+  private:
+    const anim::Rig* rig_ = nullptr;
+    const render::Model* model_ = nullptr;
+    std::vector<int> model_node_of_rig_; // -1 when the model lacks the node
+    int mapped_ = 0;
+};
+
+// The Dojo's test robot: where it stands (from its level entity) and the pose the DojoController gives.
+struct DojoDummy {
+    Vec3 feet{0.0f};
+    float model_yaw = 0.0f;
+    const anim::Pose* pose = nullptr;
+};
+
+class WorldView {
+  public:
+    static std::unique_ptr<WorldView> build(const level::Level& level, const game::Game& game,
+                                            render::AssetLibrary& assets);
+
+    // Call before each game step (keeps the previous state for interpolation) and after it (events).
+    void before_step(const game::Game& game);
+    void after_step(const game::Game& game, float dt);
+
+    // Fills the frame for the game's state at `alpha` between the last two steps.
+    void fill(const game::Game& game, float alpha, float fov_degrees, const DojoDummy* dummy,
+              render::SceneFrame& frame);
+    const render::Camera& camera() const { return camera_; }
+    int live_emitters() const { return static_cast<int>(emitters_.size()); }
+
+  private:
+    WorldView() = default;
+    void spawn(const render::ParticleParams& params);
+    void on_event(const game::Event& e);
+
+    std::unique_ptr<render::LevelScene> scene_;
+    const render::Model* robot_model_ = nullptr;
+    const render::Model* cylinder_model_ = nullptr;
+    const render::Model* rifle_ = nullptr;
+    const render::Model* pickup_models_[3] = {nullptr, nullptr, nullptr};
+    RigBinding robot_binding_;
+    render::ModelPose robot_pose_;
+
+    struct Snapshot {
+        Vec3 eye{0.0f};
+        float yaw = 0.0f, pitch = 0.0f;
+        std::vector<Vec3> robot_feet;
+        std::vector<float> robot_yaw;
+    };
+    void capture(const game::Game& game, Snapshot& s) const;
+    Snapshot previous_, current_;
+    bool have_snapshot_ = false;
+
+    std::vector<render::MeshInstance> instances_;
+    std::vector<render::Light> lights_;
+    std::vector<Mat4> scratch_;
+    render::ViewModel view_model_;
+    std::vector<std::unique_ptr<render::ParticleEmitter>> emitters_;
+    std::vector<const render::ParticleEmitter*> emitter_list_;
+    std::uint64_t next_seed_ = 1;
+    render::Camera camera_;
+    double time_ = 0.0;
+};
+
+} // namespace ks::runtime

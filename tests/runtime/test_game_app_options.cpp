@@ -1,0 +1,95 @@
+// The runtime's options file (runtime/app/options.h is GL-free and header-only, so it is tested directly):
+// round trip, atomic write into a new folder, and every kind of bad file giving defaults plus a warning.
+#include "core/files.h"
+#include "core/log.h"
+#include "runtime/app/options.h"
+#include "test_support.h"
+
+#include <doctest/doctest.h>
+
+#include <cstdlib>
+
+using namespace ks;
+using runtime::Options;
+
+TEST_CASE("options: save then load gives the same options, in a folder that did not exist") {
+    test::ScratchDir dir;
+    const auto path = dir / "deep" / "killswitch" / "options.json";
+    Options o;
+    o.mouse_sensitivity = 2.5f;
+    o.invert_y = true;
+    o.fov_degrees = 90.0f;
+    REQUIRE(runtime::save_options(path, o).ok());
+    CHECK(runtime::load_options(path) == o);
+    // Saving again replaces the file whole (no temporary left beside it).
+    o.fov_degrees = 60.0f;
+    REQUIRE(runtime::save_options(path, o).ok());
+    CHECK(runtime::load_options(path).fov_degrees == doctest::Approx(60.0f));
+    int files = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(path.parent_path())) {
+        (void)entry;
+        ++files;
+    }
+    CHECK(files == 1);
+}
+
+TEST_CASE("options: a missing file gives the defaults without a warning") {
+    test::ScratchDir dir;
+    log::Capture capture;
+    CHECK(runtime::load_options(dir / "none.json") == Options{});
+    CHECK(capture.text().find("WARN") == std::string::npos);
+    CHECK(capture.text().empty());
+}
+
+TEST_CASE("options: bad files give defaults (per field) and a warning naming the file and field") {
+    test::ScratchDir dir;
+    const auto path = dir / "options.json";
+    struct Case {
+        const char* text;
+        const char* expect_in_warning;
+    };
+    const Case cases[] = {
+        {"{ this is not json", "not a JSON object"},
+        {"[1, 2, 3]", "not a JSON object"},
+        {"", "not a JSON object"},
+        {R"({"mouse_sensitivity": "fast"})", "mouse_sensitivity"},
+        {R"({"mouse_sensitivity": 1e30})", "mouse_sensitivity"},
+        {R"({"mouse_sensitivity": -2})", "mouse_sensitivity"},
+        {R"({"fov_degrees": 1000})", "fov_degrees"},
+        {R"({"fov_degrees": null})", "fov_degrees"},
+        {R"({"invert_y": "yes"})", "invert_y"},
+    };
+    for (const auto& c : cases) {
+        CAPTURE(c.text);
+        REQUIRE(files::write_atomic(path, c.text).ok());
+        log::Capture capture;
+        const Options o = runtime::load_options(path);
+        CHECK(o == Options{});
+        CHECK(capture.text().find(c.expect_in_warning) != std::string::npos);
+        CHECK(capture.text().find(path.string()) != std::string::npos);
+    }
+}
+
+TEST_CASE("options: a bad field does not throw away the good ones") {
+    std::vector<std::string> problems;
+    const Options o = runtime::options_from_json(
+        R"({"mouse_sensitivity": 3, "fov_degrees": "wide", "invert_y": true})", problems);
+    CHECK(o.mouse_sensitivity == doctest::Approx(3.0f));
+    CHECK(o.invert_y);
+    CHECK(o.fov_degrees == doctest::Approx(Options{}.fov_degrees));
+    REQUIRE(problems.size() == 1);
+    CHECK(problems[0].find("fov_degrees") != std::string::npos);
+}
+
+TEST_CASE("options: the file lives under XDG_CONFIG_HOME, else ~/.config") {
+    const char* old_xdg = std::getenv("XDG_CONFIG_HOME");
+    const std::string saved = old_xdg ? old_xdg : "";
+    setenv("XDG_CONFIG_HOME", "/tmp/xdg-test", 1);
+    CHECK(runtime::options_path() == std::filesystem::path("/tmp/xdg-test/killswitch/options.json"));
+    unsetenv("XDG_CONFIG_HOME");
+    const char* home = std::getenv("HOME");
+    if (home && *home)
+        CHECK(runtime::options_path() ==
+              std::filesystem::path(home) / ".config" / "killswitch" / "options.json");
+    if (old_xdg) setenv("XDG_CONFIG_HOME", saved.c_str(), 1);
+}
