@@ -1,7 +1,7 @@
 // Game construction: level entities become physics bodies and game entities.
 #include "game/game.h"
 
-#include "core/paths.h"
+#include "game/robot_rig.h"
 
 #include <algorithm>
 #include <cmath>
@@ -40,9 +40,10 @@ Result<std::unique_ptr<Game>> Game::create(const level::Level& level, GameOption
         return Error("game step must be in (0, 0.1] s", Location("GameSettings", 0, 0, "step"),
                      "use 1/120 (the default)");
     if (!options.animations) {
-        auto lib = anim::load_animation_library(paths::asset("animations/robot.json"));
-        if (!lib) return lib.error();
-        options.animations = std::make_shared<const anim::AnimationLibrary>(std::move(*lib));
+        // Loaded once per process: every game shares the immutable clips and rig.
+        static const auto shared = load_robot_animations();
+        if (!shared) return shared.error();
+        options.animations = *shared;
     }
     std::unique_ptr<Game> game(new Game(std::move(options)));
     if (auto built = game->build(level); !built) return built.error();

@@ -1,5 +1,7 @@
 // Robot AI: sight needs line of sight, anger after a hit, cooldown and probability, robots never hurt
 // robots, animation clips follow the AI state, muzzle at the hand tip.
+#include "core/files.h"
+#include "game/robot_rig.h"
 #include "game_test_levels.h"
 
 #include <algorithm>
@@ -149,4 +151,33 @@ TEST_CASE("AI states start the matching clips: alert, shoot pose, shooting, reve
     CHECK(clips.clips[static_cast<std::size_t>(g->robot_animation_clip(0))].name == "shoot_pose_reverse");
     g->damage_robot(0, 1000.0f, true);
     CHECK(clips.clips[static_cast<std::size_t>(g->robot_animation_clip(0))].name == "death");
+}
+
+TEST_CASE("the robot rig takes the model's joint offsets from the glTF; bad models are reported") {
+    auto lib = anim::load_animation_library(ks::test::source_dir() / "assets/animations/robot.json");
+    REQUIRE(lib.ok());
+    auto rig = rig_with_model_offsets(lib->rig, ks::test::source_dir() / "assets/models/robot.gltf");
+    if (!rig) FAIL(rig.error().str());
+    const int tip = rig->find("hand_r_tip");
+    REQUIRE(tip >= 0);
+    CHECK(rig->node(tip).rest_position.y == doctest::Approx(-0.72f));
+    CHECK(rig->node(rig->find("arm_r")).rest_position.z == doctest::Approx(0.6f));
+    // The game uses that rig: a fresh game's clips are bound to it.
+    auto g = make_game(flat_level());
+    CHECK(g->animations().rig.node(g->animations().rig.find("hand_r_tip")).rest_position.y ==
+          doctest::Approx(-0.72f));
+
+    ks::test::ScratchDir dir;
+    auto write = [&](const char* name, const char* text) {
+        REQUIRE(files::write_atomic(dir / name, text).ok());
+        return dir / name;
+    };
+    auto bad = rig_with_model_offsets(lib->rig, write("a.gltf", "{\"nodes\": 3}"));
+    REQUIRE_FALSE(bad.ok());
+    CHECK(bad.error().where.file.find("a.gltf") != std::string::npos);
+    auto nan = rig_with_model_offsets(
+        lib->rig, write("b.gltf", "{\"nodes\": [{\"name\": \"hand_r\", \"translation\": [0, \"x\", 0]}]}"));
+    REQUIRE_FALSE(nan.ok());
+    CHECK(nan.error().where.path == "nodes[0].translation");
+    CHECK_FALSE(rig_with_model_offsets(lib->rig, dir / "missing.gltf").ok());
 }

@@ -1,0 +1,21 @@
+#pragma once
+// The robot's rig with the model's true joint offsets, read headless from the generated glTF (plain JSON:
+// node names and rest translation/rotation/scale; no assimp, no GL), so robot shots leave from the real
+// hand_r_tip. The clip file's rig supplies names and parents; the model overrides rest transforms of the
+// nodes it has.
+#include "anim/clip_io.h"
+#include "core/result.h"
+
+#include <filesystem>
+#include <memory>
+
+namespace ks::game {
+
+// Rest transforms from `gltf` applied to `rig` (names must match; nodes the model lacks keep theirs).
+Result<anim::Rig> rig_with_model_offsets(const anim::Rig& rig, const std::filesystem::path& gltf);
+
+// assets/animations/robot.json compiled for the rig of assets/models/robot.gltf (falls back to the clip
+// file's own rig, with a warning, when the model is missing or unreadable).
+Result<std::shared_ptr<const anim::AnimationLibrary>> load_robot_animations();
+
+} // namespace ks::game
