@@ -88,7 +88,8 @@ level::Level arena(int robots) {
 struct ScalingRow {
     int robots = 0;
     double us_per_step = 0, us_per_robot = 0;
-    int engaged = 0;
+    int engaged = 0; // robots alerted, chasing or shooting
+    int moving = 0;  // robots with horizontal velocity this step (the character controller's real work)
 };
 
 ScalingRow measure_arena(int robots, double sim_seconds, int repeats) {
@@ -108,7 +109,12 @@ ScalingRow measure_arena(int robots, double sim_seconds, int repeats) {
         best.us_per_step = us;
         best.us_per_robot = us / std::max(1, best.robots);
         best.engaged = 0;
-        for (const Robot& r : g->robots()) best.engaged += r.mode != RobotMode::Idle ? 1 : 0;
+        best.moving = 0;
+        for (const Robot& r : g->robots()) {
+            best.engaged += r.mode != RobotMode::Idle ? 1 : 0;
+            const Vec3 v = g->world().character(r.body).movement.velocity;
+            best.moving += v.x * v.x + v.z * v.z > 1e-4f ? 1 : 0;
+        }
     }
     return best;
 }
@@ -182,12 +188,13 @@ int run(int argc, const char* const* argv) {
 
     // 2. Robot count.
     std::printf("Step time vs robots (generated arena, all robots simulated, player immortal)\n");
-    std::printf("%8s %12s %14s %10s\n", "robots", "us/step", "us/robot/step", "engaged");
+    std::printf("%8s %12s %14s %10s %8s\n", "robots", "us/step", "us/robot/step", "engaged", "moving");
     std::vector<ScalingRow> rows;
     for (int n : {10, 30, 100, 300, 1000}) {
         rows.push_back(measure_arena(n, quick ? 0.5 : 2.0, repeats));
         const auto& r = rows.back();
-        std::printf("%8d %12.1f %14.2f %10d\n", r.robots, r.us_per_step, r.us_per_robot, r.engaged);
+        std::printf("%8d %12.1f %14.2f %10d %8d\n", r.robots, r.us_per_step, r.us_per_robot, r.engaged,
+                    r.moving);
     }
     const double ratio = rows.back().us_per_step / rows.front().us_per_step;
     const double count_ratio = static_cast<double>(rows.back().robots) / rows.front().robots;
@@ -216,9 +223,10 @@ int run(int argc, const char* const* argv) {
         std::filesystem::create_directories(out_dir(), ec);
         const auto csv = out_dir() / "game_robots.csv";
         if (FILE* f = std::fopen(csv.string().c_str(), "w")) {
-            std::fprintf(f, "robots,us_per_step,us_per_robot_step,engaged\n");
+            std::fprintf(f, "robots,us_per_step,us_per_robot_step,engaged,moving\n");
             for (const auto& r : rows)
-                std::fprintf(f, "%d,%.2f,%.3f,%d\n", r.robots, r.us_per_step, r.us_per_robot, r.engaged);
+                std::fprintf(f, "%d,%.2f,%.3f,%d,%d\n", r.robots, r.us_per_step, r.us_per_robot, r.engaged,
+                             r.moving);
             std::fclose(f);
         }
         if (FILE* f = std::fopen((out_dir() / "game_step_rate.csv").string().c_str(), "w")) {

@@ -179,3 +179,25 @@ TEST_CASE("pause freezes the simulation until toggled again") {
     run_for(*g, 1.0, Input{1.0f});
     CHECK(g->player().feet.z < -10.0f);
 }
+
+TEST_CASE("bad levels and settings give errors naming the entity, not crashes") {
+    auto lv = flat_level();
+    auto& r = add_robot(lv, Vec3(0, 0, -5));
+    r.position.x = std::nanf("");
+    const int id = r.id;
+    auto g = Game::create(lv);
+    REQUIRE_FALSE(g.ok());
+    CHECK(g.error().str().find("robot " + std::to_string(id)) != std::string::npos);
+
+    auto huge = flat_level();
+    add_wall(huge, Vec3(0.0f), Vec3(1e7f, 16, 0.5f)); // absurd size: refused by the physics' shape check
+    auto h = Game::create(huge);
+    REQUIRE_FALSE(h.ok());
+    CHECK(h.error().str().find("wall") != std::string::npos);
+
+    GameOptions bad_step;
+    bad_step.settings.step = 0.0;
+    auto s = Game::create(flat_level(), bad_step);
+    REQUIRE_FALSE(s.ok());
+    CHECK(s.error().str().find("step") != std::string::npos);
+}
