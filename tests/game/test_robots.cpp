@@ -181,3 +181,51 @@ TEST_CASE("the robot rig takes the model's joint offsets from the glTF; bad mode
     CHECK(nan.error().where.path == "nodes[0].translation");
     CHECK_FALSE(rig_with_model_offsets(lib->rig, dir / "missing.gltf").ok());
 }
+
+TEST_CASE("follow hysteresis: once alerted a robot keeps following out to the maximum eye radius") {
+    auto lv = flat_level();
+    auto& r = add_robot(lv, Vec3(0, 0, -15));
+    r.as<level::RobotProps>().velocity = 0.0f; // stands, so only the player's distance changes
+    r.as<level::RobotProps>().hit_probability = 0.0f;
+    auto g = make_game(lv);
+    run_for(*g, 1.0);
+    REQUIRE(g->robots()[0].mode != RobotMode::Idle);
+    g->teleport_player(Vec3(0, 0, 7), 0.0f); // 22 away: between 19 and 25
+    run_for(*g, 1.0);
+    CHECK(g->robots()[0].mode == RobotMode::Chase);
+    g->teleport_player(Vec3(0, 0, 12), 0.0f); // 27 away: lost
+    run_for(*g, 0.1);
+    CHECK(g->robots()[0].mode == RobotMode::Idle);
+    g->teleport_player(Vec3(0, 0, 7), 0.0f); // 22 again: not noticed from idle
+    run_for(*g, 1.0);
+    CHECK(g->robots()[0].mode == RobotMode::Idle);
+}
+
+TEST_CASE("idle robots wander: turn, then drive forward at 2.4 fading out; a bump adds 3π/4 to the turn") {
+    auto lv = flat_level();
+    lv.player_start.position = Vec3(0, 0, 90); // far away
+    add_robot(lv, Vec3(0.0f));
+    auto g = make_game(lv);
+    const Vec3 start = g->robots()[0].feet;
+    float max_speed = 0.0f;
+    for (int i = 0; i < 10 * 120; ++i) {
+        g->step({});
+        const Vec3 v = g->world().character(g->robots()[0].body).movement.velocity;
+        max_speed = std::max(max_speed, std::sqrt(v.x * v.x + v.z * v.z));
+    }
+    CHECK(g->robots()[0].mode == RobotMode::Idle);
+    CHECK(glm::length(g->robots()[0].feet - start) > 2.0f);
+    CHECK(max_speed <= 2.4f + 1e-4f);
+    CHECK(max_speed > 2.0f);
+}
+
+TEST_CASE("a robot's shot that meets a gas cylinder first sets it off") {
+    auto lv = flat_level();
+    auto& r = add_robot(lv, Vec3(0, 0, -10));
+    r.as<level::RobotProps>().hit_probability = 1.0f;
+    r.as<level::RobotProps>().velocity = 0.0f;
+    lv.add(level::EntityType::GasCylinder, Vec3(0, 0, -5), "gas"); // in the line of fire
+    auto g = make_game(lv);
+    run_for(*g, 3.0);
+    CHECK(g->cylinders()[0].exploded);
+}
