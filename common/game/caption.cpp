@@ -2,9 +2,9 @@
 
 namespace ks::game {
 
-bool Caption::show(const std::string& text, int owner) {
+bool Caption::show(std::string_view text, int owner) {
     const bool changed = !visible_ || text != text_ || owner != owner_;
-    text_ = text;
+    if (text != text_) text_.assign(text); // keeps its capacity: no allocation per step
     owner_ = owner;
     visible_ = true;
     return changed;

@@ -4,6 +4,7 @@
 // second object showing its text takes the caption over, and the first object leaving reach afterwards
 // cannot hide the second one's text.
 #include <string>
+#include <string_view>
 
 namespace ks::game {
 
@@ -11,7 +12,7 @@ class Caption {
   public:
     static constexpr int kNoOwner = -1;
     // Shows `text` owned by `owner`; returns whether anything visible changed.
-    bool show(const std::string& text, int owner);
+    bool show(std::string_view text, int owner);
     // Hides the caption if `owner` owns it; returns whether it was hidden by this call.
     bool hide(int owner);
     bool visible() const { return visible_; }

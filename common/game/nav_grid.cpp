@@ -4,7 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <queue>
+#include <functional>
 
 namespace ks::game {
 
@@ -114,8 +114,11 @@ bool NavGrid::find_path(const Vec3& from, const Vec3& to, std::vector<Vec3>& pat
         stamp_ = 1;
     }
     std::fill(cost_.begin(), cost_.end(), 3.4e38f);
-    using Node = std::pair<float, std::int32_t>; // f, index
-    std::priority_queue<Node, std::vector<Node>, std::greater<>> open;
+    open_.clear();
+    const auto push = [&](float f, std::int32_t i) {
+        open_.emplace_back(f, i);
+        std::push_heap(open_.begin(), open_.end(), std::greater<>());
+    };
     const auto index = [&](int x, int z) { return z * width_ + x; };
     const auto heuristic = [&](int x, int z) {
         const float dx = static_cast<float>(std::abs(x - gx)), dz = static_cast<float>(std::abs(z - gz));
@@ -124,14 +127,14 @@ bool NavGrid::find_path(const Vec3& from, const Vec3& to, std::vector<Vec3>& pat
     const std::int32_t start = index(sx, sz), goal = index(gx, gz);
     cost_[static_cast<std::size_t>(start)] = 0.0f;
     parent_[static_cast<std::size_t>(start)] = -1;
-    open.push({heuristic(sx, sz), start});
+    push(heuristic(sx, sz), start);
     static constexpr int kDx[8] = {1, -1, 0, 0, 1, 1, -1, -1};
     static constexpr int kDz[8] = {0, 0, 1, -1, 1, -1, 1, -1};
     bool found = false;
-    while (!open.empty()) {
-        const auto [f, cur] = open.top();
-        open.pop();
-        (void)f;
+    while (!open_.empty()) {
+        std::pop_heap(open_.begin(), open_.end(), std::greater<>());
+        const std::int32_t cur = open_.back().second;
+        open_.pop_back();
         const auto ucur = static_cast<std::size_t>(cur);
         if (closed_stamp_[ucur] == stamp_) continue;
         closed_stamp_[ucur] = stamp_;
@@ -152,7 +155,7 @@ bool NavGrid::find_path(const Vec3& from, const Vec3& to, std::vector<Vec3>& pat
             if (g < cost_[uni]) {
                 cost_[uni] = g;
                 parent_[uni] = cur;
-                open.push({g + heuristic(nx, nz), ni});
+                push(g + heuristic(nx, nz), ni);
             }
         }
     }

@@ -46,6 +46,7 @@ class NavGrid {
     std::vector<float> cost_;
     std::vector<std::int32_t> parent_;
     std::vector<std::uint32_t> closed_stamp_;
+    std::vector<std::pair<float, std::int32_t>> open_; // binary heap (f, cell), reused
     std::uint32_t stamp_ = 0;
 };
 

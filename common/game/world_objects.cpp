@@ -101,7 +101,7 @@ void Game::update_interaction(const Input& input) {
     };
     int best = -1;
     float best_distance = 1e30f;
-    std::string text;
+    const char* text = "";
     auto consider = [&](int id, const Vec3& point, float distance, const char* caption) {
         if (distance < best_distance && in_view(point, distance)) {
             best = id;
