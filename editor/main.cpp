@@ -1,39 +1,90 @@
-// killswitch-editor: the level editor.
+// killswitch-editor: the level editor. `--script FILE` runs editor commands without a window; otherwise a
+// window with the viewport and panels (editor/ui/), optionally rendering N frames to a PNG (--screenshot).
 #include "core/cli.h"
 #include "core/log.h"
+#include "core/paths.h"
+#include "model/script.h"
 #include "render/app_shell.h"
-
-#include <imgui.h>
+#include "ui/editor_app.h"
 
 #include <cstdio>
 
+namespace {
+const std::vector<std::string> kFlags = {"no-vsync", "help", "dojo"};
+
+void print_help() {
+    std::printf("usage: killswitch-editor [--level FILE] [--script FILE] [--dojo] [--width W] [--height H]\n"
+                "                         [--screenshot FILE --frames N] [--no-vsync]\n"
+                "  --level FILE      open a level file (default: a new untitled level)\n"
+                "  --script FILE     run editor commands (docs/editor.md) without a window, then exit:\n"
+                "                    0 when every line ran, 1 with 'file:line: message' otherwise\n"
+                "  --dojo            start in the dojo (animation) tab\n"
+                "  --screenshot FILE render N frames (--frames, default 3), save the window as PNG and exit\n"
+                "keys: see the Help menu and docs/editor.md (Using the editor)\n");
+}
+
+int run_script_mode(const std::string& file) {
+    auto report = ks::editor::run_script(ks::paths::resolve_user_path(file));
+    if (!report) {
+        std::fprintf(stderr, "%s\n", report.error().str().c_str());
+        return 1;
+    }
+    std::printf("%s: %d lines, %d expectations, %zu files saved\n", file.c_str(), report->lines_run,
+                report->expectations_checked, report->saved.size());
+    return 0;
+}
+} // namespace
+
 int main(int argc, char** argv) {
-    auto cl = ks::CommandLine::parse(argc, argv, {"no-vsync", "help"});
+    using namespace ks;
+    auto cl = CommandLine::parse(argc, argv, kFlags);
     if (!cl) {
-        ks::log::error(cl.error().str());
+        log::error(cl.error().str());
         return 2;
     }
     if (cl->has("help")) {
-        std::printf("usage: killswitch-editor [--level FILE] [--screenshot FILE --frames N]\n");
+        print_help();
         return 0;
     }
-    ks::render::ShellConfig defaults;
-    defaults.title = "Killswitch Editor";
-    auto config = ks::render::shell_config_from_command_line(*cl, defaults);
-    if (!config) {
-        ks::log::error(config.error().str());
+    std::vector<std::string> known = render::shell_options();
+    known.insert(known.end(), {"level", "script", "help", "dojo"});
+    if (auto unknown = cl->unknown(known); !unknown.empty()) {
+        log::error("unknown option --", unknown.front(), " (see killswitch-editor --help)");
         return 2;
     }
-    if (!ks::render::display_available()) {
-        std::fprintf(stderr, "%s\n", ks::render::no_display_message("killswitch-editor").c_str());
+    if (auto script = cl->get("script")) return run_script_mode(*script);
+
+    render::ShellConfig defaults;
+    defaults.title = "Killswitch Editor";
+    auto config = render::shell_config_from_command_line(*cl, defaults);
+    if (!config) {
+        log::error(config.error().str());
+        return 2;
+    }
+    if (!render::display_available()) {
+        std::fprintf(stderr, "%s\n", render::no_display_message("killswitch-editor").c_str());
         return 3;
     }
-    auto shell = ks::render::AppShell::create(*config);
+    config->msaa_samples = 0; // the renderer owns MSAA in the viewport's own target
+    editor::ui::AppOptions options;
+    if (auto level = cl->get("level")) options.level = paths::resolve_user_path(*level);
+    options.start_in_dojo = cl->has("dojo");
+    options.executable_dir = std::filesystem::absolute(argv[0]).parent_path();
+    auto shell = render::AppShell::create(*config);
     if (!shell) {
-        ks::log::error(shell.error().str());
+        log::error(shell.error().str());
         return 1;
     }
-    int code = (*shell)->run({});
-    ks::render::AppShell::destroy(*shell);
+    int code = 0;
+    {
+        auto app = editor::ui::EditorApp::create(**shell, options);
+        if (!app) {
+            log::error(app.error().str());
+            code = 1;
+        } else {
+            code = (*app)->run();
+        }
+    }
+    render::AppShell::destroy(*shell);
     return code;
 }

@@ -1,0 +1,148 @@
+#pragma once
+// The editor window: a fixed ImGui layout (menu bar; outliner left; inspector, settings and validation
+// right; history and log below; the 3D viewport in the middle, or the dojo tab) around one Editor session.
+// Panels only present the model and dispatch Editor calls; every edit goes through its commands.
+#include "model/autosave.h"
+#include "model/editor.h"
+#include "model/recent_files.h"
+#include "render/app_shell.h"
+#include "render/asset_library.h"
+#include "render/debug_draw.h"
+#include "render/level_scene.h"
+#include "render/scene_renderer.h"
+#include "ui/gizmo.h"
+#include "ui/playtest.h"
+#include "ui/render_target.h"
+#include "ui/view_camera.h"
+
+#include <deque>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ks::editor::ui {
+
+class DojoPanel;
+
+struct AppOptions {
+    std::optional<std::filesystem::path> level;
+    bool start_in_dojo = false;
+    std::filesystem::path executable_dir; // where killswitch (the runtime) is looked for
+};
+
+struct Overlays {
+    bool grid = true;
+    bool collision = false;
+    bool lights = true;
+    bool robots = true;
+    bool player_start = true;
+};
+
+// A question the user must answer before an action goes on (unsaved changes, overwrite, recovery).
+enum class PendingAction { None, New, Open, OpenRecent, Quit };
+
+class EditorApp {
+  public:
+    static Result<std::unique_ptr<EditorApp>> create(render::AppShell& shell, const AppOptions& options);
+    ~EditorApp();
+    int run();
+
+    void log_line(std::string line, bool error = false);
+
+  private:
+    EditorApp(render::AppShell& shell, const AppOptions& options);
+    Result<void> init();
+
+    // frame
+    void render_views(const render::FrameInfo& info);
+    void build_ui(const render::FrameInfo& info);
+    void handle_shortcuts();
+    void update_title();
+
+    // editor_app.cpp: menus and files
+    void menu_bar();
+    void request(PendingAction action, std::filesystem::path path = {});
+    void perform(PendingAction action);
+    void save(bool save_as);
+    void modal_prompts();
+    void open_file(const std::filesystem::path& path);
+    void report(const Result<void>& result, const char* what);
+
+    // viewport.cpp
+    void viewport_panel(float x, float y, float w, float h);
+    void rebuild_scene_if_changed();
+    void draw_overlays();
+    void viewport_input(Vec2 origin, Vec2 size, bool hovered);
+    int pick(const Ray& ray, float* distance = nullptr) const;
+    Vec3 place_point(const Ray& ray) const;
+    Vec3 selection_pivot() const;
+    void focus_selection();
+    void set_view(ViewMode mode);
+    void play_test(bool from_camera);
+
+    // panels.cpp
+    void outliner_panel(float x, float y, float w, float h);
+    void palette_bar();
+    void inspector_panel(float x, float y, float w, float h);
+    void settings_section();
+    void validation_panel(float x, float y, float w, float h);
+    void history_panel(float x, float y, float w, float h);
+    void log_panel(float x, float y, float w, float h);
+    bool field_widget(const FieldDescriptor& field, FieldValue& value, bool mixed);
+
+    render::AppShell& shell_;
+    AppOptions options_;
+    Editor editor_;
+    RecentFiles recent_;
+    Autosaver autosaver_;
+
+    render::AssetLibrary assets_;
+    std::unique_ptr<render::SceneRenderer> renderer_;
+    std::unique_ptr<render::LevelScene> scene_;
+    std::uint64_t scene_revision_ = ~0ull;
+    std::vector<render::MeshInstance> instances_;
+    std::vector<render::Light> lights_;
+    render::DebugDraw debug_;
+    RenderTarget viewport_target_;
+    ViewCamera view_;
+    Overlays overlays_;
+    Gizmo gizmo_;
+    Handle hovered_handle_ = Handle::None;
+    Vec2 viewport_origin_{0.0f}, viewport_size_{640.0f, 360.0f};
+    bool viewport_hovered_ = false;
+    bool flying_ = false;
+    float wheel_ = 0.0f;
+
+    // tools
+    std::optional<level::EntityType> placing_; // palette: the next click places one
+    bool box_selecting_ = false;
+    Vec2 box_start_{0.0f};
+    bool click_pending_ = false;
+
+    // panels
+    int type_filter_ = -1; // -1: all
+    char search_[64] = {};
+    std::deque<std::pair<std::string, bool>> log_;
+    bool scroll_log_ = false;
+    bool dojo_tab_ = false;
+    std::unique_ptr<DojoPanel> dojo_;
+
+    // prompts
+    PendingAction pending_ = PendingAction::None;
+    std::filesystem::path pending_path_;
+    bool ask_unsaved_ = false;
+    bool ask_path_ = false;
+    bool path_for_save_ = false;
+    bool ask_overwrite_ = false;
+    char path_input_[512] = {};
+    bool quit_ = false;
+    bool close_requested_ = false;
+    std::string last_title_;
+
+    PlayTest play_;
+    std::filesystem::path play_file_;
+};
+
+} // namespace ks::editor::ui

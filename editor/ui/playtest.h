@@ -1,0 +1,43 @@
+#pragma once
+// Play-testing from the editor: the level is saved to a temporary file and the runtime (`killswitch`, next to
+// the editor binary) is started on it as a child process; its stderr and stdout come back line by line into
+// the editor's log without blocking the frame (a non-blocking pipe read every frame).
+#include "core/math.h"
+#include "core/result.h"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <sys/types.h>
+#include <vector>
+
+namespace ks::editor::ui {
+
+struct PlayStart {
+    Vec3 position{0.0f};
+    float yaw_degrees = 0.0f;
+};
+
+// The runtime's command line: --level TMP --screen play and, for Shift+F5, --warp x,y,z,yaw,0 (feet
+// position, degrees; yaw 0 faces -z like the editor camera).
+std::vector<std::string> playtest_arguments(const std::filesystem::path& level,
+                                            const std::optional<PlayStart>& start);
+
+class PlayTest {
+  public:
+    ~PlayTest();
+    Result<void> start(const std::filesystem::path& runtime, const std::vector<std::string>& arguments);
+    // Reads whatever output is waiting and reaps the child when it ended; appends complete lines to `lines`.
+    void poll(std::vector<std::string>& lines);
+    bool running() const { return pid_ > 0; }
+    void stop(); // SIGTERM to the child we started
+    std::optional<int> last_exit_code() const { return exit_code_; }
+
+  private:
+    pid_t pid_ = -1;
+    int pipe_ = -1;
+    std::string partial_;
+    std::optional<int> exit_code_;
+};
+
+} // namespace ks::editor::ui

@@ -1,0 +1,377 @@
+// The 3D viewport: the level drawn by the game's renderer into the panel's own target, overlays (grid,
+// selection, collision bounds, light ranges, robot radii, player start), the camera, picking, box select,
+// placing from the palette and the gizmo.
+#include "core/files.h"
+#include "level/level_io.h"
+#include "ui/editor_app.h"
+#include "ui/layout.h"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <cmath>
+#include <cstdio>
+#include <unistd.h>
+
+namespace ks::editor::ui {
+namespace fs = std::filesystem;
+
+namespace {
+const Vec4 kGridMinor(0.55f, 0.6f, 0.7f, 0.22f);
+const Vec4 kGridMajor(0.65f, 0.72f, 0.85f, 0.5f);
+const Vec4 kSelected(1.0f, 0.62f, 0.1f, 1.0f);
+const Vec4 kCollision(0.3f, 0.9f, 1.0f, 0.55f);
+
+Mat4 obb_transform(const Obb& box) {
+    Mat4 m(box.axes);
+    m[3] = Vec4(box.center, 1.0f);
+    return m;
+}
+
+void circle(render::DebugDraw& draw, const Vec3& centre, float radius, const Vec4& colour,
+            int segments = 48) {
+    Vec3 prev = centre + Vec3(radius, 0, 0);
+    for (int i = 1; i <= segments; ++i) {
+        const float a = static_cast<float>(i) / static_cast<float>(segments) * 6.2831853f;
+        const Vec3 p = centre + Vec3(std::cos(a) * radius, 0, std::sin(a) * radius);
+        draw.line(prev, p, colour);
+        prev = p;
+    }
+}
+
+// Slab test of a ray against an oriented box; the entry distance, or a negative number for a miss.
+float ray_obb(const Ray& ray, const Obb& box) {
+    const Vec3 o = box.to_local(ray.origin);
+    const Vec3 d = glm::transpose(box.axes) * ray.direction;
+    float t0 = 0.0f, t1 = 1e30f;
+    for (int i = 0; i < 3; ++i) {
+        if (std::abs(d[i]) < 1e-8f) {
+            if (std::abs(o[i]) > box.half[i]) return -1.0f;
+            continue;
+        }
+        float a = (-box.half[i] - o[i]) / d[i], b = (box.half[i] - o[i]) / d[i];
+        if (a > b) std::swap(a, b);
+        t0 = std::max(t0, a);
+        t1 = std::min(t1, b);
+        if (t0 > t1) return -1.0f;
+    }
+    return t0;
+}
+
+bool is_surface(level::EntityType t) {
+    return t == level::EntityType::Floor || t == level::EntityType::Stair || t == level::EntityType::Wall;
+}
+} // namespace
+
+void EditorApp::rebuild_scene_if_changed() {
+    const std::uint64_t revision =
+        editor_.revision() ^ (static_cast<std::uint64_t>(editor_.doc().hidden.size()) << 48);
+    if (scene_ && revision == scene_revision_) return;
+    if (editor_.doc().hidden.empty()) {
+        scene_ = render::LevelScene::build(editor_.level(), assets_);
+    } else { // hidden entities are left out of the picture (and of picking)
+        level::Level visible = editor_.level();
+        std::erase_if(visible.entities,
+                      [&](const level::Entity& e) { return editor_.doc().hidden.contains(e.id); });
+        scene_ = render::LevelScene::build(visible, assets_);
+    }
+    renderer_->invalidate_shadows();
+    scene_revision_ = revision;
+}
+
+void EditorApp::draw_overlays() {
+    const Document& doc = editor_.doc();
+    if (overlays_.grid) {
+        // Around the point under the camera, on y = 0: minor lines every 4 units, major every 16 (a wall).
+        const float step = 4.0f, extent = 96.0f;
+        const Vec3 c = view_.camera.position;
+        const float cx = std::round(c.x / 16.0f) * 16.0f, cz = std::round(c.z / 16.0f) * 16.0f;
+        for (float o = -extent; o <= extent; o += step) {
+            const bool major_x = std::fmod(std::abs(cx + o), 16.0f) < 0.01f;
+            const bool major_z = std::fmod(std::abs(cz + o), 16.0f) < 0.01f;
+            debug_.line(Vec3(cx + o, 0.01f, cz - extent), Vec3(cx + o, 0.01f, cz + extent),
+                        std::abs(cx + o) < 0.01f ? Vec4(0.3f, 0.45f, 1.0f, 0.8f)
+                        : major_x                ? kGridMajor
+                                                 : kGridMinor);
+            debug_.line(Vec3(cx - extent, 0.01f, cz + o), Vec3(cx + extent, 0.01f, cz + o),
+                        std::abs(cz + o) < 0.01f ? Vec4(1.0f, 0.35f, 0.3f, 0.8f)
+                        : major_z                ? kGridMajor
+                                                 : kGridMinor);
+        }
+    }
+    for (const auto& e : doc.level.entities) {
+        if (doc.hidden.contains(e.id)) continue;
+        const bool selected = doc.is_selected(e.id);
+        if (selected || overlays_.collision) {
+            Obb box = entity_obb(e);
+            if (selected) box.half += Vec3(0.06f);
+            debug_.box(obb_transform(box), box.half, selected ? kSelected : kCollision);
+        }
+        if (overlays_.lights) {
+            if (const auto* fl = e.try_as<level::FloorLightProps>()) {
+                const Vec3 lamp = e.position + Vec3(0, fl->height, 0);
+                circle(debug_, Vec3(e.position.x, e.position.y + 0.05f, e.position.z), fl->light.range,
+                       Vec4(1.0f, 0.9f, 0.4f, selected ? 0.9f : 0.35f));
+                debug_.line(e.position, lamp, Vec4(1.0f, 0.9f, 0.4f, 0.6f));
+            } else if (const auto* tl = e.try_as<level::TopLightProps>()) {
+                const Vec3 bulb = e.position - Vec3(0, tl->hang, 0);
+                circle(debug_, bulb, tl->light.range, Vec4(1.0f, 0.9f, 0.4f, selected ? 0.9f : 0.35f));
+            }
+        }
+        if (overlays_.robots) {
+            if (const auto* r = e.try_as<level::RobotProps>()) {
+                const Vec3 base = e.position + Vec3(0, 0.08f, 0);
+                circle(debug_, base, r->eye_radius_min, Vec4(1.0f, 0.85f, 0.2f, 0.75f), 64);
+                circle(debug_, base, r->eye_radius_max, Vec4(1.0f, 0.85f, 0.2f, 0.3f), 64);
+                circle(debug_, base, r->shooting_distance, Vec4(1.0f, 0.25f, 0.2f, 0.8f), 48);
+            }
+        }
+    }
+    if (overlays_.player_start) {
+        const auto& ps = doc.level.player_start;
+        const float yaw = radians(ps.yaw);
+        const Vec3 fwd(-std::sin(yaw), 0, -std::cos(yaw)), side(fwd.z, 0, -fwd.x);
+        const Vec3 base = ps.position + Vec3(0, 0.1f, 0);
+        const Vec4 green(0.3f, 1.0f, 0.4f, 1.0f);
+        debug_.capsule(ps.position + Vec3(0, 1, 0), ps.position + Vec3(0, 2, 0), 1.0f,
+                       Vec4(0.3f, 1.0f, 0.4f, 0.5f));
+        debug_.line(base, base + fwd * 3.0f, green);
+        debug_.line(base + fwd * 3.0f, base + fwd * 2.0f + side * 0.7f, green);
+        debug_.line(base + fwd * 3.0f, base + fwd * 2.0f - side * 0.7f, green);
+    }
+    if (placing_ && viewport_hovered_) { // where a click would place
+        const ImVec2 m = ImGui::GetIO().MousePos;
+        const Ray ray =
+            view_.ray(m.x - viewport_origin_.x, m.y - viewport_origin_.y, viewport_size_.x, viewport_size_.y);
+        const Vec3 p = place_point(ray);
+        level::Entity preview;
+        preview.position = p;
+        preview.props = level::default_props(*placing_);
+        const Obb box = entity_obb(preview);
+        debug_.box(obb_transform(box), box.half, Vec4(0.4f, 1.0f, 0.5f, 0.9f));
+    }
+}
+
+int EditorApp::pick(const Ray& ray, float* distance) const {
+    const Document& doc = editor_.doc();
+    int best = 0;
+    float best_t = 1e30f;
+    for (const auto& e : doc.level.entities) {
+        if (doc.hidden.contains(e.id) || doc.locked.contains(e.id)) continue;
+        const float t = ray_obb(ray, entity_obb(e));
+        if (t >= 0.0f && t < best_t) best_t = t, best = e.id;
+    }
+    if (distance) *distance = best_t;
+    return best;
+}
+
+Vec3 EditorApp::place_point(const Ray& ray) const {
+    const Document& doc = editor_.doc();
+    float best_t = 1e30f;
+    for (const auto& e : doc.level.entities) {
+        if (doc.hidden.contains(e.id) || !is_surface(e.type())) continue;
+        const Obb box = entity_obb(e);
+        const float t = ray_obb(ray, box);
+        if (t >= 0.0f && t < best_t) best_t = t;
+    }
+    Vec3 p;
+    if (best_t < 1e29f) {
+        p = ray.origin + ray.direction * best_t;
+    } else if (std::abs(ray.direction.y) > 1e-4f && -ray.origin.y / ray.direction.y > 0.0f) {
+        p = ray.origin + ray.direction * (-ray.origin.y / ray.direction.y); // the ground plane y = 0
+    } else {
+        p = ray.origin + ray.direction * 20.0f;
+    }
+    const GridSettings& grid = editor_.doc().grid;
+    return Vec3(grid.snap_value(p.x), p.y, grid.snap_value(p.z)); // y stays on the surface
+}
+
+Vec3 EditorApp::selection_pivot() const {
+    Vec3 sum(0.0f);
+    int n = 0;
+    for (const level::Entity* e : editor_.selected_entities()) sum += e->position, ++n;
+    return n ? sum / static_cast<float>(n) : Vec3(0.0f);
+}
+
+void EditorApp::focus_selection() {
+    const auto selected = editor_.selected_entities();
+    Vec3 lo(1e30f), hi(-1e30f);
+    if (selected.empty()) {
+        for (const auto& e : editor_.level().entities) {
+            const Aabb b = entity_obb(e).aabb();
+            lo = glm::min(lo, b.min), hi = glm::max(hi, b.max);
+        }
+        if (editor_.level().entities.empty()) lo = Vec3(-10.0f), hi = Vec3(10.0f);
+    } else {
+        for (const level::Entity* e : selected) {
+            const Aabb b = entity_obb(*e).aabb();
+            lo = glm::min(lo, b.min), hi = glm::max(hi, b.max);
+        }
+    }
+    view_.focus(lo, hi);
+}
+
+void EditorApp::set_view(ViewMode mode) {
+    Vec3 lo(-20.0f), hi(20.0f);
+    if (!editor_.level().entities.empty()) {
+        lo = Vec3(1e30f), hi = Vec3(-1e30f);
+        for (const auto& e : editor_.level().entities) {
+            const Aabb b = entity_obb(e).aabb();
+            lo = glm::min(lo, b.min), hi = glm::max(hi, b.max);
+        }
+    }
+    const Vec3 size = hi - lo;
+    view_.set_view(mode, (lo + hi) * 0.5f, std::max({size.x, size.z, size.y * 1.5f}));
+}
+
+void EditorApp::play_test(bool from_camera) {
+    if (play_.running()) {
+        log_line("a play-test is already running", true);
+        return;
+    }
+    play_file_ = fs::temp_directory_path() / ("killswitch-playtest-" + std::to_string(getpid()) + ".json");
+    if (auto r = files::write_atomic(play_file_, level::save_level_string(editor_.level())); !r) {
+        log_line("play-test: " + r.error().str(), true);
+        return;
+    }
+    std::optional<PlayStart> start;
+    if (from_camera) // feet three units under the eye, facing where the camera looks
+        start = PlayStart{view_.camera.position - Vec3(0, 3, 0),
+                          std::remainder(degrees(view_.camera.yaw), 360.0f)};
+    const auto args = playtest_arguments(play_file_, start);
+    const fs::path runtime = options_.executable_dir / "killswitch";
+    if (auto r = play_.start(runtime, args); !r) {
+        log_line("play-test: " + r.error().str(), true);
+        return;
+    }
+    std::string line = "play-test: " + runtime.string();
+    for (const auto& a : args) line += " " + a;
+    log_line(line);
+}
+
+void EditorApp::viewport_panel(float x, float y, float w, float h) {
+    ImGui::SetNextWindowPos(ImVec2(x, y));
+    ImGui::SetNextWindowSize(ImVec2(w, h));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+    ImGui::Begin("Viewport", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                     ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollWithMouse);
+    ImGui::PopStyleVar();
+    // Tool bar: palette, gizmo mode, view.
+    ImGui::SetCursorPos(ImVec2(6, 4));
+    palette_bar();
+    ImGui::SetCursorPos(ImVec2(0, kViewportBar));
+    const Vec2 size(static_cast<float>(viewport_target_.width()),
+                    static_cast<float>(viewport_target_.height()));
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(viewport_target_.texture())),
+                 ImVec2(size.x, size.y), ImVec2(0, 1), ImVec2(1, 0));
+    viewport_origin_ = Vec2(origin.x, origin.y);
+    viewport_size_ = size;
+    const bool hovered = ImGui::IsItemHovered();
+    viewport_hovered_ = hovered;
+    viewport_input(viewport_origin_, size, hovered);
+
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const GizmoView gv{&view_, viewport_origin_, size};
+    if (!editor_.doc().selection.empty() && !placing_)
+        gizmo_.draw(draw, gv, selection_pivot(), hovered_handle_);
+    if (box_selecting_) {
+        const ImVec2 m = ImGui::GetIO().MousePos;
+        draw->AddRectFilled(ImVec2(box_start_.x, box_start_.y), m, IM_COL32(90, 160, 255, 40));
+        draw->AddRect(ImVec2(box_start_.x, box_start_.y), m, IM_COL32(90, 160, 255, 200));
+    }
+    // Status overlay: view, camera speed, grid, what a drag does.
+    char text[256];
+    std::snprintf(text, sizeof(text), "%s  |  fly speed %.1f u/s (wheel)  |  grid %.2f %s  |  %s%s%s",
+                  view_mode_name(view_.mode), view_.speed, editor_.doc().grid.step,
+                  editor_.doc().grid.snap ? "snap" : "free", gizmo_mode_name(gizmo_.mode),
+                  gizmo_.readout().empty() ? "" : "  ", gizmo_.readout().c_str());
+    draw->AddRectFilled(ImVec2(origin.x + 6, origin.y + size.y - 26),
+                        ImVec2(origin.x + size.x - 6, origin.y + size.y - 4), IM_COL32(15, 17, 22, 170),
+                        4.0f);
+    draw->AddText(ImVec2(origin.x + 12, origin.y + size.y - 23), IM_COL32(225, 230, 240, 255), text);
+    if (placing_) {
+        const std::string hint =
+            "Click to place " + std::string(level::type_name(*placing_)) + "  (Esc: stop)";
+        draw->AddText(ImVec2(origin.x + 12, origin.y + 8), IM_COL32(140, 255, 160, 255), hint.c_str());
+    }
+    // Axis indicator in the corner.
+    const Vec2 corner(origin.x + size.x - 40, origin.y + 40);
+    const Mat4 view_matrix = view_.camera.view();
+    const char* names[3] = {"X", "Y", "Z"};
+    const ImU32 colours[3] = {IM_COL32(235, 70, 70, 255), IM_COL32(110, 215, 80, 255),
+                              IM_COL32(70, 130, 240, 255)};
+    for (int i = 0; i < 3; ++i) {
+        Vec3 axis(0.0f);
+        axis[i] = 1.0f;
+        const Vec3 v = Mat3(view_matrix) * axis;
+        const ImVec2 tip(corner.x + v.x * 24.0f, corner.y - v.y * 24.0f);
+        draw->AddLine(ImVec2(corner.x, corner.y), tip, colours[i], 2.0f);
+        draw->AddText(ImVec2(tip.x - 3, tip.y - 7), colours[i], names[i]);
+    }
+    ImGui::End();
+}
+
+void EditorApp::viewport_input(Vec2 origin, Vec2 size, bool hovered) {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (!shell_.screenshot_mode())
+        flying_ = view_.update(shell_.window(), io.DeltaTime,
+                               hovered && !gizmo_.dragging() && !box_selecting_, hovered ? wheel_ : 0.0f);
+    if (flying_) return;
+    const Vec2 mouse(io.MousePos.x - origin.x, io.MousePos.y - origin.y);
+    const GizmoView gv{&view_, origin, size};
+    const bool has_selection = !editor_.doc().selection.empty();
+    if (gizmo_.dragging()) {
+        if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+            if (auto message = gizmo_.drag(editor_, gv, mouse); !message.empty()) log_line(message, true);
+        } else {
+            gizmo_.end(editor_);
+        }
+        return;
+    }
+    hovered_handle_ =
+        hovered && has_selection && !placing_ ? gizmo_.hit(gv, selection_pivot(), mouse) : Handle::None;
+    if (io.KeyAlt) return; // Alt + left drag orbits
+    if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+        if (placing_) {
+            const Ray ray = view_.ray(mouse.x, mouse.y, size.x, size.y);
+            auto placed = editor_.place(*placing_, place_point(ray));
+            if (!placed) log_line("place: " + placed.error().str(), true);
+            if (!io.KeyShift) placing_.reset(); // Shift keeps placing
+            return;
+        }
+        if (hovered_handle_ != Handle::None) {
+            gizmo_.begin(editor_, gv, selection_pivot(), hovered_handle_, mouse);
+            return;
+        }
+        box_selecting_ = true;
+        box_start_ = Vec2(io.MousePos.x, io.MousePos.y);
+    }
+    if (box_selecting_ && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+        box_selecting_ = false;
+        const Vec2 end(io.MousePos.x, io.MousePos.y);
+        const SelectMode mode = io.KeyCtrl    ? SelectMode::Toggle
+                                : io.KeyShift ? SelectMode::Add
+                                              : SelectMode::Replace;
+        if (glm::length(end - box_start_) < 4.0f) { // a click: pick under the cursor
+            const int id = pick(view_.ray(mouse.x, mouse.y, size.x, size.y));
+            if (id)
+                report(editor_.select({id}, mode), "select");
+            else if (mode == SelectMode::Replace)
+                editor_.clear_selection();
+            return;
+        }
+        const Vec2 lo = glm::min(box_start_, end) - origin, hi = glm::max(box_start_, end) - origin;
+        const int n = editor_.select_where(
+            [&](const level::Entity& e) {
+                Vec2 p;
+                if (!view_.project(entity_obb(e).center, size.x, size.y, p)) return false;
+                return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y;
+            },
+            mode);
+        log_line("box select: " + std::to_string(n) + " entities");
+    }
+}
+
+} // namespace ks::editor::ui
