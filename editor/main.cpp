@@ -13,14 +13,18 @@ namespace {
 const std::vector<std::string> kFlags = {"no-vsync", "help", "dojo"};
 
 void print_help() {
-    std::printf("usage: killswitch-editor [--level FILE] [--script FILE] [--dojo] [--width W] [--height H]\n"
-                "                         [--screenshot FILE --frames N] [--no-vsync]\n"
-                "  --level FILE      open a level file (default: a new untitled level)\n"
-                "  --script FILE     run editor commands (docs/editor.md) without a window, then exit:\n"
-                "                    0 when every line ran, 1 with 'file:line: message' otherwise\n"
-                "  --dojo            start in the dojo (animation) tab\n"
-                "  --screenshot FILE render N frames (--frames, default 3), save the window as PNG and exit\n"
-                "keys: see the Help menu and docs/editor.md (Using the editor)\n");
+    std::printf(
+        "usage: killswitch-editor [--level FILE] [--script FILE] [--run FILE] [--camera x,y,z,yaw,pitch] "
+        "[--dojo]\n"
+        "                         [--width W] [--height H] [--screenshot FILE --frames N] [--no-vsync]\n"
+        "  --level FILE      open a level file (default: a new untitled level)\n"
+        "  --script FILE     run editor commands (docs/editor.md) without a window, then exit:\n"
+        "                    0 when every line ran, 1 with 'file:line: message' otherwise\n"
+        "  --run FILE        run editor commands in the window session before the first frame\n"
+        "  --camera ...      viewport camera x,y,z,yaw,pitch in degrees (yaw 0 looks along -z)\n"
+        "  --dojo            start in the dojo (animation) tab\n"
+        "  --screenshot FILE render N frames (--frames, default 3), save the window as PNG and exit\n"
+        "keys: see the Help menu and docs/editor.md (Using the editor)\n");
 }
 
 int run_script_mode(const std::string& file) {
@@ -47,7 +51,7 @@ int main(int argc, char** argv) {
         return 0;
     }
     std::vector<std::string> known = render::shell_options();
-    known.insert(known.end(), {"level", "script", "help", "dojo"});
+    known.insert(known.end(), {"level", "script", "run", "camera", "help", "dojo"});
     if (auto unknown = cl->unknown(known); !unknown.empty()) {
         log::error("unknown option --", unknown.front(), " (see killswitch-editor --help)");
         return 2;
@@ -69,6 +73,8 @@ int main(int argc, char** argv) {
     editor::ui::AppOptions options;
     if (auto level = cl->get("level")) options.level = paths::resolve_user_path(*level);
     options.start_in_dojo = cl->has("dojo");
+    if (auto run = cl->get("run")) options.run_script = paths::resolve_user_path(*run);
+    options.camera = cl->get("camera");
     options.executable_dir = std::filesystem::absolute(argv[0]).parent_path();
     auto shell = render::AppShell::create(*config);
     if (!shell) {

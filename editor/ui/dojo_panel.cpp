@@ -15,7 +15,7 @@
 namespace ks::editor::ui {
 
 namespace {
-constexpr float kDojoBar = 150.0f; // transport + timeline under the preview
+constexpr float kDojoBar = 190.0f; // transport, timeline and transition tester under the preview
 
 // The rig the renderer's robot model has: its nodes in order, rest transforms decomposed into the
 // translation / Euler XYZ / scale the clips animate. Unnamed or repeated node names get unique stand-ins.
@@ -317,7 +317,7 @@ void DojoPanel::key_table(const LogFn& log) {
     if (ImGui::BeginTable("targets", 4,
                           ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
                               ImGuiTableFlags_SizingStretchProp,
-                          ImVec2(0, std::max(80.0f, ImGui::GetContentRegionAvail().y - 120.0f)))) {
+                          ImVec2(0, std::max(80.0f, ImGui::GetContentRegionAvail().y - 64.0f)))) {
         ImGui::TableSetupColumn("node", ImGuiTableColumnFlags_WidthFixed, 90);
         ImGui::TableSetupColumn("rotation (deg, XYZ)");
         ImGui::TableSetupColumn("position offset");
@@ -419,14 +419,17 @@ void DojoPanel::panel(float x, float y, float width, float height, const LogFn& 
     ImGui::SameLine();
     ImGui::Text("t = %.3f s%s", time_, player_ && player_->blending() ? "  (blending)" : "");
     timeline(pw);
+    ImGui::Spacing();
+    transition_tester();
     ImGui::EndGroup();
 
     ImGui::SetCursorPos(ImVec2(start.x + pw + 12, start.y));
     ImGui::BeginChild("clips", ImVec2(0, 0), false);
     ImGui::TextDisabled("Clips (%s)", clip_file_.filename().string().c_str());
     if (ImGui::BeginListBox(
-            "##clips",
-            ImVec2(-1, 24.0f * std::min<float>(7.0f, static_cast<float>(clips_.clips.size())) + 6))) {
+            "##clips", ImVec2(-1, ImGui::GetTextLineHeightWithSpacing() *
+                                          std::min<float>(4.5f, static_cast<float>(clips_.clips.size())) +
+                                      6))) {
         for (int i = 0; i < static_cast<int>(clips_.clips.size()); ++i) {
             char label[96];
             std::snprintf(label, sizeof(label), "%-20s %5.2f s  %s",
@@ -443,8 +446,6 @@ void DojoPanel::panel(float x, float y, float width, float height, const LogFn& 
         }
         ImGui::EndListBox();
     }
-    transition_tester();
-    ImGui::Separator();
     key_table(log);
     ImGui::EndChild();
     ImGui::End();

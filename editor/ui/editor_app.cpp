@@ -2,8 +2,10 @@
 // panels live in viewport.cpp and panels.cpp; the dojo tab in dojo_panel.cpp.
 #include "ui/editor_app.h"
 
+#include "core/files.h"
 #include "core/log.h"
 #include "core/paths.h"
+#include "model/script.h"
 #include "ui/dojo_panel.h"
 #include "ui/layout.h"
 
@@ -71,6 +73,23 @@ Result<void> EditorApp::init() {
     dojo_ = std::make_unique<DojoPanel>(assets_, *renderer_);
     dojo_tab_ = options_.start_in_dojo;
     set_view(ViewMode::Perspective); // frames the level from above one corner
+    if (options_.camera) {
+        float v[5];
+        if (std::sscanf(options_.camera->c_str(), "%f,%f,%f,%f,%f", &v[0], &v[1], &v[2], &v[3], &v[4]) != 5)
+            return Error("--camera '" + *options_.camera + "': expected x,y,z,yaw,pitch", {},
+                         "e.g. --camera 0,30,40,0,-40 (degrees; yaw 0 looks along -z)");
+        view_.camera.position = Vec3(v[0], v[1], v[2]);
+        view_.camera.yaw = radians(v[3]);
+        view_.camera.pitch = radians(v[4]);
+    }
+    if (options_.run_script) {
+        auto text = files::read_text(*options_.run_script);
+        if (!text) return text.error();
+        auto ran = run_script_text(*text, options_.run_script->string(), options_.run_script->parent_path(),
+                                   editor_);
+        if (!ran) return ran.error();
+        log_line("ran " + options_.run_script->string());
+    }
     rebuild_scene_if_changed();
     g_app = this;
     glfwSetWindowCloseCallback(shell_.window(), [](GLFWwindow* window) {
@@ -106,7 +125,7 @@ void EditorApp::render_views(const render::FrameInfo& info) {
     const Layout layout = compute_layout(static_cast<float>(info.width), static_cast<float>(info.height),
                                          ImGui::GetFrameHeight());
     if (dojo_tab_) {
-        dojo_->render(layout.centre.w + layout.right.w, layout.centre.h, info.frame_dt);
+        dojo_->render(layout.bottom.w, layout.centre.h, info.frame_dt);
     } else {
         rebuild_scene_if_changed();
         const int w = static_cast<int>(layout.centre.w), h = static_cast<int>(layout.centre.h - kViewportBar);
@@ -149,8 +168,7 @@ void EditorApp::build_ui(const render::FrameInfo& info) {
                                          ImGui::GetFrameHeight());
     menu_bar();
     if (dojo_tab_) {
-        outliner_panel(layout.left.x, layout.left.y, layout.left.w, layout.left.h);
-        dojo_->panel(layout.centre.x, layout.centre.y, layout.centre.w + layout.right.w, layout.centre.h,
+        dojo_->panel(layout.bottom.x, layout.centre.y, layout.bottom.w, layout.centre.h,
                      [this](const std::string& line, bool error) { log_line(line, error); });
     } else {
         outliner_panel(layout.left.x, layout.left.y, layout.left.w, layout.left.h);

@@ -29,7 +29,9 @@ class DojoPanel;
 struct AppOptions {
     std::optional<std::filesystem::path> level;
     bool start_in_dojo = false;
-    std::filesystem::path executable_dir; // where killswitch (the runtime) is looked for
+    std::optional<std::filesystem::path> run_script; // run inside the window session before the first frame
+    std::optional<std::string> camera;               // x,y,z,yaw,pitch (degrees) for the viewport
+    std::filesystem::path executable_dir;            // where killswitch (the runtime) is looked for
 };
 
 struct Overlays {
@@ -85,6 +87,7 @@ class EditorApp {
     // panels.cpp
     void outliner_panel(float x, float y, float w, float h);
     void palette_bar();
+    void viewport_toolbar();
     void inspector_panel(float x, float y, float w, float h);
     void settings_section();
     void validation_panel(float x, float y, float w, float h);

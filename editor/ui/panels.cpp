@@ -61,8 +61,15 @@ ImVec4 type_colour(level::EntityType t) {
 
 void EditorApp::palette_bar() {
     ImGui::TextDisabled("Place:");
+    const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+    bool first = true;
     for (auto type : level::all_types()) {
-        ImGui::SameLine();
+        const float w = ImGui::CalcTextSize(type_label(type)).x + ImGui::GetStyle().FramePadding.x * 2;
+        if (!first) {
+            ImGui::SameLine();
+            if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + w > right) ImGui::NewLine();
+        }
+        first = false;
         const bool active = placing_ && *placing_ == type;
         if (active) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.25f, 0.55f, 0.3f, 1));
         ImGui::PushStyleColor(ImGuiCol_Text, type_colour(type));
@@ -74,16 +81,43 @@ void EditorApp::palette_bar() {
                 "(snapped to the grid). Shift+click places several.",
                 type_label(type));
     }
-    ImGui::SameLine(0, 16);
+}
+
+void EditorApp::viewport_toolbar() {
     for (GizmoMode m : {GizmoMode::Move, GizmoMode::Rotate, GizmoMode::Scale}) {
-        ImGui::SameLine();
         if (ImGui::RadioButton(gizmo_mode_name(m), gizmo_.mode == m)) gizmo_.mode = m;
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Gizmo mode (W / E / R)");
+        ImGui::SameLine();
     }
+    ImGui::TextDisabled("|");
+    for (ViewMode v : {ViewMode::Perspective, ViewMode::Top, ViewMode::Front, ViewMode::Side}) {
+        ImGui::SameLine();
+        const bool active = view_.mode == v;
+        if (active) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.26f, 0.45f, 0.75f, 1));
+        if (ImGui::SmallButton(view_mode_name(v))) set_view(v);
+        if (active) ImGui::PopStyleColor();
+    }
+    ImGui::SameLine();
+    ImGui::TextDisabled("|");
+    ImGui::SameLine();
+    ImGui::Checkbox("Snap", &editor_.grid().snap);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(70);
+    ImGui::DragFloat("##grid", &editor_.grid().step, 0.05f, 0.05f, 16.0f, "%.2f u");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Grid step (origin snapping, nudge distance)");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(70);
+    ImGui::DragFloat("##rot", &editor_.grid().rotation_step, 0.5f, 1.0f, 90.0f, "%.0f deg");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Rotation snapping step");
 }
 
 void EditorApp::outliner_panel(float x, float y, float w, float h) {
     place_panel(x, y, w, h);
     ImGui::Begin("Outliner", nullptr, kPanelFlags);
+    if (!dojo_tab_) {
+        palette_bar();
+        ImGui::Separator();
+    }
     ImGui::SetNextItemWidth(-1);
     const char* preview =
         type_filter_ < 0 ? "All types" : type_label(static_cast<level::EntityType>(type_filter_));
@@ -121,7 +155,7 @@ void EditorApp::outliner_panel(float x, float y, float w, float h) {
         ImGui::SameLine();
         ImGui::PushStyleColor(ImGuiCol_Text,
                               locked ? ImVec4(1.0f, 0.7f, 0.3f, 1) : ImVec4(0.45f, 0.45f, 0.5f, 1));
-        if (ImGui::SmallButton(locked ? "L" : "u")) editor_.set_locked(e.id, !locked);
+        if (ImGui::SmallButton(locked ? "L" : ".")) editor_.set_locked(e.id, !locked);
         ImGui::PopStyleColor();
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(locked ? "Locked: click to unlock" : "Click to lock (no picking)");
@@ -247,7 +281,7 @@ void EditorApp::inspector_panel(float x, float y, float w, float h) {
     ImGui::Separator();
     const auto fields = common_fields(selected);
     if (ImGui::BeginTable("fields", 3, ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg)) {
-        ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed, w * 0.36f);
+        ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed, w * 0.44f);
         ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);
         ImGui::TableSetupColumn("reset", ImGuiTableColumnFlags_WidthFixed, 22.0f);
         for (const auto& field : fields) {

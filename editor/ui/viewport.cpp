@@ -259,7 +259,7 @@ void EditorApp::viewport_panel(float x, float y, float w, float h) {
     ImGui::PopStyleVar();
     // Tool bar: palette, gizmo mode, view.
     ImGui::SetCursorPos(ImVec2(6, 4));
-    palette_bar();
+    viewport_toolbar();
     ImGui::SetCursorPos(ImVec2(0, kViewportBar));
     const Vec2 size(static_cast<float>(viewport_target_.width()),
                     static_cast<float>(viewport_target_.height()));
