@@ -5,10 +5,12 @@
 #include "core/log.h"
 #include "core/paths.h"
 
+// epoxy must come before any header that pulls in GL/gl.h.
+#include <epoxy/gl.h>
+
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
-#include <epoxy/gl.h>
 #include <imgui.h>
 
 #include <cstdlib>

@@ -532,8 +532,28 @@ Result<void> GameApp::start(const Automation& a) {
         screen_ = Screen::Dead;
     }
     if (screen == "win") {
-        // The win screen with the session's own numbers (the panel is reached by playing; this is its look).
-        win_ = {session_->play_seconds + 83.4, g.robots_killed(), session_->robots_total};
+        // Win for real: stand in front of the control panel (trying each side), face it and press E.
+        for (const auto& panel : g.panels()) {
+            for (int side = 0; side < 4 && g.phase() != game::Phase::Won; ++side) {
+                const float a = panel.yaw + static_cast<float>(side) * kPi * 0.5f;
+                const Vec3 out(-std::sin(a), 0.0f, -std::cos(a)); // yaw 0 faces -z
+                const float reach = std::max(panel.size.x, panel.size.z) * 0.5f + 2.0f;
+                const Vec3 feet(panel.centre.x + out.x * reach, panel.centre.y - panel.size.y * 0.5f,
+                                panel.centre.z + out.z * reach);
+                g.teleport_player(feet, a + kPi, -0.3f); // turned round: facing the panel
+                for (int i = 0; i < 4 && g.phase() != game::Phase::Won; ++i) {
+                    game::Input in;
+                    in.interact = i == 3;
+                    session_->view->before_step(g);
+                    g.step(in);
+                    session_->view->after_step(g, static_cast<float>(g.settings().step));
+                }
+            }
+        }
+        if (g.phase() != game::Phase::Won)
+            return Error("--screen win: could not reach a control panel in this level", Location(level_path_.string()),
+                         "use a level with a control panel (levels/main.json has one)");
+        win_ = {session_->play_seconds, g.robots_killed(), session_->robots_total};
         screen_ = Screen::Won;
     }
     return {};

@@ -53,19 +53,16 @@ void loading_screen(float fraction, const std::string& step, const render::Fonts
 MenuAction main_menu(const std::string& error, const render::Fonts& fonts, float w, float h) {
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
     MenuAction action = MenuAction::None;
-    ui::begin_panel("##main", "Killswitch", 640, error.empty() ? 470 : 520, w, h, fonts);
+    ui::begin_panel("##main", "Killswitch", 640, error.empty() ? 440 : 500, w, h, fonts);
     ui::centred_text("A virtual disaster simulator. The robots went rogue.", fonts.body);
     if (ui::big_button("Play", fonts)) action = MenuAction::Play;
     if (ui::big_button("Dojo", fonts)) action = MenuAction::Dojo;
     if (ui::big_button("How to Play", fonts)) action = MenuAction::HowTo;
     if (ui::big_button("Credits", fonts)) action = MenuAction::Credits;
-    ImGui::SetCursorPosX((ImGui::GetWindowWidth() - 320 * ui::ui_scale(h)) * 0.5f);
     // Options and Quit share a row: they are used less often.
     {
         const float s = ui::ui_scale(h);
         const float x0 = (ImGui::GetWindowWidth() - 320 * s) * 0.5f;
-        ImGui::SetCursorPosX(x0);
-        ImGui::BeginGroup();
         ImGui::PushID("row");
         const float cursor_y = ImGui::GetCursorPosY();
         ImGui::SetCursorPos(ImVec2(x0, cursor_y));
@@ -84,7 +81,6 @@ MenuAction main_menu(const std::string& error, const render::Fonts& fonts, float
         ImGui::PopStyleVar();
         ImGui::PopStyleColor(4);
         ImGui::PopID();
-        ImGui::EndGroup();
     }
     if (!error.empty()) {
         ImGui::PushTextWrapPos(ImGui::GetWindowWidth() - 30 * ui::ui_scale(h));
@@ -128,7 +124,7 @@ MenuAction death_menu(const render::Fonts& fonts, float w, float h) {
 MenuAction win_menu(const WinStats& stats, const render::Fonts& fonts, float w, float h) {
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h, 0.85f);
     MenuAction action = MenuAction::None;
-    ui::begin_panel("##win", "You Won", 560, 380, w, h, fonts);
+    ui::begin_panel("##win", "You Won", 560, 340, w, h, fonts);
     ui::centred_text("Simulation ended", fonts.hud, ui::kAccentActive);
     ui::centred_text("Time  " + format_time(stats.seconds), fonts.hud);
     ui::centred_text("Robots killed  " + std::to_string(stats.robots_killed) + " / " +
@@ -143,7 +139,7 @@ MenuAction win_menu(const WinStats& stats, const render::Fonts& fonts, float w, 
 MenuAction how_to_play(const render::Fonts& fonts, float w, float h) {
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
     MenuAction action = MenuAction::None;
-    ui::begin_panel("##howto", "How to Play", 760, 520, w, h, fonts);
+    ui::begin_panel("##howto", "How to Play", 760, 470, w, h, fonts);
     ImGui::PushTextWrapPos(ImGui::GetWindowWidth() - 30 * ui::ui_scale(h));
     ImGui::TextWrapped("Survive the rogue robots and reach the computer at the end of the level to end the "
                        "simulation. Shoot gas cylinders to blow up robots near them - keep your distance. "
@@ -160,7 +156,7 @@ MenuAction how_to_play(const render::Fonts& fonts, float w, float h) {
 MenuAction credits(const render::Fonts& fonts, float w, float h) {
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
     MenuAction action = MenuAction::None;
-    ui::begin_panel("##credits", "Credits", 760, 500, w, h, fonts);
+    ui::begin_panel("##credits", "Credits", 760, 440, w, h, fonts);
     if (fonts.body) ImGui::PushFont(fonts.body);
     two_columns("Killswitch", "the Killswitch team: engine, physics, animation,", 0.3f);
     two_columns("", "renderer, game rules, runtime, level editor, assets", 0.3f);
@@ -181,7 +177,7 @@ MenuAction options_panel(Options& o, bool& changed, const render::Fonts& fonts, 
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
     MenuAction action = MenuAction::None;
     const float s = ui::ui_scale(h);
-    ui::begin_panel("##options", "Options", 640, 400, w, h, fonts);
+    ui::begin_panel("##options", "Options", 640, 330, w, h, fonts);
     ImGui::PushStyleColor(ImGuiCol_FrameBg, IM_COL32(205, 214, 218, 255));
     ImGui::PushStyleColor(ImGuiCol_FrameBgHovered, IM_COL32(190, 205, 212, 255));
     ImGui::PushStyleColor(ImGuiCol_FrameBgActive, IM_COL32(180, 198, 206, 255));

@@ -1,0 +1,49 @@
+#include "gl_test_support.h"
+
+#include "render/app_shell.h"
+
+#include <cmath>
+#include <cstdlib>
+
+namespace ks::test {
+
+render::OffscreenContext* gl_context() {
+    static render::OffscreenContext* context = []() -> render::OffscreenContext* {
+        if (!render::display_available()) return nullptr;
+        auto ctx = render::OffscreenContext::create(kGlWidth, kGlHeight);
+        return ctx ? ctx->release() : nullptr; // lives for the whole test run
+    }();
+    return context;
+}
+
+ImageStats image_stats(const std::vector<unsigned char>& rgb, int width, int height, int x0, int y0, int x1,
+                       int y1) {
+    if (x1 < 0) x1 = width;
+    if (y1 < 0) y1 = height;
+    ImageStats s;
+    double sum = 0, sum2 = 0;
+    long n = 0, magenta = 0;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) {
+            const unsigned char* p = &rgb[(static_cast<size_t>(y) * width + x) * 3];
+            double l = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+            sum += l;
+            sum2 += l * l;
+            if (p[0] > 180 && p[2] > 180 && p[1] < 70) ++magenta;
+            ++n;
+        }
+    if (n == 0) return s;
+    s.mean_luma = sum / n;
+    s.luma_stddev = std::sqrt(std::max(0.0, sum2 / n - s.mean_luma * s.mean_luma));
+    s.magenta_fraction = static_cast<double>(magenta) / n;
+    return s;
+}
+
+double mean_abs_diff(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b) {
+    if (a.size() != b.size() || a.empty()) return 255.0;
+    double sum = 0;
+    for (size_t i = 0; i < a.size(); ++i) sum += std::abs(int(a[i]) - int(b[i]));
+    return sum / a.size();
+}
+
+} // namespace ks::test

@@ -1,0 +1,25 @@
+#pragma once
+// Shared GL context for the render tests (one hidden window for the whole run) and image checks.
+#include "render/offscreen.h"
+
+#include <string>
+#include <vector>
+
+namespace ks::test {
+
+// The shared offscreen context of the given size (created on first use; null without a display, in which
+// case the GL tests report a skip and pass: CI runs them under xvfb-run).
+render::OffscreenContext* gl_context();
+inline constexpr int kGlWidth = 320, kGlHeight = 180;
+
+struct ImageStats {
+    double mean_luma = 0; // 0..255
+    double luma_stddev = 0;
+    double magenta_fraction = 0; // pixels that look like the magenta placeholder checker
+};
+ImageStats image_stats(const std::vector<unsigned char>& rgb, int width, int height, int x0 = 0, int y0 = 0,
+                       int x1 = -1, int y1 = -1);
+// Mean absolute difference per channel (0..255) between two RGB images of the same size.
+double mean_abs_diff(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b);
+
+} // namespace ks::test

@@ -1,0 +1,228 @@
+// Renderer pieces that need no GL context: culling math, level geometry, particles, HUD helpers, shader logs.
+#include "level/level.h"
+#include "render/camera.h"
+#include "render/hud.h"
+#include "render/level_scene.h"
+#include "render/mesh_data.h"
+#include "render/particles.h"
+#include "render/shader_program.h"
+#include "render/view_model.h"
+
+#include <doctest/doctest.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+#include <limits>
+
+using namespace ks;
+using namespace ks::render;
+
+TEST_CASE("frustum keeps boxes in front of the camera and culls those behind or beside it") {
+    Camera cam;
+    cam.position = Vec3(0, 3, 0);
+    cam.yaw = 0; // looks along -z
+    Frustum f(cam.projection() * cam.view());
+    CHECK(f.intersects({Vec3(-1, 2, -11), Vec3(1, 4, -9)}));
+    CHECK_FALSE(f.intersects({Vec3(-1, 2, 9), Vec3(1, 4, 11)}));        // behind
+    CHECK_FALSE(f.intersects({Vec3(100, 2, -11), Vec3(102, 4, -9)}));   // far to the right
+    CHECK_FALSE(f.intersects({Vec3(-1, 2, -2000), Vec3(1, 4, -1500)})); // beyond the far plane
+    CHECK(f.intersects({Vec3(-500, -1, -500), Vec3(500, 0, 500)}));     // a huge floor around the camera
+    CHECK(f.intersects_sphere(Vec3(0, 3, 5), 6.0f)); // a light behind whose range reaches in
+    CHECK_FALSE(f.intersects_sphere(Vec3(0, 3, 50), 6.0f));
+    cam.yaw = kPi * 0.5f; // now looks along -x
+    Frustum left(cam.projection() * cam.view());
+    CHECK(left.intersects({Vec3(-11, 2, -1), Vec3(-9, 4, 1)}));
+    CHECK_FALSE(left.intersects({Vec3(-1, 2, -11), Vec3(1, 4, -9)}));
+}
+
+TEST_CASE("transformed bounds contain every transformed corner") {
+    Aabb box{Vec3(-1, 0, -2), Vec3(1, 3, 2)};
+    Mat4 m = glm::rotate(glm::translate(Mat4(1.0f), Vec3(5, 1, -3)), 0.7f, glm::normalize(Vec3(1, 2, 0.5f)));
+    Aabb t = transform_aabb(box, m);
+    for (int i = 0; i < 8; ++i) {
+        Vec3 c((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
+               (i & 4) ? box.max.z : box.min.z);
+        Vec3 w = Vec3(m * Vec4(c, 1.0f));
+        CHECK(glm::all(glm::greaterThanEqual(w, t.min - 1e-4f)));
+        CHECK(glm::all(glm::lessThanEqual(w, t.max + 1e-4f)));
+    }
+}
+
+TEST_CASE("box UVs follow world units over texture_scale, on any wall size and orientation") {
+    for (float yaw : {0.0f, 0.5f * kPi, 0.3f}) {
+        MeshData mesh;
+        Mat4 to_world = glm::rotate(glm::translate(Mat4(1.0f), Vec3(3, 0, -7)), yaw, Vec3(0, 1, 0));
+        append_box(mesh, Vec3(0, 8, 0), Vec3(60, 16, 0.5f), to_world, 10.0f);
+        REQUIRE(mesh.vertices.size() == 24);
+        REQUIRE(mesh.indices.size() == 36);
+        // On every face, UV distance / world distance along an edge is 1/texture_scale (no stretching).
+        for (size_t f = 0; f < 6; ++f) {
+            const Vertex& a = mesh.vertices[f * 4];
+            const Vertex& b = mesh.vertices[f * 4 + 2]; // opposite corner
+            Vec3 d = b.position - a.position;
+            Vec2 duv = b.uv - a.uv;
+            float world_len = glm::length(d), uv_len = glm::length(duv);
+            if (yaw == 0.3f && std::abs(a.normal.y) < 0.5f) continue; // slanted walls project on one axis
+            CHECK(uv_len * 10.0f == doctest::Approx(world_len).epsilon(1e-4));
+        }
+        // Faces wind counter-clockwise seen from outside.
+        for (size_t i = 0; i < mesh.indices.size(); i += 3) {
+            const Vertex& a = mesh.vertices[mesh.indices[i]];
+            Vec3 n = glm::cross(mesh.vertices[mesh.indices[i + 1]].position - a.position,
+                                mesh.vertices[mesh.indices[i + 2]].position - a.position);
+            CHECK(glm::dot(n, a.normal) > 0.0f);
+        }
+    }
+}
+
+TEST_CASE("stairs are `steps` boxes that rise toward local -z to the full height") {
+    MeshData mesh;
+    append_stairs(mesh, Vec3(12, 6, 12), 10, Mat4(1.0f), 4.0f);
+    CHECK(mesh.vertices.size() == 10 * 24);
+    Aabb b = mesh.bounds();
+    CHECK(b.min.y == doctest::Approx(0.0f));
+    CHECK(b.max.y == doctest::Approx(6.0f));
+    CHECK(b.min.z == doctest::Approx(-6.0f));
+    CHECK(b.max.z == doctest::Approx(6.0f));
+    // The highest point is at the -z end: the top of the last box is 6 high and spans z -6..-4.8.
+    float top_at_front = -1, top_at_back = -1;
+    for (const auto& v : mesh.vertices) {
+        if (v.position.z > 4.9f) top_at_front = std::max(top_at_front, v.position.y);
+        if (v.position.z < -4.9f) top_at_back = std::max(top_at_back, v.position.y);
+    }
+    CHECK(top_at_front == doctest::Approx(0.6f));
+    CHECK(top_at_back == doctest::Approx(6.0f));
+}
+
+TEST_CASE("level surfaces: floors lie below their surface, ceilings above, walls stand on their position") {
+    level::Entity wall;
+    wall.position = Vec3(10, 0, 0);
+    wall.rotation = Vec3(90, 0, 0);
+    wall.props = level::WallProps{Vec3(60, 16, 0.5f), "concrete", 10.0f};
+    Aabb w = build_surface_mesh(wall).bounds();
+    CHECK(w.min.y == doctest::Approx(0.0f));
+    CHECK(w.max.y == doctest::Approx(16.0f));
+    CHECK(w.max.z - w.min.z == doctest::Approx(60.0f).epsilon(1e-4)); // rotated 90 degrees: runs along z
+    CHECK(w.max.x - w.min.x == doctest::Approx(0.5f).epsilon(1e-3));
+
+    level::Entity floor;
+    floor.position = Vec3(40, 0, 0);
+    level::FloorProps fp;
+    fp.size = Vec2(120, 200);
+    fp.thickness = 0.5f;
+    floor.props = fp;
+    Aabb f = build_surface_mesh(floor).bounds();
+    CHECK(f.max.y == doctest::Approx(0.0f));
+    CHECK(f.min.y == doctest::Approx(-0.5f));
+    fp.ceiling = true;
+    floor.position.y = 16;
+    floor.props = fp;
+    Aabb c = build_surface_mesh(floor).bounds();
+    CHECK(c.min.y == doctest::Approx(16.0f));
+    CHECK(c.max.y == doctest::Approx(16.5f));
+}
+
+TEST_CASE("environment from level settings: linear colours, normalised sun, degenerate sun made safe") {
+    level::Settings s;
+    s.ambient_color = {1, 1, 1};
+    s.ambient_intensity = 0.2f;
+    s.sun_direction = Vec3(2, -2, 0);
+    Environment env = environment_from_settings(s);
+    CHECK(env.sky_color.r == doctest::Approx(0.2f));
+    CHECK(glm::length(env.sun_direction) == doctest::Approx(1.0f));
+    s.sun_direction = Vec3(0.0f);
+    CHECK(environment_from_settings(s).sun_direction.y == doctest::Approx(-1.0f));
+    CHECK(to_linear({0.5f, 0.5f, 0.5f}).r == doctest::Approx(0.214f).epsilon(0.01));
+}
+
+TEST_CASE("particle emitter spawns for its duration, particles die after their life, on_finish fires once") {
+    ParticleParams p;
+    p.duration = 0.1f;
+    p.per_frame = 5;
+    p.life = 0.5f;
+    int finished = 0;
+    ParticleEmitter e(p, 7, [&] { ++finished; });
+    float dt = 1.0f / 60.0f;
+    e.update(dt);
+    CHECK(e.particles().size() == 5);
+    for (int i = 0; i < 5; ++i) e.update(dt);
+    CHECK(e.particles().size() == 30);
+    CHECK_FALSE(e.spawning());
+    for (const auto& q : e.particles()) {
+        CHECK(glm::all(glm::lessThanEqual(glm::abs(q.position - p.position), p.spawn_radius + Vec3(0.5f))));
+        CHECK(q.color.a >= 0.0f);
+        CHECK(q.color.a <= 1.0f);
+    }
+    for (int i = 0; i < 60 && !e.finished(); ++i) e.update(dt);
+    CHECK(e.finished());
+    CHECK(e.particles().empty());
+    CHECK(finished == 1);
+    e.update(dt);
+    CHECK(finished == 1);
+}
+
+TEST_CASE("infinite emitters keep spawning up to capacity; stop() lets them finish") {
+    ParticleParams p;
+    p.duration = 0.0f; // forever
+    p.per_frame = 50;
+    p.life = 10.0f;
+    p.max_particles = 120;
+    ParticleEmitter e(p, 1);
+    for (int i = 0; i < 10; ++i) e.update(0.01f);
+    CHECK(e.particles().size() == 120);
+    CHECK(e.particles().capacity() == 120); // no growth beyond the capacity allocated up front
+    e.stop();
+    for (int i = 0; i < 2000 && !e.finished(); ++i) e.update(0.01f);
+    CHECK(e.finished());
+}
+
+TEST_CASE("particle parameters that are NaN or absurd are refused, and such an emitter spawns nothing") {
+    ParticleParams p;
+    p.life = std::numeric_limits<float>::quiet_NaN();
+    auto r = validate(p);
+    REQUIRE_FALSE(r);
+    CHECK(r.error().str().find("life") != std::string::npos);
+    p.life = 1.0f;
+    p.size = -1.0f;
+    CHECK_FALSE(validate(p));
+    p.size = 1.0f;
+    p.per_frame = -3;
+    CHECK_FALSE(validate(p));
+    p.per_frame = 3;
+    p.velocity.x = std::numeric_limits<float>::infinity();
+    ParticleEmitter e(p, 1);
+    e.update(0.016f);
+    CHECK(e.particles().empty());
+    CHECK(e.finished());
+    // A NaN time step does not poison the particles.
+    ParticleEmitter good(ParticleParams{}, 3);
+    good.update(std::numeric_limits<float>::quiet_NaN());
+    good.update(0.016f);
+    for (const auto& q : good.particles()) CHECK(is_finite(q.position));
+}
+
+TEST_CASE("HUD bar fractions clamp and survive bad values") {
+    CHECK(bar_fraction(50, 100) == doctest::Approx(0.5f));
+    CHECK(bar_fraction(150, 100) == 1.0f);
+    CHECK(bar_fraction(-5, 100) == 0.0f);
+    CHECK(bar_fraction(5, 0) == 0.0f);
+    CHECK(bar_fraction(std::numeric_limits<float>::quiet_NaN(), 100) == 0.0f);
+}
+
+TEST_CASE("view model: recoil moves the rifle back toward the camera and tilts the muzzle up") {
+    Mat4 rest = rifle_view_transform(0.0f), kick = rifle_view_transform(1.0f);
+    CHECK(kick[3].z > rest[3].z); // closer to the camera (camera looks along -z)
+    CHECK((kick * Vec4(0, 0, -1, 0)).y > (rest * Vec4(0, 0, -1, 0)).y); // barrel points higher
+    Mat4 nan = rifle_view_transform(std::numeric_limits<float>::quiet_NaN());
+    CHECK(nan == rest);
+}
+
+TEST_CASE("shader logs from Mesa and NVIDIA become file:line: message") {
+    CHECK(format_shader_log("0:12(5): error: `foo' undeclared\n", "pbr.frag") ==
+          "pbr.frag:12: error: `foo' undeclared");
+    CHECK(format_shader_log("0(7) : error C1008: undefined variable \"x\"", "line.vert") ==
+          "line.vert:7: error C1008: undefined variable \"x\"");
+    CHECK(format_shader_log("ERROR: 0:3: 'y' : undeclared identifier", "a.frag") ==
+          "a.frag:3: 'y' : undeclared identifier");
+    CHECK(format_shader_log("something else", "b.vert") == "b.vert: something else");
+}
