@@ -551,7 +551,8 @@ Result<void> GameApp::start(const Automation& a) {
             }
         }
         if (g.phase() != game::Phase::Won)
-            return Error("--screen win: could not reach a control panel in this level", Location(level_path_.string()),
+            return Error("--screen win: could not reach a control panel in this level",
+                         Location(level_path_.string()),
                          "use a level with a control panel (levels/main.json has one)");
         win_ = {session_->play_seconds, g.robots_killed(), session_->robots_total};
         screen_ = Screen::Won;

@@ -97,7 +97,7 @@ TEST_CASE("game app: the menus draw a light panel with accent buttons over a dar
         REQUIRE(s.image.width == 960);
         CHECK(distinct_colours(s.image) > 20);
         // The panel body is light: a strip just inside its left edge (no buttons there).
-        CHECK(fraction(s.image, 0.33, 0.45, 0.36, 0.6, kPanelLight) > 0.6);
+        CHECK(fraction(s.image, 0.305, 0.45, 0.325, 0.6, kPanelLight) > 0.6);
         // Accent-blue buttons in the centre column, and the title tab's border above the panel.
         CHECK(fraction(s.image, 0.4, 0.2, 0.6, 0.95, kAccentBlue) > 0.08);
         // Outside the panel the backdrop is dark.
@@ -162,14 +162,14 @@ TEST_CASE("game app: death and win menus") {
     Shot death = screenshot(dir, "death", "--screen death");
     INFO(death.output);
     REQUIRE(death.exit_code == 0);
-    CHECK(fraction(death.image, 0.33, 0.45, 0.36, 0.6, kPanelLight) > 0.6);
+    CHECK(fraction(death.image, 0.305, 0.45, 0.325, 0.6, kPanelLight) > 0.6);
     // The death screen is tinted red outside the panel.
     auto reddish = [](int r, int g, int b) { return r > g + 8 && r > b; };
     CHECK(fraction(death.image, 0.0, 0.3, 0.2, 0.7, reddish) > 0.5);
     Shot win = screenshot(dir, "win", "--screen win");
     INFO(win.output);
     REQUIRE(win.exit_code == 0);
-    CHECK(fraction(win.image, 0.33, 0.45, 0.36, 0.6, kPanelLight) > 0.6);
+    CHECK(fraction(win.image, 0.305, 0.45, 0.325, 0.6, kPanelLight) > 0.6);
     CHECK(fraction(win.image, 0.4, 0.6, 0.6, 0.95, kAccentBlue) > 0.1);
 }
 
