@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (fuzz/, clang) and runs each for a bounded time.
 #   scripts/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]      (default 60 s, all three targets)
-# Environment: KS_FUZZ_BUILD (build folder, default build-fuzz), KS_FUZZ_FLAGS (extra libFuzzer flags).
+# Environment: KS_FUZZ_BUILD (build folder, default build-fuzz), KS_FUZZ_FLAGS (extra libFuzzer flags),
+# KS_FUZZ_NO_BUILD=1 (run the targets already built there), KS_FUZZ_TIMEOUT (seconds one input may take,
+# default 30: wall-clock, so generous on a shared machine), KS_FUZZ_MAX_LEN (default 32768 bytes: the largest
+# shipped file is 18 KB; bigger seeds such as the 200 KB nesting bomb are cut to this for mutation).
 # The growing corpus stays in $KS_FUZZ_BUILD/corpus/<target>; seeds are read from the shipped files and the
 # test corpora. Any crash, timeout, leak or out-of-memory input is copied to tests/data/fuzz/<target>/,
 # where the GCC regression tests (tests/{level,anim,editor}/test_fuzz_regressions.cpp) replay it; the script
@@ -24,8 +27,10 @@ if ! command -v clang++ >/dev/null; then
     echo "fuzz.sh: clang++ not found (Debian: apt-get install clang libclang-rt-dev)" >&2
     exit 2
 fi
-cmake -S "$root/fuzz" -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-cmake --build "$build" -j"$jobs" --target "${targets[@]}"
+if [[ ${KS_FUZZ_NO_BUILD:-0} != 1 ]]; then
+    cmake -S "$root/fuzz" -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+    cmake --build "$build" -j"$jobs" --target "${targets[@]}"
+fi
 
 seeds_for() {
     case $1 in
@@ -60,7 +65,7 @@ for target in "${targets[@]}"; do
     set +e
     # shellcheck disable=SC2046 # the seed list is meant to split into folders
     "$build/bin/$target" "$corpus" $(seeds_for "$target") \
-        -dict="$(dict_for "$target")" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+        -dict="$(dict_for "$target")" -max_total_time="$seconds" -timeout="${KS_FUZZ_TIMEOUT:-30}" -max_len="${KS_FUZZ_MAX_LEN:-32768}" -rss_limit_mb=2048 \
         -artifact_prefix="$artifacts/" -print_final_stats=1 ${KS_FUZZ_FLAGS:-} >"$log" 2>&1
     rc=$?
     set -e
