@@ -96,7 +96,10 @@ void DojoPanel::recompile() {
         return;
     }
     clips_ = std::move(*compiled);
-    clip_ = std::clamp(clip_, 0, std::max(0, static_cast<int>(clips_.clips.size()) - 1));
+    const int last = std::max(0, static_cast<int>(clips_.clips.size()) - 1);
+    clip_ = std::clamp(clip_, 0, last);
+    from_clip_ = std::clamp(from_clip_, 0, last);
+    to_clip_ = std::clamp(to_clip_, 0, last);
     player_ = std::make_unique<anim::Player>(clips_, rig_);
     restart_at(time_);
 }

@@ -65,7 +65,7 @@ class DojoPanel {
     int selected_phase_ = 0;
 
     bool transition_mode_ = false;
-    int from_clip_ = 0, to_clip_ = 1;
+    int from_clip_ = 0, to_clip_ = 0;
     float switch_time_ = 0.5f, blend_time_ = 0.2f;
 
     // Preview

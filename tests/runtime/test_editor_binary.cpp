@@ -25,6 +25,35 @@ std::string editor_binary() {
     return (test::bin_dir() / "killswitch-editor").string();
 }
 
+struct Image {
+    int width = 0, height = 0;
+    std::vector<unsigned char> rgb;
+    const unsigned char* at(int x, int y) const { return &rgb[(static_cast<size_t>(y) * width + x) * 3]; }
+};
+
+Image load_png(const std::filesystem::path& path) {
+    Image img;
+    int channels = 0;
+    unsigned char* data = stbi_load(path.c_str(), &img.width, &img.height, &channels, 3);
+    if (data) {
+        img.rgb.assign(data, data + static_cast<size_t>(img.width) * img.height * 3);
+        stbi_image_free(data);
+    }
+    return img;
+}
+
+// Pixels in [x0, x1) x [y0, y1) that `accept` (r, g, b).
+template <class F>
+int count_pixels(const Image& img, int x0, int y0, int x1, int y1, F accept) {
+    int n = 0;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) {
+            const unsigned char* p = img.at(x, y);
+            if (accept(p[0], p[1], p[2])) ++n;
+        }
+    return n;
+}
+
 void write(const std::filesystem::path& path, const std::string& text) {
     std::ofstream out(path);
     out << text;
@@ -149,11 +178,10 @@ TEST_CASE("killswitch-editor --screenshot shows the level in its viewport betwee
                                  " --width 1280 --height 720 --frames 4 --screenshot " + shot.string());
     INFO(run.output);
     REQUIRE(run.exit_code == 0);
-    int w = 0, h = 0, channels = 0;
-    unsigned char* data = stbi_load(shot.c_str(), &w, &h, &channels, 3);
-    REQUIRE(data);
-    std::vector<unsigned char> rgb(data, data + static_cast<size_t>(w) * h * 3);
-    stbi_image_free(data);
+    const Image img = load_png(shot);
+    const int w = img.width, h = img.height;
+    const auto& rgb = img.rgb;
+    REQUIRE(!rgb.empty());
     CHECK(w == 1280);
     CHECK(h == 720);
     // The viewport is the middle of the window (between the outliner and the inspector, above the log):
@@ -173,4 +201,58 @@ TEST_CASE("killswitch-editor --screenshot shows the level in its viewport betwee
             left.insert((p[0] << 16) | (p[1] << 8) | p[2]);
         }
     CHECK(left.size() > 4);
+}
+
+TEST_CASE("killswitch-editor draws the selection outline and the gizmo for a selected entity") {
+    if (!have_display()) {
+        MESSAGE("no DISPLAY: editor window test skipped (./run.sh test runs it under xvfb-run)");
+        return;
+    }
+    test::ScratchDir dir;
+    write(dir / "build.kss", kTwoRoomScript);
+    REQUIRE(test::run_command(editor_binary() + " --script " + (dir / "build.kss").string()).exit_code == 0);
+    write(dir / "select.kss", "select all robot\n");
+    write(dir / "none.kss", "select none\n");
+    const std::string common = editor_binary() + " --level " + (dir / "two_rooms.json").string() +
+                               " --camera 3,4,-2,0,-10 --width 1280 --height 720 --frames 3";
+    auto a = test::run_command(common + " --run " + (dir / "none.kss").string() + " --screenshot " +
+                               (dir / "none.png").string());
+    auto b = test::run_command(common + " --run " + (dir / "select.kss").string() + " --screenshot " +
+                               (dir / "selected.png").string());
+    INFO(a.output);
+    INFO(b.output);
+    REQUIRE(a.exit_code == 0);
+    REQUIRE(b.exit_code == 0);
+    const Image none = load_png(dir / "none.png"), selected = load_png(dir / "selected.png");
+    REQUIRE(!none.rgb.empty());
+    REQUIRE(!selected.rgb.empty());
+    // The outline is orange (255, 158, 26) and the gizmo's arrows pure-ish red, green and blue; the
+    // viewport is x in [~240, ~960), y in [~55, ~560) at 1280 x 720.
+    auto orange = [](int r, int g, int b) { return r > 220 && g > 120 && g < 190 && b < 70; };
+    auto gizmo_green = [](int r, int g, int b) { return g > 190 && r < 140 && b < 110; };
+    const int o0 = count_pixels(none, 250, 60, 950, 550, orange),
+              o1 = count_pixels(selected, 250, 60, 950, 550, orange);
+    const int g0 = count_pixels(none, 250, 60, 950, 550, gizmo_green),
+              g1 = count_pixels(selected, 250, 60, 950, 550, gizmo_green);
+    CHECK(o1 > o0 + 20);
+    CHECK(g1 > g0 + 20);
+}
+
+TEST_CASE("killswitch-editor --dojo shows the posed robot in its preview") {
+    if (!have_display()) {
+        MESSAGE("no DISPLAY: dojo window test skipped (./run.sh test runs it under xvfb-run)");
+        return;
+    }
+    test::ScratchDir dir;
+    auto shot = dir / "dojo.png";
+    auto run = test::run_command(
+        editor_binary() + " --dojo --width 1280 --height 720 --frames 10 --screenshot " + shot.string());
+    INFO(run.output);
+    REQUIRE(run.exit_code == 0);
+    const Image img = load_png(shot);
+    REQUIRE(img.width == 1280);
+    // The preview is the left half above the transport; the robot is yellow.
+    auto yellow = [](int r, int g, int b) { return r > 150 && g > 110 && b < 90 && r - b > 100; };
+    CHECK(count_pixels(img, 10, 60, 640, 400, yellow) > 2000);
+    CHECK(run.output.find("error") == std::string::npos);
 }
