@@ -164,3 +164,34 @@ TEST_CASE("without input the player survives standing at the main level's start"
     run_for(*g, 30.0);
     CHECK(g->phase() == Phase::Playing); // room 1 has no robots; door 1 stays closed
 }
+
+TEST_CASE("headless outcomes: death when robots win, timeout when nothing happens; stats JSON on stdout") {
+    ks::test::ScratchDir dir;
+    auto lv = flat_level();
+    for (float x : {-3.0f, 0.0f, 3.0f})
+        add_robot(lv, Vec3(x, 0, -8)).as<level::RobotProps>().hit_probability = 1.0f;
+    REQUIRE(level::save_level_file(dir / "ambush.json", lv).ok());
+    HeadlessOptions o;
+    o.level = dir / "ambush.json";
+    o.seconds = 30.0;
+    auto death = run_headless(o);
+    if (!death) FAIL(death.error().str());
+    CHECK(death->outcome == "death");
+    CHECK(death->damage_taken >= 100.0f);
+    CHECK(death->sim_time_s < 30.0);
+
+    REQUIRE(level::save_level_file(dir / "empty.json", flat_level()).ok());
+    o.level = dir / "empty.json";
+    o.seconds = 2.0;
+    auto timeout = run_headless(o);
+    REQUIRE(timeout.ok());
+    CHECK(timeout->outcome == "timeout");
+    CHECK(timeout->steps == 240);
+    CHECK(timeout->sim_time_s == doctest::Approx(2.0));
+
+    // The binary-level contract: one JSON object with the seven keys.
+    const std::string json = timeout->to_json();
+    CHECK(json.front() == '{');
+    CHECK(json.find("\"outcome\":\"timeout\"") != std::string::npos);
+    CHECK(json.find('\n') == std::string::npos);
+}
