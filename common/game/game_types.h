@@ -24,10 +24,11 @@ struct Input {
 enum class Phase : std::uint8_t { Playing, Dead, Won };
 
 enum class EventType : std::uint8_t {
-    ShotFired,      // player shot: position = rifle tip, end = where the ray stopped
-    RobotShot,      // robot shot (fired or dry): position = hand tip, end = where the ray stopped
-    Hit,            // a shot hit something: position = point, entity = what (level id, or -1 for the player)
-    RobotHurt,      // entity = robot, amount = damage
+    ShotFired, // player shot: position = rifle tip, end = where the ray stopped
+    RobotShot, // robot shot (fired or dry): position = hand tip, end = where the ray stopped
+    Hit,       // a shot hit something: position = point, end = surface normal, entity = what (-1: player or
+               // scenery)
+    RobotHurt, // entity = robot, amount = damage
     RobotAlerted,   // entity = robot
     RobotDied,      // entity = robot, after its death clip; the robot is removed
     Explosion,      // position = centre, amount = blast radius (robot deaths: 0, visual only)
