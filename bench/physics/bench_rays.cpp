@@ -374,20 +374,66 @@ int run_level(const CommandLine& cli) {
     return mismatches == 0 ? 0 : 1;
 }
 
+// ---- --boxes N: one generated scene, for profiling (callgrind) and quick checks -------------------------
+
+int run_boxes(const CommandLine& cli) {
+    auto boxes_arg = cli.get_int("boxes", 2000, 20, 1000000);
+    auto rays_arg = cli.get_int("rays", 200000, 1, 100000000);
+    auto seed_arg = cli.get_int("seed", 7, 0, 2147483647);
+    if (!boxes_arg || !rays_arg || !seed_arg) {
+        std::fprintf(stderr, "ks_bench rays: %s\n",
+                     (!boxes_arg  ? boxes_arg.error()
+                      : !rays_arg ? rays_arg.error()
+                                  : seed_arg.error())
+                         .str()
+                         .c_str());
+        return 2;
+    }
+    const auto scene = scenes::make_rooms(*boxes_arg, 1);
+    World w;
+    scenes::add_to_world(scene, w);
+    w.build_static();
+    const auto set = make_rays(scene, *rays_arg, static_cast<std::uint64_t>(*seed_arg));
+    std::vector<RayHit> hits(set.rays.size());
+    std::vector<char> hit_flag(set.rays.size());
+    const double start = cpu_seconds();
+    for (std::size_t i = 0; i < set.rays.size(); ++i) hit_flag[i] = w.ray_closest(set.rays[i], hits[i]);
+    const double elapsed = cpu_seconds() - start;
+    long long hit_count = 0, mismatches = 0;
+    double checksum = 0.0;
+    const auto ref = to_ref(scene);
+    const bool check = !cli.has("no-check");
+    for (std::size_t i = 0; i < set.rays.size(); ++i) {
+        if (hit_flag[i]) ++hit_count, checksum += hits[i].distance;
+        if (check)
+            mismatches += reference::judge(DVec3(set.rays[i].origin), DVec3(set.rays[i].direction), 100.0,
+                                           hit_flag[i] ? int(hits[i].body.index) : -1, hits[i].distance,
+                                           ref) == reference::Verdict::Mismatch;
+    }
+    std::printf(
+        "%zu boxes, %zu rays: %.0f closest-hit rays/s (thread CPU time), %lld hits, %s%lld mismatches, "
+        "checksum %.6f\n",
+        scene.boxes.size(), set.rays.size(), set.rays.size() / elapsed, hit_count,
+        check ? "" : "(not checked) ", mismatches, checksum);
+    return mismatches == 0 ? 0 : 1;
+}
+
 int rays_command(int argc, const char* const* argv) {
-    auto cli = CommandLine::parse(argc, argv, {"json", "quick"});
+    auto cli = CommandLine::parse(argc, argv, {"json", "quick", "no-check"});
     if (!cli) {
         std::fprintf(stderr, "ks_bench rays: %s\n", cli.error().str().c_str());
         return 2;
     }
-    if (auto unknown = cli->unknown({"level", "rays", "seed", "json", "dump", "quick"}); !unknown.empty()) {
+    if (auto unknown = cli->unknown({"level", "boxes", "rays", "seed", "json", "dump", "quick", "no-check"});
+        !unknown.empty()) {
         std::fprintf(stderr,
                      "ks_bench rays: unknown option --%s (known: --level FILE --rays N --seed S --json "
-                     "--dump FILE --quick)\n",
+                     "--dump FILE --quick; --boxes N --rays N --seed S --no-check)\n",
                      unknown[0].c_str());
         return 2;
     }
     if (cli->has("level")) return run_level(*cli);
+    if (cli->has("boxes")) return run_boxes(*cli);
     return run_default(cli->has("quick"));
 }
 

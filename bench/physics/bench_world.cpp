@@ -6,8 +6,10 @@
 #include "bench_util.h"
 #include "scenes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 namespace ks::physics::bench {
 namespace {
@@ -37,7 +39,13 @@ void steer(World& w, const std::vector<BodyId>& ids, Rng& rng) {
 
 int world_command(int argc, const char* const* argv) {
     bool quick = false;
-    for (int i = 1; i < argc; ++i) quick |= std::string(argv[i]) == "--quick";
+    int only = 0, only_steps = 0; // --chars N [--steps S]: one row, no baseline (for profiling)
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        quick |= a == "--quick";
+        if (a == "--chars" && i + 1 < argc) only = std::clamp(std::atoi(argv[++i]), 1, 100000);
+        if (a == "--steps" && i + 1 < argc) only_steps = std::clamp(std::atoi(argv[++i]), 1, 100000);
+    }
     const auto scene = scenes::make_rooms(2000, 1);
     std::printf(
         "World step (120 Hz) with N characters (capsule r 1, h 3, running at 15 u/s in random directions) in "
@@ -46,8 +54,9 @@ int world_command(int argc, const char* const* argv) {
     std::printf("%8s %14s %16s %18s %16s %10s\n", "chars", "us/step", "us/char/step", "all-pairs us/step",
                 "contacts/step", "speedup");
     std::vector<std::string> rows;
-    const std::vector<int> counts =
-        quick ? std::vector<int>{10, 100, 1000} : std::vector<int>{10, 100, 1000, 10000};
+    const std::vector<int> counts = only    ? std::vector<int>{only}
+                                    : quick ? std::vector<int>{10, 100, 1000}
+                                            : std::vector<int>{10, 100, 1000, 10000};
     for (int n : counts) {
         World w;
         scenes::add_to_world(scene, w);
@@ -64,7 +73,7 @@ int world_command(int argc, const char* const* argv) {
         }
         steer(w, ids, rng);
         for (int i = 0; i < 30; ++i) w.step(1.0f / 120.0f); // settle, spread out of crates
-        const int steps = std::clamp(200000 / n, 10, 240);
+        const int steps = only_steps ? only_steps : std::clamp(200000 / n, 10, 240);
         double cpu = 0;
         long long contacts = 0;
         for (int i = 0; i < steps; ++i) {
@@ -75,6 +84,11 @@ int world_command(int argc, const char* const* argv) {
             contacts += static_cast<long long>(w.collisions().size() / 2);
         }
         const double us = cpu / steps * 1e6;
+        if (only) {
+            std::printf("%8d %14.1f %16.3f %18s %16.1f\n", n, us, us / n, "-",
+                        static_cast<double>(contacts) / steps);
+            return 0;
+        }
 
         // Baseline: the same controller and characters, obstacles found by scanning every static box.
         AllPairs all;

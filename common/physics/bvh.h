@@ -5,6 +5,7 @@
 #include "physics/ray.h"
 #include "physics/shapes.h"
 
+#include <bit>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -53,6 +54,15 @@ class Bvh {
     // max_t&) returns false to stop; it may shrink max_t (closest-hit queries) to prune the rest.
     template <class Visit>
     void ray_query(const Ray& ray, float max_t, Visit&& visit) const;
+    // The same traversal handing over whole leaves: visit(leaf, max_t&) with leaf an index into leaves(),
+    // so callers can test a leaf's items together (SIMD). Returns false to stop.
+    // `inv` is safe_inverse(ray.direction), computed once by the caller.
+    template <class VisitLeaf>
+    void ray_query_leaves(const Ray& ray, const Vec3& inv, float max_t, VisitLeaf&& visit) const;
+    struct LeafRange {
+        std::uint32_t first, count; // leaf slots [first, first + count)
+    };
+    std::span<const LeafRange> leaves() const { return leaves_; }
     // Visits leaf slots whose node box overlaps `box`. visit(slot) returns false to stop.
     template <class Visit>
     void aabb_query(const Aabb& box, Visit&& visit) const;
@@ -64,16 +74,13 @@ class Bvh {
         float min_x[4], min_y[4], min_z[4], max_x[4], max_y[4], max_z[4];
         std::int32_t child[4]; // >= 0: wide node; < 0: ~leaf index
         std::int32_t lanes;    // bit k set when child k exists
-        struct Leaf {
-            std::uint32_t first, count;
-        };
     };
     void build_wide();
     static int slab4(const WideNode& n, const Lanes& ox, const Lanes& oy, const Lanes& oz, const Lanes& ix,
                      const Lanes& iy, const Lanes& iz, float max_t, float* t_enter);
 
     std::vector<WideNode> wide_;
-    std::vector<WideNode::Leaf> leaves_;
+    std::vector<LeafRange> leaves_;
     std::vector<Node> nodes_;
     std::vector<std::uint32_t> order_;
     int depth_ = 0;
@@ -107,8 +114,18 @@ inline int Bvh::slab4(const WideNode& n, const Lanes& ox, const Lanes& oy, const
 
 template <class Visit>
 void Bvh::ray_query(const Ray& ray, float max_t, Visit&& visit) const {
-    if (wide_.empty()) return;
     const Vec3 inv = safe_inverse(ray.direction);
+    ray_query_leaves(ray, inv, max_t, [&](std::uint32_t leaf_index, float& t) {
+        const LeafRange leaf = leaves_[leaf_index];
+        for (std::uint32_t i = 0; i < leaf.count; ++i)
+            if (!visit(leaf.first + i, inv, t)) return false;
+        return true;
+    });
+}
+
+template <class VisitLeaf>
+void Bvh::ray_query_leaves(const Ray& ray, const Vec3& inv, float max_t, VisitLeaf&& visit) const {
+    if (wide_.empty()) return;
     const Lanes ox = splat(ray.origin.x), oy = splat(ray.origin.y), oz = splat(ray.origin.z);
     const Lanes ix = splat(inv.x), iy = splat(inv.y), iz = splat(inv.z);
     struct Pending {
@@ -121,16 +138,19 @@ void Bvh::ray_query(const Ray& ray, float max_t, Visit&& visit) const {
     while (top > 0) {
         const Pending p = stack[--top];
         if (p.t > max_t) continue; // a closer hit was found meanwhile
-        if (p.child < 0) {         // leaf: its items are the slots [first, first + count)
-            const WideNode::Leaf leaf = leaves_[~p.child];
-            for (std::uint32_t i = 0; i < leaf.count; ++i)
-                if (!visit(leaf.first + i, inv, max_t)) return;
+        if (p.child < 0) {         // leaf
+            if (!visit(static_cast<std::uint32_t>(~p.child), max_t)) return;
             continue;
         }
         const WideNode& n = wide_[p.child];
         float t_enter[4];
         const int mask = slab4(n, ox, oy, oz, ix, iy, iz, max_t, t_enter);
         if (!mask) continue;
+        if ((mask & (mask - 1)) == 0) { // one child hit (the common case deep in the tree): no sorting
+            const int k = std::countr_zero(static_cast<unsigned>(mask));
+            stack[top++] = {n.child[k], t_enter[k]};
+            continue;
+        }
         // Push the hit children farthest first, so the nearest is popped next.
         int order[4], count = 0;
         for (int k = 0; k < 4; ++k)
@@ -152,7 +172,7 @@ void Bvh::aabb_query(const Aabb& box, Visit&& visit) const {
     while (top > 0) {
         const std::int32_t ref = stack[--top];
         if (ref < 0) {
-            const WideNode::Leaf leaf = leaves_[~ref];
+            const LeafRange leaf = leaves_[~ref];
             for (std::uint32_t i = 0; i < leaf.count; ++i)
                 if (!visit(leaf.first + i)) return;
             continue;

@@ -306,8 +306,26 @@ std::optional<Contact> collide_capsule_polyhedron(const Segment& s, float r, con
     return c;
 }
 
-std::optional<Contact> collide_capsule_box(const Segment& s, float r, const Vec3& half, const Transform& xf,
-                                           float contact_margin) {
+namespace {
+// The box frame: a general rotation, or (walls, floors, most crates) none, where the frame changes are a
+// translation only. Rotating by the identity quaternion returns its input exactly, so both give the same
+// results; the translation-only frame just skips four quaternion rotations per call.
+struct RotatedFrame {
+    const Transform& xf;
+    Vec3 to_local(const Vec3& p) const { return xf.to_local(p); }
+    Vec3 to_world(const Vec3& p) const { return xf.to_world(p); }
+    Vec3 dir_to_world(const Vec3& d) const { return xf.dir_to_world(d); }
+};
+struct TranslatedFrame {
+    const Vec3& position;
+    Vec3 to_local(const Vec3& p) const { return p - position; }
+    Vec3 to_world(const Vec3& p) const { return position + p; }
+    Vec3 dir_to_world(const Vec3& d) const { return d; }
+};
+
+template <class Frame>
+std::optional<Contact> capsule_box_in(const Segment& s, float r, const Vec3& half, const Frame& xf,
+                                      float contact_margin) {
     const Vec3 a = xf.to_local(s.p0), b = xf.to_local(s.p1);
     // Upright segment in a yaw-only frame: x and z are the same at both ends (up to rounding).
     const float px = (a.x + b.x) * 0.5f, pz = (a.z + b.z) * 0.5f;
@@ -343,6 +361,14 @@ std::optional<Contact> collide_capsule_box(const Segment& s, float r, const Vec3
     c.penetration = best + r;
     c.point = xf.to_world(on_core);
     return c;
+}
+} // namespace
+
+std::optional<Contact> collide_capsule_box(const Segment& s, float r, const Vec3& half, const Transform& xf,
+                                           float contact_margin) {
+    if (xf.rotation == Quat(1.0f, 0.0f, 0.0f, 0.0f))
+        return capsule_box_in(s, r, half, TranslatedFrame{xf.position}, contact_margin);
+    return capsule_box_in(s, r, half, RotatedFrame{xf}, contact_margin);
 }
 
 std::optional<Contact> collide_capsule_capsule(const Segment& a, float ra, const Segment& b, float rb,

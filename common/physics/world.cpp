@@ -3,8 +3,13 @@
 #include "core/log.h"
 
 #include <algorithm>
+#include <bit>
 #include <cassert>
 #include <cmath>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace ks::physics {
 
@@ -257,6 +262,28 @@ void World::build_static() const {
         p.enabled = b.enabled;
         static_slot_of_[bi] = static_cast<std::uint32_t>(slot);
     }
+    static_packets_.clear();
+    leaf_packets_.clear();
+    for (const Bvh::LeafRange& leaf : static_bvh_.leaves()) {
+        leaf_packets_.push_back(static_cast<std::uint32_t>(static_packets_.size()));
+        for (std::uint32_t i = 0; i < leaf.count; i += 4) {
+            BoxPacket bp{};
+            for (std::uint32_t k = 0; k < 4 && i + k < leaf.count; ++k) {
+                const std::uint32_t slot = leaf.first + i + k;
+                const StaticPrim& p = static_prims_[slot];
+                bp.slot[k] = slot;
+                if (p.kind == ShapeKind::Box && p.axis_aligned) {
+                    bp.cx[k] = p.position.x, bp.cy[k] = p.position.y, bp.cz[k] = p.position.z;
+                    bp.hx[k] = p.half.x, bp.hy[k] = p.half.y, bp.hz[k] = p.half.z;
+                    bp.boxes |= 1u << k;
+                } else {
+                    bp.others |= 1u << k;
+                }
+            }
+            static_packets_.push_back(bp);
+        }
+    }
+    leaf_packets_.push_back(static_cast<std::uint32_t>(static_packets_.size()));
     static_dirty_ = false;
 }
 
@@ -452,6 +479,59 @@ void World::dispatch() {
 
 // ---- queries ------------------------------------------------------------------------------------------
 
+namespace {
+// Lanes of `bp` whose axis-aligned box ray_centred_aabb would accept within max_t: the same operations in
+// the same order, four at once (no FMA contraction is possible here: plain SSE multiplies and adds).
+template <class Packet>
+std::uint32_t packet_accepts(const Packet& bp, const Vec3& origin, const Vec3& inv, float max_t) {
+#if defined(__SSE2__)
+    const __m128 ox = _mm_sub_ps(_mm_set1_ps(origin.x), _mm_load_ps(bp.cx));
+    const __m128 oy = _mm_sub_ps(_mm_set1_ps(origin.y), _mm_load_ps(bp.cy));
+    const __m128 oz = _mm_sub_ps(_mm_set1_ps(origin.z), _mm_load_ps(bp.cz));
+    const __m128 hx = _mm_load_ps(bp.hx), hy = _mm_load_ps(bp.hy), hz = _mm_load_ps(bp.hz);
+    const __m128 sign = _mm_set1_ps(-0.0f);
+    const __m128 ix = _mm_set1_ps(inv.x), iy = _mm_set1_ps(inv.y), iz = _mm_set1_ps(inv.z);
+    const __m128 tx0 = _mm_mul_ps(_mm_sub_ps(_mm_xor_ps(hx, sign), ox), ix);
+    const __m128 tx1 = _mm_mul_ps(_mm_sub_ps(hx, ox), ix);
+    const __m128 ty0 = _mm_mul_ps(_mm_sub_ps(_mm_xor_ps(hy, sign), oy), iy);
+    const __m128 ty1 = _mm_mul_ps(_mm_sub_ps(hy, oy), iy);
+    const __m128 tz0 = _mm_mul_ps(_mm_sub_ps(_mm_xor_ps(hz, sign), oz), iz);
+    const __m128 tz1 = _mm_mul_ps(_mm_sub_ps(hz, oz), iz);
+    const __m128 tmin =
+        _mm_max_ps(_mm_min_ps(tx0, tx1), _mm_max_ps(_mm_min_ps(ty0, ty1), _mm_min_ps(tz0, tz1)));
+    const __m128 tmax =
+        _mm_mul_ps(_mm_min_ps(_mm_max_ps(tx0, tx1), _mm_min_ps(_mm_max_ps(ty0, ty1), _mm_max_ps(tz0, tz1))),
+                   _mm_set1_ps(kExitWiden));
+    const __m128 ok = _mm_and_ps(_mm_and_ps(_mm_cmple_ps(tmin, tmax), _mm_cmpgt_ps(tmax, _mm_setzero_ps())),
+                                 _mm_cmple_ps(tmin, _mm_set1_ps(max_t)));
+    return static_cast<std::uint32_t>(_mm_movemask_ps(ok));
+#else
+    std::uint32_t mask = 0;
+    for (int k = 0; k < 4; ++k) {
+        ShapeHit h;
+        Ray r{origin, Vec3(0.0f), max_t};
+        if (ray_centred_aabb(r, inv, {bp.cx[k], bp.cy[k], bp.cz[k]}, {bp.hx[k], bp.hy[k], bp.hz[k]}, h))
+            mask |= 1u << k;
+    }
+    return mask;
+#endif
+}
+} // namespace
+
+template <class Hit>
+bool World::ray_leaf(std::uint32_t leaf, const Ray& ray, const Vec3& inv, float max_t, Hit&& hit) const {
+    for (std::uint32_t pk = leaf_packets_[leaf]; pk < leaf_packets_[leaf + 1]; ++pk) {
+        const BoxPacket& bp = static_packets_[pk];
+        std::uint32_t lanes = (packet_accepts(bp, ray.origin, inv, max_t) & bp.boxes) | bp.others;
+        while (lanes) {
+            const int k = std::countr_zero(lanes);
+            lanes &= lanes - 1;
+            if (!hit(bp.slot[k])) return false;
+        }
+    }
+    return true;
+}
+
 bool World::ray_static(const Ray& ray, const Vec3& inv, const StaticPrim& p, ShapeHit& hit) const {
     if (p.kind == ShapeKind::Box) {
         if (p.axis_aligned) return ray_centred_aabb(ray, inv, p.position, p.half, hit);
@@ -479,17 +559,20 @@ bool World::ray_closest(const Ray& ray, RayHit& out, const RayFilter& filter) co
     float best = ray.max_distance;
     std::uint32_t best_body = kNone;
     Vec3 best_normal(0.0f);
-    static_bvh_.ray_query(ray, ray.max_distance, [&](std::uint32_t slot, const Vec3& inv, float& max_t) {
-        const StaticPrim& p = static_prims_[slot];
-        if (!p.enabled || !(p.layers & filter.layers) || p.body == filter.ignore.index) return true;
-        ShapeHit h;
-        Ray r = ray;
-        r.max_distance = max_t;
-        if (ray_static(r, inv, p, h) && (h.distance < best || best_body == kNone)) {
-            best = h.distance, best_body = p.body, best_normal = h.normal;
-            max_t = h.distance;
-        }
-        return true;
+    const Vec3 inv = safe_inverse(ray.direction);
+    static_bvh_.ray_query_leaves(ray, inv, ray.max_distance, [&](std::uint32_t leaf, float& max_t) {
+        return ray_leaf(leaf, ray, inv, max_t, [&](std::uint32_t slot) {
+            const StaticPrim& p = static_prims_[slot];
+            if (!p.enabled || !(p.layers & filter.layers) || p.body == filter.ignore.index) return true;
+            ShapeHit h;
+            Ray r = ray;
+            r.max_distance = max_t;
+            if (ray_static(r, inv, p, h) && (h.distance < best || best_body == kNone)) {
+                best = h.distance, best_body = p.body, best_normal = h.normal;
+                max_t = h.distance;
+            }
+            return true;
+        });
     });
     for (std::uint32_t index : movers_) {
         const Body& b = bodies_[index];
@@ -522,12 +605,15 @@ bool World::ray_any(const Ray& ray, const RayFilter& filter) const {
     if (!finite_ray(ray)) return false;
     build_static();
     bool found = false;
-    static_bvh_.ray_query(ray, ray.max_distance, [&](std::uint32_t slot, const Vec3& inv, float&) {
-        const StaticPrim& p = static_prims_[slot];
-        if (!p.enabled || !(p.layers & filter.layers) || p.body == filter.ignore.index) return true;
-        ShapeHit h;
-        found = ray_static(ray, inv, p, h);
-        return !found;
+    const Vec3 inv = safe_inverse(ray.direction);
+    static_bvh_.ray_query_leaves(ray, inv, ray.max_distance, [&](std::uint32_t leaf, float& max_t) {
+        return ray_leaf(leaf, ray, inv, max_t, [&](std::uint32_t slot) {
+            const StaticPrim& p = static_prims_[slot];
+            if (!p.enabled || !(p.layers & filter.layers) || p.body == filter.ignore.index) return true;
+            ShapeHit h;
+            found = ray_static(ray, inv, p, h);
+            return !found;
+        });
     });
     if (found) return true;
     for (std::uint32_t index : movers_) {

@@ -193,6 +193,50 @@ TEST_CASE("world rays on a generated 2k-box level match brute force in double pr
     CHECK(hits > 19000);
 }
 
+TEST_CASE("world rays (SIMD leaf prefilter) give bit-identical distances to the scalar shape tests") {
+    // The BVH leaves test four axis-aligned boxes at once and run the exact scalar test only on the lanes
+    // that pass; a lane the prefilter dropped wrongly would change a distance here. Rays aimed exactly at
+    // box corners and edge midpoints put the prefilter on its boundary.
+    const auto scene = scenes::make_rooms(400, 11);
+    World w;
+    std::vector<BodyId> ids;
+    scenes::add_to_world(scene, w, &ids);
+    Rng rng(5);
+    int checked = 0, hits = 0;
+    for (std::size_t bi = 0; bi < scene.boxes.size(); ++bi) {
+        const auto& b = scene.boxes[bi];
+        const Quat q = b.rotation();
+        for (int k = 0; k < 8; ++k) {
+            const Vec3 corner =
+                b.centre + q * (b.half * Vec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1));
+            const Vec3 edge = b.centre + q * (b.half * Vec3(k & 1 ? 1 : -1, 0, k & 4 ? 1 : -1));
+            for (const Vec3& target : {corner, edge}) {
+                const Vec3 o = target + scenes::random_direction(rng) * rng.uniform(0.5f, 10.0f);
+                const Ray r{o, glm::normalize(target - o), 100.0f};
+                float want = r.max_distance;
+                bool want_hit = false;
+                for (BodyId id : ids) {
+                    ShapeHit h;
+                    Ray shrunk = r;
+                    shrunk.max_distance = want;
+                    if (ray_shape(shrunk, w.shape(id), w.transform(id), h) &&
+                        (h.distance < want || !want_hit))
+                        want = h.distance, want_hit = true;
+                }
+                RayHit got;
+                const bool hit = w.ray_closest(r, got);
+                CHECK(hit == want_hit);
+                if (hit && want_hit) CHECK(got.distance == want);
+                CHECK(w.ray_any(r) == want_hit);
+                ++checked;
+                hits += hit;
+            }
+        }
+    }
+    CHECK(checked == static_cast<int>(scene.boxes.size()) * 16);
+    CHECK(hits > checked / 2);
+}
+
 TEST_CASE("ray layer masks and ignore: a shot skips the shooter, sight rays skip non-blocking bodies") {
     World w;
     add_floor(w);
