@@ -299,6 +299,7 @@ void EditorApp::menu_bar() {
         ImGui::MenuItem("Light ranges", nullptr, &overlays_.lights);
         ImGui::MenuItem("Robot eye / shooting radii", nullptr, &overlays_.robots);
         ImGui::MenuItem("Player start", nullptr, &overlays_.player_start);
+        ImGui::MenuItem("Ceilings", nullptr, &overlays_.ceilings);
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Play")) {

@@ -40,6 +40,7 @@ struct Overlays {
     bool lights = true;
     bool robots = true;
     bool player_start = true;
+    bool ceilings = false; // off by default: ceilings would hide the rooms from an editor camera above them
 };
 
 // A question the user must answer before an action goes on (unsaved changes, overwrite, recovery).
@@ -78,6 +79,7 @@ class EditorApp {
     void draw_overlays();
     void viewport_input(Vec2 origin, Vec2 size, bool hovered);
     int pick(const Ray& ray, float* distance = nullptr) const;
+    bool shown(const level::Entity& e) const; // not hidden, and not a ceiling while ceilings are off
     Vec3 place_point(const Ray& ray) const;
     Vec3 selection_pivot() const;
     void focus_selection();
@@ -125,7 +127,8 @@ class EditorApp {
     bool click_pending_ = false;
 
     // panels
-    int type_filter_ = -1; // -1: all
+    int type_filter_ = -1;         // -1: all
+    int outliner_scrolled_to_ = 0; // primary selection the outliner last scrolled to
     char search_[64] = {};
     std::deque<std::pair<std::string, bool>> log_;
     bool scroll_log_ = false;

@@ -177,6 +177,10 @@ void EditorApp::outliner_panel(float x, float y, float w, float h) {
             if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) focus_selection();
         }
         ImGui::PopStyleColor();
+        if (!doc.selection.empty() && doc.selection.front() == e.id && outliner_scrolled_to_ != e.id) {
+            ImGui::SetScrollHereY(0.5f); // picked in the viewport: bring its row into view
+            outliner_scrolled_to_ = e.id;
+        }
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s #%d", type_label(e.type()), e.id);
         if (errors || warnings) {
             ImGui::SameLine();

@@ -106,7 +106,7 @@ void ViewCamera::set_view(ViewMode view, const Vec3& centre, float extent) {
         camera.fov_y = radians(60.0f);
         camera.yaw = radians(-35.0f);
         camera.pitch = radians(-35.0f);
-        camera.position = centre - camera.forward() * std::max(10.0f, extent * 1.2f);
+        camera.position = centre - camera.forward() * std::max(10.0f, extent * 0.8f);
         return;
     }
     camera.fov_y = radians(kAxisFov);

@@ -9,6 +9,7 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <unistd.h>
@@ -63,16 +64,23 @@ bool is_surface(level::EntityType t) {
 }
 } // namespace
 
+bool EditorApp::shown(const level::Entity& e) const {
+    if (editor_.doc().hidden.contains(e.id)) return false;
+    const auto* floor = e.try_as<level::FloorProps>();
+    return overlays_.ceilings || !floor || !floor->ceiling;
+}
+
 void EditorApp::rebuild_scene_if_changed() {
-    const std::uint64_t revision =
-        editor_.revision() ^ (static_cast<std::uint64_t>(editor_.doc().hidden.size()) << 48);
+    const std::uint64_t revision = editor_.revision() ^
+                                   (static_cast<std::uint64_t>(editor_.doc().hidden.size()) << 48) ^
+                                   (static_cast<std::uint64_t>(overlays_.ceilings) << 63);
     if (scene_ && revision == scene_revision_) return;
-    if (editor_.doc().hidden.empty()) {
+    const auto& entities = editor_.level().entities;
+    if (std::all_of(entities.begin(), entities.end(), [&](const level::Entity& e) { return shown(e); })) {
         scene_ = render::LevelScene::build(editor_.level(), assets_);
-    } else { // hidden entities are left out of the picture (and of picking)
+    } else { // hidden entities (and ceilings, unless shown) are left out of the picture and of picking
         level::Level visible = editor_.level();
-        std::erase_if(visible.entities,
-                      [&](const level::Entity& e) { return editor_.doc().hidden.contains(e.id); });
+        std::erase_if(visible.entities, [&](const level::Entity& e) { return !shown(e); });
         scene_ = render::LevelScene::build(visible, assets_);
     }
     renderer_->invalidate_shadows();
@@ -84,7 +92,10 @@ void EditorApp::draw_overlays() {
     if (overlays_.grid) {
         // Around the point under the camera, on y = 0: minor lines every 4 units, major every 16 (a wall).
         const float step = 4.0f, extent = 96.0f;
-        const Vec3 c = view_.camera.position;
+        // Centred where the view looks at the ground (or under the camera when it looks up).
+        Vec3 c = view_.camera.position;
+        const Vec3 f = view_.camera.forward();
+        if (f.y < -0.05f && c.y > 0.0f) c += f * std::min(c.y / -f.y, 150.0f);
         const float cx = std::round(c.x / 16.0f) * 16.0f, cz = std::round(c.z / 16.0f) * 16.0f;
         for (float o = -extent; o <= extent; o += step) {
             const bool major_x = std::fmod(std::abs(cx + o), 16.0f) < 0.01f;
@@ -100,7 +111,7 @@ void EditorApp::draw_overlays() {
         }
     }
     for (const auto& e : doc.level.entities) {
-        if (doc.hidden.contains(e.id)) continue;
+        if (!shown(e)) continue;
         const bool selected = doc.is_selected(e.id);
         if (selected || overlays_.collision) {
             Obb box = entity_obb(e);
@@ -157,7 +168,7 @@ int EditorApp::pick(const Ray& ray, float* distance) const {
     int best = 0;
     float best_t = 1e30f;
     for (const auto& e : doc.level.entities) {
-        if (doc.hidden.contains(e.id) || doc.locked.contains(e.id)) continue;
+        if (!shown(e) || doc.locked.contains(e.id)) continue;
         const float t = ray_obb(ray, entity_obb(e));
         if (t >= 0.0f && t < best_t) best_t = t, best = e.id;
     }
@@ -169,7 +180,7 @@ Vec3 EditorApp::place_point(const Ray& ray) const {
     const Document& doc = editor_.doc();
     float best_t = 1e30f;
     for (const auto& e : doc.level.entities) {
-        if (doc.hidden.contains(e.id) || !is_surface(e.type())) continue;
+        if (!shown(e) || !is_surface(e.type())) continue;
         const Obb box = entity_obb(e);
         const float t = ray_obb(ray, box);
         if (t >= 0.0f && t < best_t) best_t = t;
