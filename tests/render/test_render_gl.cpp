@@ -329,11 +329,11 @@ TEST_CASE("killswitch --screenshot renders the main level and the asset viewer t
     KS_REQUIRE_GL();
     ks::test::ScratchDir dir;
     const std::string exe = (ks::test::bin_dir() / "killswitch").string();
-    for (const std::string args : {std::string("--level levels/main.json"), std::string("--view robot")}) {
+    for (const char* args : {"--level levels/main.json", "--view robot"}) {
         CAPTURE(args);
         fs::path png = dir / "shot.png";
         auto r =
-            ks::test::run_command("cd '" + ks::test::source_dir().string() + "' && '" + exe + "' " + args +
+            ks::test::run_command("cd '" + ks::test::source_dir().string() + "' && '" + exe + "' " + std::string(args) +
                                   " --width 320 --height 180 --frames 2 --screenshot '" + png.string() + "'");
         CHECK_MESSAGE(r.exit_code == 0, r.output);
         int w = 0, h = 0, c = 0;
