@@ -10,16 +10,41 @@
 
 namespace ks::editor::ui {
 
+RuntimeOptions parse_runtime_help(const std::string& help_text) {
+    RuntimeOptions o;
+    o.screen = help_text.find("--screen") != std::string::npos;
+    o.warp = help_text.find("--warp") != std::string::npos;
+    o.camera = help_text.find("--camera") != std::string::npos;
+    return o;
+}
+
+RuntimeOptions query_runtime_options(const std::filesystem::path& runtime) {
+    std::string text;
+    const std::string command = "'" + runtime.string() + "' --help 2>&1";
+    if (FILE* pipe = popen(command.c_str(), "r")) {
+        char buffer[1024];
+        while (size_t n = std::fread(buffer, 1, sizeof(buffer), pipe)) text.append(buffer, n);
+        pclose(pipe);
+    }
+    return parse_runtime_help(text);
+}
+
 std::vector<std::string> playtest_arguments(const std::filesystem::path& level,
-                                            const std::optional<PlayStart>& start) {
-    // Straight into play (no loading screen or menu); --warp puts the feet at the editor camera.
-    std::vector<std::string> args = {"--level", level.string(), "--screen", "play"};
+                                            const std::optional<PlayStart>& start,
+                                            const RuntimeOptions& runtime) {
+    std::vector<std::string> args = {"--level", level.string()};
+    if (runtime.screen) args.insert(args.end(), {"--screen", "play"});
     if (start) {
         char text[128];
-        std::snprintf(text, sizeof(text), "%.3f,%.3f,%.3f,%.1f,0", start->position.x, start->position.y,
-                      start->position.z, start->yaw_degrees);
-        args.push_back("--warp");
-        args.push_back(text);
+        if (runtime.warp || !runtime.camera) {
+            std::snprintf(text, sizeof(text), "%.3f,%.3f,%.3f,%.1f,0", start->position.x, start->position.y,
+                          start->position.z, start->yaw_degrees);
+            args.insert(args.end(), {"--warp", text});
+        } else { // the eye three units above the feet (the reference's eye height)
+            std::snprintf(text, sizeof(text), "%.3f,%.3f,%.3f,%.1f,0", start->position.x,
+                          start->position.y + 3.0f, start->position.z, start->yaw_degrees);
+            args.insert(args.end(), {"--camera", text});
+        }
     }
     return args;
 }

@@ -18,10 +18,21 @@ struct PlayStart {
     float yaw_degrees = 0.0f;
 };
 
-// The runtime's command line: --level TMP --screen play and, for Shift+F5, --warp x,y,z,yaw,0 (feet
-// position, degrees; yaw 0 faces -z like the editor camera).
+// What the runtime's --help says it understands (asked once per play-test; the runtime is developed
+// alongside the editor, so the editor adapts instead of passing options it would reject).
+struct RuntimeOptions {
+    bool screen = false; // --screen play: straight into the game, no loading screen or menu
+    bool warp = false;   // --warp x,y,z,yaw,pitch: the player's feet and facing, degrees
+    bool camera = false; // --camera x,y,z,yaw,pitch: the older render-only view's eye
+};
+RuntimeOptions parse_runtime_help(const std::string& help_text);
+RuntimeOptions query_runtime_options(const std::filesystem::path& runtime);
+
+// The runtime's command line: --level TMP (+ --screen play) and, for Shift+F5, --warp x,y,z,yaw,0 with the
+// feet under the editor camera (or --camera at the eye when the runtime has no --warp).
 std::vector<std::string> playtest_arguments(const std::filesystem::path& level,
-                                            const std::optional<PlayStart>& start);
+                                            const std::optional<PlayStart>& start,
+                                            const RuntimeOptions& runtime);
 
 class PlayTest {
   public:

@@ -249,8 +249,8 @@ void EditorApp::play_test(bool from_camera) {
     if (from_camera) // feet three units under the eye, facing where the camera looks
         start = PlayStart{view_.camera.position - Vec3(0, 3, 0),
                           std::remainder(degrees(view_.camera.yaw), 360.0f)};
-    const auto args = playtest_arguments(play_file_, start);
     const fs::path runtime = options_.executable_dir / "killswitch";
+    const auto args = playtest_arguments(play_file_, start, query_runtime_options(runtime));
     if (auto r = play_.start(runtime, args); !r) {
         log_line("play-test: " + r.error().str(), true);
         return;
