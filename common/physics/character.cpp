@@ -45,6 +45,10 @@ Vec3 clip_to_planes(const Vec3& v, const Planes& planes) {
     return Vec3(0.0f);
 }
 
+Aabb swept_region(const Segment& s, float radius, const Vec3& motion, float skin);
+float sweep_capsule_in(const Segment& s, float radius, const Vec3& motion, float len, const Aabb& region,
+                       const Obstacle& o, float skin, Vec3& normal, Vec3* surface);
+
 struct Mover {
     const std::vector<Obstacle>& obstacles;
     float radius, half;
@@ -61,10 +65,14 @@ struct Mover {
         which = -1;
         float best = 1.0f;
         const Segment s = segment_at(p);
+        const float len = glm::length(motion);
+        const Aabb region = swept_region(s, radius, motion, cs.skin);
         for (std::size_t i = 0; i < obstacles.size(); ++i) {
+            if (!region.overlaps(obstacles[i].bounds))
+                continue; // (sweep_capsule_in would return 1: no change)
             Vec3 n(0.0f, 1.0f, 0.0f), sn(0.0f, 1.0f, 0.0f);
-            const float t =
-                sweep_capsule(s, radius, motion, obstacles[i], cs.skin, n, surface ? &sn : nullptr);
+            const float t = sweep_capsule_in(s, radius, motion, len, region, obstacles[i], cs.skin, n,
+                                             surface ? &sn : nullptr);
             const float sy = surface ? sn.y : n.y;
             if (t < best || (t == best && which >= 0 && t < 1.0f && sy > (surface ? surface->y : normal.y))) {
                 best = t, normal = n, which = static_cast<int>(i);
@@ -116,12 +124,15 @@ struct Mover {
 } // namespace
 
 Vec3 surface_normal(const Shape& shape, const Transform& xf, const Vec3& point, const Vec3& contact_normal) {
-    const Vec3 p = xf.to_local(point);
+    // Unrotated (most level geometry): the frame change is a translation (rotating by the identity
+    // quaternion returns its input exactly, so this only skips work).
+    const bool unrotated = xf.rotation == Quat(1.0f, 0.0f, 0.0f, 0.0f);
+    const Vec3 p = unrotated ? point - xf.position : xf.to_local(point);
     const float tol = 1e-3f;
     Vec3 best = contact_normal;
     float best_y = -2.0f;
     auto consider = [&](const Vec3& local_normal) {
-        const Vec3 n = xf.dir_to_world(local_normal);
+        const Vec3 n = unrotated ? local_normal : xf.dir_to_world(local_normal);
         if (n.y > best_y) best_y = n.y, best = n;
     };
     switch (shape.kind) {
@@ -148,14 +159,20 @@ Vec3 surface_normal(const Shape& shape, const Transform& xf, const Vec3& point, 
     return best_y > -2.0f ? best : contact_normal;
 }
 
-float sweep_capsule(const Segment& s, float radius, const Vec3& motion, const Obstacle& o, float skin,
-                    Vec3& normal, Vec3* surface) {
-    const float len = glm::length(motion);
-    if (!(len > 0.0f)) return 1.0f;
-    // Cheap reject: the capsule's box swept over the motion (plus the skin) misses the obstacle's box.
+namespace {
+// The box a capsule sweeps over `motion`, widened by the skin and a millimetre: obstacles whose bounds miss
+// it cannot stop the sweep. Computed once per sweep, not once per obstacle.
+Aabb swept_region(const Segment& s, float radius, const Vec3& motion, float skin) {
     Aabb swept{glm::min(s.p0, s.p1) - Vec3(radius), glm::max(s.p0, s.p1) + Vec3(radius)};
     swept.grow(Aabb{swept.min + motion, swept.max + motion});
-    if (!swept.expanded(skin + 1e-3f).overlaps(o.bounds)) return 1.0f;
+    return swept.expanded(skin + 1e-3f);
+}
+
+// sweep_capsule with the motion's length and swept region precomputed.
+float sweep_capsule_in(const Segment& s, float radius, const Vec3& motion, float len, const Aabb& region,
+                       const Obstacle& o, float skin, Vec3& normal, Vec3* surface) {
+    if (!(len > 0.0f)) return 1.0f;
+    if (!region.overlaps(o.bounds)) return 1.0f;
     float t = 0.0f;
     // Conservative advancement with Newton steps: the distance between convex sets along a translation is
     // a convex function of t, so its tangent never overshoots the first touch: t only grows toward it.
@@ -181,6 +198,13 @@ float sweep_capsule(const Segment& s, float radius, const Vec3& motion, const Ob
     }
     if (surface) *surface = normal;
     return t;
+}
+} // namespace
+
+float sweep_capsule(const Segment& s, float radius, const Vec3& motion, const Obstacle& o, float skin,
+                    Vec3& normal, Vec3* surface) {
+    return sweep_capsule_in(s, radius, motion, glm::length(motion), swept_region(s, radius, motion, skin), o,
+                            skin, normal, surface);
 }
 
 void move_character(const ObstacleSource& world, float radius, float half_segment,
