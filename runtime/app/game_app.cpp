@@ -31,11 +31,11 @@ namespace ks::runtime {
 
 const std::vector<std::string>& game_app_options() {
     static const std::vector<std::string> names = {"level",     "dojo", "screen", "warp", "dojo-key",
-                                                   "dojo-time", "seed", "msaa",   "help"};
+                                                   "dojo-time", "seed", "msaa",   "help", "fire"};
     return names;
 }
 const std::vector<std::string>& game_app_flags() {
-    static const std::vector<std::string> flags = {"dojo", "help"};
+    static const std::vector<std::string> flags = {"dojo", "help", "fire"};
     return flags;
 }
 const std::vector<std::string>& game_app_screens() {
@@ -105,6 +105,7 @@ class GameApp {
         std::optional<std::array<float, 5>> warp;
         char dojo_key = 0;
         double dojo_time = -1.0;
+        bool fire = false; // one shot on the first step (to see the muzzle flash, impacts, explosions)
     };
     Result<void> start(const Automation& a);
     int run();
@@ -482,7 +483,8 @@ void GameApp::imgui(const render::FrameInfo& info) {
 }
 
 Result<void> GameApp::start(const Automation& a) {
-    const std::string& screen = a.screen;
+    // A screenshot without --screen shows the game (what the render-only view used to show, now playable).
+    const std::string screen = a.screen.empty() && shell_.screenshot_mode() ? "play" : a.screen;
     const bool dojo = a.dojo || screen == "dojo";
     const bool wants_world =
         screen == "play" || screen == "pause" || screen == "death" || screen == "win" || dojo;
@@ -506,6 +508,13 @@ Result<void> GameApp::start(const Automation& a) {
             g.step({});
             session_->view->after_step(g, static_cast<float>(g.settings().step));
         }
+    }
+    if (a.fire) {
+        game::Input in;
+        in.fire = true;
+        session_->view->before_step(g);
+        g.step(in);
+        session_->view->after_step(g, static_cast<float>(g.settings().step));
     }
     if (session_->dojo_controller && a.dojo_key) {
         if (!session_->dojo_controller->press(a.dojo_key))
@@ -586,6 +595,7 @@ void print_help() {
         "dojo\n"
         "  --warp ...        put the player's feet at x,y,z facing yaw,pitch (degrees) before the first "
         "frame\n"
+        "  --fire            fire one shot on the first step (after --warp)\n"
         "  --dojo-key K      in the Dojo, press key K (0-5) before the first frame\n"
         "  --dojo-time S     ... and advance the animation S seconds, then hold it (for screenshots)\n"
         "  --seed N          the game's random seed (default 1)\n"
@@ -614,6 +624,7 @@ int run_game_app(const CommandLine& cl, const render::ShellConfig& shell_config)
         return 2;
     }
     automation.dojo = cl.has("dojo");
+    automation.fire = cl.has("fire");
     if (auto warp = cl.get("warp")) {
         std::array<float, 5> v{};
         if (!parse_floats(*warp, v.data(), 5)) {

@@ -110,10 +110,10 @@ MenuAction pause_menu(const render::Fonts& fonts, float w, float h) {
 MenuAction death_menu(const render::Fonts& fonts, float w, float h) {
     // The death screen tints red: the simulation "killed" the player.
     ImDrawList* bg = ImGui::GetBackgroundDrawList();
-    bg->AddRectFilled(ImVec2(0, 0), ImVec2(w, h), IM_COL32(120, 0, 0, 110));
-    ui::draw_backdrop(bg, w, h, 0.7f);
+    ui::draw_backdrop(bg, w, h, 0.6f);
+    bg->AddRectFilled(ImVec2(0, 0), ImVec2(w, h), IM_COL32(150, 0, 0, 120));
     MenuAction action = MenuAction::None;
-    ui::begin_panel("##death", "You Died", 520, 270, w, h, fonts);
+    ui::begin_panel("##death", "You Died", 520, 240, w, h, fonts);
     ui::centred_text("The robots got you. The simulation restarts on your call.", fonts.body);
     if (ui::big_button("Retry", fonts)) action = MenuAction::Retry;
     if (ui::big_button("Main Menu", fonts)) action = MenuAction::MainMenu;

@@ -136,7 +136,7 @@ void WorldView::on_event(const game::Event& e) {
         const float r = e.amount > 0.0f ? std::min(e.amount, 20.0f) : 2.5f;
         p.position = e.position;
         p.spawn_radius = Vec3(r * 0.25f);
-        p.size = r * 0.35f;
+        p.size = r * 0.2f;
         p.life = 0.7f;
         p.velocity = Vec3(r * 0.6f, r * 0.9f, r * 0.6f);
         p.per_frame = 6;
@@ -147,7 +147,7 @@ void WorldView::on_event(const game::Event& e) {
         smoke.texture = "smoke";
         smoke.blend = render::ParticleBlend::Alpha;
         smoke.life = 1.6f;
-        smoke.size = r * 0.5f;
+        smoke.size = r * 0.3f;
         smoke.velocity = Vec3(r * 0.2f, r * 0.5f, r * 0.2f);
         smoke.per_frame = 2;
         smoke.duration = 0.6f;
