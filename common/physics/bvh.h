@@ -151,6 +151,16 @@ void Bvh::ray_query_leaves(const Ray& ray, const Vec3& inv, float max_t, VisitLe
             stack[top++] = {n.child[k], t_enter[k]};
             continue;
         }
+        const int rest = mask & (mask - 1);
+        if ((rest & (rest - 1)) == 0) { // two children hit: push the farther first (ties: lane order)
+            const int a = std::countr_zero(static_cast<unsigned>(mask)),
+                      b = std::countr_zero(static_cast<unsigned>(rest));
+            const bool b_farther = t_enter[a] < t_enter[b];
+            const int first = b_farther ? b : a, second = b_farther ? a : b;
+            stack[top++] = {n.child[first], t_enter[first]};
+            stack[top++] = {n.child[second], t_enter[second]};
+            continue;
+        }
         // Push the hit children farthest first, so the nearest is popped next.
         int order[4], count = 0;
         for (int k = 0; k < 4; ++k)
