@@ -1,9 +1,12 @@
-// killswitch: the game runtime. For now it renders a level from the player start (or --camera), with the
+// killswitch: the game runtime. Routes to the playable game (runtime/app: menus, game, Dojo), to the headless
+// runner (--headless), or to the renderer's views: a level from --camera with the
 // first-person rifle and HUD, flies freely when interactive, and shows one model on a turntable (--view).
+#include "app/game_app.h"
 #include "core/cli.h"
 #include "core/log.h"
 #include "core/paths.h"
 #include "fly_camera.h"
+#include "game/headless.h"
 #include "level/level_io.h"
 #include "render/app_shell.h"
 #include "render/asset_library.h"
@@ -44,10 +47,49 @@ struct Turntable {
 
 int main(int argc, char** argv) {
     using namespace ks;
-    auto cl = CommandLine::parse(argc, argv, kFlags);
+    std::vector<std::string> flags = kFlags;
+    flags.insert(flags.end(), runtime::game_app_flags().begin(), runtime::game_app_flags().end());
+    flags.insert(flags.end(), game::headless_flags().begin(), game::headless_flags().end());
+    auto cl = CommandLine::parse(argc, argv, flags);
     if (!cl) {
         log::error(cl.error().str());
         return 2;
+    }
+    // Routing: --headless → the game without a window; --view / --camera → the renderer's turntable and
+    // render-only views (below); anything else → the playable game (menus, game, Dojo).
+    if (cl->has("headless")) {
+        if (auto unknown = cl->unknown(game::headless_option_names()); !unknown.empty()) {
+            log::error("unknown option ", unknown.front(), " for --headless (see common/game/headless.h)");
+            return 2;
+        }
+        auto options = game::parse_headless_options(*cl);
+        if (!options) {
+            log::error(options.error().str());
+            return 2;
+        }
+        auto stats = game::run_headless(*options);
+        if (!stats) {
+            log::error(stats.error().str());
+            return 2;
+        }
+        std::printf("%s\n", stats->summary().c_str());
+        return 0;
+    }
+    if (!cl->has("view") && !cl->has("camera")) {
+        std::vector<std::string> app_known = render::shell_options();
+        app_known.insert(app_known.end(), runtime::game_app_options().begin(),
+                         runtime::game_app_options().end());
+        app_known.push_back("no-vsync");
+        if (auto unknown = cl->unknown(app_known); !unknown.empty()) {
+            log::error("unknown option ", unknown.front(), " (see killswitch --help)");
+            return 2;
+        }
+        auto app_config = render::shell_config_from_command_line(*cl, {});
+        if (!app_config) {
+            log::error(app_config.error().str());
+            return 2;
+        }
+        return runtime::run_game_app(*cl, *app_config);
     }
     if (cl->has("help")) {
         print_help();
