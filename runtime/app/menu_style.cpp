@@ -57,7 +57,9 @@ void begin_panel(const char* id, const std::string& title, float panel_w, float 
     ImGui::Begin(id, nullptr,
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                      ImGuiWindowFlags_NoBringToFrontOnFocus);
-    ImGui::SetWindowFontScale(s);
+    // The shell already sizes its fonts for the window it opened; scale only the rest of the way.
+    const float loaded = fonts.body ? fonts.body->FontSize / 18.0f : 1.0f;
+    ImGui::SetWindowFontScale(s / std::max(loaded, 0.1f));
 }
 
 void end_panel() {
