@@ -1,6 +1,7 @@
 // ks_bench render: frame times of a level at 1280x720 over a fixed camera path (offscreen, so the numbers
 // do not depend on a window manager or vsync). The default configuration is compared, in the same run,
-// with MSAA 2x/4x and with re-rendering the sun's shadow map every frame.
+// with variants that switch one feature at a time (anisotropic filtering, shadows, normal/bump maps, lights
+// per object, resolution, MSAA, shadow map every frame), so each feature's cost is read as a ratio.
 #include "bench_registry.h"
 
 #include "core/cli.h"
@@ -11,6 +12,7 @@
 #include "render/level_scene.h"
 #include "render/offscreen.h"
 #include "render/scene_renderer.h"
+#include "render/texture_cache.h"
 #include "render/view_model.h"
 
 #include <algorithm>
@@ -25,7 +27,12 @@ using namespace ks;
 struct Variant {
     const char* name;
     int msaa;
-    bool shadow_every_frame;
+    bool shadow_every_frame = false;
+    float anisotropy = 0.0f; // 0: the renderer's default for this GL renderer
+    bool shadows = true;
+    bool surface_detail = true;
+    int max_lights = render::kMaxLightsPerDraw;
+    int resolution_divisor = 1;
 };
 
 struct Measurement {
@@ -49,6 +56,12 @@ Measurement measure(render::OffscreenContext& ctx, render::AssetLibrary& assets,
     Measurement m;
     render::RendererSettings settings;
     settings.msaa_samples = v.msaa;
+    settings.shadows = v.shadows;
+    settings.surface_detail = v.surface_detail;
+    settings.max_lights_per_draw = v.max_lights;
+    const float default_anisotropy = assets.textures().max_anisotropy();
+    if (v.anisotropy > 0.0f) assets.textures().set_max_anisotropy(v.anisotropy);
+    const int width = ctx.width() / v.resolution_divisor, height = ctx.height() / v.resolution_divisor;
     auto renderer = render::SceneRenderer::create(assets.textures(), settings);
     if (!renderer) {
         log::error(renderer.error().str());
@@ -60,8 +73,7 @@ Measurement measure(render::OffscreenContext& ctx, render::AssetLibrary& assets,
     std::vector<Mat4> scratch;
     render::ViewModel view_model;
     assets.model("rifle").emit(render::rifle_view_transform(0.0f), scratch, view_model.instances);
-    const render::Camera start =
-        render::player_start_camera(level, static_cast<float>(ctx.width()) / ctx.height());
+    const render::Camera start = render::player_start_camera(level, static_cast<float>(width) / height);
     std::vector<double> times;
     times.reserve(static_cast<size_t>(frames));
     const int warmup = 10;
@@ -74,8 +86,8 @@ Measurement measure(render::OffscreenContext& ctx, render::AssetLibrary& assets,
         frame.instances = &instances;
         frame.lights = &lights;
         frame.view_model = &view_model;
-        frame.width = ctx.width();
-        frame.height = ctx.height();
+        frame.width = width;
+        frame.height = height;
         if (v.shadow_every_frame) (*renderer)->invalidate_shadows();
         ctx.bind();
         auto stats = (*renderer)->render(frame);
@@ -87,6 +99,7 @@ Measurement measure(render::OffscreenContext& ctx, render::AssetLibrary& assets,
             m.triangles = std::max(m.triangles, stats.triangles);
         }
     }
+    assets.textures().set_max_anisotropy(default_anisotropy);
     std::sort(times.begin(), times.end());
     m.median_ms = times[times.size() / 2];
     m.p99_ms = times[std::min(times.size() - 1, static_cast<size_t>(times.size() * 0.99))];
@@ -130,15 +143,29 @@ int run(int argc, const char* const* argv) {
     auto scene = render::LevelScene::build(*level, assets);
     const std::string renderer = (*ctx)->renderer();
     const int default_msaa = render::default_msaa_for(renderer);
-    std::vector<Variant> variants = {{"default", default_msaa, false}};
+    std::vector<Variant> variants = {{"default", default_msaa}};
     if (!cl->has("quick")) {
-        variants.push_back({"msaa 0x", 0, false});
-        variants.push_back({"msaa 2x", 2, false});
-        variants.push_back({"msaa 4x", 4, false});
-        variants.push_back({"shadow map every frame", default_msaa, true});
+        auto with = [&](const char* name, auto change) {
+            Variant v{name, default_msaa};
+            change(v);
+            variants.push_back(v);
+        };
+        with("anisotropic 8x", [](Variant& v) { v.anisotropy = 8.0f; });
+        with("anisotropic off (1x)", [](Variant& v) { v.anisotropy = 1.0f; });
+        with("no sun shadows", [](Variant& v) { v.shadows = false; });
+        with("no normal/bump maps", [](Variant& v) { v.surface_detail = false; });
+        with("1 light per object", [](Variant& v) { v.max_lights = 1; });
+        with("4 lights per object", [](Variant& v) { v.max_lights = 4; });
+        with("half resolution", [](Variant& v) { v.resolution_divisor = 2; });
+        with("msaa 0x", [](Variant& v) { v.msaa = 0; });
+        with("msaa 2x", [](Variant& v) { v.msaa = 2; });
+        with("msaa 4x", [](Variant& v) { v.msaa = 4; });
+        with("shadow map every frame", [](Variant& v) { v.shadow_every_frame = true; });
     }
-    std::printf("render benchmark: %s, %dx%d, %d frames on a fixed path, GL renderer: %s\n",
-                path.string().c_str(), *width, *height, *frames, renderer.c_str());
+    std::printf("render benchmark: %s, %dx%d, %d frames on a fixed path, GL renderer: %s, default "
+                "anisotropy %.0fx, msaa %dx\n",
+                path.string().c_str(), *width, *height, *frames, renderer.c_str(),
+                assets.textures().max_anisotropy(), default_msaa);
     std::printf("%-24s %10s %10s %8s %8s %10s %12s\n", "variant", "median ms", "p99 ms", "fps", "draws",
                 "triangles", "vs default");
     Measurement base;

@@ -18,9 +18,7 @@
 namespace ks::render {
 
 int default_msaa_for(const std::string& gl_renderer) {
-    for (const char* soft : {"llvmpipe", "softpipe", "SwiftShader", "Software Rasterizer"})
-        if (gl_renderer.find(soft) != std::string::npos) return 0;
-    return 4;
+    return is_software_renderer(gl_renderer) ? 0 : 4;
 }
 
 namespace {
@@ -176,6 +174,7 @@ void SceneRenderer::cull_and_batch(const SceneFrame& frame, FrameStats& stats) {
     const bool view_model_pass = !view_world_.empty();
     const std::vector<MeshInstance>& source = view_model_pass ? view_world_ : *frame.instances;
     Frustum frustum(frame.camera.projection() * frame.camera.view());
+    const int light_cap = std::clamp(settings_.max_lights_per_draw, 0, kMaxLightsPerDraw);
     for (const auto& inst : source) {
         if (!inst.mesh || !inst.material) continue;
         Aabb box = transform_aabb(inst.mesh->bounds(), inst.world);
@@ -183,7 +182,7 @@ void SceneRenderer::cull_and_batch(const SceneFrame& frame, FrameStats& stats) {
             ++stats.instances_culled;
             continue;
         }
-        // The lights whose range reaches this box; keep the nearest kMaxLightsPerDraw.
+        // The lights whose range reaches this box; keep the nearest light_cap.
         std::uint32_t mask = 0;
         float nearest[kMaxLightsPerDraw];
         int count = 0;
@@ -192,11 +191,11 @@ void SceneRenderer::cull_and_batch(const SceneFrame& frame, FrameStats& stats) {
             const Light& l = (*frame.lights)[static_cast<size_t>(lights_in_view_[k])];
             float d = distance_to_box(l.position, box);
             if (d >= l.range) continue;
-            if (count < kMaxLightsPerDraw) {
+            if (count < light_cap) {
                 nearest[count] = d;
                 slot_of[count++] = static_cast<int>(k);
                 mask |= 1u << k;
-            } else {
+            } else if (count > 0) {
                 int worst = static_cast<int>(std::max_element(nearest, nearest + count) - nearest);
                 if (d < nearest[worst]) {
                     mask &= ~(1u << slot_of[worst]);
@@ -371,8 +370,9 @@ void SceneRenderer::draw_batches(const Mat4& view_projection, const Vec3& eye, c
             bind(kOrm, m.orm_map, textures_.white().id);
             bind(kEmissive, m.emissive_map, textures_.white().id);
             bind(kHeight, m.height_map, textures_.white().id);
-            int flags = (m.normal_map ? 1 : 0) | (m.orm_map ? 2 : 0) | (m.emissive_map ? 4 : 0) |
-                        (m.height_map ? 8 : 0) | (shadows ? 16 : 0);
+            const bool detail = settings_.surface_detail;
+            int flags = (m.normal_map && detail ? 1 : 0) | (m.orm_map ? 2 : 0) | (m.emissive_map ? 4 : 0) |
+                        (m.height_map && detail ? 8 : 0) | (shadows ? 16 : 0);
             glUniform1i(loc_flags, flags);
             glUniform4fv(loc_base, 1, glm::value_ptr(m.base_factor));
             glUniform3fv(loc_emissive, 1, glm::value_ptr(m.emissive_factor));

@@ -9,6 +9,7 @@
 #include "render/particles.h"
 #include "render/scene.h"
 #include "render/shader_program.h"
+#include "render/shaders.h"
 
 #include <cstdint>
 #include <memory>
@@ -24,6 +25,8 @@ struct RendererSettings {
     int msaa_samples = 0; // 0: draw straight into the bound framebuffer; 2/4/8: multisampled target
     int shadow_map_size = 2048;
     bool shadows = true;
+    bool surface_detail = true; // normal and bump (height) maps; off: the geometric normal only
+    int max_lights_per_draw = kMaxLightsPerDraw; // nearest point/spot lights shading each object, 0..8
 };
 
 // MSAA 4x on real GPUs, none on software rasterisers (llvmpipe, softpipe, SwiftShader), where every

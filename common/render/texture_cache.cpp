@@ -10,6 +10,16 @@
 
 namespace ks::render {
 
+bool is_software_renderer(const std::string& gl_renderer) {
+    for (const char* soft : {"llvmpipe", "softpipe", "SwiftShader", "Software Rasterizer"})
+        if (gl_renderer.find(soft) != std::string::npos) return true;
+    return false;
+}
+
+float default_anisotropy_for(const std::string& gl_renderer) {
+    return is_software_renderer(gl_renderer) ? 1.0f : 8.0f;
+}
+
 namespace {
 Texture upload(const unsigned char* rgba, int w, int h, ColorSpace space, bool mipmaps, float anisotropy) {
     Texture t;
@@ -26,7 +36,7 @@ Texture upload(const unsigned char* rgba, int w, int h, ColorSpace space, bool m
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, mipmaps ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST);
     if (mipmaps) {
         glGenerateMipmap(GL_TEXTURE_2D);
-        if (anisotropy > 1.0f) glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, anisotropy);
+        if (anisotropy >= 1.0f) glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, anisotropy);
     }
     return t;
 }
@@ -55,8 +65,22 @@ TextureCache::TextureCache() {
     flat_normal_ = solid(128, 128, 255);
     if (epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic") ||
         epoxy_has_gl_extension("GL_ARB_texture_filter_anisotropic")) {
-        glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT, &max_anisotropy_);
-        max_anisotropy_ = std::min(max_anisotropy_, 8.0f);
+        glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT, &driver_max_anisotropy_);
+        driver_max_anisotropy_ = std::max(driver_max_anisotropy_, 1.0f);
+        const GLubyte* name = glGetString(GL_RENDERER);
+        max_anisotropy_ = std::min(driver_max_anisotropy_,
+                                   default_anisotropy_for(name ? reinterpret_cast<const char*>(name) : ""));
+    }
+}
+
+void TextureCache::set_max_anisotropy(float anisotropy) {
+    if (!(anisotropy >= 1.0f)) anisotropy = 1.0f; // NaN too
+    max_anisotropy_ = std::min(anisotropy, driver_max_anisotropy_);
+    if (driver_max_anisotropy_ <= 1.0f) return; // no extension: nothing to set
+    for (auto& [key, t] : textures_) {
+        if (t.placeholder) continue;
+        glBindTexture(GL_TEXTURE_2D, t.id);
+        glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, max_anisotropy_);
     }
 }
 
@@ -78,7 +102,8 @@ const Texture& TextureCache::get(const std::filesystem::path& path, ColorSpace s
         ++placeholder_count_;
         return textures_.emplace(key, placeholder_).first->second;
     }
-    Texture t = upload(pixels, w, h, space, true, max_anisotropy_);
+    // 0: the driver has no anisotropic filtering, so the parameter is not set at all.
+    Texture t = upload(pixels, w, h, space, true, driver_max_anisotropy_ > 1.0f ? max_anisotropy_ : 0.0f);
     stbi_image_free(pixels);
     return textures_.emplace(key, t).first->second;
 }

@@ -9,6 +9,14 @@ namespace ks::render {
 
 enum class ColorSpace { Srgb, Linear };
 
+// True for CPU rasterisers (Mesa llvmpipe/softpipe, SwiftShader), judged from the GL_RENDERER string.
+bool is_software_renderer(const std::string& gl_renderer);
+
+// Anisotropic filtering per renderer: 8x on GPUs (nearly free in hardware); off (1x) on software
+// rasterisers, where llvmpipe takes up to 8 trilinear footprints per fetch for every oblique pixel (the
+// walls and floor seen along a corridor), measured in docs/performance.md.
+float default_anisotropy_for(const std::string& gl_renderer);
+
 struct Texture {
     unsigned id = 0;
     int width = 0, height = 0;
@@ -28,11 +36,16 @@ class TextureCache {
     const Texture& flat_normal() const { return flat_normal_; }
     int placeholder_count() const { return placeholder_count_; }
 
+    // Applies to every texture loaded so far and to later ones; clamped to 1..the driver's maximum.
+    void set_max_anisotropy(float anisotropy);
+    float max_anisotropy() const { return max_anisotropy_; }
+
   private:
     std::unordered_map<std::string, Texture> textures_;
     Texture placeholder_, white_, flat_normal_;
     int placeholder_count_ = 0;
     float max_anisotropy_ = 1.0f;
+    float driver_max_anisotropy_ = 1.0f;
 };
 
 } // namespace ks::render

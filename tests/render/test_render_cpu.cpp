@@ -5,7 +5,9 @@
 #include "render/level_scene.h"
 #include "render/mesh_data.h"
 #include "render/particles.h"
+#include "render/scene_renderer.h"
 #include "render/shader_program.h"
+#include "render/texture_cache.h"
 #include "render/view_model.h"
 
 #include <doctest/doctest.h>
@@ -225,4 +227,20 @@ TEST_CASE("shader logs from Mesa and NVIDIA become file:line: message") {
     CHECK(format_shader_log("ERROR: 0:3: 'y' : undeclared identifier", "a.frag") ==
           "a.frag:3: 'y' : undeclared identifier");
     CHECK(format_shader_log("something else", "b.vert") == "b.vert: something else");
+}
+
+TEST_CASE("software rasterisers get no MSAA and no anisotropic filtering; GPUs get 4x MSAA and 8x") {
+    for (const char* soft : {"llvmpipe (LLVM 15.0.6, 256 bits)", "softpipe", "Google SwiftShader"}) {
+        CAPTURE(soft);
+        CHECK(is_software_renderer(soft));
+        CHECK(default_anisotropy_for(soft) == 1.0f);
+        CHECK(default_msaa_for(soft) == 0);
+    }
+    for (const char* gpu :
+         {"NVIDIA H100 PCIe/PCIe/SSE2", "AMD Radeon RX 6800", "Mesa Intel(R) UHD 630", ""}) {
+        CAPTURE(gpu);
+        CHECK_FALSE(is_software_renderer(gpu));
+        CHECK(default_anisotropy_for(gpu) == 8.0f);
+        CHECK(default_msaa_for(gpu) == 4);
+    }
 }

@@ -13,11 +13,13 @@
 #include "render/shaders.h"
 #include "render/view_model.h"
 
+#include <epoxy/gl.h>
 #include <doctest/doctest.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -171,12 +173,12 @@ struct MainLevelView {
     FrameStats stats;
 };
 
-MainLevelView render_main_level_start() {
+MainLevelView render_main_level_start(RendererSettings settings = {}) {
     auto level = level::load_level_file(ks::test::source_dir() / "levels" / "main.json");
     REQUIRE_MESSAGE(level.ok(), (level.ok() ? "" : level.error().str()));
     AssetLibrary assets(assets_dir());
     auto scene = LevelScene::build(*level, assets);
-    auto renderer = SceneRenderer::create(assets.textures());
+    auto renderer = SceneRenderer::create(assets.textures(), settings);
     REQUIRE(renderer);
     std::vector<MeshInstance> instances;
     std::vector<Light> lights;
@@ -332,9 +334,9 @@ TEST_CASE("killswitch --screenshot renders the main level and the asset viewer t
     for (const char* args : {"--level levels/main.json", "--view robot"}) {
         CAPTURE(args);
         fs::path png = dir / "shot.png";
-        auto r =
-            ks::test::run_command("cd '" + ks::test::source_dir().string() + "' && '" + exe + "' " + std::string(args) +
-                                  " --width 320 --height 180 --frames 2 --screenshot '" + png.string() + "'");
+        auto r = ks::test::run_command(
+            "cd '" + ks::test::source_dir().string() + "' && '" + exe + "' " + std::string(args) +
+            " --width 320 --height 180 --frames 2 --screenshot '" + png.string() + "'");
         CHECK_MESSAGE(r.exit_code == 0, r.output);
         int w = 0, h = 0, c = 0;
         unsigned char* px = stbi_load(png.string().c_str(), &w, &h, &c, 3);
@@ -349,4 +351,59 @@ TEST_CASE("killswitch --screenshot renders the main level and the asset viewer t
     auto bad = ks::test::run_command("'" + exe + "' --camera 1,2,nan,0,0 --screenshot /dev/null 2>&1");
     CHECK(bad.exit_code == 2);
     CHECK(bad.output.find("--camera") != std::string::npos);
+}
+
+TEST_CASE("feature switches used by ks_bench render: each changes the image the way it should") {
+    KS_REQUIRE_GL();
+    const MainLevelView full = render_main_level_start();
+    RendererSettings flat;
+    flat.surface_detail = false;
+    const MainLevelView no_detail = render_main_level_start(flat);
+    CHECK(ks::test::mean_abs_diff(full.rgb, no_detail.rgb) > 0.2); // normal/bump maps did something
+    RendererSettings unlit;
+    unlit.max_lights_per_draw = 0;
+    const MainLevelView no_lights = render_main_level_start(unlit);
+    RendererSettings one;
+    one.max_lights_per_draw = 1;
+    const MainLevelView one_light = render_main_level_start(one);
+    const int w = ks::test::kGlWidth, h = ks::test::kGlHeight;
+    const double l0 = ks::test::image_stats(no_lights.rgb, w, h).mean_luma;
+    const double l1 = ks::test::image_stats(one_light.rgb, w, h).mean_luma;
+    const double l8 = ks::test::image_stats(full.rgb, w, h).mean_luma;
+    CHECK(l0 < l1);
+    CHECK(l1 <= l8 + 0.5);
+    RendererSettings unshadowed;
+    unshadowed.shadows = false;
+    const MainLevelView no_shadows = render_main_level_start(unshadowed);
+    CHECK_FALSE(no_shadows.stats.shadow_rendered);
+    CHECK(full.stats.shadow_rendered);
+}
+
+TEST_CASE("anisotropic filtering: off by default on software renderers, applied to every loaded texture") {
+    KS_REQUIRE_GL();
+    AssetLibrary assets(assets_dir());
+    TextureCache& cache = assets.textures();
+    const Texture& t = cache.get(assets_dir() / "textures" / "concrete_basecolor.png", ColorSpace::Srgb);
+    REQUIRE_FALSE(t.placeholder);
+    const std::string renderer = ks::test::gl_context()->renderer();
+    if (!epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic") &&
+        !epoxy_has_gl_extension("GL_ARB_texture_filter_anisotropic")) {
+        CHECK(cache.max_anisotropy() == 1.0f);
+        return;
+    }
+    auto texture_anisotropy = [&] {
+        float a = 0.0f;
+        glBindTexture(GL_TEXTURE_2D, t.id);
+        glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, &a);
+        return a;
+    };
+    if (is_software_renderer(renderer)) {
+        CHECK(cache.max_anisotropy() == 1.0f);
+        CHECK(texture_anisotropy() == 1.0f);
+    }
+    cache.set_max_anisotropy(4.0f);
+    CHECK(texture_anisotropy() == cache.max_anisotropy());
+    CHECK(cache.max_anisotropy() > 1.0f);
+    cache.set_max_anisotropy(std::nanf(""));
+    CHECK(texture_anisotropy() == 1.0f);
 }
