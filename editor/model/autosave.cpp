@@ -105,11 +105,17 @@ Result<std::optional<fs::path>> Autosaver::update(const Editor& editor) {
     const bool idle = now - last_change_ >= config_.idle_seconds;
     const bool overdue = pending_since_ && now - *pending_since_ >= config_.max_delay_seconds;
     if (!idle && !overdue) return std::optional<fs::path>();
+    if (now < retry_after_) return std::optional<fs::path>();
     auto written = write(editor);
-    // A failed autosave is retried at the next idle moment, not every frame.
+    if (!written) {
+        // The edits are still unsaved: try again after another idle period (not every frame), even if the
+        // user makes no further change (a full disk that frees up must not leave the edits unprotected).
+        retry_after_ = now + config_.idle_seconds;
+        return written.error();
+    }
     saved_revision_ = revision;
     pending_since_.reset();
-    if (!written) return written.error();
+    retry_after_ = 0;
     return std::optional<fs::path>(*written);
 }
 

@@ -52,6 +52,7 @@ class Autosaver {
     std::uint64_t seen_revision_ = ~0ull;
     std::uint64_t saved_revision_ = ~0ull;
     double last_change_ = 0;
+    double retry_after_ = 0; // after a failed write: no new attempt before this time
     std::optional<double> pending_since_;
 };
 

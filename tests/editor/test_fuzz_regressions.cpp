@@ -240,6 +240,33 @@ TEST_CASE(
     CHECK(ks::test::read_file(**retried) == editor_test::text_of(ed));
 }
 
+TEST_CASE("faults: a failed autosave is retried after an idle period even without a new edit") {
+    ks::test::ScratchDir dir;
+    log::Capture quiet;
+    FakeClock t;
+    Editor ed;
+    Autosaver autosaver({}, t.clock());
+    REQUIRE(run_script_text(editor_test::kTwoRoomScript, "two_rooms.kss", dir.path(), ed).ok());
+    REQUIRE(ed.save_as(dir / "level.json").ok());
+    (void)ed.place(EntityType::Robot, {1, 0, 1});
+    {
+        hardening::FaultGuard full_disk(files::Fault::ShortWrite);
+        auto failed = autosave_now(autosaver, ed, t);
+        REQUIRE_FALSE(failed.ok());
+        // Not hammered every frame while the disk is full.
+        t.now += 0.1;
+        auto soon = autosaver.update(ed);
+        REQUIRE(soon.ok());
+        CHECK_FALSE(soon->has_value());
+    }
+    // The disk has room again; no further edit is made, yet the edits get autosaved.
+    t.now += autosaver.config().idle_seconds + 1;
+    auto retried = autosaver.update(ed);
+    REQUIRE(retried.ok());
+    REQUIRE(retried->has_value());
+    CHECK(ks::test::read_file(**retried) == editor_test::text_of(ed));
+}
+
 TEST_CASE("faults: a damaged autosave is refused with its name and the document stays as opened") {
     ks::test::ScratchDir dir;
     log::Capture quiet;
