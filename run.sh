@@ -5,6 +5,7 @@
 #                     (./run.sh test --sanitize: the same in an ASan+UBSan build)
 #   ./run.sh editor   build and start the level editor
 #   ./run.sh bench    build and run the benchmarks (tables on stdout, plots in docs/bench/)
+#                     (./run.sh bench fuzz [SECONDS]: each libFuzzer target for SECONDS, default 60)
 # Extra arguments after the command go to the program, e.g. ./run.sh play --level levels/dojo.json
 set -euo pipefail
 cd "$(dirname "$(readlink -f "$0")")"
@@ -17,13 +18,15 @@ PACKAGES=(
     xvfb xauth libgl1-mesa-dri mesa-utils
     gnuplot-nox
 )
+# Only for `./run.sh bench fuzz` (libFuzzer needs clang and its runtime); installed on first use.
+FUZZ_PACKAGES=(clang libclang-rt-14-dev)
 
 log() { printf '\033[1;34m[run.sh]\033[0m %s\n' "$*" >&2; }
 die() { printf '\033[1;31m[run.sh]\033[0m %s\n' "$*" >&2; exit 1; }
 
-install_missing_packages() {
+install_missing_packages() { # [extra packages...]
     local missing=()
-    for p in "${PACKAGES[@]}"; do
+    for p in "${PACKAGES[@]}" "$@"; do
         dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
     done
     [ ${#missing[@]} -eq 0 ] && return 0
@@ -82,7 +85,7 @@ case "$cmd" in
         if [ "${1:-}" = "--sanitize" ]; then # the same suite in an AddressSanitizer + UBSan build (build-asan/)
             preset=asan
             shift
-            export ASAN_OPTIONS="${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=0}"
+            export ASAN_OPTIONS="${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=1}"
             export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
         fi
         build "$preset"
@@ -90,13 +93,18 @@ case "$cmd" in
         with_display ctest --test-dir "$(preset_dir "$preset")" --output-on-failure -j "$(njobs)" "$@"
         ;;
     bench)
+        if [ "${1:-}" = "fuzz" ]; then # ./run.sh bench fuzz [seconds per target]: libFuzzer, crashes -> tests/data/fuzz/
+            install_missing_packages "${FUZZ_PACKAGES[@]}"
+            shift
+            exec scripts/fuzz.sh "${1:-60}"
+        fi
         install_missing_packages
         build release
         mkdir -p docs/bench
         with_display ./build/bin/ks_bench "${@:-all}"
         ;;
     ""|-h|--help|help)
-        sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//'
+        sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'
         ;;
     *)
         die "unknown command '$cmd' (use play, test, editor or bench)"
