@@ -2,6 +2,7 @@
 // the level loader, the editor's design rules and (when it has a headless mode) the runtime accept; a bad
 // script fails with file:line; the window mode renders the level into its viewport (under Xvfb).
 #include "level/level_io.h"
+#include "runtime/screen_image.h"
 #include "test_support.h"
 
 #include <doctest/doctest.h>
@@ -16,30 +17,12 @@
 using namespace ks;
 
 namespace {
-bool have_display() {
-    const char* d = std::getenv("DISPLAY");
-    return d && *d;
-}
-
+using ks::test::Image;
+using ks::test::distinct_colours;
+using ks::test::have_display;
+using ks::test::load_png;
 std::string editor_binary() {
     return (test::bin_dir() / "killswitch-editor").string();
-}
-
-struct Image {
-    int width = 0, height = 0;
-    std::vector<unsigned char> rgb;
-    const unsigned char* at(int x, int y) const { return &rgb[(static_cast<size_t>(y) * width + x) * 3]; }
-};
-
-Image load_png(const std::filesystem::path& path) {
-    Image img;
-    int channels = 0;
-    unsigned char* data = stbi_load(path.c_str(), &img.width, &img.height, &channels, 3);
-    if (data) {
-        img.rgb.assign(data, data + static_cast<size_t>(img.width) * img.height * 3);
-        stbi_image_free(data);
-    }
-    return img;
 }
 
 // Pixels in [x0, x1) x [y0, y1) that `accept` (r, g, b).

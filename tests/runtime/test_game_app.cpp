@@ -1,6 +1,7 @@
 // The playable runtime's screens, seen through `killswitch --screen NAME --screenshot FILE`: each screen
 // draws something, in its own colours where its parts should be (menu panel and accent buttons, the HUD's
 // bars, the loading bar), and the Dojo's robot moves when a key plays a clip.
+#include "runtime/screen_image.h"
 #include "test_support.h"
 
 #include <doctest/doctest.h>
@@ -15,38 +16,10 @@
 using namespace ks;
 
 namespace {
-bool have_display() {
-    const char* d = std::getenv("DISPLAY");
-    return d && *d;
-}
-
-struct Image {
-    int width = 0, height = 0;
-    std::vector<unsigned char> rgb;
-    const unsigned char* at(int x, int y) const { return &rgb[(static_cast<size_t>(y) * width + x) * 3]; }
-};
-
-Image load_png(const std::filesystem::path& path) {
-    Image img;
-    int channels = 0;
-    unsigned char* data = stbi_load(path.c_str(), &img.width, &img.height, &channels, 3);
-    if (data) {
-        img.rgb.assign(data, data + static_cast<size_t>(img.width) * img.height * 3);
-        stbi_image_free(data);
-    }
-    return img;
-}
-
-size_t distinct_colours(const Image& img) {
-    std::set<unsigned> colours;
-    for (int y = 0; y < img.height; y += 4)
-        for (int x = 0; x < img.width; x += 4) {
-            const unsigned char* p = img.at(x, y);
-            colours.insert((p[0] << 16) | (p[1] << 8) | p[2]);
-        }
-    return colours.size();
-}
-
+using ks::test::Image;
+using ks::test::distinct_colours;
+using ks::test::have_display;
+using ks::test::load_png;
 using Test = std::function<bool(int r, int g, int b)>;
 // Fraction of the pixels in the rectangle (fractions of the image size) that pass `test`.
 double fraction(const Image& img, double x0, double y0, double x1, double y1, const Test& test) {

@@ -1,4 +1,5 @@
 // GL smoke tests: start the real binaries under the test's display (Xvfb in CI) and look at what they draw.
+#include "runtime/screen_image.h"
 #include "test_support.h"
 
 #include <doctest/doctest.h>
@@ -11,37 +12,10 @@
 using namespace ks;
 
 namespace {
-bool have_display() {
-    const char* d = std::getenv("DISPLAY");
-    return d && *d;
-}
-
-struct Image {
-    int width = 0, height = 0;
-    std::vector<unsigned char> rgb;
-};
-
-Image load_png(const std::filesystem::path& path) {
-    Image img;
-    int channels = 0;
-    unsigned char* data = stbi_load(path.c_str(), &img.width, &img.height, &channels, 3);
-    if (data) {
-        img.rgb.assign(data, data + static_cast<size_t>(img.width) * img.height * 3);
-        stbi_image_free(data);
-    }
-    return img;
-}
-
-// Number of distinct colours on a coarse grid: a blank (single-colour) frame has one.
-size_t distinct_colours(const Image& img) {
-    std::set<unsigned> colours;
-    for (int y = 0; y < img.height; y += 4)
-        for (int x = 0; x < img.width; x += 4) {
-            const unsigned char* p = &img.rgb[(static_cast<size_t>(y) * img.width + x) * 3];
-            colours.insert((p[0] << 16) | (p[1] << 8) | p[2]);
-        }
-    return colours.size();
-}
+using ks::test::distinct_colours;
+using ks::test::have_display;
+using ks::test::Image;
+using ks::test::load_png;
 } // namespace
 
 TEST_CASE("killswitch --screenshot renders a non-blank frame of the requested size") {
