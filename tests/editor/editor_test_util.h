@@ -1,6 +1,7 @@
 #pragma once
 // Shared helpers for the editor model tests.
 #include "level/level_io.h"
+#include "model/autosave.h"
 #include "model/editor.h"
 #include "test_support.h"
 
@@ -49,5 +50,13 @@ set kind shield
 place control_panel at 0,0,-15 name Panel
 player_start 0,0,15
 )";
+
+// A clock the test moves by hand, for the autosaver's idle timing.
+struct FakeClock {
+    double now = 1000.0;
+    editor::Clock clock() {
+        return [this] { return now; };
+    }
+};
 
 } // namespace ks::editor_test

@@ -12,14 +12,7 @@ using namespace ks::editor;
 using level::EntityType;
 namespace fs = std::filesystem;
 
-namespace {
-struct FakeClock {
-    double now = 1000.0;
-    Clock clock() {
-        return [this] { return now; };
-    }
-};
-} // namespace
+using editor_test::FakeClock;
 
 TEST_CASE("autosave: only after the user pauses, only when changed, and at most every max_delay mid-work") {
     ks::test::ScratchDir dir;

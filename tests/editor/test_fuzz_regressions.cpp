@@ -19,12 +19,7 @@ using level::EntityType;
 namespace fs = std::filesystem;
 
 namespace {
-struct FakeClock {
-    double now = 1000.0;
-    Clock clock() {
-        return [this] { return now; };
-    }
-};
+using editor_test::FakeClock;
 
 // Autosaves after the idle time has passed; returns what update() said.
 Result<std::optional<fs::path>> autosave_now(Autosaver& autosaver, const Editor& ed, FakeClock& t) {
