@@ -61,7 +61,9 @@ with_display() { # run a command, under a virtual X server when there is no disp
     if [ -n "${DISPLAY:-}" ] || [ -n "${WAYLAND_DISPLAY:-}" ]; then
         "$@"
     else
-        xvfb-run -a -s "-screen 0 1280x720x24" "$@"
+        # -noreset: by default Xvfb resets when its last client leaves, and a test that connects during
+        # that reset fails with "cannot open display" (seen in CI).
+        xvfb-run -a -s "-screen 0 1280x720x24 -noreset" "$@"
     fi
 }
 

@@ -37,6 +37,21 @@ void print_help() {
         "quits\n");
 }
 
+void print_headless_help() {
+    std::printf(
+        "usage: killswitch --headless [--level FILE] [--seconds S] [--seed N] [--autoplay]\n"
+        "                  [--record FILE | --replay FILE] [--stats-json FILE|-]\n"
+        "  runs the game without a window at a fixed 120 Hz step, as fast as the CPU allows\n"
+        "  --level FILE      the level to play (default levels/main.json)\n"
+        "  --seconds S       simulated time limit (default 300)\n"
+        "  --seed N          the game's random seed (default 1)\n"
+        "  --autoplay        a bot plays (walks the level, fights, reaches the control panel)\n"
+        "  --record FILE     save every step's input (replays bit-exactly)\n"
+        "  --replay FILE     play a recording back with its recorded seed\n"
+        "  --stats-json F    write the outcome, time, kills, damage and state hash as JSON (- = stdout)\n"
+        "exit code 0 when the run completed (whatever its outcome), 2 on bad options or a bad level\n");
+}
+
 // The turntable's stage: a tiled floor disc, a sky-ish ambient, a sun and two coloured key lights.
 struct Turntable {
     const ks::render::Model* model = nullptr;
@@ -58,6 +73,10 @@ int main(int argc, char** argv) {
     // Routing: --headless → the game without a window; --view / --camera → the renderer's turntable and
     // render-only views (below); anything else → the playable game (menus, game, Dojo).
     if (cl->has("headless")) {
+        if (cl->has("help")) {
+            print_headless_help();
+            return 0;
+        }
         if (auto unknown = cl->unknown(game::headless_option_names()); !unknown.empty()) {
             log::error("unknown option ", unknown.front(), " for --headless (see common/game/headless.h)");
             return 2;

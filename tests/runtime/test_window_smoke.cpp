@@ -68,3 +68,17 @@ TEST_CASE("bad command-line options are reported, not ignored") {
     CHECK(typo.exit_code == 2);
     CHECK(typo.output.find("--levle") != std::string::npos);
 }
+
+TEST_CASE("--help describes every mode and exits 0 without a display") {
+    const std::string exe = (test::bin_dir() / "killswitch").string();
+    auto help = test::run_command("env -u DISPLAY -u WAYLAND_DISPLAY " + exe + " --help");
+    INFO(help.output);
+    CHECK(help.exit_code == 0);
+    for (const char* option : {"--level", "--dojo", "--headless", "--view"})
+        CHECK(help.output.find(option) != std::string::npos);
+    auto headless = test::run_command("env -u DISPLAY -u WAYLAND_DISPLAY " + exe + " --headless --help");
+    INFO(headless.output);
+    CHECK(headless.exit_code == 0);
+    for (const char* option : {"--seconds", "--autoplay", "--replay", "--stats-json"})
+        CHECK(headless.output.find(option) != std::string::npos);
+}
