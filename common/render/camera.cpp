@@ -30,11 +30,38 @@ Vec3 Camera::forward() const {
     return Vec3(-std::sin(yaw) * std::cos(pitch), std::sin(pitch), -std::cos(yaw) * std::cos(pitch));
 }
 
+namespace {
+// The camera's orientation: yaw about world +y, then pitch about the camera's x, then roll about its z.
+// Built from angles rather than with lookAt so that looking straight down (the editor's top view) and
+// rolling (the death fall) are well defined.
+Mat3 camera_basis(float yaw, float pitch, float roll) {
+    Mat4 m = glm::rotate(Mat4(1.0f), yaw, Vec3(0, 1, 0));
+    m = glm::rotate(m, pitch, Vec3(1, 0, 0));
+    m = glm::rotate(m, -roll, Vec3(0, 0, 1));
+    return Mat3(m);
+}
+} // namespace
+
+Vec3 Camera::right() const {
+    return camera_basis(yaw, pitch, roll)[0];
+}
+
+Vec3 Camera::up() const {
+    return camera_basis(yaw, pitch, roll)[1];
+}
+
 Mat4 Camera::view() const {
-    return glm::lookAt(position, position + forward(), Vec3(0, 1, 0));
+    const Mat3 basis = camera_basis(yaw, pitch, roll); // columns: right, up, back
+    Mat4 v(glm::transpose(basis));
+    v[3] = Vec4(-(glm::transpose(basis) * position), 1.0f);
+    return v;
 }
 
 Mat4 Camera::projection() const {
+    if (orthographic()) {
+        const float half_h = 0.5f * ortho_height, half_w = half_h * aspect;
+        return glm::ortho(-half_w, half_w, -half_h, half_h, near_plane, far_plane);
+    }
     return glm::perspective(fov_y, aspect, near_plane, far_plane);
 }
 

@@ -21,13 +21,21 @@ Aabb empty_aabb(); // min = +inf, max = -inf: merging anything into it gives tha
 struct Camera {
     Vec3 position{0.0f, 3.0f, 0.0f};
     float yaw = 0.0f;   // radians about +y; 0 looks along -z
-    float pitch = 0.0f; // radians, positive looks up
+    float pitch = 0.0f; // radians, positive looks up (±90° exactly is fine: no look-at singularity)
+    float roll = 0.0f;  // radians about the view direction, positive leans the head to the right (a fall
+                        // to the right; the world turns anticlockwise on screen)
     float fov_y = radians(60.0f);
     float near_plane = 0.1f;
     float far_plane = 1000.0f;
     float aspect = 16.0f / 9.0f;
+    // > 0: an orthographic projection showing this many world units vertically (the editor's top, front
+    // and side views); 0: perspective with fov_y.
+    float ortho_height = 0.0f;
 
     Vec3 forward() const;
+    Vec3 right() const; // the image's +x direction in world space (includes roll)
+    Vec3 up() const;    // the image's +y direction in world space (includes roll)
+    bool orthographic() const { return ortho_height > 0.0f; }
     Mat4 view() const;
     Mat4 projection() const;
 };

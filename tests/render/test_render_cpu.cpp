@@ -244,3 +244,53 @@ TEST_CASE("software rasterisers get no MSAA and no anisotropic filtering; GPUs g
         CHECK(default_msaa_for(gpu) == 4);
     }
 }
+
+TEST_CASE("the camera's view matrix agrees with forward/right/up, handles straight down, rolls and goes "
+          "orthographic") {
+    Camera cam;
+    cam.position = Vec3(2, 5, -3);
+    for (float yaw : {0.0f, 0.7f, -2.5f})
+        for (float pitch : {-kPi * 0.5f, -0.4f, 0.0f, 0.9f, kPi * 0.5f})
+            for (float roll : {0.0f, 0.3f, -1.2f}) {
+                cam.yaw = yaw, cam.pitch = pitch, cam.roll = roll;
+                const Mat4 v = cam.view();
+                CAPTURE(yaw);
+                CAPTURE(pitch);
+                CAPTURE(roll);
+                // A point ahead of the camera lands on the view axis; right and up map to +x and +y.
+                const Vec3 ahead = Vec3(v * Vec4(cam.position + 4.0f * cam.forward(), 1.0f));
+                CHECK(ahead.x == doctest::Approx(0).epsilon(1e-5));
+                CHECK(ahead.y == doctest::Approx(0).epsilon(1e-5));
+                CHECK(ahead.z == doctest::Approx(-4).epsilon(1e-5));
+                const Vec3 r = Vec3(v * Vec4(cam.position + cam.right(), 1.0f));
+                const Vec3 u = Vec3(v * Vec4(cam.position + cam.up(), 1.0f));
+                CHECK(r.x == doctest::Approx(1).epsilon(1e-5));
+                CHECK(u.y == doctest::Approx(1).epsilon(1e-5));
+                CHECK(std::isfinite(v[0][0] + v[1][1] + v[2][2] + v[3][0]));
+            }
+    // Without roll the horizon stays level; a positive roll leans the camera's up towards its right.
+    cam.yaw = 0.4f, cam.pitch = 0.2f, cam.roll = 0.0f;
+    CHECK(cam.right().y == doctest::Approx(0).epsilon(1e-6));
+    const Vec3 right_flat = cam.right();
+    cam.roll = 0.5f;
+    CHECK(glm::dot(cam.up(), right_flat) == doctest::Approx(std::sin(0.5f)).epsilon(1e-5));
+
+    // Orthographic: size on screen does not depend on distance.
+    Camera top;
+    top.position = Vec3(0, 100, 0);
+    top.pitch = -kPi * 0.5f;
+    top.ortho_height = 40.0f;
+    top.aspect = 2.0f;
+    REQUIRE(top.orthographic());
+    const Mat4 vp = top.projection() * top.view();
+    auto ndc = [&](Vec3 p) {
+        Vec4 c = vp * Vec4(p, 1.0f);
+        return Vec3(c) / c.w;
+    };
+    CHECK(ndc(Vec3(0, 0, -20)).y == doctest::Approx(1.0f).epsilon(1e-5)); // -z is up on a top view
+    CHECK(ndc(Vec3(0, 50, -20)).y == doctest::Approx(1.0f).epsilon(1e-5));
+    CHECK(ndc(Vec3(40, 0, 0)).x == doctest::Approx(1.0f).epsilon(1e-5)); // half width = 20 * aspect
+    Frustum f(vp);
+    CHECK(f.intersects({Vec3(-1, 0, -1), Vec3(1, 1, 1)}));
+    CHECK_FALSE(f.intersects({Vec3(60, 0, 0), Vec3(62, 1, 1)}));
+}
