@@ -15,7 +15,7 @@ PACKAGES=(
     build-essential cmake pkg-config git
     libglfw3-dev libepoxy-dev libgl-dev libimgui-dev libglm-dev libassimp-dev nlohmann-json3-dev
     libstb-dev doctest-dev zlib1g-dev
-    xvfb xauth libgl1-mesa-dri mesa-utils
+    xvfb xauth libgl1-mesa-dri mesa-utils xdotool
     gnuplot-nox
 )
 # Only for `./run.sh bench fuzz` (libFuzzer needs clang and its runtime); installed on first use.
