@@ -130,6 +130,7 @@ void EditorApp::render_views(const render::FrameInfo& info) {
         rebuild_scene_if_changed();
         const int w = static_cast<int>(layout.centre.w), h = static_cast<int>(layout.centre.h - kViewportBar);
         viewport_target_.ensure(w, h);
+        view_.set_viewport(Vec2(static_cast<float>(w), static_cast<float>(std::max(1, h))));
         viewport_target_.bind();
         scene_->emit(instances_, lights_);
         debug_.clear();

@@ -10,10 +10,11 @@
 #include "render/debug_draw.h"
 #include "render/level_scene.h"
 #include "render/scene_renderer.h"
-#include "ui/gizmo.h"
+#include "ui/gizmo_draw.h"
 #include "ui/playtest.h"
 #include "ui/render_target.h"
-#include "ui/view_camera.h"
+#include "view/picking.h"
+#include "view/view_camera.h"
 
 #include <deque>
 #include <filesystem>
@@ -21,6 +22,8 @@
 #include <optional>
 #include <string>
 #include <vector>
+
+struct ImDrawList;
 
 namespace ks::editor::ui {
 
@@ -77,8 +80,9 @@ class EditorApp {
     void viewport_panel(float x, float y, float w, float h);
     void rebuild_scene_if_changed();
     void draw_overlays();
-    void viewport_input(Vec2 origin, Vec2 size, bool hovered);
-    int pick(const Ray& ray, float* distance = nullptr) const;
+    void draw_axis_grid(ImDrawList* draw, Vec2 origin) const;
+    void viewport_input(Vec2 origin, bool hovered);
+    int pick(const Ray& ray) const;
     bool shown(const level::Entity& e) const; // not hidden, and not a ceiling while ceilings are off
     Vec3 place_point(const Ray& ray) const;
     Vec3 selection_pivot() const;

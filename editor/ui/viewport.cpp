@@ -5,6 +5,7 @@
 #include "level/level_io.h"
 #include "ui/editor_app.h"
 #include "ui/layout.h"
+#include "ui/view_input.h"
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -40,28 +41,6 @@ void circle(render::DebugDraw& draw, const Vec3& centre, float radius, const Vec
     }
 }
 
-// Slab test of a ray against an oriented box; the entry distance, or a negative number for a miss.
-float ray_obb(const Ray& ray, const Obb& box) {
-    const Vec3 o = box.to_local(ray.origin);
-    const Vec3 d = glm::transpose(box.axes) * ray.direction;
-    float t0 = 0.0f, t1 = 1e30f;
-    for (int i = 0; i < 3; ++i) {
-        if (std::abs(d[i]) < 1e-8f) {
-            if (std::abs(o[i]) > box.half[i]) return -1.0f;
-            continue;
-        }
-        float a = (-box.half[i] - o[i]) / d[i], b = (box.half[i] - o[i]) / d[i];
-        if (a > b) std::swap(a, b);
-        t0 = std::max(t0, a);
-        t1 = std::min(t1, b);
-        if (t0 > t1) return -1.0f;
-    }
-    return t0;
-}
-
-bool is_surface(level::EntityType t) {
-    return t == level::EntityType::Floor || t == level::EntityType::Stair || t == level::EntityType::Wall;
-}
 } // namespace
 
 bool EditorApp::shown(const level::Entity& e) const {
@@ -89,7 +68,7 @@ void EditorApp::rebuild_scene_if_changed() {
 
 void EditorApp::draw_overlays() {
     const Document& doc = editor_.doc();
-    if (overlays_.grid) {
+    if (overlays_.grid && !view_.orthographic()) { // the axis views draw theirs on screen (draw_axis_grid)
         // Around the point under the camera, on y = 0: minor lines every 4 units, major every 16 (a wall).
         const float step = 4.0f, extent = 96.0f;
         // Centred where the view looks at the ground (or under the camera when it looks up).
@@ -152,8 +131,7 @@ void EditorApp::draw_overlays() {
     }
     if (placing_ && viewport_hovered_) { // where a click would place
         const ImVec2 m = ImGui::GetIO().MousePos;
-        const Ray ray =
-            view_.ray(m.x - viewport_origin_.x, m.y - viewport_origin_.y, viewport_size_.x, viewport_size_.y);
+        const Ray ray = view_.ray(Vec2(m.x, m.y) - viewport_origin_);
         const Vec3 p = place_point(ray);
         level::Entity preview;
         preview.position = p;
@@ -163,38 +141,50 @@ void EditorApp::draw_overlays() {
     }
 }
 
-int EditorApp::pick(const Ray& ray, float* distance) const {
-    const Document& doc = editor_.doc();
-    int best = 0;
-    float best_t = 1e30f;
-    for (const auto& e : doc.level.entities) {
-        if (!shown(e) || doc.locked.contains(e.id)) continue;
-        const float t = ray_obb(ray, entity_obb(e));
-        if (t >= 0.0f && t < best_t) best_t = t, best = e.id;
+void EditorApp::draw_axis_grid(ImDrawList* draw, Vec2 origin) const {
+    // The view plane's grid on screen, over the picture: lines at least 10 pixels apart (the grid step
+    // doubled until they are), majors every 16 units (a wall), the world axes through 0.
+    const GridPlan plan = plan_axis_grid(view_, editor_.doc().grid.step, 10.0f);
+    const Vec2 size = view_.viewport();
+    const ImU32 axis_colours[3] = {IM_COL32(235, 80, 70, 170), IM_COL32(110, 215, 80, 170),
+                                   IM_COL32(80, 130, 255, 170)};
+    auto colour = [&](float coordinate, int other_axis) {
+        if (std::abs(coordinate) < plan.step * 0.01f) return axis_colours[other_axis];
+        const float major = std::max(16.0f, plan.step * 4.0f);
+        return std::abs(std::remainder(coordinate, major)) < plan.step * 0.01f ? IM_COL32(190, 205, 230, 80)
+                                                                               : IM_COL32(170, 180, 200, 34);
+    };
+    const Vec3 at = view_.camera.position + view_.forward();
+    for (int i = 0; i < plan.u_count; ++i) { // lines of constant u: vertical on screen
+        const float c = plan.u_first + static_cast<float>(i) * plan.step;
+        Vec3 p = at;
+        p[plan.u_axis] = c;
+        Vec2 s;
+        if (!view_.project(p, s)) continue;
+        draw->AddLine(ImVec2(origin.x + s.x, origin.y), ImVec2(origin.x + s.x, origin.y + size.y),
+                      colour(c, plan.v_axis));
     }
-    if (distance) *distance = best_t;
-    return best;
+    for (int i = 0; i < plan.v_count; ++i) { // lines of constant v: horizontal on screen
+        const float c = plan.v_first + static_cast<float>(i) * plan.step;
+        Vec3 p = at;
+        p[plan.v_axis] = c;
+        Vec2 s;
+        if (!view_.project(p, s)) continue;
+        draw->AddLine(ImVec2(origin.x, origin.y + s.y), ImVec2(origin.x + size.x, origin.y + s.y),
+                      colour(c, plan.u_axis));
+    }
+    char text[48];
+    std::snprintf(text, sizeof(text), "grid %g", plan.step);
+    draw->AddText(ImVec2(origin.x + 10, origin.y + 26), IM_COL32(200, 210, 230, 200), text);
+}
+
+int EditorApp::pick(const Ray& ray) const {
+    return pick_entity(editor_.doc(), ray, [this](const level::Entity& e) { return shown(e); }).id;
 }
 
 Vec3 EditorApp::place_point(const Ray& ray) const {
-    const Document& doc = editor_.doc();
-    float best_t = 1e30f;
-    for (const auto& e : doc.level.entities) {
-        if (!shown(e) || !is_surface(e.type())) continue;
-        const Obb box = entity_obb(e);
-        const float t = ray_obb(ray, box);
-        if (t >= 0.0f && t < best_t) best_t = t;
-    }
-    Vec3 p;
-    if (best_t < 1e29f) {
-        p = ray.origin + ray.direction * best_t;
-    } else if (std::abs(ray.direction.y) > 1e-4f && -ray.origin.y / ray.direction.y > 0.0f) {
-        p = ray.origin + ray.direction * (-ray.origin.y / ray.direction.y); // the ground plane y = 0
-    } else {
-        p = ray.origin + ray.direction * 20.0f;
-    }
-    const GridSettings& grid = editor_.doc().grid;
-    return Vec3(grid.snap_value(p.x), p.y, grid.snap_value(p.z)); // y stays on the surface
+    return editor::place_point(
+        editor_.doc(), ray, [this](const level::Entity& e) { return shown(e); }, view_.pivot);
 }
 
 Vec3 EditorApp::selection_pivot() const {
@@ -279,14 +269,15 @@ void EditorApp::viewport_panel(float x, float y, float w, float h) {
                  ImVec2(size.x, size.y), ImVec2(0, 1), ImVec2(1, 0));
     viewport_origin_ = Vec2(origin.x, origin.y);
     viewport_size_ = size;
+    view_.set_viewport(size);
     const bool hovered = ImGui::IsItemHovered();
     viewport_hovered_ = hovered;
-    viewport_input(viewport_origin_, size, hovered);
+    viewport_input(viewport_origin_, hovered);
 
     ImDrawList* draw = ImGui::GetWindowDrawList();
-    const GizmoView gv{&view_, viewport_origin_, size};
+    if (overlays_.grid && view_.orthographic()) draw_axis_grid(draw, viewport_origin_);
     if (!editor_.doc().selection.empty() && !placing_)
-        gizmo_.draw(draw, gv, selection_pivot(), hovered_handle_);
+        draw_gizmo(draw, gizmo_, view_, viewport_origin_, selection_pivot(), hovered_handle_);
     if (box_selecting_) {
         const ImVec2 m = ImGui::GetIO().MousePos;
         draw->AddRectFilled(ImVec2(box_start_.x, box_start_.y), m, IM_COL32(90, 160, 255, 40));
@@ -324,36 +315,37 @@ void EditorApp::viewport_panel(float x, float y, float w, float h) {
     ImGui::End();
 }
 
-void EditorApp::viewport_input(Vec2 origin, Vec2 size, bool hovered) {
+void EditorApp::viewport_input(Vec2 origin, bool hovered) {
     const ImGuiIO& io = ImGui::GetIO();
-    if (!shell_.screenshot_mode())
-        flying_ = view_.update(shell_.window(), io.DeltaTime,
-                               hovered && !gizmo_.dragging() && !box_selecting_, hovered ? wheel_ : 0.0f);
-    if (flying_) return;
     const Vec2 mouse(io.MousePos.x - origin.x, io.MousePos.y - origin.y);
-    const GizmoView gv{&view_, origin, size};
+    if (!shell_.screenshot_mode())
+        flying_ =
+            view_.update(read_view_input(shell_.window(), hovered && !gizmo_.dragging() && !box_selecting_,
+                                         mouse, hovered ? wheel_ : 0.0f),
+                         io.DeltaTime);
+    if (flying_) return;
     const bool has_selection = !editor_.doc().selection.empty();
     if (gizmo_.dragging()) {
         if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
-            if (auto message = gizmo_.drag(editor_, gv, mouse); !message.empty()) log_line(message, true);
+            if (auto message = gizmo_.drag(editor_, view_, mouse); !message.empty()) log_line(message, true);
         } else {
             gizmo_.end(editor_);
         }
         return;
     }
     hovered_handle_ =
-        hovered && has_selection && !placing_ ? gizmo_.hit(gv, selection_pivot(), mouse) : Handle::None;
+        hovered && has_selection && !placing_ ? gizmo_.hit(view_, selection_pivot(), mouse) : Handle::None;
     if (io.KeyAlt) return; // Alt + left drag orbits
     if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
         if (placing_) {
-            const Ray ray = view_.ray(mouse.x, mouse.y, size.x, size.y);
+            const Ray ray = view_.ray(mouse);
             auto placed = editor_.place(*placing_, place_point(ray));
             if (!placed) log_line("place: " + placed.error().str(), true);
             if (!io.KeyShift) placing_.reset(); // Shift keeps placing
             return;
         }
         if (hovered_handle_ != Handle::None) {
-            gizmo_.begin(editor_, gv, selection_pivot(), hovered_handle_, mouse);
+            gizmo_.begin(editor_, view_, selection_pivot(), hovered_handle_, mouse);
             return;
         }
         box_selecting_ = true;
@@ -366,7 +358,7 @@ void EditorApp::viewport_input(Vec2 origin, Vec2 size, bool hovered) {
                                 : io.KeyShift ? SelectMode::Add
                                               : SelectMode::Replace;
         if (glm::length(end - box_start_) < 4.0f) { // a click: pick under the cursor
-            const int id = pick(view_.ray(mouse.x, mouse.y, size.x, size.y));
+            const int id = pick(view_.ray(mouse));
             if (id)
                 report(editor_.select({id}, mode), "select");
             else if (mode == SelectMode::Replace)
@@ -377,7 +369,7 @@ void EditorApp::viewport_input(Vec2 origin, Vec2 size, bool hovered) {
         const int n = editor_.select_where(
             [&](const level::Entity& e) {
                 Vec2 p;
-                if (!view_.project(entity_obb(e).center, size.x, size.y, p)) return false;
+                if (!view_.project(entity_obb(e).center, p)) return false;
                 return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y;
             },
             mode);
