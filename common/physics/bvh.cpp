@@ -125,7 +125,7 @@ void Bvh::build_wide() {
     wide_.clear();
     leaves_.clear();
     // Each wide node takes a binary node's children, then repeatedly opens the largest inner child in place
-    // of itself until it holds four.
+    // of itself until it holds kWidth.
     struct Work {
         std::uint32_t binary;
         std::uint32_t wide;
@@ -141,18 +141,25 @@ void Bvh::build_wide() {
         work.push_back({b, static_cast<std::uint32_t>(wide_.size() - 1)});
         return static_cast<std::int32_t>(wide_.size() - 1);
     };
+    auto fill = [&](WideNode& w, const std::uint32_t* kids, int count) {
+        w.lanes = (1 << count) - 1;
+        for (int k = 0; k < kWidth; ++k) {
+            if (k < count) {
+                const Node& n = nodes_[kids[k]];
+                for (int a = 0; a < 3; ++a) w.bounds[a][k] = n.min[a], w.bounds[3 + a][k] = n.max[a];
+                w.child[k] = child_ref(kids[k]);
+            } else { // empty lane: an inverted box no ray or box query enters
+                for (int a = 0; a < 3; ++a) w.bounds[a][k] = 3.4e38f, w.bounds[3 + a][k] = -3.4e38f;
+                w.child[k] = 0;
+            }
+        }
+    };
     if (nodes_[0].count > 0) { // a single leaf: wrap it
         wide_.emplace_back();
-        WideNode& w = wide_[0];
-        const std::int32_t leaf = child_ref(0);
-        for (int k = 0; k < 4; ++k) {
-            w.min_x[k] = w.min_y[k] = w.min_z[k] = 3.4e38f;
-            w.max_x[k] = w.max_y[k] = w.max_z[k] = -3.4e38f;
-            w.child[k] = leaf;
-        }
-        w.min_x[0] = nodes_[0].min.x, w.min_y[0] = nodes_[0].min.y, w.min_z[0] = nodes_[0].min.z;
-        w.max_x[0] = nodes_[0].max.x, w.max_y[0] = nodes_[0].max.y, w.max_z[0] = nodes_[0].max.z;
-        w.lanes = 1;
+        WideNode w;
+        const std::uint32_t root = 0;
+        fill(w, &root, 1);
+        wide_[0] = w;
         return;
     }
     wide_.emplace_back();
@@ -160,10 +167,9 @@ void Bvh::build_wide() {
     while (!work.empty()) {
         const Work job = work.back();
         work.pop_back();
-        std::uint32_t kids[4] = {nodes_[job.binary].left_or_first, nodes_[job.binary].left_or_first + 1, 0,
-                                 0};
+        std::uint32_t kids[kWidth] = {nodes_[job.binary].left_or_first, nodes_[job.binary].left_or_first + 1};
         int count = 2;
-        while (count < 4) {
+        while (count < kWidth) {
             int best = -1;
             float best_area = -1.0f;
             for (int k = 0; k < count; ++k) {
@@ -177,19 +183,7 @@ void Bvh::build_wide() {
             kids[count++] = nodes_[open].left_or_first + 1;
         }
         WideNode w;
-        w.lanes = (1 << count) - 1;
-        for (int k = 0; k < 4; ++k) {
-            if (k < count) {
-                const Node& n = nodes_[kids[k]];
-                w.min_x[k] = n.min.x, w.min_y[k] = n.min.y, w.min_z[k] = n.min.z;
-                w.max_x[k] = n.max.x, w.max_y[k] = n.max.y, w.max_z[k] = n.max.z;
-                w.child[k] = child_ref(kids[k]);
-            } else { // empty lane: an inverted box no ray enters
-                w.min_x[k] = w.min_y[k] = w.min_z[k] = 3.4e38f;
-                w.max_x[k] = w.max_y[k] = w.max_z[k] = -3.4e38f;
-                w.child[k] = 0;
-            }
-        }
+        fill(w, kids, count);
         wide_[job.wide] = w;
     }
 }
@@ -200,6 +194,33 @@ void Bvh::clear() {
     leaves_.clear();
     order_.clear();
     depth_ = 0;
+}
+
+namespace {
+RayKernel detect_kernel() {
+#if defined(__x86_64__) && defined(__GNUC__)
+    __builtin_cpu_init(); // this runs during static initialisation, possibly before libgcc's own
+    return __builtin_cpu_supports("avx2") ? RayKernel::Avx2 : RayKernel::Portable;
+#else
+    return RayKernel::Portable;
+#endif
+}
+RayKernel g_kernel = detect_kernel();
+} // namespace
+
+bool cpu_has_avx2() {
+    static const bool has = detect_kernel() == RayKernel::Avx2;
+    return has;
+}
+
+RayKernel ray_kernel() {
+    return g_kernel;
+}
+
+bool set_ray_kernel(RayKernel kernel) {
+    if (kernel == RayKernel::Avx2 && !cpu_has_avx2()) return false;
+    g_kernel = kernel;
+    return true;
 }
 
 } // namespace ks::physics

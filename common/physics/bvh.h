@@ -13,22 +13,21 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h> // AVX2 intrinsics, used only inside the target("avx2") traversal below
+#endif
 
 namespace ks::physics {
 
-#if defined(__SSE2__)
-using Lanes = __m128;
-inline Lanes splat(float v) {
-    return _mm_set1_ps(v);
-}
-#else
-struct Lanes {
-    float v[4];
-};
-inline Lanes splat(float v) {
-    return {{v, v, v, v}};
-}
-#endif
+// Which SIMD kernel ray traversal uses. Portable is SSE2 on x86-64 (always present there) and plain C++
+// elsewhere; Avx2 tests all eight children of a node with one 8-lane slab test. Both perform the same
+// float operations in the same order (no FMA: the AVX2 code is compiled for "avx2" only, so nothing can be
+// contracted), so they return bit-identical hits; tests run both where the CPU has AVX2.
+enum class RayKernel : std::uint8_t { Portable, Avx2 };
+bool cpu_has_avx2();
+RayKernel ray_kernel(); // the kernel ray queries use now: Avx2 when the CPU has it, unless overridden
+// Tests and benchmarks: forces a kernel; returns false (and changes nothing) when the CPU lacks it.
+bool set_ray_kernel(RayKernel kernel);
 
 class Bvh {
   public:
@@ -40,6 +39,7 @@ class Bvh {
     };
     static constexpr int kMaxDepth = 64;
     static constexpr std::uint32_t kMaxLeafSize = 4;
+    static constexpr int kWidth = 8;
 
     // items[i] is the box of item i; afterwards item_order() maps leaf slots to item indices.
     void build(std::span<const Aabb> items);
@@ -48,6 +48,7 @@ class Bvh {
     std::span<const Node> nodes() const { return nodes_; }
     std::span<const std::uint32_t> item_order() const { return order_; }
     int depth() const { return depth_; }
+    std::size_t wide_node_count() const { return wide_.size(); }
 
     // Visits leaf slots (positions in item_order(), so per-item data stored in that order is read
     // contiguously) whose box the ray crosses within [0, max_t], nearest node first. visit(slot, inv_dir,
@@ -56,28 +57,36 @@ class Bvh {
     void ray_query(const Ray& ray, float max_t, Visit&& visit) const;
     // The same traversal handing over whole leaves: visit(leaf, max_t&) with leaf an index into leaves(),
     // so callers can test a leaf's items together (SIMD). Returns false to stop.
-    // `inv` is safe_inverse(ray.direction), computed once by the caller.
+    // `inv` is safe_inverse(ray.direction), computed once by the caller. Runs the kernel ray_kernel() names.
     template <class VisitLeaf>
-    void ray_query_leaves(const Ray& ray, const Vec3& inv, float max_t, VisitLeaf&& visit) const;
+    void ray_query_leaves(const Ray& ray, const Vec3& inv, float max_t, VisitLeaf&& visit) const {
+        if (ray_kernel() == RayKernel::Avx2)
+            ray_query_leaves_avx2(ray, inv, max_t, visit);
+        else
+            ray_query_leaves_portable(ray, inv, max_t, visit);
+    }
     struct LeafRange {
         std::uint32_t first, count; // leaf slots [first, first + count)
     };
     std::span<const LeafRange> leaves() const { return leaves_; }
-    // Visits leaf slots whose node box overlaps `box`. visit(slot) returns false to stop.
+    // Visits leaf slots whose node box overlaps `box`, in leaf order. visit(slot) returns false to stop.
     template <class Visit>
     void aabb_query(const Aabb& box, Visit&& visit) const;
 
   private:
-    // The binary tree collapsed to four children per node, bounds stored lane-wise: ray traversal tests four
-    // boxes at once (SSE where available) and visits half as many nodes.
-    struct alignas(64) WideNode { // 128 bytes: exactly two cache lines
-        float min_x[4], min_y[4], min_z[4], max_x[4], max_y[4], max_z[4];
-        std::int32_t child[4]; // >= 0: wide node; < 0: ~leaf index
-        std::int32_t lanes;    // bit k set when child k exists
+    // The binary tree collapsed to eight children per node (SAH decides the shape; collapsing halves the
+    // depth twice over), bounds stored lane-wise so one 8-lane (or two 4-lane) slab test handles a node.
+    struct alignas(64) WideNode {   // 256 bytes: four cache lines
+        float bounds[6][kWidth];    // min x, y, z then max x, y, z; an empty lane holds an inverted box
+        std::int32_t child[kWidth]; // >= 0: wide node; < 0: ~leaf index
+        std::int32_t lanes;         // bit k set when child k exists
     };
     void build_wide();
-    static int slab4(const WideNode& n, const Lanes& ox, const Lanes& oy, const Lanes& oz, const Lanes& ix,
-                     const Lanes& iy, const Lanes& iz, float max_t, float* t_enter);
+
+    template <class VisitLeaf>
+    void ray_query_leaves_portable(const Ray& ray, const Vec3& inv, float max_t, VisitLeaf& visit) const;
+    template <class VisitLeaf>
+    void ray_query_leaves_avx2(const Ray& ray, const Vec3& inv, float max_t, VisitLeaf& visit) const;
 
     std::vector<WideNode> wide_;
     std::vector<LeafRange> leaves_;
@@ -86,31 +95,35 @@ class Bvh {
     int depth_ = 0;
 };
 
-inline int Bvh::slab4(const WideNode& n, const Lanes& ox, const Lanes& oy, const Lanes& oz, const Lanes& ix,
-                      const Lanes& iy, const Lanes& iz, float max_t, float* t_enter) {
-#if defined(__SSE2__)
-    const __m128 tx0 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(n.min_x), ox), ix);
-    const __m128 tx1 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(n.max_x), ox), ix);
-    const __m128 ty0 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(n.min_y), oy), iy);
-    const __m128 ty1 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(n.max_y), oy), iy);
-    const __m128 tz0 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(n.min_z), oz), iz);
-    const __m128 tz1 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(n.max_z), oz), iz);
-    const __m128 tmin = _mm_max_ps(_mm_max_ps(_mm_min_ps(tx0, tx1), _mm_min_ps(ty0, ty1)),
-                                   _mm_max_ps(_mm_min_ps(tz0, tz1), _mm_setzero_ps()));
-    const __m128 tmax = _mm_min_ps(_mm_min_ps(_mm_max_ps(tx0, tx1), _mm_max_ps(ty0, ty1)),
-                                   _mm_min_ps(_mm_max_ps(tz0, tz1), _mm_set1_ps(max_t)));
-    _mm_storeu_ps(t_enter, tmin);
-    return _mm_movemask_ps(_mm_cmple_ps(tmin, _mm_mul_ps(tmax, _mm_set1_ps(kExitWiden)))) & n.lanes;
-#else
-    int mask = 0;
-    for (int k = 0; k < 4; ++k)
-        if (ray_aabb({ox.v[0], oy.v[0], oz.v[0]}, {ix.v[0], iy.v[0], iz.v[0]},
-                     {n.min_x[k], n.min_y[k], n.min_z[k]}, {n.max_x[k], n.max_y[k], n.max_z[k]}, max_t,
-                     t_enter[k]))
-            mask |= 1 << k;
-    return mask & n.lanes;
-#endif
+namespace bvh_detail {
+// Orders the hit children of a node by entry distance: pushes all but the nearest (farthest first, so the
+// nearest of them pops next) and returns the nearest. Ties keep lane order. mask has >= 2 bits set.
+struct Pending {
+    std::int32_t child;
+    float t;
+};
+inline std::int32_t order_children(int mask, const float* t_enter, const std::int32_t* child, Pending* stack,
+                                   int& top) {
+    const int a = std::countr_zero(static_cast<unsigned>(mask));
+    const int rest = mask & (mask - 1);
+    if ((rest & (rest - 1)) == 0) { // two children hit (the usual case above the leaves): no sort
+        const int b = std::countr_zero(static_cast<unsigned>(rest));
+        const bool a_first = t_enter[a] <= t_enter[b];
+        const int near = a_first ? a : b, far = a_first ? b : a;
+        stack[top++] = {child[far], t_enter[far]};
+        return child[near];
+    }
+    int order[8], count = 0; // ascending t_enter (insertion sort: at most 8, usually 3)
+    for (int m = mask; m; m &= m - 1) {
+        const int k = std::countr_zero(static_cast<unsigned>(m));
+        int j = count++;
+        while (j > 0 && t_enter[order[j - 1]] > t_enter[k]) order[j] = order[j - 1], --j;
+        order[j] = k;
+    }
+    for (int j = count - 1; j > 0; --j) stack[top++] = {child[order[j]], t_enter[order[j]]};
+    return child[order[0]];
 }
+} // namespace bvh_detail
 
 template <class Visit>
 void Bvh::ray_query(const Ray& ray, float max_t, Visit&& visit) const {
@@ -123,60 +136,10 @@ void Bvh::ray_query(const Ray& ray, float max_t, Visit&& visit) const {
     });
 }
 
-template <class VisitLeaf>
-void Bvh::ray_query_leaves(const Ray& ray, const Vec3& inv, float max_t, VisitLeaf&& visit) const {
-    if (wide_.empty()) return;
-    const Lanes ox = splat(ray.origin.x), oy = splat(ray.origin.y), oz = splat(ray.origin.z);
-    const Lanes ix = splat(inv.x), iy = splat(inv.y), iz = splat(inv.z);
-    struct Pending {
-        std::int32_t child;
-        float t;
-    };
-    Pending stack[kMaxDepth * 4];
-    int top = 0;
-    stack[top++] = {0, 0.0f};
-    while (top > 0) {
-        const Pending p = stack[--top];
-        if (p.t > max_t) continue; // a closer hit was found meanwhile
-        if (p.child < 0) {         // leaf
-            if (!visit(static_cast<std::uint32_t>(~p.child), max_t)) return;
-            continue;
-        }
-        const WideNode& n = wide_[p.child];
-        float t_enter[4];
-        const int mask = slab4(n, ox, oy, oz, ix, iy, iz, max_t, t_enter);
-        if (!mask) continue;
-        if ((mask & (mask - 1)) == 0) { // one child hit (the common case deep in the tree): no sorting
-            const int k = std::countr_zero(static_cast<unsigned>(mask));
-            stack[top++] = {n.child[k], t_enter[k]};
-            continue;
-        }
-        const int rest = mask & (mask - 1);
-        if ((rest & (rest - 1)) == 0) { // two children hit: push the farther first (ties: lane order)
-            const int a = std::countr_zero(static_cast<unsigned>(mask)),
-                      b = std::countr_zero(static_cast<unsigned>(rest));
-            const bool b_farther = t_enter[a] < t_enter[b];
-            const int first = b_farther ? b : a, second = b_farther ? a : b;
-            stack[top++] = {n.child[first], t_enter[first]};
-            stack[top++] = {n.child[second], t_enter[second]};
-            continue;
-        }
-        // Push the hit children farthest first, so the nearest is popped next.
-        int order[4], count = 0;
-        for (int k = 0; k < 4; ++k)
-            if (mask & (1 << k)) {
-                int j = count++;
-                while (j > 0 && t_enter[order[j - 1]] < t_enter[k]) order[j] = order[j - 1], --j;
-                order[j] = k;
-            }
-        for (int j = 0; j < count; ++j) stack[top++] = {n.child[order[j]], t_enter[order[j]]};
-    }
-}
-
 template <class Visit>
 void Bvh::aabb_query(const Aabb& box, Visit&& visit) const {
     if (wide_.empty()) return;
-    std::int32_t stack[kMaxDepth * 4];
+    std::int32_t stack[kMaxDepth * kWidth];
     int top = 0;
     stack[top++] = 0;
     while (top > 0) {
@@ -188,24 +151,49 @@ void Bvh::aabb_query(const Aabb& box, Visit&& visit) const {
             continue;
         }
         const WideNode& n = wide_[ref];
-        int mask = n.lanes;
+        int mask = 0;
 #if defined(__SSE2__)
-        const __m128 lo = _mm_and_ps(_mm_and_ps(_mm_cmple_ps(_mm_loadu_ps(n.min_x), _mm_set1_ps(box.max.x)),
-                                                _mm_cmple_ps(_mm_loadu_ps(n.min_y), _mm_set1_ps(box.max.y))),
-                                     _mm_cmple_ps(_mm_loadu_ps(n.min_z), _mm_set1_ps(box.max.z)));
-        const __m128 hi = _mm_and_ps(_mm_and_ps(_mm_cmpge_ps(_mm_loadu_ps(n.max_x), _mm_set1_ps(box.min.x)),
-                                                _mm_cmpge_ps(_mm_loadu_ps(n.max_y), _mm_set1_ps(box.min.y))),
-                                     _mm_cmpge_ps(_mm_loadu_ps(n.max_z), _mm_set1_ps(box.min.z)));
-        mask &= _mm_movemask_ps(_mm_and_ps(lo, hi));
+        const __m128 bx0 = _mm_set1_ps(box.max.x), by0 = _mm_set1_ps(box.max.y), bz0 = _mm_set1_ps(box.max.z);
+        const __m128 bx1 = _mm_set1_ps(box.min.x), by1 = _mm_set1_ps(box.min.y), bz1 = _mm_set1_ps(box.min.z);
+        for (int h = 0; h < kWidth; h += 4) {
+            const __m128 lo = _mm_and_ps(_mm_and_ps(_mm_cmple_ps(_mm_load_ps(&n.bounds[0][h]), bx0),
+                                                    _mm_cmple_ps(_mm_load_ps(&n.bounds[1][h]), by0)),
+                                         _mm_cmple_ps(_mm_load_ps(&n.bounds[2][h]), bz0));
+            const __m128 hi = _mm_and_ps(_mm_and_ps(_mm_cmpge_ps(_mm_load_ps(&n.bounds[3][h]), bx1),
+                                                    _mm_cmpge_ps(_mm_load_ps(&n.bounds[4][h]), by1)),
+                                         _mm_cmpge_ps(_mm_load_ps(&n.bounds[5][h]), bz1));
+            mask |= _mm_movemask_ps(_mm_and_ps(lo, hi)) << h;
+        }
 #else
-        for (int k = 0; k < 4; ++k)
-            if (!(n.min_x[k] <= box.max.x && n.min_y[k] <= box.max.y && n.min_z[k] <= box.max.z &&
-                  n.max_x[k] >= box.min.x && n.max_y[k] >= box.min.y && n.max_z[k] >= box.min.z))
-                mask &= ~(1 << k);
+        for (int k = 0; k < kWidth; ++k)
+            if (n.bounds[0][k] <= box.max.x && n.bounds[1][k] <= box.max.y && n.bounds[2][k] <= box.max.z &&
+                n.bounds[3][k] >= box.min.x && n.bounds[4][k] >= box.min.y && n.bounds[5][k] >= box.min.z)
+                mask |= 1 << k;
 #endif
-        for (int k = 3; k >= 0; --k)
+        mask &= n.lanes;
+        for (int k = kWidth - 1; k >= 0; --k)
             if (mask & (1 << k)) stack[top++] = n.child[k];
     }
 }
 
 } // namespace ks::physics
+
+// The traversal loop, compiled twice: portable (SSE2 / scalar) and, inside a target("avx2") region, AVX2.
+#define KS_BVH_TRAVERSE_AVX2 0
+#include "physics/bvh_traverse.inl"
+#undef KS_BVH_TRAVERSE_AVX2
+#if defined(__x86_64__) && defined(__GNUC__)
+#pragma GCC push_options
+#pragma GCC target("avx2")
+#define KS_BVH_TRAVERSE_AVX2 1
+#include "physics/bvh_traverse.inl"
+#undef KS_BVH_TRAVERSE_AVX2
+#pragma GCC pop_options
+#else
+namespace ks::physics {
+template <class VisitLeaf>
+void Bvh::ray_query_leaves_avx2(const Ray& ray, const Vec3& inv, float max_t, VisitLeaf& visit) const {
+    ray_query_leaves_portable(ray, inv, max_t, visit);
+}
+} // namespace ks::physics
+#endif

@@ -151,8 +151,12 @@ void World::remove(BodyId id) {
 void World::set_enabled(BodyId id, bool enabled) {
     if (Body* b = get(id)) {
         b->enabled = enabled;
-        if (!static_dirty_ && id.index < static_slot_of_.size() && static_slot_of_[id.index] != kNone)
-            static_prims_[static_slot_of_[id.index]].enabled = enabled;
+        if (!static_dirty_ && id.index < static_slot_of_.size() && static_slot_of_[id.index] != kNone) {
+            const std::uint32_t slot = static_slot_of_[id.index];
+            static_prims_[slot].enabled = enabled;
+            BoxPacket& bp = static_packets_[static_leaf_of_[slot]];
+            bp.layers[slot - bp.first_slot] = enabled ? b->layers : 0u;
+        }
     }
 }
 bool World::enabled(BodyId id) const {
@@ -262,28 +266,29 @@ void World::build_static() const {
         p.enabled = b.enabled;
         static_slot_of_[bi] = static_cast<std::uint32_t>(slot);
     }
+    static_assert(Bvh::kMaxLeafSize <= 4, "a leaf must fit one packet");
     static_packets_.clear();
-    leaf_packets_.clear();
     for (const Bvh::LeafRange& leaf : static_bvh_.leaves()) {
-        leaf_packets_.push_back(static_cast<std::uint32_t>(static_packets_.size()));
-        for (std::uint32_t i = 0; i < leaf.count; i += 4) {
-            BoxPacket bp{};
-            for (std::uint32_t k = 0; k < 4 && i + k < leaf.count; ++k) {
-                const std::uint32_t slot = leaf.first + i + k;
-                const StaticPrim& p = static_prims_[slot];
-                bp.slot[k] = slot;
-                if (p.kind == ShapeKind::Box && p.axis_aligned) {
-                    bp.cx[k] = p.position.x, bp.cy[k] = p.position.y, bp.cz[k] = p.position.z;
-                    bp.hx[k] = p.half.x, bp.hy[k] = p.half.y, bp.hz[k] = p.half.z;
-                    bp.boxes |= 1u << k;
-                } else {
-                    bp.others |= 1u << k;
-                }
+        BoxPacket bp{};
+        bp.first_slot = leaf.first;
+        for (std::uint32_t k = 0; k < leaf.count; ++k) {
+            const StaticPrim& p = static_prims_[leaf.first + k];
+            bp.layers[k] = p.enabled ? p.layers : 0u;
+            bp.body[k] = p.body;
+            if (p.kind == ShapeKind::Box && p.axis_aligned) {
+                bp.cx[k] = p.position.x, bp.cy[k] = p.position.y, bp.cz[k] = p.position.z;
+                bp.hx[k] = p.half.x, bp.hy[k] = p.half.y, bp.hz[k] = p.half.z;
+                bp.boxes |= 1u << k;
+            } else {
+                bp.others |= 1u << k;
             }
-            static_packets_.push_back(bp);
         }
+        static_packets_.push_back(bp);
     }
-    leaf_packets_.push_back(static_cast<std::uint32_t>(static_packets_.size()));
+    static_leaf_of_.resize(static_prims_.size());
+    for (std::uint32_t leaf = 0; leaf < static_bvh_.leaves().size(); ++leaf)
+        for (std::uint32_t k = 0; k < static_bvh_.leaves()[leaf].count; ++k)
+            static_leaf_of_[static_bvh_.leaves()[leaf].first + k] = leaf;
     static_dirty_ = false;
 }
 
@@ -483,9 +488,11 @@ void World::dispatch() {
 
 namespace {
 // Lanes of `bp` whose axis-aligned box ray_centred_aabb would accept within max_t: the same operations in
-// the same order, four at once (no FMA contraction is possible here: plain SSE multiplies and adds).
+// the same order, four at once (plain SSE multiplies and subtractions: nothing to contract into an FMA).
+// Also stores each lane's entry distance and its x and y slab entries (which face was entered).
 template <class Packet>
-std::uint32_t packet_accepts(const Packet& bp, const Vec3& origin, const Vec3& inv, float max_t) {
+std::uint32_t packet_slab(const Packet& bp, const Vec3& origin, const Vec3& inv, float max_t, float* tmin_out,
+                          float* lox_out, float* loy_out) {
 #if defined(__SSE2__)
     const __m128 ox = _mm_sub_ps(_mm_set1_ps(origin.x), _mm_load_ps(bp.cx));
     const __m128 oy = _mm_sub_ps(_mm_set1_ps(origin.y), _mm_load_ps(bp.cy));
@@ -499,37 +506,60 @@ std::uint32_t packet_accepts(const Packet& bp, const Vec3& origin, const Vec3& i
     const __m128 ty1 = _mm_mul_ps(_mm_sub_ps(hy, oy), iy);
     const __m128 tz0 = _mm_mul_ps(_mm_sub_ps(_mm_xor_ps(hz, sign), oz), iz);
     const __m128 tz1 = _mm_mul_ps(_mm_sub_ps(hz, oz), iz);
-    const __m128 tmin =
-        _mm_max_ps(_mm_min_ps(tx0, tx1), _mm_max_ps(_mm_min_ps(ty0, ty1), _mm_min_ps(tz0, tz1)));
+    const __m128 lox = _mm_min_ps(tx0, tx1), loy = _mm_min_ps(ty0, ty1);
+    const __m128 tmin = _mm_max_ps(lox, _mm_max_ps(loy, _mm_min_ps(tz0, tz1)));
     const __m128 tmax =
         _mm_mul_ps(_mm_min_ps(_mm_max_ps(tx0, tx1), _mm_min_ps(_mm_max_ps(ty0, ty1), _mm_max_ps(tz0, tz1))),
                    _mm_set1_ps(kExitWiden));
     const __m128 ok = _mm_and_ps(_mm_and_ps(_mm_cmple_ps(tmin, tmax), _mm_cmpgt_ps(tmax, _mm_setzero_ps())),
                                  _mm_cmple_ps(tmin, _mm_set1_ps(max_t)));
+    _mm_store_ps(tmin_out, tmin);
+    _mm_store_ps(lox_out, lox);
+    _mm_store_ps(loy_out, loy);
     return static_cast<std::uint32_t>(_mm_movemask_ps(ok));
 #else
     std::uint32_t mask = 0;
     for (int k = 0; k < 4; ++k) {
-        ShapeHit h;
-        Ray r{origin, Vec3(0.0f), max_t};
-        if (ray_centred_aabb(r, inv, {bp.cx[k], bp.cy[k], bp.cz[k]}, {bp.hx[k], bp.hy[k], bp.hz[k]}, h))
-            mask |= 1u << k;
+        const Vec3 o = origin - Vec3(bp.cx[k], bp.cy[k], bp.cz[k]), half(bp.hx[k], bp.hy[k], bp.hz[k]);
+        const Vec3 t0 = (-half - o) * inv, t1 = (half - o) * inv;
+        const Vec3 lo = glm::min(t0, t1), hi = glm::max(t0, t1);
+        const float tmin = std::max(lo.x, std::max(lo.y, lo.z));
+        const float tmax = std::min(hi.x, std::min(hi.y, hi.z)) * kExitWiden;
+        tmin_out[k] = tmin, lox_out[k] = lo.x, loy_out[k] = lo.y;
+        if (tmin <= tmax && tmax > 0.0f && tmin <= max_t) mask |= 1u << k;
     }
     return mask;
 #endif
 }
 } // namespace
 
-template <class Hit>
-bool World::ray_leaf(std::uint32_t leaf, const Ray& ray, const Vec3& inv, float max_t, Hit&& hit) const {
-    for (std::uint32_t pk = leaf_packets_[leaf]; pk < leaf_packets_[leaf + 1]; ++pk) {
-        const BoxPacket& bp = static_packets_[pk];
-        std::uint32_t lanes = (packet_accepts(bp, ray.origin, inv, max_t) & bp.boxes) | bp.others;
-        while (lanes) {
-            const int k = std::countr_zero(lanes);
-            lanes &= lanes - 1;
-            if (!hit(bp.slot[k])) return false;
+template <class BoxHit, class OtherHit>
+bool World::ray_leaf(std::uint32_t leaf, const Ray& ray, const Vec3& inv, const float& max_t,
+                     const RayFilter& filter, BoxHit&& box, OtherHit&& other) const {
+    const BoxPacket& bp = static_packets_[leaf];
+    alignas(16) float tmin[4], lox[4], loy[4];
+    std::uint32_t lanes = (packet_slab(bp, ray.origin, inv, max_t, tmin, lox, loy) & bp.boxes) | bp.others;
+    while (lanes) {
+        const int k = std::countr_zero(lanes);
+        lanes &= lanes - 1;
+        if (!(bp.layers[k] & filter.layers) || bp.body[k] == filter.ignore.index) continue;
+        if (!(bp.boxes >> k & 1u)) {
+            if (!other(bp.first_slot + k)) return false;
+            continue;
         }
+        // What ray_centred_aabb returns, read from the lanes (max_t may have shrunk since the slab test).
+        if (tmin[k] > max_t) continue;
+        ShapeHit h;
+        if (tmin[k] <= 0.0f) { // starts inside (or on the surface, heading in)
+            h.distance = 0.0f;
+            h.normal = -ray.direction;
+        } else {
+            const int axis = tmin[k] == lox[k] ? 0 : (tmin[k] == loy[k] ? 1 : 2);
+            h.distance = tmin[k];
+            h.normal = Vec3(0.0f);
+            h.normal[axis] = ray.direction[axis] > 0.0f ? -1.0f : 1.0f;
+        }
+        if (!box(k, h)) return false;
     }
     return true;
 }
@@ -563,18 +593,24 @@ bool World::ray_closest(const Ray& ray, RayHit& out, const RayFilter& filter) co
     Vec3 best_normal(0.0f);
     const Vec3 inv = safe_inverse(ray.direction);
     static_bvh_.ray_query_leaves(ray, inv, ray.max_distance, [&](std::uint32_t leaf, float& max_t) {
-        return ray_leaf(leaf, ray, inv, max_t, [&](std::uint32_t slot) {
-            const StaticPrim& p = static_prims_[slot];
-            if (!p.enabled || !(p.layers & filter.layers) || p.body == filter.ignore.index) return true;
-            ShapeHit h;
-            Ray r = ray;
-            r.max_distance = max_t;
-            if (ray_static(r, inv, p, h) && (h.distance < best || best_body == kNone)) {
-                best = h.distance, best_body = p.body, best_normal = h.normal;
+        const BoxPacket& bp = static_packets_[leaf];
+        auto take = [&](std::uint32_t body, const ShapeHit& h) {
+            if (h.distance < best || best_body == kNone) {
+                best = h.distance, best_body = body, best_normal = h.normal;
                 max_t = h.distance;
             }
             return true;
-        });
+        };
+        return ray_leaf(
+            leaf, ray, inv, max_t, filter, [&](int k, const ShapeHit& h) { return take(bp.body[k], h); },
+            [&](std::uint32_t slot) {
+                const StaticPrim& p = static_prims_[slot];
+                ShapeHit h;
+                Ray r = ray;
+                r.max_distance = max_t;
+                if (ray_static(r, inv, p, h)) take(p.body, h);
+                return true;
+            });
     });
     for (std::uint32_t index : movers_) {
         const Body& b = bodies_[index];
@@ -609,13 +645,13 @@ bool World::ray_any(const Ray& ray, const RayFilter& filter) const {
     bool found = false;
     const Vec3 inv = safe_inverse(ray.direction);
     static_bvh_.ray_query_leaves(ray, inv, ray.max_distance, [&](std::uint32_t leaf, float& max_t) {
-        return ray_leaf(leaf, ray, inv, max_t, [&](std::uint32_t slot) {
-            const StaticPrim& p = static_prims_[slot];
-            if (!p.enabled || !(p.layers & filter.layers) || p.body == filter.ignore.index) return true;
-            ShapeHit h;
-            found = ray_static(ray, inv, p, h);
-            return !found;
-        });
+        return ray_leaf(
+            leaf, ray, inv, max_t, filter, [&](int, const ShapeHit&) { return !(found = true); },
+            [&](std::uint32_t slot) {
+                ShapeHit h;
+                found = ray_static(ray, inv, static_prims_[slot], h);
+                return !found;
+            });
     });
     if (found) return true;
     for (std::uint32_t index : movers_) {

@@ -206,22 +206,26 @@ class World {
     mutable Bvh static_bvh_;
     mutable std::vector<StaticPrim> static_prims_;      // by BVH leaf slot
     mutable std::vector<std::uint32_t> static_slot_of_; // body index -> leaf slot (or ~0)
-    // Each BVH leaf's static prims four to a packet, axis-aligned boxes lane-wise (centre, half extents), so
-    // a ray tests a leaf's boxes with one SIMD slab test (the same float operations as ray_centred_aabb, so
-    // it accepts exactly what the scalar test accepts); the scalar test then runs only on the lanes hit,
-    // and on lanes holding anything else (rotated boxes, wedges, hulls).
+    // Each BVH leaf's static prims as one packet (leaves hold at most four), axis-aligned boxes lane-wise
+    // (centre, half extents) with the filter data rays need, so a ray tests a leaf with one SIMD slab test
+    // doing exactly the float operations of ray_centred_aabb (same hits, same distances) and takes the hit
+    // of a box lane from the lanes; rotated boxes, wedges and hulls run their scalar test.
     struct alignas(16) BoxPacket {
         float cx[4], cy[4], cz[4], hx[4], hy[4], hz[4];
-        std::uint32_t slot[4];
+        std::uint32_t layers[4];  // the body's layers; 0 while it is disabled (no filter matches)
+        std::uint32_t body[4];    // body index
+        std::uint32_t first_slot; // lane k is leaf slot first_slot + k
         std::uint32_t boxes = 0;  // lanes holding an axis-aligned box
         std::uint32_t others = 0; // lanes holding anything else
     };
-    mutable std::vector<BoxPacket> static_packets_;
-    mutable std::vector<std::uint32_t> leaf_packets_; // BVH leaf -> its first packet (leaves + 1 entries)
-    // Calls hit(slot) for the slots of `leaf` the ray may hit within max_t (see BoxPacket), in slot order;
-    // stops when hit returns false.
-    template <class Hit>
-    bool ray_leaf(std::uint32_t leaf, const Ray& ray, const Vec3& inv, float max_t, Hit&& hit) const;
+    mutable std::vector<BoxPacket> static_packets_;     // by BVH leaf
+    mutable std::vector<std::uint32_t> static_leaf_of_; // leaf slot -> its BVH leaf (packet)
+    // Calls box(k, distance, normal) for the box lanes of `leaf` the ray enters within max_t (re-checked
+    // against max_t, which the callbacks may shrink) and other(k) for its other lanes, in lane order, both
+    // only for lanes whose layers and body pass `filter`; stops when a callback returns false.
+    template <class BoxHit, class OtherHit>
+    bool ray_leaf(std::uint32_t leaf, const Ray& ray, const Vec3& inv, const float& max_t,
+                  const RayFilter& filter, BoxHit&& box, OtherHit&& other) const;
     mutable bool static_dirty_ = true;
     bool ray_static(const Ray& ray, const Vec3& inv_dir, const StaticPrim& prim, ShapeHit& hit) const;
     // Moving set (kinematic bodies, characters, kinematic triggers).
