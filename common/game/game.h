@@ -43,6 +43,13 @@ inline std::uint32_t user_index(std::uint64_t user) {
     return static_cast<std::uint32_t>(user);
 }
 
+// The robot model faces its local +X (conventions.md); a level yaw faces (−sin yaw, 0, −cos yaw)
+// (level-format.md). Rotating the model about +y by yaw + 90° turns +X onto that direction — the reference's
+// rotY = yaw + 90°. Every view that draws a robot must use this (the game view, the Dojo dummy).
+inline float robot_model_yaw(float level_yaw) {
+    return level_yaw + kPi * 0.5f;
+}
+
 struct PlayerState {
     physics::BodyId body;
     Vec3 feet{0.0f};
@@ -82,7 +89,7 @@ struct Robot {
     float wander_from = 0.0f, wander_to = 0.0f, wander_length = 1.4f;
     bool collided = false;
     // Model yaw for the renderer: the level yaw + 90° (the reference's rotY; the model faces +X).
-    float model_yaw() const { return yaw + kPi * 0.5f; }
+    float model_yaw() const { return robot_model_yaw(yaw); }
     bool alive() const { return mode != RobotMode::Dying && mode != RobotMode::Dead; }
 };
 
@@ -138,12 +145,13 @@ struct Panel {
     physics::BodyId body;
 };
 
-// The death camera (reference: eye drops to the body centre in 0.3 s Quadratic.In, then pitch +π/4 and
-// roll π/2 in 0.3 s Bounce.InOut, then 1 s until the death menu).
+// The death camera (reference: eye drops to the body centre in 0.3 s Quadratic.In, then camera.rotation to
+// (x π/4, z π/2) in 0.3 s Bounce.InOut, then 1 s until the death menu). three.js's rotation.z = +π/2 turns
+// the camera's up to its left: the soldier falls onto his left side, the world turns clockwise on screen.
 struct DeathCamera {
     float eye_drop = 0.0f; // subtract from the eye height
-    float pitch = 0.0f;    // added to the view pitch
-    float roll = 0.0f;
+    float pitch = 0.0f;    // added to the view pitch (+π/4: looks up, as the reference's x)
+    float roll = 0.0f; // render::Camera's roll (positive leans the head right): −π/2, a fall to the left
     bool menu_ready = false;
 };
 

@@ -245,7 +245,7 @@ DeathCamera Game::death_camera() const {
     const float b =
         static_cast<float>(anim::tweenjs_formula(anim::EaseFamily::Bounce, anim::EaseMode::InOut, k2));
     cam.pitch = kPi * 0.25f * b;
-    cam.roll = kPi * 0.5f * b;
+    cam.roll = -kPi * 0.5f * b;
     cam.menu_ready = t >= 1.6 - 1e-9;
     return cam;
 }

@@ -5,9 +5,12 @@
 #include "game_app.h"
 
 #include "anim/dojo.h"
+#include "core/files.h"
 #include "core/log.h"
 #include "core/paths.h"
 #include "game/game.h"
+#include "input_events.h"
+#include "input_script.h"
 #include "level/level_io.h"
 #include "menu_style.h"
 #include "options.h"
@@ -15,6 +18,7 @@
 #include "render/hud.h"
 #include "render/scene_renderer.h"
 #include "screens.h"
+#include "step_budget.h"
 #include "world_view.h"
 
 #define GLFW_INCLUDE_NONE
@@ -30,8 +34,9 @@
 namespace ks::runtime {
 
 const std::vector<std::string>& game_app_options() {
-    static const std::vector<std::string> names = {"level",     "dojo", "screen", "warp", "dojo-key",
-                                                   "dojo-time", "seed", "msaa",   "help", "fire"};
+    static const std::vector<std::string> names = {"level",    "dojo",      "screen",      "warp",
+                                                   "dojo-key", "dojo-time", "seed",        "msaa",
+                                                   "help",     "fire",      "status-file", "input-script"};
     return names;
 }
 const std::vector<std::string>& game_app_flags() {
@@ -47,6 +52,34 @@ const std::vector<std::string>& game_app_screens() {
 namespace {
 
 enum class Screen { Loading, Menu, HowTo, Credits, Options, Playing, Paused, Dead, Won };
+
+const char* screen_name(Screen s) {
+    switch (s) {
+    case Screen::Loading:
+        return "loading";
+    case Screen::Menu:
+        return "menu";
+    case Screen::HowTo:
+        return "howto";
+    case Screen::Credits:
+        return "credits";
+    case Screen::Options:
+        return "options";
+    case Screen::Playing:
+        return "playing";
+    case Screen::Paused:
+        return "paused";
+    case Screen::Dead:
+        return "dead";
+    case Screen::Won:
+        return "won";
+    }
+    return "?";
+}
+
+// At most this many fixed steps per frame (0.25 s of game time; step_budget.h says why): 4 frames per
+// second still play in real time, slower machines in slow motion.
+constexpr int kMaxStepsPerFrame = 30;
 
 // One loaded level with its game and view. The Dojo's controller borrows the game's clips, so it goes first.
 struct Session {
@@ -96,6 +129,7 @@ class GameApp {
         : shell_(shell), renderer_(renderer), assets_(assets), level_path_(std::move(level_path)),
           seed_(seed) {
         options_ = load_options(options_path());
+        events_.install(shell_.window());
     }
 
     // Command-line automation: the screen to show and the scenario to set up (tests and screenshots).
@@ -106,6 +140,9 @@ class GameApp {
         char dojo_key = 0;
         double dojo_time = -1.0;
         bool fire = false; // one shot on the first step (to see the muzzle flash, impacts, explosions)
+        std::filesystem::path status_file; // rewritten each frame with the screen and the game's state
+        std::vector<ScriptEvent> script;   // --input-script
+        bool scripted = false;
     };
     Result<void> start(const Automation& a);
     int run();
@@ -129,6 +166,11 @@ class GameApp {
     }
     void save_options_now();
     bool in_world() const { return screen_ == Screen::Playing; }
+    void apply_warp();
+    void run_script(long long frame);
+    void write_status(const render::FrameInfo& info);
+    // Real input drives the app: not a screenshot run, or a screenshot run driven by --input-script.
+    bool interactive() const { return !shell_.screenshot_mode() || scripted_; }
 
     render::AppShell& shell_;
     render::SceneRenderer& renderer_;
@@ -137,15 +179,23 @@ class GameApp {
     std::uint64_t seed_;
     Options options_;
     bool options_dirty_ = false;
+    InputEvents events_;
     PlayerInput input_;
+    StepBudget budget_{kMaxStepsPerFrame};
+    std::optional<std::array<float, 5>> pending_warp_; // interactive --warp: applied when the level loads
+    std::filesystem::path status_path_;
+    std::string status_last_;
+    std::vector<ScriptEvent> script_;
+    std::size_t script_next_ = 0;
+    bool scripted_ = false;
+    bool click_next_frame_ = false;
+    int exit_code_ = 0;
     Screen screen_ = Screen::Loading, return_to_ = Screen::Menu;
     std::unique_ptr<Session> session_, pending_;
     Loader loader_;
     bool freeze_loader_ = false, freeze_dojo_ = false;
     std::string error_;
     bool quit_ = false;
-    bool esc_was_down_ = true;
-    bool digit_was_down_[10] = {};
     bool pause_requested_ = false;
     render::FrameStats stats_;
     WinStats win_;
@@ -189,20 +239,20 @@ void GameApp::load(const std::filesystem::path& path, bool dojo, Screen then) {
                                  return {};
                              }});
     if (dojo) {
-        loader_.steps.push_back({"Waking the test robot", [s]() -> Result<void> {
-                                     const auto& lib = s->game->animations();
-                                     auto c = anim::DojoController::create(lib.clips, lib.rig,
-                                                                           anim::reference_dojo_clips());
-                                     if (!c) return c.error();
-                                     s->dojo_controller.emplace(std::move(*c));
-                                     for (const auto& e : s->level.entities)
-                                         if (const auto* r = e.try_as<level::RobotProps>(); r && r->dummy) {
-                                             s->dummy.feet = e.position;
-                                             s->dummy.model_yaw = radians(e.rotation.x) + kPi * 0.5f;
-                                         }
-                                     s->dummy.pose = &s->dojo_controller->pose();
-                                     return {};
-                                 }});
+        loader_.steps.push_back(
+            {"Waking the test robot", [s]() -> Result<void> {
+                 const auto& lib = s->game->animations();
+                 auto c = anim::DojoController::create(lib.clips, lib.rig, anim::reference_dojo_clips());
+                 if (!c) return c.error();
+                 s->dojo_controller.emplace(std::move(*c));
+                 for (const auto& e : s->level.entities)
+                     if (const auto* r = e.try_as<level::RobotProps>(); r && r->dummy) {
+                         s->dummy.feet = e.position;
+                         s->dummy.model_yaw = game::robot_model_yaw(radians(e.rotation.x));
+                     }
+                 s->dummy.pose = &s->dojo_controller->pose();
+                 return {};
+             }});
     }
     screen_ = Screen::Loading;
 }
@@ -222,6 +272,7 @@ void GameApp::step_loader() {
     if (loader_.done()) {
         session_ = std::move(pending_);
         error_.clear();
+        apply_warp();
         if (loader_.then == Screen::Playing)
             enter_play();
         else
@@ -237,16 +288,30 @@ Result<void> GameApp::finish_loading_now() {
     return {};
 }
 
+void GameApp::apply_warp() {
+    if (!pending_warp_ || !session_ || session_->dojo) return;
+    const auto v = *pending_warp_;
+    pending_warp_.reset(); // once: Retry and Main Menu start from the level's own start
+    auto& g = *session_->game;
+    g.teleport_player(Vec3(v[0], v[1], v[2]), radians(v[3]), radians(v[4]));
+    // A few steps so the caption and interaction target settle at the new place.
+    for (int i = 0; i < 12; ++i) {
+        session_->view->before_step(g);
+        g.step({});
+        session_->view->after_step(g, static_cast<float>(g.settings().step));
+    }
+}
+
 void GameApp::enter_play() {
     screen_ = Screen::Playing;
     pause_requested_ = false;
-    if (!shell_.screenshot_mode()) input_.capture(shell_.window());
+    if (interactive()) input_.capture(shell_.window(), events_.state());
 }
 
 void GameApp::pause() {
     if (screen_ != Screen::Playing) return;
     screen_ = Screen::Paused;
-    input_.release(shell_.window());
+    input_.release(shell_.window(), events_.state());
     if (session_ && session_->game && !session_->game->paused()) {
         game::Input in;
         in.pause = true;
@@ -268,7 +333,7 @@ void GameApp::resume() {
 }
 
 void GameApp::to_menu() {
-    input_.release(shell_.window());
+    input_.release(shell_.window(), events_.state());
     // The menu shows the main level behind it; a finished or Dojo session is replaced by a fresh main one.
     if (!session_ || session_->dojo || session_->game->phase() != game::Phase::Playing ||
         session_->play_seconds > 0.0)
@@ -290,34 +355,35 @@ void GameApp::save_options_now() {
 void GameApp::fixed_update(double dt) {
     if (!session_ || !session_->game) return;
     auto& g = *session_->game;
-    const bool world_runs =
-        screen_ == Screen::Playing || (screen_ == Screen::Dead && !shell_.screenshot_mode());
+    if (!budget_.take()) return;
+    const bool world_runs = screen_ == Screen::Playing || (screen_ == Screen::Dead && interactive());
     if (session_->dojo_controller && !freeze_dojo_ && screen_ == Screen::Playing)
         session_->dojo_controller->advance(dt);
     if (!world_runs) return;
-    game::Input in = screen_ == Screen::Playing ? input_.gather(shell_.window(), options_) : game::Input{};
+    game::Input in = screen_ == Screen::Playing ? input_.gather(events_.state(), options_) : game::Input{};
     session_->view->before_step(g);
     g.step(in);
     session_->view->after_step(g, static_cast<float>(dt));
     if (g.phase() == game::Phase::Playing) session_->play_seconds += dt;
     if (g.phase() == game::Phase::Dead && g.death_camera().menu_ready && screen_ == Screen::Playing) {
         screen_ = Screen::Dead;
-        input_.release(shell_.window());
+        input_.release(shell_.window(), events_.state());
     }
     if (g.phase() == game::Phase::Won && screen_ == Screen::Playing) {
         win_ = {session_->play_seconds, g.robots_killed(), session_->robots_total};
         screen_ = Screen::Won;
-        input_.release(shell_.window());
+        input_.release(shell_.window(), events_.state());
     }
 }
 
 void GameApp::handle_keys() {
     GLFWwindow* w = shell_.window();
-    const bool esc = glfwGetKey(w, GLFW_KEY_ESCAPE) == GLFW_PRESS;
-    const bool esc_pressed = esc && !esc_was_down_;
-    esc_was_down_ = esc;
-    if (shell_.screenshot_mode()) return;
-    if (screen_ == Screen::Playing && (esc_pressed || !glfwGetWindowAttrib(w, GLFW_FOCUSED))) {
+    InputState& keys = events_.state();
+    const bool esc_pressed = keys.take_press(GLFW_KEY_ESCAPE);
+    if (!interactive()) return;
+    // Losing the focus pauses (the mouse is no longer ours); a script's input does not depend on it.
+    const bool focus_lost = !scripted_ && !glfwGetWindowAttrib(w, GLFW_FOCUSED);
+    if (screen_ == Screen::Playing && (esc_pressed || focus_lost)) {
         pause();
         return;
     }
@@ -330,17 +396,119 @@ void GameApp::handle_keys() {
         }
     }
     if (screen_ == Screen::Playing && session_ && session_->dojo_controller) {
-        for (int k = 0; k <= 9; ++k) {
-            const bool down = glfwGetKey(w, GLFW_KEY_0 + k) == GLFW_PRESS;
-            if (down && !digit_was_down_[k]) session_->dojo_controller->press(static_cast<char>('0' + k));
-            digit_was_down_[k] = down;
+        for (int k = 0; k <= 9; ++k)
+            if (keys.take_press(GLFW_KEY_0 + k)) session_->dojo_controller->press(static_cast<char>('0' + k));
+    }
+}
+
+void GameApp::run_script(long long frame) {
+    if (click_next_frame_) {
+        click_next_frame_ = false;
+        events_.inject_button(GLFW_MOUSE_BUTTON_LEFT, GLFW_PRESS);
+        events_.inject_button(GLFW_MOUSE_BUTTON_LEFT, GLFW_RELEASE);
+    }
+    while (script_next_ < script_.size() && script_[script_next_].frame <= frame) {
+        const ScriptEvent& e = script_[script_next_++];
+        switch (e.kind) {
+        case ScriptEvent::Kind::Key:
+            if (e.action != 0) events_.inject_key(e.code, GLFW_PRESS);
+            if (e.action != 1) events_.inject_key(e.code, GLFW_RELEASE);
+            break;
+        case ScriptEvent::Kind::Mouse:
+            if (e.action != 0) events_.inject_button(e.code, GLFW_PRESS);
+            if (e.action != 1) events_.inject_button(e.code, GLFW_RELEASE);
+            break;
+        case ScriptEvent::Kind::Move:
+            events_.inject_cursor(e.x, e.y);
+            break;
+        case ScriptEvent::Kind::Look: {
+            double x = 0.0, y = 0.0;
+            glfwGetCursorPos(shell_.window(), &x, &y);
+            events_.inject_cursor(x, y); // where it is (an origin if none was seen yet), then the motion
+            events_.inject_cursor(x + e.x, y + e.y);
+            break;
+        }
+        case ScriptEvent::Kind::ClickButton: {
+            const auto& buttons = ui::buttons_drawn();
+            const auto it = std::find_if(buttons.begin(), buttons.end(),
+                                         [&](const ui::ButtonRect& b) { return b.label == e.label; });
+            if (it == buttons.end()) {
+                log::error("input script line ", e.line, " (frame ", frame, "): no button '", e.label,
+                           "' on the ", screen_name(screen_), " screen; wait more frames before clicking");
+                exit_code_ = 1;
+                quit_ = true;
+                return;
+            }
+            // Onto the button now, the click next frame: ImGui takes the pointer's place at the start of a
+            // frame, and a pointer that only just entered the window may not count yet (as with a hand).
+            events_.inject_cursor((it->x0 + it->x1) * 0.5, (it->y0 + it->y1) * 0.5);
+            click_next_frame_ = true;
+            break;
+        }
+        case ScriptEvent::Kind::Quit:
+            quit_ = true;
+            break;
         }
     }
 }
 
+void GameApp::write_status(const render::FrameInfo& info) {
+    if (status_path_.empty()) return;
+    std::string s;
+    char line[256];
+    auto add = [&](const char* fmt, auto... args) {
+        std::snprintf(line, sizeof(line), fmt, args...);
+        s += line;
+        s += '\n';
+    };
+    add("screen %s", screen_name(screen_));
+    add("captured %d", input_.captured() ? 1 : 0);
+    for (const auto& b : ui::buttons_drawn())
+        add("button %.0f %.0f %.0f %.0f %s", b.x0, b.y0, b.x1, b.y1, b.label.c_str());
+    if (session_ && session_->game) {
+        const auto& g = *session_->game;
+        const auto& p = g.player();
+        add("level %s", session_->dojo ? "dojo" : "play");
+        add("phase %s", g.phase() == game::Phase::Playing ? "playing"
+                        : g.phase() == game::Phase::Dead  ? "dead"
+                                                          : "won");
+        add("paused %d", g.paused() ? 1 : 0);
+        add("feet %.3f %.3f %.3f", p.feet.x, p.feet.y, p.feet.z);
+        add("yaw %.2f", degrees(p.yaw));
+        add("pitch %.2f", degrees(p.pitch));
+        add("health %.1f", p.health);
+        add("shield %.1f", p.shield);
+        add("ammo %d", p.ammo);
+        add("shots %d", p.shots);
+        int alive = 0;
+        for (const auto& r : g.robots()) alive += r.alive() ? 1 : 0;
+        add("robots %d alive %d killed %d", static_cast<int>(g.robots().size()), alive, g.robots_killed());
+        for (const auto& d : g.doors()) add("door %d %.3f", d.entity_id, d.progress);
+        for (const auto& l : g.lights())
+            if (l.floor) add("light %d %s", l.entity_id, l.on ? "on" : "off");
+        for (const auto& k : g.pickups()) add("pickup %d %s", k.entity_id, k.taken ? "taken" : "present");
+        for (const auto& c : g.cylinders())
+            add("cylinder %d %s", c.entity_id, c.exploded ? "exploded" : "standing");
+        add("caption %s", g.caption().visible() ? g.caption().text().c_str() : "-");
+        if (session_->view) add("camera_roll %.2f", degrees(session_->view->camera().roll));
+        add("game_steps %lld", static_cast<long long>(g.steps()));
+    }
+    add("dropped_steps %lld", budget_.dropped());
+    if (s == status_last_) return;
+    status_last_ = s;
+    // The frame goes last and does not count as a change: the file changes when the state does.
+    add("frame %lld", info.frame_index);
+    if (auto written = files::write_atomic(status_path_, s); !written) {
+        log::warn(written.error().str(), " (--status-file: no more status written)");
+        status_path_.clear();
+    }
+}
+
 void GameApp::render(const render::FrameInfo& info) {
+    if (scripted_) run_script(info.frame_index);
     step_loader();
     handle_keys();
+    budget_.new_frame(); // the next frame's fixed steps come after this call
     if (!session_ || !session_->view || screen_ == Screen::Loading) {
         // Nothing loaded yet: an empty scene clears to the fog colour behind the loading panel.
         render::SceneFrame empty;
@@ -366,6 +534,7 @@ void GameApp::imgui(const render::FrameInfo& info) {
     const float w = static_cast<float>(info.width), h = static_cast<float>(info.height);
     const auto& fonts = shell_.fonts();
     ImGuiIO& io = ImGui::GetIO();
+    ui::begin_frame();
     if (input_.captured())
         io.ConfigFlags |= ImGuiConfigFlags_NoMouse;
     else
@@ -420,8 +589,7 @@ void GameApp::imgui(const render::FrameInfo& info) {
     case Screen::Paused:
         action = pause_menu(fonts, w, h);
         // Clicking back into the game (outside the panel) resumes, as the reference's pointer lock.
-        if (action == MenuAction::None && !shell_.screenshot_mode() && ImGui::IsMouseClicked(0) &&
-            !io.WantCaptureMouse)
+        if (action == MenuAction::None && interactive() && ImGui::IsMouseClicked(0) && !io.WantCaptureMouse)
             action = MenuAction::Resume;
         break;
     case Screen::Dead:
@@ -474,6 +642,7 @@ void GameApp::imgui(const render::FrameInfo& info) {
         break;
     }
 
+    write_status(info);
     if (!shell_.screenshot_mode() && screen_ == Screen::Playing) {
         char text[128];
         std::snprintf(text, sizeof(text), "%.1f ms  %d draws", info.frame_dt * 1000.0, stats_.draw_calls);
@@ -483,8 +652,13 @@ void GameApp::imgui(const render::FrameInfo& info) {
 }
 
 Result<void> GameApp::start(const Automation& a) {
-    // A screenshot without --screen shows the game (what the render-only view used to show, now playable).
-    const std::string screen = a.screen.empty() && shell_.screenshot_mode() ? "play" : a.screen;
+    status_path_ = a.status_file;
+    script_ = a.script;
+    scripted_ = a.scripted;
+    // A screenshot without --screen shows the game (what the render-only view used to show, now playable);
+    // a scripted screenshot run starts where a player does, at the loading screen.
+    const std::string screen =
+        a.screen.empty() && shell_.screenshot_mode() && !a.scripted ? "play" : a.screen;
     const bool dojo = a.dojo || screen == "dojo";
     const bool wants_world =
         screen == "play" || screen == "pause" || screen == "death" || screen == "win" || dojo;
@@ -495,7 +669,10 @@ Result<void> GameApp::start(const Automation& a) {
         freeze_loader_ = true;
         return {};
     }
-    if (screen.empty() && !dojo) return {}; // interactive: load across frames with the bar
+    if (screen.empty() && !dojo) {
+        pending_warp_ = a.warp; // interactive: load across frames with the bar, then warp
+        return {};
+    }
     if (auto done = finish_loading_now(); !done) return done;
     if (!session_) return Error("loading failed", Location(level_path_.string()));
     auto& g = *session_->game;
@@ -575,7 +752,9 @@ int GameApp::run() {
     hooks.render = [this](const render::FrameInfo& info) { render(info); };
     hooks.imgui = [this](const render::FrameInfo& info) { imgui(info); };
     hooks.wants_close = [this]() { return quit_; };
-    const int code = shell_.run(hooks);
+    int code = shell_.run(hooks);
+    if (code == 0) code = exit_code_;
+    events_.uninstall();
     save_options_now();
     session_.reset();
     pending_.reset();
@@ -599,6 +778,9 @@ void print_help() {
         "  --dojo-key K      in the Dojo, press key K (0-5) before the first frame\n"
         "  --dojo-time S     ... and advance the animation S seconds, then hold it (for screenshots)\n"
         "  --seed N          the game's random seed (default 1)\n"
+        "  --status-file F   rewrite F each frame the state changes: screen, buttons, player, doors, ...\n"
+        "  --input-script F  timed key/mouse events by frame (see runtime/app/input_script.h); with\n"
+        "                    --screenshot the frames are a fixed 1/60 s, so the run is deterministic\n"
         "  --view MODEL      (renderer) one model on a turntable; --camera x,y,z,yaw,pitch: render-only "
         "view\n"
         "  --headless ...    run the game without a window (see killswitch --headless --help)\n"
@@ -624,6 +806,22 @@ int run_game_app(const CommandLine& cl, const render::ShellConfig& shell_config)
         return 2;
     }
     automation.dojo = cl.has("dojo");
+    if (auto status = cl.get("status-file")) automation.status_file = paths::resolve_user_path(*status);
+    if (auto script = cl.get("input-script")) {
+        const auto path = paths::resolve_user_path(*script);
+        auto text = files::read_text(path);
+        if (!text) {
+            log::error(text.error().str());
+            return 2;
+        }
+        auto events = parse_input_script(*text, path.string());
+        if (!events) {
+            log::error(events.error().str());
+            return 2;
+        }
+        automation.script = std::move(*events);
+        automation.scripted = true;
+    }
     automation.fire = cl.has("fire");
     if (auto warp = cl.get("warp")) {
         std::array<float, 5> v{};

@@ -68,6 +68,26 @@ void end_panel() {
     ImGui::PopStyleColor(3);
 }
 
+namespace {
+std::vector<ButtonRect>& drawn() {
+    static std::vector<ButtonRect> rects;
+    return rects;
+}
+} // namespace
+
+void begin_frame() {
+    drawn().clear();
+}
+
+const std::vector<ButtonRect>& buttons_drawn() {
+    return drawn();
+}
+
+void record_button(const char* label) {
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    drawn().push_back({label, a.x, a.y, b.x, b.y});
+}
+
 bool big_button(const char* label, const render::Fonts& fonts, float width_720) {
     const float s = ImGui::GetIO().DisplaySize.y > 0 ? ui_scale(ImGui::GetIO().DisplaySize.y) : 1.0f;
     const ImVec2 size(width_720 * s, 52.0f * s);
@@ -83,6 +103,7 @@ bool big_button(const char* label, const render::Fonts& fonts, float width_720) 
     ImGui::PushStyleVar(ImGuiStyleVar_FrameRounding, 6.0f * s);
     if (fonts.hud) ImGui::PushFont(fonts.hud);
     const bool clicked = ImGui::Button(label, size);
+    record_button(label);
     if (fonts.hud) ImGui::PopFont();
     ImGui::PopStyleVar();
     ImGui::PopStyleColor(4);

@@ -32,6 +32,17 @@ void end_panel();
 
 // A big accent button centred in the panel; returns true when clicked.
 bool big_button(const char* label, const render::Fonts& fonts, float width_720 = 320.0f);
+// Where this frame's buttons are (window pixels), for --status-file and --input-script's "click LABEL":
+// tests click menu buttons where the player sees them. Cleared by begin_frame().
+struct ButtonRect {
+    std::string label;
+    float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+void begin_frame();
+const std::vector<ButtonRect>& buttons_drawn();
+// Records the last ImGui item as a button named `label` (for buttons not drawn by big_button).
+void record_button(const char* label);
+
 // Centred body text lines.
 void centred_text(const std::string& text, ImFont* font, ImU32 colour = kInk);
 

@@ -7,51 +7,50 @@
 
 namespace ks::runtime {
 
-void PlayerInput::capture(GLFWwindow* window) {
-    glfwSetInputMode(window, GLFW_CURSOR, GLFW_CURSOR_DISABLED);
-    if (glfwRawMouseMotionSupported()) glfwSetInputMode(window, GLFW_RAW_MOUSE_MOTION, GLFW_TRUE);
+void PlayerInput::capture(GLFWwindow* window, InputState& state) {
+    if (window) {
+        glfwSetInputMode(window, GLFW_CURSOR, GLFW_CURSOR_DISABLED);
+        if (glfwRawMouseMotionSupported()) glfwSetInputMode(window, GLFW_RAW_MOUSE_MOTION, GLFW_TRUE);
+    }
     captured_ = true;
-    have_cursor_ = false;
-    // The click that resumed the game must not also fire.
-    fire_was_down_ = interact_was_down_ = jump_was_down_ = true;
-}
-
-void PlayerInput::release(GLFWwindow* window) {
-    if (glfwRawMouseMotionSupported()) glfwSetInputMode(window, GLFW_RAW_MOUSE_MOTION, GLFW_FALSE);
-    glfwSetInputMode(window, GLFW_CURSOR, GLFW_CURSOR_NORMAL);
-    captured_ = false;
-}
-
-game::Input PlayerInput::gather(GLFWwindow* window, const Options& options) {
-    game::Input in;
-    auto down = [&](int key) { return glfwGetKey(window, key) == GLFW_PRESS; };
-    in.move_forward = (down(GLFW_KEY_W) || down(GLFW_KEY_UP) ? 1.0f : 0.0f) -
-                      (down(GLFW_KEY_S) || down(GLFW_KEY_DOWN) ? 1.0f : 0.0f);
-    in.move_right = (down(GLFW_KEY_D) || down(GLFW_KEY_RIGHT) ? 1.0f : 0.0f) -
-                    (down(GLFW_KEY_A) || down(GLFW_KEY_LEFT) ? 1.0f : 0.0f);
-    const bool jump = down(GLFW_KEY_SPACE);
-    const bool interact = down(GLFW_KEY_E);
-    const bool fire = captured_ && (glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS ||
-                                    glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS);
-    in.jump = jump; // held jump re-jumps on landing, as the reference
-    in.interact = interact && !interact_was_down_;
-    in.fire = fire && !fire_was_down_;
-    jump_was_down_ = jump;
-    interact_was_down_ = interact;
-    fire_was_down_ = fire;
-
-    if (captured_) {
+    // The click that resumed the game must not also fire; the jump to the locked cursor is no look.
+    state.clear_latches();
+    if (window) {
+        // The origin for the motion that follows, so that the very first movement already turns.
         double x = 0.0, y = 0.0;
         glfwGetCursorPos(window, &x, &y);
-        if (have_cursor_ && std::isfinite(x) && std::isfinite(y)) {
-            const float k = Options::kRadiansPerPixel * options.mouse_sensitivity;
-            in.look_yaw = -static_cast<float>(x - last_x_) * k;
-            in.look_pitch = -static_cast<float>(y - last_y_) * k * (options.invert_y ? -1.0f : 1.0f);
-        }
-        last_x_ = x;
-        last_y_ = y;
-        have_cursor_ = true;
+        state.cursor(x, y);
     }
+}
+
+void PlayerInput::release(GLFWwindow* window, InputState& state) {
+    if (window) {
+        if (glfwRawMouseMotionSupported()) glfwSetInputMode(window, GLFW_RAW_MOUSE_MOTION, GLFW_FALSE);
+        glfwSetInputMode(window, GLFW_CURSOR, GLFW_CURSOR_NORMAL);
+    }
+    captured_ = false;
+    state.clear_latches();
+}
+
+game::Input PlayerInput::gather(InputState& state, const Options& options) {
+    game::Input in;
+    // A tap shorter than a step still moves the player for one step.
+    auto axis = [&](int a, int b) {
+        const bool first = state.down_or_tapped(a), second = state.down_or_tapped(b); // both latches read
+        return first || second ? 1.0f : 0.0f;
+    };
+    in.move_forward = axis(GLFW_KEY_W, GLFW_KEY_UP) - axis(GLFW_KEY_S, GLFW_KEY_DOWN);
+    in.move_right = axis(GLFW_KEY_D, GLFW_KEY_RIGHT) - axis(GLFW_KEY_A, GLFW_KEY_LEFT);
+    in.jump = state.down_or_tapped(GLFW_KEY_SPACE); // held jump re-jumps on landing, as the reference
+    in.interact = state.take_press(GLFW_KEY_E);
+    const bool left = state.take_click(GLFW_MOUSE_BUTTON_LEFT);
+    const bool right = state.take_click(GLFW_MOUSE_BUTTON_RIGHT);
+    in.fire = captured_ && (left || right);
+
+    double dx = 0.0, dy = 0.0;
+    state.take_motion(dx, dy);
+    if (captured_ && std::isfinite(dx) && std::isfinite(dy))
+        look_from_motion(dx, dy, options, in.look_yaw, in.look_pitch);
     return in;
 }
 

@@ -73,9 +73,11 @@ MenuAction main_menu(const std::string& error, const render::Fonts& fonts, float
         ImGui::PushStyleVar(ImGuiStyleVar_FrameRounding, 6.0f * s);
         if (fonts.hud) ImGui::PushFont(fonts.hud);
         if (ImGui::Button("Options", ImVec2(155 * s, 52 * s))) action = MenuAction::Options;
+        ui::record_button("Options");
         ImGui::SameLine(x0 + 165 * s);
         ImGui::PushStyleColor(ImGuiCol_Button, IM_COL32(120, 130, 140, 255));
         if (ImGui::Button("Quit", ImVec2(155 * s, 52 * s))) action = MenuAction::Quit;
+        ui::record_button("Quit");
         ImGui::PopStyleColor();
         if (fonts.hud) ImGui::PopFont();
         ImGui::PopStyleVar();

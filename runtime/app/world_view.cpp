@@ -67,6 +67,7 @@ void WorldView::capture(const game::Game& game, Snapshot& s) const {
     s.eye = p.eye() - Vec3(0.0f, death.eye_drop, 0.0f);
     s.yaw = p.yaw;
     s.pitch = std::clamp(p.pitch + death.pitch, -kPi * 0.5f, kPi * 0.5f);
+    s.roll = death.roll; // the game's roll is render::Camera's (positive leans the head right)
     const auto robots = game.robots();
     s.robot_feet.resize(robots.size());
     s.robot_yaw.resize(robots.size());
@@ -179,6 +180,7 @@ void WorldView::fill(const game::Game& game, float alpha, float fov_degrees, con
         const Vec3 feet =
             have ? glm::mix(previous_.robot_feet[i], current_.robot_feet[i], a) : robots[i].feet;
         const float yaw = have ? current_.robot_yaw[i] : robots[i].model_yaw();
+        // model_yaw(): the level's yaw + 90°, because the model faces its local +X (game/game.h).
         const Mat4 root = glm::rotate(glm::translate(Mat4(1.0f), feet), yaw, Vec3(0, 1, 0));
         robot_binding_.apply(game.robot_pose(i), robot_pose_);
         // A robot just hit glows (its emissive parts flare) for the hit flash.
@@ -215,6 +217,7 @@ void WorldView::fill(const game::Game& game, float alpha, float fov_degrees, con
     camera_.position = glm::mix(previous_.eye, current_.eye, a);
     camera_.yaw = current_.yaw;
     camera_.pitch = current_.pitch;
+    camera_.roll = glm::mix(previous_.roll, current_.roll, a);
     camera_.fov_y = radians(std::clamp(fov_degrees, 30.0f, 120.0f));
     camera_.aspect = static_cast<float>(frame.width) / static_cast<float>(std::max(1, frame.height));
 

@@ -75,7 +75,7 @@ class WorldView {
 
     struct Snapshot {
         Vec3 eye{0.0f};
-        float yaw = 0.0f, pitch = 0.0f;
+        float yaw = 0.0f, pitch = 0.0f, roll = 0.0f;
         std::vector<Vec3> robot_feet;
         std::vector<float> robot_yaw;
     };

@@ -1,0 +1,132 @@
+#pragma once
+// `killswitch --input-script FILE`: keyboard and mouse events stamped with the frame they happen in, fed
+// through the same handlers as GLFW's callbacks (input_events.h), so PlayerInput and the ImGui menus see
+// them exactly as real input. With --screenshot the frames are a fixed 1/60 s, so a script is deterministic
+// whatever the machine's frame rate. Header-only so the tests parse scripts without a window.
+//
+//   # comment
+//   <frame> key <name> down|up|tap       keys: a-z, 0-9, space, escape, enter, tab, up, down, left, right
+//   <frame> mouse left|right down|up|click
+//   <frame> move <x> <y>                  the cursor to window pixel (x, y)
+//   <frame> look <dx> <dy>                move the cursor by (dx, dy) pixels (mouse look while captured)
+//   <frame> click <button label>          move onto the menu button with that label (drawn last frame), click
+//   <frame> quit                          end the program (exit 0)
+//
+// Frames count from 0 (the first frame the window draws) and must not decrease down the file.
+#include "core/result.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace ks::runtime {
+
+struct ScriptEvent {
+    enum class Kind { Key, Mouse, Move, Look, ClickButton, Quit };
+    long long frame = 0;
+    Kind kind = Kind::Key;
+    int code = 0;   // GLFW key or mouse button
+    int action = 0; // 1 down, 0 up, 2 tap / click (down then up)
+    double x = 0.0, y = 0.0;
+    std::string label; // ClickButton
+    int line = 0;      // for runtime errors ("input script line 7: no button 'Play' on this screen")
+};
+
+// GLFW key codes for the names above (checked against glfw3.h in input_events.cpp); -1 for unknown names.
+inline int script_key_code(const std::string& name) {
+    if (name.size() == 1 && name[0] >= 'a' && name[0] <= 'z') return 'A' + (name[0] - 'a');
+    if (name.size() == 1 && name[0] >= '0' && name[0] <= '9') return name[0];
+    if (name == "space") return 32;
+    if (name == "escape" || name == "esc") return 256;
+    if (name == "enter") return 257;
+    if (name == "tab") return 258;
+    if (name == "right") return 262;
+    if (name == "left") return 263;
+    if (name == "down") return 264;
+    if (name == "up") return 265;
+    return -1;
+}
+
+inline Result<std::vector<ScriptEvent>> parse_input_script(const std::string& text, const std::string& file) {
+    std::vector<ScriptEvent> events;
+    std::istringstream lines(text);
+    std::string line;
+    int number = 0;
+    long long last_frame = 0;
+    auto fail = [&](const std::string& what, const std::string& hint) -> Error {
+        return Error("input script: " + what, Location(file, number, 1), hint);
+    };
+    const std::string usage = "lines are '<frame> key <name> down|up|tap', '<frame> mouse left|right "
+                              "down|up|click', '<frame> move X Y', '<frame> look DX DY', '<frame> click "
+                              "<label>' or '<frame> quit'";
+    while (std::getline(lines, line)) {
+        ++number;
+        const auto hash = line.find('#');
+        if (hash != std::string::npos) line.erase(hash);
+        std::istringstream in(line);
+        std::string frame_text;
+        if (!(in >> frame_text)) continue; // blank or comment
+        ScriptEvent e;
+        e.line = number;
+        char* end = nullptr;
+        e.frame = std::strtoll(frame_text.c_str(), &end, 10);
+        if (end == frame_text.c_str() || *end != '\0' || e.frame < 0 || e.frame > 100000000)
+            return fail("'" + frame_text + "' is not a frame number", usage);
+        if (e.frame < last_frame)
+            return fail("frame " + frame_text + " comes after frame " + std::to_string(last_frame),
+                        "keep the events in frame order");
+        last_frame = e.frame;
+        std::string verb;
+        in >> verb;
+        auto action_of = [&](const std::string& word, const char* tap_word) {
+            if (word == "down") return 1;
+            if (word == "up") return 0;
+            if (word == tap_word) return 2;
+            return -1;
+        };
+        if (verb == "key") {
+            std::string name, act;
+            in >> name >> act;
+            e.kind = ScriptEvent::Kind::Key;
+            e.code = script_key_code(name);
+            e.action = action_of(act, "tap");
+            if (e.code < 0)
+                return fail("unknown key '" + name + "'",
+                            "keys: a-z, 0-9, space, escape, enter, tab, up, down, left, right");
+            if (e.action < 0) return fail("key action '" + act + "'", "use down, up or tap");
+        } else if (verb == "mouse") {
+            std::string button, act;
+            in >> button >> act;
+            e.kind = ScriptEvent::Kind::Mouse;
+            e.code = button == "left" ? 0 : button == "right" ? 1 : -1;
+            e.action = action_of(act, "click");
+            if (e.code < 0) return fail("unknown mouse button '" + button + "'", "use left or right");
+            if (e.action < 0) return fail("mouse action '" + act + "'", "use down, up or click");
+        } else if (verb == "move" || verb == "look") {
+            e.kind = verb == "move" ? ScriptEvent::Kind::Move : ScriptEvent::Kind::Look;
+            if (!(in >> e.x >> e.y) || !std::isfinite(e.x) || !std::isfinite(e.y) || std::abs(e.x) > 1e6 ||
+                std::abs(e.y) > 1e6)
+                return fail(verb + " needs two finite numbers (pixels)", usage);
+        } else if (verb == "click") {
+            e.kind = ScriptEvent::Kind::ClickButton;
+            std::getline(in, e.label);
+            const auto first = e.label.find_first_not_of(" \t");
+            const auto last = e.label.find_last_not_of(" \t\r");
+            e.label = first == std::string::npos ? "" : e.label.substr(first, last - first + 1);
+            if (e.label.empty()) return fail("click needs a button label", "e.g. '10 click Play'");
+        } else if (verb == "quit") {
+            e.kind = ScriptEvent::Kind::Quit;
+        } else {
+            return fail("unknown command '" + verb + "'", usage);
+        }
+        std::string extra;
+        if (e.kind != ScriptEvent::Kind::ClickButton && (in >> extra))
+            return fail("unexpected '" + extra + "' at the end of the line", usage);
+        events.push_back(std::move(e));
+    }
+    return events;
+}
+
+} // namespace ks::runtime
