@@ -25,6 +25,14 @@ inline double cpu_seconds() {
     return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
+// The machine's load average (1, 5, 15 min) as /proc/loadavg prints it: timings are printed beside it.
+inline std::string load_average() {
+    std::ifstream in("/proc/loadavg");
+    std::string a, b, c;
+    if (!(in >> a >> b >> c)) return "unknown";
+    return a + " " + b + " " + c;
+}
+
 inline std::filesystem::path bench_dir() {
     std::filesystem::path dir = std::filesystem::path(KS_SOURCE_DIR) / "docs" / "bench";
     std::error_code ec;
