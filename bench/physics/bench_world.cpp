@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 
 namespace ks::physics::bench {
 namespace {
@@ -85,8 +86,21 @@ int world_command(int argc, const char* const* argv) {
         }
         const double us = cpu / steps * 1e6;
         if (only) {
-            std::printf("%8d %14.1f %16.3f %18s %16.1f\n", n, us, us / n, "-",
-                        static_cast<double>(contacts) / steps);
+            // FNV-1a over the bits of every final position and velocity: equal hashes mean the step
+            // changed nothing (bit for bit) between two builds.
+            std::uint64_t hash = 1469598103934665603ull;
+            auto mix = [&](float v) {
+                std::uint32_t bits;
+                std::memcpy(&bits, &v, sizeof bits);
+                for (int k = 0; k < 4; ++k) hash = (hash ^ ((bits >> (8 * k)) & 0xffu)) * 1099511628211ull;
+            };
+            for (BodyId id : ids) {
+                const Vec3 p = w.transform(id).position, v = w.character(id).movement.velocity;
+                for (int k = 0; k < 3; ++k) mix(p[k]), mix(v[k]);
+            }
+            std::printf("%8d %14.1f %16.3f %18s %16.1f   state hash %016llx, load average %s\n", n, us,
+                        us / n, "-", static_cast<double>(contacts) / steps,
+                        static_cast<unsigned long long>(hash), load_average().c_str());
             return 0;
         }
 

@@ -154,6 +154,10 @@ void Bvh::build_wide() {
             }
         }
     };
+    auto first_slot = [&](std::uint32_t b) {
+        while (nodes_[b].count == 0) b = nodes_[b].left_or_first;
+        return nodes_[b].left_or_first;
+    };
     if (nodes_[0].count > 0) { // a single leaf: wrap it
         wide_.emplace_back();
         WideNode w;
@@ -182,6 +186,10 @@ void Bvh::build_wide() {
             kids[best] = nodes_[open].left_or_first;
             kids[count++] = nodes_[open].left_or_first + 1;
         }
+        // Children in slot order (left to right in the binary tree), so box queries visit leaf slots in
+        // ascending order whatever the width: the character controller sees its obstacles in that order.
+        std::sort(kids, kids + count,
+                  [&](std::uint32_t a, std::uint32_t b) { return first_slot(a) < first_slot(b); });
         WideNode w;
         fill(w, kids, count);
         wide_[job.wide] = w;

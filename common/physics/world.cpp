@@ -15,6 +15,10 @@ namespace ks::physics {
 
 namespace {
 constexpr std::uint32_t kNone = 0xffffffffu;
+bool contains(const Aabb& outer, const Aabb& inner) {
+    return outer.min.x <= inner.min.x && outer.min.y <= inner.min.y && outer.min.z <= inner.min.z &&
+           inner.max.x <= outer.max.x && inner.max.y <= outer.max.y && inner.max.z <= outer.max.z;
+}
 constexpr float kMaxCoordinate = 1e7f; // beyond this float spacing is > 1 unit: refuse instead of drifting
 } // namespace
 
@@ -25,15 +29,31 @@ class World::Obstacles final : public ObstacleSource {
     explicit Obstacles(const World& w) : world_(w) {}
     std::uint32_t self = kNone;
     std::uint32_t mask = 0;
+    StaticCache* cache = nullptr; // the character's static neighbourhood (null: query the BVH directly)
     void gather(const Aabb& region, std::vector<Obstacle>& out) const override {
         const World& w = world_;
-        w.static_bvh_.aabb_query(region, [&](std::uint32_t slot) {
+        auto add_static = [&](std::uint32_t slot) {
             const StaticPrim& p = w.static_prims_[slot];
             const Body& b = w.bodies_[p.body];
             if (p.enabled && (p.layers & mask) && b.bounds.overlaps(region))
                 out.push_back({&b.shape, b.transform, p.body, b.yaw_only, b.bounds});
             return true;
-        });
+        };
+        if (!cache) {
+            w.static_bvh_.aabb_query(region, add_static);
+        } else {
+            if (cache->epoch != w.static_epoch_ || !contains(cache->region, region)) {
+                cache->region = region.expanded(kStaticCacheMargin);
+                cache->epoch = w.static_epoch_;
+                cache->slots.clear();
+                w.static_bvh_.aabb_query(cache->region, [&](std::uint32_t slot) {
+                    if (w.bodies_[w.static_prims_[slot].body].bounds.overlaps(cache->region))
+                        cache->slots.push_back(slot);
+                    return true;
+                });
+            }
+            for (std::uint32_t slot : cache->slots) add_static(slot);
+        }
         w.movers_overlapping(region, [&](std::uint32_t index) {
             const Body& b = w.bodies_[index];
             if (index != self && b.enabled && !b.trigger && (b.layers & mask))
@@ -136,7 +156,7 @@ void World::remove(BodyId id) {
     }
     if (b->character_slot != kNone) {
         const std::uint32_t slot = b->character_slot;
-        characters_[slot] = characters_.back();
+        characters_[slot] = std::move(characters_.back());
         characters_.pop_back();
         if (slot < characters_.size()) bodies_[characters_[slot].body].character_slot = slot;
     }
@@ -289,6 +309,7 @@ void World::build_static() const {
     for (std::uint32_t leaf = 0; leaf < static_bvh_.leaves().size(); ++leaf)
         for (std::uint32_t k = 0; k < static_bvh_.leaves()[leaf].count; ++k)
             static_leaf_of_[static_bvh_.leaves()[leaf].first + k] = leaf;
+    ++static_epoch_;
     static_dirty_ = false;
 }
 
@@ -408,6 +429,7 @@ void World::step(float dt) {
         if (!b.enabled) continue;
         obstacles.self = cd.body;
         obstacles.mask = b.collides_with;
+        obstacles.cache = &cd.statics;
         move_character(obstacles, b.shape.radius, b.shape.half_height, cd.settings, cd.state,
                        b.transform.position, dt, scratch_);
         b.bounds = b.shape.bounds(b.transform);

@@ -164,10 +164,21 @@ class World {
         bool enabled = true;
         bool yaw_only = false;
     };
+    // The static bodies near a character, kept across steps: the BVH is queried for a box
+    // `kStaticCacheMargin` wider than the controller's region and asked again only when the region leaves
+    // that box or the static set is rebuilt. Reusing it gives exactly the obstacles (and order) a fresh query
+    // would: the slots are in BVH order and go through the same filters.
+    struct StaticCache {
+        Aabb region = Aabb::empty();
+        std::uint64_t epoch = 0;          // static_epoch_ it was gathered in (0: never)
+        std::vector<std::uint32_t> slots; // leaf slots whose bounds overlap `region`
+    };
+    static constexpr float kStaticCacheMargin = 1.0f;
     struct CharacterData {
         std::uint32_t body = 0;
         CharacterSettings settings;
         CharacterState state;
+        StaticCache statics;
     };
     class Obstacles;
     friend class Obstacles;
@@ -227,6 +238,7 @@ class World {
     bool ray_leaf(std::uint32_t leaf, const Ray& ray, const Vec3& inv, const float& max_t,
                   const RayFilter& filter, BoxHit&& box, OtherHit&& other) const;
     mutable bool static_dirty_ = true;
+    mutable std::uint64_t static_epoch_ = 0; // counts static rebuilds (invalidates the characters' caches)
     bool ray_static(const Ray& ray, const Vec3& inv_dir, const StaticPrim& prim, ShapeHit& hit) const;
     // Moving set (kinematic bodies, characters, kinematic triggers).
     std::vector<std::uint32_t> movers_;
