@@ -18,8 +18,8 @@ class InputState {
     static constexpr int kPress = 1;   // GLFW_PRESS
     static constexpr int kRelease = 0; // GLFW_RELEASE
 
-    void key(int key, int action) { record(keys_, pressed_keys_, key, kKeys, action); }
-    void button(int button, int action) { record(buttons_, pressed_buttons_, button, kButtons, action); }
+    void key(int key, int action) { record(slot(keys_, key), action); }
+    void button(int button, int action) { record(slot(buttons_, button), action); }
     // The cursor's position (window pixels; virtual and unbounded while captured).
     void cursor(double x, double y) {
         if (have_cursor_) {
@@ -31,11 +31,13 @@ class InputState {
         have_cursor_ = true;
     }
 
-    bool held(int key) const { return key >= 0 && key < kKeys && keys_[key]; }
-    bool button_held(int b) const { return b >= 0 && b < kButtons && buttons_[b]; }
+    bool held(int key) const { return key >= 0 && key < kKeys && keys_[static_cast<std::size_t>(key)].held; }
+    bool button_held(int b) const {
+        return b >= 0 && b < kButtons && buttons_[static_cast<std::size_t>(b)].held;
+    }
     // True once for each time the key went down since the last call (a tap shorter than a frame counts).
-    bool take_press(int key) { return take(pressed_keys_, key, kKeys); }
-    bool take_click(int b) { return take(pressed_buttons_, b, kButtons); }
+    bool take_press(int key) { return take(slot(keys_, key)); }
+    bool take_click(int b) { return take(slot(buttons_, b)); }
     // Held now, or tapped since the last take: what a per-step "is it down" question should see.
     bool down_or_tapped(int key) { return take_press(key) || held(key); }
     // Cursor motion since the last call, in pixels.
@@ -46,40 +48,47 @@ class InputState {
     }
     // Forget latches and motion (on capture/release: the click that resumed must not also fire).
     void clear_latches() {
-        pressed_keys_.fill(false);
-        pressed_buttons_.fill(false);
+        for (auto& k : keys_) k.pressed = false;
+        for (auto& b : buttons_) b.pressed = false;
         dx_ = dy_ = 0.0;
         have_cursor_ = false;
     }
     // Everything up (the window lost focus: releases will not arrive).
     void release_all() {
-        keys_.fill(false);
-        buttons_.fill(false);
+        keys_.fill({});
+        buttons_.fill({});
         clear_latches();
     }
 
   private:
+    struct Slot {
+        bool held = false;
+        bool pressed = false; // went down since the last take
+    };
+    // nullptr for GLFW_KEY_UNKNOWN (-1) and anything absurd.
     template <std::size_t N>
-    static void record(std::array<bool, N>& held, std::array<bool, N>& pressed, int code, int count,
-                       int action) {
-        if (code < 0 || code >= count) return; // GLFW_KEY_UNKNOWN (-1) and anything absurd
+    static Slot* slot(std::array<Slot, N>& slots, int code) {
+        return code >= 0 && static_cast<std::size_t>(code) < N ? &slots[static_cast<std::size_t>(code)]
+                                                               : nullptr;
+    }
+    static void record(Slot* s, int action) {
+        if (!s) return;
         if (action == kRelease) {
-            held[static_cast<std::size_t>(code)] = false;
+            s->held = false;
         } else if (action == kPress) {
-            if (!held[static_cast<std::size_t>(code)]) pressed[static_cast<std::size_t>(code)] = true;
-            held[static_cast<std::size_t>(code)] = true;
+            if (!s->held) s->pressed = true;
+            s->held = true;
         } // GLFW_REPEAT: still held, not a new press
     }
-    template <std::size_t N>
-    static bool take(std::array<bool, N>& pressed, int code, int count) {
-        if (code < 0 || code >= count) return false;
-        const bool was = pressed[static_cast<std::size_t>(code)];
-        pressed[static_cast<std::size_t>(code)] = false;
+    static bool take(Slot* s) {
+        if (!s) return false;
+        const bool was = s->pressed;
+        s->pressed = false;
         return was;
     }
 
-    std::array<bool, kKeys> keys_{}, pressed_keys_{};
-    std::array<bool, kButtons> buttons_{}, pressed_buttons_{};
+    std::array<Slot, kKeys> keys_{};
+    std::array<Slot, kButtons> buttons_{};
     double x_ = 0.0, y_ = 0.0, dx_ = 0.0, dy_ = 0.0;
     bool have_cursor_ = false;
 };
