@@ -54,11 +54,17 @@ class World::Obstacles final : public ObstacleSource {
             }
             for (std::uint32_t slot : cache->slots) add_static(slot);
         }
+        const std::size_t first_mover = out.size();
         w.movers_overlapping(region, [&](std::uint32_t index) {
             const Body& b = w.bodies_[index];
             if (index != self && b.enabled && !b.trigger && (b.layers & mask))
                 out.push_back({&b.shape, b.transform, index, b.yaw_only, b.bounds});
         });
+        // Movers in body order, not the grid's visiting order: what the controller does (which contact wins
+        // a tie) then does not depend on the grid's cell size. Usually zero to two entries.
+        for (std::size_t i = first_mover + 1; i < out.size(); ++i)
+            for (std::size_t j = i; j > first_mover && out[j - 1].id > out[j].id; --j)
+                std::swap(out[j - 1], out[j]);
     }
 
   private:

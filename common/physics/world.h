@@ -245,7 +245,7 @@ class World {
     // Movers' broadphase: a hash grid over x/z rebuilt each step from the bounds at the start of the step
     // (counting sort: no allocation once warm). Queries widen their box by how far a mover can travel in
     // the step, so a mover's current bounds are always found.
-    static constexpr float kCell = 4.0f;        // a power of two: cell_of multiplies by its exact reciprocal
+    static constexpr float kCell = 8.0f;        // a power of two: cell_of multiplies by its exact reciprocal
     std::vector<std::uint32_t> grid_start_;     // bucket -> first entry in grid_items_ (size buckets + 1)
     std::vector<std::uint32_t> grid_items_;     // body indices, bucket by bucket
     std::vector<std::uint32_t> grid_oversized_; // movers spanning too many cells: always visited
