@@ -119,6 +119,38 @@ TEST_CASE("play by script: menu click, walk, pickup, light, door, aim, shoot, pa
     CHECK(test::read_status(status_again).text == s.text);
 }
 
+TEST_CASE("play by script on levels/main.json: Play, walk to the first door, E opens it, Esc, Resume") {
+    if (!test::have_display()) return;
+    test::ScratchDir dir;
+    // --warp without --screen puts the player in room 1, 8 units before door 1, once the level has loaded.
+    write(dir / "main.txt", R"(20 click Play
+24 key w down
+36 key w up
+38 key e tap
+72 key escape tap
+80 click Resume
+)");
+    const auto status_file = dir / "status.txt";
+    auto run = test::run_command(
+        "env XDG_CONFIG_HOME=" + (dir / "config").string() + " " + (test::bin_dir() / "killswitch").string() +
+        " --width 320 --height 180 --level " + (test::source_dir() / "levels" / "main.json").string() +
+        " --warp 0,0,-22,0,0 --input-script " + (dir / "main.txt").string() + " --status-file " +
+        status_file.string() + " --screenshot " + (dir / "main.png").string() + " --frames 90");
+    INFO(run.output);
+    REQUIRE(run.exit_code == 0);
+    const Status s = test::read_status(status_file);
+    INFO(s.text);
+    REQUIRE(s.valid);
+    CHECK(s.screen == "playing");
+    CHECK(s.captured);
+    CHECK_FALSE(s.paused);
+    CHECK(s.feet[2] == doctest::Approx(-25.0).epsilon(0.01)); // 12 frames of W: 3 units
+    CHECK(s.doors.at(23) == doctest::Approx(1.0));            // door 1 open
+    CHECK(s.doors.at(24) == doctest::Approx(0.0));            // door 2 untouched
+    CHECK(s.caption == "Press E to close the door");
+    CHECK(s.health == doctest::Approx(100.0));
+}
+
 TEST_CASE("play by script: a click on a button that is not there fails with the line and the screen") {
     if (!test::have_display()) return;
     test::ScratchDir dir;
