@@ -357,31 +357,31 @@ void World::index_movers(float dt) {
     grid_mask_ = buckets - 1;
     grid_count_.assign(buckets + 1, 0);
     grid_oversized_.clear();
-    auto for_cells = [&](const Aabb& b, auto&& fn) {
-        const int x0 = cell_of(b.min.x, kCell), x1 = cell_of(b.max.x, kCell);
-        const int z0 = cell_of(b.min.z, kCell), z1 = cell_of(b.max.z, kCell);
-        for (int x = x0; x <= x1; ++x)
-            for (int z = z0; z <= z1; ++z) fn(cell_hash(x, z) & grid_mask_);
-    };
-    auto cells = [&](const Aabb& b) {
+    // Each mover's cell range, computed once for both passes (x0 > x1 marks an oversized mover).
+    mover_cells_.resize(movers_.size());
+    for (std::size_t i = 0; i < movers_.size(); ++i) {
+        const Aabb& b = bodies_[movers_[i]].bounds;
         const double nx = std::floor(b.max.x * (1.0f / kCell)) - std::floor(b.min.x * (1.0f / kCell)) + 1.0;
         const double nz = std::floor(b.max.z * (1.0f / kCell)) - std::floor(b.min.z * (1.0f / kCell)) + 1.0;
-        return nx * nz;
-    };
-    for (std::uint32_t index : movers_) {
-        const Aabb& b = bodies_[index].bounds;
-        if (cells(b) > kMaxCellsPerMover)
-            grid_oversized_.push_back(index);
-        else
-            for_cells(b, [&](std::uint32_t k) { ++grid_count_[k + 1]; });
+        CellRange& r = mover_cells_[i];
+        if (nx * nz > kMaxCellsPerMover) {
+            r = {1, 0, 0, 0};
+            grid_oversized_.push_back(movers_[i]);
+            continue;
+        }
+        r = {cell_of(b.min.x, kCell), cell_of(b.max.x, kCell), cell_of(b.min.z, kCell),
+             cell_of(b.max.z, kCell)};
+        for (int x = r.x0; x <= r.x1; ++x)
+            for (int z = r.z0; z <= r.z1; ++z) ++grid_count_[(cell_hash(x, z) & grid_mask_) + 1];
     }
     for (std::uint32_t k = 0; k < buckets; ++k) grid_count_[k + 1] += grid_count_[k];
     grid_start_.assign(grid_count_.begin(), grid_count_.end());
     grid_items_.resize(grid_count_[buckets]);
-    for (std::uint32_t index : movers_) { // fill in mover order: deterministic
-        const Aabb& b = bodies_[index].bounds;
-        if (cells(b) <= kMaxCellsPerMover)
-            for_cells(b, [&](std::uint32_t k) { grid_items_[grid_count_[k]++] = index; });
+    for (std::size_t i = 0; i < movers_.size(); ++i) { // fill in mover order: deterministic
+        const CellRange& r = mover_cells_[i];
+        for (int x = r.x0; x <= r.x1; ++x)
+            for (int z = r.z0; z <= r.z1; ++z)
+                grid_items_[grid_count_[cell_hash(x, z) & grid_mask_]++] = movers_[i];
     }
     if (grid_stamp_.size() < bodies_.size()) grid_stamp_.resize(bodies_.size(), 0);
     grid_valid_ = true;

@@ -250,6 +250,10 @@ class World {
     std::vector<std::uint32_t> grid_items_;     // body indices, bucket by bucket
     std::vector<std::uint32_t> grid_oversized_; // movers spanning too many cells: always visited
     std::vector<std::uint32_t> grid_count_;
+    struct CellRange {
+        int x0, x1, z0, z1;
+    };
+    std::vector<CellRange> mover_cells_;            // by position in movers_, rebuilt each step
     mutable std::vector<std::uint32_t> grid_stamp_; // by body index: last query that visited it
     mutable std::uint32_t grid_query_ = 0;
     std::uint32_t grid_mask_ = 0;
