@@ -129,7 +129,12 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
             break;
         }
         case EntityType::Robot:
-            scene->props_.push_back(make_prop(e, &assets.model("robot"), m));
+            // The model faces its local +X (conventions.md); a level yaw of 0 faces -z (level-format.md).
+            // A quarter turn first puts +X on -z, so the robot faces the entity's forward, as in the game
+            // view (game::robot_model_yaw: yaw + 90°, the reference's rotY). Tested by
+            // tests/runtime/test_play_views.cpp (both views draw a robot alike).
+            scene->props_.push_back(make_prop(
+                e, &assets.model("robot"), m * glm::rotate(Mat4(1.0f), kPi * 0.5f, Vec3(0, 1, 0))));
             break;
         case EntityType::Pickup: {
             const auto& k = e.as<level::PickupProps>();
