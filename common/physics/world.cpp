@@ -306,6 +306,13 @@ void World::build_static() const {
                 bp.hx[k] = p.half.x, bp.hy[k] = p.half.y, bp.hz[k] = p.half.z;
                 bp.boxes |= 1u << k;
             } else {
+                // Anything else gets its world bounds, padded like the BVH's node boxes, as a conservative
+                // prefilter: the lane's own test runs only when the ray enters these bounds.
+                const Aabb& wb = bodies_[p.body].bounds;
+                const Vec3 c = wb.centre(), e = (wb.max - wb.min) * 0.5f;
+                const Vec3 h = e + (glm::abs(c) + e) * 2e-6f + Vec3(1e-5f);
+                bp.cx[k] = c.x, bp.cy[k] = c.y, bp.cz[k] = c.z;
+                bp.hx[k] = h.x, bp.hy[k] = h.y, bp.hz[k] = h.z;
                 bp.others |= 1u << k;
             }
         }
@@ -566,7 +573,7 @@ bool World::ray_leaf(std::uint32_t leaf, const Ray& ray, const Vec3& inv, const 
                      const RayFilter& filter, BoxHit&& box, OtherHit&& other) const {
     const BoxPacket& bp = static_packets_[leaf];
     alignas(16) float tmin[4], lox[4], loy[4];
-    std::uint32_t lanes = (packet_slab(bp, ray.origin, inv, max_t, tmin, lox, loy) & bp.boxes) | bp.others;
+    std::uint32_t lanes = packet_slab(bp, ray.origin, inv, max_t, tmin, lox, loy) & (bp.boxes | bp.others);
     while (lanes) {
         const int k = std::countr_zero(lanes);
         lanes &= lanes - 1;

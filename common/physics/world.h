@@ -220,20 +220,22 @@ class World {
     // Each BVH leaf's static prims as one packet (leaves hold at most four), axis-aligned boxes lane-wise
     // (centre, half extents) with the filter data rays need, so a ray tests a leaf with one SIMD slab test
     // doing exactly the float operations of ray_centred_aabb (same hits, same distances) and takes the hit
-    // of a box lane from the lanes; rotated boxes, wedges and hulls run their scalar test.
+    // of a box lane from the lanes; rotated boxes, wedges and hulls run their scalar test when the ray
+    // enters their (padded) world bounds.
     struct alignas(16) BoxPacket {
         float cx[4], cy[4], cz[4], hx[4], hy[4], hz[4];
         std::uint32_t layers[4];  // the body's layers; 0 while it is disabled (no filter matches)
         std::uint32_t body[4];    // body index
         std::uint32_t first_slot; // lane k is leaf slot first_slot + k
         std::uint32_t boxes = 0;  // lanes holding an axis-aligned box
-        std::uint32_t others = 0; // lanes holding anything else
+        std::uint32_t others = 0; // lanes holding anything else (cx.. hz: their padded world bounds)
     };
     mutable std::vector<BoxPacket> static_packets_;     // by BVH leaf
     mutable std::vector<std::uint32_t> static_leaf_of_; // leaf slot -> its BVH leaf (packet)
     // Calls box(k, distance, normal) for the box lanes of `leaf` the ray enters within max_t (re-checked
-    // against max_t, which the callbacks may shrink) and other(k) for its other lanes, in lane order, both
-    // only for lanes whose layers and body pass `filter`; stops when a callback returns false.
+    // against max_t, which the callbacks may shrink) and other(slot) for its other lanes the ray enters the
+    // padded bounds of, in lane order, both only for lanes whose layers and body pass `filter`; stops when a
+    // callback returns false.
     template <class BoxHit, class OtherHit>
     bool ray_leaf(std::uint32_t leaf, const Ray& ray, const Vec3& inv, const float& max_t,
                   const RayFilter& filter, BoxHit&& box, OtherHit&& other) const;
