@@ -192,7 +192,11 @@ TEST_CASE("play with real X input (xdotool): the same play-through, waiting on t
 
     // The window, focused so that keys go to it (Xvfb has no window manager to do it).
     bool ok = false;
-    const std::string window = xdotool("search --sync --onlyvisible --name '^Killswitch$'", &ok);
+    // `search --sync` waits for the window forever; `timeout` bounds it if the game failed to start.
+    const std::string window =
+        test::run_command("timeout 60 xdotool search --sync --onlyvisible --name '^Killswitch$'").output;
+    ok = !window.empty() && window.find_first_not_of("0123456789\n") == std::string::npos;
+    INFO(game.log());
     INFO("xdotool search: ", window);
     REQUIRE(ok);
     const std::string w = window.substr(0, window.find('\n'));
