@@ -42,17 +42,28 @@ class World::Obstacles final : public ObstacleSource {
         if (!cache) {
             w.static_bvh_.aabb_query(region, add_static);
         } else {
-            if (cache->epoch != w.static_epoch_ || !contains(cache->region, region)) {
+            // Valid while the static set is the same and the bodies have not moved in memory (the cached
+            // obstacles point at their shapes).
+            if (cache->epoch != w.static_epoch_ || cache->bodies != w.bodies_.data() ||
+                !contains(cache->region, region)) {
                 cache->region = region.expanded(kStaticCacheMargin);
                 cache->epoch = w.static_epoch_;
-                cache->slots.clear();
+                cache->bodies = w.bodies_.data();
+                cache->entries.clear();
                 w.static_bvh_.aabb_query(cache->region, [&](std::uint32_t slot) {
-                    if (w.bodies_[w.static_prims_[slot].body].bounds.overlaps(cache->region))
-                        cache->slots.push_back(slot);
+                    const StaticPrim& p = w.static_prims_[slot];
+                    const Body& b = w.bodies_[p.body];
+                    if (b.bounds.overlaps(cache->region))
+                        cache->entries.push_back(
+                            {{&b.shape, b.transform, p.body, b.yaw_only, b.bounds}, slot});
                     return true;
                 });
             }
-            for (std::uint32_t slot : cache->slots) add_static(slot);
+            for (const StaticCache::Entry& e : cache->entries) {
+                const StaticPrim& p = w.static_prims_[e.slot]; // enabled may change between steps
+                if (p.enabled && (p.layers & mask) && e.obstacle.bounds.overlaps(region))
+                    out.push_back(e.obstacle);
+            }
         }
         const std::size_t first_mover = out.size();
         w.movers_overlapping(region, [&](std::uint32_t index) {

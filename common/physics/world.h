@@ -166,12 +166,18 @@ class World {
     };
     // The static bodies near a character, kept across steps: the BVH is queried for a box
     // `kStaticCacheMargin` wider than the controller's region and asked again only when the region leaves
-    // that box or the static set is rebuilt. Reusing it gives exactly the obstacles (and order) a fresh query
-    // would: the slots are in BVH order and go through the same filters.
+    // that box, the static set is rebuilt or the body array has moved (the cached obstacles point at the
+    // bodies' shapes). Reusing it gives exactly the obstacles (and order) a fresh query would: the entries
+    // are in slot order and go through the same filters (enabled, layers, the region itself).
     struct StaticCache {
+        struct Entry {
+            Obstacle obstacle; // as gather hands it to the controller
+            std::uint32_t slot;
+        };
         Aabb region = Aabb::empty();
-        std::uint64_t epoch = 0;          // static_epoch_ it was gathered in (0: never)
-        std::vector<std::uint32_t> slots; // leaf slots whose bounds overlap `region`
+        std::uint64_t epoch = 0;      // static_epoch_ it was gathered in (0: never)
+        const void* bodies = nullptr; // bodies_.data() then (the obstacles point into bodies_)
+        std::vector<Entry> entries;   // static bodies whose bounds overlap `region`, in slot order
     };
     static constexpr float kStaticCacheMargin = 1.0f;
     struct CharacterData {

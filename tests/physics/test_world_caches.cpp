@@ -148,3 +148,32 @@ TEST_CASE("characters running through the 2k-box level: same positions whether t
     }
     CHECK(moved > static_cast<int>(ca.size()) / 2);
 }
+
+TEST_CASE("bodies added while characters hold cached neighbourhoods (the body array grows and moves)") {
+    // The cached obstacles point at the static bodies' shapes inside the world's body array; adding
+    // hundreds of movers and triggers reallocates it, which must invalidate the caches (AddressSanitizer
+    // builds turn a stale pointer into a failure; here the character must also keep standing).
+    World w;
+    add_floor(w);
+    add_box(w, {6, 2, 0}, {1, 2, 1}); // a crate beside the path
+    const BodyId p = add_player(w, {0, 0, 0});
+    for (int i = 0; i < 30; ++i) w.step(1.0f / 120.0f);
+    REQUIRE(w.character(p).grounded);
+    for (int round = 0; round < 6; ++round) {
+        for (int i = 0; i < 200; ++i) {
+            BodyDesc t;
+            t.shape = Shape::box({0.5f, 0.5f, 0.5f});
+            t.transform.position = {100.0f + static_cast<float>(i), 0.5f, 100.0f + static_cast<float>(round)};
+            t.motion = Motion::Kinematic;
+            t.trigger = true;
+            REQUIRE(w.add(t, "pickup").ok());
+        }
+        w.character(p).movement.velocity = {10, 0, 0}; // toward the crate
+        for (int i = 0; i < 20; ++i) w.step(1.0f / 120.0f);
+        CHECK(w.character(p).grounded);
+        CHECK(std::abs(feet_y(w, p)) < 0.05f);
+    }
+    // Stopped by the crate (front face at x = 5, capsule radius 1).
+    CHECK(w.transform(p).position.x <= 4.0f + 1e-3f);
+    CHECK(w.transform(p).position.x >= 3.9f);
+}
