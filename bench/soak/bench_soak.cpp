@@ -120,14 +120,14 @@ int run(int argc, const char* const* argv) {
         std::printf("\n%s level (%zu entities)%s\n", name.c_str(), lv.entities.size(),
                     options.immortal ? ", player immortal, one game (idle after the bot wins)"
                                      : ", a new round whenever the bot wins or dies");
-        std::printf("%8s %9s %9s %9s %7s %8s %7s %6s %6s %8s\n", "sim min", "RSS MiB", "dRSS KiB", "CPU s",
-                    "alive", "engaged", "moving", "shots", "kills", "phase");
+        std::printf("%8s %9s %9s %9s %7s %8s %7s %6s %6s %5s %9s %8s\n", "sim min", "RSS MiB", "dRSS KiB",
+                    "CPU s", "alive", "engaged", "moving", "shots", "kills", "ammo", "to panel", "phase");
         long first_rss = -1;
         auto row = [&](const soak::SoakSample& s) {
             if (first_rss < 0) first_rss = s.rss_kib;
-            std::printf("%8.1f %9.2f %9ld %9.2f %7d %8d %7d %6d %6d %8s\n", s.sim_time / 60.0,
+            std::printf("%8.1f %9.2f %9ld %9.2f %7d %8d %7d %6d %6d %5d %9.1f %8s\n", s.sim_time / 60.0,
                         s.rss_kib / 1024.0, s.rss_kib - first_rss, s.cpu_s, s.robots_alive, s.robots_engaged,
-                        s.robots_moving, s.shots, s.kills, phase_name(s.phase));
+                        s.robots_moving, s.shots, s.kills, s.ammo, s.to_panel, phase_name(s.phase));
             std::fflush(stdout);
             csv_rows.push_back(name + "," + ks::physics::bench::fmt("%.1f", s.sim_time / 60.0) + "," +
                                std::to_string(s.rss_kib) + "," + ks::physics::bench::fmt("%.3f", s.cpu_s) +

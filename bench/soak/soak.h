@@ -156,7 +156,8 @@ struct SoakSample {
     int robots_alive = 0;
     int robots_engaged = 0; // alert, chasing, aiming or shooting
     int robots_moving = 0;  // horizontal velocity this step
-    int shots = 0, kills = 0;
+    int shots = 0, kills = 0, ammo = 0;
+    float to_panel = -1.0f; // the player's horizontal distance to the control panel (the bot's goal)
     game::Phase phase = game::Phase::Playing;
 };
 
@@ -222,7 +223,10 @@ SoakResult run_soak(const level::Level& level, const SoakOptions& options, OnSam
     SoakResult result;
     game::GameOptions game_options;
     game_options.seed = options.seed;
-    if (options.immortal) game_options.settings.max_health = game_options.settings.start_health = 1e9f;
+    if (options.immortal) { // and with ammo to match, or the bot's 150 rounds are gone in the first minute
+        game_options.settings.max_health = game_options.settings.start_health = 1e9f;
+        game_options.settings.max_ammo = game_options.settings.start_ammo = 1000000;
+    }
     std::unique_ptr<game::Game> g;
     std::unique_ptr<game::Autoplay> bot;
     auto new_round = [&]() -> bool {
@@ -258,6 +262,11 @@ SoakResult run_soak(const level::Level& level, const SoakOptions& options, OnSam
         }
         s.shots = g->player().shots;
         s.kills = g->robots_killed();
+        s.ammo = g->player().ammo;
+        if (!g->panels().empty()) {
+            const Vec3 d = g->panels().front().centre - g->player().feet;
+            s.to_panel = std::sqrt(d.x * d.x + d.z * d.z);
+        }
         s.phase = g->phase();
         result.samples.push_back(s);
         on_sample(s);

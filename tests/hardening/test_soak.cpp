@@ -86,6 +86,8 @@ TEST_CASE("soak: the generated large level (112 robots in 28 rooms) runs a simul
     // The world is busy: robots wander (idle robots drive about), and the bot fights its way.
     CHECK(last.robots_moving > 20);
     CHECK(last.shots > 0);
+    // Immortal and with ammo, the bot fights its way through the rooms and doors to the panel (46 s).
+    CHECK(r.outcome == "win");
 }
 
 TEST_CASE("soak: a level that cannot be built is reported, not crashed on") {
