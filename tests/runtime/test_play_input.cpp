@@ -10,6 +10,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -107,6 +108,36 @@ TEST_CASE("play by script: menu click, walk, pickup, light, door, aim, shoot, pa
             light += p[0] > 200 && p[1] > 205 && p[2] > 205 ? 1 : 0;
         }
     CHECK(light > img.width * img.height / 9 / 5);
+
+    // The HUD follows: the ammo bar's orange part grows by 200/150 between the start (frame 24) and after the
+    // pickup (frame 60), measured on the same script's screenshots.
+    auto orange_extent = [&](int frames) {
+        const auto png = dir / ("hud" + std::to_string(frames) + ".png");
+        auto r = test::run_command("env XDG_CONFIG_HOME=" + (dir / "config").string() + " " +
+                                   (test::bin_dir() / "killswitch").string() +
+                                   " --width 480 --height 270 --level " + (dir / "level.json").string() +
+                                   " --input-script " + (dir / "play.txt").string() + " --screenshot " +
+                                   png.string() + " --frames " + std::to_string(frames));
+        const auto hud = test::load_png(png);
+        int widest = 0;
+        // The top-left quarter holds the three bars; the ammo bar is the only orange one.
+        for (int y = 0; y < hud.height / 4; ++y) {
+            int first = -1, last = -1;
+            for (int x = 0; x < hud.width / 2; ++x) {
+                const unsigned char* p = hud.at(x, y);
+                if (p[0] > 180 && p[1] > 100 && p[1] < 200 && p[2] < 90) {
+                    if (first < 0) first = x;
+                    last = x;
+                }
+            }
+            if (first >= 0) widest = std::max(widest, last - first + 1);
+        }
+        return r.exit_code == 0 ? widest : -1;
+    };
+    const int at_start = orange_extent(24), after_pickup = orange_extent(60);
+    MESSAGE("ammo bar orange: ", at_start, " px at 150, ", after_pickup, " px at 200");
+    REQUIRE(at_start > 10);
+    CHECK(static_cast<double>(after_pickup) / at_start == doctest::Approx(200.0 / 150.0).epsilon(0.06));
 
     // Deterministic: the same script gives the same game, step for step.
     const auto status_again = dir / "status2.txt";
