@@ -1,7 +1,8 @@
 #pragma once
 // A static bounding-volume hierarchy over AABBs, built once with the surface-area heuristic (binned, 32
-// bins on the widest centroid axis), stored as one contiguous array of 32-byte nodes. Queries allocate
-// nothing: traversal uses a fixed stack; the caller's visitor is inlined (templates).
+// bins on the widest centroid axis, leaves of at most 4 items), then collapsed into one contiguous array of
+// 8-wide nodes for queries. Queries allocate nothing: traversal uses a fixed stack; the caller's visitor is
+// inlined (templates). Ray traversal runs an AVX2 or a portable kernel (see RayKernel).
 #include "physics/ray.h"
 #include "physics/shapes.h"
 
