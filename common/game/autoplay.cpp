@@ -80,8 +80,9 @@ Input Autoplay::decide(const Game& game) {
     since_plan_ += dt;
     float yaw_error = 0.0f, pitch_error = 0.0f;
 
-    // Fight: the nearest robot in sight.
-    if (const int target = pick_target(game); target >= 0) {
+    // Fight: the nearest robot in sight — with ammo. Without, fighting is standing still (the soak found the
+    // bot aiming at robots for an hour with an empty rifle): it ignores robots and heads for the panel.
+    if (const int target = p.ammo > 0 ? pick_target(game) : -1; target >= 0) {
         const Robot& r = game.robots()[static_cast<std::size_t>(target)];
         const Vec3 centre = r.feet + Vec3(0, 1.5f, 0);
         aim_at(game, centre, in, yaw_error, pitch_error);
