@@ -114,7 +114,7 @@ Status read_status(const std::filesystem::path& file) {
 }
 
 GameProcess::GameProcess(const std::vector<std::string>& args, const std::filesystem::path& log,
-                         const std::filesystem::path& config_dir)
+                         const std::filesystem::path& config_dir, const std::string& display)
     : log_(log) {
     const std::string exe = (bin_dir() / "killswitch").string();
     std::vector<std::string> argv_store = {exe};
@@ -128,6 +128,7 @@ GameProcess::GameProcess(const std::vector<std::string>& args, const std::filesy
             ::close(fd);
         }
         ::setenv("XDG_CONFIG_HOME", config_dir.c_str(), 1);
+        if (!display.empty()) ::setenv("DISPLAY", display.c_str(), 1);
         std::vector<char*> argv;
         for (auto& a : argv_store) argv.push_back(a.data());
         argv.push_back(nullptr);
@@ -171,8 +172,52 @@ bool have_xdotool() {
     return run_command("command -v xdotool").exit_code == 0;
 }
 
-std::string xdotool(const std::string& args, bool* ok) {
-    auto r = run_command("xdotool " + args);
+PrivateDisplay::PrivateDisplay() {
+    const char* current = std::getenv("DISPLAY");
+    name_ = current ? current : "";
+    if (run_command("command -v Xvfb").exit_code != 0) return;
+    int fds[2];
+    if (::pipe(fds) != 0) return;
+    pid_ = ::fork();
+    if (pid_ == 0) {
+        ::close(fds[0]);
+        const int null = ::open("/dev/null", O_WRONLY);
+        if (null >= 0) {
+            ::dup2(null, 1);
+            ::dup2(null, 2);
+        }
+        const std::string fd = std::to_string(fds[1]);
+        ::execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1280x720x24", "-nolisten", "tcp",
+                 "-noreset", static_cast<char*>(nullptr));
+        std::_Exit(127);
+    }
+    ::close(fds[1]);
+    // The server writes its display number once it accepts connections.
+    std::string number;
+    char c = 0;
+    while (::read(fds[0], &c, 1) == 1 && c != '\n') number += c;
+    ::close(fds[0]);
+    if (pid_ > 0 && !number.empty()) {
+        name_ = ":" + number;
+    } else {
+        if (pid_ > 0) {
+            ::kill(pid_, SIGTERM);
+            ::waitpid(pid_, nullptr, 0);
+        }
+        pid_ = -1;
+    }
+}
+
+PrivateDisplay::~PrivateDisplay() {
+    if (pid_ > 0) {
+        ::kill(pid_, SIGTERM);
+        ::waitpid(pid_, nullptr, 0);
+    }
+}
+
+std::string xdotool(const std::string& args, bool* ok, const std::string& display) {
+    auto r =
+        run_command((display.empty() ? std::string() : "env DISPLAY=" + display + " ") + "xdotool " + args);
     if (ok) *ok = r.exit_code == 0;
     while (!r.output.empty() && (r.output.back() == '\n' || r.output.back() == ' ')) r.output.pop_back();
     return r.output;

@@ -40,8 +40,9 @@ Status read_status(const std::filesystem::path& file);
 // killswitch running in the background with its output in a log file; killed when the object dies.
 class GameProcess {
   public:
+    // `display`: the X display to open (e.g. ":42"); empty keeps $DISPLAY.
     GameProcess(const std::vector<std::string>& args, const std::filesystem::path& log,
-                const std::filesystem::path& config_dir);
+                const std::filesystem::path& config_dir, const std::string& display = "");
     ~GameProcess();
     GameProcess(const GameProcess&) = delete;
     GameProcess& operator=(const GameProcess&) = delete;
@@ -49,6 +50,7 @@ class GameProcess {
     // Waits for the process to end (up to `seconds`); returns its exit code or -1.
     int wait(double seconds);
     std::string log() const;
+    pid_t pid() const { return pid_; }
 
   private:
     pid_t pid_ = -1;
@@ -56,8 +58,26 @@ class GameProcess {
     std::filesystem::path log_;
 };
 
+// An X server of the test's own (Xvfb, display number chosen by the server), so that no other test's window
+// takes the keyboard focus while real key events are sent (ctest runs the GL tests in parallel on one
+// display, and every new GLFW window takes the focus). Falls back to $DISPLAY when Xvfb cannot start.
+class PrivateDisplay {
+  public:
+    PrivateDisplay();
+    ~PrivateDisplay();
+    PrivateDisplay(const PrivateDisplay&) = delete;
+    PrivateDisplay& operator=(const PrivateDisplay&) = delete;
+    const std::string& name() const { return name_; } // ":N", or $DISPLAY
+    bool own() const { return pid_ > 0; }
+
+  private:
+    pid_t pid_ = -1;
+    std::string name_;
+};
+
 bool have_xdotool();
-// Runs "xdotool ARGS"; returns its output (trimmed). `ok` is set from the exit code.
-std::string xdotool(const std::string& args, bool* ok = nullptr);
+// Runs "xdotool ARGS" on `display` (empty: $DISPLAY); returns its output (trimmed). `ok` is set from the
+// exit code.
+std::string xdotool(const std::string& args, bool* ok = nullptr, const std::string& display = "");
 
 } // namespace ks::test

@@ -216,22 +216,29 @@ TEST_CASE("play with real X input (xdotool): the same play-through, waiting on t
     test::ScratchDir dir;
     write(dir / "level.json", test::corridor_level_json());
     const auto status_file = dir / "status.txt";
+    // A display of its own: no other test's window can take the keyboard focus mid-walk.
+    const test::PrivateDisplay display;
+    const std::string where = display.name() + (display.own() ? " (own Xvfb)" : " (shared display)");
+    MESSAGE("xdotool play on display ", where);
+    auto xdo = [&](const std::string& args) { return xdotool(args, nullptr, display.name()); };
     test::GameProcess game({"--width", "480", "--height", "270", "--level", (dir / "level.json").string(),
                             "--status-file", status_file.string()},
-                           dir / "log.txt", dir / "config");
+                           dir / "log.txt", dir / "config", display.name());
     auto fail_info = [&](const Status& s) { return s.text + "\n--- log ---\n" + game.log(); };
 
     // The window, focused so that keys go to it (Xvfb has no window manager to do it).
     bool ok = false;
     // `search --sync` waits for the window forever; `timeout` bounds it if the game failed to start.
-    const std::string window =
-        test::run_command("timeout 60 xdotool search --sync --onlyvisible --name '^Killswitch$'").output;
+    const std::string window = test::run_command("env DISPLAY=" + display.name() +
+                                                 " timeout 60 xdotool search --sync --onlyvisible --pid " +
+                                                 std::to_string(game.pid()))
+                                   .output;
     ok = !window.empty() && window.find_first_not_of("0123456789\n") == std::string::npos;
     INFO(game.log());
     INFO("xdotool search: ", window);
     REQUIRE(ok);
     const std::string w = window.substr(0, window.find('\n'));
-    xdotool("windowfocus --sync " + w);
+    xdo("windowfocus --sync " + w);
 
     // Main menu: click Play where it is drawn.
     Status s = wait_for(game, status_file, [](const Status& st) { return st.buttons.count("Play") > 0; });
@@ -239,9 +246,9 @@ TEST_CASE("play with real X input (xdotool): the same play-through, waiting on t
     REQUIRE(s.valid);
     auto click_button = [&](const Status& st, const std::string& label) {
         const auto& b = st.buttons.at(label);
-        xdotool("mousemove --window " + w + " " + std::to_string(static_cast<int>((b.x0 + b.x1) / 2)) + " " +
-                std::to_string(static_cast<int>((b.y0 + b.y1) / 2)));
-        xdotool("click 1");
+        xdo("mousemove --window " + w + " " + std::to_string(static_cast<int>((b.x0 + b.x1) / 2)) + " " +
+            std::to_string(static_cast<int>((b.y0 + b.y1) / 2)));
+        xdo("click 1");
     };
     click_button(s, "Play");
     s = wait_for(game, status_file, [](const Status& st) { return st.screen == "playing" && st.captured; });
@@ -254,14 +261,14 @@ TEST_CASE("play with real X input (xdotool): the same play-through, waiting on t
 
     // Mouse look: 100 px to the right turns right (yaw decreases) by 100 px worth, whatever the frame rate.
     const double yaw0 = s.yaw;
-    xdotool("mousemove_relative -- 100 0");
+    xdo("mousemove_relative -- 100 0");
     s = wait_for(
         game, status_file, [&](const Status& st) { return std::abs(st.yaw - yaw0) > 1.0; }, 20.0);
     REQUIRE(s.valid);
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
     s = test::read_status(status_file);
     CHECK(s.yaw - yaw0 == doctest::Approx(-100.0 * kDegreesPerPixel).epsilon(0.02));
-    xdotool("mousemove_relative -- -100 0");
+    xdo("mousemove_relative -- -100 0");
     s = wait_for(
         game, status_file, [&](const Status& st) { return std::abs(st.yaw - yaw0) < 0.05; }, 20.0);
     REQUIRE(s.valid);
@@ -269,9 +276,9 @@ TEST_CASE("play with real X input (xdotool): the same play-through, waiting on t
     // Walk over the ammo (held W), then on in taps until the floor light's caption shows: its reach is
     // ~4 units long, and a held key stops a frame or two after the caption shows, which at a few frames per
     // second could carry the player past it. A tap moves exactly one step (0.125 units) at any frame rate.
-    xdotool("keydown w");
+    xdo("keydown w");
     s = wait_for(game, status_file, [](const Status& st) { return st.pickups.at(10) == "taken"; });
-    xdotool("keyup w");
+    xdo("keyup w");
     CHECK(s.valid);
     CHECK(s.ammo == 200);
     auto light_caption = [](const Status& st) {
@@ -281,31 +288,31 @@ TEST_CASE("play with real X input (xdotool): the same play-through, waiting on t
         s = test::read_status(status_file);
         if (s.valid && light_caption(s)) break;
         const long long frame = s.frame;
-        xdotool("key w");
+        xdo("key w");
         wait_for(
             game, status_file, [&](const Status& st) { return st.frame > frame + 1; }, 10.0);
     }
     s = test::read_status(status_file);
     INFO(s.text);
     REQUIRE(light_caption(s));
-    xdotool("key e");
+    xdo("key e");
     s = wait_for(
         game, status_file, [](const Status& st) { return st.lights.at(11) == "off"; }, 20.0);
     CHECK(s.valid);
 
     // On to the door; E opens it.
-    xdotool("keydown w");
+    xdo("keydown w");
     s = wait_for(game, status_file,
                  [](const Status& st) { return st.caption.find("open the door") != std::string::npos; });
-    xdotool("keyup w");
+    xdo("keyup w");
     REQUIRE(s.valid);
-    xdotool("key e");
+    xdo("key e");
     s = wait_for(game, status_file, [](const Status& st) { return st.doors.at(12) > 0.99; });
     REQUIRE(s.valid);
     CHECK(s.feet[2] > 0.9); // the closed door stopped the walk
 
     // Shoot the cylinder through the doorway.
-    xdotool("click 1");
+    xdo("click 1");
     s = wait_for(
         game, status_file, [](const Status& st) { return st.cylinders.at(13) == "exploded"; }, 20.0);
     CHECK(s.valid);
@@ -313,7 +320,7 @@ TEST_CASE("play with real X input (xdotool): the same play-through, waiting on t
     CHECK(s.ammo == 199);
 
     // Esc → pause menu; click Resume.
-    xdotool("key Escape");
+    xdo("key Escape");
     s = wait_for(game, status_file,
                  [](const Status& st) { return st.screen == "paused" && st.buttons.count("Resume") > 0; });
     REQUIRE(s.valid);
@@ -325,12 +332,12 @@ TEST_CASE("play with real X input (xdotool): the same play-through, waiting on t
     CHECK(s.shots == 1); // the click that resumed did not shoot
 
     // Through the door to the panel; E wins.
-    xdotool("keydown w");
+    xdo("keydown w");
     s = wait_for(game, status_file,
                  [](const Status& st) { return st.caption.find("shutdown") != std::string::npos; });
-    xdotool("keyup w");
+    xdo("keyup w");
     REQUIRE(s.valid);
-    xdotool("key e");
+    xdo("key e");
     s = wait_for(
         game, status_file, [](const Status& st) { return st.screen == "won"; }, 20.0);
     REQUIRE(s.valid);
