@@ -206,6 +206,7 @@ class World {
     // running on a live object.
     std::vector<std::shared_ptr<CollisionCallback>> on_collision_;
     std::vector<std::shared_ptr<TriggerCallback>> on_trigger_;
+    std::size_t collision_callbacks_ = 0; // non-null entries of on_collision_
     std::size_t live_count_ = 0;
 
     // Static set: BVH over static bodies (non-trigger), rebuilt lazily. What rays need of each static body

@@ -177,3 +177,40 @@ TEST_CASE("bodies added while characters hold cached neighbourhoods (the body ar
     CHECK(w.transform(p).position.x <= 4.0f + 1e-3f);
     CHECK(w.transform(p).position.x >= 3.9f);
 }
+
+TEST_CASE("collision callbacks keep firing through replace, clear, remove and re-register (the dispatch "
+          "is skipped only when none is registered)") {
+    World w;
+    add_floor(w);
+    const BodyId a = add_player(w, {0, 0, 0});
+    const BodyId b = add_player(w, {10, 0, 0});
+    int calls_a = 0, calls_b = 0;
+    auto step_and_count = [&]() {
+        calls_a = calls_b = 0;
+        w.step(1.0f / 120.0f);
+    };
+    step_and_count(); // no callbacks: nothing to call
+    w.set_on_collision(a, [&](World&, const Collision&) { ++calls_a; });
+    step_and_count();
+    CHECK(calls_a > 0);
+    w.set_on_collision(a, [&](World&, const Collision&) { calls_a += 10; }); // replaced
+    step_and_count();
+    CHECK(calls_a >= 10);
+    w.set_on_collision(a, nullptr); // cleared
+    step_and_count();
+    CHECK(calls_a == 0);
+    w.set_on_collision(a, nullptr); // cleared twice: still consistent
+    w.set_on_collision(b, [&](World&, const Collision&) { ++calls_b; });
+    step_and_count();
+    CHECK(calls_b > 0);
+    w.remove(b); // removed with its callback registered
+    w.set_on_collision(a, [&](World&, const Collision&) { ++calls_a; });
+    step_and_count();
+    CHECK(calls_a > 0);
+    const BodyId c = add_player(w, {-10, 0, 0}); // may reuse b's slot
+    w.set_on_collision(c, [&](World&, const Collision&) { ++calls_b; });
+    w.set_on_collision(a, nullptr);
+    step_and_count();
+    CHECK(calls_a == 0);
+    CHECK(calls_b > 0);
+}
