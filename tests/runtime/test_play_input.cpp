@@ -27,6 +27,13 @@ void write(const std::filesystem::path& path, const std::string& text) {
     std::ofstream(path) << text;
 }
 
+// "env DISPLAY=… XDG_CONFIG_HOME=… ": scripted runs get an X server of their own (one per test process), so
+// that a window of a test running in parallel cannot sit over theirs and take the pointer or the focus.
+std::string scripted_env(const test::ScratchDir& dir) {
+    static const test::PrivateDisplay display;
+    return "env DISPLAY=" + display.name() + " XDG_CONFIG_HOME=" + (dir / "config").string() + " ";
+}
+
 // Polls the status file until `done` holds (or the process ends / `seconds` pass).
 Status wait_for(test::GameProcess& game, const std::filesystem::path& status_file,
                 const std::function<bool(const Status&)>& done, double seconds = 60.0) {
@@ -75,8 +82,7 @@ TEST_CASE("play by script: menu click, walk, pickup, light, door, aim, shoot, pa
 )");
     const auto status_file = dir / "status.txt";
     const auto shot = dir / "end.png";
-    auto run = test::run_command("env XDG_CONFIG_HOME=" + (dir / "config").string() + " " +
-                                 (test::bin_dir() / "killswitch").string() +
+    auto run = test::run_command(scripted_env(dir) + (test::bin_dir() / "killswitch").string() +
                                  " --width 480 --height 270 --level " + (dir / "level.json").string() +
                                  " --input-script " + (dir / "play.txt").string() + " --status-file " +
                                  status_file.string() + " --screenshot " + shot.string() + " --frames 262");
@@ -113,8 +119,7 @@ TEST_CASE("play by script: menu click, walk, pickup, light, door, aim, shoot, pa
     // pickup (frame 60), measured on the same script's screenshots.
     auto orange_extent = [&](int frames) {
         const auto png = dir / ("hud" + std::to_string(frames) + ".png");
-        auto r = test::run_command("env XDG_CONFIG_HOME=" + (dir / "config").string() + " " +
-                                   (test::bin_dir() / "killswitch").string() +
+        auto r = test::run_command(scripted_env(dir) + (test::bin_dir() / "killswitch").string() +
                                    " --width 480 --height 270 --level " + (dir / "level.json").string() +
                                    " --input-script " + (dir / "play.txt").string() + " --screenshot " +
                                    png.string() + " --frames " + std::to_string(frames));
@@ -142,10 +147,9 @@ TEST_CASE("play by script: menu click, walk, pickup, light, door, aim, shoot, pa
     // Deterministic: the same script gives the same game, step for step.
     const auto status_again = dir / "status2.txt";
     auto again = test::run_command(
-        "env XDG_CONFIG_HOME=" + (dir / "config").string() + " " + (test::bin_dir() / "killswitch").string() +
-        " --width 480 --height 270 --level " + (dir / "level.json").string() + " --input-script " +
-        (dir / "play.txt").string() + " --status-file " + status_again.string() + " --screenshot " +
-        (dir / "end2.png").string() + " --frames 262");
+        scripted_env(dir) + (test::bin_dir() / "killswitch").string() + " --width 480 --height 270 --level " +
+        (dir / "level.json").string() + " --input-script " + (dir / "play.txt").string() + " --status-file " +
+        status_again.string() + " --screenshot " + (dir / "end2.png").string() + " --frames 262");
     REQUIRE(again.exit_code == 0);
     CHECK(test::read_status(status_again).text == s.text);
 }
@@ -163,10 +167,10 @@ TEST_CASE("play by script on levels/main.json: Play, walk to the first door, E o
 )");
     const auto status_file = dir / "status.txt";
     auto run = test::run_command(
-        "env XDG_CONFIG_HOME=" + (dir / "config").string() + " " + (test::bin_dir() / "killswitch").string() +
-        " --width 320 --height 180 --level " + (test::source_dir() / "levels" / "main.json").string() +
-        " --warp 0,0,-22,0,0 --input-script " + (dir / "main.txt").string() + " --status-file " +
-        status_file.string() + " --screenshot " + (dir / "main.png").string() + " --frames 90");
+        scripted_env(dir) + (test::bin_dir() / "killswitch").string() + " --width 320 --height 180 --level " +
+        (test::source_dir() / "levels" / "main.json").string() + " --warp 0,0,-22,0,0 --input-script " +
+        (dir / "main.txt").string() + " --status-file " + status_file.string() + " --screenshot " +
+        (dir / "main.png").string() + " --frames 90");
     INFO(run.output);
     REQUIRE(run.exit_code == 0);
     const Status s = test::read_status(status_file);
@@ -187,10 +191,10 @@ TEST_CASE("play by script: a click on a button that is not there fails with the 
     test::ScratchDir dir;
     write(dir / "level.json", test::corridor_level_json());
     write(dir / "bad.txt", "2 click Play\n");
-    auto run = test::run_command(
-        "env XDG_CONFIG_HOME=" + (dir / "config").string() + " " + (test::bin_dir() / "killswitch").string() +
-        " --width 320 --height 180 --level " + (dir / "level.json").string() + " --input-script " +
-        (dir / "bad.txt").string() + " --screenshot " + (dir / "x.png").string() + " --frames 40");
+    auto run = test::run_command(scripted_env(dir) + (test::bin_dir() / "killswitch").string() +
+                                 " --width 320 --height 180 --level " + (dir / "level.json").string() +
+                                 " --input-script " + (dir / "bad.txt").string() + " --screenshot " +
+                                 (dir / "x.png").string() + " --frames 40");
     CHECK(run.exit_code == 1);
     CHECK(run.output.find("input script line 1") != std::string::npos);
     CHECK(run.output.find("no button 'Play' on the loading screen") != std::string::npos);
