@@ -354,3 +354,61 @@ TEST_CASE("play with real X input (xdotool): the same play-through, waiting on t
     click_button(s, "Quit");
     CHECK(game.wait(30.0) == 0);
 }
+
+TEST_CASE("play with real X input (xdotool): shot dead by a robot, the fall, the death menu, Retry") {
+    if (!test::have_display() || !test::have_xdotool()) {
+        MESSAGE("no DISPLAY or no xdotool: skipped");
+        return;
+    }
+    test::ScratchDir dir;
+    // One robot 10 units ahead, facing the player, that always hits and kills with one shot.
+    write(dir / "duel.json", R"({
+  "format": "killswitch-level", "version": 1, "name": "Duel",
+  "player_start": {"position": [0, 0, 20], "yaw": 0},
+  "entities": [
+    {"id": 1, "type": "floor", "name": "Ground", "position": [0, 0, 0], "props": {"size": [60, 60]}},
+    {"id": 2, "type": "robot", "name": "Sharpshooter", "position": [0, 0, 10], "rotation": [180, 0, 0],
+     "props": {"damage": 1000, "hit_probability": 1, "cooldown": 0.2, "shooting_distance": 30,
+               "eye_radius_min": 40, "eye_radius_max": 50}}
+  ]
+})");
+    const test::PrivateDisplay display;
+    auto xdo = [&](const std::string& args) { return xdotool(args, nullptr, display.name()); };
+    const auto status_file = dir / "status.txt";
+    test::GameProcess game({"--width", "480", "--height", "270", "--level", (dir / "duel.json").string(),
+                            "--status-file", status_file.string()},
+                           dir / "log.txt", dir / "config", display.name());
+    const std::string window = test::run_command("env DISPLAY=" + display.name() +
+                                                 " timeout 60 xdotool search --sync --onlyvisible --pid " +
+                                                 std::to_string(game.pid()))
+                                   .output;
+    INFO(game.log());
+    REQUIRE_FALSE(window.empty());
+    const std::string w = window.substr(0, window.find('\n'));
+    xdo("windowfocus --sync " + w);
+    auto click_button = [&](const Status& st, const std::string& label) {
+        const auto& b = st.buttons.at(label);
+        xdo("mousemove --window " + w + " " + std::to_string(static_cast<int>((b.x0 + b.x1) / 2)) + " " +
+            std::to_string(static_cast<int>((b.y0 + b.y1) / 2)));
+        xdo("click 1");
+    };
+    Status s = wait_for(game, status_file, [](const Status& st) { return st.buttons.count("Play") > 0; });
+    REQUIRE(s.valid);
+    click_button(s, "Play");
+    // The robot notices, raises its gun and fires: the death camera falls and rolls, then the menu.
+    s = wait_for(game, status_file, [](const Status& st) { return st.screen == "dead"; });
+    INFO(s.text);
+    REQUIRE(s.valid);
+    CHECK(s.phase == "dead");
+    CHECK(s.health == doctest::Approx(0.0));
+    CHECK(s.camera_roll == doctest::Approx(-90.0).epsilon(0.001));
+    CHECK_FALSE(s.captured); // the mouse is given back for the menu
+    REQUIRE(s.buttons.count("Retry") == 1);
+    click_button(s, "Retry");
+    s = wait_for(game, status_file, [](const Status& st) {
+        return st.screen == "playing" && st.phase == "playing" && st.health > 99.0;
+    });
+    CHECK(s.valid);
+    CHECK(s.camera_roll == doctest::Approx(0.0));
+    CHECK(s.feet[2] == doctest::Approx(20.0).epsilon(0.01)); // back at the start
+}
