@@ -16,8 +16,11 @@
 #include "render/view_model.h"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
+#include <ctime>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -33,13 +36,24 @@ struct Variant {
     bool surface_detail = true;
     int max_lights = render::kMaxLightsPerDraw;
     int resolution_divisor = 1;
+    render::RenderQuality quality = render::RenderQuality::Auto;
+    float render_scale = 0.0f; // 0: the renderer's default for this GL renderer
 };
 
 struct Measurement {
     double median_ms = 0, p99_ms = 0, mean_ms = 0;
+    double cpu_ms = 0; // process CPU time per frame (all threads: llvmpipe's rasteriser threads too)
+    bool fast = false;
+    int internal_width = 0, internal_height = 0;
     int draw_calls = 0;
     long long triangles = 0;
 };
+
+double cpu_now_ms() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return t.tv_sec * 1e3 + t.tv_nsec * 1e-6;
+}
 
 // The camera path: from the player start down room 1 toward door 1, turning left and right.
 render::Camera path_camera(const render::Camera& start, int frame, int frames) {
@@ -52,13 +66,16 @@ render::Camera path_camera(const render::Camera& start, int frame, int frames) {
 }
 
 Measurement measure(render::OffscreenContext& ctx, render::AssetLibrary& assets, render::LevelScene& scene,
-                    const level::Level& level, const Variant& v, int frames, bool& ok) {
+                    const level::Level& level, const Variant& v, int frames, bool& ok,
+                    const std::string& shot_path) {
     Measurement m;
     render::RendererSettings settings;
     settings.msaa_samples = v.msaa;
     settings.shadows = v.shadows;
     settings.surface_detail = v.surface_detail;
     settings.max_lights_per_draw = v.max_lights;
+    settings.quality = v.quality;
+    settings.render_scale = v.render_scale;
     const float default_anisotropy = assets.textures().max_anisotropy();
     if (v.anisotropy > 0.0f) assets.textures().set_max_anisotropy(v.anisotropy);
     const int width = ctx.width() / v.resolution_divisor, height = ctx.height() / v.resolution_divisor;
@@ -77,7 +94,9 @@ Measurement measure(render::OffscreenContext& ctx, render::AssetLibrary& assets,
     std::vector<double> times;
     times.reserve(static_cast<size_t>(frames));
     const int warmup = 10;
+    double cpu_start = 0;
     for (int i = -warmup; i < frames; ++i) {
+        if (i == 0) cpu_start = cpu_now_ms();
         auto t0 = std::chrono::steady_clock::now();
         scene.emit(instances, lights);
         render::SceneFrame frame;
@@ -97,7 +116,25 @@ Measurement measure(render::OffscreenContext& ctx, render::AssetLibrary& assets,
             times.push_back(ms);
             m.draw_calls = std::max(m.draw_calls, stats.draw_calls);
             m.triangles = std::max(m.triangles, stats.triangles);
+            m.fast = stats.fast_path;
+            m.internal_width = stats.internal_width;
+            m.internal_height = stats.internal_height;
         }
+    }
+    m.cpu_ms = (cpu_now_ms() - cpu_start) / frames;
+    if (!shot_path.empty()) { // the start view, for side-by-side comparisons of the variants
+        render::SceneFrame frame;
+        frame.camera = start;
+        frame.environment = scene.environment();
+        frame.instances = &instances;
+        frame.lights = &lights;
+        frame.view_model = &view_model;
+        frame.width = width;
+        frame.height = height;
+        ctx.bind();
+        (*renderer)->render(frame);
+        ctx.finish();
+        if (auto saved = ctx.save_png(shot_path); !saved) log::error(saved.error().str());
     }
     assets.textures().set_max_anisotropy(default_anisotropy);
     std::sort(times.begin(), times.end());
@@ -113,10 +150,11 @@ int run(int argc, const char* const* argv) {
         log::error(cl.error().str());
         return 2;
     }
-    if (auto unknown = cl->unknown({"level", "json", "frames", "width", "height", "quick"});
+    if (auto unknown = cl->unknown({"level", "json", "frames", "width", "height", "quick", "only", "shots"});
         !unknown.empty()) {
-        log::error("ks_bench render: unknown option --", unknown.front(),
-                   " (use --level FILE --frames N --width W --height H --json --quick)");
+        log::error(
+            "ks_bench render: unknown option --", unknown.front(),
+            " (use --level FILE --frames N --width W --height H --json --quick --only TEXT --shots DIR)");
         return 2;
     }
     auto frames = cl->get_int("frames", 200, 10, 100000);
@@ -141,48 +179,88 @@ int run(int argc, const char* const* argv) {
     }
     render::AssetLibrary assets(paths::asset(""));
     auto scene = render::LevelScene::build(*level, assets);
+    const render::BakeStats& bake = scene->bake_stats();
+    std::printf("light bake: %d faces, %d occluders, %lld texels (%.2f units each), %lld light texels, "
+                "%.1f ms CPU\n",
+                bake.faces, bake.occluders, bake.texels, bake.texel_size, bake.light_texels, bake.bake_ms);
     const std::string renderer = (*ctx)->renderer();
     const int default_msaa = render::default_msaa_for(renderer);
-    std::vector<Variant> variants = {{"default", default_msaa}};
+    using Q = render::RenderQuality;
+    std::vector<Variant> variants = {{"default (auto)", default_msaa}};
+    auto with = [&](const char* name, auto change) {
+        Variant v{name, default_msaa};
+        change(v);
+        variants.push_back(v);
+    };
+    // The two paths and what each step of the fast one buys, always measured (ratios in one run).
+    with("full, scale 1", [](Variant& v) { v.quality = Q::Full, v.render_scale = 1.0f; });
+    with("fast, scale 1", [](Variant& v) { v.quality = Q::Fast, v.render_scale = 1.0f; });
+    with("fast, scale 0.75", [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.75f; });
+    with("fast, scale 0.5", [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f; });
+    with("fast, scale 0.5, 4 lights",
+         [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.max_lights = 4; });
+    with("fast, scale 0.5, no shadow",
+         [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.shadows = false; });
+    with("full, scale 0.5", [](Variant& v) { v.quality = Q::Full, v.render_scale = 0.5f; });
     if (!cl->has("quick")) {
-        auto with = [&](const char* name, auto change) {
-            Variant v{name, default_msaa};
-            change(v);
-            variants.push_back(v);
+        // The full path's features, one at a time (session 1's table).
+        auto full = [&](const char* name, auto change) {
+            with(name, [&](Variant& v) {
+                v.quality = Q::Full;
+                v.render_scale = 1.0f;
+                change(v);
+            });
         };
-        with("anisotropic 8x", [](Variant& v) { v.anisotropy = 8.0f; });
-        with("anisotropic off (1x)", [](Variant& v) { v.anisotropy = 1.0f; });
-        with("no sun shadows", [](Variant& v) { v.shadows = false; });
-        with("no normal/bump maps", [](Variant& v) { v.surface_detail = false; });
-        with("1 light per object", [](Variant& v) { v.max_lights = 1; });
-        with("4 lights per object", [](Variant& v) { v.max_lights = 4; });
-        with("half resolution", [](Variant& v) { v.resolution_divisor = 2; });
-        with("msaa 0x", [](Variant& v) { v.msaa = 0; });
-        with("msaa 2x", [](Variant& v) { v.msaa = 2; });
-        with("msaa 4x", [](Variant& v) { v.msaa = 4; });
-        with("shadow map every frame", [](Variant& v) { v.shadow_every_frame = true; });
+        full("full: anisotropic 8x", [](Variant& v) { v.anisotropy = 8.0f; });
+        full("full: no sun shadows", [](Variant& v) { v.shadows = false; });
+        full("full: no normal/bump", [](Variant& v) { v.surface_detail = false; });
+        full("full: 1 light/object", [](Variant& v) { v.max_lights = 1; });
+        full("full: 4 lights/object", [](Variant& v) { v.max_lights = 4; });
+        full("full: msaa 4x", [](Variant& v) { v.msaa = 4; });
+        full("full: shadow each frame", [](Variant& v) { v.shadow_every_frame = true; });
+        with("fast: shadow each frame",
+             [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.shadow_every_frame = true; });
     }
+    if (auto only = cl->get("only"))
+        std::erase_if(variants, [&](const Variant& v) {
+            return std::string(v.name).find(*only) == std::string::npos && v.name != variants[0].name;
+        });
     std::printf("render benchmark: %s, %dx%d, %d frames on a fixed path, GL renderer: %s, default "
                 "anisotropy %.0fx, msaa %dx\n",
                 path.string().c_str(), *width, *height, *frames, renderer.c_str(),
                 assets.textures().max_anisotropy(), default_msaa);
-    std::printf("%-24s %10s %10s %8s %8s %10s %12s\n", "variant", "median ms", "p99 ms", "fps", "draws",
-                "triangles", "vs default");
-    Measurement base;
+    std::printf("%-28s %5s %9s %10s %10s %8s %10s %6s %9s %11s\n", "variant", "path", "internal", "median ms",
+                "p99 ms", "fps", "cpu ms", "draws", "triangles", "vs default");
+    Measurement base, full;
     bool ok = true;
     for (size_t i = 0; i < variants.size(); ++i) {
-        Measurement m = measure(**ctx, assets, *scene, *level, variants[i], *frames, ok);
+        std::string shot;
+        if (auto dir = cl->get("shots")) {
+            shot = variants[i].name;
+            for (char& c : shot)
+                if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+            shot = (std::filesystem::path(*dir) / (shot + ".png")).string();
+        }
+        Measurement m = measure(**ctx, assets, *scene, *level, variants[i], *frames, ok, shot);
         if (!ok) return 1;
         if (i == 0) base = m;
-        std::printf("%-24s %10.2f %10.2f %8.1f %8d %10lld %11.2fx\n", variants[i].name, m.median_ms, m.p99_ms,
-                    1000.0 / m.median_ms, m.draw_calls, m.triangles, m.median_ms / base.median_ms);
+        if (std::string(variants[i].name) == "full, scale 1") full = m;
+        char internal[32];
+        std::snprintf(internal, sizeof(internal), "%dx%d", m.internal_width, m.internal_height);
+        std::printf("%-28s %5s %9s %10.2f %10.2f %8.1f %10.2f %6d %9lld %10.2fx\n", variants[i].name,
+                    m.fast ? "fast" : "full", internal, m.median_ms, m.p99_ms, 1000.0 / m.median_ms, m.cpu_ms,
+                    m.draw_calls, m.triangles, m.median_ms / base.median_ms);
+        std::fflush(stdout);
     }
     if (cl->has("json"))
-        std::printf("{\"level\":\"%s\",\"width\":%d,\"height\":%d,\"msaa\":%d,\"frame_ms_median\":%.3f,"
-                    "\"frame_ms_p99\":%.3f,"
-                    "\"fps_median\":%.1f,\"draw_calls\":%d,\"triangles\":%lld,\"renderer\":\"%s\"}\n",
-                    path.filename().string().c_str(), *width, *height, default_msaa, base.median_ms,
-                    base.p99_ms, 1000.0 / base.median_ms, base.draw_calls, base.triangles, renderer.c_str());
+        std::printf("{\"level\":\"%s\",\"width\":%d,\"height\":%d,\"msaa\":%d,\"quality\":\"%s\","
+                    "\"internal_width\":%d,\"internal_height\":%d,\"frame_ms_median\":%.3f,"
+                    "\"frame_ms_p99\":%.3f,\"fps_median\":%.1f,\"cpu_ms_per_frame\":%.3f,\"draw_calls\":%d,"
+                    "\"triangles\":%lld,\"full_frame_ms_median\":%.3f,\"renderer\":\"%s\"}\n",
+                    path.filename().string().c_str(), *width, *height, default_msaa,
+                    base.fast ? "fast" : "full", base.internal_width, base.internal_height, base.median_ms,
+                    base.p99_ms, 1000.0 / base.median_ms, base.cpu_ms, base.draw_calls, base.triangles,
+                    full.median_ms, renderer.c_str());
     return 0;
 }
 

@@ -28,6 +28,7 @@ GpuMesh::GpuMesh(const MeshData& data)
     attrib(1, 3, offsetof(Vertex, normal));
     attrib(2, 2, offsetof(Vertex, uv));
     attrib(3, 4, offsetof(Vertex, tangent));
+    attrib(9, 2, offsetof(Vertex, lightmap_uv));
     for (GLuint i = 4; i <= 8; ++i) {
         glEnableVertexAttribArray(i);
         glVertexAttribDivisor(i, 1);

@@ -67,6 +67,7 @@ LevelScene::Prop LevelScene::make_prop(const level::Entity& e, const Model* mode
 std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLibrary& assets) {
     auto scene = std::unique_ptr<LevelScene>(new LevelScene());
     scene->environment_ = environment_from_settings(level.settings);
+    std::vector<MeshData> surface_meshes; // uploaded once their light-map coordinates are baked
     for (const auto& e : level.entities) {
         const Mat4 m = entity_matrix(e);
         switch (e.type()) {
@@ -82,7 +83,8 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
             // reference.
             bool ceiling = e.try_as<level::FloorProps>() && e.as<level::FloorProps>().ceiling;
             scene->bounds_ = merge(scene->bounds_, data.bounds());
-            scene->surfaces_.push_back({std::make_unique<GpuMesh>(data), &assets.surface(texture), !ceiling});
+            scene->surfaces_.push_back({nullptr, &assets.surface(texture), !ceiling});
+            surface_meshes.push_back(std::move(data));
             break;
         }
         case EntityType::Door: {
@@ -133,8 +135,8 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
             // A quarter turn first puts +X on -z, so the robot faces the entity's forward, as in the game
             // view (game::robot_model_yaw: yaw + 90°, the reference's rotY). Tested by
             // tests/runtime/test_play_views.cpp (both views draw a robot alike).
-            scene->props_.push_back(make_prop(
-                e, &assets.model("robot"), m * glm::rotate(Mat4(1.0f), kPi * 0.5f, Vec3(0, 1, 0))));
+            scene->props_.push_back(
+                make_prop(e, &assets.model("robot"), m * glm::rotate(Mat4(1.0f), kPi * 0.5f, Vec3(0, 1, 0))));
             break;
         case EntityType::Pickup: {
             const auto& k = e.as<level::PickupProps>();
@@ -163,13 +165,32 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
     }
     for (const auto& p : scene->props_)
         scene->bounds_ = merge(scene->bounds_, transform_aabb(p.model->bounds, p.root));
+
+    // Bake the level geometry's light (every light, then switch off those that start off).
+    std::vector<BakeSurface> bake_surfaces;
+    for (size_t i = 0; i < surface_meshes.size(); ++i)
+        bake_surfaces.push_back({&surface_meshes[i], scene->surfaces_[i].casts_shadow});
+    std::vector<Light> bake_lights;
+    for (auto& p : scene->props_)
+        if (p.type == EntityType::FloorLight || p.type == EntityType::TopLight) {
+            p.bake_light = static_cast<int>(bake_lights.size());
+            bake_lights.push_back(p.light);
+        }
+    scene->bake_stats_ = scene->bake_.bake(bake_surfaces, scene->environment_, bake_lights);
+    for (const auto& p : scene->props_)
+        if (p.bake_light >= 0) scene->bake_.set_light_on(p.bake_light, p.light_on);
+    for (size_t i = 0; i < surface_meshes.size(); ++i)
+        scene->surfaces_[i].mesh = std::make_unique<GpuMesh>(surface_meshes[i]);
     if (!scene->bounds_.valid()) scene->bounds_ = {Vec3(-1.0f), Vec3(1.0f)};
     return scene;
 }
 
 void LevelScene::set_light_on(int id, bool on) {
     for (auto& p : props_)
-        if (p.entity_id == id) p.light_on = on;
+        if (p.entity_id == id) {
+            p.light_on = on;
+            if (p.bake_light >= 0) bake_.set_light_on(p.bake_light, on);
+        }
 }
 
 void LevelScene::set_door_open(int id, float fraction) {
@@ -180,11 +201,14 @@ void LevelScene::set_door_open(int id, float fraction) {
 void LevelScene::emit(std::vector<MeshInstance>& instances, std::vector<Light>& lights) {
     instances.clear();
     lights.clear();
+    // A light switched since the last frame: re-combine the light map (milliseconds) and upload it.
+    if (bake_.update() || (lightmap_.id() == 0 && !surfaces_.empty())) lightmap_.upload(bake_);
     for (const auto& s : surfaces_) {
         MeshInstance inst;
         inst.mesh = s.mesh.get();
         inst.material = s.material;
         inst.casts_shadow = s.casts_shadow;
+        inst.lightmap = lightmap_.id();
         instances.push_back(inst);
     }
     for (auto& p : props_) {

@@ -6,6 +6,8 @@
 #include "level/level.h"
 #include "render/asset_library.h"
 #include "render/gpu_mesh.h"
+#include "render/light_bake.h"
+#include "render/lightmap_texture.h"
 #include "render/scene.h"
 
 #include <memory>
@@ -32,6 +34,10 @@ class LevelScene {
     const Environment& environment() const { return environment_; }
     const Aabb& bounds() const { return bounds_; }
     int surface_count() const { return static_cast<int>(surfaces_.size()); }
+    // The level geometry's baked light (the fast path's; see light_bake.h) and what baking it cost.
+    const LightBake& light_bake() const { return bake_; }
+    const BakeStats& bake_stats() const { return bake_stats_; }
+    unsigned lightmap_texture() const { return lightmap_.id(); }
 
   private:
     struct Surface {
@@ -46,13 +52,17 @@ class LevelScene {
         Mat4 root{1.0f};
         bool light_on = true;
         float door_open = 0.0f, door_offset = 2.0f;
-        Light light; // for floor/top lights
+        Light light;         // for floor/top lights
+        int bake_light = -1; // its index in the light bake
     };
     static Prop make_prop(const level::Entity& e, const Model* model, const Mat4& root);
     std::vector<Surface> surfaces_;
     std::vector<Prop> props_;
     Environment environment_;
     Aabb bounds_ = empty_aabb();
+    LightBake bake_;
+    BakeStats bake_stats_;
+    LightmapTexture lightmap_;
     std::vector<Mat4> scratch_;
     ModelPose pose_;
 };

@@ -13,7 +13,8 @@ struct Vertex {
     Vec3 position;
     Vec3 normal;
     Vec2 uv;
-    Vec4 tangent; // xyz tangent, w handedness of the bitangent
+    Vec4 tangent;           // xyz tangent, w handedness of the bitangent
+    Vec2 lightmap_uv{0.0f}; // the baked light map's coordinate (static level geometry; see light_bake.h)
 };
 
 struct MeshData {

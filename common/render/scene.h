@@ -14,6 +14,9 @@ struct MeshInstance {
     Mat4 world{1.0f};
     float emissive_scale = 1.0f; // follows a light's on/off state for `light_emissive` lenses
     bool casts_shadow = true;
+    // GL texture with this static mesh's baked light (LevelScene's level geometry; the mesh's vertices carry
+    // lightmap_uv). 0: none. Only the fast quality path reads it; the full path lights everything per pixel.
+    unsigned lightmap = 0;
 };
 
 struct Light {
@@ -44,6 +47,8 @@ struct FrameStats {
     int instances_culled = 0;
     int lights_in_view = 0;
     bool shadow_rendered = false;
+    bool fast_path = false;                      // RenderQuality::Fast drew this frame
+    int internal_width = 0, internal_height = 0; // the 3D scene's resolution (render scale)
 };
 
 } // namespace ks::render

@@ -3,6 +3,7 @@
 #include "core/log.h"
 #include "core/paths.h"
 #include "render/gpu_mesh.h"
+#include "render/lightmap_texture.h"
 #include "render/material.h"
 #include "render/shaders.h"
 #include "render/texture_cache.h"
@@ -13,7 +14,10 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstdlib>
 #include <cstring>
+#include <functional>
+#include <tuple>
 
 namespace ks::render {
 
@@ -21,8 +25,28 @@ int default_msaa_for(const std::string& gl_renderer) {
     return is_software_renderer(gl_renderer) ? 0 : 4;
 }
 
+RenderQuality default_quality_for(const std::string& gl_renderer) {
+    if (const char* q = std::getenv("KS_RENDER_QUALITY"); q && *q) {
+        if (std::strcmp(q, "full") == 0) return RenderQuality::Full;
+        if (std::strcmp(q, "fast") == 0) return RenderQuality::Fast;
+        log::warn("KS_RENDER_QUALITY='", q, "' is not 'full' or 'fast'; choosing from the GL renderer");
+    }
+    return is_software_renderer(gl_renderer) ? RenderQuality::Fast : RenderQuality::Full;
+}
+
+float default_render_scale_for(const std::string& gl_renderer) {
+    if (const char* v = std::getenv("KS_RENDER_SCALE"); v && *v) {
+        char* end = nullptr;
+        float scale = std::strtof(v, &end);
+        if (end != v && *end == '\0' && is_finite(scale) && scale > 0.0f)
+            return std::clamp(scale, 0.25f, 1.0f);
+        log::warn("KS_RENDER_SCALE='", v, "' is not a number in 0.25..1; choosing from the GL renderer");
+    }
+    return is_software_renderer(gl_renderer) ? kSoftwareRenderScale : 1.0f;
+}
+
 namespace {
-enum TextureUnit { kBase = 0, kNormal, kOrm, kEmissive, kHeight, kShadow };
+enum TextureUnit { kBase = 0, kNormal, kOrm, kEmissive, kHeight, kShadow, kLightmap };
 constexpr int kMaxLightsInView = 32;     // one bit each in a draw's light mask
 constexpr float kLegacyLightScale = kPi; // three.js legacy light units (see pbr.frag)
 } // namespace
@@ -34,28 +58,75 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(TextureCache& textu
     return r;
 }
 
-Result<void> SceneRenderer::init() {
-    auto build = [](const ProgramSources& p, ShaderProgram& out) -> Result<void> {
-        auto program = ShaderProgram::build(p.vertex, p.fragment);
-        if (!program) return program.error();
-        out = std::move(*program);
-        return ok();
-    };
-    for (auto [src, dst] : {std::pair{&pbr_program(), &pbr_}, std::pair{&shadow_program(), &shadow_},
-                            std::pair{&particle_program(), &particle_}, std::pair{&line_program(), &line_}})
-        if (auto r = build(*src, *dst); !r) return r.error();
+void SceneRenderer::resolve_settings() {
+    if (settings_.quality == RenderQuality::Auto) settings_.quality = default_quality_for(gl_renderer_);
+    fast_ = settings_.quality == RenderQuality::Fast;
+    if (!(settings_.render_scale > 0.0f) || !is_finite(settings_.render_scale))
+        settings_.render_scale = default_render_scale_for(gl_renderer_);
+    settings_.render_scale = std::clamp(settings_.render_scale, 0.25f, 1.0f);
+}
 
-    pbr_.use();
-    glUniform1i(pbr_.location("u_base_map"), kBase);
-    glUniform1i(pbr_.location("u_normal_map"), kNormal);
-    glUniform1i(pbr_.location("u_orm_map"), kOrm);
-    glUniform1i(pbr_.location("u_emissive_map"), kEmissive);
-    glUniform1i(pbr_.location("u_height_map"), kHeight);
-    glUniform1i(pbr_.location("u_shadow_map"), kShadow);
-    particle_.use();
-    glUniform1i(particle_.location("u_sprite"), 0);
+void SceneRenderer::set_quality(RenderQuality quality) {
+    settings_.quality = quality;
+    resolve_settings();
+    shadow_hash_ = 0; // the fast path's shadow map holds fewer casters
+}
+
+void SceneRenderer::set_render_scale(float scale) {
+    settings_.render_scale = scale;
+    resolve_settings();
+}
+
+int SceneRenderer::poll_shaders(bool force) {
+    return shaders_ ? shaders_->poll(ShaderLibrary::Clock::now(), force) : 0;
+}
+
+unsigned SceneRenderer::program_id(const std::string& name) const {
+    if (name == "pbr") return pbr_.id();
+    if (name == "fast") return fast_program_.id();
+    if (name == "shadow") return shadow_.id();
+    if (name == "particle") return particle_.id();
+    if (name == "line") return line_.id();
+    return 0;
+}
+
+Result<void> SceneRenderer::init() {
+    if (const GLubyte* r = glGetString(GL_RENDERER)) gl_renderer_ = reinterpret_cast<const char*>(r);
+    resolve_settings();
+    if (settings_.shader_hot_reload < 0) settings_.shader_hot_reload = default_shader_hot_reload() ? 1 : 0;
+    shaders_ = std::make_unique<ShaderLibrary>(
+        settings_.shader_dir.empty() ? default_shader_dir() : std::filesystem::path(settings_.shader_dir));
+    // Sampler units are program state: set again whenever hot reload rebuilds a program.
+    auto pbr_units = [](ShaderProgram& p) {
+        glUniform1i(p.location("u_base_map"), kBase);
+        glUniform1i(p.location("u_normal_map"), kNormal);
+        glUniform1i(p.location("u_orm_map"), kOrm);
+        glUniform1i(p.location("u_emissive_map"), kEmissive);
+        glUniform1i(p.location("u_height_map"), kHeight);
+        glUniform1i(p.location("u_shadow_map"), kShadow);
+        glUniform1i(p.location("u_lightmap"), kLightmap);
+    };
+    auto particle_units = [](ShaderProgram& p) { glUniform1i(p.location("u_sprite"), 0); };
+    for (auto [files, target, units] :
+         {std::tuple{&pbr_program(), &pbr_, std::function<void(ShaderProgram&)>(pbr_units)},
+          std::tuple{&fast_program(), &fast_program_, std::function<void(ShaderProgram&)>(pbr_units)},
+          std::tuple{&shadow_program(), &shadow_, std::function<void(ShaderProgram&)>()},
+          std::tuple{&particle_program(), &particle_, std::function<void(ShaderProgram&)>(particle_units)},
+          std::tuple{&line_program(), &line_, std::function<void(ShaderProgram&)>()}})
+        if (auto r = shaders_->add(*files, *target, units); !r) return r.error();
 
     glGenBuffers(1, &instance_buffer_);
+
+    // The fast path samples colour maps with the nearest mip (one bilinear lookup instead of two) and,
+    // where the driver allows, without the sampler's per-texel sRGB decode (the shader squares instead):
+    // texture lookups are most of a software rasteriser's pixel cost.
+    glGenSamplers(1, &fast_sampler_);
+    glSamplerParameteri(fast_sampler_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
+    glSamplerParameteri(fast_sampler_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(fast_sampler_, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glSamplerParameteri(fast_sampler_, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    raw_srgb_ = epoxy_has_gl_extension("GL_EXT_texture_sRGB_decode");
+    if (raw_srgb_) glSamplerParameteri(fast_sampler_, GL_TEXTURE_SRGB_DECODE_EXT, GL_SKIP_DECODE_EXT);
 
     // Particles: a unit quad (per vertex) plus a per-particle stream.
     const float quad[] = {-0.5f, -0.5f, 0.5f, -0.5f, 0.5f, 0.5f, -0.5f, -0.5f, 0.5f, 0.5f, -0.5f, 0.5f};
@@ -130,6 +201,10 @@ SceneRenderer::~SceneRenderer() {
     if (msaa_fbo_) glDeleteFramebuffers(1, &msaa_fbo_);
     if (msaa_color_) glDeleteRenderbuffers(1, &msaa_color_);
     if (msaa_depth_) glDeleteRenderbuffers(1, &msaa_depth_);
+    if (fast_sampler_) glDeleteSamplers(1, &fast_sampler_);
+    if (scale_fbo_) glDeleteFramebuffers(1, &scale_fbo_);
+    if (scale_color_) glDeleteRenderbuffers(1, &scale_color_);
+    if (scale_depth_) glDeleteRenderbuffers(1, &scale_depth_);
 }
 
 std::uint64_t SceneRenderer::shadow_caster_hash(const std::vector<MeshInstance>& instances) const {
@@ -140,7 +215,7 @@ std::uint64_t SceneRenderer::shadow_caster_hash(const std::vector<MeshInstance>&
         for (size_t i = 0; i < size; ++i) h = (h ^ bytes[i]) * 1099511628211ULL;
     };
     for (const auto& inst : instances) {
-        if (!inst.casts_shadow) continue;
+        if (!casts_shadow(inst)) continue;
         mix(&inst.mesh, sizeof(inst.mesh));
         mix(glm::value_ptr(inst.world), sizeof(Mat4));
     }
@@ -182,6 +257,10 @@ void SceneRenderer::cull_and_batch(const SceneFrame& frame, FrameStats& stats) {
             ++stats.instances_culled;
             continue;
         }
+        if (fast_ && inst.lightmap != 0) { // its light is baked: no light list
+            visible_.push_back({&inst, distance_to_box(eye, box), 0u, box, inst.lightmap});
+            continue;
+        }
         // The lights whose range reaches this box; keep the nearest light_cap.
         std::uint32_t mask = 0;
         float nearest[kMaxLightsPerDraw];
@@ -205,7 +284,7 @@ void SceneRenderer::cull_and_batch(const SceneFrame& frame, FrameStats& stats) {
                 }
             }
         }
-        visible_.push_back({&inst, distance_to_box(eye, box), mask, box});
+        visible_.push_back({&inst, distance_to_box(eye, box), mask, box, 0u});
     }
     // Group identical (material, mesh, lights) together; each group is drawn at its nearest member's
     // distance.
@@ -214,6 +293,7 @@ void SceneRenderer::cull_and_batch(const SceneFrame& frame, FrameStats& stats) {
             return a.instance->material->id < b.instance->material->id;
         if (a.instance->mesh != b.instance->mesh) return a.instance->mesh < b.instance->mesh;
         if (a.light_mask != b.light_mask) return a.light_mask < b.light_mask;
+        if (a.lightmap != b.lightmap) return a.lightmap < b.lightmap;
         return a.distance < b.distance;
     });
     std::vector<float>& batch_distance = batch_distance_;
@@ -222,10 +302,11 @@ void SceneRenderer::cull_and_batch(const SceneFrame& frame, FrameStats& stats) {
         size_t j = i;
         const Visible& head = visible_[i];
         while (j < visible_.size() && visible_[j].instance->material == head.instance->material &&
-               visible_[j].instance->mesh == head.instance->mesh && visible_[j].light_mask == head.light_mask)
+               visible_[j].instance->mesh == head.instance->mesh &&
+               visible_[j].light_mask == head.light_mask && visible_[j].lightmap == head.lightmap)
             ++j;
         batches_.push_back({head.instance->mesh, head.instance->material, head.light_mask,
-                            static_cast<int>(i), static_cast<int>(j - i)});
+                            static_cast<int>(i), static_cast<int>(j - i), head.lightmap});
         batch_distance.push_back(head.distance);
         i = j;
     }
@@ -275,7 +356,7 @@ void SceneRenderer::render_shadows(const SceneFrame& frame, FrameStats& stats) {
     Aabb bounds = empty_aabb();
     shadow_order_.clear();
     for (const auto& inst : *frame.instances)
-        if (inst.casts_shadow && inst.mesh) {
+        if (casts_shadow(inst) && inst.mesh) {
             bounds = merge(bounds, transform_aabb(inst.mesh->bounds(), inst.world));
             shadow_order_.push_back(&inst);
         }
@@ -289,7 +370,7 @@ void SceneRenderer::render_shadows(const SceneFrame& frame, FrameStats& stats) {
             ++j;
         }
         shadow_batches_.push_back(
-            {shadow_order_[i]->mesh, nullptr, 0, static_cast<int>(i), static_cast<int>(j - i)});
+            {shadow_order_[i]->mesh, nullptr, 0, static_cast<int>(i), static_cast<int>(j - i), 0u});
         i = j;
     }
     Vec3 center = bounds.center();
@@ -324,7 +405,7 @@ void SceneRenderer::render_shadows(const SceneFrame& frame, FrameStats& stats) {
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
     glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previous_fbo));
-    glViewport(0, 0, frame.width, frame.height);
+    glViewport(0, 0, internal_width_, internal_height_);
 }
 
 void SceneRenderer::draw_batches(const Mat4& view_projection, const Vec3& eye, const SceneFrame& frame,
@@ -353,11 +434,6 @@ void SceneRenderer::draw_batches(const Mat4& view_projection, const Vec3& eye, c
     const GLint loc_flags = pbr_.location("u_map_flags");
     const GLint loc_base = pbr_.location("u_base_factor"), loc_emissive = pbr_.location("u_emissive_factor");
     const GLint loc_mr = pbr_.location("u_metal_rough"), loc_bump = pbr_.location("u_bump_strength");
-    const GLint loc_count = pbr_.location("u_light_count"), loc_pos = pbr_.location("u_light_position");
-    const GLint loc_color = pbr_.location("u_light_color"), loc_dir = pbr_.location("u_light_direction");
-    const GLint loc_inner = pbr_.location("u_light_inner");
-    Vec4 pos[kMaxLightsPerDraw], color[kMaxLightsPerDraw], dir[kMaxLightsPerDraw];
-    float inner[kMaxLightsPerDraw];
     for (const Batch& b : batches_) {
         if (b.material != bound_material) {
             const Material& m = *b.material;
@@ -381,25 +457,7 @@ void SceneRenderer::draw_batches(const Mat4& view_projection, const Vec3& eye, c
             bound_material = b.material;
         }
         if (b.light_mask != bound_mask) {
-            int n = 0;
-            for (std::uint32_t bits = b.light_mask; bits && n < kMaxLightsPerDraw; bits &= bits - 1) {
-                int k = std::countr_zero(bits);
-                const Light& l =
-                    (*frame.lights)[static_cast<size_t>(lights_in_view_[static_cast<size_t>(k)])];
-                pos[n] = Vec4(l.position, l.range);
-                color[n] = Vec4(l.color * l.intensity * kLegacyLightScale,
-                                l.type == Light::Type::Spot ? 1.0f : 0.0f);
-                dir[n] = Vec4(glm::normalize(l.direction), l.cos_outer);
-                inner[n] = std::max(l.cos_inner, l.cos_outer + 1e-3f);
-                ++n;
-            }
-            glUniform1i(loc_count, n);
-            if (n > 0) {
-                glUniform4fv(loc_pos, n, glm::value_ptr(pos[0]));
-                glUniform4fv(loc_color, n, glm::value_ptr(color[0]));
-                glUniform4fv(loc_dir, n, glm::value_ptr(dir[0]));
-                glUniform1fv(loc_inner, n, inner);
-            }
+            upload_lights(pbr_, b.light_mask, frame);
             bound_mask = b.light_mask;
         }
         glBindVertexArray(b.mesh->vao());
@@ -409,6 +467,111 @@ void SceneRenderer::draw_batches(const Mat4& view_projection, const Vec3& eye, c
         stats.triangles += static_cast<long long>(b.mesh->index_count() / 3) * b.count;
         stats.instances_drawn += b.count;
     }
+}
+
+void SceneRenderer::upload_lights(const ShaderProgram& program, std::uint32_t light_mask,
+                                  const SceneFrame& frame) {
+    Vec4 pos[kMaxLightsPerDraw], color[kMaxLightsPerDraw], dir[kMaxLightsPerDraw];
+    float inner[kMaxLightsPerDraw];
+    int n = 0;
+    for (std::uint32_t bits = light_mask; bits && n < kMaxLightsPerDraw; bits &= bits - 1) {
+        int k = std::countr_zero(bits);
+        const Light& l = (*frame.lights)[static_cast<size_t>(lights_in_view_[static_cast<size_t>(k)])];
+        pos[n] = Vec4(l.position, l.range);
+        color[n] = Vec4(l.color * l.intensity * kLegacyLightScale, l.type == Light::Type::Spot ? 1.0f : 0.0f);
+        dir[n] = Vec4(glm::normalize(l.direction), l.cos_outer);
+        inner[n] = std::max(l.cos_inner, l.cos_outer + 1e-3f);
+        ++n;
+    }
+    glUniform1i(program.location("u_light_count"), n);
+    if (n > 0) {
+        glUniform4fv(program.location("u_light_position"), n, glm::value_ptr(pos[0]));
+        glUniform4fv(program.location("u_light_color"), n, glm::value_ptr(color[0]));
+        glUniform4fv(program.location("u_light_direction"), n, glm::value_ptr(dir[0]));
+        glUniform1fv(program.location("u_light_inner"), n, inner);
+    }
+}
+
+void SceneRenderer::draw_batches_fast(const Camera& camera, const SceneFrame& frame, FrameStats& stats,
+                                      bool view_model) {
+    upload_instances();
+    const ShaderProgram& p = fast_program_;
+    p.use();
+    const Environment& env = frame.environment;
+    const Mat4 view_projection = camera.projection() * camera.view();
+    glUniformMatrix4fv(p.location("u_view_projection"), 1, GL_FALSE, glm::value_ptr(view_projection));
+    glUniformMatrix4fv(p.location("u_shadow_matrix"), 1, GL_FALSE, glm::value_ptr(shadow_matrix_));
+    glUniform3fv(p.location("u_camera_position"), 1, glm::value_ptr(camera.position));
+    Vec3 to_sun = -glm::normalize(env.sun_direction);
+    glUniform3fv(p.location("u_sun_direction"), 1, glm::value_ptr(to_sun));
+    Vec3 sun = env.sun_color * kLegacyLightScale;
+    glUniform3fv(p.location("u_sun_color"), 1, glm::value_ptr(sun));
+    glUniform3fv(p.location("u_sky_color"), 1, glm::value_ptr(env.sky_color));
+    glUniform3fv(p.location("u_ground_color"), 1, glm::value_ptr(env.ground_color));
+    glUniform3fv(p.location("u_fog_color"), 1, glm::value_ptr(env.fog_color));
+    // Fog from the depth buffer's value (perspective only; orthographic views have no fog here).
+    const bool fog = !view_model && !camera.orthographic();
+    glUniform1f(p.location("u_fog_density"), fog ? env.fog_density : 0.0f);
+    const float n = camera.near_plane, f = camera.far_plane;
+    glUniform2f(p.location("u_depth_to_view"), n * f / (f - n), f / (f - n));
+    glUniform1f(p.location("u_exposure"), env.exposure);
+    glUniform1f(p.location("u_lightmap_range"), lightmap_encoding_range());
+    glActiveTexture(GL_TEXTURE0 + kShadow);
+    glBindTexture(GL_TEXTURE_2D, shadow_texture_);
+    const bool shadows = settings_.shadows && shadow_texture_ != 0 && !view_model;
+    const GLint loc_flags = p.location("u_map_flags"), loc_baked = p.location("u_baked");
+    const GLint loc_receive = p.location("u_receive_shadow");
+    const GLint loc_base = p.location("u_base_factor"), loc_emissive = p.location("u_emissive_factor");
+    const GLint loc_mr = p.location("u_metal_rough");
+
+    const Material* bound_material = nullptr;
+    unsigned bound_lightmap = ~0u;
+    std::uint32_t bound_mask = ~0u;
+    for (const Batch& b : batches_) {
+        if (b.material != bound_material || b.lightmap != bound_lightmap) {
+            const Material& m = *b.material;
+            if (b.material != bound_material) {
+                auto bind = [&](int unit, unsigned id, unsigned fallback) {
+                    glActiveTexture(GL_TEXTURE0 + unit);
+                    glBindTexture(GL_TEXTURE_2D, id ? id : fallback);
+                };
+                bind(kBase, m.base_map, textures_.white().id);
+                bind(kOrm, m.orm_map, textures_.white().id);
+                bind(kEmissive, m.emissive_map, textures_.white().id);
+                // The placeholder checker has no mipmaps (a mip filter would make it incomplete): it keeps
+                // its own nearest filtering and sRGB decode.
+                const unsigned sampler = m.placeholder ? 0u : fast_sampler_;
+                glBindSampler(kBase, sampler);
+                glBindSampler(kEmissive, sampler);
+                glUniform4fv(loc_base, 1, glm::value_ptr(m.base_factor));
+                glUniform3fv(loc_emissive, 1, glm::value_ptr(m.emissive_factor));
+                glUniform2f(loc_mr, m.metallic, m.roughness);
+            }
+            if (b.lightmap != bound_lightmap && b.lightmap != 0) {
+                glActiveTexture(GL_TEXTURE0 + kLightmap);
+                glBindTexture(GL_TEXTURE_2D, b.lightmap);
+            }
+            const bool baked = b.lightmap != 0;
+            glUniform1i(loc_flags, (m.orm_map ? 2 : 0) | (m.emissive_map ? 4 : 0) | (baked ? 32 : 0) |
+                                       (raw_srgb_ && !m.placeholder ? 64 : 0));
+            glUniform1i(loc_baked, baked ? 1 : 0);
+            glUniform1i(loc_receive, shadows && !baked ? 1 : 0);
+            bound_material = b.material;
+            bound_lightmap = b.lightmap;
+        }
+        if (b.lightmap == 0 && b.light_mask != bound_mask) {
+            upload_lights(p, b.light_mask, frame);
+            bound_mask = b.light_mask;
+        }
+        glBindVertexArray(b.mesh->vao());
+        b.mesh->bind_instances(instance_buffer_, static_cast<size_t>(b.first) * sizeof(InstanceData));
+        glDrawElementsInstanced(GL_TRIANGLES, b.mesh->index_count(), GL_UNSIGNED_INT, nullptr, b.count);
+        ++stats.draw_calls;
+        stats.triangles += static_cast<long long>(b.mesh->index_count() / 3) * b.count;
+        stats.instances_drawn += b.count;
+    }
+    glBindSampler(kBase, 0);
+    glBindSampler(kEmissive, 0);
 }
 
 void SceneRenderer::draw_particles(const SceneFrame& frame, FrameStats& stats) {
@@ -493,16 +656,56 @@ void SceneRenderer::ensure_msaa_target(int width, int height) {
     msaa_height_ = height;
 }
 
+void SceneRenderer::ensure_scale_target(int width, int height) {
+    if (scale_fbo_ && width == scale_width_ && height == scale_height_) return;
+    if (!scale_fbo_) {
+        glGenFramebuffers(1, &scale_fbo_);
+        glGenRenderbuffers(1, &scale_color_);
+        glGenRenderbuffers(1, &scale_depth_);
+    }
+    glBindRenderbuffer(GL_RENDERBUFFER, scale_color_);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+    glBindRenderbuffer(GL_RENDERBUFFER, scale_depth_);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+    glBindFramebuffer(GL_FRAMEBUFFER, scale_fbo_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, scale_color_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, scale_depth_);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        log::warn("render scale ", settings_.render_scale, ": offscreen target unsupported; full resolution");
+        settings_.render_scale = 1.0f;
+    }
+    scale_width_ = width;
+    scale_height_ = height;
+}
+
 FrameStats SceneRenderer::render(const SceneFrame& frame) {
     FrameStats stats;
+    if (settings_.shader_hot_reload > 0) poll_shaders();
     GLint target_fbo = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target_fbo);
-    render_shadows(frame, stats);
-    if (settings_.msaa_samples > 0) {
-        ensure_msaa_target(frame.width, frame.height);
-        if (settings_.msaa_samples > 0) glBindFramebuffer(GL_FRAMEBUFFER, msaa_fbo_);
+    // The 3D scene's own resolution; a smaller one is scaled up into the target at the end.
+    const float scale = settings_.render_scale;
+    internal_width_ = std::max(1, static_cast<int>(std::lround(frame.width * scale)));
+    internal_height_ = std::max(1, static_cast<int>(std::lround(frame.height * scale)));
+    bool scaled = internal_width_ != frame.width || internal_height_ != frame.height;
+    if (scaled) {
+        ensure_scale_target(internal_width_, internal_height_);
+        if (settings_.render_scale >= 1.0f) { // the target failed: draw at full size
+            scaled = false;
+            internal_width_ = frame.width;
+            internal_height_ = frame.height;
+        }
     }
-    glViewport(0, 0, frame.width, frame.height);
+    stats.internal_width = internal_width_;
+    stats.internal_height = internal_height_;
+    stats.fast_path = fast_;
+    render_shadows(frame, stats);
+    if (settings_.msaa_samples > 0) ensure_msaa_target(internal_width_, internal_height_);
+    if (settings_.msaa_samples > 0)
+        glBindFramebuffer(GL_FRAMEBUFFER, msaa_fbo_);
+    else if (scaled)
+        glBindFramebuffer(GL_FRAMEBUFFER, scale_fbo_);
+    glViewport(0, 0, internal_width_, internal_height_);
     const Vec3 fog_srgb =
         frame.environment.fog_color; // the clear shows the fog colour, encoded like the shader
     auto encode = [](float c) {
@@ -520,8 +723,11 @@ FrameStats SceneRenderer::render(const SceneFrame& frame) {
         pick_lights(frame, stats);
         view_world_.clear();
         cull_and_batch(frame, stats);
-        draw_batches(frame.camera.projection() * frame.camera.view(), frame.camera.position, frame, stats,
-                     false);
+        if (fast_)
+            draw_batches_fast(frame.camera, frame, stats, false);
+        else
+            draw_batches(frame.camera.projection() * frame.camera.view(), frame.camera.position, frame, stats,
+                         false);
     }
     draw_particles(frame, stats);
     draw_debug(frame, stats);
@@ -541,17 +747,27 @@ FrameStats SceneRenderer::render(const SceneFrame& frame) {
         vm.near_plane = 0.01f;
         vm.far_plane = 20.0f;
         vm.fov_y = frame.view_model->fov_y;
-        draw_batches(vm.projection() * vm.view(), vm.position, frame, stats, true);
+        if (fast_)
+            draw_batches_fast(vm, frame, stats, true);
+        else
+            draw_batches(vm.projection() * vm.view(), vm.position, frame, stats, true);
         view_world_.clear();
     }
 
+    const int w = internal_width_, h = internal_height_;
     if (settings_.msaa_samples > 0) {
+        // Resolve (same size), then scale up if the scene was drawn smaller.
         glBindFramebuffer(GL_READ_FRAMEBUFFER, msaa_fbo_);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, scaled ? scale_fbo_ : static_cast<GLuint>(target_fbo));
+        glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    }
+    if (scaled) {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, scale_fbo_);
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target_fbo));
-        glBlitFramebuffer(0, 0, frame.width, frame.height, 0, 0, frame.width, frame.height,
-                          GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBlitFramebuffer(0, 0, w, h, 0, 0, frame.width, frame.height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target_fbo));
+    glViewport(0, 0, frame.width, frame.height);
     glBindVertexArray(0);
     glUseProgram(0);
     glActiveTexture(GL_TEXTURE0);

@@ -8,6 +8,7 @@
 #include "render/gpu_mesh.h"
 #include "render/particles.h"
 #include "render/scene.h"
+#include "render/shader_library.h"
 #include "render/shader_program.h"
 #include "render/shaders.h"
 
@@ -21,17 +22,37 @@ namespace ks::render {
 
 class TextureCache;
 
+// Full: per-pixel PBR for everything (GPUs). Fast (software rasterisers): the level geometry reads its
+// baked light map (MeshInstance::lightmap; ambient, sun shadows and every level light), models are lit per
+// vertex with the same lights, and the fragment shader is a few texture fetches. Auto picks from the GL
+// renderer string like MSAA; KS_RENDER_QUALITY=full|fast overrides Auto.
+enum class RenderQuality { Auto, Full, Fast };
+
 struct RendererSettings {
     int msaa_samples = 0; // 0: draw straight into the bound framebuffer; 2/4/8: multisampled target
     int shadow_map_size = 2048;
     bool shadows = true;
     bool surface_detail = true; // normal and bump (height) maps; off: the geometric normal only
     int max_lights_per_draw = kMaxLightsPerDraw; // nearest point/spot lights shading each object, 0..8
+    RenderQuality quality = RenderQuality::Auto;
+    // The 3D scene is drawn at this fraction of the target's width and height, then scaled up (bilinear)
+    // into the target, so a HUD drawn afterwards stays sharp. 0: automatic (1 on GPUs,
+    // kSoftwareRenderScale on software rasterisers; KS_RENDER_SCALE=0.25..1 overrides).
+    float render_scale = 0.0f;
+    std::string shader_dir; // empty: default_shader_dir() (assets/shaders, or $KS_SHADER_DIR)
+    int shader_hot_reload =
+        -1; // 1: re-read changed shader files once a second; -1: default_shader_hot_reload()
 };
+
+inline constexpr float kSoftwareRenderScale = 0.5f;
 
 // MSAA 4x on real GPUs, none on software rasterisers (llvmpipe, softpipe, SwiftShader), where every
 // sample is CPU time; see docs/rendering.md for the measurements behind this.
 int default_msaa_for(const std::string& gl_renderer);
+// Fast on software rasterisers, Full on GPUs (KS_RENDER_QUALITY=full|fast overrides).
+RenderQuality default_quality_for(const std::string& gl_renderer);
+// 1 on GPUs, kSoftwareRenderScale on software rasterisers (KS_RENDER_SCALE overrides, clamped 0.25..1).
+float default_render_scale_for(const std::string& gl_renderer);
 
 struct ViewModel {
     std::vector<MeshInstance> instances; // in camera space (x right, y up, -z forward)
@@ -58,7 +79,20 @@ class SceneRenderer {
     // Draws into the framebuffer bound now (viewport = frame.width x frame.height).
     FrameStats render(const SceneFrame& frame);
     void invalidate_shadows() { shadow_hash_ = 0; }
+    // The settings with Auto values resolved (quality, render_scale, shader_hot_reload).
     const RendererSettings& settings() const { return settings_; }
+    // What a game's options screen changes at run time: quality (Auto re-resolves from the GL renderer)
+    // and the 3D render scale (clamped to 0.25..1; 0 = automatic).
+    void set_quality(RenderQuality quality);
+    RenderQuality quality() const { return settings_.quality; }
+    void set_render_scale(float scale);
+    float render_scale() const { return settings_.render_scale; }
+
+    // Shader hot reload: render() calls this once per frame when enabled (it checks the files at most
+    // once a second); tests call it with force. Returns how many programs were rebuilt.
+    int poll_shaders(bool force = false);
+    // A program's GL name by its ProgramFiles name ("pbr", "fast", ...), 0 if unknown (tests).
+    unsigned program_id(const std::string& name) const;
 
   private:
     SceneRenderer(TextureCache& textures, RendererSettings settings)
@@ -69,6 +103,15 @@ class SceneRenderer {
     void render_shadows(const SceneFrame& frame, FrameStats& stats);
     void draw_batches(const Mat4& view_projection, const Vec3& eye, const SceneFrame& frame,
                       FrameStats& stats, bool view_model);
+    void draw_batches_fast(const Camera& camera, const SceneFrame& frame, FrameStats& stats, bool view_model);
+    void upload_lights(const ShaderProgram& program, std::uint32_t light_mask, const SceneFrame& frame);
+    bool casts_shadow(const MeshInstance& inst) const {
+        // The fast path bakes the level's sun shadows; its shadow map (for models, per vertex) holds only
+        // static level geometry, so moving robots never force a redraw.
+        return inst.casts_shadow && (!fast_ || inst.lightmap != 0);
+    }
+    void ensure_scale_target(int width, int height);
+    void resolve_settings();
     void draw_particles(const SceneFrame& frame, FrameStats& stats);
     void draw_debug(const SceneFrame& frame, FrameStats& stats);
     void ensure_msaa_target(int width, int height);
@@ -77,7 +120,16 @@ class SceneRenderer {
 
     TextureCache& textures_;
     RendererSettings settings_;
-    ShaderProgram pbr_, shadow_, particle_, line_;
+    ShaderProgram pbr_, fast_program_, shadow_, particle_, line_;
+    std::unique_ptr<ShaderLibrary> shaders_;
+    std::string gl_renderer_;
+    bool fast_ = false;
+    int internal_width_ = 0, internal_height_ = 0;
+    unsigned scale_fbo_ = 0, scale_color_ = 0, scale_depth_ = 0;
+    unsigned fast_sampler_ =
+        0;                  // the fast path's colour maps: bilinear between mips, sRGB decoded in the shader
+    bool raw_srgb_ = false; // fast_sampler_ skips the sampler's sRGB decode (GL_EXT_texture_sRGB_decode)
+    int scale_width_ = 0, scale_height_ = 0;
     unsigned instance_buffer_ = 0, particle_vao_ = 0, particle_quad_ = 0, particle_buffer_ = 0;
     unsigned line_vao_ = 0, line_buffer_ = 0;
     unsigned shadow_fbo_ = 0, shadow_texture_ = 0;
@@ -92,12 +144,14 @@ class SceneRenderer {
         float distance;
         std::uint32_t light_mask;
         Aabb bounds;
+        unsigned lightmap; // 0 unless the fast path reads this instance's light map
     };
     struct Batch {
         const GpuMesh* mesh;
         const Material* material;
         std::uint32_t light_mask;
         int first, count; // into instance_data_
+        unsigned lightmap;
     };
     std::vector<Visible> visible_;
     std::vector<Batch> batches_;

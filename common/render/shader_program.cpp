@@ -54,7 +54,7 @@ Result<unsigned> compile(GLenum stage, const ShaderSource& source) {
         std::string log = format_shader_log(info_log(shader, false), source.name);
         glDeleteShader(shader);
         return Error("shader compile failed:\n" + log, Location{source.name},
-                     "fix the GLSL in common/render/shaders.cpp");
+                     "fix the GLSL at that line (the renderer reads it from assets/shaders/)");
     }
     return shader;
 }

@@ -1,0 +1,66 @@
+#version 330 core
+// The fast path's pixels: base colour x (light map or per-vertex light) + emissive, fog from the depth
+// buffer's value (no extra varying), ACES and sRGB like pbr.frag.
+in vec2 v_uv;
+in vec2 v_lightmap_uv;
+in vec3 v_diffuse;
+in vec3 v_specular;
+in float v_emissive_scale;
+out vec4 o_color;
+
+uniform sampler2D u_base_map;
+uniform sampler2D u_orm_map;
+uniform sampler2D u_emissive_map;
+uniform sampler2D u_lightmap;
+uniform vec4 u_base_factor;
+uniform vec3 u_emissive_factor;
+uniform vec2 u_metal_rough;
+uniform int u_map_flags;       // 2 orm, 4 emissive, 32 light map, 64 sRGB maps read raw (decode here)
+uniform float u_lightmap_range; // > 0: the light map is 8-bit, sqrt-encoded over 0..range
+uniform vec3 u_fog_color;
+uniform float u_fog_density;
+uniform float u_exposure;
+uniform vec2 u_depth_to_view;  // view depth = x / (y - window depth): x = n f / (f - n), y = f / (f - n)
+
+vec3 aces(vec3 x) { // Narkowicz 2015 fit
+    return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
+}
+// Gamma 2 instead of the sRGB curve: a square root and a square instead of pow() per channel (within
+// 9/255 of sRGB in the mid-tones; a texture shown at unit light round-trips exactly).
+vec3 encode(vec3 c) { return sqrt(c); }
+
+void main() {
+    vec4 base = texture(u_base_map, v_uv);
+    bool raw = (u_map_flags & 64) != 0;
+    if (raw) base.rgb *= base.rgb;
+    base *= u_base_factor;
+    float metallic = u_metal_rough.x, ao = 1.0;
+    if ((u_map_flags & 2) != 0) {
+        vec3 orm = texture(u_orm_map, v_uv).rgb;
+        ao = orm.r;
+        metallic *= orm.b;
+    }
+    vec3 f0 = mix(vec3(0.04), base.rgb, metallic);
+    vec3 color;
+    if ((u_map_flags & 32) != 0) {
+        // The light map holds irradiance (ambient + sun + lights, diffuse); metals get a rough
+        // specular share of it.
+        vec3 light = texture(u_lightmap, v_lightmap_uv).rgb;
+        if (u_lightmap_range > 0.0) light = light * light * u_lightmap_range;
+        light *= ao;
+        color = light * (base.rgb * (1.0 - metallic) + f0 * 0.5);
+    } else {
+        color = base.rgb * (1.0 - metallic) * v_diffuse * ao + f0 * v_specular;
+    }
+    vec3 emissive = u_emissive_factor * v_emissive_scale;
+    if ((u_map_flags & 4) != 0) {
+        vec3 e = texture(u_emissive_map, v_uv).rgb;
+        emissive *= raw ? e * e : e;
+    }
+    color += emissive;
+
+    float dist = u_depth_to_view.x / (u_depth_to_view.y - gl_FragCoord.z);
+    float fog = 1.0 - exp(-u_fog_density * u_fog_density * dist * dist);
+    color = mix(color, u_fog_color, clamp(fog, 0.0, 1.0));
+    o_color = vec4(encode(aces(color * u_exposure)), base.a);
+}

@@ -1,0 +1,80 @@
+#pragma once
+// Light baked into a light map for static level geometry, the fast path's answer to per-pixel lighting
+// on software rasterisers. No GL here (testable on the CPU); LightmapTexture uploads the result.
+//
+// Each rectangular face of the level's box meshes (append_box/append_stairs: 4 vertices per face, 24 per
+// box) gets a rectangle of texels in one atlas, texel centres on the face's edges so bilinear filtering
+// never reads a neighbour. A texel stores diffuse irradiance in pbr.frag's units (what multiplies albedo):
+// the hemisphere ambient, the sun (with shadows: a ray against the level's boxes, ceilings excluded as
+// in the full path) and each point/spot light with its falloff and cone, occluded by the boxes (so
+// unlike the full path, light does not leak through walls). Every light's share is kept per texel, so a
+// light switching on or off re-combines the atlas in a few milliseconds instead of re-baking.
+#include "render/mesh_data.h"
+#include "render/scene.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace ks::render {
+
+struct BakeSettings {
+    float texel_size = 0.5f;        // world units per texel (doubled until the atlas fits max_texels)
+    long long max_texels = 1 << 20; // RGB16F: 6 MiB of texture at most
+    int atlas_width = 2048;
+};
+
+struct BakeSurface {
+    MeshData* mesh;  // world space, built from boxes; its vertices' lightmap_uv are written by bake()
+    bool blocks_sun; // ceilings do not (the full path's ceilings cast no sun shadow either)
+};
+
+struct BakeStats {
+    int faces = 0, occluders = 0;
+    long long texels = 0, light_texels = 0; // light_texels: (texel, light) pairs kept for re-combining
+    float texel_size = 0.0f;
+    double bake_ms = 0.0; // CPU time of bake()
+};
+
+class LightBake {
+  public:
+    // Lays the faces out, writes their vertices' lightmap_uv, and computes every texel.
+    BakeStats bake(const std::vector<BakeSurface>& surfaces, const Environment& environment,
+                   const std::vector<Light>& lights, const BakeSettings& settings = {});
+
+    // Switching a light (an index into bake()'s `lights`) marks the atlas for re-combining.
+    void set_light_on(int light, bool on);
+    bool light_on(int light) const;
+    // Re-combines ambient + sun + the lights that are on into texels() when something changed; returns
+    // whether it did.
+    bool update();
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    // width() x height() linear RGB, rows bottom-up (GL's order).
+    const std::vector<Vec3>& texels() const { return combined_; }
+    // The baked irradiance at a light-map coordinate (nearest texel; for tests).
+    Vec3 sample(const Vec2& uv) const;
+
+  private:
+    struct Occluder {
+        Mat4 to_local; // world -> box space (centred, axis-aligned)
+        Vec3 half;
+        bool blocks_sun;
+    };
+    struct Share {
+        std::uint32_t texel;
+        float amount; // atten * cos * visibility, times the light's colour * intensity when combined
+    };
+    bool occluded(const Vec3& from, const Vec3& dir, float length, bool sun) const;
+
+    int width_ = 0, height_ = 0;
+    std::vector<Occluder> occluders_;
+    std::vector<Vec3> base_;     // ambient + sun
+    std::vector<Vec3> combined_; // what is uploaded
+    std::vector<std::vector<Share>> shares_;
+    std::vector<Vec3> light_color_;
+    std::vector<char> light_on_;
+    bool dirty_ = true;
+};
+
+} // namespace ks::render

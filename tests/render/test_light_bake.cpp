@@ -1,0 +1,166 @@
+// The fast path's light bake (CPU only): layout, sun shadows, light falloff and occlusion, re-combining
+// when a light switches, bad input.
+#include "render/light_bake.h"
+
+#include <doctest/doctest.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+
+using namespace ks;
+using namespace ks::render;
+
+namespace {
+// A floor slab 20 x 20 (top at y = 0) and a wall 16 high standing on it along x = 0 (0.5 thick).
+struct Room {
+    MeshData floor, wall;
+    Room() {
+        append_box(floor, Vec3(0, -0.25f, 0), Vec3(20, 0.5f, 20), Mat4(1.0f), 2.0f);
+        append_box(wall, Vec3(0, 8, 0), Vec3(0.5f, 16, 20), Mat4(1.0f), 4.0f);
+    }
+    std::vector<BakeSurface> surfaces() { return {{&floor, true}, {&wall, true}}; }
+};
+
+// The floor's top face (append_box's third face: +y) at world (x, z), through the vertices' light-map
+// coordinates (bilinear weights over the face's corners).
+Vec3 floor_light(const LightBake& bake, const MeshData& floor, float x, float z) {
+    const Vertex* top = &floor.vertices[8];
+    Vec3 o = top[0].position, u = top[1].position - o, v = top[3].position - o;
+    float s = glm::dot(Vec3(x, 0, z) - o, u) / glm::dot(u, u);
+    float t = glm::dot(Vec3(x, 0, z) - o, v) / glm::dot(v, v);
+    Vec2 uv = top[0].lightmap_uv + (top[1].lightmap_uv - top[0].lightmap_uv) * s +
+              (top[3].lightmap_uv - top[0].lightmap_uv) * t;
+    return bake.sample(uv);
+}
+
+Environment dark_with_sun(Vec3 sun_direction) {
+    Environment env;
+    env.sky_color = Vec3(0.1f);
+    env.ground_color = Vec3(0.1f);
+    env.sun_direction = glm::normalize(sun_direction);
+    env.sun_color = Vec3(1.0f);
+    return env;
+}
+} // namespace
+
+TEST_CASE("light bake: every face gets its own texel rectangle, coordinates inside the atlas") {
+    Room room;
+    LightBake bake;
+    BakeStats stats = bake.bake(room.surfaces(), Environment{}, {});
+    CHECK(stats.faces == 12);
+    CHECK(stats.occluders == 2);
+    CHECK(stats.texel_size == doctest::Approx(0.5f));
+    CHECK(bake.width() > 0);
+    CHECK(bake.height() > 0);
+    CHECK(static_cast<long long>(bake.texels().size()) == stats.texels);
+    std::vector<std::array<float, 4>> rects;
+    for (MeshData* m : {&room.floor, &room.wall})
+        for (size_t q = 0; q < m->vertices.size(); q += 4) {
+            Vec2 lo(1e9f), hi(-1e9f);
+            for (size_t i = 0; i < 4; ++i) {
+                Vec2 uv = m->vertices[q + i].lightmap_uv;
+                CHECK(uv.x > 0.0f);
+                CHECK(uv.x < 1.0f);
+                CHECK(uv.y > 0.0f);
+                CHECK(uv.y < 1.0f);
+                lo = glm::min(lo, uv);
+                hi = glm::max(hi, uv);
+            }
+            CHECK(hi.x > lo.x);
+            CHECK(hi.y > lo.y);
+            rects.push_back({lo.x, lo.y, hi.x, hi.y});
+        }
+    for (size_t a = 0; a < rects.size(); ++a)
+        for (size_t b = a + 1; b < rects.size(); ++b) {
+            bool apart = rects[a][2] < rects[b][0] || rects[b][2] < rects[a][0] ||
+                         rects[a][3] < rects[b][1] || rects[b][3] < rects[a][1];
+            CHECK(apart);
+        }
+}
+
+TEST_CASE("light bake: the wall's sun shadow falls on the floor, on the side away from the sun") {
+    Room room;
+    LightBake bake;
+    // Sunlight travels toward +x and down at 45 degrees: the wall (x = 0, 16 high) shades x in 0.25..16.
+    bake.bake(room.surfaces(), dark_with_sun(Vec3(1, -1, 0)), {});
+    Vec3 lit = floor_light(bake, room.floor, -5.0f, 0.0f);
+    Vec3 shaded = floor_light(bake, room.floor, 5.0f, 0.0f);
+    // Lit: ambient 0.1 + sun 1 * cos 45°; shaded: the ambient only.
+    CHECK(lit.x == doctest::Approx(0.1f + std::sqrt(0.5f)).epsilon(0.02));
+    CHECK(shaded.x == doctest::Approx(0.1f).epsilon(0.02));
+    // A ceiling-like surface that does not block the sun casts nothing.
+    std::vector<BakeSurface> no_block = {{&room.floor, true}, {&room.wall, false}};
+    bake.bake(no_block, dark_with_sun(Vec3(1, -1, 0)), {});
+    CHECK(floor_light(bake, room.floor, 5.0f, 0.0f).x == doctest::Approx(lit.x).epsilon(0.02));
+}
+
+TEST_CASE("light bake: point light falloff like the shader, blocked by walls, re-combined when switched") {
+    Room room;
+    Light light;
+    light.position = Vec3(-5, 4, 0);
+    light.range = 10.0f;
+    light.color = Vec3(1.0f, 0.5f, 0.25f);
+    light.intensity = 2.0f;
+    LightBake bake;
+    Environment env; // no ambient, no sun: only the light
+    env.sky_color = env.ground_color = env.sun_color = Vec3(0.0f);
+    BakeStats stats = bake.bake(room.surfaces(), env, {light});
+    CHECK(stats.light_texels > 0);
+    // Straight below: distance 4, cos 1 -> colour * intensity * (1 - 4/10).
+    Vec3 below = floor_light(bake, room.floor, -5.0f, 0.0f);
+    CHECK(below.x == doctest::Approx(2.0f * 0.6f).epsilon(0.02));
+    CHECK(below.y == doctest::Approx(1.0f * 0.6f).epsilon(0.02));
+    // Beyond the range: nothing. Behind the wall (x > 0.25), within range: occluded.
+    CHECK(floor_light(bake, room.floor, -5.0f, 9.9f).x < 1e-3f);
+    CHECK(floor_light(bake, room.floor, 1.0f, 0.0f).x < 1e-3f);
+    // Switching it off leaves nothing; on again restores it exactly.
+    bake.set_light_on(0, false);
+    CHECK_FALSE(bake.light_on(0));
+    CHECK(bake.update());
+    CHECK(floor_light(bake, room.floor, -5.0f, 0.0f).x == 0.0f);
+    CHECK_FALSE(bake.update()); // nothing changed since
+    bake.set_light_on(0, true);
+    CHECK(bake.update());
+    CHECK(floor_light(bake, room.floor, -5.0f, 0.0f).x == doctest::Approx(below.x));
+    bake.set_light_on(7, false); // no such light: ignored
+    CHECK_FALSE(bake.update());
+}
+
+TEST_CASE("light bake: a spot light lights its cone only") {
+    Room room;
+    Light spot;
+    spot.type = Light::Type::Spot;
+    spot.position = Vec3(-5, 6, 0);
+    spot.direction = Vec3(0, -1, 0);
+    spot.range = 20.0f;
+    spot.cos_outer = std::cos(radians(20.0f));
+    spot.cos_inner = std::cos(radians(14.0f));
+    Environment env;
+    env.sky_color = env.ground_color = env.sun_color = Vec3(0.0f);
+    LightBake bake;
+    bake.bake(room.surfaces(), env, {spot});
+    CHECK(floor_light(bake, room.floor, -5.0f, 0.0f).x == doctest::Approx(1.0f - 6.0f / 20.0f).epsilon(0.02));
+    CHECK(floor_light(bake, room.floor, -5.0f, 5.0f).x < 1e-3f); // 40° off the axis
+}
+
+TEST_CASE("light bake: bad input gives finite texels, never a crash") {
+    Room room;
+    Light nan_light;
+    nan_light.position = Vec3(std::nanf(""), 0, 0);
+    Light huge;
+    huge.position = Vec3(0, 4, 0);
+    huge.range = 1e30f;
+    Environment env = dark_with_sun(Vec3(0, -1, 0));
+    env.sun_direction = Vec3(std::nanf(""));
+    LightBake bake;
+    BakeSettings tiny;
+    tiny.texel_size = 1e-6f; // absurd: coarsened until the atlas fits
+    BakeStats stats = bake.bake(room.surfaces(), env, {nan_light, huge}, tiny);
+    CHECK(stats.texels <= tiny.max_texels);
+    CHECK(stats.texel_size > 1e-6f);
+    for (const Vec3& t : bake.texels()) REQUIRE(is_finite(t));
+    // No surfaces at all: an empty (1-texel-high) atlas.
+    LightBake empty;
+    BakeStats none = empty.bake({}, Environment{}, {});
+    CHECK(none.faces == 0);
+}
