@@ -129,6 +129,7 @@ class GameApp {
         : shell_(shell), renderer_(renderer), assets_(assets), level_path_(std::move(level_path)),
           seed_(seed) {
         options_ = load_options(options_path());
+        apply_render_options();
         events_.install(shell_.window());
     }
 
@@ -165,6 +166,7 @@ class GameApp {
         screen_ = s;
     }
     void save_options_now();
+    void apply_render_options();
     bool in_world() const { return screen_ == Screen::Playing; }
     void apply_warp();
     void run_script(long long frame);
@@ -346,6 +348,14 @@ void GameApp::retry() {
     load(level_path_, session_ && session_->dojo, Screen::Playing);
 }
 
+// The options a slow machine needs, passed to the renderer (at start and whenever the panel changes them).
+void GameApp::apply_render_options() {
+    renderer_.set_render_scale(options_.render_scale);
+    renderer_.set_quality(options_.quality == QualityOption::Full   ? render::RenderQuality::Full
+                          : options_.quality == QualityOption::Fast ? render::RenderQuality::Fast
+                                                                    : render::RenderQuality::Auto);
+}
+
 void GameApp::save_options_now() {
     if (!options_dirty_) return;
     options_dirty_ = false;
@@ -463,6 +473,12 @@ void GameApp::write_status(const render::FrameInfo& info) {
     };
     add("screen %s", screen_name(screen_));
     add("captured %d", input_.captured() ? 1 : 0);
+    add("options sensitivity %.2f fov %.0f invert_y %d render_scale %.2f quality %s",
+        options_.mouse_sensitivity, options_.fov_degrees, options_.invert_y ? 1 : 0, options_.render_scale,
+        quality_name(options_.quality));
+    // What the renderer made of them (automatic values resolved for this GL driver).
+    add("renderer render_scale %.2f quality %s", renderer_.render_scale(),
+        renderer_.quality() == render::RenderQuality::Fast ? "fast" : "full");
     for (const auto& b : ui::buttons_drawn())
         add("button %.0f %.0f %.0f %.0f %s", b.x0, b.y0, b.x1, b.y1, b.label.c_str());
     if (session_ && session_->game) {
@@ -584,6 +600,7 @@ void GameApp::imgui(const render::FrameInfo& info) {
         bool changed = false;
         action = options_panel(options_, changed, fonts, w, h);
         options_dirty_ |= changed;
+        if (changed) apply_render_options();
         break;
     }
     case Screen::Paused:

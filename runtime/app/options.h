@@ -18,15 +18,27 @@
 
 namespace ks::runtime {
 
+// Drawing quality (render::RenderQuality): Auto picks Fast on software rasterisers, Full on GPUs.
+enum class QualityOption { Auto, Full, Fast };
+
+inline const char* quality_name(QualityOption q) {
+    return q == QualityOption::Full ? "full" : q == QualityOption::Fast ? "fast" : "auto";
+}
+
 struct Options {
     float mouse_sensitivity = 1.0f; // multiplies the base 0.0022 rad per pixel
     bool invert_y = false;
     float fov_degrees = 75.0f; // vertical field of view
+    // What makes a slow machine playable: the 3D scene's resolution as a fraction of the window (0 =
+    // automatic: 1 on GPUs, 0.5 on software rasterisers; else 0.25..1) and the shading quality.
+    float render_scale = 0.0f;
+    QualityOption quality = QualityOption::Auto;
     bool operator==(const Options&) const = default;
 
     static constexpr float kMinSensitivity = 0.1f, kMaxSensitivity = 5.0f;
     static constexpr float kMinFov = 50.0f, kMaxFov = 110.0f;
     static constexpr float kRadiansPerPixel = 0.0022f;
+    static constexpr float kMinRenderScale = 0.25f, kMaxRenderScale = 1.0f;
 };
 
 // Where the options live: $XDG_CONFIG_HOME/killswitch, else $HOME/.config/killswitch, else ./.killswitch.
@@ -46,6 +58,8 @@ inline std::string options_to_json(const Options& o) {
     j["mouse_sensitivity"] = o.mouse_sensitivity;
     j["invert_y"] = o.invert_y;
     j["fov_degrees"] = o.fov_degrees;
+    j["render_scale"] = o.render_scale;
+    j["quality"] = quality_name(o.quality);
     return j.dump(2) + "\n";
 }
 
@@ -71,6 +85,27 @@ inline Options options_from_json(const std::string& text, std::vector<std::strin
     };
     read_number("mouse_sensitivity", o.mouse_sensitivity, Options::kMinSensitivity, Options::kMaxSensitivity);
     read_number("fov_degrees", o.fov_degrees, Options::kMinFov, Options::kMaxFov);
+    if (j.contains("render_scale")) {
+        const auto& v = j["render_scale"];
+        const bool number = v.is_number() && is_finite(v.get<float>());
+        const float f = number ? v.get<float>() : -1.0f;
+        if (number && (f == 0.0f || (f >= Options::kMinRenderScale && f <= Options::kMaxRenderScale)))
+            o.render_scale = f;
+        else
+            problems.push_back("render_scale: expected 0 (automatic) or a number in 0.25..1, got " +
+                               v.dump() + "; using the default 0 (automatic)");
+    }
+    if (j.contains("quality")) {
+        const auto& v = j["quality"];
+        const std::string q = v.is_string() ? v.get<std::string>() : "";
+        if (q == "auto" || q == "full" || q == "fast")
+            o.quality = q == "full"   ? QualityOption::Full
+                        : q == "fast" ? QualityOption::Fast
+                                      : QualityOption::Auto;
+        else
+            problems.push_back("quality: expected \"auto\", \"full\" or \"fast\", got " + v.dump() +
+                               "; using the default \"auto\"");
+    }
     if (j.contains("invert_y")) {
         if (j["invert_y"].is_boolean())
             o.invert_y = j["invert_y"].get<bool>();

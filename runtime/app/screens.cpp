@@ -179,7 +179,7 @@ MenuAction options_panel(Options& o, bool& changed, const render::Fonts& fonts, 
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
     MenuAction action = MenuAction::None;
     const float s = ui::ui_scale(h);
-    ui::begin_panel("##options", "Options", 640, 330, w, h, fonts);
+    ui::begin_panel("##options", "Options", 640, 440, w, h, fonts);
     ImGui::PushStyleColor(ImGuiCol_FrameBg, IM_COL32(205, 214, 218, 255));
     ImGui::PushStyleColor(ImGuiCol_FrameBgHovered, IM_COL32(190, 205, 212, 255));
     ImGui::PushStyleColor(ImGuiCol_FrameBgActive, IM_COL32(180, 198, 206, 255));
@@ -206,6 +206,34 @@ MenuAction options_panel(Options& o, bool& changed, const render::Fonts& fonts, 
                                   ImGuiSliderFlags_AlwaysClamp);
     label("Invert mouse Y");
     changed |= ImGui::Checkbox("##invert", &o.invert_y);
+    ui::record_button("Invert mouse Y");
+    // For slow machines: fewer pixels (the HUD and menus stay sharp) and cheaper shading.
+    label("Render scale");
+    {
+        static const char* names[] = {"Auto", "25 %", "50 %", "75 %", "100 %"};
+        int step =
+            o.render_scale <= 0.0f ? 0 : std::clamp(static_cast<int>(o.render_scale * 4.0f + 0.5f), 1, 4);
+        if (ImGui::SliderInt("##scale", &step, 0, 4, names[step], ImGuiSliderFlags_AlwaysClamp)) {
+            o.render_scale = step == 0 ? 0.0f : static_cast<float>(step) * 0.25f;
+            changed = true;
+        }
+    }
+    label("Quality");
+    {
+        int q = static_cast<int>(o.quality);
+        bool moved = ImGui::RadioButton("Auto", &q, 0);
+        ui::record_button("Auto");
+        ImGui::SameLine();
+        moved |= ImGui::RadioButton("Full", &q, 1);
+        ui::record_button("Full");
+        ImGui::SameLine();
+        moved |= ImGui::RadioButton("Fast", &q, 2);
+        ui::record_button("Fast");
+        if (moved) {
+            o.quality = static_cast<QualityOption>(q);
+            changed = true;
+        }
+    }
     ImGui::SetCursorPosX(40 * s);
     ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(90, 100, 110, 255));
     ImGui::TextUnformatted(("Saved to " + options_path().string()).c_str());

@@ -19,6 +19,8 @@ TEST_CASE("options: save then load gives the same options, in a folder that did 
     o.mouse_sensitivity = 2.5f;
     o.invert_y = true;
     o.fov_degrees = 90.0f;
+    o.render_scale = 0.5f;
+    o.quality = runtime::QualityOption::Fast;
     REQUIRE(runtime::save_options(path, o).ok());
     CHECK(runtime::load_options(path) == o);
     // Saving again replaces the file whole (no temporary left beside it).
@@ -58,6 +60,11 @@ TEST_CASE("options: bad files give defaults (per field) and a warning naming the
         {R"({"fov_degrees": 1000})", "fov_degrees"},
         {R"({"fov_degrees": null})", "fov_degrees"},
         {R"({"invert_y": "yes"})", "invert_y"},
+        {R"({"render_scale": 0.1})", "render_scale"},
+        {R"({"render_scale": 2})", "render_scale"},
+        {R"({"render_scale": "half"})", "render_scale"},
+        {R"({"quality": "ultra"})", "quality"},
+        {R"({"quality": 1})", "quality"},
     };
     for (const auto& c : cases) {
         CAPTURE(c.text);
@@ -79,6 +86,25 @@ TEST_CASE("options: a bad field does not throw away the good ones") {
     CHECK(o.fov_degrees == doctest::Approx(Options{}.fov_degrees));
     REQUIRE(problems.size() == 1);
     CHECK(problems[0].find("fov_degrees") != std::string::npos);
+}
+
+TEST_CASE("options: render scale 0 means automatic; 0.25..1 are kept; quality by name") {
+    std::vector<std::string> problems;
+    CHECK(runtime::options_from_json(R"({"render_scale": 0})", problems).render_scale == 0.0f);
+    CHECK(runtime::options_from_json(R"({"render_scale": 0.25})", problems).render_scale == 0.25f);
+    CHECK(runtime::options_from_json(R"({"render_scale": 1})", problems).render_scale == 1.0f);
+    CHECK(runtime::options_from_json(R"({"quality": "full"})", problems).quality ==
+          runtime::QualityOption::Full);
+    CHECK(runtime::options_from_json(R"({"quality": "auto"})", problems).quality ==
+          runtime::QualityOption::Auto);
+    CHECK(problems.empty());
+    // Files from before these fields existed still read (defaults: automatic).
+    const Options old = runtime::options_from_json(R"({"format": "killswitch-options", "version": 1,
+        "mouse_sensitivity": 2, "invert_y": false, "fov_degrees": 80})",
+                                                   problems);
+    CHECK(old.render_scale == 0.0f);
+    CHECK(old.quality == runtime::QualityOption::Auto);
+    CHECK(problems.empty());
 }
 
 TEST_CASE("options: the file lives under XDG_CONFIG_HOME, else ~/.config") {
