@@ -214,7 +214,12 @@ void move_character(const ObstacleSource& world, float radius, float half_segmen
     if (!(dt > 0.0f) || !is_finite(position)) return;
     sanitize(state.movement);
     MovementState& m = state.movement;
-    const float cos_slope = std::cos(radians(std::clamp(cs.max_slope_degrees, 0.0f, 89.0f)));
+    // cos of the slope limit, remembered for the last limit seen (every character of a game shares one, and
+    // a cosf call per character per step is measurable).
+    static thread_local float memo_degrees = -1.0f, memo_cos = 1.0f;
+    const float degrees = std::clamp(cs.max_slope_degrees, 0.0f, 89.0f);
+    if (!(degrees == memo_degrees)) memo_degrees = degrees, memo_cos = std::cos(radians(degrees));
+    const float cos_slope = memo_cos;
     if (state.grounded && m.velocity.y > 1e-4f) { // the game launched it (jump, explosion): leave the ground
         state.grounded = false;
         state.jumping = true;

@@ -149,20 +149,21 @@ class World {
 
   private:
     struct Body {
-        Shape shape;
-        Transform transform;
-        Vec3 previous_position{0.0f};
+        // What broadphase queries test for every candidate first, together in the first cache line.
         Aabb bounds;
         std::uint32_t generation = 0;
         std::uint32_t layers = 0;
         std::uint32_t collides_with = 0;
         std::uint32_t character_slot = 0xffffffffu;
-        std::uint64_t user_data = 0;
         Motion motion = Motion::Static;
         bool trigger = false;
         bool alive = false;
         bool enabled = true;
         bool yaw_only = false;
+        Transform transform;
+        Shape shape;
+        Vec3 previous_position{0.0f};
+        std::uint64_t user_data = 0;
     };
     // The static bodies near a character, kept across steps: the BVH is queried for a box
     // `kStaticCacheMargin` wider than the controller's region and asked again only when the region leaves
