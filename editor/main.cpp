@@ -16,6 +16,7 @@ void print_help() {
     std::printf(
         "usage: killswitch-editor [--level FILE] [--script FILE] [--run FILE] [--camera x,y,z,yaw,pitch] "
         "[--dojo]\n"
+        "                         [--view top|front|side|perspective] [--status-file FILE]\n"
         "                         [--width W] [--height H] [--screenshot FILE --frames N] [--no-vsync]\n"
         "  --level FILE      open a level file (default: a new untitled level)\n"
         "  --script FILE     run editor commands (docs/editor.md) without a window, then exit:\n"
@@ -23,6 +24,10 @@ void print_help() {
         "  --run FILE        run editor commands in the window session before the first frame\n"
         "  --camera ...      viewport camera x,y,z,yaw,pitch in degrees (yaw 0 looks along -z)\n"
         "  --dojo            start in the dojo (animation) tab\n"
+        "  --view V          start in the top, front or side (orthographic) or perspective view\n"
+        "  --status-file F   rewrite F with a JSON snapshot of the session (selection, entity count, undo\n"
+        "                    depth, dirty flag, play-test, where the palette and gizmo are) when it changes\n"
+        "  $KS_PLAYTEST_COMMAND  the runtime F5 starts (default: killswitch next to the editor)\n"
         "  --screenshot FILE render N frames (--frames, default 3), save the window as PNG and exit\n"
         "keys: see the Help menu and docs/editor.md (Using the editor)\n");
 }
@@ -51,7 +56,7 @@ int main(int argc, char** argv) {
         return 0;
     }
     std::vector<std::string> known = render::shell_options();
-    known.insert(known.end(), {"level", "script", "run", "camera", "help", "dojo"});
+    known.insert(known.end(), {"level", "script", "run", "camera", "help", "dojo", "view", "status-file"});
     if (auto unknown = cl->unknown(known); !unknown.empty()) {
         log::error("unknown option --", unknown.front(), " (see killswitch-editor --help)");
         return 2;
@@ -75,6 +80,22 @@ int main(int argc, char** argv) {
     options.start_in_dojo = cl->has("dojo");
     if (auto run = cl->get("run")) options.run_script = paths::resolve_user_path(*run);
     options.camera = cl->get("camera");
+    if (auto view = cl->get("view")) {
+        const std::string v = *view;
+        if (v == "top")
+            options.view = editor::ViewMode::Top;
+        else if (v == "front")
+            options.view = editor::ViewMode::Front;
+        else if (v == "side")
+            options.view = editor::ViewMode::Side;
+        else if (v == "perspective")
+            options.view = editor::ViewMode::Perspective;
+        else {
+            log::error("--view '", v, "': expected top, front, side or perspective");
+            return 2;
+        }
+    }
+    if (auto status = cl->get("status-file")) options.status_file = paths::resolve_user_path(*status);
     options.executable_dir = std::filesystem::absolute(argv[0]).parent_path();
     auto shell = render::AppShell::create(*config);
     if (!shell) {

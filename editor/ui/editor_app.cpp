@@ -43,6 +43,7 @@ Result<std::unique_ptr<EditorApp>> EditorApp::create(render::AppShell& shell, co
 }
 
 void EditorApp::log_line(std::string line, bool error) {
+    if (error) ++error_lines_, last_error_ = line;
     log_.emplace_back(std::move(line), error);
     while (log_.size() > 500) log_.pop_front();
     scroll_log_ = true;
@@ -72,7 +73,7 @@ Result<void> EditorApp::init() {
     }
     dojo_ = std::make_unique<DojoPanel>(assets_, *renderer_);
     dojo_tab_ = options_.start_in_dojo;
-    set_view(ViewMode::Perspective); // frames the level from above one corner
+    set_view(options_.view.value_or(ViewMode::Perspective)); // perspective: from above one corner
     if (options_.camera) {
         float v[5];
         if (std::sscanf(options_.camera->c_str(), "%f,%f,%f,%f,%f", &v[0], &v[1], &v[2], &v[3], &v[4]) != 5)
@@ -155,7 +156,11 @@ void EditorApp::build_ui(const render::FrameInfo& info) {
     for (auto& l : lines) log_line("[game] " + l, l.find("error") != std::string::npos);
     if (!play_.running() && play_.last_exit_code() && !play_file_.empty()) {
         const int code = *play_.last_exit_code();
-        log_line("play-test ended with exit code " + std::to_string(code), code != 0);
+        log_line(code == 0 ? "play-test ended"
+                           : "play-test FAILED with exit code " + std::to_string(code) +
+                                 " (its messages are above)",
+                 code != 0);
+        play_exit_code_ = code;
         play_file_.clear();
     }
     if (!shell_.screenshot_mode()) {
@@ -184,6 +189,8 @@ void EditorApp::build_ui(const render::FrameInfo& info) {
     modal_prompts();
     handle_shortcuts();
     update_title();
+    ++frame_;
+    if (options_.status_file) write_status();
 }
 
 void EditorApp::handle_shortcuts() {

@@ -16,6 +16,7 @@
 #include "view/picking.h"
 #include "view/view_camera.h"
 
+#include <array>
 #include <deque>
 #include <filesystem>
 #include <memory>
@@ -35,6 +36,10 @@ struct AppOptions {
     std::optional<std::filesystem::path> run_script; // run inside the window session before the first frame
     std::optional<std::string> camera;               // x,y,z,yaw,pitch (degrees) for the viewport
     std::filesystem::path executable_dir;            // where killswitch (the runtime) is looked for
+    std::optional<ViewMode> view;                    // --view top|front|side|perspective
+    // --status-file: a JSON snapshot of the session rewritten whenever it changes (status_report.cpp), so
+    // tests that drive the window with real input wait on state rather than on time.
+    std::optional<std::filesystem::path> status_file;
 };
 
 struct Overlays {
@@ -66,6 +71,7 @@ class EditorApp {
     void build_ui(const render::FrameInfo& info);
     void handle_shortcuts();
     void update_title();
+    void write_status(); // status_report.cpp
 
     // editor_app.cpp: menus and files
     void menu_bar();
@@ -153,6 +159,18 @@ class EditorApp {
 
     PlayTest play_;
     std::filesystem::path play_file_;
+    std::vector<std::string> play_command_; // the last play-test's runtime and arguments
+    std::optional<int> play_exit_code_;     // the last play-test's exit code, once it ended
+
+    // --status-file
+    struct ScreenRect {
+        Vec2 min{0.0f}, max{0.0f};
+    };
+    std::array<ScreenRect, static_cast<size_t>(level::EntityType::Count)> palette_rects_{};
+    int error_lines_ = 0;
+    std::string last_error_;
+    std::uint64_t frame_ = 0;
+    std::string last_status_;
 };
 
 } // namespace ks::editor::ui

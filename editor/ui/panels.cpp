@@ -75,6 +75,9 @@ void EditorApp::palette_bar() {
         ImGui::PushStyleColor(ImGuiCol_Text, type_colour(type));
         if (ImGui::SmallButton(type_label(type))) placing_ = type;
         ImGui::PopStyleColor(active ? 2 : 1);
+        palette_rects_[static_cast<size_t>(type)] = {
+            Vec2(ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y),
+            Vec2(ImGui::GetItemRectMax().x, ImGui::GetItemRectMax().y)};
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(
                 "Click, then click in the viewport to place a %s on the surface under the cursor "

@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
 #include <sys/wait.h>
@@ -16,6 +17,11 @@ RuntimeOptions parse_runtime_help(const std::string& help_text) {
     o.warp = help_text.find("--warp") != std::string::npos;
     o.camera = help_text.find("--camera") != std::string::npos;
     return o;
+}
+
+std::filesystem::path playtest_runtime(const std::filesystem::path& executable_dir) {
+    if (const char* command = std::getenv("KS_PLAYTEST_COMMAND"); command && *command) return command;
+    return executable_dir / "killswitch";
 }
 
 RuntimeOptions query_runtime_options(const std::filesystem::path& runtime) {

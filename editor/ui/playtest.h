@@ -26,6 +26,9 @@ struct RuntimeOptions {
     bool camera = false; // --camera x,y,z,yaw,pitch: the older render-only view's eye
 };
 RuntimeOptions parse_runtime_help(const std::string& help_text);
+// The runtime to start: $KS_PLAYTEST_COMMAND when set (tests substitute a recorder; a designer can point it
+// at another build), else `killswitch` next to the editor.
+std::filesystem::path playtest_runtime(const std::filesystem::path& executable_dir);
 RuntimeOptions query_runtime_options(const std::filesystem::path& runtime);
 
 // The runtime's command line: --level TMP (+ --screen play) and, for Shift+F5, --warp x,y,z,yaw,0 with the

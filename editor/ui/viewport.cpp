@@ -239,14 +239,17 @@ void EditorApp::play_test(bool from_camera) {
     if (from_camera) // feet three units under the eye, facing where the camera looks
         start = PlayStart{view_.camera.position - Vec3(0, 3, 0),
                           std::remainder(degrees(view_.camera.yaw), 360.0f)};
-    const fs::path runtime = options_.executable_dir / "killswitch";
+    const fs::path runtime = playtest_runtime(options_.executable_dir);
     const auto args = playtest_arguments(play_file_, start, query_runtime_options(runtime));
+    play_exit_code_.reset();
     if (auto r = play_.start(runtime, args); !r) {
         log_line("play-test: " + r.error().str(), true);
         return;
     }
-    std::string line = "play-test: " + runtime.string();
-    for (const auto& a : args) line += " " + a;
+    play_command_ = {runtime.string()};
+    play_command_.insert(play_command_.end(), args.begin(), args.end());
+    std::string line = "play-test:";
+    for (const auto& a : play_command_) line += " " + a;
     log_line(line);
 }
 

@@ -1,0 +1,100 @@
+// --status-file: a JSON snapshot of the editor session, rewritten every frame (temp file + rename, so a
+// reader never sees half of it). Tests that drive the window with real X input (xdotool) read it to find
+// where things are on screen (palette buttons, entities, gizmo handles) and to wait for the state an input
+// should produce (selection, entity count, undo depth, dirty flag, play-test) instead of sleeping.
+#include "level/level.h"
+#include "ui/editor_app.h"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <unistd.h>
+
+namespace ks::editor::ui {
+
+namespace {
+nlohmann::json point(Vec2 p) {
+    return nlohmann::json::array({p.x, p.y});
+}
+} // namespace
+
+void EditorApp::write_status() {
+    using nlohmann::json;
+    json s;
+    s["frame"] = frame_;
+    s["pid"] = static_cast<long>(getpid());
+    s["title"] = editor_.title();
+    s["file"] = editor_.file_path().string();
+    s["entities"] = editor_.level().entities.size();
+    s["selection"] = editor_.doc().selection;
+    s["undo"] = editor_.history().undo_count();
+    s["redo"] = editor_.history().step_names().size() - editor_.history().undo_count();
+    s["dirty"] = editor_.has_unsaved_changes();
+    s["placing"] = placing_ ? std::string(level::type_name(*placing_)) : std::string();
+    s["gizmo"] = gizmo_mode_name(gizmo_.mode);
+    s["dragging"] = gizmo_.dragging();
+    s["view"] = view_mode_name(view_.mode);
+    s["tab"] = dojo_tab_ ? "dojo" : "level";
+    int wx = 0, wy = 0;
+    glfwGetWindowPos(shell_.window(), &wx, &wy);
+    s["window"] = {wx, wy};
+    s["viewport"] = {viewport_origin_.x, viewport_origin_.y, viewport_size_.x, viewport_size_.y};
+    json palette = json::object();
+    for (auto type : level::all_types()) {
+        const ScreenRect& r = palette_rects_[static_cast<size_t>(type)];
+        if (r.max.x > r.min.x) palette[std::string(level::type_name(type))] = point((r.min + r.max) * 0.5f);
+    }
+    s["palette"] = palette;
+    // Entity centres on screen (window pixels), for the first 64 entities.
+    json screen = json::object();
+    int listed = 0;
+    for (const auto& e : editor_.level().entities) {
+        if (listed++ >= 64) break;
+        Vec2 p;
+        if (view_.project(entity_obb(e).center, p))
+            screen[std::to_string(e.id)] = point(p + viewport_origin_);
+    }
+    s["screen"] = screen;
+    if (!editor_.doc().selection.empty() && !dojo_tab_) {
+        const GizmoShape g = gizmo_shape(view_, selection_pivot());
+        if (g.valid) {
+            json handles;
+            handles["centre"] = point(g.centre + viewport_origin_);
+            const char* axes[3] = {"x", "y", "z"};
+            for (int i = 0; i < 3; ++i)
+                if (g.axis_visible[i]) // the middle of the arrow: a safe place to grab it
+                    handles[axes[i]] = point((g.centre + g.tips[i]) * 0.5f + viewport_origin_);
+            s["gizmo_handles"] = handles;
+        }
+    }
+    if (!editor_.doc().selection.empty())
+        if (const level::Entity* e = editor_.level().find(editor_.doc().selection.front()))
+            s["primary"] = {{"id", e->id},
+                            {"type", std::string(level::type_name(e->type()))},
+                            {"position", {e->position.x, e->position.y, e->position.z}},
+                            {"yaw", e->rotation.x}};
+    json play;
+    play["running"] = play_.running();
+    play["command"] = play_command_;
+    play["exit_code"] = play_exit_code_ ? json(*play_exit_code_) : json(nullptr);
+    s["playtest"] = play;
+    s["error_lines"] = error_lines_;
+    s["last_error"] = last_error_;
+    s["log_lines"] = log_.size();
+    std::string text = s.dump();
+    if (text == last_status_) return;
+    const auto& path = *options_.status_file;
+    const auto temp = std::filesystem::path(path.string() + ".tmp");
+    {
+        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+        out << text << '\n';
+        if (!out) return; // a status file is a test aid: never an error for the user
+    }
+    std::error_code ec;
+    std::filesystem::rename(temp, path, ec);
+    last_status_ = std::move(text);
+}
+
+} // namespace ks::editor::ui
