@@ -460,6 +460,11 @@ void World::step(float dt) {
         move_character(obstacles, b.shape.radius, b.shape.half_height, cd.settings, cd.state,
                        b.transform.position, dt, scratch_);
         b.bounds = b.shape.bounds(b.transform);
+        // Queries find movers through the cells of their start-of-step bounds, widened by the slack. One
+        // pushed further than that (out of a door that closed on it, out of a packed crowd) is visited by
+        // every later query of this step instead, so no contact with it is missed.
+        const Vec3 moved = b.transform.position - b.previous_position;
+        if (std::max(std::abs(moved.x), std::abs(moved.z)) > mover_slack_) grid_oversized_.push_back(cd.body);
         const BodyId self = id_of(cd.body);
         for (const CharacterContact& cc : scratch_.contacts) {
             const BodyId other = id_of(cc.obstacle_id);
