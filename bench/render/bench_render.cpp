@@ -37,12 +37,15 @@ struct Variant {
     int max_lights = render::kMaxLightsPerDraw;
     int resolution_divisor = 1;
     render::RenderQuality quality = render::RenderQuality::Auto;
+    bool occluded_base = true;
     float render_scale = 0.0f; // 0: the renderer's default for this GL renderer
 };
 
 struct Measurement {
     double median_ms = 0, p99_ms = 0, mean_ms = 0;
     double cpu_ms = 0; // process CPU time per frame (all threads: llvmpipe's rasteriser threads too)
+    std::vector<double> times;
+    double cpu_total_ms = 0;
     bool fast = false;
     int internal_width = 0, internal_height = 0;
     int draw_calls = 0;
@@ -65,16 +68,18 @@ render::Camera path_camera(const render::Camera& start, int frame, int frames) {
     return c;
 }
 
-Measurement measure(render::OffscreenContext& ctx, render::AssetLibrary& assets, render::LevelScene& scene,
-                    const level::Level& level, const Variant& v, int frames, bool& ok,
-                    const std::string& shot_path) {
-    Measurement m;
+// One round of `frames` frames along the whole path, appended to `m` (the variants take turns, round by
+// round, so a change in the machine's load hits them all alike).
+void measure(Measurement& m, render::OffscreenContext& ctx, render::AssetLibrary& assets,
+             render::LevelScene& scene, const level::Level& level, const Variant& v, int frames, bool& ok,
+             const std::string& shot_path) {
     render::RendererSettings settings;
     settings.msaa_samples = v.msaa;
     settings.shadows = v.shadows;
     settings.surface_detail = v.surface_detail;
     settings.max_lights_per_draw = v.max_lights;
     settings.quality = v.quality;
+    settings.fast_occluded_base = v.occluded_base;
     settings.render_scale = v.render_scale;
     const float default_anisotropy = assets.textures().max_anisotropy();
     if (v.anisotropy > 0.0f) assets.textures().set_max_anisotropy(v.anisotropy);
@@ -83,7 +88,7 @@ Measurement measure(render::OffscreenContext& ctx, render::AssetLibrary& assets,
     if (!renderer) {
         log::error(renderer.error().str());
         ok = false;
-        return m;
+        return;
     }
     std::vector<render::MeshInstance> instances;
     std::vector<render::Light> lights;
@@ -91,9 +96,8 @@ Measurement measure(render::OffscreenContext& ctx, render::AssetLibrary& assets,
     render::ViewModel view_model;
     assets.model("rifle").emit(render::rifle_view_transform(0.0f), scratch, view_model.instances);
     const render::Camera start = render::player_start_camera(level, static_cast<float>(width) / height);
-    std::vector<double> times;
-    times.reserve(static_cast<size_t>(frames));
-    const int warmup = 10;
+    std::vector<double>& times = m.times;
+    const int warmup = 5;
     double cpu_start = 0;
     for (int i = -warmup; i < frames; ++i) {
         if (i == 0) cpu_start = cpu_now_ms();
@@ -121,7 +125,7 @@ Measurement measure(render::OffscreenContext& ctx, render::AssetLibrary& assets,
             m.internal_height = stats.internal_height;
         }
     }
-    m.cpu_ms = (cpu_now_ms() - cpu_start) / frames;
+    m.cpu_total_ms += cpu_now_ms() - cpu_start;
     if (!shot_path.empty()) { // the start view, for side-by-side comparisons of the variants
         render::SceneFrame frame;
         frame.camera = start;
@@ -137,11 +141,16 @@ Measurement measure(render::OffscreenContext& ctx, render::AssetLibrary& assets,
         if (auto saved = ctx.save_png(shot_path); !saved) log::error(saved.error().str());
     }
     assets.textures().set_max_anisotropy(default_anisotropy);
+}
+
+void finish(Measurement& m) {
+    std::vector<double> times = m.times;
     std::sort(times.begin(), times.end());
     m.median_ms = times[times.size() / 2];
     m.p99_ms = times[std::min(times.size() - 1, static_cast<size_t>(times.size() * 0.99))];
+    m.mean_ms = 0;
     for (double t : times) m.mean_ms += t / times.size();
-    return m;
+    m.cpu_ms = m.cpu_total_ms / static_cast<double>(times.size());
 }
 
 int run(int argc, const char* const* argv) {
@@ -150,17 +159,19 @@ int run(int argc, const char* const* argv) {
         log::error(cl.error().str());
         return 2;
     }
-    if (auto unknown = cl->unknown({"level", "json", "frames", "width", "height", "quick", "only", "shots"});
+    if (auto unknown =
+            cl->unknown({"level", "json", "frames", "width", "height", "quick", "only", "shots", "rounds"});
         !unknown.empty()) {
-        log::error(
-            "ks_bench render: unknown option --", unknown.front(),
-            " (use --level FILE --frames N --width W --height H --json --quick --only TEXT --shots DIR)");
+        log::error("ks_bench render: unknown option --", unknown.front(),
+                   " (use --level FILE --frames N --width W --height H --json --quick --only TEXT --shots "
+                   "DIR --rounds R)");
         return 2;
     }
     auto frames = cl->get_int("frames", 200, 10, 100000);
     auto width = cl->get_int("width", 1280, 64, 8192);
     auto height = cl->get_int("height", 720, 64, 8192);
-    for (const auto* r : {&frames, &width, &height})
+    auto rounds_option = cl->get_int("rounds", 3, 1, 100);
+    for (const auto* r : {&frames, &width, &height, &rounds_option})
         if (!*r) {
             log::error(r->error().str());
             return 2;
@@ -197,6 +208,8 @@ int run(int argc, const char* const* argv) {
     with("fast, scale 1", [](Variant& v) { v.quality = Q::Fast, v.render_scale = 1.0f; });
     with("fast, scale 0.75", [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.75f; });
     with("fast, scale 0.5", [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f; });
+    with("fast, scale 0.5, ORM lookup",
+         [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.occluded_base = false; });
     with("fast, scale 0.5, 4 lights",
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.max_lights = 4; });
     with("fast, scale 0.5, no shadow",
@@ -231,18 +244,26 @@ int run(int argc, const char* const* argv) {
                 assets.textures().max_anisotropy(), default_msaa);
     std::printf("%-28s %5s %9s %10s %10s %8s %10s %6s %9s %11s\n", "variant", "path", "internal", "median ms",
                 "p99 ms", "fps", "cpu ms", "draws", "triangles", "vs default");
-    Measurement base, full;
+    std::vector<Measurement> results(variants.size());
     bool ok = true;
-    for (size_t i = 0; i < variants.size(); ++i) {
-        std::string shot;
-        if (auto dir = cl->get("shots")) {
-            shot = variants[i].name;
-            for (char& c : shot)
-                if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-            shot = (std::filesystem::path(*dir) / (shot + ".png")).string();
+    const int rounds = *rounds_option;
+    for (int round = 0; round < rounds; ++round)
+        for (size_t i = 0; i < variants.size(); ++i) {
+            std::string shot;
+            if (auto dir = cl->get("shots"); dir && round == 0) {
+                shot = variants[i].name;
+                for (char& c : shot)
+                    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                shot = (std::filesystem::path(*dir) / (shot + ".png")).string();
+            }
+            measure(results[i], **ctx, assets, *scene, *level, variants[i], std::max(*frames / rounds, 2), ok,
+                    shot);
+            if (!ok) return 1;
         }
-        Measurement m = measure(**ctx, assets, *scene, *level, variants[i], *frames, ok, shot);
-        if (!ok) return 1;
+    Measurement base, full;
+    for (size_t i = 0; i < variants.size(); ++i) {
+        Measurement& m = results[i];
+        finish(m);
         if (i == 0) base = m;
         if (std::string(variants[i].name) == "full, scale 1") full = m;
         char internal[32];

@@ -44,6 +44,11 @@ const Material& AssetLibrary::surface(const std::string& name) {
     if (!mat->orm_map) {
         mat->metallic = 0.0f;
         mat->roughness = 0.8f;
+    } else if (!mat->placeholder) {
+        const auto& occluded =
+            textures_.get_occluded_base(dir / (name + "_basecolor.png"), dir / (name + "_orm.png"));
+        mat->fast_base_map = occluded.id;
+        mat->fast_metallic = occluded.mean_metallic;
     }
     return *surfaces_.emplace(name, std::move(mat)).first->second;
 }

@@ -14,6 +14,10 @@ struct Material {
     float roughness = 1.0f;
     float bump_strength = 0.02f; // height map scale in world units, used when there is no normal map
     unsigned base_map = 0, normal_map = 0, orm_map = 0, emissive_map = 0, height_map = 0;
+    // The fast path's level surfaces: base colour x occlusion in one map and the ORM map's mean metalness
+    // (TextureCache::get_occluded_base); 0 when not made.
+    unsigned fast_base_map = 0;
+    float fast_metallic = 0.0f;
     bool placeholder = false; // some map failed to load (magenta checker)
     int id = 0;               // unique per material, the renderer's sort key
 };

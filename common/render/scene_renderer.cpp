@@ -530,12 +530,15 @@ void SceneRenderer::draw_batches_fast(const Camera& camera, const SceneFrame& fr
     for (const Batch& b : batches_) {
         if (b.material != bound_material || b.lightmap != bound_lightmap) {
             const Material& m = *b.material;
-            if (b.material != bound_material) {
+            const bool baked = b.lightmap != 0;
+            // Baked level surfaces read base colour x occlusion from one map (no ORM lookup per pixel).
+            const bool occluded_base = baked && m.fast_base_map != 0 && settings_.fast_occluded_base;
+            if (b.material != bound_material || (b.lightmap == 0) != (bound_lightmap == 0)) {
                 auto bind = [&](int unit, unsigned id, unsigned fallback) {
                     glActiveTexture(GL_TEXTURE0 + unit);
                     glBindTexture(GL_TEXTURE_2D, id ? id : fallback);
                 };
-                bind(kBase, m.base_map, textures_.white().id);
+                bind(kBase, occluded_base ? m.fast_base_map : m.base_map, textures_.white().id);
                 bind(kOrm, m.orm_map, textures_.white().id);
                 bind(kEmissive, m.emissive_map, textures_.white().id);
                 // The placeholder checker has no mipmaps (a mip filter would make it incomplete): it keeps
@@ -545,15 +548,14 @@ void SceneRenderer::draw_batches_fast(const Camera& camera, const SceneFrame& fr
                 glBindSampler(kEmissive, sampler);
                 glUniform4fv(loc_base, 1, glm::value_ptr(m.base_factor));
                 glUniform3fv(loc_emissive, 1, glm::value_ptr(m.emissive_factor));
-                glUniform2f(loc_mr, m.metallic, m.roughness);
+                glUniform2f(loc_mr, occluded_base ? m.fast_metallic : m.metallic, m.roughness);
             }
             if (b.lightmap != bound_lightmap && b.lightmap != 0) {
                 glActiveTexture(GL_TEXTURE0 + kLightmap);
                 glBindTexture(GL_TEXTURE_2D, b.lightmap);
             }
-            const bool baked = b.lightmap != 0;
-            glUniform1i(loc_flags, (m.orm_map ? 2 : 0) | (m.emissive_map ? 4 : 0) | (baked ? 32 : 0) |
-                                       (raw_srgb_ && !m.placeholder ? 64 : 0));
+            glUniform1i(loc_flags, (m.orm_map && !occluded_base ? 2 : 0) | (m.emissive_map ? 4 : 0) |
+                                       (baked ? 32 : 0) | (raw_srgb_ && !m.placeholder ? 64 : 0));
             glUniform1i(loc_baked, baked ? 1 : 0);
             glUniform1i(loc_receive, shadows && !baked ? 1 : 0);
             bound_material = b.material;

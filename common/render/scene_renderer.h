@@ -35,6 +35,8 @@ struct RendererSettings {
     bool surface_detail = true; // normal and bump (height) maps; off: the geometric normal only
     int max_lights_per_draw = kMaxLightsPerDraw; // nearest point/spot lights shading each object, 0..8
     RenderQuality quality = RenderQuality::Auto;
+    // Fast path: baked surfaces read Material::fast_base_map (base x occlusion) instead of base + ORM maps.
+    bool fast_occluded_base = true;
     // The 3D scene is drawn at this fraction of the target's width and height, then scaled up (bilinear)
     // into the target, so a HUD drawn afterwards stays sharp. 0: automatic (1 on GPUs,
     // kSoftwareRenderScale on software rasterisers; KS_RENDER_SCALE=0.25..1 overrides).

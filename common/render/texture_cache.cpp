@@ -6,6 +6,7 @@
 #include <stb_image.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace ks::render {
@@ -87,6 +88,8 @@ void TextureCache::set_max_anisotropy(float anisotropy) {
 TextureCache::~TextureCache() {
     for (auto& [path, t] : textures_)
         if (!t.placeholder) glDeleteTextures(1, &t.id);
+    for (auto& [path, t] : occluded_)
+        if (t.id) glDeleteTextures(1, &t.id);
     for (Texture* t : {&placeholder_, &white_, &flat_normal_}) glDeleteTextures(1, &t->id);
 }
 
@@ -106,6 +109,36 @@ const Texture& TextureCache::get(const std::filesystem::path& path, ColorSpace s
     Texture t = upload(pixels, w, h, space, true, driver_max_anisotropy_ > 1.0f ? max_anisotropy_ : 0.0f);
     stbi_image_free(pixels);
     return textures_.emplace(key, t).first->second;
+}
+
+const TextureCache::OccludedBase& TextureCache::get_occluded_base(const std::filesystem::path& base,
+                                                                  const std::filesystem::path& orm) {
+    std::string key = base.lexically_normal().string() + "#" + orm.lexically_normal().string();
+    if (auto it = occluded_.find(key); it != occluded_.end()) return it->second;
+    OccludedBase out;
+    int w = 0, h = 0, ow = 0, oh = 0, channels = 0;
+    unsigned char* colour = stbi_load(base.string().c_str(), &w, &h, &channels, 4);
+    unsigned char* occlusion = stbi_load(orm.string().c_str(), &ow, &oh, &channels, 4);
+    if (colour && occlusion && w == ow && h == oh) {
+        // In the sRGB-encoded domain (the fast path decodes with a square): encoded * sqrt(ao) squares to
+        // linear base * ao.
+        double metal = 0.0;
+        const size_t n = static_cast<size_t>(w) * static_cast<size_t>(h);
+        for (size_t i = 0; i < n; ++i) {
+            float ao = std::sqrt(occlusion[i * 4] / 255.0f);
+            for (int c = 0; c < 3; ++c)
+                colour[i * 4 + static_cast<size_t>(c)] =
+                    static_cast<unsigned char>(std::lround(colour[i * 4 + static_cast<size_t>(c)] * ao));
+            metal += occlusion[i * 4 + 2] / 255.0;
+        }
+        out.mean_metallic = static_cast<float>(metal / static_cast<double>(std::max<size_t>(n, 1)));
+        out.id = upload(colour, w, h, ColorSpace::Srgb, true,
+                        driver_max_anisotropy_ > 1.0f ? max_anisotropy_ : 0.0f)
+                     .id;
+    }
+    if (colour) stbi_image_free(colour);
+    if (occlusion) stbi_image_free(occlusion);
+    return occluded_.emplace(key, out).first->second;
 }
 
 } // namespace ks::render

@@ -31,6 +31,16 @@ class TextureCache {
     TextureCache& operator=(const TextureCache&) = delete;
 
     const Texture& get(const std::filesystem::path& path, ColorSpace space);
+
+    // The fast path's level-surface colour map: the base colour (sRGB) times the ORM map's occlusion, with
+    // the ORM map's mean metalness, so baked surfaces need one texture lookup instead of two. id 0 when
+    // either image is missing or their sizes differ (the renderer then reads the ORM map as usual).
+    struct OccludedBase {
+        unsigned id = 0;
+        float mean_metallic = 0.0f;
+    };
+    const OccludedBase& get_occluded_base(const std::filesystem::path& base,
+                                          const std::filesystem::path& orm);
     const Texture& placeholder() const { return placeholder_; }
     const Texture& white() const { return white_; }
     const Texture& flat_normal() const { return flat_normal_; }
@@ -42,6 +52,7 @@ class TextureCache {
 
   private:
     std::unordered_map<std::string, Texture> textures_;
+    std::unordered_map<std::string, OccludedBase> occluded_;
     Texture placeholder_, white_, flat_normal_;
     int placeholder_count_ = 0;
     float max_anisotropy_ = 1.0f;
