@@ -48,29 +48,39 @@ int texels_along(float length, float texel_size) {
 }
 } // namespace
 
-bool LightBake::occluded(const Vec3& from, const Vec3& dir, float length, bool sun) const {
+bool LightBake::occluded(const Vec3& from, const Vec3& dir, float length, bool sun,
+                         const std::vector<int>* subset) const {
+    if (subset) {
+        for (int i : *subset)
+            if (hits(occluders_[static_cast<size_t>(i)], from, dir, length)) return true;
+        return false;
+    }
     for (const Occluder& o : occluders_) {
         if (sun && !o.blocks_sun) continue;
-        // Slab test in the box's frame.
-        Vec3 p = Vec3(o.to_local * Vec4(from, 1.0f));
-        Vec3 d = Mat3(o.to_local) * dir;
-        float t0 = 0.0f, t1 = length;
-        bool miss = false;
-        for (int a = 0; a < 3 && !miss; ++a) {
-            if (std::abs(d[a]) < 1e-12f) {
-                miss = std::abs(p[a]) > o.half[a];
-                continue;
-            }
-            float inv = 1.0f / d[a];
-            float n = (-o.half[a] - p[a]) * inv, f = (o.half[a] - p[a]) * inv;
-            if (n > f) std::swap(n, f);
-            t0 = std::max(t0, n);
-            t1 = std::min(t1, f);
-            miss = t0 > t1;
-        }
-        if (!miss) return true;
+        if (hits(o, from, dir, length)) return true;
     }
     return false;
+}
+
+bool LightBake::hits(const Occluder& o, const Vec3& from, const Vec3& dir, float length) const {
+    // Slab test in the box's frame.
+    Vec3 p = Vec3(o.to_local * Vec4(from, 1.0f));
+    Vec3 d = Mat3(o.to_local) * dir;
+    float t0 = 0.0f, t1 = length;
+    bool miss = false;
+    for (int a = 0; a < 3 && !miss; ++a) {
+        if (std::abs(d[a]) < 1e-12f) {
+            miss = std::abs(p[a]) > o.half[a];
+            continue;
+        }
+        float inv = 1.0f / d[a];
+        float n = (-o.half[a] - p[a]) * inv, f = (o.half[a] - p[a]) * inv;
+        if (n > f) std::swap(n, f);
+        t0 = std::max(t0, n);
+        t1 = std::min(t1, f);
+        miss = t0 > t1;
+    }
+    return !miss;
 }
 
 BakeStats LightBake::bake(const std::vector<BakeSurface>& surfaces, const Environment& env,
@@ -99,7 +109,8 @@ BakeStats LightBake::bake(const std::vector<BakeSurface>& surfaces, const Enviro
                 to_box[2][a] = axis[a].z;
                 to_box[3][a] = -glm::dot(axis[a], center);
             }
-            occluders_.push_back({to_box, half, s.blocks_sun});
+            Vec3 reach = glm::abs(axis[0]) * half.x + glm::abs(axis[1]) * half.y + glm::abs(axis[2]) * half.z;
+            occluders_.push_back({to_box, half, s.blocks_sun, center - reach, center + reach});
         }
         for (size_t q = 0; q + 4 <= verts.size(); q += 4) {
             Face f;
@@ -142,6 +153,14 @@ BakeStats LightBake::bake(const std::vector<BakeSurface>& surfaces, const Enviro
     for (const Light& l : lights) light_color_.push_back(l.color * l.intensity);
     light_on_.assign(lights.size(), 1);
 
+    // Each light's candidate occluders: boxes whose bounds touch its range sphere.
+    std::vector<std::vector<int>> near(lights.size());
+    for (size_t k = 0; k < lights.size(); ++k)
+        for (size_t i = 0; i < occluders_.size(); ++i) {
+            const Occluder& o = occluders_[i];
+            Vec3 d = glm::max(glm::max(o.lo - lights[k].position, lights[k].position - o.hi), Vec3(0.0f));
+            if (glm::dot(d, d) <= lights[k].range * lights[k].range) near[k].push_back(static_cast<int>(i));
+        }
     const Vec3 to_sun = -glm::normalize(env.sun_direction);
     const bool sun_on = glm::length(env.sun_color) > 0.0f && is_finite(to_sun);
     constexpr float kLift = 0.02f; // ray origins leave the surface by this much (no self-shadowing)
@@ -187,7 +206,7 @@ BakeStats LightBake::bake(const std::vector<BakeSurface>& surfaces, const Enviro
                     }
                     if (atten <= 0.0f) continue;
                     // Stop short of the light: fixtures sit on ceilings and walls.
-                    if (occluded(p, dir, dist - 0.05f, false)) continue;
+                    if (occluded(p, dir, dist - 0.05f, false, &near[k])) continue;
                     shares_[k].push_back({index, atten * cosine});
                 }
             }

@@ -60,12 +60,17 @@ class LightBake {
         Mat4 to_local; // world -> box space (centred, axis-aligned)
         Vec3 half;
         bool blocks_sun;
+        Vec3 lo, hi; // world bounds
     };
     struct Share {
         std::uint32_t texel;
         float amount; // atten * cos * visibility, times the light's colour * intensity when combined
     };
-    bool occluded(const Vec3& from, const Vec3& dir, float length, bool sun) const;
+    // Against every occluder (sun: those that block it) or only `subset` (a light's: the boxes touching its
+    // range sphere, since both ends of its rays lie inside that sphere).
+    bool occluded(const Vec3& from, const Vec3& dir, float length, bool sun,
+                  const std::vector<int>* subset = nullptr) const;
+    bool hits(const Occluder& o, const Vec3& from, const Vec3& dir, float length) const;
 
     int width_ = 0, height_ = 0;
     std::vector<Occluder> occluders_;
