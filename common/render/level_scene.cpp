@@ -1,5 +1,9 @@
 #include "render/level_scene.h"
 
+#include "render/scene_renderer.h"
+
+#include <epoxy/gl.h>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -176,7 +180,11 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
             p.bake_light = static_cast<int>(bake_lights.size());
             bake_lights.push_back(p.light);
         }
-    scene->bake_stats_ = scene->bake_.bake(bake_surfaces, scene->environment_, bake_lights);
+    // Only the fast path reads the light map: GPUs (Auto = Full) skip the bake's CPU time.
+    const GLubyte* gl_name = glGetString(GL_RENDERER);
+    const std::string gl_renderer = gl_name ? reinterpret_cast<const char*>(gl_name) : "";
+    if (default_quality_for(gl_renderer) == RenderQuality::Fast)
+        scene->bake_stats_ = scene->bake_.bake(bake_surfaces, scene->environment_, bake_lights);
     for (const auto& p : scene->props_)
         if (p.bake_light >= 0) scene->bake_.set_light_on(p.bake_light, p.light_on);
     for (size_t i = 0; i < surface_meshes.size(); ++i)
@@ -202,7 +210,7 @@ void LevelScene::emit(std::vector<MeshInstance>& instances, std::vector<Light>& 
     instances.clear();
     lights.clear();
     // A light switched since the last frame: re-combine the light map (milliseconds) and upload it.
-    if (bake_.update() || (lightmap_.id() == 0 && !surfaces_.empty())) lightmap_.upload(bake_);
+    if (bake_.update() || (lightmap_.id() == 0 && !bake_.texels().empty())) lightmap_.upload(bake_);
     for (const auto& s : surfaces_) {
         MeshInstance inst;
         inst.mesh = s.mesh.get();

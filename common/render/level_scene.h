@@ -34,7 +34,9 @@ class LevelScene {
     const Environment& environment() const { return environment_; }
     const Aabb& bounds() const { return bounds_; }
     int surface_count() const { return static_cast<int>(surfaces_.size()); }
-    // The level geometry's baked light (the fast path's; see light_bake.h) and what baking it cost.
+    // The level geometry's baked light (the fast path's; see light_bake.h) and what baking it cost. Baked
+    // when the GL renderer's automatic quality is Fast (software rasterisers, or KS_RENDER_QUALITY=fast);
+    // otherwise empty, and a renderer switched to Fast lights the level geometry per vertex.
     const LightBake& light_bake() const { return bake_; }
     const BakeStats& bake_stats() const { return bake_stats_; }
     unsigned lightmap_texture() const { return lightmap_.id(); }
