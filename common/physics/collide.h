@@ -36,6 +36,8 @@ struct SegmentDistance {
     float distance = 0.0f;
     Vec3 on_segment{0.0f};
     Vec3 on_shape{0.0f};
+    Vec3 away{
+        0.0f}; // on_segment - on_shape, computed in the polyhedron's frame (precise far from the origin)
 };
 SegmentDistance segment_polyhedron_distance(const Segment& s, const Polyhedron& p, const Transform& xf);
 

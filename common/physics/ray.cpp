@@ -7,6 +7,9 @@ namespace ks::physics {
 bool ray_box(const Ray& ray, const Vec3& half, const Transform& xf, ShapeHit& hit) {
     // In the box frame, relative to its centre: the subtraction is exact for nearby points, so a box 10 km
     // from the origin is intersected as precisely as one at the origin.
+    // A NaN or infinite direction would slip through the slab test below (NaN compares false) and report
+    // a hit with a NaN normal; one sum tells (inf - inf and NaN + x are NaN, inf + x is inf).
+    if (!std::isfinite(ray.direction.x + ray.direction.y + ray.direction.z)) return false;
     const Vec3 o = xf.to_local(ray.origin);
     const Vec3 d = xf.dir_to_local(ray.direction);
     float tmin = -3.4e38f, tmax = 3.4e38f;

@@ -38,20 +38,17 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 bool finite(const Vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
-// A normalised vector is unit to ~1e-7; 1e-3 is the bar. Capsule contact normals miss it when the core
-// nearly touches the shape far from the origin (the known bug pinned at the end of this file): their error
-// is the float spacing at the coordinates divided by the core's gap to the shape. The randomized tests
-// allow exactly that much more for capsule contacts, which still catches zero, NaN or garbage normals
-// anywhere else, and count the cases beyond 1e-3.
+// A normalised vector is unit to ~1e-7; 1e-3 is the bar. Capsule contact normals once missed it far from
+// the origin (fixed: the regression cases at the end of this file keep their inputs); g_loose_normals counts
+// the cases beyond the bar, and every one of them fails the test.
 int g_loose_normals = 0;
 bool unit(const Vec3& v, float tolerance = 1e-3f) {
     return finite(v) && std::abs(glm::length(v) - 1.0f) < tolerance;
 }
-bool contact_unit(const Vec3& v, const Vec3& where, float gap) {
+bool contact_unit(const Vec3& v) {
     if (unit(v)) return true;
     ++g_loose_normals;
-    const float coordinate = std::max({std::abs(where.x), std::abs(where.y), std::abs(where.z), 1.0f});
-    return unit(v, 1e-3f + 8.0f * coordinate * 1.2e-7f / std::max(gap, 1e-9f));
+    return false;
 }
 std::string str(const Vec3& v) {
     std::ostringstream s;
@@ -215,7 +212,7 @@ TEST_CASE("physics properties: every query is finite for random finite input") {
                      << " rotation (w, x, y, z) " << sx.rotation.w << ", "
                      << str(Vec3(sx.rotation.x, sx.rotation.y, sx.rotation.z)) << " half " << str(half)
                      << ", normal " << str(k->normal) << " depth " << k->penetration);
-                REQUIRE(contact_unit(k->normal, s.p0, r - k->penetration));
+                REQUIRE(contact_unit(k->normal));
                 REQUIRE(std::isfinite(k->penetration));
                 REQUIRE(k->penetration >= -margin - 1e-4f);
                 REQUIRE(finite(k->point));
@@ -229,9 +226,8 @@ TEST_CASE("physics properties: every query is finite for random finite input") {
         closest_segment_segment(s.p0, s.p1, q0, q1, ps, pt);
         REQUIRE((ps >= 0.0f && ps <= 1.0f && pt >= 0.0f && pt <= 1.0f));
     }
-    MESSAGE(
-        hits << " ray hits and " << contacts << " contacts checked finite; " << g_loose_normals
-             << " contact normals off unit length by more than 1e-3 (known bug, see the end of the file)");
+    MESSAGE(hits << " ray hits and " << contacts << " contacts checked finite; " << g_loose_normals
+                 << " contact normals off unit length by more than 1e-3");
     g_loose_normals = 0;
     CHECK(hits > 4000);
     CHECK(contacts > 2000);
@@ -259,8 +255,7 @@ TEST_CASE("physics properties: NaN and infinite input get a clear answer, never 
                      << ": hit " << hit << " at " << h.distance << " normal " << str(h.normal));
                 CHECK((!hit || (std::isfinite(h.distance) && finite(h.normal))));
             };
-            if (which != 1)
-                clear("ray_box", ray_box(ray, Vec3(1), xf, h)); // direction: known bug, see the end
+            clear("ray_box", ray_box(ray, Vec3(1), xf, h));
             clear("ray_polyhedron", ray_polyhedron(ray, box, xf, h));
             clear("ray_capsule", ray_capsule(ray, {0, 0, -5}, {0, 1, -5}, 1.0f, h));
             clear("ray_cylinder", ray_cylinder(ray, {0, 0, -5}, 1.0f, 1.0f, h));
@@ -540,7 +535,7 @@ TEST_CASE("physics properties: capsule contacts agree with exact double-precisio
         if (!fast) continue;
         ++contacts;
         INFO("normal " << str(fast->normal) << " depth " << fast->penetration);
-        REQUIRE(contact_unit(fast->normal, s.p0, r - fast->penetration));
+        REQUIRE(contact_unit(fast->normal));
         if (d > 1e-3) { // the core is outside: depth is exactly r - distance
             const double err = std::abs(fast->penetration - (r - d));
             worst = std::max(worst, err);
@@ -551,7 +546,7 @@ TEST_CASE("physics properties: capsule contacts agree with exact double-precisio
     }
     MESSAGE(cases << " capsule cases, " << contacts << " contacts, " << banded << " within " << kBand
                   << " of touching, worst depth error " << worst << "; " << g_loose_normals
-                  << " normals off unit length by more than 1e-3 (known bug, see the end of the file)");
+                  << " normals off unit length by more than 1e-3");
     g_loose_normals = 0;
     CHECK(contacts > 1500);
     CHECK(banded < cases / 100);
@@ -694,9 +689,7 @@ TEST_CASE("physics properties: world ray casts agree with brute force over a 200
 }
 
 // ---------------------------------------------------------------------------------------------------------
-// Known bugs found by the tests above, pinned with their exact inputs. They are marked should_fail, so
-// the suite stays green while they exist, and each turns red the day its bug is fixed: then delete the
-// decorator (and, for the normals, tighten contact_unit back to 1e-3).
+// Bugs the tests above found (both fixed), kept with their exact inputs as regression cases.
 
 // common/physics/collide.cpp, from_distance(): the normal is (on_core - on_shape) / distance, where the two
 // points are in world space (a polyhedron's are transformed there first) but `distance` was measured
@@ -704,10 +697,9 @@ TEST_CASE("physics properties: world ray casts agree with brute force over a 200
 // difference has lost digits (float ulp is 5e-4 at 4000 and 1e-3 at 9000), so for a capsule core within a
 // few tenths of the shape the "unit" normal is off by up to 12 %: random tests at 4000-9000 units find
 // lengths 0.978, 1.0033, 1.117 (and 0.998 at 90 units with the core 3e-4 from a box). The character
-// controller slides along these normals. Fix: divide by the length of the very vector being normalised
-// (or build the normal in the shape's frame from the local points and rotate it).
-TEST_CASE("known bug: capsule contact normals are not unit length far from the origin" *
-          doctest::should_fail()) {
+// controller slides along these normals. Fixed: from_distance() now normalises a direction computed in the
+// shape's frame (or analytically) by its own length.
+TEST_CASE("regression: capsule contact normals are unit length far from the origin") {
     struct Case {
         const char* what;
         Segment core;
@@ -742,12 +734,11 @@ TEST_CASE("known bug: capsule contact normals are not unit length far from the o
     }
 }
 
-// common/physics/ray.h, ray_centred_aabb() (used by ray_box): a ray whose direction holds a NaN or an
-// infinity passes the slab test and is reported as starting inside (hit at distance 0) with the normal
-// -direction, i.e. NaN or infinite. ray_polyhedron, ray_capsule and ray_cylinder report no hit, and
-// World's queries refuse such rays, so the game is not affected; a direct caller of ray_box is.
-TEST_CASE("known bug: ray_box with a non-finite direction reports a hit with a non-finite normal" *
-          doctest::should_fail()) {
+// common/physics/ray.cpp, ray_box(): a ray whose direction held a NaN or an infinity passed the slab test
+// and was reported as starting inside (hit at distance 0) with the normal -direction, i.e. NaN or infinite.
+// World's queries refuse such rays, so the game was not affected; a direct caller of ray_box was. Fixed:
+// ray_box checks the direction first, like ray_polyhedron, ray_capsule and ray_cylinder in effect do.
+TEST_CASE("regression: ray_box with a non-finite direction reports no hit") {
     for (const Vec3& bad : {Vec3(kNaN, 0, 0), Vec3(0, kInf, 0), Vec3(0, 0, -kInf), Vec3(kNaN)}) {
         const Ray ray{{0, 0, 0}, bad, 100.0f};
         ShapeHit h;

@@ -1,0 +1,302 @@
+// Drives the real killswitch-editor window the way a designer does, with real X input events (xdotool,
+// under Xvfb): pick a palette entry and click in the top view to place it, click to select, drag the gizmo's
+// x arrow, Ctrl+Z / Ctrl+Shift+Z, Ctrl+S; and F5 / Shift+F5 play-tests through a substitute runtime
+// ($KS_PLAYTEST_COMMAND) that records its arguments and the level file it was given, and fails on request.
+// The editor reports its state in --status-file every frame; the test waits on that state, never on time.
+#include "level/level_io.h"
+#include "runtime/screen_image.h"
+#include "test_support.h"
+
+#include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <csignal>
+#include <fstream>
+#include <functional>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+using namespace ks;
+using nlohmann::json;
+
+namespace {
+const char* kLevelScript = R"(new
+level_name Input test
+grid 1 15
+place floor at 0,0,0 name Ground
+set size 40,40
+place wall at 0,0,-20 name North
+set size 40,16,0.5
+place control_panel at 0,0,-15 name Panel
+place robot at -10,0,5 name Guard
+player_start 0,0,15
+save input.json
+)";
+
+bool have_xdotool() {
+    return test::run_command("command -v xdotool").exit_code == 0;
+}
+
+void write(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream out(path);
+    out << text;
+}
+
+// The editor as a child process, killed when the test ends.
+class EditorProcess {
+  public:
+    EditorProcess(const std::vector<std::string>& args, const std::vector<std::string>& env) {
+        pid_ = fork();
+        if (pid_ == 0) {
+            for (const auto& e : env) putenv(const_cast<char*>(e.c_str()));
+            std::vector<std::string> all = {(test::bin_dir() / "killswitch-editor").string()};
+            all.insert(all.end(), args.begin(), args.end());
+            std::vector<char*> argv;
+            for (auto& a : all) argv.push_back(a.data());
+            argv.push_back(nullptr);
+            execv(argv[0], argv.data());
+            _exit(127);
+        }
+    }
+    ~EditorProcess() {
+        if (pid_ > 0) {
+            kill(pid_, SIGTERM);
+            waitpid(pid_, nullptr, 0);
+        }
+    }
+    bool alive() const { return pid_ > 0 && waitpid(pid_, nullptr, WNOHANG) == 0; }
+
+  private:
+    pid_t pid_ = -1;
+};
+
+class Session {
+  public:
+    Session(std::filesystem::path status, const EditorProcess& process)
+        : status_(std::move(status)), process_(process) {}
+
+    // Waits (up to 90 s: frames take a quarter second under llvmpipe on a busy machine) until `ready`
+    // accepts the status; fails with the last status otherwise.
+    json wait(const char* what, const std::function<bool(const json&)>& ready) {
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(90);
+        while (std::chrono::steady_clock::now() < deadline) {
+            std::ifstream in(status_);
+            std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+            json s = json::parse(text, nullptr, false);
+            if (!s.is_discarded()) {
+                last_ = s;
+                if (ready(s)) return s;
+            }
+            if (!process_.alive()) break;
+            std::this_thread::sleep_for(std::chrono::milliseconds(40));
+        }
+        FAIL("timed out waiting for: " << std::string(what) << "\nlast status: " << last_.dump());
+        return last_;
+    }
+    // Waits until the editor has drawn `n` more frames (so it has seen the input sent before).
+    json frames(int n) {
+        const auto start = last_.value("frame", 0ull);
+        return wait("frames",
+                    [&](const json& s) { return s["frame"].get<unsigned long long>() >= start + n; });
+    }
+    // Window coordinates from the status to screen coordinates for xdotool.
+    std::string at(const json& point) const {
+        const int x = last_["window"][0].get<int>() + static_cast<int>(point[0].get<float>());
+        const int y = last_["window"][1].get<int>() + static_cast<int>(point[1].get<float>());
+        return std::to_string(x) + " " + std::to_string(y);
+    }
+    // Keys go to the focused window; with no window manager under Xvfb, focus the editor's first. ImGui
+    // 1.86 samples key state once per frame (no input queue), so the key is held for two frames.
+    void key(const std::string& keys) {
+        xdo("search --pid " + std::to_string(last_["pid"].get<long>()) + " windowfocus keydown " + keys);
+        frames(2);
+        xdo("keyup " + keys);
+    }
+    static void xdo(const std::string& args) {
+        auto r = test::run_command("xdotool " + args);
+        INFO(r.output);
+        REQUIRE(r.exit_code == 0);
+    }
+
+  private:
+    std::filesystem::path status_;
+    const EditorProcess& process_;
+    json last_;
+};
+
+std::vector<int> selection(const json& s) {
+    return s["selection"].get<std::vector<int>>();
+}
+} // namespace
+
+TEST_CASE("editor input: place from the palette, select, drag the gizmo, undo, redo and save with real "
+          "X events") {
+    if (!ks::test::have_display() || !have_xdotool()) {
+        MESSAGE("no DISPLAY or xdotool: input test skipped (./run.sh test runs it under xvfb-run)");
+        return;
+    }
+    test::ScratchDir dir;
+    write(dir / "build.kss", kLevelScript);
+    REQUIRE(test::run_command((test::bin_dir() / "killswitch-editor").string() + " --script " +
+                              (dir / "build.kss").string())
+                .exit_code == 0);
+    const auto level_file = dir / "input.json";
+    const auto status = dir / "status.json";
+    EditorProcess editor({"--level", level_file.string(), "--view", "top", "--width", "960", "--height",
+                          "540", "--status-file", status.string()},
+                         {"XDG_CONFIG_HOME=" + (dir / "config").string()});
+    Session s(status, editor);
+    json st = s.wait("first frames", [](const json& j) { return j["frame"] >= 2 && j["view"] == "Top"; });
+    const size_t entities = st["entities"];
+
+    // Palette: robot, then a click in the viewport on the floor, right of the centre.
+    Session::xdo("mousemove " + s.at(st["palette"]["robot"]) + " click 1");
+    st = s.wait("placing a robot", [](const json& j) { return j["placing"] == "robot"; });
+    const auto& vp = st["viewport"];
+    const json target = {vp[0].get<float>() + vp[2].get<float>() * 0.5f + 70.0f,
+                         vp[1].get<float>() + vp[3].get<float>() * 0.5f + 30.0f};
+    Session::xdo("mousemove " + s.at(target));
+    s.frames(2);
+    Session::xdo("click 1");
+    st = s.wait("the robot placed", [&](const json& j) { return j["entities"] == entities + 1; });
+    REQUIRE(selection(st).size() == 1);
+    const int placed = selection(st).front();
+    CHECK(st["primary"]["type"] == "robot");
+    CHECK(st["dirty"] == true);
+    CHECK(st["placing"] == "");
+    const float x0 = st["primary"]["position"][0], z0 = st["primary"]["position"][2];
+    CHECK(x0 == std::round(x0)); // snapped to the 1-unit grid
+    CHECK(x0 > 0.0f);            // right of the centre in the top view is east
+
+    // Escape clears the selection; a click on the robot selects it again.
+    s.key("Escape");
+    st = s.wait("selection cleared", [](const json& j) { return j["selection"].empty(); });
+    Session::xdo("mousemove " + s.at(st["screen"][std::to_string(placed)]));
+    s.frames(2);
+    Session::xdo("click 1");
+    st = s.wait("robot selected by a click",
+                [&](const json& j) { return selection(j) == std::vector<int>{placed}; });
+
+    // Drag the x arrow 90 pixels to the right.
+    st = s.wait("gizmo handles", [](const json& j) { return j.contains("gizmo_handles"); });
+    const size_t undo_before = st["undo"];
+    const json grab = st["gizmo_handles"]["x"];
+    Session::xdo("mousemove " + s.at(grab));
+    s.frames(2);
+    Session::xdo("mousedown 1");
+    s.wait("drag started", [](const json& j) { return j["dragging"] == true; });
+    for (int dx = 30; dx <= 90; dx += 30) {
+        Session::xdo("mousemove " + s.at(json{grab[0].get<float>() + dx, grab[1].get<float>()}));
+        s.frames(1);
+    }
+    Session::xdo("mouseup 1");
+    st = s.wait("drag ended", [](const json& j) { return j["dragging"] == false; });
+    CHECK(st["undo"] == undo_before + 1); // the whole drag is one step
+    const float x1 = st["primary"]["position"][0];
+    CHECK(x1 > x0 + 3.0f);
+    CHECK(x1 == std::round(x1));
+    CHECK(st["primary"]["position"][2] == z0);
+
+    // Ctrl+Z undoes the drag, Ctrl+Shift+Z redoes it.
+    s.key("ctrl+z");
+    st = s.wait("undo", [&](const json& j) { return j["undo"] == undo_before; });
+    CHECK(st["primary"]["position"][0] == x0);
+    s.key("ctrl+shift+z");
+    st = s.wait("redo", [&](const json& j) { return j["undo"] == undo_before + 1; });
+    CHECK(st["primary"]["position"][0] == x1);
+
+    // Ctrl+S saves over the opened file: clean afterwards, and the file has the moved robot.
+    s.key("ctrl+s");
+    s.wait("saved", [](const json& j) { return j["dirty"] == false; });
+    auto saved = level::load_level_file(level_file);
+    REQUIRE(saved);
+    CHECK(saved->entities.size() == entities + 1);
+    const level::Entity* robot = saved->find(placed);
+    REQUIRE(robot);
+    CHECK(robot->position.x == x1);
+    CHECK(robot->position.z == z0);
+}
+
+TEST_CASE("editor input: F5 plays the current document in the runtime, Shift+F5 from the camera, and a "
+          "failing runtime is reported") {
+    if (!ks::test::have_display() || !have_xdotool()) {
+        MESSAGE("no DISPLAY or xdotool: play-test input test skipped");
+        return;
+    }
+    test::ScratchDir dir;
+    write(dir / "build.kss", kLevelScript);
+    REQUIRE(test::run_command((test::bin_dir() / "killswitch-editor").string() + " --script " +
+                              (dir / "build.kss").string())
+                .exit_code == 0);
+    // The substitute runtime: answers --help like killswitch, records its arguments and the level it was
+    // given, and fails with a message when asked to.
+    const auto fake = dir / "fake_runtime.sh";
+    write(fake, "#!/bin/sh\n"
+                "if [ \"$1\" = --help ]; then echo 'usage: killswitch --level FILE --screen play --warp "
+                "x,y,z,yaw,pitch'; exit 0; fi\n"
+                "echo \"$@\" > '" +
+                    (dir / "args.txt").string() +
+                    "'\n"
+                    "cp \"$2\" '" +
+                    (dir / "played.json").string() +
+                    "'\n"
+                    "if [ -e '" +
+                    (dir / "fail").string() +
+                    "' ]; then echo 'error: the level broke the game' >&2; exit 3; fi\n"
+                    "echo 'game over, bye'\n");
+    std::filesystem::permissions(fake, std::filesystem::perms::owner_all);
+    const auto status = dir / "status.json";
+    EditorProcess editor(
+        {"--level", (dir / "input.json").string(), "--width", "960", "--height", "540", "--status-file",
+         status.string()},
+        {"XDG_CONFIG_HOME=" + (dir / "config").string(), "KS_PLAYTEST_COMMAND=" + fake.string()});
+    Session s(status, editor);
+    json st = s.wait("first frames", [](const json& j) { return j["frame"] >= 2; });
+    // Edit first, so that what is played can only be the document, not the file on disk: select the
+    // robot with a click and delete it.
+    int robot = 0;
+    {
+        auto level = level::load_level_file(dir / "input.json");
+        REQUIRE(level);
+        for (const auto& e : level->entities)
+            if (e.type() == level::EntityType::Robot) robot = e.id;
+    }
+    Session::xdo("mousemove " + s.at(st["screen"][std::to_string(robot)]));
+    s.frames(2);
+    Session::xdo("click 1");
+    s.wait("robot selected", [&](const json& j) { return selection(j) == std::vector<int>{robot}; });
+    s.key("Delete");
+    st = s.wait("robot deleted", [](const json& j) { return j["dirty"] == true; });
+    const size_t entities = st["entities"];
+
+    s.key("F5");
+    st = s.wait("play-test ended", [](const json& j) { return j["playtest"]["exit_code"] == 0; });
+    const auto command = st["playtest"]["command"].get<std::vector<std::string>>();
+    REQUIRE(command.size() >= 3);
+    CHECK(command[0] == fake.string());
+    CHECK(command[1] == "--level");
+    const std::string args = test::read_file(dir / "args.txt");
+    CHECK(args.find("--level " + command[2]) == 0);
+    CHECK(args.find("--screen play") != std::string::npos);
+    CHECK(args.find("--warp") == std::string::npos);
+    auto played = level::load_level_file(dir / "played.json");
+    REQUIRE(played);
+    CHECK(played->entities.size() == entities); // the unsaved document, without the robot
+    CHECK(played->find(robot) == nullptr);
+    CHECK(st["dirty"] == true); // play-testing does not save the level itself
+
+    s.key("shift+F5");
+    st = s.wait("play from the camera", [&](const json& j) {
+        return j["playtest"]["exit_code"] == 0 && j["playtest"]["command"].size() > command.size();
+    });
+    CHECK(test::read_file(dir / "args.txt").find("--warp ") != std::string::npos);
+
+    write(dir / "fail", "");
+    const int errors = st["error_lines"];
+    s.key("F5");
+    st = s.wait("failing play-test", [](const json& j) { return j["playtest"]["exit_code"] == 3; });
+    st = s.wait("failure logged", [&](const json& j) { return j["error_lines"] >= errors + 2; });
+    CHECK(st["last_error"].get<std::string>().find("exit code 3") != std::string::npos);
+}
