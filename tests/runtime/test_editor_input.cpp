@@ -113,6 +113,7 @@ class Session {
         xdo("search --pid " + std::to_string(last_["pid"].get<long>()) + " windowfocus keydown " + keys);
         frames(2);
         xdo("keyup " + keys);
+        frames(2); // the release is seen before the next press of the same key
     }
     static void xdo(const std::string& args) {
         auto r = test::run_command("xdotool " + args);
