@@ -203,10 +203,16 @@ void EditorApp::handle_shortcuts() {
     if (ctrl && pressed(GLFW_KEY_N)) request(PendingAction::New);
     if (ctrl && pressed(GLFW_KEY_O)) request(PendingAction::Open);
     if (ctrl && pressed(GLFW_KEY_S)) save(shift);
-    if (ctrl && ((shift && pressed(GLFW_KEY_Z)) || pressed(GLFW_KEY_Y)))
+    // Shift decides between undo and redo for every Z event, including auto-repeat: testing only the first
+    // press for redo let a held Ctrl+Shift+Z fall through to the repeating undo once the key-repeat delay
+    // passed (one slow frame under Xvfb is enough), so the redo was undone straight away.
+    if (ctrl && shift) {
+        if (pressed(GLFW_KEY_Z)) editor_.redo();
+    } else if (ctrl && pressed(GLFW_KEY_Y)) {
         editor_.redo();
-    else if (ctrl && repeat(GLFW_KEY_Z))
+    } else if (ctrl && repeat(GLFW_KEY_Z)) {
         editor_.undo();
+    }
     if (pressed(GLFW_KEY_F5)) play_test(shift);
     if (dojo_tab_) return; // the rest acts on the level viewport
     if (ctrl && pressed(GLFW_KEY_D)) report(editor_.duplicate(), "duplicate");
