@@ -68,7 +68,8 @@ LevelScene::Prop LevelScene::make_prop(const level::Entity& e, const Model* mode
     return p;
 }
 
-std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLibrary& assets) {
+std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLibrary& assets,
+                                              bool bake_light_map) {
     auto scene = std::unique_ptr<LevelScene>(new LevelScene());
     scene->environment_ = environment_from_settings(level.settings);
     std::vector<MeshData> surface_meshes; // uploaded once their light-map coordinates are baked
@@ -183,7 +184,7 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
     // Only the fast path reads the light map: GPUs (Auto = Full) skip the bake's CPU time.
     const GLubyte* gl_name = glGetString(GL_RENDERER);
     const std::string gl_renderer = gl_name ? reinterpret_cast<const char*>(gl_name) : "";
-    if (default_quality_for(gl_renderer) == RenderQuality::Fast)
+    if (bake_light_map && default_quality_for(gl_renderer) == RenderQuality::Fast)
         scene->bake_stats_ = scene->bake_.bake(bake_surfaces, scene->environment_, bake_lights);
     for (const auto& p : scene->props_)
         if (p.bake_light >= 0) scene->bake_.set_light_on(p.bake_light, p.light_on);

@@ -25,7 +25,10 @@ Camera player_start_camera(const level::Level& level, float aspect);
 
 class LevelScene {
   public:
-    static std::unique_ptr<LevelScene> build(const level::Level& level, AssetLibrary& assets);
+    // bake_light_map = false skips the light-map bake even where the fast path would use it (the fast path
+    // then lights the level geometry per vertex): the editor's cheap rebuilds while a drag is in progress.
+    static std::unique_ptr<LevelScene> build(const level::Level& level, AssetLibrary& assets,
+                                             bool bake_light_map = true);
 
     void set_light_on(int entity_id, bool on);
     void set_door_open(int entity_id, float fraction); // 0 closed .. 1 open

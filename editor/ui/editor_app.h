@@ -117,6 +117,11 @@ class EditorApp {
     std::unique_ptr<render::SceneRenderer> renderer_;
     std::unique_ptr<render::LevelScene> scene_;
     std::uint64_t scene_revision_ = ~0ull;
+    bool scene_baked_ = false; // built with the light-map bake requested (not during a continuous edit)
+    struct SceneStats {
+        unsigned long long builds = 0, bakes = 0; // bakes: builds whose light map was baked
+        double last_build_cpu_ms = 0.0;
+    } scene_stats_;
     std::vector<render::MeshInstance> instances_;
     std::vector<render::Light> lights_;
     render::DebugDraw debug_;

@@ -35,6 +35,9 @@ void EditorApp::write_status() {
     s["placing"] = placing_ ? std::string(level::type_name(*placing_)) : std::string();
     s["gizmo"] = gizmo_mode_name(gizmo_.mode);
     s["dragging"] = gizmo_.dragging();
+    s["scene"] = {{"builds", scene_stats_.builds},
+                  {"bakes", scene_stats_.bakes},
+                  {"last_build_cpu_ms", scene_stats_.last_build_cpu_ms}};
     s["view"] = view_mode_name(view_.mode);
     s["tab"] = dojo_tab_ ? "dojo" : "level";
     int wx = 0, wy = 0;

@@ -187,6 +187,7 @@ TEST_CASE("editor input: place from the palette, select, drag the gizmo, undo, r
     // Drag the x arrow 90 pixels to the right.
     st = s.wait("gizmo handles", [](const json& j) { return j.contains("gizmo_handles"); });
     const size_t undo_before = st["undo"];
+    const unsigned long long builds_before = st["scene"]["builds"], bakes_before = st["scene"]["bakes"];
     const json grab = st["gizmo_handles"]["x"];
     Session::xdo("mousemove " + s.at(grab));
     s.frames(2);
@@ -198,6 +199,18 @@ TEST_CASE("editor input: place from the palette, select, drag the gizmo, undo, r
     }
     Session::xdo("mouseup 1");
     st = s.wait("drag ended", [](const json& j) { return j["dragging"] == false; });
+    {
+        // The scene is rebuilt as the robot moves, but the light map is baked once, after the drag (where
+        // this renderer bakes at all: llvmpipe's automatic quality is Fast, a GPU's is Full).
+        const json after = s.frames(2)["scene"];
+        INFO("scene before the drag: builds " << builds_before << ", bakes " << bakes_before
+                                              << "; after: " << after.dump());
+        CHECK(after["builds"].get<unsigned long long>() >= builds_before + 2);
+        if (bakes_before > 0)
+            CHECK(after["bakes"].get<unsigned long long>() == bakes_before + 1);
+        else
+            CHECK(after["bakes"].get<unsigned long long>() == 0);
+    }
     CHECK(st["undo"] == undo_before + 1); // the whole drag is one step
     const float x1 = st["primary"]["position"][0];
     CHECK(x1 > x0 + 3.0f);
