@@ -1,0 +1,115 @@
+#include "model/dojo_keys.h"
+
+#include "anim/clip_io.h"
+
+#include <algorithm>
+
+namespace ks::editor {
+namespace {
+
+Result<anim::PhaseDef*> find_phase(anim::AnimationFile& file, std::size_t clip, std::size_t phase) {
+    if (clip >= file.clips.size())
+        return Error("clip " + std::to_string(clip) + " does not exist", {},
+                     "the file has " + std::to_string(file.clips.size()) + " clips");
+    auto& def = file.clips[clip];
+    if (phase >= def.phases.size())
+        return Error("clip '" + def.name + "' has no key " + std::to_string(phase + 1), {},
+                     "it has " + std::to_string(def.phases.size()) + " keys");
+    return &def.phases[phase];
+}
+
+auto keyed(const std::string& node) {
+    return [&node](const anim::TargetDef& t) { return t.node == node; };
+}
+
+} // namespace
+
+Result<void> add_node_key(anim::AnimationFile& file, std::size_t clip, std::size_t phase,
+                          const std::string& node) {
+    auto found = find_phase(file, clip, phase);
+    if (!found) return found.error();
+    if (std::none_of(file.rig.begin(), file.rig.end(),
+                     [&](const anim::RigNodeDef& n) { return n.name == node; }))
+        return Error("node '" + node + "' is not in the rig", {}, "pick one of the rig's nodes");
+    anim::PhaseDef& p = **found;
+    if (std::any_of(p.targets.begin(), p.targets.end(), keyed(node)))
+        return Error("node '" + node + "' already has a key here", {}, "edit or remove the existing key");
+    anim::TargetDef target;
+    target.node = node;
+    target.add_rot = DVec3(0.0);
+    p.targets.push_back(std::move(target));
+    return {};
+}
+
+Result<void> remove_node_key(anim::AnimationFile& file, std::size_t clip, std::size_t phase,
+                             const std::string& node) {
+    auto found = find_phase(file, clip, phase);
+    if (!found) return found.error();
+    auto& targets = (*found)->targets;
+    const auto it = std::find_if(targets.begin(), targets.end(), keyed(node));
+    if (it == targets.end()) return Error("node '" + node + "' has no key here", {}, "nothing to remove");
+    targets.erase(it);
+    return {};
+}
+
+std::vector<std::string> unkeyed_nodes(const anim::AnimationFile& file, std::size_t clip, std::size_t phase) {
+    std::vector<std::string> out;
+    if (clip >= file.clips.size() || phase >= file.clips[clip].phases.size()) return out;
+    const auto& targets = file.clips[clip].phases[phase].targets;
+    for (const auto& n : file.rig)
+        if (std::none_of(targets.begin(), targets.end(), keyed(n.name))) out.push_back(n.name);
+    return out;
+}
+
+void DojoHistory::record(const anim::AnimationFile& before, std::string name) {
+    undo_.push_back({before, std::move(name)});
+    redo_.clear();
+}
+
+bool DojoHistory::undo(anim::AnimationFile& file) {
+    if (undo_.empty()) return false;
+    Step step = std::move(undo_.back());
+    undo_.pop_back();
+    std::swap(step.file, file);
+    redo_.push_back(std::move(step));
+    return true;
+}
+
+bool DojoHistory::redo(anim::AnimationFile& file) {
+    if (redo_.empty()) return false;
+    Step step = std::move(redo_.back());
+    redo_.pop_back();
+    std::swap(step.file, file);
+    undo_.push_back(std::move(step));
+    return true;
+}
+
+const std::string& DojoHistory::undo_name() const {
+    static const std::string none;
+    return undo_.empty() ? none : undo_.back().name;
+}
+
+const std::string& DojoHistory::redo_name() const {
+    static const std::string none;
+    return redo_.empty() ? none : redo_.back().name;
+}
+
+void DojoHistory::clear() {
+    undo_.clear();
+    redo_.clear();
+}
+
+Result<void> save_dojo_file(const std::filesystem::path& path, const anim::AnimationFile& file) {
+    const auto issues = anim::validate(file);
+    if (!issues.empty()) {
+        const auto& first = issues.front();
+        return Error(
+            "not saved: " + first.message +
+                (issues.size() > 1 ? " (and " + std::to_string(issues.size() - 1) + " more issues)" : ""),
+            Location(path.string(), 0, 0, first.path.str()),
+            first.hint.empty() ? "fix the issues listed in the dojo panel" : first.hint);
+    }
+    return anim::save_animation_file(path, file);
+}
+
+} // namespace ks::editor

@@ -1,0 +1,52 @@
+#pragma once
+// The dojo panel's key edits, free of any window so tests drive them: add or remove a node's key in one
+// phase of a clip (a phase is a key time on every node's track; a node's key there is its TargetDef), an
+// undo/redo history of whole-file snapshots (animation files are a few kilobytes), and a save that
+// validates before it writes atomically.
+#include "anim/clip.h"
+#include "core/result.h"
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace ks::editor {
+
+// Adds a key for `node` in phase `phase` of clip `clip`: a relative rotation of zero, so the node holds
+// the pose it has when the phase starts until the animator edits the key. Errors (file unchanged) on an
+// index out of range, a node the rig does not define, or a node already keyed in that phase.
+Result<void> add_node_key(anim::AnimationFile& file, std::size_t clip, std::size_t phase,
+                          const std::string& node);
+// Removes `node`'s key from that phase; errors (file unchanged) when there is none.
+Result<void> remove_node_key(anim::AnimationFile& file, std::size_t clip, std::size_t phase,
+                             const std::string& node);
+// Rig nodes that have no key in that phase (what "add key" offers), in rig order; empty when out of range.
+std::vector<std::string> unkeyed_nodes(const anim::AnimationFile& file, std::size_t clip, std::size_t phase);
+
+// Unlimited undo/redo of the dojo's edits: record(before) ahead of every edit; a new edit drops the redo
+// steps. Continuous edits (a dragged field) record once when the drag starts.
+class DojoHistory {
+  public:
+    void record(const anim::AnimationFile& before, std::string name);
+    bool undo(anim::AnimationFile& file); // false when there is nothing to undo
+    bool redo(anim::AnimationFile& file);
+    bool can_undo() const { return !undo_.empty(); }
+    bool can_redo() const { return !redo_.empty(); }
+    const std::string& undo_name() const;
+    const std::string& redo_name() const;
+    void clear();
+
+  private:
+    struct Step {
+        anim::AnimationFile file;
+        std::string name;
+    };
+    std::vector<Step> undo_, redo_;
+};
+
+// Validates `file` (anim::validate) and writes it atomically; on validation issues nothing is written and
+// the error names the file, the first issue's JSON path, its message and fix, and how many issues there are.
+Result<void> save_dojo_file(const std::filesystem::path& path, const anim::AnimationFile& file);
+
+} // namespace ks::editor

@@ -1,0 +1,139 @@
+// The dojo panel's key edits, history and save, on the shipped robot clips (read-only; saves go to a
+// scratch copy, never to assets/animations/robot.json).
+#include "anim/clip_io.h"
+#include "core/files.h"
+#include "model/dojo_keys.h"
+#include "test_support.h"
+
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <string>
+
+using namespace ks;
+
+namespace {
+
+std::filesystem::path shipped() {
+    return test::source_dir() / "assets" / "animations" / "robot.json";
+}
+
+anim::AnimationFile load_shipped_clips() {
+    auto loaded = anim::load_animation_file(shipped());
+    REQUIRE(loaded);
+    REQUIRE(!loaded->clips.empty());
+    REQUIRE(!loaded->clips[0].phases.empty());
+    return *loaded;
+}
+
+bool has_key(const anim::AnimationFile& f, std::size_t clip, std::size_t phase, const std::string& node) {
+    for (const auto& t : f.clips[clip].phases[phase].targets)
+        if (t.node == node) return true;
+    return false;
+}
+
+} // namespace
+
+TEST_CASE("dojo keys: add a node's key, refuse bad requests unchanged, remove it again") {
+    auto file = load_shipped_clips();
+    const std::string original = anim::save_animation_string(file);
+    const auto free_nodes = editor::unkeyed_nodes(file, 0, 0);
+    REQUIRE(!free_nodes.empty());
+    const std::string node = free_nodes.front();
+    CHECK(!has_key(file, 0, 0, node));
+
+    REQUIRE(editor::add_node_key(file, 0, 0, node));
+    CHECK(has_key(file, 0, 0, node));
+    const auto& added = file.clips[0].phases[0].targets.back();
+    CHECK(added.node == node);
+    REQUIRE(added.add_rot);
+    CHECK(*added.add_rot == DVec3(0.0)); // holds the pose the phase starts with
+    CHECK(!added.rot);
+    CHECK(anim::validate(file).empty());
+    CHECK(editor::unkeyed_nodes(file, 0, 0).size() == free_nodes.size() - 1);
+
+    const std::string with_key = anim::save_animation_string(file);
+    auto twice = editor::add_node_key(file, 0, 0, node);
+    REQUIRE(!twice);
+    CHECK(twice.error().message.find("already has a key") != std::string::npos);
+    auto unknown = editor::add_node_key(file, 0, 0, "no_such_node");
+    REQUIRE(!unknown);
+    CHECK(unknown.error().message.find("not in the rig") != std::string::npos);
+    CHECK(!editor::add_node_key(file, file.clips.size(), 0, node));
+    CHECK(!editor::add_node_key(file, 0, file.clips[0].phases.size(), node));
+    CHECK(!editor::remove_node_key(file, 0, 0, "no_such_node"));
+    CHECK(anim::save_animation_string(file) == with_key); // every refusal left the file as it was
+
+    REQUIRE(editor::remove_node_key(file, 0, 0, node));
+    CHECK(anim::save_animation_string(file) == original);
+    CHECK(editor::unkeyed_nodes(file, 99, 0).empty());
+}
+
+TEST_CASE("dojo keys: undo and redo restore the file exactly, a new edit drops the redo steps") {
+    auto file = load_shipped_clips();
+    const std::string original = anim::save_animation_string(file);
+    editor::DojoHistory history;
+    CHECK(!history.undo(file));
+    CHECK(!history.redo(file));
+
+    const std::string node = editor::unkeyed_nodes(file, 0, 0).front();
+    history.record(file, "add key " + node);
+    REQUIRE(editor::add_node_key(file, 0, 0, node));
+    const std::string added = anim::save_animation_string(file);
+    // remove an existing key of another phase (or the same one) as a second step
+    const std::string existing = file.clips[0].phases[0].targets.front().node;
+    history.record(file, "remove key " + existing);
+    REQUIRE(editor::remove_node_key(file, 0, 0, existing));
+    const std::string removed = anim::save_animation_string(file);
+    CHECK(history.undo_name() == "remove key " + existing);
+
+    REQUIRE(history.undo(file));
+    CHECK(anim::save_animation_string(file) == added);
+    REQUIRE(history.undo(file));
+    CHECK(anim::save_animation_string(file) == original);
+    CHECK(!history.can_undo());
+    REQUIRE(history.redo(file));
+    REQUIRE(history.redo(file));
+    CHECK(anim::save_animation_string(file) == removed);
+    CHECK(!history.can_redo());
+
+    REQUIRE(history.undo(file));
+    CHECK(history.can_redo());
+    history.record(file, "another edit");
+    CHECK(!history.can_redo());
+}
+
+TEST_CASE("dojo keys: save validates and writes a scratch copy atomically; an invalid file is not written") {
+    test::ScratchDir dir;
+    const auto copy = dir / "robot.json";
+    auto shipped_text = files::read_text(shipped());
+    REQUIRE(shipped_text);
+    REQUIRE(files::write_atomic(copy, *shipped_text));
+
+    auto loaded = anim::load_animation_file(copy);
+    REQUIRE(loaded);
+    anim::AnimationFile file = *loaded;
+    const std::string node = editor::unkeyed_nodes(file, 0, 0).front();
+    REQUIRE(editor::add_node_key(file, 0, 0, node));
+    REQUIRE(editor::save_dojo_file(copy, file));
+    auto reloaded = anim::load_animation_file(copy);
+    REQUIRE(reloaded);
+    CHECK(has_key(*reloaded, 0, 0, node));
+    CHECK(anim::save_animation_string(*reloaded) == anim::save_animation_string(file));
+    // no temporary left beside it
+    int entries = 0;
+    for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir.path())) ++entries;
+    CHECK(entries == 1);
+
+    const auto good_text = files::read_text(copy);
+    REQUIRE(good_text);
+    file.clips[0].phases[0].duration = -1.0;
+    auto refused = editor::save_dojo_file(copy, file);
+    REQUIRE(!refused);
+    CHECK(refused.error().where.file == copy.string());
+    CHECK(!refused.error().where.path.empty());
+    CHECK(refused.error().message.find("not saved") != std::string::npos);
+    CHECK(*files::read_text(copy) == *good_text); // the file on disk is untouched
+
+    CHECK(*files::read_text(shipped()) == *shipped_text); // and the shipped file was never written
+}
