@@ -2,6 +2,7 @@
 
 #include "anim/rotation.h"
 #include "core/paths.h"
+#include "model/dojo_keys.h"
 #include "render/mesh_data.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -283,10 +284,30 @@ void DojoPanel::transition_tester() {
     if (changed && transition_mode_) restart_at(0.0);
 }
 
+void DojoPanel::begin_edit(const std::string& name) {
+    if (!edit_open_) history_.record(file_, name);
+    edit_open_ = true;
+}
+
+bool DojoPanel::undo() {
+    if (!history_.undo(file_)) return false;
+    dirty_ = true;
+    recompile();
+    return true;
+}
+
+bool DojoPanel::redo() {
+    if (!history_.redo(file_)) return false;
+    dirty_ = true;
+    recompile();
+    return true;
+}
+
 void DojoPanel::key_table(const LogFn& log) {
     if (static_cast<size_t>(clip_) >= file_.clips.size()) return;
     anim::ClipDef& def = file_.clips[static_cast<size_t>(clip_)];
     bool edited = false;
+    if (!ImGui::IsAnyItemActive()) edit_open_ = false; // a dragged field is one undo step
     ImGui::Text("Clip '%s': %s, %zu phases, %.2f s", def.name.c_str(), loop_name(def.loop), def.phases.size(),
                 def.duration());
     if (def.phases.empty()) return;
@@ -302,7 +323,7 @@ void DojoPanel::key_table(const LogFn& log) {
     float duration = static_cast<float>(phase.duration);
     ImGui::SetNextItemWidth(120);
     if (ImGui::DragFloat("duration", &duration, 0.005f, 0.0f, 30.0f, "%.3f s", ImGuiSliderFlags_AlwaysClamp))
-        phase.duration = duration, edited = true;
+        begin_edit("key duration"), phase.duration = duration, edited = true;
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Seconds to reach this key's targets; a key with no targets is a delay.");
     ImGui::SetNextItemWidth(170);
@@ -310,14 +331,16 @@ void DojoPanel::key_table(const LogFn& log) {
     if (ImGui::BeginCombo("easing", current.empty() ? "custom" : current.c_str())) {
         for (const auto& name : anim::known_ease_names())
             if (ImGui::Selectable(name.c_str(), name == current))
-                if (auto e = anim::parse_ease_name(name)) phase.ease = *e, edited = true;
+                if (auto e = anim::parse_ease_name(name))
+                    begin_edit("key easing"), phase.ease = *e, edited = true;
         ImGui::EndCombo();
     }
     ImGui::EndGroup();
     ImGui::SameLine();
     curve(phase.ease, 96.0f);
 
-    if (ImGui::BeginTable("targets", 4,
+    std::string remove_node; // a key to remove, applied after the table (the rows reference the targets)
+    if (ImGui::BeginTable("targets", 5,
                           ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
                               ImGuiTableFlags_SizingStretchProp,
                           ImVec2(0, std::max(80.0f, ImGui::GetContentRegionAvail().y - 64.0f)))) {
@@ -325,6 +348,7 @@ void DojoPanel::key_table(const LogFn& log) {
         ImGui::TableSetupColumn("rotation (deg, XYZ)");
         ImGui::TableSetupColumn("position offset");
         ImGui::TableSetupColumn("mode", ImGuiTableColumnFlags_WidthFixed, 60);
+        ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, 24);
         ImGui::TableHeadersRow();
         for (size_t t = 0; t < phase.targets.size(); ++t) {
             anim::TargetDef& target = phase.targets[t];
@@ -339,9 +363,9 @@ void DojoPanel::key_table(const LogFn& log) {
                               static_cast<float>(rot->z)};
                 ImGui::SetNextItemWidth(-1);
                 if (ImGui::DragFloat3("##rot", v, 0.5f, -3600.0f, 3600.0f, "%.1f"))
-                    *rot = DVec3(v[0], v[1], v[2]), edited = true;
+                    begin_edit("rotate " + target.node), *rot = DVec3(v[0], v[1], v[2]), edited = true;
             } else if (ImGui::SmallButton("+ rot")) {
-                target.rot = DVec3(0.0), edited = true;
+                begin_edit("rotate " + target.node), target.rot = DVec3(0.0), edited = true;
             }
             ImGui::TableNextColumn();
             auto& pos = target.pos ? target.pos : target.add_pos;
@@ -350,16 +374,52 @@ void DojoPanel::key_table(const LogFn& log) {
                               static_cast<float>(pos->z)};
                 ImGui::SetNextItemWidth(-1);
                 if (ImGui::DragFloat3("##pos", v, 0.01f, -100.0f, 100.0f, "%.2f"))
-                    *pos = DVec3(v[0], v[1], v[2]), edited = true;
+                    begin_edit("move " + target.node), *pos = DVec3(v[0], v[1], v[2]), edited = true;
             } else if (ImGui::SmallButton("+ pos")) {
-                target.pos = DVec3(0.0), edited = true;
+                begin_edit("move " + target.node), target.pos = DVec3(0.0), edited = true;
             }
             ImGui::TableNextColumn();
             ImGui::TextDisabled("%s", target.add_rot || target.add_pos ? "relative" : "absolute");
+            ImGui::TableNextColumn();
+            if (ImGui::SmallButton("x")) remove_node = target.node;
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("Remove this node's key from this phase");
             ImGui::PopID();
         }
         ImGui::EndTable();
     }
+    const auto clip_index = static_cast<std::size_t>(clip_),
+               phase_index = static_cast<std::size_t>(selected_phase_);
+    if (!remove_node.empty()) {
+        history_.record(file_, "remove key " + remove_node);
+        if (auto r = remove_node_key(file_, clip_index, phase_index, remove_node); !r)
+            log("dojo: " + r.error().str(), true);
+        else
+            edited = true;
+    }
+    const auto free_nodes = unkeyed_nodes(file_, clip_index, phase_index);
+    add_node_ = std::clamp(add_node_, 0, std::max(0, static_cast<int>(free_nodes.size()) - 1));
+    ImGui::BeginDisabled(free_nodes.empty());
+    ImGui::SetNextItemWidth(140);
+    if (ImGui::BeginCombo("##add_node", free_nodes.empty()
+                                            ? "(every node keyed)"
+                                            : free_nodes[static_cast<size_t>(add_node_)].c_str())) {
+        for (int i = 0; i < static_cast<int>(free_nodes.size()); ++i)
+            if (ImGui::Selectable(free_nodes[static_cast<size_t>(i)].c_str(), i == add_node_)) add_node_ = i;
+        ImGui::EndCombo();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Add key") && !free_nodes.empty()) {
+        const std::string& node = free_nodes[static_cast<size_t>(add_node_)];
+        history_.record(file_, "add key " + node);
+        if (auto r = add_node_key(file_, clip_index, phase_index, node); !r)
+            log("dojo: " + r.error().str(), true);
+        else
+            edited = true;
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "Key this node in this phase (holds its pose until you edit the key); Ctrl+Z undoes");
+    ImGui::EndDisabled();
     if (edited) {
         dirty_ = true;
         recompile();
@@ -370,7 +430,7 @@ void DojoPanel::key_table(const LogFn& log) {
     if (!compile_error_.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.35f, 1), "%s", compile_error_.c_str());
     ImGui::BeginDisabled(!issues_.empty());
     if (ImGui::Button(dirty_ ? "Save robot.json *" : "Save robot.json")) {
-        if (auto r = anim::save_animation_file(clip_file_, file_); !r)
+        if (auto r = save_dojo_file(clip_file_, file_); !r)
             log("dojo: " + r.error().str(), true);
         else {
             dirty_ = false;

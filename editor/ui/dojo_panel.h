@@ -6,6 +6,7 @@
 // atomic), the file the runtime's Dojo and robots load.
 #include "anim/clip_io.h"
 #include "anim/player.h"
+#include "model/dojo_keys.h"
 #include "render/asset_library.h"
 #include "render/debug_draw.h"
 #include "render/scene_renderer.h"
@@ -32,6 +33,10 @@ class DojoPanel {
     void panel(float x, float y, float width, float height, const LogFn& log);
 
     bool dirty() const { return dirty_; }
+    // The dojo's own history (key add/remove, field edits; a dragged field is one step). Ctrl+Z / Ctrl+Y
+    // in the Dojo tab act here. False when there is nothing to undo / redo.
+    bool undo();
+    bool redo();
 
   private:
     void load(const LogFn* log);
@@ -42,6 +47,7 @@ class DojoPanel {
     void key_table(const LogFn& log);
     void transition_tester();
     void curve(const anim::Ease& ease, float size);
+    void begin_edit(const std::string& name); // records the file before the first change of an edit
 
     render::AssetLibrary& assets_;
     render::SceneRenderer& renderer_;
@@ -56,6 +62,9 @@ class DojoPanel {
     std::unique_ptr<anim::Player> player_;
     bool loaded_ = false;
     bool dirty_ = false;
+    DojoHistory history_;
+    bool edit_open_ = false; // a field drag in progress (already recorded)
+    int add_node_ = 0;       // the "Add key" combo's choice among the unkeyed nodes
 
     int clip_ = 0;
     bool playing_ = true;

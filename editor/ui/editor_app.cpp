@@ -206,12 +206,15 @@ void EditorApp::handle_shortcuts() {
     // Shift decides between undo and redo for every Z event, including auto-repeat: testing only the first
     // press for redo let a held Ctrl+Shift+Z fall through to the repeating undo once the key-repeat delay
     // passed (one slow frame under Xvfb is enough), so the redo was undone straight away.
+    // In the Dojo tab they act on the dojo's own history.
+    auto undo = [this] { dojo_tab_ ? dojo_->undo() : editor_.undo(); };
+    auto redo = [this] { dojo_tab_ ? dojo_->redo() : editor_.redo(); };
     if (ctrl && shift) {
-        if (pressed(GLFW_KEY_Z)) editor_.redo();
+        if (pressed(GLFW_KEY_Z)) redo();
     } else if (ctrl && pressed(GLFW_KEY_Y)) {
-        editor_.redo();
+        redo();
     } else if (ctrl && repeat(GLFW_KEY_Z)) {
-        editor_.undo();
+        undo();
     }
     if (pressed(GLFW_KEY_F5)) play_test(shift);
     if (dojo_tab_) return; // the rest acts on the level viewport
