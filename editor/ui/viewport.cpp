@@ -54,10 +54,13 @@ void EditorApp::rebuild_scene_if_changed() {
     const std::uint64_t revision = editor_.revision() ^
                                    (static_cast<std::uint64_t>(editor_.doc().hidden.size()) << 48) ^
                                    (static_cast<std::uint64_t>(overlays_.ceilings) << 63);
-    // While a continuous edit is open (a gizmo drag, an inspector field drag: one history transaction) the
-    // scene is rebuilt every changed frame without the light-map bake (~10x its cost on a software
-    // rasteriser); the bake runs once when the transaction closes, even if nothing changed since.
-    const bool bake = !editor_.history().in_transaction();
+    // While a continuous edit is in progress (a gizmo drag: an open history transaction; an inspector field
+    // dragged: an active ImGui item, its edits merged into one step) the scene is rebuilt every changed frame
+    // without the light-map bake (most of a rebuild's cost on a software rasteriser); the bake runs once when
+    // the edit ends, even if nothing changed since.
+    const bool continuous = editor_.history().in_transaction() ||
+                            (ImGui::GetCurrentContext() != nullptr && ImGui::IsAnyItemActive());
+    const bool bake = !continuous;
     if (scene_ && revision == scene_revision_ && (scene_baked_ || !bake)) return;
     const std::clock_t cpu_start = std::clock();
     const auto& entities = editor_.level().entities;
