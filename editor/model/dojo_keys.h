@@ -33,6 +33,8 @@ class DojoHistory {
     bool redo(anim::AnimationFile& file);
     bool can_undo() const { return !undo_.empty(); }
     bool can_redo() const { return !redo_.empty(); }
+    std::size_t undo_count() const { return undo_.size(); }
+    std::size_t redo_count() const { return redo_.size(); }
     const std::string& undo_name() const;
     const std::string& redo_name() const;
     void clear();

@@ -289,6 +289,18 @@ void DojoPanel::begin_edit(const std::string& name) {
     edit_open_ = true;
 }
 
+DojoPanel::Status DojoPanel::status() const {
+    Status st;
+    st.undo = history_.undo_count();
+    st.redo = history_.redo_count();
+    const auto c = static_cast<std::size_t>(clip_), p = static_cast<std::size_t>(selected_phase_);
+    if (c < file_.clips.size() && p < file_.clips[c].phases.size())
+        st.keys = file_.clips[c].phases[p].targets.size();
+    st.add_key_x = add_key_x_;
+    st.add_key_y = add_key_y_;
+    return st;
+}
+
 bool DojoPanel::undo() {
     if (!history_.undo(file_)) return false;
     dirty_ = true;
@@ -408,7 +420,10 @@ void DojoPanel::key_table(const LogFn& log) {
         ImGui::EndCombo();
     }
     ImGui::SameLine();
-    if (ImGui::Button("Add key") && !free_nodes.empty()) {
+    const bool add_clicked = ImGui::Button("Add key");
+    add_key_x_ = (ImGui::GetItemRectMin().x + ImGui::GetItemRectMax().x) * 0.5f;
+    add_key_y_ = (ImGui::GetItemRectMin().y + ImGui::GetItemRectMax().y) * 0.5f;
+    if (add_clicked && !free_nodes.empty()) {
         const std::string& node = free_nodes[static_cast<size_t>(add_node_)];
         history_.record(file_, "add key " + node);
         if (auto r = add_node_key(file_, clip_index, phase_index, node); !r)

@@ -37,6 +37,13 @@ class DojoPanel {
     // in the Dojo tab act here. False when there is nothing to undo / redo.
     bool undo();
     bool redo();
+    // For the status file (input tests): history depth, keys in the shown phase, the Add key button's
+    // centre in window pixels (0, 0 before it is drawn).
+    struct Status {
+        std::size_t undo = 0, redo = 0, keys = 0;
+        float add_key_x = 0, add_key_y = 0;
+    };
+    Status status() const;
 
   private:
     void load(const LogFn* log);
@@ -65,6 +72,7 @@ class DojoPanel {
     DojoHistory history_;
     bool edit_open_ = false; // a field drag in progress (already recorded)
     int add_node_ = 0;       // the "Add key" combo's choice among the unkeyed nodes
+    float add_key_x_ = 0, add_key_y_ = 0;
 
     int clip_ = 0;
     bool playing_ = true;

@@ -3,10 +3,12 @@
 // where things are on screen (palette buttons, entities, gizmo handles) and to wait for the state an input
 // should produce (selection, entity count, undo depth, dirty flag, play-test) instead of sleeping.
 #include "level/level.h"
+#include "ui/dojo_panel.h"
 #include "ui/editor_app.h"
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
+
 #include <nlohmann/json.hpp>
 
 #include <fstream>
@@ -40,6 +42,13 @@ void EditorApp::write_status() {
                   {"last_build_cpu_ms", scene_stats_.last_build_cpu_ms}};
     s["view"] = view_mode_name(view_.mode);
     s["tab"] = dojo_tab_ ? "dojo" : "level";
+    if (dojo_) {
+        const auto d = dojo_->status();
+        s["dojo"] = {{"undo", d.undo},
+                     {"redo", d.redo},
+                     {"keys", d.keys},
+                     {"add_key", point(Vec2(d.add_key_x, d.add_key_y))}};
+    }
     int wx = 0, wy = 0;
     glfwGetWindowPos(shell_.window(), &wx, &wy);
     s["window"] = {wx, wy};

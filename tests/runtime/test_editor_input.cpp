@@ -3,6 +3,7 @@
 // x arrow, Ctrl+Z / Ctrl+Y, Ctrl+S; and F5 / Shift+F5 play-tests through a substitute runtime
 // ($KS_PLAYTEST_COMMAND) that records its arguments and the level file it was given, and fails on request.
 // The editor reports its state in --status-file every frame; the test waits on that state, never on time.
+#include "core/files.h"
 #include "level/level_io.h"
 #include "runtime/screen_image.h"
 #include "test_support.h"
@@ -329,4 +330,43 @@ TEST_CASE("editor input: F5 plays the current document in the runtime, Shift+F5 
     st = s.wait("failing play-test", [](const json& j) { return j["playtest"]["exit_code"] == 3; });
     st = s.wait("failure logged", [&](const json& j) { return j["error_lines"] >= errors + 2; });
     CHECK(st["last_error"].get<std::string>().find("exit code 3") != std::string::npos);
+}
+
+TEST_CASE(
+    "editor input: the dojo's Add key button keys a node, Ctrl+Z takes it back, Ctrl+Shift+Z redoes it") {
+    if (!ks::test::have_display() || !have_xdotool()) {
+        MESSAGE("no DISPLAY or xdotool: dojo input test skipped");
+        return;
+    }
+    test::ScratchDir dir;
+    const auto shipped = test::source_dir() / "assets" / "animations" / "robot.json";
+    const auto shipped_before = files::read_text(shipped);
+    REQUIRE(shipped_before);
+    const auto status = dir / "status.json";
+    EditorProcess editor({"--dojo", "--width", "1280", "--height", "720", "--status-file", status.string()},
+                         {"XDG_CONFIG_HOME=" + (dir / "config").string()});
+    Session s(status, editor);
+    json st = s.wait("the dojo tab with its Add key button", [](const json& j) {
+        return j["tab"] == "dojo" && j.contains("dojo") && j["dojo"]["add_key"][0].get<float>() > 0.0f;
+    });
+    const size_t keys = st["dojo"]["keys"];
+    CHECK(st["dojo"]["undo"] == 0);
+
+    Session::xdo("mousemove " + s.at(st["dojo"]["add_key"]));
+    s.frames(2);
+    Session::xdo("click 1");
+    st = s.wait("a key added", [&](const json& j) { return j["dojo"]["keys"] == keys + 1; });
+    CHECK(st["dojo"]["undo"] == 1);
+    CHECK(st["undo"] == 0); // the level's history is untouched
+
+    s.key("ctrl+z");
+    st = s.wait("the key undone", [&](const json& j) { return j["dojo"]["keys"] == keys; });
+    CHECK(st["dojo"]["redo"] == 1);
+    s.key("ctrl+shift+z", std::chrono::milliseconds(600));
+    st = s.wait("the key redone", [&](const json& j) { return j["dojo"]["keys"] == keys + 1; });
+    st = s.frames(3);
+    CHECK(st["dojo"]["keys"] == keys + 1);
+    CHECK(st["dojo"]["undo"] == 1);
+    CHECK(st["dojo"]["redo"] == 0);
+    CHECK(*files::read_text(shipped) == *shipped_before); // nothing was saved
 }
