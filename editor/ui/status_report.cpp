@@ -52,6 +52,13 @@ void EditorApp::write_status() {
     int wx = 0, wy = 0;
     glfwGetWindowPos(shell_.window(), &wx, &wy);
     s["window"] = {wx, wy};
+    // What input the editor sees, so that a test driving it with X events can say why a key did nothing.
+    const ImGuiIO& io = ImGui::GetIO();
+    s["input"] = {{"focused", glfwGetWindowAttrib(shell_.window(), GLFW_FOCUSED) != 0},
+                  {"ctrl", io.KeyCtrl},
+                  {"shift", io.KeyShift},
+                  {"text_input", io.WantTextInput},
+                  {"active_item", ImGui::IsAnyItemActive()}};
     s["viewport"] = {viewport_origin_.x, viewport_origin_.y, viewport_size_.x, viewport_size_.y};
     json palette = json::object();
     for (auto type : level::all_types()) {

@@ -215,9 +215,9 @@ PrivateDisplay::~PrivateDisplay() {
     }
 }
 
-std::string xdotool(const std::string& args, bool* ok, const std::string& display) {
-    auto r =
-        run_command((display.empty() ? std::string() : "env DISPLAY=" + display + " ") + "xdotool " + args);
+std::string xdotool(const std::string& args, bool* ok, const std::string& display, int timeout_s) {
+    auto r = run_command((display.empty() ? std::string() : "env DISPLAY=" + display + " ") + "timeout " +
+                         std::to_string(timeout_s) + " xdotool " + args);
     if (ok) *ok = r.exit_code == 0;
     while (!r.output.empty() && (r.output.back() == '\n' || r.output.back() == ' ')) r.output.pop_back();
     return r.output;

@@ -76,8 +76,9 @@ class PrivateDisplay {
 };
 
 bool have_xdotool();
-// Runs "xdotool ARGS" on `display` (empty: $DISPLAY); returns its output (trimmed). `ok` is set from the
-// exit code.
-std::string xdotool(const std::string& args, bool* ok = nullptr, const std::string& display = "");
+// Runs "xdotool ARGS" on `display` (empty: $DISPLAY), killed after `timeout_s` (a `--sync` waits forever
+// otherwise); returns its output (trimmed). `ok` is set from the exit code.
+std::string xdotool(const std::string& args, bool* ok = nullptr, const std::string& display = "",
+                    int timeout_s = 30);
 
 } // namespace ks::test

@@ -3,8 +3,12 @@
 // x arrow, Ctrl+Z / Ctrl+Y, Ctrl+S; and F5 / Shift+F5 play-tests through a substitute runtime
 // ($KS_PLAYTEST_COMMAND) that records its arguments and the level file it was given, and fails on request.
 // The editor reports its state in --status-file every frame; the test waits on that state, never on time.
+// Each case runs the editor on an X server of its own: ctest runs other GL tests in parallel, and a window
+// of theirs taking the focus makes ImGui 1.86's GLFW backend stop reading the mouse position (it reads it
+// only while the window is focused), so clicks would land nowhere.
 #include "core/files.h"
 #include "level/level_io.h"
+#include "runtime/play_session.h"
 #include "runtime/screen_image.h"
 #include "test_support.h"
 
@@ -36,10 +40,6 @@ player_start 0,0,15
 save input.json
 )";
 
-bool have_xdotool() {
-    return test::run_command("command -v xdotool").exit_code == 0;
-}
-
 void write(const std::filesystem::path& path, const std::string& text) {
     std::ofstream out(path);
     out << text;
@@ -48,10 +48,12 @@ void write(const std::filesystem::path& path, const std::string& text) {
 // The editor as a child process, killed when the test ends.
 class EditorProcess {
   public:
-    EditorProcess(const std::vector<std::string>& args, const std::vector<std::string>& env) {
+    EditorProcess(const std::vector<std::string>& args, std::vector<std::string> env,
+                  const test::PrivateDisplay& display) {
+        env.push_back("DISPLAY=" + display.name());
         pid_ = fork();
         if (pid_ == 0) {
-            for (const auto& e : env) putenv(const_cast<char*>(e.c_str()));
+            for (auto& e : env) putenv(e.data());
             std::vector<std::string> all = {(test::bin_dir() / "killswitch-editor").string()};
             all.insert(all.end(), args.begin(), args.end());
             std::vector<char*> argv;
@@ -75,8 +77,8 @@ class EditorProcess {
 
 class Session {
   public:
-    Session(std::filesystem::path status, const EditorProcess& process)
-        : status_(std::move(status)), process_(process) {}
+    Session(std::filesystem::path status, const EditorProcess& process, const test::PrivateDisplay& display)
+        : status_(std::move(status)), process_(process), display_(display.name()) {}
 
     // Waits (up to 90 s: frames take a quarter second under llvmpipe on a busy machine) until `ready`
     // accepts the status; fails with the last status otherwise.
@@ -96,8 +98,12 @@ class Session {
         FAIL("timed out waiting for: " << std::string(what) << "\nlast status: " << last_.dump());
         return last_;
     }
-    // Waits until the editor has drawn `n` more frames (so it has seen the input sent before).
+    // Waits until the editor has drawn `n` more frames (so it has seen the input sent before). Counted from
+    // the status as it is now, not from the last one read: that one can be many frames old (xdotool calls
+    // take time), and counting from it let a key's release follow its press within one frame, which ImGui
+    // 1.86 (no input queue) never sees.
     json frames(int n) {
+        wait("the current frame", [](const json&) { return true; });
         const auto start = last_.value("frame", 0ull);
         return wait("frames",
                     [&](const json& s) { return s["frame"].get<unsigned long long>() >= start + n; });
@@ -111,7 +117,8 @@ class Session {
     // Keys go to the focused window; with no window manager under Xvfb, focus the editor's first. ImGui
     // 1.86 samples key state once per frame (no input queue), so the key is held for two frames.
     void key(const std::string& keys, std::chrono::milliseconds hold = std::chrono::milliseconds(0)) {
-        xdo("search --pid " + std::to_string(last_["pid"].get<long>()) + " windowfocus keydown " + keys);
+        focus();
+        xdo("keydown " + keys);
         frames(2);
         if (hold.count() > 0) { // past ImGui's key-repeat delay (0.275 s), then two more frames see it
             std::this_thread::sleep_for(hold);
@@ -120,15 +127,38 @@ class Session {
         xdo("keyup " + keys);
         frames(2); // the release is seen before the next press of the same key
     }
-    static void xdo(const std::string& args) {
-        auto r = test::run_command("xdotool " + args);
-        INFO(r.output);
-        REQUIRE(r.exit_code == 0);
+    // Gives the editor's window the keyboard focus (no window manager under Xvfb does it) and waits until
+    // the X server has done so.
+    void focus() {
+        if (window_.empty()) {
+            // `search --sync` waits for the window forever; `timeout` bounds it should the editor not map
+            // one.
+            window_ =
+                xdo("search --sync --onlyvisible --pid " + std::to_string(last_["pid"].get<long>()), 60);
+            window_ = window_.substr(0, window_.find('\n'));
+        }
+        xdo("windowfocus --sync " + window_);
+    }
+    // Moves the pointer to `point` (window coordinates), lets the editor see it for two frames, then clicks.
+    void click(const json& point) {
+        focus();
+        xdo("mousemove " + at(point));
+        frames(2);
+        xdo("click 1");
+    }
+    std::string xdo(const std::string& args, int timeout_s = 30) const {
+        bool ok = false;
+        const std::string output = test::xdotool(args, &ok, display_, timeout_s);
+        INFO("xdotool " << args << ": " << output);
+        REQUIRE(ok);
+        return output;
     }
 
   private:
     std::filesystem::path status_;
     const EditorProcess& process_;
+    std::string display_;
+    std::string window_;
     json last_;
 };
 
@@ -139,7 +169,7 @@ std::vector<int> selection(const json& s) {
 
 TEST_CASE("editor input: place from the palette, select, drag the gizmo, undo, redo and save with real "
           "X events") {
-    if (!ks::test::have_display() || !have_xdotool()) {
+    if (!ks::test::have_display() || !test::have_xdotool()) {
         MESSAGE("no DISPLAY or xdotool: input test skipped (./run.sh test runs it under xvfb-run)");
         return;
     }
@@ -150,22 +180,21 @@ TEST_CASE("editor input: place from the palette, select, drag the gizmo, undo, r
                 .exit_code == 0);
     const auto level_file = dir / "input.json";
     const auto status = dir / "status.json";
+    const test::PrivateDisplay display;
     EditorProcess editor({"--level", level_file.string(), "--view", "top", "--width", "960", "--height",
                           "540", "--status-file", status.string()},
-                         {"XDG_CONFIG_HOME=" + (dir / "config").string()});
-    Session s(status, editor);
+                         {"XDG_CONFIG_HOME=" + (dir / "config").string()}, display);
+    Session s(status, editor, display);
     json st = s.wait("first frames", [](const json& j) { return j["frame"] >= 2 && j["view"] == "Top"; });
     const size_t entities = st["entities"];
 
     // Palette: robot, then a click in the viewport on the floor, right of the centre.
-    Session::xdo("mousemove " + s.at(st["palette"]["robot"]) + " click 1");
+    s.click(st["palette"]["robot"]);
     st = s.wait("placing a robot", [](const json& j) { return j["placing"] == "robot"; });
     const auto& vp = st["viewport"];
     const json target = {vp[0].get<float>() + vp[2].get<float>() * 0.5f + 70.0f,
                          vp[1].get<float>() + vp[3].get<float>() * 0.5f + 30.0f};
-    Session::xdo("mousemove " + s.at(target));
-    s.frames(2);
-    Session::xdo("click 1");
+    s.click(target);
     st = s.wait("the robot placed", [&](const json& j) { return j["entities"] == entities + 1; });
     REQUIRE(selection(st).size() == 1);
     const int placed = selection(st).front();
@@ -179,9 +208,7 @@ TEST_CASE("editor input: place from the palette, select, drag the gizmo, undo, r
     // Escape clears the selection; a click on the robot selects it again.
     s.key("Escape");
     st = s.wait("selection cleared", [](const json& j) { return j["selection"].empty(); });
-    Session::xdo("mousemove " + s.at(st["screen"][std::to_string(placed)]));
-    s.frames(2);
-    Session::xdo("click 1");
+    s.click(st["screen"][std::to_string(placed)]);
     st = s.wait("robot selected by a click",
                 [&](const json& j) { return selection(j) == std::vector<int>{placed}; });
 
@@ -190,15 +217,16 @@ TEST_CASE("editor input: place from the palette, select, drag the gizmo, undo, r
     const size_t undo_before = st["undo"];
     const unsigned long long builds_before = st["scene"]["builds"], bakes_before = st["scene"]["bakes"];
     const json grab = st["gizmo_handles"]["x"];
-    Session::xdo("mousemove " + s.at(grab));
+    s.focus();
+    s.xdo("mousemove " + s.at(grab));
     s.frames(2);
-    Session::xdo("mousedown 1");
+    s.xdo("mousedown 1");
     s.wait("drag started", [](const json& j) { return j["dragging"] == true; });
     for (int dx = 30; dx <= 90; dx += 30) {
-        Session::xdo("mousemove " + s.at(json{grab[0].get<float>() + dx, grab[1].get<float>()}));
+        s.xdo("mousemove " + s.at(json{grab[0].get<float>() + dx, grab[1].get<float>()}));
         s.frames(1);
     }
-    Session::xdo("mouseup 1");
+    s.xdo("mouseup 1");
     st = s.wait("drag ended", [](const json& j) { return j["dragging"] == false; });
     {
         // The scene is rebuilt as the robot moves, but the light map is baked once, after the drag (where
@@ -252,7 +280,7 @@ TEST_CASE("editor input: place from the palette, select, drag the gizmo, undo, r
 
 TEST_CASE("editor input: F5 plays the current document in the runtime, Shift+F5 from the camera, and a "
           "failing runtime is reported") {
-    if (!ks::test::have_display() || !have_xdotool()) {
+    if (!ks::test::have_display() || !test::have_xdotool()) {
         MESSAGE("no DISPLAY or xdotool: play-test input test skipped");
         return;
     }
@@ -279,11 +307,12 @@ TEST_CASE("editor input: F5 plays the current document in the runtime, Shift+F5 
                     "echo 'game over, bye'\n");
     std::filesystem::permissions(fake, std::filesystem::perms::owner_all);
     const auto status = dir / "status.json";
+    const test::PrivateDisplay display;
     EditorProcess editor(
         {"--level", (dir / "input.json").string(), "--width", "960", "--height", "540", "--status-file",
          status.string()},
-        {"XDG_CONFIG_HOME=" + (dir / "config").string(), "KS_PLAYTEST_COMMAND=" + fake.string()});
-    Session s(status, editor);
+        {"XDG_CONFIG_HOME=" + (dir / "config").string(), "KS_PLAYTEST_COMMAND=" + fake.string()}, display);
+    Session s(status, editor, display);
     json st = s.wait("first frames", [](const json& j) { return j["frame"] >= 2; });
     // Edit first, so that what is played can only be the document, not the file on disk: select the
     // robot with a click and delete it.
@@ -294,9 +323,7 @@ TEST_CASE("editor input: F5 plays the current document in the runtime, Shift+F5 
         for (const auto& e : level->entities)
             if (e.type() == level::EntityType::Robot) robot = e.id;
     }
-    Session::xdo("mousemove " + s.at(st["screen"][std::to_string(robot)]));
-    s.frames(2);
-    Session::xdo("click 1");
+    s.click(st["screen"][std::to_string(robot)]);
     s.wait("robot selected", [&](const json& j) { return selection(j) == std::vector<int>{robot}; });
     s.key("Delete");
     st = s.wait("robot deleted", [](const json& j) { return j["dirty"] == true; });
@@ -334,7 +361,7 @@ TEST_CASE("editor input: F5 plays the current document in the runtime, Shift+F5 
 
 TEST_CASE(
     "editor input: the dojo's Add key button keys a node, Ctrl+Z takes it back, Ctrl+Shift+Z redoes it") {
-    if (!ks::test::have_display() || !have_xdotool()) {
+    if (!ks::test::have_display() || !test::have_xdotool()) {
         MESSAGE("no DISPLAY or xdotool: dojo input test skipped");
         return;
     }
@@ -343,18 +370,17 @@ TEST_CASE(
     const auto shipped_before = files::read_text(shipped);
     REQUIRE(shipped_before);
     const auto status = dir / "status.json";
+    const test::PrivateDisplay display;
     EditorProcess editor({"--dojo", "--width", "1280", "--height", "720", "--status-file", status.string()},
-                         {"XDG_CONFIG_HOME=" + (dir / "config").string()});
-    Session s(status, editor);
+                         {"XDG_CONFIG_HOME=" + (dir / "config").string()}, display);
+    Session s(status, editor, display);
     json st = s.wait("the dojo tab with its Add key button", [](const json& j) {
         return j["tab"] == "dojo" && j.contains("dojo") && j["dojo"]["add_key"][0].get<float>() > 0.0f;
     });
     const size_t keys = st["dojo"]["keys"];
     CHECK(st["dojo"]["undo"] == 0);
 
-    Session::xdo("mousemove " + s.at(st["dojo"]["add_key"]));
-    s.frames(2);
-    Session::xdo("click 1");
+    s.click(st["dojo"]["add_key"]);
     st = s.wait("a key added", [&](const json& j) { return j["dojo"]["keys"] == keys + 1; });
     CHECK(st["dojo"]["undo"] == 1);
     CHECK(st["undo"] == 0); // the level's history is untouched
