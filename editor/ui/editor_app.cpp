@@ -313,6 +313,7 @@ void EditorApp::menu_bar() {
         ImGui::Separator();
         ImGui::MenuItem("Grid", nullptr, &overlays_.grid);
         ImGui::MenuItem("Collision bounds", nullptr, &overlays_.collision);
+        ImGui::MenuItem("Structure outlines (axis views)", nullptr, &overlays_.outlines);
         ImGui::MenuItem("Light ranges", nullptr, &overlays_.lights);
         ImGui::MenuItem("Robot eye / shooting radii", nullptr, &overlays_.robots);
         ImGui::MenuItem("Player start", nullptr, &overlays_.player_start);

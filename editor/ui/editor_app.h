@@ -48,6 +48,8 @@ struct Overlays {
     bool lights = true;
     bool robots = true;
     bool player_start = true;
+    bool outlines =
+        true; // in the axis views: walls, doors and stairs outlined, so the plan reads at a glance
     bool ceilings = false; // off by default: ceilings would hide the rooms from an editor camera above them
 };
 

@@ -9,6 +9,7 @@
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
+#include <optional>
 
 #include <algorithm>
 #include <cmath>
@@ -24,6 +25,24 @@ const Vec4 kGridMinor(0.55f, 0.6f, 0.7f, 0.22f);
 const Vec4 kGridMajor(0.65f, 0.72f, 0.85f, 0.5f);
 const Vec4 kSelected(1.0f, 0.62f, 0.1f, 1.0f);
 const Vec4 kCollision(0.3f, 0.9f, 1.0f, 0.55f);
+// Outlines of the structure in the axis views, where a 16-unit wall seen edge-on is a few grey pixels.
+const Vec4 kWallOutline(0.85f, 0.9f, 1.0f, 0.9f);
+const Vec4 kDoorOutline(1.0f, 0.55f, 0.25f, 0.95f);
+const Vec4 kStairOutline(0.45f, 1.0f, 0.55f, 0.9f);
+
+// The outline colour of an entity in the axis views, or none (floors, lights and props need none).
+std::optional<Vec4> outline_colour(const level::Entity& e) {
+    switch (e.type()) {
+    case level::EntityType::Wall:
+        return kWallOutline;
+    case level::EntityType::Door:
+        return kDoorOutline;
+    case level::EntityType::Stair:
+        return kStairOutline;
+    default:
+        return std::nullopt;
+    }
+}
 
 Mat4 obb_transform(const Obb& box) {
     Mat4 m(box.axes);
@@ -105,10 +124,14 @@ void EditorApp::draw_overlays() {
     for (const auto& e : doc.level.entities) {
         if (!shown(e)) continue;
         const bool selected = doc.is_selected(e.id);
-        if (selected || overlays_.collision) {
+        const auto outline = view_.orthographic() && overlays_.outlines ? outline_colour(e) : std::nullopt;
+        if (selected || overlays_.collision || outline) {
             Obb box = entity_obb(e);
             if (selected) box.half += Vec3(0.06f);
-            debug_.box(obb_transform(box), box.half, selected ? kSelected : kCollision);
+            debug_.box(obb_transform(box), box.half,
+                       selected              ? kSelected
+                       : overlays_.collision ? kCollision
+                                             : *outline);
         }
         if (overlays_.lights) {
             if (const auto* fl = e.try_as<level::FloorLightProps>()) {

@@ -216,6 +216,42 @@ TEST_CASE("killswitch-editor draws the selection outline and the gizmo for a sel
     CHECK(g1 > g0 + 20);
 }
 
+TEST_CASE("killswitch-editor's top view outlines the walls, so the floor plan reads from above") {
+    if (!have_display()) {
+        MESSAGE("no DISPLAY: editor window test skipped (./run.sh test runs it under xvfb-run)");
+        return;
+    }
+    test::ScratchDir dir;
+    write(dir / "build.kss", kTwoRoomScript);
+    REQUIRE(test::run_command(editor_binary() + " --script " + (dir / "build.kss").string()).exit_code == 0);
+    // The same level without its walls: the outline colour must come from the walls, not from the grid,
+    // the floor or the other overlays.
+    auto level = level::load_level_file(dir / "two_rooms.json");
+    REQUIRE(level);
+    std::erase_if(level->entities,
+                  [](const level::Entity& e) { return e.type() == level::EntityType::Wall; });
+    REQUIRE(level::save_level_file(dir / "no_walls.json", *level));
+    auto top = [&](const char* name) {
+        const auto shot = dir / (std::string(name) + ".png");
+        auto run = test::run_command(
+            editor_binary() + " --level " + (dir / (std::string(name) + ".json")).string() +
+            " --view top --width 1280 --height 720 --frames 4 --screenshot " + shot.string());
+        INFO(run.output);
+        REQUIRE(run.exit_code == 0);
+        return load_png(shot);
+    };
+    const Image walls = top("two_rooms"), bare = top("no_walls");
+    REQUIRE(!walls.rgb.empty());
+    REQUIRE(!bare.rgb.empty());
+    // The wall outline is a pale blue-white (217, 230, 255); the floor's grey has b close to r.
+    auto outline = [](int r, int g, int b) { return r > 170 && g > 185 && b > 225 && b > r + 15; };
+    const int with_walls = count_pixels(walls, 250, 60, 950, 550, outline),
+              without = count_pixels(bare, 250, 60, 950, 550, outline);
+    INFO("outline pixels with walls " << with_walls << ", without " << without);
+    CHECK(with_walls > 300);
+    CHECK(with_walls > 10 * without);
+}
+
 TEST_CASE("killswitch-editor --dojo shows the posed robot in its preview") {
     if (!have_display()) {
         MESSAGE("no DISPLAY: dojo window test skipped (./run.sh test runs it under xvfb-run)");
