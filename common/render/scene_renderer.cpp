@@ -397,11 +397,7 @@ void SceneRenderer::render_shadows(const SceneFrame& frame, FrameStats& stats) {
     shadow_.use();
     glUniformMatrix4fv(shadow_.location("u_light_view_projection"), 1, GL_FALSE, glm::value_ptr(light_vp));
     for (const Batch& b : shadow_batches_) {
-        glBindVertexArray(b.mesh->vao());
-        b.mesh->bind_instances(instance_buffer_, static_cast<size_t>(b.first) * sizeof(InstanceData));
-        glDrawElementsInstanced(GL_TRIANGLES, b.mesh->index_count(), GL_UNSIGNED_INT, nullptr, b.count);
-        ++stats.draw_calls;
-        stats.triangles += static_cast<long long>(b.mesh->index_count() / 3) * b.count;
+        draw_instanced(b, stats);
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
     glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previous_fbo));
@@ -460,13 +456,17 @@ void SceneRenderer::draw_batches(const Mat4& view_projection, const Vec3& eye, c
             upload_lights(pbr_, b.light_mask, frame);
             bound_mask = b.light_mask;
         }
-        glBindVertexArray(b.mesh->vao());
-        b.mesh->bind_instances(instance_buffer_, static_cast<size_t>(b.first) * sizeof(InstanceData));
-        glDrawElementsInstanced(GL_TRIANGLES, b.mesh->index_count(), GL_UNSIGNED_INT, nullptr, b.count);
-        ++stats.draw_calls;
-        stats.triangles += static_cast<long long>(b.mesh->index_count() / 3) * b.count;
+        draw_instanced(b, stats);
         stats.instances_drawn += b.count;
     }
+}
+
+void SceneRenderer::draw_instanced(const Batch& b, FrameStats& stats) {
+    glBindVertexArray(b.mesh->vao());
+    b.mesh->bind_instances(instance_buffer_, static_cast<size_t>(b.first) * sizeof(InstanceData));
+    glDrawElementsInstanced(GL_TRIANGLES, b.mesh->index_count(), GL_UNSIGNED_INT, nullptr, b.count);
+    ++stats.draw_calls;
+    stats.triangles += static_cast<long long>(b.mesh->index_count() / 3) * b.count;
 }
 
 void SceneRenderer::upload_lights(const ShaderProgram& program, std::uint32_t light_mask,
@@ -565,11 +565,7 @@ void SceneRenderer::draw_batches_fast(const Camera& camera, const SceneFrame& fr
             upload_lights(p, b.light_mask, frame);
             bound_mask = b.light_mask;
         }
-        glBindVertexArray(b.mesh->vao());
-        b.mesh->bind_instances(instance_buffer_, static_cast<size_t>(b.first) * sizeof(InstanceData));
-        glDrawElementsInstanced(GL_TRIANGLES, b.mesh->index_count(), GL_UNSIGNED_INT, nullptr, b.count);
-        ++stats.draw_calls;
-        stats.triangles += static_cast<long long>(b.mesh->index_count() / 3) * b.count;
+        draw_instanced(b, stats);
         stats.instances_drawn += b.count;
     }
     glBindSampler(kBase, 0);

@@ -107,6 +107,8 @@ class SceneRenderer {
                       FrameStats& stats, bool view_model);
     void draw_batches_fast(const Camera& camera, const SceneFrame& frame, FrameStats& stats, bool view_model);
     void upload_lights(const ShaderProgram& program, std::uint32_t light_mask, const SceneFrame& frame);
+    struct Batch;
+    void draw_instanced(const Batch& b, FrameStats& stats); // one batch: a draw call and its triangles
     bool casts_shadow(const MeshInstance& inst) const {
         // The fast path bakes the level's sun shadows; its shadow map (for models, per vertex) holds only
         // static level geometry, so moving robots never force a redraw.

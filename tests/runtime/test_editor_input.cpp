@@ -162,6 +162,14 @@ class Session {
     json last_;
 };
 
+// Builds input.json in `dir` with the editor's scripted mode.
+void build_input_level(const std::filesystem::path& dir) {
+    write(dir / "build.kss", kLevelScript);
+    REQUIRE(test::run_command((test::bin_dir() / "killswitch-editor").string() + " --script " +
+                              (dir / "build.kss").string())
+                .exit_code == 0);
+}
+
 std::vector<int> selection(const json& s) {
     return s["selection"].get<std::vector<int>>();
 }
@@ -174,10 +182,7 @@ TEST_CASE("editor input: place from the palette, select, drag the gizmo, undo, r
         return;
     }
     test::ScratchDir dir;
-    write(dir / "build.kss", kLevelScript);
-    REQUIRE(test::run_command((test::bin_dir() / "killswitch-editor").string() + " --script " +
-                              (dir / "build.kss").string())
-                .exit_code == 0);
+    build_input_level(dir.path());
     const auto level_file = dir / "input.json";
     const auto status = dir / "status.json";
     const test::PrivateDisplay display;
@@ -285,10 +290,7 @@ TEST_CASE("editor input: F5 plays the current document in the runtime, Shift+F5 
         return;
     }
     test::ScratchDir dir;
-    write(dir / "build.kss", kLevelScript);
-    REQUIRE(test::run_command((test::bin_dir() / "killswitch-editor").string() + " --script " +
-                              (dir / "build.kss").string())
-                .exit_code == 0);
+    build_input_level(dir.path());
     // The substitute runtime: answers --help like killswitch, records its arguments and the level it was
     // given, and fails with a message when asked to.
     const auto fake = dir / "fake_runtime.sh";
