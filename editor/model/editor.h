@@ -107,6 +107,7 @@ class Editor {
     // ---- validation (cached per revision) ----
     const std::vector<Issue>& issues();
     ValidationOptions& validation_options() { return validation_options_; }
+    size_t walk_checks_run() const { return walk_checks_run_; } // how often issues() ran the walk check
     Result<void> apply_quick_fix(const Issue& issue);
     Result<void> select_issue(const Issue& issue);
 
@@ -148,6 +149,11 @@ class Editor {
     ValidationOptions validation_options_;
     std::vector<Issue> issues_;
     std::uint64_t issues_revision_ = ~0ull;
+    // The walk check (most of a validation's time on a large level) is redone only when its inputs change.
+    std::vector<Issue> walk_issues_;
+    std::uint64_t walk_fingerprint_ = 0;
+    bool walk_known_ = false;
+    size_t walk_checks_run_ = 0;
     std::uint64_t reloads_ = 0;
 };
 

@@ -1,6 +1,7 @@
 // Editor: New, Open, Save, Save As, title and dirty state, external-change detection, autosave recovery,
 // and the validation panel's hooks.
 #include "model/editor.h"
+#include "model/reachability.h"
 
 #include "core/files.h"
 #include "core/log.h"
@@ -142,8 +143,19 @@ const std::vector<Issue>& Editor::issues() {
     const std::uint64_t key = ((history_.revision() + reloads_) << 1) | (dragging ? 1u : 0u);
     if (issues_revision_ != key) {
         ValidationOptions options = validation_options_;
-        options.check_reachability = options.check_reachability && !dragging;
+        options.check_reachability = false;
         issues_ = validate_design(doc_.level, options);
+        if (validation_options_.check_reachability && !dragging) {
+            const std::uint64_t fingerprint = walk_fingerprint(doc_.level, validation_options_);
+            if (!walk_known_ || fingerprint != walk_fingerprint_) {
+                walk_issues_.clear();
+                check_reachability(doc_.level, validation_options_, walk_issues_);
+                walk_fingerprint_ = fingerprint;
+                walk_known_ = true;
+                ++walk_checks_run_;
+            }
+            issues_.insert(issues_.end(), walk_issues_.begin(), walk_issues_.end());
+        }
         issues_revision_ = key;
     }
     return issues_;

@@ -214,6 +214,29 @@ WalkGridStats walk_to_control_panel(const level::Level& level, const ValidationO
     return stats;
 }
 
+std::uint64_t walk_fingerprint(const level::Level& level, const ValidationOptions& o) {
+    // FNV-1a over the bytes of the values the check reads.
+    std::uint64_t h = 1469598103934665603ull;
+    auto mix = [&h](const void* data, size_t size) {
+        const auto* bytes = static_cast<const unsigned char*>(data);
+        for (size_t i = 0; i < size; ++i) h = (h ^ bytes[i]) * 1099511628211ull;
+    };
+    auto mix_value = [&mix](const auto& v) { mix(&v, sizeof v); };
+    mix_value(o.walk_cell), mix_value(o.support_tolerance);
+    mix_value(o.character.radius), mix_value(o.character.height), mix_value(o.character.step_height);
+    mix_value(level.player_start.position);
+    for (const auto& e : level.entities) {
+        const EntityType t = e.type();
+        const auto* floor = e.try_as<level::FloorProps>();
+        if (!blocks_walking(t) && t != EntityType::Stair && t != EntityType::ControlPanel) continue;
+        const Obb box = entity_obb(e);
+        const int type = static_cast<int>(t), ceiling = floor && floor->ceiling ? 1 : 0;
+        mix_value(e.id), mix_value(type), mix_value(ceiling), mix_value(e.position), mix_value(e.rotation);
+        mix_value(box.center), mix_value(box.axes), mix_value(box.half);
+    }
+    return h;
+}
+
 void check_reachability(const level::Level& level, const ValidationOptions& options,
                         std::vector<Issue>& out) {
     const WalkGridStats stats = walk_to_control_panel(level, options);

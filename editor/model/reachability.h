@@ -7,6 +7,8 @@
 // finish is reported (as a warning).
 #include "model/validation.h"
 
+#include <cstdint>
+
 namespace ks::editor {
 
 struct WalkGridStats {
@@ -19,6 +21,10 @@ struct WalkGridStats {
 };
 
 WalkGridStats walk_to_control_panel(const level::Level& level, const ValidationOptions& options);
+// A hash of everything the walk check reads (walls, floors, stairs and other blockers with their boxes, the
+// control panel, the player start, the options): equal fingerprints give the same answer, so the editor
+// skips the check after edits that cannot change it (moving a robot or a pickup, renaming, tuning a light).
+std::uint64_t walk_fingerprint(const level::Level& level, const ValidationOptions& options);
 void check_reachability(const level::Level& level, const ValidationOptions& options, std::vector<Issue>& out);
 
 } // namespace ks::editor

@@ -2,6 +2,7 @@
 
 #include "level/level_io.h"
 #include "model/reachability.h"
+#include "model/xz_grid.h"
 
 #include <cmath>
 #include <cstdio>
@@ -36,17 +37,60 @@ int entity_id_from_path(const Level& level, const std::string& path) {
     return level.entities[index].id;
 }
 
+// An entity with its box, computed once per validation.
+struct Placed {
+    const Entity* entity;
+    Obb box;
+    Aabb bounds;
+};
+
+// The level's walls and walkable surfaces (floors, stairs) with their boxes, indexed on the ground plane.
+struct Solids {
+    std::vector<Placed> walls, supports;
+    XzGrid wall_grid, support_grid;
+    mutable std::vector<int> near; // query results, reused
+
+    static std::vector<Aabb> bounds_of(const std::vector<Placed>& placed) {
+        std::vector<Aabb> b;
+        b.reserve(placed.size());
+        for (const Placed& p : placed) b.push_back(p.bounds);
+        return b;
+    }
+    static std::vector<Placed> collect(const Level& level, bool walls) {
+        std::vector<Placed> out;
+        for (const auto& e : level.entities) {
+            const EntityType t = e.type();
+            if (walls ? t != EntityType::Wall || !is_finite(e.position) || !is_finite(e.rotation)
+                      : t != EntityType::Floor && t != EntityType::Stair)
+                continue;
+            const Obb box = entity_obb(e);
+            out.push_back({&e, box, box.aabb()});
+        }
+        return out;
+    }
+    explicit Solids(const Level& level)
+        : walls(collect(level, true)), supports(collect(level, false)), wall_grid(bounds_of(walls)),
+          support_grid(bounds_of(supports)) {}
+    // Walls whose box may overlap `box`, in level order.
+    const std::vector<int>& walls_near(const Aabb& box) const {
+        wall_grid.query(box, near);
+        return near;
+    }
+};
+
 struct Support {
     bool over_any = false;      // some floor or stair lies under or over (x, z)
     std::optional<float> below; // highest surface at or below y (within tolerance)
     std::optional<float> sunk;  // lowest surface a little above y: the entity is sunk into it
 };
 
-Support find_support(const Level& level, int self_id, Vec3 p, const ValidationOptions& o) {
+Support find_support(const Solids& solids, int self_id, Vec3 p, const ValidationOptions& o) {
     Support s;
-    for (const auto& e : level.entities) {
-        if (e.id == self_id) continue;
-        auto h = surface_height_at(e, p.x, p.z);
+    solids.support_grid.query_point(p.x, p.z, solids.near);
+    for (int i : solids.near) {
+        const Placed& e = solids.supports[static_cast<size_t>(i)];
+        if (e.entity->id == self_id) continue;
+        auto h = surface_height_at(*e.entity, e.box, p.x, p.z);
         if (!h) continue;
         s.over_any = true;
         if (*h <= p.y + o.support_tolerance) {
@@ -92,9 +136,9 @@ struct SupportProblem {
     IssueSeverity severity = IssueSeverity::Warning;
     std::optional<float> fixed_y;
 };
-std::optional<SupportProblem> support_problem(const Level& level, int self_id, Vec3 p,
+std::optional<SupportProblem> support_problem(const Solids& solids, int self_id, Vec3 p,
                                               const ValidationOptions& o) {
-    Support s = find_support(level, self_id, p, o);
+    Support s = find_support(solids, self_id, p, o);
     if (s.below && p.y - *s.below <= o.support_tolerance) return std::nullopt;
     if (s.sunk)
         return SupportProblem{"is sunk " + num(*s.sunk - p.y) + " units into the floor",
@@ -128,8 +172,8 @@ void check_format(const Level& level, std::vector<Issue>& out) {
     }
 }
 
-void check_player_start(const Level& level, const std::vector<const Entity*>& walls,
-                        const ValidationOptions& o, std::vector<Issue>& out) {
+void check_player_start(const Level& level, const Solids& solids, const ValidationOptions& o,
+                        std::vector<Issue>& out) {
     const auto& start = level.player_start;
     auto add = [&](IssueSeverity sev, std::string msg, QuickFix fix = {}) {
         out.push_back({Rule::PlayerStart, sev, 0, "player start " + std::move(msg), std::move(fix)});
@@ -138,7 +182,7 @@ void check_player_start(const Level& level, const std::vector<const Entity*>& wa
         add(IssueSeverity::Error, "has a non-finite position or yaw");
         return;
     }
-    if (auto problem = support_problem(level, 0, start.position, o)) {
+    if (auto problem = support_problem(solids, 0, start.position, o)) {
         QuickFix fix;
         if (problem->fixed_y) {
             fix.kind = QuickFix::Kind::MovePlayerStart;
@@ -149,8 +193,9 @@ void check_player_start(const Level& level, const std::vector<const Entity*>& wa
         add(problem->fixed_y ? problem->severity : IssueSeverity::Error, problem->message, std::move(fix));
     }
     const Obb body = player_obb(start);
-    for (const Entity* w : walls) {
-        Overlap ov = obb_overlap(body, entity_obb(*w));
+    for (int i : solids.walls_near(body.aabb())) {
+        const Placed& w = solids.walls[static_cast<size_t>(i)];
+        Overlap ov = obb_overlap(body, w.box);
         if (!ov.overlapping) continue;
         QuickFix fix;
         if (auto delta = push_out(ov)) {
@@ -158,7 +203,7 @@ void check_player_start(const Level& level, const std::vector<const Entity*>& wa
             fix.label = "Push out of the wall";
             fix.position = start.position + *delta;
         }
-        add(IssueSeverity::Error, "is inside " + describe(*w) + " (by " + num(ov.depth) + ")",
+        add(IssueSeverity::Error, "is inside " + describe(*w.entity) + " (by " + num(ov.depth) + ")",
             std::move(fix));
         break;
     }
@@ -181,16 +226,15 @@ void check_control_panels(const Level& level, std::vector<Issue>& out) {
                        {}});
 }
 
-void check_wall_overlaps(const Level& level, const std::vector<const Entity*>& walls,
-                         std::vector<Issue>& out) {
+void check_wall_overlaps(const Level& level, const Solids& solids, std::vector<Issue>& out) {
     for (const auto& e : level.entities) {
         if (!is_gameplay_body(e.type())) continue;
         const Obb box = entity_obb(e);
         const Aabb bounds = box.aabb();
-        for (const Entity* w : walls) {
-            const Obb wall = entity_obb(*w);
-            if (!bounds.intersects(wall.aabb())) continue;
-            Overlap ov = obb_overlap(box, wall, 0.01f);
+        for (int i : solids.walls_near(bounds)) {
+            const Placed& w = solids.walls[static_cast<size_t>(i)];
+            if (!bounds.intersects(w.bounds)) continue;
+            Overlap ov = obb_overlap(box, w.box, 0.01f);
             if (!ov.overlapping) continue;
             QuickFix fix;
             if (auto delta = push_out(ov)) {
@@ -199,17 +243,18 @@ void check_wall_overlaps(const Level& level, const std::vector<const Entity*>& w
                 fix.position = e.position + *delta;
             }
             out.push_back({Rule::WallOverlap, IssueSeverity::Error, e.id,
-                           describe(e) + " overlaps " + describe(*w) + " by " + num(ov.depth),
+                           describe(e) + " overlaps " + describe(*w.entity) + " by " + num(ov.depth),
                            std::move(fix)});
             break;
         }
     }
 }
 
-void check_support(const Level& level, const ValidationOptions& o, std::vector<Issue>& out) {
+void check_support(const Level& level, const Solids& solids, const ValidationOptions& o,
+                   std::vector<Issue>& out) {
     for (const auto& e : level.entities) {
         if (!stands_on_ground(e.type()) || !is_finite(e.position)) continue;
-        auto problem = support_problem(level, e.id, e.position, o);
+        auto problem = support_problem(solids, e.id, e.position, o);
         if (!problem) continue;
         QuickFix fix{QuickFix::Kind::DeleteEntity, "Delete", {}, {}, {}};
         if (problem->fixed_y) {
@@ -243,7 +288,7 @@ void check_stairs(const Level& level, const ValidationOptions& o, std::vector<Is
     }
 }
 
-void check_doors(const Level& level, const std::vector<const Entity*>& walls, std::vector<Issue>& out) {
+void check_doors(const Level& level, const Solids& solids, std::vector<Issue>& out) {
     for (const auto& e : level.entities) {
         const auto* d = e.try_as<level::DoorProps>();
         if (!d) continue;
@@ -251,8 +296,8 @@ void check_doors(const Level& level, const std::vector<const Entity*>& walls, st
         // Probes just beyond each jamb, at mid height, must be inside a wall; the doorway must be free.
         auto wall_at = [&](float side) {
             const Vec3 probe = door.center + door.axes[0] * (side * (d->width / 2 + 0.25f));
-            for (const Entity* w : walls)
-                if (entity_obb(*w).contains(probe, 0.05f)) return true;
+            for (int i : solids.walls_near(Aabb{probe, probe}))
+                if (solids.walls[static_cast<size_t>(i)].box.contains(probe, 0.05f)) return true;
             return false;
         };
         const bool left = wall_at(-1.0f), right = wall_at(1.0f);
@@ -265,10 +310,14 @@ void check_doors(const Level& level, const std::vector<const Entity*>& walls, st
             problem = "has no wall beside its +x jamb";
         Obb doorway = door;
         doorway.half = {std::max(d->width / 2 - 0.1f, 0.01f), std::max(d->height / 2 - 0.1f, 0.01f), 0.05f};
-        for (const Entity* w : walls) {
-            if (!problem.empty()) break;
-            if (obb_overlap(doorway, entity_obb(*w)).overlapping) problem = "is blocked by " + describe(*w);
-        }
+        if (problem.empty())
+            for (int i : solids.walls_near(doorway.aabb())) {
+                const Placed& w = solids.walls[static_cast<size_t>(i)];
+                if (obb_overlap(doorway, w.box).overlapping) {
+                    problem = "is blocked by " + describe(*w.entity);
+                    break;
+                }
+            }
         if (!problem.empty())
             out.push_back({Rule::DoorGap,
                            IssueSeverity::Error,
@@ -310,16 +359,13 @@ int count_errors(const std::vector<Issue>& issues) {
 std::vector<Issue> validate_design(const Level& level, const ValidationOptions& options) {
     std::vector<Issue> out;
     check_format(level, out);
-    std::vector<const Entity*> walls;
-    for (const auto& e : level.entities)
-        if (e.type() == EntityType::Wall && is_finite(e.position) && is_finite(e.rotation))
-            walls.push_back(&e);
-    check_player_start(level, walls, options, out);
+    const Solids solids(level);
+    check_player_start(level, solids, options, out);
     check_control_panels(level, out);
-    check_wall_overlaps(level, walls, out);
-    check_support(level, options, out);
+    check_wall_overlaps(level, solids, out);
+    check_support(level, solids, options, out);
     check_stairs(level, options, out);
-    check_doors(level, walls, out);
+    check_doors(level, solids, out);
     if (options.check_reachability) check_reachability(level, options, out);
     return out;
 }

@@ -343,3 +343,47 @@ TEST_CASE(
     CHECK(of_rule(validate_design(steep), Rule::StairSlope).size() == 1);
     CHECK_FALSE(walk_to_control_panel(steep, {}).reachable);
 }
+
+TEST_CASE("validation: the walk check reruns only when what it reads changes, and always agrees with a "
+          "fresh validation") {
+    Editor ed;
+    build_two_rooms(ed);
+    auto same_as_fresh = [&] {
+        INFO("cached:\n" << dump(ed.issues()) << "fresh:\n" << dump(validate_design(ed.level())));
+        CHECK(dump(ed.issues()) == dump(validate_design(ed.level())));
+    };
+    same_as_fresh();
+    const size_t runs = ed.walk_checks_run();
+    // Robots, pickups, names and lights do not block or carry the player: no new walk.
+    REQUIRE(ed.select_all_of_type(EntityType::Robot) == 1);
+    REQUIRE(ed.move_selection({2, 0, 0}).ok());
+    same_as_fresh();
+    REQUIRE(ed.rename(id_named(ed, "Door"), "Front door").ok());
+    same_as_fresh();
+    (void)ed.place(EntityType::Pickup, {5, 0, 5});
+    (void)ed.place(EntityType::TopLight, {0, 15, 5});
+    same_as_fresh();
+    CHECK(ed.walk_checks_run() == runs);
+    // A wall across the doorway, the panel moved, the player start moved: each reruns it.
+    (void)ed.place(EntityType::Wall, {0, 0, 0});
+    REQUIRE(ed.set_field_text("size", "5,16,0.5").ok());
+    same_as_fresh();
+    CHECK(of_rule(ed.issues(), Rule::Reachability).size() == 1);
+    CHECK(ed.walk_checks_run() > runs);
+    const size_t runs_sealed = ed.walk_checks_run();
+    REQUIRE(ed.select({id_named(ed, "Panel")}).ok());
+    REQUIRE(ed.move_selection({1, 0, 0}).ok());
+    same_as_fresh();
+    CHECK(ed.walk_checks_run() == runs_sealed + 1);
+    REQUIRE(ed.undo());
+    REQUIRE(ed.undo());
+    REQUIRE(ed.undo()); // the wall is gone: reachable again
+    same_as_fresh();
+    CHECK(of_rule(ed.issues(), Rule::Reachability).empty());
+    level::PlayerStart start = ed.level().player_start;
+    start.position.z = 14;
+    REQUIRE(ed.set_player_start(start).ok());
+    const size_t before = ed.walk_checks_run();
+    same_as_fresh();
+    CHECK(ed.walk_checks_run() == before + 1);
+}
