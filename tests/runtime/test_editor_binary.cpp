@@ -79,6 +79,11 @@ expect count control_panel 1
 expect valid
 save two_rooms.json
 )";
+// Builds two_rooms.json in `dir` with the editor's scripted mode.
+void build_two_rooms(const std::filesystem::path& dir) {
+    write(dir / "build.kss", kTwoRoomScript);
+    REQUIRE(test::run_command(editor_binary() + " --script " + (dir / "build.kss").string()).exit_code == 0);
+}
 } // namespace
 
 TEST_CASE("killswitch-editor --script builds, validates and saves a two-room level") {
@@ -149,8 +154,7 @@ TEST_CASE("killswitch-editor --screenshot shows the level in its viewport betwee
         return;
     }
     test::ScratchDir dir;
-    write(dir / "build.kss", kTwoRoomScript);
-    REQUIRE(test::run_command(editor_binary() + " --script " + (dir / "build.kss").string()).exit_code == 0);
+    build_two_rooms(dir.path());
     auto shot = dir / "editor.png";
     auto run = test::run_command(editor_binary() + " --level " + (dir / "two_rooms.json").string() +
                                  " --width 1280 --height 720 --frames 4 --screenshot " + shot.string());
@@ -187,8 +191,7 @@ TEST_CASE("killswitch-editor draws the selection outline and the gizmo for a sel
         return;
     }
     test::ScratchDir dir;
-    write(dir / "build.kss", kTwoRoomScript);
-    REQUIRE(test::run_command(editor_binary() + " --script " + (dir / "build.kss").string()).exit_code == 0);
+    build_two_rooms(dir.path());
     write(dir / "select.kss", "select all robot\n");
     write(dir / "none.kss", "select none\n");
     const std::string common = editor_binary() + " --level " + (dir / "two_rooms.json").string() +
@@ -222,8 +225,7 @@ TEST_CASE("killswitch-editor's top view outlines the walls, so the floor plan re
         return;
     }
     test::ScratchDir dir;
-    write(dir / "build.kss", kTwoRoomScript);
-    REQUIRE(test::run_command(editor_binary() + " --script " + (dir / "build.kss").string()).exit_code == 0);
+    build_two_rooms(dir.path());
     // The same level without its walls: the outline colour must come from the walls, not from the grid,
     // the floor or the other overlays.
     auto level = level::load_level_file(dir / "two_rooms.json");
