@@ -15,6 +15,8 @@
 #include "render/texture_cache.h"
 #include "render/view_model.h"
 
+#include <epoxy/gl.h>
+
 #include <algorithm>
 #include <cctype>
 #include <chrono>
@@ -39,6 +41,8 @@ struct Variant {
     render::RenderQuality quality = render::RenderQuality::Auto;
     bool occluded_base = true;
     float render_scale = 0.0f; // 0: the renderer's default for this GL renderer
+    bool occlusion_culling = true;
+    bool depth_prepass = true;
 };
 
 struct Measurement {
@@ -50,6 +54,9 @@ struct Measurement {
     int internal_width = 0, internal_height = 0;
     int draw_calls = 0;
     long long triangles = 0;
+    long long occluded = 0;    // instances skipped behind occluder boxes, summed over the timed frames
+    double samples_passed = 0; // fragments that passed the depth test, summed over the timed frames
+    double overdraw = 0;       // samples_passed per internal pixel per frame (1.0: every pixel shaded once)
 };
 
 double cpu_now_ms() {
@@ -81,6 +88,8 @@ void measure(Measurement& m, render::OffscreenContext& ctx, render::AssetLibrary
     settings.quality = v.quality;
     settings.fast_occluded_base = v.occluded_base;
     settings.render_scale = v.render_scale;
+    settings.occlusion_culling = v.occlusion_culling;
+    settings.depth_prepass = v.depth_prepass;
     const float default_anisotropy = assets.textures().max_anisotropy();
     if (v.anisotropy > 0.0f) assets.textures().set_max_anisotropy(v.anisotropy);
     const int width = ctx.width() / v.resolution_divisor, height = ctx.height() / v.resolution_divisor;
@@ -99,6 +108,8 @@ void measure(Measurement& m, render::OffscreenContext& ctx, render::AssetLibrary
     std::vector<double>& times = m.times;
     const int warmup = 5;
     double cpu_start = 0;
+    GLuint query = 0;
+    glGenQueries(1, &query);
     for (int i = -warmup; i < frames; ++i) {
         if (i == 0) cpu_start = cpu_now_ms();
         auto t0 = std::chrono::steady_clock::now();
@@ -113,10 +124,18 @@ void measure(Measurement& m, render::OffscreenContext& ctx, render::AssetLibrary
         frame.height = height;
         if (v.shadow_every_frame) (*renderer)->invalidate_shadows();
         ctx.bind();
+        // Fragments that pass the depth test (scene and rifle; Mesa pauses queries during the upscale blit):
+        // against the internal pixel count, the overdraw the shaders pay for.
+        glBeginQuery(GL_SAMPLES_PASSED, query);
         auto stats = (*renderer)->render(frame);
+        glEndQuery(GL_SAMPLES_PASSED);
         ctx.finish();
         double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
         if (i >= 0) {
+            GLuint64 samples = 0;
+            glGetQueryObjectui64v(query, GL_QUERY_RESULT, &samples); // after glFinish: no wait
+            m.samples_passed += static_cast<double>(samples);
+            m.occluded += stats.instances_occluded;
             times.push_back(ms);
             m.draw_calls = std::max(m.draw_calls, stats.draw_calls);
             m.triangles = std::max(m.triangles, stats.triangles);
@@ -126,6 +145,7 @@ void measure(Measurement& m, render::OffscreenContext& ctx, render::AssetLibrary
         }
     }
     m.cpu_total_ms += cpu_now_ms() - cpu_start;
+    glDeleteQueries(1, &query);
     if (!shot_path.empty()) { // the start view, for side-by-side comparisons of the variants
         render::SceneFrame frame;
         frame.camera = start;
@@ -151,6 +171,8 @@ void finish(Measurement& m) {
     m.mean_ms = 0;
     for (double t : times) m.mean_ms += t / times.size();
     m.cpu_ms = m.cpu_total_ms / static_cast<double>(times.size());
+    const double pixels = static_cast<double>(m.internal_width) * m.internal_height;
+    m.overdraw = pixels > 0 ? m.samples_passed / static_cast<double>(times.size()) / pixels : 0.0;
 }
 
 int run(int argc, const char* const* argv) {
@@ -214,6 +236,17 @@ int run(int argc, const char* const* argv) {
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.max_lights = 4; });
     with("fast, scale 0.5, no shadow",
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.shadows = false; });
+    with("fast, scale 0.5, no occlusion",
+         [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.occlusion_culling = false; });
+    // The upscale's price: the same 640x360 scene drawn straight into a 640x360 target (not a usable
+    // setting: the image is a quarter of the window).
+    with("fast, 640x360, no upscale",
+         [](Variant& v) { v.quality = Q::Fast, v.render_scale = 1.0f, v.resolution_divisor = 2; });
+    with("fast, scale 0.5, no pre-pass",
+         [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.depth_prepass = false; });
+    with("fast, 0.5, neither", [](Variant& v) {
+        v.quality = Q::Fast, v.render_scale = 0.5f, v.occlusion_culling = false, v.depth_prepass = false;
+    });
     with("full, scale 0.5", [](Variant& v) { v.quality = Q::Full, v.render_scale = 0.5f; });
     if (!cl->has("quick")) {
         // The full path's features, one at a time (session 1's table).
@@ -242,8 +275,9 @@ int run(int argc, const char* const* argv) {
                 "anisotropy %.0fx, msaa %dx\n",
                 path.string().c_str(), *width, *height, *frames, renderer.c_str(),
                 assets.textures().max_anisotropy(), default_msaa);
-    std::printf("%-28s %5s %9s %10s %10s %8s %10s %6s %9s %11s\n", "variant", "path", "internal", "median ms",
-                "p99 ms", "fps", "cpu ms", "draws", "triangles", "vs default");
+    std::printf("%-28s %5s %9s %10s %10s %8s %10s %6s %9s %9s %6s %11s\n", "variant", "path", "internal",
+                "median ms", "p99 ms", "fps", "cpu ms", "draws", "triangles", "shaded/px", "hidden",
+                "vs default");
     std::vector<Measurement> results(variants.size());
     bool ok = true;
     const int rounds = *rounds_option;
@@ -268,9 +302,11 @@ int run(int argc, const char* const* argv) {
         if (std::string(variants[i].name) == "full, scale 1") full = m;
         char internal[32];
         std::snprintf(internal, sizeof(internal), "%dx%d", m.internal_width, m.internal_height);
-        std::printf("%-28s %5s %9s %10.2f %10.2f %8.1f %10.2f %6d %9lld %10.2fx\n", variants[i].name,
-                    m.fast ? "fast" : "full", internal, m.median_ms, m.p99_ms, 1000.0 / m.median_ms, m.cpu_ms,
-                    m.draw_calls, m.triangles, m.median_ms / base.median_ms);
+        std::printf("%-28s %5s %9s %10.2f %10.2f %8.1f %10.2f %6d %9lld %9.2f %6.1f %10.2fx\n",
+                    variants[i].name, m.fast ? "fast" : "full", internal, m.median_ms, m.p99_ms,
+                    1000.0 / m.median_ms, m.cpu_ms, m.draw_calls, m.triangles, m.overdraw,
+                    static_cast<double>(m.occluded) / static_cast<double>(m.times.size()),
+                    m.median_ms / base.median_ms);
         std::fflush(stdout);
     }
     if (cl->has("json"))

@@ -3,6 +3,7 @@
 #include "core/math.h"
 
 #include <array>
+#include <vector>
 
 namespace ks::render {
 
@@ -39,6 +40,21 @@ struct Camera {
     Mat4 view() const;
     Mat4 projection() const;
 };
+
+// Occlusion culling against solid boxes. A face of an opaque box that faces the eye hides everything that
+// lies behind its plane and projects (from the eye) inside it; by convexity, checking a box's 8 corners
+// decides for the whole box. lo/hi bound the face on the other two axes ((axis+1)%3, (axis+2)%3).
+struct OccluderFace {
+    int axis = 0;
+    float plane = 0.0f;
+    Vec2 lo{0.0f}, hi{0.0f};
+};
+// Appends the faces of `solid` that face `eye` (none when the eye is inside it).
+void append_occluder_faces(const Aabb& solid, const Vec3& eye, std::vector<OccluderFace>& out);
+// True if all of `box` is hidden from the perspective `camera` behind `face`: every corner beyond the
+// face's plane, projecting inside the face (with a margin), and the face drawn there (not clipped by
+// the near or far plane). Conservative: false whenever in doubt.
+bool hidden_behind(const Aabb& box, const OccluderFace& face, const Camera& camera);
 
 // Six inward-facing planes (a·x + b·y + c·z + d >= 0 inside), extracted from a view-projection matrix.
 class Frustum {

@@ -88,7 +88,16 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
             // reference.
             bool ceiling = e.try_as<level::FloorProps>() && e.as<level::FloorProps>().ceiling;
             scene->bounds_ = merge(scene->bounds_, data.bounds());
-            scene->surfaces_.push_back({nullptr, &assets.surface(texture), !ceiling});
+            // A wall or floor that is an axis-aligned box (every vertex a corner of its bounds) is solid, so
+            // it may hide what lies behind it (occlusion culling). Stairs' bounds hold air above the steps.
+            bool occluder = !e.try_as<level::StairProps>();
+            const Aabb bounds = data.bounds();
+            const float eps = 1e-3f * (1.0f + glm::length(bounds.max - bounds.min));
+            for (const auto& v : data.vertices)
+                for (int a = 0; a < 3 && occluder; ++a)
+                    occluder = std::abs(v.position[a] - bounds.min[a]) < eps ||
+                               std::abs(v.position[a] - bounds.max[a]) < eps;
+            scene->surfaces_.push_back({nullptr, &assets.surface(texture), !ceiling, occluder});
             surface_meshes.push_back(std::move(data));
             break;
         }
@@ -218,6 +227,7 @@ void LevelScene::emit(std::vector<MeshInstance>& instances, std::vector<Light>& 
         inst.material = s.material;
         inst.casts_shadow = s.casts_shadow;
         inst.lightmap = lightmap_.id();
+        inst.occluder = s.occluder;
         instances.push_back(inst);
     }
     for (auto& p : props_) {

@@ -49,6 +49,7 @@ class LevelScene {
         std::unique_ptr<GpuMesh> mesh;
         const Material* material;
         bool casts_shadow;
+        bool occluder = false; // axis-aligned box: its bounds are solid (MeshInstance::occluder)
     };
     struct Prop {
         int entity_id = 0;

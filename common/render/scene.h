@@ -17,6 +17,9 @@ struct MeshInstance {
     // GL texture with this static mesh's baked light (LevelScene's level geometry; the mesh's vertices carry
     // lightmap_uv). 0: none. Only the fast quality path reads it; the full path lights everything per pixel.
     unsigned lightmap = 0;
+    // Its world bounds are a solid, opaque box (LevelScene's axis-aligned walls and floors): the fast path
+    // skips instances that lie entirely behind one of its faces (SceneRenderer, occlusion culling).
+    bool occluder = false;
 };
 
 struct Light {
@@ -44,7 +47,8 @@ struct FrameStats {
     int draw_calls = 0;
     long long triangles = 0;
     int instances_drawn = 0;
-    int instances_culled = 0;
+    int instances_culled = 0;   // outside the view frustum
+    int instances_occluded = 0; // inside it, but hidden behind an occluder box (fast path)
     int lights_in_view = 0;
     bool shadow_rendered = false;
     bool fast_path = false;                      // RenderQuality::Fast drew this frame

@@ -250,11 +250,28 @@ void SceneRenderer::cull_and_batch(const SceneFrame& frame, FrameStats& stats) {
     const std::vector<MeshInstance>& source = view_model_pass ? view_world_ : *frame.instances;
     Frustum frustum(frame.camera.projection() * frame.camera.view());
     const int light_cap = std::clamp(settings_.max_lights_per_draw, 0, kMaxLightsPerDraw);
+    // Fast path: the faces of the occluder boxes (walls, floors) in view that face the eye. What lies
+    // entirely behind one of them is skipped: the rooms next door cost no vertex shading or binning.
+    occluder_faces_.clear();
+    const bool occlusion =
+        fast_ && settings_.occlusion_culling && !view_model_pass && !frame.camera.orthographic();
+    if (occlusion)
+        for (const auto& inst : source)
+            if (inst.occluder && inst.mesh) {
+                Aabb box = transform_aabb(inst.mesh->bounds(), inst.world);
+                if (frustum.intersects(box)) append_occluder_faces(box, eye, occluder_faces_);
+            }
     for (const auto& inst : source) {
         if (!inst.mesh || !inst.material) continue;
         Aabb box = transform_aabb(inst.mesh->bounds(), inst.world);
         if (!view_model_pass && !frustum.intersects(box)) {
             ++stats.instances_culled;
+            continue;
+        }
+        if (occlusion &&
+            std::any_of(occluder_faces_.begin(), occluder_faces_.end(),
+                        [&](const OccluderFace& f) { return hidden_behind(box, f, frame.camera); })) {
+            ++stats.instances_occluded;
             continue;
         }
         if (fast_ && inst.lightmap != 0) { // its light is baked: no light list
@@ -524,50 +541,74 @@ void SceneRenderer::draw_batches_fast(const Camera& camera, const SceneFrame& fr
     const GLint loc_base = p.location("u_base_factor"), loc_emissive = p.location("u_emissive_factor");
     const GLint loc_mr = p.location("u_metal_rough");
 
+    // Depth pre-pass of the baked level geometry (walls, floors, stairs: a few hundred triangles), position
+    // only, pushed back by a polygon offset so that the shaded pass's own fragments still pass GL_LESS
+    // even if the two programs round a vertex differently (and a model touching a wall wins the tie). Then
+    // models are shaded first (nearest first), the level last: every level pixel and most model pixels are
+    // shaded once.
+    const bool prepass = settings_.depth_prepass && !view_model;
+    if (prepass) {
+        shadow_.use();
+        glUniformMatrix4fv(shadow_.location("u_light_view_projection"), 1, GL_FALSE,
+                           glm::value_ptr(view_projection));
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(1.0f, 2.0f);
+        for (const Batch& b : batches_)
+            if (b.lightmap != 0) draw_instanced(b, stats);
+        glDisable(GL_POLYGON_OFFSET_FILL);
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        p.use();
+    }
+
     const Material* bound_material = nullptr;
     unsigned bound_lightmap = ~0u;
     std::uint32_t bound_mask = ~0u;
-    for (const Batch& b : batches_) {
-        if (b.material != bound_material || b.lightmap != bound_lightmap) {
-            const Material& m = *b.material;
-            const bool baked = b.lightmap != 0;
-            // Baked level surfaces read base colour x occlusion from one map (no ORM lookup per pixel).
-            const bool occluded_base = baked && m.fast_base_map != 0 && settings_.fast_occluded_base;
-            if (b.material != bound_material || (b.lightmap == 0) != (bound_lightmap == 0)) {
-                auto bind = [&](int unit, unsigned id, unsigned fallback) {
-                    glActiveTexture(GL_TEXTURE0 + unit);
-                    glBindTexture(GL_TEXTURE_2D, id ? id : fallback);
-                };
-                bind(kBase, occluded_base ? m.fast_base_map : m.base_map, textures_.white().id);
-                bind(kOrm, m.orm_map, textures_.white().id);
-                bind(kEmissive, m.emissive_map, textures_.white().id);
-                // The placeholder checker has no mipmaps (a mip filter would make it incomplete): it keeps
-                // its own nearest filtering and sRGB decode.
-                const unsigned sampler = m.placeholder ? 0u : fast_sampler_;
-                glBindSampler(kBase, sampler);
-                glBindSampler(kEmissive, sampler);
-                glUniform4fv(loc_base, 1, glm::value_ptr(m.base_factor));
-                glUniform3fv(loc_emissive, 1, glm::value_ptr(m.emissive_factor));
-                glUniform2f(loc_mr, occluded_base ? m.fast_metallic : m.metallic, m.roughness);
+    for (int pass = prepass ? 0 : 1; pass < 2; ++pass)
+        for (const Batch& b : batches_) {
+            // With the pre-pass: models (pass 0), then the level (pass 1); without it, one pass in distance
+            // order.
+            if (prepass && (b.lightmap != 0) != (pass == 1)) continue;
+            if (b.material != bound_material || b.lightmap != bound_lightmap) {
+                const Material& m = *b.material;
+                const bool baked = b.lightmap != 0;
+                // Baked level surfaces read base colour x occlusion from one map (no ORM lookup per pixel).
+                const bool occluded_base = baked && m.fast_base_map != 0 && settings_.fast_occluded_base;
+                if (b.material != bound_material || (b.lightmap == 0) != (bound_lightmap == 0)) {
+                    auto bind = [&](int unit, unsigned id, unsigned fallback) {
+                        glActiveTexture(GL_TEXTURE0 + unit);
+                        glBindTexture(GL_TEXTURE_2D, id ? id : fallback);
+                    };
+                    bind(kBase, occluded_base ? m.fast_base_map : m.base_map, textures_.white().id);
+                    bind(kOrm, m.orm_map, textures_.white().id);
+                    bind(kEmissive, m.emissive_map, textures_.white().id);
+                    // The placeholder checker has no mipmaps (a mip filter would make it incomplete): it
+                    // keeps its own nearest filtering and sRGB decode.
+                    const unsigned sampler = m.placeholder ? 0u : fast_sampler_;
+                    glBindSampler(kBase, sampler);
+                    glBindSampler(kEmissive, sampler);
+                    glUniform4fv(loc_base, 1, glm::value_ptr(m.base_factor));
+                    glUniform3fv(loc_emissive, 1, glm::value_ptr(m.emissive_factor));
+                    glUniform2f(loc_mr, occluded_base ? m.fast_metallic : m.metallic, m.roughness);
+                }
+                if (b.lightmap != bound_lightmap && b.lightmap != 0) {
+                    glActiveTexture(GL_TEXTURE0 + kLightmap);
+                    glBindTexture(GL_TEXTURE_2D, b.lightmap);
+                }
+                glUniform1i(loc_flags, (m.orm_map && !occluded_base ? 2 : 0) | (m.emissive_map ? 4 : 0) |
+                                           (baked ? 32 : 0) | (raw_srgb_ && !m.placeholder ? 64 : 0));
+                glUniform1i(loc_baked, baked ? 1 : 0);
+                glUniform1i(loc_receive, shadows && !baked ? 1 : 0);
+                bound_material = b.material;
+                bound_lightmap = b.lightmap;
             }
-            if (b.lightmap != bound_lightmap && b.lightmap != 0) {
-                glActiveTexture(GL_TEXTURE0 + kLightmap);
-                glBindTexture(GL_TEXTURE_2D, b.lightmap);
+            if (b.lightmap == 0 && b.light_mask != bound_mask) {
+                upload_lights(p, b.light_mask, frame);
+                bound_mask = b.light_mask;
             }
-            glUniform1i(loc_flags, (m.orm_map && !occluded_base ? 2 : 0) | (m.emissive_map ? 4 : 0) |
-                                       (baked ? 32 : 0) | (raw_srgb_ && !m.placeholder ? 64 : 0));
-            glUniform1i(loc_baked, baked ? 1 : 0);
-            glUniform1i(loc_receive, shadows && !baked ? 1 : 0);
-            bound_material = b.material;
-            bound_lightmap = b.lightmap;
+            draw_instanced(b, stats);
+            stats.instances_drawn += b.count;
         }
-        if (b.lightmap == 0 && b.light_mask != bound_mask) {
-            upload_lights(p, b.light_mask, frame);
-            bound_mask = b.light_mask;
-        }
-        draw_instanced(b, stats);
-        stats.instances_drawn += b.count;
-    }
     glBindSampler(kBase, 0);
     glBindSampler(kEmissive, 0);
 }

@@ -37,6 +37,13 @@ struct RendererSettings {
     RenderQuality quality = RenderQuality::Auto;
     // Fast path: baked surfaces read Material::fast_base_map (base x occlusion) instead of base + ORM maps.
     bool fast_occluded_base = true;
+    // Fast path: instances hidden behind an occluder box (MeshInstance::occluder, e.g. a wall) are not
+    // drawn: no vertex shading or binning for the robots in the next room.
+    bool occlusion_culling = true;
+    // Fast path: the baked level geometry (few triangles, most of the screen) is first drawn depth-only,
+    // then models and the level are shaded against that depth, so each pixel runs the fragment shader
+    // about once (without it, the floor and ceiling are shaded where the walls later cover them).
+    bool depth_prepass = true;
     // The 3D scene is drawn at this fraction of the target's width and height, then scaled up (bilinear)
     // into the target, so a HUD drawn afterwards stays sharp. 0: automatic (1 on GPUs,
     // kSoftwareRenderScale on software rasterisers; KS_RENDER_SCALE=0.25..1 overrides).
@@ -158,6 +165,7 @@ class SceneRenderer {
         unsigned lightmap;
     };
     std::vector<Visible> visible_;
+    std::vector<OccluderFace> occluder_faces_;
     std::vector<Batch> batches_;
     std::vector<InstanceData> instance_data_;
     std::vector<int> lights_in_view_; // indices into frame.lights

@@ -37,6 +37,48 @@ TEST_CASE("frustum keeps boxes in front of the camera and culls those behind or 
     CHECK_FALSE(left.intersects({Vec3(-1, 2, -11), Vec3(1, 4, -9)}));
 }
 
+TEST_CASE(
+    "occlusion culling: a box behind a wall face is hidden, one that peeks out or stands in front is not") {
+    Camera cam;
+    cam.position = Vec3(0, 3, 25);
+    cam.yaw = 0.0f;                                             // looking along -z
+    const Aabb wall{Vec3(-10, 0, -0.25f), Vec3(10, 16, 0.25f)}; // a 20-wide, 16-high slab across the view
+    std::vector<OccluderFace> faces;
+    append_occluder_faces(wall, cam.position, faces);
+    REQUIRE(faces.size() == 1); // the eye is level with the slab in x and y: only its +z face looks at it
+    CHECK(faces[0].axis == 2);
+    CHECK(faces[0].plane == doctest::Approx(0.25f));
+    auto hidden = [&](const Aabb& box) {
+        for (const auto& f : faces)
+            if (hidden_behind(box, f, cam)) return true;
+        return false;
+    };
+    const Aabb robot{Vec3(-1, 0, -20), Vec3(1, 4, -18)};
+    CHECK(hidden(robot));                                          // straight behind the wall
+    CHECK_FALSE(hidden(Aabb{Vec3(-1, 0, 5), Vec3(1, 4, 7)}));      // in front of it
+    CHECK_FALSE(hidden(Aabb{Vec3(8, 0, -20), Vec3(30, 4, -18)}));  // reaches past its end
+    CHECK(hidden(Aabb{Vec3(-1, 0, -1), Vec3(1, 4, 0.1f)}));        // inside the slab: hidden too
+    CHECK_FALSE(hidden(Aabb{Vec3(-1, 0, -1), Vec3(1, 4, 0.5f)}));  // pokes out of its face
+    CHECK_FALSE(hidden(Aabb{Vec3(-1, 0, -20), Vec3(1, 40, -18)})); // seen over the top
+    CHECK_FALSE(hidden(Aabb{Vec3(-1, 0, -20), Vec3(1, 4, 30)}));   // reaches behind the eye
+    // The face is clipped by the near plane when the eye almost touches it: nothing is culled then.
+    Camera close = cam;
+    close.position = Vec3(0, 3, 0.25f + 0.05f);
+    faces.clear();
+    append_occluder_faces(wall, close.position, faces);
+    REQUIRE(faces.size() == 1);
+    CHECK_FALSE(hidden_behind(Aabb{Vec3(-30, 0, -20), Vec3(30, 4, -18)}, faces[0], close));
+    // Orthographic views (the editor's axis views) are never occlusion-culled; an eye inside gives no faces.
+    Camera ortho = cam;
+    ortho.ortho_height = 40.0f;
+    faces.clear();
+    append_occluder_faces(wall, cam.position, faces);
+    CHECK_FALSE(hidden_behind(robot, faces[0], ortho));
+    faces.clear();
+    append_occluder_faces(wall, Vec3(0, 3, 0), faces);
+    CHECK(faces.empty());
+}
+
 TEST_CASE("transformed bounds contain every transformed corner") {
     Aabb box{Vec3(-1, 0, -2), Vec3(1, 3, 2)};
     Mat4 m = glm::rotate(glm::translate(Mat4(1.0f), Vec3(5, 1, -3)), 0.7f, glm::normalize(Vec3(1, 2, 0.5f)));
