@@ -84,6 +84,7 @@ int SceneRenderer::poll_shaders(bool force) {
 unsigned SceneRenderer::program_id(const std::string& name) const {
     if (name == "pbr") return pbr_.id();
     if (name == "fast") return fast_program_.id();
+    if (name == "fast_level") return fast_level_.id();
     if (name == "shadow") return shadow_.id();
     if (name == "particle") return particle_.id();
     if (name == "line") return line_.id();
@@ -110,6 +111,7 @@ Result<void> SceneRenderer::init() {
     for (auto [files, target, units] :
          {std::tuple{&pbr_program(), &pbr_, std::function<void(ShaderProgram&)>(pbr_units)},
           std::tuple{&fast_program(), &fast_program_, std::function<void(ShaderProgram&)>(pbr_units)},
+          std::tuple{&fast_level_program(), &fast_level_, std::function<void(ShaderProgram&)>(pbr_units)},
           std::tuple{&shadow_program(), &shadow_, std::function<void(ShaderProgram&)>()},
           std::tuple{&particle_program(), &particle_, std::function<void(ShaderProgram&)>(particle_units)},
           std::tuple{&line_program(), &line_, std::function<void(ShaderProgram&)>()}})
@@ -512,34 +514,42 @@ void SceneRenderer::upload_lights(const ShaderProgram& program, std::uint32_t li
 void SceneRenderer::draw_batches_fast(const Camera& camera, const SceneFrame& frame, FrameStats& stats,
                                       bool view_model) {
     upload_instances();
-    const ShaderProgram& p = fast_program_;
-    p.use();
     const Environment& env = frame.environment;
     const Mat4 view_projection = camera.projection() * camera.view();
-    glUniformMatrix4fv(p.location("u_view_projection"), 1, GL_FALSE, glm::value_ptr(view_projection));
-    glUniformMatrix4fv(p.location("u_shadow_matrix"), 1, GL_FALSE, glm::value_ptr(shadow_matrix_));
-    glUniform3fv(p.location("u_camera_position"), 1, glm::value_ptr(camera.position));
-    Vec3 to_sun = -glm::normalize(env.sun_direction);
-    glUniform3fv(p.location("u_sun_direction"), 1, glm::value_ptr(to_sun));
-    Vec3 sun = env.sun_color * kLegacyLightScale;
-    glUniform3fv(p.location("u_sun_color"), 1, glm::value_ptr(sun));
-    glUniform3fv(p.location("u_sky_color"), 1, glm::value_ptr(env.sky_color));
-    glUniform3fv(p.location("u_ground_color"), 1, glm::value_ptr(env.ground_color));
-    glUniform3fv(p.location("u_fog_color"), 1, glm::value_ptr(env.fog_color));
+    const Vec3 to_sun = -glm::normalize(env.sun_direction);
+    const Vec3 sun = env.sun_color * kLegacyLightScale;
     // Fog from the depth buffer's value (perspective only; orthographic views have no fog here).
     const bool fog = !view_model && !camera.orthographic();
-    glUniform1f(p.location("u_fog_density"), fog ? env.fog_density : 0.0f);
     const float n = camera.near_plane, f = camera.far_plane;
-    glUniform2f(p.location("u_depth_to_view"), n * f / (f - n), f / (f - n));
-    glUniform1f(p.location("u_exposure"), env.exposure);
-    glUniform1f(p.location("u_lightmap_range"), lightmap_encoding_range());
+    // The frame's uniforms, in both fast programs (a uniform a program does not have is location -1, which
+    // GL ignores): fast (models, and any surface fast_level cannot draw) and fast_level (baked level
+    // surfaces, no branches).
+    struct Locations {
+        GLint flags, baked, receive, base, emissive, metal_rough;
+    } loc[2];
+    const ShaderProgram* programs[2] = {&fast_program_, &fast_level_};
+    for (int i = 0; i < 2; ++i) {
+        const ShaderProgram& p = *programs[i];
+        p.use();
+        glUniformMatrix4fv(p.location("u_view_projection"), 1, GL_FALSE, glm::value_ptr(view_projection));
+        glUniformMatrix4fv(p.location("u_shadow_matrix"), 1, GL_FALSE, glm::value_ptr(shadow_matrix_));
+        glUniform3fv(p.location("u_camera_position"), 1, glm::value_ptr(camera.position));
+        glUniform3fv(p.location("u_sun_direction"), 1, glm::value_ptr(to_sun));
+        glUniform3fv(p.location("u_sun_color"), 1, glm::value_ptr(sun));
+        glUniform3fv(p.location("u_sky_color"), 1, glm::value_ptr(env.sky_color));
+        glUniform3fv(p.location("u_ground_color"), 1, glm::value_ptr(env.ground_color));
+        glUniform3fv(p.location("u_fog_color"), 1, glm::value_ptr(env.fog_color));
+        glUniform1f(p.location("u_fog_density"), fog ? env.fog_density : 0.0f);
+        glUniform2f(p.location("u_depth_to_view"), n * f / (f - n), f / (f - n));
+        glUniform1f(p.location("u_exposure"), env.exposure);
+        glUniform1f(p.location("u_lightmap_range"), lightmap_encoding_range());
+        loc[i] = {p.location("u_map_flags"),       p.location("u_baked"),
+                  p.location("u_receive_shadow"),  p.location("u_base_factor"),
+                  p.location("u_emissive_factor"), p.location("u_metal_rough")};
+    }
     glActiveTexture(GL_TEXTURE0 + kShadow);
     glBindTexture(GL_TEXTURE_2D, shadow_texture_);
     const bool shadows = settings_.shadows && shadow_texture_ != 0 && !view_model;
-    const GLint loc_flags = p.location("u_map_flags"), loc_baked = p.location("u_baked");
-    const GLint loc_receive = p.location("u_receive_shadow");
-    const GLint loc_base = p.location("u_base_factor"), loc_emissive = p.location("u_emissive_factor");
-    const GLint loc_mr = p.location("u_metal_rough");
 
     // Depth pre-pass of the baked level geometry (walls, floors, stairs: a few hundred triangles), position
     // only, pushed back by a polygon offset so that the shaded pass's own fragments still pass GL_LESS
@@ -558,9 +568,9 @@ void SceneRenderer::draw_batches_fast(const Camera& camera, const SceneFrame& fr
             if (b.lightmap != 0) draw_instanced(b, stats);
         glDisable(GL_POLYGON_OFFSET_FILL);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        p.use();
     }
 
+    int current = -1; // index into programs
     const Material* bound_material = nullptr;
     unsigned bound_lightmap = ~0u;
     std::uint32_t bound_mask = ~0u;
@@ -569,11 +579,24 @@ void SceneRenderer::draw_batches_fast(const Camera& camera, const SceneFrame& fr
             // With the pre-pass: models (pass 0), then the level (pass 1); without it, one pass in distance
             // order.
             if (prepass && (b.lightmap != 0) != (pass == 1)) continue;
+            const Material& m = *b.material;
+            const bool baked = b.lightmap != 0;
+            // Baked level surfaces read base colour x occlusion from one map (no ORM lookup per pixel).
+            const bool occluded_base = baked && m.fast_base_map != 0 && settings_.fast_occluded_base;
+            // fast_level draws a baked surface whose maps are base x occlusion (read raw) and the light map.
+            const int program = baked && occluded_base && !m.emissive_map && raw_srgb_ && !m.placeholder &&
+                                        settings_.fast_level_shader
+                                    ? 1
+                                    : 0;
+            if (program != current) {
+                programs[program]->use();
+                current = program;
+                bound_material = nullptr;
+                bound_lightmap = ~0u;
+                bound_mask = ~0u;
+            }
+            const Locations& l = loc[program];
             if (b.material != bound_material || b.lightmap != bound_lightmap) {
-                const Material& m = *b.material;
-                const bool baked = b.lightmap != 0;
-                // Baked level surfaces read base colour x occlusion from one map (no ORM lookup per pixel).
-                const bool occluded_base = baked && m.fast_base_map != 0 && settings_.fast_occluded_base;
                 if (b.material != bound_material || (b.lightmap == 0) != (bound_lightmap == 0)) {
                     auto bind = [&](int unit, unsigned id, unsigned fallback) {
                         glActiveTexture(GL_TEXTURE0 + unit);
@@ -587,23 +610,23 @@ void SceneRenderer::draw_batches_fast(const Camera& camera, const SceneFrame& fr
                     const unsigned sampler = m.placeholder ? 0u : fast_sampler_;
                     glBindSampler(kBase, sampler);
                     glBindSampler(kEmissive, sampler);
-                    glUniform4fv(loc_base, 1, glm::value_ptr(m.base_factor));
-                    glUniform3fv(loc_emissive, 1, glm::value_ptr(m.emissive_factor));
-                    glUniform2f(loc_mr, occluded_base ? m.fast_metallic : m.metallic, m.roughness);
+                    glUniform4fv(l.base, 1, glm::value_ptr(m.base_factor));
+                    glUniform3fv(l.emissive, 1, glm::value_ptr(m.emissive_factor));
+                    glUniform2f(l.metal_rough, occluded_base ? m.fast_metallic : m.metallic, m.roughness);
                 }
                 if (b.lightmap != bound_lightmap && b.lightmap != 0) {
                     glActiveTexture(GL_TEXTURE0 + kLightmap);
                     glBindTexture(GL_TEXTURE_2D, b.lightmap);
                 }
-                glUniform1i(loc_flags, (m.orm_map && !occluded_base ? 2 : 0) | (m.emissive_map ? 4 : 0) |
-                                           (baked ? 32 : 0) | (raw_srgb_ && !m.placeholder ? 64 : 0));
-                glUniform1i(loc_baked, baked ? 1 : 0);
-                glUniform1i(loc_receive, shadows && !baked ? 1 : 0);
+                glUniform1i(l.flags, (m.orm_map && !occluded_base ? 2 : 0) | (m.emissive_map ? 4 : 0) |
+                                         (baked ? 32 : 0) | (raw_srgb_ && !m.placeholder ? 64 : 0));
+                glUniform1i(l.baked, baked ? 1 : 0);
+                glUniform1i(l.receive, shadows && !baked ? 1 : 0);
                 bound_material = b.material;
                 bound_lightmap = b.lightmap;
             }
             if (b.lightmap == 0 && b.light_mask != bound_mask) {
-                upload_lights(p, b.light_mask, frame);
+                upload_lights(*programs[program], b.light_mask, frame);
                 bound_mask = b.light_mask;
             }
             draw_instanced(b, stats);

@@ -44,6 +44,10 @@ struct RendererSettings {
     // then models and the level are shaded against that depth, so each pixel runs the fragment shader
     // about once (without it, the floor and ceiling are shaded where the walls later cover them).
     bool depth_prepass = true;
+    // Fast path: baked level surfaces use fast_level (two texture lookups, no branches) instead of the
+    // general fast shader, whose uniform branches llvmpipe executes on both sides (ORM and emissive lookups
+    // on every pixel).
+    bool fast_level_shader = true;
     // The 3D scene is drawn at this fraction of the target's width and height, then scaled up (bilinear)
     // into the target, so a HUD drawn afterwards stays sharp. 0: automatic (1 on GPUs,
     // kSoftwareRenderScale on software rasterisers; KS_RENDER_SCALE=0.25..1 overrides).
@@ -131,7 +135,7 @@ class SceneRenderer {
 
     TextureCache& textures_;
     RendererSettings settings_;
-    ShaderProgram pbr_, fast_program_, shadow_, particle_, line_;
+    ShaderProgram pbr_, fast_program_, fast_level_, shadow_, particle_, line_;
     std::unique_ptr<ShaderLibrary> shaders_;
     std::string gl_renderer_;
     bool fast_ = false;

@@ -15,6 +15,10 @@ const ProgramFiles& fast_program() {
     static const ProgramFiles p{"fast", "fast.vert", "fast.frag"};
     return p;
 }
+const ProgramFiles& fast_level_program() {
+    static const ProgramFiles p{"fast_level", "fast_level.vert", "fast_level.frag"};
+    return p;
+}
 const ProgramFiles& shadow_program() {
     static const ProgramFiles p{"shadow", "shadow.vert", "shadow.frag"};
     return p;
@@ -28,7 +32,8 @@ const ProgramFiles& line_program() {
     return p;
 }
 std::vector<const ProgramFiles*> all_programs() {
-    return {&pbr_program(), &fast_program(), &shadow_program(), &particle_program(), &line_program()};
+    return {&pbr_program(),    &fast_program(),     &fast_level_program(),
+            &shadow_program(), &particle_program(), &line_program()};
 }
 
 std::filesystem::path default_shader_dir() {

@@ -24,10 +24,12 @@ struct ProgramSources {
     ShaderSource fragment;
 };
 
-// The programs: pbr (full quality), fast (software rasterisers: baked light + per-vertex light), shadow,
+// The programs: pbr (full quality), fast (software rasterisers: baked light + per-vertex light), fast_level
+// (fast, specialised for baked level surfaces), shadow,
 // particle, line.
 const ProgramFiles& pbr_program();
 const ProgramFiles& fast_program();
+const ProgramFiles& fast_level_program(); // the fast path's baked level surfaces (no branches)
 const ProgramFiles& shadow_program();
 const ProgramFiles& particle_program();
 const ProgramFiles& line_program();

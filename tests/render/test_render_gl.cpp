@@ -70,7 +70,7 @@ TEST_CASE("every shader program compiles and links on this driver") {
         CHECK_MESSAGE(program.ok(), (program.ok() ? "" : program.error().str()));
         ++count;
     }
-    CHECK(count == 5);
+    CHECK(count == 6); // pbr, fast, fast_level, shadow, particle, line
 }
 
 TEST_CASE("a broken shader reports file:line: message") {
@@ -289,7 +289,9 @@ TEST_CASE("fast path (software rasterisers): the main level start looks like the
     CHECK(b.magenta_fraction < 0.001);
 }
 
-TEST_CASE("fast path: occlusion culling and the depth pre-pass change no pixel, anywhere in the main level") {
+TEST_CASE(
+    "fast path: occlusion culling, the depth pre-pass and fast_level change no pixel, anywhere in the main "
+    "level") {
     KS_REQUIRE_GL();
     auto level = level::load_level_file(ks::test::source_dir() / "levels" / "main.json");
     REQUIRE(level.ok());
@@ -298,6 +300,7 @@ TEST_CASE("fast path: occlusion culling and the depth pre-pass change no pixel, 
     RendererSettings plain = fast_quality(1.0f);
     plain.occlusion_culling = false;
     plain.depth_prepass = false;
+    plain.fast_level_shader = false;
     auto fast = SceneRenderer::create(assets.textures(), fast_quality(1.0f));
     auto reference = SceneRenderer::create(assets.textures(), plain);
     REQUIRE(fast);
