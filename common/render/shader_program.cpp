@@ -108,7 +108,7 @@ void ShaderProgram::use() const {
 }
 
 int ShaderProgram::location(const char* name) const {
-    auto it = locations_.find(name);
+    auto it = locations_.find(std::string_view(name));
     if (it != locations_.end()) return it->second;
     int loc = glGetUniformLocation(id_, name);
     locations_.emplace(name, loc);

@@ -3,6 +3,7 @@
 // the file is the shader's name (e.g. "pbr.frag") and the line is the driver's line in that source.
 #include "core/result.h"
 
+#include <functional>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -32,7 +33,13 @@ class ShaderProgram {
 
   private:
     unsigned id_ = 0;
-    mutable std::unordered_map<std::string, int> locations_;
+    // Looked up by string_view (transparent hash): a cached name costs no std::string per call, so the
+    // per-frame uniform updates allocate nothing (most names are longer than the small-string buffer).
+    struct NameHash {
+        using is_transparent = void;
+        size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
+    };
+    mutable std::unordered_map<std::string, int, NameHash, std::equal_to<>> locations_;
 };
 
 // Turns a driver info log ("0:12(5): error: ..." from Mesa, "0(12) : error ..." from NVIDIA) into lines
