@@ -44,6 +44,7 @@ struct Variant {
     bool occlusion_culling = true;
     bool depth_prepass = true;
     bool fast_level_shader = true;
+    bool doors_occlude = true;
 };
 
 struct Measurement {
@@ -92,6 +93,7 @@ void measure(Measurement& m, render::OffscreenContext& ctx, render::AssetLibrary
     settings.occlusion_culling = v.occlusion_culling;
     settings.depth_prepass = v.depth_prepass;
     settings.fast_level_shader = v.fast_level_shader;
+    scene.set_doors_occlude(v.doors_occlude);
     const float default_anisotropy = assets.textures().max_anisotropy();
     if (v.anisotropy > 0.0f) assets.textures().set_max_anisotropy(v.anisotropy);
     const int width = ctx.width() / v.resolution_divisor, height = ctx.height() / v.resolution_divisor;
@@ -246,11 +248,13 @@ int run(int argc, const char* const* argv) {
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 1.0f, v.resolution_divisor = 2; });
     with("fast, scale 0.5, no pre-pass",
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.depth_prepass = false; });
+    with("fast, scale 0.5, no door occl.",
+         [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.doors_occlude = false; });
     with("fast, scale 0.5, one shader",
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.fast_level_shader = false; });
     with("fast, 0.5, session 2", [](Variant& v) {
         v.quality = Q::Fast, v.render_scale = 0.5f, v.occlusion_culling = false, v.depth_prepass = false,
-        v.fast_level_shader = false;
+        v.fast_level_shader = false, v.doors_occlude = false;
     });
     with("full, scale 0.5", [](Variant& v) { v.quality = Q::Full, v.render_scale = 0.5f; });
     if (!cl->has("quick")) {

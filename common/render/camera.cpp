@@ -106,6 +106,35 @@ void append_occluder_faces(const Aabb& solid, const Vec3& eye, std::vector<Occlu
     }
 }
 
+void merge_occluder_faces(std::vector<OccluderFace>& faces) {
+    constexpr float eps = 1e-3f;
+    auto same = [](float a, float b) { return std::abs(a - b) < eps; };
+    for (size_t i = 0; i < faces.size(); ++i)
+        for (size_t j = i + 1; j < faces.size();) {
+            OccluderFace& a = faces[i];
+            const OccluderFace& b = faces[j];
+            bool merged = false;
+            if (a.axis == b.axis && same(a.plane, b.plane))
+                for (int k = 0; k < 2 && !merged; ++k) {
+                    const int o = 1 - k; // k: the axis along which they meet; o: the one they share
+                    if (!same(a.lo[o], b.lo[o]) || !same(a.hi[o], b.hi[o])) continue;
+                    if (a.hi[k] + eps < b.lo[k] || b.hi[k] + eps < a.lo[k]) continue; // a gap between them
+                    a.lo[k] = std::min(a.lo[k], b.lo[k]);
+                    a.hi[k] = std::max(a.hi[k], b.hi[k]);
+                    a.lo[o] = std::max(a.lo[o], b.lo[o]); // the shared extent, to the safe side
+                    a.hi[o] = std::min(a.hi[o], b.hi[o]);
+                    merged = true;
+                }
+            if (merged) {
+                faces[j] = faces.back();
+                faces.pop_back();
+                j = i + 1; // the grown face may now meet one already passed
+            } else {
+                ++j;
+            }
+        }
+}
+
 bool hidden_behind(const Aabb& box, const OccluderFace& face, const Camera& camera) {
     if (camera.orthographic() || !box.valid()) return false;
     const Vec3 eye = camera.position, fwd = camera.forward();

@@ -51,6 +51,9 @@ struct OccluderFace {
 };
 // Appends the faces of `solid` that face `eye` (none when the eye is inside it).
 void append_occluder_faces(const Aabb& solid, const Vec3& eye, std::vector<OccluderFace>& out);
+// Joins faces on the same plane whose rectangles share an edge (two closed door leaves side by side), so that
+// what straddles the seam is hidden too.
+void merge_occluder_faces(std::vector<OccluderFace>& faces);
 // True if all of `box` is hidden from the perspective `camera` behind `face`: every corner beyond the
 // face's plane, projecting inside the face (with a margin), and the face drawn there (not clipped by
 // the near or far plane). Conservative: false whenever in doubt.

@@ -216,6 +216,36 @@ void LevelScene::set_door_open(int id, float fraction) {
         if (p.entity_id == id) p.door_open = std::clamp(is_finite(fraction) ? fraction : 0.0f, 0.0f, 1.0f);
 }
 
+namespace {
+// A door's leaves are solid bevelled slabs (assets/generator/model_door.cpp: rounded_box with a 0.02 bevel,
+// one segment): inset by more than the bevel across the height and thickness, and kept whole across the
+// width so the two closed leaves meet, they are occluders. Their emit order is Model::emit's: nodes in
+// order, each node's meshes in order. Only while the door's axes stay axis-aligned (yaw in 90-degree steps).
+void mark_door_leaves(const Model& model, int left, int right, size_t first, std::vector<MeshInstance>& out) {
+    constexpr float kBevelMargin = 0.03f;
+    size_t k = first;
+    for (size_t i = 0; i < model.nodes.size(); ++i)
+        for (int m : model.nodes[i].meshes) {
+            MeshInstance& inst = out[k++];
+            const bool leaf = static_cast<int>(i) == left || static_cast<int>(i) == right;
+            if (!leaf ||
+                model.materials[static_cast<size_t>(model.meshes[static_cast<size_t>(m)].material)].name !=
+                    "door_leaf")
+                continue;
+            bool axis_aligned = true; // every column of the rotation/scale part along one axis
+            for (int c = 0; c < 3; ++c) {
+                int nonzero = 0;
+                for (int r = 0; r < 3; ++r) nonzero += std::abs(inst.world[c][r]) > 1e-4f ? 1 : 0;
+                axis_aligned = axis_aligned && nonzero == 1;
+            }
+            const Vec3 size = inst.mesh->bounds().max - inst.mesh->bounds().min;
+            if (!axis_aligned || size.y <= 4.0f * kBevelMargin || size.z <= 4.0f * kBevelMargin) continue;
+            inst.occluder = true;
+            inst.occluder_inset = Vec3(0.0f, kBevelMargin, kBevelMargin);
+        }
+}
+} // namespace
+
 void LevelScene::emit(std::vector<MeshInstance>& instances, std::vector<Light>& lights) {
     instances.clear();
     lights.clear();
@@ -244,7 +274,9 @@ void LevelScene::emit(std::vector<MeshInstance>& instances, std::vector<Light>& 
             if (r >= 0)
                 pose_.local[size_t(r)] =
                     glm::translate(Mat4(1.0f), Vec3(-shift, 0, 0)) * pose_.local[size_t(r)];
+            const size_t first = instances.size();
             p.model->emit(p.root, pose_, scratch_, instances);
+            if (doors_occlude_) mark_door_leaves(*p.model, l, r, first, instances);
         } else {
             // Light fixtures glow with their light; they cast no sun shadow (thin stands, lamp heads).
             p.model->emit(p.root, scratch_, instances, is_light ? (p.light_on ? 1.5f : 0.0f) : 1.0f,

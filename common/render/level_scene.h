@@ -32,6 +32,8 @@ class LevelScene {
 
     void set_light_on(int entity_id, bool on);
     void set_door_open(int entity_id, float fraction); // 0 closed .. 1 open
+    // Door leaves are emitted as occluders (MeshInstance::occluder) unless this is off (benchmarks).
+    void set_doors_occlude(bool on) { doors_occlude_ = on; }
     // Clears and fills `instances` and `lights` for the current state.
     void emit(std::vector<MeshInstance>& instances, std::vector<Light>& lights);
     const Environment& environment() const { return environment_; }
@@ -71,6 +73,7 @@ class LevelScene {
     LightmapTexture lightmap_;
     std::vector<Mat4> scratch_;
     ModelPose pose_;
+    bool doors_occlude_ = true;
 };
 
 } // namespace ks::render

@@ -17,9 +17,12 @@ struct MeshInstance {
     // GL texture with this static mesh's baked light (LevelScene's level geometry; the mesh's vertices carry
     // lightmap_uv). 0: none. Only the fast quality path reads it; the full path lights everything per pixel.
     unsigned lightmap = 0;
-    // Its world bounds are a solid, opaque box (LevelScene's axis-aligned walls and floors): the fast path
-    // skips instances that lie entirely behind one of its faces (SceneRenderer, occlusion culling).
+    // Its world bounds, shrunk by occluder_inset (mesh space, per axis), are a solid, opaque box
+    // (LevelScene's axis-aligned walls and floors; closed door leaves, whose bevelled edges need the inset):
+    // the fast path skips instances that lie entirely behind one of its faces (SceneRenderer, occlusion
+    // culling). Only for a `world` that keeps axes axis-aligned (rotations by multiples of 90 degrees).
     bool occluder = false;
+    Vec3 occluder_inset{0.0f};
 };
 
 struct Light {

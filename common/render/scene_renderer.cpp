@@ -260,9 +260,13 @@ void SceneRenderer::cull_and_batch(const SceneFrame& frame, FrameStats& stats) {
     if (occlusion)
         for (const auto& inst : source)
             if (inst.occluder && inst.mesh) {
-                Aabb box = transform_aabb(inst.mesh->bounds(), inst.world);
+                Aabb local = inst.mesh->bounds();
+                local.min += inst.occluder_inset;
+                local.max -= inst.occluder_inset;
+                Aabb box = transform_aabb(local, inst.world);
                 if (frustum.intersects(box)) append_occluder_faces(box, eye, occluder_faces_);
             }
+    if (occlusion) merge_occluder_faces(occluder_faces_);
     for (const auto& inst : source) {
         if (!inst.mesh || !inst.material) continue;
         Aabb box = transform_aabb(inst.mesh->bounds(), inst.world);

@@ -13,6 +13,7 @@
 #include <doctest/doctest.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -77,6 +78,37 @@ TEST_CASE(
     faces.clear();
     append_occluder_faces(wall, Vec3(0, 3, 0), faces);
     CHECK(faces.empty());
+}
+
+TEST_CASE("occlusion culling: two leaves side by side hide what straddles their seam once merged") {
+    Camera cam;
+    cam.position = Vec3(0, 3, 25);
+    const Aabb left{Vec3(-2.5f, 0, -0.05f), Vec3(0, 5, 0.05f)},
+        right{Vec3(0, 0, -0.05f), Vec3(2.5f, 5, 0.05f)};
+    std::vector<OccluderFace> faces;
+    append_occluder_faces(left, cam.position, faces);
+    append_occluder_faces(right, cam.position, faces);
+    REQUIRE(faces.size() == 2);
+    const Aabb robot{Vec3(-0.5f, 1, -20), Vec3(0.5f, 4, -19)}; // behind the seam
+    auto hidden = [&](const Aabb& box) {
+        for (const auto& f : faces)
+            if (hidden_behind(box, f, cam)) return true;
+        return false;
+    };
+    CHECK_FALSE(hidden(robot)); // neither leaf alone covers it
+    merge_occluder_faces(faces);
+    REQUIRE(faces.size() == 1);
+    CHECK(faces[0].lo.x == doctest::Approx(-2.5f));
+    CHECK(faces[0].hi.x == doctest::Approx(2.5f));
+    CHECK(hidden(robot));
+    CHECK_FALSE(hidden(Aabb{Vec3(-0.5f, 1, -20), Vec3(0.5f, 9, -19)})); // seen above the leaves
+    // A gap between the leaves (a door opening) or a different height: not merged.
+    faces.clear();
+    append_occluder_faces(left, cam.position, faces);
+    append_occluder_faces(Aabb{Vec3(0.2f, 0, -0.05f), Vec3(2.5f, 5, 0.05f)}, cam.position, faces);
+    append_occluder_faces(Aabb{Vec3(-5.0f, 0, -0.05f), Vec3(-2.5f, 4, 0.05f)}, cam.position, faces);
+    merge_occluder_faces(faces);
+    CHECK(std::count_if(faces.begin(), faces.end(), [](const OccluderFace& f) { return f.axis == 2; }) == 3);
 }
 
 TEST_CASE("transformed bounds contain every transformed corner") {
