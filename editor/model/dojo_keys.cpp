@@ -61,6 +61,40 @@ std::vector<std::string> unkeyed_nodes(const anim::AnimationFile& file, std::siz
     return out;
 }
 
+Result<std::size_t> duplicate_phase(anim::AnimationFile& file, std::size_t clip, std::size_t phase) {
+    auto found = find_phase(file, clip, phase);
+    if (!found) return found.error();
+    auto& phases = file.clips[clip].phases;
+    anim::PhaseDef copy = **found;
+    phases.insert(phases.begin() + static_cast<std::ptrdiff_t>(phase) + 1, std::move(copy));
+    return phase + 1;
+}
+
+Result<void> remove_phase(anim::AnimationFile& file, std::size_t clip, std::size_t phase) {
+    auto found = find_phase(file, clip, phase);
+    if (!found) return found.error();
+    auto& def = file.clips[clip];
+    if (def.phases.size() == 1)
+        return Error("clip '" + def.name + "' has only this key", {},
+                     "a clip needs at least one key: edit this one or add another first");
+    def.phases.erase(def.phases.begin() + static_cast<std::ptrdiff_t>(phase));
+    return {};
+}
+
+Result<std::size_t> move_phase(anim::AnimationFile& file, std::size_t clip, std::size_t phase, int offset) {
+    auto found = find_phase(file, clip, phase);
+    if (!found) return found.error();
+    if (offset != -1 && offset != 1) return Error("a key moves one place at a time", {}, "use -1 or +1");
+    auto& phases = file.clips[clip].phases;
+    if ((offset < 0 && phase == 0) || (offset > 0 && phase + 1 >= phases.size()))
+        return Error(std::string("key ") + std::to_string(phase + 1) + " is already the " +
+                         (offset < 0 ? "first" : "last"),
+                     {}, "nothing to move");
+    const std::size_t to = offset < 0 ? phase - 1 : phase + 1;
+    std::swap(phases[phase], phases[to]);
+    return to;
+}
+
 void DojoHistory::record(const anim::AnimationFile& before, std::string name) {
     undo_.push_back({before, std::move(name)});
     redo_.clear();

@@ -24,6 +24,16 @@ Result<void> remove_node_key(anim::AnimationFile& file, std::size_t clip, std::s
 // Rig nodes that have no key in that phase (what "add key" offers), in rig order; empty when out of range.
 std::vector<std::string> unkeyed_nodes(const anim::AnimationFile& file, std::size_t clip, std::size_t phase);
 
+// Phase (key time) edits. A phase is one step of the clip: a duration, an easing and its node keys.
+// Duplicates phase `phase` right after itself (absolute keys then hold the pose for the copy's duration,
+// relative keys repeat the motion); returns the copy's index. Errors (file unchanged) out of range.
+Result<std::size_t> duplicate_phase(anim::AnimationFile& file, std::size_t clip, std::size_t phase);
+// Removes a phase; a clip keeps at least one (validation requires it), so removing the last one errors.
+Result<void> remove_phase(anim::AnimationFile& file, std::size_t clip, std::size_t phase);
+// Swaps a phase with its neighbour (offset -1: earlier, +1: later); returns its new index. Errors (file
+// unchanged) when the neighbour does not exist.
+Result<std::size_t> move_phase(anim::AnimationFile& file, std::size_t clip, std::size_t phase, int offset);
+
 // Unlimited undo/redo of the dojo's edits: record(before) ahead of every edit; a new edit drops the redo
 // steps. Continuous edits (a dragged field) record once when the drag starts.
 class DojoHistory {

@@ -284,6 +284,57 @@ void DojoPanel::transition_tester() {
     if (changed && transition_mode_) restart_at(0.0);
 }
 
+bool DojoPanel::phase_buttons(const LogFn& log) {
+    const auto c = static_cast<std::size_t>(clip_), p = static_cast<std::size_t>(selected_phase_);
+    const std::size_t count = file_.clips[c].phases.size();
+    const std::string key = "key " + std::to_string(p + 1);
+    auto apply = [&](const std::string& name, auto&& edit) {
+        anim::AnimationFile before = file_;
+        if (auto r = edit(); !r) {
+            log("dojo: " + r.error().str(), true);
+            return false;
+        }
+        history_.record(before, name);
+        return true;
+    };
+    bool changed = false;
+    const bool duplicate_clicked = ImGui::SmallButton("Duplicate key");
+    duplicate_key_x_ = (ImGui::GetItemRectMin().x + ImGui::GetItemRectMax().x) * 0.5f;
+    duplicate_key_y_ = (ImGui::GetItemRectMin().y + ImGui::GetItemRectMax().y) * 0.5f;
+    if (duplicate_clicked)
+        changed = apply("duplicate " + key, [&]() -> Result<void> {
+            auto copy = duplicate_phase(file_, c, p);
+            if (!copy) return copy.error();
+            selected_phase_ = static_cast<int>(*copy);
+            return {};
+        });
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Insert a copy of this key after it: absolute targets hold the pose (a pause), "
+                          "relative ones repeat the motion");
+    ImGui::SameLine();
+    ImGui::BeginDisabled(count <= 1);
+    if (ImGui::SmallButton("Remove key"))
+        changed = apply("remove " + key, [&]() -> Result<void> {
+            auto r = remove_phase(file_, c, p);
+            if (r) selected_phase_ = std::max(0, selected_phase_ - 1);
+            return r;
+        });
+    ImGui::EndDisabled();
+    for (int offset : {-1, +1}) {
+        ImGui::SameLine();
+        ImGui::BeginDisabled(offset < 0 ? p == 0 : p + 1 >= count);
+        if (ImGui::SmallButton(offset < 0 ? "Earlier" : "Later"))
+            changed = apply("move " + key + (offset < 0 ? " earlier" : " later"), [&]() -> Result<void> {
+                auto moved = move_phase(file_, c, p, offset);
+                if (!moved) return moved.error();
+                selected_phase_ = static_cast<int>(*moved);
+                return {};
+            });
+        ImGui::EndDisabled();
+    }
+    return changed;
+}
+
 void DojoPanel::begin_edit(const std::string& name) {
     if (!edit_open_) history_.record(file_, name);
     edit_open_ = true;
@@ -294,8 +345,13 @@ DojoPanel::Status DojoPanel::status() const {
     st.undo = history_.undo_count();
     st.redo = history_.redo_count();
     const auto c = static_cast<std::size_t>(clip_), p = static_cast<std::size_t>(selected_phase_);
-    if (c < file_.clips.size() && p < file_.clips[c].phases.size())
+    if (c < file_.clips.size() && p < file_.clips[c].phases.size()) {
         st.keys = file_.clips[c].phases[p].targets.size();
+        st.phases = file_.clips[c].phases.size();
+        st.phase = p;
+    }
+    st.duplicate_key_x = duplicate_key_x_;
+    st.duplicate_key_y = duplicate_key_y_;
     st.add_key_x = add_key_x_;
     st.add_key_y = add_key_y_;
     return st;
@@ -329,6 +385,11 @@ void DojoPanel::key_table(const LogFn& log) {
         std::snprintf(label, sizeof(label), "key %d", i + 1);
         if (i) ImGui::SameLine();
         if (ImGui::RadioButton(label, selected_phase_ == i)) selected_phase_ = i;
+    }
+    if (phase_buttons(log)) {
+        dirty_ = true;
+        recompile();
+        return; // the phase list changed under this frame's references: draw the table next frame
     }
     anim::PhaseDef& phase = def.phases[static_cast<size_t>(selected_phase_)];
     ImGui::BeginGroup();

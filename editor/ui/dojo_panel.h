@@ -37,11 +37,12 @@ class DojoPanel {
     // in the Dojo tab act here. False when there is nothing to undo / redo.
     bool undo();
     bool redo();
-    // For the status file (input tests): history depth, keys in the shown phase, the Add key button's
-    // centre in window pixels (0, 0 before it is drawn).
+    // For the status file (input tests): history depth, keys in the shown phase, the clip's phase count and
+    // the shown phase, the Add key and Duplicate key buttons' centres in window pixels (0, 0 before drawn).
     struct Status {
-        std::size_t undo = 0, redo = 0, keys = 0;
+        std::size_t undo = 0, redo = 0, keys = 0, phases = 0, phase = 0;
         float add_key_x = 0, add_key_y = 0;
+        float duplicate_key_x = 0, duplicate_key_y = 0;
     };
     Status status() const;
 
@@ -52,6 +53,8 @@ class DojoPanel {
     void evaluate_pose();
     void timeline(float width);
     void key_table(const LogFn& log);
+    // Duplicate / Remove / Earlier / Later for the shown key (phase); true when the file changed.
+    bool phase_buttons(const LogFn& log);
     void transition_tester();
     void curve(const anim::Ease& ease, float size);
     void begin_edit(const std::string& name); // records the file before the first change of an edit
@@ -73,6 +76,7 @@ class DojoPanel {
     bool edit_open_ = false; // a field drag in progress (already recorded)
     int add_node_ = 0;       // the "Add key" combo's choice among the unkeyed nodes
     float add_key_x_ = 0, add_key_y_ = 0;
+    float duplicate_key_x_ = 0, duplicate_key_y_ = 0;
 
     int clip_ = 0;
     bool playing_ = true;

@@ -37,6 +37,7 @@ void EditorApp::write_status() {
     s["placing"] = placing_ ? std::string(level::type_name(*placing_)) : std::string();
     s["gizmo"] = gizmo_mode_name(gizmo_.mode);
     s["dragging"] = gizmo_.dragging();
+    s["render_scale"] = renderer_ ? renderer_->render_scale() : 0.0f;
     s["scene"] = {{"builds", scene_stats_.builds},
                   {"bakes", scene_stats_.bakes},
                   {"last_build_cpu_ms", scene_stats_.last_build_cpu_ms}};
@@ -47,7 +48,10 @@ void EditorApp::write_status() {
         s["dojo"] = {{"undo", d.undo},
                      {"redo", d.redo},
                      {"keys", d.keys},
-                     {"add_key", point(Vec2(d.add_key_x, d.add_key_y))}};
+                     {"phases", d.phases},
+                     {"phase", d.phase},
+                     {"add_key", point(Vec2(d.add_key_x, d.add_key_y))},
+                     {"duplicate_key", point(Vec2(d.duplicate_key_x, d.duplicate_key_y))}};
     }
     int wx = 0, wy = 0;
     glfwGetWindowPos(shell_.window(), &wx, &wy);

@@ -1,6 +1,7 @@
 // The dojo panel's key edits, history and save, on the shipped robot clips (read-only; saves go to a
 // scratch copy, never to assets/animations/robot.json).
 #include "anim/clip_io.h"
+#include "anim/player.h"
 #include "core/files.h"
 #include "model/dojo_keys.h"
 #include "test_support.h"
@@ -32,7 +33,93 @@ bool has_key(const anim::AnimationFile& f, std::size_t clip, std::size_t phase, 
     return false;
 }
 
+std::size_t clip_index(const anim::AnimationFile& f, const std::string& name) {
+    for (std::size_t i = 0; i < f.clips.size(); ++i)
+        if (f.clips[i].name == name) return i;
+    FAIL("no clip " << name);
+    return 0;
+}
+
+// The pose a file's clip ends in: compiled against the file's own rig, played without a blend to its end.
+anim::Pose final_pose(const anim::AnimationFile& f, const std::string& clip) {
+    auto rig = anim::build_rig(f);
+    REQUIRE(rig);
+    auto clips = anim::compile(f, *rig);
+    REQUIRE(clips);
+    anim::Player player(*clips, *rig);
+    player.play(clips->find(clip), 0.0f);
+    player.advance(f.clips[clip_index(f, clip)].duration() + 0.5);
+    CHECK(player.finished());
+    return player.pose();
+}
+
 } // namespace
+
+TEST_CASE("dojo keys: duplicate, move and remove a whole key (phase); refusals leave the file unchanged") {
+    auto file = load_shipped_clips();
+    const std::string original = anim::save_animation_string(file);
+    const std::size_t idle = clip_index(file, "idle");
+    const std::size_t phases = file.clips[idle].phases.size();
+    REQUIRE(phases >= 2);
+    const double duration = file.clips[idle].duration();
+
+    auto copy = editor::duplicate_phase(file, idle, 1);
+    REQUIRE(copy);
+    CHECK(*copy == 2);
+    CHECK(file.clips[idle].phases.size() == phases + 1);
+    CHECK(file.clips[idle].duration() == doctest::Approx(duration + file.clips[idle].phases[1].duration));
+    CHECK(anim::validate(file).empty());
+    // the copy is the phase itself, targets and easing included
+    CHECK(file.clips[idle].phases[2].targets.size() == file.clips[idle].phases[1].targets.size());
+    REQUIRE(editor::remove_phase(file, idle, 2));
+    CHECK(anim::save_animation_string(file) == original);
+
+    // a move there and back is no change; each step swaps neighbours
+    const std::string first_key_node = file.clips[idle].phases[0].targets.front().node;
+    auto later = editor::move_phase(file, idle, 0, +1);
+    REQUIRE(later);
+    CHECK(*later == 1);
+    CHECK(file.clips[idle].phases[1].targets.front().node == first_key_node);
+    CHECK(anim::validate(file).empty());
+    auto back = editor::move_phase(file, idle, 1, -1);
+    REQUIRE(back);
+    CHECK(*back == 0);
+    CHECK(anim::save_animation_string(file) == original);
+
+    // refusals: out of range, past either end, more than one place, the last remaining key
+    CHECK(!editor::duplicate_phase(file, idle, phases));
+    CHECK(!editor::duplicate_phase(file, file.clips.size(), 0));
+    CHECK(!editor::remove_phase(file, idle, phases));
+    CHECK(!editor::move_phase(file, idle, 0, -1));
+    CHECK(!editor::move_phase(file, idle, phases - 1, +1));
+    CHECK(!editor::move_phase(file, idle, 0, 2));
+    const std::size_t reset = clip_index(file, "reset");
+    REQUIRE(file.clips[reset].phases.size() == 1);
+    auto last = editor::remove_phase(file, reset, 0);
+    REQUIRE(!last);
+    CHECK(last.error().hint.find("at least one key") != std::string::npos);
+    CHECK(anim::save_animation_string(file) == original);
+}
+
+TEST_CASE("dojo keys: a duplicated key of absolute targets holds the pose; the clip ends where it did") {
+    auto file = load_shipped_clips();
+    const std::size_t shoot = clip_index(file, "shoot_pose");
+    REQUIRE(file.clips[shoot].loop == anim::LoopMode::Once);
+    for (const auto& t : file.clips[shoot].phases.back().targets)
+        REQUIRE((!t.add_rot && !t.add_pos)); // absolute keys only, so a copy has nowhere new to go
+    const anim::Pose before = final_pose(file, "shoot_pose");
+    const double duration = file.clips[shoot].duration();
+
+    REQUIRE(editor::duplicate_phase(file, shoot, file.clips[shoot].phases.size() - 1));
+    CHECK(file.clips[shoot].duration() > duration);
+    const anim::Pose after = final_pose(file, "shoot_pose");
+    REQUIRE(after.size() == before.size());
+    for (int n = 0; n < before.size(); ++n) {
+        const auto i = static_cast<std::size_t>(n);
+        CHECK(glm::length(after.euler[i] - before.euler[i]) < 1e-5f);
+        CHECK(glm::length(after.position[i] - before.position[i]) < 1e-5f);
+    }
+}
 
 TEST_CASE("dojo keys: add a node's key, refuse bad requests unchanged, remove it again") {
     auto file = load_shipped_clips();

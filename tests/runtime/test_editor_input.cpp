@@ -17,6 +17,7 @@
 
 #include <chrono>
 #include <csignal>
+#include <cstdlib>
 #include <fstream>
 #include <functional>
 #include <sys/wait.h>
@@ -192,6 +193,8 @@ TEST_CASE("editor input: place from the palette, select, drag the gizmo, undo, r
     Session s(status, editor, display);
     json st = s.wait("first frames", [](const json& j) { return j["frame"] >= 2 && j["view"] == "Top"; });
     const size_t entities = st["entities"];
+    if (const char* v = std::getenv("KS_RENDER_SCALE"); !v || !*v)
+        CHECK(st["render_scale"].get<float>() == 1.0f); // the editor's viewport: full resolution everywhere
 
     // Palette: robot, then a click in the viewport on the floor, right of the centre.
     s.click(st["palette"]["robot"]);
@@ -362,7 +365,8 @@ TEST_CASE("editor input: F5 plays the current document in the runtime, Shift+F5 
 }
 
 TEST_CASE(
-    "editor input: the dojo's Add key button keys a node, Ctrl+Z takes it back, Ctrl+Shift+Z redoes it") {
+    "editor input: the dojo's Add key button keys a node, Ctrl+Z takes it back, Ctrl+Shift+Z redoes it; "
+    "Duplicate key inserts a phase, Ctrl+Z removes it") {
     if (!ks::test::have_display() || !test::have_xdotool()) {
         MESSAGE("no DISPLAY or xdotool: dojo input test skipped");
         return;
@@ -396,5 +400,16 @@ TEST_CASE(
     CHECK(st["dojo"]["keys"] == keys + 1);
     CHECK(st["dojo"]["undo"] == 1);
     CHECK(st["dojo"]["redo"] == 0);
+
+    const size_t phases = st["dojo"]["phases"], phase = st["dojo"]["phase"];
+    REQUIRE(st["dojo"]["duplicate_key"][0].get<float>() > 0.0f);
+    s.click(st["dojo"]["duplicate_key"]);
+    st = s.wait("a phase duplicated", [&](const json& j) { return j["dojo"]["phases"] == phases + 1; });
+    CHECK(st["dojo"]["phase"] == phase + 1); // the copy is shown
+    CHECK(st["dojo"]["undo"] == 2);
+    s.key("ctrl+z");
+    st = s.wait("the duplicate undone", [&](const json& j) { return j["dojo"]["phases"] == phases; });
+    CHECK(st["dojo"]["undo"] == 1); // the added key's step remains
+    CHECK(st["dojo"]["redo"] == 1);
     CHECK(*files::read_text(shipped) == *shipped_before); // nothing was saved
 }
