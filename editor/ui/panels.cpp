@@ -238,13 +238,14 @@ bool EditorApp::field_widget(const FieldDescriptor& field, FieldValue& value, bo
     }
     case FieldKind::Vec2: {
         Vec2 v = std::get<Vec2>(value);
-        changed = ImGui::DragFloat2(id, &v.x, speed, lo, hi, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+        // %g: "55" and "-90" instead of "55.00" and "-90.00", so three components fit a narrow inspector.
+        changed = ImGui::DragFloat2(id, &v.x, speed, lo, hi, "%g", ImGuiSliderFlags_AlwaysClamp);
         if (changed) value = v;
         break;
     }
     case FieldKind::Vec3: {
         Vec3 v = std::get<Vec3>(value);
-        changed = ImGui::DragFloat3(id, &v.x, speed, lo, hi, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+        changed = ImGui::DragFloat3(id, &v.x, speed, lo, hi, "%g", ImGuiSliderFlags_AlwaysClamp);
         if (changed) value = v;
         break;
     }
@@ -287,8 +288,12 @@ void EditorApp::inspector_panel(float x, float y, float w, float h) {
                            selected.size());
     ImGui::Separator();
     const auto fields = common_fields(selected);
+    // The name column is as wide as this type's longest field name (capped), the values get the rest.
+    float name_w = 0;
+    for (const auto& field : fields) name_w = std::max(name_w, ImGui::CalcTextSize(field.name.c_str()).x);
+    name_w = std::min(name_w + ImGui::GetStyle().CellPadding.x * 2 + 4, w * 0.42f);
     if (ImGui::BeginTable("fields", 3, ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg)) {
-        ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed, w * 0.44f);
+        ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed, name_w);
         ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);
         ImGui::TableSetupColumn("reset", ImGuiTableColumnFlags_WidthFixed, 22.0f);
         for (const auto& field : fields) {
