@@ -184,12 +184,22 @@ void Bvh::aabb_query(const Aabb& box, Visit&& visit) const {
 #include "physics/bvh_traverse.inl"
 #undef KS_BVH_TRAVERSE_AVX2
 #if defined(__x86_64__) && defined(__GNUC__)
+// GCC takes the target from a pragma region; clang (the fuzz build) ignores `#pragma GCC target` and needs
+// the attribute applied to each function in the region instead.
+#if defined(__clang__)
+#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
+#else
 #pragma GCC push_options
 #pragma GCC target("avx2")
+#endif
 #define KS_BVH_TRAVERSE_AVX2 1
 #include "physics/bvh_traverse.inl"
 #undef KS_BVH_TRAVERSE_AVX2
+#if defined(__clang__)
+#pragma clang attribute pop
+#else
 #pragma GCC pop_options
+#endif
 #else
 namespace ks::physics {
 template <class VisitLeaf>
