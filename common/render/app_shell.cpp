@@ -1,4 +1,5 @@
 #include "render/app_shell.h"
+#include "render/raster_threads.h"
 
 #include "core/cli.h"
 #include "core/fixed_step.h"
@@ -96,6 +97,7 @@ Result<void> AppShell::init(const ShellConfig& config) {
     config_ = config;
     if (!display_available()) return Error(no_display_message(config.title));
     glfwSetErrorCallback(glfw_error_callback);
+    configure_software_raster_threads(); // before the context: llvmpipe reads it once
     if (!glfwInit())
         return Error("cannot initialise GLFW (is the X server reachable?)", Location{},
                      no_display_message(config.title));

@@ -1,6 +1,7 @@
 #include "render/offscreen.h"
 
 #include "render/app_shell.h"
+#include "render/raster_threads.h"
 
 // epoxy must come before any header that pulls in GL/gl.h.
 #include <epoxy/gl.h>
@@ -14,6 +15,7 @@ Result<std::unique_ptr<OffscreenContext>> OffscreenContext::create(int width, in
     if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
         return Error("offscreen size out of range", Location{}, "use 1..16384 pixels per side");
     if (!display_available()) return Error(no_display_message("this program"));
+    configure_software_raster_threads(); // what the game's window does, so the benchmarks measure the same
     if (!glfwInit()) return Error("cannot initialise GLFW", Location{}, no_display_message("this program"));
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);

@@ -5,6 +5,7 @@
 #include "render/level_scene.h"
 #include "render/mesh_data.h"
 #include "render/particles.h"
+#include "render/raster_threads.h"
 #include "render/scene_renderer.h"
 #include "render/shader_program.h"
 #include "render/texture_cache.h"
@@ -15,7 +16,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
+#include <optional>
+#include <string>
+#include <thread>
 
 using namespace ks;
 using namespace ks::render;
@@ -367,4 +372,38 @@ TEST_CASE("the camera's view matrix agrees with forward/right/up, handles straig
     Frustum f(vp);
     CHECK(f.intersects({Vec3(-1, 0, -1), Vec3(1, 1, 1)}));
     CHECK_FALSE(f.intersects({Vec3(60, 0, 0), Vec3(62, 1, 1)}));
+}
+
+TEST_CASE(
+    "llvmpipe threads: twice the cores on 2..4 cores, the driver's default elsewhere; a set value wins") {
+    CHECK(software_raster_threads_for(0) == 0); // unknown
+    CHECK(software_raster_threads_for(1) == 0);
+    CHECK(software_raster_threads_for(2) == 4); // the measured case
+    CHECK(software_raster_threads_for(3) == 6);
+    CHECK(software_raster_threads_for(4) == 8);
+    CHECK(software_raster_threads_for(5) == 0);
+    CHECK(software_raster_threads_for(64) == 0);
+
+    std::optional<std::string> saved;
+    if (const char* v = std::getenv("LP_NUM_THREADS")) saved = v;
+    setenv("LP_NUM_THREADS", "7", 1);
+    CHECK(configure_software_raster_threads() == "7"); // the user's choice is kept
+    CHECK(std::string(std::getenv("LP_NUM_THREADS")) == "7");
+
+    unsetenv("LP_NUM_THREADS");
+    const int expected = software_raster_threads_for(std::thread::hardware_concurrency());
+    const std::string chosen = configure_software_raster_threads();
+    const char* now = std::getenv("LP_NUM_THREADS");
+    if (expected == 0) {
+        CHECK(chosen.empty());
+        CHECK(now == nullptr);
+    } else {
+        CHECK(chosen == std::to_string(expected));
+        REQUIRE(now != nullptr);
+        CHECK(std::string(now) == chosen);
+    }
+    if (saved)
+        setenv("LP_NUM_THREADS", saved->c_str(), 1);
+    else
+        unsetenv("LP_NUM_THREADS");
 }
