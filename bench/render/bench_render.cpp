@@ -45,6 +45,7 @@ struct Variant {
     bool depth_prepass = true;
     bool fast_level_shader = true;
     bool doors_occlude = true;
+    bool fast_trilinear = false;
 };
 
 struct Measurement {
@@ -93,6 +94,7 @@ void measure(Measurement& m, render::OffscreenContext& ctx, render::AssetLibrary
     settings.occlusion_culling = v.occlusion_culling;
     settings.depth_prepass = v.depth_prepass;
     settings.fast_level_shader = v.fast_level_shader;
+    settings.fast_trilinear = v.fast_trilinear;
     scene.set_doors_occlude(v.doors_occlude);
     const float default_anisotropy = assets.textures().max_anisotropy();
     if (v.anisotropy > 0.0f) assets.textures().set_max_anisotropy(v.anisotropy);
@@ -252,6 +254,8 @@ int run(int argc, const char* const* argv) {
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.doors_occlude = false; });
     with("fast, scale 0.5, one shader",
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.fast_level_shader = false; });
+    with("fast, scale 0.5, trilinear",
+         [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.fast_trilinear = true; });
     with("fast, 0.5, session 2", [](Variant& v) {
         v.quality = Q::Fast, v.render_scale = 0.5f, v.occlusion_culling = false, v.depth_prepass = false,
         v.fast_level_shader = false, v.doors_occlude = false;

@@ -119,11 +119,12 @@ Result<void> SceneRenderer::init() {
 
     glGenBuffers(1, &instance_buffer_);
 
-    // The fast path samples colour maps with the nearest mip (one bilinear lookup instead of two) and,
-    // where the driver allows, without the sampler's per-texel sRGB decode (the shader squares instead):
-    // texture lookups are most of a software rasteriser's pixel cost.
+    // The fast path samples colour maps with the nearest mip (one bilinear lookup instead of two; trilinear
+    // with settings_.fast_trilinear) and, where the driver allows, without the sampler's per-texel sRGB
+    // decode (the shader squares instead): texture lookups are most of a software rasteriser's pixel cost.
     glGenSamplers(1, &fast_sampler_);
-    glSamplerParameteri(fast_sampler_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
+    glSamplerParameteri(fast_sampler_, GL_TEXTURE_MIN_FILTER,
+                        settings_.fast_trilinear ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR_MIPMAP_NEAREST);
     glSamplerParameteri(fast_sampler_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glSamplerParameteri(fast_sampler_, GL_TEXTURE_WRAP_S, GL_REPEAT);
     glSamplerParameteri(fast_sampler_, GL_TEXTURE_WRAP_T, GL_REPEAT);

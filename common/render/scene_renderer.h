@@ -48,6 +48,11 @@ struct RendererSettings {
     // general fast shader, whose uniform branches llvmpipe executes on both sides (ORM and emissive lookups
     // on every pixel).
     bool fast_level_shader = true;
+    // Fast path: colour maps sample the nearest mip level only (one bilinear lookup; a faint seam runs across
+    // floors and ceilings where the level switches). true: blend the two nearest (trilinear): no seam and a
+    // little closer to the full path (4.1 vs 4.3/255), for ~0.9 ms median and ~2 ms p99 more per 1280x720
+    // frame on llvmpipe, which costs the 60 fps tail (docs/performance.md, "Trilinear mips").
+    bool fast_trilinear = false;
     // The 3D scene is drawn at this fraction of the target's width and height, then scaled up (bilinear)
     // into the target, so a HUD drawn afterwards stays sharp. 0: automatic (1 on GPUs,
     // kSoftwareRenderScale on software rasterisers; KS_RENDER_SCALE=0.25..1 overrides).

@@ -289,6 +289,24 @@ TEST_CASE("fast path (software rasterisers): the main level start looks like the
     CHECK(b.magenta_fraction < 0.001);
 }
 
+TEST_CASE("fast path: trilinear mips (an option; nearest mip by default) change the floor, closer to full") {
+    KS_REQUIRE_GL();
+    CHECK_FALSE(RendererSettings{}.fast_trilinear);
+    RendererSettings trilinear_settings = fast_quality(1.0f);
+    trilinear_settings.fast_trilinear = true;
+    MainLevelView full = render_main_level_start(full_quality());
+    MainLevelView nearest = render_main_level_start(fast_quality(1.0f));
+    MainLevelView trilinear = render_main_level_start(trilinear_settings);
+    const double between = ks::test::mean_abs_diff(trilinear.rgb, nearest.rgb);
+    const double err_trilinear = ks::test::mean_abs_diff(trilinear.rgb, full.rgb);
+    const double err_nearest = ks::test::mean_abs_diff(nearest.rgb, full.rgb);
+    MESSAGE("trilinear vs nearest mip " << between << "/255; vs full path: trilinear " << err_trilinear
+                                        << ", nearest " << err_nearest);
+    CHECK(between > 0.05); // the sampler setting reaches the pixels
+    CHECK(between < 3.0);  // and only the texture detail moves
+    CHECK(err_trilinear <= err_nearest + 0.02);
+}
+
 TEST_CASE(
     "fast path: occlusion culling, the depth pre-pass and fast_level change no pixel, anywhere in the main "
     "level") {
