@@ -3,7 +3,7 @@
 // when its screen is created). llvmpipe defaults to one rasteriser thread per core; on a 2-core machine the
 // frame's tiles then wait on whichever of the two threads the scheduler delays, and the slowest frames
 // suffer. Twice as many threads as cores, measured on 2 cores (docs/performance.md, "Rasteriser threads"):
-// the same median, p99 18.5-20.3 -> 14-17.7 ms on the main level. GPU drivers ignore the variable.
+// the same median, p99 18.7-19.9 -> 15.1-16.5 ms on the main level. GPU drivers ignore the variable.
 #include <string>
 
 namespace ks::render {

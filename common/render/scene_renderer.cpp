@@ -34,7 +34,7 @@ RenderQuality default_quality_for(const std::string& gl_renderer) {
     return is_software_renderer(gl_renderer) ? RenderQuality::Fast : RenderQuality::Full;
 }
 
-float default_render_scale_for(const std::string& gl_renderer) {
+float default_render_scale_for(const std::string& gl_renderer, float software_scale) {
     if (const char* v = std::getenv("KS_RENDER_SCALE"); v && *v) {
         char* end = nullptr;
         float scale = std::strtof(v, &end);
@@ -42,7 +42,7 @@ float default_render_scale_for(const std::string& gl_renderer) {
             return std::clamp(scale, 0.25f, 1.0f);
         log::warn("KS_RENDER_SCALE='", v, "' is not a number in 0.25..1; choosing from the GL renderer");
     }
-    return is_software_renderer(gl_renderer) ? kSoftwareRenderScale : 1.0f;
+    return is_software_renderer(gl_renderer) ? std::clamp(software_scale, 0.25f, 1.0f) : 1.0f;
 }
 
 namespace {
@@ -62,7 +62,7 @@ void SceneRenderer::resolve_settings() {
     if (settings_.quality == RenderQuality::Auto) settings_.quality = default_quality_for(gl_renderer_);
     fast_ = settings_.quality == RenderQuality::Fast;
     if (!(settings_.render_scale > 0.0f) || !is_finite(settings_.render_scale))
-        settings_.render_scale = default_render_scale_for(gl_renderer_);
+        settings_.render_scale = default_render_scale_for(gl_renderer_, settings_.software_render_scale);
     settings_.render_scale = std::clamp(settings_.render_scale, 0.25f, 1.0f);
 }
 

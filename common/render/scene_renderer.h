@@ -28,6 +28,8 @@ class TextureCache;
 // renderer string like MSAA; KS_RENDER_QUALITY=full|fast overrides Auto.
 enum class RenderQuality { Auto, Full, Fast };
 
+inline constexpr float kSoftwareRenderScale = 0.5f;
+
 struct RendererSettings {
     int msaa_samples = 0; // 0: draw straight into the bound framebuffer; 2/4/8: multisampled target
     int shadow_map_size = 2048;
@@ -55,22 +57,23 @@ struct RendererSettings {
     bool fast_trilinear = false;
     // The 3D scene is drawn at this fraction of the target's width and height, then scaled up (bilinear)
     // into the target, so a HUD drawn afterwards stays sharp. 0: automatic (1 on GPUs,
-    // kSoftwareRenderScale on software rasterisers; KS_RENDER_SCALE=0.25..1 overrides).
+    // software_render_scale on software rasterisers; KS_RENDER_SCALE=0.25..1 overrides).
     float render_scale = 0.0f;
+    // The automatic render scale on software rasterisers: the game's half resolution; the editor asks for 1
+    // (its viewport is smaller and its one-pixel overlays must stay sharp).
+    float software_render_scale = kSoftwareRenderScale;
     std::string shader_dir; // empty: default_shader_dir() (assets/shaders, or $KS_SHADER_DIR)
     int shader_hot_reload =
         -1; // 1: re-read changed shader files once a second; -1: default_shader_hot_reload()
 };
-
-inline constexpr float kSoftwareRenderScale = 0.5f;
 
 // MSAA 4x on real GPUs, none on software rasterisers (llvmpipe, softpipe, SwiftShader), where every
 // sample is CPU time; see docs/rendering.md for the measurements behind this.
 int default_msaa_for(const std::string& gl_renderer);
 // Fast on software rasterisers, Full on GPUs (KS_RENDER_QUALITY=full|fast overrides).
 RenderQuality default_quality_for(const std::string& gl_renderer);
-// 1 on GPUs, kSoftwareRenderScale on software rasterisers (KS_RENDER_SCALE overrides, clamped 0.25..1).
-float default_render_scale_for(const std::string& gl_renderer);
+// 1 on GPUs, `software_scale` on software rasterisers (KS_RENDER_SCALE overrides; clamped 0.25..1).
+float default_render_scale_for(const std::string& gl_renderer, float software_scale = kSoftwareRenderScale);
 
 struct ViewModel {
     std::vector<MeshInstance> instances; // in camera space (x right, y up, -z forward)

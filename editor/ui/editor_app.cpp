@@ -13,7 +13,6 @@
 #include <imgui.h>
 
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 
 namespace ks::editor::ui {
@@ -60,12 +59,11 @@ Result<void> EditorApp::init() {
     editor_.set_recent_files(&recent_);
     render::RendererSettings settings;
     settings.msaa_samples = render::default_msaa_for(shell_.gl_renderer());
-    // Full resolution even on software rasterisers (the game's automatic 0.5 there): the viewport is about
-    // 40 % of the window, and thin overlays (eye radii, grid, gizmo) at half resolution turn to stairs.
-    // Measured on llvmpipe: 26.8 vs 23.5 ms per editor frame (docs/performance.md, Editor). KS_RENDER_SCALE
-    // still overrides.
-    const char* scale_override = std::getenv("KS_RENDER_SCALE");
-    if (!scale_override || !*scale_override) settings.render_scale = 1.0f;
+    // Full resolution on software rasterisers too (the game's automatic choice there is 0.5): thin overlays
+    // (eye radii, grid, gizmo) at half resolution turn to stairs, and the viewport is about 40 % of the
+    // window (21.2-23.1 vs 17.6-22.3 ms per editor frame on llvmpipe: docs/performance.md, "Viewport
+    // resolution"). KS_RENDER_SCALE still overrides.
+    settings.software_render_scale = 1.0f;
     auto renderer = render::SceneRenderer::create(assets_.textures(), settings);
     if (!renderer) return renderer.error();
     renderer_ = std::move(*renderer);

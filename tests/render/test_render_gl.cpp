@@ -375,6 +375,10 @@ TEST_CASE("auto quality follows the GL renderer string; overrides win") {
     CHECK(default_render_scale_for("llvmpipe (LLVM 15.0.6, 256 bits)") ==
           doctest::Approx(kSoftwareRenderScale));
     CHECK(default_render_scale_for("AMD Radeon RX 7900") == 1.0f);
+    // A program's own software choice (the editor asks for 1), clamped; GPUs stay at 1.
+    CHECK(default_render_scale_for("llvmpipe (LLVM 15.0.6, 256 bits)", 1.0f) == 1.0f);
+    CHECK(default_render_scale_for("llvmpipe (LLVM 15.0.6, 256 bits)", 0.1f) == doctest::Approx(0.25f));
+    CHECK(default_render_scale_for("AMD Radeon RX 7900", 0.5f) == 1.0f);
     KS_REQUIRE_GL();
     AssetLibrary assets(assets_dir());
     auto automatic = SceneRenderer::create(assets.textures());
