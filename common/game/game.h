@@ -10,6 +10,7 @@
 #include "core/result.h"
 #include "game/caption.h"
 #include "game/game_types.h"
+#include "level/entity_shapes.h"
 #include "level/level.h"
 #include "physics/world.h"
 
@@ -43,12 +44,8 @@ inline std::uint32_t user_index(std::uint64_t user) {
     return static_cast<std::uint32_t>(user);
 }
 
-// The robot model faces its local +X (conventions.md); a level yaw faces (−sin yaw, 0, −cos yaw)
-// (level-format.md). Rotating the model about +y by yaw + 90° turns +X onto that direction — the reference's
-// rotY = yaw + 90°. Every view that draws a robot must use this (the game view, the Dojo dummy).
-inline float robot_model_yaw(float level_yaw) {
-    return level_yaw + kPi * 0.5f;
-}
+// The robot model's yaw (the level's yaw + 90°): one conversion for every view, kept with the entity shapes.
+using level::robot_model_yaw;
 
 struct PlayerState {
     physics::BodyId body;
@@ -101,7 +98,11 @@ struct Door {
     float progress = 0.0f; // 0 closed .. 1 open (linear in time, as the reference)
     bool opening = false;  // where it is heading
     bool player_inside = false;
-    float leaf_offset() const { return progress * props.open_offset; } // each leaf slides this far
+    float leaf_offset() const { return level::door_leaf_slide(props, progress); } // each leaf slides this far
+    // Where leaf `side` (0: local -x, 1: +x) is at the current progress (level::door_leaf_centre).
+    physics::Transform leaf_transform(int side) const {
+        return {frame.to_world(level::door_leaf_centre(props, side, progress)), frame.rotation};
+    }
 };
 
 struct Light {
@@ -214,6 +215,13 @@ class Game {
   private:
     explicit Game(GameOptions options);
     Result<void> build(const level::Level& level);
+    Result<void> find_clips();
+    Result<void> add_entity(const level::Entity& e);
+    Result<void> add_door(const level::Entity& e);
+    Result<void> add_robot(const level::Entity& e);
+    Result<void> add_pickup(const level::Entity& e);
+    Result<void> add_player(const level::Level& level);
+    Result<physics::BodyId> add_body(const physics::BodyDesc& desc, const level::Entity& e);
     void update_player(const Input& input, float dt);
     void fire_player_shot();
     void update_robot(std::size_t index, float dt);
@@ -247,6 +255,7 @@ class Game {
     Caption caption_;
     physics::Aabb level_bounds_ = physics::Aabb::empty();
     Vec3 player_start_{0.0f};
+    float gravity_ = -25.0f; // the level's, given to every character body
     int interact_target_ = -1;
     Phase phase_ = Phase::Playing;
     double phase_time_ = 0.0;

@@ -15,8 +15,32 @@ using physics::Shape;
 using physics::Transform;
 namespace layer = physics::layer;
 
-Quat yaw_rotation(float yaw) {
-    return glm::angleAxis(yaw, Vec3(0, 1, 0));
+Shape physics_shape(const level::PlacedShape& shape) {
+    switch (shape.kind) {
+    case level::ShapeKind::Wedge:
+        return Shape::wedge(shape.half);
+    case level::ShapeKind::Cylinder:
+        return Shape::cylinder(shape.half.x, shape.half.y);
+    case level::ShapeKind::Box:
+        break;
+    }
+    return Shape::box(shape.half);
+}
+
+Light make_light(const level::Entity& e) {
+    Light l;
+    l.entity_id = e.id;
+    l.position = e.position;
+    l.yaw = radians(e.rotation.x);
+    if (auto* f = e.try_as<level::FloorLightProps>()) {
+        l.floor = true;
+        l.props = f->light;
+        l.cone_angle = f->cone_angle;
+    } else {
+        l.props = e.as<level::TopLightProps>().light;
+    }
+    l.on = l.props.on;
+    return l;
 }
 
 std::string entity_label(const level::Entity& e) {
@@ -50,7 +74,7 @@ Result<std::unique_ptr<Game>> Game::create(const level::Level& level, GameOption
     return game;
 }
 
-Result<void> Game::build(const level::Level& level) {
+Result<void> Game::find_clips() {
     const anim::ClipSet& clips = animations_->clips;
     auto need = [&](const char* name, int& out) -> Result<void> {
         out = clips.find(name);
@@ -75,201 +99,179 @@ Result<void> Game::build(const level::Level& level) {
     if (hand_tip_node_ < 0)
         return Error("the robot rig has no hand_r_tip node", Location("assets/animations/robot.json"),
                      "robot shots start at the right hand's tip");
+    return ok();
+}
 
-    auto add = [&](BodyDesc desc, const level::Entity& e) -> Result<physics::BodyId> {
-        auto id = world_.add(desc, entity_label(e));
-        if (!id) return id.error();
-        return *id;
-    };
-    auto add_static = [&](const level::Entity& e, Shape shape, Vec3 centre, Quat rotation, BodyKind kind,
-                          std::uint32_t index, std::uint32_t layers) -> Result<physics::BodyId> {
-        BodyDesc d;
-        d.shape = std::move(shape);
-        d.transform = {centre, rotation};
-        d.layers = layers;
-        d.user_data = pack_user(kind, index);
-        auto id = add(d, e);
-        if (id) level_bounds_.grow(d.shape.bounds(d.transform));
-        return id;
-    };
-    const float gravity = level.settings.gravity;
-
+Result<void> Game::build(const level::Level& level) {
+    if (auto found = find_clips(); !found) return found;
     // Count first so the arrays never reallocate while bodies refer to indices.
     std::size_t robot_count = 0;
     for (const auto& e : level.entities)
         if (auto* r = e.try_as<level::RobotProps>(); r && !r->dummy) ++robot_count;
     robots_.reserve(robot_count);
     robot_anims_.reserve(robot_count);
-
+    gravity_ = level.settings.gravity;
     for (const level::Entity& e : level.entities) {
         if (!is_finite(e.position) || !is_finite(e.rotation))
             return Error("non-finite position or rotation", Location("level", 0, 0, entity_label(e)),
                          "give the entity finite coordinates");
-        const float yaw = radians(e.rotation.x);
-        const Quat rot = e.orientation();
-        const Vec3 p = e.position;
-        Result<physics::BodyId> body = physics::BodyId{};
-        switch (e.type()) {
-        case level::EntityType::Wall: {
-            const auto& w = e.as<level::WallProps>();
-            body = add_static(e, Shape::box(w.size * 0.5f), p + rot * Vec3(0, w.size.y * 0.5f, 0), rot,
-                              BodyKind::Scenery, 0, layer::kDefault);
-            break;
-        }
-        case level::EntityType::Floor: {
-            const auto& f = e.as<level::FloorProps>();
-            const float half_t = f.thickness * 0.5f;
-            const Vec3 centre = p + rot * Vec3(0, f.ceiling ? half_t : -half_t, 0);
-            body = add_static(e, Shape::box({f.size.x * 0.5f, half_t, f.size.y * 0.5f}), centre, rot,
-                              BodyKind::Scenery, 0, layer::kDefault);
-            break;
-        }
-        case level::EntityType::Stair: {
-            const auto& s = e.as<level::StairProps>();
-            body = add_static(e, Shape::wedge(s.size * 0.5f), p + rot * Vec3(0, s.size.y * 0.5f, 0), rot,
-                              BodyKind::Scenery, 0, layer::kDefault);
-            break;
-        }
-        case level::EntityType::Door: {
-            Door d;
-            d.entity_id = e.id;
-            d.props = e.as<level::DoorProps>();
-            d.frame = {p, yaw_rotation(yaw)};
-            d.opening = d.props.open;
-            d.progress = d.props.open ? 1.0f : 0.0f;
-            const auto index = static_cast<std::uint32_t>(doors_.size());
-            for (int side = 0; side < 2; ++side) {
-                BodyDesc leaf;
-                leaf.shape = Shape::box({d.props.width * 0.25f, d.props.height * 0.5f, 0.07f});
-                leaf.motion = Motion::Kinematic;
-                leaf.layers = layer::kDefault;
-                leaf.user_data = pack_user(BodyKind::DoorLeaf, index);
-                const float sign = side == 0 ? -1.0f : 1.0f;
-                leaf.transform = {d.frame.to_world({sign * (d.props.width * 0.25f + d.leaf_offset()),
-                                                    d.props.height * 0.5f, 0}),
-                                  d.frame.rotation};
-                auto id = add(leaf, e);
-                if (!id) return id.error();
-                d.leaves[side] = *id;
-            }
-            BodyDesc sensor; // the reference's 5 x 5 x 14 interaction box (z ±7 around the door)
-            sensor.shape = Shape::box({d.props.width * 0.5f, d.props.height * 0.5f, 7.0f});
-            sensor.transform = {d.frame.to_world({0, d.props.height * 0.5f, 0}), d.frame.rotation};
-            sensor.trigger = true;
-            sensor.layers = layer::kTrigger;
-            sensor.user_data = pack_user(BodyKind::DoorSensor, index);
-            auto id = add(sensor, e);
-            if (!id) return id.error();
-            d.sensor = *id;
-            doors_.push_back(d);
-            break;
-        }
-        case level::EntityType::FloorLight:
-        case level::EntityType::TopLight: {
-            Light l;
-            l.entity_id = e.id;
-            l.position = p;
-            l.yaw = yaw;
-            if (auto* f = e.try_as<level::FloorLightProps>()) {
-                l.floor = true;
-                l.props = f->light;
-                l.cone_angle = f->cone_angle;
-                // The lamp stand: solid and shootable, as in the reference (a 0.5-radius post).
-                body =
-                    add_static(e, Shape::cylinder(0.5f, f->height * 0.5f), p + Vec3(0, f->height * 0.5f, 0),
-                               Quat(1, 0, 0, 0), BodyKind::Scenery, 0, layer::kDefault);
-            } else {
-                l.props = e.as<level::TopLightProps>().light;
-            }
-            l.on = l.props.on;
-            lights_.push_back(l);
-            break;
-        }
-        case level::EntityType::Robot: {
-            const auto& rp = e.as<level::RobotProps>();
-            if (rp.dummy) break; // the dojo's animation dummy: no AI, not in physics
-            Robot r;
-            r.entity_id = e.id;
-            r.props = rp;
-            r.feet = p;
-            r.yaw = yaw;
-            r.health = rp.health;
-            r.wander_from = r.wander_to = yaw;
-            r.wander_length = 0.0f; // first idle step draws a new wander
-            BodyDesc d;
-            d.shape = Shape::capsule(settings_.robot_radius,
-                                     settings_.robot_height * 0.5f - settings_.robot_radius);
-            d.transform = {p + Vec3(0, settings_.robot_height * 0.5f + d.character.skin, 0),
-                           Quat(1, 0, 0, 0)};
-            d.motion = Motion::Character;
-            d.layers = layer::kSolid | layer::kShootable | layer::kCharacter;
-            d.user_data = pack_user(BodyKind::Robot, static_cast<std::uint32_t>(robots_.size()));
-            d.movement.gravity = gravity;
-            d.movement.max_speed = 200.0f;
-            auto id = add(d, e);
-            if (!id) return id.error();
-            r.body = *id;
-            robots_.push_back(r);
-            robot_anims_.emplace_back(clips, animations_->rig);
-            robot_anims_.back().play(clips_.idle, 0.0f);
-            break;
-        }
-        case level::EntityType::Pickup: {
-            const auto& pp = e.as<level::PickupProps>();
-            Pickup k;
-            k.entity_id = e.id;
-            k.kind = pp.kind.value == "ammo"     ? PickupKind::Ammo
-                     : pp.kind.value == "shield" ? PickupKind::Shield
-                                                 : PickupKind::Health;
-            k.amount = pp.amount;
-            k.centre = p + Vec3(0, 0.8f, 0);
-            BodyDesc d;
-            d.shape = Shape::box(Vec3(0.4f));
-            d.transform = {k.centre, Quat(1, 0, 0, 0)};
-            d.trigger = true;
-            d.layers = layer::kTrigger;
-            d.user_data = pack_user(BodyKind::Pickup, static_cast<std::uint32_t>(pickups_.size()));
-            auto id = add(d, e);
-            if (!id) return id.error();
-            k.trigger = *id;
-            pickups_.push_back(k);
-            break;
-        }
-        case level::EntityType::GasCylinder: {
-            Cylinder c;
-            c.entity_id = e.id;
-            c.props = e.as<level::GasCylinderProps>();
-            c.centre = p + Vec3(0, c.props.height * 0.5f, 0);
-            c.yaw = yaw;
-            // Solid and shootable; it does not block sight (robots see and shoot past it).
-            auto id =
-                add_static(e, Shape::cylinder(c.props.radius, c.props.height * 0.5f), c.centre,
-                           Quat(1, 0, 0, 0), BodyKind::Cylinder,
-                           static_cast<std::uint32_t>(cylinders_.size()), layer::kSolid | layer::kShootable);
-            if (!id) return id.error();
-            c.body = *id;
-            cylinders_.push_back(c);
-            break;
-        }
-        case level::EntityType::ControlPanel: {
-            Panel k;
-            k.entity_id = e.id;
-            k.size = e.as<level::ControlPanelProps>().size;
-            k.centre = p + rot * Vec3(0, k.size.y * 0.5f, 0);
-            k.yaw = yaw;
-            auto id = add_static(e, Shape::box(k.size * 0.5f), k.centre, rot, BodyKind::Panel,
-                                 static_cast<std::uint32_t>(panels_.size()), layer::kDefault);
-            if (!id) return id.error();
-            k.body = *id;
-            panels_.push_back(k);
-            break;
-        }
-        case level::EntityType::Count:
-            break;
-        }
-        if (!body) return body.error();
+        if (auto added = add_entity(e); !added) return added;
     }
+    if (auto added = add_player(level); !added) return added;
+    events_.reserve(64);
+    ray_hits_.reserve(64);
+    world_.build_static();
+    return ok();
+}
 
+Result<physics::BodyId> Game::add_body(const BodyDesc& desc, const level::Entity& e) {
+    return world_.add(desc, entity_label(e));
+}
+
+// Walls, floors, stairs, lamp stands, cylinders and the panel: one static body each, shaped by the level's
+// entity shapes; lights, cylinders and panels also get their game records.
+Result<void> Game::add_entity(const level::Entity& e) {
+    switch (e.type()) {
+    case level::EntityType::Door:
+        return add_door(e);
+    case level::EntityType::Robot:
+        return add_robot(e);
+    case level::EntityType::Pickup:
+        return add_pickup(e);
+    default:
+        break;
+    }
+    BodyKind kind = BodyKind::Scenery;
+    std::uint32_t index = 0;
+    std::uint32_t layers = layer::kDefault;
+    if (e.type() == level::EntityType::FloorLight || e.type() == level::EntityType::TopLight)
+        lights_.push_back(make_light(e));
+    if (e.type() == level::EntityType::GasCylinder) {
+        // Solid and shootable; it does not block sight (robots see and shoot past it).
+        kind = BodyKind::Cylinder;
+        index = static_cast<std::uint32_t>(cylinders_.size());
+        layers = layer::kSolid | layer::kShootable;
+    } else if (e.type() == level::EntityType::ControlPanel) {
+        kind = BodyKind::Panel;
+        index = static_cast<std::uint32_t>(panels_.size());
+    }
+    const auto shape = level::static_solid_shape(e);
+    if (!shape) return ok();
+    BodyDesc d;
+    d.shape = physics_shape(*shape);
+    d.transform = {shape->centre(), shape->rotation()};
+    d.layers = layers;
+    d.user_data = pack_user(kind, index);
+    auto body = add_body(d, e);
+    if (!body) return body.error();
+    level_bounds_.grow(d.shape.bounds(d.transform));
+    const float yaw = radians(e.rotation.x);
+    if (kind == BodyKind::Cylinder) {
+        Cylinder c;
+        c.entity_id = e.id;
+        c.props = e.as<level::GasCylinderProps>();
+        c.centre = shape->centre();
+        c.yaw = yaw;
+        c.body = *body;
+        cylinders_.push_back(c);
+    } else if (kind == BodyKind::Panel) {
+        Panel k;
+        k.entity_id = e.id;
+        k.size = e.as<level::ControlPanelProps>().size;
+        k.centre = shape->centre();
+        k.yaw = yaw;
+        k.body = *body;
+        panels_.push_back(k);
+    }
+    return ok();
+}
+
+Result<void> Game::add_door(const level::Entity& e) {
+    Door d;
+    d.entity_id = e.id;
+    d.props = e.as<level::DoorProps>();
+    const level::Frame frame = level::upright_frame(e);
+    d.frame = {frame.origin, frame.rotation};
+    d.opening = d.props.open;
+    d.progress = d.props.open ? 1.0f : 0.0f;
+    const auto index = static_cast<std::uint32_t>(doors_.size());
+    for (int side = 0; side < 2; ++side) {
+        BodyDesc leaf;
+        leaf.shape = Shape::box(level::door_leaf_half(d.props));
+        leaf.motion = Motion::Kinematic;
+        leaf.layers = layer::kDefault;
+        leaf.user_data = pack_user(BodyKind::DoorLeaf, index);
+        leaf.transform = d.leaf_transform(side);
+        auto id = add_body(leaf, e);
+        if (!id) return id.error();
+        d.leaves[side] = *id;
+    }
+    BodyDesc sensor;
+    sensor.shape = Shape::box(level::door_sensor_half(d.props));
+    sensor.transform = {d.frame.to_world(level::door_sensor_centre(d.props)), d.frame.rotation};
+    sensor.trigger = true;
+    sensor.layers = layer::kTrigger;
+    sensor.user_data = pack_user(BodyKind::DoorSensor, index);
+    auto id = add_body(sensor, e);
+    if (!id) return id.error();
+    d.sensor = *id;
+    doors_.push_back(d);
+    return ok();
+}
+
+Result<void> Game::add_robot(const level::Entity& e) {
+    const auto& rp = e.as<level::RobotProps>();
+    if (rp.dummy) return ok(); // the dojo's animation dummy: no AI, not in physics
+    const float yaw = radians(e.rotation.x);
+    Robot r;
+    r.entity_id = e.id;
+    r.props = rp;
+    r.feet = e.position;
+    r.yaw = yaw;
+    r.health = rp.health;
+    r.wander_from = r.wander_to = yaw;
+    r.wander_length = 0.0f; // first idle step draws a new wander
+    BodyDesc d;
+    d.shape = Shape::capsule(settings_.robot_radius, settings_.robot_height * 0.5f - settings_.robot_radius);
+    d.transform = {e.position + Vec3(0, settings_.robot_height * 0.5f + d.character.skin, 0),
+                   Quat(1, 0, 0, 0)};
+    d.motion = Motion::Character;
+    d.layers = layer::kSolid | layer::kShootable | layer::kCharacter;
+    d.user_data = pack_user(BodyKind::Robot, static_cast<std::uint32_t>(robots_.size()));
+    d.movement.gravity = gravity_;
+    d.movement.max_speed = 200.0f;
+    auto id = add_body(d, e);
+    if (!id) return id.error();
+    r.body = *id;
+    robots_.push_back(r);
+    robot_anims_.emplace_back(animations_->clips, animations_->rig);
+    robot_anims_.back().play(clips_.idle, 0.0f);
+    return ok();
+}
+
+Result<void> Game::add_pickup(const level::Entity& e) {
+    const auto& pp = e.as<level::PickupProps>();
+    Pickup k;
+    k.entity_id = e.id;
+    k.kind = pp.kind.value == "ammo"     ? PickupKind::Ammo
+             : pp.kind.value == "shield" ? PickupKind::Shield
+                                         : PickupKind::Health;
+    k.amount = pp.amount;
+    k.centre = level::pickup_centre(e.position);
+    BodyDesc d;
+    d.shape = Shape::box(Vec3(level::kPickupHalfSize));
+    d.transform = {k.centre, Quat(1, 0, 0, 0)};
+    d.trigger = true;
+    d.layers = layer::kTrigger;
+    d.user_data = pack_user(BodyKind::Pickup, static_cast<std::uint32_t>(pickups_.size()));
+    auto id = add_body(d, e);
+    if (!id) return id.error();
+    k.trigger = *id;
+    pickups_.push_back(k);
+    return ok();
+}
+
+Result<void> Game::add_player(const level::Level& level) {
     BodyDesc pd;
     pd.shape =
         Shape::capsule(settings_.player_radius, settings_.player_height * 0.5f - settings_.player_radius);
@@ -279,7 +281,7 @@ Result<void> Game::build(const level::Level& level) {
     pd.motion = Motion::Character;
     pd.layers = layer::kSolid | layer::kShootable | layer::kCharacter;
     pd.user_data = pack_user(BodyKind::Player, 0);
-    pd.movement.gravity = gravity;
+    pd.movement.gravity = gravity_;
     pd.movement.max_speed = 200.0f;
     auto pid = world_.add(pd, "player");
     if (!pid) return pid.error();
@@ -291,9 +293,6 @@ Result<void> Game::build(const level::Level& level) {
     player_.shield = settings_.start_shield;
     player_.ammo = settings_.start_ammo;
     player_.recoil = 10.0f;
-    events_.reserve(64);
-    ray_hits_.reserve(64);
-    world_.build_static();
     return ok();
 }
 

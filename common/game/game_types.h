@@ -2,6 +2,7 @@
 // The vocabulary the game shares with its drivers (keyboard, autoplay bot, replay file) and with the
 // renderer: the per-step input, the per-step events and the tunable game settings. Plain data only.
 #include "core/math.h"
+#include "level/entity_shapes.h"
 
 #include <cstdint>
 #include <string>
@@ -55,8 +56,8 @@ struct GameSettings {
     double step = 1.0 / 120.0;
     float player_speed = 15.0f;
     float jump_speed = 15.0f;
-    float player_radius = 1.0f; // capsule: radius 1, height 3, eye at feet + 3
-    float player_height = 3.0f;
+    float player_radius = level::kPlayerRadius; // capsule: radius 1, height 3, eye at feet + 3
+    float player_height = level::kPlayerHeight;
     float eye_height = 3.0f;
     float max_health = 100.0f, start_health = 100.0f;
     float max_shield = 50.0f, start_shield = 0.0f;
@@ -65,8 +66,8 @@ struct GameSettings {
     float player_shot_damage = 20.0f; // damage a robot takes per player hit (5 hits kill a 100 hp robot)
     float interact_reach = 6.0f;      // floor lights and the panel: eye-to-surface distance for E
     float interact_view_cos = 0.34f;  // in view: within ~70° of the horizontal view direction
-    float robot_radius = 0.8f;        // robots: capsule of height 3
-    float robot_height = 3.0f;
+    float robot_radius = level::kRobotRadius; // robots: capsule of height 3
+    float robot_height = level::kRobotHeight;
     float robot_same_level = 6.0f; // |Δy| below which a robot considers the player on its level
     float robot_shot_range = 100.0f;
     float robot_wander_speed = 2.4f; // 0.3 · velocity 8 in the reference

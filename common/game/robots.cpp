@@ -2,6 +2,7 @@
 // inside the maximum one (hysteresis); shoot pose inside shooting distance; shots on a cooldown with a
 // probability; angry after being shot; death clip, then explosion and removal. Robots never hurt robots.
 #include "game/game.h"
+#include "level/entity_shapes.h"
 
 #include "anim/easing.h"
 
@@ -34,7 +35,7 @@ Vec3 Game::robot_muzzle(std::size_t index) const {
     const anim::Rig& rig = animations_->rig;
     std::array<Mat4, 32> local_world{};
     if (rig.size() > static_cast<int>(local_world.size())) return r.feet + Vec3(0, 1.8f, 0);
-    const Mat4 root = glm::rotate(glm::translate(Mat4(1.0f), r.feet), r.model_yaw(), Vec3(0, 1, 0));
+    const Mat4 root = level::robot_model_matrix(r.feet, r.yaw);
     anim::compute_world(rig, robot_anims_[index].pose(), std::span<Mat4>(local_world.data(), rig.size()),
                         root);
     return Vec3(local_world[static_cast<std::size_t>(hand_tip_node_)][3]);

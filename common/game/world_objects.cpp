@@ -12,13 +12,7 @@ void Game::update_doors(float dt) {
         if (d.progress == target) continue;
         const float rate = dt / d.props.open_time; // linear, as the reference's tween
         d.progress = d.opening ? std::min(1.0f, d.progress + rate) : std::max(0.0f, d.progress - rate);
-        for (int side = 0; side < 2; ++side) {
-            const float sign = side == 0 ? -1.0f : 1.0f;
-            world_.set_transform(d.leaves[side],
-                                 {d.frame.to_world({sign * (d.props.width * 0.25f + d.leaf_offset()),
-                                                    d.props.height * 0.5f, 0}),
-                                  d.frame.rotation});
-        }
+        for (int side = 0; side < 2; ++side) world_.set_transform(d.leaves[side], d.leaf_transform(side));
     }
 }
 

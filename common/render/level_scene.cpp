@@ -1,5 +1,6 @@
 #include "render/level_scene.h"
 
+#include "level/entity_shapes.h"
 #include "render/scene_renderer.h"
 
 #include <epoxy/gl.h>
@@ -40,21 +41,21 @@ Camera player_start_camera(const level::Level& level, float aspect) {
 
 namespace {
 Mat4 entity_matrix(const level::Entity& e) {
-    return glm::translate(Mat4(1.0f), e.position) * glm::mat4_cast(e.orientation());
+    return level::entity_frame(e).matrix();
 }
 } // namespace
 
 MeshData build_surface_mesh(const level::Entity& e) {
     MeshData mesh;
-    const Mat4 m = entity_matrix(e);
+    const auto solid = level::static_solid_shape(e);
+    if (!solid) return mesh;
+    const Mat4 m = solid->frame.matrix();
     if (const auto* wall = e.try_as<level::WallProps>()) {
-        append_box(mesh, Vec3(0.0f, wall->size.y * 0.5f, 0.0f), wall->size, m, wall->texture_scale);
+        append_box(mesh, solid->local_centre, solid->half * 2.0f, m, wall->texture_scale);
     } else if (const auto* floor = e.try_as<level::FloorProps>()) {
-        float y = floor->ceiling ? floor->thickness * 0.5f : -floor->thickness * 0.5f;
-        append_box(mesh, Vec3(0.0f, y, 0.0f), Vec3(floor->size.x, floor->thickness, floor->size.y), m,
-                   floor->texture_scale);
+        append_box(mesh, solid->local_centre, solid->half * 2.0f, m, floor->texture_scale);
     } else if (const auto* stair = e.try_as<level::StairProps>()) {
-        append_stairs(mesh, stair->size, stair->steps, m, 4.0f);
+        append_stairs(mesh, solid->half * 2.0f, stair->steps, m, 4.0f);
     }
     return mesh;
 }
@@ -103,17 +104,15 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
         }
         case EntityType::Door: {
             const auto& d = e.as<level::DoorProps>();
-            Prop p = make_prop(e, &assets.model("door"),
-                               m * glm::scale(Mat4(1.0f), Vec3(d.width / 5.0f, d.height / 5.0f, 1.0f)));
+            Prop p = make_prop(e, &assets.model("door"), level::door_model_matrix(e));
             p.door_open = d.open ? 1.0f : 0.0f;
-            p.door_offset = d.open_offset / std::max(d.width / 5.0f, 1e-3f);
+            p.door = d;
             scene->props_.push_back(p);
             break;
         }
         case EntityType::FloorLight: {
             const auto& f = e.as<level::FloorLightProps>();
-            float s = f.height / 4.0f;
-            Prop p = make_prop(e, &assets.model("floor_light"), m * glm::scale(Mat4(1.0f), Vec3(s)));
+            Prop p = make_prop(e, &assets.model("floor_light"), level::floor_light_model_matrix(e));
             p.light_on = f.light.on;
             p.light.type = Light::Type::Spot;
             p.light.color = to_linear(f.light.color);
@@ -133,8 +132,7 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
         }
         case EntityType::TopLight: {
             const auto& t = e.as<level::TopLightProps>();
-            Prop p = make_prop(e, &assets.model("top_light"),
-                               m * glm::scale(Mat4(1.0f), Vec3(std::max(t.hang, 0.1f) / 2.0f)));
+            Prop p = make_prop(e, &assets.model("top_light"), level::top_light_model_matrix(e));
             p.light_on = t.light.on;
             p.light.type = Light::Type::Point;
             p.light.color = to_linear(t.light.color);
@@ -145,32 +143,26 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
             break;
         }
         case EntityType::Robot:
-            // The model faces its local +X (conventions.md); a level yaw of 0 faces -z (level-format.md).
-            // A quarter turn first puts +X on -z, so the robot faces the entity's forward, as in the game
-            // view (game::robot_model_yaw: yaw + 90°, the reference's rotY). Tested by
-            // tests/runtime/test_play_views.cpp (both views draw a robot alike).
-            scene->props_.push_back(
-                make_prop(e, &assets.model("robot"), m * glm::rotate(Mat4(1.0f), kPi * 0.5f, Vec3(0, 1, 0))));
+            // The same placement as the game view's robots (tests/runtime/test_play_views.cpp).
+            scene->props_.push_back(make_prop(e, &assets.model("robot"),
+                                              level::robot_model_matrix(e.position, radians(e.rotation.x))));
             break;
         case EntityType::Pickup: {
             const auto& k = e.as<level::PickupProps>();
-            Mat4 lifted = glm::translate(Mat4(1.0f), e.position + Vec3(0.0f, 0.4f, 0.0f)) *
-                          glm::mat4_cast(e.orientation());
-            scene->props_.push_back(make_prop(e, &assets.model("pickup_" + k.kind.value), lifted));
+            const Mat4 root = level::pickup_model_matrix(level::pickup_centre(e.position), e.orientation());
+            scene->props_.push_back(make_prop(e, &assets.model("pickup_" + k.kind.value), root));
             break;
         }
         case EntityType::GasCylinder: {
             const auto& g = e.as<level::GasCylinderProps>();
-            Vec3 s(g.radius / 0.5f, g.height / 2.0f, g.radius / 0.5f);
-            scene->props_.push_back(
-                make_prop(e, &assets.model("gas_cylinder"), m * glm::scale(Mat4(1.0f), s)));
+            const Mat4 root =
+                level::gas_cylinder_model_matrix(level::gas_cylinder_centre(e.position, g), radians(e.rotation.x), g);
+            scene->props_.push_back(make_prop(e, &assets.model("gas_cylinder"), root));
             break;
         }
         case EntityType::ControlPanel: {
-            const auto& c = e.as<level::ControlPanelProps>();
-            Vec3 s = c.size / Vec3(2.94f, 4.0f, 5.34f);
             scene->props_.push_back(
-                make_prop(e, &assets.model("control_panel"), m * glm::scale(Mat4(1.0f), s)));
+                make_prop(e, &assets.model("control_panel"), level::control_panel_model_matrix(e)));
             break;
         }
         case EntityType::Count:
@@ -267,7 +259,7 @@ void LevelScene::emit(std::vector<MeshInstance>& instances, std::vector<Light>& 
             if (pose_.local.size() != p.model->nodes.size()) pose_ = p.model->rest_pose();
             for (size_t i = 0; i < p.model->nodes.size(); ++i) pose_.local[i] = p.model->nodes[i].local;
             int l = p.model->find_node("door_l"), r = p.model->find_node("door_r");
-            float shift = p.door_open * p.door_offset;
+            const float shift = level::door_model_leaf_shift(p.door, p.door_open);
             if (l >= 0)
                 pose_.local[size_t(l)] =
                     glm::translate(Mat4(1.0f), Vec3(shift, 0, 0)) * pose_.local[size_t(l)];

@@ -59,7 +59,8 @@ class LevelScene {
         const Model* model = nullptr;
         Mat4 root{1.0f};
         bool light_on = true;
-        float door_open = 0.0f, door_offset = 2.0f;
+        float door_open = 0.0f;
+        level::DoorProps door; // for doors: the leaves slide as level::door_leaf_centre says
         Light light;         // for floor/top lights
         int bake_light = -1; // its index in the light bake
     };

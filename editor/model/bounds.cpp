@@ -1,5 +1,7 @@
 #include "model/bounds.h"
 
+#include "level/entity_shapes.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -7,14 +9,6 @@
 namespace ks::editor {
 namespace {
 using level::Entity;
-
-Obb make_obb(const Entity& e, Vec3 local_center, Vec3 half) {
-    Obb box;
-    box.axes = glm::mat3_cast(e.orientation());
-    box.center = e.position + box.axes * local_center;
-    box.half = half;
-    return box;
-}
 
 glm::dvec3 to_d(const Vec3& v) {
     return glm::dvec3(v);
@@ -40,56 +34,20 @@ bool Obb::contains(const Vec3& p, float margin) const {
 }
 
 Obb entity_obb(const Entity& e) {
-    using namespace level;
-    switch (e.type()) {
-    case EntityType::Wall: {
-        const Vec3 s = e.as<WallProps>().size;
-        return make_obb(e, {0, s.y / 2, 0}, s / 2.0f);
-    }
-    case EntityType::Floor: {
-        const auto& f = e.as<FloorProps>();
-        const float t = f.thickness;
-        return make_obb(e, {0, f.ceiling ? t / 2 : -t / 2, 0}, {f.size.x / 2, t / 2, f.size.y / 2});
-    }
-    case EntityType::Stair: {
-        const Vec3 s = e.as<StairProps>().size;
-        return make_obb(e, {0, s.y / 2, 0}, s / 2.0f);
-    }
-    case EntityType::Door: { // the doorway with its closed leaves (0.14 thick, seed facts §4.4)
-        const auto& d = e.as<DoorProps>();
-        return make_obb(e, {0, d.height / 2, 0}, {d.width / 2, d.height / 2, 0.07f});
-    }
-    case EntityType::FloorLight: { // the lamp stand; its head overhangs a little
-        const float h = e.as<FloorLightProps>().height;
-        return make_obb(e, {0, h / 2, 0}, {0.5f, h / 2, 0.5f});
-    }
-    case EntityType::TopLight: { // hangs below its ceiling fixture
-        const float hang = std::max(e.as<TopLightProps>().hang, 0.1f);
-        return make_obb(e, {0, -hang / 2, 0}, {0.75f, hang / 2, 0.75f});
-    }
-    case EntityType::Robot: // the robot model: 3 tall, about 1.6 wide (asset conventions)
-        return make_obb(e, {0, 1.5f, 0}, {0.8f, 1.5f, 0.8f});
-    case EntityType::Pickup: // a 0.8 cube centred 0.8 above its position (seed facts §4.8)
-        return make_obb(e, {0, 0.8f, 0}, {0.4f, 0.4f, 0.4f});
-    case EntityType::GasCylinder: {
-        const auto& g = e.as<GasCylinderProps>();
-        return make_obb(e, {0, g.height / 2, 0}, {g.radius, g.height / 2, g.radius});
-    }
-    case EntityType::ControlPanel: {
-        const Vec3 s = e.as<ControlPanelProps>().size;
-        return make_obb(e, {0, s.y / 2, 0}, s / 2.0f);
-    }
-    case EntityType::Count:
-        break;
-    }
-    return make_obb(e, Vec3(0.0f), Vec3(0.5f));
+    // The same shapes the game builds its bodies from (level/entity_shapes.h).
+    const level::PlacedShape shape = level::bounding_shape(e);
+    Obb box;
+    box.axes = glm::mat3_cast(shape.rotation());
+    box.center = shape.centre();
+    box.half = shape.half;
+    return box;
 }
 
 Obb player_obb(const level::PlayerStart& start) {
     Obb box;
     box.axes = glm::mat3_cast(quat_from_ypr(radians(start.yaw), 0, 0));
-    box.center = start.position + Vec3(0, 1.5f, 0);
-    box.half = {1.0f, 1.5f, 1.0f};
+    box.center = start.position + Vec3(0, level::kPlayerHeight * 0.5f, 0);
+    box.half = {level::kPlayerRadius, level::kPlayerHeight * 0.5f, level::kPlayerRadius};
     return box;
 }
 

@@ -1,5 +1,6 @@
 #include "world_view.h"
 
+#include "level/entity_shapes.h"
 #include "render/view_model.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -73,7 +74,7 @@ void WorldView::capture(const game::Game& game, Snapshot& s) const {
     s.robot_yaw.resize(robots.size());
     for (std::size_t i = 0; i < robots.size(); ++i) {
         s.robot_feet[i] = robots[i].feet;
-        s.robot_yaw[i] = robots[i].model_yaw();
+        s.robot_yaw[i] = robots[i].yaw;
     }
 }
 
@@ -179,9 +180,8 @@ void WorldView::fill(const game::Game& game, float alpha, float fov_degrees, con
         const bool have = i < previous_.robot_feet.size() && i < current_.robot_feet.size();
         const Vec3 feet =
             have ? glm::mix(previous_.robot_feet[i], current_.robot_feet[i], a) : robots[i].feet;
-        const float yaw = have ? current_.robot_yaw[i] : robots[i].model_yaw();
-        // model_yaw(): the level's yaw + 90°, because the model faces its local +X (game/game.h).
-        const Mat4 root = glm::rotate(glm::translate(Mat4(1.0f), feet), yaw, Vec3(0, 1, 0));
+        const float yaw = have ? current_.robot_yaw[i] : robots[i].yaw;
+        const Mat4 root = level::robot_model_matrix(feet, yaw);
         robot_binding_.apply(game.robot_pose(i), robot_pose_);
         // A robot just hit glows (its emissive parts flare) for the hit flash.
         const float glow = 1.0f + 4.0f * std::clamp(robots[i].hit_flash / 0.2f, 0.0f, 1.0f);
@@ -193,22 +193,17 @@ void WorldView::fill(const game::Game& game, float alpha, float fov_degrees, con
         robot_binding_.apply(*dummy->pose, robot_pose_);
         robot_model_->emit(root, robot_pose_, scratch_, instances_);
     }
-    // Pickups float and spin (the LevelScene's lift of 0.4 above the entity, the game's centre is +0.8).
-    const float spin = game.pickup_spin();
+    // Pickups float and spin around the game's trigger centre.
+    const Quat spin = glm::angleAxis(game.pickup_spin(), Vec3(0, 1, 0));
     for (const auto& p : game.pickups()) {
         if (p.taken) continue;
         const float bob = 0.2f * std::sin(static_cast<float>(time_) * 2.5f + static_cast<float>(p.entity_id));
-        const Mat4 root = glm::rotate(glm::translate(Mat4(1.0f), p.centre + Vec3(0.0f, bob - 0.4f, 0.0f)),
-                                      spin, Vec3(0, 1, 0));
+        const Mat4 root = level::pickup_model_matrix(p.centre + Vec3(0.0f, bob, 0.0f), spin);
         pickup_models_[static_cast<int>(p.kind)]->emit(root, scratch_, instances_);
     }
     for (const auto& c : game.cylinders()) {
         if (c.exploded) continue;
-        const Vec3 s(c.props.radius / 0.5f, c.props.height / 2.0f, c.props.radius / 0.5f);
-        const Mat4 root = glm::scale(
-            glm::rotate(glm::translate(Mat4(1.0f), c.centre - Vec3(0.0f, c.props.height * 0.5f, 0.0f)), c.yaw,
-                        Vec3(0, 1, 0)),
-            s);
+        const Mat4 root = level::gas_cylinder_model_matrix(c.centre, c.yaw, c.props);
         // A lit fuse makes the cylinder glow before it goes.
         cylinder_model_->emit(root, scratch_, instances_, c.fuse >= 0.0f ? 3.0f : 1.0f);
     }

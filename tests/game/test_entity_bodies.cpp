@@ -1,0 +1,58 @@
+// The game builds its bodies from the level's entity shapes (level/entity_shapes.h): every static body of
+// the shipped main level sits exactly where the shape says, and door leaves move by the shared formula.
+#include "game_test_levels.h"
+#include "level/entity_shapes.h"
+#include "level/level_io.h"
+
+using namespace ks;
+using namespace ks::game;
+using namespace ks::game::test;
+
+TEST_CASE("every static body of levels/main.json is its entity's static solid shape") {
+    auto level = level::load_level_file(source_dir() / "levels/main.json");
+    REQUIRE(level);
+    auto g = make_game(*level);
+    const physics::World& world = g->world();
+    int solids = 0, matched = 0;
+    for (const level::Entity& e : level->entities) {
+        const auto shape = level::static_solid_shape(e);
+        if (!shape) continue;
+        ++solids;
+        // Find the body placed exactly as the shape (a fresh world's bodies are slots 0.. of generation 1).
+        for (std::uint32_t i = 0; i < world.body_count(); ++i) {
+            const physics::BodyId id{i, 1};
+            REQUIRE(world.valid(id));
+            const physics::Transform xf = world.transform(id);
+            if (xf.position == shape->centre() && xf.rotation == shape->rotation()) {
+                ++matched;
+                break;
+            }
+        }
+    }
+    CHECK(solids > 100);
+    CHECK(matched == solids);
+}
+
+TEST_CASE("door leaf bodies follow level::door_leaf_centre while the door opens") {
+    auto lv = flat_level();
+    auto& door = lv.add(level::EntityType::Door, Vec3(2, 0, -10), "door");
+    door.rotation.x = 90.0f;
+    door.as<level::DoorProps>().open_offset = 1.5f;
+    auto g = make_game(lv);
+    g->teleport_player(Vec3(2, 0, -10), 0.0f);
+    g->step({});
+    Input e;
+    e.interact = true;
+    g->step(e);
+    REQUIRE(g->doors()[0].opening);
+    run_for(*g, 0.2);
+    const Door& d = g->doors()[0];
+    REQUIRE(d.progress > 0.1f);
+    REQUIRE(d.progress < 0.9f);
+    const level::Frame frame = level::upright_frame(lv.entities.back());
+    for (int side = 0; side < 2; ++side) {
+        const Vec3 expected = frame.to_world(level::door_leaf_centre(d.props, side, d.progress));
+        const Vec3 actual = g->world().transform(d.leaves[side]).position;
+        CHECK(glm::length(actual - expected) < 1e-5f);
+    }
+}
