@@ -5,8 +5,8 @@
 // Saving is deterministic (fixed key order, shortest round-trip numbers), so load -> save of a saved file
 // is byte-identical, and atomic (core/files write_atomic).
 #include "anim/clip.h"
-#include "anim/json_path.h"
 #include "core/result.h"
+#include "jsonio/json_path.h"
 
 #include <filesystem>
 #include <string>
@@ -17,6 +17,9 @@ namespace ks::anim {
 
 inline constexpr const char* kAnimationFormat = "killswitch-animations";
 inline constexpr int kAnimationVersion = 1;
+
+// Issue paths are the toolkit's JSON paths ("clips[2].phases[0].duration").
+using JsonPath = jsonio::JsonPath;
 
 struct Issue {
     JsonPath path;

@@ -1,7 +1,7 @@
 #pragma once
 // Collects the problems found while reading or validating a level, each pinned to a JSON path and -- when
 // the text is at hand -- to its line:column, so that loading can report every problem at once.
-#include "level/json_positions.h"
+#include "jsonio/position_map.h"
 #include "level/level_io.h"
 
 #include <set>
@@ -12,13 +12,14 @@ namespace ks::level {
 
 class DiagnosticSink {
   public:
-    explicit DiagnosticSink(std::string file, const PositionMap* positions = nullptr)
+    explicit DiagnosticSink(std::string file, const jsonio::PositionMap* positions = nullptr)
         : file_(std::move(file)), positions_(positions) {}
 
     void error(const std::string& path, std::string message, std::string hint = {});
     void warning(const std::string& path, std::string message, std::string hint = {});
     // An error at a known text position (syntax errors, before any path exists).
-    void error_at(TextPosition pos, const std::string& path, std::string message, std::string hint = {});
+    void error_at(jsonio::TextPosition pos, const std::string& path, std::string message,
+                  std::string hint = {});
 
     // A path whose value was already reported (e.g. a number that overflowed before parsing); readers skip it
     // so one mistake gives one message.
@@ -31,18 +32,15 @@ class DiagnosticSink {
     std::vector<Diagnostic> take_sorted();
 
   private:
-    void add(Diagnostic::Severity severity, TextPosition pos, const std::string& path, std::string message,
-             std::string hint);
+    void add(Diagnostic::Severity severity, jsonio::TextPosition pos, const std::string& path,
+             std::string message, std::string hint);
     std::string file_;
-    const PositionMap* positions_;
+    const jsonio::PositionMap* positions_;
     std::vector<Diagnostic> list_;
     std::set<std::string> reported_;
 };
 
-// "did you mean" help: the candidate closest to `word` by edit distance, or "" when none is close.
-std::string closest_match(std::string_view word, const std::vector<std::string>& candidates);
 // "0.01 .. 10000 units": a field's valid range as messages show it.
 std::string range_text(const FieldInfo& info);
-std::string join(const std::vector<std::string>& words, std::string_view separator = ", ");
 
 } // namespace ks::level

@@ -1,6 +1,7 @@
 #include "level/level_checks.h"
 
-#include "level/json_text.h"
+#include "jsonio/number_text.h"
+#include "jsonio/suggest.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,10 +10,14 @@
 namespace ks::level {
 namespace {
 
+using jsonio::element_path;
+using jsonio::join;
+using jsonio::member_path;
+
 std::string number_text(float v) {
     if (std::isnan(v)) return "NaN";
     if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-    return json_text::format_readable(json_text::float_to_double(v));
+    return jsonio::format_readable(jsonio::float_to_double(v));
 }
 
 void report_not_finite(const std::string& shown, const std::string& path, const FieldInfo& info,

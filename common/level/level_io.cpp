@@ -2,9 +2,11 @@
 
 #include "core/files.h"
 #include "core/log.h"
+#include "jsonio/describe.h"
+#include "jsonio/json_writer.h"
+#include "jsonio/number_text.h"
+#include "jsonio/position_map.h"
 #include "level/diagnostics.h"
-#include "level/json_positions.h"
-#include "level/json_text.h"
 #include "level/level_checks.h"
 #include "level/level_migrate.h"
 #include "level/level_reader.h"
@@ -17,6 +19,9 @@
 #include <cstdio>
 
 namespace ks::level {
+
+using jsonio::PositionMap;
+
 namespace {
 
 using Json = nlohmann::ordered_json;
@@ -76,11 +81,11 @@ int read_version(const Json& document, DiagnosticSink& sink) {
     const double number = it->is_number() ? it->get<double>() : 0.5;
     const bool whole = it->is_number() && std::isfinite(number) && number == std::floor(number);
     if (!whole) {
-        sink.error("version", "version must be a whole number, found " + json_text::quote(*it),
+        sink.error("version", "version must be a whole number, found " + jsonio::quote(*it),
                    "this build reads versions 0 to " + std::to_string(kFormatVersion));
         return -1;
     }
-    const std::string version_text = json_text::format_readable(number);
+    const std::string version_text = jsonio::format_readable(number);
     if (number > kFormatVersion) {
         sink.error("version",
                    "this level was made by a newer Killswitch (format version " + version_text +
@@ -123,7 +128,7 @@ std::optional<Level> parse_level(std::string_view text, DiagnosticSink& sink, Po
         char byte[8];
         std::snprintf(byte, sizeof(byte), "0x%02x",
                       static_cast<unsigned>(static_cast<unsigned char>(text[bad])));
-        sink.error_at(position_of_offset(text, bad), "",
+        sink.error_at(jsonio::position_of_offset(text, bad), "",
                       std::string("file is not a text file (byte ") + byte + " at offset " +
                           std::to_string(bad) + ")",
                       "this does not look like a level file; " + std::string(kFormatHint));
@@ -135,7 +140,7 @@ std::optional<Level> parse_level(std::string_view text, DiagnosticSink& sink, Po
     std::string_view to_parse = text;
     if (!positions.overflowing_numbers().empty()) {
         patched = std::string(text);
-        for (const OverflowingNumber& n : positions.overflowing_numbers()) {
+        for (const jsonio::OverflowingNumber& n : positions.overflowing_numbers()) {
             sink.error_at(n.position, n.path, "number " + n.token + " overflows to infinity",
                           "write a finite number within the field's range");
             sink.mark_reported(n.path);
@@ -152,11 +157,11 @@ std::optional<Level> parse_level(std::string_view text, DiagnosticSink& sink, Po
         const size_t offset = e.byte > 0 ? e.byte - 1 : 0;
         const bool at_end = offset >= text.size();
         if (at_end)
-            sink.error_at(position_of_offset(text, offset), "",
+            sink.error_at(jsonio::position_of_offset(text, offset), "",
                           "file ends early (truncated?): " + clean_parse_message(e.what()),
                           "complete the file or restore it from a backup");
         else
-            sink.error_at(position_of_offset(text, offset), "", clean_parse_message(e.what()),
+            sink.error_at(jsonio::position_of_offset(text, offset), "", clean_parse_message(e.what()),
                           "fix the JSON syntax at this place");
         return std::nullopt;
     } catch (const nlohmann::json::exception& e) {
@@ -164,7 +169,7 @@ std::optional<Level> parse_level(std::string_view text, DiagnosticSink& sink, Po
         return std::nullopt;
     }
 
-    for (const DuplicateKey& d : positions.duplicate_keys())
+    for (const jsonio::DuplicateKey& d : positions.duplicate_keys())
         sink.error_at(d.second, d.path,
                       "duplicate key (also at line " + std::to_string(d.first.line) + ":" +
                           std::to_string(d.first.column) + "); only one would be kept",
@@ -183,7 +188,7 @@ std::optional<Level> parse_level(std::string_view text, DiagnosticSink& sink, Po
         return std::nullopt;
     }
     if (!format->is_string() || format->get<std::string>() != kFormatName) {
-        sink.error("format", "not a Killswitch level: format is " + json_text::quote(*format),
+        sink.error("format", "not a Killswitch level: format is " + jsonio::quote(*format),
                    "a level file has \"format\": \"killswitch-level\"");
         return std::nullopt;
     }
@@ -263,7 +268,7 @@ Result<Level> load_level_file(const std::filesystem::path& path, LoadReport* rep
 }
 
 std::string save_level_string(const Level& level) {
-    return json_text::write(write_level(level));
+    return jsonio::write_document(write_level(level));
 }
 
 Result<void> save_level_file(const std::filesystem::path& path, const Level& level) {

@@ -1,6 +1,8 @@
 #include "level/level_reader.h"
 
-#include "level/json_text.h"
+#include "jsonio/describe.h"
+#include "jsonio/number_text.h"
+#include "jsonio/suggest.h"
 
 #include <algorithm>
 #include <cctype>
@@ -12,20 +14,17 @@
 namespace ks::level {
 namespace {
 
+using jsonio::closest_match;
+using jsonio::describe_value;
+using jsonio::element_path;
+using jsonio::join;
+using jsonio::member_path;
+
 using Json = nlohmann::ordered_json;
 
 std::string lower(std::string s) {
     for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     return s;
-}
-
-std::string describe(const Json& value) {
-    if (value.is_string()) return "the string " + json_text::quote(value);
-    if (value.is_null()) return "null";
-    if (value.is_boolean()) return std::string("the boolean ") + (value.get<bool>() ? "true" : "false");
-    if (value.is_object()) return "an object";
-    if (value.is_array()) return "an array";
-    return "the number " + json_text::quote(value);
 }
 
 // A JSON number as a double. Strings such as "nan" or "inf" get their own message: JSON has no NaN, and a
@@ -56,12 +55,12 @@ bool read_double(const Json& value, const std::string& path, const std::string& 
         const std::string& raw = value.get_ref<const std::string&>();
         std::strtod(raw.c_str(), &end);
         if (!raw.empty() && end == raw.c_str() + raw.size()) {
-            sink.error(path, "number written as a string " + json_text::quote(value),
+            sink.error(path, "number written as a string " + jsonio::quote(value),
                        "remove the quotes; valid: " + valid);
             return false;
         }
     }
-    sink.error(path, "expected a number, found " + describe(value), "valid: " + valid);
+    sink.error(path, "expected a number, found " + describe_value(value), "valid: " + valid);
     return false;
 }
 
@@ -70,7 +69,7 @@ bool read_float(const Json& value, const std::string& path, const FieldInfo& inf
     double d = 0;
     if (!read_double(value, path, range_text(info), sink, d)) return false;
     if (std::fabs(d) > FLT_MAX) {
-        sink.error(path, json_text::format_number(d) + " is too large (beyond a 32-bit float)",
+        sink.error(path, jsonio::format_number(d) + " is too large (beyond a 32-bit float)",
                    "valid: " + range_text(info));
         return false;
     }
@@ -83,7 +82,7 @@ bool read_int(const Json& value, const std::string& path, const FieldInfo& info,
     double d = 0;
     if (!read_double(value, path, "whole numbers " + range_text(info), sink, d)) return false;
     if (d != std::floor(d) || d < INT_MIN || d > INT_MAX) {
-        sink.error(path, json_text::format_number(d) + " is not a whole number",
+        sink.error(path, jsonio::format_number(d) + " is not a whole number",
                    "valid: whole numbers " + range_text(info));
         return false;
     }
@@ -98,7 +97,8 @@ bool read_vec(const Json& value, const std::string& path, const FieldInfo& info,
     if (!value.is_array() || value.size() != N) {
         sink.error(path,
                    "expected an array of " + std::to_string(N) + " numbers " + kShapes[N] + ", found " +
-                       describe(value) + (value.is_array() ? " of " + std::to_string(value.size()) : ""),
+                       describe_value(value) +
+                       (value.is_array() ? " of " + std::to_string(value.size()) : ""),
                    "valid components: " + range_text(info));
         return false;
     }
@@ -119,7 +119,7 @@ int hex_digit(char c) {
 bool read_color(const Json& value, const std::string& path, DiagnosticSink& sink, Color& out) {
     const char* const kHint = "write a colour as \"#rrggbb\" in hex digits, e.g. \"#ffcc80\"";
     if (!value.is_string()) {
-        sink.error(path, "expected a colour string, found " + describe(value), kHint);
+        sink.error(path, "expected a colour string, found " + describe_value(value), kHint);
         return false;
     }
     const std::string& s = value.get_ref<const std::string&>();
@@ -127,7 +127,7 @@ bool read_color(const Json& value, const std::string& path, DiagnosticSink& sink
     bool ok = s.size() == 7 && s[0] == '#';
     for (int i = 0; ok && i < 6; ++i) ok = (digits[i] = hex_digit(s[static_cast<size_t>(i) + 1])) >= 0;
     if (!ok) {
-        sink.error(path, "bad colour " + json_text::quote(value), kHint);
+        sink.error(path, "bad colour " + jsonio::quote(value), kHint);
         return false;
     }
     out.r = static_cast<float>(digits[0] * 16 + digits[1]) / 255.0f;
@@ -138,7 +138,8 @@ bool read_color(const Json& value, const std::string& path, DiagnosticSink& sink
 
 bool read_string(const Json& value, const std::string& path, DiagnosticSink& sink, std::string& out) {
     if (!value.is_string()) {
-        sink.error(path, "expected a string, found " + describe(value), "put the text in double quotes");
+        sink.error(path, "expected a string, found " + describe_value(value),
+                   "put the text in double quotes");
         return false;
     }
     out = value.get<std::string>();
@@ -147,7 +148,7 @@ bool read_string(const Json& value, const std::string& path, DiagnosticSink& sin
 
 bool read_bool(const Json& value, const std::string& path, DiagnosticSink& sink, bool& out) {
     if (!value.is_boolean()) {
-        sink.error(path, "expected true or false, found " + describe(value), "valid: true, false");
+        sink.error(path, "expected true or false, found " + describe_value(value), "valid: true, false");
         return false;
     }
     out = value.get<bool>();
@@ -215,7 +216,7 @@ class FieldReader {
 
 bool expect_object(const Json& value, const std::string& path, std::string_view what, DiagnosticSink& sink) {
     if (value.is_object()) return true;
-    sink.error(path, "expected " + std::string(what) + " as an object {...}, found " + describe(value),
+    sink.error(path, "expected " + std::string(what) + " as an object {...}, found " + describe_value(value),
                "write it as {\"key\": value, ...}; docs/level-format.md lists every field");
     return false;
 }
@@ -274,13 +275,13 @@ std::optional<Entity> read_entity(const Json& json, const std::string& path, Dia
         EntityType t{};
         if (!type->is_string()) {
             sink.error(member_path(path, "type"),
-                       "expected the type name as a string, found " + describe(*type),
+                       "expected the type name as a string, found " + describe_value(*type),
                        "valid types: " + join(known_types));
         } else if (!type_from_name(type->get<std::string>(), t)) {
             std::string hint = "valid types: " + join(known_types);
             if (std::string near = closest_match(type->get<std::string>(), known_types); !near.empty())
                 hint = "did you mean \"" + near + "\"? " + hint;
-            sink.error(member_path(path, "type"), "unknown entity type " + json_text::quote(*type), hint);
+            sink.error(member_path(path, "type"), "unknown entity type " + jsonio::quote(*type), hint);
         } else {
             entity.props = default_props(t);
             typed = true;
@@ -333,7 +334,8 @@ ReadLevel read_level(const Json& document, DiagnosticSink& sink) {
         sink.error("entities", "missing required field \"entities\"",
                    "add \"entities\": [], which may be empty");
     } else if (!entities->is_array()) {
-        sink.error("entities", "expected \"entities\" to be an array [...], found " + describe(*entities),
+        sink.error("entities",
+                   "expected \"entities\" to be an array [...], found " + describe_value(*entities),
                    "write \"entities\": [ {...}, {...} ]");
     } else {
         level.entities.reserve(entities->size());

@@ -1,6 +1,6 @@
 #include "level/level_writer.h"
 
-#include "level/json_text.h"
+#include "jsonio/number_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 Json number(float v) {
-    return json_text::float_to_double(v);
+    return jsonio::float_to_double(v);
 }
 
 template <int N>

@@ -185,15 +185,3 @@ TEST_CASE("validate() reports problems of an in-memory file with JSON paths (the
     CHECK(issues[2].path.str() == "clips[2].phases[0].targets.tail");
     CHECK(issues[2].hint.find("arm_r") != std::string::npos);
 }
-
-TEST_CASE("JSON paths locate their values in the text") {
-    const std::string text = "{\n  \"a\": [1, {\"b\": \"x\"}],\n  \"a\": {\"c\": [true, null]}\n}";
-    CHECK(locate(text, JsonPath{}).line == 1);
-    auto pos = locate(text, JsonPath{} / "a" / "c");
-    CHECK(pos.line == 3); // duplicate keys: the last one, as the parser keeps it
-    CHECK(pos.column == 14);
-    CHECK(locate(text, (JsonPath{} / "a" / "c")[1]).column == 21);
-    CHECK(locate(text, JsonPath{} / "zzz").line == 0);
-    CHECK(locate(text, (JsonPath{} / "a")[0]).line == 0); // "a" is an object now
-    CHECK(((JsonPath{} / "clips")[2] / "phases").str() == "clips[2].phases");
-}

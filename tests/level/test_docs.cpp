@@ -1,8 +1,10 @@
 // docs/level-format.md documents every field: its tables are generated from the same visit() lists that
 // the loader uses, and this test fails when they drift apart. KS_WRITE_DOCS=1 rewrites the generated part.
 #include "core/files.h"
+#include "jsonio/json_writer.h"
+#include "jsonio/number_text.h"
+#include "jsonio/suggest.h"
 #include "level/diagnostics.h"
-#include "level/json_text.h"
 #include "level/level_io.h"
 #include "level/level_writer.h"
 #include "test_support.h"
@@ -35,7 +37,7 @@ class DocLister {
     void field(ks::Vec3&, const FieldInfo& info) { row(info, "[x, y, z]", range_text_of(info) + " each"); }
     void field(Color&, const FieldInfo& info) { row(info, "colour \"#rrggbb\"", ""); }
     void field(Choice& choice, const FieldInfo& info) {
-        row(info, "one of " + join(choice.options, ", "), "");
+        row(info, "one of " + ks::jsonio::join(choice.options, ", "), "");
     }
     std::string table() const {
         return "| field | value | default | range | unit | meaning |\n|---|---|---|---|---|---|\n" + rows_;
@@ -43,12 +45,11 @@ class DocLister {
 
   private:
     static std::string range_text_of(const FieldInfo& info) {
-        return ks::level::json_text::format_readable(info.min) + " .. " +
-               ks::level::json_text::format_readable(info.max);
+        return ks::jsonio::format_readable(info.min) + " .. " + ks::jsonio::format_readable(info.max);
     }
     void row(const FieldInfo& info, const std::string& kind, const std::string& range) {
         std::string fallback =
-            defaults_.contains(info.name) ? ks::level::json_text::write(defaults_[info.name]) : "";
+            defaults_.contains(info.name) ? ks::jsonio::write_document(defaults_[info.name]) : "";
         if (!fallback.empty() && fallback.back() == '\n') fallback.pop_back();
         rows_ += "| " + code(info.name) + " | " + kind + " | " + code(fallback) + " | " + range + " | " +
                  info.unit + " | " + info.tooltip + " |\n";

@@ -1,7 +1,7 @@
 // Saving is deterministic and exact: load -> save -> load -> save is byte-identical, floats print in their
 // shortest round-trip form, and the text layout is the documented one.
 #include "core/files.h"
-#include "level/json_text.h"
+#include "jsonio/number_text.h"
 #include "level/level_io.h"
 #include "level_builders.h"
 #include "test_support.h"
@@ -28,8 +28,8 @@ Level load_ok(const std::string& text, const char* name = "test.json") {
 } // namespace
 
 TEST_CASE("floats print in their shortest round-trip form") {
-    using json_text::float_to_double;
-    using json_text::format_number;
+    using ks::jsonio::float_to_double;
+    using ks::jsonio::format_number;
     CHECK(format_number(float_to_double(0.8f)) == "0.8");
     CHECK(format_number(float_to_double(0.1f)) == "0.1");
     CHECK(format_number(float_to_double(13.264f)) == "13.264");

@@ -1,4 +1,4 @@
-#include "level/json_positions.h"
+#include "jsonio/position_map.h"
 
 #include <algorithm>
 #include <cctype>
@@ -6,33 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-namespace ks::level {
-
-std::string member_path(const std::string& parent, std::string_view key) {
-    std::string out = parent;
-    if (!out.empty()) out += '.';
-    out += key;
-    return out;
-}
-
-std::string element_path(const std::string& parent, size_t index) {
-    return parent + "[" + std::to_string(index) + "]";
-}
-
-TextPosition position_of_offset(std::string_view text, size_t offset) {
-    if (offset > text.size()) offset = text.size();
-    TextPosition pos{1, 1};
-    for (size_t i = 0; i < offset; ++i) {
-        const auto c = static_cast<unsigned char>(text[i]);
-        if (c == '\n') {
-            ++pos.line;
-            pos.column = 1;
-        } else if ((c & 0xC0) != 0x80) { // count code points, not UTF-8 continuation bytes
-            ++pos.column;
-        }
-    }
-    return pos;
-}
+namespace ks::jsonio {
 
 // A recursive-descent walk over the text that tracks line and column as it goes (one pass, no
 // backtracking). The current path lives in one buffer that grows and shrinks as the walk goes in and out.
@@ -51,7 +25,7 @@ class PositionScanner {
 
     std::string_view text_;
     PositionMap& map_;
-    size_t at_ = 0;
+    std::size_t at_ = 0;
     TextPosition pos_{1, 1};
     std::string path_;
 
@@ -59,10 +33,12 @@ class PositionScanner {
     bool done() const { return at_ >= text_.size(); }
     char peek() const { return done() ? '\0' : text_[at_]; }
 
-    void record(TextPosition pos) {
-        map_.entries_.push_back(
-            {static_cast<std::uint32_t>(map_.arena_.size()), static_cast<std::uint32_t>(path_.size()), pos});
+    // Records the current path; returns its entry so that a member's value position can follow its key's.
+    std::size_t record(TextPosition pos) {
+        map_.entries_.push_back({static_cast<std::uint32_t>(map_.arena_.size()),
+                                 static_cast<std::uint32_t>(path_.size()), pos, pos});
         map_.arena_ += path_;
+        return map_.entries_.size() - 1;
     }
 
     void advance() {
@@ -130,7 +106,7 @@ class PositionScanner {
         } else if (c == '"') {
             string_token();
         } else {
-            const size_t start = at_;
+            const std::size_t start = at_;
             const TextPosition start_pos = here();
             while (!done() && peek() != ',' && peek() != '}' && peek() != ']' && peek() != ' ' &&
                    peek() != '\n' && peek() != '\t' && peek() != '\r')
@@ -139,7 +115,7 @@ class PositionScanner {
         }
     }
 
-    void note_overflow(TextPosition pos, size_t start, size_t length) {
+    void note_overflow(TextPosition pos, std::size_t start, std::size_t length) {
         if (length < 4 || length > 400) return; // nothing shorter than "1e39" leaves the range of a double
         const std::string token(text_.substr(start, length));
         if (!(std::isdigit(static_cast<unsigned char>(token[0])) || token[0] == '-')) return;
@@ -154,7 +130,7 @@ class PositionScanner {
         skip_space();
         std::vector<std::pair<std::string, TextPosition>>
             keys; // objects are small: a linear check is fastest
-        const size_t base = path_.size();
+        const std::size_t base = path_.size();
         while (!done() && peek() != '}') {
             const TextPosition key_pos = here();
             std::string key = string_token();
@@ -165,10 +141,11 @@ class PositionScanner {
                 map_.duplicates_.push_back({path_, seen->second, key_pos});
             else
                 keys.emplace_back(std::move(key), key_pos);
-            record(key_pos);
+            const std::size_t entry = record(key_pos);
             skip_space();
             if (peek() == ':') advance();
             skip_space();
+            map_.entries_[entry].value = here();
             value(depth + 1);
             path_.resize(base);
             skip_space();
@@ -182,14 +159,14 @@ class PositionScanner {
     void array(int depth) {
         advance(); // [
         skip_space();
-        const size_t base = path_.size();
+        const std::size_t base = path_.size();
         char index[24];
-        size_t count = 0;
+        std::size_t count = 0;
         while (!done() && peek() != ']') {
             const int n = std::snprintf(index, sizeof(index), "[%zu]", count++);
-            path_.append(index, static_cast<size_t>(n));
+            path_.append(index, static_cast<std::size_t>(n));
             record(here());
-            const size_t before = at_;
+            const std::size_t before = at_;
             value(depth + 1);
             path_.resize(base);
             skip_space();
@@ -209,26 +186,63 @@ PositionMap PositionMap::scan(std::string_view text) {
     return map;
 }
 
-TextPosition PositionMap::find(const std::string& path) const {
+std::pair<std::size_t, std::size_t> PositionMap::occurrences(std::string_view path) const {
     if (sorted_.size() != entries_.size()) {
         sorted_.resize(entries_.size());
         for (std::uint32_t i = 0; i < sorted_.size(); ++i) sorted_[i] = i;
-        // Stable: for a duplicated key the first occurrence is found, like the earlier position in messages.
+        // Stable: the occurrences of one path stay in document order.
         std::stable_sort(sorted_.begin(), sorted_.end(), [&](std::uint32_t a, std::uint32_t b) {
             return path_of(entries_[a]) < path_of(entries_[b]);
         });
     }
+    const auto first =
+        std::lower_bound(sorted_.begin(), sorted_.end(), path,
+                         [&](std::uint32_t i, std::string_view p) { return path_of(entries_[i]) < p; });
+    const auto last = std::upper_bound(first, sorted_.end(), path, [&](std::string_view p, std::uint32_t i) {
+        return p < path_of(entries_[i]);
+    });
+    return {static_cast<std::size_t>(first - sorted_.begin()),
+            static_cast<std::size_t>(last - sorted_.begin())};
+}
+
+namespace {
+// "a.b[2]" -> "a.b" -> "a" -> "".
+std::string_view parent_path(std::string_view path) {
+    const std::size_t cut = path.find_last_of(".[");
+    return cut == std::string_view::npos ? std::string_view() : path.substr(0, cut);
+}
+} // namespace
+
+TextPosition PositionMap::find(const std::string& path) const {
     std::string_view probe = path;
     while (true) {
-        auto it =
-            std::lower_bound(sorted_.begin(), sorted_.end(), probe,
-                             [&](std::uint32_t i, std::string_view p) { return path_of(entries_[i]) < p; });
-        if (it != sorted_.end() && path_of(entries_[*it]) == probe) return entries_[*it].position;
+        const auto [first, last] = occurrences(probe);
+        if (first != last) return entries_[sorted_[first]].key;
         if (probe.empty()) return {};
-        // Strip the last component: "a.b[2]" -> "a.b" -> "a" -> "".
-        const size_t cut = probe.find_last_of(".[");
-        probe = cut == std::string_view::npos ? std::string_view() : probe.substr(0, cut);
+        probe = parent_path(probe);
     }
 }
 
-} // namespace ks::level
+TextPosition PositionMap::find_value(const std::string& path) const {
+    const auto [first, last] = occurrences(path);
+    if (first == last) return {};
+    const std::uint32_t found = sorted_[last - 1];
+    // The path must lie inside the last occurrence of each ancestor: with {"a": [1], "a": {}} the parser
+    // keeps the object, so "a[0]" is not in the document even though the text holds it. Entries are in
+    // document order, so "inside" is "after the ancestor's last occurrence".
+    std::uint32_t inner = found;
+    std::string_view ancestor = path;
+    while (!ancestor.empty()) {
+        ancestor = parent_path(ancestor);
+        const auto [a_first, a_last] = occurrences(ancestor);
+        if (a_first == a_last || sorted_[a_last - 1] > inner) return {};
+        inner = sorted_[a_last - 1];
+    }
+    return entries_[found].value;
+}
+
+TextPosition locate(std::string_view text, const JsonPath& path) {
+    return PositionMap::scan(text).find_value(path.str());
+}
+
+} // namespace ks::jsonio

@@ -1,9 +1,9 @@
-// The position map that lets semantic errors point at line:column.
-#include "level/json_positions.h"
+// The position map that lets problems found after parsing point at line:column.
+#include "jsonio/position_map.h"
 
 #include <doctest/doctest.h>
 
-using namespace ks::level;
+using namespace ks::jsonio;
 
 TEST_CASE("position_of_offset counts lines and characters, not bytes") {
     const std::string text = "ab\ncd\n\xc3\xa9x"; // "é" is two bytes, one column
