@@ -85,7 +85,7 @@ struct WalkGrid {
         return Vec2(origin.x + (static_cast<float>(c) + 0.5f) * cell,
                     origin.z + (static_cast<float>(r) + 0.5f) * cell);
     }
-    // The cells whose columns `b`, grown by `grow` on X and Z, reaches.
+    // The cells that `b`, grown by `grow` on X and Z, covers.
     void cell_range(const Aabb& b, float grow, int& c0, int& c1, int& r0, int& r1) const {
         c0 = std::max(0, static_cast<int>(std::floor((b.min.x - grow - origin.x) / cell)));
         c1 = std::min(cols - 1, static_cast<int>(std::floor((b.max.x + grow - origin.x) / cell)));
