@@ -60,7 +60,7 @@ enum class ScriptOp {
     ExpectClean,
 };
 
-// One parsed line. Which members matter depends on op (see script.cpp's parser).
+// One parsed line. Which members matter depends on op (see script_parser.cpp).
 struct ScriptStep {
     ScriptOp op = ScriptOp::New;
     int line = 0;
