@@ -55,6 +55,18 @@ int Rig::find(std::string_view name) const {
     return -1;
 }
 
+Rig Rig::with_rest_from(const Rig& model) const {
+    Rig out = *this;
+    for (RigNode& node : out.nodes_) {
+        const int source = model.find(node.name);
+        if (source < 0) continue;
+        node.rest_position = model.node(source).rest_position;
+        node.rest_euler = model.node(source).rest_euler;
+        node.rest_scale = model.node(source).rest_scale;
+    }
+    return out;
+}
+
 void Pose::resize(int node_count) {
     auto n = static_cast<std::size_t>(node_count);
     euler.assign(n, Vec3(0));
@@ -75,13 +87,17 @@ void Pose::update_rotations() {
     for (std::size_t i = 0; i < euler.size(); ++i) rotation[i] = euler_xyz_to_quat(euler[i]);
 }
 
+Mat4 local_matrix(const Rig& rig, const Pose& pose, int index) {
+    const auto k = static_cast<std::size_t>(index);
+    return glm::translate(Mat4(1), pose.position[k]) * glm::mat4_cast(pose.rotation[k]) *
+           glm::scale(Mat4(1), rig.node(index).rest_scale);
+}
+
 void compute_world(const Rig& rig, const Pose& pose, std::span<Mat4> out, const Mat4& root_parent) {
     for (int i = 0; i < rig.size() && i < static_cast<int>(out.size()); ++i) {
-        const auto k = static_cast<std::size_t>(i);
-        Mat4 local = glm::translate(Mat4(1), pose.position[k]) * glm::mat4_cast(pose.rotation[k]) *
-                     glm::scale(Mat4(1), rig.node(i).rest_scale);
-        int parent = rig.node(i).parent;
-        out[k] = (parent < 0 ? root_parent : out[static_cast<std::size_t>(parent)]) * local;
+        const int parent = rig.node(i).parent;
+        out[static_cast<std::size_t>(i)] =
+            (parent < 0 ? root_parent : out[static_cast<std::size_t>(parent)]) * local_matrix(rig, pose, i);
     }
 }
 

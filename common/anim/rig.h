@@ -1,8 +1,8 @@
 #pragma once
 // A rig is a model's named node hierarchy: names, parent indices (parents before children) and each node's
-// rest local transform. The renderer fills one from the glTF model; headless code (tests, the game server
-// side, benchmarks) builds the same rig from the clip file's "rig" list. A Pose holds one local transform
-// per node, in arrays sized once, so evaluating animations allocates nothing per frame.
+// rest local transform. Models' rigs are read by anim/gltf_rig.h; the clip file's "rig" list gives the same
+// names and hierarchy without a model. A Pose holds one local transform per node, in arrays sized once, so
+// evaluating animations allocates nothing per frame.
 #include "core/math.h"
 #include "core/result.h"
 
@@ -34,6 +34,8 @@ class Rig {
     const RigNode& node(int index) const { return nodes_[static_cast<std::size_t>(index)]; }
     std::span<const RigNode> nodes() const { return nodes_; }
     int find(std::string_view name) const; // -1 if absent
+    // This rig with the rest transforms of the nodes `model` has under the same names (others keep theirs).
+    Rig with_rest_from(const Rig& model) const;
 
   private:
     std::vector<RigNode> nodes_;
@@ -52,6 +54,9 @@ struct Pose {
     // Recomputes `rotation` from `euler`.
     void update_rotations();
 };
+
+// Node `index`'s local matrix in `pose`: translation * rotation * the rig's rest scale.
+Mat4 local_matrix(const Rig& rig, const Pose& pose, int index);
 
 // World matrices of every node (out.size() == rig.size()), given the root's parent transform.
 void compute_world(const Rig& rig, const Pose& pose, std::span<Mat4> out, const Mat4& root_parent = Mat4(1));

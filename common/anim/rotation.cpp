@@ -6,6 +6,11 @@
 
 namespace ks::anim {
 
+namespace {
+// Below this |cos y| the x and z columns hold only the rounding noise of a float quaternion.
+constexpr double kGimbalLockCosine = 1e-6;
+} // namespace
+
 Quat euler_xyz_to_quat(const Vec3& e) {
     const float c1 = std::cos(e.x * 0.5f), s1 = std::sin(e.x * 0.5f);
     const float c2 = std::cos(e.y * 0.5f), s2 = std::sin(e.y * 0.5f);
@@ -18,20 +23,21 @@ Quat euler_xyz_to_quat(const Vec3& e) {
 }
 
 Vec3 quat_to_euler_xyz(const Quat& q) {
-    const Mat3 m = glm::mat3_cast(glm::normalize(q)); // column-major: m[col][row]
-    const float m11 = m[0][0], m12 = m[1][0], m13 = m[2][0];
-    const float m22 = m[1][1], m23 = m[2][1];
-    const float m32 = m[1][2], m33 = m[2][2];
-    Vec3 e;
-    e.y = std::asin(std::clamp(m13, -1.0f, 1.0f));
-    if (std::abs(m13) < 0.9999999f) {
-        e.x = std::atan2(-m23, m33);
-        e.z = std::atan2(-m12, m11);
-    } else {
-        e.x = std::atan2(m32, m22);
-        e.z = 0;
+    // In double, and y from atan2 rather than asin: asin loses half the digits next to +-90 degrees.
+    const glm::dmat3 m = glm::mat3_cast(glm::normalize(glm::dquat(q.w, q.x, q.y, q.z))); // m[col][row]
+    const double m11 = m[0][0], m12 = m[1][0], m13 = m[2][0];
+    const double m22 = m[1][1], m23 = m[2][1];
+    const double m32 = m[1][2], m33 = m[2][2];
+    const double cos_y = std::hypot(m11, m12);
+    double x = 0, z = 0;
+    const double y = std::atan2(m13, cos_y);
+    if (cos_y > kGimbalLockCosine) {
+        x = std::atan2(-m23, m33);
+        z = std::atan2(-m12, m11);
+    } else { // gimbal lock: only x + z (or x - z) is defined; three.js puts it all in x
+        x = std::atan2(m32, m22);
     }
-    return e;
+    return Vec3(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z));
 }
 
 float wrap_angle(float radians) {

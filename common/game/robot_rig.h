@@ -1,8 +1,7 @@
 #pragma once
-// The robot's rig with the model's true joint offsets, read headless from the generated glTF (plain JSON:
-// node names and rest translation/rotation/scale; no assimp, no GL), so robot shots leave from the real
-// hand_r_tip. The clip file's rig supplies names and parents; the model overrides rest transforms of the
-// nodes it has.
+// The robot's rig with the model's true joint offsets, read headless from the generated glTF through
+// anim/gltf_rig.h (the reader the editor uses too), so robot shots leave from the real hand_r_tip. The clip
+// file's rig supplies names and parents; the model overrides rest transforms of the nodes it has.
 #include "anim/clip_io.h"
 #include "core/result.h"
 

@@ -19,6 +19,13 @@ int Model::find_node(std::string_view name) const {
     return -1;
 }
 
+std::vector<std::string> Model::node_names() const {
+    std::vector<std::string> names;
+    names.reserve(nodes.size());
+    for (const auto& n : nodes) names.push_back(n.name);
+    return names;
+}
+
 ModelPose Model::rest_pose() const {
     ModelPose pose;
     pose.local.reserve(nodes.size());

@@ -42,7 +42,8 @@ class Model {
     Aabb bounds; // of the rest pose, in model space
     bool placeholder = false;
 
-    int find_node(std::string_view name) const; // -1 when absent
+    int find_node(std::string_view name) const;  // -1 when absent
+    std::vector<std::string> node_names() const; // in node order: what anim::RigBinding maps a rig onto
     ModelPose rest_pose() const;
     // World transforms of every node for `root` and `pose` into `out` (resized; reuse it to avoid
     // allocating).

@@ -1,45 +1,20 @@
 #include "ui/dojo_panel.h"
 
-#include "anim/rotation.h"
+#include "anim/gltf_rig.h"
 #include "core/paths.h"
 #include "model/dojo_keys.h"
 #include "render/mesh_data.h"
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <imgui.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <set>
 
 namespace ks::editor::ui {
 
 namespace {
 constexpr float kDojoBar = 190.0f; // transport, timeline and transition tester under the preview
-
-// The rig the renderer's robot model has: its nodes in order, rest transforms decomposed into the
-// translation / Euler XYZ / scale the clips animate. Unnamed or repeated node names get unique stand-ins.
-Result<anim::Rig> rig_from_model(const render::Model& model) {
-    std::vector<anim::RigNode> nodes;
-    std::set<std::string> used;
-    for (size_t i = 0; i < model.nodes.size(); ++i) {
-        const auto& n = model.nodes[i];
-        anim::RigNode r;
-        r.name = n.name;
-        if (r.name.empty() || used.count(r.name)) r.name = "_node" + std::to_string(i) + "_" + n.name;
-        used.insert(r.name);
-        r.parent = n.parent;
-        r.rest_position = Vec3(n.local[3]);
-        Mat3 m(n.local);
-        r.rest_scale = Vec3(glm::length(m[0]), glm::length(m[1]), glm::length(m[2]));
-        for (int c = 0; c < 3; ++c)
-            if (r.rest_scale[c] > 0) m[c] /= r.rest_scale[c];
-        r.rest_euler = anim::quat_to_euler_xyz(glm::quat_cast(m));
-        nodes.push_back(std::move(r));
-    }
-    return anim::Rig::create(std::move(nodes));
-}
 
 const char* loop_name(anim::LoopMode m) {
     return m == anim::LoopMode::Loop ? "loop" : m == anim::LoopMode::Next ? "next" : "once";
@@ -75,12 +50,13 @@ void DojoPanel::load(const LogFn* log) {
         return;
     }
     file_ = std::move(*file);
-    auto rig = rig_from_model(*model_);
+    auto rig = anim::load_gltf_rig(model_->path);
     if (!rig) {
         compile_error_ = "robot model: " + rig.error().str();
         return;
     }
     rig_ = std::move(*rig);
+    binding_ = anim::RigBinding(rig_, model_->node_names());
     model_pose_ = model_->rest_pose();
     dirty_ = false;
     recompile();
@@ -124,15 +100,7 @@ void DojoPanel::restart_at(double seconds) {
 }
 
 void DojoPanel::evaluate_pose() {
-    if (!player_ || !model_) return;
-    const anim::Pose& pose = player_->pose();
-    const int n = std::min(pose.size(), static_cast<int>(model_pose_.local.size()));
-    for (int i = 0; i < n; ++i) {
-        const auto& node = rig_.node(i);
-        model_pose_.local[static_cast<size_t>(i)] =
-            glm::translate(Mat4(1.0f), pose.position[static_cast<size_t>(i)]) *
-            glm::mat4_cast(pose.rotation[static_cast<size_t>(i)]) * glm::scale(Mat4(1.0f), node.rest_scale);
-    }
+    if (player_) binding_.write_locals(player_->pose(), model_pose_.local);
 }
 
 void DojoPanel::render(float width, float height, double dt) {

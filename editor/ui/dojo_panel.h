@@ -6,6 +6,7 @@
 // atomic), the file the runtime's Dojo and robots load.
 #include "anim/clip_io.h"
 #include "anim/player.h"
+#include "anim/rig_binding.h"
 #include "model/dojo_keys.h"
 #include "render/asset_library.h"
 #include "render/debug_draw.h"
@@ -67,7 +68,8 @@ class DojoPanel {
     anim::AnimationFile file_;
     std::vector<anim::Issue> issues_;
     std::string compile_error_;
-    anim::Rig rig_;
+    anim::Rig rig_;            // the robot model's, from its glTF
+    anim::RigBinding binding_; // rig_ onto model_'s nodes
     anim::ClipSet clips_;
     std::unique_ptr<anim::Player> player_;
     bool loaded_ = false;

@@ -20,29 +20,6 @@ level::Level static_part(const level::Level& level) {
     return out;
 }
 
-RigBinding::RigBinding(const anim::Rig& rig, const render::Model& model) : rig_(&rig), model_(&model) {
-    model_node_of_rig_.assign(static_cast<std::size_t>(rig.size()), -1);
-    for (int i = 0; i < rig.size(); ++i) {
-        model_node_of_rig_[static_cast<std::size_t>(i)] = model.find_node(rig.node(i).name);
-        if (model_node_of_rig_[static_cast<std::size_t>(i)] >= 0) ++mapped_;
-    }
-}
-
-void RigBinding::apply(const anim::Pose& pose, render::ModelPose& out) const {
-    if (!model_) return;
-    out.local.resize(model_->nodes.size());
-    for (std::size_t i = 0; i < model_->nodes.size(); ++i) out.local[i] = model_->nodes[i].local;
-    const int n = std::min(pose.size(), rig_->size());
-    for (int i = 0; i < n; ++i) {
-        const int m = model_node_of_rig_[static_cast<std::size_t>(i)];
-        if (m < 0) continue;
-        const auto k = static_cast<std::size_t>(i);
-        out.local[static_cast<std::size_t>(m)] = glm::translate(Mat4(1.0f), pose.position[k]) *
-                                                 glm::mat4_cast(pose.rotation[k]) *
-                                                 glm::scale(Mat4(1.0f), rig_->node(i).rest_scale);
-    }
-}
-
 std::unique_ptr<WorldView> WorldView::build(const level::Level& level, const game::Game& game,
                                             render::AssetLibrary& assets) {
     auto view = std::unique_ptr<WorldView>(new WorldView());
@@ -53,7 +30,7 @@ std::unique_ptr<WorldView> WorldView::build(const level::Level& level, const gam
     view->pickup_models_[0] = &assets.model("pickup_health");
     view->pickup_models_[1] = &assets.model("pickup_ammo");
     view->pickup_models_[2] = &assets.model("pickup_shield");
-    view->robot_binding_ = RigBinding(game.animations().rig, *view->robot_model_);
+    view->robot_binding_ = anim::RigBinding(game.animations().rig, view->robot_model_->node_names());
     view->robot_pose_ = view->robot_model_->rest_pose();
     view->emitters_.reserve(64);
     view->emitter_list_.reserve(64);
@@ -182,7 +159,7 @@ void WorldView::fill(const game::Game& game, float alpha, float fov_degrees, con
             have ? glm::mix(previous_.robot_feet[i], current_.robot_feet[i], a) : robots[i].feet;
         const float yaw = have ? current_.robot_yaw[i] : robots[i].yaw;
         const Mat4 root = level::robot_model_matrix(feet, yaw);
-        robot_binding_.apply(game.robot_pose(i), robot_pose_);
+        robot_binding_.write_locals(game.robot_pose(i), robot_pose_.local);
         // A robot just hit glows (its emissive parts flare) for the hit flash.
         const float glow = 1.0f + 4.0f * std::clamp(robots[i].hit_flash / 0.2f, 0.0f, 1.0f);
         robot_model_->emit(root, robot_pose_, scratch_, instances_, glow);
@@ -190,7 +167,7 @@ void WorldView::fill(const game::Game& game, float alpha, float fov_degrees, con
     if (dummy && dummy->pose) {
         const Mat4 root =
             glm::rotate(glm::translate(Mat4(1.0f), dummy->feet), dummy->model_yaw, Vec3(0, 1, 0));
-        robot_binding_.apply(*dummy->pose, robot_pose_);
+        robot_binding_.write_locals(*dummy->pose, robot_pose_.local);
         robot_model_->emit(root, robot_pose_, scratch_, instances_);
     }
     // Pickups float and spin around the game's trigger centre.

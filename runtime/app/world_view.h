@@ -5,7 +5,7 @@
 // impacts, explosions). Positions are interpolated between the last two fixed steps.
 // Robots, pickups and cylinders are taken out of the level before the LevelScene is built: they move or
 // disappear, so this view draws them from the game's state instead.
-#include "anim/rig.h"
+#include "anim/rig_binding.h"
 #include "game/game.h"
 #include "level/level.h"
 #include "render/asset_library.h"
@@ -21,22 +21,6 @@ namespace ks::runtime {
 
 // The level without the entities the game owns the look of (robots, pickups, gas cylinders).
 level::Level static_part(const level::Level& level);
-
-// Maps a rig's nodes onto a model's nodes by name, once; then writes a pose into the model's node locals.
-class RigBinding {
-  public:
-    RigBinding() = default;
-    RigBinding(const anim::Rig& rig, const render::Model& model);
-    // Rest locals for unmapped model nodes, the pose's T·R·S for mapped ones.
-    void apply(const anim::Pose& pose, render::ModelPose& out) const;
-    int mapped() const { return mapped_; }
-
-  private:
-    const anim::Rig* rig_ = nullptr;
-    const render::Model* model_ = nullptr;
-    std::vector<int> model_node_of_rig_; // -1 when the model lacks the node
-    int mapped_ = 0;
-};
 
 // The Dojo's test robot: where it stands (from its level entity) and the pose the DojoController gives.
 struct DojoDummy {
@@ -70,7 +54,7 @@ class WorldView {
     const render::Model* cylinder_model_ = nullptr;
     const render::Model* rifle_ = nullptr;
     const render::Model* pickup_models_[3] = {nullptr, nullptr, nullptr};
-    RigBinding robot_binding_;
+    anim::RigBinding robot_binding_; // the game's robot rig onto robot_model_'s nodes
     render::ModelPose robot_pose_;
 
     struct Snapshot {

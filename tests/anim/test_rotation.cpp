@@ -31,6 +31,36 @@ TEST_CASE("quaternion to Euler XYZ inverts the conversion, including near gimbal
     }
 }
 
+TEST_CASE(
+    "Euler XYZ -> quaternion -> Euler XYZ gives the same angles, and the same rotation at gimbal lock") {
+    // Angles in the canonical ranges come back themselves, including the range ends and near-lock pitches.
+    const float hard[] = {0.0f, 1e-7f, -1e-7f, 0.5f, -2.9f, kPi - 1e-4f, -kPi + 1e-4f};
+    const float pitches[] = {0.0f, 1e-7f, 0.7f, -1.2f, kPi / 2 - 1e-2f, -kPi / 2 + 1e-2f};
+    for (float x : hard)
+        for (float y : pitches)
+            for (float z : hard) {
+                const Vec3 e(x, y, z), back = quat_to_euler_xyz(euler_xyz_to_quat(e));
+                CAPTURE(e);
+                CAPTURE(back);
+                CHECK(std::abs(wrap_angle(back.x - x)) < 2e-4f);
+                CHECK(std::abs(back.y - y) < 1e-6f);
+                CHECK(std::abs(wrap_angle(back.z - z)) < 2e-4f);
+            }
+    // At +-90 degrees of pitch x and z turn about the same axis; only their sum (or difference) is defined.
+    for (float y : {kPi / 2, -kPi / 2, kPi / 2 - 1e-7f, -kPi / 2 + 1e-7f})
+        for (float x : hard)
+            for (float z : {0.0f, 0.4f, -2.0f, kPi}) {
+                const Vec3 e(x, y, z), back = quat_to_euler_xyz(euler_xyz_to_quat(e));
+                CAPTURE(e);
+                CAPTURE(back);
+                CHECK(std::abs(back.y - y) < 1e-3f);
+                CHECK(back.z == 0.0f);
+                const float combined = y > 0 ? x + z : x - z;
+                CHECK(std::abs(wrap_angle(back.x - combined)) < 1e-3f);
+                CHECK(angle_between(euler_xyz_to_quat(back), euler_xyz_to_quat(e)) < 1e-5f);
+            }
+}
+
 TEST_CASE("wrap_angle keeps the rotation and lands in (-pi, pi]") {
     CHECK(wrap_angle(0.5f) == doctest::Approx(0.5f));
     CHECK(wrap_angle(4 * kPi) == doctest::Approx(0.0f).epsilon(1e-5));
