@@ -342,7 +342,6 @@ bool DojoPanel::redo() {
 void DojoPanel::key_table(const LogFn& log) {
     if (static_cast<size_t>(clip_) >= file_.clips.size()) return;
     anim::ClipDef& def = file_.clips[static_cast<size_t>(clip_)];
-    bool edited = false;
     if (!ImGui::IsAnyItemActive()) edit_open_ = false; // a dragged field is one undo step
     ImGui::Text("Clip '%s': %s, %zu phases, %.2f s", def.name.c_str(), loop_name(def.loop), def.phases.size(),
                 def.duration());
@@ -360,6 +359,29 @@ void DojoPanel::key_table(const LogFn& log) {
         return; // the phase list changed under this frame's references: draw the table next frame
     }
     anim::PhaseDef& phase = def.phases[static_cast<size_t>(selected_phase_)];
+    bool edited = phase_timing(phase);
+    std::string remove_node; // a key to remove, applied after the table (the rows reference the targets)
+    edited |= target_rows(phase, remove_node);
+    const auto clip_index = static_cast<std::size_t>(clip_),
+               phase_index = static_cast<std::size_t>(selected_phase_);
+    if (!remove_node.empty()) {
+        history_.record(file_, "remove key " + remove_node);
+        if (auto r = remove_node_key(file_, clip_index, phase_index, remove_node); !r)
+            log("dojo: " + r.error().str(), true);
+        else
+            edited = true;
+    }
+    edited |= add_key_row(log);
+    if (edited) {
+        dirty_ = true;
+        recompile();
+    }
+    save_row(log);
+}
+
+// The selected key's duration and easing (with its curve); true when either changed.
+bool DojoPanel::phase_timing(anim::PhaseDef& phase) {
+    bool edited = false;
     ImGui::BeginGroup();
     float duration = static_cast<float>(phase.duration);
     ImGui::SetNextItemWidth(120);
@@ -380,7 +402,12 @@ void DojoPanel::key_table(const LogFn& log) {
     ImGui::SameLine();
     curve(phase.ease, 96.0f);
 
-    std::string remove_node; // a key to remove, applied after the table (the rows reference the targets)
+    return edited;
+}
+
+// One row per keyed node: rotation, position offset, mode and a remove button (`remove_node` names it).
+bool DojoPanel::target_rows(anim::PhaseDef& phase, std::string& remove_node) {
+    bool edited = false;
     if (ImGui::BeginTable("targets", 5,
                           ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
                               ImGuiTableFlags_SizingStretchProp,
@@ -428,15 +455,14 @@ void DojoPanel::key_table(const LogFn& log) {
         }
         ImGui::EndTable();
     }
+    return edited;
+}
+
+// The node combo and "Add key" button; true when a key was added.
+bool DojoPanel::add_key_row(const LogFn& log) {
+    bool edited = false;
     const auto clip_index = static_cast<std::size_t>(clip_),
                phase_index = static_cast<std::size_t>(selected_phase_);
-    if (!remove_node.empty()) {
-        history_.record(file_, "remove key " + remove_node);
-        if (auto r = remove_node_key(file_, clip_index, phase_index, remove_node); !r)
-            log("dojo: " + r.error().str(), true);
-        else
-            edited = true;
-    }
     const auto free_nodes = unkeyed_nodes(file_, clip_index, phase_index);
     add_node_ = std::clamp(add_node_, 0, std::max(0, static_cast<int>(free_nodes.size()) - 1));
     ImGui::BeginDisabled(free_nodes.empty());
@@ -464,10 +490,11 @@ void DojoPanel::key_table(const LogFn& log) {
         ImGui::SetTooltip(
             "Key this node in this phase (holds its pose until you edit the key); Ctrl+Z undoes");
     ImGui::EndDisabled();
-    if (edited) {
-        dirty_ = true;
-        recompile();
-    }
+    return edited;
+}
+
+// The clip file's problems, Save (disabled while it has any) and Reload.
+void DojoPanel::save_row(const LogFn& log) {
     for (const auto& issue : issues_)
         ImGui::TextColored(ImVec4(1, 0.4f, 0.35f, 1), "%s: %s (%s)", issue.path.str().c_str(),
                            issue.message.c_str(), issue.hint.c_str());

@@ -54,6 +54,10 @@ class DojoPanel {
     void evaluate_pose();
     void timeline(float width);
     void key_table(const LogFn& log);
+    bool phase_timing(anim::PhaseDef& phase);
+    bool target_rows(anim::PhaseDef& phase, std::string& remove_node);
+    bool add_key_row(const LogFn& log);
+    void save_row(const LogFn& log);
     // Duplicate / Remove / Earlier / Later for the shown key (phase); true when the file changed.
     bool phase_buttons(const LogFn& log);
     void transition_tester();
