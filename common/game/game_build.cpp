@@ -292,7 +292,6 @@ Result<void> Game::build(const level::Level& level) {
     player_.ammo = settings_.start_ammo;
     player_.recoil = 10.0f;
     events_.reserve(64);
-    ray_hits_.reserve(64);
     world_.build_static();
     return ok();
 }

@@ -15,7 +15,7 @@ namespace ks::physics {
 
 namespace {
 constexpr std::uint32_t kNone = 0xffffffffu;
-bool contains(const Aabb& outer, const Aabb& inner) {
+bool contains(const geometry::Aabb& outer, const geometry::Aabb& inner) {
     return outer.min.x <= inner.min.x && outer.min.y <= inner.min.y && outer.min.z <= inner.min.z &&
            inner.max.x <= outer.max.x && inner.max.y <= outer.max.y && inner.max.z <= outer.max.z;
 }
@@ -30,7 +30,7 @@ class World::Obstacles final : public ObstacleSource {
     std::uint32_t self = kNone;
     std::uint32_t mask = 0;
     StaticCache* cache = nullptr; // the character's static neighbourhood (null: query the BVH directly)
-    void gather(const Aabb& region, std::vector<Obstacle>& out) const override {
+    void gather(const geometry::Aabb& region, std::vector<Obstacle>& out) const override {
         const World& w = world_;
         auto add_static = [&](std::uint32_t slot) {
             const StaticPrim& p = w.static_prims_[slot];
@@ -279,7 +279,7 @@ void World::set_on_trigger(BodyId id, TriggerCallback callback) {
 
 void World::build_static() const {
     if (!static_dirty_) return;
-    std::vector<Aabb> boxes;
+    std::vector<geometry::Aabb> boxes;
     std::vector<std::uint32_t> items;
     for (std::uint32_t i = 0; i < bodies_.size(); ++i) {
         const Body& b = bodies_[i];
@@ -322,8 +322,8 @@ void World::build_static() const {
             } else {
                 // Anything else gets its world bounds, padded like the BVH's node boxes, as a conservative
                 // prefilter: the lane's own test runs only when the ray enters these bounds.
-                const Aabb& wb = bodies_[p.body].bounds;
-                const Vec3 c = wb.centre(), e = (wb.max - wb.min) * 0.5f;
+                const geometry::Aabb& wb = bodies_[p.body].bounds;
+                const Vec3 c = wb.center(), e = (wb.max - wb.min) * 0.5f;
                 const Vec3 h = e + (glm::abs(c) + e) * 2e-6f + Vec3(1e-5f);
                 bp.cx[k] = c.x, bp.cy[k] = c.y, bp.cz[k] = c.z;
                 bp.hx[k] = h.x, bp.hy[k] = h.y, bp.hz[k] = h.z;
@@ -381,7 +381,7 @@ void World::index_movers(float dt) {
     // Each mover's cell range, computed once for both passes (x0 > x1 marks an oversized mover).
     mover_cells_.resize(movers_.size());
     for (std::size_t i = 0; i < movers_.size(); ++i) {
-        const Aabb& b = bodies_[movers_[i]].bounds;
+        const geometry::Aabb& b = bodies_[movers_[i]].bounds;
         const double nx = std::floor(b.max.x * (1.0f / kCell)) - std::floor(b.min.x * (1.0f / kCell)) + 1.0;
         const double nz = std::floor(b.max.z * (1.0f / kCell)) - std::floor(b.min.z * (1.0f / kCell)) + 1.0;
         CellRange& r = mover_cells_[i];
@@ -409,7 +409,7 @@ void World::index_movers(float dt) {
 }
 
 template <class Visit>
-void World::movers_overlapping(const Aabb& region, Visit&& visit) const {
+void World::movers_overlapping(const geometry::Aabb& region, Visit&& visit) const {
     if (!grid_valid_) { // bodies were added since the last step: scan them all
         for (std::uint32_t index : movers_)
             if (bodies_[index].bounds.overlaps(region)) visit(index);
@@ -425,7 +425,7 @@ void World::movers_overlapping(const Aabb& region, Visit&& visit) const {
         const Body& b = bodies_[index];
         if (b.alive && b.motion != Motion::Static && b.bounds.overlaps(region)) visit(index);
     };
-    const Aabb wide = region.expanded(mover_slack_);
+    const geometry::Aabb wide = region.expanded(mover_slack_);
     const int x0 = cell_of(wide.min.x, kCell), x1 = cell_of(wide.max.x, kCell);
     const int z0 = cell_of(wide.min.z, kCell), z1 = cell_of(wide.max.z, kCell);
     if (static_cast<double>(x1 - x0 + 1) * (z1 - z0 + 1) > 4.0 * (grid_mask_ + 1)) {
@@ -566,7 +566,7 @@ std::uint32_t packet_slab(const Packet& bp, const Vec3& origin, const Vec3& inv,
     const __m128 tmin = _mm_max_ps(lox, _mm_max_ps(loy, _mm_min_ps(tz0, tz1)));
     const __m128 tmax =
         _mm_mul_ps(_mm_min_ps(_mm_max_ps(tx0, tx1), _mm_min_ps(_mm_max_ps(ty0, ty1), _mm_max_ps(tz0, tz1))),
-                   _mm_set1_ps(kExitWiden));
+                   _mm_set1_ps(geometry::kExitWiden));
     const __m128 ok = _mm_and_ps(_mm_and_ps(_mm_cmple_ps(tmin, tmax), _mm_cmpgt_ps(tmax, _mm_setzero_ps())),
                                  _mm_cmple_ps(tmin, _mm_set1_ps(max_t)));
     _mm_store_ps(tmin_out, tmin);
@@ -580,7 +580,7 @@ std::uint32_t packet_slab(const Packet& bp, const Vec3& origin, const Vec3& inv,
         const Vec3 t0 = (-half - o) * inv, t1 = (half - o) * inv;
         const Vec3 lo = glm::min(t0, t1), hi = glm::max(t0, t1);
         const float tmin = std::max(lo.x, std::max(lo.y, lo.z));
-        const float tmax = std::min(hi.x, std::min(hi.y, hi.z)) * kExitWiden;
+        const float tmax = std::min(hi.x, std::min(hi.y, hi.z)) * geometry::kExitWiden;
         tmin_out[k] = tmin, lox_out[k] = lo.x, loy_out[k] = lo.y;
         if (tmin <= tmax && tmax > 0.0f && tmin <= max_t) mask |= 1u << k;
     }
@@ -590,7 +590,7 @@ std::uint32_t packet_slab(const Packet& bp, const Vec3& origin, const Vec3& inv,
 } // namespace
 
 template <class BoxHit, class OtherHit>
-bool World::ray_leaf(std::uint32_t leaf, const Ray& ray, const Vec3& inv, const float& max_t,
+bool World::ray_leaf(std::uint32_t leaf, const geometry::Ray& ray, const Vec3& inv, const float& max_t,
                      const RayFilter& filter, BoxHit&& box, OtherHit&& other) const {
     const BoxPacket& bp = static_packets_[leaf];
     alignas(16) float tmin[4], lox[4], loy[4];
@@ -598,7 +598,7 @@ bool World::ray_leaf(std::uint32_t leaf, const Ray& ray, const Vec3& inv, const 
     while (lanes) {
         const int k = std::countr_zero(lanes);
         lanes &= lanes - 1;
-        if (!(bp.layers[k] & filter.layers) || bp.body[k] == filter.ignore.index) continue;
+        if (!(bp.layers[k] & filter.layers) || !passes(filter, bp.body[k])) continue;
         if (!(bp.boxes >> k & 1u)) {
             if (!other(bp.first_slot + k)) return false;
             continue;
@@ -620,7 +620,7 @@ bool World::ray_leaf(std::uint32_t leaf, const Ray& ray, const Vec3& inv, const 
     return true;
 }
 
-bool World::ray_static(const Ray& ray, const Vec3& inv, const StaticPrim& p, ShapeHit& hit) const {
+bool World::ray_static(const geometry::Ray& ray, const Vec3& inv, const StaticPrim& p, ShapeHit& hit) const {
     if (p.kind == ShapeKind::Box) {
         if (p.axis_aligned) return ray_centred_aabb(ray, inv, p.position, p.half, hit);
         return ray_box(ray, p.half, {p.position, p.rotation}, hit);
@@ -629,29 +629,34 @@ bool World::ray_static(const Ray& ray, const Vec3& inv, const StaticPrim& p, Sha
     return ray_shape(ray, b.shape, b.transform, hit);
 }
 
-bool World::ray_body(const Ray& ray, std::uint32_t index, ShapeHit& hit) const {
+bool World::ray_body(const geometry::Ray& ray, std::uint32_t index, ShapeHit& hit) const {
     const Body& b = bodies_[index];
     return ray_shape(ray, b.shape, b.transform, hit);
 }
 
 namespace {
-bool finite_ray(const Ray& r) {
+bool finite_ray(const geometry::Ray& r) {
     return is_finite(r.origin) && is_finite(r.direction) && !std::isnan(r.max_distance) &&
            glm::dot(r.direction, r.direction) > 0.5f;
 }
 } // namespace
 
-bool World::ray_closest(const Ray& ray, RayHit& out, const RayFilter& filter) const {
+bool World::ray_closest(const geometry::Ray& ray, RayHit& out, const RayFilter& filter) const {
     if (!finite_ray(ray)) return false;
     build_static();
     float best = ray.max_distance;
     std::uint32_t best_body = kNone;
     Vec3 best_normal(0.0f);
-    const Vec3 inv = safe_inverse(ray.direction);
+    // Equal distances go to the lower body index (best_body starts as kNone, above every index), so the
+    // answer does not depend on the order the BVH and the lists are visited in.
+    auto closer = [&](float distance, std::uint32_t body) {
+        return distance < best || (distance == best && body < best_body);
+    };
+    const Vec3 inv = geometry::safe_inverse(ray.direction);
     static_bvh_.ray_query_leaves(ray, inv, ray.max_distance, [&](std::uint32_t leaf, float& max_t) {
         const BoxPacket& bp = static_packets_[leaf];
         auto take = [&](std::uint32_t body, const ShapeHit& h) {
-            if (h.distance < best || best_body == kNone) {
+            if (closer(h.distance, body)) {
                 best = h.distance, best_body = body, best_normal = h.normal;
                 max_t = h.distance;
             }
@@ -662,7 +667,7 @@ bool World::ray_closest(const Ray& ray, RayHit& out, const RayFilter& filter) co
             [&](std::uint32_t slot) {
                 const StaticPrim& p = static_prims_[slot];
                 ShapeHit h;
-                Ray r = ray;
+                geometry::Ray r = ray;
                 r.max_distance = max_t;
                 if (ray_static(r, inv, p, h)) take(p.body, h);
                 return true;
@@ -670,21 +675,21 @@ bool World::ray_closest(const Ray& ray, RayHit& out, const RayFilter& filter) co
     });
     for (std::uint32_t index : movers_) {
         const Body& b = bodies_[index];
-        if (!b.enabled || !(b.layers & filter.layers) || index == filter.ignore.index) continue;
-        Ray r = ray;
+        if (!b.enabled || !(b.layers & filter.layers) || !passes(filter, index)) continue;
+        geometry::Ray r = ray;
         r.max_distance = best;
         ShapeHit h;
-        if (ray_body(r, index, h) && (h.distance < best || best_body == kNone))
+        if (ray_body(r, index, h) && closer(h.distance, index))
             best = h.distance, best_body = index, best_normal = h.normal;
     }
     if (filter.layers & layer::kTrigger)
         for (std::uint32_t index : static_triggers_) {
             const Body& b = bodies_[index];
-            if (!b.enabled || index == filter.ignore.index) continue;
-            Ray r = ray;
+            if (!b.enabled || !passes(filter, index)) continue;
+            geometry::Ray r = ray;
             r.max_distance = best;
             ShapeHit h;
-            if (ray_body(r, index, h) && (h.distance < best || best_body == kNone))
+            if (ray_body(r, index, h) && closer(h.distance, index))
                 best = h.distance, best_body = index, best_normal = h.normal;
         }
     if (best_body == kNone) return false;
@@ -695,11 +700,11 @@ bool World::ray_closest(const Ray& ray, RayHit& out, const RayFilter& filter) co
     return true;
 }
 
-bool World::ray_any(const Ray& ray, const RayFilter& filter) const {
+bool World::ray_any(const geometry::Ray& ray, const RayFilter& filter) const {
     if (!finite_ray(ray)) return false;
     build_static();
     bool found = false;
-    const Vec3 inv = safe_inverse(ray.direction);
+    const Vec3 inv = geometry::safe_inverse(ray.direction);
     static_bvh_.ray_query_leaves(ray, inv, ray.max_distance, [&](std::uint32_t leaf, float& max_t) {
         return ray_leaf(
             leaf, ray, inv, max_t, filter, [&](int, const ShapeHit&) { return !(found = true); },
@@ -713,20 +718,19 @@ bool World::ray_any(const Ray& ray, const RayFilter& filter) const {
     for (std::uint32_t index : movers_) {
         const Body& b = bodies_[index];
         ShapeHit h;
-        if (b.enabled && (b.layers & filter.layers) && index != filter.ignore.index &&
-            ray_body(ray, index, h))
+        if (b.enabled && (b.layers & filter.layers) && passes(filter, index) && ray_body(ray, index, h))
             return true;
     }
     if (filter.layers & layer::kTrigger)
         for (std::uint32_t index : static_triggers_) {
             ShapeHit h;
-            if (bodies_[index].enabled && index != filter.ignore.index && ray_body(ray, index, h))
-                return true;
+            if (bodies_[index].enabled && passes(filter, index) && ray_body(ray, index, h)) return true;
         }
     return false;
 }
 
-int World::ray_all(const Ray& ray, std::vector<RayHit>& hits, HitOrder order, const RayFilter& filter) const {
+int World::ray_all(const geometry::Ray& ray, std::vector<RayHit>& hits, HitOrder order,
+                   const RayFilter& filter) const {
     if (!finite_ray(ray)) return 0;
     build_static();
     const std::size_t start = hits.size();
@@ -735,7 +739,7 @@ int World::ray_all(const Ray& ray, std::vector<RayHit>& hits, HitOrder order, co
     };
     static_bvh_.ray_query(ray, ray.max_distance, [&](std::uint32_t slot, const Vec3& inv, float&) {
         const StaticPrim& p = static_prims_[slot];
-        if (!p.enabled || !(p.layers & filter.layers) || p.body == filter.ignore.index) return true;
+        if (!p.enabled || !(p.layers & filter.layers) || !passes(filter, p.body)) return true;
         ShapeHit h;
         if (ray_static(ray, inv, p, h)) add(p.body, h);
         return true;
@@ -743,7 +747,7 @@ int World::ray_all(const Ray& ray, std::vector<RayHit>& hits, HitOrder order, co
     auto scan = [&](const std::vector<std::uint32_t>& list, bool triggers) {
         for (std::uint32_t index : list) {
             const Body& b = bodies_[index];
-            if (!b.enabled || index == filter.ignore.index) continue;
+            if (!b.enabled || !passes(filter, index)) continue;
             if (!triggers && !(b.layers & filter.layers)) continue;
             ShapeHit h;
             if (ray_body(ray, index, h)) add(index, h);
@@ -767,7 +771,7 @@ int World::ray_all(const Ray& ray, std::vector<RayHit>& hits, HitOrder order, co
 int World::overlap_capsule(const Segment& s, float radius, std::vector<BodyId>& out,
                            std::uint32_t layers) const {
     build_static();
-    Aabb region{glm::min(s.p0, s.p1) - Vec3(radius), glm::max(s.p0, s.p1) + Vec3(radius)};
+    geometry::Aabb region{glm::min(s.p0, s.p1) - Vec3(radius), glm::max(s.p0, s.p1) + Vec3(radius)};
     const std::size_t start = out.size();
     auto test = [&](std::uint32_t index) {
         const Body& b = bodies_[index];

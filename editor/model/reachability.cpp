@@ -15,8 +15,8 @@ constexpr int kMaxSurfaces = 4; // walkable layers per cell kept for the search 
 constexpr int kMaxFound = 8;    // surfaces gathered per cell before buried ones are dropped
 
 struct Solid {
-    Obb box;
-    Aabb bounds;
+    geometry::Obb box;
+    geometry::Aabb bounds;
     // Floor slabs only matter as headroom (a low ceiling or an overhang above the node): they are tested
     // against the body's centre column. Their edges are not walls: climbing onto a slab is the step rule's
     // business, and where a stair meets a platform the slab's edge hides inside the stair's wedge.
@@ -43,20 +43,20 @@ WalkGridStats walk_to_control_panel(const level::Level& level, const ValidationO
     const Entity* panel = nullptr;
     struct SupportBox {
         const Entity* entity;
-        Obb box;
+        geometry::Obb box;
     };
     std::vector<SupportBox> supports;
     std::vector<Solid> solids;
-    Aabb area{Vec3(3e38f), Vec3(-3e38f)};
+    geometry::Aabb area{Vec3(3e38f), Vec3(-3e38f)};
     for (const auto& e : level.entities) {
         if (!is_finite(e.position) || !is_finite(e.rotation)) continue;
         if (!panel && e.type() == EntityType::ControlPanel) panel = &e;
-        const Obb box = entity_obb(e);
+        const geometry::Obb box = entity_obb(e);
         if (blocks_walking(e.type())) solids.push_back({box, box.aabb(), e.type() == EntityType::Floor});
         const auto* floor = e.try_as<level::FloorProps>();
         if (e.type() == EntityType::Stair || (floor && !floor->ceiling)) {
             supports.push_back({&e, box});
-            const Aabb b = box.aabb();
+            const geometry::Aabb b = box.aabb();
             area.min = glm::min(area.min, b.min);
             area.max = glm::max(area.max, b.max);
         }
@@ -84,7 +84,7 @@ WalkGridStats walk_to_control_panel(const level::Level& level, const ValidationO
     std::vector<std::uint8_t> found_count(cells, 0);
     // Per found surface: the stair's base height, or NaN for a floor.
     std::vector<float> stair_base(cells * kMaxFound, 0.0f);
-    auto cell_range = [&](const Aabb& b, float grow, int& c0, int& c1, int& r0, int& r1) {
+    auto cell_range = [&](const geometry::Aabb& b, float grow, int& c0, int& c1, int& r0, int& r1) {
         c0 = std::max(0, static_cast<int>(std::floor((b.min.x - grow - area.min.x) / cell)));
         c1 = std::min(cols - 1, static_cast<int>(std::floor((b.max.x + grow - area.min.x) / cell)));
         r0 = std::max(0, static_cast<int>(std::floor((b.min.z - grow - area.min.z) / cell)));
@@ -155,10 +155,10 @@ WalkGridStats walk_to_control_panel(const level::Level& level, const ValidationO
                     if (!node || s.bounds.min.y >= h + ch.height || s.bounds.max.y <= h + ch.step_height)
                         continue;
                     const Vec2 p = centre(c, r);
-                    Obb body;
+                    geometry::Obb body;
                     body.center = {p.x, h + ch.step_height + body_half_height, p.y};
                     body.half = {reach, body_half_height, reach};
-                    if (obb_overlap(body, s.box).overlapping) node = 0;
+                    if (geometry::obb_overlap(body, s.box).overlapping) node = 0;
                 }
             }
     }
@@ -177,7 +177,7 @@ WalkGridStats walk_to_control_panel(const level::Level& level, const ValidationO
     stats.decided = true;
 
     // Reached: the body touches the panel (its box grown by the body radius and a little reach).
-    Obb goal = entity_obb(*panel);
+    geometry::Obb goal = entity_obb(*panel);
     goal.half += Vec3(ch.radius + cell + 0.25f, 0.5f, ch.radius + cell + 0.25f);
     std::vector<std::uint8_t> seen(cells * kMaxSurfaces, 0);
     std::deque<size_t> queue{start_cell * kMaxSurfaces + static_cast<size_t>(start_layer)};
@@ -229,7 +229,7 @@ std::uint64_t walk_fingerprint(const level::Level& level, const ValidationOption
         const EntityType t = e.type();
         const auto* floor = e.try_as<level::FloorProps>();
         if (!blocks_walking(t) && t != EntityType::Stair && t != EntityType::ControlPanel) continue;
-        const Obb box = entity_obb(e);
+        const geometry::Obb box = entity_obb(e);
         const int type = static_cast<int>(t), ceiling = floor && floor->ceiling ? 1 : 0;
         mix_value(e.id), mix_value(type), mix_value(ceiling), mix_value(e.position), mix_value(e.rotation);
         mix_value(box.center), mix_value(box.axes), mix_value(box.half);
