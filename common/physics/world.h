@@ -195,6 +195,7 @@ class World {
     };
     class Obstacles;
     friend class Obstacles;
+    static constexpr std::uint32_t kNone = 0xffffffffu; // no slot, no character, no body
 
     Body* get(BodyId id);
     const Body* get(BodyId id) const;

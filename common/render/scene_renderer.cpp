@@ -6,7 +6,6 @@
 #include "render/gpu_mesh.h"
 #include "render/lightmap_texture.h"
 #include "render/material.h"
-#include "render/occlusion.h"
 #include "render/shaders.h"
 #include "render/texture_cache.h"
 

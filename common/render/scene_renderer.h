@@ -6,6 +6,7 @@
 #include "core/result.h"
 #include "render/debug_draw.h"
 #include "render/gpu_mesh.h"
+#include "render/occlusion.h"
 #include "render/particles.h"
 #include "render/scene.h"
 #include "render/shader_library.h"
