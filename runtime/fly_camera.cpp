@@ -7,7 +7,7 @@
 
 namespace ks::runtime {
 
-void FlyCamera::update(GLFWwindow* window, double dt, render::Camera& camera) {
+void FlyCamera::update(GLFWwindow* window, double dt, geometry::Camera& camera) {
     auto down = [&](int key) { return glfwGetKey(window, key) == GLFW_PRESS; };
     const float speed = static_cast<float>(dt) * (down(GLFW_KEY_LEFT_SHIFT) ? 40.0f : 12.0f);
     Vec3 forward(-std::sin(camera.yaw), 0.0f, -std::cos(camera.yaw));
@@ -30,7 +30,7 @@ void FlyCamera::update(GLFWwindow* window, double dt, render::Camera& camera) {
     last_y_ = y;
 }
 
-bool parse_camera(const std::string& text, render::Camera& camera) {
+bool parse_camera(const std::string& text, geometry::Camera& camera) {
     float v[5];
     char tail = 0;
     if (std::sscanf(text.c_str(), "%f,%f,%f,%f,%f%c", &v[0], &v[1], &v[2], &v[3], &v[4], &tail) != 5)

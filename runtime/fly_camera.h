@@ -1,7 +1,7 @@
 #pragma once
 // Free-fly camera for looking around a level: WASD moves, Q/E (or Space/C) go down/up, Shift is faster,
 // the mouse looks around while the right button is held.
-#include "render/camera.h"
+#include "geometry/camera.h"
 
 #include <string>
 
@@ -11,7 +11,7 @@ namespace ks::runtime {
 
 class FlyCamera {
   public:
-    void update(GLFWwindow* window, double dt, render::Camera& camera);
+    void update(GLFWwindow* window, double dt, geometry::Camera& camera);
 
   private:
     double last_x_ = 0, last_y_ = 0;
@@ -19,6 +19,6 @@ class FlyCamera {
 };
 
 // Parses "x,y,z,yaw,pitch" (yaw/pitch in degrees; yaw 0 looks along -z) into the camera.
-bool parse_camera(const std::string& text, render::Camera& camera);
+bool parse_camera(const std::string& text, geometry::Camera& camera);
 
 } // namespace ks::runtime

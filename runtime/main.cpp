@@ -143,7 +143,7 @@ int main(int argc, char** argv) {
         for (const auto& d : report.diagnostics) log::warn(d.error.str());
         level = std::move(*loaded);
     }
-    render::Camera camera;
+    geometry::Camera camera;
     bool camera_given = false;
     if (auto c = cl->get("camera")) {
         if (!runtime::parse_camera(*c, camera)) {

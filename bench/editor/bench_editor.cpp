@@ -201,7 +201,7 @@ int run_editor(int argc, const char* const* argv) {
         const double ms = median_ms(reps, [&] {
             hits = 0;
             for (int i = 0; i < rays; ++i) {
-                editor::Ray ray;
+                geometry::Ray ray;
                 ray.origin = Vec3(width * static_cast<float>((i * 37) % rays) / rays, 100.0f,
                                   -depth * static_cast<float>((i * 61) % rays) / rays);
                 ray.direction = Vec3(0.0f, -1.0f, 0.0f);

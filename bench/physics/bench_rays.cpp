@@ -25,7 +25,7 @@ const char* kernel_name(RayKernel k) {
 }
 
 struct RaySet {
-    std::vector<Ray> rays;
+    std::vector<geometry::Ray> rays;
 };
 
 RaySet make_rays(const scenes::RoomsScene& s, int n, std::uint64_t seed) {
@@ -41,7 +41,7 @@ RaySet make_rays(const scenes::RoomsScene& s, int n, std::uint64_t seed) {
 struct BruteForce {
     std::vector<Vec3> half;
     std::vector<Transform> xf;
-    bool closest(const Ray& r, float& best) const {
+    bool closest(const geometry::Ray& r, float& best) const {
         best = r.max_distance;
         bool any = false;
         ShapeHit h;
@@ -49,7 +49,7 @@ struct BruteForce {
             if (ray_box({r.origin, r.direction, best}, half[i], xf[i], h)) best = h.distance, any = true;
         return any;
     }
-    bool any_hit(const Ray& r) const {
+    bool any_hit(const geometry::Ray& r) const {
         ShapeHit h;
         for (std::size_t i = 0; i < half.size(); ++i)
             if (ray_box(r, half[i], xf[i], h)) return true;
@@ -70,7 +70,7 @@ Timing time_world(const World& w, const RaySet& set, double min_seconds) {
     std::size_t done = 0;
     double start = cpu_seconds(), wall = now_seconds(), elapsed = 0;
     do {
-        for (const Ray& r : set.rays)
+        for (const geometry::Ray& r : set.rays)
             if (w.ray_closest(r, hit)) t.checksum += hit.distance, ++t.hits;
         done += set.rays.size();
         elapsed = cpu_seconds() - start;
@@ -81,7 +81,7 @@ Timing time_world(const World& w, const RaySet& set, double min_seconds) {
     start = cpu_seconds();
     int any = 0;
     do {
-        for (const Ray& r : set.rays) any += w.ray_any(r);
+        for (const geometry::Ray& r : set.rays) any += w.ray_any(r);
         done += set.rays.size();
         elapsed = cpu_seconds() - start;
     } while (elapsed < min_seconds);
@@ -114,7 +114,7 @@ struct Accuracy {
 };
 
 // Compares the world's closest hit with the double brute force (see reference::judge).
-void compare(const World& w, std::span<const RefBox> ref, const Ray& r, Accuracy& acc) {
+void compare(const World& w, std::span<const RefBox> ref, const geometry::Ray& r, Accuracy& acc) {
     RayHit h;
     const bool hit = w.ray_closest(r, h);
     ++acc.rays;
@@ -131,9 +131,9 @@ void compare(const World& w, std::span<const RefBox> ref, const Ray& r, Accuracy
 
 // Rays aimed exactly at vertices and edge midpoints of boxes, lying in face planes, starting on faces and
 // grazing faces at 1e-6 rad.
-std::vector<Ray> hard_cases(const scenes::RoomsScene& s, std::uint64_t seed, int per_box_limit) {
+std::vector<geometry::Ray> hard_cases(const scenes::RoomsScene& s, std::uint64_t seed, int per_box_limit) {
     Rng rng(seed);
-    std::vector<Ray> rays;
+    std::vector<geometry::Ray> rays;
     const int boxes = std::min<int>(per_box_limit, static_cast<int>(s.boxes.size()));
     for (int bi = 0; bi < boxes; ++bi) {
         const auto& b = s.boxes[rng.below(static_cast<std::uint32_t>(s.boxes.size()))];
@@ -237,7 +237,7 @@ int run_default(bool quick) {
     for (int i = 0; i < accuracy_rays; ++i)
         compare(w, ref, {scenes::random_origin(scene, rng), scenes::random_direction(rng), 100.0f},
                 random_acc);
-    for (const Ray& r : hard_cases(scene, 5, quick ? 500 : 2000)) compare(w, ref, r, hard_acc);
+    for (const geometry::Ray& r : hard_cases(scene, 5, quick ? 500 : 2000)) compare(w, ref, r, hard_acc);
     std::printf("\nAccuracy against the double-precision brute force (2k-box level, %zu boxes):\n",
                 scene.boxes.size());
     std::printf("%12s %10s %10s %12s %10s %16s\n", "set", "rays", "hits", "mismatches", "boundary",
@@ -332,8 +332,8 @@ int run_level(const CommandLine& cli) {
         return 2;
     }
     Rng rng(static_cast<std::uint64_t>(*seed_arg));
-    std::vector<Ray> rays(*rays_arg);
-    for (Ray& r : rays) {
+    std::vector<geometry::Ray> rays(*rays_arg);
+    for (geometry::Ray& r : rays) {
         const auto& f = scene.floors[rng.below(static_cast<std::uint32_t>(scene.floors.size()))];
         const Vec3 local(rng.uniform(-f.half.x, f.half.x), rng.uniform(0.1f, 10.0f),
                          rng.uniform(-f.half.y, f.half.y));
@@ -364,7 +364,7 @@ int run_level(const CommandLine& cli) {
         out << "ox,oy,oz,dx,dy,dz,max_distance,hit,distance,body,nx,ny,nz\n";
         char line[512];
         for (std::size_t i = 0; i < rays.size(); ++i) {
-            const Ray& r = rays[i];
+            const geometry::Ray& r = rays[i];
             const RayHit& h = hits[i];
             std::snprintf(line, sizeof line, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%.9g,%d,%.9g,%.9g,%.9g\n",
                           r.origin.x, r.origin.y, r.origin.z, r.direction.x, r.direction.y, r.direction.z,

@@ -19,7 +19,7 @@ constexpr float kWallX = 10.0f, kWallHalf = 0.025f;
 class OneWall final : public ObstacleSource {
   public:
     explicit OneWall(const Shape& wall) : wall_(wall) {}
-    void gather(const Aabb&, std::vector<Obstacle>& out) const override {
+    void gather(const geometry::Aabb&, std::vector<Obstacle>& out) const override {
         out.push_back({&wall_, {{kWallX, 0, 0}, Quat(1, 0, 0, 0)}, 1, true});
     }
 

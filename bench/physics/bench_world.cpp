@@ -20,8 +20,8 @@ class AllPairs final : public ObstacleSource {
   public:
     std::vector<Shape> shapes;
     std::vector<Transform> xfs;
-    std::vector<Aabb> boxes;
-    void gather(const Aabb& region, std::vector<Obstacle>& out) const override {
+    std::vector<geometry::Aabb> boxes;
+    void gather(const geometry::Aabb& region, std::vector<Obstacle>& out) const override {
         for (std::size_t i = 0; i < boxes.size(); ++i)
             if (boxes[i].overlaps(region))
                 out.push_back(

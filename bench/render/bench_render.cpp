@@ -69,8 +69,8 @@ double cpu_now_ms() {
 }
 
 // The camera path: from the player start down room 1 toward door 1, turning left and right.
-render::Camera path_camera(const render::Camera& start, int frame, int frames) {
-    render::Camera c = start;
+geometry::Camera path_camera(const geometry::Camera& start, int frame, int frames) {
+    geometry::Camera c = start;
     float t = static_cast<float>(frame) / std::max(frames - 1, 1);
     c.position += Vec3(-std::sin(start.yaw), 0.0f, -std::cos(start.yaw)) * (40.0f * t);
     c.yaw += 0.7f * std::sin(t * 2.0f * kPi);
@@ -110,7 +110,7 @@ void measure(Measurement& m, render::OffscreenContext& ctx, render::AssetLibrary
     std::vector<Mat4> scratch;
     render::ViewModel view_model;
     assets.model("rifle").emit(render::rifle_view_transform(0.0f), scratch, view_model.instances);
-    const render::Camera start = render::player_start_camera(level, static_cast<float>(width) / height);
+    const geometry::Camera start = render::player_start_camera(level, static_cast<float>(width) / height);
     std::vector<double>& times = m.times;
     const int warmup = 5;
     double cpu_start = 0;

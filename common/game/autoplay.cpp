@@ -18,7 +18,7 @@ float yaw_toward(const Vec3& from, const Vec3& to) {
 
 Autoplay::Autoplay(const Game& game, std::uint64_t seed, AutoplaySettings settings)
     : settings_(settings), rng_(seed, 0x626f74ull) {
-    physics::Aabb region = game.level_bounds();
+    geometry::Aabb region = game.level_bounds();
     if (region.min.x > region.max.x)
         region = {game.player_start() - Vec3(50), game.player_start() + Vec3(50)};
     grid_ = NavGrid::build(game.world(), region, game.player_start().y);

@@ -152,7 +152,7 @@ struct Panel {
 struct DeathCamera {
     float eye_drop = 0.0f; // subtract from the eye height
     float pitch = 0.0f;    // added to the view pitch (+π/4: looks up, as the reference's x)
-    float roll = 0.0f; // render::Camera's roll (positive leans the head right): −π/2, a fall to the left
+    float roll = 0.0f; // geometry::Camera's roll (positive leans the head right): −π/2, a fall to the left
     bool menu_ready = false;
 };
 
@@ -196,7 +196,7 @@ class Game {
     const GameSettings& settings() const { return settings_; }
     const physics::World& world() const { return world_; }
     // Bounds of the level's static geometry (walls, floors, stairs, props).
-    const physics::Aabb& level_bounds() const { return level_bounds_; }
+    const geometry::Aabb& level_bounds() const { return level_bounds_; }
     const Vec3& player_start() const { return player_start_; }
     const anim::AnimationLibrary& animations() const { return *animations_; }
     // World position of the right hand's tip (the robot's muzzle) in its current pose.
@@ -238,7 +238,7 @@ class Game {
     void push(EventType type, Vec3 position = Vec3(0.0f), int entity = -1, float amount = 0.0f,
               Vec3 end = Vec3(0.0f));
     // Closest shootable hit along a ray, skipping `ignore` and (for robot shots) every robot.
-    bool shoot_ray(const physics::Ray& ray, physics::BodyId ignore, bool skip_robots, physics::RayHit& hit);
+    bool shoot_ray(const geometry::Ray& ray, physics::BodyId ignore, bool skip_robots, physics::RayHit& hit);
 
     GameSettings settings_;
     std::shared_ptr<const anim::AnimationLibrary> animations_;
@@ -253,7 +253,7 @@ class Game {
     std::vector<Cylinder> cylinders_;
     std::vector<Panel> panels_;
     Caption caption_;
-    physics::Aabb level_bounds_ = physics::Aabb::empty();
+    geometry::Aabb level_bounds_ = geometry::Aabb::empty();
     Vec3 player_start_{0.0f};
     float gravity_ = -25.0f; // the level's, given to every character body
     int interact_target_ = -1;
@@ -263,7 +263,6 @@ class Game {
     std::int64_t steps_ = 0;
     int robots_killed_ = 0;
     std::vector<Event> events_;
-    std::vector<physics::RayHit> ray_hits_; // reused by shots
     struct Clips {
         int idle = -1, alert = -1, shoot_pose = -1, shooting = -1, shoot_pose_reverse = -1, death = -1;
     } clips_;

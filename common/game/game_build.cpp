@@ -119,7 +119,6 @@ Result<void> Game::build(const level::Level& level) {
     }
     if (auto added = add_player(level); !added) return added;
     events_.reserve(64);
-    ray_hits_.reserve(64);
     world_.build_static();
     return ok();
 }

@@ -100,19 +100,12 @@ void Game::update_player(const Input& input, float dt) {
     if (input.fire) fire_player_shot();
 }
 
-bool Game::shoot_ray(const physics::Ray& ray, physics::BodyId ignore, bool skip_robots,
+bool Game::shoot_ray(const geometry::Ray& ray, physics::BodyId ignore, bool skip_robots,
                      physics::RayHit& hit) {
-    ray_hits_.clear();
-    physics::RayFilter filter;
-    filter.layers = physics::layer::kShootable;
-    filter.ignore = ignore;
-    world_.ray_all(ray, ray_hits_, physics::HitOrder::Ascending, filter);
-    for (const physics::RayHit& h : ray_hits_) {
-        if (skip_robots && user_kind(world_.user_data(h.body)) == BodyKind::Robot) continue;
-        hit = h;
-        return true;
-    }
-    return false;
+    physics::RayFilter filter(physics::layer::kShootable, ignore);
+    if (skip_robots)
+        filter.accept_user_data = [](std::uint64_t user) { return user_kind(user) != BodyKind::Robot; };
+    return world_.ray_closest(ray, hit, filter);
 }
 
 void Game::fire_player_shot() {
@@ -122,7 +115,7 @@ void Game::fire_player_shot() {
     ++p.shots;
     p.recoil = 0.0f;
     const Vec3 dir = p.view_direction();
-    const physics::Ray ray{p.eye(), dir, settings_.shot_range};
+    const geometry::Ray ray{p.eye(), dir, settings_.shot_range};
     // The tracer starts at the rifle tip (camera-local (0.3, -0.25, -1)); the hit ray is the crosshair's.
     const Vec3 right(std::cos(p.yaw), 0, -std::sin(p.yaw));
     const Vec3 up = glm::cross(right, dir);

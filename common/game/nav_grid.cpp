@@ -8,7 +8,7 @@
 
 namespace ks::game {
 
-NavGrid NavGrid::build(const physics::World& world, const physics::Aabb& region, float floor_y,
+NavGrid NavGrid::build(const physics::World& world, const geometry::Aabb& region, float floor_y,
                        Config config) {
     NavGrid g;
     g.cell_ = config.cell;

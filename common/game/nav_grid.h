@@ -19,9 +19,9 @@ class NavGrid {
         float cylinder_margin = 2.6f; // extra keep-out around gas cylinders (their radius plus this)
     };
     // Covers `region` (x, z) at floor height `floor_y`.
-    static NavGrid build(const physics::World& world, const physics::Aabb& region, float floor_y,
+    static NavGrid build(const physics::World& world, const geometry::Aabb& region, float floor_y,
                          Config config);
-    static NavGrid build(const physics::World& world, const physics::Aabb& region, float floor_y) {
+    static NavGrid build(const physics::World& world, const geometry::Aabb& region, float floor_y) {
         return build(world, region, floor_y, Config{});
     }
 

@@ -220,7 +220,7 @@ void Game::robot_fire(std::size_t index) {
         push(EventType::RobotShot, muzzle, r.entity_id, 0.0f, muzzle + dir);
         return;
     }
-    const physics::Ray ray{muzzle, dir, settings_.robot_shot_range};
+    const geometry::Ray ray{muzzle, dir, settings_.robot_shot_range};
     physics::RayHit hit;
     const bool any = shoot_ray(ray, r.body, true, hit);
     push(EventType::RobotShot, muzzle, r.entity_id, 1.0f, any ? hit.point : muzzle + dir * ray.max_distance);

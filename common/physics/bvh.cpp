@@ -9,37 +9,37 @@ namespace {
 constexpr int kBins = 32;
 
 struct Builder {
-    std::span<const Aabb> boxes;
+    std::span<const geometry::Aabb> boxes;
     std::vector<Vec3> centres;
     std::vector<std::uint32_t>& order;
     std::vector<Bvh::Node>& nodes;
     int max_depth = 0;
 
-    Aabb bounds_of(std::uint32_t first, std::uint32_t count) const {
-        Aabb b = Aabb::empty();
+    geometry::Aabb bounds_of(std::uint32_t first, std::uint32_t count) const {
+        geometry::Aabb b = geometry::Aabb::empty();
         for (std::uint32_t i = first; i < first + count; ++i) b.grow(boxes[order[i]]);
         return b;
     }
 
     void build(std::uint32_t node_index, std::uint32_t first, std::uint32_t count, int depth) {
         max_depth = std::max(max_depth, depth);
-        Aabb b = bounds_of(first, count);
+        geometry::Aabb b = bounds_of(first, count);
         // Widen by a few ulps so the node test is conservative for every primitive inside it.
         const Vec3 pad = (glm::abs(b.min) + glm::abs(b.max)) * 1e-6f + Vec3(1e-6f);
         nodes[node_index].min = b.min - pad;
         nodes[node_index].max = b.max + pad;
         if (count <= 1 || depth >= Bvh::kMaxDepth - 2) return make_leaf(node_index, first, count);
 
-        Aabb cb = Aabb::empty();
+        geometry::Aabb cb = geometry::Aabb::empty();
         for (std::uint32_t i = first; i < first + count; ++i) cb.grow(centres[order[i]]);
         const Vec3 ext = cb.max - cb.min;
         int axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : (ext.y >= ext.z ? 1 : 2);
         std::uint32_t mid = first + count / 2;
         bool split_found = false;
         if (ext[axis] > 0.0f) {
-            Aabb bin_box[kBins];
+            geometry::Aabb bin_box[kBins];
             std::uint32_t bin_count[kBins] = {};
-            for (auto& bb : bin_box) bb = Aabb::empty();
+            for (auto& bb : bin_box) bb = geometry::Aabb::empty();
             const float scale = kBins / ext[axis];
             auto bin_of = [&](std::uint32_t item) {
                 int k = static_cast<int>((centres[item][axis] - cb.min[axis]) * scale);
@@ -52,7 +52,7 @@ struct Builder {
             }
             float right_area[kBins];
             std::uint32_t right_count[kBins];
-            Aabb acc = Aabb::empty();
+            geometry::Aabb acc = geometry::Aabb::empty();
             std::uint32_t n = 0;
             for (int k = kBins - 1; k > 0; --k) {
                 if (bin_count[k]) acc.grow(bin_box[k]);
@@ -62,7 +62,7 @@ struct Builder {
             }
             float best_cost = 3.4e38f;
             int best_split = -1;
-            acc = Aabb::empty();
+            acc = geometry::Aabb::empty();
             n = 0;
             for (int k = 0; k < kBins - 1; ++k) {
                 if (bin_count[k]) acc.grow(bin_box[k]);
@@ -106,7 +106,7 @@ struct Builder {
 
 } // namespace
 
-void Bvh::build(std::span<const Aabb> items) {
+void Bvh::build(std::span<const geometry::Aabb> items) {
     clear();
     if (items.empty()) return;
     order_.resize(items.size());
@@ -115,7 +115,7 @@ void Bvh::build(std::span<const Aabb> items) {
     nodes_.emplace_back();
     Builder b{items, {}, order_, nodes_};
     b.centres.resize(items.size());
-    for (std::size_t i = 0; i < items.size(); ++i) b.centres[i] = items[i].centre();
+    for (std::size_t i = 0; i < items.size(); ++i) b.centres[i] = items[i].center();
     b.build(0, 0, static_cast<std::uint32_t>(items.size()), 1);
     depth_ = b.max_depth;
     build_wide();
@@ -178,7 +178,7 @@ void Bvh::build_wide() {
             float best_area = -1.0f;
             for (int k = 0; k < count; ++k) {
                 const Node& n = nodes_[kids[k]];
-                const float area = Aabb{n.min, n.max}.surface_area();
+                const float area = geometry::Aabb{n.min, n.max}.surface_area();
                 if (n.count == 0 && area > best_area) best_area = area, best = k;
             }
             if (best < 0) break;

@@ -43,7 +43,7 @@ class Bvh {
     static constexpr int kWidth = 8;
 
     // items[i] is the box of item i; afterwards item_order() maps leaf slots to item indices.
-    void build(std::span<const Aabb> items);
+    void build(std::span<const geometry::Aabb> items);
     void clear();
     bool empty() const { return nodes_.empty(); }
     std::span<const Node> nodes() const { return nodes_; }
@@ -55,12 +55,12 @@ class Bvh {
     // contiguously) whose box the ray crosses within [0, max_t], nearest node first. visit(slot, inv_dir,
     // max_t&) returns false to stop; it may shrink max_t (closest-hit queries) to prune the rest.
     template <class Visit>
-    void ray_query(const Ray& ray, float max_t, Visit&& visit) const;
+    void ray_query(const geometry::Ray& ray, float max_t, Visit&& visit) const;
     // The same traversal handing over whole leaves: visit(leaf, max_t&) with leaf an index into leaves(),
     // so callers can test a leaf's items together (SIMD). Returns false to stop.
     // `inv` is safe_inverse(ray.direction), computed once by the caller. Runs the kernel ray_kernel() names.
     template <class VisitLeaf>
-    void ray_query_leaves(const Ray& ray, const Vec3& inv, float max_t, VisitLeaf&& visit) const {
+    void ray_query_leaves(const geometry::Ray& ray, const Vec3& inv, float max_t, VisitLeaf&& visit) const {
         if (ray_kernel() == RayKernel::Avx2)
             ray_query_leaves_avx2(ray, inv, max_t, visit);
         else
@@ -72,7 +72,7 @@ class Bvh {
     std::span<const LeafRange> leaves() const { return leaves_; }
     // Visits leaf slots whose node box overlaps `box`, in leaf order. visit(slot) returns false to stop.
     template <class Visit>
-    void aabb_query(const Aabb& box, Visit&& visit) const;
+    void aabb_query(const geometry::Aabb& box, Visit&& visit) const;
 
   private:
     // The binary tree collapsed to eight children per node (SAH decides the shape; collapsing halves the
@@ -85,9 +85,11 @@ class Bvh {
     void build_wide();
 
     template <class VisitLeaf>
-    void ray_query_leaves_portable(const Ray& ray, const Vec3& inv, float max_t, VisitLeaf& visit) const;
+    void ray_query_leaves_portable(const geometry::Ray& ray, const Vec3& inv, float max_t,
+                                   VisitLeaf& visit) const;
     template <class VisitLeaf>
-    void ray_query_leaves_avx2(const Ray& ray, const Vec3& inv, float max_t, VisitLeaf& visit) const;
+    void ray_query_leaves_avx2(const geometry::Ray& ray, const Vec3& inv, float max_t,
+                               VisitLeaf& visit) const;
 
     std::vector<WideNode> wide_;
     std::vector<LeafRange> leaves_;
@@ -127,8 +129,8 @@ inline std::int32_t order_children(int mask, const float* t_enter, const std::in
 } // namespace bvh_detail
 
 template <class Visit>
-void Bvh::ray_query(const Ray& ray, float max_t, Visit&& visit) const {
-    const Vec3 inv = safe_inverse(ray.direction);
+void Bvh::ray_query(const geometry::Ray& ray, float max_t, Visit&& visit) const {
+    const Vec3 inv = geometry::safe_inverse(ray.direction);
     ray_query_leaves(ray, inv, max_t, [&](std::uint32_t leaf_index, float& t) {
         const LeafRange leaf = leaves_[leaf_index];
         for (std::uint32_t i = 0; i < leaf.count; ++i)
@@ -138,7 +140,7 @@ void Bvh::ray_query(const Ray& ray, float max_t, Visit&& visit) const {
 }
 
 template <class Visit>
-void Bvh::aabb_query(const Aabb& box, Visit&& visit) const {
+void Bvh::aabb_query(const geometry::Aabb& box, Visit&& visit) const {
     if (wide_.empty()) return;
     std::int32_t stack[kMaxDepth * kWidth];
     int top = 0;
@@ -203,7 +205,8 @@ void Bvh::aabb_query(const Aabb& box, Visit&& visit) const {
 #else
 namespace ks::physics {
 template <class VisitLeaf>
-void Bvh::ray_query_leaves_avx2(const Ray& ray, const Vec3& inv, float max_t, VisitLeaf& visit) const {
+void Bvh::ray_query_leaves_avx2(const geometry::Ray& ray, const Vec3& inv, float max_t,
+                                VisitLeaf& visit) const {
     ray_query_leaves_portable(ray, inv, max_t, visit);
 }
 } // namespace ks::physics

@@ -7,9 +7,9 @@ namespace ks::physics {
 
 template <class VisitLeaf>
 #if KS_BVH_TRAVERSE_AVX2
-void Bvh::ray_query_leaves_avx2(const Ray& ray, const Vec3& inv, float max_t, VisitLeaf& visit) const {
+void Bvh::ray_query_leaves_avx2(const geometry::Ray& ray, const Vec3& inv, float max_t, VisitLeaf& visit) const {
 #else
-void Bvh::ray_query_leaves_portable(const Ray& ray, const Vec3& inv, float max_t, VisitLeaf& visit) const {
+void Bvh::ray_query_leaves_portable(const geometry::Ray& ray, const Vec3& inv, float max_t, VisitLeaf& visit) const {
 #endif
     if (wide_.empty()) return;
     // The near and far slab planes of each axis are picked by the direction's sign once per ray: with
@@ -21,12 +21,12 @@ void Bvh::ray_query_leaves_portable(const Ray& ray, const Vec3& inv, float max_t
     const __m256 ox = _mm256_set1_ps(ray.origin.x), oy = _mm256_set1_ps(ray.origin.y),
                  oz = _mm256_set1_ps(ray.origin.z);
     const __m256 ix = _mm256_set1_ps(inv.x), iy = _mm256_set1_ps(inv.y), iz = _mm256_set1_ps(inv.z);
-    const __m256 zero = _mm256_setzero_ps(), widen = _mm256_set1_ps(kExitWiden);
+    const __m256 zero = _mm256_setzero_ps(), widen = _mm256_set1_ps(geometry::kExitWiden);
 #elif defined(__SSE2__)
     const __m128 ox = _mm_set1_ps(ray.origin.x), oy = _mm_set1_ps(ray.origin.y),
                  oz = _mm_set1_ps(ray.origin.z);
     const __m128 ix = _mm_set1_ps(inv.x), iy = _mm_set1_ps(inv.y), iz = _mm_set1_ps(inv.z);
-    const __m128 zero = _mm_setzero_ps(), widen = _mm_set1_ps(kExitWiden);
+    const __m128 zero = _mm_setzero_ps(), widen = _mm_set1_ps(geometry::kExitWiden);
 #endif
     bvh_detail::Pending stack[kMaxDepth * kWidth];
     int top = 0;
@@ -73,7 +73,7 @@ void Bvh::ray_query_leaves_portable(const Ray& ray, const Vec3& inv, float max_t
             const float tmin = std::max(std::max(tnx, tny), std::max(tnz, 0.0f));
             const float tmax = std::min(std::min(tfx, tfy), std::min(tfz, max_t));
             t_enter[k] = tmin;
-            if (tmin <= tmax * kExitWiden) mask |= 1 << k;
+            if (tmin <= tmax * geometry::kExitWiden) mask |= 1 << k;
         }
 #endif
             mask &= n.lanes;

@@ -45,9 +45,10 @@ Vec3 clip_to_planes(const Vec3& v, const Planes& planes) {
     return Vec3(0.0f);
 }
 
-Aabb swept_region(const Segment& s, float radius, const Vec3& motion, float skin);
-float sweep_capsule_in(const Segment& s, float radius, const Vec3& motion, float len, const Aabb& region,
-                       const Obstacle& o, float skin, Vec3& normal, Vec3* surface);
+geometry::Aabb swept_region(const Segment& s, float radius, const Vec3& motion, float skin);
+float sweep_capsule_in(const Segment& s, float radius, const Vec3& motion, float len,
+                       const geometry::Aabb& region, const Obstacle& o, float skin, Vec3& normal,
+                       Vec3* surface);
 
 struct Mover {
     const std::vector<Obstacle>& obstacles;
@@ -66,7 +67,7 @@ struct Mover {
         float best = 1.0f;
         const Segment s = segment_at(p);
         const float len = glm::length(motion);
-        const Aabb region = swept_region(s, radius, motion, cs.skin);
+        const geometry::Aabb region = swept_region(s, radius, motion, cs.skin);
         for (std::size_t i = 0; i < obstacles.size(); ++i) {
             if (!region.overlaps(obstacles[i].bounds))
                 continue; // (sweep_capsule_in would return 1: no change)
@@ -162,15 +163,16 @@ Vec3 surface_normal(const Shape& shape, const Transform& xf, const Vec3& point, 
 namespace {
 // The box a capsule sweeps over `motion`, widened by the skin and a millimetre: obstacles whose bounds miss
 // it cannot stop the sweep. Computed once per sweep, not once per obstacle.
-Aabb swept_region(const Segment& s, float radius, const Vec3& motion, float skin) {
-    Aabb swept{glm::min(s.p0, s.p1) - Vec3(radius), glm::max(s.p0, s.p1) + Vec3(radius)};
-    swept.grow(Aabb{swept.min + motion, swept.max + motion});
+geometry::Aabb swept_region(const Segment& s, float radius, const Vec3& motion, float skin) {
+    geometry::Aabb swept{glm::min(s.p0, s.p1) - Vec3(radius), glm::max(s.p0, s.p1) + Vec3(radius)};
+    swept.grow(geometry::Aabb{swept.min + motion, swept.max + motion});
     return swept.expanded(skin + 1e-3f);
 }
 
 // sweep_capsule with the motion's length and swept region precomputed.
-float sweep_capsule_in(const Segment& s, float radius, const Vec3& motion, float len, const Aabb& region,
-                       const Obstacle& o, float skin, Vec3& normal, Vec3* surface) {
+float sweep_capsule_in(const Segment& s, float radius, const Vec3& motion, float len,
+                       const geometry::Aabb& region, const Obstacle& o, float skin, Vec3& normal,
+                       Vec3* surface) {
     if (!(len > 0.0f)) return 1.0f;
     if (!region.overlaps(o.bounds)) return 1.0f;
     float t = 0.0f;
@@ -242,9 +244,9 @@ void move_character(const ObstacleSource& world, float radius, float half_segmen
     }
 
     const float reach = std::max(cs.step_height, cs.ground_snap) + 2.0f * cs.skin + 0.05f;
-    Aabb region{position - Vec3(radius, half_segment + radius, radius),
-                position + Vec3(radius, half_segment + radius, radius)};
-    region.grow(Aabb{region.min + disp, region.max + disp});
+    geometry::Aabb region{position - Vec3(radius, half_segment + radius, radius),
+                          position + Vec3(radius, half_segment + radius, radius)};
+    region.grow(geometry::Aabb{region.min + disp, region.max + disp});
     scratch.obstacles.clear();
     world.gather(region.expanded(reach), scratch.obstacles);
 
@@ -256,8 +258,8 @@ void move_character(const ObstacleSource& world, float radius, float half_segmen
     // exact contact normal to the skin distance.
     for (int iter = 0; iter < 4; ++iter) {
         bool any = false;
-        const Aabb own{position - Vec3(radius, half_segment + radius, radius),
-                       position + Vec3(radius, half_segment + radius, radius)};
+        const geometry::Aabb own{position - Vec3(radius, half_segment + radius, radius),
+                                 position + Vec3(radius, half_segment + radius, radius)};
         for (std::size_t i = 0; i < scratch.obstacles.size(); ++i) {
             const Obstacle& o = scratch.obstacles[i];
             if (!own.overlaps(o.bounds)) continue;

@@ -36,7 +36,8 @@ struct Obstacle {
     Transform transform;
     std::uint32_t id = 0;
     bool yaw_only = false;
-    Aabb bounds{Vec3(-3.4e38f), Vec3(3.4e38f)}; // world bounds: lets sweeps skip far obstacles cheaply
+    geometry::Aabb bounds{Vec3(-3.4e38f),
+                          Vec3(3.4e38f)}; // world bounds: lets sweeps skip far obstacles cheaply
 };
 
 // A contact the character made during its move (reported to collision callbacks).
@@ -49,7 +50,7 @@ struct CharacterContact {
 class ObstacleSource {
   public:
     virtual ~ObstacleSource() = default;
-    virtual void gather(const Aabb& region, std::vector<Obstacle>& out) const = 0;
+    virtual void gather(const geometry::Aabb& region, std::vector<Obstacle>& out) const = 0;
 };
 
 struct CharacterScratch { // reused across calls: no allocation per step once warm

@@ -1,5 +1,7 @@
 #include "physics/collide.h"
 
+#include "geometry/obb.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -28,7 +30,7 @@ Vec3 support_centre(std::span<const Vec3> pts, const Vec3& dir, float tol, float
     float best = -kInf;
     for (const Vec3& p : pts) best = std::max(best, glm::dot(p, dir));
     Vec3 sum(0.0f);
-    Aabb box = Aabb::empty();
+    geometry::Aabb box = geometry::Aabb::empty();
     int n = 0;
     for (const Vec3& p : pts)
         if (glm::dot(p, dir) >= best - tol) {
@@ -110,13 +112,13 @@ std::optional<Contact> collide_convex(const Polyhedron& a, const Transform& xa, 
     auto test = [&](const Vec3& axis, int kind, int ea, int eb) -> bool {
         const Interval ia = project(va, axis), ib = project(vb, axis);
         if (ia.lo > ib.hi || ib.lo > ia.hi) return false; // separated (touching still counts as contact)
-        const float push_pos = ib.hi - ia.lo, push_neg = ia.hi - ib.lo;
-        const float pen = std::min(push_pos, push_neg);
+        const geometry::AxisOverlap<float> o = geometry::interval_overlap(ia.lo, ia.hi, ib.lo, ib.hi);
+        const float pen = o.depth;
         // Edge axes must win clearly: near-ties flip-flop between features across frames.
         const float bias = kind == 2 ? 1e-5f * (1.0f + pen) : 0.0f;
         if (pen + bias < best_pen) {
             best_pen = pen;
-            best_normal = push_pos < push_neg ? axis : -axis;
+            best_normal = o.push_a_positive ? axis : -axis;
             best_kind = kind;
             best_ea = ea;
             best_eb = eb;

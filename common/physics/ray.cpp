@@ -4,7 +4,7 @@
 #include <cmath>
 
 namespace ks::physics {
-bool ray_box(const Ray& ray, const Vec3& half, const Transform& xf, ShapeHit& hit) {
+bool ray_box(const geometry::Ray& ray, const Vec3& half, const Transform& xf, ShapeHit& hit) {
     // In the box frame, relative to its centre: the subtraction is exact for nearby points, so a box 10 km
     // from the origin is intersected as precisely as one at the origin.
     // A NaN or infinite direction would slip through the slab test below (NaN compares false) and report
@@ -15,13 +15,13 @@ bool ray_box(const Ray& ray, const Vec3& half, const Transform& xf, ShapeHit& hi
     float tmin = -3.4e38f, tmax = 3.4e38f;
     int axis = -1;
     for (int i = 0; i < 3; ++i) {
-        const float inv = 1.0f / tiny_fix(d[i]);
+        const float inv = 1.0f / geometry::tiny_fix(d[i]);
         float t0 = (-half[i] - o[i]) * inv, t1 = (half[i] - o[i]) * inv;
         if (t0 > t1) std::swap(t0, t1);
         if (t0 > tmin) tmin = t0, axis = i;
         tmax = std::min(tmax, t1);
     }
-    tmax *= kExitWiden;
+    tmax *= geometry::kExitWiden;
     if (!(tmin <= tmax) || !(tmax > 0.0f) || tmin > ray.max_distance) return false;
     if (tmin <= 0.0f) { // starts inside (or on the surface, heading in)
         hit.distance = 0.0f;
@@ -35,7 +35,7 @@ bool ray_box(const Ray& ray, const Vec3& half, const Transform& xf, ShapeHit& hi
     return true;
 }
 
-bool ray_polyhedron(const Ray& ray, const Polyhedron& p, const Transform& xf, ShapeHit& hit) {
+bool ray_polyhedron(const geometry::Ray& ray, const Polyhedron& p, const Transform& xf, ShapeHit& hit) {
     const Vec3 o = xf.to_local(ray.origin);
     const Vec3 d = xf.dir_to_local(ray.direction);
     float tmin = -3.4e38f, tmax = 3.4e38f;
@@ -53,7 +53,7 @@ bool ray_polyhedron(const Ray& ray, const Polyhedron& p, const Transform& xf, Sh
         } else {
             tmax = std::min(tmax, t);
         }
-        if (tmin > tmax * kExitWiden + 1e-30f) return false;
+        if (tmin > tmax * geometry::kExitWiden + 1e-30f) return false;
     }
     if (!(tmax > 0.0f) || tmin > ray.max_distance || entry < 0) return false;
     if (tmin <= 0.0f) {
@@ -66,7 +66,7 @@ bool ray_polyhedron(const Ray& ray, const Polyhedron& p, const Transform& xf, Sh
     return true;
 }
 
-bool ray_capsule(const Ray& ray, const Vec3& p0, const Vec3& p1, float r, ShapeHit& hit) {
+bool ray_capsule(const geometry::Ray& ray, const Vec3& p0, const Vec3& p1, float r, ShapeHit& hit) {
     // Relative to p0 for precision far from the origin.
     const Vec3 ba = p1 - p0, oa = ray.origin - p0, rd = ray.direction;
     const float baba = glm::dot(ba, ba), bard = glm::dot(ba, rd), baoa = glm::dot(ba, oa);
@@ -104,7 +104,7 @@ bool ray_capsule(const Ray& ray, const Vec3& p0, const Vec3& p1, float r, ShapeH
     return true;
 }
 
-bool ray_cylinder(const Ray& ray, const Vec3& c, float radius, float half_height, ShapeHit& hit) {
+bool ray_cylinder(const geometry::Ray& ray, const Vec3& c, float radius, float half_height, ShapeHit& hit) {
     const Vec3 o = ray.origin - c, d = ray.direction;
     const float r2 = radius * radius;
     if (std::abs(o.y) <= half_height && o.x * o.x + o.z * o.z <= r2) {
@@ -140,7 +140,7 @@ bool ray_cylinder(const Ray& ray, const Vec3& c, float radius, float half_height
     return true;
 }
 
-bool ray_shape(const Ray& ray, const Shape& shape, const Transform& xf, ShapeHit& hit) {
+bool ray_shape(const geometry::Ray& ray, const Shape& shape, const Transform& xf, ShapeHit& hit) {
     switch (shape.kind) {
     case ShapeKind::Box:
         return ray_box(ray, shape.half_extents, xf, hit);

@@ -9,7 +9,7 @@ namespace {
 
 // Fills normals, offsets, centres, edges, edge directions and bounds from vertices + face vertex lists.
 void finalize(Polyhedron& p) {
-    p.bounds = Aabb::empty();
+    p.bounds = geometry::Aabb::empty();
     for (const Vec3& v : p.vertices) p.bounds.grow(v);
     p.edges.clear();
     p.edge_directions.clear();
@@ -88,7 +88,7 @@ Result<Polyhedron> build_convex_hull(std::span<const Vec3> points, const std::st
     if (points.size() > kMaxPoints)
         return Error("convex hull has " + std::to_string(points.size()) + " vertices", Location(source),
                      "use a simplified collision mesh of at most 8192 vertices");
-    Aabb box = Aabb::empty();
+    geometry::Aabb box = geometry::Aabb::empty();
     for (std::size_t i = 0; i < points.size(); ++i) {
         const Vec3& v = points[i];
         if (!is_finite(v) || std::abs(v.x) > 1e6f || std::abs(v.y) > 1e6f || std::abs(v.z) > 1e6f)
@@ -266,7 +266,7 @@ Shape Shape::hull(Polyhedron polyhedron) {
     Shape s;
     s.kind = ShapeKind::Hull;
     // Recentre so the body position is the centre of the bounding box, like every other shape.
-    const Vec3 c = polyhedron.bounds.centre();
+    const Vec3 c = polyhedron.bounds.center();
     if (c != Vec3(0.0f)) {
         for (Vec3& v : polyhedron.vertices) v -= c;
         for (auto& f : polyhedron.faces) {
@@ -306,7 +306,7 @@ Result<void> Shape::validate(const std::string& what) const {
     return ok();
 }
 
-Aabb Shape::bounds(const Transform& xf) const {
+geometry::Aabb Shape::bounds(const Transform& xf) const {
     if (kind == ShapeKind::Capsule || kind == ShapeKind::Cylinder)
         return {xf.position - half_extents, xf.position + half_extents};
     const Mat3 r = glm::mat3_cast(xf.rotation);

@@ -9,6 +9,7 @@
 // Capsules and cylinders stay upright: their body rotation is ignored except for yaw (a no-op for them).
 #include "core/math.h"
 #include "core/result.h"
+#include "geometry/aabb.h"
 
 #include <array>
 #include <cstdint>
@@ -29,30 +30,6 @@ struct Transform {
     Vec3 dir_to_local(const Vec3& world) const { return glm::conjugate(rotation) * world; }
 };
 
-struct Aabb {
-    Vec3 min{0.0f};
-    Vec3 max{0.0f};
-    bool overlaps(const Aabb& o) const {
-        return min.x <= o.max.x && o.min.x <= max.x && min.y <= o.max.y && o.min.y <= max.y &&
-               min.z <= o.max.z && o.min.z <= max.z;
-    }
-    Aabb expanded(float by) const { return {min - Vec3(by), max + Vec3(by)}; }
-    Vec3 centre() const { return (min + max) * 0.5f; }
-    float surface_area() const {
-        Vec3 d = max - min;
-        return 2.0f * (d.x * d.y + d.y * d.z + d.z * d.x);
-    }
-    void grow(const Vec3& p) {
-        min = glm::min(min, p);
-        max = glm::max(max, p);
-    }
-    void grow(const Aabb& b) {
-        min = glm::min(min, b.min);
-        max = glm::max(max, b.max);
-    }
-    static Aabb empty() { return {Vec3(3.4e38f), Vec3(-3.4e38f)}; }
-};
-
 // A convex polyhedron in local coordinates: vertices, polygonal faces (coplanar triangles merged) with
 // centre, outward unit normal and plane offset (normal·x = offset on the face), unique edges, and the edge
 // directions that are distinct up to sign (what SAT needs for its edge×edge axes).
@@ -69,7 +46,7 @@ struct Polyhedron {
     std::vector<std::uint16_t> face_vertices;
     std::vector<std::array<std::uint16_t, 2>> edges;
     std::vector<Vec3> edge_directions; // unit, distinct up to sign
-    Aabb bounds;
+    geometry::Aabb bounds;
 
     std::span<const std::uint16_t> face_indices(const Face& f) const {
         return {face_vertices.data() + f.first, f.count};
@@ -104,7 +81,7 @@ struct Shape {
     // Validates sizes (finite, > 0, < 1e5): a clear error instead of NaN later.
     Result<void> validate(const std::string& what) const;
     // World bounding box of the shape under `xf` (exact for boxes: |R|·half).
-    Aabb bounds(const Transform& xf) const;
+    geometry::Aabb bounds(const Transform& xf) const;
 };
 
 } // namespace ks::physics

@@ -76,6 +76,10 @@ struct RayHit {
 struct RayFilter {
     std::uint32_t layers = layer::kAll & ~layer::kTrigger; // hit bodies having any of these layers
     BodyId ignore;                                         // e.g. the shooter's own capsule
+    // When set, bodies whose user data it rejects are passed over (the ray goes on to what lies behind):
+    // what layers cannot say, e.g. a robot's shots passing through other robots. A plain function, so a
+    // filter stays cheap to copy and a query allocates nothing.
+    bool (*accept_user_data)(std::uint64_t user_data) = nullptr;
     RayFilter() = default;
     RayFilter(std::uint32_t layers_, BodyId ignore_ = {}) : layers(layers_), ignore(ignore_) {}
 };
@@ -132,11 +136,13 @@ class World {
     std::span<const TriggerEvent> trigger_events() const { return trigger_events_; }
 
     // Ray queries over static, kinematic and character bodies (triggers only if the filter asks).
-    bool ray_closest(const Ray& ray, RayHit& hit, const RayFilter& filter = {}) const;
-    bool ray_any(const Ray& ray, const RayFilter& filter = {}) const;
+    // ray_closest breaks ties in distance by the lower body index, as ray_all's order does, so it returns
+    // exactly ray_all's first hit.
+    bool ray_closest(const geometry::Ray& ray, RayHit& hit, const RayFilter& filter = {}) const;
+    bool ray_any(const geometry::Ray& ray, const RayFilter& filter = {}) const;
     // Appends every hit (one per body) to `hits`, sorted; returns how many. No allocation when `hits` has
     // capacity.
-    int ray_all(const Ray& ray, std::vector<RayHit>& hits, HitOrder order = HitOrder::Ascending,
+    int ray_all(const geometry::Ray& ray, std::vector<RayHit>& hits, HitOrder order = HitOrder::Ascending,
                 const RayFilter& filter = {}) const;
     // Bodies whose shape overlaps a capsule (the editor's walkability check, spawn checks).
     int overlap_capsule(const Segment& s, float radius, std::vector<BodyId>& out,
@@ -150,7 +156,7 @@ class World {
   private:
     struct Body {
         // What broadphase queries test for every candidate first, together in the first cache line.
-        Aabb bounds;
+        geometry::Aabb bounds;
         std::uint32_t generation = 0;
         std::uint32_t layers = 0;
         std::uint32_t collides_with = 0;
@@ -175,7 +181,7 @@ class World {
             Obstacle obstacle; // as gather hands it to the controller
             std::uint32_t slot;
         };
-        Aabb region = Aabb::empty();
+        geometry::Aabb region = geometry::Aabb::empty();
         std::uint64_t epoch = 0;      // static_epoch_ it was gathered in (0: never)
         const void* bodies = nullptr; // bodies_.data() then (the obstacles point into bodies_)
         std::vector<Entry> entries;   // static bodies whose bounds overlap `region`, in slot order
@@ -189,12 +195,18 @@ class World {
     };
     class Obstacles;
     friend class Obstacles;
+    static constexpr std::uint32_t kNone = 0xffffffffu; // no slot, no character, no body
 
     Body* get(BodyId id);
     const Body* get(BodyId id) const;
     BodyId id_of(std::uint32_t index) const { return {index, bodies_[index].generation}; }
     void mark_static_dirty() { static_dirty_ = true; }
-    bool ray_body(const Ray& ray, std::uint32_t index, ShapeHit& hit) const;
+    bool ray_body(const geometry::Ray& ray, std::uint32_t index, ShapeHit& hit) const;
+    // The filter's checks besides layers: the ignored body and the user-data test.
+    bool passes(const RayFilter& filter, std::uint32_t index) const {
+        return index != filter.ignore.index &&
+               (!filter.accept_user_data || filter.accept_user_data(bodies_[index].user_data));
+    }
     void update_triggers(float dt);
     void dispatch();
 
@@ -245,11 +257,12 @@ class World {
     // padded bounds of, in lane order, both only for lanes whose layers and body pass `filter`; stops when a
     // callback returns false.
     template <class BoxHit, class OtherHit>
-    bool ray_leaf(std::uint32_t leaf, const Ray& ray, const Vec3& inv, const float& max_t,
+    bool ray_leaf(std::uint32_t leaf, const geometry::Ray& ray, const Vec3& inv, const float& max_t,
                   const RayFilter& filter, BoxHit&& box, OtherHit&& other) const;
     mutable bool static_dirty_ = true;
     mutable std::uint64_t static_epoch_ = 0; // counts static rebuilds (invalidates the characters' caches)
-    bool ray_static(const Ray& ray, const Vec3& inv_dir, const StaticPrim& prim, ShapeHit& hit) const;
+    bool ray_static(const geometry::Ray& ray, const Vec3& inv_dir, const StaticPrim& prim,
+                    ShapeHit& hit) const;
     // Moving set (kinematic bodies, characters, kinematic triggers).
     std::vector<std::uint32_t> movers_;
     // Movers' broadphase: a hash grid over x/z rebuilt each step from the bounds at the start of the step
@@ -272,7 +285,7 @@ class World {
     std::vector<std::uint32_t> static_triggers_;
     void index_movers(float dt);
     template <class Visit>
-    void movers_overlapping(const Aabb& region, Visit&& visit) const;
+    void movers_overlapping(const geometry::Aabb& region, Visit&& visit) const;
 
     // Per-step buffers, reused.
     CharacterScratch scratch_;

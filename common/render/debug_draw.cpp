@@ -11,7 +11,7 @@ void DebugDraw::line(const Vec3& a, const Vec3& b, const Vec4& color) {
     vertices_.push_back({b, color});
 }
 
-void DebugDraw::box(const Aabb& b, const Vec4& color) {
+void DebugDraw::box(const geometry::Aabb& b, const Vec4& color) {
     Mat4 t = glm::translate(Mat4(1.0f), b.center());
     box(t, b.extent(), color);
 }

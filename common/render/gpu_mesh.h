@@ -15,14 +15,14 @@ class GpuMesh {
 
     unsigned vao() const { return vao_; }
     int index_count() const { return index_count_; }
-    const Aabb& bounds() const { return bounds_; }
+    const geometry::Aabb& bounds() const { return bounds_; }
     // Points attributes 4..8 of this VAO at `instance_buffer` starting at `byte_offset`.
     void bind_instances(unsigned instance_buffer, std::size_t byte_offset) const;
 
   private:
     unsigned vao_ = 0, vbo_ = 0, ebo_ = 0;
     int index_count_ = 0;
-    Aabb bounds_;
+    geometry::Aabb bounds_;
 };
 
 struct InstanceData {

@@ -30,8 +30,8 @@ Environment environment_from_settings(const level::Settings& s) {
     return env;
 }
 
-Camera player_start_camera(const level::Level& level, float aspect) {
-    Camera cam;
+geometry::Camera player_start_camera(const level::Level& level, float aspect) {
+    geometry::Camera cam;
     cam.position = level.player_start.position + Vec3(0.0f, 3.0f, 0.0f);
     cam.yaw = radians(level.player_start.yaw);
     cam.fov_y = radians(45.0f); // the reference's field of view
@@ -88,11 +88,11 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
             // Ceilings cast no sun shadow: the sun stands for the simulator's overhead light, as in the
             // reference.
             bool ceiling = e.try_as<level::FloorProps>() && e.as<level::FloorProps>().ceiling;
-            scene->bounds_ = merge(scene->bounds_, data.bounds());
+            scene->bounds_ = geometry::merge(scene->bounds_, data.bounds());
             // A wall or floor that is an axis-aligned box (every vertex a corner of its bounds) is solid, so
             // it may hide what lies behind it (occlusion culling). Stairs' bounds hold air above the steps.
             bool occluder = !e.try_as<level::StairProps>();
-            const Aabb bounds = data.bounds();
+            const geometry::Aabb bounds = data.bounds();
             const float eps = 1e-3f * (1.0f + glm::length(bounds.max - bounds.min));
             for (const auto& v : data.vertices)
                 for (int a = 0; a < 3 && occluder; ++a)
@@ -170,7 +170,7 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
         }
     }
     for (const auto& p : scene->props_)
-        scene->bounds_ = merge(scene->bounds_, transform_aabb(p.model->bounds, p.root));
+        scene->bounds_ = geometry::merge(scene->bounds_, geometry::transform_aabb(p.model->bounds, p.root));
 
     // Bake the level geometry's light (every light, then switch off those that start off).
     std::vector<BakeSurface> bake_surfaces;

@@ -21,7 +21,7 @@ MeshData build_surface_mesh(const level::Entity& entity);
 Vec3 to_linear(const level::Color& c);
 Environment environment_from_settings(const level::Settings& settings);
 // The player's eye at the level start: feet + 3 (the reference's eye height), looking along the start yaw.
-Camera player_start_camera(const level::Level& level, float aspect);
+geometry::Camera player_start_camera(const level::Level& level, float aspect);
 
 class LevelScene {
   public:
@@ -37,7 +37,7 @@ class LevelScene {
     // Clears and fills `instances` and `lights` for the current state.
     void emit(std::vector<MeshInstance>& instances, std::vector<Light>& lights);
     const Environment& environment() const { return environment_; }
-    const Aabb& bounds() const { return bounds_; }
+    const geometry::Aabb& bounds() const { return bounds_; }
     int surface_count() const { return static_cast<int>(surfaces_.size()); }
     // The level geometry's baked light (the fast path's; see light_bake.h) and what baking it cost. Baked
     // when the GL renderer's automatic quality is Fast (software rasterisers, or KS_RENDER_QUALITY=fast);
@@ -68,7 +68,7 @@ class LevelScene {
     std::vector<Surface> surfaces_;
     std::vector<Prop> props_;
     Environment environment_;
-    Aabb bounds_ = empty_aabb();
+    geometry::Aabb bounds_ = geometry::Aabb::empty();
     LightBake bake_;
     BakeStats bake_stats_;
     LightmapTexture lightmap_;

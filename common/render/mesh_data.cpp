@@ -4,9 +4,9 @@
 
 namespace ks::render {
 
-Aabb MeshData::bounds() const {
-    Aabb box = empty_aabb();
-    for (const auto& v : vertices) box = merge(box, {v.position, v.position});
+geometry::Aabb MeshData::bounds() const {
+    geometry::Aabb box = geometry::Aabb::empty();
+    for (const auto& v : vertices) box = geometry::merge(box, {v.position, v.position});
     return box;
 }
 

@@ -2,7 +2,7 @@
 // CPU-side triangle meshes and the builders for level geometry (boxes, stairs). No GL: the builders are
 // tested on their own and uploaded by GpuMesh.
 #include "core/math.h"
-#include "render/camera.h"
+#include "geometry/aabb.h"
 
 #include <cstdint>
 #include <vector>
@@ -20,7 +20,7 @@ struct Vertex {
 struct MeshData {
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;
-    Aabb bounds() const;
+    geometry::Aabb bounds() const;
 };
 
 // A box with the given centre/size in the mesh's space. UVs are box-mapped in *world* units divided by

@@ -199,11 +199,12 @@ std::unique_ptr<Model> load_model(const std::filesystem::path& path, TextureCach
     walk(scene->mRootNode, -1);
     std::vector<Mat4> world;
     model->node_transforms(Mat4(1.0f), model->rest_pose(), world);
-    model->bounds = empty_aabb();
+    model->bounds = geometry::Aabb::empty();
     for (size_t i = 0; i < model->nodes.size(); ++i)
         for (int m : model->nodes[i].meshes)
-            model->bounds = merge(
-                model->bounds, transform_aabb(model->meshes[static_cast<size_t>(m)].gpu->bounds(), world[i]));
+            model->bounds = geometry::merge(
+                model->bounds,
+                geometry::transform_aabb(model->meshes[static_cast<size_t>(m)].gpu->bounds(), world[i]));
     if (!model->bounds.valid()) model->bounds = {Vec3(-0.5f), Vec3(0.5f)};
     return model;
 }

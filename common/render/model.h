@@ -39,7 +39,7 @@ class Model {
     std::vector<ModelNode> nodes; // parents come before children
     std::vector<ModelMesh> meshes;
     std::vector<Material> materials;
-    Aabb bounds; // of the rest pose, in model space
+    geometry::Aabb bounds; // of the rest pose, in model space
     bool placeholder = false;
 
     int find_node(std::string_view name) const;  // -1 when absent

@@ -1,7 +1,7 @@
 #pragma once
 // What the game and the editor hand the SceneRenderer each frame: mesh instances, lights, the environment
 // (ambient, sun, fog) and a camera. Plain data, filled into reused vectors (no per-frame allocation).
-#include "render/camera.h"
+#include "geometry/camera.h"
 
 namespace ks::render {
 

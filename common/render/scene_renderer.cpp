@@ -2,6 +2,7 @@
 
 #include "core/log.h"
 #include "core/paths.h"
+#include "geometry/frustum.h"
 #include "render/gpu_mesh.h"
 #include "render/lightmap_texture.h"
 #include "render/material.h"
@@ -228,7 +229,7 @@ std::uint64_t SceneRenderer::shadow_caster_hash(const std::vector<MeshInstance>&
 void SceneRenderer::pick_lights(const SceneFrame& frame, FrameStats& stats) {
     lights_in_view_.clear();
     if (!frame.lights) return;
-    Frustum frustum(frame.camera.projection() * frame.camera.view());
+    geometry::Frustum frustum(frame.camera.projection() * frame.camera.view());
     for (size_t i = 0; i < frame.lights->size() && lights_in_view_.size() < kMaxLightsInView; ++i) {
         const Light& l = (*frame.lights)[i];
         if (l.intensity <= 0.0f || l.range <= 0.0f) continue;
@@ -238,7 +239,7 @@ void SceneRenderer::pick_lights(const SceneFrame& frame, FrameStats& stats) {
 }
 
 namespace {
-float distance_to_box(const Vec3& p, const Aabb& b) {
+float distance_to_box(const Vec3& p, const geometry::Aabb& b) {
     Vec3 d = glm::max(glm::max(b.min - p, p - b.max), Vec3(0.0f));
     return glm::length(d);
 }
@@ -251,7 +252,7 @@ void SceneRenderer::cull_and_batch(const SceneFrame& frame, FrameStats& stats) {
     const Vec3 eye = frame.camera.position;
     const bool view_model_pass = !view_world_.empty();
     const std::vector<MeshInstance>& source = view_model_pass ? view_world_ : *frame.instances;
-    Frustum frustum(frame.camera.projection() * frame.camera.view());
+    geometry::Frustum frustum(frame.camera.projection() * frame.camera.view());
     const int light_cap = std::clamp(settings_.max_lights_per_draw, 0, kMaxLightsPerDraw);
     // Fast path: the faces of the occluder boxes (walls, floors) in view that face the eye. What lies
     // entirely behind one of them is skipped: the rooms next door cost no vertex shading or binning.
@@ -261,16 +262,16 @@ void SceneRenderer::cull_and_batch(const SceneFrame& frame, FrameStats& stats) {
     if (occlusion)
         for (const auto& inst : source)
             if (inst.occluder && inst.mesh) {
-                Aabb local = inst.mesh->bounds();
+                geometry::Aabb local = inst.mesh->bounds();
                 local.min += inst.occluder_inset;
                 local.max -= inst.occluder_inset;
-                Aabb box = transform_aabb(local, inst.world);
+                geometry::Aabb box = geometry::transform_aabb(local, inst.world);
                 if (frustum.intersects(box)) append_occluder_faces(box, eye, occluder_faces_);
             }
     if (occlusion) merge_occluder_faces(occluder_faces_);
     for (const auto& inst : source) {
         if (!inst.mesh || !inst.material) continue;
-        Aabb box = transform_aabb(inst.mesh->bounds(), inst.world);
+        geometry::Aabb box = geometry::transform_aabb(inst.mesh->bounds(), inst.world);
         if (!view_model_pass && !frustum.intersects(box)) {
             ++stats.instances_culled;
             continue;
@@ -377,11 +378,11 @@ void SceneRenderer::render_shadows(const SceneFrame& frame, FrameStats& stats) {
     // Fit an orthographic box around every caster, seen from the sun.
     instance_data_.clear();
     shadow_batches_.clear();
-    Aabb bounds = empty_aabb();
+    geometry::Aabb bounds = geometry::Aabb::empty();
     shadow_order_.clear();
     for (const auto& inst : *frame.instances)
         if (casts_shadow(inst) && inst.mesh) {
-            bounds = merge(bounds, transform_aabb(inst.mesh->bounds(), inst.world));
+            bounds = geometry::merge(bounds, geometry::transform_aabb(inst.mesh->bounds(), inst.world));
             shadow_order_.push_back(&inst);
         }
     if (!bounds.valid()) return;
@@ -401,7 +402,7 @@ void SceneRenderer::render_shadows(const SceneFrame& frame, FrameStats& stats) {
     float radius = glm::length(bounds.extent()) + 1.0f;
     Vec3 up = std::abs(sun.y) > 0.99f ? Vec3(0, 0, 1) : Vec3(0, 1, 0);
     Mat4 light_view = glm::lookAt(center - sun * radius, center, up);
-    Aabb ls = transform_aabb(bounds, light_view);
+    geometry::Aabb ls = geometry::transform_aabb(bounds, light_view);
     Mat4 light_proj = glm::ortho(ls.min.x, ls.max.x, ls.min.y, ls.max.y, -ls.max.z - 1.0f, -ls.min.z + 1.0f);
     Mat4 light_vp = light_proj * light_view;
     const Mat4 bias(0.5f, 0, 0, 0, 0, 0.5f, 0, 0, 0, 0, 0.5f, 0, 0.5f, 0.5f, 0.5f, 1.0f);
@@ -516,8 +517,8 @@ void SceneRenderer::upload_lights(const ShaderProgram& program, std::uint32_t li
     }
 }
 
-void SceneRenderer::draw_batches_fast(const Camera& camera, const SceneFrame& frame, FrameStats& stats,
-                                      bool view_model) {
+void SceneRenderer::draw_batches_fast(const geometry::Camera& camera, const SceneFrame& frame,
+                                      FrameStats& stats, bool view_model) {
     upload_instances();
     const Environment& env = frame.environment;
     const Mat4 view_projection = camera.projection() * camera.view();
@@ -810,7 +811,7 @@ FrameStats SceneRenderer::render(const SceneFrame& frame) {
         }
         glClear(GL_DEPTH_BUFFER_BIT);
         cull_and_batch(frame, stats);
-        Camera vm = frame.camera;
+        geometry::Camera vm = frame.camera;
         vm.near_plane = 0.01f;
         vm.far_plane = 20.0f;
         vm.fov_y = frame.view_model->fov_y;

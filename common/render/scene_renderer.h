@@ -6,6 +6,7 @@
 #include "core/result.h"
 #include "render/debug_draw.h"
 #include "render/gpu_mesh.h"
+#include "render/occlusion.h"
 #include "render/particles.h"
 #include "render/scene.h"
 #include "render/shader_library.h"
@@ -81,7 +82,7 @@ struct ViewModel {
 };
 
 struct SceneFrame {
-    Camera camera;
+    geometry::Camera camera;
     Environment environment;
     const std::vector<MeshInstance>* instances = nullptr;
     const std::vector<Light>* lights = nullptr;
@@ -124,7 +125,8 @@ class SceneRenderer {
     void render_shadows(const SceneFrame& frame, FrameStats& stats);
     void draw_batches(const Mat4& view_projection, const Vec3& eye, const SceneFrame& frame,
                       FrameStats& stats, bool view_model);
-    void draw_batches_fast(const Camera& camera, const SceneFrame& frame, FrameStats& stats, bool view_model);
+    void draw_batches_fast(const geometry::Camera& camera, const SceneFrame& frame, FrameStats& stats,
+                           bool view_model);
     void upload_lights(const ShaderProgram& program, std::uint32_t light_mask, const SceneFrame& frame);
     struct Batch;
     void draw_instanced(const Batch& b, FrameStats& stats); // one batch: a draw call and its triangles
@@ -166,7 +168,7 @@ class SceneRenderer {
         const MeshInstance* instance;
         float distance;
         std::uint32_t light_mask;
-        Aabb bounds;
+        geometry::Aabb bounds;
         unsigned lightmap; // 0 unless the fast path reads this instance's light map
     };
     struct Batch {

@@ -57,7 +57,7 @@ class Editor {
     // Tools: every visible, unlocked entity the predicate accepts (screen-space box select passes one).
     int select_where(const std::function<bool(const level::Entity&)>& accept,
                      SelectMode mode = SelectMode::Replace);
-    int select_in_box(const Aabb& box, SelectMode mode = SelectMode::Replace);
+    int select_in_box(const geometry::Aabb& box, SelectMode mode = SelectMode::Replace);
     int select_all_of_type(level::EntityType type, SelectMode mode = SelectMode::Replace);
     int select_all();
     void clear_selection() { doc_.selection.clear(); }

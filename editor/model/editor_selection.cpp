@@ -54,8 +54,8 @@ int Editor::select_where(const std::function<bool(const level::Entity&)>& accept
     return static_cast<int>(ids.size());
 }
 
-int Editor::select_in_box(const Aabb& box, SelectMode mode) {
-    return select_where([&](const level::Entity& e) { return entity_obb(e).aabb().intersects(box); }, mode);
+int Editor::select_in_box(const geometry::Aabb& box, SelectMode mode) {
+    return select_where([&](const level::Entity& e) { return entity_obb(e).aabb().overlaps(box); }, mode);
 }
 
 int Editor::select_all_of_type(level::EntityType type, SelectMode mode) {

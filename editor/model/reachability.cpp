@@ -16,8 +16,8 @@ constexpr int kMaxSurfaces = 4; // walkable layers per cell kept for the search 
 constexpr int kMaxFound = 8;    // surfaces gathered per cell before buried ones are dropped
 
 struct Solid {
-    Obb box;
-    Aabb bounds;
+    geometry::Obb box;
+    geometry::Aabb bounds;
     // Floor slabs only matter as headroom (a low ceiling or an overhang above the node): they are tested
     // against the body's centre column. Their edges are not walls: climbing onto a slab is the step rule's
     // business, and where a stair meets a platform the slab's edge hides inside the stair's wedge.
@@ -40,7 +40,7 @@ bool blocks_walking(EntityType t) {
 
 struct SupportBox {
     const Entity* entity;
-    Obb box;
+    geometry::Obb box;
 };
 
 // What the walk reads from the level: the goal, what the body stands on and what it bumps into.
@@ -48,7 +48,7 @@ struct WalkScene {
     const Entity* panel = nullptr;
     std::vector<SupportBox> supports;
     std::vector<Solid> solids;
-    Aabb area{Vec3(3e38f), Vec3(-3e38f)}; // the supports' extent, which the grid covers
+    geometry::Aabb area{Vec3(3e38f), Vec3(-3e38f)}; // the supports' extent, which the grid covers
 };
 
 WalkScene gather_scene(const level::Level& level) {
@@ -56,13 +56,13 @@ WalkScene gather_scene(const level::Level& level) {
     for (const auto& e : level.entities) {
         if (!is_finite(e.position) || !is_finite(e.rotation)) continue;
         if (!scene.panel && e.type() == EntityType::ControlPanel) scene.panel = &e;
-        const Obb box = entity_obb(e);
+        const geometry::Obb box = entity_obb(e);
         if (blocks_walking(e.type()))
             scene.solids.push_back({box, box.aabb(), e.type() == EntityType::Floor});
         const auto* floor = e.try_as<level::FloorProps>();
         if (e.type() == EntityType::Stair || (floor && !floor->ceiling)) {
             scene.supports.push_back({&e, box});
-            const Aabb b = box.aabb();
+            const geometry::Aabb b = box.aabb();
             scene.area.min = glm::min(scene.area.min, b.min);
             scene.area.max = glm::max(scene.area.max, b.max);
         }
@@ -86,7 +86,7 @@ struct WalkGrid {
                     origin.z + (static_cast<float>(r) + 0.5f) * cell);
     }
     // The cells that `b`, grown by `grow` on X and Z, covers.
-    void cell_range(const Aabb& b, float grow, int& c0, int& c1, int& r0, int& r1) const {
+    void cell_range(const geometry::Aabb& b, float grow, int& c0, int& c1, int& r0, int& r1) const {
         c0 = std::max(0, static_cast<int>(std::floor((b.min.x - grow - origin.x) / cell)));
         c1 = std::min(cols - 1, static_cast<int>(std::floor((b.max.x + grow - origin.x) / cell)));
         r0 = std::max(0, static_cast<int>(std::floor((b.min.z - grow - origin.z) / cell)));
@@ -95,7 +95,7 @@ struct WalkGrid {
 };
 
 // The cell size doubles until the grid has at most about 2M cells.
-WalkGrid make_grid(const Aabb& area, float walk_cell) {
+WalkGrid make_grid(const geometry::Aabb& area, float walk_cell) {
     WalkGrid grid;
     grid.origin = area.min;
     float cell = std::max(walk_cell, 0.05f);
@@ -195,10 +195,10 @@ void close_blocked_nodes(WalkGrid& grid, const std::vector<Solid>& solids, const
                     if (!node || s.bounds.min.y >= h + ch.height || s.bounds.max.y <= h + ch.step_height)
                         continue;
                     const Vec2 p = grid.centre(c, r);
-                    Obb body;
+                    geometry::Obb body;
                     body.center = {p.x, h + ch.step_height + body_half_height, p.y};
                     body.half = {reach, body_half_height, reach};
-                    if (obb_overlap(body, s.box).overlapping) node = 0;
+                    if (geometry::obb_overlap(body, s.box).overlapping) node = 0;
                 }
             }
     }
@@ -219,8 +219,8 @@ std::optional<size_t> start_node(const WalkGrid& grid, const Vec3& start, const 
 }
 
 // Reached: the body touches the panel (its box grown by the body radius and a little reach).
-Obb goal_box(const Entity& panel, const CharacterLimits& ch, float cell) {
-    Obb goal = entity_obb(panel);
+geometry::Obb goal_box(const Entity& panel, const CharacterLimits& ch, float cell) {
+    geometry::Obb goal = entity_obb(panel);
     goal.half += Vec3(ch.radius + cell + 0.25f, 0.5f, ch.radius + cell + 0.25f);
     return goal;
 }
@@ -235,7 +235,7 @@ int landing_layer(const WalkGrid& grid, size_t index, float h, const CharacterLi
 }
 
 // Breadth-first over open nodes from `start` until the body reaches `goal`; counts the nodes visited.
-void flood_fill(const WalkGrid& grid, size_t start, const Obb& goal, const CharacterLimits& ch,
+void flood_fill(const WalkGrid& grid, size_t start, const geometry::Obb& goal, const CharacterLimits& ch,
                 WalkGridStats& stats) {
     std::vector<std::uint8_t> seen(grid.cells() * kMaxSurfaces, 0);
     std::deque<size_t> queue{start};
@@ -304,7 +304,7 @@ std::uint64_t walk_fingerprint(const level::Level& level, const ValidationOption
         const EntityType t = e.type();
         const auto* floor = e.try_as<level::FloorProps>();
         if (!blocks_walking(t) && t != EntityType::Stair && t != EntityType::ControlPanel) continue;
-        const Obb box = entity_obb(e);
+        const geometry::Obb box = entity_obb(e);
         const int type = static_cast<int>(t), ceiling = floor && floor->ceiling ? 1 : 0;
         mix_value(e.id), mix_value(type), mix_value(ceiling), mix_value(e.position), mix_value(e.rotation);
         mix_value(box.center), mix_value(box.axes), mix_value(box.half);

@@ -40,8 +40,8 @@ int entity_id_from_path(const Level& level, const std::string& path) {
 // An entity with its box, computed once per validation.
 struct Placed {
     const Entity* entity;
-    Obb box;
-    Aabb bounds;
+    geometry::Obb box;
+    geometry::Aabb bounds;
 };
 
 // The level's walls and walkable surfaces (floors, stairs) with their boxes, indexed on the ground plane.
@@ -50,8 +50,8 @@ struct Solids {
     XzGrid wall_grid, support_grid;
     mutable std::vector<int> near; // query results, reused
 
-    static std::vector<Aabb> bounds_of(const std::vector<Placed>& placed) {
-        std::vector<Aabb> b;
+    static std::vector<geometry::Aabb> bounds_of(const std::vector<Placed>& placed) {
+        std::vector<geometry::Aabb> b;
         b.reserve(placed.size());
         for (const Placed& p : placed) b.push_back(p.bounds);
         return b;
@@ -63,7 +63,7 @@ struct Solids {
             if (walls ? t != EntityType::Wall || !is_finite(e.position) || !is_finite(e.rotation)
                       : t != EntityType::Floor && t != EntityType::Stair)
                 continue;
-            const Obb box = entity_obb(e);
+            const geometry::Obb box = entity_obb(e);
             out.push_back({&e, box, box.aabb()});
         }
         return out;
@@ -72,7 +72,7 @@ struct Solids {
         : walls(collect(level, true)), supports(collect(level, false)), wall_grid(bounds_of(walls)),
           support_grid(bounds_of(supports)) {}
     // Walls whose box may overlap `box`, in level order.
-    const std::vector<int>& walls_near(const Aabb& box) const {
+    const std::vector<int>& walls_near(const geometry::Aabb& box) const {
         wall_grid.query(box, near);
         return near;
     }
@@ -152,7 +152,7 @@ std::optional<SupportProblem> support_problem(const Solids& solids, int self_id,
 }
 
 // Horizontal push that takes `box` out of a wall it overlaps by `ov` (none for vertical overlaps).
-std::optional<Vec3> push_out(const Overlap& ov) {
+std::optional<Vec3> push_out(const geometry::Overlap& ov) {
     Vec3 horizontal(ov.axis.x, 0.0f, ov.axis.z);
     const float len = glm::length(horizontal);
     if (len < 0.3f) return std::nullopt;
@@ -192,10 +192,10 @@ void check_player_start(const Level& level, const Solids& solids, const Validati
         // Without ground under it the player falls forever: that is an error, not a nit.
         add(problem->fixed_y ? problem->severity : IssueSeverity::Error, problem->message, std::move(fix));
     }
-    const Obb body = player_obb(start);
+    const geometry::Obb body = player_obb(start);
     for (int i : solids.walls_near(body.aabb())) {
         const Placed& w = solids.walls[static_cast<size_t>(i)];
-        Overlap ov = obb_overlap(body, w.box);
+        geometry::Overlap ov = geometry::obb_overlap(body, w.box);
         if (!ov.overlapping) continue;
         QuickFix fix;
         if (auto delta = push_out(ov)) {
@@ -229,12 +229,12 @@ void check_control_panels(const Level& level, std::vector<Issue>& out) {
 void check_wall_overlaps(const Level& level, const Solids& solids, std::vector<Issue>& out) {
     for (const auto& e : level.entities) {
         if (!is_gameplay_body(e.type())) continue;
-        const Obb box = entity_obb(e);
-        const Aabb bounds = box.aabb();
+        const geometry::Obb box = entity_obb(e);
+        const geometry::Aabb bounds = box.aabb();
         for (int i : solids.walls_near(bounds)) {
             const Placed& w = solids.walls[static_cast<size_t>(i)];
-            if (!bounds.intersects(w.bounds)) continue;
-            Overlap ov = obb_overlap(box, w.box, 0.01f);
+            if (!bounds.overlaps(w.bounds)) continue;
+            geometry::Overlap ov = geometry::obb_overlap(box, w.box, 0.01f);
             if (!ov.overlapping) continue;
             QuickFix fix;
             if (auto delta = push_out(ov)) {
@@ -292,11 +292,11 @@ void check_doors(const Level& level, const Solids& solids, std::vector<Issue>& o
     for (const auto& e : level.entities) {
         const auto* d = e.try_as<level::DoorProps>();
         if (!d) continue;
-        const Obb door = entity_obb(e);
+        const geometry::Obb door = entity_obb(e);
         // Probes just beyond each jamb, at mid height, must be inside a wall; the doorway must be free.
         auto wall_at = [&](float side) {
             const Vec3 probe = door.center + door.axes[0] * (side * (d->width / 2 + 0.25f));
-            for (int i : solids.walls_near(Aabb{probe, probe}))
+            for (int i : solids.walls_near(geometry::Aabb{probe, probe}))
                 if (solids.walls[static_cast<size_t>(i)].box.contains(probe, 0.05f)) return true;
             return false;
         };
@@ -308,12 +308,12 @@ void check_doors(const Level& level, const Solids& solids, std::vector<Issue>& o
             problem = "has no wall beside its -x jamb";
         else if (!right)
             problem = "has no wall beside its +x jamb";
-        Obb doorway = door;
+        geometry::Obb doorway = door;
         doorway.half = {std::max(d->width / 2 - 0.1f, 0.01f), std::max(d->height / 2 - 0.1f, 0.01f), 0.05f};
         if (problem.empty())
             for (int i : solids.walls_near(doorway.aabb())) {
                 const Placed& w = solids.walls[static_cast<size_t>(i)];
-                if (obb_overlap(doorway, w.box).overlapping) {
+                if (geometry::obb_overlap(doorway, w.box).overlapping) {
                     problem = "is blocked by " + describe(*w.entity);
                     break;
                 }

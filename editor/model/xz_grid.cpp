@@ -5,7 +5,7 @@
 
 namespace ks::editor {
 namespace {
-bool finite_box(const Aabb& b) {
+bool finite_box(const geometry::Aabb& b) {
     return std::isfinite(b.min.x) && std::isfinite(b.min.z) && std::isfinite(b.max.x) &&
            std::isfinite(b.max.z);
 }
@@ -13,16 +13,16 @@ constexpr int kMaxCellsPerAxis = 1024;
 // Items are indexed a little larger than their boxes: the rules' exact tests (a point inside an oriented
 // box, an overlap with tolerance) may accept what rounding puts a hair outside the box's AABB.
 constexpr float kMargin = 0.1f;
-Aabb inflated(const Aabb& b) {
+geometry::Aabb inflated(const geometry::Aabb& b) {
     return {b.min - Vec3(kMargin), b.max + Vec3(kMargin)};
 }
 } // namespace
 
-XzGrid::XzGrid(const std::vector<Aabb>& boxes) {
+XzGrid::XzGrid(const std::vector<geometry::Aabb>& boxes) {
     float x0 = 3e38f, z0 = 3e38f, x1 = -3e38f, z1 = -3e38f;
     int finite = 0;
     for (int i = 0; i < static_cast<int>(boxes.size()); ++i) {
-        const Aabb b = inflated(boxes[static_cast<size_t>(i)]);
+        const geometry::Aabb b = inflated(boxes[static_cast<size_t>(i)]);
         if (!finite_box(b)) {
             everywhere_.push_back(i);
             continue;
@@ -41,24 +41,25 @@ XzGrid::XzGrid(const std::vector<Aabb>& boxes) {
     rows_ = std::max(1, static_cast<int>(std::floor((z1 - z0) / cell_)) + 1);
     // Two passes (count, then fill) into one contiguous array.
     std::vector<int> count(static_cast<size_t>(columns_) * rows_ + 1, 0);
-    auto for_cells = [&](const Aabb& b, auto&& visit) {
+    auto for_cells = [&](const geometry::Aabb& b, auto&& visit) {
         int c0, c1, r0, r1;
         if (!cell_range(b, c0, c1, r0, r1)) return;
         for (int r = r0; r <= r1; ++r)
             for (int c = c0; c <= c1; ++c) visit(static_cast<size_t>(r) * columns_ + c);
     };
-    for (const Aabb& box : boxes)
-        if (const Aabb b = inflated(box); finite_box(b)) for_cells(b, [&](size_t k) { ++count[k + 1]; });
+    for (const geometry::Aabb& box : boxes)
+        if (const geometry::Aabb b = inflated(box); finite_box(b))
+            for_cells(b, [&](size_t k) { ++count[k + 1]; });
     for (size_t k = 1; k < count.size(); ++k) count[k] += count[k - 1];
     cell_start_ = count;
     items_.resize(static_cast<size_t>(count.back()));
     for (int i = 0; i < static_cast<int>(boxes.size()); ++i) {
-        const Aabb b = inflated(boxes[static_cast<size_t>(i)]);
+        const geometry::Aabb b = inflated(boxes[static_cast<size_t>(i)]);
         if (finite_box(b)) for_cells(b, [&](size_t k) { items_[static_cast<size_t>(count[k]++)] = i; });
     }
 }
 
-bool XzGrid::cell_range(const Aabb& box, int& c0, int& c1, int& r0, int& r1) const {
+bool XzGrid::cell_range(const geometry::Aabb& box, int& c0, int& c1, int& r0, int& r1) const {
     if (columns_ == 0 || !finite_box(box)) return false;
     auto index = [&](float v, float origin, int n) {
         const float f = std::floor((v - origin) / cell_);
@@ -72,7 +73,7 @@ bool XzGrid::cell_range(const Aabb& box, int& c0, int& c1, int& r0, int& r1) con
     return true;
 }
 
-void XzGrid::query(const Aabb& box, std::vector<int>& out) const {
+void XzGrid::query(const geometry::Aabb& box, std::vector<int>& out) const {
     out.assign(everywhere_.begin(), everywhere_.end());
     int c0, c1, r0, r1;
     if (!finite_box(box)) { // a non-finite query box: everything, as a plain loop would test everything
@@ -89,7 +90,7 @@ void XzGrid::query(const Aabb& box, std::vector<int>& out) const {
 }
 
 void XzGrid::query_point(float x, float z, std::vector<int>& out) const {
-    query(Aabb{Vec3(x, 0.0f, z), Vec3(x, 0.0f, z)}, out);
+    query(geometry::Aabb{Vec3(x, 0.0f, z), Vec3(x, 0.0f, z)}, out);
 }
 
 } // namespace ks::editor

@@ -125,7 +125,7 @@ void DojoPanel::render(float width, float height, double dt) {
     if (model_) model_->emit(Mat4(1.0f), model_pose_, scratch_, instances_);
     instances_.push_back({floor_.get(), floor_material_, Mat4(1.0f), 1.0f, false});
     const Vec3 target(0.0f, 1.6f, 0.0f);
-    render::Camera camera;
+    geometry::Camera camera;
     camera.fov_y = radians(40.0f);
     camera.aspect = preview_w_ / preview_h_;
     camera.yaw = orbit_yaw_;

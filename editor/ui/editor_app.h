@@ -90,9 +90,9 @@ class EditorApp {
     void draw_overlays();
     void draw_axis_grid(ImDrawList* draw, Vec2 origin) const;
     void viewport_input(Vec2 origin, bool hovered);
-    int pick(const Ray& ray) const;
+    int pick(const geometry::Ray& ray) const;
     bool shown(const level::Entity& e) const; // not hidden, and not a ceiling while ceilings are off
-    Vec3 place_point(const Ray& ray) const;
+    Vec3 place_point(const geometry::Ray& ray) const;
     Vec3 selection_pivot() const;
     void focus_selection();
     void set_view(ViewMode mode);

@@ -44,7 +44,7 @@ std::optional<Vec4> outline_colour(const level::Entity& e) {
     }
 }
 
-Mat4 obb_transform(const Obb& box) {
+Mat4 obb_transform(const geometry::Obb& box) {
     Mat4 m(box.axes);
     m[3] = Vec4(box.center, 1.0f);
     return m;
@@ -126,7 +126,7 @@ void EditorApp::draw_overlays() {
         const bool selected = doc.is_selected(e.id);
         const auto outline = view_.orthographic() && overlays_.outlines ? outline_colour(e) : std::nullopt;
         if (selected || overlays_.collision || outline) {
-            Obb box = entity_obb(e);
+            geometry::Obb box = entity_obb(e);
             if (selected) box.half += Vec3(0.06f);
             debug_.box(obb_transform(box), box.half,
                        selected              ? kSelected
@@ -167,12 +167,12 @@ void EditorApp::draw_overlays() {
     }
     if (placing_ && viewport_hovered_) { // where a click would place
         const ImVec2 m = ImGui::GetIO().MousePos;
-        const Ray ray = view_.ray(Vec2(m.x, m.y) - viewport_origin_);
+        const geometry::Ray ray = view_.ray(Vec2(m.x, m.y) - viewport_origin_);
         const Vec3 p = place_point(ray);
         level::Entity preview;
         preview.position = p;
         preview.props = level::default_props(*placing_);
-        const Obb box = entity_obb(preview);
+        const geometry::Obb box = entity_obb(preview);
         debug_.box(obb_transform(box), box.half, Vec4(0.4f, 1.0f, 0.5f, 0.9f));
     }
 }
@@ -214,11 +214,11 @@ void EditorApp::draw_axis_grid(ImDrawList* draw, Vec2 origin) const {
     draw->AddText(ImVec2(origin.x + 10, origin.y + 26), IM_COL32(200, 210, 230, 200), text);
 }
 
-int EditorApp::pick(const Ray& ray) const {
+int EditorApp::pick(const geometry::Ray& ray) const {
     return pick_entity(editor_.doc(), ray, [this](const level::Entity& e) { return shown(e); }).id;
 }
 
-Vec3 EditorApp::place_point(const Ray& ray) const {
+Vec3 EditorApp::place_point(const geometry::Ray& ray) const {
     return editor::place_point(
         editor_.doc(), ray, [this](const level::Entity& e) { return shown(e); }, view_.pivot);
 }
@@ -235,13 +235,13 @@ void EditorApp::focus_selection() {
     Vec3 lo(1e30f), hi(-1e30f);
     if (selected.empty()) {
         for (const auto& e : editor_.level().entities) {
-            const Aabb b = entity_obb(e).aabb();
+            const geometry::Aabb b = entity_obb(e).aabb();
             lo = glm::min(lo, b.min), hi = glm::max(hi, b.max);
         }
         if (editor_.level().entities.empty()) lo = Vec3(-10.0f), hi = Vec3(10.0f);
     } else {
         for (const level::Entity* e : selected) {
-            const Aabb b = entity_obb(*e).aabb();
+            const geometry::Aabb b = entity_obb(*e).aabb();
             lo = glm::min(lo, b.min), hi = glm::max(hi, b.max);
         }
     }
@@ -253,7 +253,7 @@ void EditorApp::set_view(ViewMode mode) {
     if (!editor_.level().entities.empty()) {
         lo = Vec3(1e30f), hi = Vec3(-1e30f);
         for (const auto& e : editor_.level().entities) {
-            const Aabb b = entity_obb(e).aabb();
+            const geometry::Aabb b = entity_obb(e).aabb();
             lo = glm::min(lo, b.min), hi = glm::max(hi, b.max);
         }
     }
@@ -377,7 +377,7 @@ void EditorApp::viewport_input(Vec2 origin, bool hovered) {
     if (io.KeyAlt) return; // Alt + left drag orbits
     if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
         if (placing_) {
-            const Ray ray = view_.ray(mouse);
+            const geometry::Ray ray = view_.ray(mouse);
             auto placed = editor_.place(*placing_, place_point(ray));
             if (!placed) log_line("place: " + placed.error().str(), true);
             if (!io.KeyShift) placing_.reset(); // Shift keeps placing

@@ -109,7 +109,7 @@ Handle gizmo_hit(GizmoMode mode, const GizmoShape& s, Vec2 mouse) {
     return best_handle;
 }
 
-std::optional<float> axis_parameter(const Ray& ray, const Vec3& pivot, const Vec3& axis) {
+std::optional<float> axis_parameter(const geometry::Ray& ray, const Vec3& pivot, const Vec3& axis) {
     const Vec3 w0 = pivot - ray.origin;
     const float b = glm::dot(axis, ray.direction);
     const float denom = 1.0f - b * b;
@@ -117,7 +117,7 @@ std::optional<float> axis_parameter(const Ray& ray, const Vec3& pivot, const Vec
     return (b * glm::dot(ray.direction, w0) - glm::dot(axis, w0)) / denom;
 }
 
-std::optional<Vec3> plane_point(const Ray& ray, const Vec3& pivot, const Vec3& normal) {
+std::optional<Vec3> plane_point(const geometry::Ray& ray, const Vec3& pivot, const Vec3& normal) {
     const float denom = glm::dot(normal, ray.direction);
     if (std::abs(denom) < 1e-5f) return std::nullopt; // edge-on plane
     const float t = glm::dot(pivot - ray.origin, normal) / denom;
@@ -133,7 +133,7 @@ void Gizmo::begin(Editor& editor, const ViewCamera& view, const Vec3& pivot, Han
     applied_angle_ = 0.0f;
     applied_scale_ = Vec3(1.0f);
     readout_.clear();
-    const Ray r = view.ray(mouse);
+    const geometry::Ray r = view.ray(mouse);
     if (const int axis = axis_of(handle); axis >= 0) {
         start_param_ = axis_parameter(r, pivot, kAxes[axis]).value_or(0.0f);
     } else if (handle == Handle::Yaw) {
@@ -150,7 +150,7 @@ void Gizmo::begin(Editor& editor, const ViewCamera& view, const Vec3& pivot, Han
 std::string Gizmo::drag(Editor& editor, const ViewCamera& view, Vec2 mouse) {
     if (active_ == Handle::None) return {};
     const GridSettings& grid = editor.doc().grid;
-    const Ray r = view.ray(mouse);
+    const geometry::Ray r = view.ray(mouse);
     char text[96];
     Result<void> result;
     auto move_to = [&](const Vec3& total) {

@@ -40,8 +40,8 @@ Handle gizmo_hit(GizmoMode mode, const GizmoShape& shape, Vec2 mouse);
 
 // Drag maths: the parameter along `pivot + axis * s` closest to the ray (nullopt when the ray is parallel
 // to the axis), and the ray's point on the plane through `pivot` (nullopt when edge-on or behind).
-std::optional<float> axis_parameter(const Ray& ray, const Vec3& pivot, const Vec3& axis);
-std::optional<Vec3> plane_point(const Ray& ray, const Vec3& pivot, const Vec3& normal);
+std::optional<float> axis_parameter(const geometry::Ray& ray, const Vec3& pivot, const Vec3& axis);
+std::optional<Vec3> plane_point(const geometry::Ray& ray, const Vec3& pivot, const Vec3& normal);
 
 class Gizmo {
   public:

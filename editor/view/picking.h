@@ -1,6 +1,7 @@
 #pragma once
 // Picking and placing with viewport rays (view_camera.h), window-free: the entity whose oriented box a ray
-// enters first, and the point a palette click places at (the surface under the cursor, snapped).
+// enters first (geometry::ray_obb), and the point a palette click places at (the surface under the
+// cursor, snapped).
 #include "model/bounds.h"
 #include "model/document.h"
 #include "view/view_camera.h"
@@ -8,10 +9,6 @@
 #include <functional>
 
 namespace ks::editor {
-
-// Slab test of a ray against an oriented box: the entry distance (0 when the origin is inside), or a
-// negative number for a miss.
-float ray_obb(const Ray& ray, const Obb& box);
 
 // Which entities the viewport shows (hidden ones and, unless shown, ceilings are not picked).
 using ShownFn = std::function<bool(const level::Entity&)>;
@@ -21,11 +18,11 @@ struct PickHit {
     float distance = 0.0f;
 };
 // The nearest shown, unlocked entity the ray enters.
-PickHit pick_entity(const Document& doc, const Ray& ray, const ShownFn& shown);
+PickHit pick_entity(const Document& doc, const geometry::Ray& ray, const ShownFn& shown);
 
 // Where a palette click places: the first floor, stair or wall the ray meets (its top or face), else the
 // ground plane y = 0 in front of the camera, else (a level ray in the front and side views) the plane
 // through `fallback` facing the ray. x and z snap to the grid; y stays on the surface.
-Vec3 place_point(const Document& doc, const Ray& ray, const ShownFn& shown, const Vec3& fallback);
+Vec3 place_point(const Document& doc, const geometry::Ray& ray, const ShownFn& shown, const Vec3& fallback);
 
 } // namespace ks::editor

@@ -1,7 +1,5 @@
 #include "view/view_camera.h"
 
-#include "view/camera_math.h"
-
 #include <algorithm>
 #include <cmath>
 
@@ -32,19 +30,19 @@ void ViewCamera::set_viewport(Vec2 size) {
 }
 
 Vec3 ViewCamera::forward() const {
-    return camera_forward(camera);
+    return -camera.basis()[2];
 }
 Vec3 ViewCamera::right() const {
-    return camera_basis(camera)[0];
+    return camera.basis()[0];
 }
 Vec3 ViewCamera::up() const {
-    return camera_basis(camera)[1];
+    return camera.basis()[1];
 }
 
 Mat4 ViewCamera::view_projection() const {
-    render::Camera c = camera;
+    geometry::Camera c = camera;
     c.aspect = viewport_.x / viewport_.y;
-    return camera_projection(c) * camera_view(c);
+    return c.view_projection();
 }
 
 float ViewCamera::world_per_pixel(const Vec3& at) const {
@@ -53,35 +51,12 @@ float ViewCamera::world_per_pixel(const Vec3& at) const {
     return depth * 2.0f * std::tan(camera.fov_y * 0.5f) / viewport_.y;
 }
 
-Ray ViewCamera::ray(Vec2 pixel) const {
-    const Mat3 basis = camera_basis(camera);
-    const float aspect = viewport_.x / viewport_.y;
-    const float nx = 2.0f * pixel.x / viewport_.x - 1.0f, ny = 1.0f - 2.0f * pixel.y / viewport_.y;
-    if (orthographic()) { // parallel rays: the pixel's point on the camera plane, along the view direction
-        const float half_h = 0.5f * camera.ortho_height, half_w = half_h * aspect;
-        return {camera.position + basis[0] * (nx * half_w) + basis[1] * (ny * half_h), -basis[2]};
-    }
-    const float t = std::tan(camera.fov_y * 0.5f);
-    return {camera.position, glm::normalize(-basis[2] + basis[0] * (nx * t * aspect) + basis[1] * (ny * t))};
+geometry::Ray ViewCamera::ray(Vec2 pixel) const {
+    return geometry::screen_ray(camera, pixel, viewport_);
 }
 
 bool ViewCamera::project(const Vec3& world, Vec2& out) const {
-    const Mat3 basis = camera_basis(camera);
-    const Vec3 v = world - camera.position;
-    const float depth = -glm::dot(v, basis[2]);
-    const float aspect = viewport_.x / viewport_.y;
-    float half_w = 0.0f, half_h = 0.0f;
-    if (orthographic()) {
-        if (depth < 0.0f) return false;
-        half_h = 0.5f * camera.ortho_height;
-    } else {
-        if (depth <= 1e-4f) return false;
-        half_h = depth * std::tan(camera.fov_y * 0.5f);
-    }
-    half_w = half_h * aspect;
-    const float nx = glm::dot(v, basis[0]) / half_w, ny = glm::dot(v, basis[1]) / half_h;
-    out = Vec2((nx + 1.0f) * 0.5f * viewport_.x, (1.0f - ny) * 0.5f * viewport_.y);
-    return true;
+    return geometry::world_to_screen(camera, world, viewport_, out);
 }
 
 void ViewCamera::leave_axis_view() {
@@ -158,7 +133,7 @@ bool ViewCamera::update(const ViewInput& in, double dt) {
 
 void ViewCamera::zoom_at(float wheel, Vec2 mouse) {
     if (!orthographic()) return;
-    const Ray before = ray(mouse);
+    const geometry::Ray before = ray(mouse);
     const float old_height = camera.ortho_height;
     camera.ortho_height = std::clamp(old_height * std::pow(0.85f, wheel), kMinOrthoHeight, kMaxOrthoHeight);
     // The pixel's offset on the camera plane scales with the height; move the camera by the difference.

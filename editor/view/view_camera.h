@@ -1,19 +1,13 @@
 #pragma once
 // The viewport's camera, window-free: fly (right mouse + WASD/QE, wheel = speed), orbit (Alt + left drag
 // around a pivot), pan (middle drag; right drag in the axis views), focus on a box (F), and true
-// orthographic top/front/side views (render::Camera::ortho_height) with zoom about the cursor. Screen to
+// orthographic top/front/side views (geometry::Camera::ortho_height) with zoom about the cursor. Screen to
 // world rays and world to screen projection are computed in closed form from the camera's basis (no
 // matrix inverse), for both projections: in the axis views every ray is parallel to the view direction.
 // The ImGui front end only reads the mouse and keys into a ViewInput (ui/view_input.cpp).
-#include "core/math.h"
-#include "render/camera.h"
+#include "geometry/camera.h"
 
 namespace ks::editor {
-
-struct Ray {
-    Vec3 origin{0.0f};
-    Vec3 direction{0.0f, 0.0f, -1.0f}; // unit
-};
 
 enum class ViewMode { Perspective, Top, Front, Side };
 const char* view_mode_name(ViewMode mode);
@@ -31,7 +25,7 @@ struct ViewInput {
 
 class ViewCamera {
   public:
-    render::Camera camera;
+    geometry::Camera camera;
     float speed = 12.0f; // fly speed, units/s (wheel while flying changes it)
     Vec3 pivot{0.0f};    // orbit centre
     ViewMode mode = ViewMode::Perspective;
@@ -57,7 +51,7 @@ class ViewCamera {
     Vec3 up() const;
     // Pixel (x, y) inside the viewport to a world ray starting on the camera's plane (orthographic) or at
     // the eye (perspective).
-    Ray ray(Vec2 pixel) const;
+    geometry::Ray ray(Vec2 pixel) const;
     // World to viewport pixels; false when the point is behind the camera.
     bool project(const Vec3& world, Vec2& out) const;
     // World units per pixel at `at` (constant in the axis views).

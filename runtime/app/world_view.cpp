@@ -45,7 +45,7 @@ void WorldView::capture(const game::Game& game, Snapshot& s) const {
     s.eye = p.eye() - Vec3(0.0f, death.eye_drop, 0.0f);
     s.yaw = p.yaw;
     s.pitch = std::clamp(p.pitch + death.pitch, -kPi * 0.5f, kPi * 0.5f);
-    s.roll = death.roll; // the game's roll is render::Camera's (positive leans the head right)
+    s.roll = death.roll; // the game's roll is geometry::Camera's (positive leans the head right)
     const auto robots = game.robots();
     s.robot_feet.resize(robots.size());
     s.robot_yaw.resize(robots.size());

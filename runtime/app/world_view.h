@@ -41,7 +41,7 @@ class WorldView {
     // Fills the frame for the game's state at `alpha` between the last two steps.
     void fill(const game::Game& game, float alpha, float fov_degrees, const DojoDummy* dummy,
               render::SceneFrame& frame);
-    const render::Camera& camera() const { return camera_; }
+    const geometry::Camera& camera() const { return camera_; }
     int live_emitters() const { return static_cast<int>(emitters_.size()); }
 
   private:
@@ -74,7 +74,7 @@ class WorldView {
     std::vector<std::unique_ptr<render::ParticleEmitter>> emitters_;
     std::vector<const render::ParticleEmitter*> emitter_list_;
     std::uint64_t next_seed_ = 1;
-    render::Camera camera_;
+    geometry::Camera camera_;
     double time_ = 0.0;
 };
 

@@ -110,7 +110,7 @@ TEST_CASE("gizmo hit tests: axes within 9 pixels, plane squares inside, the ring
 }
 
 TEST_CASE("drag maths: closest axis parameter and plane point, degenerate cases refused") {
-    const Ray down{Vec3(3, 50, -2), Vec3(0, -1, 0)};
+    const geometry::Ray down{Vec3(3, 50, -2), Vec3(0, -1, 0)};
     CHECK(*axis_parameter(down, Vec3(0.0f), Vec3(1, 0, 0)) == doctest::Approx(3.0f));
     CHECK(*axis_parameter(down, Vec3(0.0f), Vec3(0, 0, 1)) == doctest::Approx(-2.0f));
     CHECK_FALSE(axis_parameter(down, Vec3(0.0f), Vec3(0, 1, 0))); // looking down the axis
@@ -121,7 +121,7 @@ TEST_CASE("drag maths: closest axis parameter and plane point, degenerate cases 
     CHECK_FALSE(plane_point(down, Vec3(0.0f), Vec3(1, 0, 0)));                             // edge-on
     CHECK_FALSE(plane_point({Vec3(0, -5, 0), Vec3(0, -1, 0)}, Vec3(0.0f), Vec3(0, 1, 0))); // behind
     // A slanted perspective ray: the parameter is the closest point of two skew lines.
-    const Ray slant{Vec3(0, 10, 10), glm::normalize(Vec3(0.3f, -1.0f, -1.0f))};
+    const geometry::Ray slant{Vec3(0, 10, 10), glm::normalize(Vec3(0.3f, -1.0f, -1.0f))};
     const float s = *axis_parameter(slant, Vec3(0.0f), Vec3(1, 0, 0));
     const Vec3 on_axis(s, 0, 0);
     const Vec3 w = on_axis - slant.origin;

@@ -1,7 +1,6 @@
 // The viewport camera's maths without a window: orthographic axis views (parallel rays, orientation, zoom
 // about the cursor, pan, grid), perspective, and agreement of the closed-form rays and projection with the
 // renderer's view-projection matrix (the picture) on ordinary and hard (far, tiny, grazing) cases.
-#include "view/camera_math.h"
 #include "view/view_camera.h"
 
 #include <doctest/doctest.h>
@@ -33,7 +32,7 @@ float worst_round_trip(const ViewCamera& v, float depth) {
     float worst = 0.0f;
     for (float y = 0.0f; y <= kViewport.y; y += kViewport.y / 6.0f)
         for (float x = 0.0f; x <= kViewport.x; x += kViewport.x / 8.0f) {
-            const Ray r = v.ray(Vec2(x, y));
+            const geometry::Ray r = v.ray(Vec2(x, y));
             Vec2 back;
             REQUIRE(v.project(r.origin + r.direction * depth, back));
             worst = std::max(worst, glm::length(back - Vec2(x, y)));
@@ -81,8 +80,8 @@ TEST_CASE("axis views are orthographic and face the right way") {
 
 TEST_CASE("orthographic rays are parallel, start on the camera plane and project back to their pixel") {
     const ViewCamera top = axis_view(ViewMode::Top, Vec3(3, 0, 7), 60.0f);
-    const Ray a = top.ray(Vec2(0, 0)), b = top.ray(Vec2(960, 540)), c = top.ray(Vec2(480, 270));
-    for (const Ray& r : {a, b, c}) {
+    const geometry::Ray a = top.ray(Vec2(0, 0)), b = top.ray(Vec2(960, 540)), c = top.ray(Vec2(480, 270));
+    for (const geometry::Ray& r : {a, b, c}) {
         CHECK(r.direction.x == doctest::Approx(0.0f));
         CHECK(r.direction.y == doctest::Approx(-1.0f));
         CHECK(r.direction.z == doctest::Approx(0.0f));
@@ -113,7 +112,7 @@ TEST_CASE("closed-form rays and projection agree with the picture's matrix in bo
             const float nx = 2.0f * px.x / kViewport.x - 1.0f, ny = 1.0f - 2.0f * px.y / kViewport.y;
             const Vec4 n = inverse * Vec4(nx, ny, -1.0f, 1.0f), f = inverse * Vec4(nx, ny, 1.0f, 1.0f);
             const Vec3 pn = Vec3(n) / n.w, pf = Vec3(f) / f.w;
-            const Ray r = v->ray(px);
+            const geometry::Ray r = v->ray(px);
             CHECK(glm::dot(glm::normalize(pf - pn), r.direction) == doctest::Approx(1.0f).epsilon(1e-5));
             const Vec3 off = pn - r.origin;
             CHECK(glm::length(off - r.direction * glm::dot(off, r.direction)) < 1e-3f);

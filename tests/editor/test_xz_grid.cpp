@@ -14,7 +14,7 @@ using namespace ks;
 using namespace ks::editor;
 
 namespace {
-bool meets_xz(const Aabb& a, const Aabb& b) {
+bool meets_xz(const geometry::Aabb& a, const geometry::Aabb& b) {
     return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.z <= b.max.z && b.min.z <= a.max.z;
 }
 } // namespace
@@ -23,7 +23,7 @@ TEST_CASE("xz grid: queries return every box they meet, sorted and once, for ran
     std::mt19937 rng(7);
     std::uniform_real_distribution<float> centre(-500.0f, 500.0f), size(0.0f, 6.0f), coin(0.0f, 1.0f);
     for (int round = 0; round < 20; ++round) {
-        std::vector<Aabb> boxes;
+        std::vector<geometry::Aabb> boxes;
         const int n = 1 + round * 37;
         for (int i = 0; i < n; ++i) {
             const Vec3 c(centre(rng), centre(rng) * 0.01f, centre(rng));
@@ -39,7 +39,7 @@ TEST_CASE("xz grid: queries return every box they meet, sorted and once, for ran
         for (int q = 0; q < 200; ++q) {
             const Vec3 c(centre(rng) * 1.2f, 0.0f, centre(rng) * 1.2f);
             const Vec3 half = q % 3 == 0 ? Vec3(0.0f) : Vec3(size(rng) * 4.0f);
-            const Aabb query{c - half, c + half};
+            const geometry::Aabb query{c - half, c + half};
             grid.query(query, got);
             CHECK(std::is_sorted(got.begin(), got.end()));
             CHECK(std::adjacent_find(got.begin(), got.end()) == got.end());
@@ -54,7 +54,7 @@ TEST_CASE("xz grid: queries return every box they meet, sorted and once, for ran
 
 TEST_CASE("xz grid: non-finite boxes are returned by every query; an empty grid returns nothing") {
     const float nan = std::numeric_limits<float>::quiet_NaN();
-    const std::vector<Aabb> boxes = {
+    const std::vector<geometry::Aabb> boxes = {
         {Vec3(0.0f), Vec3(1.0f)}, {Vec3(nan, 0.0f, 0.0f), Vec3(1.0f)}, {Vec3(100.0f), Vec3(101.0f)}};
     const XzGrid grid(boxes);
     std::vector<int> got;
@@ -64,7 +64,7 @@ TEST_CASE("xz grid: non-finite boxes are returned by every query; an empty grid 
     CHECK(got == std::vector<int>{1});
     grid.query({Vec3(nan), Vec3(nan)}, got); // a non-finite query meets everything, as a plain loop would
     CHECK(got == std::vector<int>{0, 1, 2});
-    const XzGrid empty(std::vector<Aabb>{});
+    const XzGrid empty(std::vector<geometry::Aabb>{});
     empty.query_point(0.0f, 0.0f, got);
     CHECK(got.empty());
 }

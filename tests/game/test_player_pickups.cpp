@@ -123,7 +123,7 @@ TEST_CASE("death flow: fall camera (0.3 s Quadratic.In drop, 0.3 s Bounce roll),
     CHECK(g->death_camera().eye_drop == doctest::Approx(1.5f));
     CHECK(g->death_camera().roll == doctest::Approx(0.0f).epsilon(0.01));
     run_for(*g, 0.3);
-    // The reference's camera.rotation.z = +π/2: a fall onto the left side, render::Camera roll −π/2.
+    // The reference's camera.rotation.z = +π/2: a fall onto the left side, geometry::Camera roll −π/2.
     CHECK(g->death_camera().roll == doctest::Approx(-kPi / 2));
     CHECK(g->death_camera().pitch == doctest::Approx(kPi / 4));
     CHECK_FALSE(g->death_camera().menu_ready);

@@ -115,7 +115,7 @@ Polyhedron random_polyhedron(Rng& rng, const char*& kind) {
 // ---------------------------------------------------------------------------------------------------------
 // 1. Finite in, finite out.
 
-void check_hit(bool hit, const ShapeHit& h, const Ray& ray, const char* what, int i) {
+void check_hit(bool hit, const ShapeHit& h, const geometry::Ray& ray, const char* what, int i) {
     if (!hit) return;
     INFO(what << " case " << i << " origin " << str(ray.origin) << " dir " << str(ray.direction));
     REQUIRE(std::isfinite(h.distance));
@@ -161,7 +161,7 @@ TEST_CASE("physics properties: every query is finite for random finite input") {
             scene_rotation(rng)};
         const Vec3 half = random_half(rng);
         // Rays from near the shape (often inside or on it) and from far away, aimed at it or anywhere.
-        Ray ray;
+        geometry::Ray ray;
         ray.origin = xf.position + random_unit(rng) * rng.uniform(0.0f, rng.chance(0.5f) ? 3.0f : 60.0f);
         ray.direction =
             rng.chance(0.5f)
@@ -240,7 +240,7 @@ TEST_CASE("physics properties: NaN and infinite input get a clear answer, never 
     for (const Vec3& bad : nans) {
         INFO("bad value " << str(bad));
         for (int which = 0; which < 3; ++which) {
-            Ray ray{{0, 0, 0}, {0, 0, -1}, 100.0f};
+            geometry::Ray ray{{0, 0, 0}, {0, 0, -1}, 100.0f};
             if (which == 0) ray.origin = bad;
             if (which == 1) ray.direction = bad;
             if (which == 2) ray.max_distance = bad.x + bad.y + bad.z;
@@ -598,7 +598,7 @@ TEST_CASE("physics properties: single-shape ray casts agree with a double-precis
             shape = Shape::cylinder(half.x, half.y);
             sd = [=](const DVec3& p) { return ref::sd_cylinder(p, DVec3(at), half.x, half.y); };
         }
-        Ray ray;
+        geometry::Ray ray;
         ray.origin = at + random_unit(rng) * rng.uniform(0.0f, rng.chance(0.2f) ? 3.0f : 40.0f);
         const Vec3 aim = at + random_unit(rng) * rng.uniform(0.0f, 5.0f);
         ray.direction =
@@ -656,7 +656,7 @@ TEST_CASE("physics properties: world ray casts agree with brute force over a 200
     int rays = 0, hits = 0, boundary = 0;
     for (int i = 0; i < 3000; ++i) {
         const scenes::Room& room = scene.rooms[rng.below(static_cast<std::uint32_t>(scene.rooms.size()))];
-        Ray ray;
+        geometry::Ray ray;
         ray.origin = {rng.uniform(room.min.x, room.max.x), rng.uniform(0.1f, 15.0f),
                       rng.uniform(room.min.z, room.max.z)};
         ray.direction = rng.chance(0.25f) ? awkward_direction(rng) : random_unit(rng);
@@ -740,7 +740,7 @@ TEST_CASE("regression: capsule contact normals are unit length far from the orig
 // ray_box checks the direction first, like ray_polyhedron, ray_capsule and ray_cylinder in effect do.
 TEST_CASE("regression: ray_box with a non-finite direction reports no hit") {
     for (const Vec3& bad : {Vec3(kNaN, 0, 0), Vec3(0, kInf, 0), Vec3(0, 0, -kInf), Vec3(kNaN)}) {
-        const Ray ray{{0, 0, 0}, bad, 100.0f};
+        const geometry::Ray ray{{0, 0, 0}, bad, 100.0f};
         ShapeHit h;
         const bool hit = ray_box(ray, Vec3(1), {{0, 0, -5}, Quat(1, 0, 0, 0)}, h);
         INFO("direction " << str(bad) << ": hit " << hit << " at " << h.distance << " normal "

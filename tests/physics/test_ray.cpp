@@ -13,13 +13,13 @@ using namespace ks;
 using namespace ks::physics;
 
 namespace {
-Ray ray(Vec3 o, Vec3 d, float max = 1e6f) {
+geometry::Ray ray(Vec3 o, Vec3 d, float max = 1e6f) {
     return {o, glm::normalize(d), max};
 }
 Quat yaw(float a) {
     return glm::angleAxis(a, Vec3(0, 1, 0));
 }
-double ref_box(const Ray& r, Vec3 half, const Transform& xf) {
+double ref_box(const geometry::Ray& r, Vec3 half, const Transform& xf) {
     return reference::ray_box(DVec3(r.origin), DVec3(r.direction),
                               {DVec3(xf.position), glm::dquat(xf.rotation), DVec3(half)}, r.max_distance);
 }
@@ -53,7 +53,7 @@ TEST_CASE(
                                                rng.uniform(-1, 1)))};
         Vec3 d(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
         if (glm::length(d) < 1e-3f) continue;
-        const Ray r = ray({rng.uniform(-8, 8), rng.uniform(-8, 8), rng.uniform(-8, 8)}, d, 20.0f);
+        const geometry::Ray r = ray({rng.uniform(-8, 8), rng.uniform(-8, 8), rng.uniform(-8, 8)}, d, 20.0f);
         ShapeHit h;
         const bool fast = ray_box(r, half, xf, h);
         const double ref = ref_box(r, half, xf);
@@ -92,7 +92,7 @@ TEST_CASE("rays through shared edges and vertices of adjacent faces: exactly one
     // Two boxes sharing a face: rays along the seam from above hit (closest-hit picks one), for every step.
     for (float x = -1.0f; x < 1.0f; x += 0.125f) { // z = +1 is the outer max edge: tangent, half-open
         ShapeHit ha, hb;
-        const Ray down = ray({0.0f, 5.0f, x}, {0, -1, 0});
+        const geometry::Ray down = ray({0.0f, 5.0f, x}, {0, -1, 0});
         const bool a = ray_box(down, {1, 1, 1}, {{-1, 0, 0}, Quat(1, 0, 0, 0)}, ha);
         const bool b = ray_box(down, {1, 1, 1}, {{1, 0, 0}, Quat(1, 0, 0, 0)}, hb);
         CHECK((a || b));
@@ -103,7 +103,7 @@ TEST_CASE("rays through shared edges and vertices of adjacent faces: exactly one
     int slipped = 0;
     for (int i = -500; i <= 500; ++i) {
         const Vec3 seam = q * Vec3(0, 0, i * 0.001f);
-        const Ray down = ray(seam + Vec3(1e-7f * i, 5, 0), {0, -1, 0});
+        const geometry::Ray down = ray(seam + Vec3(1e-7f * i, 5, 0), {0, -1, 0});
         ShapeHit h;
         if (!ray_box(down, {1, 1, 1}, left, h) && !ray_box(down, {1, 1, 1}, right, h)) ++slipped;
     }
@@ -114,7 +114,7 @@ TEST_CASE("rays parallel to a face and lying in its plane: half-open, so stacked
     const Vec3 half(1, 1, 1);
     const Transform lower{{0, 0, 0}, Quat(1, 0, 0, 0)}, upper{{0, 2, 0}, Quat(1, 0, 0, 0)};
     ShapeHit h;
-    const Ray in_plane = ray({-5, 1, 0}, {1, 0, 0}); // along y = 1, the shared face
+    const geometry::Ray in_plane = ray({-5, 1, 0}, {1, 0, 0}); // along y = 1, the shared face
     const int count = ray_box(in_plane, half, lower, h) + ray_box(in_plane, half, upper, h);
     CHECK(count == 1);
     CHECK(ref_box(in_plane, half, lower) < 0.0);
@@ -132,7 +132,7 @@ TEST_CASE("grazing rays at 1e-6 rad and geometry 10 km from the origin keep mill
         // The distance is ill-conditioned (one rounding of the 0.5-unit coordinates, 3e-8, moves it by
         // 3e-8/angle), so the bound is millimetre plus that conditioning.
         const Transform xf{{0, -0.5f, 0}, Quat(1, 0, 0, 0)};
-        const Ray r = ray({-4000, 1e-3f, 0}, {std::cos(angle), -std::sin(angle), 0}, 1e7f);
+        const geometry::Ray r = ray({-4000, 1e-3f, 0}, {std::cos(angle), -std::sin(angle), 0}, 1e7f);
         ShapeHit h;
         const bool hit = ray_box(r, half, xf, h);
         const double ref = ref_box(r, half, xf);
@@ -146,7 +146,7 @@ TEST_CASE("grazing rays at 1e-6 rad and geometry 10 km from the origin keep mill
     for (int i = 0; i < 2000; ++i) {
         const Vec3 far(10000.0f, 20.0f, -10000.0f);
         const Transform xf{far + Vec3(rng.uniform(-5, 5), 0, rng.uniform(-5, 5)), yaw(rng.uniform(0, 3))};
-        const Ray r =
+        const geometry::Ray r =
             ray(far + Vec3(rng.uniform(-20, 20), rng.uniform(-20, 20), rng.uniform(-20, 20)),
                 Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)) + Vec3(1e-3f), 100.0f);
         ShapeHit h;

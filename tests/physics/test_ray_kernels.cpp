@@ -31,9 +31,9 @@ std::vector<RayKernel> available_kernels() {
 
 // Random rays from the rooms plus rays aimed exactly at box corners and edge midpoints, lying in face
 // planes and starting on faces: the traversal's slab tests are on their boundary there.
-std::vector<Ray> test_rays(const scenes::RoomsScene& scene, int random_rays, std::uint64_t seed) {
+std::vector<geometry::Ray> test_rays(const scenes::RoomsScene& scene, int random_rays, std::uint64_t seed) {
     Rng rng(seed);
-    std::vector<Ray> rays;
+    std::vector<geometry::Ray> rays;
     for (int i = 0; i < random_rays; ++i)
         rays.push_back({scenes::random_origin(scene, rng), scenes::random_direction(rng), 100.0f});
     for (std::size_t bi = 0; bi < scene.boxes.size(); bi += 3) {
@@ -73,7 +73,7 @@ struct Answer {
     bool any = false;
 };
 
-std::vector<Answer> cast_all(const World& w, const std::vector<Ray>& rays) {
+std::vector<Answer> cast_all(const World& w, const std::vector<geometry::Ray>& rays) {
     std::vector<Answer> out(rays.size());
     for (std::size_t i = 0; i < rays.size(); ++i) {
         out[i].hit = w.ray_closest(rays[i], out[i].h);
@@ -140,7 +140,7 @@ TEST_CASE("ray kernels: each kernel matches the double-precision reference, hard
     for (RayKernel k : available_kernels()) {
         REQUIRE(set_ray_kernel(k));
         int mismatches = 0, boundary = 0;
-        for (const Ray& r : rays) {
+        for (const geometry::Ray& r : rays) {
             RayHit h;
             const bool hit = w.ray_closest(r, h);
             const auto v = reference::judge(DVec3(r.origin), DVec3(r.direction), r.max_distance,
@@ -166,7 +166,7 @@ TEST_CASE("ray kernels: filters (layers, ignore, disabled bodies) act the same i
     for (RayKernel k : available_kernels()) {
         REQUIRE(set_ray_kernel(k));
         for (std::size_t i = 0; i < rays.size(); i += 7) {
-            const Ray& r = rays[i];
+            const geometry::Ray& r = rays[i];
             RayHit h;
             if (!w.ray_closest(r, h)) continue;
             const std::size_t hit_index = std::find(ids.begin(), ids.end(), h.body) - ids.begin();

@@ -109,10 +109,10 @@ TEST_CASE("hull shapes are recentred on their bounding box; world bounds are exa
     REQUIRE(hull.ok());
     const Shape s = Shape::hull(std::move(*hull));
     CHECK(s.half_extents == Vec3(0.5f, 1.0f, 0.5f));
-    CHECK(glm::length(s.polyhedron->bounds.centre()) < 1e-6f);
+    CHECK(glm::length(s.polyhedron->bounds.center()) < 1e-6f);
 
     const Shape box = Shape::box({2, 1, 0.5f});
-    const Aabb b = box.bounds({{0, 0, 0}, glm::angleAxis(kPi / 2, Vec3(0, 1, 0))});
+    const geometry::Aabb b = box.bounds({{0, 0, 0}, glm::angleAxis(kPi / 2, Vec3(0, 1, 0))});
     CHECK(b.max.x == doctest::Approx(0.5f));
     CHECK(b.max.z == doctest::Approx(2.0f));
 }

@@ -168,7 +168,7 @@ TEST_CASE("world rays on a generated 2k-box level match brute force in double pr
     int mismatches = 0, hits = 0;
     std::vector<RayHit> all;
     for (int i = 0; i < 20000; ++i) {
-        const Ray r{scenes::random_origin(scene, rng), scenes::random_direction(rng), 100.0f};
+        const geometry::Ray r{scenes::random_origin(scene, rng), scenes::random_direction(rng), 100.0f};
         RayHit h;
         const bool hit = w.ray_closest(r, h);
         const auto want = reference::closest(DVec3(r.origin), DVec3(r.direction), ref, r.max_distance);
@@ -212,12 +212,12 @@ TEST_CASE("world rays (SIMD leaf prefilter) give bit-identical distances to the 
             const Vec3 edge = b.centre + q * (b.half * Vec3(k & 1 ? 1 : -1, 0, k & 4 ? 1 : -1));
             for (const Vec3& target : {corner, edge}) {
                 const Vec3 o = target + scenes::random_direction(rng) * rng.uniform(0.5f, 10.0f);
-                const Ray r{o, glm::normalize(target - o), 100.0f};
+                const geometry::Ray r{o, glm::normalize(target - o), 100.0f};
                 float want = r.max_distance;
                 bool want_hit = false;
                 for (BodyId id : ids) {
                     ShapeHit h;
-                    Ray shrunk = r;
+                    geometry::Ray shrunk = r;
                     shrunk.max_distance = want;
                     if (ray_shape(shrunk, w.shape(id), w.transform(id), h) &&
                         (h.distance < want || !want_hit))
@@ -247,7 +247,7 @@ TEST_CASE("ray layer masks and ignore: a shot skips the shooter, sight rays skip
     glass.layers = layer::kSolid | layer::kShootable; // does not block sight
     BodyId pane = *w.add(glass, "glass");
     BodyId wall = add_box(w, {0, 2, -10}, {5, 5, 0.25f});
-    const Ray shot{w.transform(p).position + Vec3(0, 1.5f, 0), {0, 0, -1}, 500};
+    const geometry::Ray shot{w.transform(p).position + Vec3(0, 1.5f, 0), {0, 0, -1}, 500};
     RayHit h;
     REQUIRE(w.ray_closest(shot, h)); // starts inside its own capsule
     CHECK(h.body == p);

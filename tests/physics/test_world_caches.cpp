@@ -18,7 +18,7 @@ TEST_CASE("BVH box queries visit leaf slots in ascending order and find exactly 
     Rng rng(31);
     for (int n : {1, 3, 9, 64, 500, 3000}) {
         CAPTURE(n);
-        std::vector<Aabb> items;
+        std::vector<geometry::Aabb> items;
         for (int i = 0; i < n; ++i) {
             const Vec3 c(rng.uniform(-100, 100), rng.uniform(-10, 10), rng.uniform(-100, 100));
             const Vec3 h(rng.uniform(0.1f, 4), rng.uniform(0.1f, 4), rng.uniform(0.1f, 4));
@@ -29,7 +29,7 @@ TEST_CASE("BVH box queries visit leaf slots in ascending order and find exactly 
         const auto order = bvh.item_order();
         for (int q = 0; q < 200; ++q) {
             const Vec3 c(rng.uniform(-110, 110), rng.uniform(-12, 12), rng.uniform(-110, 110));
-            const Aabb box{c - Vec3(rng.uniform(0, 20)), c + Vec3(rng.uniform(0, 20))};
+            const geometry::Aabb box{c - Vec3(rng.uniform(0, 20)), c + Vec3(rng.uniform(0, 20))};
             std::vector<std::uint32_t> visited;
             bvh.aabb_query(box, [&](std::uint32_t slot) {
                 if (items[order[slot]].overlaps(box)) visited.push_back(slot);
@@ -38,7 +38,7 @@ TEST_CASE("BVH box queries visit leaf slots in ascending order and find exactly 
             CHECK(std::is_sorted(visited.begin(), visited.end()));
             CHECK(std::adjacent_find(visited.begin(), visited.end()) == visited.end());
             int expected = 0;
-            for (const Aabb& it : items) expected += it.overlaps(box);
+            for (const geometry::Aabb& it : items) expected += it.overlaps(box);
             CHECK(static_cast<int>(visited.size()) == expected);
         }
     }

@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <array>
 #include <cmath>
 
 using namespace ks;

@@ -1,9 +1,10 @@
 // Renderer pieces that need no GL context: culling math, level geometry, particles, HUD helpers, shader logs.
+#include "geometry/frustum.h"
 #include "level/level.h"
-#include "render/camera.h"
 #include "render/hud.h"
 #include "render/level_scene.h"
 #include "render/mesh_data.h"
+#include "render/occlusion.h"
 #include "render/particles.h"
 #include "render/raster_threads.h"
 #include "render/scene_renderer.h"
@@ -26,10 +27,10 @@ using namespace ks;
 using namespace ks::render;
 
 TEST_CASE("frustum keeps boxes in front of the camera and culls those behind or beside it") {
-    Camera cam;
+    geometry::Camera cam;
     cam.position = Vec3(0, 3, 0);
     cam.yaw = 0; // looks along -z
-    Frustum f(cam.projection() * cam.view());
+    geometry::Frustum f(cam.projection() * cam.view());
     CHECK(f.intersects({Vec3(-1, 2, -11), Vec3(1, 4, -9)}));
     CHECK_FALSE(f.intersects({Vec3(-1, 2, 9), Vec3(1, 4, 11)}));        // behind
     CHECK_FALSE(f.intersects({Vec3(100, 2, -11), Vec3(102, 4, -9)}));   // far to the right
@@ -38,44 +39,45 @@ TEST_CASE("frustum keeps boxes in front of the camera and culls those behind or 
     CHECK(f.intersects_sphere(Vec3(0, 3, 5), 6.0f)); // a light behind whose range reaches in
     CHECK_FALSE(f.intersects_sphere(Vec3(0, 3, 50), 6.0f));
     cam.yaw = kPi * 0.5f; // now looks along -x
-    Frustum left(cam.projection() * cam.view());
+    geometry::Frustum left(cam.projection() * cam.view());
     CHECK(left.intersects({Vec3(-11, 2, -1), Vec3(-9, 4, 1)}));
     CHECK_FALSE(left.intersects({Vec3(-1, 2, -11), Vec3(1, 4, -9)}));
 }
 
 TEST_CASE(
     "occlusion culling: a box behind a wall face is hidden, one that peeks out or stands in front is not") {
-    Camera cam;
+    geometry::Camera cam;
     cam.position = Vec3(0, 3, 25);
     cam.yaw = 0.0f;                                             // looking along -z
-    const Aabb wall{Vec3(-10, 0, -0.25f), Vec3(10, 16, 0.25f)}; // a 20-wide, 16-high slab across the view
+    const geometry::Aabb wall{Vec3(-10, 0, -0.25f),
+                              Vec3(10, 16, 0.25f)}; // a 20-wide, 16-high slab across the view
     std::vector<OccluderFace> faces;
     append_occluder_faces(wall, cam.position, faces);
     REQUIRE(faces.size() == 1); // the eye is level with the slab in x and y: only its +z face looks at it
     CHECK(faces[0].axis == 2);
     CHECK(faces[0].plane == doctest::Approx(0.25f));
-    auto hidden = [&](const Aabb& box) {
+    auto hidden = [&](const geometry::Aabb& box) {
         for (const auto& f : faces)
             if (hidden_behind(box, f, cam)) return true;
         return false;
     };
-    const Aabb robot{Vec3(-1, 0, -20), Vec3(1, 4, -18)};
+    const geometry::Aabb robot{Vec3(-1, 0, -20), Vec3(1, 4, -18)};
     CHECK(hidden(robot));                                          // straight behind the wall
-    CHECK_FALSE(hidden(Aabb{Vec3(-1, 0, 5), Vec3(1, 4, 7)}));      // in front of it
-    CHECK_FALSE(hidden(Aabb{Vec3(8, 0, -20), Vec3(30, 4, -18)}));  // reaches past its end
-    CHECK(hidden(Aabb{Vec3(-1, 0, -1), Vec3(1, 4, 0.1f)}));        // inside the slab: hidden too
-    CHECK_FALSE(hidden(Aabb{Vec3(-1, 0, -1), Vec3(1, 4, 0.5f)}));  // pokes out of its face
-    CHECK_FALSE(hidden(Aabb{Vec3(-1, 0, -20), Vec3(1, 40, -18)})); // seen over the top
-    CHECK_FALSE(hidden(Aabb{Vec3(-1, 0, -20), Vec3(1, 4, 30)}));   // reaches behind the eye
+    CHECK_FALSE(hidden(geometry::Aabb{Vec3(-1, 0, 5), Vec3(1, 4, 7)}));      // in front of it
+    CHECK_FALSE(hidden(geometry::Aabb{Vec3(8, 0, -20), Vec3(30, 4, -18)}));  // reaches past its end
+    CHECK(hidden(geometry::Aabb{Vec3(-1, 0, -1), Vec3(1, 4, 0.1f)}));        // inside the slab: hidden too
+    CHECK_FALSE(hidden(geometry::Aabb{Vec3(-1, 0, -1), Vec3(1, 4, 0.5f)}));  // pokes out of its face
+    CHECK_FALSE(hidden(geometry::Aabb{Vec3(-1, 0, -20), Vec3(1, 40, -18)})); // seen over the top
+    CHECK_FALSE(hidden(geometry::Aabb{Vec3(-1, 0, -20), Vec3(1, 4, 30)}));   // reaches behind the eye
     // The face is clipped by the near plane when the eye almost touches it: nothing is culled then.
-    Camera close = cam;
+    geometry::Camera close = cam;
     close.position = Vec3(0, 3, 0.25f + 0.05f);
     faces.clear();
     append_occluder_faces(wall, close.position, faces);
     REQUIRE(faces.size() == 1);
-    CHECK_FALSE(hidden_behind(Aabb{Vec3(-30, 0, -20), Vec3(30, 4, -18)}, faces[0], close));
+    CHECK_FALSE(hidden_behind(geometry::Aabb{Vec3(-30, 0, -20), Vec3(30, 4, -18)}, faces[0], close));
     // Orthographic views (the editor's axis views) are never occlusion-culled; an eye inside gives no faces.
-    Camera ortho = cam;
+    geometry::Camera ortho = cam;
     ortho.ortho_height = 40.0f;
     faces.clear();
     append_occluder_faces(wall, cam.position, faces);
@@ -86,16 +88,16 @@ TEST_CASE(
 }
 
 TEST_CASE("occlusion culling: two leaves side by side hide what straddles their seam once merged") {
-    Camera cam;
+    geometry::Camera cam;
     cam.position = Vec3(0, 3, 25);
-    const Aabb left{Vec3(-2.5f, 0, -0.05f), Vec3(0, 5, 0.05f)},
+    const geometry::Aabb left{Vec3(-2.5f, 0, -0.05f), Vec3(0, 5, 0.05f)},
         right{Vec3(0, 0, -0.05f), Vec3(2.5f, 5, 0.05f)};
     std::vector<OccluderFace> faces;
     append_occluder_faces(left, cam.position, faces);
     append_occluder_faces(right, cam.position, faces);
     REQUIRE(faces.size() == 2);
-    const Aabb robot{Vec3(-0.5f, 1, -20), Vec3(0.5f, 4, -19)}; // behind the seam
-    auto hidden = [&](const Aabb& box) {
+    const geometry::Aabb robot{Vec3(-0.5f, 1, -20), Vec3(0.5f, 4, -19)}; // behind the seam
+    auto hidden = [&](const geometry::Aabb& box) {
         for (const auto& f : faces)
             if (hidden_behind(box, f, cam)) return true;
         return false;
@@ -106,20 +108,20 @@ TEST_CASE("occlusion culling: two leaves side by side hide what straddles their 
     CHECK(faces[0].lo.x == doctest::Approx(-2.5f));
     CHECK(faces[0].hi.x == doctest::Approx(2.5f));
     CHECK(hidden(robot));
-    CHECK_FALSE(hidden(Aabb{Vec3(-0.5f, 1, -20), Vec3(0.5f, 9, -19)})); // seen above the leaves
+    CHECK_FALSE(hidden(geometry::Aabb{Vec3(-0.5f, 1, -20), Vec3(0.5f, 9, -19)})); // seen above the leaves
     // A gap between the leaves (a door opening) or a different height: not merged.
     faces.clear();
     append_occluder_faces(left, cam.position, faces);
-    append_occluder_faces(Aabb{Vec3(0.2f, 0, -0.05f), Vec3(2.5f, 5, 0.05f)}, cam.position, faces);
-    append_occluder_faces(Aabb{Vec3(-5.0f, 0, -0.05f), Vec3(-2.5f, 4, 0.05f)}, cam.position, faces);
+    append_occluder_faces(geometry::Aabb{Vec3(0.2f, 0, -0.05f), Vec3(2.5f, 5, 0.05f)}, cam.position, faces);
+    append_occluder_faces(geometry::Aabb{Vec3(-5.0f, 0, -0.05f), Vec3(-2.5f, 4, 0.05f)}, cam.position, faces);
     merge_occluder_faces(faces);
     CHECK(std::count_if(faces.begin(), faces.end(), [](const OccluderFace& f) { return f.axis == 2; }) == 3);
 }
 
 TEST_CASE("transformed bounds contain every transformed corner") {
-    Aabb box{Vec3(-1, 0, -2), Vec3(1, 3, 2)};
+    geometry::Aabb box{Vec3(-1, 0, -2), Vec3(1, 3, 2)};
     Mat4 m = glm::rotate(glm::translate(Mat4(1.0f), Vec3(5, 1, -3)), 0.7f, glm::normalize(Vec3(1, 2, 0.5f)));
-    Aabb t = transform_aabb(box, m);
+    geometry::Aabb t = geometry::transform_aabb(box, m);
     for (int i = 0; i < 8; ++i) {
         Vec3 c((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
                (i & 4) ? box.max.z : box.min.z);
@@ -160,7 +162,7 @@ TEST_CASE("stairs are `steps` boxes that rise toward local -z to the full height
     MeshData mesh;
     append_stairs(mesh, Vec3(12, 6, 12), 10, Mat4(1.0f), 4.0f);
     CHECK(mesh.vertices.size() == 10 * 24);
-    Aabb b = mesh.bounds();
+    geometry::Aabb b = mesh.bounds();
     CHECK(b.min.y == doctest::Approx(0.0f));
     CHECK(b.max.y == doctest::Approx(6.0f));
     CHECK(b.min.z == doctest::Approx(-6.0f));
@@ -180,7 +182,7 @@ TEST_CASE("level surfaces: floors lie below their surface, ceilings above, walls
     wall.position = Vec3(10, 0, 0);
     wall.rotation = Vec3(90, 0, 0);
     wall.props = level::WallProps{Vec3(60, 16, 0.5f), "concrete", 10.0f};
-    Aabb w = build_surface_mesh(wall).bounds();
+    geometry::Aabb w = build_surface_mesh(wall).bounds();
     CHECK(w.min.y == doctest::Approx(0.0f));
     CHECK(w.max.y == doctest::Approx(16.0f));
     CHECK(w.max.z - w.min.z == doctest::Approx(60.0f).epsilon(1e-4)); // rotated 90 degrees: runs along z
@@ -192,13 +194,13 @@ TEST_CASE("level surfaces: floors lie below their surface, ceilings above, walls
     fp.size = Vec2(120, 200);
     fp.thickness = 0.5f;
     floor.props = fp;
-    Aabb f = build_surface_mesh(floor).bounds();
+    geometry::Aabb f = build_surface_mesh(floor).bounds();
     CHECK(f.max.y == doctest::Approx(0.0f));
     CHECK(f.min.y == doctest::Approx(-0.5f));
     fp.ceiling = true;
     floor.position.y = 16;
     floor.props = fp;
-    Aabb c = build_surface_mesh(floor).bounds();
+    geometry::Aabb c = build_surface_mesh(floor).bounds();
     CHECK(c.min.y == doctest::Approx(16.0f));
     CHECK(c.max.y == doctest::Approx(16.5f));
 }
@@ -326,7 +328,7 @@ TEST_CASE("software rasterisers get no MSAA and no anisotropic filtering; GPUs g
 
 TEST_CASE("the camera's view matrix agrees with forward/right/up, handles straight down, rolls and goes "
           "orthographic") {
-    Camera cam;
+    geometry::Camera cam;
     cam.position = Vec3(2, 5, -3);
     for (float yaw : {0.0f, 0.7f, -2.5f})
         for (float pitch : {-kPi * 0.5f, -0.4f, 0.0f, 0.9f, kPi * 0.5f})
@@ -355,7 +357,7 @@ TEST_CASE("the camera's view matrix agrees with forward/right/up, handles straig
     CHECK(glm::dot(cam.up(), right_flat) == doctest::Approx(std::sin(0.5f)).epsilon(1e-5));
 
     // Orthographic: size on screen does not depend on distance.
-    Camera top;
+    geometry::Camera top;
     top.position = Vec3(0, 100, 0);
     top.pitch = -kPi * 0.5f;
     top.ortho_height = 40.0f;
@@ -369,7 +371,7 @@ TEST_CASE("the camera's view matrix agrees with forward/right/up, handles straig
     CHECK(ndc(Vec3(0, 0, -20)).y == doctest::Approx(1.0f).epsilon(1e-5)); // -z is up on a top view
     CHECK(ndc(Vec3(0, 50, -20)).y == doctest::Approx(1.0f).epsilon(1e-5));
     CHECK(ndc(Vec3(40, 0, 0)).x == doctest::Approx(1.0f).epsilon(1e-5)); // half width = 20 * aspect
-    Frustum f(vp);
+    geometry::Frustum f(vp);
     CHECK(f.intersects({Vec3(-1, 0, -1), Vec3(1, 1, 1)}));
     CHECK_FALSE(f.intersects({Vec3(60, 0, 0), Vec3(62, 1, 1)}));
 }

@@ -40,7 +40,7 @@ fs::path assets_dir() {
 }
 
 // Renders `instances` offscreen at the test size and returns RGB rows (top-down).
-std::vector<unsigned char> render_offscreen(SceneRenderer& renderer, const Camera& camera,
+std::vector<unsigned char> render_offscreen(SceneRenderer& renderer, const geometry::Camera& camera,
                                             const Environment& env,
                                             const std::vector<MeshInstance>& instances,
                                             const std::vector<Light>& lights,
@@ -161,7 +161,7 @@ TEST_CASE("a missing or corrupt model or texture gives the placeholder and one w
     std::vector<MeshInstance> instances;
     assets.model((dir / "missing.gltf").string())
         .emit(glm::scale(Mat4(1.0f), Vec3(3.0f)), scratch, instances);
-    Camera cam;
+    geometry::Camera cam;
     cam.position = Vec3(0, 1.5f, 3.5f);
     Environment env;
     env.sky_color = Vec3(1.0f);
@@ -202,7 +202,7 @@ MainLevelView render_main_level_start(RendererSettings settings = full_quality()
     std::vector<Light> lights;
     scene->emit(instances, lights);
     CHECK(lights.size() >= 8);
-    Camera cam = player_start_camera(*level, 16.0f / 9.0f);
+    geometry::Camera cam = player_start_camera(*level, 16.0f / 9.0f);
     ViewModel vm;
     std::vector<Mat4> scratch;
     assets.model("rifle").emit(rifle_view_transform(0.0f), scratch, vm.instances);
@@ -417,7 +417,7 @@ TEST_CASE("lights toggle: switching every level light off darkens the view, emis
         REQUIRE(renderer);
         std::vector<MeshInstance> instances;
         std::vector<Light> lights;
-        Camera cam = player_start_camera(*level, 16.0f / 9.0f);
+        geometry::Camera cam = player_start_camera(*level, 16.0f / 9.0f);
         scene->emit(instances, lights);
         size_t lit = lights.size();
         auto on =
@@ -471,7 +471,7 @@ TEST_CASE(
         std::vector<Mat4> scratch;
         float size = glm::length(m.bounds.max - m.bounds.min);
         m.emit(glm::translate(Mat4(1.0f), -m.bounds.center()), scratch, instances);
-        Camera cam;
+        geometry::Camera cam;
         cam.position = Vec3(size * 0.7f, size * 0.25f, size * 0.9f);
         Vec3 d = glm::normalize(-cam.position);
         cam.yaw = std::atan2(-d.x, -d.z);

@@ -1,0 +1,272 @@
+// A world step: the movers' hash grid, the character obstacles it and the static BVH supply, moving the
+// characters, trigger overlaps and the callbacks.
+#include "physics/world.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ks::physics {
+
+namespace {
+bool contains(const geometry::Aabb& outer, const geometry::Aabb& inner) {
+    return outer.min.x <= inner.min.x && outer.min.y <= inner.min.y && outer.min.z <= inner.min.z &&
+           inner.max.x <= outer.max.x && inner.max.y <= outer.max.y && inner.max.z <= outer.max.z;
+}
+} // namespace
+
+// What the character controller may collide with: static bodies from the BVH, then movers from the
+// sorted sweep list, excluding the character itself and anything its mask ignores.
+class World::Obstacles final : public ObstacleSource {
+  public:
+    explicit Obstacles(const World& w) : world_(w) {}
+    std::uint32_t self = kNone;
+    std::uint32_t mask = 0;
+    StaticCache* cache = nullptr; // the character's static neighbourhood (null: query the BVH directly)
+    void gather(const geometry::Aabb& region, std::vector<Obstacle>& out) const override {
+        const World& w = world_;
+        auto add_static = [&](std::uint32_t slot) {
+            const StaticPrim& p = w.static_prims_[slot];
+            const Body& b = w.bodies_[p.body];
+            if (p.enabled && (p.layers & mask) && b.bounds.overlaps(region))
+                out.push_back({&b.shape, b.transform, p.body, b.yaw_only, b.bounds});
+            return true;
+        };
+        if (!cache) {
+            w.static_bvh_.aabb_query(region, add_static);
+        } else {
+            // Valid while the static set is the same and the bodies have not moved in memory (the cached
+            // obstacles point at their shapes).
+            if (cache->epoch != w.static_epoch_ || cache->bodies != w.bodies_.data() ||
+                !contains(cache->region, region)) {
+                cache->region = region.expanded(kStaticCacheMargin);
+                cache->epoch = w.static_epoch_;
+                cache->bodies = w.bodies_.data();
+                cache->entries.clear();
+                w.static_bvh_.aabb_query(cache->region, [&](std::uint32_t slot) {
+                    const StaticPrim& p = w.static_prims_[slot];
+                    const Body& b = w.bodies_[p.body];
+                    if (b.bounds.overlaps(cache->region))
+                        cache->entries.push_back(
+                            {{&b.shape, b.transform, p.body, b.yaw_only, b.bounds}, slot});
+                    return true;
+                });
+            }
+            for (const StaticCache::Entry& e : cache->entries) {
+                const StaticPrim& p = w.static_prims_[e.slot]; // enabled may change between steps
+                if (p.enabled && (p.layers & mask) && e.obstacle.bounds.overlaps(region))
+                    out.push_back(e.obstacle);
+            }
+        }
+        const std::size_t first_mover = out.size();
+        w.movers_overlapping(region, [&](std::uint32_t index) {
+            const Body& b = w.bodies_[index];
+            if (index != self && b.enabled && !b.trigger && (b.layers & mask))
+                out.push_back({&b.shape, b.transform, index, b.yaw_only, b.bounds});
+        });
+        // Movers in body order, not the grid's visiting order: what the controller does (which contact wins
+        // a tie) then does not depend on the grid's cell size. Usually zero to two entries.
+        for (std::size_t i = first_mover + 1; i < out.size(); ++i)
+            for (std::size_t j = i; j > first_mover && out[j - 1].id > out[j].id; --j)
+                std::swap(out[j - 1], out[j]);
+    }
+
+  private:
+    const World& world_;
+};
+
+// ---- movers: hash grid over x/z -----------------------------------------------------------------------
+
+namespace {
+std::uint32_t cell_hash(int ix, int iz) {
+    return static_cast<std::uint32_t>(ix) * 73856093u ^ static_cast<std::uint32_t>(iz) * 19349663u;
+}
+// Multiplies by the reciprocal, folded to a constant: for the power-of-two cell size used (4) that equals the
+// division exactly, without a division per cell bound in the broadphase.
+int cell_of(float v, float cell) {
+    return static_cast<int>(std::floor(v * (1.0f / cell)));
+}
+constexpr int kMaxCellsPerMover = 64;
+} // namespace
+
+void World::index_movers(float dt) {
+    float max_speed = 0.0f;
+    for (std::uint32_t index : movers_) {
+        const Body& b = bodies_[index];
+        if (b.character_slot != kNone) {
+            const auto& m = characters_[b.character_slot].state.movement;
+            const float v =
+                glm::length(m.velocity) + (glm::length(m.acceleration) + std::abs(m.gravity)) * dt;
+            if (std::isfinite(v)) max_speed = std::max(max_speed, std::min(v, 2.0f * m.max_speed));
+        }
+    }
+    // Ground snap and depenetration move a character beyond its velocity: allow for them too.
+    mover_slack_ = max_speed * dt + 2.0f;
+
+    std::uint32_t buckets = 16;
+    while (buckets < 2 * movers_.size()) buckets *= 2;
+    grid_mask_ = buckets - 1;
+    grid_count_.assign(buckets + 1, 0);
+    grid_oversized_.clear();
+    // Each mover's cell range, computed once for both passes (x0 > x1 marks an oversized mover).
+    mover_cells_.resize(movers_.size());
+    for (std::size_t i = 0; i < movers_.size(); ++i) {
+        const geometry::Aabb& b = bodies_[movers_[i]].bounds;
+        const double nx = std::floor(b.max.x * (1.0f / kCell)) - std::floor(b.min.x * (1.0f / kCell)) + 1.0;
+        const double nz = std::floor(b.max.z * (1.0f / kCell)) - std::floor(b.min.z * (1.0f / kCell)) + 1.0;
+        CellRange& r = mover_cells_[i];
+        if (nx * nz > kMaxCellsPerMover) {
+            r = {1, 0, 0, 0};
+            grid_oversized_.push_back(movers_[i]);
+            continue;
+        }
+        r = {cell_of(b.min.x, kCell), cell_of(b.max.x, kCell), cell_of(b.min.z, kCell),
+             cell_of(b.max.z, kCell)};
+        for (int x = r.x0; x <= r.x1; ++x)
+            for (int z = r.z0; z <= r.z1; ++z) ++grid_count_[(cell_hash(x, z) & grid_mask_) + 1];
+    }
+    for (std::uint32_t k = 0; k < buckets; ++k) grid_count_[k + 1] += grid_count_[k];
+    grid_start_.assign(grid_count_.begin(), grid_count_.end());
+    grid_items_.resize(grid_count_[buckets]);
+    for (std::size_t i = 0; i < movers_.size(); ++i) { // fill in mover order: deterministic
+        const CellRange& r = mover_cells_[i];
+        for (int x = r.x0; x <= r.x1; ++x)
+            for (int z = r.z0; z <= r.z1; ++z)
+                grid_items_[grid_count_[cell_hash(x, z) & grid_mask_]++] = movers_[i];
+    }
+    if (grid_stamp_.size() < bodies_.size()) grid_stamp_.resize(bodies_.size(), 0);
+    grid_valid_ = true;
+}
+
+template <class Visit>
+void World::movers_overlapping(const geometry::Aabb& region, Visit&& visit) const {
+    if (!grid_valid_) { // bodies were added since the last step: scan them all
+        for (std::uint32_t index : movers_)
+            if (bodies_[index].bounds.overlaps(region)) visit(index);
+        return;
+    }
+    if (++grid_query_ == 0) { // stamp wrap-around: clear once every 4 billion queries
+        std::fill(grid_stamp_.begin(), grid_stamp_.end(), 0u);
+        grid_query_ = 1;
+    }
+    auto consider = [&](std::uint32_t index) {
+        if (grid_stamp_[index] == grid_query_) return; // already seen through another cell
+        grid_stamp_[index] = grid_query_;
+        const Body& b = bodies_[index];
+        if (b.alive && b.motion != Motion::Static && b.bounds.overlaps(region)) visit(index);
+    };
+    const geometry::Aabb wide = region.expanded(mover_slack_);
+    const int x0 = cell_of(wide.min.x, kCell), x1 = cell_of(wide.max.x, kCell);
+    const int z0 = cell_of(wide.min.z, kCell), z1 = cell_of(wide.max.z, kCell);
+    if (static_cast<double>(x1 - x0 + 1) * (z1 - z0 + 1) > 4.0 * (grid_mask_ + 1)) {
+        for (std::uint32_t index : movers_) consider(index); // a query wider than the whole grid
+    } else {
+        for (int x = x0; x <= x1; ++x)
+            for (int z = z0; z <= z1; ++z) {
+                const std::uint32_t k = cell_hash(x, z) & grid_mask_;
+                for (std::uint32_t i = grid_start_[k]; i < grid_start_[k + 1]; ++i) consider(grid_items_[i]);
+            }
+    }
+    for (std::uint32_t index : grid_oversized_) consider(index);
+}
+
+// ---- step ---------------------------------------------------------------------------------------------
+
+void World::step(float dt) {
+    if (!(dt > 0.0f) || !std::isfinite(dt)) return;
+    build_static();
+    collisions_.clear();
+    trigger_events_.clear();
+    index_movers(dt);
+    for (std::uint32_t index : movers_) bodies_[index].previous_position = bodies_[index].transform.position;
+    Obstacles obstacles(*this);
+    for (std::size_t c = 0; c < characters_.size(); ++c) {
+        CharacterData& cd = characters_[c];
+        Body& b = bodies_[cd.body];
+        if (!b.enabled) continue;
+        obstacles.self = cd.body;
+        obstacles.mask = b.collides_with;
+        obstacles.cache = &cd.statics;
+        move_character(obstacles, b.shape.radius, b.shape.half_height, cd.settings, cd.state,
+                       b.transform.position, dt, scratch_);
+        b.bounds = b.shape.bounds(b.transform);
+        // Queries find movers through the cells of their start-of-step bounds, widened by the slack. One
+        // pushed further than that (out of a door that closed on it, out of a packed crowd) is visited by
+        // every later query of this step instead, so no contact with it is missed.
+        const Vec3 moved = b.transform.position - b.previous_position;
+        if (std::max(std::abs(moved.x), std::abs(moved.z)) > mover_slack_) grid_oversized_.push_back(cd.body);
+        const BodyId self = id_of(cd.body);
+        for (const CharacterContact& cc : scratch_.contacts) {
+            const BodyId other = id_of(cc.obstacle_id);
+            collisions_.push_back(
+                {self, other, cc.contact.point, cc.contact.normal, cc.contact.penetration, dt});
+            collisions_.push_back(
+                {other, self, cc.contact.point, -cc.contact.normal, cc.contact.penetration, dt});
+        }
+    }
+    update_triggers(dt);
+    dispatch();
+}
+
+float World::advance(double frame_dt) {
+    const int steps = clock_.advance(frame_dt);
+    for (int i = 0; i < steps; ++i) step(static_cast<float>(clock_.step()));
+    return static_cast<float>(clock_.alpha());
+}
+
+void World::update_triggers(float) {
+    std::swap(trigger_pairs_prev_, trigger_pairs_);
+    trigger_pairs_.clear();
+    auto test = [&](std::uint32_t trig) {
+        const Body& t = bodies_[trig];
+        if (!t.enabled) return;
+        movers_overlapping(t.bounds, [&](std::uint32_t index) {
+            const Body& b = bodies_[index];
+            if (b.character_slot == kNone || !b.enabled) return;
+            if (collide_capsule_shape(capsule_segment(b.shape, b.transform.position), b.shape.radius, t.shape,
+                                      t.transform))
+                trigger_pairs_.push_back(static_cast<std::uint64_t>(trig) << 32 | index);
+        });
+    };
+    for (std::uint32_t trig : static_triggers_) test(trig);
+    for (std::uint32_t index : movers_)
+        if (bodies_[index].trigger) test(index);
+    std::sort(trigger_pairs_.begin(), trigger_pairs_.end());
+    // Merge the two sorted lists: only in the new one = enter, in both = stay, only in the old one = exit.
+    std::size_t i = 0, j = 0;
+    auto event = [&](std::uint64_t pair, TriggerEvent::Kind kind) {
+        const auto trig = static_cast<std::uint32_t>(pair >> 32), other = static_cast<std::uint32_t>(pair);
+        trigger_events_.push_back({kind, id_of(trig), id_of(other)});
+    };
+    while (i < trigger_pairs_.size() || j < trigger_pairs_prev_.size()) {
+        if (j == trigger_pairs_prev_.size() ||
+            (i < trigger_pairs_.size() && trigger_pairs_[i] < trigger_pairs_prev_[j])) {
+            event(trigger_pairs_[i++], TriggerEvent::Kind::Enter);
+        } else if (i == trigger_pairs_.size() || trigger_pairs_prev_[j] < trigger_pairs_[i]) {
+            event(trigger_pairs_prev_[j++], TriggerEvent::Kind::Exit);
+        } else {
+            event(trigger_pairs_[i++], TriggerEvent::Kind::Stay);
+            ++j;
+        }
+    }
+}
+
+void World::dispatch() {
+    // Indices, not iterators: callbacks may add bodies; events of bodies removed meanwhile are skipped.
+    // Without any collision callback the loop would only check handles: skip it (100 characters make 200
+    // collision events per step).
+    const std::size_t n = collision_callbacks_ > 0 ? collisions_.size() : 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const Collision c = collisions_[i];
+        if (!valid(c.self) || !valid(c.other)) continue;
+        if (auto cb = on_collision_[c.self.index]) (*cb)(*this, c);
+    }
+    const std::size_t m = trigger_events_.size();
+    for (std::size_t i = 0; i < m; ++i) {
+        const TriggerEvent e = trigger_events_[i];
+        if (!valid(e.trigger)) continue;
+        if (e.kind != TriggerEvent::Kind::Exit && !valid(e.other)) continue;
+        if (auto cb = on_trigger_[e.trigger.index]) (*cb)(*this, e);
+    }
+}
+
+} // namespace ks::physics
