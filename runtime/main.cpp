@@ -8,13 +8,14 @@
 #include "fly_camera.h"
 #include "game/headless.h"
 #include "level/level_io.h"
-#include "render/app_shell.h"
+#include "shell/app_shell.h"
 #include "render/asset_library.h"
-#include "render/hud.h"
+#include "shell/hud.h"
 #include "render/level_scene.h"
 #include "render/scene_renderer.h"
 #include "render/view_model.h"
 
+#define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <imgui.h>
@@ -95,7 +96,7 @@ int main(int argc, char** argv) {
         return 0;
     }
     if (!cl->has("view") && !cl->has("camera")) {
-        std::vector<std::string> app_known = render::shell_options();
+        std::vector<std::string> app_known = shell::shell_options();
         app_known.insert(app_known.end(), runtime::game_app_options().begin(),
                          runtime::game_app_options().end());
         app_known.push_back("no-vsync");
@@ -103,7 +104,7 @@ int main(int argc, char** argv) {
             log::error("unknown option ", unknown.front(), " (see killswitch --help)");
             return 2;
         }
-        auto app_config = render::shell_config_from_command_line(*cl, {});
+        auto app_config = shell::shell_config_from_command_line(*cl, {});
         if (!app_config) {
             log::error(app_config.error().str());
             return 2;
@@ -114,13 +115,13 @@ int main(int argc, char** argv) {
         print_help();
         return 0;
     }
-    std::vector<std::string> known = render::shell_options();
+    std::vector<std::string> known = shell::shell_options();
     known.insert(known.end(), {"level", "camera", "view", "msaa", "help", "no-hud", "effects"});
     if (auto unknown = cl->unknown(known); !unknown.empty()) {
         log::error("unknown option --", unknown.front(), " (see killswitch --help)");
         return 2;
     }
-    auto config = render::shell_config_from_command_line(*cl, {});
+    auto config = shell::shell_config_from_command_line(*cl, {});
     if (!config) {
         log::error(config.error().str());
         return 2;
@@ -153,12 +154,12 @@ int main(int argc, char** argv) {
         }
         camera_given = true;
     }
-    if (!render::display_available()) {
-        std::fprintf(stderr, "%s\n", render::no_display_message("killswitch").c_str());
+    if (!shell::display_available()) {
+        std::fprintf(stderr, "%s\n", shell::no_display_message("killswitch").c_str());
         return 3;
     }
     config->msaa_samples = 0; // the shell's window stays single-sampled; the renderer owns MSAA
-    auto shell = render::AppShell::create(*config);
+    auto shell = shell::AppShell::create(*config);
     if (!shell) {
         log::error(shell.error().str());
         return 1;
@@ -172,7 +173,7 @@ int main(int argc, char** argv) {
         auto renderer = render::SceneRenderer::create(assets.textures(), settings);
         if (!renderer) {
             log::error(renderer.error().str());
-            render::AppShell::destroy(*shell);
+            shell::AppShell::destroy(*shell);
             return 1;
         }
         const float aspect = static_cast<float>(config->width) / static_cast<float>(config->height);
@@ -243,15 +244,15 @@ int main(int argc, char** argv) {
         camera.aspect = aspect;
         runtime::FlyCamera fly;
         const bool hud = !view_mode && !cl->has("no-hud");
-        render::HudState hud_state;
+        shell::HudState hud_state;
         render::FrameStats last_stats;
 
-        render::ShellHooks hooks;
+        shell::ShellHooks hooks;
         hooks.fixed_update = [&](double step) {
             time += step;
             for (auto& e : emitters) e->update(static_cast<float>(step));
         };
-        hooks.render = [&](const render::FrameInfo& info) {
+        hooks.render = [&](const shell::FrameInfo& info) {
             if (!(*shell)->screenshot_mode()) fly.update((*shell)->window(), info.frame_dt, camera);
             camera.aspect = static_cast<float>(info.width) / std::max(1, info.height);
             render::SceneFrame frame;
@@ -286,11 +287,11 @@ int main(int argc, char** argv) {
             frame.lights = &lights;
             last_stats = (*renderer)->render(frame);
         };
-        hooks.imgui = [&](const render::FrameInfo& info) {
+        hooks.imgui = [&](const shell::FrameInfo& info) {
             ImDrawList* draw = ImGui::GetForegroundDrawList();
             if (hud) {
-                render::HudFonts fonts{(*shell)->fonts().hud};
-                render::draw_hud(draw, hud_state, fonts, static_cast<float>(info.width),
+                shell::HudFonts fonts{(*shell)->fonts().hud};
+                shell::draw_hud(draw, hud_state, fonts, static_cast<float>(info.width),
                                  static_cast<float>(info.height));
             }
             if (!(*shell)->screenshot_mode()) {
@@ -306,6 +307,6 @@ int main(int argc, char** argv) {
         hooks.wants_close = [&]() { return glfwGetKey((*shell)->window(), GLFW_KEY_ESCAPE) == GLFW_PRESS; };
         exit_code = (*shell)->run(hooks);
     }
-    render::AppShell::destroy(*shell);
+    shell::AppShell::destroy(*shell);
     return exit_code;
 }

@@ -201,13 +201,7 @@ SceneRenderer::~SceneRenderer() {
     glDeleteVertexArrays(1, &line_vao_);
     if (shadow_fbo_) glDeleteFramebuffers(1, &shadow_fbo_);
     if (shadow_texture_) glDeleteTextures(1, &shadow_texture_);
-    if (msaa_fbo_) glDeleteFramebuffers(1, &msaa_fbo_);
-    if (msaa_color_) glDeleteRenderbuffers(1, &msaa_color_);
-    if (msaa_depth_) glDeleteRenderbuffers(1, &msaa_depth_);
     if (fast_sampler_) glDeleteSamplers(1, &fast_sampler_);
-    if (scale_fbo_) glDeleteFramebuffers(1, &scale_fbo_);
-    if (scale_color_) glDeleteRenderbuffers(1, &scale_color_);
-    if (scale_depth_) glDeleteRenderbuffers(1, &scale_depth_);
 }
 
 std::uint64_t SceneRenderer::shadow_caster_hash(const std::vector<MeshInstance>& instances) const {
@@ -701,48 +695,20 @@ void SceneRenderer::draw_debug(const SceneFrame& frame, FrameStats& stats) {
 }
 
 void SceneRenderer::ensure_msaa_target(int width, int height) {
-    if (msaa_fbo_ && width == msaa_width_ && height == msaa_height_) return;
-    if (!msaa_fbo_) {
-        glGenFramebuffers(1, &msaa_fbo_);
-        glGenRenderbuffers(1, &msaa_color_);
-        glGenRenderbuffers(1, &msaa_depth_);
-    }
-    glBindRenderbuffer(GL_RENDERBUFFER, msaa_color_);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, settings_.msaa_samples, GL_RGBA8, width, height);
-    glBindRenderbuffer(GL_RENDERBUFFER, msaa_depth_);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, settings_.msaa_samples, GL_DEPTH_COMPONENT24, width,
-                                     height);
-    glBindFramebuffer(GL_FRAMEBUFFER, msaa_fbo_);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msaa_color_);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msaa_depth_);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    if (!msaa_target_ || msaa_target_->format().samples != settings_.msaa_samples)
+        msaa_target_ = std::make_unique<RenderTarget>(
+            RenderTargetFormat{ColourStorage::Renderbuffer, settings_.msaa_samples});
+    if (auto made = msaa_target_->ensure(width, height); !made) {
         log::warn("MSAA ", settings_.msaa_samples, "x framebuffer unsupported; rendering without MSAA");
         settings_.msaa_samples = 0;
     }
-    msaa_width_ = width;
-    msaa_height_ = height;
 }
 
 void SceneRenderer::ensure_scale_target(int width, int height) {
-    if (scale_fbo_ && width == scale_width_ && height == scale_height_) return;
-    if (!scale_fbo_) {
-        glGenFramebuffers(1, &scale_fbo_);
-        glGenRenderbuffers(1, &scale_color_);
-        glGenRenderbuffers(1, &scale_depth_);
-    }
-    glBindRenderbuffer(GL_RENDERBUFFER, scale_color_);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
-    glBindRenderbuffer(GL_RENDERBUFFER, scale_depth_);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
-    glBindFramebuffer(GL_FRAMEBUFFER, scale_fbo_);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, scale_color_);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, scale_depth_);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    if (auto made = scale_target_.ensure(width, height); !made) {
         log::warn("render scale ", settings_.render_scale, ": offscreen target unsupported; full resolution");
         settings_.render_scale = 1.0f;
     }
-    scale_width_ = width;
-    scale_height_ = height;
 }
 
 FrameStats SceneRenderer::render(const SceneFrame& frame) {
@@ -769,9 +735,9 @@ FrameStats SceneRenderer::render(const SceneFrame& frame) {
     render_shadows(frame, stats);
     if (settings_.msaa_samples > 0) ensure_msaa_target(internal_width_, internal_height_);
     if (settings_.msaa_samples > 0)
-        glBindFramebuffer(GL_FRAMEBUFFER, msaa_fbo_);
+        msaa_target_->bind();
     else if (scaled)
-        glBindFramebuffer(GL_FRAMEBUFFER, scale_fbo_);
+        scale_target_.bind();
     glViewport(0, 0, internal_width_, internal_height_);
     const Vec3 fog_srgb =
         frame.environment.fog_color; // the clear shows the fog colour, encoded like the shader
@@ -821,18 +787,12 @@ FrameStats SceneRenderer::render(const SceneFrame& frame) {
         view_world_.clear();
     }
 
-    const int w = internal_width_, h = internal_height_;
     if (settings_.msaa_samples > 0) {
         // Resolve (same size), then scale up if the scene was drawn smaller.
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, msaa_fbo_);
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, scaled ? scale_fbo_ : static_cast<GLuint>(target_fbo));
-        glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        msaa_target_->blit_to(scaled ? scale_target_.framebuffer() : static_cast<GLuint>(target_fbo),
+                              internal_width_, internal_height_, false);
     }
-    if (scaled) {
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, scale_fbo_);
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target_fbo));
-        glBlitFramebuffer(0, 0, w, h, 0, 0, frame.width, frame.height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
-    }
+    if (scaled) scale_target_.blit_to(static_cast<GLuint>(target_fbo), frame.width, frame.height, true);
     glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target_fbo));
     glViewport(0, 0, frame.width, frame.height);
     glBindVertexArray(0);

@@ -7,6 +7,7 @@
 #include "render/debug_draw.h"
 #include "render/gpu_mesh.h"
 #include "render/particles.h"
+#include "render/render_target.h"
 #include "render/scene.h"
 #include "render/shader_library.h"
 #include "render/shader_program.h"
@@ -148,16 +149,14 @@ class SceneRenderer {
     std::string gl_renderer_;
     bool fast_ = false;
     int internal_width_ = 0, internal_height_ = 0;
-    unsigned scale_fbo_ = 0, scale_color_ = 0, scale_depth_ = 0;
+    RenderTarget scale_target_{{ColourStorage::Renderbuffer, 0}}; // the scene below full resolution
     unsigned fast_sampler_ =
         0;                  // the fast path's colour maps: bilinear between mips, sRGB decoded in the shader
     bool raw_srgb_ = false; // fast_sampler_ skips the sampler's sRGB decode (GL_EXT_texture_sRGB_decode)
-    int scale_width_ = 0, scale_height_ = 0;
     unsigned instance_buffer_ = 0, particle_vao_ = 0, particle_quad_ = 0, particle_buffer_ = 0;
     unsigned line_vao_ = 0, line_buffer_ = 0;
     unsigned shadow_fbo_ = 0, shadow_texture_ = 0;
-    unsigned msaa_fbo_ = 0, msaa_color_ = 0, msaa_depth_ = 0;
-    int msaa_width_ = 0, msaa_height_ = 0;
+    std::unique_ptr<RenderTarget> msaa_target_; // made for settings_.msaa_samples on first use
     std::uint64_t shadow_hash_ = 0;
     Mat4 shadow_matrix_{1.0f};
 

@@ -15,7 +15,7 @@
 #include "menu_style.h"
 #include "options.h"
 #include "player_input.h"
-#include "render/hud.h"
+#include "shell/hud.h"
 #include "render/scene_renderer.h"
 #include "screens.h"
 #include "step_budget.h"
@@ -124,7 +124,7 @@ bool parse_floats(const std::string& text, float* out, int count) {
 
 class GameApp {
   public:
-    GameApp(render::AppShell& shell, render::SceneRenderer& renderer, render::AssetLibrary& assets,
+    GameApp(shell::AppShell& shell, render::SceneRenderer& renderer, render::AssetLibrary& assets,
             std::filesystem::path level_path, std::uint64_t seed)
         : shell_(shell), renderer_(renderer), assets_(assets), level_path_(std::move(level_path)),
           seed_(seed) {
@@ -153,8 +153,8 @@ class GameApp {
     Result<void> finish_loading_now();
     void step_loader();
     void fixed_update(double dt);
-    void render(const render::FrameInfo& info);
-    void imgui(const render::FrameInfo& info);
+    void render(const shell::FrameInfo& info);
+    void imgui(const shell::FrameInfo& info);
     void handle_keys();
     void enter_play();
     void pause();
@@ -170,11 +170,11 @@ class GameApp {
     bool in_world() const { return screen_ == Screen::Playing; }
     void apply_warp();
     void run_script(long long frame);
-    void write_status(const render::FrameInfo& info);
+    void write_status(const shell::FrameInfo& info);
     // Real input drives the app: not a screenshot run, or a screenshot run driven by --input-script.
     bool interactive() const { return !shell_.screenshot_mode() || scripted_; }
 
-    render::AppShell& shell_;
+    shell::AppShell& shell_;
     render::SceneRenderer& renderer_;
     render::AssetLibrary& assets_;
     std::filesystem::path level_path_;
@@ -462,7 +462,7 @@ void GameApp::run_script(long long frame) {
     }
 }
 
-void GameApp::write_status(const render::FrameInfo& info) {
+void GameApp::write_status(const shell::FrameInfo& info) {
     if (status_path_.empty()) return;
     std::string s;
     char line[256];
@@ -520,7 +520,7 @@ void GameApp::write_status(const render::FrameInfo& info) {
     }
 }
 
-void GameApp::render(const render::FrameInfo& info) {
+void GameApp::render(const shell::FrameInfo& info) {
     if (scripted_) run_script(info.frame_index);
     step_loader();
     handle_keys();
@@ -546,7 +546,7 @@ void GameApp::render(const render::FrameInfo& info) {
     stats_ = renderer_.render(frame);
 }
 
-void GameApp::imgui(const render::FrameInfo& info) {
+void GameApp::imgui(const shell::FrameInfo& info) {
     const float w = static_cast<float>(info.width), h = static_cast<float>(info.height);
     const auto& fonts = shell_.fonts();
     ImGuiIO& io = ImGui::GetIO();
@@ -562,7 +562,7 @@ void GameApp::imgui(const render::FrameInfo& info) {
     if (world_visible) {
         const auto& p = session_->game->player();
         const auto& st = session_->game->settings();
-        render::HudState hud;
+        shell::HudState hud;
         hud.health = p.health;
         hud.health_max = st.max_health;
         hud.shield = p.shield;
@@ -575,7 +575,7 @@ void GameApp::imgui(const render::FrameInfo& info) {
         hud.crosshair = screen_ == Screen::Playing && session_->game->phase() == game::Phase::Playing;
         ImDrawList* fg = ImGui::GetForegroundDrawList();
         if (screen_ == Screen::Playing) {
-            render::draw_hud(fg, hud, render::HudFonts{fonts.hud}, w, h);
+            shell::draw_hud(fg, hud, shell::HudFonts{fonts.hud}, w, h);
             draw_hit_marker(fg, std::clamp(p.hit_marker / 0.3f, 0.0f, 1.0f), w, h);
         }
         if (session_->dojo_controller && screen_ == Screen::Playing)
@@ -764,10 +764,10 @@ Result<void> GameApp::start(const Automation& a) {
 }
 
 int GameApp::run() {
-    render::ShellHooks hooks;
+    shell::ShellHooks hooks;
     hooks.fixed_update = [this](double dt) { fixed_update(dt); };
-    hooks.render = [this](const render::FrameInfo& info) { render(info); };
-    hooks.imgui = [this](const render::FrameInfo& info) { imgui(info); };
+    hooks.render = [this](const shell::FrameInfo& info) { render(info); };
+    hooks.imgui = [this](const shell::FrameInfo& info) { imgui(info); };
     hooks.wants_close = [this]() { return quit_; };
     int code = shell_.run(hooks);
     if (code == 0) code = exit_code_;
@@ -807,7 +807,7 @@ void print_help() {
 
 } // namespace
 
-int run_game_app(const CommandLine& cl, const render::ShellConfig& shell_config) {
+int run_game_app(const CommandLine& cl, const shell::ShellConfig& shell_config) {
     if (cl.has("help")) {
         print_help();
         return 0;
@@ -884,14 +884,14 @@ int run_game_app(const CommandLine& cl, const render::ShellConfig& shell_config)
             return 2;
         }
     }
-    if (!render::display_available()) {
-        std::fprintf(stderr, "%s\n", render::no_display_message("killswitch").c_str());
+    if (!shell::display_available()) {
+        std::fprintf(stderr, "%s\n", shell::no_display_message("killswitch").c_str());
         return 3;
     }
-    render::ShellConfig config = shell_config;
+    shell::ShellConfig config = shell_config;
     config.msaa_samples = 0; // the renderer owns MSAA
     config.fixed_step = game::GameSettings{}.step;
-    auto shell = render::AppShell::create(config);
+    auto shell = shell::AppShell::create(config);
     if (!shell) {
         log::error(shell.error().str());
         return 1;
@@ -904,7 +904,7 @@ int run_game_app(const CommandLine& cl, const render::ShellConfig& shell_config)
         auto renderer = render::SceneRenderer::create(assets.textures(), settings);
         if (!renderer) {
             log::error(renderer.error().str());
-            render::AppShell::destroy(*shell);
+            shell::AppShell::destroy(*shell);
             return 1;
         }
         GameApp app(**shell, **renderer, assets, level_path, static_cast<std::uint64_t>(*seed));
@@ -915,7 +915,7 @@ int run_game_app(const CommandLine& cl, const render::ShellConfig& shell_config)
             code = app.run();
         }
     }
-    render::AppShell::destroy(*shell);
+    shell::AppShell::destroy(*shell);
     return code;
 }
 

@@ -1,11 +1,11 @@
 // Renderer pieces that need no GL context: culling math, level geometry, particles, HUD helpers, shader logs.
 #include "level/level.h"
 #include "render/camera.h"
-#include "render/hud.h"
+#include "shell/hud.h"
 #include "render/level_scene.h"
 #include "render/mesh_data.h"
 #include "render/particles.h"
-#include "render/raster_threads.h"
+#include "shell/raster_threads.h"
 #include "render/scene_renderer.h"
 #include "render/shader_program.h"
 #include "render/texture_cache.h"
@@ -24,6 +24,7 @@
 
 using namespace ks;
 using namespace ks::render;
+using namespace ks::shell;
 
 TEST_CASE("frustum keeps boxes in front of the camera and culls those behind or beside it") {
     Camera cam;
