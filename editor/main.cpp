@@ -4,7 +4,7 @@
 #include "core/log.h"
 #include "core/paths.h"
 #include "model/script.h"
-#include "render/app_shell.h"
+#include "shell/app_shell.h"
 #include "ui/editor_app.h"
 
 #include <cstdio>
@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
         print_help();
         return 0;
     }
-    std::vector<std::string> known = render::shell_options();
+    std::vector<std::string> known = shell::shell_options();
     known.insert(known.end(), {"level", "script", "run", "camera", "help", "dojo", "view", "status-file"});
     if (auto unknown = cl->unknown(known); !unknown.empty()) {
         log::error("unknown option --", unknown.front(), " (see killswitch-editor --help)");
@@ -63,15 +63,15 @@ int main(int argc, char** argv) {
     }
     if (auto script = cl->get("script")) return run_script_mode(*script);
 
-    render::ShellConfig defaults;
+    shell::ShellConfig defaults;
     defaults.title = "Killswitch Editor";
-    auto config = render::shell_config_from_command_line(*cl, defaults);
+    auto config = shell::shell_config_from_command_line(*cl, defaults);
     if (!config) {
         log::error(config.error().str());
         return 2;
     }
-    if (!render::display_available()) {
-        std::fprintf(stderr, "%s\n", render::no_display_message("killswitch-editor").c_str());
+    if (!shell::display_available()) {
+        std::fprintf(stderr, "%s\n", shell::no_display_message("killswitch-editor").c_str());
         return 3;
     }
     config->msaa_samples = 0; // the renderer owns MSAA in the viewport's own target
@@ -97,7 +97,7 @@ int main(int argc, char** argv) {
     }
     if (auto status = cl->get("status-file")) options.status_file = paths::resolve_user_path(*status);
     options.executable_dir = std::filesystem::absolute(argv[0]).parent_path();
-    auto shell = render::AppShell::create(*config);
+    auto shell = shell::AppShell::create(*config);
     if (!shell) {
         log::error(shell.error().str());
         return 1;
@@ -112,6 +112,6 @@ int main(int argc, char** argv) {
             code = (*app)->run();
         }
     }
-    render::AppShell::destroy(*shell);
+    shell::AppShell::destroy(*shell);
     return code;
 }

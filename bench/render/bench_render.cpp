@@ -10,7 +10,7 @@
 #include "level/level_io.h"
 #include "render/asset_library.h"
 #include "render/level_scene.h"
-#include "render/offscreen.h"
+#include "shell/offscreen_context.h"
 #include "render/scene_renderer.h"
 #include "render/texture_cache.h"
 #include "render/view_model.h"
@@ -80,7 +80,7 @@ geometry::Camera path_camera(const geometry::Camera& start, int frame, int frame
 
 // One round of `frames` frames along the whole path, appended to `m` (the variants take turns, round by
 // round, so a change in the machine's load hits them all alike).
-void measure(Measurement& m, render::OffscreenContext& ctx, render::AssetLibrary& assets,
+void measure(Measurement& m, shell::OffscreenContext& ctx, render::AssetLibrary& assets,
              render::LevelScene& scene, const level::Level& level, const Variant& v, int frames, bool& ok,
              const std::string& shot_path) {
     render::RendererSettings settings;
@@ -210,7 +210,7 @@ int run(int argc, const char* const* argv) {
         log::error(level.error().str());
         return 2;
     }
-    auto ctx = render::OffscreenContext::create(*width, *height);
+    auto ctx = shell::OffscreenContext::create(*width, *height);
     if (!ctx) {
         log::error(ctx.error().str(),
                    "\n  run it as: xvfb-run -a -s \"-screen 0 1280x720x24\" ks_bench render");

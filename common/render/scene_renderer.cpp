@@ -1,56 +1,19 @@
 #include "render/scene_renderer.h"
 
 #include "core/log.h"
-#include "core/paths.h"
-#include "geometry/frustum.h"
-#include "render/gpu_mesh.h"
-#include "render/lightmap_texture.h"
-#include "render/material.h"
+#include "render/scene_renderer_units.h"
 #include "render/shaders.h"
-#include "render/texture_cache.h"
 
 #include <epoxy/gl.h>
-#include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
-#include <bit>
-#include <cstdlib>
-#include <cstring>
+#include <cmath>
 #include <functional>
 #include <tuple>
 
 namespace ks::render {
 
-int default_msaa_for(const std::string& gl_renderer) {
-    return is_software_renderer(gl_renderer) ? 0 : 4;
-}
-
-RenderQuality default_quality_for(const std::string& gl_renderer) {
-    if (const char* q = std::getenv("KS_RENDER_QUALITY"); q && *q) {
-        if (std::strcmp(q, "full") == 0) return RenderQuality::Full;
-        if (std::strcmp(q, "fast") == 0) return RenderQuality::Fast;
-        log::warn("KS_RENDER_QUALITY='", q, "' is not 'full' or 'fast'; choosing from the GL renderer");
-    }
-    return is_software_renderer(gl_renderer) ? RenderQuality::Fast : RenderQuality::Full;
-}
-
-float default_render_scale_for(const std::string& gl_renderer, float software_scale) {
-    if (const char* v = std::getenv("KS_RENDER_SCALE"); v && *v) {
-        char* end = nullptr;
-        float scale = std::strtof(v, &end);
-        if (end != v && *end == '\0' && is_finite(scale) && scale > 0.0f)
-            return std::clamp(scale, 0.25f, 1.0f);
-        log::warn("KS_RENDER_SCALE='", v, "' is not a number in 0.25..1; choosing from the GL renderer");
-    }
-    return is_software_renderer(gl_renderer) ? std::clamp(software_scale, 0.25f, 1.0f) : 1.0f;
-}
-
-namespace {
-enum TextureUnit { kBase = 0, kNormal, kOrm, kEmissive, kHeight, kShadow, kLightmap };
-constexpr int kMaxLightsInView = 32;     // one bit each in a draw's light mask
-constexpr float kLegacyLightScale = kPi; // three.js legacy light units (see pbr.frag)
-} // namespace
+using namespace scene_units;
 
 Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(TextureCache& textures,
                                                              RendererSettings settings) {
@@ -202,548 +165,24 @@ SceneRenderer::~SceneRenderer() {
     glDeleteVertexArrays(1, &line_vao_);
     if (shadow_fbo_) glDeleteFramebuffers(1, &shadow_fbo_);
     if (shadow_texture_) glDeleteTextures(1, &shadow_texture_);
-    if (msaa_fbo_) glDeleteFramebuffers(1, &msaa_fbo_);
-    if (msaa_color_) glDeleteRenderbuffers(1, &msaa_color_);
-    if (msaa_depth_) glDeleteRenderbuffers(1, &msaa_depth_);
     if (fast_sampler_) glDeleteSamplers(1, &fast_sampler_);
-    if (scale_fbo_) glDeleteFramebuffers(1, &scale_fbo_);
-    if (scale_color_) glDeleteRenderbuffers(1, &scale_color_);
-    if (scale_depth_) glDeleteRenderbuffers(1, &scale_depth_);
-}
-
-std::uint64_t SceneRenderer::shadow_caster_hash(const std::vector<MeshInstance>& instances) const {
-    // FNV-1a over what decides the shadow map: which meshes cast and where they are, plus the sun.
-    std::uint64_t h = 1469598103934665603ULL;
-    auto mix = [&h](const void* data, size_t size) {
-        auto* bytes = static_cast<const unsigned char*>(data);
-        for (size_t i = 0; i < size; ++i) h = (h ^ bytes[i]) * 1099511628211ULL;
-    };
-    for (const auto& inst : instances) {
-        if (!casts_shadow(inst)) continue;
-        mix(&inst.mesh, sizeof(inst.mesh));
-        mix(glm::value_ptr(inst.world), sizeof(Mat4));
-    }
-    return h | 1; // never 0, which means "invalid"
-}
-
-void SceneRenderer::pick_lights(const SceneFrame& frame, FrameStats& stats) {
-    lights_in_view_.clear();
-    if (!frame.lights) return;
-    geometry::Frustum frustum(frame.camera.projection() * frame.camera.view());
-    for (size_t i = 0; i < frame.lights->size() && lights_in_view_.size() < kMaxLightsInView; ++i) {
-        const Light& l = (*frame.lights)[i];
-        if (l.intensity <= 0.0f || l.range <= 0.0f) continue;
-        if (frustum.intersects_sphere(l.position, l.range)) lights_in_view_.push_back(static_cast<int>(i));
-    }
-    stats.lights_in_view = static_cast<int>(lights_in_view_.size());
-}
-
-namespace {
-float distance_to_box(const Vec3& p, const geometry::Aabb& b) {
-    Vec3 d = glm::max(glm::max(b.min - p, p - b.max), Vec3(0.0f));
-    return glm::length(d);
-}
-} // namespace
-
-void SceneRenderer::cull_and_batch(const SceneFrame& frame, FrameStats& stats) {
-    visible_.clear();
-    batches_.clear();
-    instance_data_.clear();
-    const Vec3 eye = frame.camera.position;
-    const bool view_model_pass = !view_world_.empty();
-    const std::vector<MeshInstance>& source = view_model_pass ? view_world_ : *frame.instances;
-    geometry::Frustum frustum(frame.camera.projection() * frame.camera.view());
-    const int light_cap = std::clamp(settings_.max_lights_per_draw, 0, kMaxLightsPerDraw);
-    // Fast path: the faces of the occluder boxes (walls, floors) in view that face the eye. What lies
-    // entirely behind one of them is skipped: the rooms next door cost no vertex shading or binning.
-    occluder_faces_.clear();
-    const bool occlusion =
-        fast_ && settings_.occlusion_culling && !view_model_pass && !frame.camera.orthographic();
-    if (occlusion)
-        for (const auto& inst : source)
-            if (inst.occluder && inst.mesh) {
-                geometry::Aabb local = inst.mesh->bounds();
-                local.min += inst.occluder_inset;
-                local.max -= inst.occluder_inset;
-                geometry::Aabb box = geometry::transform_aabb(local, inst.world);
-                if (frustum.intersects(box)) append_occluder_faces(box, eye, occluder_faces_);
-            }
-    if (occlusion) merge_occluder_faces(occluder_faces_);
-    for (const auto& inst : source) {
-        if (!inst.mesh || !inst.material) continue;
-        geometry::Aabb box = geometry::transform_aabb(inst.mesh->bounds(), inst.world);
-        if (!view_model_pass && !frustum.intersects(box)) {
-            ++stats.instances_culled;
-            continue;
-        }
-        if (occlusion &&
-            std::any_of(occluder_faces_.begin(), occluder_faces_.end(),
-                        [&](const OccluderFace& f) { return hidden_behind(box, f, frame.camera); })) {
-            ++stats.instances_occluded;
-            continue;
-        }
-        if (fast_ && inst.lightmap != 0) { // its light is baked: no light list
-            visible_.push_back({&inst, distance_to_box(eye, box), 0u, box, inst.lightmap});
-            continue;
-        }
-        // The lights whose range reaches this box; keep the nearest light_cap.
-        std::uint32_t mask = 0;
-        float nearest[kMaxLightsPerDraw];
-        int count = 0;
-        int slot_of[kMaxLightsPerDraw];
-        for (size_t k = 0; k < lights_in_view_.size(); ++k) {
-            const Light& l = (*frame.lights)[static_cast<size_t>(lights_in_view_[k])];
-            float d = distance_to_box(l.position, box);
-            if (d >= l.range) continue;
-            if (count < light_cap) {
-                nearest[count] = d;
-                slot_of[count++] = static_cast<int>(k);
-                mask |= 1u << k;
-            } else if (count > 0) {
-                int worst = static_cast<int>(std::max_element(nearest, nearest + count) - nearest);
-                if (d < nearest[worst]) {
-                    mask &= ~(1u << slot_of[worst]);
-                    nearest[worst] = d;
-                    slot_of[worst] = static_cast<int>(k);
-                    mask |= 1u << k;
-                }
-            }
-        }
-        visible_.push_back({&inst, distance_to_box(eye, box), mask, box, 0u});
-    }
-    // Group identical (material, mesh, lights) together; each group is drawn at its nearest member's
-    // distance.
-    std::sort(visible_.begin(), visible_.end(), [](const Visible& a, const Visible& b) {
-        if (a.instance->material->id != b.instance->material->id)
-            return a.instance->material->id < b.instance->material->id;
-        if (a.instance->mesh != b.instance->mesh) return a.instance->mesh < b.instance->mesh;
-        if (a.light_mask != b.light_mask) return a.light_mask < b.light_mask;
-        if (a.lightmap != b.lightmap) return a.lightmap < b.lightmap;
-        return a.distance < b.distance;
-    });
-    std::vector<float>& batch_distance = batch_distance_;
-    batch_distance.clear();
-    for (size_t i = 0; i < visible_.size();) {
-        size_t j = i;
-        const Visible& head = visible_[i];
-        while (j < visible_.size() && visible_[j].instance->material == head.instance->material &&
-               visible_[j].instance->mesh == head.instance->mesh &&
-               visible_[j].light_mask == head.light_mask && visible_[j].lightmap == head.lightmap)
-            ++j;
-        batches_.push_back({head.instance->mesh, head.instance->material, head.light_mask,
-                            static_cast<int>(i), static_cast<int>(j - i), head.lightmap});
-        batch_distance.push_back(head.distance);
-        i = j;
-    }
-    // Nearest batch first (front to back); ties keep material order.
-    order_.resize(batches_.size());
-    for (size_t i = 0; i < order_.size(); ++i) order_[i] = static_cast<int>(i);
-    std::stable_sort(order_.begin(), order_.end(),
-                     [&](int a, int b) { return batch_distance[a] < batch_distance[b]; });
-    sorted_batches_.clear();
-    for (int b : order_) {
-        Batch batch = batches_[static_cast<size_t>(b)];
-        int first = static_cast<int>(instance_data_.size());
-        for (int k = 0; k < batch.count; ++k) {
-            const MeshInstance& inst = *visible_[static_cast<size_t>(batch.first + k)].instance;
-            instance_data_.push_back({inst.world, Vec4(inst.emissive_scale, 0, 0, 0)});
-        }
-        batch.first = first;
-        sorted_batches_.push_back(batch);
-    }
-    batches_.swap(sorted_batches_);
-}
-
-void SceneRenderer::upload_instances() {
-    glBindBuffer(GL_ARRAY_BUFFER, instance_buffer_);
-    // Orphan then fill: the driver hands back fresh storage instead of waiting for last frame's draws.
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(instance_data_.capacity() * sizeof(InstanceData)),
-                 nullptr, GL_STREAM_DRAW);
-    glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(instance_data_.size() * sizeof(InstanceData)),
-                    instance_data_.data());
-}
-
-void SceneRenderer::render_shadows(const SceneFrame& frame, FrameStats& stats) {
-    if (!settings_.shadows || !frame.instances) return;
-    std::uint64_t h = shadow_caster_hash(*frame.instances);
-    Vec3 sun = glm::normalize(frame.environment.sun_direction);
-    std::uint32_t sun_bits[3];
-    std::memcpy(sun_bits, glm::value_ptr(sun), sizeof(sun_bits));
-    h ^= (std::uint64_t(sun_bits[0]) << 32) ^ sun_bits[1] ^ (std::uint64_t(sun_bits[2]) << 16);
-    h |= 1;
-    if (h == shadow_hash_) return;
-    shadow_hash_ = h;
-    stats.shadow_rendered = true;
-
-    // Fit an orthographic box around every caster, seen from the sun.
-    instance_data_.clear();
-    shadow_batches_.clear();
-    geometry::Aabb bounds = geometry::Aabb::empty();
-    shadow_order_.clear();
-    for (const auto& inst : *frame.instances)
-        if (casts_shadow(inst) && inst.mesh) {
-            bounds = geometry::merge(bounds, geometry::transform_aabb(inst.mesh->bounds(), inst.world));
-            shadow_order_.push_back(&inst);
-        }
-    if (!bounds.valid()) return;
-    std::sort(shadow_order_.begin(), shadow_order_.end(),
-              [](const MeshInstance* a, const MeshInstance* b) { return a->mesh < b->mesh; });
-    for (size_t i = 0; i < shadow_order_.size();) {
-        size_t j = i;
-        while (j < shadow_order_.size() && shadow_order_[j]->mesh == shadow_order_[i]->mesh) {
-            instance_data_.push_back({shadow_order_[j]->world, Vec4(0.0f)});
-            ++j;
-        }
-        shadow_batches_.push_back(
-            {shadow_order_[i]->mesh, nullptr, 0, static_cast<int>(i), static_cast<int>(j - i), 0u});
-        i = j;
-    }
-    Vec3 center = bounds.center();
-    float radius = glm::length(bounds.extent()) + 1.0f;
-    Vec3 up = std::abs(sun.y) > 0.99f ? Vec3(0, 0, 1) : Vec3(0, 1, 0);
-    Mat4 light_view = glm::lookAt(center - sun * radius, center, up);
-    geometry::Aabb ls = geometry::transform_aabb(bounds, light_view);
-    Mat4 light_proj = glm::ortho(ls.min.x, ls.max.x, ls.min.y, ls.max.y, -ls.max.z - 1.0f, -ls.min.z + 1.0f);
-    Mat4 light_vp = light_proj * light_view;
-    const Mat4 bias(0.5f, 0, 0, 0, 0, 0.5f, 0, 0, 0, 0, 0.5f, 0, 0.5f, 0.5f, 0.5f, 1.0f);
-    shadow_matrix_ = bias * light_vp;
-
-    upload_instances();
-    GLint previous_fbo = 0;
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous_fbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo_);
-    glViewport(0, 0, settings_.shadow_map_size, settings_.shadow_map_size);
-    glEnable(GL_DEPTH_TEST);
-    glDepthMask(GL_TRUE);
-    glClear(GL_DEPTH_BUFFER_BIT);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(2.0f, 4.0f);
-    glDisable(GL_CULL_FACE);
-    shadow_.use();
-    glUniformMatrix4fv(shadow_.location("u_light_view_projection"), 1, GL_FALSE, glm::value_ptr(light_vp));
-    for (const Batch& b : shadow_batches_) {
-        draw_instanced(b, stats);
-    }
-    glDisable(GL_POLYGON_OFFSET_FILL);
-    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previous_fbo));
-    glViewport(0, 0, internal_width_, internal_height_);
-}
-
-void SceneRenderer::draw_batches(const Mat4& view_projection, const Vec3& eye, const SceneFrame& frame,
-                                 FrameStats& stats, bool view_model) {
-    upload_instances();
-    pbr_.use();
-    const Environment& env = frame.environment;
-    glUniformMatrix4fv(pbr_.location("u_view_projection"), 1, GL_FALSE, glm::value_ptr(view_projection));
-    glUniformMatrix4fv(pbr_.location("u_shadow_matrix"), 1, GL_FALSE, glm::value_ptr(shadow_matrix_));
-    glUniform3fv(pbr_.location("u_camera_position"), 1, glm::value_ptr(eye));
-    Vec3 to_sun = -glm::normalize(env.sun_direction);
-    glUniform3fv(pbr_.location("u_sun_direction"), 1, glm::value_ptr(to_sun));
-    Vec3 sun = env.sun_color * kLegacyLightScale;
-    glUniform3fv(pbr_.location("u_sun_color"), 1, glm::value_ptr(sun));
-    glUniform3fv(pbr_.location("u_sky_color"), 1, glm::value_ptr(env.sky_color));
-    glUniform3fv(pbr_.location("u_ground_color"), 1, glm::value_ptr(env.ground_color));
-    glUniform3fv(pbr_.location("u_fog_color"), 1, glm::value_ptr(env.fog_color));
-    glUniform1f(pbr_.location("u_fog_density"), view_model ? 0.0f : env.fog_density);
-    glUniform1f(pbr_.location("u_exposure"), env.exposure);
-    glActiveTexture(GL_TEXTURE0 + kShadow);
-    glBindTexture(GL_TEXTURE_2D, shadow_texture_);
-    const bool shadows = settings_.shadows && shadow_texture_ != 0 && !view_model;
-
-    const Material* bound_material = nullptr;
-    std::uint32_t bound_mask = ~0u;
-    const GLint loc_flags = pbr_.location("u_map_flags");
-    const GLint loc_base = pbr_.location("u_base_factor"), loc_emissive = pbr_.location("u_emissive_factor");
-    const GLint loc_mr = pbr_.location("u_metal_rough"), loc_bump = pbr_.location("u_bump_strength");
-    for (const Batch& b : batches_) {
-        if (b.material != bound_material) {
-            const Material& m = *b.material;
-            auto bind = [&](int unit, unsigned id, unsigned fallback) {
-                glActiveTexture(GL_TEXTURE0 + unit);
-                glBindTexture(GL_TEXTURE_2D, id ? id : fallback);
-            };
-            bind(kBase, m.base_map, textures_.white().id);
-            bind(kNormal, m.normal_map, textures_.flat_normal().id);
-            bind(kOrm, m.orm_map, textures_.white().id);
-            bind(kEmissive, m.emissive_map, textures_.white().id);
-            bind(kHeight, m.height_map, textures_.white().id);
-            const bool detail = settings_.surface_detail;
-            int flags = (m.normal_map && detail ? 1 : 0) | (m.orm_map ? 2 : 0) | (m.emissive_map ? 4 : 0) |
-                        (m.height_map && detail ? 8 : 0) | (shadows ? 16 : 0);
-            glUniform1i(loc_flags, flags);
-            glUniform4fv(loc_base, 1, glm::value_ptr(m.base_factor));
-            glUniform3fv(loc_emissive, 1, glm::value_ptr(m.emissive_factor));
-            glUniform2f(loc_mr, m.metallic, m.roughness);
-            glUniform1f(loc_bump, m.bump_strength);
-            bound_material = b.material;
-        }
-        if (b.light_mask != bound_mask) {
-            upload_lights(pbr_, b.light_mask, frame);
-            bound_mask = b.light_mask;
-        }
-        draw_instanced(b, stats);
-        stats.instances_drawn += b.count;
-    }
-}
-
-void SceneRenderer::draw_instanced(const Batch& b, FrameStats& stats) {
-    glBindVertexArray(b.mesh->vao());
-    b.mesh->bind_instances(instance_buffer_, static_cast<size_t>(b.first) * sizeof(InstanceData));
-    glDrawElementsInstanced(GL_TRIANGLES, b.mesh->index_count(), GL_UNSIGNED_INT, nullptr, b.count);
-    ++stats.draw_calls;
-    stats.triangles += static_cast<long long>(b.mesh->index_count() / 3) * b.count;
-}
-
-void SceneRenderer::upload_lights(const ShaderProgram& program, std::uint32_t light_mask,
-                                  const SceneFrame& frame) {
-    Vec4 pos[kMaxLightsPerDraw], color[kMaxLightsPerDraw], dir[kMaxLightsPerDraw];
-    float inner[kMaxLightsPerDraw];
-    int n = 0;
-    for (std::uint32_t bits = light_mask; bits && n < kMaxLightsPerDraw; bits &= bits - 1) {
-        int k = std::countr_zero(bits);
-        const Light& l = (*frame.lights)[static_cast<size_t>(lights_in_view_[static_cast<size_t>(k)])];
-        pos[n] = Vec4(l.position, l.range);
-        color[n] = Vec4(l.color * l.intensity * kLegacyLightScale, l.type == Light::Type::Spot ? 1.0f : 0.0f);
-        dir[n] = Vec4(glm::normalize(l.direction), l.cos_outer);
-        inner[n] = std::max(l.cos_inner, l.cos_outer + 1e-3f);
-        ++n;
-    }
-    glUniform1i(program.location("u_light_count"), n);
-    if (n > 0) {
-        glUniform4fv(program.location("u_light_position"), n, glm::value_ptr(pos[0]));
-        glUniform4fv(program.location("u_light_color"), n, glm::value_ptr(color[0]));
-        glUniform4fv(program.location("u_light_direction"), n, glm::value_ptr(dir[0]));
-        glUniform1fv(program.location("u_light_inner"), n, inner);
-    }
-}
-
-void SceneRenderer::draw_batches_fast(const geometry::Camera& camera, const SceneFrame& frame,
-                                      FrameStats& stats, bool view_model) {
-    upload_instances();
-    const Environment& env = frame.environment;
-    const Mat4 view_projection = camera.projection() * camera.view();
-    const Vec3 to_sun = -glm::normalize(env.sun_direction);
-    const Vec3 sun = env.sun_color * kLegacyLightScale;
-    // Fog from the depth buffer's value (perspective only; orthographic views have no fog here).
-    const bool fog = !view_model && !camera.orthographic();
-    const float n = camera.near_plane, f = camera.far_plane;
-    // The frame's uniforms, in both fast programs (a uniform a program does not have is location -1, which
-    // GL ignores): fast (models, and any surface fast_level cannot draw) and fast_level (baked level
-    // surfaces, no branches).
-    struct Locations {
-        GLint flags, baked, receive, base, emissive, metal_rough;
-    } loc[2];
-    const ShaderProgram* programs[2] = {&fast_program_, &fast_level_};
-    for (int i = 0; i < 2; ++i) {
-        const ShaderProgram& p = *programs[i];
-        p.use();
-        glUniformMatrix4fv(p.location("u_view_projection"), 1, GL_FALSE, glm::value_ptr(view_projection));
-        glUniformMatrix4fv(p.location("u_shadow_matrix"), 1, GL_FALSE, glm::value_ptr(shadow_matrix_));
-        glUniform3fv(p.location("u_camera_position"), 1, glm::value_ptr(camera.position));
-        glUniform3fv(p.location("u_sun_direction"), 1, glm::value_ptr(to_sun));
-        glUniform3fv(p.location("u_sun_color"), 1, glm::value_ptr(sun));
-        glUniform3fv(p.location("u_sky_color"), 1, glm::value_ptr(env.sky_color));
-        glUniform3fv(p.location("u_ground_color"), 1, glm::value_ptr(env.ground_color));
-        glUniform3fv(p.location("u_fog_color"), 1, glm::value_ptr(env.fog_color));
-        glUniform1f(p.location("u_fog_density"), fog ? env.fog_density : 0.0f);
-        glUniform2f(p.location("u_depth_to_view"), n * f / (f - n), f / (f - n));
-        glUniform1f(p.location("u_exposure"), env.exposure);
-        glUniform1f(p.location("u_lightmap_range"), lightmap_encoding_range());
-        loc[i] = {p.location("u_map_flags"),       p.location("u_baked"),
-                  p.location("u_receive_shadow"),  p.location("u_base_factor"),
-                  p.location("u_emissive_factor"), p.location("u_metal_rough")};
-    }
-    glActiveTexture(GL_TEXTURE0 + kShadow);
-    glBindTexture(GL_TEXTURE_2D, shadow_texture_);
-    const bool shadows = settings_.shadows && shadow_texture_ != 0 && !view_model;
-
-    // Depth pre-pass of the baked level geometry (walls, floors, stairs: a few hundred triangles), position
-    // only, pushed back by a polygon offset so that the shaded pass's own fragments still pass GL_LESS
-    // even if the two programs round a vertex differently (and a model touching a wall wins the tie). Then
-    // models are shaded first (nearest first), the level last: every level pixel and most model pixels are
-    // shaded once.
-    const bool prepass = settings_.depth_prepass && !view_model;
-    if (prepass) {
-        shadow_.use();
-        glUniformMatrix4fv(shadow_.location("u_light_view_projection"), 1, GL_FALSE,
-                           glm::value_ptr(view_projection));
-        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        glEnable(GL_POLYGON_OFFSET_FILL);
-        glPolygonOffset(1.0f, 2.0f);
-        for (const Batch& b : batches_)
-            if (b.lightmap != 0) draw_instanced(b, stats);
-        glDisable(GL_POLYGON_OFFSET_FILL);
-        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    }
-
-    int current = -1; // index into programs
-    const Material* bound_material = nullptr;
-    unsigned bound_lightmap = ~0u;
-    std::uint32_t bound_mask = ~0u;
-    for (int pass = prepass ? 0 : 1; pass < 2; ++pass)
-        for (const Batch& b : batches_) {
-            // With the pre-pass: models (pass 0), then the level (pass 1); without it, one pass in distance
-            // order.
-            if (prepass && (b.lightmap != 0) != (pass == 1)) continue;
-            const Material& m = *b.material;
-            const bool baked = b.lightmap != 0;
-            // Baked level surfaces read base colour x occlusion from one map (no ORM lookup per pixel).
-            const bool occluded_base = baked && m.fast_base_map != 0 && settings_.fast_occluded_base;
-            // fast_level draws a baked surface whose maps are base x occlusion (read raw) and the light map.
-            const int program = baked && occluded_base && !m.emissive_map && raw_srgb_ && !m.placeholder &&
-                                        settings_.fast_level_shader
-                                    ? 1
-                                    : 0;
-            if (program != current) {
-                programs[program]->use();
-                current = program;
-                bound_material = nullptr;
-                bound_lightmap = ~0u;
-                bound_mask = ~0u;
-            }
-            const Locations& l = loc[program];
-            if (b.material != bound_material || b.lightmap != bound_lightmap) {
-                if (b.material != bound_material || (b.lightmap == 0) != (bound_lightmap == 0)) {
-                    auto bind = [&](int unit, unsigned id, unsigned fallback) {
-                        glActiveTexture(GL_TEXTURE0 + unit);
-                        glBindTexture(GL_TEXTURE_2D, id ? id : fallback);
-                    };
-                    bind(kBase, occluded_base ? m.fast_base_map : m.base_map, textures_.white().id);
-                    bind(kOrm, m.orm_map, textures_.white().id);
-                    bind(kEmissive, m.emissive_map, textures_.white().id);
-                    // The placeholder checker has no mipmaps (a mip filter would make it incomplete): it
-                    // keeps its own nearest filtering and sRGB decode.
-                    const unsigned sampler = m.placeholder ? 0u : fast_sampler_;
-                    glBindSampler(kBase, sampler);
-                    glBindSampler(kEmissive, sampler);
-                    glUniform4fv(l.base, 1, glm::value_ptr(m.base_factor));
-                    glUniform3fv(l.emissive, 1, glm::value_ptr(m.emissive_factor));
-                    glUniform2f(l.metal_rough, occluded_base ? m.fast_metallic : m.metallic, m.roughness);
-                }
-                if (b.lightmap != bound_lightmap && b.lightmap != 0) {
-                    glActiveTexture(GL_TEXTURE0 + kLightmap);
-                    glBindTexture(GL_TEXTURE_2D, b.lightmap);
-                }
-                glUniform1i(l.flags, (m.orm_map && !occluded_base ? 2 : 0) | (m.emissive_map ? 4 : 0) |
-                                         (baked ? 32 : 0) | (raw_srgb_ && !m.placeholder ? 64 : 0));
-                glUniform1i(l.baked, baked ? 1 : 0);
-                glUniform1i(l.receive, shadows && !baked ? 1 : 0);
-                bound_material = b.material;
-                bound_lightmap = b.lightmap;
-            }
-            if (b.lightmap == 0 && b.light_mask != bound_mask) {
-                upload_lights(*programs[program], b.light_mask, frame);
-                bound_mask = b.light_mask;
-            }
-            draw_instanced(b, stats);
-            stats.instances_drawn += b.count;
-        }
-    glBindSampler(kBase, 0);
-    glBindSampler(kEmissive, 0);
-}
-
-void SceneRenderer::draw_particles(const SceneFrame& frame, FrameStats& stats) {
-    if (!frame.particles || frame.particles->empty()) return;
-    particle_.use();
-    const Mat4 view = frame.camera.view(), proj = frame.camera.projection();
-    glUniformMatrix4fv(particle_.location("u_view"), 1, GL_FALSE, glm::value_ptr(view));
-    glUniformMatrix4fv(particle_.location("u_projection"), 1, GL_FALSE, glm::value_ptr(proj));
-    glEnable(GL_BLEND);
-    glDepthMask(GL_FALSE);
-    glBindVertexArray(particle_vao_);
-    glActiveTexture(GL_TEXTURE0);
-    for (const ParticleEmitter* emitter : *frame.particles) {
-        if (!emitter || emitter->particles().empty()) continue;
-        const auto& ps = emitter->particles();
-        particle_vertices_.clear();
-        particle_order_.clear();
-        for (size_t i = 0; i < ps.size(); ++i)
-            particle_order_.push_back({(view * Vec4(ps[i].position, 1.0f)).z, static_cast<int>(i)});
-        const bool alpha = emitter->params().blend == ParticleBlend::Alpha;
-        if (alpha) // back to front: most negative view-space z first
-            std::sort(particle_order_.begin(), particle_order_.end(),
-                      [](auto& a, auto& b) { return a.first < b.first; });
-        for (auto [z, i] : particle_order_) {
-            const Particle& p = ps[static_cast<size_t>(i)];
-            particle_vertices_.push_back({Vec4(p.position, p.current_size), p.color, p.rotation});
-        }
-        auto it = sprite_ids_.find(emitter->params().texture);
-        if (it == sprite_ids_.end()) {
-            const Texture& t = textures_.get(
-                paths::asset("textures/particles/" + emitter->params().texture + ".png"), ColorSpace::Srgb);
-            it = sprite_ids_.emplace(emitter->params().texture, t.id).first;
-        }
-        glBindTexture(GL_TEXTURE_2D, it->second);
-        glBlendFunc(GL_ONE, alpha ? GL_ONE_MINUS_SRC_ALPHA : GL_ONE);
-        glBindBuffer(GL_ARRAY_BUFFER, particle_buffer_);
-        glBufferData(GL_ARRAY_BUFFER,
-                     static_cast<GLsizeiptr>(particle_vertices_.size() * sizeof(ParticleVertex)),
-                     particle_vertices_.data(), GL_STREAM_DRAW);
-        glDrawArraysInstanced(GL_TRIANGLES, 0, 6, static_cast<GLsizei>(particle_vertices_.size()));
-        ++stats.draw_calls;
-        stats.triangles += 2 * static_cast<long long>(particle_vertices_.size());
-    }
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
-}
-
-void SceneRenderer::draw_debug(const SceneFrame& frame, FrameStats& stats) {
-    if (!frame.debug || frame.debug->vertices().empty()) return;
-    const auto& v = frame.debug->vertices();
-    line_.use();
-    Mat4 vp = frame.camera.projection() * frame.camera.view();
-    glUniformMatrix4fv(line_.location("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
-    glBindVertexArray(line_vao_);
-    glBindBuffer(GL_ARRAY_BUFFER, line_buffer_);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(v.size() * sizeof(DebugVertex)), v.data(),
-                 GL_STREAM_DRAW);
-    glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(v.size()));
-    ++stats.draw_calls;
 }
 
 void SceneRenderer::ensure_msaa_target(int width, int height) {
-    if (msaa_fbo_ && width == msaa_width_ && height == msaa_height_) return;
-    if (!msaa_fbo_) {
-        glGenFramebuffers(1, &msaa_fbo_);
-        glGenRenderbuffers(1, &msaa_color_);
-        glGenRenderbuffers(1, &msaa_depth_);
-    }
-    glBindRenderbuffer(GL_RENDERBUFFER, msaa_color_);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, settings_.msaa_samples, GL_RGBA8, width, height);
-    glBindRenderbuffer(GL_RENDERBUFFER, msaa_depth_);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, settings_.msaa_samples, GL_DEPTH_COMPONENT24, width,
-                                     height);
-    glBindFramebuffer(GL_FRAMEBUFFER, msaa_fbo_);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msaa_color_);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msaa_depth_);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    if (!msaa_target_ || msaa_target_->format().samples != settings_.msaa_samples)
+        msaa_target_ = std::make_unique<RenderTarget>(
+            RenderTargetFormat{ColourStorage::Renderbuffer, settings_.msaa_samples});
+    if (auto made = msaa_target_->ensure(width, height); !made) {
         log::warn("MSAA ", settings_.msaa_samples, "x framebuffer unsupported; rendering without MSAA");
         settings_.msaa_samples = 0;
     }
-    msaa_width_ = width;
-    msaa_height_ = height;
 }
 
 void SceneRenderer::ensure_scale_target(int width, int height) {
-    if (scale_fbo_ && width == scale_width_ && height == scale_height_) return;
-    if (!scale_fbo_) {
-        glGenFramebuffers(1, &scale_fbo_);
-        glGenRenderbuffers(1, &scale_color_);
-        glGenRenderbuffers(1, &scale_depth_);
-    }
-    glBindRenderbuffer(GL_RENDERBUFFER, scale_color_);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
-    glBindRenderbuffer(GL_RENDERBUFFER, scale_depth_);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
-    glBindFramebuffer(GL_FRAMEBUFFER, scale_fbo_);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, scale_color_);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, scale_depth_);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    if (auto made = scale_target_.ensure(width, height); !made) {
         log::warn("render scale ", settings_.render_scale, ": offscreen target unsupported; full resolution");
         settings_.render_scale = 1.0f;
     }
-    scale_width_ = width;
-    scale_height_ = height;
 }
 
 FrameStats SceneRenderer::render(const SceneFrame& frame) {
@@ -770,9 +209,9 @@ FrameStats SceneRenderer::render(const SceneFrame& frame) {
     render_shadows(frame, stats);
     if (settings_.msaa_samples > 0) ensure_msaa_target(internal_width_, internal_height_);
     if (settings_.msaa_samples > 0)
-        glBindFramebuffer(GL_FRAMEBUFFER, msaa_fbo_);
+        msaa_target_->bind();
     else if (scaled)
-        glBindFramebuffer(GL_FRAMEBUFFER, scale_fbo_);
+        scale_target_.bind();
     glViewport(0, 0, internal_width_, internal_height_);
     const Vec3 fog_srgb =
         frame.environment.fog_color; // the clear shows the fog colour, encoded like the shader
@@ -822,18 +261,12 @@ FrameStats SceneRenderer::render(const SceneFrame& frame) {
         view_world_.clear();
     }
 
-    const int w = internal_width_, h = internal_height_;
     if (settings_.msaa_samples > 0) {
         // Resolve (same size), then scale up if the scene was drawn smaller.
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, msaa_fbo_);
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, scaled ? scale_fbo_ : static_cast<GLuint>(target_fbo));
-        glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        msaa_target_->blit_to(scaled ? scale_target_.framebuffer() : static_cast<GLuint>(target_fbo),
+                              internal_width_, internal_height_, false);
     }
-    if (scaled) {
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, scale_fbo_);
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target_fbo));
-        glBlitFramebuffer(0, 0, w, h, 0, 0, frame.width, frame.height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
-    }
+    if (scaled) scale_target_.blit_to(static_cast<GLuint>(target_fbo), frame.width, frame.height, true);
     glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target_fbo));
     glViewport(0, 0, frame.width, frame.height);
     glBindVertexArray(0);

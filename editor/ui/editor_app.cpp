@@ -9,6 +9,7 @@
 #include "ui/dojo_panel.h"
 #include "ui/layout.h"
 
+#define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
@@ -28,7 +29,7 @@ fs::path recent_files_path() {
 }
 } // namespace
 
-EditorApp::EditorApp(render::AppShell& shell, const AppOptions& options)
+EditorApp::EditorApp(shell::AppShell& shell, const AppOptions& options)
     : shell_(shell), options_(options), recent_(recent_files_path()), assets_(paths::asset("")) {}
 
 EditorApp::~EditorApp() {
@@ -36,7 +37,7 @@ EditorApp::~EditorApp() {
     if (g_app == this) g_app = nullptr;
 }
 
-Result<std::unique_ptr<EditorApp>> EditorApp::create(render::AppShell& shell, const AppOptions& options) {
+Result<std::unique_ptr<EditorApp>> EditorApp::create(shell::AppShell& shell, const AppOptions& options) {
     std::unique_ptr<EditorApp> app(new EditorApp(shell, options));
     if (auto r = app->init(); !r) return r.error();
     return app;
@@ -107,9 +108,9 @@ Result<void> EditorApp::init() {
 }
 
 int EditorApp::run() {
-    render::ShellHooks hooks;
-    hooks.render = [this](const render::FrameInfo& info) { render_views(info); };
-    hooks.imgui = [this](const render::FrameInfo& info) { build_ui(info); };
+    shell::ShellHooks hooks;
+    hooks.render = [this](const shell::FrameInfo& info) { render_views(info); };
+    hooks.imgui = [this](const shell::FrameInfo& info) { build_ui(info); };
     hooks.wants_close = [this]() { return quit_; };
     return shell_.run(hooks);
 }
@@ -127,7 +128,7 @@ void EditorApp::update_title() {
     }
 }
 
-void EditorApp::render_views(const render::FrameInfo& info) {
+void EditorApp::render_views(const shell::FrameInfo& info) {
     const Layout layout = compute_layout(static_cast<float>(info.width), static_cast<float>(info.height),
                                          ImGui::GetFrameHeight());
     if (dojo_tab_) {
@@ -155,7 +156,7 @@ void EditorApp::render_views(const render::FrameInfo& info) {
     RenderTarget::clear_window(info.width, info.height);
 }
 
-void EditorApp::build_ui(const render::FrameInfo& info) {
+void EditorApp::build_ui(const shell::FrameInfo& info) {
     std::vector<std::string> lines;
     play_.poll(lines);
     for (auto& l : lines) log_line("[game] " + l, l.find("error") != std::string::npos);

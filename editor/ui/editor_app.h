@@ -5,7 +5,7 @@
 #include "model/autosave.h"
 #include "model/editor.h"
 #include "model/recent_files.h"
-#include "render/app_shell.h"
+#include "shell/app_shell.h"
 #include "render/asset_library.h"
 #include "render/debug_draw.h"
 #include "render/level_scene.h"
@@ -58,19 +58,19 @@ enum class PendingAction { None, New, Open, OpenRecent, Quit };
 
 class EditorApp {
   public:
-    static Result<std::unique_ptr<EditorApp>> create(render::AppShell& shell, const AppOptions& options);
+    static Result<std::unique_ptr<EditorApp>> create(shell::AppShell& shell, const AppOptions& options);
     ~EditorApp();
     int run();
 
     void log_line(std::string line, bool error = false);
 
   private:
-    EditorApp(render::AppShell& shell, const AppOptions& options);
+    EditorApp(shell::AppShell& shell, const AppOptions& options);
     Result<void> init();
 
     // frame
-    void render_views(const render::FrameInfo& info);
-    void build_ui(const render::FrameInfo& info);
+    void render_views(const shell::FrameInfo& info);
+    void build_ui(const shell::FrameInfo& info);
     void handle_shortcuts();
     void update_title();
     void write_status(); // status_report.cpp
@@ -109,7 +109,7 @@ class EditorApp {
     void log_panel(float x, float y, float w, float h);
     bool field_widget(const FieldDescriptor& field, FieldValue& value, bool mixed);
 
-    render::AppShell& shell_;
+    shell::AppShell& shell_;
     AppOptions options_;
     Editor editor_;
     RecentFiles recent_;

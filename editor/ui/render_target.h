@@ -1,28 +1,31 @@
 #pragma once
-// A colour texture + depth buffer the viewport and the dojo preview render into, shown with ImGui::Image.
-// Resized lazily to the panel's size; the only GL the editor front end owns (the renderer draws into it).
+// The viewport's and the dojo preview's target, shown with ImGui::Image: render::RenderTarget with a
+// sampled colour texture, resized lazily to the panel's size. The GL is all in common/render/.
+#include "core/log.h"
+#include "render/render_target.h"
+#include "render/window_target.h"
+
 namespace ks::editor::ui {
 
 class RenderTarget {
   public:
-    RenderTarget() = default;
-    ~RenderTarget();
-    RenderTarget(const RenderTarget&) = delete;
-    RenderTarget& operator=(const RenderTarget&) = delete;
-
-    // (Re)creates the attachments when the size changed; false if the framebuffer is incomplete.
-    bool ensure(int width, int height);
-    void bind() const;    // draw target for the next render
-    static void unbind(); // back to the window
+    // (Re)creates the attachments when the size changed; false (logged) if the framebuffer is incomplete.
+    bool ensure(int width, int height) {
+        auto made = target_.ensure(width, height);
+        if (!made) log::warn(made.error().str());
+        return made.ok();
+    }
+    void bind() const { target_.bind(); } // draw target for the next render
     // Binds the window, clears it (behind the panels) and sets the full viewport for ImGui.
-    static void clear_window(int width, int height);
-    unsigned texture() const { return color_; }
-    int width() const { return width_; }
-    int height() const { return height_; }
+    static void clear_window(int width, int height) {
+        render::clear_window_target(width, height, Vec3(0.09f, 0.1f, 0.12f));
+    }
+    unsigned texture() const { return target_.texture(); }
+    int width() const { return target_.width(); }
+    int height() const { return target_.height(); }
 
   private:
-    unsigned fbo_ = 0, color_ = 0, depth_ = 0;
-    int width_ = 0, height_ = 0;
+    render::RenderTarget target_{{render::ColourStorage::Texture, 0}};
 };
 
 } // namespace ks::editor::ui

@@ -6,6 +6,7 @@
 #include "ui/dojo_panel.h"
 #include "ui/editor_app.h"
 
+#define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 

@@ -1,5 +1,6 @@
 #include "ui/view_input.h"
 
+#define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
 namespace ks::editor::ui {

@@ -7,6 +7,7 @@
 #include "ui/layout.h"
 #include "ui/view_input.h"
 
+#define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <optional>

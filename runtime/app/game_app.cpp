@@ -2,33 +2,9 @@
 // Dead / Won → Menu or a fresh game; the Dojo is Playing on levels/dojo.json with the test robot driven by
 // number keys. The game advances only in the shell's fixed steps (the game's 120 Hz); the picture is drawn
 // once per frame, interpolated between the last two steps.
-#include "game_app.h"
+#include "game_app_internal.h"
 
-#include "anim/dojo.h"
-#include "core/files.h"
-#include "core/log.h"
-#include "core/paths.h"
-#include "game/game.h"
-#include "input_events.h"
-#include "input_script.h"
-#include "level/level_io.h"
-#include "menu_style.h"
-#include "options.h"
-#include "player_input.h"
-#include "render/hud.h"
-#include "render/scene_renderer.h"
-#include "screens.h"
-#include "step_budget.h"
-#include "world_view.h"
-
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
-#include <imgui.h>
-
-#include <algorithm>
 #include <cstdio>
-#include <functional>
-#include <optional>
 #include <sstream>
 
 namespace ks::runtime {
@@ -48,10 +24,6 @@ const std::vector<std::string>& game_app_screens() {
                                                      "pause",   "death", "win",   "play",    "dojo"};
     return screens;
 }
-
-namespace {
-
-enum class Screen { Loading, Menu, HowTo, Credits, Options, Playing, Paused, Dead, Won };
 
 const char* screen_name(Screen s) {
     switch (s) {
@@ -77,37 +49,6 @@ const char* screen_name(Screen s) {
     return "?";
 }
 
-// At most this many fixed steps per frame (0.25 s of game time; step_budget.h says why): 4 frames per
-// second still play in real time, slower machines in slow motion.
-constexpr int kMaxStepsPerFrame = 30;
-
-// One loaded level with its game and view. The Dojo's controller borrows the game's clips, so it goes first.
-struct Session {
-    level::Level level;
-    bool dojo = false;
-    std::unique_ptr<game::Game> game;
-    std::unique_ptr<WorldView> view;
-    std::optional<anim::DojoController> dojo_controller;
-    DojoDummy dummy;
-    double play_seconds = 0.0;
-    int robots_total = 0;
-    ~Session() { dojo_controller.reset(); }
-};
-
-// Loading in steps, one per frame, so the progress bar moves while assets load.
-struct Loader {
-    struct Step {
-        std::string label;
-        std::function<Result<void>()> run;
-    };
-    std::vector<Step> steps;
-    std::size_t next = 0;
-    Screen then = Screen::Menu;
-    float fraction() const { return steps.empty() ? 1.0f : static_cast<float>(next) / steps.size(); }
-    bool done() const { return next >= steps.size(); }
-    std::string label() const { return done() ? "Ready" : steps[next].label; }
-};
-
 bool parse_floats(const std::string& text, float* out, int count) {
     std::stringstream ss(text);
     std::string item;
@@ -121,89 +62,6 @@ bool parse_floats(const std::string& text, float* out, int count) {
     }
     return n == count;
 }
-
-class GameApp {
-  public:
-    GameApp(render::AppShell& shell, render::SceneRenderer& renderer, render::AssetLibrary& assets,
-            std::filesystem::path level_path, std::uint64_t seed)
-        : shell_(shell), renderer_(renderer), assets_(assets), level_path_(std::move(level_path)),
-          seed_(seed) {
-        options_ = load_options(options_path());
-        apply_render_options();
-        events_.install(shell_.window());
-    }
-
-    // Command-line automation: the screen to show and the scenario to set up (tests and screenshots).
-    struct Automation {
-        std::string screen;
-        bool dojo = false;
-        std::optional<std::array<float, 5>> warp;
-        char dojo_key = 0;
-        double dojo_time = -1.0;
-        bool fire = false; // one shot on the first step (to see the muzzle flash, impacts, explosions)
-        std::filesystem::path status_file; // rewritten each frame with the screen and the game's state
-        std::vector<ScriptEvent> script;   // --input-script
-        bool scripted = false;
-    };
-    Result<void> start(const Automation& a);
-    int run();
-
-  private:
-    void load(const std::filesystem::path& path, bool dojo, Screen then);
-    Result<void> finish_loading_now();
-    void step_loader();
-    void fixed_update(double dt);
-    void render(const render::FrameInfo& info);
-    void imgui(const render::FrameInfo& info);
-    void handle_keys();
-    void enter_play();
-    void pause();
-    void resume();
-    void to_menu();
-    void retry();
-    void open_sub(Screen s) {
-        return_to_ = screen_;
-        screen_ = s;
-    }
-    void save_options_now();
-    void apply_render_options();
-    bool in_world() const { return screen_ == Screen::Playing; }
-    void apply_warp();
-    void run_script(long long frame);
-    void write_status(const render::FrameInfo& info);
-    // Real input drives the app: not a screenshot run, or a screenshot run driven by --input-script.
-    bool interactive() const { return !shell_.screenshot_mode() || scripted_; }
-
-    render::AppShell& shell_;
-    render::SceneRenderer& renderer_;
-    render::AssetLibrary& assets_;
-    std::filesystem::path level_path_;
-    std::uint64_t seed_;
-    Options options_;
-    bool options_dirty_ = false;
-    InputEvents events_;
-    PlayerInput input_;
-    StepBudget budget_{kMaxStepsPerFrame};
-    std::optional<std::array<float, 5>> pending_warp_; // interactive --warp: applied when the level loads
-    std::filesystem::path status_path_;
-    std::string status_last_;
-    std::vector<ScriptEvent> script_;
-    std::size_t script_next_ = 0;
-    bool scripted_ = false;
-    bool click_next_frame_ = false;
-    int exit_code_ = 0;
-    Screen screen_ = Screen::Loading, return_to_ = Screen::Menu;
-    std::unique_ptr<Session> session_, pending_;
-    Loader loader_;
-    bool freeze_loader_ = false, freeze_dojo_ = false;
-    std::string error_;
-    bool quit_ = false;
-    bool pause_requested_ = false;
-    render::FrameStats stats_;
-    WinStats win_;
-    std::vector<render::MeshInstance> no_instances_;
-    std::vector<render::Light> no_lights_;
-};
 
 void GameApp::load(const std::filesystem::path& path, bool dojo, Screen then) {
     pending_ = std::make_unique<Session>();
@@ -411,116 +269,7 @@ void GameApp::handle_keys() {
     }
 }
 
-void GameApp::run_script(long long frame) {
-    if (click_next_frame_) {
-        click_next_frame_ = false;
-        events_.inject_button(GLFW_MOUSE_BUTTON_LEFT, GLFW_PRESS);
-        events_.inject_button(GLFW_MOUSE_BUTTON_LEFT, GLFW_RELEASE);
-    }
-    while (script_next_ < script_.size() && script_[script_next_].frame <= frame) {
-        const ScriptEvent& e = script_[script_next_++];
-        switch (e.kind) {
-        case ScriptEvent::Kind::Key:
-            if (e.action != 0) events_.inject_key(e.code, GLFW_PRESS);
-            if (e.action != 1) events_.inject_key(e.code, GLFW_RELEASE);
-            break;
-        case ScriptEvent::Kind::Mouse:
-            if (e.action != 0) events_.inject_button(e.code, GLFW_PRESS);
-            if (e.action != 1) events_.inject_button(e.code, GLFW_RELEASE);
-            break;
-        case ScriptEvent::Kind::Move:
-            events_.inject_cursor(e.x, e.y);
-            break;
-        case ScriptEvent::Kind::Look: {
-            double x = 0.0, y = 0.0;
-            glfwGetCursorPos(shell_.window(), &x, &y);
-            events_.inject_cursor(x, y); // where it is (an origin if none was seen yet), then the motion
-            events_.inject_cursor(x + e.x, y + e.y);
-            break;
-        }
-        case ScriptEvent::Kind::ClickButton: {
-            const auto& buttons = ui::buttons_drawn();
-            const auto it = std::find_if(buttons.begin(), buttons.end(),
-                                         [&](const ui::ButtonRect& b) { return b.label == e.label; });
-            if (it == buttons.end()) {
-                log::error("input script line ", e.line, " (frame ", frame, "): no button '", e.label,
-                           "' on the ", screen_name(screen_), " screen; wait more frames before clicking");
-                exit_code_ = 1;
-                quit_ = true;
-                return;
-            }
-            // Onto the button now, the click next frame: ImGui takes the pointer's place at the start of a
-            // frame, and a pointer that only just entered the window may not count yet (as with a hand).
-            events_.inject_cursor((it->x0 + it->x1) * 0.5, (it->y0 + it->y1) * 0.5);
-            click_next_frame_ = true;
-            break;
-        }
-        case ScriptEvent::Kind::Quit:
-            quit_ = true;
-            break;
-        }
-    }
-}
-
-void GameApp::write_status(const render::FrameInfo& info) {
-    if (status_path_.empty()) return;
-    std::string s;
-    char line[256];
-    auto add = [&](const char* fmt, auto... args) {
-        std::snprintf(line, sizeof(line), fmt, args...);
-        s += line;
-        s += '\n';
-    };
-    add("screen %s", screen_name(screen_));
-    add("captured %d", input_.captured() ? 1 : 0);
-    add("options sensitivity %.2f fov %.0f invert_y %d render_scale %.2f quality %s",
-        options_.mouse_sensitivity, options_.fov_degrees, options_.invert_y ? 1 : 0, options_.render_scale,
-        quality_name(options_.quality));
-    // What the renderer made of them (automatic values resolved for this GL driver).
-    add("renderer render_scale %.2f quality %s", renderer_.render_scale(),
-        renderer_.quality() == render::RenderQuality::Fast ? "fast" : "full");
-    for (const auto& b : ui::buttons_drawn())
-        add("button %.0f %.0f %.0f %.0f %s", b.x0, b.y0, b.x1, b.y1, b.label.c_str());
-    if (session_ && session_->game) {
-        const auto& g = *session_->game;
-        const auto& p = g.player();
-        add("level %s", session_->dojo ? "dojo" : "play");
-        add("phase %s", g.phase() == game::Phase::Playing ? "playing"
-                        : g.phase() == game::Phase::Dead  ? "dead"
-                                                          : "won");
-        add("paused %d", g.paused() ? 1 : 0);
-        add("feet %.3f %.3f %.3f", p.feet.x, p.feet.y, p.feet.z);
-        add("yaw %.2f", degrees(p.yaw));
-        add("pitch %.2f", degrees(p.pitch));
-        add("health %.1f", p.health);
-        add("shield %.1f", p.shield);
-        add("ammo %d", p.ammo);
-        add("shots %d", p.shots);
-        int alive = 0;
-        for (const auto& r : g.robots()) alive += r.alive() ? 1 : 0;
-        add("robots %d alive %d killed %d", static_cast<int>(g.robots().size()), alive, g.robots_killed());
-        for (const auto& d : g.doors()) add("door %d %.3f", d.entity_id, d.progress);
-        for (const auto& l : g.lights())
-            if (l.floor) add("light %d %s", l.entity_id, l.on ? "on" : "off");
-        for (const auto& k : g.pickups()) add("pickup %d %s", k.entity_id, k.taken ? "taken" : "present");
-        for (const auto& c : g.cylinders())
-            add("cylinder %d %s", c.entity_id, c.exploded ? "exploded" : "standing");
-        add("caption %s", g.caption().visible() ? g.caption().text().c_str() : "-");
-        if (session_->view) add("camera_roll %.2f", degrees(session_->view->camera().roll));
-        add("game_steps %lld", static_cast<long long>(g.steps()));
-    }
-    add("dropped_steps %lld", budget_.dropped());
-    if (s == status_last_) return;
-    status_last_ = s;
-    // The frame goes last and does not count as a change: the file changes when the state does.
-    add("frame %lld", info.frame_index);
-    if (auto written = files::write_atomic(status_path_, s); !written) {
-        log::warn(written.error().str(), " (--status-file: no more status written)");
-        status_path_.clear();
-    }
-}
-
-void GameApp::render(const render::FrameInfo& info) {
+void GameApp::render(const shell::FrameInfo& info) {
     if (scripted_) run_script(info.frame_index);
     step_loader();
     handle_keys();
@@ -546,7 +295,7 @@ void GameApp::render(const render::FrameInfo& info) {
     stats_ = renderer_.render(frame);
 }
 
-void GameApp::imgui(const render::FrameInfo& info) {
+void GameApp::imgui(const shell::FrameInfo& info) {
     const float w = static_cast<float>(info.width), h = static_cast<float>(info.height);
     const auto& fonts = shell_.fonts();
     ImGuiIO& io = ImGui::GetIO();
@@ -562,7 +311,7 @@ void GameApp::imgui(const render::FrameInfo& info) {
     if (world_visible) {
         const auto& p = session_->game->player();
         const auto& st = session_->game->settings();
-        render::HudState hud;
+        shell::HudState hud;
         hud.health = p.health;
         hud.health_max = st.max_health;
         hud.shield = p.shield;
@@ -575,7 +324,7 @@ void GameApp::imgui(const render::FrameInfo& info) {
         hud.crosshair = screen_ == Screen::Playing && session_->game->phase() == game::Phase::Playing;
         ImDrawList* fg = ImGui::GetForegroundDrawList();
         if (screen_ == Screen::Playing) {
-            render::draw_hud(fg, hud, render::HudFonts{fonts.hud}, w, h);
+            shell::draw_hud(fg, hud, shell::HudFonts{fonts.hud}, w, h);
             draw_hit_marker(fg, std::clamp(p.hit_marker / 0.3f, 0.0f, 1.0f), w, h);
         }
         if (session_->dojo_controller && screen_ == Screen::Playing)
@@ -764,10 +513,10 @@ Result<void> GameApp::start(const Automation& a) {
 }
 
 int GameApp::run() {
-    render::ShellHooks hooks;
+    shell::ShellHooks hooks;
     hooks.fixed_update = [this](double dt) { fixed_update(dt); };
-    hooks.render = [this](const render::FrameInfo& info) { render(info); };
-    hooks.imgui = [this](const render::FrameInfo& info) { imgui(info); };
+    hooks.render = [this](const shell::FrameInfo& info) { render(info); };
+    hooks.imgui = [this](const shell::FrameInfo& info) { imgui(info); };
     hooks.wants_close = [this]() { return quit_; };
     int code = shell_.run(hooks);
     if (code == 0) code = exit_code_;
@@ -775,147 +524,6 @@ int GameApp::run() {
     save_options_now();
     session_.reset();
     pending_.reset();
-    return code;
-}
-
-void print_help() {
-    std::printf(
-        "usage: killswitch [--level FILE] [--dojo] [--seed N] [--msaa N] [--width W] [--height H]\n"
-        "                  [--screen NAME --screenshot FILE --frames N] [--warp x,y,z,yaw,pitch]\n"
-        "                  [--dojo-key K --dojo-time S] [--no-vsync]\n"
-        "  (no option)       loading screen, then the main menu (Play, Dojo, How to Play, Credits, Options, "
-        "Quit)\n"
-        "  --level FILE      the level Play starts (default levels/main.json)\n"
-        "  --dojo            go straight to the Dojo (levels/dojo.json)\n"
-        "  --screen NAME     start on one screen: loading menu howto credits options pause death win play "
-        "dojo\n"
-        "  --warp ...        put the player's feet at x,y,z facing yaw,pitch (degrees) before the first "
-        "frame\n"
-        "  --fire            fire one shot on the first step (after --warp)\n"
-        "  --dojo-key K      in the Dojo, press key K (0-5) before the first frame\n"
-        "  --dojo-time S     ... and advance the animation S seconds, then hold it (for screenshots)\n"
-        "  --seed N          the game's random seed (default 1)\n"
-        "  --status-file F   rewrite F each frame the state changes: screen, buttons, player, doors, ...\n"
-        "  --input-script F  timed key/mouse events by frame (see runtime/app/input_script.h); with\n"
-        "                    --screenshot the frames are a fixed 1/60 s, so the run is deterministic\n"
-        "  --view MODEL      (renderer) one model on a turntable; --camera x,y,z,yaw,pitch: render-only "
-        "view\n"
-        "  --headless ...    run the game without a window (see killswitch --headless --help)\n"
-        "controls: WASD/arrows move, mouse looks, click shoots, Space jumps, E interacts, Esc pauses\n"
-        "options file: $XDG_CONFIG_HOME/killswitch/options.json (or ~/.config/killswitch/options.json)\n");
-}
-
-} // namespace
-
-int run_game_app(const CommandLine& cl, const render::ShellConfig& shell_config) {
-    if (cl.has("help")) {
-        print_help();
-        return 0;
-    }
-    GameApp::Automation automation;
-    automation.screen = cl.get_or("screen", "");
-    const auto& screens = game_app_screens();
-    if (!automation.screen.empty() &&
-        std::find(screens.begin(), screens.end(), automation.screen) == screens.end()) {
-        log::error(
-            "--screen '", automation.screen,
-            "': not a screen; use one of loading menu howto credits options pause death win play dojo");
-        return 2;
-    }
-    automation.dojo = cl.has("dojo");
-    if (auto status = cl.get("status-file")) automation.status_file = paths::resolve_user_path(*status);
-    if (auto script = cl.get("input-script")) {
-        const auto path = paths::resolve_user_path(*script);
-        auto text = files::read_text(path);
-        if (!text) {
-            log::error(text.error().str());
-            return 2;
-        }
-        auto events = parse_input_script(*text, path.string());
-        if (!events) {
-            log::error(events.error().str());
-            return 2;
-        }
-        automation.script = std::move(*events);
-        automation.scripted = true;
-    }
-    automation.fire = cl.has("fire");
-    if (auto warp = cl.get("warp")) {
-        std::array<float, 5> v{};
-        if (!parse_floats(*warp, v.data(), 5)) {
-            log::error("--warp '", *warp,
-                       "': expected x,y,z,yaw,pitch with finite numbers, e.g. --warp 0,0,20,0,0");
-            return 2;
-        }
-        automation.warp = v;
-    }
-    if (auto key = cl.get("dojo-key")) {
-        if (key->size() != 1 || (*key)[0] < '0' || (*key)[0] > '9') {
-            log::error("--dojo-key '", *key, "': expected one digit 0-5");
-            return 2;
-        }
-        automation.dojo_key = (*key)[0];
-    }
-    if (cl.has("dojo-time")) {
-        auto t = cl.get_double("dojo-time", 0.0);
-        if (!t || !std::isfinite(*t) || *t < 0.0 || *t > 600.0) {
-            log::error("--dojo-time: expected seconds between 0 and 600");
-            return 2;
-        }
-        automation.dojo_time = *t;
-    }
-    auto seed = cl.get_int("seed", 1, 0, 2147483647);
-    if (!seed) {
-        log::error(seed.error().str());
-        return 2;
-    }
-    auto msaa = cl.get_int("msaa", -1, -1, 16);
-    if (!msaa) {
-        log::error(msaa.error().str());
-        return 2;
-    }
-    const auto level_path = paths::resolve_user_path(cl.get_or("level", paths::level("main.json").string()));
-    {
-        // Check the level before opening a window: a bad file is a command-line error.
-        level::LoadReport report;
-        auto loaded = level::load_level_file(level_path, &report);
-        if (!loaded) {
-            log::error(loaded.error().str());
-            return 2;
-        }
-    }
-    if (!render::display_available()) {
-        std::fprintf(stderr, "%s\n", render::no_display_message("killswitch").c_str());
-        return 3;
-    }
-    render::ShellConfig config = shell_config;
-    config.msaa_samples = 0; // the renderer owns MSAA
-    config.fixed_step = game::GameSettings{}.step;
-    auto shell = render::AppShell::create(config);
-    if (!shell) {
-        log::error(shell.error().str());
-        return 1;
-    }
-    int code = 0;
-    {
-        render::AssetLibrary assets(paths::asset(""));
-        render::RendererSettings settings;
-        settings.msaa_samples = *msaa >= 0 ? *msaa : render::default_msaa_for((*shell)->gl_renderer());
-        auto renderer = render::SceneRenderer::create(assets.textures(), settings);
-        if (!renderer) {
-            log::error(renderer.error().str());
-            render::AppShell::destroy(*shell);
-            return 1;
-        }
-        GameApp app(**shell, **renderer, assets, level_path, static_cast<std::uint64_t>(*seed));
-        if (auto started = app.start(automation); !started) {
-            log::error(started.error().str());
-            code = 2;
-        } else {
-            code = app.run();
-        }
-    }
-    render::AppShell::destroy(*shell);
     return code;
 }
 

@@ -2,7 +2,7 @@
 // The playable game: loading screen, menus, the game itself (headless rules from common/game drawn by the
 // renderer), the Dojo, and the screenshot hooks the tests use. One entry point for runtime/main.cpp.
 #include "core/cli.h"
-#include "render/app_shell.h"
+#include "shell/app_shell.h"
 
 #include <string>
 #include <vector>
@@ -18,6 +18,6 @@ const std::vector<std::string>& game_app_flags(); // options without a value (--
 const std::vector<std::string>& game_app_screens();
 
 // Runs the app; returns the process exit code (0 ok, 1 runtime failure, 2 bad input, 3 no display).
-int run_game_app(const CommandLine& cl, const render::ShellConfig& shell_config);
+int run_game_app(const CommandLine& cl, const shell::ShellConfig& shell_config);
 
 } // namespace ks::runtime

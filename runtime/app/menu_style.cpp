@@ -23,7 +23,7 @@ void draw_backdrop(ImDrawList* d, float w, float h, float strength) {
 }
 
 void begin_panel(const char* id, const std::string& title, float panel_w, float panel_h, float w, float h,
-                 const render::Fonts& fonts) {
+                 const shell::Fonts& fonts) {
     const float s = ui_scale(h);
     const ImVec2 size(panel_w * s, panel_h * s);
     const ImVec2 pos((w - size.x) * 0.5f, (h - size.y) * 0.5f + 20.0f * s);
@@ -88,7 +88,7 @@ void record_button(const char* label) {
     drawn().push_back({label, a.x, a.y, b.x, b.y});
 }
 
-bool big_button(const char* label, const render::Fonts& fonts, float width_720) {
+bool big_button(const char* label, const shell::Fonts& fonts, float width_720) {
     const float s = ImGui::GetIO().DisplaySize.y > 0 ? ui_scale(ImGui::GetIO().DisplaySize.y) : 1.0f;
     const ImVec2 size(width_720 * s, 52.0f * s);
     ImGui::SetCursorPosX((ImGui::GetWindowWidth() - size.x) * 0.5f);
@@ -120,7 +120,7 @@ void centred_text(const std::string& text, ImFont* font, ImU32 colour) {
     if (font) ImGui::PopFont();
 }
 
-void progress_bar(float fraction, const std::string& label, const render::Fonts& fonts, float width_720) {
+void progress_bar(float fraction, const std::string& label, const shell::Fonts& fonts, float width_720) {
     const float s = ui_scale(ImGui::GetIO().DisplaySize.y);
     const ImVec2 size(width_720 * s, 26.0f * s);
     ImGui::SetCursorPosX((ImGui::GetWindowWidth() - size.x) * 0.5f);

@@ -2,7 +2,7 @@
 // The look of the game's screens, drawn with ImGui: a darkened, vignetted backdrop over the level, a
 // centred light panel with a title tab (the reference menu's shape and colours), and big accent buttons.
 // Everything is sized from the window height so 720p and 1080p read the same.
-#include "render/app_shell.h"
+#include "shell/app_shell.h"
 
 #include <imgui.h>
 
@@ -27,11 +27,11 @@ void draw_backdrop(ImDrawList* draw, float width, float height, float strength =
 // Begins a centred panel window `panel_w` x `panel_h` (720p pixels) with `title` in a tab on top. Always
 // pair with end_panel().
 void begin_panel(const char* id, const std::string& title, float panel_w, float panel_h, float width,
-                 float height, const render::Fonts& fonts);
+                 float height, const shell::Fonts& fonts);
 void end_panel();
 
 // A big accent button centred in the panel; returns true when clicked.
-bool big_button(const char* label, const render::Fonts& fonts, float width_720 = 320.0f);
+bool big_button(const char* label, const shell::Fonts& fonts, float width_720 = 320.0f);
 // Where this frame's buttons are (window pixels), for --status-file and --input-script's "click LABEL":
 // tests click menu buttons where the player sees them. Cleared by begin_frame().
 struct ButtonRect {
@@ -47,6 +47,6 @@ void record_button(const char* label);
 void centred_text(const std::string& text, ImFont* font, ImU32 colour = kInk);
 
 // A bar with a label (the loading screen's progress).
-void progress_bar(float fraction, const std::string& label, const render::Fonts& fonts, float width_720);
+void progress_bar(float fraction, const std::string& label, const shell::Fonts& fonts, float width_720);
 
 } // namespace ks::runtime::ui

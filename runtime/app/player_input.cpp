@@ -1,6 +1,7 @@
 #include "player_input.h"
 
 #define GLFW_INCLUDE_NONE
+#define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
 #include <cmath>

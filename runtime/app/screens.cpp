@@ -41,7 +41,7 @@ std::string format_time(double seconds) {
     return text;
 }
 
-void loading_screen(float fraction, const std::string& step, const render::Fonts& fonts, float w, float h) {
+void loading_screen(float fraction, const std::string& step, const shell::Fonts& fonts, float w, float h) {
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h, 1.25f);
     ui::begin_panel("##loading", "Killswitch", 560, 200, w, h, fonts);
     ImGui::Dummy(ImVec2(1, 16 * ui::ui_scale(h)));
@@ -50,7 +50,7 @@ void loading_screen(float fraction, const std::string& step, const render::Fonts
     ui::end_panel();
 }
 
-MenuAction main_menu(const std::string& error, const render::Fonts& fonts, float w, float h) {
+MenuAction main_menu(const std::string& error, const shell::Fonts& fonts, float w, float h) {
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
     MenuAction action = MenuAction::None;
     ui::begin_panel("##main", "Killswitch", 640, error.empty() ? 440 : 500, w, h, fonts);
@@ -95,7 +95,7 @@ MenuAction main_menu(const std::string& error, const render::Fonts& fonts, float
     return action;
 }
 
-MenuAction pause_menu(const render::Fonts& fonts, float w, float h) {
+MenuAction pause_menu(const shell::Fonts& fonts, float w, float h) {
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h, 0.8f);
     MenuAction action = MenuAction::None;
     ui::begin_panel("##pause", "Paused", 560, 440, w, h, fonts);
@@ -109,7 +109,7 @@ MenuAction pause_menu(const render::Fonts& fonts, float w, float h) {
     return action;
 }
 
-MenuAction death_menu(const render::Fonts& fonts, float w, float h) {
+MenuAction death_menu(const shell::Fonts& fonts, float w, float h) {
     // The death screen tints red: the simulation "killed" the player.
     ImDrawList* bg = ImGui::GetBackgroundDrawList();
     ui::draw_backdrop(bg, w, h, 0.6f);
@@ -123,7 +123,7 @@ MenuAction death_menu(const render::Fonts& fonts, float w, float h) {
     return action;
 }
 
-MenuAction win_menu(const WinStats& stats, const render::Fonts& fonts, float w, float h) {
+MenuAction win_menu(const WinStats& stats, const shell::Fonts& fonts, float w, float h) {
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h, 0.85f);
     MenuAction action = MenuAction::None;
     ui::begin_panel("##win", "You Won", 560, 340, w, h, fonts);
@@ -138,7 +138,7 @@ MenuAction win_menu(const WinStats& stats, const render::Fonts& fonts, float w, 
     return action;
 }
 
-MenuAction how_to_play(const render::Fonts& fonts, float w, float h) {
+MenuAction how_to_play(const shell::Fonts& fonts, float w, float h) {
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
     MenuAction action = MenuAction::None;
     ui::begin_panel("##howto", "How to Play", 760, 470, w, h, fonts);
@@ -155,7 +155,7 @@ MenuAction how_to_play(const render::Fonts& fonts, float w, float h) {
     return action;
 }
 
-MenuAction credits(const render::Fonts& fonts, float w, float h) {
+MenuAction credits(const shell::Fonts& fonts, float w, float h) {
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
     MenuAction action = MenuAction::None;
     ui::begin_panel("##credits", "Credits", 760, 440, w, h, fonts);
@@ -175,7 +175,7 @@ MenuAction credits(const render::Fonts& fonts, float w, float h) {
     return action;
 }
 
-MenuAction options_panel(Options& o, bool& changed, const render::Fonts& fonts, float w, float h) {
+MenuAction options_panel(Options& o, bool& changed, const shell::Fonts& fonts, float w, float h) {
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
     MenuAction action = MenuAction::None;
     const float s = ui::ui_scale(h);
@@ -246,7 +246,7 @@ MenuAction options_panel(Options& o, bool& changed, const render::Fonts& fonts, 
     return action;
 }
 
-void dojo_legend(const std::vector<std::string>& lines, const render::Fonts& fonts, float w, float h) {
+void dojo_legend(const std::vector<std::string>& lines, const shell::Fonts& fonts, float w, float h) {
     const float s = ui::ui_scale(h);
     ImDrawList* d = ImGui::GetForegroundDrawList();
     ImFont* font = fonts.body ? fonts.body : ImGui::GetFont();

@@ -2,7 +2,7 @@
 // The game's screens as immediate-mode functions: each draws itself centred in the window and returns what
 // the player chose this frame. The app's state machine (game_app.cpp) decides what each choice does.
 #include "options.h"
-#include "render/app_shell.h"
+#include "shell/app_shell.h"
 
 #include <string>
 #include <vector>
@@ -19,18 +19,18 @@ struct WinStats {
     int robots_total = 0;
 };
 
-void loading_screen(float fraction, const std::string& step, const render::Fonts& fonts, float w, float h);
-MenuAction main_menu(const std::string& error, const render::Fonts& fonts, float w, float h);
-MenuAction pause_menu(const render::Fonts& fonts, float w, float h);
-MenuAction death_menu(const render::Fonts& fonts, float w, float h);
-MenuAction win_menu(const WinStats& stats, const render::Fonts& fonts, float w, float h);
-MenuAction how_to_play(const render::Fonts& fonts, float w, float h);
-MenuAction credits(const render::Fonts& fonts, float w, float h);
+void loading_screen(float fraction, const std::string& step, const shell::Fonts& fonts, float w, float h);
+MenuAction main_menu(const std::string& error, const shell::Fonts& fonts, float w, float h);
+MenuAction pause_menu(const shell::Fonts& fonts, float w, float h);
+MenuAction death_menu(const shell::Fonts& fonts, float w, float h);
+MenuAction win_menu(const WinStats& stats, const shell::Fonts& fonts, float w, float h);
+MenuAction how_to_play(const shell::Fonts& fonts, float w, float h);
+MenuAction credits(const shell::Fonts& fonts, float w, float h);
 // Edits `options` in place; `changed` is set when a value moved this frame.
-MenuAction options_panel(Options& options, bool& changed, const render::Fonts& fonts, float w, float h);
+MenuAction options_panel(Options& options, bool& changed, const shell::Fonts& fonts, float w, float h);
 
 // The Dojo's key legend (top right) and a hint line at the bottom.
-void dojo_legend(const std::vector<std::string>& lines, const render::Fonts& fonts, float w, float h);
+void dojo_legend(const std::vector<std::string>& lines, const shell::Fonts& fonts, float w, float h);
 // The hit marker: four short diagonal strokes around the crosshair, fading with `strength` (0..1).
 void draw_hit_marker(ImDrawList* draw, float strength, float w, float h);
 // "m:ss.s" for the win screen.

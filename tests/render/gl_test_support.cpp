@@ -1,16 +1,16 @@
 #include "gl_test_support.h"
 
-#include "render/app_shell.h"
+#include "shell/app_shell.h"
 
 #include <cmath>
 #include <cstdlib>
 
 namespace ks::test {
 
-render::OffscreenContext* gl_context() {
-    static render::OffscreenContext* context = []() -> render::OffscreenContext* {
-        if (!render::display_available()) return nullptr;
-        auto ctx = render::OffscreenContext::create(kGlWidth, kGlHeight);
+shell::OffscreenContext* gl_context() {
+    static shell::OffscreenContext* context = []() -> shell::OffscreenContext* {
+        if (!shell::display_available()) return nullptr;
+        auto ctx = shell::OffscreenContext::create(kGlWidth, kGlHeight);
         return ctx ? ctx->release() : nullptr; // lives for the whole test run
     }();
     return context;

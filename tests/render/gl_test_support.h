@@ -1,6 +1,6 @@
 #pragma once
 // Shared GL context for the render tests (one hidden window for the whole run) and image checks.
-#include "render/offscreen.h"
+#include "shell/offscreen_context.h"
 
 #include <string>
 #include <vector>
@@ -9,7 +9,7 @@ namespace ks::test {
 
 // The shared offscreen context of the given size (created on first use; null without a display, in which
 // case the GL tests report a skip and pass: CI runs them under xvfb-run).
-render::OffscreenContext* gl_context();
+shell::OffscreenContext* gl_context();
 inline constexpr int kGlWidth = 320, kGlHeight = 180;
 
 struct ImageStats {

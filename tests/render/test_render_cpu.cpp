@@ -1,16 +1,16 @@
 // Renderer pieces that need no GL context: culling math, level geometry, particles, HUD helpers, shader logs.
 #include "geometry/frustum.h"
 #include "level/level.h"
-#include "render/hud.h"
 #include "render/level_scene.h"
 #include "render/mesh_data.h"
 #include "render/occlusion.h"
 #include "render/particles.h"
-#include "render/raster_threads.h"
 #include "render/scene_renderer.h"
 #include "render/shader_program.h"
 #include "render/texture_cache.h"
 #include "render/view_model.h"
+#include "shell/hud.h"
+#include "shell/raster_threads.h"
 
 #include <doctest/doctest.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -25,6 +25,7 @@
 
 using namespace ks;
 using namespace ks::render;
+using namespace ks::shell;
 
 TEST_CASE("frustum keeps boxes in front of the camera and culls those behind or beside it") {
     geometry::Camera cam;
@@ -48,7 +49,7 @@ TEST_CASE(
     "occlusion culling: a box behind a wall face is hidden, one that peeks out or stands in front is not") {
     geometry::Camera cam;
     cam.position = Vec3(0, 3, 25);
-    cam.yaw = 0.0f;                                             // looking along -z
+    cam.yaw = 0.0f; // looking along -z
     const geometry::Aabb wall{Vec3(-10, 0, -0.25f),
                               Vec3(10, 16, 0.25f)}; // a 20-wide, 16-high slab across the view
     std::vector<OccluderFace> faces;
@@ -62,7 +63,7 @@ TEST_CASE(
         return false;
     };
     const geometry::Aabb robot{Vec3(-1, 0, -20), Vec3(1, 4, -18)};
-    CHECK(hidden(robot));                                          // straight behind the wall
+    CHECK(hidden(robot));                                                    // straight behind the wall
     CHECK_FALSE(hidden(geometry::Aabb{Vec3(-1, 0, 5), Vec3(1, 4, 7)}));      // in front of it
     CHECK_FALSE(hidden(geometry::Aabb{Vec3(8, 0, -20), Vec3(30, 4, -18)}));  // reaches past its end
     CHECK(hidden(geometry::Aabb{Vec3(-1, 0, -1), Vec3(1, 4, 0.1f)}));        // inside the slab: hidden too

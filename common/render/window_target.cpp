@@ -1,4 +1,4 @@
-#include "render/app_shell.h"
+#include "render/window_target.h"
 
 #include <epoxy/gl.h>
 #include <stb_image_write.h>
@@ -6,6 +6,36 @@
 #include <vector>
 
 namespace ks::render {
+
+void bind_window_target(int width, int height) {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, width, height);
+}
+
+void clear_window_target(int width, int height, const Vec3& colour) {
+    bind_window_target(width, height);
+    glClearColor(colour.r, colour.g, colour.b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+namespace {
+std::string gl_string(GLenum name) {
+    const GLubyte* text = glGetString(name);
+    return text ? reinterpret_cast<const char*>(text) : "unknown";
+}
+} // namespace
+
+std::string gl_renderer_name() {
+    return gl_string(GL_RENDERER);
+}
+
+std::string gl_version_name() {
+    return gl_string(GL_VERSION);
+}
+
+void finish_gpu() {
+    glFinish();
+}
 
 Result<void> save_framebuffer_png(const std::string& path, int width, int height) {
     if (width <= 0 || height <= 0) return Error("empty framebuffer", Location{path});

@@ -6,7 +6,7 @@
 // the same median, p99 18.7-19.9 -> 15.1-16.5 ms on the main level. GPU drivers ignore the variable.
 #include <string>
 
-namespace ks::render {
+namespace ks::shell {
 
 // The LP_NUM_THREADS value to use for `hardware_threads` cores: 2x on 2..4 cores (the measured case and
 // its neighbours); 0 = leave the driver's default (unknown count, 1 core, or more than 4).
@@ -16,4 +16,4 @@ int software_raster_threads_for(unsigned hardware_threads);
 // benchmark's choice wins). Returns the value in effect afterwards ("" when left to the driver).
 std::string configure_software_raster_threads();
 
-} // namespace ks::render
+} // namespace ks::shell

@@ -1,23 +1,23 @@
-#include "render/app_shell.h"
-#include "render/raster_threads.h"
+#include "shell/app_shell.h"
 
 #include "core/cli.h"
 #include "core/fixed_step.h"
 #include "core/log.h"
 #include "core/paths.h"
+#include "render/imgui_renderer.h"
+#include "render/window_target.h"
+#include "shell/gl_window.h"
 
-// epoxy must come before any header that pulls in GL/gl.h.
-#include <epoxy/gl.h>
-
+#define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
-#include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
-#include <cstdlib>
+#include <algorithm>
+#include <cstdio>
 #include <vector>
 
-namespace ks::render {
+namespace ks::shell {
 
 const std::vector<std::string>& shell_options() {
     static const std::vector<std::string> options = {"width", "height", "screenshot", "frames", "no-vsync"};
@@ -39,30 +39,7 @@ Result<ShellConfig> shell_config_from_command_line(const CommandLine& cl, ShellC
     return config;
 }
 
-bool display_available() {
-    const char* x11 = std::getenv("DISPLAY");
-    const char* wayland = std::getenv("WAYLAND_DISPLAY");
-    return (x11 && *x11) || (wayland && *wayland);
-}
-
-std::string no_display_message(const std::string& program) {
-    return "No display found (DISPLAY is not set), so " + program +
-           " cannot open a window.\n"
-           "  On a desktop, run it from a terminal inside the graphical session.\n"
-           "  Without one, use a virtual display:  xvfb-run -s \"-screen 0 1280x720x24\" " +
-           program +
-           " ...\n"
-           "  or take a picture without looking:   " +
-           program +
-           " --screenshot out.png --frames 60 "
-           "(under xvfb-run).";
-}
-
 namespace {
-void glfw_error_callback(int code, const char* description) {
-    log::error("GLFW error ", code, ": ", description);
-}
-
 ImFont* load_font(const char* file, float size) {
     std::string path = paths::asset(std::string("fonts/") + file).string();
     ImGuiIO& io = ImGui::GetIO();
@@ -95,27 +72,11 @@ void AppShell::destroy(AppShell* shell) {
 
 Result<void> AppShell::init(const ShellConfig& config) {
     config_ = config;
-    if (!display_available()) return Error(no_display_message(config.title));
-    glfwSetErrorCallback(glfw_error_callback);
-    configure_software_raster_threads(); // before the context: llvmpipe reads it once
-    if (!glfwInit())
-        return Error("cannot initialise GLFW (is the X server reachable?)", Location{},
-                     no_display_message(config.title));
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-    glfwWindowHint(GLFW_SRGB_CAPABLE, GLFW_TRUE);
-    glfwWindowHint(GLFW_SAMPLES, 0); // MSAA is done in the renderer's own framebuffer
-    window_ = glfwCreateWindow(config.width, config.height, config.title.c_str(), nullptr, nullptr);
-    if (!window_) {
-        glfwTerminate();
-        return Error("cannot create an OpenGL 3.3 core window", Location{},
-                     "the driver must support OpenGL 3.3 core; under Xvfb, Mesa's llvmpipe does");
-    }
-    glfwMakeContextCurrent(window_);
+    auto window = open_gl_window({config.title, config.width, config.height, true, true});
+    if (!window) return window.error();
+    window_ = *window;
     glfwSwapInterval(config.vsync ? 1 : 0);
-    log::info("OpenGL ", reinterpret_cast<const char*>(glGetString(GL_VERSION)), " on ", gl_renderer());
+    log::info("OpenGL ", render::gl_version_name(), " on ", gl_renderer());
 
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
@@ -130,26 +91,22 @@ Result<void> AppShell::init(const ShellConfig& config) {
     io.FontDefault = fonts_.body;
     ImGui::StyleColorsDark();
     ImGui_ImplGlfw_InitForOpenGL(window_, true);
-    ImGui_ImplOpenGL3_Init("#version 330 core");
+    render::init_imgui_renderer();
     imgui_ready_ = true;
     return ok();
 }
 
 AppShell::~AppShell() {
     if (imgui_ready_) {
-        ImGui_ImplOpenGL3_Shutdown();
+        render::shutdown_imgui_renderer();
         ImGui_ImplGlfw_Shutdown();
         ImGui::DestroyContext();
     }
-    if (window_) {
-        glfwDestroyWindow(window_);
-        glfwTerminate();
-    }
+    close_gl_window(window_);
 }
 
 std::string AppShell::gl_renderer() const {
-    const GLubyte* name = glGetString(GL_RENDERER);
-    return name ? reinterpret_cast<const char*>(name) : "unknown";
+    return render::gl_renderer_name();
 }
 
 int AppShell::run(const ShellHooks& hooks) {
@@ -168,25 +125,24 @@ int AppShell::run(const ShellHooks& hooks) {
         info.alpha = clock.alpha();
         glfwGetFramebufferSize(window_, &info.width, &info.height);
 
-        glViewport(0, 0, info.width, info.height);
         if (hooks.render) {
+            render::bind_window_target(info.width, info.height);
             hooks.render(info);
         } else {
-            glClearColor(0.05f, 0.06f, 0.08f, 1.0f);
-            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+            render::clear_window_target(info.width, info.height, Vec3(0.05f, 0.06f, 0.08f));
         }
-        ImGui_ImplOpenGL3_NewFrame();
+        render::begin_imgui_frame();
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
         if (hooks.imgui) hooks.imgui(info);
         ImGui::Render();
-        glViewport(0, 0, info.width, info.height);
-        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        render::draw_imgui(ImGui::GetDrawData(), info.width, info.height);
 
         ++info.frame_index;
         if (screenshot_mode() && info.frame_index >= config_.frames) {
-            glFinish();
-            if (auto saved = save_framebuffer_png(config_.screenshot_path, info.width, info.height); !saved) {
+            render::finish_gpu();
+            if (auto saved = render::save_framebuffer_png(config_.screenshot_path, info.width, info.height);
+                !saved) {
                 log::error(saved.error().str());
                 exit_code = 1;
             } else {
@@ -200,4 +156,4 @@ int AppShell::run(const ShellHooks& hooks) {
     return exit_code;
 }
 
-} // namespace ks::render
+} // namespace ks::shell

@@ -1,9 +1,9 @@
-#include "render/raster_threads.h"
+#include "shell/raster_threads.h"
 
 #include <cstdlib>
 #include <thread>
 
-namespace ks::render {
+namespace ks::shell {
 
 int software_raster_threads_for(unsigned hardware_threads) {
     if (hardware_threads < 2 || hardware_threads > 4) return 0;
@@ -19,4 +19,4 @@ std::string configure_software_raster_threads() {
     return value;
 }
 
-} // namespace ks::render
+} // namespace ks::shell

@@ -1,11 +1,11 @@
-#include "render/hud.h"
+#include "shell/hud.h"
 
 #include <imgui.h>
 
 #include <algorithm>
 #include <cmath>
 
-namespace ks::render {
+namespace ks::shell {
 
 float bar_fraction(float value, float max) {
     if (!std::isfinite(value) || !std::isfinite(max) || max <= 0.0f) return 0.0f;
@@ -89,4 +89,4 @@ void draw_hud(ImDrawList* d, const HudState& s, const HudFonts& fonts, float wid
     }
 }
 
-} // namespace ks::render
+} // namespace ks::shell

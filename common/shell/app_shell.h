@@ -1,8 +1,12 @@
 #pragma once
 // The window shell shared by the runtime and the editor: a GLFW window with an OpenGL 3.3+ core context,
-// Dear ImGui on its GLFW/OpenGL3 backends, a fixed-step loop, and the --screenshot/--frames mode that
-// renders N frames, writes a PNG and exits (used by tests and for looking at what we build).
+// Dear ImGui's context, fonts and GLFW platform backend, a fixed-step loop, and the --screenshot/--frames
+// mode that renders N frames, writes a PNG and exits (used by tests and for looking at what we build).
+// The split with common/render/: the shell owns the window, events, time and ImGui's platform side and
+// issues no OpenGL call; every GL call (clearing, ImGui's OpenGL3 renderer backend, read-backs) goes
+// through render/ (window_target.h, imgui_renderer.h).
 #include "core/result.h"
+#include "shell/display.h"
 
 #include <functional>
 #include <string>
@@ -15,7 +19,7 @@ namespace ks {
 class CommandLine;
 }
 
-namespace ks::render {
+namespace ks::shell {
 
 struct ShellConfig {
     std::string title = "Killswitch";
@@ -55,11 +59,6 @@ struct ShellHooks {
     std::function<bool()> wants_close;             // return true to end the loop
 };
 
-// True when a window can be opened (an X11 or Wayland display is set).
-bool display_available();
-// The message printed when there is no display: how to run under xvfb-run instead.
-std::string no_display_message(const std::string& program);
-
 class AppShell {
   public:
     static Result<AppShell*> create(const ShellConfig& config); // owned by caller via destroy()
@@ -85,7 +84,4 @@ class AppShell {
     bool imgui_ready_ = false;
 };
 
-// Reads the current framebuffer (bottom-up GL rows), flips it and writes an RGB PNG.
-Result<void> save_framebuffer_png(const std::string& path, int width, int height);
-
-} // namespace ks::render
+} // namespace ks::shell

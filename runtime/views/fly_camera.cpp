@@ -1,5 +1,6 @@
-#include "fly_camera.h"
+#include "views/fly_camera.h"
 
+#define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
 #include <algorithm>

@@ -7,7 +7,7 @@
 struct ImDrawList;
 struct ImFont;
 
-namespace ks::render {
+namespace ks::shell {
 
 struct HudState {
     float health = 100, health_max = 100;
@@ -28,4 +28,4 @@ void draw_hud(ImDrawList* draw, const HudState& state, const HudFonts& fonts, fl
 // Fraction of a bar to fill: value/max clamped to 0..1; NaN or max <= 0 gives 0.
 float bar_fraction(float value, float max);
 
-} // namespace ks::render
+} // namespace ks::shell

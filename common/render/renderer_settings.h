@@ -1,0 +1,64 @@
+#pragma once
+// What a SceneRenderer is asked to do (quality path, resolution, MSAA, shadows, shader folder) and the
+// automatic choices made from the GL renderer's name where a setting is left at "automatic".
+#include "render/scene.h"
+#include "render/shaders.h"
+
+#include <string>
+
+namespace ks::render {
+
+// Full: per-pixel PBR for everything (GPUs). Fast (software rasterisers): the level geometry reads its
+// baked light map (MeshInstance::lightmap; ambient, sun shadows and every level light), models are lit per
+// vertex with the same lights, and the fragment shader is a few texture fetches. Auto picks from the GL
+// renderer string like MSAA; KS_RENDER_QUALITY=full|fast overrides Auto.
+enum class RenderQuality { Auto, Full, Fast };
+
+inline constexpr float kSoftwareRenderScale = 0.5f;
+
+struct RendererSettings {
+    int msaa_samples = 0; // 0: draw straight into the bound framebuffer; 2/4/8: multisampled target
+    int shadow_map_size = 2048;
+    bool shadows = true;
+    bool surface_detail = true; // normal and bump (height) maps; off: the geometric normal only
+    int max_lights_per_draw = kMaxLightsPerDraw; // nearest point/spot lights shading each object, 0..8
+    RenderQuality quality = RenderQuality::Auto;
+    // Fast path: baked surfaces read Material::fast_base_map (base x occlusion) instead of base + ORM maps.
+    bool fast_occluded_base = true;
+    // Fast path: instances hidden behind an occluder box (MeshInstance::occluder, e.g. a wall) are not
+    // drawn: no vertex shading or binning for the robots in the next room.
+    bool occlusion_culling = true;
+    // Fast path: the baked level geometry (few triangles, most of the screen) is first drawn depth-only,
+    // then models and the level are shaded against that depth, so each pixel runs the fragment shader
+    // about once (without it, the floor and ceiling are shaded where the walls later cover them).
+    bool depth_prepass = true;
+    // Fast path: baked level surfaces use fast_level (two texture lookups, no branches) instead of the
+    // general fast shader, whose uniform branches llvmpipe executes on both sides (ORM and emissive lookups
+    // on every pixel).
+    bool fast_level_shader = true;
+    // Fast path: colour maps sample the nearest mip level only (one bilinear lookup; a faint seam runs across
+    // floors and ceilings where the level switches). true: blend the two nearest (trilinear): no seam and a
+    // little closer to the full path (4.1 vs 4.3/255), for ~0.9 ms median and ~2 ms p99 more per 1280x720
+    // frame on llvmpipe, which costs the 60 fps tail (docs/performance.md, "Trilinear mips").
+    bool fast_trilinear = false;
+    // The 3D scene is drawn at this fraction of the target's width and height, then scaled up (bilinear)
+    // into the target, so a HUD drawn afterwards stays sharp. 0: automatic (1 on GPUs,
+    // software_render_scale on software rasterisers; KS_RENDER_SCALE=0.25..1 overrides).
+    float render_scale = 0.0f;
+    // The automatic render scale on software rasterisers: the game's half resolution; the editor asks for 1
+    // (its viewport is smaller and its one-pixel overlays must stay sharp).
+    float software_render_scale = kSoftwareRenderScale;
+    std::string shader_dir; // empty: default_shader_dir() (assets/shaders, or $KS_SHADER_DIR)
+    int shader_hot_reload =
+        -1; // 1: re-read changed shader files once a second; -1: default_shader_hot_reload()
+};
+
+// MSAA 4x on real GPUs, none on software rasterisers (llvmpipe, softpipe, SwiftShader), where every
+// sample is CPU time; see docs/rendering.md for the measurements behind this.
+int default_msaa_for(const std::string& gl_renderer);
+// Fast on software rasterisers, Full on GPUs (KS_RENDER_QUALITY=full|fast overrides).
+RenderQuality default_quality_for(const std::string& gl_renderer);
+// 1 on GPUs, `software_scale` on software rasterisers (KS_RENDER_SCALE overrides; clamped 0.25..1).
+float default_render_scale_for(const std::string& gl_renderer, float software_scale = kSoftwareRenderScale);
+
+} // namespace ks::render

@@ -1,0 +1,56 @@
+#include "shell/offscreen_context.h"
+
+#include "render/window_target.h"
+#include "shell/gl_window.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <stb_image_write.h>
+
+namespace ks::shell {
+
+Result<std::unique_ptr<OffscreenContext>> OffscreenContext::create(int width, int height) {
+    if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
+        return Error("offscreen size out of range", Location{}, "use 1..16384 pixels per side");
+    // The same window set-up as the game's (llvmpipe threads included), so benchmarks measure the same.
+    auto window = open_gl_window({"this program", 64, 64, false, false});
+    if (!window) return window.error();
+    std::unique_ptr<OffscreenContext> ctx(new OffscreenContext());
+    ctx->window_ = *window;
+    glfwSwapInterval(0);
+    ctx->target_ = std::make_unique<render::RenderTarget>(
+        render::RenderTargetFormat{render::ColourStorage::Renderbuffer, 0});
+    if (auto made = ctx->target_->ensure(width, height); !made) return made.error();
+    ctx->bind();
+    return ctx;
+}
+
+OffscreenContext::~OffscreenContext() {
+    if (!window_) return;
+    glfwMakeContextCurrent(window_);
+    target_.reset();
+    close_gl_window(window_);
+}
+
+void OffscreenContext::finish() const {
+    render::finish_gpu();
+}
+
+std::vector<unsigned char> OffscreenContext::read_rgb() const {
+    std::vector<unsigned char> rgb;
+    target_->read_rgb(rgb);
+    return rgb;
+}
+
+Result<void> OffscreenContext::save_png(const std::string& path) const {
+    auto rgb = read_rgb();
+    if (!stbi_write_png(path.c_str(), width(), height(), 3, rgb.data(), width() * 3))
+        return Error("cannot write PNG", Location{path}, "check that the folder exists and is writable");
+    return ok();
+}
+
+std::string OffscreenContext::renderer() const {
+    return render::gl_renderer_name();
+}
+
+} // namespace ks::shell

@@ -1,0 +1,157 @@
+#pragma once
+// The GameApp class behind run_game_app (game_app.h): the screens' state machine, the loaded session and
+// the automation hooks. Shared by game_app.cpp (the state machine), game_script.cpp (--input-script),
+// game_status.cpp (--status-file) and run_game_app.cpp (the command line); not for other code.
+#include "game_app.h"
+
+#include "anim/dojo.h"
+#include "core/files.h"
+#include "core/log.h"
+#include "core/paths.h"
+#include "game/game.h"
+#include "input_events.h"
+#include "input_script.h"
+#include "level/level_io.h"
+#include "menu_style.h"
+#include "options.h"
+#include "player_input.h"
+#include "render/scene_renderer.h"
+#include "screens.h"
+#include "shell/hud.h"
+#include "step_budget.h"
+#include "world_view.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <functional>
+#include <optional>
+#include <sstream>
+
+namespace ks::runtime {
+
+enum class Screen { Loading, Menu, HowTo, Credits, Options, Playing, Paused, Dead, Won };
+
+const char* screen_name(Screen s);
+
+// At most this many fixed steps per frame (0.25 s of game time; step_budget.h says why): 4 frames per
+// second still play in real time, slower machines in slow motion.
+constexpr int kMaxStepsPerFrame = 30;
+
+// One loaded level with its game and view. The Dojo's controller borrows the game's clips, so it goes first.
+struct Session {
+    level::Level level;
+    bool dojo = false;
+    std::unique_ptr<game::Game> game;
+    std::unique_ptr<WorldView> view;
+    std::optional<anim::DojoController> dojo_controller;
+    DojoDummy dummy;
+    double play_seconds = 0.0;
+    int robots_total = 0;
+    ~Session() { dojo_controller.reset(); }
+};
+
+// Loading in steps, one per frame, so the progress bar moves while assets load.
+struct Loader {
+    struct Step {
+        std::string label;
+        std::function<Result<void>()> run;
+    };
+    std::vector<Step> steps;
+    std::size_t next = 0;
+    Screen then = Screen::Menu;
+    float fraction() const { return steps.empty() ? 1.0f : static_cast<float>(next) / steps.size(); }
+    bool done() const { return next >= steps.size(); }
+    std::string label() const { return done() ? "Ready" : steps[next].label; }
+};
+
+// Reads `count` comma-separated finite numbers (--warp).
+bool parse_floats(const std::string& text, float* out, int count);
+
+class GameApp {
+  public:
+    GameApp(shell::AppShell& shell, render::SceneRenderer& renderer, render::AssetLibrary& assets,
+            std::filesystem::path level_path, std::uint64_t seed)
+        : shell_(shell), renderer_(renderer), assets_(assets), level_path_(std::move(level_path)),
+          seed_(seed) {
+        options_ = load_options(options_path());
+        apply_render_options();
+        events_.install(shell_.window());
+    }
+
+    // Command-line automation: the screen to show and the scenario to set up (tests and screenshots).
+    struct Automation {
+        std::string screen;
+        bool dojo = false;
+        std::optional<std::array<float, 5>> warp;
+        char dojo_key = 0;
+        double dojo_time = -1.0;
+        bool fire = false; // one shot on the first step (to see the muzzle flash, impacts, explosions)
+        std::filesystem::path status_file; // rewritten each frame with the screen and the game's state
+        std::vector<ScriptEvent> script;   // --input-script
+        bool scripted = false;
+    };
+    Result<void> start(const Automation& a);
+    int run();
+
+  private:
+    void load(const std::filesystem::path& path, bool dojo, Screen then);
+    Result<void> finish_loading_now();
+    void step_loader();
+    void fixed_update(double dt);
+    void render(const shell::FrameInfo& info);
+    void imgui(const shell::FrameInfo& info);
+    void handle_keys();
+    void enter_play();
+    void pause();
+    void resume();
+    void to_menu();
+    void retry();
+    void open_sub(Screen s) {
+        return_to_ = screen_;
+        screen_ = s;
+    }
+    void save_options_now();
+    void apply_render_options();
+    bool in_world() const { return screen_ == Screen::Playing; }
+    void apply_warp();
+    void run_script(long long frame);
+    void write_status(const shell::FrameInfo& info);
+    // Real input drives the app: not a screenshot run, or a screenshot run driven by --input-script.
+    bool interactive() const { return !shell_.screenshot_mode() || scripted_; }
+
+    shell::AppShell& shell_;
+    render::SceneRenderer& renderer_;
+    render::AssetLibrary& assets_;
+    std::filesystem::path level_path_;
+    std::uint64_t seed_;
+    Options options_;
+    bool options_dirty_ = false;
+    InputEvents events_;
+    PlayerInput input_;
+    StepBudget budget_{kMaxStepsPerFrame};
+    std::optional<std::array<float, 5>> pending_warp_; // interactive --warp: applied when the level loads
+    std::filesystem::path status_path_;
+    std::string status_last_;
+    std::vector<ScriptEvent> script_;
+    std::size_t script_next_ = 0;
+    bool scripted_ = false;
+    bool click_next_frame_ = false;
+    int exit_code_ = 0;
+    Screen screen_ = Screen::Loading, return_to_ = Screen::Menu;
+    std::unique_ptr<Session> session_, pending_;
+    Loader loader_;
+    bool freeze_loader_ = false, freeze_dojo_ = false;
+    std::string error_;
+    bool quit_ = false;
+    bool pause_requested_ = false;
+    render::FrameStats stats_;
+    WinStats win_;
+    std::vector<render::MeshInstance> no_instances_;
+    std::vector<render::Light> no_lights_;
+};
+
+} // namespace ks::runtime

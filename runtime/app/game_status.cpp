@@ -1,0 +1,69 @@
+// GameApp's --status-file: the screen, buttons, options and game state as text, rewritten when they change.
+#include "game_app_internal.h"
+
+#include "core/files.h"
+#include "core/log.h"
+
+#include <cstdio>
+
+namespace ks::runtime {
+
+void GameApp::write_status(const shell::FrameInfo& info) {
+    if (status_path_.empty()) return;
+    std::string s;
+    char line[256];
+    auto add = [&](const char* fmt, auto... args) {
+        std::snprintf(line, sizeof(line), fmt, args...);
+        s += line;
+        s += '\n';
+    };
+    add("screen %s", screen_name(screen_));
+    add("captured %d", input_.captured() ? 1 : 0);
+    add("options sensitivity %.2f fov %.0f invert_y %d render_scale %.2f quality %s",
+        options_.mouse_sensitivity, options_.fov_degrees, options_.invert_y ? 1 : 0, options_.render_scale,
+        quality_name(options_.quality));
+    // What the renderer made of them (automatic values resolved for this GL driver).
+    add("renderer render_scale %.2f quality %s", renderer_.render_scale(),
+        renderer_.quality() == render::RenderQuality::Fast ? "fast" : "full");
+    for (const auto& b : ui::buttons_drawn())
+        add("button %.0f %.0f %.0f %.0f %s", b.x0, b.y0, b.x1, b.y1, b.label.c_str());
+    if (session_ && session_->game) {
+        const auto& g = *session_->game;
+        const auto& p = g.player();
+        add("level %s", session_->dojo ? "dojo" : "play");
+        add("phase %s", g.phase() == game::Phase::Playing ? "playing"
+                        : g.phase() == game::Phase::Dead  ? "dead"
+                                                          : "won");
+        add("paused %d", g.paused() ? 1 : 0);
+        add("feet %.3f %.3f %.3f", p.feet.x, p.feet.y, p.feet.z);
+        add("yaw %.2f", degrees(p.yaw));
+        add("pitch %.2f", degrees(p.pitch));
+        add("health %.1f", p.health);
+        add("shield %.1f", p.shield);
+        add("ammo %d", p.ammo);
+        add("shots %d", p.shots);
+        int alive = 0;
+        for (const auto& r : g.robots()) alive += r.alive() ? 1 : 0;
+        add("robots %d alive %d killed %d", static_cast<int>(g.robots().size()), alive, g.robots_killed());
+        for (const auto& d : g.doors()) add("door %d %.3f", d.entity_id, d.progress);
+        for (const auto& l : g.lights())
+            if (l.floor) add("light %d %s", l.entity_id, l.on ? "on" : "off");
+        for (const auto& k : g.pickups()) add("pickup %d %s", k.entity_id, k.taken ? "taken" : "present");
+        for (const auto& c : g.cylinders())
+            add("cylinder %d %s", c.entity_id, c.exploded ? "exploded" : "standing");
+        add("caption %s", g.caption().visible() ? g.caption().text().c_str() : "-");
+        if (session_->view) add("camera_roll %.2f", degrees(session_->view->camera().roll));
+        add("game_steps %lld", static_cast<long long>(g.steps()));
+    }
+    add("dropped_steps %lld", budget_.dropped());
+    if (s == status_last_) return;
+    status_last_ = s;
+    // The frame goes last and does not count as a change: the file changes when the state does.
+    add("frame %lld", info.frame_index);
+    if (auto written = files::write_atomic(status_path_, s); !written) {
+        log::warn(written.error().str(), " (--status-file: no more status written)");
+        status_path_.clear();
+    }
+}
+
+} // namespace ks::runtime

@@ -1,0 +1,159 @@
+// run_game_app: the game's command line (automation options, seed, MSAA, level check), its window,
+// renderer and GameApp.
+#include "game_app_internal.h"
+
+#include "core/files.h"
+#include "core/log.h"
+#include "core/paths.h"
+#include "level/level_io.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace ks::runtime {
+
+namespace {
+
+void print_help() {
+    std::printf(
+        "usage: killswitch [--level FILE] [--dojo] [--seed N] [--msaa N] [--width W] [--height H]\n"
+        "                  [--screen NAME --screenshot FILE --frames N] [--warp x,y,z,yaw,pitch]\n"
+        "                  [--dojo-key K --dojo-time S] [--no-vsync]\n"
+        "  (no option)       loading screen, then the main menu (Play, Dojo, How to Play, Credits, Options, "
+        "Quit)\n"
+        "  --level FILE      the level Play starts (default levels/main.json)\n"
+        "  --dojo            go straight to the Dojo (levels/dojo.json)\n"
+        "  --screen NAME     start on one screen: loading menu howto credits options pause death win play "
+        "dojo\n"
+        "  --warp ...        put the player's feet at x,y,z facing yaw,pitch (degrees) before the first "
+        "frame\n"
+        "  --fire            fire one shot on the first step (after --warp)\n"
+        "  --dojo-key K      in the Dojo, press key K (0-5) before the first frame\n"
+        "  --dojo-time S     ... and advance the animation S seconds, then hold it (for screenshots)\n"
+        "  --seed N          the game's random seed (default 1)\n"
+        "  --status-file F   rewrite F each frame the state changes: screen, buttons, player, doors, ...\n"
+        "  --input-script F  timed key/mouse events by frame (see runtime/app/input_script.h); with\n"
+        "                    --screenshot the frames are a fixed 1/60 s, so the run is deterministic\n"
+        "  --view MODEL      (renderer) one model on a turntable; --camera x,y,z,yaw,pitch: render-only "
+        "view\n"
+        "  --headless ...    run the game without a window (see killswitch --headless --help)\n"
+        "controls: WASD/arrows move, mouse looks, click shoots, Space jumps, E interacts, Esc pauses\n"
+        "options file: $XDG_CONFIG_HOME/killswitch/options.json (or ~/.config/killswitch/options.json)\n");
+}
+
+} // namespace
+
+int run_game_app(const CommandLine& cl, const shell::ShellConfig& shell_config) {
+    if (cl.has("help")) {
+        print_help();
+        return 0;
+    }
+    GameApp::Automation automation;
+    automation.screen = cl.get_or("screen", "");
+    const auto& screens = game_app_screens();
+    if (!automation.screen.empty() &&
+        std::find(screens.begin(), screens.end(), automation.screen) == screens.end()) {
+        log::error(
+            "--screen '", automation.screen,
+            "': not a screen; use one of loading menu howto credits options pause death win play dojo");
+        return 2;
+    }
+    automation.dojo = cl.has("dojo");
+    if (auto status = cl.get("status-file")) automation.status_file = paths::resolve_user_path(*status);
+    if (auto script = cl.get("input-script")) {
+        const auto path = paths::resolve_user_path(*script);
+        auto text = files::read_text(path);
+        if (!text) {
+            log::error(text.error().str());
+            return 2;
+        }
+        auto events = parse_input_script(*text, path.string());
+        if (!events) {
+            log::error(events.error().str());
+            return 2;
+        }
+        automation.script = std::move(*events);
+        automation.scripted = true;
+    }
+    automation.fire = cl.has("fire");
+    if (auto warp = cl.get("warp")) {
+        std::array<float, 5> v{};
+        if (!parse_floats(*warp, v.data(), 5)) {
+            log::error("--warp '", *warp,
+                       "': expected x,y,z,yaw,pitch with finite numbers, e.g. --warp 0,0,20,0,0");
+            return 2;
+        }
+        automation.warp = v;
+    }
+    if (auto key = cl.get("dojo-key")) {
+        if (key->size() != 1 || (*key)[0] < '0' || (*key)[0] > '9') {
+            log::error("--dojo-key '", *key, "': expected one digit 0-5");
+            return 2;
+        }
+        automation.dojo_key = (*key)[0];
+    }
+    if (cl.has("dojo-time")) {
+        auto t = cl.get_double("dojo-time", 0.0);
+        if (!t || !std::isfinite(*t) || *t < 0.0 || *t > 600.0) {
+            log::error("--dojo-time: expected seconds between 0 and 600");
+            return 2;
+        }
+        automation.dojo_time = *t;
+    }
+    auto seed = cl.get_int("seed", 1, 0, 2147483647);
+    if (!seed) {
+        log::error(seed.error().str());
+        return 2;
+    }
+    auto msaa = cl.get_int("msaa", -1, -1, 16);
+    if (!msaa) {
+        log::error(msaa.error().str());
+        return 2;
+    }
+    const auto level_path = paths::resolve_user_path(cl.get_or("level", paths::level("main.json").string()));
+    {
+        // Check the level before opening a window: a bad file is a command-line error.
+        level::LoadReport report;
+        auto loaded = level::load_level_file(level_path, &report);
+        if (!loaded) {
+            log::error(loaded.error().str());
+            return 2;
+        }
+    }
+    if (!shell::display_available()) {
+        std::fprintf(stderr, "%s\n", shell::no_display_message("killswitch").c_str());
+        return 3;
+    }
+    shell::ShellConfig config = shell_config;
+    config.msaa_samples = 0; // the renderer owns MSAA
+    config.fixed_step = game::GameSettings{}.step;
+    auto shell = shell::AppShell::create(config);
+    if (!shell) {
+        log::error(shell.error().str());
+        return 1;
+    }
+    int code = 0;
+    {
+        render::AssetLibrary assets(paths::asset(""));
+        render::RendererSettings settings;
+        settings.msaa_samples = *msaa >= 0 ? *msaa : render::default_msaa_for((*shell)->gl_renderer());
+        auto renderer = render::SceneRenderer::create(assets.textures(), settings);
+        if (!renderer) {
+            log::error(renderer.error().str());
+            shell::AppShell::destroy(*shell);
+            return 1;
+        }
+        GameApp app(**shell, **renderer, assets, level_path, static_cast<std::uint64_t>(*seed));
+        if (auto started = app.start(automation); !started) {
+            log::error(started.error().str());
+            code = 2;
+        } else {
+            code = app.run();
+        }
+    }
+    shell::AppShell::destroy(*shell);
+    return code;
+}
+
+} // namespace ks::runtime
