@@ -1,6 +1,7 @@
 #include "physics/shapes.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -83,7 +84,18 @@ Polyhedron make_wedge_polyhedron(const Vec3& h) {
     return p;
 }
 
-Result<Polyhedron> build_convex_hull(std::span<const Vec3> points, const std::string& source) {
+namespace {
+
+struct HullTriangle {
+    std::uint32_t v[3];
+    Vec3 n;
+    float d;
+    bool alive;
+};
+
+// The distinct input points (near-duplicates closer than `eps` welded), after checking count and range.
+Result<std::vector<Vec3>> weld_hull_points(std::span<const Vec3> points, const std::string& source,
+                                           float& eps) {
     constexpr std::size_t kMaxPoints = 8192;
     if (points.size() > kMaxPoints)
         return Error("convex hull has " + std::to_string(points.size()) + " vertices", Location(source),
@@ -97,7 +109,7 @@ Result<Polyhedron> build_convex_hull(std::span<const Vec3> points, const std::st
         box.grow(v);
     }
     const float scale = points.empty() ? 0.0f : glm::length(box.max - box.min);
-    const float eps = std::max(scale * 1e-5f, 1e-6f);
+    eps = std::max(scale * 1e-5f, 1e-6f);
     // Weld duplicates (and near-duplicates closer than eps).
     std::vector<Vec3> pts;
     for (const Vec3& v : points) {
@@ -109,7 +121,12 @@ Result<Polyhedron> build_convex_hull(std::span<const Vec3> points, const std::st
     if (pts.size() < 4)
         return Error("convex hull needs at least 4 distinct vertices, got " + std::to_string(pts.size()),
                      Location(source), "a collision mesh must enclose a volume");
-    // Initial tetrahedron from extreme points.
+    return pts;
+}
+
+// Four extreme points spanning a volume: the start of the incremental hull.
+Result<std::array<std::uint32_t, 4>> initial_tetrahedron(const std::vector<Vec3>& pts, float eps,
+                                                         const std::string& source) {
     std::size_t i0 = 0, i1 = 0, i2 = 0, i3 = 0;
     for (std::size_t i = 0; i < pts.size(); ++i)
         if (pts[i].x < pts[i0].x) i0 = i;
@@ -131,14 +148,16 @@ Result<Polyhedron> build_convex_hull(std::span<const Vec3> points, const std::st
         return Error("collision mesh vertices are coplanar (zero volume)", Location(source),
                      "a flat object needs a thickness; use a box for walls and floors");
 
-    struct Tri {
-        std::uint32_t v[3];
-        Vec3 n;
-        float d;
-        bool alive;
-    };
-    std::vector<Tri> tris;
-    const Vec3 inside = (pts[i0] + pts[i1] + pts[i2] + pts[i3]) * 0.25f;
+    return std::array<std::uint32_t, 4>{static_cast<std::uint32_t>(i0), static_cast<std::uint32_t>(i1),
+                                        static_cast<std::uint32_t>(i2), static_cast<std::uint32_t>(i3)};
+}
+
+// The incremental hull: each point outside the current triangles replaces those it sees with a fan from
+// their horizon. Dead triangles stay in the list (alive = false).
+std::vector<HullTriangle> grow_hull(const std::vector<Vec3>& pts, const std::array<std::uint32_t, 4>& s,
+                                    float eps) {
+    std::vector<HullTriangle> tris;
+    const Vec3 inside = (pts[s[0]] + pts[s[1]] + pts[s[2]] + pts[s[3]]) * 0.25f;
     auto make = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
         Vec3 n = glm::normalize(glm::cross(pts[b] - pts[a], pts[c] - pts[a]));
         if (glm::dot(n, pts[a] - inside) < 0) {
@@ -147,8 +166,6 @@ Result<Polyhedron> build_convex_hull(std::span<const Vec3> points, const std::st
         }
         tris.push_back({{a, b, c}, n, glm::dot(n, pts[a]), true});
     };
-    const std::uint32_t s[4] = {static_cast<std::uint32_t>(i0), static_cast<std::uint32_t>(i1),
-                                static_cast<std::uint32_t>(i2), static_cast<std::uint32_t>(i3)};
     make(s[0], s[1], s[2]);
     make(s[0], s[1], s[3]);
     make(s[0], s[2], s[3]);
@@ -176,7 +193,11 @@ Result<Polyhedron> build_convex_hull(std::span<const Vec3> points, const std::st
             tris.push_back({{e[0], e[1], pi}, n, glm::dot(n, pts[pi]), true});
         }
     }
-    // Merge coplanar triangles into polygons and keep only the vertices the hull uses.
+    return tris;
+}
+
+// Coplanar triangles merged into polygons, keeping only the vertices the hull uses.
+Polyhedron hull_polyhedron(const std::vector<Vec3>& pts, const std::vector<HullTriangle>& tris, float eps) {
     Polyhedron p;
     std::vector<int> remap(pts.size(), -1);
     std::vector<bool> used(tris.size(), false);
@@ -222,6 +243,18 @@ Result<Polyhedron> build_convex_hull(std::span<const Vec3> points, const std::st
         else
             p.face_vertices.resize(f.first);
     }
+    return p;
+}
+
+} // namespace
+
+Result<Polyhedron> build_convex_hull(std::span<const Vec3> points, const std::string& source) {
+    float eps = 0.0f;
+    auto pts = weld_hull_points(points, source, eps);
+    if (!pts) return pts.error();
+    auto start = initial_tetrahedron(*pts, eps, source);
+    if (!start) return start.error();
+    Polyhedron p = hull_polyhedron(*pts, grow_hull(*pts, *start, eps), eps);
     if (p.faces.size() < 4 || p.vertices.size() > 65535)
         return Error("convex hull of the collision mesh is degenerate", Location(source),
                      "check the mesh for zero-area faces and near-duplicate vertices");

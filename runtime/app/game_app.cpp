@@ -297,14 +297,26 @@ void GameApp::render(const shell::FrameInfo& info) {
 
 void GameApp::imgui(const shell::FrameInfo& info) {
     const float w = static_cast<float>(info.width), h = static_cast<float>(info.height);
-    const auto& fonts = shell_.fonts();
     ImGuiIO& io = ImGui::GetIO();
     ui::begin_frame();
     if (input_.captured())
         io.ConfigFlags |= ImGuiConfigFlags_NoMouse;
     else
         io.ConfigFlags &= ~ImGuiConfigFlags_NoMouse;
+    draw_world_overlay(w, h);
+    apply_menu_action(draw_screen(w, h));
+    write_status(info);
+    if (!shell_.screenshot_mode() && screen_ == Screen::Playing) {
+        char text[128];
+        std::snprintf(text, sizeof(text), "%.1f ms  %d draws", info.frame_dt * 1000.0, stats_.draw_calls);
+        ImGui::GetForegroundDrawList()->AddText(shell_.fonts().mono, 0.0f, ImVec2(10.0f, h - 22.0f),
+                                                IM_COL32(255, 255, 255, 140), text);
+    }
+}
 
+// The HUD, hit marker and Dojo legend over the world while it is on screen.
+void GameApp::draw_world_overlay(float w, float h) {
+    const auto& fonts = shell_.fonts();
     const bool world_visible =
         session_ && session_->game &&
         (screen_ == Screen::Playing || screen_ == Screen::Paused || screen_ == Screen::Dead);
@@ -330,7 +342,12 @@ void GameApp::imgui(const shell::FrameInfo& info) {
         if (session_->dojo_controller && screen_ == Screen::Playing)
             dojo_legend(session_->dojo_controller->legend(), fonts, w, h);
     }
+}
 
+// The current screen's menu or panel; returns what the player chose on it.
+MenuAction GameApp::draw_screen(float w, float h) {
+    const auto& fonts = shell_.fonts();
+    const ImGuiIO& io = ImGui::GetIO();
     MenuAction action = MenuAction::None;
     switch (screen_) {
     case Screen::Loading:
@@ -368,6 +385,10 @@ void GameApp::imgui(const shell::FrameInfo& info) {
     case Screen::Playing:
         break;
     }
+    return action;
+}
+
+void GameApp::apply_menu_action(MenuAction action) {
     switch (action) {
     case MenuAction::Play:
         if (session_ && !session_->dojo && session_->play_seconds == 0.0 &&
@@ -406,14 +427,6 @@ void GameApp::imgui(const shell::FrameInfo& info) {
         break;
     case MenuAction::None:
         break;
-    }
-
-    write_status(info);
-    if (!shell_.screenshot_mode() && screen_ == Screen::Playing) {
-        char text[128];
-        std::snprintf(text, sizeof(text), "%.1f ms  %d draws", info.frame_dt * 1000.0, stats_.draw_calls);
-        ImGui::GetForegroundDrawList()->AddText(fonts.mono, 0.0f, ImVec2(10.0f, h - 22.0f),
-                                                IM_COL32(255, 255, 255, 140), text);
     }
 }
 

@@ -104,6 +104,9 @@ class GameApp {
     void fixed_update(double dt);
     void render(const shell::FrameInfo& info);
     void imgui(const shell::FrameInfo& info);
+    void draw_world_overlay(float w, float h);
+    MenuAction draw_screen(float w, float h);
+    void apply_menu_action(MenuAction action);
     void handle_keys();
     void enter_play();
     void pause();
