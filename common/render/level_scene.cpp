@@ -3,8 +3,6 @@
 #include "level/entity_shapes.h"
 #include "render/scene_renderer.h"
 
-#include <epoxy/gl.h>
-
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -69,9 +67,13 @@ LevelScene::Prop LevelScene::make_prop(const level::Entity& e, const Model* mode
     return p;
 }
 
+LevelSceneOptions level_scene_options(const RendererSettings& resolved) {
+    return {resolved.quality == RenderQuality::Fast, resolved.lightmap_float};
+}
+
 std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLibrary& assets,
-                                              bool bake_light_map) {
-    auto scene = std::unique_ptr<LevelScene>(new LevelScene());
+                                              const LevelSceneOptions& options) {
+    auto scene = std::unique_ptr<LevelScene>(new LevelScene(options));
     scene->environment_ = environment_from_settings(level.settings);
     std::vector<MeshData> surface_meshes; // uploaded once their light-map coordinates are baked
     for (const auto& e : level.entities) {
@@ -155,8 +157,8 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
         }
         case EntityType::GasCylinder: {
             const auto& g = e.as<level::GasCylinderProps>();
-            const Mat4 root =
-                level::gas_cylinder_model_matrix(level::gas_cylinder_centre(e.position, g), radians(e.rotation.x), g);
+            const Mat4 root = level::gas_cylinder_model_matrix(level::gas_cylinder_centre(e.position, g),
+                                                               radians(e.rotation.x), g);
             scene->props_.push_back(make_prop(e, &assets.model("gas_cylinder"), root));
             break;
         }
@@ -182,10 +184,8 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
             p.bake_light = static_cast<int>(bake_lights.size());
             bake_lights.push_back(p.light);
         }
-    // Only the fast path reads the light map: GPUs (Auto = Full) skip the bake's CPU time.
-    const GLubyte* gl_name = glGetString(GL_RENDERER);
-    const std::string gl_renderer = gl_name ? reinterpret_cast<const char*>(gl_name) : "";
-    if (bake_light_map && default_quality_for(gl_renderer) == RenderQuality::Fast)
+    // Only the fast path reads the light map: GPUs (Full) skip the bake's CPU time.
+    if (options.bake_light_map)
         scene->bake_stats_ = scene->bake_.bake(bake_surfaces, scene->environment_, bake_lights);
     for (const auto& p : scene->props_)
         if (p.bake_light >= 0) scene->bake_.set_light_on(p.bake_light, p.light_on);

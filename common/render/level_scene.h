@@ -8,6 +8,7 @@
 #include "render/gpu_mesh.h"
 #include "render/light_bake.h"
 #include "render/lightmap_texture.h"
+#include "render/renderer_settings.h"
 #include "render/scene.h"
 
 #include <memory>
@@ -23,12 +24,20 @@ Environment environment_from_settings(const level::Settings& settings);
 // The player's eye at the level start: feet + 3 (the reference's eye height), looking along the start yaw.
 geometry::Camera player_start_camera(const level::Level& level, float aspect);
 
+// What a level scene prepares for the renderer that draws it.
+struct LevelSceneOptions {
+    // Bake the light map that the fast path reads. false: the fast path lights the level geometry per vertex
+    // (the editor's cheap rebuilds while a drag is in progress; a renderer on the full path never reads it).
+    bool bake_light_map = true;
+    bool lightmap_float = false; // the texture's encoding: RendererSettings::lightmap_float
+};
+// The options that match a renderer's resolved settings: bake only for the fast path, same encoding.
+LevelSceneOptions level_scene_options(const RendererSettings& resolved);
+
 class LevelScene {
   public:
-    // bake_light_map = false skips the light-map bake even where the fast path would use it (the fast path
-    // then lights the level geometry per vertex): the editor's cheap rebuilds while a drag is in progress.
     static std::unique_ptr<LevelScene> build(const level::Level& level, AssetLibrary& assets,
-                                             bool bake_light_map = true);
+                                             const LevelSceneOptions& options = {});
 
     void set_light_on(int entity_id, bool on);
     void set_door_open(int entity_id, float fraction); // 0 closed .. 1 open
@@ -40,13 +49,14 @@ class LevelScene {
     const geometry::Aabb& bounds() const { return bounds_; }
     int surface_count() const { return static_cast<int>(surfaces_.size()); }
     // The level geometry's baked light (the fast path's; see light_bake.h) and what baking it cost. Baked
-    // when the GL renderer's automatic quality is Fast (software rasterisers, or KS_RENDER_QUALITY=fast);
-    // otherwise empty, and a renderer switched to Fast lights the level geometry per vertex.
+    // when the options ask (level_scene_options: the renderer's quality is Fast); otherwise empty, and a
+    // renderer switched to Fast lights the level geometry per vertex.
     const LightBake& light_bake() const { return bake_; }
     const BakeStats& bake_stats() const { return bake_stats_; }
     unsigned lightmap_texture() const { return lightmap_.id(); }
 
   private:
+    explicit LevelScene(const LevelSceneOptions& options) : lightmap_(options.lightmap_float) {}
     struct Surface {
         std::unique_ptr<GpuMesh> mesh;
         const Material* material;
@@ -61,8 +71,8 @@ class LevelScene {
         bool light_on = true;
         float door_open = 0.0f;
         level::DoorProps door; // for doors: the leaves slide as level::door_leaf_centre says
-        Light light;         // for floor/top lights
-        int bake_light = -1; // its index in the light bake
+        Light light;           // for floor/top lights
+        int bake_light = -1;   // its index in the light bake
     };
     static Prop make_prop(const level::Entity& e, const Model* model, const Mat4& root);
     std::vector<Surface> surfaces_;

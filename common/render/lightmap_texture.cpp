@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 
 namespace ks::render {
 
@@ -12,14 +11,10 @@ namespace {
 // The 8-bit encoding covers irradiance 0..kRange (a floor light's hot spot reaches ~6 in the main level;
 // brighter texels clip). sqrt spends the code values on the dark end, where banding would show.
 constexpr float kRange = 16.0f;
-bool eight_bit() {
-    const char* v = std::getenv("KS_LIGHTMAP_FLOAT");
-    return !(v && *v == '1');
-}
 } // namespace
 
-float lightmap_encoding_range() {
-    return eight_bit() ? kRange : 0.0f;
+float lightmap_encoding_range(bool lightmap_float) {
+    return lightmap_float ? 0.0f : kRange;
 }
 
 LightmapTexture::~LightmapTexture() {
@@ -44,7 +39,7 @@ void LightmapTexture::upload(const LightBake& bake) {
     const bool resize = bake.width() != width_ || bake.height() != height_;
     width_ = bake.width();
     height_ = bake.height();
-    range_ = lightmap_encoding_range();
+    range_ = lightmap_encoding_range(float_);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     if (range_ > 0.0f) {
         const auto& t = bake.texels();

@@ -7,12 +7,13 @@
 
 namespace ks::render {
 
-// What every LightmapTexture's texels mean: 0 = linear RGB16F, else sqrt(irradiance / range) in RGBA8.
-float lightmap_encoding_range();
+// What a LightmapTexture's texels mean: 0 = linear RGB16F (RendererSettings::lightmap_float), else
+// sqrt(irradiance / range) in RGBA8.
+float lightmap_encoding_range(bool lightmap_float);
 
 class LightmapTexture {
   public:
-    LightmapTexture() = default;
+    explicit LightmapTexture(bool lightmap_float = false) : float_(lightmap_float) {}
     ~LightmapTexture();
     LightmapTexture(const LightmapTexture&) = delete;
     LightmapTexture& operator=(const LightmapTexture&) = delete;
@@ -27,6 +28,7 @@ class LightmapTexture {
     unsigned id_ = 0;
     int width_ = 0, height_ = 0;
     float range_ = 0.0f;
+    bool float_ = false;
     std::vector<unsigned char> encoded_;
 };
 

@@ -4,14 +4,16 @@
 #include "render/scene.h"
 #include "render/shaders.h"
 
+#include <functional>
 #include <string>
+#include <vector>
 
 namespace ks::render {
 
 // Full: per-pixel PBR for everything (GPUs). Fast (software rasterisers): the level geometry reads its
 // baked light map (MeshInstance::lightmap; ambient, sun shadows and every level light), models are lit per
 // vertex with the same lights, and the fragment shader is a few texture fetches. Auto picks from the GL
-// renderer string like MSAA; KS_RENDER_QUALITY=full|fast overrides Auto.
+// renderer string like MSAA, or automatic_quality where that is set (KS_RENDER_QUALITY=full|fast).
 enum class RenderQuality { Auto, Full, Fast };
 
 inline constexpr float kSoftwareRenderScale = 0.5f;
@@ -43,22 +45,44 @@ struct RendererSettings {
     bool fast_trilinear = false;
     // The 3D scene is drawn at this fraction of the target's width and height, then scaled up (bilinear)
     // into the target, so a HUD drawn afterwards stays sharp. 0: automatic (1 on GPUs,
-    // software_render_scale on software rasterisers; KS_RENDER_SCALE=0.25..1 overrides).
+    // software_render_scale on software rasterisers; automatic_render_scale where that is set).
     float render_scale = 0.0f;
     // The automatic render scale on software rasterisers: the game's half resolution; the editor asks for 1
     // (its viewport is smaller and its one-pixel overlays must stay sharp).
     float software_render_scale = kSoftwareRenderScale;
-    std::string shader_dir; // empty: default_shader_dir() (assets/shaders, or $KS_SHADER_DIR)
-    int shader_hot_reload =
-        -1; // 1: re-read changed shader files once a second; -1: default_shader_hot_reload()
+    // What "automatic" resolves to instead of the GL renderer's choice, where set: the environment's
+    // KS_RENDER_QUALITY=full|fast and KS_RENDER_SCALE=0.25..1, for screenshots and measurements. A quality or
+    // scale chosen explicitly (an option, a menu) still wins.
+    RenderQuality automatic_quality = RenderQuality::Auto; // Auto: from the GL renderer
+    float automatic_render_scale = 0.0f;                   // 0: from the GL renderer
+    std::string shader_dir; // empty: default_shader_dir() (assets/shaders); KS_SHADER_DIR sets it
+    // 1: re-read changed shader files once a second; 0: never; -1: default_shader_hot_reload() (Debug
+    // builds). KS_SHADER_HOT_RELOAD=0|1 sets it.
+    int shader_hot_reload = -1;
+    // The fast path's light map as exact RGB16F instead of sqrt-encoded RGBA8 (KS_LIGHTMAP_FLOAT=1). The
+    // level scene that fills the texture and the renderer that decodes it must agree: build scenes with
+    // level_scene_options(renderer.settings()).
+    bool lightmap_float = false;
 };
+
+// Where an environment variable is read from: std::getenv in the executables, a table in tests.
+using EnvironmentLookup = std::function<const char*(const char*)>;
+// The renderer's environment overrides, parsed in one place: KS_RENDER_QUALITY=full|fast and KS_RENDER_SCALE
+// (0.25..1) set automatic_quality and automatic_render_scale; KS_LIGHTMAP_FLOAT=0|1, KS_SHADER_DIR=FOLDER
+// and KS_SHADER_HOT_RELOAD=0|1 set lightmap_float, shader_dir and shader_hot_reload.
+// A bad value leaves its field as it was and adds a warning naming the variable and what it accepts.
+std::vector<std::string> apply_environment_overrides(RendererSettings& settings,
+                                                     const EnvironmentLookup& lookup);
+// What the executables call once at start-up: the process environment applied to `settings`, warnings
+// logged. Command-line options and saved options are applied after it, so they win.
+RendererSettings renderer_settings_from_environment(RendererSettings settings = {});
 
 // MSAA 4x on real GPUs, none on software rasterisers (llvmpipe, softpipe, SwiftShader), where every
 // sample is CPU time; see docs/rendering.md for the measurements behind this.
 int default_msaa_for(const std::string& gl_renderer);
-// Fast on software rasterisers, Full on GPUs (KS_RENDER_QUALITY=full|fast overrides).
+// Fast on software rasterisers, Full on GPUs.
 RenderQuality default_quality_for(const std::string& gl_renderer);
-// 1 on GPUs, `software_scale` on software rasterisers (KS_RENDER_SCALE overrides; clamped 0.25..1).
+// 1 on GPUs, `software_scale` on software rasterisers (clamped 0.25..1).
 float default_render_scale_for(const std::string& gl_renderer, float software_scale = kSoftwareRenderScale);
 
 } // namespace ks::render

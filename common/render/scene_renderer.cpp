@@ -23,10 +23,14 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(TextureCache& textu
 }
 
 void SceneRenderer::resolve_settings() {
-    if (settings_.quality == RenderQuality::Auto) settings_.quality = default_quality_for(gl_renderer_);
+    if (settings_.quality == RenderQuality::Auto)
+        settings_.quality = settings_.automatic_quality != RenderQuality::Auto ? settings_.automatic_quality
+                                                                               : default_quality_for(gl_renderer_);
     fast_ = settings_.quality == RenderQuality::Fast;
     if (!(settings_.render_scale > 0.0f) || !is_finite(settings_.render_scale))
-        settings_.render_scale = default_render_scale_for(gl_renderer_, settings_.software_render_scale);
+        settings_.render_scale = settings_.automatic_render_scale > 0.0f
+                                     ? settings_.automatic_render_scale
+                                     : default_render_scale_for(gl_renderer_, settings_.software_render_scale);
     settings_.render_scale = std::clamp(settings_.render_scale, 0.25f, 1.0f);
 }
 

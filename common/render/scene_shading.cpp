@@ -137,7 +137,7 @@ void SceneRenderer::draw_batches_fast(const geometry::Camera& camera, const Scen
         glUniform1f(p.location("u_fog_density"), fog ? env.fog_density : 0.0f);
         glUniform2f(p.location("u_depth_to_view"), n * f / (f - n), f / (f - n));
         glUniform1f(p.location("u_exposure"), env.exposure);
-        glUniform1f(p.location("u_lightmap_range"), lightmap_encoding_range());
+        glUniform1f(p.location("u_lightmap_range"), lightmap_encoding_range(settings_.lightmap_float));
         loc[i] = {p.location("u_map_flags"),       p.location("u_baked"),
                   p.location("u_receive_shadow"),  p.location("u_base_factor"),
                   p.location("u_emissive_factor"), p.location("u_metal_rough")};

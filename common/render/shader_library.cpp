@@ -2,13 +2,10 @@
 
 #include "core/log.h"
 
-#include <cstdlib>
-#include <cstring>
 
 namespace ks::render {
 
 bool default_shader_hot_reload() {
-    if (const char* v = std::getenv("KS_SHADER_HOT_RELOAD"); v && *v) return std::strcmp(v, "0") != 0;
 #ifdef NDEBUG
     return false;
 #else

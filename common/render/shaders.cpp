@@ -3,7 +3,6 @@
 #include "core/files.h"
 #include "core/paths.h"
 
-#include <cstdlib>
 
 namespace ks::render {
 
@@ -37,7 +36,6 @@ std::vector<const ProgramFiles*> all_programs() {
 }
 
 std::filesystem::path default_shader_dir() {
-    if (const char* dir = std::getenv("KS_SHADER_DIR"); dir && *dir) return dir;
     return paths::asset("shaders");
 }
 

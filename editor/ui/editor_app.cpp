@@ -58,12 +58,12 @@ Result<void> EditorApp::init() {
     });
     if (auto r = recent_.load(); !r) log_line(r.error().str(), true);
     editor_.set_recent_files(&recent_);
-    render::RendererSettings settings;
+    render::RendererSettings settings = render::renderer_settings_from_environment();
     settings.msaa_samples = render::default_msaa_for(shell_.gl_renderer());
     // Full resolution on software rasterisers too (the game's automatic choice there is 0.5): thin overlays
     // (eye radii, grid, gizmo) at half resolution turn to stairs, and the viewport is about 40 % of the
     // window (21.2-23.1 vs 17.6-22.3 ms per editor frame on llvmpipe: docs/performance.md, "Viewport
-    // resolution"). KS_RENDER_SCALE still overrides.
+    // resolution"). KS_RENDER_SCALE still overrides (automatic_render_scale).
     settings.software_render_scale = 1.0f;
     auto renderer = render::SceneRenderer::create(assets_.textures(), settings);
     if (!renderer) return renderer.error();

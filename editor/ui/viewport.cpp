@@ -83,13 +83,15 @@ void EditorApp::rebuild_scene_if_changed() {
     const bool bake = !continuous;
     if (scene_ && revision == scene_revision_ && (scene_baked_ || !bake)) return;
     const std::clock_t cpu_start = std::clock();
+    render::LevelSceneOptions options = render::level_scene_options(renderer_->settings());
+    options.bake_light_map = options.bake_light_map && bake;
     const auto& entities = editor_.level().entities;
     if (std::all_of(entities.begin(), entities.end(), [&](const level::Entity& e) { return shown(e); })) {
-        scene_ = render::LevelScene::build(editor_.level(), assets_, bake);
+        scene_ = render::LevelScene::build(editor_.level(), assets_, options);
     } else { // hidden entities (and ceilings, unless shown) are left out of the picture and of picking
         level::Level visible = editor_.level();
         std::erase_if(visible.entities, [&](const level::Entity& e) { return !shown(e); });
-        scene_ = render::LevelScene::build(visible, assets_, bake);
+        scene_ = render::LevelScene::build(visible, assets_, options);
     }
     scene_stats_.last_build_cpu_ms = 1000.0 * static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
     ++scene_stats_.builds;

@@ -95,7 +95,9 @@ void GameApp::load(const std::filesystem::path& path, bool dojo, Screen then) {
                                  }});
     }
     loader_.steps.push_back({"Building the level scene", [this, s]() -> Result<void> {
-                                 s->view = WorldView::build(s->level, *s->game, assets_);
+                                 s->view =
+                                     WorldView::build(s->level, *s->game, assets_,
+                                                      render::level_scene_options(renderer_.settings()));
                                  return {};
                              }});
     if (dojo) {

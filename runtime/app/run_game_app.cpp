@@ -136,7 +136,7 @@ int run_game_app(const CommandLine& cl, const shell::ShellConfig& shell_config) 
     int code = 0;
     {
         render::AssetLibrary assets(paths::asset(""));
-        render::RendererSettings settings;
+        render::RendererSettings settings = render::renderer_settings_from_environment();
         settings.msaa_samples = *msaa >= 0 ? *msaa : render::default_msaa_for((*shell)->gl_renderer());
         auto renderer = render::SceneRenderer::create(assets.textures(), settings);
         if (!renderer) {

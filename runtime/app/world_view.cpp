@@ -21,9 +21,10 @@ level::Level static_part(const level::Level& level) {
 }
 
 std::unique_ptr<WorldView> WorldView::build(const level::Level& level, const game::Game& game,
-                                            render::AssetLibrary& assets) {
+                                            render::AssetLibrary& assets,
+                                            const render::LevelSceneOptions& scene_options) {
     auto view = std::unique_ptr<WorldView>(new WorldView());
-    view->scene_ = render::LevelScene::build(static_part(level), assets);
+    view->scene_ = render::LevelScene::build(static_part(level), assets, scene_options);
     view->robot_model_ = &assets.model("robot");
     view->cylinder_model_ = &assets.model("gas_cylinder");
     view->rifle_ = &assets.model("rifle");

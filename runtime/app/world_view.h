@@ -32,7 +32,8 @@ struct DojoDummy {
 class WorldView {
   public:
     static std::unique_ptr<WorldView> build(const level::Level& level, const game::Game& game,
-                                            render::AssetLibrary& assets);
+                                            render::AssetLibrary& assets,
+                                            const render::LevelSceneOptions& scene_options);
 
     // Call before each game step (keeps the previous state for interpolation) and after it (events).
     void before_step(const game::Game& game);

@@ -129,13 +129,14 @@ struct ViewStage {
     double time = 0.0;
 };
 
-void build_stage(const ViewOptions& options, render::AssetLibrary& assets, ViewStage& stage) {
+void build_stage(const ViewOptions& options, render::AssetLibrary& assets,
+                 const render::LevelSceneOptions& scene_options, ViewStage& stage) {
     const float aspect = static_cast<float>(options.config.width) / static_cast<float>(options.config.height);
     if (options.camera) stage.camera = *options.camera;
     if (options.model) {
         stage.turntable.emplace(assets, *options.model, stage.environment, stage.lights);
     } else {
-        stage.scene = render::LevelScene::build(options.level, assets);
+        stage.scene = render::LevelScene::build(options.level, assets, scene_options);
         stage.environment = stage.scene->environment();
         if (!options.camera) stage.camera = render::player_start_camera(options.level, aspect);
         if (options.effects) add_demo_effects(stage.camera, stage.emitters);
@@ -147,7 +148,7 @@ void build_stage(const ViewOptions& options, render::AssetLibrary& assets, ViewS
 int run_view_loop(shell::AppShell& shell, const ViewOptions& options, render::AssetLibrary& assets,
                   render::SceneRenderer& renderer) {
     ViewStage stage;
-    build_stage(options, assets, stage);
+    build_stage(options, assets, render::level_scene_options(renderer.settings()), stage);
     const render::Model& rifle = assets.model("rifle");
     FlyCamera fly;
     shell::HudState hud_state;
@@ -224,7 +225,7 @@ int run_render_view(const CommandLine& cl) {
     int exit_code = 1;
     {
         render::AssetLibrary assets(paths::asset(""));
-        render::RendererSettings settings;
+        render::RendererSettings settings = render::renderer_settings_from_environment();
         settings.msaa_samples =
             options->msaa >= 0 ? options->msaa : render::default_msaa_for((*shell)->gl_renderer());
         if (auto renderer = render::SceneRenderer::create(assets.textures(), settings); renderer)

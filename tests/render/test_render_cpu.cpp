@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <map>
 #include <optional>
 #include <string>
 #include <thread>
@@ -409,4 +410,83 @@ TEST_CASE(
         setenv("LP_NUM_THREADS", saved->c_str(), 1);
     else
         unsetenv("LP_NUM_THREADS");
+}
+
+namespace {
+// A fake process environment for the renderer's overrides.
+EnvironmentLookup environment(std::map<std::string, std::string> values) {
+    return [values = std::move(values)](const char* name) -> const char* {
+        auto it = values.find(name);
+        return it == values.end() ? nullptr : it->second.c_str();
+    };
+}
+} // namespace
+
+TEST_CASE("renderer environment overrides are parsed once into RendererSettings") {
+    SUBCASE("unset: every field keeps its default") {
+        RendererSettings s;
+        CHECK(apply_environment_overrides(s, environment({})).empty());
+        CHECK(s.automatic_quality == RenderQuality::Auto);
+        CHECK(s.automatic_render_scale == 0.0f);
+        CHECK_FALSE(s.lightmap_float);
+        CHECK(s.shader_dir.empty());
+        CHECK(s.shader_hot_reload == -1);
+    }
+    SUBCASE("valid values set their fields") {
+        RendererSettings s;
+        const auto warnings = apply_environment_overrides(s, environment({{"KS_RENDER_QUALITY", "fast"},
+                                                                          {"KS_RENDER_SCALE", "0.6"},
+                                                                          {"KS_LIGHTMAP_FLOAT", "1"},
+                                                                          {"KS_SHADER_DIR", "/tmp/shaders"},
+                                                                          {"KS_SHADER_HOT_RELOAD", "1"}}));
+        CHECK(warnings.empty());
+        CHECK(s.automatic_quality == RenderQuality::Fast);
+        CHECK(s.automatic_render_scale == doctest::Approx(0.6f));
+        CHECK(s.lightmap_float);
+        CHECK(s.shader_dir == "/tmp/shaders");
+        CHECK(s.shader_hot_reload == 1);
+        CHECK(s.quality == RenderQuality::Auto); // explicit choices are left to options and menus
+        CHECK(s.render_scale == 0.0f);
+        apply_environment_overrides(
+            s, environment({{"KS_RENDER_QUALITY", "full"}, {"KS_SHADER_HOT_RELOAD", "0"}}));
+        CHECK(s.automatic_quality == RenderQuality::Full);
+        CHECK(s.shader_hot_reload == 0);
+    }
+    SUBCASE("scales are clamped to 0.25..1") {
+        RendererSettings s;
+        apply_environment_overrides(s, environment({{"KS_RENDER_SCALE", "7"}}));
+        CHECK(s.automatic_render_scale == 1.0f);
+        apply_environment_overrides(s, environment({{"KS_RENDER_SCALE", "0.01"}}));
+        CHECK(s.automatic_render_scale == 0.25f);
+    }
+    SUBCASE("bad values warn, name the variable and leave the field") {
+        RendererSettings s;
+        const auto warnings = apply_environment_overrides(s, environment({{"KS_RENDER_QUALITY", "ultra"},
+                                                                          {"KS_RENDER_SCALE", "half"},
+                                                                          {"KS_LIGHTMAP_FLOAT", "yes"}}));
+        REQUIRE(warnings.size() == 3);
+        CHECK(warnings[0].find("KS_RENDER_QUALITY='ultra'") != std::string::npos);
+        CHECK(warnings[1].find("KS_RENDER_SCALE='half'") != std::string::npos);
+        CHECK(warnings[2].find("KS_LIGHTMAP_FLOAT='yes'") != std::string::npos);
+        CHECK(s.automatic_quality == RenderQuality::Auto);
+        CHECK(s.automatic_render_scale == 0.0f);
+        CHECK_FALSE(s.lightmap_float);
+        for (const char* bad : {"nan", "inf", "-1", "0", "0.5x", ""}) {
+            RendererSettings t;
+            apply_environment_overrides(t, environment({{"KS_RENDER_SCALE", bad}}));
+            CHECK(t.automatic_render_scale == 0.0f);
+        }
+    }
+    SUBCASE("a level scene built for a renderer bakes only for the fast path, in its encoding") {
+        RendererSettings fast;
+        fast.quality = RenderQuality::Fast;
+        fast.lightmap_float = true;
+        CHECK(level_scene_options(fast).bake_light_map);
+        CHECK(level_scene_options(fast).lightmap_float);
+        RendererSettings full;
+        full.quality = RenderQuality::Full;
+        CHECK_FALSE(level_scene_options(full).bake_light_map);
+        CHECK(lightmap_encoding_range(true) == 0.0f);
+        CHECK(lightmap_encoding_range(false) > 0.0f);
+    }
 }

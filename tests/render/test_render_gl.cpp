@@ -399,6 +399,21 @@ TEST_CASE("auto quality follows the GL renderer string; overrides win") {
     CHECK((*full)->render_scale() == doctest::Approx(default_render_scale_for(gl)));
     (*full)->set_quality(RenderQuality::Fast);
     CHECK((*full)->quality() == RenderQuality::Fast);
+    // The environment's choices replace "automatic" only: an explicit quality or scale still wins.
+    RendererSettings from_environment;
+    from_environment.automatic_quality =
+        default_quality_for(gl) == RenderQuality::Fast ? RenderQuality::Full : RenderQuality::Fast;
+    from_environment.automatic_render_scale = 0.75f;
+    auto overridden = SceneRenderer::create(assets.textures(), from_environment);
+    REQUIRE(overridden);
+    CHECK((*overridden)->quality() == from_environment.automatic_quality);
+    CHECK((*overridden)->render_scale() == doctest::Approx(0.75f));
+    (*overridden)->set_render_scale(0.0f); // back to automatic: the environment's scale again
+    CHECK((*overridden)->render_scale() == doctest::Approx(0.75f));
+    (*overridden)->set_render_scale(0.5f);
+    CHECK((*overridden)->render_scale() == doctest::Approx(0.5f));
+    CHECK(level_scene_options((*overridden)->settings()).bake_light_map ==
+          ((*overridden)->quality() == RenderQuality::Fast));
 }
 
 TEST_CASE("lights toggle: switching every level light off darkens the view, emissive lenses follow") {
