@@ -40,7 +40,7 @@ RaySet make_rays(const scenes::RoomsScene& s, int n, std::uint64_t seed) {
 // Brute force in float: every box, every ray (what a scene without an acceleration structure does).
 struct BruteForce {
     std::vector<Vec3> half;
-    std::vector<Transform> xf;
+    std::vector<geometry::Transform> xf;
     bool closest(const geometry::Ray& r, float& best) const {
         best = r.max_distance;
         bool any = false;

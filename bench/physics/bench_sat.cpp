@@ -66,7 +66,7 @@ void box_pairs(bool quick) {
     Rng rng(3);
     struct Pair {
         Vec3 ha, hb;
-        Transform a, b;
+        geometry::Transform a, b;
         double truth;
     };
     std::vector<Pair> set;

@@ -19,7 +19,7 @@ namespace {
 class AllPairs final : public ObstacleSource {
   public:
     std::vector<Shape> shapes;
-    std::vector<Transform> xfs;
+    std::vector<geometry::Transform> xfs;
     std::vector<geometry::Aabb> boxes;
     void gather(const geometry::Aabb& region, std::vector<Obstacle>& out) const override {
         for (std::size_t i = 0; i < boxes.size(); ++i)

@@ -93,14 +93,14 @@ struct Robot {
 struct Door {
     int entity_id = 0;
     level::DoorProps props;
-    physics::Transform frame; // bottom centre, door yaw
+    geometry::Transform frame; // bottom centre, door yaw
     physics::BodyId leaves[2], sensor;
     float progress = 0.0f; // 0 closed .. 1 open (linear in time, as the reference)
     bool opening = false;  // where it is heading
     bool player_inside = false;
     float leaf_offset() const { return level::door_leaf_slide(props, progress); } // each leaf slides this far
     // Where leaf `side` (0: local -x, 1: +x) is at the current progress (level::door_leaf_centre).
-    physics::Transform leaf_transform(int side) const {
+    geometry::Transform leaf_transform(int side) const {
         return {frame.to_world(level::door_leaf_centre(props, side, progress)), frame.rotation};
     }
 };

@@ -12,7 +12,7 @@ namespace {
 using physics::BodyDesc;
 using physics::Motion;
 using physics::Shape;
-using physics::Transform;
+using geometry::Transform;
 namespace layer = physics::layer;
 
 Shape physics_shape(const level::PlacedShape& shape) {
@@ -189,8 +189,7 @@ Result<void> Game::add_door(const level::Entity& e) {
     Door d;
     d.entity_id = e.id;
     d.props = e.as<level::DoorProps>();
-    const level::Frame frame = level::upright_frame(e);
-    d.frame = {frame.origin, frame.rotation};
+    d.frame = level::upright_frame(e);
     d.opening = d.props.open;
     d.progress = d.props.open ? 1.0f : 0.0f;
     const auto index = static_cast<std::uint32_t>(doors_.size());

@@ -118,7 +118,7 @@ void Game::update_interaction(const Input& input) {
     }
     for (const Panel& k : panels_) {
         // Distance from the eye to the console's box.
-        const physics::Transform xf{k.centre, glm::angleAxis(k.yaw, Vec3(0, 1, 0))};
+        const geometry::Transform xf{k.centre, glm::angleAxis(k.yaw, Vec3(0, 1, 0))};
         const Vec3 local = xf.to_local(eye);
         const Vec3 closest = glm::clamp(local, -k.size * 0.5f, k.size * 0.5f);
         const float dist = glm::length(local - closest);

@@ -17,13 +17,14 @@ constexpr float kCylinderModelRadius = 0.5f;
 constexpr float kCylinderModelHeight = 2.0f;
 constexpr Vec3 kControlPanelModelSize{2.94f, 4.0f, 5.34f};
 
-PlacedShape placed(ShapeKind kind, const Frame& frame, const Vec3& local_centre, const Vec3& half) {
+PlacedShape placed(ShapeKind kind, const geometry::Transform& frame, const Vec3& local_centre,
+                   const Vec3& half) {
     return {kind, frame, local_centre, half};
 }
 
 // Lamp stands, cylinders and pickups keep their axes upright and unturned, whatever the entity's rotation.
 PlacedShape unturned(ShapeKind kind, const Vec3& origin, const Vec3& local_centre, const Vec3& half) {
-    return {kind, Frame{origin, kIdentity}, local_centre, half};
+    return {kind, geometry::Transform{origin, kIdentity}, local_centre, half};
 }
 
 float top_light_hang(const TopLightProps& light) {
@@ -32,15 +33,11 @@ float top_light_hang(const TopLightProps& light) {
 
 } // namespace
 
-Mat4 Frame::matrix() const {
-    return glm::translate(Mat4(1.0f), origin) * glm::mat4_cast(rotation);
-}
-
-Frame entity_frame(const Entity& entity) {
+geometry::Transform entity_frame(const Entity& entity) {
     return {entity.position, entity.orientation()};
 }
 
-Frame upright_frame(const Entity& entity) {
+geometry::Transform upright_frame(const Entity& entity) {
     return {entity.position, glm::angleAxis(radians(entity.rotation.x), Vec3(0, 1, 0))};
 }
 

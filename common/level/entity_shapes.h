@@ -3,24 +3,17 @@
 // placements. The game builds its physics bodies from these shapes, the editor its boxes and picking, the
 // renderer's level scene and the runtime's world view their model transforms, so the four cannot disagree.
 // Pure functions of the entity (and, for things that move, of the game's state), no module above level.
+#include "geometry/transform.h"
 #include "level/level.h"
 
 #include <optional>
 
 namespace ks::level {
 
-// A rigid placement: where an entity's local frame sits in the world.
-struct Frame {
-    Vec3 origin{0.0f};
-    Quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
-    Vec3 to_world(const Vec3& local) const { return origin + rotation * local; }
-    Mat4 matrix() const;
-};
-
 // The entity's position with its full orientation (yaw, pitch, roll).
-Frame entity_frame(const Entity& entity);
+geometry::Transform entity_frame(const Entity& entity);
 // The entity's position turned by its yaw only: doors, lights and props stand upright whatever their pitch.
-Frame upright_frame(const Entity& entity);
+geometry::Transform upright_frame(const Entity& entity);
 
 enum class ShapeKind : std::uint8_t {
     Box,      // half extents `half`
@@ -31,7 +24,7 @@ enum class ShapeKind : std::uint8_t {
 // A shape placed in the world: its kind and half extents, centred at `local_centre` in `frame`.
 struct PlacedShape {
     ShapeKind kind = ShapeKind::Box;
-    Frame frame;
+    geometry::Transform frame;
     Vec3 local_centre{0.0f};
     Vec3 half{0.0f};
     Vec3 centre() const { return frame.to_world(local_centre); }

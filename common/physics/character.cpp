@@ -124,7 +124,7 @@ struct Mover {
 
 } // namespace
 
-Vec3 surface_normal(const Shape& shape, const Transform& xf, const Vec3& point, const Vec3& contact_normal) {
+Vec3 surface_normal(const Shape& shape, const geometry::Transform& xf, const Vec3& point, const Vec3& contact_normal) {
     // Unrotated (most level geometry): the frame change is a translation (rotating by the identity
     // quaternion returns its input exactly, so this only skips work).
     const bool unrotated = xf.rotation == Quat(1.0f, 0.0f, 0.0f, 0.0f);

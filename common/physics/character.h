@@ -33,7 +33,7 @@ struct CharacterState {
 // One obstacle as the controller sees it: a shape placed in the world. `id` is opaque to the controller.
 struct Obstacle {
     const Shape* shape = nullptr;
-    Transform transform;
+    geometry::Transform transform;
     std::uint32_t id = 0;
     bool yaw_only = false;
     geometry::Aabb bounds{Vec3(-3.4e38f),
@@ -72,6 +72,6 @@ float sweep_capsule(const Segment& s, float radius, const Vec3& motion, const Ob
 // The normal of the obstacle's face at a point on its surface; where faces meet (a step's edge) the most
 // upward one. Ground is judged by this, not by the capsule's contact normal: a capsule resting on the edge
 // of a step touches it at an angle, yet stands on the step's flat top.
-Vec3 surface_normal(const Shape& shape, const Transform& xf, const Vec3& point, const Vec3& contact_normal);
+Vec3 surface_normal(const Shape& shape, const geometry::Transform& xf, const Vec3& point, const Vec3& contact_normal);
 
 } // namespace ks::physics

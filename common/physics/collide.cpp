@@ -94,8 +94,8 @@ void closest_segment_segment(const Vec3& p0, const Vec3& p1, const Vec3& q0, con
     }
 }
 
-std::optional<Contact> collide_convex(const Polyhedron& a, const Transform& xa, const Polyhedron& b,
-                                      const Transform& xb, SatAxes axes) {
+std::optional<Contact> collide_convex(const Polyhedron& a, const geometry::Transform& xa, const Polyhedron& b,
+                                      const geometry::Transform& xb, SatAxes axes) {
     // Work in A's frame: only B's vertices move, and A's projections on its own normals are exact.
     const Quat rel = glm::conjugate(xa.rotation) * xb.rotation;
     const Vec3 offset = xa.to_local(xb.position);
@@ -201,7 +201,7 @@ bool inside_face(const Polyhedron& p, const Polyhedron::Face& f, const Vec3& q) 
 
 } // namespace
 
-SegmentDistance segment_polyhedron_distance(const Segment& s, const Polyhedron& p, const Transform& xf) {
+SegmentDistance segment_polyhedron_distance(const Segment& s, const Polyhedron& p, const geometry::Transform& xf) {
     const Vec3 p0 = xf.to_local(s.p0), p1 = xf.to_local(s.p1), d = p1 - p0;
     // Clip the segment by every face plane: a non-empty remainder means it intersects the solid.
     float t0 = 0.0f, t1 = 1.0f;
@@ -276,7 +276,7 @@ constexpr float kCoreTouch = 1e-6f; // below this the core is treated as interse
 } // namespace
 
 std::optional<Contact> collide_capsule_polyhedron(const Segment& s, float r, const Polyhedron& p,
-                                                  const Transform& xf, float contact_margin) {
+                                                  const geometry::Transform& xf, float contact_margin) {
     const SegmentDistance sd = segment_polyhedron_distance(s, p, xf);
     if (sd.distance > kCoreTouch)
         return from_distance(sd.distance, sd.on_segment, sd.on_shape, sd.away, r, contact_margin);
@@ -318,7 +318,7 @@ namespace {
 // translation only. Rotating by the identity quaternion returns its input exactly, so both give the same
 // results; the translation-only frame just skips four quaternion rotations per call.
 struct RotatedFrame {
-    const Transform& xf;
+    const geometry::Transform& xf;
     Vec3 to_local(const Vec3& p) const { return xf.to_local(p); }
     Vec3 to_world(const Vec3& p) const { return xf.to_world(p); }
     Vec3 dir_to_world(const Vec3& d) const { return xf.dir_to_world(d); }
@@ -371,7 +371,7 @@ std::optional<Contact> capsule_box_in(const Segment& s, float r, const Vec3& hal
 }
 } // namespace
 
-std::optional<Contact> collide_capsule_box(const Segment& s, float r, const Vec3& half, const Transform& xf,
+std::optional<Contact> collide_capsule_box(const Segment& s, float r, const Vec3& half, const geometry::Transform& xf,
                                            float contact_margin) {
     if (xf.rotation == Quat(1.0f, 0.0f, 0.0f, 0.0f))
         return capsule_box_in(s, r, half, TranslatedFrame{xf.position}, contact_margin);
@@ -428,7 +428,7 @@ std::optional<Contact> collide_capsule_cylinder(const Segment& s, float r, const
 }
 
 std::optional<Contact> collide_capsule_shape(const Segment& s, float r, const Shape& shape,
-                                             const Transform& xf, float contact_margin) {
+                                             const geometry::Transform& xf, float contact_margin) {
     switch (shape.kind) {
     case ShapeKind::Box:
         if (is_yaw_only(xf.rotation))

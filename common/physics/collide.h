@@ -21,8 +21,8 @@ struct Contact {
 enum class SatAxes : std::uint8_t { FacesAndEdges, FacesOnly };
 
 // SAT between two convex polyhedra placed by their transforms. Touching (zero overlap) counts as contact.
-std::optional<Contact> collide_convex(const Polyhedron& a, const Transform& xa, const Polyhedron& b,
-                                      const Transform& xb, SatAxes axes = SatAxes::FacesAndEdges);
+std::optional<Contact> collide_convex(const Polyhedron& a, const geometry::Transform& xa, const Polyhedron& b,
+                                      const geometry::Transform& xb, SatAxes axes = SatAxes::FacesAndEdges);
 
 // A capsule is the set of points within `radius` of the segment [p0, p1] (world space).
 struct Segment {
@@ -39,15 +39,15 @@ struct SegmentDistance {
     Vec3 away{
         0.0f}; // on_segment - on_shape, computed in the polyhedron's frame (precise far from the origin)
 };
-SegmentDistance segment_polyhedron_distance(const Segment& s, const Polyhedron& p, const Transform& xf);
+SegmentDistance segment_polyhedron_distance(const Segment& s, const Polyhedron& p, const geometry::Transform& xf);
 
 // Capsule (radius r around segment s) against shapes. `contact_margin` reports contacts up to that gap
 // (penetration then is negative: the gap). All return nullopt beyond the margin.
 std::optional<Contact> collide_capsule_polyhedron(const Segment& s, float r, const Polyhedron& p,
-                                                  const Transform& xf, float contact_margin = 0.0f);
+                                                  const geometry::Transform& xf, float contact_margin = 0.0f);
 // Fast path for boxes whose rotation is a pure yaw (every wall, floor and door of a level): the upright
 // segment stays axis-aligned in the box frame. Works for any rotation only through the polyhedron path.
-std::optional<Contact> collide_capsule_box(const Segment& s, float r, const Vec3& half, const Transform& xf,
+std::optional<Contact> collide_capsule_box(const Segment& s, float r, const Vec3& half, const geometry::Transform& xf,
                                            float contact_margin = 0.0f);
 std::optional<Contact> collide_capsule_capsule(const Segment& a, float ra, const Segment& b, float rb,
                                                float contact_margin = 0.0f);
@@ -57,7 +57,7 @@ std::optional<Contact> collide_capsule_cylinder(const Segment& s, float r, const
 
 // Dispatch for a capsule against any shape (what the character controller uses).
 std::optional<Contact> collide_capsule_shape(const Segment& s, float r, const Shape& shape,
-                                             const Transform& xf, float contact_margin = 0.0f);
+                                             const geometry::Transform& xf, float contact_margin = 0.0f);
 
 // True when the rotation is a pure rotation about +y (to 1e-6), so the yaw-only fast paths apply.
 bool is_yaw_only(const Quat& q);

@@ -4,7 +4,7 @@
 #include <cmath>
 
 namespace ks::physics {
-bool ray_box(const geometry::Ray& ray, const Vec3& half, const Transform& xf, ShapeHit& hit) {
+bool ray_box(const geometry::Ray& ray, const Vec3& half, const geometry::Transform& xf, ShapeHit& hit) {
     // In the box frame, relative to its centre: the subtraction is exact for nearby points, so a box 10 km
     // from the origin is intersected as precisely as one at the origin.
     // A NaN or infinite direction would slip through the slab test below (NaN compares false) and report
@@ -35,7 +35,7 @@ bool ray_box(const geometry::Ray& ray, const Vec3& half, const Transform& xf, Sh
     return true;
 }
 
-bool ray_polyhedron(const geometry::Ray& ray, const Polyhedron& p, const Transform& xf, ShapeHit& hit) {
+bool ray_polyhedron(const geometry::Ray& ray, const Polyhedron& p, const geometry::Transform& xf, ShapeHit& hit) {
     const Vec3 o = xf.to_local(ray.origin);
     const Vec3 d = xf.dir_to_local(ray.direction);
     float tmin = -3.4e38f, tmax = 3.4e38f;
@@ -140,7 +140,7 @@ bool ray_cylinder(const geometry::Ray& ray, const Vec3& c, float radius, float h
     return true;
 }
 
-bool ray_shape(const geometry::Ray& ray, const Shape& shape, const Transform& xf, ShapeHit& hit) {
+bool ray_shape(const geometry::Ray& ray, const Shape& shape, const geometry::Transform& xf, ShapeHit& hit) {
     switch (shape.kind) {
     case ShapeKind::Box:
         return ray_box(ray, shape.half_extents, xf, hit);

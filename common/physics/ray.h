@@ -18,12 +18,12 @@ struct ShapeHit {
 };
 
 // Each returns true and fills `hit` when the ray enters the shape within [0, max_distance].
-bool ray_box(const geometry::Ray& ray, const Vec3& half, const Transform& xf, ShapeHit& hit);
-bool ray_polyhedron(const geometry::Ray& ray, const Polyhedron& p, const Transform& xf, ShapeHit& hit);
+bool ray_box(const geometry::Ray& ray, const Vec3& half, const geometry::Transform& xf, ShapeHit& hit);
+bool ray_polyhedron(const geometry::Ray& ray, const Polyhedron& p, const geometry::Transform& xf, ShapeHit& hit);
 bool ray_capsule(const geometry::Ray& ray, const Vec3& p0, const Vec3& p1, float radius, ShapeHit& hit);
 bool ray_cylinder(const geometry::Ray& ray, const Vec3& centre, float radius, float half_height,
                   ShapeHit& hit);
-bool ray_shape(const geometry::Ray& ray, const Shape& shape, const Transform& xf, ShapeHit& hit);
+bool ray_shape(const geometry::Ray& ray, const Shape& shape, const geometry::Transform& xf, ShapeHit& hit);
 
 // The exact slab test against an axis-aligned box given by centre and half extents (origin taken relative
 // to the centre, so far geometry keeps its precision), with the half-open in-plane rule.

@@ -339,7 +339,7 @@ Result<void> Shape::validate(const std::string& what) const {
     return ok();
 }
 
-geometry::Aabb Shape::bounds(const Transform& xf) const {
+geometry::Aabb Shape::bounds(const geometry::Transform& xf) const {
     if (kind == ShapeKind::Capsule || kind == ShapeKind::Cylinder)
         return {xf.position - half_extents, xf.position + half_extents};
     const Mat3 r = glm::mat3_cast(xf.rotation);

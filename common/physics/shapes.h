@@ -10,6 +10,7 @@
 #include "core/math.h"
 #include "core/result.h"
 #include "geometry/aabb.h"
+#include "geometry/transform.h"
 
 #include <array>
 #include <cstdint>
@@ -19,16 +20,6 @@
 #include <vector>
 
 namespace ks::physics {
-
-struct Transform {
-    Vec3 position{0.0f};
-    Quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
-
-    Vec3 to_world(const Vec3& local) const { return position + rotation * local; }
-    Vec3 to_local(const Vec3& world) const { return glm::conjugate(rotation) * (world - position); }
-    Vec3 dir_to_world(const Vec3& local) const { return rotation * local; }
-    Vec3 dir_to_local(const Vec3& world) const { return glm::conjugate(rotation) * world; }
-};
 
 // A convex polyhedron in local coordinates: vertices, polygonal faces (coplanar triangles merged) with
 // centre, outward unit normal and plane offset (normal·x = offset on the face), unique edges, and the edge
@@ -81,7 +72,7 @@ struct Shape {
     // Validates sizes (finite, > 0, < 1e5): a clear error instead of NaN later.
     Result<void> validate(const std::string& what) const;
     // World bounding box of the shape under `xf` (exact for boxes: |R|·half).
-    geometry::Aabb bounds(const Transform& xf) const;
+    geometry::Aabb bounds(const geometry::Transform& xf) const;
 };
 
 } // namespace ks::physics

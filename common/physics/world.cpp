@@ -131,12 +131,12 @@ bool World::enabled(BodyId id) const {
     return b && b->enabled;
 }
 
-Transform World::transform(BodyId id) const {
+geometry::Transform World::transform(BodyId id) const {
     const Body* b = get(id);
-    return b ? b->transform : Transform{};
+    return b ? b->transform : geometry::Transform{};
 }
 
-void World::set_transform(BodyId id, const Transform& xf) {
+void World::set_transform(BodyId id, const geometry::Transform& xf) {
     Body* b = get(id);
     if (!b || !is_finite(xf.position) || !is_finite(xf.rotation)) return;
     b->transform = xf;

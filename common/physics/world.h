@@ -42,7 +42,7 @@ enum class Motion : std::uint8_t { Static, Kinematic, Character };
 
 struct BodyDesc {
     Shape shape;
-    Transform transform;
+    geometry::Transform transform;
     Motion motion = Motion::Static;
     bool trigger = false; // overlaps reported, never blocks; its layers become kTrigger (plus custom bits)
     std::uint32_t layers = layer::kDefault;                          // what this body is
@@ -106,9 +106,9 @@ class World {
     void set_enabled(BodyId id, bool enabled);
     bool enabled(BodyId id) const;
 
-    Transform transform(BodyId id) const;
+    geometry::Transform transform(BodyId id) const;
     // Moves a body (kinematic doors; teleporting a character). Static bodies trigger a BVH refit later.
-    void set_transform(BodyId id, const Transform& xf);
+    void set_transform(BodyId id, const geometry::Transform& xf);
     // Position between the previous and the current step (alpha from advance()).
     Vec3 interpolated_position(BodyId id, float alpha) const;
     const Shape& shape(BodyId id) const;
@@ -166,7 +166,7 @@ class World {
         bool alive = false;
         bool enabled = true;
         bool yaw_only = false;
-        Transform transform;
+        geometry::Transform transform;
         Shape shape;
         Vec3 previous_position{0.0f};
         std::uint64_t user_data = 0;

@@ -23,7 +23,7 @@ TEST_CASE("every static body of levels/main.json is its entity's static solid sh
         for (std::uint32_t i = 0; i < world.body_count(); ++i) {
             const physics::BodyId id{i, 1};
             REQUIRE(world.valid(id));
-            const physics::Transform xf = world.transform(id);
+            const geometry::Transform xf = world.transform(id);
             // The world stores rotations normalised, so compare within float rounding.
             if (glm::length(xf.position - shape->centre()) < 1e-5f &&
                 std::abs(glm::dot(xf.rotation, shape->rotation())) > 1.0f - 1e-6f) {
@@ -54,7 +54,7 @@ TEST_CASE("door leaf bodies follow level::door_leaf_centre while the door opens"
     const Door& d = g->doors()[0];
     REQUIRE(d.progress > 0.1f);
     REQUIRE(d.progress < 0.9f);
-    const level::Frame frame = level::upright_frame(lv.entities.back());
+    const geometry::Transform frame = level::upright_frame(lv.entities.back());
     for (int side = 0; side < 2; ++side) {
         const Vec3 expected = frame.to_world(level::door_leaf_centre(d.props, side, d.progress));
         const Vec3 actual = g->world().transform(d.leaves[side]).position;

@@ -156,7 +156,7 @@ TEST_CASE("physics properties: every query is finite for random finite input") {
         const char* kind = "";
         const Polyhedron poly = random_polyhedron(rng, kind);
         const float scale = rng.chance(0.1f) ? 1e4f : 100.0f; // a level spans hundreds; far out too
-        const Transform xf{
+        const geometry::Transform xf{
             {rng.uniform(-scale, scale), rng.uniform(-scale, scale), rng.uniform(-scale, scale)},
             scene_rotation(rng)};
         const Vec3 half = random_half(rng);
@@ -183,7 +183,7 @@ TEST_CASE("physics properties: every query is finite for random finite input") {
         // Narrowphase against a second shape nearby.
         const char* kind_b = "";
         const Polyhedron other = random_polyhedron(rng, kind_b);
-        const Transform xb{xf.position + random_unit(rng) * rng.uniform(0.0f, 6.0f), random_rotation(rng)};
+        const geometry::Transform xb{xf.position + random_unit(rng) * rng.uniform(0.0f, 6.0f), random_rotation(rng)};
         if (auto k = collide_convex(poly, xf, other, xb)) {
             INFO("collide_convex " << kind << "/" << kind_b << " case " << i);
             REQUIRE(unit(k->normal));
@@ -202,7 +202,7 @@ TEST_CASE("physics properties: every query is finite for random finite input") {
                                 Shape::cylinder(half.x, half.z), Shape::wedge(half)};
         for (const Shape& shape : shapes) {
             const float margin = rng.chance(0.5f) ? 0.0f : 0.1f;
-            Transform sx = xf;
+            geometry::Transform sx = xf;
             if (shape.kind == ShapeKind::Capsule || shape.kind == ShapeKind::Cylinder)
                 sx.rotation = Quat(1, 0, 0, 0);
             if (auto k = collide_capsule_shape(s, r, shape, sx, margin)) {
@@ -235,7 +235,7 @@ TEST_CASE("physics properties: every query is finite for random finite input") {
 
 TEST_CASE("physics properties: NaN and infinite input get a clear answer, never NaN out") {
     const Vec3 nans[] = {Vec3(kNaN, 0, 0), Vec3(0, kInf, 0), Vec3(0, 0, -kInf), Vec3(kNaN)};
-    const Transform xf{{0, 0, -5}, Quat(1, 0, 0, 0)};
+    const geometry::Transform xf{{0, 0, -5}, Quat(1, 0, 0, 0)};
     const Polyhedron box = make_box_polyhedron(Vec3(1));
     for (const Vec3& bad : nans) {
         INFO("bad value " << str(bad));
@@ -394,13 +394,13 @@ TEST_CASE("physics properties: SAT agrees with a double-precision axis search an
     for (int i = 0; i < 5000; ++i) {
         const char *ka = "", *kb = "";
         const Polyhedron a = random_polyhedron(rng, ka), b = random_polyhedron(rng, kb);
-        const Transform xa{{rng.uniform(-50, 50), rng.uniform(-5, 5), rng.uniform(-50, 50)},
+        const geometry::Transform xa{{rng.uniform(-50, 50), rng.uniform(-5, 5), rng.uniform(-50, 50)},
                            scene_rotation(rng)};
         // Place b so that about half the pairs overlap: along a random direction, at a distance around
         // the sum of the bounding radii' typical support.
         const float ra = glm::length(a.bounds.max - a.bounds.min) * 0.5f;
         const float rb = glm::length(b.bounds.max - b.bounds.min) * 0.5f;
-        const Transform xb{xa.position + random_unit(rng) * rng.uniform(0.0f, 0.9f * (ra + rb)),
+        const geometry::Transform xb{xa.position + random_unit(rng) * rng.uniform(0.0f, 0.9f * (ra + rb)),
                            scene_rotation(rng)};
         const auto fast = collide_convex(a, xa, b, xb);
         const ref::Planes pa = ref::planes_of(a, DVec3(xa.position), ref::to_double(xa.rotation));
@@ -423,7 +423,7 @@ TEST_CASE("physics properties: SAT agrees with a double-precision axis search an
         CHECK(err < 1e-3 * (1.0 + std::abs(sep.value)));
         // The normal separates along its axis by the reported depth: moving A out by normal·(depth + 1e-3)
         // separates the pair in the reference.
-        const Transform moved{xa.position + fast->normal * (fast->penetration + 2e-3f), xa.rotation};
+        const geometry::Transform moved{xa.position + fast->normal * (fast->penetration + 2e-3f), xa.rotation};
         const ref::Planes moved_a = ref::planes_of(a, DVec3(moved.position), ref::to_double(moved.rotation));
         CHECK(ref::separation(a, moved_a, b, pb).value > 0.0);
     }
@@ -432,10 +432,10 @@ TEST_CASE("physics properties: SAT agrees with a double-precision axis search an
     for (int i = 0; i < 3000; ++i) {
         const char *ka = "", *kb = "";
         const Polyhedron a = random_polyhedron(rng, ka), b = random_polyhedron(rng, kb);
-        const Transform xa{{0, 0, 0}, random_rotation(rng)};
+        const geometry::Transform xa{{0, 0, 0}, random_rotation(rng)};
         const float ra = glm::length(a.bounds.max - a.bounds.min) * 0.5f;
         const float rb = glm::length(b.bounds.max - b.bounds.min) * 0.5f;
-        const Transform xb{random_unit(rng) * rng.uniform(0.0f, ra + rb), random_rotation(rng)};
+        const geometry::Transform xb{random_unit(rng) * rng.uniform(0.0f, ra + rb), random_rotation(rng)};
         const auto fast = collide_convex(a, xa, b, xb);
         const ref::Planes pa = ref::planes_of(a, DVec3(xa.position), ref::to_double(xa.rotation));
         const ref::Planes pb = ref::planes_of(b, DVec3(xb.position), ref::to_double(xb.rotation));
@@ -491,7 +491,7 @@ TEST_CASE("physics properties: capsule contacts agree with exact double-precisio
             const Vec3 half = random_half(rng, 0.05f, 3.0f);
             const Quat q =
                 which == 0 ? glm::angleAxis(rng.uniform(0.0f, 6.3f), Vec3(0, 1, 0)) : random_rotation(rng);
-            const Transform xf{at, q};
+            const geometry::Transform xf{at, q};
             what = which == 0 ? "collide_capsule_box (yaw)" : "collide_capsule_polyhedron (box)";
             fast = which == 0 ? collide_capsule_box(s, r, half, xf)
                               : collide_capsule_polyhedron(s, r, make_box_polyhedron(half), xf);
@@ -705,7 +705,7 @@ TEST_CASE("regression: capsule contact normals are unit length far from the orig
         Segment core;
         float radius;
         Shape shape;
-        Transform xf;
+        geometry::Transform xf;
     };
     const Case cases[] = {
         {"cylinder at 9000 (random case 110)",

@@ -107,7 +107,7 @@ TEST_CASE("the drawn door leaf moves exactly as far as the physics leaf") {
     d.width = 7.0f;
     d.open_offset = 2.5f;
     const Mat4 model = door_model_matrix(door);
-    const Frame frame = upright_frame(door);
+    const geometry::Transform frame = upright_frame(door);
     for (float open : {0.0f, 0.3f, 1.0f}) {
         // The model's +x leaf origin moved by the shift in model units, then placed by the model matrix...
         const Vec3 drawn_shift = Vec3(model * Vec4(door_model_leaf_shift(d, open), 0, 0, 0));

@@ -11,7 +11,7 @@ using namespace ks;
 using namespace ks::physics;
 
 namespace {
-Transform at(Vec3 p, Quat q = Quat(1, 0, 0, 0)) {
+geometry::Transform at(Vec3 p, Quat q = Quat(1, 0, 0, 0)) {
     return {p, q};
 }
 Quat yaw(float a) {
@@ -40,12 +40,12 @@ TEST_CASE("SAT: crossed edges — face-only SAT reports a false contact, full SA
     // other: their AABBs and all face projections overlap, but an edge×edge axis separates them.
     const Polyhedron bar = make_box_polyhedron({3, 0.5f, 0.5f});
     const Quat roll = glm::angleAxis(kPi / 4, Vec3(1, 0, 0));
-    const Transform a = at({0, 0, 0}, roll);
-    const Transform b = at({0, 1.5f, 0}, yaw(kPi / 2) * roll);
+    const geometry::Transform a = at({0, 0, 0}, roll);
+    const geometry::Transform b = at({0, 1.5f, 0}, yaw(kPi / 2) * roll);
     CHECK(collide_convex(bar, a, bar, b, SatAxes::FacesOnly)); // false contact
     CHECK_FALSE(collide_convex(bar, a, bar, b, SatAxes::FacesAndEdges));
     // Closer: a true edge-edge contact, with the exact penetration 2·0.5·√2 − 1.3.
-    const Transform b2 = at({0, 1.2f, 0}, yaw(kPi / 2) * roll);
+    const geometry::Transform b2 = at({0, 1.2f, 0}, yaw(kPi / 2) * roll);
     auto c = collide_convex(bar, a, bar, b2);
     REQUIRE(c);
     CHECK(c->penetration == doctest::Approx(std::sqrt(2.0f) - 1.2f).epsilon(1e-4));
@@ -81,7 +81,7 @@ TEST_CASE("capsule against a yaw-only box: the fast path agrees with the general
     const Vec3 half(2.0f, 1.0f, 0.5f);
     const Polyhedron poly = make_box_polyhedron(half);
     for (int i = 0; i < 2000; ++i) {
-        const Transform xf =
+        const geometry::Transform xf =
             at({rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)}, yaw(rng.uniform(0, 6.28f)));
         const Vec3 c(rng.uniform(-4, 4), rng.uniform(-4, 4), rng.uniform(-4, 4));
         const Segment s{c - Vec3(0, 0.5f, 0), c + Vec3(0, 0.5f, 0)};

@@ -19,7 +19,7 @@ geometry::Ray ray(Vec3 o, Vec3 d, float max = 1e6f) {
 Quat yaw(float a) {
     return glm::angleAxis(a, Vec3(0, 1, 0));
 }
-double ref_box(const geometry::Ray& r, Vec3 half, const Transform& xf) {
+double ref_box(const geometry::Ray& r, Vec3 half, const geometry::Transform& xf) {
     return reference::ray_box(DVec3(r.origin), DVec3(r.direction),
                               {DVec3(xf.position), glm::dquat(xf.rotation), DVec3(half)}, r.max_distance);
 }
@@ -27,7 +27,7 @@ double ref_box(const geometry::Ray& r, Vec3 half, const Transform& xf) {
 
 TEST_CASE("ray vs box: entry distance and normal; inside and on the surface") {
     const Vec3 half(1, 2, 3);
-    const Transform xf{{10, 0, 0}, Quat(1, 0, 0, 0)};
+    const geometry::Transform xf{{10, 0, 0}, Quat(1, 0, 0, 0)};
     ShapeHit h;
     REQUIRE(ray_box(ray({0, 0, 0}, {1, 0, 0}), half, xf, h));
     CHECK(h.distance == doctest::Approx(9.0f));
@@ -48,7 +48,7 @@ TEST_CASE(
     int hits = 0;
     for (int i = 0; i < 20000; ++i) {
         const Vec3 half(rng.uniform(0.1f, 3), rng.uniform(0.1f, 3), rng.uniform(0.1f, 3));
-        const Transform xf{{rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-2, 2)},
+        const geometry::Transform xf{{rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-2, 2)},
                            glm::normalize(Quat(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1),
                                                rng.uniform(-1, 1)))};
         Vec3 d(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
@@ -76,7 +76,7 @@ TEST_CASE("rays through shared edges and vertices of adjacent faces: exactly one
     // A hull made of triangles (a cube from 12 triangles' worth of vertices) hit exactly on a face diagonal,
     // an edge and a vertex, from many directions.
     const Polyhedron cube = make_box_polyhedron({1, 1, 1});
-    const Transform xf{{0, 0, 0}, Quat(1, 0, 0, 0)};
+    const geometry::Transform xf{{0, 0, 0}, Quat(1, 0, 0, 0)};
     int missed = 0;
     for (int i = 0; i < 64; ++i) {
         const float a = 0.01f + 1.5f * i / 64.0f;
@@ -99,7 +99,7 @@ TEST_CASE("rays through shared edges and vertices of adjacent faces: exactly one
     }
     // Rotated pair sharing a face (yaw 30°): a sweep of rays across the seam never slips through.
     const Quat q = yaw(0.5236f);
-    const Transform left{q * Vec3(-1, 0, 0), q}, right{q * Vec3(1, 0, 0), q};
+    const geometry::Transform left{q * Vec3(-1, 0, 0), q}, right{q * Vec3(1, 0, 0), q};
     int slipped = 0;
     for (int i = -500; i <= 500; ++i) {
         const Vec3 seam = q * Vec3(0, 0, i * 0.001f);
@@ -112,7 +112,7 @@ TEST_CASE("rays through shared edges and vertices of adjacent faces: exactly one
 
 TEST_CASE("rays parallel to a face and lying in its plane: half-open, so stacked boxes share a face") {
     const Vec3 half(1, 1, 1);
-    const Transform lower{{0, 0, 0}, Quat(1, 0, 0, 0)}, upper{{0, 2, 0}, Quat(1, 0, 0, 0)};
+    const geometry::Transform lower{{0, 0, 0}, Quat(1, 0, 0, 0)}, upper{{0, 2, 0}, Quat(1, 0, 0, 0)};
     ShapeHit h;
     const geometry::Ray in_plane = ray({-5, 1, 0}, {1, 0, 0}); // along y = 1, the shared face
     const int count = ray_box(in_plane, half, lower, h) + ray_box(in_plane, half, upper, h);
@@ -131,7 +131,7 @@ TEST_CASE("grazing rays at 1e-6 rad and geometry 10 km from the origin keep mill
         // From 1 mm above the floor's top, descending at `angle`: hits at 1e-3/tan(angle) (up to 1 km).
         // The distance is ill-conditioned (one rounding of the 0.5-unit coordinates, 3e-8, moves it by
         // 3e-8/angle), so the bound is millimetre plus that conditioning.
-        const Transform xf{{0, -0.5f, 0}, Quat(1, 0, 0, 0)};
+        const geometry::Transform xf{{0, -0.5f, 0}, Quat(1, 0, 0, 0)};
         const geometry::Ray r = ray({-4000, 1e-3f, 0}, {std::cos(angle), -std::sin(angle), 0}, 1e7f);
         ShapeHit h;
         const bool hit = ray_box(r, half, xf, h);
@@ -145,7 +145,7 @@ TEST_CASE("grazing rays at 1e-6 rad and geometry 10 km from the origin keep mill
     Rng rng(3);
     for (int i = 0; i < 2000; ++i) {
         const Vec3 far(10000.0f, 20.0f, -10000.0f);
-        const Transform xf{far + Vec3(rng.uniform(-5, 5), 0, rng.uniform(-5, 5)), yaw(rng.uniform(0, 3))};
+        const geometry::Transform xf{far + Vec3(rng.uniform(-5, 5), 0, rng.uniform(-5, 5)), yaw(rng.uniform(0, 3))};
         const geometry::Ray r =
             ray(far + Vec3(rng.uniform(-20, 20), rng.uniform(-20, 20), rng.uniform(-20, 20)),
                 Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)) + Vec3(1e-3f), 100.0f);

@@ -58,7 +58,7 @@ TEST_CASE("a static wall moved or added into a walking character's cached neighb
             const float z = w.transform(p).position.z;
             // A wall 0.3 ahead of the capsule's front (inside the cached box's margin): moved there, or a
             // new one added. A stale cache would let the character walk through it.
-            const Transform ahead{{0, 8, z - 1.0f - 0.3f - 0.25f}, Quat(1, 0, 0, 0)};
+            const geometry::Transform ahead{{0, 8, z - 1.0f - 0.3f - 0.25f}, Quat(1, 0, 0, 0)};
             if (add_new)
                 add_box(w, ahead.position, {10, 8, 0.25f});
             else
