@@ -10,6 +10,7 @@
 #include "core/random.h"
 #include "game/game.h"
 #include "level/level_io.h"
+#include "soak/soak.h"
 
 #include <cstdio>
 
@@ -84,10 +85,11 @@ int shots_command(int argc, const char* const* argv) {
         std::fprintf(stderr, "ks_bench shots: %s\n", cli.error().str().c_str());
         return 2;
     }
-    if (auto unknown = cli->unknown({"level", "shots", "seconds", "seed", "json"}); !unknown.empty()) {
+    if (auto unknown = cli->unknown({"level", "shots", "seconds", "seed", "json", "columns", "rows"});
+        !unknown.empty()) {
         std::fprintf(stderr,
-                     "ks_bench shots: unknown option --%s (known: --level FILE --shots N --seconds S "
-                     "--seed S --json)\n",
+                     "ks_bench shots: unknown option --%s (known: --level FILE|large --columns C --rows R "
+                     "--shots N --seconds S --seed S --json)\n",
                      unknown[0].c_str());
         return 2;
     }
@@ -95,7 +97,16 @@ int shots_command(int argc, const char* const* argv) {
     const int count = std::stoi(cli->get("shots").value_or("20000"));
     const double seconds = std::stod(cli->get("seconds").value_or("1.0"));
     const auto seed = static_cast<std::uint64_t>(std::stoull(cli->get("seed").value_or("7")));
-    auto lv = level::load_level_file(level_file);
+    // --level large: the soak benchmark's generated grid of rooms (--columns x --rows), many more boxes.
+    Result<level::Level> lv = Error("no level");
+    if (level_file == "large") {
+        soak::LargeLevelOptions large;
+        large.columns = std::max(1, std::stoi(cli->get("columns").value_or("6")));
+        large.rows = std::max(1, std::stoi(cli->get("rows").value_or("5")));
+        lv = soak::large_level(large);
+    } else {
+        lv = level::load_level_file(level_file);
+    }
     if (!lv) {
         std::fprintf(stderr, "ks_bench shots: %s\n", lv.error().str().c_str());
         return 1;

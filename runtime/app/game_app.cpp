@@ -110,7 +110,7 @@ void GameApp::load(const std::filesystem::path& path, bool dojo, Screen then) {
                  for (const auto& e : s->level.entities)
                      if (const auto* r = e.try_as<level::RobotProps>(); r && r->dummy) {
                          s->dummy.feet = e.position;
-                         s->dummy.model_yaw = game::robot_model_yaw(radians(e.rotation.x));
+                         s->dummy.yaw = radians(e.rotation.x);
                      }
                  s->dummy.pose = &s->dojo_controller->pose();
                  return {};

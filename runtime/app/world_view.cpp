@@ -3,7 +3,6 @@
 #include "level/entity_shapes.h"
 #include "render/view_model.h"
 
-#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -166,8 +165,7 @@ void WorldView::fill(const game::Game& game, float alpha, float fov_degrees, con
         robot_model_->emit(root, robot_pose_, scratch_, instances_, glow);
     }
     if (dummy && dummy->pose) {
-        const Mat4 root =
-            glm::rotate(glm::translate(Mat4(1.0f), dummy->feet), dummy->model_yaw, Vec3(0, 1, 0));
+        const Mat4 root = level::robot_model_matrix(dummy->feet, dummy->yaw);
         robot_binding_.write_locals(*dummy->pose, robot_pose_.local);
         robot_model_->emit(root, robot_pose_, scratch_, instances_);
     }

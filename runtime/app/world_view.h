@@ -25,7 +25,7 @@ level::Level static_part(const level::Level& level);
 // The Dojo's test robot: where it stands (from its level entity) and the pose the DojoController gives.
 struct DojoDummy {
     Vec3 feet{0.0f};
-    float model_yaw = 0.0f;
+    float yaw = 0.0f; // the entity's yaw (radians); level::robot_model_matrix turns the model to face it
     const anim::Pose* pose = nullptr;
 };
 
