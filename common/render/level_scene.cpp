@@ -41,6 +41,16 @@ namespace {
 Mat4 entity_matrix(const level::Entity& e) {
     return level::entity_frame(e).matrix();
 }
+
+// The colour, brightness and reach both light entities share; position and aim are the caller's.
+Light light_from(const level::LightProps& props, Light::Type type) {
+    Light light;
+    light.type = type;
+    light.color = to_linear(props.color);
+    light.intensity = props.intensity;
+    light.range = props.range;
+    return light;
+}
 } // namespace
 
 MeshData build_surface_mesh(const level::Entity& e) {
@@ -116,10 +126,7 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
             const auto& f = e.as<level::FloorLightProps>();
             Prop p = make_prop(e, &assets.model("floor_light"), level::floor_light_model_matrix(e));
             p.light_on = f.light.on;
-            p.light.type = Light::Type::Spot;
-            p.light.color = to_linear(f.light.color);
-            p.light.intensity = f.light.intensity;
-            p.light.range = f.light.range;
+            p.light = light_from(f.light, Light::Type::Spot);
             p.light.cos_outer = std::cos(radians(f.cone_angle));
             p.light.cos_inner = std::cos(radians(f.cone_angle * 0.7f));
             std::vector<Mat4> world;
@@ -136,10 +143,7 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
             const auto& t = e.as<level::TopLightProps>();
             Prop p = make_prop(e, &assets.model("top_light"), level::top_light_model_matrix(e));
             p.light_on = t.light.on;
-            p.light.type = Light::Type::Point;
-            p.light.color = to_linear(t.light.color);
-            p.light.intensity = t.light.intensity;
-            p.light.range = t.light.range;
+            p.light = light_from(t.light, Light::Type::Point);
             p.light.position = e.position - Vec3(0.0f, t.hang, 0.0f);
             scene->props_.push_back(p);
             break;

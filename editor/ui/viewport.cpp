@@ -194,24 +194,23 @@ void EditorApp::draw_axis_grid(ImDrawList* draw, Vec2 origin) const {
                                                                                : IM_COL32(170, 180, 200, 34);
     };
     const Vec3 at = view_.camera.position + view_.forward();
-    for (int i = 0; i < plan.u_count; ++i) { // lines of constant u: vertical on screen
-        const float c = plan.u_first + static_cast<float>(i) * plan.step;
-        Vec3 p = at;
-        p[plan.u_axis] = c;
-        Vec2 s;
-        if (!view_.project(p, s)) continue;
-        draw->AddLine(ImVec2(origin.x + s.x, origin.y), ImVec2(origin.x + s.x, origin.y + size.y),
-                      colour(c, plan.v_axis));
-    }
-    for (int i = 0; i < plan.v_count; ++i) { // lines of constant v: horizontal on screen
-        const float c = plan.v_first + static_cast<float>(i) * plan.step;
-        Vec3 p = at;
-        p[plan.v_axis] = c;
-        Vec2 s;
-        if (!view_.project(p, s)) continue;
-        draw->AddLine(ImVec2(origin.x, origin.y + s.y), ImVec2(origin.x + size.x, origin.y + s.y),
-                      colour(c, plan.u_axis));
-    }
+    // Lines of constant u are vertical on screen, lines of constant v horizontal.
+    auto lines = [&](int axis, float first, int count, int other_axis, bool vertical) {
+        for (int i = 0; i < count; ++i) {
+            const float c = first + static_cast<float>(i) * plan.step;
+            Vec3 p = at;
+            p[axis] = c;
+            Vec2 s;
+            if (!view_.project(p, s)) continue;
+            const ImVec2 from =
+                vertical ? ImVec2(origin.x + s.x, origin.y) : ImVec2(origin.x, origin.y + s.y);
+            const ImVec2 to = vertical ? ImVec2(origin.x + s.x, origin.y + size.y)
+                                       : ImVec2(origin.x + size.x, origin.y + s.y);
+            draw->AddLine(from, to, colour(c, other_axis));
+        }
+    };
+    lines(plan.u_axis, plan.u_first, plan.u_count, plan.v_axis, true);
+    lines(plan.v_axis, plan.v_first, plan.v_count, plan.u_axis, false);
     char text[48];
     std::snprintf(text, sizeof(text), "grid %g", plan.step);
     draw->AddText(ImVec2(origin.x + 10, origin.y + 26), IM_COL32(200, 210, 230, 200), text);
