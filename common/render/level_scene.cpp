@@ -28,6 +28,17 @@ Environment environment_from_settings(const level::Settings& s) {
     return env;
 }
 
+Environment preview_environment(float fog_density) {
+    Environment env;
+    env.sky_color = Vec3(0.35f, 0.38f, 0.45f);
+    env.ground_color = Vec3(0.12f, 0.11f, 0.1f);
+    env.sun_direction = Vec3(-0.4f, -1.0f, -0.5f);
+    env.sun_color = Vec3(0.55f, 0.52f, 0.48f);
+    env.fog_color = Vec3(0.02f, 0.025f, 0.035f);
+    env.fog_density = fog_density;
+    return env;
+}
+
 geometry::Camera player_start_camera(const level::Level& level, float aspect) {
     geometry::Camera cam;
     cam.position = level.player_start.position + Vec3(0.0f, 3.0f, 0.0f);

@@ -21,6 +21,8 @@ MeshData build_surface_mesh(const level::Entity& entity);
 // Linear colour from a level's sRGB colour.
 Vec3 to_linear(const level::Color& c);
 Environment environment_from_settings(const level::Settings& settings);
+// The neutral studio light of model previews (the runtime's turntable, the editor's dojo).
+Environment preview_environment(float fog_density);
 // The player's eye at the level start: feet + 3 (the reference's eye height), looking along the start yaw.
 geometry::Camera player_start_camera(const level::Level& level, float aspect);
 

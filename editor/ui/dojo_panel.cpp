@@ -3,6 +3,7 @@
 #include "anim/gltf_rig.h"
 #include "core/paths.h"
 #include "model/dojo_keys.h"
+#include "render/level_scene.h"
 #include "render/mesh_data.h"
 
 #include <imgui.h>
@@ -131,13 +132,7 @@ void DojoPanel::render(float width, float height, double dt) {
     camera.yaw = orbit_yaw_;
     camera.pitch = -orbit_pitch_;
     camera.position = target - camera.forward() * 8.5f;
-    render::Environment env;
-    env.sky_color = Vec3(0.35f, 0.38f, 0.45f);
-    env.ground_color = Vec3(0.12f, 0.11f, 0.1f);
-    env.sun_direction = Vec3(-0.4f, -1.0f, -0.5f);
-    env.sun_color = Vec3(0.55f, 0.52f, 0.48f);
-    env.fog_color = Vec3(0.02f, 0.025f, 0.035f);
-    env.fog_density = 0.02f;
+    const render::Environment env = render::preview_environment(0.02f);
     debug_.clear();
     for (int i = -3; i <= 3; ++i) { // a floor grid, one unit apart, to read motion against
         debug_.line(Vec3(i, 0.01f, -3), Vec3(i, 0.01f, 3), Vec4(0.6f, 0.7f, 0.8f, 0.25f));

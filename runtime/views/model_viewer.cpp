@@ -1,6 +1,7 @@
 #include "views/model_viewer.h"
 
 #include "core/paths.h"
+#include "render/level_scene.h"
 #include "render/mesh_data.h"
 #include "render/model.h"
 
@@ -22,12 +23,7 @@ ModelViewer::ModelViewer(render::AssetLibrary& assets, const std::string& name,
     render::append_box(floor, Vec3(0, -0.05f, 0), Vec3(40, 0.1f, 40), Mat4(1.0f), 2.0f);
     floor_ = std::make_unique<render::GpuMesh>(floor);
     floor_material_ = &assets.surface("tiles");
-    environment.sky_color = Vec3(0.35f, 0.38f, 0.45f);
-    environment.ground_color = Vec3(0.12f, 0.11f, 0.1f);
-    environment.sun_direction = Vec3(-0.4f, -1.0f, -0.5f);
-    environment.sun_color = Vec3(0.55f, 0.52f, 0.48f);
-    environment.fog_color = Vec3(0.02f, 0.025f, 0.035f);
-    environment.fog_density = 0.04f;
+    environment = render::preview_environment(0.04f);
     const auto& b = model_->bounds;
     radius_ = std::max(1.0f, glm::length(b.max - b.min)) * 1.1f;
     lights.push_back({render::Light::Type::Point, Vec3(2.5f, 3.0f, 3.0f) * (radius_ / 3.0f), Vec3(0, -1, 0),
