@@ -12,6 +12,25 @@ namespace {
 
 constexpr int kCylinderSides = 16;
 constexpr float kAbsurdCoordinate = 1e5f; // beyond this a level is a typo, not a place
+constexpr float kThinnestHalf = 0.01f;    // drawing in never makes a solid thinner than 0.02
+
+// Recast marks a cell solid when a triangle touches any part of it, so every solid grows by up to a cell
+// (half on average) and a doorway shrinks by up to two. Drawing each solid in by half a cell horizontally
+// makes a cell solid about when its centre is inside the shape: no bias, half a cell either way. Thin
+// walls keep a sliver, and a sliver still fills the cells it passes through, so they still block.
+// Floors and stairs are surfaces, not obstacles: drawing them in would open seams where they meet.
+bool is_obstacle(level::EntityType type) {
+    return type != level::EntityType::Floor && type != level::EntityType::Stair;
+}
+
+level::PlacedShape drawn_in(level::PlacedShape shape, float cell_size) {
+    const auto inset = [&](float half) {
+        return std::max(std::min(half, kThinnestHalf), half - cell_size * 0.5f);
+    };
+    shape.half.x = inset(shape.half.x);
+    shape.half.z = shape.kind == level::ShapeKind::Cylinder ? shape.half.x : inset(shape.half.z);
+    return shape;
+}
 
 // A convex solid as corner points and faces (each a loop of corner indices, any winding).
 struct ConvexSolid {
@@ -195,7 +214,7 @@ Result<InputGeometry> collect_input(const level::Level& level, const NavSettings
         if (!sane(e.rotation) || !sane_shape(*shape))
             return Error(entity_label(level, e) + " has a non-finite or absurd position, rotation or size",
                          Location{}, "fix its numbers in the editor");
-        append_solid(solid_of(*shape), in);
+        append_solid(solid_of(is_obstacle(e.type()) ? drawn_in(*shape, settings.cell_size) : *shape), in);
     }
     if (in.triangles.empty())
         return Error("level '" + level.name + "' has no solid shapes, so nothing to walk on", Location{},
