@@ -89,8 +89,10 @@ class NavMesh {
     // Nearest polygon to p within the query extents (0 when none); writes the point on it.
     std::uint64_t nearest_polygon(const Vec3& p, const Vec3& half_extents, Vec3& on_mesh) const;
     // Fills corridor_ with the polygons from `from` to (the reachable point nearest) `to`; start and end
-    // are the snapped end points.
-    PathStatus corridor(const Vec3& from, const Vec3& to, Vec3& start, Vec3& end, int& polygon_count);
+    // are the snapped end points. Shortest uses any-angle search where the settings ask for it.
+    enum class CorridorMode : std::uint8_t { Shortest, AnyCorridor };
+    PathStatus corridor(const Vec3& from, const Vec3& to, CorridorMode mode, Vec3& start, Vec3& end,
+                        int& polygon_count);
     // String-pulls the corridor into straight_points_; returns the number of corners (0 on failure).
     int straighten(const Vec3& start, const Vec3& end, int polygon_count);
     int find_door(int entity_id) const; // index into doors_, -1 when none

@@ -6,6 +6,7 @@
 #include <DetourNavMeshQuery.h>
 
 #include <cfloat>
+#include <climits>
 #include <cmath>
 
 namespace ks::nav {
@@ -22,15 +23,28 @@ std::uint64_t NavMesh::nearest_polygon(const Vec3& p, const Vec3& half_extents, 
     return ref;
 }
 
-PathStatus NavMesh::corridor(const Vec3& from, const Vec3& to, Vec3& start, Vec3& end, int& polygon_count) {
+PathStatus NavMesh::corridor(const Vec3& from, const Vec3& to, CorridorMode mode, Vec3& start, Vec3& end,
+                             int& polygon_count) {
     polygon_count = 0;
     const dtPolyRef start_ref = static_cast<dtPolyRef>(nearest_polygon(from, settings_.query_extents, start));
     if (start_ref == 0) return PathStatus::StartOffMesh;
     const dtPolyRef end_ref = static_cast<dtPolyRef>(nearest_polygon(to, settings_.query_extents, end));
     if (end_ref == 0) return PathStatus::EndOffMesh;
-    const dtStatus status =
-        query_->findPath(start_ref, end_ref, &start.x, &end.x, filter_.get(), corridor_.data(),
-                         &polygon_count, static_cast<int>(corridor_.size()));
+    dtStatus status = 0;
+    const int capacity = static_cast<int>(corridor_.size());
+    if (mode == CorridorMode::Shortest && settings_.any_angle_paths) {
+        // Plain A* over polygons scores a polygon by its edge midpoints and can pick a corridor that
+        // string-pulls longer than the shortest; any-angle search (raycasts while expanding) finds the
+        // shortest. One update with no iteration limit runs the search to the end.
+        status = query_->initSlicedFindPath(start_ref, end_ref, &start.x, &end.x, filter_.get(),
+                                            DT_FINDPATH_ANY_ANGLE);
+        if (dtStatusInProgress(status)) status = query_->updateSlicedFindPath(INT_MAX, nullptr);
+        if (dtStatusSucceed(status))
+            status = query_->finalizeSlicedFindPath(corridor_.data(), &polygon_count, capacity);
+    } else {
+        status = query_->findPath(start_ref, end_ref, &start.x, &end.x, filter_.get(), corridor_.data(),
+                                  &polygon_count, capacity);
+    }
     if (dtStatusFailed(status) || polygon_count == 0) {
         polygon_count = 1; // Detour refused: stay on the start polygon
         corridor_[0] = start_ref;
@@ -60,7 +74,7 @@ PathStatus NavMesh::find_path(const Vec3& from, const Vec3& to, std::vector<Vec3
     out.clear();
     Vec3 start(0.0f), end(0.0f);
     int polygons = 0;
-    const PathStatus status = corridor(from, to, start, end, polygons);
+    const PathStatus status = corridor(from, to, CorridorMode::Shortest, start, end, polygons);
     if (status == PathStatus::StartOffMesh || status == PathStatus::EndOffMesh) return status;
     const int corners = straighten(start, end, polygons);
     if (corners == 0) { // string pulling failed: the snapped end points are still a usable hint
@@ -81,7 +95,8 @@ std::optional<Vec3> NavMesh::nearest_point(const Vec3& p, const Vec3& half_exten
 std::optional<float> NavMesh::path_length(const Vec3& from, const Vec3& to) {
     Vec3 start(0.0f), end(0.0f);
     int polygons = 0;
-    if (corridor(from, to, start, end, polygons) != PathStatus::Found) return std::nullopt;
+    if (corridor(from, to, CorridorMode::Shortest, start, end, polygons) != PathStatus::Found)
+        return std::nullopt;
     const int corners = straighten(start, end, polygons);
     if (corners == 0) return std::nullopt;
     float length = 0.0f;
@@ -96,7 +111,7 @@ std::optional<float> NavMesh::path_length(const Vec3& from, const Vec3& to) {
 bool NavMesh::reachable(const Vec3& from, const Vec3& to) {
     Vec3 start(0.0f), end(0.0f);
     int polygons = 0;
-    return corridor(from, to, start, end, polygons) == PathStatus::Found;
+    return corridor(from, to, CorridorMode::AnyCorridor, start, end, polygons) == PathStatus::Found;
 }
 
 bool NavMesh::walkable_line(const Vec3& from, const Vec3& to) {

@@ -34,6 +34,9 @@ struct NavSettings {
 
     // Queries look for the nearest polygon within this box around a point (half extents).
     Vec3 query_extents{2.0f, 2.0f, 2.0f};
+    // find_path and path_length search any-angle (Detour's DT_FINDPATH_ANY_ANGLE): shortest paths for
+    // a higher query cost (docs/performance.md); false gives Detour's plain polygon A*.
+    bool any_angle_paths = true;
     int max_path_polygons = 4096; // the longest corridor a path query follows
     int max_search_nodes = 65535; // Detour's node pool (its maximum)
 };
