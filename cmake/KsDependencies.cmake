@@ -42,3 +42,12 @@ if(KS_BUILD_GL)
         target_include_directories(ks_assimp SYSTEM INTERFACE ${ASSIMP_INCLUDE_DIRS})
     endif()
 endif()
+
+# Recast/Detour from librecast-dev: Debian ships headers and shared libraries but no CMake or pkg-config
+# file, so they are found by name. SYSTEM includes: their headers are not held to our warnings.
+find_path(RECAST_INCLUDE_DIR Recast.h PATH_SUFFIXES recastnavigation REQUIRED)
+find_library(RECAST_LIBRARY Recast REQUIRED)
+find_library(DETOUR_LIBRARY Detour REQUIRED)
+add_library(ks_recast INTERFACE)
+target_include_directories(ks_recast SYSTEM INTERFACE ${RECAST_INCLUDE_DIR})
+target_link_libraries(ks_recast INTERFACE ${RECAST_LIBRARY} ${DETOUR_LIBRARY})
