@@ -10,6 +10,7 @@
 #include "core/result.h"
 #include "game/caption.h"
 #include "game/game_types.h"
+#include "game/patrol.h"
 #include "level/entity_shapes.h"
 #include "level/level.h"
 #include "physics/world.h"
@@ -85,6 +86,8 @@ struct Robot {
     bool wander_turning = true;
     float wander_from = 0.0f, wander_to = 0.0f, wander_length = 1.4f;
     bool collided = false;
+    // Along props.patrol, walked instead of the wander while idle when the robot has one.
+    PatrolProgress patrol;
     // Model yaw for the renderer: the level yaw + 90° (the reference's rotY; the model faces +X).
     float model_yaw() const { return robot_model_yaw(yaw); }
     bool alive() const { return mode != RobotMode::Dying && mode != RobotMode::Dead; }

@@ -1,4 +1,4 @@
-// Robot AI (seed-facts §5.2): idle wander; alert on seeing the player inside the minimum eye radius; follow
+// Robot AI (seed-facts §5.2): idle wander, or the patrol route where the level gives one (patrol.h); alert on seeing the player inside the minimum eye radius; follow
 // inside the maximum one (hysteresis); shoot pose inside shooting distance; shots on a cooldown with a
 // probability; angry after being shot; death clip, then explosion and removal. Robots never hurt robots.
 #include "game/game.h"
@@ -26,6 +26,19 @@ float turn_toward(float yaw, float target, float max_step) {
 
 float yaw_of(const Vec3& d) {
     return std::atan2(-d.x, -d.z); // level convention: 0 faces -z
+}
+
+// Idle along the patrol route: turn toward the next point and walk at the wander speed, slower while still
+// turning (no walking sideways), standing while the route says to wait.
+void walk_patrol(Robot& r, physics::MovementState& mv, float speed, float dt) {
+    Vec3 velocity(0.0f);
+    if (const auto heading = patrol_heading(r.props.patrol, r.patrol, r.feet, dt)) {
+        r.yaw = turn_toward(r.yaw, yaw_of(*heading), r.props.rotation_velocity * dt);
+        const Vec3 forward(-std::sin(r.yaw), 0.0f, -std::cos(r.yaw));
+        velocity = *heading * (speed * std::max(0.0f, glm::dot(forward, *heading)));
+    }
+    mv.velocity.x = velocity.x + r.knockback.x;
+    mv.velocity.z = velocity.z + r.knockback.z;
 }
 
 } // namespace
@@ -118,8 +131,12 @@ void Game::update_robot(std::size_t index, float dt) {
             r.mode = RobotMode::Idle;
             r.mode_time = 0.0f;
             r.wander_length = 0.0f;
+            r.patrol.waiting = 0.0f; // back to the point it was heading for, then on along the route
         }
-        robot_wander(r, index, dt);
+        if (r.props.patrol.active())
+            walk_patrol(r, mv, settings_.robot_wander_speed, dt);
+        else
+            robot_wander(r, index, dt);
         return;
     }
     if (!engaged_before) {

@@ -58,6 +58,11 @@ std::uint64_t Game::state_hash() const {
         h.add(r.cooldown);
         h.add(r.wander_to);
         h.add(r.wander_length);
+        if (r.props.patrol.active()) { // robots without a route hash exactly as before patrols existed
+            h.add(r.patrol.target);
+            h.add(r.patrol.direction);
+            h.add(r.patrol.waiting);
+        }
         h.add(robot_anims_[i].ticks());
         h.add(robot_anims_[i].current_clip());
     }

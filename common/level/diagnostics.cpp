@@ -11,6 +11,7 @@ void DiagnosticSink::add(Diagnostic::Severity severity, jsonio::TextPosition pos
                          std::string message, std::string hint) {
     Diagnostic d;
     d.severity = severity;
+    if (!subject_.empty()) message = subject_ + ": " + message;
     d.error = Error(std::move(message), jsonio::location_at(file_, pos, path), std::move(hint));
     list_.push_back(std::move(d));
 }
@@ -43,6 +44,12 @@ std::vector<Diagnostic> DiagnosticSink::take_sorted() {
     std::stable_sort(list_.begin(), list_.end(),
                      [&](const Diagnostic& a, const Diagnostic& b) { return key(a) < key(b); });
     return std::move(list_);
+}
+
+std::string entity_subject(const Entity& entity) {
+    std::string out = std::string(type_name(entity.type())) + " " + std::to_string(entity.id);
+    if (!entity.name.empty()) out += " (\"" + entity.name + "\")";
+    return out;
 }
 
 std::string range_text(const FieldInfo& info) {

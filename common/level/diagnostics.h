@@ -26,6 +26,11 @@ class DiagnosticSink {
     void mark_reported(const std::string& path) { reported_.insert(path); }
     bool already_reported(const std::string& path) const { return reported_.count(path) > 0; }
 
+    // While set, every message starts with it ("robot 12 (\"Guard\"): ..."), for problems deep inside one
+    // entity whose JSON path alone does not say which robot it is.
+    void set_subject(std::string subject) { subject_ = std::move(subject); }
+    const std::string& subject() const { return subject_; }
+
     bool has_errors() const;
     const std::string& file() const { return file_; }
     // Diagnostics in document order (those without a position last, in the order they were found).
@@ -38,7 +43,26 @@ class DiagnosticSink {
     const jsonio::PositionMap* positions_;
     std::vector<Diagnostic> list_;
     std::set<std::string> reported_;
+    std::string subject_;
 };
+
+// Sets a sink's subject for the lifetime of the scope.
+class SubjectScope {
+  public:
+    SubjectScope(DiagnosticSink& sink, std::string subject) : sink_(sink), previous_(sink.subject()) {
+        sink_.set_subject(std::move(subject));
+    }
+    ~SubjectScope() { sink_.set_subject(previous_); }
+    SubjectScope(const SubjectScope&) = delete;
+    SubjectScope& operator=(const SubjectScope&) = delete;
+
+  private:
+    DiagnosticSink& sink_;
+    std::string previous_;
+};
+
+// "robot 12 (\"Guard\")", or "robot 12" for an unnamed one: how messages name an entity.
+std::string entity_subject(const Entity& entity);
 
 // "0.01 .. 10000 units": a field's valid range as messages show it.
 std::string range_text(const FieldInfo& info);

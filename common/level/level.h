@@ -24,6 +24,9 @@ struct FieldInfo {
     double min = -1e6;
     double max = 1e6;
     const char* unit = "";
+    // Fields added after version 1 shipped are written only when they differ from their default, so files
+    // saved before the field existed re-save byte for byte. Such a default is part of the format for good.
+    bool omitted_at_default = false;
 };
 
 // A colour as designers write it ("#ffcc80"), held as sRGB components in 0..1.
@@ -38,6 +41,21 @@ struct Choice {
     std::vector<std::string> options;
     bool operator==(const Choice& o) const { return value == o.value; }
 };
+
+// A robot's patrol: the points it walks in order while idle, instead of wandering. No points means no
+// patrol. `mode` "loop" goes from the last point back to the first, "ping_pong" turns round at either end;
+// the robot stands `wait` seconds at every point it reaches.
+struct Patrol {
+    std::vector<Vec3> points;
+    Choice mode{"loop", {"loop", "ping_pong"}};
+    float wait = 0.0f;
+    bool active() const { return !points.empty(); }
+    bool ping_pong() const { return mode.value == "ping_pong"; }
+    bool operator==(const Patrol&) const = default;
+};
+inline constexpr int kMaxPatrolPoints = 256; // a route, not a polyline export: more is a mistake
+inline constexpr double kMaxPatrolWait = 600; // seconds, the same bound as angry_duration
+inline constexpr double kPatrolReach = 50; // how far outside the level's extent a point may lie, units
 
 // ---- per-type properties -------------------------------------------------------------------------------
 // Positions: walls, stairs, doors, lights, robots, pickups, cylinders and the panel stand on `position`
@@ -154,6 +172,9 @@ struct RobotProps {
     float angry_duration = 10.0f;      // after being shot, follows regardless of distance
     float damage = 10.0f;              // damage per hit on the player
     bool dummy = false;                // the dojo's test robot: no AI, no collision, keys 1-5 play animations
+    float search_time = 8.0f;          // after losing the player: keeps hunting, then searches, then idles
+    float hearing_radius = 30.0f;      // shots and explosions inside this path distance alert the robot
+    Patrol patrol;                     // walked while idle; none: random wander
     template <class V>
     void visit(V& v) {
         v.field(health, {"health", "Hit points", 1, 1e5});
@@ -167,6 +188,9 @@ struct RobotProps {
         v.field(angry_duration, {"angry_duration", "After being shot, follows regardless of distance for this long", 0, 600, "s"});
         v.field(damage, {"damage", "Damage dealt to the player per hit", 0, 1000});
         v.field(dummy, {"dummy", "Animation dummy (the dojo's test robot): no AI, cannot be shot or collided with; keys 1-5 play its animations"});
+        v.field(search_time, {"search_time", "After losing the player, hunts and then searches this long before returning to idle or patrol", 0, 600, "s", true});
+        v.field(hearing_radius, {"hearing_radius", "Shots and explosions within this distance along the navigation mesh alert the robot", 0, 1000, "units", true});
+        v.field(patrol, {"patrol", "Points walked in order while idle, instead of wandering", -1e5, 1e5, "units", true});
     }
     bool operator==(const RobotProps&) const = default;
 };

@@ -2,6 +2,7 @@
 
 #include "jsonio/number_text.h"
 #include "jsonio/suggest.h"
+#include "level/patrol_checks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -52,7 +53,8 @@ void check_float(float v, const std::string& shown, const std::string& path, con
 // The read-only twin of FieldReader: walks the same visit() list and checks each value.
 class FieldChecker {
   public:
-    FieldChecker(std::string path, DiagnosticSink& sink) : path_(std::move(path)), sink_(sink) {}
+    FieldChecker(std::string path, DiagnosticSink& sink, std::string subject = {})
+        : path_(std::move(path)), sink_(sink), subject_(std::move(subject)) {}
 
     void field(float& v, const FieldInfo& info) {
         check_float(v, number_text(v), path_of(info), info, sink_);
@@ -84,17 +86,23 @@ class FieldChecker {
             sink_.error(path_of(info), "unknown " + std::string(info.name) + " \"" + v.value + "\"",
                         "valid: " + join(v.options));
     }
+    // A patrol's problems lie deep inside one robot, so their messages name it.
+    void field(Patrol& v, const FieldInfo& info) {
+        SubjectScope scope(sink_, subject_);
+        check_patrol(v, path_of(info), sink_);
+    }
 
   private:
     std::string path_of(const FieldInfo& info) const { return member_path(path_, info.name); }
     std::string path_;
     DiagnosticSink& sink_;
+    std::string subject_;
 };
 
 // visit() is a non-const member (the same list serves readers that write); the checker only reads.
 template <class T>
-void check_fields(const T& object, const std::string& path, DiagnosticSink& sink) {
-    FieldChecker checker(path, sink);
+void check_fields(const T& object, const std::string& path, DiagnosticSink& sink, std::string subject = {}) {
+    FieldChecker checker(path, sink, std::move(subject));
     const_cast<T&>(object).visit(checker);
 }
 
@@ -114,7 +122,8 @@ void check_entity(const Entity& entity, const std::string& path, DiagnosticSink&
                    "ids are whole numbers >= 1");
     check_placement(entity.position, entity.rotation, path, sink);
     const std::string props_path = member_path(path, "props");
-    std::visit([&](const auto& props) { check_fields(props, props_path, sink); }, entity.props);
+    std::visit([&](const auto& props) { check_fields(props, props_path, sink, entity_subject(entity)); },
+               entity.props);
 
     if (const auto* robot = entity.try_as<RobotProps>()) {
         if (robot->eye_radius_min > robot->eye_radius_max)
@@ -161,6 +170,7 @@ void check_level(const Level& level, DiagnosticSink& sink, const std::vector<siz
                            std::to_string(std::max(level.next_id, largest_id + 1)));
         }
     }
+    check_patrol_reach(level, sink, source_index);
     if (level.next_id <= largest_id)
         sink.error("next_id",
                    "next_id " + std::to_string(level.next_id) + " is not above the largest id " +

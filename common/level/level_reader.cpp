@@ -3,6 +3,7 @@
 #include "jsonio/describe.h"
 #include "jsonio/number_text.h"
 #include "jsonio/suggest.h"
+#include "level/patrol_checks.h"
 
 #include <algorithm>
 #include <cctype>
@@ -155,6 +156,16 @@ bool read_bool(const Json& value, const std::string& path, DiagnosticSink& sink,
     return true;
 }
 
+bool expect_object(const Json& value, const std::string& path, std::string_view what, DiagnosticSink& sink) {
+    if (value.is_object()) return true;
+    sink.error(path, "expected " + std::string(what) + " as an object {...}, found " + describe_value(value),
+               "write it as {\"key\": value, ...}; docs/level-format.md lists every field");
+    return false;
+}
+
+void read_patrol(const Json& value, const std::string& path, const FieldInfo& info, DiagnosticSink& sink,
+                 Patrol& out);
+
 // Walks a props struct's visit() list: reads each field that is present, leaves the others at their
 // defaults, then warns about members that no field claimed.
 class FieldReader {
@@ -186,6 +197,15 @@ class FieldReader {
     void field(Choice& v, const FieldInfo& info) {
         if (const Json* j = member(info)) read_string(*j, path_of(info), sink_, v.value);
     }
+    // A patrol's problems lie deep inside one robot, so their messages name it.
+    void field(Patrol& v, const FieldInfo& info) {
+        const Json* j = member(info);
+        if (!j) return;
+        SubjectScope scope(sink_, subject_);
+        read_patrol(*j, path_of(info), info, sink_, v);
+    }
+
+    void set_subject(std::string subject) { subject_ = std::move(subject); }
 
     // Names that are read elsewhere (an entity's id, type, ...), so they are not "unknown".
     void claim(std::string name) { known_.push_back(std::move(name)); }
@@ -212,19 +232,56 @@ class FieldReader {
     std::string path_;
     DiagnosticSink& sink_;
     std::vector<std::string> known_;
+    std::string subject_;
 };
-
-bool expect_object(const Json& value, const std::string& path, std::string_view what, DiagnosticSink& sink) {
-    if (value.is_object()) return true;
-    sink.error(path, "expected " + std::string(what) + " as an object {...}, found " + describe_value(value),
-               "write it as {\"key\": value, ...}; docs/level-format.md lists every field");
-    return false;
-}
 
 std::vector<std::string> type_names() {
     std::vector<std::string> names;
     for (EntityType t : all_types()) names.emplace_back(type_name(t));
     return names;
+}
+
+// Read whole or not at all: half a route would send a robot somewhere nobody meant.
+void read_patrol(const Json& value, const std::string& path, const FieldInfo& info, DiagnosticSink& sink,
+                 Patrol& out) {
+    if (!expect_object(value, path, "patrol", sink)) return;
+    Patrol patrol;
+    bool complete = true;
+    FieldReader reader(value, path, sink);
+    reader.claim("points");
+    const std::string points_path = member_path(path, "points");
+    const auto points = value.find("points");
+    if (points == value.end()) {
+        sink.error(points_path, "missing required field \"points\"",
+                   "write \"points\": [[x, y, z], ...], or remove \"patrol\" to let the robot wander");
+        complete = false;
+    } else if (!points->is_array()) {
+        sink.error(points_path, "expected an array of [x, y, z] points, found " + describe_value(*points),
+                   "write \"points\": [[x, y, z], ...]");
+        complete = false;
+    } else if (points->size() > static_cast<size_t>(kMaxPatrolPoints)) {
+        sink.error(points_path,
+                   "patrol has " + std::to_string(points->size()) + " points; at most " +
+                       std::to_string(kMaxPatrolPoints),
+                   "a patrol is a route of a few points; keep the corners and drop the rest");
+        complete = false;
+    } else {
+        if (points->empty())
+            sink.warning(points_path, "patrol has no points, so the robot wanders",
+                         "add points, or remove \"patrol\"");
+        for (size_t i = 0; i < points->size(); ++i) {
+            Vec3 point(0.0f);
+            complete &= read_vec<3>((*points)[i], element_path(points_path, i), info, sink, point);
+            patrol.points.push_back(point);
+        }
+    }
+    reader.field(patrol.mode, {"mode", "loop: last point back to the first; ping_pong: back and forth"});
+    reader.field(patrol.wait, {"wait", "Seconds the robot stands at each point", 0, kMaxPatrolWait, "s"});
+    reader.warn_unknown("patrol");
+    if (complete)
+        out = std::move(patrol);
+    else
+        check_patrol_mode_and_wait(patrol, path, sink); // the checks after loading see no patrol
 }
 
 Settings read_settings(const Json& json, const std::string& path, DiagnosticSink& sink) {
@@ -302,6 +359,7 @@ std::optional<Entity> read_entity(const Json& json, const std::string& path, Dia
         const std::string props_path = member_path(path, "props");
         if (expect_object(*props, props_path, "props", sink)) {
             FieldReader props_reader(*props, props_path, sink);
+            props_reader.set_subject(entity_subject(entity));
             std::visit([&](auto& p) { p.visit(props_reader); }, entity.props);
             props_reader.warn_unknown(std::string(type_name(entity.type())));
         }

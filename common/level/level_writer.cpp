@@ -21,6 +21,16 @@ Json vec_json(const glm::vec<N, float>& v) {
     return array;
 }
 
+Json patrol_json(const Patrol& patrol) {
+    Json json = Json::object();
+    Json points = Json::array();
+    for (const Vec3& p : patrol.points) points.push_back(vec_json(p));
+    json["points"] = std::move(points);
+    json["mode"] = patrol.mode.value;
+    json["wait"] = number(patrol.wait);
+    return json;
+}
+
 class FieldWriter {
   public:
     explicit FieldWriter(Json& object) : object_(object) {}
@@ -32,9 +42,22 @@ class FieldWriter {
     void field(Vec3& v, const FieldInfo& info) { object_[info.name] = vec_json(v); }
     void field(Color& v, const FieldInfo& info) { object_[info.name] = color_to_hex(v); }
     void field(Choice& v, const FieldInfo& info) { object_[info.name] = v.value; }
+    // No patrol is no key at all (random wander), so robots without one save as they always did.
+    void field(Patrol& v, const FieldInfo& info) {
+        if (v.active()) object_[info.name] = patrol_json(v);
+    }
 
   private:
     Json& object_;
+};
+
+// Collects the names of the fields that are left out of a file while they hold their default.
+struct OmittableFields {
+    std::vector<std::string> names;
+    template <class T>
+    void field(T&, const FieldInfo& info) {
+        if (info.omitted_at_default) names.emplace_back(info.name);
+    }
 };
 
 // visit() is a non-const member (the same list serves readers); writing only reads the values.
@@ -43,6 +66,17 @@ Json fields_json(const T& object) {
     Json json = Json::object();
     FieldWriter writer(json);
     const_cast<T&>(object).visit(writer);
+    OmittableFields omittable;
+    T defaults{};
+    defaults.visit(omittable);
+    if (!omittable.names.empty()) {
+        Json default_json = Json::object();
+        FieldWriter default_writer(default_json);
+        defaults.visit(default_writer);
+        for (const std::string& name : omittable.names)
+            if (json.contains(name) && default_json.contains(name) && json[name] == default_json[name])
+                json.erase(name);
+    }
     return json;
 }
 

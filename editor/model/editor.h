@@ -96,6 +96,16 @@ class Editor {
     Result<void> set_player_start(const level::PlayerStart& start);
     Result<void> rename_level(std::string name);
 
+    // ---- robot patrols (editor_patrol.cpp; each one undoable step; the robot is named by id) ----
+    // Adds after index `after` (at the end when none; -1 puts it first).
+    Result<void> patrol_add(int id, Vec3 point, std::optional<int> after = std::nullopt);
+    // A drag passes a merge key, so the whole drag is one step.
+    Result<void> patrol_move(int id, int index, Vec3 point, std::string merge_key = {});
+    // Removing the last point removes the patrol: the robot wanders again.
+    Result<void> patrol_remove(int id, int index);
+    Result<void> patrol_set_mode(int id, std::string_view mode);
+    Result<void> patrol_set_wait(int id, float seconds, std::string merge_key = {});
+
     bool undo();
     bool redo();
     // A drag or compound edit as one step.
@@ -134,6 +144,9 @@ class Editor {
     // Builds one LevelChange updating every selected entity with `edit`; nothing changes if any edit fails.
     Result<void> modify_selection(std::string name, const std::function<Result<void>(level::Entity&)>& edit,
                                   std::string merge_key = {});
+    // One LevelChange updating robot `id`'s patrol with `edit`; nothing changes if it fails.
+    Result<void> edit_patrol(int id, std::string name, const std::function<Result<void>(level::Patrol&)>& edit,
+                             std::string merge_key = {});
     void execute(std::unique_ptr<LevelChange> change, std::vector<int> selection_after);
     Result<SaveReport> write_to(const std::filesystem::path& path);
     void replace_level(level::Level level, std::filesystem::path path);

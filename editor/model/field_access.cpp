@@ -61,12 +61,15 @@ void store(T& target, const FieldValue& value) {
         target = std::get<T>(value);
 }
 
+// A robot's patrol is a list, not one value: it is edited point by point (editor_patrol.cpp), so the
+// by-name field access below leaves it out.
 struct Describer {
     std::vector<FieldDescriptor> out;
     template <class T>
     void field(T& value, const level::FieldInfo& info) {
         out.push_back(describe(value, info));
     }
+    void field(level::Patrol&, const level::FieldInfo&) {}
 };
 
 // Calls fn(value, descriptor) for the field called `name`; `found` says whether there was one.
@@ -81,6 +84,7 @@ struct Finder {
         found = true;
         fn(value, describe(value, info));
     }
+    void field(level::Patrol&, const level::FieldInfo&) {}
 };
 
 template <class Visitable, class F>

@@ -49,6 +49,7 @@ enum class ScriptOp {
     Commit,
     Cancel,
     Fix,
+    Patrol,
     Recover,
     ExpectCount,
     ExpectValid,
@@ -56,6 +57,7 @@ enum class ScriptOp {
     ExpectNoIssue,
     ExpectSelected,
     ExpectField,
+    ExpectPatrol,
     ExpectDirty,
     ExpectClean,
 };

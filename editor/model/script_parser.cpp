@@ -54,10 +54,13 @@ class LineParser {
             {"commit", ScriptOp::Commit, &LineParser::no_arguments, nullptr},
             {"cancel", ScriptOp::Cancel, &LineParser::no_arguments, nullptr},
             {"fix", ScriptOp::Fix, &LineParser::fix, "fix RULE"},
+            {"patrol", ScriptOp::Patrol, &LineParser::patrol,
+             "patrol ID add X,Y,Z [after INDEX] | patrol ID move INDEX X,Y,Z | patrol ID remove INDEX | "
+             "patrol ID mode loop|ping_pong | patrol ID wait SECONDS"},
             {"recover", ScriptOp::Recover, &LineParser::recover, "recover accept|decline"},
             {"expect", ScriptOp::ExpectValid, &LineParser::expect,
              "expect count TYPE N | valid | issue RULE [ID] | no_issue RULE | selected N | "
-             "field ID FIELD VALUE | dirty | clean"},
+             "field ID FIELD VALUE | patrol ID POINTS | dirty | clean"},
         };
         step_.line = line_no_;
         const std::string_view word = tokens_[0].text;
@@ -67,7 +70,7 @@ class LineParser {
             0, "unknown command '" + std::string(word) + "'",
             "commands: new open save place select move nudge rotate scale set reset setting player_start "
             "level_name delete duplicate copy paste undo redo grid snap lock unlock hide show begin commit "
-            "cancel fix recover expect");
+            "cancel fix patrol recover expect");
     }
 
   private:
@@ -329,6 +332,56 @@ class LineParser {
         return step_;
     }
 
+    // ---- robot patrols: ids[0] is the robot, text the action, count the point index, vec the point;
+    // for add, has_number says an "after INDEX" was given (in count) ---------------------------------------
+
+    Result<ScriptStep> patrol(ScriptOp op, const char* usage) {
+        step_.op = op;
+        if (tokens_.size() < 3) return fail(tokens_.size(), "missing words", usage);
+        if (!to_int(tokens_[1].text, step_.count) || step_.count < 1)
+            return fail(1, "expected the robot's id", usage);
+        step_.ids = {step_.count};
+        step_.count = 0;
+        const std::string_view action = tokens_[2].text;
+        step_.text = std::string(action);
+        if (action == "add") {
+            if (tokens_.size() != 4 && tokens_.size() != 6)
+                return fail(tokens_.size(), "wrong number of words", usage);
+            if (auto r = vec(3, step_.vec); !r) return r.error();
+            if (tokens_.size() == 6) {
+                if (tokens_[4].text != "after") return fail(4, "expected 'after'", usage);
+                if (!to_int(tokens_[5].text, step_.count) || step_.count < -1)
+                    return fail(5, "expected a point index (-1 puts the point first)", usage);
+                step_.has_number = true;
+            }
+            return step_;
+        }
+        if (action == "move" || action == "remove") {
+            if (auto r = need(action == "move" ? 5 : 4, action == "move" ? 5 : 4, usage); !r)
+                return r.error();
+            if (!to_int(tokens_[3].text, step_.count) || step_.count < 0)
+                return fail(3, "expected a point index (0 is the first)", usage);
+            if (action == "move")
+                if (auto r = vec(4, step_.vec); !r) return r.error();
+            return step_;
+        }
+        if (action == "mode") {
+            if (auto r = need(4, 4, usage); !r) return r.error();
+            step_.text2 = std::string(tokens_[3].text);
+            if (step_.text2 != "loop" && step_.text2 != "ping_pong")
+                return fail(3, "unknown patrol mode '" + step_.text2 + "'", "modes: loop, ping_pong");
+            return step_;
+        }
+        if (action == "wait") {
+            if (auto r = need(4, 4, usage); !r) return r.error();
+            if (!to_float(tokens_[3].text, step_.number) || step_.number < 0)
+                return fail(3, "expected seconds (0 or more)", usage);
+            return step_;
+        }
+        return fail(2, "unknown patrol action '" + step_.text + "'",
+                    "actions: add, move, remove, mode, wait");
+    }
+
     // ---- expectations ---------------------------------------------------------------------------------
 
     Result<ScriptStep> expect(ScriptOp, const char* usage) {
@@ -353,6 +406,16 @@ class LineParser {
             return step_;
         }
         if (w == "issue" || w == "no_issue") return expect_issue(w == "issue", usage);
+        if (w == "patrol") {
+            step_.op = ScriptOp::ExpectPatrol;
+            if (auto r = need(4, 4, usage); !r) return r.error();
+            int id = 0;
+            if (!to_int(tokens_[2].text, id) || id < 1) return fail(2, "expected an entity id", usage);
+            step_.ids = {id};
+            if (!to_int(tokens_[3].text, step_.count) || step_.count < 0)
+                return fail(3, "expected a count of points", usage);
+            return step_;
+        }
         if (w == "field") {
             step_.op = ScriptOp::ExpectField;
             if (tokens_.size() < 5) return fail(tokens_.size(), "missing words", usage);

@@ -67,6 +67,8 @@ class Runner {
         case ScriptOp::LevelName:
         case ScriptOp::Fix:
             return run_field_edit(s);
+        case ScriptOp::Patrol:
+            return run_patrol_edit(s);
         case ScriptOp::Undo:
         case ScriptOp::Redo:
         case ScriptOp::Begin:
@@ -86,6 +88,7 @@ class Runner {
         case ScriptOp::ExpectNoIssue:
         case ScriptOp::ExpectSelected:
         case ScriptOp::ExpectField:
+        case ScriptOp::ExpectPatrol:
         case ScriptOp::ExpectDirty:
         case ScriptOp::ExpectClean:
             return run_expectation(s);
@@ -216,6 +219,17 @@ class Runner {
         return ok();
     }
 
+    // A robot's patrol route (the parser checked the action's words).
+    Result<void> run_patrol_edit(const ScriptStep& s) {
+        const int id = s.ids.front();
+        if (s.text == "add")
+            return editor_.patrol_add(id, s.vec, s.has_number ? std::optional<int>(s.count) : std::nullopt);
+        if (s.text == "move") return editor_.patrol_move(id, s.count, s.vec);
+        if (s.text == "remove") return editor_.patrol_remove(id, s.count);
+        if (s.text == "mode") return editor_.patrol_set_mode(id, s.text2);
+        return editor_.patrol_set_wait(id, s.number);
+    }
+
     // Applies every quick fix of one rule, re-validating after each (a fix may resolve other issues).
     Result<void> fix(Rule rule) {
         for (int guard = 0; guard < 10000; ++guard) {
@@ -319,6 +333,8 @@ class Runner {
                               std::to_string(s.count));
         case ScriptOp::ExpectField:
             return expect_field(s);
+        case ScriptOp::ExpectPatrol:
+            return expect_patrol(s);
         case ScriptOp::ExpectDirty:
             return expect(editor_.has_unsaved_changes(), "the document is clean");
         case ScriptOp::ExpectClean:
@@ -377,6 +393,17 @@ class Runner {
                                                   format_field_value(*actual) + ", expected " + s.text2);
         }
         return Error("no field " + s.text);
+    }
+
+    Result<void> expect_patrol(const ScriptStep& s) {
+        const level::Entity* e = editor_.level().find(s.ids.front());
+        if (!e) return Error("no entity with id " + std::to_string(s.ids.front()));
+        const auto* robot = e->try_as<level::RobotProps>();
+        if (!robot) return Error("entity " + std::to_string(e->id) + " is not a robot");
+        const size_t n = robot->patrol.points.size();
+        return expect(n == static_cast<size_t>(s.count), "robot " + std::to_string(e->id) + " has " +
+                                                             std::to_string(n) + " patrol points, expected " +
+                                                             std::to_string(s.count));
     }
 
     const Script& script_;

@@ -8,8 +8,9 @@
 namespace ks::editor::script_tokens {
 namespace {
 
-constexpr Rule kRules[] = {Rule::Format,  Rule::PlayerStart, Rule::ControlPanel, Rule::WallOverlap,
-                           Rule::Support, Rule::StairSlope,  Rule::DoorGap,      Rule::Reachability};
+constexpr Rule kRules[] = {Rule::Format,      Rule::PlayerStart,  Rule::ControlPanel,
+                           Rule::WallOverlap, Rule::Support,      Rule::StairSlope,
+                           Rule::DoorGap,     Rule::Reachability, Rule::Patrol};
 
 } // namespace
 

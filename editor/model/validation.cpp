@@ -1,6 +1,7 @@
 #include "model/validation.h"
 
 #include "level/level_io.h"
+#include "model/patrol_validation.h"
 #include "model/reachability.h"
 #include "model/xz_grid.h"
 
@@ -346,6 +347,8 @@ const char* rule_name(Rule rule) {
         return "door_gap";
     case Rule::Reachability:
         return "reachability";
+    case Rule::Patrol:
+        return "patrol";
     }
     return "?";
 }
@@ -366,6 +369,7 @@ std::vector<Issue> validate_design(const Level& level, const ValidationOptions& 
     check_support(level, solids, options, out);
     check_stairs(level, options, out);
     check_doors(level, solids, out);
+    check_patrol_support(level, options, out);
     if (options.check_reachability) check_reachability(level, options, out);
     return out;
 }

@@ -19,17 +19,26 @@ enum class Rule {
     StairSlope,   // steeper than the character can climb
     DoorGap,      // a door that does not sit in a gap between walls
     Reachability, // the control panel cannot be walked to from the player start
+    Patrol,       // a robot's patrol point is not on a floor or stair surface
 };
 const char* rule_name(Rule rule);
 
 enum class IssueSeverity { Warning, Error };
 
 struct QuickFix {
-    enum class Kind { None, MoveEntity, MovePlayerStart, DeleteEntity, SetField } kind = Kind::None;
+    enum class Kind {
+        None,
+        MoveEntity,
+        MovePlayerStart,
+        DeleteEntity,
+        SetField,
+        MovePatrolPoint
+    } kind = Kind::None;
     std::string label;   // "Drop to floor", shown on the button
-    Vec3 position{0.0f}; // MoveEntity / MovePlayerStart
+    Vec3 position{0.0f}; // MoveEntity / MovePlayerStart / MovePatrolPoint
     std::string field;   // SetField
     FieldValue value;    // SetField
+    int index = 0;       // MovePatrolPoint: which point of the issue's robot
 };
 
 struct Issue {

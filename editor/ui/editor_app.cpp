@@ -323,6 +323,7 @@ void EditorApp::menu_bar() {
         ImGui::MenuItem("Light ranges", nullptr, &overlays_.lights);
         ImGui::MenuItem("Robot eye / shooting radii", nullptr, &overlays_.robots);
         ImGui::MenuItem("Player start", nullptr, &overlays_.player_start);
+        ImGui::MenuItem("All patrol routes", nullptr, &overlays_.patrols);
         ImGui::MenuItem("Ceilings", nullptr, &overlays_.ceilings);
         ImGui::EndMenu();
     }

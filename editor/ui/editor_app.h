@@ -48,6 +48,7 @@ struct Overlays {
     bool lights = true;
     bool robots = true;
     bool player_start = true;
+    bool patrols = false; // every robot's patrol route; the selected robot's is always shown
     bool outlines =
         true; // in the axis views: walls, doors and stairs outlined, so the plan reads at a glance
     bool ceilings = false; // off by default: ceilings would hide the rooms from an editor camera above them

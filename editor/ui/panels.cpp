@@ -7,10 +7,63 @@
 #include <cctype>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 
 namespace ks::editor::ui {
 
 namespace {
+using Report = std::function<void(const Result<void>&, const char*)>;
+
+// A robot's patrol: mode, wait and one row per point (x, y, z; add after; remove). Every change is an
+// Editor patrol edit, so each is one undo step (a dragged number merges into one).
+void patrol_section(Editor& editor, const level::Entity& robot, const Report& report) {
+    const level::Patrol& patrol = robot.as<level::RobotProps>().patrol;
+    const int id = robot.id;
+    if (!ImGui::CollapsingHeader("Patrol", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (!patrol.active()) {
+        ImGui::TextDisabled("No patrol: the robot wanders");
+        if (ImGui::Button("Add patrol point here")) report(editor.patrol_add(id, robot.position), "patrol");
+        return;
+    }
+    int mode = patrol.ping_pong() ? 1 : 0;
+    if (ImGui::Combo("mode", &mode, "loop\0ping_pong\0"))
+        report(editor.patrol_set_mode(id, mode == 1 ? "ping_pong" : "loop"), "patrol mode");
+    float wait = patrol.wait;
+    if (ImGui::DragFloat("wait (s)", &wait, 0.05f, 0.0f, static_cast<float>(level::kMaxPatrolWait), "%.2f"))
+        report(editor.patrol_set_wait(id, wait, "inspector:patrol.wait"), "patrol wait");
+    if (ImGui::IsItemDeactivatedAfterEdit()) editor.end_merging();
+    for (int i = 0; i < static_cast<int>(patrol.points.size()); ++i) {
+        ImGui::PushID(i);
+        Vec3 point = patrol.points[static_cast<size_t>(i)];
+        ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 70.0f);
+        char label[16];
+        std::snprintf(label, sizeof label, "%d", i);
+        if (ImGui::DragFloat3(label, &point.x, 0.1f, 0.0f, 0.0f, "%.2f"))
+            report(editor.patrol_move(id, i, point, "inspector:patrol." + std::to_string(i)), "patrol point");
+        if (ImGui::IsItemDeactivatedAfterEdit()) editor.end_merging();
+        ImGui::SameLine();
+        if (ImGui::SmallButton("+")) {
+            // A new point halfway to the next one (or a step on from the last), where it is easy to drag.
+            const size_t next = static_cast<size_t>(i) + 1;
+            const Vec3 at = next < patrol.points.size()
+                                ? (patrol.points[static_cast<size_t>(i)] + patrol.points[next]) * 0.5f
+                                : patrol.points[static_cast<size_t>(i)] + Vec3(2, 0, 0);
+            report(editor.patrol_add(id, at, i), "patrol add");
+            ImGui::PopID();
+            break; // the list changed under the loop
+        }
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Add a point after this one");
+        ImGui::SameLine();
+        if (ImGui::SmallButton("x")) {
+            report(editor.patrol_remove(id, i), "patrol remove");
+            ImGui::PopID();
+            break; // the list changed under the loop
+        }
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Remove this point");
+        ImGui::PopID();
+    }
+}
+
 constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                                          ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBringToFrontOnFocus;
 
@@ -338,6 +391,9 @@ void EditorApp::inspector_panel(float x, float y, float w, float h) {
         }
         ImGui::EndTable();
     }
+    if (selected.size() == 1 && primary.try_as<level::RobotProps>())
+        patrol_section(editor_, primary,
+                       [this](const Result<void>& r, const char* what) { report(r, what); });
     ImGui::Spacing();
     if (ImGui::Button("Duplicate")) report(editor_.duplicate(), "duplicate");
     ImGui::SameLine();

@@ -1,6 +1,6 @@
 // The 3D viewport: the level drawn by the game's renderer into the panel's own target, overlays (grid,
-// selection, collision bounds, light ranges, robot radii, player start), the camera, picking, box select,
-// placing from the palette and the gizmo.
+// selection, collision bounds, light ranges, robot radii, patrol routes, player start), the camera,
+// picking, box select, placing from the palette and the gizmo.
 #include "core/files.h"
 #include "level/level_io.h"
 #include "ui/editor_app.h"
@@ -60,6 +60,23 @@ void circle(render::DebugDraw& draw, const Vec3& centre, float radius, const Vec
         draw.line(prev, p, colour);
         prev = p;
     }
+}
+
+// A patrol route: a small diamond on a post at each point (the first larger), joined in walking order, the
+// last back to the first for a loop.
+void patrol_route(render::DebugDraw& draw, const level::Patrol& patrol, bool selected) {
+    const Vec4 colour = selected ? Vec4(0.25f, 0.95f, 1.0f, 1.0f) : Vec4(0.25f, 0.8f, 0.95f, 0.55f);
+    const Vec3 lift(0, 0.15f, 0);
+    for (size_t i = 0; i < patrol.points.size(); ++i) {
+        const Vec3 p = patrol.points[i] + lift;
+        const float r = i == 0 ? 0.6f : 0.4f;
+        const Vec3 corners[4] = {p + Vec3(r, 0, 0), p + Vec3(0, 0, r), p - Vec3(r, 0, 0), p - Vec3(0, 0, r)};
+        for (int k = 0; k < 4; ++k) draw.line(corners[k], corners[(k + 1) % 4], colour);
+        draw.line(p, p + Vec3(0, 1.2f, 0), colour);
+        if (i + 1 < patrol.points.size()) draw.line(p, patrol.points[i + 1] + lift, colour);
+    }
+    if (!patrol.ping_pong() && patrol.points.size() > 2)
+        draw.line(patrol.points.back() + lift, patrol.points.front() + lift, colour);
 }
 
 } // namespace
@@ -155,6 +172,8 @@ void EditorApp::draw_overlays() {
                 circle(debug_, base, r->shooting_distance, Vec4(1.0f, 0.25f, 0.2f, 0.8f), 48);
             }
         }
+        if (const auto* r = e.try_as<level::RobotProps>(); r && (selected || overlays_.patrols))
+            patrol_route(debug_, r->patrol, selected);
     }
     if (overlays_.player_start) {
         const auto& ps = doc.level.player_start;

@@ -71,6 +71,16 @@ class RandomFiller {
     void field(Choice& v, const FieldInfo&) {
         v.value = v.options[rng_.below(static_cast<std::uint32_t>(v.options.size()))];
     }
+    // Points are offsets from the robot (random_level adds its position): a patrol stays near its robot.
+    // No points is no patrol, which the file leaves out whole: mode and wait then keep their defaults.
+    void field(Patrol& v, const FieldInfo&) {
+        v = {};
+        v.points.resize(rng_.below(4));
+        if (v.points.empty()) return;
+        for (Vec3& p : v.points) p = {random_float(rng_, -20, 20), 0.0f, random_float(rng_, -20, 20)};
+        field(v.mode, {"mode", ""});
+        v.wait = random_float(rng_, 0, 5);
+    }
 
   private:
     Rng& rng_;
@@ -100,7 +110,10 @@ Level level_with_every_type() {
     auto& top_light = level.add(EntityType::TopLight, {0, 16, 20}, "Top light").as<TopLightProps>();
     top_light = {{{128 / 255.0f, 1, 1}, 1.25f, 30, true}, 1.5f};
     auto& robot = level.add(EntityType::Robot, {54, 6, -37}, "Robot").as<RobotProps>();
-    robot = {150, 9, 7, 12, 18, 26, 0.8f, 0.65f, 12, 15, true};
+    robot = {150, 9, 7, 12, 18, 26, 0.8f, 0.65f, 12, 15, true, 6.5f, 24, {}};
+    robot.patrol.points = {{54, 6, -37}, {60, 6, -37}, {60, 6, -31.5f}};
+    robot.patrol.mode.value = "ping_pong";
+    robot.patrol.wait = 1.5f;
     auto& pickup = level.add(EntityType::Pickup, {-2, 6, -82}, "Pickup").as<PickupProps>();
     pickup.kind.value = "shield";
     pickup.amount = 25;
@@ -141,6 +154,8 @@ Level random_level(Rng& rng, int entity_count) {
         e.props =
             default_props(static_cast<EntityType>(rng.below(static_cast<std::uint32_t>(EntityType::Count))));
         std::visit([&](auto& props) { props.visit(filler); }, e.props);
+        if (auto* robot = e.try_as<RobotProps>())
+            for (Vec3& p : robot->patrol.points) p += e.position;
         if (auto* robot = e.try_as<RobotProps>(); robot && robot->eye_radius_min > robot->eye_radius_max)
             std::swap(robot->eye_radius_min, robot->eye_radius_max);
         level.entities.push_back(std::move(e));

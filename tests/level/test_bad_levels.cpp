@@ -132,6 +132,14 @@ const std::vector<BadFile>& corpus() {
          1,
          0,
          {":11:9: entities[0].props.eye_radius_min: eye_radius_min 30 is larger than eye_radius_max 25"}},
+        // A patrol read whole or not at all: the bad point drops the route, so the far point is not reached.
+        {"robot_patrol.json",
+         3,
+         0,
+         {":14:56: entities[1].props.patrol.points[3][0]: robot 12 (\"guard\"): \"nan\" is not a finite number",
+          ":15:11: entities[1].props.patrol.mode: robot 12 (\"guard\"): unknown patrol mode \"pingpong\" "
+          "(did you mean \"ping_pong\"? valid: loop, ping_pong)",
+          ":16:11: entities[1].props.patrol.wait: robot 12 (\"guard\"): patrol wait -1 is out of range (valid: 0 .. 600 s"}},
         {"zero_sun_direction.json", 1, 0, {":6:5: settings.sun_direction: sun_direction is zero"}},
         {"entity_not_object.json",
          2,

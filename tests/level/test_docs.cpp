@@ -29,7 +29,9 @@ std::string code(const std::string& s) {
 class DocLister {
   public:
     explicit DocLister(const nlohmann::ordered_json& defaults) : defaults_(defaults) {}
-    void field(float&, const FieldInfo& info) { row(info, "number", range_text_of(info)); }
+    void field(float& v, const FieldInfo& info) {
+        row(info, "number", range_text_of(info), ks::jsonio::format_number(ks::jsonio::float_to_double(v)));
+    }
     void field(int&, const FieldInfo& info) { row(info, "whole number", range_text_of(info)); }
     void field(bool&, const FieldInfo& info) { row(info, "true / false", ""); }
     void field(std::string&, const FieldInfo& info) { row(info, "string", ""); }
@@ -39,6 +41,9 @@ class DocLister {
     void field(Choice& choice, const FieldInfo& info) {
         row(info, "one of " + ks::jsonio::join(choice.options, ", "), "");
     }
+    void field(Patrol&, const FieldInfo& info) {
+        row(info, "{points, mode, wait} (see Patrols)", "", "none: wanders");
+    }
     std::string table() const {
         return "| field | value | default | range | unit | meaning |\n|---|---|---|---|---|---|\n" + rows_;
     }
@@ -47,12 +52,15 @@ class DocLister {
     static std::string range_text_of(const FieldInfo& info) {
         return ks::jsonio::format_readable(info.min) + " .. " + ks::jsonio::format_readable(info.max);
     }
-    void row(const FieldInfo& info, const std::string& kind, const std::string& range) {
+    // `unwritten`: what the default column shows for a field the file leaves out at its default.
+    void row(const FieldInfo& info, const std::string& kind, const std::string& range,
+             const std::string& unwritten = "") {
         std::string fallback =
-            defaults_.contains(info.name) ? ks::jsonio::write_document(defaults_[info.name]) : "";
+            defaults_.contains(info.name) ? ks::jsonio::write_document(defaults_[info.name]) : unwritten;
         if (!fallback.empty() && fallback.back() == '\n') fallback.pop_back();
         rows_ += "| " + code(info.name) + " | " + kind + " | " + code(fallback) + " | " + range + " | " +
-                 info.unit + " | " + info.tooltip + " |\n";
+                 info.unit + " | " + info.tooltip +
+                 (info.omitted_at_default ? " (left out of the file while it is the default)" : "") + " |\n";
     }
     const nlohmann::ordered_json& defaults_;
     std::string rows_;

@@ -1,0 +1,88 @@
+#include "model/patrol_validation.h"
+
+#include <cmath>
+#include <cstdio>
+#include <optional>
+
+namespace ks::editor {
+namespace {
+
+struct Surface {
+    const level::Entity* entity;
+    geometry::Obb box;
+};
+
+std::vector<Surface> walkable_surfaces(const level::Level& level) {
+    std::vector<Surface> out;
+    for (const auto& e : level.entities) {
+        const auto type = e.type();
+        if ((type == level::EntityType::Floor || type == level::EntityType::Stair) && is_finite(e.position) &&
+            is_finite(e.rotation))
+            out.push_back({&e, entity_obb(e)});
+    }
+    return out;
+}
+
+std::string num(float v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.2f", static_cast<double>(v));
+    return buf;
+}
+
+// What is wrong with a point and where it belongs, or nothing when it stands on a surface.
+struct PointProblem {
+    std::string message;
+    std::optional<float> fixed_y;
+};
+
+std::optional<PointProblem> point_problem(const std::vector<Surface>& surfaces, Vec3 p,
+                                          const ValidationOptions& o) {
+    std::optional<float> below, sunk; // highest surface under the point; lowest one just above it
+    bool over_any = false;
+    for (const Surface& s : surfaces) {
+        const auto h = surface_height_at(*s.entity, s.box, p.x, p.z);
+        if (!h) continue;
+        over_any = true;
+        if (std::fabs(*h - p.y) <= o.support_tolerance) return std::nullopt;
+        if (*h < p.y) {
+            if (!below || *h > *below) below = h;
+        } else if (*h <= p.y + o.sink_limit && (!sunk || *h < *sunk)) {
+            sunk = h;
+        }
+    }
+    if (sunk) return PointProblem{"is sunk " + num(*sunk - p.y) + " units into the floor", sunk};
+    if (below) return PointProblem{"floats " + num(p.y - *below) + " units above the floor", below};
+    if (over_any) return PointProblem{"is below every floor at its spot", std::nullopt};
+    return PointProblem{"is outside every floor", std::nullopt};
+}
+
+} // namespace
+
+void check_patrol_support(const level::Level& level, const ValidationOptions& options,
+                          std::vector<Issue>& out) {
+    std::optional<std::vector<Surface>> surfaces; // built on the first robot with a route
+    for (const auto& e : level.entities) {
+        const auto* robot = e.try_as<level::RobotProps>();
+        if (!robot || !robot->patrol.active()) continue;
+        if (!surfaces) surfaces = walkable_surfaces(level);
+        const std::string who =
+            "robot " + std::to_string(e.id) + (e.name.empty() ? "" : " '" + e.name + "'") + " patrol point ";
+        for (size_t i = 0; i < robot->patrol.points.size(); ++i) {
+            const Vec3 p = robot->patrol.points[i];
+            if (!is_finite(p)) continue; // a format error already
+            auto problem = point_problem(*surfaces, p, options);
+            if (!problem) continue;
+            QuickFix fix;
+            if (problem->fixed_y) {
+                fix.kind = QuickFix::Kind::MovePatrolPoint;
+                fix.label = "Snap onto the floor";
+                fix.position = {p.x, *problem->fixed_y, p.z};
+                fix.index = static_cast<int>(i);
+            }
+            out.push_back({Rule::Patrol, IssueSeverity::Warning, e.id,
+                           who + std::to_string(i) + " " + problem->message, std::move(fix)});
+        }
+    }
+}
+
+} // namespace ks::editor
