@@ -13,6 +13,7 @@
 #include "game/patrol.h"
 #include "level/entity_shapes.h"
 #include "level/level.h"
+#include "nav/nav_mesh.h"
 #include "physics/world.h"
 
 #include <cstdint>
@@ -67,7 +68,13 @@ struct PlayerState {
     Vec3 view_direction() const;
 };
 
-enum class RobotMode : std::uint8_t { Idle, Alert, Chase, Aim, Shoot, Dying, Dead };
+// Idle: wander or patrol. Alert, Chase, Aim, Shoot: fighting the player it sees (or is angry with). Hunt:
+// lost the player (or heard a shot): walks the navigation mesh to the last known position. Search: looks
+// around there until its search time runs out, then back to Idle.
+enum class RobotMode : std::uint8_t { Idle, Alert, Chase, Aim, Shoot, Dying, Dead, Hunt, Search };
+
+// The most corners a robot's path keeps (its vector is reserved once, so following allocates nothing).
+inline constexpr std::size_t kMaxPathCorners = 256;
 
 struct Robot {
     int entity_id = 0;
@@ -88,6 +95,17 @@ struct Robot {
     bool collided = false;
     // Along props.patrol, walked instead of the wander while idle when the robot has one.
     PatrolProgress patrol;
+    // Hunting and searching: where the player was last seen or heard, and the seconds of search left.
+    Vec3 last_known{0.0f};
+    float hunt_left = 0.0f;
+    bool heard = false; // a sound reached it this step (Game::hear_sound)
+    Vec3 search_point{0.0f};
+    // The path being followed on the navigation mesh (corners), the goal it was planned for, the next
+    // corner and the seconds until it is planned again.
+    std::vector<Vec3> path;
+    Vec3 path_goal{0.0f};
+    std::size_t path_next = 0;
+    float replan_in = 0.0f;
     // Model yaw for the renderer: the level yaw + 90° (the reference's rotY; the model faces +X).
     float model_yaw() const { return robot_model_yaw(yaw); }
     bool alive() const { return mode != RobotMode::Dying && mode != RobotMode::Dead; }
@@ -198,6 +216,9 @@ class Game {
     int robots_killed() const { return robots_killed_; }
     const GameSettings& settings() const { return settings_; }
     const physics::World& world() const { return world_; }
+    // The robots' navigation mesh; null when it could not be built (navigation_error() says why).
+    const nav::NavMesh* navigation() const { return navigation_.get(); }
+    const std::string& navigation_error() const { return navigation_error_; }
     // Bounds of the level's static geometry (walls, floors, stairs, props).
     const geometry::Aabb& level_bounds() const { return level_bounds_; }
     const Vec3& player_start() const { return player_start_; }
@@ -242,6 +263,23 @@ class Game {
               Vec3 end = Vec3(0.0f));
     // Closest shootable hit along a ray, skipping `ignore` and (for robot shots) every robot.
     bool shoot_ray(const geometry::Ray& ray, physics::BodyId ignore, bool skip_robots, physics::RayHit& hit);
+    // Robot AI pieces (robots.cpp, robot_hunt.cpp).
+    bool robot_engaged(const Robot& r, float distance, bool same_level) const;
+    bool robot_has_clear_shot(const Robot& r) const;
+    void robot_fight(std::size_t index, float distance, float dt);
+    void start_hunt(std::size_t index);
+    void robot_hunt(std::size_t index, float dt);
+    void stop_hunting(std::size_t index);
+    // Navigation (robot_navigation.cpp).
+    void build_navigation(const level::Level& level);
+    void update_door_navigation(const Door& d, float previous_progress);
+    // The horizontal velocity that walks `r` along the mesh toward `goal` at `speed` (zero without a mesh,
+    // a path, or once there).
+    Vec3 follow_path(Robot& r, const Vec3& goal, float speed, float dt);
+    bool path_finished(const Robot& r) const;
+    // A shot or an explosion at `source`: idle and searching robots whose hearing radius reaches it along
+    // the mesh go to look.
+    void hear_sound(const Vec3& source);
 
     GameSettings settings_;
     std::shared_ptr<const anim::AnimationLibrary> animations_;
@@ -256,6 +294,8 @@ class Game {
     std::vector<Cylinder> cylinders_;
     std::vector<Panel> panels_;
     Caption caption_;
+    std::unique_ptr<nav::NavMesh> navigation_; // null when the level has none (robots stand guard)
+    std::string navigation_error_;
     geometry::Aabb level_bounds_ = geometry::Aabb::empty();
     Vec3 player_start_{0.0f};
     float gravity_ = -25.0f; // the level's, given to every character body

@@ -118,6 +118,7 @@ Result<void> Game::build(const level::Level& level) {
         if (auto added = add_entity(e); !added) return added;
     }
     if (auto added = add_player(level); !added) return added;
+    build_navigation(level);
     events_.reserve(64);
     world_.build_static();
     return ok();

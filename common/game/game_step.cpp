@@ -124,6 +124,7 @@ void Game::fire_player_shot() {
     const bool any = shoot_ray(ray, p.body, false, hit);
     const Vec3 end = any ? hit.point : ray.origin + dir * ray.max_distance;
     push(EventType::ShotFired, tip, -1, 0.0f, end);
+    hear_sound(p.feet);
     if (!any) return;
     const std::uint64_t user = world_.user_data(hit.body);
     const BodyKind kind = user_kind(user);

@@ -71,6 +71,8 @@ struct GameSettings {
     float robot_same_level = 6.0f; // |Δy| below which a robot considers the player on its level
     float robot_shot_range = 100.0f;
     float robot_wander_speed = 2.4f; // 0.3 · velocity 8 in the reference
+    float robot_replan_interval = 0.5f; // seconds between path plans toward a goal that has not moved much
+    float robot_search_radius = 6.0f;   // searching robots look around within this of the last known position
     float cylinder_fuse = 0.12f;     // seconds between a cylinder taking blast damage and exploding
     float knockback_decay = 4.0f;    // 1/s: how fast an explosion's push fades
     float fall_limit = -50.0f;       // a character below this y is dead (fell out of the level)

@@ -1,7 +1,9 @@
-// Robot AI (seed-facts §5.2): idle wander, or the patrol route where the level gives one (patrol.h); alert on seeing the player inside the minimum eye radius; follow
-// inside the maximum one (hysteresis); shoot pose inside shooting distance; shots on a cooldown with a
-// probability; angry after being shot; death clip, then explosion and removal. Robots never hurt robots.
+// Robot AI (seed-facts §5.2): idle wander, or the patrol route where the level gives one (patrol.h); alert on
+// seeing the player inside the minimum eye radius; follow inside the maximum one (hysteresis); shoot pose
+// inside shooting distance; shots on a cooldown with a probability; angry after being shot; death clip, then
+// explosion and removal. Robots never hurt robots.
 #include "game/game.h"
+#include "game/robot_motion.h"
 #include "level/entity_shapes.h"
 
 #include "anim/easing.h"
@@ -10,23 +12,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace ks::game {
 namespace {
-
-float wrap_angle(float a) {
-    return std::remainder(a, 2.0f * kPi);
-}
-
-// Turns `yaw` toward `target` by at most `max_step` radians.
-float turn_toward(float yaw, float target, float max_step) {
-    const float d = wrap_angle(target - yaw);
-    return wrap_angle(yaw + std::clamp(d, -max_step, max_step));
-}
-
-float yaw_of(const Vec3& d) {
-    return std::atan2(-d.x, -d.z); // level convention: 0 faces -z
-}
 
 // Idle along the patrol route: turn toward the next point and walk at the wander speed, slower while still
 // turning (no walking sideways), standing while the route says to wait.
@@ -109,43 +98,68 @@ void Game::update_robot(std::size_t index, float dt) {
     const Vec3 to = target - centre;
     const float distance = glm::length(to);
     const bool same_level = std::abs(to.y) < settings_.robot_same_level;
-    const bool engaged_before = r.mode != RobotMode::Idle;
-    bool engaged = false;
-    if (phase_ == Phase::Playing) {
-        if (r.angry > 0.0f)
-            engaged = true;
-        else if (engaged_before)
-            engaged = same_level && distance < r.props.eye_radius_max;
-        else
-            engaged = same_level && distance < r.props.eye_radius_min && robot_sees_player(r);
-    }
-    const float turn = r.props.rotation_velocity * dt;
-    const float facing = yaw_of(Vec3(to.x, 0, to.z));
-
-    if (!engaged) {
-        if (engaged_before) {
-            if (r.mode == RobotMode::Aim || r.mode == RobotMode::Shoot)
-                robot_anims_[index].play(clips_.shoot_pose_reverse);
-            else
-                robot_anims_[index].play(clips_.idle);
-            r.mode = RobotMode::Idle;
-            r.mode_time = 0.0f;
-            r.wander_length = 0.0f;
-            r.patrol.waiting = 0.0f; // back to the point it was heading for, then on along the route
-        }
-        if (r.props.patrol.active())
-            walk_patrol(r, mv, settings_.robot_wander_speed, dt);
-        else
-            robot_wander(r, index, dt);
+    const bool heard = std::exchange(r.heard, false);
+    if (robot_engaged(r, distance, same_level)) {
+        r.last_known = player_.feet;
+        r.hunt_left = r.props.search_time;
+        robot_fight(index, distance, dt);
         return;
     }
-    if (!engaged_before) {
+    const bool fighting = r.mode == RobotMode::Alert || r.mode == RobotMode::Chase ||
+                          r.mode == RobotMode::Aim || r.mode == RobotMode::Shoot;
+    if (fighting || (heard && (r.mode == RobotMode::Idle || r.mode == RobotMode::Search))) {
+        if (heard && r.mode == RobotMode::Idle) push(EventType::RobotAlerted, r.feet, r.entity_id);
+        start_hunt(index);
+    }
+    if (r.mode == RobotMode::Hunt || r.mode == RobotMode::Search) {
+        robot_hunt(index, dt);
+        return;
+    }
+    if (r.props.patrol.active())
+        walk_patrol(r, mv, settings_.robot_wander_speed, dt);
+    else
+        robot_wander(r, index, dt);
+}
+
+// The reference's rules: anger always engages; a robot already fighting keeps on while the player is on its
+// level inside the maximum eye radius; any other notices the player on its level inside the minimum eye
+// radius with a line of sight.
+bool Game::robot_engaged(const Robot& r, float distance, bool same_level) const {
+    if (phase_ != Phase::Playing) return false;
+    if (r.angry > 0.0f) return true;
+    const bool fighting = r.mode == RobotMode::Alert || r.mode == RobotMode::Chase ||
+                          r.mode == RobotMode::Aim || r.mode == RobotMode::Shoot;
+    if (fighting) return same_level && distance < r.props.eye_radius_max;
+    return same_level && distance < r.props.eye_radius_min && robot_sees_player(r);
+}
+
+// Whether a shot from the robot's chest would reach the player: a window the robot sees through may still
+// be too high to shoot through, and then it walks round instead of shooting the wall.
+bool Game::robot_has_clear_shot(const Robot& r) const {
+    const Vec3 chest = r.feet + Vec3(0, settings_.robot_height * 0.6f, 0);
+    const Vec3 target = player_.feet + Vec3(0, settings_.player_height * 0.5f, 0);
+    const Vec3 d = target - chest;
+    const float len = glm::length(d);
+    if (!(len > 1e-4f)) return true;
+    physics::RayFilter filter;
+    filter.layers = physics::layer::kBlocksSight;
+    filter.ignore = r.body;
+    return !world_.ray_any({chest, d / len, len}, filter);
+}
+
+void Game::robot_fight(std::size_t index, float distance, float dt) {
+    Robot& r = robots_[index];
+    auto& mv = world_.character(r.body).movement;
+    if (r.mode == RobotMode::Idle) {
         r.mode = RobotMode::Alert;
         r.mode_time = 0.0f;
         robot_anims_[index].play(clips_.alert);
         push(EventType::RobotAlerted, r.feet, r.entity_id);
+    } else if (r.mode == RobotMode::Hunt || r.mode == RobotMode::Search) { // found again: no second alert
+        r.mode = RobotMode::Chase;
+        r.mode_time = 0.0f;
     }
-    r.yaw = turn_toward(r.yaw, facing, turn);
+    const Vec3 to = player_.feet - r.feet;
     Vec3 velocity(0.0f);
     switch (r.mode) {
     case RobotMode::Alert:
@@ -155,18 +169,17 @@ void Game::update_robot(std::size_t index, float dt) {
         }
         break;
     case RobotMode::Chase:
-        if (distance <= r.props.shooting_distance) {
+        if (distance <= r.props.shooting_distance && robot_has_clear_shot(r)) {
             r.mode = RobotMode::Aim;
             r.mode_time = 0.0f;
             robot_anims_[index].play(clips_.shoot_pose);
         } else {
-            const Vec3 flat = glm::normalize(Vec3(to.x, 0, to.z) + Vec3(1e-9f, 0, 0));
-            velocity = flat * r.props.velocity;
+            velocity = follow_path(r, player_.feet, r.props.velocity, dt);
         }
         break;
     case RobotMode::Aim:
     case RobotMode::Shoot:
-        if (distance > r.props.shooting_distance) {
+        if (distance > r.props.shooting_distance || !robot_has_clear_shot(r)) {
             r.mode = RobotMode::Chase;
             r.mode_time = 0.0f;
             robot_anims_[index].play(clips_.shoot_pose_reverse);
@@ -185,6 +198,9 @@ void Game::update_robot(std::size_t index, float dt) {
     default:
         break;
     }
+    // Face where it walks (round a wall, the path leads away from the player); the player when it stands.
+    const Vec3 facing = glm::dot(velocity, velocity) > 0.0f ? velocity : Vec3(to.x, 0, to.z);
+    r.yaw = turn_toward(r.yaw, yaw_of(facing), r.props.rotation_velocity * dt);
     mv.velocity.x = velocity.x + r.knockback.x;
     mv.velocity.z = velocity.z + r.knockback.z;
 }

@@ -58,6 +58,13 @@ std::uint64_t Game::state_hash() const {
         h.add(r.cooldown);
         h.add(r.wander_to);
         h.add(r.wander_length);
+        h.add(r.last_known);
+        h.add(r.hunt_left);
+        h.add(r.search_point);
+        h.add(r.path_goal);
+        h.add(static_cast<int>(r.path_next));
+        h.add(static_cast<int>(r.path.size()));
+        h.add(r.replan_in);
         if (r.props.patrol.active()) { // robots without a route hash exactly as before patrols existed
             h.add(r.patrol.target);
             h.add(r.patrol.direction);

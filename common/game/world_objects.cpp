@@ -11,7 +11,9 @@ void Game::update_doors(float dt) {
         const float target = d.opening ? 1.0f : 0.0f;
         if (d.progress == target) continue;
         const float rate = dt / d.props.open_time; // linear, as the reference's tween
+        const float previous = d.progress;
         d.progress = d.opening ? std::min(1.0f, d.progress + rate) : std::max(0.0f, d.progress - rate);
+        update_door_navigation(d, previous);
         for (int side = 0; side < 2; ++side) world_.set_transform(d.leaves[side], d.leaf_transform(side));
     }
 }
@@ -37,6 +39,7 @@ void Game::explode_cylinder(std::size_t index) {
     world_.set_enabled(c.body, false);
     const float radius = c.props.blast_radius;
     push(EventType::Explosion, c.centre, c.entity_id, radius);
+    hear_sound(c.centre);
     if (!(radius > 0.0f)) return;
     physics::RayFilter filter;
     filter.layers = physics::layer::kBlocksSight;

@@ -117,6 +117,7 @@ TEST_CASE("an alerted robot on patrol still chases, and goes back to its route w
     auto& robot = add_robot(lv, Vec3(0, 0, -40)).as<level::RobotProps>();
     robot.patrol = route({{0, 0, -40}, {0, 0, -15}});
     robot.hit_probability = 0.0f; // its shots never land: this test is about where it walks
+    robot.search_time = 0.0f;     // back to the route at once (hunting is tested in test_robot_hunting.cpp)
     auto g = make_game(lv);
 
     bool alerted = false;

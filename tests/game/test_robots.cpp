@@ -187,6 +187,7 @@ TEST_CASE("follow hysteresis: once alerted a robot keeps following out to the ma
     auto& r = add_robot(lv, Vec3(0, 0, -15));
     r.as<level::RobotProps>().velocity = 0.0f; // stands, so only the player's distance changes
     r.as<level::RobotProps>().hit_probability = 0.0f;
+    r.as<level::RobotProps>().search_time = 0.0f; // the reference: a lost player is forgotten at once
     auto g = make_game(lv);
     run_for(*g, 1.0);
     REQUIRE(g->robots()[0].mode != RobotMode::Idle);

@@ -1,0 +1,84 @@
+// The robots' use of the navigation mesh: built once at level load, doors' polygons opened and closed as the
+// doors move, path following toward a goal, and sounds that travel along the mesh to robots' ears.
+#include "core/log.h"
+#include "game/game.h"
+#include "physics/character.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ks::game {
+namespace {
+
+// A corner closer than this (horizontally) counts as reached: the next one is steered to.
+constexpr float kCornerReached = 0.6f;
+// A goal that moved farther than this since the last plan is planned for again at once.
+constexpr float kGoalMoved = 1.5f;
+
+float horizontal_distance(const Vec3& a, const Vec3& b) {
+    return glm::length(Vec2(a.x - b.x, a.z - b.z));
+}
+
+} // namespace
+
+void Game::build_navigation(const level::Level& level) {
+    const physics::CharacterSettings character;
+    auto mesh = nav::NavMesh::build(
+        level, nav::robot_nav_settings(character.step_height, character.max_slope_degrees));
+    if (!mesh) {
+        // One clear message; robots without a mesh stand guard (turn, aim and shoot, never walk).
+        navigation_error_ = mesh.error().str();
+        if (!robots_.empty()) log::warn("robots will stand guard: " + navigation_error_);
+        return;
+    }
+    navigation_ = std::move(*mesh);
+    for (const Door& d : doors_) navigation_->set_door_open(d.entity_id, d.progress > 0.0f);
+    for (Robot& r : robots_) r.path.reserve(kMaxPathCorners);
+}
+
+void Game::update_door_navigation(const Door& d, float previous_progress) {
+    if (!navigation_) return;
+    // Passable from the moment the door starts to open until it is shut again.
+    const bool was_open = previous_progress > 0.0f, is_open = d.progress > 0.0f;
+    if (was_open != is_open) navigation_->set_door_open(d.entity_id, is_open);
+}
+
+Vec3 Game::follow_path(Robot& r, const Vec3& goal, float speed, float dt) {
+    if (!navigation_ || !(speed > 0.0f)) return Vec3(0.0f);
+    r.replan_in -= dt;
+    if (r.replan_in <= 0.0f || horizontal_distance(goal, r.path_goal) > kGoalMoved || r.path.empty()) {
+        r.replan_in = settings_.robot_replan_interval;
+        r.path_goal = goal;
+        r.path_next = 0;
+        const nav::PathStatus status = navigation_->find_path(r.feet, goal, r.path);
+        if (status == nav::PathStatus::StartOffMesh || status == nav::PathStatus::EndOffMesh) r.path.clear();
+        if (r.path.size() > kMaxPathCorners) r.path.resize(kMaxPathCorners);
+    }
+    while (r.path_next < r.path.size() && horizontal_distance(r.path[r.path_next], r.feet) < kCornerReached)
+        ++r.path_next;
+    if (r.path_next >= r.path.size()) return Vec3(0.0f);
+    const Vec3 corner = r.path[r.path_next];
+    const Vec3 d(corner.x - r.feet.x, 0.0f, corner.z - r.feet.z);
+    const float len = glm::length(d);
+    return len > 1e-4f ? d / len * speed : Vec3(0.0f);
+}
+
+bool Game::path_finished(const Robot& r) const {
+    return r.path_next >= r.path.size();
+}
+
+void Game::hear_sound(const Vec3& source) {
+    if (!navigation_ || phase_ != Phase::Playing) return;
+    for (Robot& r : robots_) {
+        if (!r.alive() || (r.mode != RobotMode::Idle && r.mode != RobotMode::Search)) continue;
+        const float radius = r.props.hearing_radius;
+        // The straight line is never longer than the way round: only robots inside it ask the mesh.
+        if (!(radius > 0.0f) || glm::length(source - r.feet) > radius) continue;
+        const auto along_mesh = navigation_->path_length(r.feet, source);
+        if (!along_mesh || *along_mesh > radius) continue;
+        r.heard = true;
+        r.last_known = source;
+    }
+}
+
+} // namespace ks::game
