@@ -5,6 +5,7 @@
 #include "level/level_io.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 using namespace ks;
@@ -168,4 +169,59 @@ TEST_CASE("a level with no floor still starts: one clear message, robots stand g
     const Vec3 before = g->robots()[0].feet;
     run_for(*g, 2.0);
     CHECK(flat_distance(g->robots()[0].feet, before) < 0.5f);
+}
+
+TEST_CASE("three robots meeting in one doorway all get through, none stuck for long") {
+    auto lv = flat_level();
+    add_wall_with_doorway(lv, 0.0f);
+    for (float x : {-4.0f, 0.0f, 4.0f}) {
+        auto& robot = add_robot(lv, Vec3(x, 0, -22)).as<level::RobotProps>();
+        robot.hit_probability = 0.0f;
+        robot.shooting_distance = 3.0f; // keep walking toward the player
+    }
+    lv.player_start.position = Vec3(0, 0, 12);
+    auto g = make_game(lv);
+    for (std::size_t i = 0; i < 3; ++i) g->damage_robot(i, 1.0f, true); // all angry at once
+    std::array<float, 3> stuck_for{}, longest_stuck{};
+    std::array<Vec3, 3> last{};
+    for (std::size_t i = 0; i < 3; ++i) last[i] = g->robots()[i].feet;
+    for (int step = 0; step < 10 * 120; ++step) {
+        g->step({});
+        for (std::size_t i = 0; i < 3; ++i) {
+            const Vec3 now = g->robots()[i].feet;
+            const bool done = now.z > -6.0f; // through the doorway
+            const float moved = flat_distance(now, last[i]);
+            last[i] = now;
+            stuck_for[i] =
+                done || moved > 0.02f ? 0.0f : stuck_for[i] + static_cast<float>(g->settings().step);
+            longest_stuck[i] = std::max(longest_stuck[i], stuck_for[i]);
+        }
+    }
+    for (std::size_t i = 0; i < 3; ++i) {
+        CAPTURE(i);
+        CHECK(g->robots()[i].feet.z > -6.0f);
+        CHECK(longest_stuck[i] < 2.0f);
+    }
+}
+
+TEST_CASE("a thousand angry robots plan and walk without trouble") {
+    auto lv = flat_level();
+    for (int i = 0; i < 1000; ++i) {
+        const float x = -90.0f + static_cast<float>(i % 40) * 4.5f,
+                    z = -90.0f + static_cast<float>(i / 40) * 4.5f;
+        add_robot(lv, Vec3(x, 0, z)).as<level::RobotProps>().hit_probability = 0.0f;
+    }
+    lv.player_start.position = Vec3(0, 0, 95);
+    auto g = make_game(lv);
+    REQUIRE(g->robots().size() == 1000);
+    for (std::size_t i = 0; i < 1000; ++i) g->damage_robot(i, 1.0f, true);
+    float before = 0.0f;
+    for (const Robot& r : g->robots()) before += flat_distance(r.feet, g->player().feet);
+    run_for(*g, 1.0);
+    float after = 0.0f;
+    for (const Robot& r : g->robots()) {
+        CHECK(is_finite(r.feet));
+        after += flat_distance(r.feet, g->player().feet);
+    }
+    CHECK(after < before - 1000.0f); // on average each came at least a unit closer
 }
