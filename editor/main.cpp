@@ -10,12 +10,12 @@
 #include <cstdio>
 
 namespace {
-const std::vector<std::string> kFlags = {"no-vsync", "help", "dojo"};
+const std::vector<std::string> kFlags = {"no-vsync", "help", "dojo", "navmesh"};
 
 void print_help() {
     std::printf(
         "usage: killswitch-editor [--level FILE] [--script FILE] [--run FILE] [--camera x,y,z,yaw,pitch] "
-        "[--dojo]\n"
+        "[--dojo] [--navmesh]\n"
         "                         [--view top|front|side|perspective] [--status-file FILE]\n"
         "                         [--width W] [--height H] [--screenshot FILE --frames N] [--no-vsync]\n"
         "  --level FILE      open a level file (default: a new untitled level)\n"
@@ -24,6 +24,7 @@ void print_help() {
         "  --run FILE        run editor commands in the window session before the first frame\n"
         "  --camera ...      viewport camera x,y,z,yaw,pitch in degrees (yaw 0 looks along -z)\n"
         "  --dojo            start in the dojo (animation) tab\n"
+        "  --navmesh         show the robots' navigation mesh (View > Navigation mesh)\n"
         "  --view V          start in the top, front or side (orthographic) or perspective view\n"
         "  --status-file F   rewrite F with a JSON snapshot of the session (selection, entity count, undo\n"
         "                    depth, dirty flag, play-test, where the palette and gizmo are) when it changes\n"
@@ -56,7 +57,8 @@ int main(int argc, char** argv) {
         return 0;
     }
     std::vector<std::string> known = shell::shell_options();
-    known.insert(known.end(), {"level", "script", "run", "camera", "help", "dojo", "view", "status-file"});
+    known.insert(known.end(),
+                 {"level", "script", "run", "camera", "help", "dojo", "view", "status-file", "navmesh"});
     if (auto unknown = cl->unknown(known); !unknown.empty()) {
         log::error("unknown option --", unknown.front(), " (see killswitch-editor --help)");
         return 2;
@@ -78,6 +80,7 @@ int main(int argc, char** argv) {
     editor::ui::AppOptions options;
     if (auto level = cl->get("level")) options.level = paths::resolve_user_path(*level);
     options.start_in_dojo = cl->has("dojo");
+    options.show_navmesh = cl->has("navmesh");
     if (auto run = cl->get("run")) options.run_script = paths::resolve_user_path(*run);
     options.camera = cl->get("camera");
     if (auto view = cl->get("view")) {

@@ -197,8 +197,19 @@ int tile_border_cells(const NavSettings& settings) {
     return agent_cells(settings).radius + 3;
 }
 
+// Only floors (not ceilings) and stairs are walked on: the tops of walls, ceilings, the panel and props are
+// solid but never part of the mesh (robots cannot get up there, and a ceiling's roof would otherwise be a
+// large unreachable island that nearest-point queries snap onto).
+namespace {
+bool walked_on(const level::Entity& e) {
+    if (const auto* floor = e.try_as<level::FloorProps>()) return !floor->ceiling;
+    return e.type() == level::EntityType::Stair;
+}
+} // namespace
+
 Result<InputGeometry> collect_input(const level::Level& level, const NavSettings& settings) {
     InputGeometry in;
+    std::vector<std::pair<int, int>> never_walked; // triangle ranges [first, last) of solids not walked on
     for (const level::Entity& e : level.entities) {
         if (e.type() == level::EntityType::Door) {
             const auto& d = e.as<level::DoorProps>();
@@ -214,7 +225,9 @@ Result<InputGeometry> collect_input(const level::Level& level, const NavSettings
         if (!sane(e.rotation) || !sane_shape(*shape))
             return Error(entity_label(level, e) + " has a non-finite or absurd position, rotation or size",
                          Location{}, "fix its numbers in the editor");
+        const int first = static_cast<int>(in.triangles.size() / 3);
         append_solid(solid_of(is_obstacle(e.type()) ? drawn_in(*shape, settings.cell_size) : *shape), in);
+        if (!walked_on(e)) never_walked.emplace_back(first, static_cast<int>(in.triangles.size() / 3));
     }
     if (in.triangles.empty())
         return Error("level '" + level.name + "' has no solid shapes, so nothing to walk on", Location{},
@@ -225,6 +238,8 @@ Result<InputGeometry> collect_input(const level::Level& level, const NavSettings
     rcMarkWalkableTriangles(&quiet, settings.agent_max_slope_degrees, in.vertices.data(),
                             static_cast<int>(in.vertices.size() / 3), in.triangles.data(), triangle_count,
                             in.areas.data());
+    for (const auto& [first, last] : never_walked)
+        std::fill(in.areas.begin() + first, in.areas.begin() + last, RC_NULL_AREA);
     bin_triangles(in, settings);
     return in;
 }

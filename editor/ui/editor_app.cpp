@@ -79,6 +79,7 @@ Result<void> EditorApp::init() {
     }
     dojo_ = std::make_unique<DojoPanel>(assets_, *renderer_);
     dojo_tab_ = options_.start_in_dojo;
+    overlays_.navmesh = options_.show_navmesh;
     set_view(options_.view.value_or(ViewMode::Perspective)); // perspective: from above one corner
     if (options_.camera) {
         float v[5];
@@ -324,6 +325,7 @@ void EditorApp::menu_bar() {
         ImGui::MenuItem("Robot eye / shooting radii", nullptr, &overlays_.robots);
         ImGui::MenuItem("Player start", nullptr, &overlays_.player_start);
         ImGui::MenuItem("All patrol routes", nullptr, &overlays_.patrols);
+        ImGui::MenuItem("Navigation mesh", nullptr, &overlays_.navmesh);
         ImGui::MenuItem("Ceilings", nullptr, &overlays_.ceilings);
         ImGui::EndMenu();
     }

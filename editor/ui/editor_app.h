@@ -4,6 +4,7 @@
 // Panels only present the model and dispatch Editor calls; every edit goes through its commands.
 #include "model/autosave.h"
 #include "model/editor.h"
+#include "model/nav_preview.h"
 #include "model/recent_files.h"
 #include "shell/app_shell.h"
 #include "render/asset_library.h"
@@ -33,6 +34,7 @@ class DojoPanel;
 struct AppOptions {
     std::optional<std::filesystem::path> level;
     bool start_in_dojo = false;
+    bool show_navmesh = false; // View > Navigation mesh on from the start
     std::optional<std::filesystem::path> run_script; // run inside the window session before the first frame
     std::optional<std::string> camera;               // x,y,z,yaw,pitch (degrees) for the viewport
     std::filesystem::path executable_dir;            // where killswitch (the runtime) is looked for
@@ -49,6 +51,7 @@ struct Overlays {
     bool robots = true;
     bool player_start = true;
     bool patrols = false; // every robot's patrol route; the selected robot's is always shown
+    bool navmesh = false; // the robots' navigation mesh (built in the background after edits)
     bool outlines =
         true; // in the axis views: walls, doors and stairs outlined, so the plan reads at a glance
     bool ceilings = false; // off by default: ceilings would hide the rooms from an editor camera above them
@@ -89,6 +92,7 @@ class EditorApp {
     void viewport_panel(float x, float y, float w, float h);
     void rebuild_scene_if_changed();
     void draw_overlays();
+    void draw_navmesh();
     void draw_axis_grid(ImDrawList* draw, Vec2 origin) const;
     void viewport_input(Vec2 origin, bool hovered);
     int pick(const geometry::Ray& ray) const;
@@ -125,6 +129,7 @@ class EditorApp {
         unsigned long long builds = 0, bakes = 0; // bakes: builds whose light map was baked
         double last_build_cpu_ms = 0.0;
     } scene_stats_;
+    NavPreview nav_preview_;
     std::vector<render::MeshInstance> instances_;
     std::vector<render::Light> lights_;
     render::DebugDraw debug_;

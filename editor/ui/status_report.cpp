@@ -39,6 +39,11 @@ void EditorApp::write_status() {
     s["gizmo"] = gizmo_mode_name(gizmo_.mode);
     s["dragging"] = gizmo_.dragging();
     s["render_scale"] = renderer_ ? renderer_->render_scale() : 0.0f;
+    s["navmesh"] = {{"shown", overlays_.navmesh},
+                    {"builds", nav_preview_.stats().builds},
+                    {"last_build_ms", nav_preview_.stats().last_build_ms},
+                    {"triangles", nav_preview_.stats().triangles},
+                    {"error", nav_preview_.error()}};
     s["scene"] = {{"builds", scene_stats_.builds},
                   {"bakes", scene_stats_.bakes},
                   {"last_build_cpu_ms", scene_stats_.last_build_cpu_ms}};

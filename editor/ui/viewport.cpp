@@ -118,8 +118,25 @@ void EditorApp::rebuild_scene_if_changed() {
     scene_baked_ = bake;
 }
 
+// The robots' walkable surface, outlined just above it: green where robots walk, orange in doorways. Rebuilt
+// in the background when the level changes, never during a drag (the newest finished mesh stays shown).
+void EditorApp::draw_navmesh() {
+    const bool continuous = editor_.history().in_transaction() ||
+                            (ImGui::GetCurrentContext() != nullptr && ImGui::IsAnyItemActive());
+    if (!continuous) nav_preview_.update(editor_.level(), editor_.revision());
+    if (shell_.screenshot_mode()) nav_preview_.finish(); // a screenshot shows the mesh, not "building"
+    const Vec3 lift(0.0f, 0.06f, 0.0f);
+    for (const nav::NavTriangle& t : nav_preview_.triangles()) {
+        const Vec4 colour = t.door_id != 0 ? Vec4(1.0f, 0.6f, 0.2f, 0.8f) : Vec4(0.3f, 0.95f, 0.5f, 0.45f);
+        debug_.line(t.a + lift, t.b + lift, colour);
+        debug_.line(t.b + lift, t.c + lift, colour);
+        debug_.line(t.c + lift, t.a + lift, colour);
+    }
+}
+
 void EditorApp::draw_overlays() {
     const Document& doc = editor_.doc();
+    if (overlays_.navmesh) draw_navmesh();
     if (overlays_.grid && !view_.orthographic()) { // the axis views draw theirs on screen (draw_axis_grid)
         // Around the point under the camera, on y = 0: minor lines every 4 units, major every 16 (a wall).
         const float step = 4.0f, extent = 96.0f;
