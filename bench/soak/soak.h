@@ -227,6 +227,12 @@ SoakResult run_soak(const level::Level& level, const SoakOptions& options, OnSam
         game_options.settings.max_health = game_options.settings.start_health = 1e9f;
         game_options.settings.max_ammo = game_options.settings.start_ammo = 1000000;
     }
+    // One mesh for every round: the bot never changes it, and rebuilding it would cost more than a round.
+    auto mesh = game::build_autoplay_mesh(level, game::AutoplaySettings{}.cylinder_keep_out);
+    if (!mesh) {
+        result.problem = "the bot's navigation mesh did not build: " + mesh.error().str();
+        return result;
+    }
     std::unique_ptr<game::Game> g;
     std::unique_ptr<game::Autoplay> bot;
     auto new_round = [&]() -> bool {
@@ -238,7 +244,7 @@ SoakResult run_soak(const level::Level& level, const SoakOptions& options, OnSam
             return false;
         }
         g = std::move(*created);
-        bot = std::make_unique<game::Autoplay>(*g, game_options.seed);
+        bot = std::make_unique<game::Autoplay>(*g, *mesh, game_options.seed);
         return true;
     };
     if (!new_round()) return result;
