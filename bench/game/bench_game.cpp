@@ -165,11 +165,15 @@ int run(int argc, const char* const* argv) {
     std::int64_t auto_steps = 0;
     for (int rep = 0; rep < repeats; ++rep) {
         auto g = make(*main_level, 1);
-        Autoplay bot(*g, 1);
+        auto bot = Autoplay::create(*main_level, *g, 1);
+        if (!bot) {
+            std::fprintf(stderr, "%s\n", bot.error().str().c_str());
+            return 1;
+        }
         const auto t0 = Clock::now();
         std::int64_t n = 0;
         while (g->phase() == Phase::Playing && n < 120 * 120) {
-            g->step(bot.decide(*g));
+            g->step(bot->decide(*g));
             ++n;
         }
         best_auto = std::min(best_auto, seconds_since(t0) / n);

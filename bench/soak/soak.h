@@ -227,6 +227,9 @@ SoakResult run_soak(const level::Level& level, const SoakOptions& options, OnSam
         game_options.settings.max_health = game_options.settings.start_health = 1e9f;
         game_options.settings.max_ammo = game_options.settings.start_ammo = 1000000;
     }
+    // One mesh for every round, built with the first: the bot never changes it, and rebuilding it would cost
+    // more than a round.
+    std::shared_ptr<nav::NavMesh> mesh;
     std::unique_ptr<game::Game> g;
     std::unique_ptr<game::Autoplay> bot;
     auto new_round = [&]() -> bool {
@@ -238,7 +241,15 @@ SoakResult run_soak(const level::Level& level, const SoakOptions& options, OnSam
             return false;
         }
         g = std::move(*created);
-        bot = std::make_unique<game::Autoplay>(*g, game_options.seed);
+        if (!mesh) {
+            auto built = game::build_autoplay_mesh(level, game::AutoplaySettings{}.cylinder_keep_out);
+            if (!built) {
+                result.problem = "the bot's navigation mesh did not build: " + built.error().str();
+                return false;
+            }
+            mesh = std::move(*built);
+        }
+        bot = std::make_unique<game::Autoplay>(*g, mesh, game_options.seed);
         return true;
     };
     if (!new_round()) return result;

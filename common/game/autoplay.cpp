@@ -1,10 +1,15 @@
 #include "game/autoplay.h"
 
+#include "physics/character.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace ks::game {
 namespace {
+
+// A corner counts as reached this close (x, z): far enough that grazing a wall corner still reaches it.
+constexpr float kCornerReached = 0.5f;
 
 float wrap_angle(float a) {
     return std::remainder(a, 2.0f * kPi);
@@ -14,20 +19,56 @@ float yaw_toward(const Vec3& from, const Vec3& to) {
     return std::atan2(-(to.x - from.x), -(to.z - from.z));
 }
 
-} // namespace
-
-Autoplay::Autoplay(const Game& game, std::uint64_t seed, AutoplaySettings settings)
-    : settings_(settings), rng_(seed, 0x626f74ull) {
-    geometry::Aabb region = game.level_bounds();
-    if (region.min.x > region.max.x)
-        region = {game.player_start() - Vec3(50), game.player_start() + Vec3(50)};
-    grid_ = NavGrid::build(game.world(), region, game.player_start().y);
-    path_.reserve(1024);
+float flat_distance(const Vec3& a, const Vec3& b) {
+    return glm::length(Vec2(a.x - b.x, a.z - b.z));
 }
 
-Vec3 Autoplay::goal(const Game& game) const {
-    if (!game.panels().empty()) return game.panels().front().centre;
-    return game.player().feet;
+// Distance (x, z) from p to the segment a..b.
+float flat_distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
+    const Vec2 ab(b.x - a.x, b.z - a.z), ap(p.x - a.x, p.z - a.z);
+    const float len2 = glm::dot(ab, ab);
+    const float t = len2 > 1e-8f ? std::clamp(glm::dot(ap, ab) / len2, 0.0f, 1.0f) : 0.0f;
+    return glm::length(ap - t * ab);
+}
+
+// The mesh point nearest to the panel's foot, searched within the panel's footprint plus the body's radius
+// and a margin, at about the foot's height (tall extents would snap onto the panel's own top).
+std::optional<Vec3> panel_goal(const Game& game, nav::NavMesh& mesh) {
+    if (game.panels().empty()) return std::nullopt;
+    const Panel& panel = game.panels().front();
+    const Vec3 foot = panel.centre - Vec3(0.0f, panel.size.y * 0.5f, 0.0f);
+    const float reach = 0.5f * std::hypot(panel.size.x, panel.size.z) + mesh.settings().agent_radius + 1.0f;
+    return mesh.nearest_point(foot, Vec3(reach, 1.0f, reach));
+}
+
+} // namespace
+
+Result<std::shared_ptr<nav::NavMesh>> build_autoplay_mesh(const level::Level& level,
+                                                          float cylinder_keep_out) {
+    level::Level widened = level;
+    for (level::Entity& e : widened.entities)
+        if (auto* cylinder = e.try_as<level::GasCylinderProps>()) cylinder->radius += cylinder_keep_out;
+    const physics::CharacterSettings character;
+    auto mesh = nav::NavMesh::build(
+        widened, nav::player_nav_settings(character.step_height, character.max_slope_degrees));
+    if (!mesh) return mesh.error();
+    for (const level::Entity& e : level.entities)
+        if (e.type() == level::EntityType::Door) (*mesh)->set_door_open(e.id, true);
+    return std::shared_ptr<nav::NavMesh>(std::move(*mesh));
+}
+
+Result<Autoplay> Autoplay::create(const level::Level& level, const Game& game, std::uint64_t seed,
+                                  AutoplaySettings settings) {
+    auto mesh = build_autoplay_mesh(level, settings.cylinder_keep_out);
+    if (!mesh) return mesh.error();
+    return Autoplay(game, std::move(*mesh), seed, settings);
+}
+
+Autoplay::Autoplay(const Game& game, std::shared_ptr<nav::NavMesh> mesh, std::uint64_t seed,
+                   AutoplaySettings settings)
+    : settings_(settings), rng_(seed, 0x626f74ull), mesh_(std::move(mesh)) {
+    goal_ = panel_goal(game, *mesh_);
+    path_.reserve(64);
 }
 
 int Autoplay::pick_target(const Game& game) const {
@@ -70,6 +111,69 @@ void Autoplay::aim_at(const Game& game, const Vec3& point, Input& in, float& yaw
     in.look_pitch = std::clamp(pitch_error, -max_turn, max_turn);
 }
 
+void Autoplay::follow_path(const Game& game) {
+    const Vec3& feet = game.player().feet;
+    if (since_plan_ >= settings_.replan_interval) {
+        since_plan_ = 0.0f;
+        // Found or Partial alike: walk as far as the mesh goes toward the panel.
+        if (!goal_ || mesh_->find_path(feet, *goal_, path_) == nav::PathStatus::StartOffMesh ||
+            path_.size() < 2)
+            path_.clear();
+        waypoint_ = 1; // path_[0] is where the bot stands, snapped to the mesh
+    }
+    while (waypoint_ + 1 < path_.size() && flat_distance(path_[waypoint_], feet) < kCornerReached)
+        ++waypoint_;
+}
+
+bool Autoplay::path_passes_near(const Vec3& from, const Vec3& point, float radius, float length) const {
+    Vec3 a = from;
+    for (std::size_t k = waypoint_; k < path_.size() && length > 0.0f; ++k) {
+        if (flat_distance_to_segment(point, a, path_[k]) < radius) return true;
+        length -= flat_distance(a, path_[k]);
+        a = path_[k];
+    }
+    return false;
+}
+
+// A closed door on the way: stop in its sensor, face it, press E, wait for it to open.
+bool Autoplay::open_door_on_path(const Game& game, Input& in) {
+    const PlayerState& p = game.player();
+    for (const Door& d : game.doors()) {
+        if (!d.player_inside || d.progress >= 0.95f) continue;
+        if (!path_passes_near(p.feet, d.frame.position, 3.0f, 16.0f)) continue;
+        float yaw_error = 0.0f, pitch_error = 0.0f;
+        aim_at(game, d.frame.position + Vec3(0, 2.5f, 0), in, yaw_error, pitch_error);
+        if (!d.opening && game.interact_target() == d.entity_id && interact_wait_ <= 0.0f) {
+            in.interact = true;
+            interact_wait_ = 0.3f;
+        }
+        return true;
+    }
+    return false;
+}
+
+// No progress for 2 s: strafe a random way for half a second and replan.
+void Autoplay::unstick(const Game& game, Input& in) {
+    const float dt = static_cast<float>(game.settings().step);
+    const Vec3& feet = game.player().feet;
+    stuck_time_ += dt;
+    if (glm::length(feet - stuck_anchor_) > 1.5f) {
+        stuck_time_ = 0.0f;
+        stuck_anchor_ = feet;
+    }
+    if (stuck_time_ > 2.0f) {
+        stuck_time_ = 0.0f;
+        unstick_time_ = 0.5f;
+        unstick_side_ = rng_.chance(0.5f) ? 1.0f : -1.0f;
+        since_plan_ = 1e9f;
+    }
+    if (unstick_time_ > 0.0f) {
+        unstick_time_ -= dt;
+        in.move_right = unstick_side_;
+        in.move_forward = -0.5f;
+    }
+}
+
 Input Autoplay::decide(const Game& game) {
     Input in;
     if (game.phase() != Phase::Playing || game.paused()) return in;
@@ -100,10 +204,9 @@ Input Autoplay::decide(const Game& game) {
         return in;
     }
 
-    const Vec3 goal_point = goal(game);
     // At the panel: face it and press E.
     if (!game.panels().empty() && game.interact_target() == game.panels().front().entity_id) {
-        aim_at(game, goal_point, in, yaw_error, pitch_error);
+        aim_at(game, game.panels().front().centre, in, yaw_error, pitch_error);
         if (interact_wait_ <= 0.0f) {
             in.interact = true;
             interact_wait_ = 0.3f;
@@ -111,54 +214,15 @@ Input Autoplay::decide(const Game& game) {
         return in;
     }
 
-    if (since_plan_ >= settings_.replan_interval || waypoint_ >= path_.size()) {
-        since_plan_ = 0.0f;
-        grid_.find_path(p.feet, goal_point, path_);
-        waypoint_ = 0;
+    follow_path(game);
+    if (open_door_on_path(game, in)) return in;
+    if (!path_.empty()) {
+        const Vec3& corner = path_[waypoint_];
+        aim_at(game, corner + Vec3(0, p.eye().y - corner.y, 0), in, yaw_error, pitch_error);
+        in.look_pitch = std::clamp(-p.pitch, -0.1f, 0.1f);
+        in.move_forward = std::abs(yaw_error) < 0.5f ? 1.0f : 0.2f;
     }
-    while (waypoint_ < path_.size() &&
-           glm::length(Vec3(path_[waypoint_].x - p.feet.x, 0, path_[waypoint_].z - p.feet.z)) < 1.5f)
-        ++waypoint_;
-
-    // A closed door on the way: stop in its sensor, face it, press E, wait for it to open.
-    for (const Door& d : game.doors()) {
-        if (!d.player_inside || d.progress >= 0.95f) continue;
-        bool on_path = false;
-        for (std::size_t k = waypoint_; k < std::min(path_.size(), waypoint_ + 16); ++k)
-            if (glm::length(Vec3(path_[k].x - d.frame.position.x, 0, path_[k].z - d.frame.position.z)) < 3.0f)
-                on_path = true;
-        if (!on_path) continue;
-        aim_at(game, d.frame.position + Vec3(0, 2.5f, 0), in, yaw_error, pitch_error);
-        if (!d.opening && game.interact_target() == d.entity_id && interact_wait_ <= 0.0f) {
-            in.interact = true;
-            interact_wait_ = 0.3f;
-        }
-        return in;
-    }
-
-    if (path_.empty()) return in;
-    const Vec3 next = path_[std::min(waypoint_ + 1, path_.size() - 1)];
-    aim_at(game, next + Vec3(0, p.eye().y - next.y, 0), in, yaw_error, pitch_error);
-    in.look_pitch = std::clamp(-p.pitch, -0.1f, 0.1f);
-    in.move_forward = std::abs(yaw_error) < 0.5f ? 1.0f : 0.2f;
-
-    // Unstick: no progress for 2 s, strafe a random way for half a second and replan.
-    stuck_time_ += dt;
-    if (glm::length(p.feet - stuck_anchor_) > 1.5f) {
-        stuck_time_ = 0.0f;
-        stuck_anchor_ = p.feet;
-    }
-    if (stuck_time_ > 2.0f) {
-        stuck_time_ = 0.0f;
-        unstick_time_ = 0.5f;
-        unstick_side_ = rng_.chance(0.5f) ? 1.0f : -1.0f;
-        since_plan_ = 1e9f;
-    }
-    if (unstick_time_ > 0.0f) {
-        unstick_time_ -= dt;
-        in.move_right = unstick_side_;
-        in.move_forward = -0.5f;
-    }
+    if (goal_) unstick(game, in); // off the mesh too: a strafe may bring it back
     return in;
 }
 

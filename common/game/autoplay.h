@@ -1,13 +1,15 @@
 #pragma once
-// The autoplay bot: plays a level through with the same Input a keyboard produces. It walks a nav grid
-// (built once from the level through physics queries) toward the control panel, opens the doors on its
-// way, turns to and shoots every robot it can see (aiming at a human-like turn rate and click rate), and
-// presses E at the panel. Its own randomness (unsticking) comes from its own seeded Rng, and it reads
-// nothing but the game's state, so a run with a given seed is reproducible and its inputs replayable.
+// The autoplay bot: plays a level through with the same Input a keyboard produces. It plans on a navigation
+// mesh built for the player's body with every door open (build_autoplay_mesh), walks the path's corners
+// toward the control panel, opens each closed door with E as it reaches it, turns to and shoots every robot
+// it can see (aiming at a human-like turn rate and click rate), and presses E at the panel. Its own
+// randomness (unsticking) comes from its own seeded Rng, and it reads nothing but the game's state and its
+// mesh, so a run with a given seed is reproducible and its inputs replayable.
 #include "core/random.h"
 #include "game/game.h"
-#include "game/nav_grid.h"
+#include "nav/nav_mesh.h"
 
+#include <memory>
 #include <vector>
 
 namespace ks::game {
@@ -18,23 +20,46 @@ struct AutoplaySettings {
     float engage_range = 40.0f;   // robots farther than this are ignored
     float aim_tolerance = 0.6f;   // fire when the crosshair is within this fraction of the robot's radius
     float replan_interval = 1.0f; // seconds
+    // Touching a gas cylinder sets it off, and a path bends around an obstacle as close as the body allows:
+    // the bot's mesh widens every cylinder by this much so its paths keep clear of them.
+    float cylinder_keep_out = 1.5f;
 };
+
+// The mesh the bot plans on: nav::player_nav_settings with the character controller's climb and slope,
+// every door open, gas cylinders widened by `cylinder_keep_out`. It never changes after the build, so one
+// mesh serves every bot on the level in turn (the soak's rounds), one bot at a time.
+Result<std::shared_ptr<nav::NavMesh>> build_autoplay_mesh(const level::Level& level, float cylinder_keep_out);
 
 class Autoplay {
   public:
-    Autoplay(const Game& game, std::uint64_t seed, AutoplaySettings settings = {});
+    // The bot for `game`, created from `level`, on a mesh of its own.
+    static Result<Autoplay> create(const level::Level& level, const Game& game, std::uint64_t seed,
+                                   AutoplaySettings settings = {});
+    // The bot on a mesh from build_autoplay_mesh for the level `game` was created from.
+    Autoplay(const Game& game, std::shared_ptr<nav::NavMesh> mesh, std::uint64_t seed,
+             AutoplaySettings settings = {});
+
     Input decide(const Game& game);
-    const NavGrid& grid() const { return grid_; }
+    // The corners of the current plan (the first is where the bot stood when it planned).
     const std::vector<Vec3>& path() const { return path_; }
+    const nav::NavMesh& mesh() const { return *mesh_; }
 
   private:
     int pick_target(const Game& game) const;
     void aim_at(const Game& game, const Vec3& point, Input& in, float& yaw_error, float& pitch_error) const;
-    Vec3 goal(const Game& game) const;
+    // Where the bot walks to: the mesh point nearest to the panel's foot (the panel is a solid, so its own
+    // centre is off the mesh); the player's feet when the level has no panel or no mesh near it.
+    Vec3 goal(const Game& game);
+    void follow_path(const Game& game);
+    // Whether the rest of the plan, over its next `length` units, passes within `radius` of `point` (x, z).
+    bool path_passes_near(const Vec3& from, const Vec3& point, float radius, float length) const;
+    bool open_door_on_path(const Game& game, Input& in);
+    void unstick(const Game& game, Input& in);
 
     AutoplaySettings settings_;
     Rng rng_;
-    NavGrid grid_;
+    std::shared_ptr<nav::NavMesh> mesh_;
+    std::optional<Vec3> goal_;
     std::vector<Vec3> path_;
     std::size_t waypoint_ = 0;
     float since_plan_ = 1e9f;

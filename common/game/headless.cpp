@@ -102,7 +102,11 @@ Result<HeadlessStats> run_headless(const HeadlessOptions& options) {
     Game& game = **created;
 
     std::unique_ptr<Autoplay> bot;
-    if (options.autoplay) bot = std::make_unique<Autoplay>(game, seed);
+    if (options.autoplay) {
+        auto made = Autoplay::create(*level, game, seed);
+        if (!made) return made.error();
+        bot = std::make_unique<Autoplay>(std::move(*made));
+    }
     Recording record;
     record.seed = seed;
     record.level = options.level.string();

@@ -25,6 +25,13 @@ NavSettings robot_nav_settings(float step_height, float max_slope_degrees) {
     return s;
 }
 
+NavSettings player_nav_settings(float step_height, float max_slope_degrees) {
+    NavSettings s = robot_nav_settings(step_height, max_slope_degrees);
+    s.agent_radius = level::kPlayerRadius;
+    s.agent_height = level::kPlayerHeight;
+    return s;
+}
+
 std::optional<Error> check_settings(const NavSettings& s) {
     if (!positive_finite(s.agent_radius) || !positive_finite(s.agent_height))
         return settings_error("agent radius and height must be positive", "use nav::robot_nav_settings");

@@ -45,6 +45,9 @@ struct NavSettings {
 // from the character controller (physics::CharacterSettings::step_height, max_slope_degrees), which the
 // game passes in so the numbers live in one place.
 NavSettings robot_nav_settings(float step_height, float max_slope_degrees);
+// The same for the player's body (level::kPlayerRadius, kPlayerHeight): the autoplay bot plans on it and the
+// editor asks it whether the player can walk to the control panel.
+NavSettings player_nav_settings(float step_height, float max_slope_degrees);
 
 // A clear error for settings Recast cannot build with (non-positive sizes, a slope outside (0, 90), tiles
 // too small for the agent's border); nullopt when they are usable.

@@ -137,8 +137,8 @@ Result<void> Editor::accept_recovery() {
 }
 
 const std::vector<Issue>& Editor::issues() {
-    // During a drag (an open transaction) the walk check (about 16 ms on the main level) waits for the
-    // commit; every other rule stays live (well under a millisecond).
+    // During a drag (an open transaction) the walk check (a navigation mesh build: docs/performance.md)
+    // waits for the commit; every other rule stays live.
     const bool dragging = history_.in_transaction();
     const std::uint64_t key = ((history_.revision() + reloads_) << 1) | (dragging ? 1u : 0u);
     if (issues_revision_ != key) {

@@ -54,7 +54,9 @@ struct ValidationOptions {
     float support_tolerance = 0.05f; // how far above/below a surface still counts as standing on it
     float sink_limit = 1.0f;         // deeper than this under a surface, the entity belongs to a lower one
     bool check_reachability = true;
-    float walk_cell = 0.5f; // grid cell of the reachability check, units (capped at 2M cells)
+    // Cell size of the reachability check's navigation mesh, units: the bot's (nav::NavSettings). Coarser
+    // cells build faster but refuse steep stairs (Recast's ledge filter) and close gaps near 2r.
+    float walk_cell = 0.2f;
 };
 
 std::vector<Issue> validate_design(const level::Level& level, const ValidationOptions& options = {});

@@ -50,7 +50,7 @@ TEST_CASE("validation: the shipped main level passes every design rule, reachabi
     auto walk = walk_to_control_panel(level, {});
     CHECK(walk.decided);
     CHECK(walk.reachable);
-    CHECK(walk.open_nodes > 10000);
+    CHECK(walk.panel_approaches > 0);
 }
 
 TEST_CASE("validation: the scripted two-room level is valid") {
@@ -270,7 +270,7 @@ TEST_CASE("rule reachability: a sealed room or a platform without stairs makes t
     auto walk = walk_to_control_panel(main, {});
     CHECK(walk.decided);
     CHECK_FALSE(walk.reachable);
-    CHECK(walk.visited_nodes > 1000); // it searched the rooms, not just gave up
+    CHECK(walk.panel_approaches > 0); // the platform is walkable, just not from the start
 
     // A slab too low to walk under (headroom 2 < the player's 3) across the doorway blocks it as well.
     REQUIRE(ed.undo());
@@ -280,7 +280,8 @@ TEST_CASE("rule reachability: a sealed room or a platform without stairs makes t
     REQUIRE(ed.set_field_text("size", "20,4").ok());
     CHECK(of_rule(ed.issues(), Rule::Reachability).size() == 1);
     REQUIRE(ed.select({low}).ok());
-    REQUIRE(ed.move_selection({0, 1, 0}).ok()); // headroom 3.5 - 0.5 thickness = 3: the player fits
+    // Headroom 3.6 - 0.5 thickness = 3.1: the player (3 tall, standing a skin above the floor) fits.
+    REQUIRE(ed.move_selection({0, 1.1f, 0}).ok());
     CHECK(of_rule(ed.issues(), Rule::Reachability).empty());
     REQUIRE(ed.undo()); // the move,
     REQUIRE(ed.undo()); // the size,

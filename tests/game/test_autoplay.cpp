@@ -1,10 +1,12 @@
 // The autoplay bot wins the shipped main level headless, for several seeds, within a simulated time limit.
 #include "game/autoplay.h"
 #include "game/headless.h"
+#include "level/level_io.h"
 #include "test_support.h"
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstdio>
 
 using namespace ks;
@@ -47,10 +49,44 @@ TEST_CASE("autoplay without ammo ignores the robots it sees and walks to the pan
         options.settings.start_ammo = start_ammo;
         auto g = Game::create(lv, options);
         REQUIRE(g);
-        Autoplay bot(**g, 7);
-        for (int i = 0; i < 120 * 30 && (*g)->phase() == Phase::Playing; ++i) (*g)->step(bot.decide(**g));
+        auto bot = Autoplay::create(lv, **g, 7);
+        REQUIRE_MESSAGE(bot.ok(), (bot.ok() ? "" : bot.error().str()));
+        for (int i = 0; i < 120 * 30 && (*g)->phase() == Phase::Playing; ++i) (*g)->step(bot->decide(**g));
         CHECK((*g)->phase() == Phase::Won);
         if (start_ammo == 0) CHECK((*g)->player().shots == 0);
         if (start_ammo > 0) CHECK((*g)->robots_killed() == 1); // with ammo it still fights first
     }
+}
+
+TEST_CASE("the bot's mesh: doors open, paths through them keep the player's body off every gas cylinder") {
+    auto lv = level::load_level_file(test::source_dir() / "levels/main.json");
+    REQUIRE_MESSAGE(lv.ok(), (lv.ok() ? "" : lv.error().str()));
+    const float keep_out = AutoplaySettings{}.cylinder_keep_out;
+    auto mesh = build_autoplay_mesh(*lv, keep_out);
+    REQUIRE_MESSAGE(mesh.ok(), (mesh.ok() ? "" : mesh.error().str()));
+    std::vector<const level::Entity*> cylinders;
+    const level::Entity* panel = nullptr;
+    for (const level::Entity& e : lv->entities) {
+        if (e.type() == level::EntityType::Door) CHECK((*mesh)->door_open(e.id)); // the level has them shut
+        if (e.type() == level::EntityType::GasCylinder) cylinders.push_back(&e);
+        if (e.type() == level::EntityType::ControlPanel) panel = &e;
+    }
+    REQUIRE(cylinders.size() == 6);
+    REQUIRE(panel != nullptr);
+    const float half_x = 0.5f * panel->as<level::ControlPanelProps>().size.x;
+    const Vec3 beside_panel = panel->position - Vec3(half_x + level::kPlayerRadius + 0.5f, 0, 0);
+    std::vector<Vec3> path;
+    REQUIRE((*mesh)->find_path(lv->player_start.position, beside_panel, path) == nav::PathStatus::Found);
+    CHECK(glm::length(path.back() - beside_panel) < 0.3f);
+    // Touching a cylinder sets it off: the body (radius 1) must pass each cylinder with room to spare. On
+    // a mesh without the keep-out this path passes three of them about 0.05 from touching.
+    for (std::size_t i = 1; i < path.size(); ++i)
+        for (const level::Entity* c : cylinders) {
+            const Vec2 a(path[i - 1].x, path[i - 1].z), b(path[i].x, path[i].z),
+                p(c->position.x, c->position.z);
+            const float t = std::clamp(glm::dot(p - a, b - a) / glm::dot(b - a, b - a), 0.0f, 1.0f);
+            const float clearance =
+                glm::length(p - (a + t * (b - a))) - c->as<level::GasCylinderProps>().radius;
+            CHECK(clearance > level::kPlayerRadius + 0.5f * keep_out);
+        }
 }

@@ -22,9 +22,10 @@ level::Level shipped(const char* name) {
 
 std::uint64_t hash_after(const level::Level& lv, std::uint64_t seed, double seconds) {
     auto g = make_game(lv, seed);
-    Autoplay bot(*g, seed);
+    auto bot = Autoplay::create(lv, *g, seed);
+    if (!bot) FAIL(bot.error().str());
     const int steps = static_cast<int>(seconds * 120);
-    for (int i = 0; i < steps && g->phase() == Phase::Playing; ++i) g->step(bot.decide(*g));
+    for (int i = 0; i < steps && g->phase() == Phase::Playing; ++i) g->step(bot->decide(*g));
     return g->state_hash();
 }
 
