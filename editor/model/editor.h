@@ -12,6 +12,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <future>
 #include <optional>
 #include <string>
 #include <vector>
@@ -118,6 +119,9 @@ class Editor {
     const std::vector<Issue>& issues();
     ValidationOptions& validation_options() { return validation_options_; }
     size_t walk_checks_run() const { return walk_checks_run_; } // how often issues() ran the walk check
+    // With background_reachability: whether a walk check is still running, and waiting for it (tests).
+    bool reachability_pending() const { return walk_job_.valid(); }
+    void wait_for_reachability();
     Result<void> apply_quick_fix(const Issue& issue);
     Result<void> select_issue(const Issue& issue);
 
@@ -145,7 +149,8 @@ class Editor {
     Result<void> modify_selection(std::string name, const std::function<Result<void>(level::Entity&)>& edit,
                                   std::string merge_key = {});
     // One LevelChange updating robot `id`'s patrol with `edit`; nothing changes if it fails.
-    Result<void> edit_patrol(int id, std::string name, const std::function<Result<void>(level::Patrol&)>& edit,
+    Result<void> edit_patrol(int id, std::string name,
+                             const std::function<Result<void>(level::Patrol&)>& edit,
                              std::string merge_key = {});
     void execute(std::unique_ptr<LevelChange> change, std::vector<int> selection_after);
     Result<SaveReport> write_to(const std::filesystem::path& path);
@@ -167,6 +172,11 @@ class Editor {
     std::uint64_t walk_fingerprint_ = 0;
     bool walk_known_ = false;
     size_t walk_checks_run_ = 0;
+    // The running background walk check and the fingerprint it answers for.
+    std::future<std::vector<Issue>> walk_job_;
+    std::uint64_t walk_job_fingerprint_ = 0;
+    std::uint64_t walk_results_ = 0; // finished walk checks taken in: part of issues()' cache key
+    void poll_walk_job(bool wait);
     std::uint64_t reloads_ = 0;
 };
 

@@ -3,6 +3,8 @@
 #include "model/editor.h"
 #include "model/reachability.h"
 
+#include <chrono>
+
 #include "core/files.h"
 #include "core/log.h"
 #include "level/level_io.h"
@@ -136,18 +138,45 @@ Result<void> Editor::accept_recovery() {
     return ok();
 }
 
+void Editor::poll_walk_job(bool wait) {
+    if (!walk_job_.valid()) return;
+    if (!wait && walk_job_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+    walk_issues_ = walk_job_.get();
+    walk_fingerprint_ = walk_job_fingerprint_;
+    walk_known_ = true;
+    ++walk_results_;
+}
+
+void Editor::wait_for_reachability() {
+    poll_walk_job(true);
+}
+
 const std::vector<Issue>& Editor::issues() {
     // During a drag (an open transaction) the walk check (a navigation mesh build: docs/performance.md)
-    // waits for the commit; every other rule stays live.
+    // waits for the commit; every other rule stays live. In the window it runs in the background.
+    poll_walk_job(false);
     const bool dragging = history_.in_transaction();
-    const std::uint64_t key = ((history_.revision() + reloads_) << 1) | (dragging ? 1u : 0u);
+    const std::uint64_t key =
+        ((history_.revision() + reloads_ + (walk_results_ << 32)) << 1) | (dragging ? 1u : 0u);
     if (issues_revision_ != key) {
         ValidationOptions options = validation_options_;
         options.check_reachability = false;
         issues_ = validate_design(doc_.level, options);
         if (validation_options_.check_reachability && !dragging) {
             const std::uint64_t fingerprint = walk_fingerprint(doc_.level, validation_options_);
-            if (!walk_known_ || fingerprint != walk_fingerprint_) {
+            const bool stale = !walk_known_ || fingerprint != walk_fingerprint_;
+            if (stale && validation_options_.background_reachability) {
+                if (!walk_job_.valid()) { // one at a time; a newer level is checked when this one ends
+                    walk_job_fingerprint_ = fingerprint;
+                    walk_job_ =
+                        std::async(std::launch::async, [level = doc_.level, o = validation_options_]() {
+                            std::vector<Issue> found;
+                            check_reachability(level, o, found);
+                            return found;
+                        });
+                    ++walk_checks_run_;
+                }
+            } else if (stale) {
                 walk_issues_.clear();
                 check_reachability(doc_.level, validation_options_, walk_issues_);
                 walk_fingerprint_ = fingerprint;

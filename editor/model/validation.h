@@ -57,6 +57,10 @@ struct ValidationOptions {
     // Cell size of the reachability check's navigation mesh, units: the bot's (nav::NavSettings). Coarser
     // cells build faster but refuse steep stairs (Recast's ledge filter) and close gaps near 2r.
     float walk_cell = 0.2f;
+    // The editor window runs the walk check in a background thread on a copy of the level, so an edit never
+    // waits for the mesh build; its issue shows when the check finishes (the previous result until then).
+    // Scripts and tests leave it off and get the answer at once.
+    bool background_reachability = false;
 };
 
 std::vector<Issue> validate_design(const level::Level& level, const ValidationOptions& options = {});

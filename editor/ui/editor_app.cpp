@@ -58,6 +58,8 @@ Result<void> EditorApp::init() {
     });
     if (auto r = recent_.load(); !r) log_line(r.error().str(), true);
     editor_.set_recent_files(&recent_);
+    // The walk check builds a navigation mesh: in the window it must never hold up a frame.
+    editor_.validation_options().background_reachability = true;
     render::RendererSettings settings = render::renderer_settings_from_environment();
     settings.msaa_samples = render::default_msaa_for(shell_.gl_renderer());
     // Full resolution on software rasterisers too (the game's automatic choice there is 0.5): thin overlays

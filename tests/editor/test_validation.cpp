@@ -388,3 +388,26 @@ TEST_CASE("validation: the walk check reruns only when what it reads changes, an
     same_as_fresh();
     CHECK(ed.walk_checks_run() == before + 1);
 }
+
+TEST_CASE("validation: in the window the walk check runs in the background and its issue arrives when done") {
+    Editor ed;
+    ed.validation_options().background_reachability = true;
+    build_two_rooms(ed);
+    (void)ed.issues();
+    ed.wait_for_reachability();
+    CHECK(of_rule(ed.issues(), Rule::Reachability).empty());
+    // Seal the doorway: the edit returns at once; the rule's answer follows the finished check.
+    (void)ed.place(EntityType::Wall, {0, 0, 0});
+    REQUIRE(ed.set_field_text("size", "5,16,0.5").ok());
+    const auto& during = ed.issues();
+    if (ed.reachability_pending()) CHECK(of_rule(during, Rule::Reachability).empty()); // the previous answer
+    ed.wait_for_reachability();
+    CHECK_FALSE(ed.reachability_pending());
+    CHECK(of_rule(ed.issues(), Rule::Reachability).size() == 1);
+    CHECK(dump(ed.issues()) == dump(validate_design(ed.level())));
+    REQUIRE(ed.undo());
+    REQUIRE(ed.undo());
+    (void)ed.issues();
+    ed.wait_for_reachability();
+    CHECK(of_rule(ed.issues(), Rule::Reachability).empty());
+}
