@@ -266,6 +266,7 @@ class Game {
     // Robot AI pieces (robots.cpp, robot_hunt.cpp).
     bool robot_engaged(const Robot& r, float distance, bool same_level) const;
     bool robot_has_clear_shot(const Robot& r) const;
+    bool robot_line_to_player(const Robot& r, float height) const;
     void robot_fight(std::size_t index, float distance, float dt);
     void start_hunt(std::size_t index);
     void robot_hunt(std::size_t index, float dt);

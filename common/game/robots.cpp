@@ -43,16 +43,21 @@ Vec3 Game::robot_muzzle(std::size_t index) const {
     return Vec3(local_world[static_cast<std::size_t>(hand_tip_node_)][3]);
 }
 
-bool Game::robot_sees_player(const Robot& r) const {
-    const Vec3 eye = r.feet + Vec3(0, settings_.robot_height * 0.9f, 0);
+// Nothing that blocks sight between the robot at `height` above its feet and the player's centre.
+bool Game::robot_line_to_player(const Robot& r, float height) const {
+    const Vec3 from = r.feet + Vec3(0, height, 0);
     const Vec3 target = player_.feet + Vec3(0, settings_.player_height * 0.5f, 0);
-    const Vec3 d = target - eye;
+    const Vec3 d = target - from;
     const float len = glm::length(d);
     if (!(len > 1e-4f)) return true;
     physics::RayFilter filter;
     filter.layers = physics::layer::kBlocksSight;
     filter.ignore = r.body;
-    return !world_.ray_any({eye, d / len, len}, filter);
+    return !world_.ray_any({from, d / len, len}, filter);
+}
+
+bool Game::robot_sees_player(const Robot& r) const {
+    return robot_line_to_player(r, settings_.robot_height * 0.9f); // from the eye
 }
 
 void Game::damage_robot(std::size_t index, float amount, bool by_player) {
@@ -136,15 +141,7 @@ bool Game::robot_engaged(const Robot& r, float distance, bool same_level) const 
 // Whether a shot from the robot's chest would reach the player: a window the robot sees through may still
 // be too high to shoot through, and then it walks round instead of shooting the wall.
 bool Game::robot_has_clear_shot(const Robot& r) const {
-    const Vec3 chest = r.feet + Vec3(0, settings_.robot_height * 0.6f, 0);
-    const Vec3 target = player_.feet + Vec3(0, settings_.player_height * 0.5f, 0);
-    const Vec3 d = target - chest;
-    const float len = glm::length(d);
-    if (!(len > 1e-4f)) return true;
-    physics::RayFilter filter;
-    filter.layers = physics::layer::kBlocksSight;
-    filter.ignore = r.body;
-    return !world_.ray_any({chest, d / len, len}, filter);
+    return robot_line_to_player(r, settings_.robot_height * 0.6f); // from the chest
 }
 
 void Game::robot_fight(std::size_t index, float distance, float dt) {

@@ -128,25 +128,32 @@ Result<std::unique_ptr<NavMesh>> NavMesh::build(const level::Level& level, const
     return nav;
 }
 
-void NavMesh::index_door_polygons(const std::vector<DoorFootprint>& footprints) {
-    const dtNavMesh& mesh = *mesh_;
-    for (const DoorFootprint& f : footprints) doors_.push_back({f.entity_id, f.open, {}});
+namespace {
+// Calls visit(tile, polygon index, reference) for every polygon of every built tile.
+template <class Visit>
+void each_polygon(const dtNavMesh& mesh, Visit&& visit) {
     for (int i = 0; i < mesh.getMaxTiles(); ++i) {
         const dtMeshTile* tile = mesh.getTile(i);
         if (!tile->header) continue;
         const dtPolyRef base = mesh.getPolyRefBase(tile);
-        for (int p = 0; p < tile->header->polyCount; ++p) {
-            const dtPoly& poly = tile->polys[p];
-            if (poly.getArea() != kAreaDoor) continue;
-            const Vec3 centre = poly_centre(*tile, poly);
-            for (size_t d = 0; d < footprints.size(); ++d)
-                if (footprints[d].contains(centre, settings_.cell_size)) {
-                    doors_[d].polygons.push_back(base | static_cast<dtPolyRef>(p));
-                    ++stats_.door_polygons;
-                    break;
-                }
-        }
+        for (int p = 0; p < tile->header->polyCount; ++p) visit(*tile, p, base | static_cast<dtPolyRef>(p));
     }
+}
+} // namespace
+
+void NavMesh::index_door_polygons(const std::vector<DoorFootprint>& footprints) {
+    for (const DoorFootprint& f : footprints) doors_.push_back({f.entity_id, f.open, {}});
+    each_polygon(*mesh_, [&](const dtMeshTile& tile, int p, dtPolyRef ref) {
+        const dtPoly& poly = tile.polys[p];
+        if (poly.getArea() != kAreaDoor) return;
+        const Vec3 centre = poly_centre(tile, poly);
+        for (size_t d = 0; d < footprints.size(); ++d)
+            if (footprints[d].contains(centre, settings_.cell_size)) {
+                doors_[d].polygons.push_back(ref);
+                ++stats_.door_polygons;
+                break;
+            }
+    });
     for (const Door& door : doors_)
         if (!door.open) (void)set_door_open(door.entity_id, false);
 }
@@ -176,28 +183,21 @@ bool NavMesh::door_open(int door_entity_id) const {
 
 std::vector<NavTriangle> NavMesh::triangles() const {
     std::vector<NavTriangle> out;
-    const dtNavMesh& mesh = *mesh_;
-    for (int i = 0; i < mesh.getMaxTiles(); ++i) {
-        const dtMeshTile* tile = mesh.getTile(i);
-        if (!tile->header) continue;
-        const dtPolyRef base = mesh.getPolyRefBase(tile);
-        for (int p = 0; p < tile->header->polyCount; ++p) {
-            const dtPoly& poly = tile->polys[p];
-            if (poly.getType() == DT_POLYTYPE_OFFMESH_CONNECTION) continue;
-            int door_id = 0;
-            for (const Door& d : doors_)
-                if (std::find(d.polygons.begin(), d.polygons.end(), base | static_cast<dtPolyRef>(p)) !=
-                    d.polygons.end())
-                    door_id = d.entity_id;
-            const dtPolyDetail& detail = tile->detailMeshes[p];
-            for (int t = 0; t < detail.triCount; ++t) {
-                const unsigned char* tri = &tile->detailTris[(detail.triBase + t) * 4];
-                out.push_back({detail_vertex(*tile, poly, detail, tri[0]),
-                               detail_vertex(*tile, poly, detail, tri[1]),
-                               detail_vertex(*tile, poly, detail, tri[2]), poly.flags, door_id});
-            }
+    each_polygon(*mesh_, [&](const dtMeshTile& tile, int p, dtPolyRef ref) {
+        const dtPoly& poly = tile.polys[p];
+        if (poly.getType() == DT_POLYTYPE_OFFMESH_CONNECTION) return;
+        int door_id = 0;
+        for (const Door& d : doors_)
+            if (std::find(d.polygons.begin(), d.polygons.end(), ref) != d.polygons.end())
+                door_id = d.entity_id;
+        const dtPolyDetail& detail = tile.detailMeshes[p];
+        for (int t = 0; t < detail.triCount; ++t) {
+            const unsigned char* tri = &tile.detailTris[(detail.triBase + t) * 4];
+            out.push_back({detail_vertex(tile, poly, detail, tri[0]),
+                           detail_vertex(tile, poly, detail, tri[1]),
+                           detail_vertex(tile, poly, detail, tri[2]), poly.flags, door_id});
         }
-    }
+    });
     return out;
 }
 
