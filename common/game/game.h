@@ -250,6 +250,7 @@ class Game {
     void fire_player_shot();
     void update_robot(std::size_t index, float dt);
     void robot_wander(Robot& r, std::size_t index, float dt);
+    void walk_patrol(Robot& r, float dt);
     void robot_fire(std::size_t index);
     bool robot_sees_player(const Robot& r) const;
     void update_doors(float dt);

@@ -15,22 +15,6 @@
 #include <utility>
 
 namespace ks::game {
-namespace {
-
-// Idle along the patrol route: turn toward the next point and walk at the wander speed, slower while still
-// turning (no walking sideways), standing while the route says to wait.
-void walk_patrol(Robot& r, physics::MovementState& mv, float speed, float dt) {
-    Vec3 velocity(0.0f);
-    if (const auto heading = patrol_heading(r.props.patrol, r.patrol, r.feet, dt)) {
-        r.yaw = turn_toward(r.yaw, yaw_of(*heading), r.props.rotation_velocity * dt);
-        const Vec3 forward(-std::sin(r.yaw), 0.0f, -std::cos(r.yaw));
-        velocity = *heading * (speed * std::max(0.0f, glm::dot(forward, *heading)));
-    }
-    mv.velocity.x = velocity.x + r.knockback.x;
-    mv.velocity.z = velocity.z + r.knockback.z;
-}
-
-} // namespace
 
 Vec3 Game::robot_muzzle(std::size_t index) const {
     const Robot& r = robots_[index];
@@ -121,7 +105,7 @@ void Game::update_robot(std::size_t index, float dt) {
         return;
     }
     if (r.props.patrol.active())
-        walk_patrol(r, mv, settings_.robot_wander_speed, dt);
+        walk_patrol(r, dt);
     else
         robot_wander(r, index, dt);
 }
@@ -198,6 +182,24 @@ void Game::robot_fight(std::size_t index, float distance, float dt) {
     // Face where it walks (round a wall, the path leads away from the player); the player when it stands.
     const Vec3 facing = glm::dot(velocity, velocity) > 0.0f ? velocity : Vec3(to.x, 0, to.z);
     r.yaw = turn_toward(r.yaw, yaw_of(facing), r.props.rotation_velocity * dt);
+    mv.velocity.x = velocity.x + r.knockback.x;
+    mv.velocity.z = velocity.z + r.knockback.z;
+}
+
+// Idle along the patrol route: turn toward the next point and walk at the wander speed, slower while still
+// turning (no walking sideways), standing while the route says to wait. The way to the point follows the
+// navigation mesh (round a wall between two points); straight where there is no mesh or no path.
+void Game::walk_patrol(Robot& r, float dt) {
+    auto& mv = world_.character(r.body).movement;
+    Vec3 velocity(0.0f);
+    if (auto heading = patrol_heading(r.props.patrol, r.patrol, r.feet, dt)) {
+        const Vec3 point = r.props.patrol.points[static_cast<std::size_t>(r.patrol.target)];
+        const Vec3 along_mesh = follow_path(r, point, 1.0f, dt);
+        if (glm::dot(along_mesh, along_mesh) > 0.0f) heading = along_mesh;
+        r.yaw = turn_toward(r.yaw, yaw_of(*heading), r.props.rotation_velocity * dt);
+        const Vec3 forward(-std::sin(r.yaw), 0.0f, -std::cos(r.yaw));
+        velocity = *heading * (settings_.robot_wander_speed * std::max(0.0f, glm::dot(forward, *heading)));
+    }
     mv.velocity.x = velocity.x + r.knockback.x;
     mv.velocity.z = velocity.z + r.knockback.z;
 }

@@ -225,3 +225,21 @@ TEST_CASE("a thousand angry robots plan and walk without trouble") {
     }
     CHECK(after < before - 1000.0f); // on average each came at least a unit closer
 }
+
+TEST_CASE("a patrol between two points with a wall between them walks round through the doorway") {
+    auto lv = flat_level();
+    add_wall_with_doorway(lv, 15.0f);
+    auto& robot = add_robot(lv, Vec3(0, 0, -20)).as<level::RobotProps>();
+    robot.patrol.points = {Vec3(0, 0, -20), Vec3(0, 0, 0)};
+    robot.patrol.wait = 0.0f;
+    lv.player_start.position = Vec3(0, 0, 90); // out of sight: this is about the route
+    auto g = make_game(lv);
+    float nearest_far_point = 1e9f, widest_x = 0.0f;
+    for (int i = 0; i < 30 * 120; ++i) {
+        g->step({});
+        nearest_far_point = std::min(nearest_far_point, flat_distance(g->robots()[0].feet, Vec3(0, 0, 0)));
+        widest_x = std::max(widest_x, g->robots()[0].feet.x);
+    }
+    CHECK(nearest_far_point < 1.0f); // it reached the point behind the wall
+    CHECK(widest_x > 12.0f);         // by way of the doorway
+}
