@@ -8,6 +8,7 @@
 #include "model/disk_fingerprint.h"
 #include "model/field_access.h"
 #include "model/history.h"
+#include "model/reachability.h"
 #include "model/validation.h"
 
 #include <filesystem>
@@ -173,7 +174,8 @@ class Editor {
     bool walk_known_ = false;
     size_t walk_checks_run_ = 0;
     // The running background walk check and the fingerprint it answers for.
-    std::future<std::vector<Issue>> walk_job_;
+    std::future<PanelReachability> walk_job_;
+    std::shared_ptr<nav::NavMesh> walk_mesh_; // the newest check's mesh: robots are asked of it every time
     std::uint64_t walk_job_fingerprint_ = 0;
     std::uint64_t walk_results_ = 0; // finished walk checks taken in: part of issues()' cache key
     void poll_walk_job(bool wait);

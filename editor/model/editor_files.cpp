@@ -141,7 +141,9 @@ Result<void> Editor::accept_recovery() {
 void Editor::poll_walk_job(bool wait) {
     if (!walk_job_.valid()) return;
     if (!wait && walk_job_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
-    walk_issues_ = walk_job_.get();
+    PanelReachability done = walk_job_.get();
+    walk_issues_ = std::move(done.issues);
+    walk_mesh_ = std::move(done.mesh);
     walk_fingerprint_ = walk_job_fingerprint_;
     walk_known_ = true;
     ++walk_results_;
@@ -170,20 +172,21 @@ const std::vector<Issue>& Editor::issues() {
                     walk_job_fingerprint_ = fingerprint;
                     walk_job_ =
                         std::async(std::launch::async, [level = doc_.level, o = validation_options_]() {
-                            std::vector<Issue> found;
-                            check_reachability(level, o, found);
-                            return found;
+                            return check_panel_reachability(level, o);
                         });
                     ++walk_checks_run_;
                 }
             } else if (stale) {
-                walk_issues_.clear();
-                check_reachability(doc_.level, validation_options_, walk_issues_);
+                PanelReachability done = check_panel_reachability(doc_.level, validation_options_);
+                walk_issues_ = std::move(done.issues);
+                walk_mesh_ = std::move(done.mesh);
                 walk_fingerprint_ = fingerprint;
                 walk_known_ = true;
                 ++walk_checks_run_;
             }
             issues_.insert(issues_.end(), walk_issues_.begin(), walk_issues_.end());
+            // Robots move without changing the mesh: asked again on every validation, no rebuild.
+            if (walk_mesh_) check_robot_reach(doc_.level, *walk_mesh_, validation_options_, issues_);
         }
         issues_revision_ = key;
     }

@@ -80,7 +80,8 @@ WalkCheck walk_to_control_panel(const level::Level& level, const ValidationOptio
         check.build_problem = built.error().str();
         return check;
     }
-    nav::NavMesh& mesh = **built;
+    check.mesh = std::move(*built);
+    nav::NavMesh& mesh = *check.mesh;
     check.polygons = mesh.stats().polygons;
     for (const auto& e : level.entities)
         if (e.type() == EntityType::Door) mesh.set_door_open(e.id, true);
@@ -120,18 +121,48 @@ std::uint64_t walk_fingerprint(const level::Level& level, const ValidationOption
     return h;
 }
 
-void check_reachability(const level::Level& level, const ValidationOptions& options,
-                        std::vector<Issue>& out) {
-    const WalkCheck check = walk_to_control_panel(level, options);
-    if (!check.decided || check.reachable) return;
+PanelReachability check_panel_reachability(const level::Level& level, const ValidationOptions& options) {
+    WalkCheck check = walk_to_control_panel(level, options);
+    PanelReachability result;
+    result.mesh = std::move(check.mesh);
+    if (!check.decided || check.reachable) return result;
     const int panel_id = find_panel(level)->id;
-    out.push_back(
+    result.issues.push_back(
         {Rule::Reachability,
          IssueSeverity::Warning,
          panel_id,
          "control panel " + std::to_string(panel_id) +
              " cannot be reached on foot from the player start (doors count as open, jumps are not counted)",
          {}});
+    return result;
+}
+
+void check_robot_reach(const level::Level& level, nav::NavMesh& mesh, const ValidationOptions& o,
+                       std::vector<Issue>& out) {
+    const float reach = o.character.radius + o.walk_cell;
+    const Vec3 extents(reach, o.character.step_height + o.support_tolerance, reach);
+    const auto start = mesh.nearest_point(level.player_start.position, extents);
+    if (!start) return; // the player start rule reports a start off the floor
+    for (const Entity& e : level.entities) {
+        const auto* robot = e.try_as<level::RobotProps>();
+        if (!robot || robot->dummy || !is_finite(e.position)) continue;
+        const auto feet = mesh.nearest_point(e.position, extents);
+        if (!feet || mesh.reachable(*feet, *start)) continue;
+        out.push_back({Rule::RobotReach,
+                       IssueSeverity::Warning,
+                       e.id,
+                       "robot " + std::to_string(e.id) + (e.name.empty() ? "" : " (\"" + e.name + "\")") +
+                           " can never walk to the player's area (doors count as open): it will only shoot "
+                           "from where it stands",
+                       {}});
+    }
+}
+
+void check_reachability(const level::Level& level, const ValidationOptions& options,
+                        std::vector<Issue>& out) {
+    PanelReachability panel = check_panel_reachability(level, options);
+    out.insert(out.end(), panel.issues.begin(), panel.issues.end());
+    if (panel.mesh) check_robot_reach(level, *panel.mesh, options, out);
 }
 
 } // namespace ks::editor

@@ -8,7 +8,12 @@
 #include "model/validation.h"
 
 #include <cstdint>
+#include <memory>
 #include <string>
+
+namespace ks::nav {
+class NavMesh;
+}
 
 namespace ks::editor {
 
@@ -20,6 +25,7 @@ struct WalkCheck {
     int panel_approaches = 0;
     int polygons = 0;          // the mesh's size, for the bench
     std::string build_problem; // why the mesh did not build (other rules report the cause to the user)
+    std::shared_ptr<nav::NavMesh> mesh; // the player's mesh, every door open (null when it did not build)
 };
 
 WalkCheck walk_to_control_panel(const level::Level& level, const ValidationOptions& options);
@@ -27,6 +33,18 @@ WalkCheck walk_to_control_panel(const level::Level& level, const ValidationOptio
 // with their boxes, the player start, the options): equal fingerprints give the same answer, so the editor
 // skips the check after edits that cannot change it (moving a robot or a pickup, renaming, tuning a light).
 std::uint64_t walk_fingerprint(const level::Level& level, const ValidationOptions& options);
+// The expensive half of the reachability rules: the mesh build and the control panel's answer. The mesh
+// comes back for the cheap half, so the editor reruns only that after edits that move robots.
+struct PanelReachability {
+    std::vector<Issue> issues;
+    std::shared_ptr<nav::NavMesh> mesh;
+};
+PanelReachability check_panel_reachability(const level::Level& level, const ValidationOptions& options);
+// Robots that can never walk to the player's start on `mesh` (doors open): they would only ever shoot from
+// where they stand. Robots the mesh does not reach under their feet are the support rule's business.
+void check_robot_reach(const level::Level& level, nav::NavMesh& mesh, const ValidationOptions& options,
+                       std::vector<Issue>& out);
+// Both, for a fresh validation.
 void check_reachability(const level::Level& level, const ValidationOptions& options, std::vector<Issue>& out);
 
 } // namespace ks::editor

@@ -8,9 +8,9 @@
 namespace ks::editor::script_tokens {
 namespace {
 
-constexpr Rule kRules[] = {Rule::Format,      Rule::PlayerStart,  Rule::ControlPanel,
-                           Rule::WallOverlap, Rule::Support,      Rule::StairSlope,
-                           Rule::DoorGap,     Rule::Reachability, Rule::Patrol};
+constexpr Rule kRules[] = {Rule::Format,  Rule::PlayerStart, Rule::ControlPanel, Rule::WallOverlap,
+                           Rule::Support, Rule::StairSlope,  Rule::DoorGap,      Rule::Reachability,
+                           Rule::Patrol,  Rule::RobotReach};
 
 } // namespace
 

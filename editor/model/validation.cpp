@@ -349,6 +349,8 @@ const char* rule_name(Rule rule) {
         return "reachability";
     case Rule::Patrol:
         return "patrol";
+    case Rule::RobotReach:
+        return "robot_reach";
     }
     return "?";
 }

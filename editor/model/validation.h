@@ -20,6 +20,7 @@ enum class Rule {
     DoorGap,      // a door that does not sit in a gap between walls
     Reachability, // the control panel cannot be walked to from the player start
     Patrol,       // a robot's patrol point is not on a floor or stair surface
+    RobotReach,   // a robot that can never walk to where the player starts
 };
 const char* rule_name(Rule rule);
 

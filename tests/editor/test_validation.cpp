@@ -411,3 +411,33 @@ TEST_CASE("validation: in the window the walk check runs in the background and i
     ed.wait_for_reachability();
     CHECK(of_rule(ed.issues(), Rule::Reachability).empty());
 }
+
+TEST_CASE("rule robot_reach: a robot walled off from the player's area is a warning; moving it out clears it "
+          "without rebuilding the mesh") {
+    Editor ed;
+    build_two_rooms(ed);
+    REQUIRE(of_rule(ed.issues(), Rule::RobotReach).empty());
+    // A closed box of walls around a spot in the first room, and a robot inside it.
+    const Vec3 c(-8, 0, 8);
+    for (const auto& [offset, size] :
+         {std::pair{Vec3(0, 0, -3), Vec3(6.5f, 16, 0.5f)}, std::pair{Vec3(0, 0, 3), Vec3(6.5f, 16, 0.5f)},
+          std::pair{Vec3(-3, 0, 0), Vec3(0.5f, 16, 6.5f)}, std::pair{Vec3(3, 0, 0), Vec3(0.5f, 16, 6.5f)}}) {
+        REQUIRE(ed.place(EntityType::Wall, c + offset).ok());
+        REQUIRE(ed.set_field_text("size", std::to_string(size.x) + "," + std::to_string(size.y) + "," +
+                                              std::to_string(size.z))
+                    .ok());
+    }
+    REQUIRE(ed.place(EntityType::Robot, c).ok());
+    const int trapped = ed.doc().selection.front();
+    auto issues = of_rule(ed.issues(), Rule::RobotReach);
+    INFO(dump(ed.issues()));
+    REQUIRE(issues.size() == 1);
+    CHECK(issues[0].entity_id == trapped);
+    CHECK(issues[0].message.find("can never walk to the player's area") != std::string::npos);
+    CHECK(dump(ed.issues()) == dump(validate_design(ed.level())));
+    const size_t runs = ed.walk_checks_run();
+    REQUIRE(ed.move_selection({0, 0, 12}).ok()); // out of the box, still in the room
+    CHECK(of_rule(ed.issues(), Rule::RobotReach).empty());
+    CHECK(ed.walk_checks_run() == runs); // robots do not shape the mesh: no rebuild
+    CHECK(dump(ed.issues()) == dump(validate_design(ed.level())));
+}
