@@ -1,11 +1,13 @@
 #pragma once
 // Small levels built in code for the game's scenario tests, and a helper that builds a Game from one.
 #include "game/game.h"
+#include "game/headless.h"
 #include "level/level.h"
 #include "test_support.h"
 
 #include <doctest/doctest.h>
 
+#include <filesystem>
 #include <memory>
 
 namespace ks::game::test {
@@ -45,6 +47,30 @@ inline std::unique_ptr<Game> make_game(const level::Level& lv, std::uint64_t see
 inline void run_for(Game& g, double seconds, const Input& in = {}) {
     const auto n = static_cast<int>(seconds / g.settings().step + 0.5);
     for (int i = 0; i < n; ++i) g.step(in);
+}
+
+// Plays `level` with the autoplay bot for `seconds` while recording into `dir`, then replays the recording.
+struct RecordedRun {
+    HeadlessStats recorded, replayed;
+};
+inline RecordedRun record_and_replay(const std::filesystem::path& level, double seconds, std::uint64_t seed,
+                                     const std::filesystem::path& dir,
+                                     const std::filesystem::path& stats_json = {}) {
+    HeadlessOptions rec;
+    rec.level = level;
+    rec.seconds = seconds;
+    rec.seed = seed;
+    rec.autoplay = true;
+    rec.record = dir / "run.replay";
+    rec.stats_json = stats_json;
+    auto recorded = run_headless(rec);
+    if (!recorded) FAIL(recorded.error().str());
+    HeadlessOptions play;
+    play.level = rec.level;
+    play.replay = rec.record;
+    auto replayed = run_headless(play);
+    if (!replayed) FAIL(replayed.error().str());
+    return {*recorded, *replayed};
 }
 
 inline int count_events(const Game& g, EventType type) {

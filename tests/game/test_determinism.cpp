@@ -40,39 +40,29 @@ TEST_CASE("the same seed gives the same state hash; another seed another one") {
 
 TEST_CASE("a recorded autoplay run replays to the exact final state hash") {
     ks::test::ScratchDir dir;
-    HeadlessOptions rec;
-    rec.level = ks::test::source_dir() / "levels/main.json";
-    rec.seconds = 12.0;
-    rec.seed = 5;
-    rec.autoplay = true;
-    rec.record = dir / "run.replay";
-    rec.stats_json = dir / "stats.json";
-    auto recorded = run_headless(rec);
-    if (!recorded) FAIL(recorded.error().str());
-    HeadlessOptions play;
-    play.level = rec.level;
-    play.replay = rec.record;
-    auto replayed = run_headless(play);
-    if (!replayed) FAIL(replayed.error().str());
-    CHECK(replayed->state_hash == recorded->state_hash);
-    CHECK(replayed->steps == recorded->steps);
-    CHECK(replayed->shots == recorded->shots);
-    CHECK(replayed->outcome == recorded->outcome);
+    const auto [recorded, replayed] = record_and_replay(ks::test::source_dir() / "levels/main.json", 12.0, 5,
+                                                        dir.path(), dir / "stats.json");
+    CHECK(replayed.state_hash == recorded.state_hash);
+    CHECK(replayed.steps == recorded.steps);
+    CHECK(replayed.shots == recorded.shots);
+    CHECK(replayed.outcome == recorded.outcome);
     const std::string json = ks::test::read_file(dir / "stats.json");
     for (const char* key : {"\"outcome\"", "\"sim_time_s\"", "\"robots_killed\"", "\"damage_taken\"",
                             "\"shots\"", "\"steps_per_second\"", "\"state_hash\""})
         CHECK(json.find(key) != std::string::npos);
 
     SUBCASE("an edited replay no longer matches") {
-        auto r = load_recording_file(rec.record);
+        auto r = load_recording_file(dir / "run.replay");
         REQUIRE(r.ok());
         REQUIRE(r->inputs.size() > 200);
         r->inputs[100].look_yaw += 0.01f;
         REQUIRE(save_recording_file(dir / "edited.replay", *r).ok());
+        HeadlessOptions play;
+        play.level = ks::test::source_dir() / "levels/main.json";
         play.replay = dir / "edited.replay";
         auto edited = run_headless(play);
         REQUIRE(edited.ok());
-        CHECK(edited->state_hash != recorded->state_hash);
+        CHECK(edited->state_hash != recorded.state_hash);
     }
 }
 

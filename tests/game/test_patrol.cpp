@@ -164,19 +164,7 @@ TEST_CASE("a recorded run on a level with patrols replays to the exact final sta
                                   "ping_pong", 0.5f);
     REQUIRE(level::save_level_file(dir / "patrols.json", *lv).ok());
 
-    HeadlessOptions rec;
-    rec.level = dir / "patrols.json";
-    rec.seconds = 10.0;
-    rec.seed = 3;
-    rec.autoplay = true;
-    rec.record = dir / "run.replay";
-    auto recorded = run_headless(rec);
-    if (!recorded) FAIL(recorded.error().str());
-    HeadlessOptions play;
-    play.level = rec.level;
-    play.replay = rec.record;
-    auto replayed = run_headless(play);
-    if (!replayed) FAIL(replayed.error().str());
-    CHECK(replayed->state_hash == recorded->state_hash);
-    CHECK(replayed->steps == recorded->steps);
+    const auto [recorded, replayed] = record_and_replay(dir / "patrols.json", 10.0, 3, dir.path());
+    CHECK(replayed.state_hash == recorded.state_hash);
+    CHECK(replayed.steps == recorded.steps);
 }
