@@ -1,6 +1,7 @@
 // Editor: New, Open, Save, Save As, title and dirty state, external-change detection, autosave recovery,
 // and the validation panel's hooks.
 #include "model/editor.h"
+#include "model/patrol_validation.h"
 #include "model/reachability.h"
 
 #include <chrono>
@@ -186,7 +187,10 @@ const std::vector<Issue>& Editor::issues() {
             }
             issues_.insert(issues_.end(), walk_issues_.begin(), walk_issues_.end());
             // Robots move without changing the mesh: asked again on every validation, no rebuild.
-            if (walk_mesh_) check_robot_reach(doc_.level, *walk_mesh_, validation_options_, issues_);
+            if (walk_mesh_) {
+                check_robot_reach(doc_.level, *walk_mesh_, validation_options_, issues_);
+                check_patrol_on_mesh(doc_.level, *walk_mesh_, validation_options_, issues_);
+            }
         }
         issues_revision_ = key;
     }

@@ -1,5 +1,7 @@
 #include "model/patrol_validation.h"
 
+#include "nav/nav_mesh.h"
+
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -81,6 +83,49 @@ void check_patrol_support(const level::Level& level, const ValidationOptions& op
             }
             out.push_back({Rule::Patrol, IssueSeverity::Warning, e.id,
                            who + std::to_string(i) + " " + problem->message, std::move(fix)});
+        }
+    }
+}
+
+void check_patrol_on_mesh(const level::Level& level, nav::NavMesh& mesh, const ValidationOptions& options,
+                          std::vector<Issue>& out) {
+    const float reach = options.character.radius + options.walk_cell;
+    const Vec3 extents(reach, options.character.step_height + options.support_tolerance, reach);
+    std::optional<std::vector<Surface>> surfaces;
+    for (const auto& e : level.entities) {
+        const auto* robot = e.try_as<level::RobotProps>();
+        if (!robot || !robot->patrol.active() || !is_finite(e.position)) continue;
+        if (!surfaces) surfaces = walkable_surfaces(level);
+        const auto feet = mesh.nearest_point(e.position, extents);
+        const std::string who =
+            "robot " + std::to_string(e.id) + (e.name.empty() ? "" : " '" + e.name + "'") + " patrol point ";
+        for (size_t i = 0; i < robot->patrol.points.size(); ++i) {
+            const Vec3 p = robot->patrol.points[i];
+            if (!is_finite(p) || point_problem(*surfaces, p, options))
+                continue; // reported by the support check
+            // Detour's nearest polygon only has to overlap the box: measure the distance to the point found.
+            const auto on_mesh = mesh.nearest_point(p, extents);
+            if (!on_mesh || glm::length(Vec2(on_mesh->x - p.x, on_mesh->z - p.z)) > reach) {
+                QuickFix fix;
+                if (auto nearest = mesh.nearest_point(p, Vec3(8.0f, extents.y, 8.0f))) {
+                    fix.kind = QuickFix::Kind::MovePatrolPoint;
+                    fix.label = "Snap to the nearest walkable point";
+                    // The mesh floats a little above the floor (its height samples): keep the point's own height,
+                    // which the support check has just found on a surface.
+                    fix.position = {nearest->x, p.y, nearest->z};
+                    fix.index = static_cast<int>(i);
+                }
+                out.push_back(
+                    {Rule::Patrol, IssueSeverity::Warning, e.id,
+                     who + std::to_string(i) + " is where robots cannot walk (too close to a wall or a prop)",
+                     std::move(fix)});
+            } else if (feet && !mesh.reachable(*feet, *on_mesh)) {
+                out.push_back({Rule::Patrol,
+                               IssueSeverity::Warning,
+                               e.id,
+                               who + std::to_string(i) + " cannot be walked to from where the robot stands",
+                               {}});
+            }
         }
     }
 }

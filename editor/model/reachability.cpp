@@ -1,5 +1,7 @@
 #include "model/reachability.h"
 
+#include "model/patrol_validation.h"
+
 #include "nav/nav_mesh.h"
 
 #include <algorithm>
@@ -162,7 +164,9 @@ void check_reachability(const level::Level& level, const ValidationOptions& opti
                         std::vector<Issue>& out) {
     PanelReachability panel = check_panel_reachability(level, options);
     out.insert(out.end(), panel.issues.begin(), panel.issues.end());
-    if (panel.mesh) check_robot_reach(level, *panel.mesh, options, out);
+    if (!panel.mesh) return;
+    check_robot_reach(level, *panel.mesh, options, out);
+    check_patrol_on_mesh(level, *panel.mesh, options, out);
 }
 
 } // namespace ks::editor

@@ -441,3 +441,40 @@ TEST_CASE("rule robot_reach: a robot walled off from the player's area is a warn
     CHECK(ed.walk_checks_run() == runs); // robots do not shape the mesh: no rebuild
     CHECK(dump(ed.issues()) == dump(validate_design(ed.level())));
 }
+
+TEST_CASE("rule patrol on the mesh: a point inside a prop snaps to the nearest walkable point; a point the "
+          "robot can never walk to is reported") {
+    Editor ed;
+    build_two_rooms(ed);
+    REQUIRE(ed.place(EntityType::GasCylinder, {-2, 0, 14}).ok());
+    REQUIRE(ed.place(EntityType::Robot, {-8, 0, 18}).ok());
+    const int robot = ed.doc().selection.front();
+    REQUIRE(ed.patrol_add(robot, {-8, 0, 18}).ok());
+    REQUIRE(ed.patrol_add(robot, {-2, 0, 14}).ok()); // on the floor, but inside the cylinder
+    auto issues = of_rule(ed.issues(), Rule::Patrol);
+    INFO(dump(ed.issues()));
+    REQUIRE(issues.size() == 1);
+    CHECK(issues[0].message.find("patrol point 1 is where robots cannot walk") != std::string::npos);
+    REQUIRE(issues[0].fix.kind == QuickFix::Kind::MovePatrolPoint);
+    CHECK(dump(ed.issues()) == dump(validate_design(ed.level())));
+    REQUIRE(ed.apply_quick_fix(issues[0]).ok());
+    CHECK(of_rule(ed.issues(), Rule::Patrol).empty());
+    const Vec3 moved = ed.level().find(robot)->as<level::RobotProps>().patrol.points[1];
+    CHECK(glm::length(Vec2(moved.x + 2.0f, moved.z - 14.0f)) < 4.0f); // near where it was
+
+    // A point inside a walled-off box: on a floor, on the mesh, but not reachable from the robot.
+    const Vec3 c(-8, 0, 8);
+    for (const auto& [offset, size] :
+         {std::pair{Vec3(0, 0, -3), Vec3(6.5f, 16, 0.5f)}, std::pair{Vec3(0, 0, 3), Vec3(6.5f, 16, 0.5f)},
+          std::pair{Vec3(-3, 0, 0), Vec3(0.5f, 16, 6.5f)}, std::pair{Vec3(3, 0, 0), Vec3(0.5f, 16, 6.5f)}}) {
+        REQUIRE(ed.place(EntityType::Wall, c + offset).ok());
+        REQUIRE(ed.set_field_text("size", std::to_string(size.x) + "," + std::to_string(size.y) + "," +
+                                              std::to_string(size.z))
+                    .ok());
+    }
+    REQUIRE(ed.patrol_add(robot, c).ok());
+    issues = of_rule(ed.issues(), Rule::Patrol);
+    REQUIRE(issues.size() == 1);
+    CHECK(issues[0].message.find("patrol point 2 cannot be walked to") != std::string::npos);
+    CHECK(dump(ed.issues()) == dump(validate_design(ed.level())));
+}
