@@ -6,14 +6,15 @@
 #include "model/editor.h"
 #include "model/nav_preview.h"
 #include "model/recent_files.h"
-#include "shell/app_shell.h"
 #include "render/asset_library.h"
 #include "render/debug_draw.h"
 #include "render/level_scene.h"
 #include "render/scene_renderer.h"
+#include "shell/app_shell.h"
 #include "ui/gizmo_draw.h"
 #include "ui/playtest.h"
 #include "ui/render_target.h"
+#include "view/patrol_drag.h"
 #include "view/picking.h"
 #include "view/view_camera.h"
 
@@ -34,7 +35,7 @@ class DojoPanel;
 struct AppOptions {
     std::optional<std::filesystem::path> level;
     bool start_in_dojo = false;
-    bool show_navmesh = false; // View > Navigation mesh on from the start
+    bool show_navmesh = false;                       // View > Navigation mesh on from the start
     std::optional<std::filesystem::path> run_script; // run inside the window session before the first frame
     std::optional<std::string> camera;               // x,y,z,yaw,pitch (degrees) for the viewport
     std::filesystem::path executable_dir;            // where killswitch (the runtime) is looked for
@@ -137,6 +138,7 @@ class EditorApp {
     ViewCamera view_;
     Overlays overlays_;
     Gizmo gizmo_;
+    PatrolDrag patrol_drag_;
     Handle hovered_handle_ = Handle::None;
     Vec2 viewport_origin_{0.0f}, viewport_size_{640.0f, 360.0f};
     bool viewport_hovered_ = false;

@@ -396,12 +396,22 @@ void EditorApp::viewport_input(Vec2 origin, bool hovered) {
     const ImGuiIO& io = ImGui::GetIO();
     const Vec2 mouse(io.MousePos.x - origin.x, io.MousePos.y - origin.y);
     if (!shell_.screenshot_mode())
-        flying_ =
-            view_.update(read_view_input(shell_.window(), hovered && !gizmo_.dragging() && !box_selecting_,
-                                         mouse, hovered ? wheel_ : 0.0f),
-                         io.DeltaTime);
+        flying_ = view_.update(
+            read_view_input(shell_.window(),
+                            hovered && !gizmo_.dragging() && !patrol_drag_.dragging() && !box_selecting_,
+                            mouse, hovered ? wheel_ : 0.0f),
+            io.DeltaTime);
     if (flying_) return;
     const bool has_selection = !editor_.doc().selection.empty();
+    if (patrol_drag_.dragging()) {
+        if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+            if (auto message = patrol_drag_.drag(editor_, view_, mouse); !message.empty())
+                log_line(message, true);
+        } else {
+            patrol_drag_.end();
+        }
+        return;
+    }
     if (gizmo_.dragging()) {
         if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
             if (auto message = gizmo_.drag(editor_, view_, mouse); !message.empty()) log_line(message, true);
@@ -419,6 +429,10 @@ void EditorApp::viewport_input(Vec2 origin, bool hovered) {
             auto placed = editor_.place(*placing_, place_point(ray));
             if (!placed) log_line("place: " + placed.error().str(), true);
             if (!io.KeyShift) placing_.reset(); // Shift keeps placing
+            return;
+        }
+        if (auto point = pick_patrol_point(editor_, view_, mouse)) { // a route point beats the gizmo
+            patrol_drag_.begin(editor_, view_, *point, mouse);
             return;
         }
         if (hovered_handle_ != Handle::None) {
