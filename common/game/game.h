@@ -279,6 +279,7 @@ class Game {
     // a path, or once there).
     Vec3 follow_path(Robot& r, const Vec3& goal, float speed, float dt);
     bool path_finished(const Robot& r) const;
+    Vec3 robot_separation(const Robot& r) const;
     // A shot or an explosion at `source`: idle and searching robots whose hearing radius reaches it along
     // the mesh go to look.
     void hear_sound(const Vec3& source);

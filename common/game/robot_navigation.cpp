@@ -14,6 +14,8 @@ namespace {
 constexpr float kCornerReached = 0.6f;
 // A goal that moved farther than this since the last plan is planned for again at once.
 constexpr float kGoalMoved = 1.5f;
+// Robots closer than this many robot radii (centre to centre) push each other aside while walking.
+constexpr float kSeparationRadii = 3.0f;
 
 float horizontal_distance(const Vec3& a, const Vec3& b) {
     return glm::length(Vec2(a.x - b.x, a.z - b.z));
@@ -60,7 +62,27 @@ Vec3 Game::follow_path(Robot& r, const Vec3& goal, float speed, float dt) {
     const Vec3 corner = r.path[r.path_next];
     const Vec3 d(corner.x - r.feet.x, 0.0f, corner.z - r.feet.z);
     const float len = glm::length(d);
-    return len > 1e-4f ? d / len * speed : Vec3(0.0f);
+    if (!(len > 1e-4f)) return Vec3(0.0f);
+    const Vec3 steer = d / len + robot_separation(r);
+    const float steer_len = glm::length(steer);
+    return steer_len > 1e-4f ? steer / steer_len * speed : Vec3(0.0f);
+}
+
+// Robots walking the mesh keep clear of each other: a push away from every living robot closer than
+// kSeparation (stronger the closer), so robots meeting in a doorway file through instead of pressing into
+// each other; their capsules still collide.
+Vec3 Game::robot_separation(const Robot& r) const {
+    const float reach = settings_.robot_radius * kSeparationRadii;
+    Vec3 push(0.0f);
+    for (const Robot& other : robots_) {
+        if (&other == &r || !other.alive()) continue;
+        const Vec3 away(r.feet.x - other.feet.x, 0.0f, r.feet.z - other.feet.z);
+        const float distance_sq = glm::dot(away, away);
+        if (distance_sq >= reach * reach || distance_sq < 1e-8f) continue;
+        const float distance = std::sqrt(distance_sq);
+        push += away / distance * (1.0f - distance / reach);
+    }
+    return push;
 }
 
 bool Game::path_finished(const Robot& r) const {

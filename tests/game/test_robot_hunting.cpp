@@ -243,3 +243,20 @@ TEST_CASE("a patrol between two points with a wall between them walks round thro
     CHECK(nearest_far_point < 1.0f); // it reached the point behind the wall
     CHECK(widest_x > 12.0f);         // by way of the doorway
 }
+
+TEST_CASE("robots walking the mesh side by side spread apart instead of marching shoulder to shoulder") {
+    auto lv = flat_level();
+    for (float x : {-0.9f, 0.9f}) { // 1.8 apart: their 0.8 capsules do not touch
+        auto& robot = add_robot(lv, Vec3(x, 0, -40)).as<level::RobotProps>();
+        robot.hit_probability = 0.0f;
+    }
+    lv.player_start.position = Vec3(0, 0, 60);
+    auto g = make_game(lv);
+    g->damage_robot(0, 1.0f, true);
+    g->damage_robot(1, 1.0f, true);
+    run_for(*g, 3.0);
+    const float apart = flat_distance(g->robots()[0].feet, g->robots()[1].feet);
+    CHECK(apart > 2.2f);                   // pushed out to about three robot radii
+    CHECK(g->robots()[0].feet.z > -35.0f); // and still on their way
+    CHECK(g->robots()[1].feet.z > -35.0f);
+}
