@@ -40,6 +40,17 @@ int id_named(const Editor& ed, const std::string& name) {
     FAIL("no entity named " << name);
     return 0;
 }
+// Four walls closing a 6 x 6 box around `c` on the floor: nothing inside can walk out.
+void wall_in_box(Editor& ed, const Vec3& c) {
+    for (const auto& [offset, size] :
+         {std::pair{Vec3(0, 0, -3), Vec3(6.5f, 16, 0.5f)}, std::pair{Vec3(0, 0, 3), Vec3(6.5f, 16, 0.5f)},
+          std::pair{Vec3(-3, 0, 0), Vec3(0.5f, 16, 6.5f)}, std::pair{Vec3(3, 0, 0), Vec3(0.5f, 16, 6.5f)}}) {
+        REQUIRE(ed.place(EntityType::Wall, c + offset).ok());
+        REQUIRE(ed.set_field_text("size", std::to_string(size.x) + "," + std::to_string(size.y) + "," +
+                                              std::to_string(size.z))
+                    .ok());
+    }
+}
 } // namespace
 
 TEST_CASE("validation: the shipped main level passes every design rule, reachability included") {
@@ -419,14 +430,7 @@ TEST_CASE("rule robot_reach: a robot walled off from the player's area is a warn
     REQUIRE(of_rule(ed.issues(), Rule::RobotReach).empty());
     // A closed box of walls around a spot in the first room, and a robot inside it.
     const Vec3 c(-8, 0, 8);
-    for (const auto& [offset, size] :
-         {std::pair{Vec3(0, 0, -3), Vec3(6.5f, 16, 0.5f)}, std::pair{Vec3(0, 0, 3), Vec3(6.5f, 16, 0.5f)},
-          std::pair{Vec3(-3, 0, 0), Vec3(0.5f, 16, 6.5f)}, std::pair{Vec3(3, 0, 0), Vec3(0.5f, 16, 6.5f)}}) {
-        REQUIRE(ed.place(EntityType::Wall, c + offset).ok());
-        REQUIRE(ed.set_field_text("size", std::to_string(size.x) + "," + std::to_string(size.y) + "," +
-                                              std::to_string(size.z))
-                    .ok());
-    }
+    wall_in_box(ed, c);
     REQUIRE(ed.place(EntityType::Robot, c).ok());
     const int trapped = ed.doc().selection.front();
     auto issues = of_rule(ed.issues(), Rule::RobotReach);
@@ -464,14 +468,7 @@ TEST_CASE("rule patrol on the mesh: a point inside a prop snaps to the nearest w
 
     // A point inside a walled-off box: on a floor, on the mesh, but not reachable from the robot.
     const Vec3 c(-8, 0, 8);
-    for (const auto& [offset, size] :
-         {std::pair{Vec3(0, 0, -3), Vec3(6.5f, 16, 0.5f)}, std::pair{Vec3(0, 0, 3), Vec3(6.5f, 16, 0.5f)},
-          std::pair{Vec3(-3, 0, 0), Vec3(0.5f, 16, 6.5f)}, std::pair{Vec3(3, 0, 0), Vec3(0.5f, 16, 6.5f)}}) {
-        REQUIRE(ed.place(EntityType::Wall, c + offset).ok());
-        REQUIRE(ed.set_field_text("size", std::to_string(size.x) + "," + std::to_string(size.y) + "," +
-                                              std::to_string(size.z))
-                    .ok());
-    }
+    wall_in_box(ed, c);
     REQUIRE(ed.patrol_add(robot, c).ok());
     issues = of_rule(ed.issues(), Rule::Patrol);
     REQUIRE(issues.size() == 1);
