@@ -96,6 +96,9 @@ Result<ClipSet> compile(const AnimationFile& file, const Rig& rig) {
         Clip clip;
         clip.name = def.name;
         clip.loop = def.loop;
+        clip.events = def.events;
+        std::stable_sort(clip.events.begin(), clip.events.end(),
+                         [](const ClipEvent& a, const ClipEvent& b) { return a.time < b.time; });
         clip.duration = def.duration();
 
         // Which channels the clip has: every node it names, plus the rest nodes when unlisted ones go home.

@@ -46,12 +46,22 @@ struct PhaseDef {
     std::vector<TargetDef> targets;
 };
 
+// A named marker at a time in a clip (muzzle flash, footstep, sound cue). The game reports each marker the
+// clip passes; a marker with a sound plays it at the robot.
+struct ClipEvent {
+    double time = 0; // seconds from the clip's start, 0..duration
+    std::string name;
+    std::string sound; // a sound name (assets/sounds/<sound>.wav), empty for none
+    bool operator==(const ClipEvent&) const = default;
+};
+
 struct ClipDef {
     std::string name;
     LoopMode loop = LoopMode::Once;
     std::string next; // LoopMode::Next only
     UnlistedRule unlisted = UnlistedRule::Rest;
     std::vector<PhaseDef> phases;
+    std::vector<ClipEvent> events; // sorted by time when compiled
 
     double duration() const;
 };
@@ -114,6 +124,7 @@ struct Clip {
     int next = -1; // clip index for LoopMode::Next
     std::vector<Channel> channels;
     std::vector<Key> keys;
+    std::vector<ClipEvent> events; // by time
 };
 
 class ClipSet {

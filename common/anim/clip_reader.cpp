@@ -223,7 +223,7 @@ class Reader {
             file.clips.push_back(std::move(clip));
             return;
         }
-        known_keys(j, path, {"name", "loop", "next", "unlisted", "phases"});
+        known_keys(j, path, {"name", "loop", "next", "unlisted", "phases", "events"});
         if (!j.contains("name"))
             problem(path, "clip has no \"name\"");
         else
@@ -258,7 +258,26 @@ class Reader {
         else if (is_array(j["phases"], path / "phases", "phases"))
             for (std::size_t i = 0; i < j["phases"].size(); ++i)
                 clip.phases.push_back(read_phase(j["phases"][i], (path / "phases")[i]));
+        if (j.contains("events") && is_array(j["events"], path / "events", "events"))
+            for (std::size_t i = 0; i < j["events"].size(); ++i)
+                read_event(j["events"][i], (path / "events")[i], clip);
         file.clips.push_back(std::move(clip));
+    }
+
+    void read_event(const Json& j, const JsonPath& path, ClipDef& clip) {
+        ClipEvent event;
+        if (!is_object(j, path, "an event")) return;
+        known_keys(j, path, {"time", "name", "sound"});
+        if (!j.contains("time"))
+            problem(path, "event has no \"time\"", "seconds from the clip's start, e.g. \"time\": 0.1");
+        else
+            number(j["time"], path / "time", event.time);
+        if (!j.contains("name"))
+            problem(path, "event has no \"name\"", "e.g. \"name\": \"muzzle_flash\"");
+        else
+            string(j["name"], path / "name", event.name);
+        if (j.contains("sound")) string(j["sound"], path / "sound", event.sound);
+        clip.events.push_back(std::move(event));
     }
 
     PhaseDef read_phase(const Json& j, const JsonPath& path) {

@@ -132,7 +132,28 @@ class Validator {
                         "give a phase a duration > 0");
             for (std::size_t pi = 0; pi < c.phases.size(); ++pi)
                 check_phase(c.phases[pi], (cp / "phases")[pi]);
+            for (std::size_t ei = 0; ei < c.events.size(); ++ei)
+                check_event(c, c.events[ei], (cp / "events")[ei]);
         }
+    }
+
+    void check_event(const ClipDef& c, const ClipEvent& e, const JsonPath& ep) {
+        const double length = c.duration();
+        if (!std::isfinite(e.time) || e.time < 0 || e.time > length)
+            problem(ep / "time",
+                    "event time " + jsonio::shortest_text(e.time) + " s is outside clip '" + c.name +
+                        "' (0.." + jsonio::shortest_text(length) + " s)",
+                    "put the event inside the clip");
+        if (e.name.empty()) problem(ep / "name", "event name is empty", "e.g. \"muzzle_flash\"");
+        if (!e.sound.empty() && !is_sound_name(e.sound))
+            problem(ep / "sound", "sound name '" + e.sound + "' has characters other than a-z, 0-9 and _",
+                    "name a file of assets/sounds/ without its .wav");
+    }
+
+    static bool is_sound_name(const std::string& s) {
+        for (char ch : s)
+            if (!((ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9') || ch == '_')) return false;
+        return true;
     }
 
     void check_loop(const ClipDef& c, const JsonPath& cp) {

@@ -112,8 +112,20 @@ std::string save_animation_string(const AnimationFile& file) {
             out += ph.targets.empty() ? "}\n" : "\n          }\n";
             out += "        }";
         }
-        out += c.phases.empty() ? "]\n" : "\n      ]\n";
-        out += "    }";
+        out += c.phases.empty() ? "]" : "\n      ]";
+        if (!c.events.empty()) {
+            out += ",\n      \"events\": [";
+            for (std::size_t ei = 0; ei < c.events.size(); ++ei) {
+                const ClipEvent& e = c.events[ei];
+                out += ei ? ",\n" : "\n";
+                out += "        {\"time\": " + jsonio::shortest_text(e.time) +
+                       ", \"name\": " + jsonio::json_string(e.name);
+                if (!e.sound.empty()) out += ", \"sound\": " + jsonio::json_string(e.sound);
+                out += "}";
+            }
+            out += "\n      ]";
+        }
+        out += "\n    }";
     }
     out += file.clips.empty() ? "]\n}\n" : "\n  ]\n}\n";
     return out;

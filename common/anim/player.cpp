@@ -91,6 +91,7 @@ Player::Player(const ClipSet& clips, const Rig& rig) : clips_(clips), rig_(rig) 
                     &b_vel_euler_, &b_vel_position_})
         v->assign(n, Vec3(0));
     pose_.set_rest(rig);
+    fired_.reserve(16);
 }
 
 void Player::sample_instance(const Instance& inst, std::span<Vec3> euler, std::span<Vec3> position,
@@ -181,6 +182,7 @@ void Player::play(int clip, float blend_seconds) {
     }
     current_.clip = clip;
     current_.start = now_;
+    events_done_ = -1;
     source_ = blend ? Source::Inertial : Source::None;
     blend_start_ = now_;
     blend_length_ = blend ? std::max<std::int64_t>(1, to_flicks(blend_seconds)) : 0;
@@ -203,13 +205,37 @@ void Player::crossfade(int clip, float seconds) {
     }
     current_.clip = clip;
     current_.start = now_;
+    events_done_ = -1;
     source_ = Source::Crossfade;
     blend_start_ = now_;
     blend_length_ = std::max<std::int64_t>(1, to_flicks(seconds));
     refresh_pose();
 }
 
+// Reports the current clip's events in (events_done_, until - start] of its own time.
+void Player::collect_events(std::int64_t until) {
+    if (current_.clip < 0) return;
+    const Clip& clip = clips_.clips[static_cast<std::size_t>(current_.clip)];
+    const std::int64_t from = events_done_, to = until - current_.start;
+    events_done_ = std::max(events_done_, to);
+    if (clip.events.empty() || to <= from) return;
+    const std::int64_t length = to_flicks(clip.duration);
+    const bool loops = clip.loop == LoopMode::Loop && length > 0;
+    // A looping clip reports each iteration it crossed, at most a few per advance (a huge step of a tiny loop
+    // would otherwise flood the list).
+    constexpr std::int64_t kMaxIterations = 4;
+    const std::int64_t first = loops ? std::max<std::int64_t>(0, from) / length : 0;
+    const std::int64_t last = loops ? std::min(to / length, first + kMaxIterations - 1) : 0;
+    for (std::int64_t k = first; k <= last; ++k)
+        for (const ClipEvent& e : clip.events) {
+            const std::int64_t at = k * length + to_flicks(e.time);
+            if (at > from && at <= to && fired_.size() < fired_.capacity())
+                fired_.push_back({current_.clip, &e});
+        }
+}
+
 void Player::advance(double dt_seconds) {
+    fired_.clear();
     if (!(dt_seconds > 0)) return;
     const std::int64_t target = now_ + to_flicks(dt_seconds);
     // Hand over to the next clip at the exact end of a Next clip (bounded in case of a chain of empty clips).
@@ -219,9 +245,11 @@ void Player::advance(double dt_seconds) {
         const std::int64_t end = current_.start + to_flicks(clip.duration);
         if (end > target) break;
         now_ = end;
+        collect_events(end);
         play(clip.next);
     }
     now_ = target;
+    collect_events(target);
     refresh_pose();
 }
 

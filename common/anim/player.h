@@ -31,6 +31,12 @@ void sample_clip(const Clip& clip, std::span<const Vec3> start_euler, std::span<
                  double t, std::span<Vec3> out_euler, std::span<Vec3> out_position,
                  std::span<Vec3> velocity_euler = {}, std::span<Vec3> velocity_position = {});
 
+// A clip event (marker) the player passed: which clip, and the event in that clip's ClipEvent list.
+struct FiredEvent {
+    int clip = -1;
+    const ClipEvent* event = nullptr;
+};
+
 class Player {
   public:
     // Starts at the rig's rest pose with nothing playing. `clips` and `rig` must outlive the player.
@@ -53,6 +59,9 @@ class Player {
     bool blending() const { return source_ != Source::None && now_ - blend_start_ < blend_length_; }
     // A Once clip past its end (a looping clip never finishes).
     bool finished() const;
+    // The clip events passed by the last advance(), in time order: (previous time, new time] of the clip's
+    // own time, every loop iteration crossed (up to a bound), an event at 0 s once the clip has started.
+    std::span<const FiredEvent> fired_events() const { return fired_; }
 
   private:
     struct Instance {
@@ -67,6 +76,7 @@ class Player {
     void sample_instance(const Instance& inst, std::span<Vec3> euler, std::span<Vec3> position,
                          std::span<Vec3> vel_euler, std::span<Vec3> vel_position) const;
     void refresh_pose();
+    void collect_events(std::int64_t until);
 
     const ClipSet& clips_;
     const Rig& rig_;
@@ -79,6 +89,8 @@ class Player {
     std::vector<Vec3> a_euler_, a_position_, a_vel_euler_, a_vel_position_;
     std::vector<Vec3> b_euler_, b_position_, b_vel_euler_, b_vel_position_;
     Pose pose_;
+    std::int64_t events_done_ = -1; // current clip's time (flicks) up to which events were reported
+    std::vector<FiredEvent> fired_; // capacity fixed at construction
 };
 
 } // namespace ks::anim

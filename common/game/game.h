@@ -64,6 +64,8 @@ struct PlayerState {
     float recoil = 0.0f;       // seconds since the last shot (large = at rest)
     int shots = 0;
     float damage_taken = 0.0f;
+    float stride = 0.0f;   // ground distance walked since the last footstep (sound only; not hashed)
+    float air_time = 0.0f; // seconds since the feet left the ground (sound only; not hashed)
     Vec3 eye() const { return feet + Vec3(0, 3.0f, 0); }
     Vec3 view_direction() const;
 };
@@ -247,6 +249,7 @@ class Game {
     Result<void> add_player(const level::Level& level);
     Result<physics::BodyId> add_body(const physics::BodyDesc& desc, const level::Entity& e);
     void update_player(const Input& input, float dt);
+    void player_feet_events(bool was_grounded, const Vec3& old_velocity, const Vec3& ground_normal, float dt);
     void fire_player_shot();
     void update_robot(std::size_t index, float dt);
     void robot_wander(Robot& r, std::size_t index, float dt);
@@ -262,6 +265,7 @@ class Game {
     void set_phase(Phase phase);
     void push(EventType type, Vec3 position = Vec3(0.0f), int entity = -1, float amount = 0.0f,
               Vec3 end = Vec3(0.0f));
+    void push_cue(EventType type, Vec3 position, int entity, std::string_view cue);
     // Closest shootable hit along a ray, skipping `ignore` and (for robot shots) every robot.
     bool shoot_ray(const geometry::Ray& ray, physics::BodyId ignore, bool skip_robots, physics::RayHit& hit);
     // Robot AI pieces (robots.cpp, robot_hunt.cpp).

@@ -29,7 +29,11 @@ float approach_zero(float v, float by) {
 } // namespace
 
 void Game::push(EventType type, Vec3 position, int entity, float amount, Vec3 end) {
-    events_.push_back({type, position, end, entity, amount});
+    events_.push_back({type, position, end, entity, amount, {}});
+}
+
+void Game::push_cue(EventType type, Vec3 position, int entity, std::string_view cue) {
+    events_.push_back({type, position, Vec3(0.0f), entity, 0.0f, cue});
 }
 
 void Game::set_phase(Phase phase) {
@@ -61,18 +65,48 @@ void Game::step(const Input& raw) {
 
     // Read back the characters' new positions.
     const auto& pc = world_.character(player_.body);
+    const Vec3 old_velocity = player_.velocity;
+    const bool was_grounded = player_.grounded;
     player_.feet = world_.transform(player_.body).position - Vec3(0, settings_.player_height * 0.5f, 0);
     player_.velocity = pc.movement.velocity;
     player_.grounded = pc.grounded;
+    if (phase_ == Phase::Playing) player_feet_events(was_grounded, old_velocity, pc.ground_normal, dt);
     for (std::size_t i = 0; i < robots_.size(); ++i) {
         Robot& r = robots_[i];
         if (r.mode == RobotMode::Dead) continue;
         r.feet = world_.transform(r.body).position - Vec3(0, settings_.robot_height * 0.5f, 0);
         robot_anims_[i].advance(dt);
+        for (const anim::FiredEvent& fired : robot_anims_[i].fired_events())
+            push_cue(EventType::ClipCue, r.feet + Vec3(0, settings_.robot_height * 0.5f, 0), r.entity_id,
+                     fired.event->sound);
         if (r.feet.y < settings_.fall_limit && r.alive()) damage_robot(i, r.health, false);
     }
     if (phase_ == Phase::Playing && player_.feet.y < settings_.fall_limit) damage_player(1e9f);
     if (phase_ == Phase::Playing) update_interaction(input);
+}
+
+// Footsteps (one per stride of ground walked, so their pace follows the speed; on a slope they are stair
+// steps), and a landing after a real fall. Sound only: nothing here changes the simulation.
+void Game::player_feet_events(bool was_grounded, const Vec3& old_velocity, const Vec3& ground_normal,
+                              float dt) {
+    PlayerState& p = player_;
+    if (!p.grounded) {
+        p.air_time += dt;
+        return;
+    }
+    if (!was_grounded && p.air_time >= settings_.land_min_air_time &&
+        -old_velocity.y >= settings_.land_min_speed) {
+        push(EventType::Land, p.feet, -1, -old_velocity.y);
+        p.stride = 0.0f;
+    }
+    p.air_time = 0.0f;
+    const float speed = std::hypot(p.velocity.x, p.velocity.z);
+    p.stride += speed * dt;
+    if (p.stride >= settings_.footstep_stride) {
+        p.stride -= settings_.footstep_stride;
+        const bool slope = ground_normal.y < 0.98f;
+        push(EventType::Footstep, p.feet, -1, slope ? 1.0f : 0.0f);
+    }
 }
 
 void Game::update_player(const Input& input, float dt) {
@@ -96,7 +130,7 @@ void Game::update_player(const Input& input, float dt) {
     const Vec3 wish = (forward * axes.y + right * axes.x) * settings_.player_speed;
     mv.velocity.x = wish.x + p.knockback.x;
     mv.velocity.z = wish.z + p.knockback.z;
-    if (input.jump) world_.jump(p.body, settings_.jump_speed);
+    if (input.jump && world_.jump(p.body, settings_.jump_speed)) push(EventType::Jump, p.feet);
     if (input.fire) fire_player_shot();
 }
 
@@ -110,7 +144,10 @@ bool Game::shoot_ray(const geometry::Ray& ray, physics::BodyId ignore, bool skip
 
 void Game::fire_player_shot() {
     PlayerState& p = player_;
-    if (p.ammo <= 0) return;
+    if (p.ammo <= 0) {
+        push(EventType::DryFire, p.eye());
+        return;
+    }
     --p.ammo;
     ++p.shots;
     p.recoil = 0.0f;
@@ -153,6 +190,7 @@ void Game::damage_player(float amount) {
     p.damage_taken += std::min(amount, 1e6f);
     p.health = std::max(0.0f, p.health - rest);
     p.damage_flash = 0.4f;
+    if (absorbed > 0.0f) push(EventType::ShieldHit, p.feet, -1, std::min(absorbed, 1e6f));
     push(EventType::PlayerDamaged, p.feet, -1, std::min(amount, 1e6f));
     if (p.health <= 0.0f) set_phase(Phase::Dead);
 }

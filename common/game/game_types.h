@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 
 namespace ks::game {
 
@@ -40,7 +41,14 @@ enum class EventType : std::uint8_t {
     PlayerDamaged,  // amount = damage before the shield
     PlayerDied,
     Won,
-    Paused, // amount = 1 paused / 0 resumed
+    Paused,    // amount = 1 paused / 0 resumed
+    Footstep,  // the player's foot: position = feet, amount = 0 on a floor, 1 on stairs (a slope)
+    Jump,      // the player left the ground
+    Land,      // the player landed: amount = downward speed at touch-down
+    DryFire,   // fire with an empty magazine: position = eye
+    ShieldHit, // the shield absorbed damage: amount = absorbed (PlayerDamaged follows with the total)
+    ClipCue,   // a robot's animation clip passed an event: entity = robot, cue = the event's sound (may be
+               // empty), position = the robot's centre
 };
 
 struct Event {
@@ -49,6 +57,7 @@ struct Event {
     Vec3 end{0.0f};
     int entity = -1; // level entity id
     float amount = 0.0f;
+    std::string_view cue; // ClipCue: the clip event's sound name (owned by the game's clip set)
 };
 
 // Gameplay numbers that are not per entity in the level file (reference values, seed-facts §5).
@@ -70,12 +79,15 @@ struct GameSettings {
     float robot_height = level::kRobotHeight;
     float robot_same_level = 6.0f; // |Δy| below which a robot considers the player on its level
     float robot_shot_range = 100.0f;
-    float robot_wander_speed = 2.4f; // 0.3 · velocity 8 in the reference
+    float robot_wander_speed = 2.4f;    // 0.3 · velocity 8 in the reference
     float robot_replan_interval = 0.5f; // seconds between path plans toward a goal that has not moved much
     float robot_search_radius = 6.0f;   // searching robots look around within this of the last known position
-    float cylinder_fuse = 0.12f;     // seconds between a cylinder taking blast damage and exploding
-    float knockback_decay = 4.0f;    // 1/s: how fast an explosion's push fades
-    float fall_limit = -50.0f;       // a character below this y is dead (fell out of the level)
+    float cylinder_fuse = 0.12f;        // seconds between a cylinder taking blast damage and exploding
+    float knockback_decay = 4.0f;       // 1/s: how fast an explosion's push fades
+    float fall_limit = -50.0f;          // a character below this y is dead (fell out of the level)
+    float footstep_stride = 5.0f;       // ground distance between the player's footsteps (pace follows speed)
+    float land_min_air_time = 0.2f;     // seconds off the ground before touching down counts as a landing
+    float land_min_speed = 3.0f; // and the downward speed it must have (stairs and steps are not jumps)
 };
 
 } // namespace ks::game

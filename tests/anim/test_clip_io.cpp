@@ -55,6 +55,7 @@ TEST_CASE("load -> save -> load -> save is byte-identical for every feature of t
     two.name = "two \"quoted\"";
     two.loop = LoopMode::Loop;
     two.phases.push_back(PhaseDef{0.5, Ease::linear(), {}});
+    two.events = {{0.0, "muzzle_flash", "robot_shot"}, {1.0 / 3.0, "step \"left\"", ""}};
     f.clips = {one, two};
     f.clips[0].next = two.name;
     f.blends[1].to = two.name;
@@ -69,6 +70,8 @@ TEST_CASE("load -> save -> load -> save is byte-identical for every feature of t
     CHECK(reloaded->clips[0].phases[0].targets[0].ease == Ease::bezier(0.42f, 0, 0.58f, 1));
     CHECK(reloaded->clips[0].phases[0].targets[1].rot->y == 0.13 * 180);
     CHECK(reloaded->clips[1].name == "two \"quoted\"");
+    CHECK(reloaded->clips[1].events == f.clips[1].events);
+    CHECK(reloaded->clips[0].events.empty());
     CHECK_FALSE(reloaded->wrap_captured_angles);
     REQUIRE(reloaded->node_ease.size() == 2);
     CHECK(reloaded->node_ease[1].ease == Ease::power(1.5f, EaseMode::Out));
@@ -151,6 +154,11 @@ TEST_CASE("malformed clip files give clear errors: file, line:column, JSON path,
          {"2 problems", "bad_node_ease.json:10:25", "node_ease.haed", "unknown node 'haed'",
           "did you mean 'head'?", "bad_node_ease.json:10:49", "unknown easing 'Bouncy.Out'",
           "did you mean 'Bounce.Out'?"}},
+        {"bad_events.json",
+         {"bad_events.json:18:18", "clips[0].events[0].time",
+          "event time 0.75 s is outside clip 'nod' (0..0.5 s)", "clips[0].events[1].name",
+          "event name is empty", "sound name 'Robot Shot.wav' has characters", "unknown key 'nmae'",
+          "did you mean 'name'?", "event has no \"name\""}},
         {"many_problems.json",
          {"3 problems", "duration -1 s is negative", "unknown easing 'Springy.Out'", "unknown node 'neck'"}},
     };

@@ -7,6 +7,7 @@
 #include "core/random.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <doctest/doctest.h>
 #include <string>
@@ -358,5 +359,88 @@ TEST_CASE("extreme blend times: one flick and ten seconds stay jump-free and fin
         Rates rates(lib.rig.size());
         player.velocity(rates.euler, rates.position);
         for (const Vec3& v : rates.euler) CHECK(is_finite(v));
+    }
+}
+
+namespace {
+// The names of the events fired by one advance(), in order.
+std::vector<std::string> fired_names(const Player& player) {
+    std::vector<std::string> names;
+    for (const FiredEvent& f : player.fired_events()) names.push_back(f.event->name);
+    return names;
+}
+} // namespace
+
+TEST_CASE(
+    "clip events fire once when the clip passes them: at the start, per loop iteration, across 'next'") {
+    AnimationFile file = robot_library().file;
+    for (ClipDef& c : file.clips) {
+        if (c.name == "idle") c.events = {{0.0, "step_left", "footstep_floor"}, {0.8, "step_right", ""}};
+        if (c.name == "shoot_pose") {
+            c.loop = LoopMode::Next;
+            c.next = "shooting";
+            c.events = {{0.3, "aimed", ""}};
+        }
+    }
+    REQUIRE(validate(file).empty());
+    auto clips = compile(file, robot_library().rig);
+    REQUIRE(clips.ok());
+    const ClipSet& set = *clips;
+
+    SUBCASE("the shipped shooting clip carries its muzzle flash and shot sound at 0 s, fired once per play") {
+        const ClipSet& shipped = robot_library().clips;
+        Player player(shipped, robot_library().rig);
+        player.play(shipped.find("shooting"));
+        player.advance(1.0 / 120);
+        REQUIRE(player.fired_events().size() == 1);
+        CHECK(player.fired_events()[0].event->name == "muzzle_flash");
+        CHECK(player.fired_events()[0].event->sound == "robot_shot");
+        int later = 0;
+        for (int i = 0; i < 240; ++i) {
+            player.advance(1.0 / 120);
+            later += static_cast<int>(player.fired_events().size());
+        }
+        CHECK(later == 0); // a Once clip holds its last pose: no second shot sound
+    }
+    SUBCASE("a loop reports each iteration, whatever the frame size") {
+        for (double dt : {1.0 / 120, 1.0 / 30, 0.25}) {
+            Player player(set, robot_library().rig);
+            player.play(set.find("idle"), 0.0f);
+            int left = 0, right = 0;
+            const int steps = static_cast<int>(std::lround(3.5 / dt));
+            for (int i = 0; i < steps; ++i) {
+                player.advance(dt);
+                for (const std::string& n : fired_names(player)) (n == "step_left" ? left : right) += 1;
+            }
+            INFO("dt ", dt);
+            CHECK(left == 3);  // 0, 1.6, 3.2 s
+            CHECK(right == 2); // 0.8, 2.4 s (4.0 s is not reached in 3.5 s)
+        }
+    }
+    SUBCASE("a huge step of a loop reports a bounded number of iterations") {
+        Player player(set, robot_library().rig);
+        player.play(set.find("idle"), 0.0f);
+        player.advance(1000.0);
+        CHECK(player.fired_events().size() <= 8);
+        CHECK(player.fired_events().size() >= 2);
+    }
+    SUBCASE("the end event of a 'next' clip fires before the next clip's own events") {
+        Player player(set, robot_library().rig);
+        player.play(set.find("shoot_pose"), 0.0f);
+        player.advance(1.0); // 0.3 s of shoot_pose, then shooting (its muzzle_flash at 0 s)
+        CHECK(fired_names(player) == std::vector<std::string>{"aimed", "muzzle_flash"});
+        player.advance(1.0 / 120);
+        CHECK(player.fired_events().empty());
+    }
+    SUBCASE("playing the clip again re-arms its events; a bad step fires nothing") {
+        Player player(set, robot_library().rig);
+        player.play(set.find("idle"), 0.0f);
+        player.advance(0.1);
+        CHECK(fired_names(player) == std::vector<std::string>{"step_left"});
+        player.play(set.find("idle"));
+        player.advance(0.1);
+        CHECK(fired_names(player) == std::vector<std::string>{"step_left"});
+        player.advance(std::nan(""));
+        CHECK(player.fired_events().empty());
     }
 }
