@@ -123,7 +123,8 @@ int run(int argc, const char* const* argv) {
         std::printf("%8d %8d %10.1f %10.1f %10.1f %7.2fx\n", r.sources, r.active, r.cpu_us, r.median_us,
                     r.p99_us, ratio);
         cpu_lines.push_back(std::to_string(r.sources) + "," + std::to_string(r.active) + "," +
-                            fmt("%.1f", r.cpu_us) + "," + fmt("%.1f", r.p99_us) + "," + fmt("%.2f", ratio));
+                            fmt("%.1f", r.cpu_us) + "," + fmt("%.1f", r.median_us) + "," +
+                            fmt("%.1f", r.p99_us) + "," + fmt("%.2f", ratio));
     }
 
     const int sources = 32, frames = quick ? 600 : 3600;

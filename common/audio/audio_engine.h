@@ -84,7 +84,8 @@ class AudioEngine {
     // Starts `params.sound` (at the next update). Returns an invalid handle when the sound does not exist
     // (a warning, once per name), the voice limit dropped it, or there is no output.
     VoiceHandle play(const PlayParams& params);
-    // Calls through a handle whose sound ended or was stolen do nothing.
+    // Calls through a handle whose sound ended or was stolen do nothing. A new volume is applied by the next
+    // update, with the distance gain.
     void set_position(VoiceHandle voice, Vec3 position);
     void set_volume(VoiceHandle voice, float volume);
     void stop(VoiceHandle voice);
