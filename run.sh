@@ -15,7 +15,7 @@ cd "$(dirname "$(readlink -f "$0")")"
 PACKAGES=(
     build-essential cmake pkg-config git
     libglfw3-dev libepoxy-dev libgl-dev libimgui-dev libglm-dev libassimp-dev nlohmann-json3-dev
-    libstb-dev doctest-dev zlib1g-dev librecast-dev
+    libstb-dev doctest-dev zlib1g-dev librecast-dev libopenal-dev
     xvfb xauth libgl1-mesa-dri mesa-utils xdotool
     gnuplot-nox
 )

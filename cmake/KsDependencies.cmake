@@ -51,3 +51,8 @@ find_library(DETOUR_LIBRARY Detour REQUIRED)
 add_library(ks_recast INTERFACE)
 target_include_directories(ks_recast SYSTEM INTERFACE ${RECAST_INCLUDE_DIR})
 target_link_libraries(ks_recast INTERFACE ${RECAST_LIBRARY} ${DETOUR_LIBRARY})
+
+# OpenAL Soft from libopenal-dev (pkg-config "openal"): only the audio module links it.
+pkg_check_modules(OPENAL REQUIRED IMPORTED_TARGET openal)
+add_library(ks_openal INTERFACE)
+target_link_libraries(ks_openal INTERFACE PkgConfig::OPENAL)
