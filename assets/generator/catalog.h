@@ -1,7 +1,9 @@
 #pragma once
-// Every asset the generator makes, by name. `--only NAME` picks one; the default makes them all.
+// Every asset the generator makes, by name. `--only NAME` picks one; the default makes them all. The
+// sounds (sounds.h) are one recipe each, named as their files.
 #include "output.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -10,7 +12,7 @@ namespace ks::assetgen {
 struct Recipe {
     std::string name;
     std::string what;
-    Result<void> (*make)(Output& out);
+    std::function<Result<void>(Output& out)> make;
 };
 
 const std::vector<Recipe>& catalog();

@@ -1,5 +1,7 @@
 #include "output.h"
 
+#include "audio/wav.h"
+
 namespace ks::assetgen {
 namespace fs = std::filesystem;
 
@@ -40,6 +42,23 @@ Result<void> Output::model(const Model& model) {
     written_.push_back(folder / (model.name() + ".gltf"));
     written_.push_back(folder / (model.name() + ".bin"));
     models_.push_back(model);
+    return ok();
+}
+
+Result<void> Output::sound(const std::string& name, std::vector<std::int16_t> samples) {
+    if (designer_sounds_.count(name) > 0) {
+        kept_sounds_.push_back(name);
+        return ok();
+    }
+    const fs::path path = root_ / "sounds" / (name + ".wav");
+    KS_ASSETGEN_TRY(ensure_folder(path.parent_path()));
+    audio::SoundData data;
+    data.sample_rate = 48000;
+    data.channels = 1;
+    data.samples = std::move(samples);
+    KS_ASSETGEN_TRY(audio::write_wav(path, data));
+    written_.push_back(path);
+    sounds_[name] = std::move(data.samples);
     return ok();
 }
 

@@ -1,12 +1,14 @@
 #pragma once
-// Where generated assets go: DIR/textures/<name>.png and DIR/models/<name>.gltf|.bin. Keeps what it wrote
-// in memory too (textures for the contact sheet, models for previews) and lists every file written.
+// Where generated assets go: DIR/textures/<name>.png, DIR/models/<name>.gltf|.bin and DIR/sounds/<name>.wav.
+// Keeps what it wrote in memory too (textures for the contact sheet, models for previews, sounds for the
+// sound report) and lists every file written.
 #include "gltf_writer.h"
 #include "image.h"
 #include "text.h"
 
 #include "core/result.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -42,12 +44,20 @@ class Output {
     // Writes <name>_basecolor, _normal, _orm (+ _emissive, _height when present).
     Result<void> material(const std::string& name, const MaterialMaps& maps);
     Result<void> model(const Model& model);
+    // Writes DIR/sounds/<name>.wav: 16-bit PCM, mono, 48 kHz; unless the name is one of the designer's
+    // sounds, whose file is left as it is.
+    Result<void> sound(const std::string& name, std::vector<std::int16_t> samples);
+    void keep_designer_sounds(std::set<std::string> names) { designer_sounds_ = std::move(names); }
+    // The designer's sounds this run left alone.
+    const std::vector<std::string>& kept_sounds() const { return kept_sounds_; }
 
     const Font& font() const { return font_; }
     const std::filesystem::path& root() const { return root_; }
     const std::vector<std::filesystem::path>& written() const { return written_; }
     const std::map<std::string, Image>& textures() const { return textures_; }
     const std::vector<Model>& models() const { return models_; }
+    // The sounds of this run by name (mono 48 kHz samples).
+    const std::map<std::string, std::vector<std::int16_t>>& sounds() const { return sounds_; }
     // Texture lookup for previews (nullptr when not generated in this run or not kept).
     const Image* find_texture(const std::string& name) const;
     bool has_written_texture(const std::string& name) const { return texture_names_.count(name) > 0; }
@@ -60,6 +70,9 @@ class Output {
     std::map<std::string, Image> textures_;
     std::set<std::string> texture_names_;
     std::vector<Model> models_;
+    std::map<std::string, std::vector<std::int16_t>> sounds_;
+    std::set<std::string> designer_sounds_;
+    std::vector<std::string> kept_sounds_;
 };
 
 } // namespace ks::assetgen
