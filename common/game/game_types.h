@@ -37,7 +37,8 @@ enum class EventType : std::uint8_t {
     DoorToggled,    // entity = door, amount = 1 opening / 0 closing
     LightToggled,   // entity = floor light, amount = 1 on / 0 off
     CaptionChanged, // the caption text or visibility changed
-    PlayerDamaged,  // amount = damage before the shield
+    PlayerDamaged,  // amount = damage before the shield; position = where it came from (the robot's hand
+                    // tip, the blast centre), end = the player's eye then (both the eye: no source, a fall)
     PlayerDied,
     Won,
     Paused, // amount = 1 paused / 0 resumed
@@ -70,12 +71,12 @@ struct GameSettings {
     float robot_height = level::kRobotHeight;
     float robot_same_level = 6.0f; // |Δy| below which a robot considers the player on its level
     float robot_shot_range = 100.0f;
-    float robot_wander_speed = 2.4f; // 0.3 · velocity 8 in the reference
+    float robot_wander_speed = 2.4f;    // 0.3 · velocity 8 in the reference
     float robot_replan_interval = 0.5f; // seconds between path plans toward a goal that has not moved much
     float robot_search_radius = 6.0f;   // searching robots look around within this of the last known position
-    float cylinder_fuse = 0.12f;     // seconds between a cylinder taking blast damage and exploding
-    float knockback_decay = 4.0f;    // 1/s: how fast an explosion's push fades
-    float fall_limit = -50.0f;       // a character below this y is dead (fell out of the level)
+    float cylinder_fuse = 0.12f;        // seconds between a cylinder taking blast damage and exploding
+    float knockback_decay = 4.0f;       // 1/s: how fast an explosion's push fades
+    float fall_limit = -50.0f;          // a character below this y is dead (fell out of the level)
 };
 
 } // namespace ks::game
