@@ -6,6 +6,7 @@ in vec2 v_lightmap_uv;
 in vec3 v_diffuse;
 in vec3 v_specular;
 in float v_emissive_scale;
+in vec3 v_tint;
 out vec4 o_color;
 
 uniform sampler2D u_base_map;
@@ -57,7 +58,7 @@ void main() {
         vec3 e = texture(u_emissive_map, v_uv).rgb;
         emissive *= raw ? e * e : e;
     }
-    color += emissive;
+    color += emissive + v_tint;
 
     float dist = u_depth_to_view.x / (u_depth_to_view.y - gl_FragCoord.z);
     float fog = 1.0 - exp(-u_fog_density * u_fog_density * dist * dist);

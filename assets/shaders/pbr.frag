@@ -6,6 +6,7 @@ in vec2 v_uv;
 in vec4 v_tangent;
 in vec4 v_shadow;
 in float v_emissive_scale;
+in vec3 v_tint;
 out vec4 o_color;
 
 uniform sampler2D u_base_map;
@@ -127,7 +128,7 @@ void main() {
 
     vec3 emissive = u_emissive_factor * v_emissive_scale;
     if ((u_map_flags & 4) != 0) emissive *= texture(u_emissive_map, v_uv).rgb;
-    color += emissive;
+    color += emissive + v_tint;
 
     float dist = length(u_camera_position - v_world);
     float fog = 1.0 - exp(-u_fog_density * u_fog_density * dist * dist);

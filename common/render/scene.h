@@ -23,6 +23,9 @@ struct MeshInstance {
     // culling). Only for a `world` that keeps axes axis-aligned (rotations by multiples of 90 degrees).
     bool occluder = false;
     Vec3 occluder_inset{0.0f};
+    // Linear rgb light this instance gives off on top of its shading, on every surface of it (a robot just
+    // hit flashes red); 0: none. Per instance, so tinted and untinted copies still share one draw.
+    Vec3 tint{0.0f};
 };
 
 struct Light {
@@ -34,6 +37,9 @@ struct Light {
     float range = 24.0f;
     float cos_outer = 0.8f; // spot cone (cosines of half-angles)
     float cos_inner = 0.9f;
+    // Not in any light map (a muzzle flash; level lights are baked): the fast path also lights the baked
+    // level surfaces it reaches with it, per pixel, with fast_level_lit. Level lights leave it false.
+    bool dynamic = false;
 };
 
 struct Environment {
