@@ -27,9 +27,10 @@ enum class Phase : std::uint8_t { Playing, Dead, Won };
 enum class EventType : std::uint8_t {
     ShotFired, // player shot: position = rifle tip, end = where the ray stopped
     RobotShot, // robot shot (fired or dry): position = hand tip, end = where the ray stopped
-    Hit,       // a shot hit something: position = point, end = surface normal, entity = what (-1: player or
-               // scenery)
-    RobotHurt, // entity = robot, amount = damage
+    // A shot (the player's or a robot's) hit something: position = point, end = surface normal, entity =
+    // what (-1: player or scenery), amount = damage to the player (> 0 only when it hit the player).
+    Hit,
+    RobotHurt,      // entity = robot, amount = damage
     RobotAlerted,   // entity = robot
     RobotDied,      // entity = robot, after its death clip; the robot is removed
     Explosion,      // position = centre, amount = blast radius (robot deaths: 0, visual only)

@@ -264,6 +264,8 @@ void Game::robot_fire(std::size_t index) {
     } else if (user_kind(user) == BodyKind::Cylinder) {
         push(EventType::Hit, hit.point, cylinders_[user_index(user)].entity_id, 0.0f, hit.normal);
         explode_cylinder(user_index(user));
+    } else { // a wall, a door, a prop: sparks where it struck
+        push(EventType::Hit, hit.point, -1, 0.0f, hit.normal);
     }
 }
 

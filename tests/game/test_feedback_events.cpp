@@ -1,5 +1,6 @@
 // What the game tells the runtime's visual feedback: where damage came from (PlayerDamaged's position is
-// the robot's hand tip or the blast centre, its end the player's eye) and how long a hit robot flashes.
+// the robot's hand tip or the blast centre, its end the player's eye), how long a hit robot flashes, and
+// where a robot's shot struck a wall.
 #include "game_test_levels.h"
 
 #include <cmath>
@@ -73,4 +74,30 @@ TEST_CASE("a hit robot flashes for the reference's 1 s, then not") {
     CHECK(g->robots()[0].hit_flash < 1e-4f); // 120 steps of 1/120 s, give or take float rounding
     g->step({});
     CHECK(g->robots()[0].hit_flash == 0.0f);
+}
+
+TEST_CASE("a robot's shot that strikes a wall says where (sparks), with no damage") {
+    // A waist-high wall: the robot sees the player over it (eye and chest lines pass), but the shot from
+    // its lower hand tip meets the wall.
+    auto lv = flat_level();
+    auto& r = add_robot(lv, Vec3(0, 0, -8));
+    r.as<level::RobotProps>().hit_probability = 1.0f;
+    add_wall(lv, Vec3(0, 0, -4.0f), Vec3(4.0f, 1.45f, 0.3f));
+    auto g = make_game(lv);
+    int shots = 0, wall_hits = 0;
+    for (int i = 0; i < 4 * 120; ++i) {
+        g->step({});
+        shots += count_events(*g, EventType::RobotShot);
+        for (const Event& e : g->events())
+            if (e.type == EventType::Hit) {
+                ++wall_hits;
+                CHECK(e.entity == -1);
+                CHECK(e.amount == 0.0f);
+                CHECK(e.position.z == doctest::Approx(-4.15f).epsilon(0.01)); // the wall's far face
+                CHECK(e.end.z < -0.9f);                                       // its normal faces the robot
+            }
+    }
+    CHECK(shots >= 2);
+    CHECK(wall_hits == shots);
+    CHECK(g->player().health == 100.0f);
 }
