@@ -23,8 +23,9 @@ struct MeshInstance {
     // culling). Only for a `world` that keeps axes axis-aligned (rotations by multiples of 90 degrees).
     bool occluder = false;
     Vec3 occluder_inset{0.0f};
-    // Linear rgb light this instance gives off on top of its shading, on every surface of it (a robot just
-    // hit flashes red); 0: none. Per instance, so tinted and untinted copies still share one draw.
+    // A colour washed over every surface of this instance (a robot just hit flashes red), linear rgb: it
+    // is added to the shading, which dims by 0.6 x its largest channel; 0: none. Per instance, so tinted
+    // and untinted copies still share one draw.
     Vec3 tint{0.0f};
 };
 
