@@ -62,10 +62,10 @@ inline int impact(const game::Event& e, HitTarget target, EventEmitters& out) {
         sparks.velocity = Vec3(4.5f, 4.0f, 4.5f);
         sparks.drift = normal * 2.0f;
         sparks.gravity = 4.0f;
-        sparks.per_frame = 12;
+        sparks.per_frame = 10;
         sparks.grow = 1.6f;
-        sparks.color_start = Vec3(0.85f, 0.95f, 1.0f);
-        sparks.color_end = Vec3(0.25f, 0.5f, 1.0f);
+        sparks.color_start = Vec3(0.35f, 0.65f, 1.0f); // the sprite's white core turns cyan
+        sparks.color_end = Vec3(0.15f, 0.3f, 1.0f);
         sparks.max_particles = 48;
         return 1;
     }
