@@ -101,3 +101,36 @@ TEST_CASE("a robot's shot that strikes a wall says where (sparks), with no damag
     CHECK(wall_hits == shots);
     CHECK(g->player().health == 100.0f);
 }
+
+TEST_CASE("the hit marker shows only when a shot hits a robot: not a wall, not a gas cylinder") {
+    Input fire;
+    fire.fire = true;
+    const float aim = std::atan2(-1.5f, 10.0f); // the eye at y 3, a target's middle at y 1.5, 10 ahead
+    {
+        auto lv = flat_level();
+        add_wall(lv, Vec3(0, 0, -10), Vec3(10, 8, 0.5f));
+        auto g = make_game(lv);
+        g->teleport_player(Vec3(0.0f), 0.0f, aim);
+        g->step(fire);
+        CHECK(count_events(*g, EventType::Hit) == 1);
+        CHECK(g->player().hit_marker == 0.0f);
+    }
+    {
+        auto lv = flat_level();
+        lv.add(level::EntityType::GasCylinder, Vec3(0, 0, -10), "gas");
+        auto g = make_game(lv);
+        g->teleport_player(Vec3(0.0f), 0.0f, std::atan2(-2.0f, 10.0f));
+        g->step(fire);
+        CHECK(g->cylinders()[0].exploded);
+        CHECK(g->player().hit_marker == 0.0f);
+    }
+    {
+        auto lv = flat_level();
+        add_robot(lv, Vec3(0, 0, -10));
+        auto g = make_game(lv);
+        g->teleport_player(Vec3(0.0f), 0.0f, aim);
+        g->step(fire);
+        CHECK(g->robots()[0].health < 100.0f);
+        CHECK(g->player().hit_marker > 0.0f);
+    }
+}
