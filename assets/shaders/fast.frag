@@ -6,6 +6,7 @@ in vec2 v_lightmap_uv;
 in vec3 v_diffuse;
 in vec3 v_specular;
 in float v_emissive_scale;
+in vec3 v_tint; // MeshInstance::tint: its colour replaces part of the shading
 out vec4 o_color;
 
 uniform sampler2D u_base_map;
@@ -58,6 +59,9 @@ void main() {
         emissive *= raw ? e * e : e;
     }
     color += emissive;
+    // A tint pulls the colour toward itself: the other channels dim as it adds its own (a hit robot reads
+    // red, not orange); no tint leaves the colour as it was.
+    color = color * (1.0 - 0.6 * clamp(max(v_tint.r, max(v_tint.g, v_tint.b)), 0.0, 1.0)) + v_tint;
 
     float dist = u_depth_to_view.x / (u_depth_to_view.y - gl_FragCoord.z);
     float fog = 1.0 - exp(-u_fog_density * u_fog_density * dist * dist);

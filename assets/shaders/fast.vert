@@ -31,6 +31,7 @@ out vec2 v_lightmap_uv;
 out vec3 v_diffuse;  // times albedo * (1 - metallic) in the fragment shader
 out vec3 v_specular; // times F0
 out float v_emissive_scale;
+out vec3 v_tint; // MeshInstance::tint
 
 const float PI = 3.14159265;
 
@@ -40,6 +41,7 @@ void main() {
     v_uv = a_uv;
     v_lightmap_uv = a_lightmap_uv;
     v_emissive_scale = i_params.x;
+    v_tint = i_params.yzw;
     v_diffuse = vec3(0.0);
     v_specular = vec3(0.0);
     if (u_baked != 0) return;

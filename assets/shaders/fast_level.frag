@@ -3,10 +3,40 @@
 // masks, texture lookups included, so the general shader paid for the ORM and emissive maps on every level
 // pixel. This one is two lookups (base colour x occlusion, read raw and squared; the light map) and the
 // same arithmetic as fast.frag for a baked surface without ORM or emissive maps (the renderer uses fast.frag
-// for those).
+// for those). DYNAMIC_LIGHTS (the fast_level_lit program) adds the lights that are not in the light map
+// (muzzle flashes) per pixel, in fast.vert's units: the renderer uses it only for surfaces one reaches.
 in vec2 v_uv;
 in vec2 v_lightmap_uv;
 out vec4 o_color;
+#ifdef DYNAMIC_LIGHTS
+#define MAX_LIGHTS 8
+in vec3 v_world;
+in vec3 v_normal;
+uniform int u_light_count;
+uniform vec4 u_light_position[MAX_LIGHTS];  // xyz, w = range
+uniform vec4 u_light_color[MAX_LIGHTS];     // linear rgb * intensity * PI, w = 1 spot / 0 point
+uniform vec4 u_light_direction[MAX_LIGHTS]; // spot axis xyz, w = cos(outer)
+uniform float u_light_inner[MAX_LIGHTS];    // cos(inner)
+const float PI = 3.14159265;
+
+// Irradiance from the dynamic lights, as fast.vert's diffuse term.
+vec3 dynamic_light() {
+    vec3 n = normalize(v_normal);
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < u_light_count; ++i) {
+        vec3 to_light = u_light_position[i].xyz - v_world;
+        float dist = length(to_light);
+        float range = u_light_position[i].w;
+        if (dist >= range) continue;
+        vec3 l = to_light / max(dist, 1e-4);
+        float atten = 1.0 - dist / range;
+        if (u_light_color[i].w > 0.5)
+            atten *= smoothstep(u_light_direction[i].w, u_light_inner[i], dot(-l, u_light_direction[i].xyz));
+        sum += u_light_color[i].rgb * atten * max(dot(n, l), 0.0) / PI;
+    }
+    return sum;
+}
+#endif
 
 uniform sampler2D u_base_map;
 uniform sampler2D u_lightmap;
@@ -31,6 +61,9 @@ void main() {
     vec3 f0 = mix(vec3(0.04), base.rgb, metallic);
     vec3 light = texture(u_lightmap, v_lightmap_uv).rgb;
     light *= mix(vec3(1.0), light * u_lightmap_range, float(u_lightmap_range > 0.0));
+#ifdef DYNAMIC_LIGHTS
+    light += dynamic_light();
+#endif
     vec3 color = light * (base.rgb * (1.0 - metallic) + f0 * 0.5) + u_emissive_factor;
 
     float dist = u_depth_to_view.x / (u_depth_to_view.y - gl_FragCoord.z);

@@ -6,6 +6,7 @@ in vec2 v_uv;
 in vec4 v_tangent;
 in vec4 v_shadow;
 in float v_emissive_scale;
+in vec3 v_tint; // MeshInstance::tint: its colour replaces part of the shading
 out vec4 o_color;
 
 uniform sampler2D u_base_map;
@@ -128,6 +129,9 @@ void main() {
     vec3 emissive = u_emissive_factor * v_emissive_scale;
     if ((u_map_flags & 4) != 0) emissive *= texture(u_emissive_map, v_uv).rgb;
     color += emissive;
+    // A tint pulls the colour toward itself: the other channels dim as it adds its own (a hit robot reads
+    // red, not orange); no tint leaves the colour as it was.
+    color = color * (1.0 - 0.6 * clamp(max(v_tint.r, max(v_tint.g, v_tint.b)), 0.0, 1.0)) + v_tint;
 
     float dist = length(u_camera_position - v_world);
     float fog = 1.0 - exp(-u_fog_density * u_fog_density * dist * dist);

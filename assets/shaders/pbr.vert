@@ -13,6 +13,7 @@ out vec2 v_uv;
 out vec4 v_tangent;
 out vec4 v_shadow;
 out float v_emissive_scale;
+out vec3 v_tint; // MeshInstance::tint
 void main() {
     vec4 world = i_model * vec4(a_position, 1.0);
     mat3 normal_matrix = mat3(i_model); // models use uniform scale; level meshes are baked in world space
@@ -22,5 +23,6 @@ void main() {
     v_uv = a_uv;
     v_shadow = u_shadow_matrix * world;
     v_emissive_scale = i_params.x;
+    v_tint = i_params.yzw;
     gl_Position = u_view_projection * world;
 }

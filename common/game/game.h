@@ -75,6 +75,9 @@ struct PlayerState {
 // around there until its search time runs out, then back to Idle.
 enum class RobotMode : std::uint8_t { Idle, Alert, Chase, Aim, Shoot, Dying, Dead, Hunt, Search };
 
+// Seconds a robot shows it was hit (the runtime tints it red, fading), as the reference's 1 s flash.
+inline constexpr float kRobotHitFlashSeconds = 1.0f;
+
 // The most corners a robot's path keeps (its vector is reserved once, so following allocates nothing).
 inline constexpr std::size_t kMaxPathCorners = 256;
 
@@ -87,9 +90,9 @@ struct Robot {
     float health = 100.0f;
     RobotMode mode = RobotMode::Idle;
     float mode_time = 0.0f;
-    float angry = 0.0f;    // seconds of anger left
-    float cooldown = 0.0f; // seconds until the next shot may fire
-    float hit_flash = 0.0f;
+    float angry = 0.0f;     // seconds of anger left
+    float cooldown = 0.0f;  // seconds until the next shot may fire
+    float hit_flash = 0.0f; // seconds left of the hit flash (kRobotHitFlashSeconds at a hit)
     Vec3 knockback{0.0f};
     // Idle wander (reference: turn ±(0.5..1)·π/2 over 1.4 s, then drive at 2.4 decaying over 3.2-4 s).
     bool wander_turning = true;
@@ -232,8 +235,10 @@ class Game {
     // FNV-1a over the whole simulation state (positions, velocities, health, timers, modes, the Rng).
     std::uint64_t state_hash() const;
 
-    // Direct effects, also used by tests to stage scenarios.
+    // Direct effects, also used by tests to stage scenarios. Damage from `source` (a robot's hand tip, a
+    // blast centre) says so in its PlayerDamaged event; without one the event points nowhere.
     void damage_player(float amount);
+    void damage_player(float amount, const Vec3& source);
     void damage_robot(std::size_t index, float amount, bool by_player);
     void explode_cylinder(std::size_t index);
     void teleport_player(const Vec3& feet, float yaw, float pitch = 0.0f);

@@ -182,6 +182,10 @@ void Game::fire_player_shot() {
 }
 
 void Game::damage_player(float amount) {
+    damage_player(amount, player_.eye());
+}
+
+void Game::damage_player(float amount, const Vec3& source) {
     if (phase_ != Phase::Playing || !(amount > 0.0f)) return;
     PlayerState& p = player_;
     const float absorbed = std::min(p.shield, amount);
@@ -191,7 +195,7 @@ void Game::damage_player(float amount) {
     p.health = std::max(0.0f, p.health - rest);
     p.damage_flash = 0.4f;
     if (absorbed > 0.0f) push(EventType::ShieldHit, p.feet, -1, std::min(absorbed, 1e6f));
-    push(EventType::PlayerDamaged, p.feet, -1, std::min(amount, 1e6f));
+    push(EventType::PlayerDamaged, source, -1, std::min(amount, 1e6f), p.eye());
     if (p.health <= 0.0f) set_phase(Phase::Dead);
 }
 

@@ -28,9 +28,10 @@ enum class Phase : std::uint8_t { Playing, Dead, Won };
 enum class EventType : std::uint8_t {
     ShotFired, // player shot: position = rifle tip, end = where the ray stopped
     RobotShot, // robot shot (fired or dry): position = hand tip, end = where the ray stopped
-    Hit,       // a shot hit something: position = point, end = surface normal, entity = what (-1: player or
-               // scenery)
-    RobotHurt, // entity = robot, amount = damage
+    // A shot (the player's or a robot's) hit something: position = point, end = surface normal, entity =
+    // what (-1: player or scenery), amount = damage to the player (> 0 only when it hit the player).
+    Hit,
+    RobotHurt,      // entity = robot, amount = damage
     RobotAlerted,   // entity = robot
     RobotDied,      // entity = robot, after its death clip; the robot is removed
     Explosion,      // position = centre, amount = blast radius (robot deaths: 0, visual only)
@@ -38,7 +39,8 @@ enum class EventType : std::uint8_t {
     DoorToggled,    // entity = door, amount = 1 opening / 0 closing
     LightToggled,   // entity = floor light, amount = 1 on / 0 off
     CaptionChanged, // the caption text or visibility changed
-    PlayerDamaged,  // amount = damage before the shield
+    PlayerDamaged,  // amount = damage before the shield; position = where it came from (the robot's hand
+                    // tip, the blast centre), end = the player's eye then (both the eye: no source, a fall)
     PlayerDied,
     Won,
     Paused,    // amount = 1 paused / 0 resumed

@@ -48,7 +48,7 @@ void Game::damage_robot(std::size_t index, float amount, bool by_player) {
     Robot& r = robots_[index];
     if (!r.alive() || !(amount > 0.0f)) return;
     r.health = std::max(0.0f, r.health - amount);
-    r.hit_flash = 0.4f;
+    r.hit_flash = kRobotHitFlashSeconds;
     if (by_player) r.angry = r.props.angry_duration;
     push(EventType::RobotHurt, r.feet, r.entity_id, amount);
     if (r.health <= 0.0f) {
@@ -260,10 +260,12 @@ void Game::robot_fire(std::size_t index) {
     const std::uint64_t user = world_.user_data(hit.body);
     if (user_kind(user) == BodyKind::Player) {
         push(EventType::Hit, hit.point, -1, r.props.damage, hit.normal);
-        damage_player(r.props.damage);
+        damage_player(r.props.damage, muzzle);
     } else if (user_kind(user) == BodyKind::Cylinder) {
         push(EventType::Hit, hit.point, cylinders_[user_index(user)].entity_id, 0.0f, hit.normal);
         explode_cylinder(user_index(user));
+    } else { // a wall, a door, a prop: sparks where it struck
+        push(EventType::Hit, hit.point, -1, 0.0f, hit.normal);
     }
 }
 

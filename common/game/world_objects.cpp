@@ -64,7 +64,7 @@ void Game::explode_cylinder(std::size_t index) {
             const Vec3 dir = push_dir(centre);
             player_.knockback = dir * c.props.explosion_power * f;
             world_.character(player_.body).movement.velocity.y += 0.4f * c.props.explosion_power * f;
-            damage_player(c.props.damage * f);
+            damage_player(c.props.damage * f, c.centre);
         }
     }
     for (std::size_t i = 0; i < robots_.size(); ++i) {

@@ -27,7 +27,7 @@ class GpuMesh {
 
 struct InstanceData {
     Mat4 model;
-    Vec4 params; // x: emissive scale
+    Vec4 params; // x: emissive scale, yzw: tint (MeshInstance::tint)
 };
 
 } // namespace ks::render

@@ -1,6 +1,7 @@
 #include "render/particles.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace ks::render {
 
@@ -17,6 +18,9 @@ Result<void> validate(const ParticleParams& p) {
     if (!is_finite(p.life) || p.life <= 0.0f || p.life > 600.0f)
         return bad("life", "use a life in (0, 600] seconds");
     if (!is_finite(p.velocity)) return bad("velocity", "use finite speeds");
+    if (!is_finite(p.drift)) return bad("drift", "use finite speeds");
+    if (!is_finite(p.gravity) || std::abs(p.gravity) > 1000.0f)
+        return bad("gravity", "use an acceleration in [-1000, 1000] units/s²");
     if (p.per_frame < 0 || p.per_frame > 10000) return bad("per_frame", "use 0..10000 particles per frame");
     if (!is_finite(p.duration)) return bad("duration", "use seconds, or <= 0 for forever");
     if (p.max_particles < 1 || p.max_particles > 1000000) return bad("max_particles", "use 1..1000000");
@@ -43,7 +47,7 @@ void ParticleEmitter::spawn() {
     Vec3 r(rng_.uniform(-1.0f, 1.0f), rng_.uniform(-1.0f, 1.0f), rng_.uniform(-1.0f, 1.0f));
     p.position = params_.position + r * params_.spawn_radius;
     Vec3 dir(rng_.uniform() < 0.5f ? -1.0f : 1.0f, 1.0f, rng_.uniform() < 0.5f ? -1.0f : 1.0f);
-    p.velocity = params_.velocity * dir * rng_.uniform(0.5f, 1.0f);
+    p.velocity = (params_.velocity * dir + params_.drift) * rng_.uniform(0.5f, 1.0f);
     p.life = params_.life * rng_.uniform(0.25f, 1.0f);
     p.size = params_.size * rng_.uniform(0.5f, 1.0f);
     p.rotation = rng_.uniform(0.0f, 2.0f * kPi);
@@ -62,6 +66,7 @@ void ParticleEmitter::update(float dt) {
         p.age += dt;
         p.position += p.velocity * dt;
         p.velocity *= keep;
+        p.velocity.y -= params_.gravity * dt;
         p.rotation += p.spin * dt;
         float t = std::clamp(p.age / p.life, 0.0f, 1.0f);
         // Alpha 0 -> 1 (t 0.1) -> 1 (t 0.6) -> 0; size x1 -> x grow (t 0.5) -> x1 (the reference's splines).

@@ -1,9 +1,9 @@
 #pragma once
 // A particle system like the reference's: an emitter spawns `per_frame` particles each update inside a
 // box of `spawn_radius` around `position`, each living `life` seconds with `velocity` (randomised by
-// direction), fading and growing along fixed curves, until `duration` ends (or forever); then `on_finish`
-// is called once. Simulation is plain C++ (tested without GL); the renderer draws the particles as
-// camera-facing billboards, additive or alpha blended (sorted back to front).
+// direction) plus `drift`, pulled down by `gravity`, fading and growing along fixed curves, until `duration`
+// ends (or forever); then `on_finish` is called once. Simulation is plain C++ (tested without GL); the
+// renderer draws the particles as camera-facing billboards, additive or alpha blended (sorted back to front).
 #include "core/math.h"
 #include "core/random.h"
 #include "core/result.h"
@@ -22,6 +22,8 @@ struct ParticleParams {
     float size = 1.0f;               // world units at the start of life
     float life = 0.6f;               // seconds, each particle lives 0.25..1 of this
     Vec3 velocity{0.0f, 2.0f, 0.0f}; // per-axis speed; the sign of each axis is random for x and z
+    Vec3 drift{0.0f};                // added to every particle's velocity (a spray along a surface normal)
+    float gravity = 0.0f;            // downward acceleration, units/s² (sparks fall)
     int per_frame = 4;               // particles spawned each update while active
     float duration = 0.6f;           // seconds of spawning; <= 0 means forever
     std::string texture = "fire";    // assets/textures/particles/<texture>.png

@@ -23,6 +23,10 @@ struct MeshInstance {
     // culling). Only for a `world` that keeps axes axis-aligned (rotations by multiples of 90 degrees).
     bool occluder = false;
     Vec3 occluder_inset{0.0f};
+    // A colour washed over every surface of this instance (a robot just hit flashes red), linear rgb: it
+    // is added to the shading, which dims by 0.6 x its largest channel; 0: none. Per instance, so tinted
+    // and untinted copies still share one draw.
+    Vec3 tint{0.0f};
 };
 
 struct Light {
@@ -34,6 +38,9 @@ struct Light {
     float range = 24.0f;
     float cos_outer = 0.8f; // spot cone (cosines of half-angles)
     float cos_inner = 0.9f;
+    // Not in any light map (a muzzle flash; level lights are baked): the fast path also lights the baked
+    // level surfaces it reaches with it, per pixel, with fast_level_lit. Level lights leave it false.
+    bool dynamic = false;
 };
 
 struct Environment {

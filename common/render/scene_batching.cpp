@@ -34,6 +34,35 @@ float distance_to_box(const Vec3& p, const geometry::Aabb& b) {
 }
 } // namespace
 
+std::uint32_t SceneRenderer::light_mask(const SceneFrame& frame, const geometry::Aabb& box, int cap,
+                                        bool dynamic_only) const {
+    // The lights whose range reaches this box; keep the nearest `cap`.
+    std::uint32_t mask = 0;
+    float nearest[kMaxLightsPerDraw];
+    int count = 0;
+    int slot_of[kMaxLightsPerDraw];
+    for (size_t k = 0; k < lights_in_view_.size(); ++k) {
+        const Light& l = (*frame.lights)[static_cast<size_t>(lights_in_view_[k])];
+        if (dynamic_only && !l.dynamic) continue;
+        float d = distance_to_box(l.position, box);
+        if (d >= l.range) continue;
+        if (count < cap) {
+            nearest[count] = d;
+            slot_of[count++] = static_cast<int>(k);
+            mask |= 1u << k;
+        } else if (count > 0) {
+            int worst = static_cast<int>(std::max_element(nearest, nearest + count) - nearest);
+            if (d < nearest[worst]) {
+                mask &= ~(1u << slot_of[worst]);
+                nearest[worst] = d;
+                slot_of[worst] = static_cast<int>(k);
+                mask |= 1u << k;
+            }
+        }
+    }
+    return mask;
+}
+
 void SceneRenderer::cull_and_batch(const SceneFrame& frame, FrameStats& stats) {
     visible_.clear();
     batches_.clear();
@@ -71,34 +100,11 @@ void SceneRenderer::cull_and_batch(const SceneFrame& frame, FrameStats& stats) {
             ++stats.instances_occluded;
             continue;
         }
-        if (fast_ && inst.lightmap != 0) { // its light is baked: no light list
-            visible_.push_back({&inst, distance_to_box(eye, box), 0u, box, inst.lightmap});
-            continue;
-        }
-        // The lights whose range reaches this box; keep the nearest light_cap.
-        std::uint32_t mask = 0;
-        float nearest[kMaxLightsPerDraw];
-        int count = 0;
-        int slot_of[kMaxLightsPerDraw];
-        for (size_t k = 0; k < lights_in_view_.size(); ++k) {
-            const Light& l = (*frame.lights)[static_cast<size_t>(lights_in_view_[k])];
-            float d = distance_to_box(l.position, box);
-            if (d >= l.range) continue;
-            if (count < light_cap) {
-                nearest[count] = d;
-                slot_of[count++] = static_cast<int>(k);
-                mask |= 1u << k;
-            } else if (count > 0) {
-                int worst = static_cast<int>(std::max_element(nearest, nearest + count) - nearest);
-                if (d < nearest[worst]) {
-                    mask &= ~(1u << slot_of[worst]);
-                    nearest[worst] = d;
-                    slot_of[worst] = static_cast<int>(k);
-                    mask |= 1u << k;
-                }
-            }
-        }
-        visible_.push_back({&inst, distance_to_box(eye, box), mask, box, 0u});
+        // A baked surface's level lights are in its light map: only dynamic lights (muzzle flashes) are
+        // added to it.
+        const bool baked = fast_ && inst.lightmap != 0;
+        const std::uint32_t mask = light_mask(frame, box, light_cap, baked);
+        visible_.push_back({&inst, distance_to_box(eye, box), mask, box, baked ? inst.lightmap : 0u});
     }
     // Group identical (material, mesh, lights) together; each group is drawn at its nearest member's
     // distance.
@@ -135,7 +141,7 @@ void SceneRenderer::cull_and_batch(const SceneFrame& frame, FrameStats& stats) {
         int first = static_cast<int>(instance_data_.size());
         for (int k = 0; k < batch.count; ++k) {
             const MeshInstance& inst = *visible_[static_cast<size_t>(batch.first + k)].instance;
-            instance_data_.push_back({inst.world, Vec4(inst.emissive_scale, 0, 0, 0)});
+            instance_data_.push_back({inst.world, Vec4(inst.emissive_scale, inst.tint)});
         }
         batch.first = first;
         sorted_batches_.push_back(batch);

@@ -24,13 +24,15 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(TextureCache& textu
 
 void SceneRenderer::resolve_settings() {
     if (settings_.quality == RenderQuality::Auto)
-        settings_.quality = settings_.automatic_quality != RenderQuality::Auto ? settings_.automatic_quality
-                                                                               : default_quality_for(gl_renderer_);
+        settings_.quality = settings_.automatic_quality != RenderQuality::Auto
+                                ? settings_.automatic_quality
+                                : default_quality_for(gl_renderer_);
     fast_ = settings_.quality == RenderQuality::Fast;
     if (!(settings_.render_scale > 0.0f) || !is_finite(settings_.render_scale))
-        settings_.render_scale = settings_.automatic_render_scale > 0.0f
-                                     ? settings_.automatic_render_scale
-                                     : default_render_scale_for(gl_renderer_, settings_.software_render_scale);
+        settings_.render_scale =
+            settings_.automatic_render_scale > 0.0f
+                ? settings_.automatic_render_scale
+                : default_render_scale_for(gl_renderer_, settings_.software_render_scale);
     settings_.render_scale = std::clamp(settings_.render_scale, 0.25f, 1.0f);
 }
 
@@ -53,6 +55,7 @@ unsigned SceneRenderer::program_id(const std::string& name) const {
     if (name == "pbr") return pbr_.id();
     if (name == "fast") return fast_program_.id();
     if (name == "fast_level") return fast_level_.id();
+    if (name == "fast_level_lit") return fast_level_lit_.id();
     if (name == "shadow") return shadow_.id();
     if (name == "particle") return particle_.id();
     if (name == "line") return line_.id();
@@ -80,6 +83,8 @@ Result<void> SceneRenderer::init() {
          {std::tuple{&pbr_program(), &pbr_, std::function<void(ShaderProgram&)>(pbr_units)},
           std::tuple{&fast_program(), &fast_program_, std::function<void(ShaderProgram&)>(pbr_units)},
           std::tuple{&fast_level_program(), &fast_level_, std::function<void(ShaderProgram&)>(pbr_units)},
+          std::tuple{&fast_level_lit_program(), &fast_level_lit_,
+                     std::function<void(ShaderProgram&)>(pbr_units)},
           std::tuple{&shadow_program(), &shadow_, std::function<void(ShaderProgram&)>()},
           std::tuple{&particle_program(), &particle_, std::function<void(ShaderProgram&)>(particle_units)},
           std::tuple{&line_program(), &line_, std::function<void(ShaderProgram&)>()}})

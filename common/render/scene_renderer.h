@@ -77,6 +77,10 @@ class SceneRenderer {
     void draw_batches_fast(const geometry::Camera& camera, const SceneFrame& frame, FrameStats& stats,
                            bool view_model);
     void upload_lights(const ShaderProgram& program, std::uint32_t light_mask, const SceneFrame& frame);
+    // Bits of lights_in_view_ whose range reaches `box`, the nearest `cap`; only Light::dynamic ones when
+    // `dynamic_only` (a baked surface's other lights are in its light map).
+    std::uint32_t light_mask(const SceneFrame& frame, const geometry::Aabb& box, int cap,
+                             bool dynamic_only) const;
     struct Batch;
     void draw_instanced(const Batch& b, FrameStats& stats); // one batch: a draw call and its triangles
     bool casts_shadow(const MeshInstance& inst) const {
@@ -94,7 +98,7 @@ class SceneRenderer {
 
     TextureCache& textures_;
     RendererSettings settings_;
-    ShaderProgram pbr_, fast_program_, fast_level_, shadow_, particle_, line_;
+    ShaderProgram pbr_, fast_program_, fast_level_, fast_level_lit_, shadow_, particle_, line_;
     std::unique_ptr<ShaderLibrary> shaders_;
     std::string gl_renderer_;
     bool fast_ = false;

@@ -106,8 +106,8 @@ void SceneRenderer::upload_lights(const ShaderProgram& program, std::uint32_t li
     }
 }
 
-void SceneRenderer::draw_batches_fast(const geometry::Camera& camera, const SceneFrame& frame, FrameStats& stats,
-                                      bool view_model) {
+void SceneRenderer::draw_batches_fast(const geometry::Camera& camera, const SceneFrame& frame,
+                                      FrameStats& stats, bool view_model) {
     upload_instances();
     const Environment& env = frame.environment;
     const Mat4 view_projection = camera.projection() * camera.view();
@@ -116,14 +116,14 @@ void SceneRenderer::draw_batches_fast(const geometry::Camera& camera, const Scen
     // Fog from the depth buffer's value (perspective only; orthographic views have no fog here).
     const bool fog = !view_model && !camera.orthographic();
     const float n = camera.near_plane, f = camera.far_plane;
-    // The frame's uniforms, in both fast programs (a uniform a program does not have is location -1, which
-    // GL ignores): fast (models, and any surface fast_level cannot draw) and fast_level (baked level
-    // surfaces, no branches).
+    // The frame's uniforms, in every fast program (a uniform a program does not have is location -1, which
+    // GL ignores): fast (models, and any surface fast_level cannot draw), fast_level (baked level surfaces,
+    // no branches) and fast_level_lit (those a dynamic light reaches).
     struct Locations {
         GLint flags, baked, receive, base, emissive, metal_rough;
-    } loc[2];
-    const ShaderProgram* programs[2] = {&fast_program_, &fast_level_};
-    for (int i = 0; i < 2; ++i) {
+    } loc[3];
+    const ShaderProgram* programs[3] = {&fast_program_, &fast_level_, &fast_level_lit_};
+    for (int i = 0; i < 3; ++i) {
         const ShaderProgram& p = *programs[i];
         p.use();
         glUniformMatrix4fv(p.location("u_view_projection"), 1, GL_FALSE, glm::value_ptr(view_projection));
@@ -178,11 +178,12 @@ void SceneRenderer::draw_batches_fast(const geometry::Camera& camera, const Scen
             const bool baked = b.lightmap != 0;
             // Baked level surfaces read base colour x occlusion from one map (no ORM lookup per pixel).
             const bool occluded_base = baked && m.fast_base_map != 0 && settings_.fast_occluded_base;
-            // fast_level draws a baked surface whose maps are base x occlusion (read raw) and the light map.
-            const int program = baked && occluded_base && !m.emissive_map && raw_srgb_ && !m.placeholder &&
-                                        settings_.fast_level_shader
-                                    ? 1
-                                    : 0;
+            // fast_level draws a baked surface whose maps are base x occlusion (read raw) and the light map;
+            // fast_level_lit the same when a dynamic light reaches it (the general fast program's baked
+            // surfaces, rare, leave dynamic lights out).
+            const bool level_program = baked && occluded_base && !m.emissive_map && raw_srgb_ &&
+                                       !m.placeholder && settings_.fast_level_shader;
+            const int program = level_program ? (b.light_mask != 0 ? 2 : 1) : 0;
             if (program != current) {
                 programs[program]->use();
                 current = program;
@@ -220,7 +221,7 @@ void SceneRenderer::draw_batches_fast(const geometry::Camera& camera, const Scen
                 bound_material = b.material;
                 bound_lightmap = b.lightmap;
             }
-            if (b.lightmap == 0 && b.light_mask != bound_mask) {
+            if ((b.lightmap == 0 || program == 2) && b.light_mask != bound_mask) {
                 upload_lights(*programs[program], b.light_mask, frame);
                 bound_mask = b.light_mask;
             }

@@ -3,7 +3,6 @@
 #include "core/files.h"
 #include "core/paths.h"
 
-
 namespace ks::render {
 
 const ProgramFiles& pbr_program() {
@@ -16,6 +15,11 @@ const ProgramFiles& fast_program() {
 }
 const ProgramFiles& fast_level_program() {
     static const ProgramFiles p{"fast_level", "fast_level.vert", "fast_level.frag"};
+    return p;
+}
+const ProgramFiles& fast_level_lit_program() {
+    static const ProgramFiles p{"fast_level_lit", "fast_level.vert", "fast_level.frag",
+                                "#define DYNAMIC_LIGHTS\n"};
     return p;
 }
 const ProgramFiles& shadow_program() {
@@ -31,12 +35,20 @@ const ProgramFiles& line_program() {
     return p;
 }
 std::vector<const ProgramFiles*> all_programs() {
-    return {&pbr_program(),    &fast_program(),     &fast_level_program(),
+    return {&pbr_program(),    &fast_program(),     &fast_level_program(), &fast_level_lit_program(),
             &shadow_program(), &particle_program(), &line_program()};
 }
 
 std::filesystem::path default_shader_dir() {
     return paths::asset("shaders");
+}
+
+std::string with_defines(const std::string& text, const char* defines) {
+    if (!defines || !*defines || text.rfind("#version", 0) != 0) return text;
+    const std::size_t eol = text.find('\n');
+    if (eol == std::string::npos) return text;
+    // GLSL's "#line N": the line after the directive is line N (version line is line 1).
+    return text.substr(0, eol + 1) + defines + "#line 2\n" + text.substr(eol + 1);
 }
 
 Result<ProgramSources> load_program(const ProgramFiles& files, const std::filesystem::path& dir) {
@@ -51,7 +63,7 @@ Result<ProgramSources> load_program(const ProgramFiles& files, const std::filesy
                          "the renderer loads its GLSL from assets/shaders/ (KS_SHADER_DIR overrides it); "
                          "check the file exists and is readable");
         source->name = path.string();
-        source->text = std::move(*text);
+        source->text = with_defines(*text, files.defines);
     }
     return out;
 }

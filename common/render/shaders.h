@@ -11,11 +11,13 @@ namespace ks::render {
 
 inline constexpr int kMaxLightsPerDraw = 8; // lights each object is shaded by (culled per object on the CPU)
 
-// One program: its name and the vertex/fragment file names inside the shader folder.
+// One program: its name, the vertex/fragment file names inside the shader folder, and preprocessor lines
+// put after both files' #version line (a variant of a program built from the same files).
 struct ProgramFiles {
     const char* name;
     const char* vertex;
     const char* fragment;
+    const char* defines = ""; // e.g. "#define DYNAMIC_LIGHTS\n"
 };
 
 struct ProgramSources {
@@ -25,11 +27,12 @@ struct ProgramSources {
 };
 
 // The programs: pbr (full quality), fast (software rasterisers: baked light + per-vertex light), fast_level
-// (fast, specialised for baked level surfaces), shadow,
-// particle, line.
+// (fast, specialised for baked level surfaces), fast_level_lit (fast_level plus per-pixel dynamic lights, for
+// the baked surfaces a muzzle flash reaches), shadow, particle, line.
 const ProgramFiles& pbr_program();
 const ProgramFiles& fast_program();
-const ProgramFiles& fast_level_program(); // the fast path's baked level surfaces (no branches)
+const ProgramFiles& fast_level_program();     // the fast path's baked level surfaces (no branches)
+const ProgramFiles& fast_level_lit_program(); // ... with Light::dynamic lights added per pixel
 const ProgramFiles& shadow_program();
 const ProgramFiles& particle_program();
 const ProgramFiles& line_program();
@@ -38,6 +41,9 @@ std::vector<const ProgramFiles*> all_programs();
 
 // assets/shaders/, or $KS_SHADER_DIR when set (a scratch copy for experiments).
 std::filesystem::path default_shader_dir();
+// `text` with `defines` after its #version line, then a #line directive so that the driver's line numbers
+// stay the file's.
+std::string with_defines(const std::string& text, const char* defines);
 // Reads both files; a missing or unreadable file is an error naming it.
 Result<ProgramSources> load_program(const ProgramFiles& files, const std::filesystem::path& dir);
 // Reads and builds (compile errors as "path:line: message").

@@ -101,20 +101,20 @@ void GameApp::load(const std::filesystem::path& path, bool dojo, Screen then) {
                                  return {};
                              }});
     if (dojo) {
-        loader_.steps.push_back(
-            {"Waking the test robot", [s]() -> Result<void> {
-                 const auto& lib = s->game->animations();
-                 auto c = anim::DojoController::create(lib.clips, lib.rig, anim::reference_dojo_clips());
-                 if (!c) return c.error();
-                 s->dojo_controller.emplace(std::move(*c));
-                 for (const auto& e : s->level.entities)
-                     if (const auto* r = e.try_as<level::RobotProps>(); r && r->dummy) {
-                         s->dummy.feet = e.position;
-                         s->dummy.yaw = radians(e.rotation.x);
-                     }
-                 s->dummy.pose = &s->dojo_controller->pose();
-                 return {};
-             }});
+        loader_.steps.push_back({"Waking the test robot", [s]() -> Result<void> {
+                                     const auto& lib = s->game->animations();
+                                     auto c = anim::DojoController::create(lib.clips, lib.rig,
+                                                                           anim::reference_dojo_clips());
+                                     if (!c) return c.error();
+                                     s->dojo_controller.emplace(std::move(*c));
+                                     for (const auto& e : s->level.entities)
+                                         if (const auto* r = e.try_as<level::RobotProps>(); r && r->dummy) {
+                                             s->dummy.feet = e.position;
+                                             s->dummy.yaw = radians(e.rotation.x);
+                                         }
+                                     s->dummy.pose = &s->dojo_controller->pose();
+                                     return {};
+                                 }});
     }
     screen_ = Screen::Loading;
 }
@@ -340,6 +340,9 @@ void GameApp::draw_world_overlay(float w, float h) {
         if (screen_ == Screen::Playing) {
             shell::draw_hud(fg, hud, shell::HudFonts{fonts.hud}, w, h);
             draw_hit_marker(fg, std::clamp(p.hit_marker / 0.3f, 0.0f, 1.0f), w, h);
+            std::array<feedback::DamageArc, feedback::Feedback::kMaxArcs> arcs;
+            const std::size_t n = session_->view->feedback().damage_arcs(p.yaw, p.eye(), arcs);
+            draw_damage_arcs(fg, std::span(arcs.data(), n), w, h);
         }
         if (session_->dojo_controller && screen_ == Screen::Playing)
             dojo_legend(session_->dojo_controller->legend(), fonts, w, h);

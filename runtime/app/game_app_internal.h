@@ -9,6 +9,7 @@
 #include "core/log.h"
 #include "core/paths.h"
 #include "game/game.h"
+#include "hud_feedback.h"
 #include "input_events.h"
 #include "input_script.h"
 #include "level/level_io.h"

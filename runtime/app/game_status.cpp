@@ -52,7 +52,12 @@ void GameApp::write_status(const shell::FrameInfo& info) {
         for (const auto& c : g.cylinders())
             add("cylinder %d %s", c.entity_id, c.exploded ? "exploded" : "standing");
         add("caption %s", g.caption().visible() ? g.caption().text().c_str() : "-");
-        if (session_->view) add("camera_roll %.2f", degrees(session_->view->camera().roll));
+        if (session_->view) {
+            add("camera_roll %.2f", degrees(session_->view->camera().roll));
+            const auto& fb = session_->view->feedback();
+            add("feedback arcs %d shakes %d lights %d", static_cast<int>(fb.live_arcs()),
+                static_cast<int>(fb.live_shakes()), static_cast<int>(fb.live_lights()));
+        }
         add("game_steps %lld", static_cast<long long>(g.steps()));
     }
     add("dropped_steps %lld", budget_.dropped());

@@ -267,17 +267,4 @@ void dojo_legend(const std::vector<std::string>& lines, const shell::Fonts& font
     d->AddText(font, px, ImVec2((w - hs.x) * 0.5f, h - hs.y - 60 * s), IM_COL32(235, 240, 245, 220), hint);
 }
 
-void draw_hit_marker(ImDrawList* d, float strength, float w, float h) {
-    if (!(strength > 0.0f)) return;
-    const float s = ui::ui_scale(h);
-    const auto a = static_cast<int>(std::clamp(strength, 0.0f, 1.0f) * 255.0f);
-    const ImVec2 c(w * 0.5f, h * 0.5f);
-    const float r0 = 7 * s, r1 = 15 * s;
-    for (int i = 0; i < 4; ++i) {
-        const float sx = (i & 1) ? 1.0f : -1.0f, sy = (i & 2) ? 1.0f : -1.0f;
-        d->AddLine(ImVec2(c.x + sx * r0, c.y + sy * r0), ImVec2(c.x + sx * r1, c.y + sy * r1),
-                   IM_COL32(255, 255, 255, a), 2.5f * s);
-    }
-}
-
 } // namespace ks::runtime

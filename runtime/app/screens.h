@@ -7,8 +7,6 @@
 #include <string>
 #include <vector>
 
-struct ImDrawList;
-
 namespace ks::runtime {
 
 enum class MenuAction { None, Play, Dojo, HowTo, Credits, Options, Quit, Resume, MainMenu, Retry, Back };
@@ -31,8 +29,6 @@ MenuAction options_panel(Options& options, bool& changed, const shell::Fonts& fo
 
 // The Dojo's key legend (top right) and a hint line at the bottom.
 void dojo_legend(const std::vector<std::string>& lines, const shell::Fonts& fonts, float w, float h);
-// The hit marker: four short diagonal strokes around the crosshair, fading with `strength` (0..1).
-void draw_hit_marker(ImDrawList* draw, float strength, float w, float h);
 // "m:ss.s" for the win screen.
 std::string format_time(double seconds);
 

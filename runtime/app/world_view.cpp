@@ -1,8 +1,8 @@
 #include "world_view.h"
 
+#include "app/event_particles.h"
 #include "level/entity_shapes.h"
 #include "render/view_model.h"
-
 
 #include <algorithm>
 #include <cmath>
@@ -33,6 +33,7 @@ std::unique_ptr<WorldView> WorldView::build(const level::Level& level, const gam
     view->robot_binding_ = anim::RigBinding(game.animations().rig, view->robot_model_->node_names());
     view->robot_pose_ = view->robot_model_->rest_pose();
     view->emitters_.reserve(64);
+    view->lights_.reserve(64 + feedback::Feedback::kMaxLights);
     view->emitter_list_.reserve(64);
     view->capture(game, view->current_);
     view->previous_ = view->current_;
@@ -63,7 +64,9 @@ void WorldView::before_step(const game::Game& game) {
 void WorldView::after_step(const game::Game& game, float dt) {
     capture(game, current_);
     time_ += dt;
-    for (const auto& e : game.events()) on_event(e);
+    if (dt > 0.0f) step_dt_ = dt;
+    feedback_.update(dt); // this step's effects start at age 0
+    for (const auto& e : game.events()) on_event(game, e);
     for (auto& e : emitters_) e->update(dt);
     std::erase_if(emitters_, [](const auto& e) { return e->finished(); });
 }
@@ -73,73 +76,12 @@ void WorldView::spawn(const render::ParticleParams& params) {
     emitters_.push_back(std::make_unique<render::ParticleEmitter>(params, next_seed_++));
 }
 
-void WorldView::on_event(const game::Event& e) {
-    using game::EventType;
-    render::ParticleParams p;
-    p.max_particles = 96;
-    switch (e.type) {
-    case EventType::ShotFired:
-    case EventType::RobotShot: {
-        // Muzzle flash: a short burst of small bright sparks at the tip.
-        p.position = e.position;
-        p.spawn_radius = Vec3(0.05f);
-        p.size = e.type == EventType::ShotFired ? 0.18f : 0.3f;
-        p.life = 0.08f;
-        p.velocity = Vec3(0.6f);
-        p.per_frame = 3;
-        p.duration = 0.05f;
-        p.grow = 2.5f;
-        p.max_particles = 24;
-        if (e.type == EventType::RobotShot) {
-            p.color_start = Vec3(1.0f, 0.3f, 0.2f);
-            p.color_end = Vec3(1.0f, 0.1f, 0.05f);
-        }
-        spawn(p);
-        break;
-    }
-    case EventType::Hit: {
-        p.position = e.position;
-        p.spawn_radius = Vec3(0.08f);
-        p.size = 0.25f;
-        p.life = 0.25f;
-        p.velocity = Vec3(2.0f, 2.5f, 2.0f);
-        p.per_frame = 4;
-        p.duration = 0.06f;
-        p.grow = 1.5f;
-        p.max_particles = 32;
-        spawn(p);
-        break;
-    }
-    case EventType::Explosion: {
-        // Robot deaths carry radius 0 (visual only); cylinders their blast radius.
-        const float r = e.amount > 0.0f ? std::min(e.amount, 20.0f) : 2.5f;
-        p.position = e.position;
-        p.spawn_radius = Vec3(r * 0.25f);
-        p.size = r * 0.2f;
-        p.life = 0.7f;
-        p.velocity = Vec3(r * 0.6f, r * 0.9f, r * 0.6f);
-        p.per_frame = 6;
-        p.duration = 0.35f;
-        p.max_particles = 256;
-        spawn(p);
-        render::ParticleParams smoke = p;
-        smoke.texture = "smoke";
-        smoke.blend = render::ParticleBlend::Alpha;
-        smoke.life = 1.6f;
-        smoke.size = r * 0.3f;
-        smoke.velocity = Vec3(r * 0.2f, r * 0.5f, r * 0.2f);
-        smoke.per_frame = 2;
-        smoke.duration = 0.6f;
-        smoke.grow = 2.0f;
-        smoke.color_start = Vec3(0.3f);
-        smoke.color_end = Vec3(0.15f);
-        smoke.max_particles = 160;
-        spawn(smoke);
-        break;
-    }
-    default:
-        break;
-    }
+void WorldView::on_event(const game::Game& game, const game::Event& e) {
+    EventEmitters emitters;
+    const HitTarget target = e.type == game::EventType::Hit ? hit_target(game, e) : HitTarget::Scenery;
+    const int n = event_particles(e, target, emitters);
+    for (int i = 0; i < n; ++i) spawn(emitters[static_cast<std::size_t>(i)]);
+    feedback_.on_event(e, game.player().eye());
 }
 
 void WorldView::fill(const game::Game& game, float alpha, float fov_degrees, const DojoDummy* dummy,
@@ -149,6 +91,7 @@ void WorldView::fill(const game::Game& game, float alpha, float fov_degrees, con
     for (const auto& d : game.doors()) scene_->set_door_open(d.entity_id, d.progress);
     for (const auto& l : game.lights()) scene_->set_light_on(l.entity_id, l.on);
     scene_->emit(instances_, lights_);
+    feedback_.add_lights(lights_, a * step_dt_); // muzzle flashes light their surroundings
 
     // Robots: interpolated placement, posed from their animation player.
     const auto robots = game.robots();
@@ -160,9 +103,11 @@ void WorldView::fill(const game::Game& game, float alpha, float fov_degrees, con
         const float yaw = have ? current_.robot_yaw[i] : robots[i].yaw;
         const Mat4 root = level::robot_model_matrix(feet, yaw);
         robot_binding_.write_locals(game.robot_pose(i), robot_pose_.local);
-        // A robot just hit glows (its emissive parts flare) for the hit flash.
-        const float glow = 1.0f + 4.0f * std::clamp(robots[i].hit_flash / 0.2f, 0.0f, 1.0f);
-        robot_model_->emit(root, robot_pose_, scratch_, instances_, glow);
+        // A robot just hit flashes red all over, fading over its hit flash.
+        const std::size_t first = instances_.size();
+        robot_model_->emit(root, robot_pose_, scratch_, instances_);
+        const Vec3 tint = feedback::hit_tint(robots[i].hit_flash);
+        for (std::size_t k = first; k < instances_.size(); ++k) instances_[k].tint = tint;
     }
     if (dummy && dummy->pose) {
         const Mat4 root = level::robot_model_matrix(dummy->feet, dummy->yaw);
@@ -184,11 +129,13 @@ void WorldView::fill(const game::Game& game, float alpha, float fov_degrees, con
         cylinder_model_->emit(root, scratch_, instances_, c.fuse >= 0.0f ? 3.0f : 1.0f);
     }
 
-    // Camera from the interpolated eye; the death camera's drop and tilt are in the snapshot.
+    // Camera from the interpolated eye; the death camera's drop and tilt are in the snapshot. Explosions
+    // shake the view only: the game's aim is the player's yaw and pitch.
+    const feedback::ShakeAngles shake = feedback_.shake(a * step_dt_);
     camera_.position = glm::mix(previous_.eye, current_.eye, a);
-    camera_.yaw = current_.yaw;
-    camera_.pitch = current_.pitch;
-    camera_.roll = glm::mix(previous_.roll, current_.roll, a);
+    camera_.yaw = current_.yaw + shake.yaw;
+    camera_.pitch = std::clamp(current_.pitch + shake.pitch, -kPi * 0.5f, kPi * 0.5f);
+    camera_.roll = glm::mix(previous_.roll, current_.roll, a) + shake.roll;
     camera_.fov_y = radians(std::clamp(fov_degrees, 30.0f, 120.0f));
     camera_.aspect = static_cast<float>(frame.width) / static_cast<float>(std::max(1, frame.height));
 

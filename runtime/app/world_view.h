@@ -1,11 +1,14 @@
 #pragma once
 // What the player sees of a running game: the level scene with the game's door openings and light states,
 // the robots posed from their animation poses, pickups floating and spinning, the gas cylinders, the
-// first-person rifle with recoil, and particles spawned from the game's events (muzzle flashes, robot shots,
-// impacts, explosions). Positions are interpolated between the last two fixed steps.
+// first-person rifle with recoil, and the feedback spawned from the game's events: particles (muzzle
+// flashes, impact sparks, explosions), muzzle-flash lights, camera shake, damage-direction arcs for the HUD
+// and the red flash of a hit robot (event_particles.h, feedback.h). Positions are interpolated between the
+// last two fixed steps.
 // Robots, pickups and cylinders are taken out of the level before the LevelScene is built: they move or
 // disappear, so this view draws them from the game's state instead.
 #include "anim/rig_binding.h"
+#include "app/feedback.h"
 #include "game/game.h"
 #include "level/level.h"
 #include "render/asset_library.h"
@@ -44,11 +47,13 @@ class WorldView {
               render::SceneFrame& frame);
     const geometry::Camera& camera() const { return camera_; }
     int live_emitters() const { return static_cast<int>(emitters_.size()); }
+    // Damage arcs, camera shake and muzzle lights running now (the HUD draws the arcs).
+    const feedback::Feedback& feedback() const { return feedback_; }
 
   private:
     WorldView() = default;
     void spawn(const render::ParticleParams& params);
-    void on_event(const game::Event& e);
+    void on_event(const game::Game& game, const game::Event& e);
 
     std::unique_ptr<render::LevelScene> scene_;
     const render::Model* robot_model_ = nullptr;
@@ -75,6 +80,8 @@ class WorldView {
     std::vector<std::unique_ptr<render::ParticleEmitter>> emitters_;
     std::vector<const render::ParticleEmitter*> emitter_list_;
     std::uint64_t next_seed_ = 1;
+    feedback::Feedback feedback_;
+    float step_dt_ = 1.0f / 120.0f; // the last step's length: how far `alpha` reaches past it
     geometry::Camera camera_;
     double time_ = 0.0;
 };

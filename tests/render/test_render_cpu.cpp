@@ -261,6 +261,32 @@ TEST_CASE("infinite emitters keep spawning up to capacity; stop() lets them fini
     CHECK(e.finished());
 }
 
+TEST_CASE("drift sprays every particle one way (a surface normal); gravity pulls them down") {
+    ParticleParams p;
+    p.spawn_radius = Vec3(0.0f);
+    p.velocity = Vec3(1.0f, 0.0f, 1.0f); // random sign on x and z
+    p.drift = Vec3(4.0f, 0.0f, 0.0f);    // out of a wall facing +x
+    p.gravity = 20.0f;
+    p.drag = 0.0f;
+    p.life = 1.0f;
+    p.per_frame = 20;
+    p.duration = 0.01f;
+    ParticleEmitter e(p, 5);
+    e.update(0.01f);
+    REQUIRE(e.particles().size() == 20);
+    for (int i = 0; i < 10; ++i) e.update(0.01f);
+    for (const auto& q : e.particles()) {
+        CHECK(q.position.x > 0.05f); // 0.5..1 x (4 ± 1) for 0.1 s: always away from the wall
+        CHECK(q.velocity.y < -1.5f); // 20 units/s² for 0.1 s
+        CHECK(q.position.y < 0.0f);
+    }
+    p.gravity = std::numeric_limits<float>::quiet_NaN();
+    CHECK_FALSE(validate(p));
+    p.gravity = 0.0f;
+    p.drift.z = std::numeric_limits<float>::infinity();
+    CHECK_FALSE(validate(p));
+}
+
 TEST_CASE("particle parameters that are NaN or absurd are refused, and such an emitter spawns nothing") {
     ParticleParams p;
     p.life = std::numeric_limits<float>::quiet_NaN();

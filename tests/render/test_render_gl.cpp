@@ -70,7 +70,7 @@ TEST_CASE("every shader program compiles and links on this driver") {
         CHECK_MESSAGE(program.ok(), (program.ok() ? "" : program.error().str()));
         ++count;
     }
-    CHECK(count == 6); // pbr, fast, fast_level, shadow, particle, line
+    CHECK(count == 7); // pbr, fast, fast_level, fast_level_lit, shadow, particle, line
 }
 
 TEST_CASE("a broken shader reports file:line: message") {
@@ -81,6 +81,13 @@ TEST_CASE("a broken shader reports file:line: message") {
     auto program = ShaderProgram::build(vs, fs);
     REQUIRE_FALSE(program.ok());
     CHECK(program.error().str().find("broken.frag:4:") != std::string::npos);
+    // A variant with defines (fast_level_lit) reports the file's own line numbers too.
+    const std::string broken_text = with_defines(fs.text, "#define VARIANT 1\n#define OTHER\n");
+    REQUIRE(broken_text != fs.text);
+    auto variant = ShaderProgram::build(vs, {"broken.frag", broken_text});
+    REQUIRE_FALSE(variant.ok());
+    CAPTURE(variant.error().str());
+    CHECK(variant.error().str().find("broken.frag:4:") != std::string::npos);
 }
 
 TEST_CASE("every generated model loads with its textures and named nodes, no placeholder") {

@@ -1,0 +1,144 @@
+// The renderer's share of the game's hit feedback, on both quality paths: a per-instance tint (a robot just
+// hit flashes red) and dynamic lights (muzzle flashes) that also light the fast path's baked level surfaces.
+#include "gl_test_support.h"
+#include "test_support.h"
+
+#include "level/level_io.h"
+#include "render/asset_library.h"
+#include "render/level_scene.h"
+#include "render/scene_renderer.h"
+
+#include <doctest/doctest.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+using namespace ks;
+using namespace ks::render;
+
+namespace {
+
+RendererSettings quality(RenderQuality q) {
+    RendererSettings s;
+    s.quality = q;
+    s.render_scale = 1.0f;
+    return s;
+}
+
+std::vector<unsigned char> draw(SceneRenderer& renderer, const geometry::Camera& camera,
+                                const Environment& env, const std::vector<MeshInstance>& instances,
+                                const std::vector<Light>& lights) {
+    auto* ctx = test::gl_context();
+    ctx->bind();
+    SceneFrame frame;
+    frame.camera = camera;
+    frame.camera.aspect = static_cast<float>(ctx->width()) / static_cast<float>(ctx->height());
+    frame.environment = env;
+    frame.instances = &instances;
+    frame.lights = &lights;
+    frame.width = ctx->width();
+    frame.height = ctx->height();
+    renderer.render(frame);
+    return ctx->read_rgb();
+}
+
+// Mean of each channel over a rectangle given in fractions of the image (default: the centre third).
+Vec3 mean_rgb(const std::vector<unsigned char>& rgb, float x0 = 1.0f / 3.0f, float x1 = 2.0f / 3.0f) {
+    const int w = test::kGlWidth, h = test::kGlHeight;
+    Vec3 sum(0.0f);
+    int n = 0;
+    for (int y = h / 3; y < h * 2 / 3; ++y)
+        for (int x = static_cast<int>(x0 * w); x < static_cast<int>(x1 * w); ++x, ++n)
+            for (int c = 0; c < 3; ++c) sum[c] += rgb[(static_cast<std::size_t>(y) * w + x) * 3 + c];
+    return sum / static_cast<float>(n);
+}
+
+} // namespace
+
+TEST_CASE("a tinted instance turns red on both paths; an untinted copy beside it does not") {
+    if (!test::gl_context()) {
+        MESSAGE("skipped: no display (run under xvfb-run, as ./run.sh test does)");
+        return;
+    }
+    AssetLibrary assets(test::source_dir() / "assets");
+    const Model& robot = assets.model("robot");
+    REQUIRE_FALSE(robot.placeholder);
+    Environment env;
+    env.sky_color = Vec3(0.4f);
+    env.ground_color = Vec3(0.2f);
+    env.sun_color = Vec3(0.4f);
+    geometry::Camera cam;
+    cam.position = Vec3(0.0f, 1.5f, 6.0f);
+    cam.fov_y = radians(40.0f);
+    for (RenderQuality q : {RenderQuality::Full, RenderQuality::Fast}) {
+        CAPTURE(static_cast<int>(q));
+        auto renderer = SceneRenderer::create(assets.textures(), quality(q));
+        REQUIRE(renderer);
+        // Two robots side by side (one draw per mesh for both); then the left one tinted.
+        std::vector<MeshInstance> instances;
+        std::vector<Mat4> scratch;
+        robot.emit(glm::translate(Mat4(1.0f), Vec3(-1.3f, 0.0f, 0.0f)), scratch, instances);
+        const std::size_t left_count = instances.size();
+        robot.emit(glm::translate(Mat4(1.0f), Vec3(1.3f, 0.0f, 0.0f)), scratch, instances);
+        const auto plain = draw(**renderer, cam, env, instances, {});
+        for (std::size_t i = 0; i < left_count; ++i) instances[i].tint = Vec3(0.9f, 0.0f, 0.0f);
+        const auto tinted = draw(**renderer, cam, env, instances, {});
+        const Vec3 left_before = mean_rgb(plain, 0.2f, 0.45f), left_after = mean_rgb(tinted, 0.2f, 0.45f);
+        const Vec3 right_before = mean_rgb(plain, 0.55f, 0.8f), right_after = mean_rgb(tinted, 0.55f, 0.8f);
+        MESSAGE("left robot rgb " << left_before.x << " " << left_before.y << " " << left_before.z << " -> "
+                                  << left_after.x << " " << left_after.y << " " << left_after.z);
+        CHECK(left_after.x > left_before.x + 25.0f); // much redder ...
+        CHECK(left_after.x - left_after.y > left_before.x - left_before.y + 20.0f);
+        CHECK(left_after.y < left_before.y - 8.0f); // ... and the other channels dim: red, not orange
+        CHECK(left_after.z < left_before.z + 1.0f);
+        CHECK(glm::length(right_after - right_before) < 0.5f); // the untinted copy is unchanged
+    }
+}
+
+TEST_CASE("a dynamic light lights the baked floor on the fast path; a level light there is in the map") {
+    if (!test::gl_context()) {
+        MESSAGE("skipped: no display (run under xvfb-run, as ./run.sh test does)");
+        return;
+    }
+    auto level = level::load_level_file(test::source_dir() / "levels" / "main.json");
+    REQUIRE(level.ok());
+    AssetLibrary assets(test::source_dir() / "assets");
+    // Looking down at the floor of room 1 from the player start.
+    geometry::Camera cam;
+    cam.position = level->player_start.position + Vec3(0.0f, 3.0f, 0.0f);
+    cam.yaw = radians(level->player_start.yaw);
+    cam.pitch = radians(-60.0f);
+    cam.fov_y = radians(60.0f);
+    const Vec3 forward(-std::sin(cam.yaw), 0.0f, -std::cos(cam.yaw));
+    Light flash;
+    flash.position = cam.position + forward * 1.6f - Vec3(0.0f, 2.2f, 0.0f); // 0.8 above the floor
+    flash.color = Vec3(1.0f, 0.75f, 0.45f);
+    flash.intensity = 3.0f;
+    flash.range = 8.0f;
+    for (RenderQuality q : {RenderQuality::Full, RenderQuality::Fast}) {
+        CAPTURE(static_cast<int>(q));
+        auto scene = LevelScene::build(*level, assets);
+        auto renderer = SceneRenderer::create(assets.textures(), quality(q));
+        REQUIRE(renderer);
+        std::vector<MeshInstance> instances;
+        std::vector<Light> lights;
+        scene->emit(instances, lights);
+        const float before = glm::dot(
+            mean_rgb(draw(**renderer, cam, scene->environment(), instances, lights)), Vec3(1.0f / 3.0f));
+        auto with = [&](bool dynamic) {
+            std::vector<Light> more = lights;
+            Light l = flash;
+            l.dynamic = dynamic;
+            more.insert(more.begin(), l);
+            return glm::dot(mean_rgb(draw(**renderer, cam, scene->environment(), instances, more)),
+                            Vec3(1.0f / 3.0f));
+        };
+        const float lit = with(true);
+        const float baked_only = with(false);
+        MESSAGE("floor luma: no flash " << before << ", dynamic flash " << lit << ", flash as a level light "
+                                        << baked_only);
+        CHECK(lit > before + 20.0f);
+        if (q == RenderQuality::Fast)
+            CHECK(baked_only == doctest::Approx(before).epsilon(0.01)); // baked surfaces read their map
+        else
+            CHECK(baked_only == doctest::Approx(lit).epsilon(0.01)); // the full path lights every light
+    }
+}
