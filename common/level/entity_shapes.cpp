@@ -75,6 +75,7 @@ std::optional<PlacedShape> static_solid_shape(const Entity& e) {
     case EntityType::TopLight:
     case EntityType::Robot:
     case EntityType::Pickup:
+    case EntityType::Sound:
     case EntityType::Count:
         break;
     }
@@ -130,6 +131,8 @@ PlacedShape bounding_shape(const Entity& e) {
                       {kRobotRadius, kRobotHeight * 0.5f, kRobotRadius});
     case EntityType::Pickup:
         return unturned(ShapeKind::Box, e.position, Vec3(0, kPickupCentreHeight, 0), Vec3(kPickupHalfSize));
+    case EntityType::Sound: // omnidirectional: its rotation turns nothing
+        return unturned(ShapeKind::Box, e.position, Vec3(0.0f), Vec3(kSoundMarkerHalfSize));
     default:
         break;
     }

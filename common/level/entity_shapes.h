@@ -41,10 +41,12 @@ inline constexpr float kDoorSensorHalfDepth = 7.0f;    // the reference's 5 x 5 
 inline constexpr float kLampStandRadius = 0.5f;        // a floor light's solid post
 inline constexpr float kPickupCentreHeight = 0.8f;     // a pickup's trigger cube floats this far up
 inline constexpr float kPickupHalfSize = 0.4f;
-inline constexpr float kPickupModelLift = 0.4f; // the pickup model's origin above the entity
+inline constexpr float kPickupModelLift = 0.4f;      // the pickup model's origin above the entity
+inline constexpr float kSoundMarkerHalfSize = 0.75f; // the editor's box around a sound emitter's point
 
 // The solid static body of walls, floors, stairs, floor-light stands, control panels and gas cylinders;
-// nullopt for entities that have none (doors, robots, pickups and top lights are built otherwise).
+// nullopt for entities that have none (doors, robots, pickups and top lights are built otherwise; sound
+// emitters are heard, never touched).
 std::optional<PlacedShape> static_solid_shape(const Entity& entity);
 
 // Door leaves, indexed by side: 0 is the leaf on the door's local -x, 1 the one on +x. Each slides outward
@@ -64,7 +66,7 @@ Vec3 gas_cylinder_centre(const Vec3& position, const GasCylinderProps& cylinder)
 
 // The box the editor selects, picks and checks overlaps with: the solid shape where there is one (a stair
 // as the box around its wedge), otherwise the doorway with closed leaves, the robot's body, the pickup's
-// cube, the top light's hanging bulb.
+// cube, the top light's hanging bulb, the sound emitter's marker (an upright cube around its point).
 PlacedShape bounding_shape(const Entity& entity);
 
 // ---- model placements: the transform from a generated model's frame to the world -----------------------

@@ -27,6 +27,8 @@ struct FieldInfo {
     // Fields added after version 1 shipped are written only when they differ from their default, so files
     // saved before the field existed re-save byte for byte. Such a default is part of the format for good.
     bool omitted_at_default = false;
+    // The editor's inspector shows the number as a slider over [min, max] instead of a drag field.
+    bool slider = false;
 };
 
 // A colour as designers write it ("#ffcc80"), held as sRGB components in 0..1.
@@ -41,6 +43,16 @@ struct Choice {
     std::vector<std::string> options;
     bool operator==(const Choice& o) const { return value == o.value; }
 };
+
+// A sound, named as its file in assets/sounds without ".wav" ("machine_hum"): lower-case letters, digits
+// and underscores (level/sound_name.h has the rule). For a SoundName field, FieldInfo's min and max bound
+// the name's length: min 0 lets the name be empty, meaning no sound. Whether the file exists is the
+// editor's validation (a designer drops files into the folder); the format only checks the spelling.
+struct SoundName {
+    std::string value;
+    bool operator==(const SoundName&) const = default;
+};
+inline constexpr int kMaxSoundNameLength = 64;
 
 // A robot's patrol: the points it walks in order while idle, instead of wandering. No points means no
 // patrol. `mode` "loop" goes from the last point back to the first, "ping_pong" turns round at either end;
@@ -59,7 +71,8 @@ inline constexpr double kPatrolReach = 50; // how far outside the level's extent
 
 // ---- per-type properties -------------------------------------------------------------------------------
 // Positions: walls, stairs, doors, lights, robots, pickups, cylinders and the panel stand on `position`
-// (it is their bottom centre); floors have their walking surface at position.y (ceilings their underside).
+// (it is their bottom centre); floors have their walking surface at position.y (ceilings their underside);
+// a sound emitter's position is the point its sound comes from.
 
 struct WallProps {
     Vec3 size{10.0f, 16.0f, 0.5f}; // width (local x), height (y), thickness (z)
@@ -232,15 +245,34 @@ struct ControlPanelProps {
     bool operator==(const ControlPanelProps&) const = default;
 };
 
-// The variant's order is the EntityType order.
-using Props = std::variant<WallProps, FloorProps, StairProps, DoorProps, FloorLightProps, TopLightProps, RobotProps,
-                           PickupProps, GasCylinderProps, ControlPanelProps>;
-
-enum class EntityType : std::uint8_t {
-    Wall, Floor, Stair, Door, FloorLight, TopLight, Robot, Pickup, GasCylinder, ControlPanel, Count
+// An ambient sound emitter. Unlike the other entities, its position is the point the sound comes from (the
+// centre of the editor's marker), not a bottom centre. The game's rules ignore it: no body, no state; the
+// runtime plays it.
+struct SoundProps {
+    SoundName sound{"machine_hum"};
+    float volume = 1.0f;
+    float radius = 40.0f; // heard within this distance, fading to silence at it
+    bool loop = true;     // off: played once when the level starts
+    template <class V>
+    void visit(V& v) {
+        v.field(sound, {"sound", "Sound file in assets/sounds, named without .wav (machine_hum, vent_loop, ...)", 1, kMaxSoundNameLength});
+        v.field(volume, {.name = "volume", .tooltip = "Loudness at the emitter: 0 silent, 1 as recorded", .min = 0, .max = 1, .slider = true});
+        v.field(radius, {.name = "radius", .tooltip = "Heard within this distance, fading to silence at it", .min = 0.5, .max = 500, .unit = "units", .slider = true});
+        v.field(loop, {"loop", "Repeats for as long as the level runs; off: plays once when the level starts"});
+    }
+    bool operator==(const SoundProps&) const = default;
 };
 
-// "wall", "floor", "stair", "door", "floor_light", "top_light", "robot", "pickup", "gas_cylinder", "control_panel"
+// The variant's order is the EntityType order.
+using Props = std::variant<WallProps, FloorProps, StairProps, DoorProps, FloorLightProps, TopLightProps, RobotProps,
+                           PickupProps, GasCylinderProps, ControlPanelProps, SoundProps>;
+
+enum class EntityType : std::uint8_t {
+    Wall, Floor, Stair, Door, FloorLight, TopLight, Robot, Pickup, GasCylinder, ControlPanel, Sound, Count
+};
+
+// "wall", "floor", "stair", "door", "floor_light", "top_light", "robot", "pickup", "gas_cylinder",
+// "control_panel", "sound"
 std::string_view type_name(EntityType type);
 bool type_from_name(std::string_view name, EntityType& out);
 const std::array<EntityType, static_cast<size_t>(EntityType::Count)>& all_types();
@@ -272,6 +304,7 @@ struct Settings {
     Color sun_color{1.0f, 245 / 255.0f, 230 / 255.0f};
     float sun_intensity = 0.1f;
     float gravity = -25.0f; // units/s^2 along y
+    SoundName ambient_sound{"ambient_facility"}; // the level's ambient loop; "" = none
     template <class V>
     void visit(V& v) {
         v.field(ambient_color, {"ambient_color", "Colour of the ambient light"});
@@ -282,6 +315,7 @@ struct Settings {
         v.field(sun_color, {"sun_color", "Colour of the sun"});
         v.field(sun_intensity, {"sun_intensity", "Sun strength", 0, 100});
         v.field(gravity, {"gravity", "Vertical acceleration (negative is down)", -1000, 0, "units/s^2"});
+        v.field(ambient_sound, {"ambient_sound", "The level's ambient loop from assets/sounds, named without .wav (\"\" = none)", 0, kMaxSoundNameLength, "", true});
     }
     bool operator==(const Settings&) const = default;
 };

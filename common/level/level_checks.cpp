@@ -3,6 +3,7 @@
 #include "jsonio/number_text.h"
 #include "jsonio/suggest.h"
 #include "level/patrol_checks.h"
+#include "level/sound_name.h"
 
 #include <algorithm>
 #include <cmath>
@@ -85,6 +86,12 @@ class FieldChecker {
         if (std::find(v.options.begin(), v.options.end(), v.value) == v.options.end())
             sink_.error(path_of(info), "unknown " + std::string(info.name) + " \"" + v.value + "\"",
                         "valid: " + join(v.options));
+    }
+    // min and max of a sound name's FieldInfo bound its length (level.h).
+    void field(SoundName& v, const FieldInfo& info) {
+        const auto problem =
+            sound_name_problem(v.value, static_cast<int>(info.min), static_cast<int>(info.max));
+        if (!problem.message.empty()) sink_.error(path_of(info), problem.message, problem.hint);
     }
     // A patrol's problems lie deep inside one robot, so their messages name it.
     void field(Patrol& v, const FieldInfo& info) {

@@ -197,6 +197,9 @@ class FieldReader {
     void field(Choice& v, const FieldInfo& info) {
         if (const Json* j = member(info)) read_string(*j, path_of(info), sink_, v.value);
     }
+    void field(SoundName& v, const FieldInfo& info) {
+        if (const Json* j = member(info)) read_string(*j, path_of(info), sink_, v.value);
+    }
     // A patrol's problems lie deep inside one robot, so their messages name it.
     void field(Patrol& v, const FieldInfo& info) {
         const Json* j = member(info);

@@ -42,6 +42,7 @@ class FieldWriter {
     void field(Vec3& v, const FieldInfo& info) { object_[info.name] = vec_json(v); }
     void field(Color& v, const FieldInfo& info) { object_[info.name] = color_to_hex(v); }
     void field(Choice& v, const FieldInfo& info) { object_[info.name] = v.value; }
+    void field(SoundName& v, const FieldInfo& info) { object_[info.name] = v.value; }
     // No patrol is no key at all (random wander), so robots without one save as they always did.
     void field(Patrol& v, const FieldInfo& info) {
         if (v.active()) object_[info.name] = patrol_json(v);

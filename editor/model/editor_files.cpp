@@ -230,6 +230,8 @@ Result<void> Editor::apply_quick_fix(const Issue& issue) {
         return delete_entities({issue.entity_id});
     case QuickFix::Kind::MovePatrolPoint:
         return patrol_move(issue.entity_id, fix.index, fix.position);
+    case QuickFix::Kind::SetSetting:
+        return set_setting(fix.field, fix.value);
     case QuickFix::Kind::MovePlayerStart: {
         auto change = std::make_unique<LevelChange>();
         change->set_name(name);

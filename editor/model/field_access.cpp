@@ -1,5 +1,7 @@
 #include "model/field_access.h"
 
+#include "level/sound_name.h"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -25,6 +27,8 @@ constexpr FieldKind kind_of() {
         return FieldKind::Vec3;
     else if constexpr (std::is_same_v<T, level::Color>)
         return FieldKind::Color;
+    else if constexpr (std::is_same_v<T, level::SoundName>)
+        return FieldKind::Sound;
     else {
         static_assert(std::is_same_v<T, level::Choice>, "a field type the editor does not know");
         return FieldKind::Choice;
@@ -33,7 +37,7 @@ constexpr FieldKind kind_of() {
 
 template <class T>
 FieldDescriptor describe(const T& value, const level::FieldInfo& info) {
-    FieldDescriptor d{info.name, info.tooltip, info.min, info.max, info.unit, kind_of<T>(), {}};
+    FieldDescriptor d{info.name, info.tooltip, info.min, info.max, info.unit, kind_of<T>(), {}, info.slider};
     if constexpr (std::is_same_v<T, level::Choice>) d.options = value.options;
     if constexpr (std::is_same_v<T, level::Color>) d.min = 0, d.max = 1;
     return d;
@@ -43,7 +47,7 @@ template <class T>
 FieldValue to_value(const T& value) {
     if constexpr (std::is_same_v<T, float> || std::is_same_v<T, int>)
         return static_cast<double>(value);
-    else if constexpr (std::is_same_v<T, level::Choice>)
+    else if constexpr (std::is_same_v<T, level::Choice> || std::is_same_v<T, level::SoundName>)
         return value.value;
     else
         return value;
@@ -55,7 +59,7 @@ void store(T& target, const FieldValue& value) {
         target = static_cast<float>(std::get<double>(value));
     else if constexpr (std::is_same_v<T, int>)
         target = static_cast<int>(std::get<double>(value));
-    else if constexpr (std::is_same_v<T, level::Choice>)
+    else if constexpr (std::is_same_v<T, level::Choice> || std::is_same_v<T, level::SoundName>)
         target.value = std::get<std::string>(value);
     else
         target = std::get<T>(value);
@@ -187,6 +191,8 @@ const char* field_kind_name(FieldKind kind) {
         return "colour";
     case FieldKind::Choice:
         return "choice";
+    case FieldKind::Sound:
+        return "sound name";
     }
     return "?";
 }
@@ -271,6 +277,13 @@ Result<void> check_field_value(const FieldDescriptor& field, const FieldValue& v
         for (const auto& o : field.options) opts += (opts.empty() ? "" : ", ") + o;
         return Error("'" + std::get<std::string>(value) + "' is not an option of '" + field.name + "'",
                      Location{}, "options: " + opts);
+    }
+    case FieldKind::Sound: {
+        if (!std::holds_alternative<std::string>(value)) return wrong_type();
+        const auto problem = level::sound_name_problem(
+            std::get<std::string>(value), static_cast<int>(field.min), static_cast<int>(field.max));
+        if (problem.message.empty()) return ok();
+        return Error("'" + field.name + "': " + problem.message, Location{}, problem.hint);
     }
     }
     return wrong_type();
@@ -358,6 +371,7 @@ Result<FieldValue> parse_field_value(const FieldDescriptor& field, std::string_v
         break;
     case FieldKind::String:
     case FieldKind::Choice:
+    case FieldKind::Sound:
         value = std::string(text);
         break;
     case FieldKind::Vec2: {

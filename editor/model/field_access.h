@@ -12,7 +12,8 @@
 
 namespace ks::editor {
 
-enum class FieldKind { Float, Int, Bool, String, Vec2, Vec3, Color, Choice };
+// Sound: a sound name (level::SoundName), travelling as a string; its min and max bound the name's length.
+enum class FieldKind { Float, Int, Bool, String, Vec2, Vec3, Color, Choice, Sound };
 const char* field_kind_name(FieldKind kind);
 
 // A field as the inspector shows it: widget kind, range, unit, tooltip and, for choices, the options.
@@ -24,10 +25,11 @@ struct FieldDescriptor {
     std::string unit;
     FieldKind kind = FieldKind::Float;
     std::vector<std::string> options; // Choice only
+    bool slider = false;              // Float: shown as a slider over [min, max] (FieldInfo::slider)
     bool operator==(const FieldDescriptor&) const = default;
 };
 
-// Numbers travel as double (Int and Float), choices as their string.
+// Numbers travel as double (Int and Float), choices and sound names as their string.
 using FieldValue = std::variant<bool, double, std::string, Vec2, Vec3, level::Color>;
 
 // Every field of an entity: the common "name", "position", "rotation", then the type's own properties.

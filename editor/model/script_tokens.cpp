@@ -10,7 +10,7 @@ namespace {
 
 constexpr Rule kRules[] = {Rule::Format,  Rule::PlayerStart, Rule::ControlPanel, Rule::WallOverlap,
                            Rule::Support, Rule::StairSlope,  Rule::DoorGap,      Rule::Reachability,
-                           Rule::Patrol,  Rule::RobotReach};
+                           Rule::Patrol,  Rule::RobotReach,  Rule::Sound};
 
 } // namespace
 

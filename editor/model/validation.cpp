@@ -3,6 +3,7 @@
 #include "level/level_io.h"
 #include "model/patrol_validation.h"
 #include "model/reachability.h"
+#include "model/sound_validation.h"
 #include "model/xz_grid.h"
 
 #include <cmath>
@@ -351,6 +352,8 @@ const char* rule_name(Rule rule) {
         return "patrol";
     case Rule::RobotReach:
         return "robot_reach";
+    case Rule::Sound:
+        return "sound";
     }
     return "?";
 }
@@ -372,6 +375,7 @@ std::vector<Issue> validate_design(const Level& level, const ValidationOptions& 
     check_stairs(level, options, out);
     check_doors(level, solids, out);
     check_patrol_support(level, options, out);
+    check_sound_names(level, options, out);
     if (options.check_reachability) check_reachability(level, options, out);
     return out;
 }

@@ -5,6 +5,7 @@
 #include "model/bounds.h"
 #include "model/field_access.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,7 @@ enum class Rule {
     Reachability, // the control panel cannot be walked to from the player start
     Patrol,       // a robot's patrol point is not on a floor or stair surface
     RobotReach,   // a robot that can never walk to where the player starts
+    Sound,        // a sound emitter or the level's ambient_sound names no file in assets/sounds
 };
 const char* rule_name(Rule rule);
 
@@ -33,12 +35,13 @@ struct QuickFix {
         MovePlayerStart,
         DeleteEntity,
         SetField,
-        MovePatrolPoint
+        MovePatrolPoint,
+        SetSetting
     } kind = Kind::None;
     std::string label;   // "Drop to floor", shown on the button
     Vec3 position{0.0f}; // MoveEntity / MovePlayerStart / MovePatrolPoint
-    std::string field;   // SetField
-    FieldValue value;    // SetField
+    std::string field;   // SetField / SetSetting
+    FieldValue value;    // SetField / SetSetting
     int index = 0;       // MovePatrolPoint: which point of the issue's robot
 };
 
@@ -62,6 +65,10 @@ struct ValidationOptions {
     // waits for the mesh build; its issue shows when the check finishes (the previous result until then).
     // Scripts and tests leave it off and get the answer at once.
     bool background_reachability = false;
+    // The sound names the sound rule accepts. Unset: the *.wav files in assets/sounds (core/paths), listed at
+    // each validation, so a file a designer drops into the folder counts at once. An empty list (no folder,
+    // no files) skips the rule: nothing to check against is no reason to fail a level.
+    std::optional<std::vector<std::string>> sound_names;
 };
 
 std::vector<Issue> validate_design(const level::Level& level, const ValidationOptions& options = {});

@@ -327,6 +327,7 @@ void EditorApp::menu_bar() {
         ImGui::MenuItem("Robot eye / shooting radii", nullptr, &overlays_.robots);
         ImGui::MenuItem("Player start", nullptr, &overlays_.player_start);
         ImGui::MenuItem("All patrol routes", nullptr, &overlays_.patrols);
+        ImGui::MenuItem("All sound radii", nullptr, &overlays_.sound_radii);
         ImGui::MenuItem("Navigation mesh", nullptr, &overlays_.navmesh);
         ImGui::MenuItem("Ceilings", nullptr, &overlays_.ceilings);
         ImGui::EndMenu();

@@ -14,8 +14,10 @@
 #include "ui/gizmo_draw.h"
 #include "ui/playtest.h"
 #include "ui/render_target.h"
+#include "ui/sound_widgets.h"
 #include "view/patrol_drag.h"
 #include "view/picking.h"
+#include "view/sound_marker.h"
 #include "view/view_camera.h"
 
 #include <array>
@@ -43,6 +45,8 @@ struct AppOptions {
     // --status-file: a JSON snapshot of the session rewritten whenever it changes (status_report.cpp), so
     // tests that drive the window with real input wait on state rather than on time.
     std::optional<std::filesystem::path> status_file;
+    // Plays a sound for the inspector's Audition buttons (sound_widgets.h); unset, they are hidden.
+    SoundAudition audition;
 };
 
 struct Overlays {
@@ -51,8 +55,9 @@ struct Overlays {
     bool lights = true;
     bool robots = true;
     bool player_start = true;
-    bool patrols = false; // every robot's patrol route; the selected robot's is always shown
-    bool navmesh = false; // the robots' navigation mesh (built in the background after edits)
+    bool patrols = false;     // every robot's patrol route; the selected robot's is always shown
+    bool sound_radii = false; // every sound emitter's radius; the selected one's is always shown
+    bool navmesh = false;     // the robots' navigation mesh (built in the background after edits)
     bool outlines =
         true; // in the axis views: walls, doors and stairs outlined, so the plan reads at a glance
     bool ceilings = false; // off by default: ceilings would hide the rooms from an editor camera above them
@@ -94,6 +99,7 @@ class EditorApp {
     void rebuild_scene_if_changed();
     void draw_overlays();
     void draw_navmesh();
+    void draw_sound_emitter(const level::Entity& e, bool selected);
     void draw_axis_grid(ImDrawList* draw, Vec2 origin) const;
     void viewport_input(Vec2 origin, bool hovered);
     int pick(const geometry::Ray& ray) const;
@@ -155,6 +161,8 @@ class EditorApp {
     int type_filter_ = -1;         // -1: all
     int outliner_scrolled_to_ = 0; // primary selection the outliner last scrolled to
     char search_[64] = {};
+    std::vector<std::string> sound_names_; // offered by the inspector's sound lists (sound_widgets.h)
+    std::vector<MarkerLine> marker_lines_; // a sound emitter's marker, reused every frame
     std::deque<std::pair<std::string, bool>> log_;
     bool scroll_log_ = false;
     bool dojo_tab_ = false;

@@ -106,6 +106,8 @@ ImVec4 type_colour(level::EntityType t) {
         return ImVec4(1.0f, 0.65f, 0.3f, 1);
     case level::EntityType::ControlPanel:
         return ImVec4(0.8f, 0.6f, 1.0f, 1);
+    case level::EntityType::Sound:
+        return ImVec4(1.0f, 0.5f, 0.85f, 1);
     default:
         return ImVec4(1, 1, 1, 1);
     }
@@ -265,7 +267,13 @@ bool EditorApp::field_widget(const FieldDescriptor& field, FieldValue& value, bo
     switch (field.kind) {
     case FieldKind::Float: {
         float v = static_cast<float>(std::get<double>(value));
-        changed = ImGui::DragFloat(id, &v, speed, lo, hi, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+        // A slider's range spanning decades (a radius) is logarithmic, so small values stay reachable.
+        if (field.slider)
+            changed = ImGui::SliderFloat(id, &v, lo, hi, "%.2f",
+                                         ImGuiSliderFlags_AlwaysClamp |
+                                             (lo > 0 && hi >= lo * 100 ? ImGuiSliderFlags_Logarithmic : 0));
+        else
+            changed = ImGui::DragFloat(id, &v, speed, lo, hi, "%.3f", ImGuiSliderFlags_AlwaysClamp);
         if (changed) value = static_cast<double>(v);
         break;
     }
@@ -316,6 +324,12 @@ bool EditorApp::field_widget(const FieldDescriptor& field, FieldValue& value, bo
                 if (ImGui::Selectable(option.c_str(), option == current)) value = option, changed = true;
             ImGui::EndCombo();
         }
+        break;
+    }
+    case FieldKind::Sound: {
+        std::string name = std::get<std::string>(value);
+        changed = sound_name_widget(id, name, sound_names_);
+        if (changed) value = name;
         break;
     }
     }
@@ -376,8 +390,10 @@ void EditorApp::inspector_panel(float x, float y, float w, float h) {
             ImGui::TableNextColumn();
             ImGui::SetNextItemWidth(-1);
             FieldValue edited = *value;
-            if (field_widget(field, edited, mixed))
+            if (field_widget(field, edited, mixed)) {
                 report(editor_.set_field(field.name, edited, "inspector:" + field.name), field.name.c_str());
+                if (field.kind == FieldKind::Sound) editor_.end_merging(); // each name picked is its own step
+            }
             if (ImGui::IsItemDeactivatedAfterEdit()) editor_.end_merging(); // one drag = one step
             ImGui::TableNextColumn();
             auto def = default_entity_field(primary, field.name);
@@ -394,6 +410,8 @@ void EditorApp::inspector_panel(float x, float y, float w, float h) {
     if (selected.size() == 1 && primary.try_as<level::RobotProps>())
         patrol_section(editor_, primary,
                        [this](const Result<void>& r, const char* what) { report(r, what); });
+    if (const auto* sound = primary.try_as<level::SoundProps>(); sound && selected.size() == 1)
+        audition_button(options_.audition, sound->sound.value, sound->volume);
     ImGui::Spacing();
     if (ImGui::Button("Duplicate")) report(editor_.duplicate(), "duplicate");
     ImGui::SameLine();
@@ -436,11 +454,14 @@ void EditorApp::settings_section() {
         ImGui::SameLine(150);
         ImGui::SetNextItemWidth(-1);
         FieldValue edited = *value;
-        if (field_widget(field, edited, false))
+        if (field_widget(field, edited, false)) {
             report(editor_.set_setting(field.name, edited, "settings:" + field.name), field.name.c_str());
+            if (field.kind == FieldKind::Sound) editor_.end_merging(); // each name picked is its own step
+        }
         if (ImGui::IsItemDeactivatedAfterEdit()) editor_.end_merging();
         ImGui::PopID();
     }
+    audition_button(options_.audition, editor_.level().settings.ambient_sound.value, 1.0f);
 }
 
 void EditorApp::validation_panel(float x, float y, float w, float h) {

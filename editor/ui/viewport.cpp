@@ -30,6 +30,7 @@ const Vec4 kCollision(0.3f, 0.9f, 1.0f, 0.55f);
 const Vec4 kWallOutline(0.85f, 0.9f, 1.0f, 0.9f);
 const Vec4 kDoorOutline(1.0f, 0.55f, 0.25f, 0.95f);
 const Vec4 kStairOutline(0.45f, 1.0f, 0.55f, 0.9f);
+const Vec4 kSoundMarker(1.0f, 0.45f, 0.85f, 1.0f);
 
 // The outline colour of an entity in the axis views, or none (floors, lights and props need none).
 std::optional<Vec4> outline_colour(const level::Entity& e) {
@@ -191,6 +192,7 @@ void EditorApp::draw_overlays() {
         }
         if (const auto* r = e.try_as<level::RobotProps>(); r && (selected || overlays_.patrols))
             patrol_route(debug_, r->patrol, selected);
+        if (e.type() == level::EntityType::Sound) draw_sound_emitter(e, selected);
     }
     if (overlays_.player_start) {
         const auto& ps = doc.level.player_start;
@@ -209,11 +211,25 @@ void EditorApp::draw_overlays() {
         const geometry::Ray ray = view_.ray(Vec2(m.x, m.y) - viewport_origin_);
         const Vec3 p = place_point(ray);
         level::Entity preview;
-        preview.position = p;
+        preview.position = placement_for(*placing_, p);
         preview.props = level::default_props(*placing_);
         const geometry::Obb box = entity_obb(preview);
         debug_.box(obb_transform(box), box.half, Vec4(0.4f, 1.0f, 0.5f, 0.9f));
     }
+}
+
+// A speaker facing the camera (the renderer draws nothing for a sound: it is heard, not seen); selected, the
+// sphere it is heard within; with View > All sound radii, every emitter's horizontal circle, faintly.
+void EditorApp::draw_sound_emitter(const level::Entity& e, bool selected) {
+    const auto& sound = e.as<level::SoundProps>();
+    const Vec4 colour = selected ? kSoundMarker : Vec4(Vec3(kSoundMarker), 0.8f);
+    marker_lines_.clear();
+    speaker_icon(e.position, view_.camera.right(), view_.camera.up(), level::kSoundMarkerHalfSize,
+                 marker_lines_);
+    if (selected) wire_sphere(e.position, sound.radius, 64, marker_lines_);
+    for (const MarkerLine& line : marker_lines_) debug_.line(line.a, line.b, colour);
+    if (overlays_.sound_radii && !selected)
+        circle(debug_, e.position, sound.radius, Vec4(Vec3(kSoundMarker), 0.3f), 64);
 }
 
 void EditorApp::draw_axis_grid(ImDrawList* draw, Vec2 origin) const {
@@ -426,7 +442,7 @@ void EditorApp::viewport_input(Vec2 origin, bool hovered) {
     if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
         if (placing_) {
             const geometry::Ray ray = view_.ray(mouse);
-            auto placed = editor_.place(*placing_, place_point(ray));
+            auto placed = editor_.place(*placing_, placement_for(*placing_, place_point(ray)));
             if (!placed) log_line("place: " + placed.error().str(), true);
             if (!io.KeyShift) placing_.reset(); // Shift keeps placing
             return;

@@ -39,4 +39,8 @@ Vec3 place_point(const Document& doc, const geometry::Ray& ray, const ShownFn& s
     return Vec3(doc.grid.snap_value(p.x), p.y, doc.grid.snap_value(p.z));
 }
 
+Vec3 placement_for(level::EntityType type, const Vec3& surface) {
+    return type == level::EntityType::Sound ? surface + Vec3(0, kSoundPlaceHeight, 0) : surface;
+}
+
 } // namespace ks::editor

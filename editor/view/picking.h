@@ -25,4 +25,11 @@ PickHit pick_entity(const Document& doc, const geometry::Ray& ray, const ShownFn
 // through `fallback` facing the ray. x and z snap to the grid; y stays on the surface.
 Vec3 place_point(const Document& doc, const geometry::Ray& ray, const ShownFn& shown, const Vec3& fallback);
 
+// How far above the surface a palette click puts a sound emitter: its position is the point the sound
+// comes from, so it goes about where a machine's noise would, and its marker clears the floor.
+inline constexpr float kSoundPlaceHeight = 2.0f;
+// The position an entity of `type` gets for a palette click whose place_point is `surface`: the surface
+// point itself (a bottom centre) for every type but the sound emitter.
+Vec3 placement_for(level::EntityType type, const Vec3& surface);
+
 } // namespace ks::editor

@@ -1,5 +1,6 @@
 // The game builds its bodies from the level's entity shapes (level/entity_shapes.h): every static body of
 // the shipped main level sits exactly where the shape says, and door leaves move by the shared formula.
+#include "game/autoplay.h"
 #include "game_test_levels.h"
 #include "level/entity_shapes.h"
 #include "level/level_io.h"
@@ -60,4 +61,23 @@ TEST_CASE("door leaf bodies follow level::door_leaf_centre while the door opens"
         const Vec3 actual = g->world().transform(d.leaves[side]).position;
         CHECK(glm::length(actual - expected) < 1e-5f);
     }
+}
+
+TEST_CASE("sound emitters make no body and leave the game as it would be without them") {
+    auto level = level::load_level_file(ks::test::source_dir() / "levels/main.json");
+    REQUIRE(level);
+    level::Level silent = *level;
+    const auto sounds = std::erase_if(
+        silent.entities, [](const level::Entity& e) { return e.type() == level::EntityType::Sound; });
+    REQUIRE(sounds >= 4); // the shipped level has emitters to ignore
+    auto with = make_game(*level, 3), without = make_game(silent, 3);
+    CHECK(with->world().body_count() == without->world().body_count());
+    auto bot_with = Autoplay::create(*level, *with, 3), bot_without = Autoplay::create(silent, *without, 3);
+    REQUIRE(bot_with);
+    REQUIRE(bot_without);
+    for (int i = 0; i < 3 * 120; ++i) {
+        with->step(bot_with->decide(*with));
+        without->step(bot_without->decide(*without));
+    }
+    CHECK(with->state_hash() == without->state_hash());
 }

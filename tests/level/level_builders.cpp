@@ -71,6 +71,13 @@ class RandomFiller {
     void field(Choice& v, const FieldInfo&) {
         v.value = v.options[rng_.below(static_cast<std::uint32_t>(v.options.size()))];
     }
+    // A spelling the format accepts; "" (no sound) where the field allows it.
+    void field(SoundName& v, const FieldInfo& info) {
+        static const std::string kNames[] = {
+            "machine_hum",  "vent_loop", "alarm_loop", "computer_beeps",
+            "ambient_dojo", "x",         "a_2",        std::string(kMaxSoundNameLength, 'z')};
+        v.value = info.min == 0 && rng_.chance(0.2f) ? "" : kNames[rng_.below(std::size(kNames))];
+    }
     // Points are offsets from the robot (random_level adds its position): a patrol stays near its robot.
     // No points is no patrol, which the file leaves out whole: mode and wait then keep their defaults.
     void field(Patrol& v, const FieldInfo&) {
@@ -121,6 +128,9 @@ Level level_with_every_type() {
     gas = {0.6f, 2.2f, 35, 7.5f, 30};
     auto& panel = level.add(EntityType::ControlPanel, {90, 0, 50}, "Panel").as<ControlPanelProps>();
     panel.size = {3, 4.5f, 5};
+    auto& sound = level.add(EntityType::Sound, {0, 14, -60}, "Vent").as<SoundProps>();
+    sound = {{"vent_loop"}, 0.35f, 22.5f, false};
+    level.settings.ambient_sound.value = "ambient_dojo";
     int yaw = -144;
     for (Entity& e : level.entities) e.rotation = {static_cast<float>(yaw += 37), 0.5f, -1.25f};
     return level;

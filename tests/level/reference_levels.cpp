@@ -120,6 +120,15 @@ void add_gas_cylinder(Level& level, const char* name, float x, float z, double r
     gas.explosion_power = 25.0f;
 }
 
+// Not in the reference (it was silent): ambient emitters placed for issue 14.
+void add_sound(Level& level, const char* name, Vec3 position, const char* sound, float volume, float radius) {
+    auto& emitter = level.add(EntityType::Sound, position, name).as<SoundProps>();
+    emitter.sound.value = sound;
+    emitter.volume = volume;
+    emitter.radius = radius;
+    emitter.loop = true;
+}
+
 } // namespace
 
 float robot_yaw_from_reference(float rot_y_radians) {
@@ -218,6 +227,14 @@ Level reference_main_level() {
     // 4.10 control panel.
     auto& panel = level.add(EntityType::ControlPanel, {90, 0, 50}, "Control panel").as<ControlPanelProps>();
     panel.size = {2.94f, 4.0f, 5.34f};
+
+    // Sound emitters: the panel beeps so a player can find it by ear; machines and a vent give the rooms a
+    // voice; an alarm, quiet and short-ranged, marks the way into the last room. The level's ambient loop is
+    // the format's default, ambient_facility.
+    add_sound(level, "Control panel beeps", {90, 5, 50}, "computer_beeps", 0.6f, 25);
+    add_sound(level, "Room 1 vent", {-8, 14, 0}, "vent_loop", 0.4f, 24);
+    add_sound(level, "Room 2 machine hum", {20, 2, -86}, "machine_hum", 0.7f, 35);
+    add_sound(level, "Alarm inside door 2", {35, 7, 32}, "alarm_loop", 0.3f, 16);
     return level;
 }
 
@@ -225,6 +242,7 @@ Level reference_dojo_level() {
     Level level;
     level.name = "Dojo";
     level.settings = reference_settings();
+    level.settings.ambient_sound.value = "ambient_dojo";
     level.player_start = {{-90, 0, -5}, 0};
 
     // 4.11: an octagon of wood walls around (-90, 0, -15): radius 16, width 16.58 * 16 / 20, height 12.

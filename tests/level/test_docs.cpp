@@ -41,6 +41,12 @@ class DocLister {
     void field(Choice& choice, const FieldInfo& info) {
         row(info, "one of " + ks::jsonio::join(choice.options, ", "), "");
     }
+    void field(SoundName& v, const FieldInfo& info) {
+        row(info, "sound name (a-z, 0-9, _)",
+            ks::jsonio::format_readable(info.min) + " .. " + ks::jsonio::format_readable(info.max) +
+                " characters",
+            "\"" + v.value + "\"");
+    }
     void field(Patrol&, const FieldInfo& info) {
         row(info, "{points, mode, wait} (see Patrols)", "", "none: wanders");
     }

@@ -77,6 +77,8 @@ TEST_CASE("main.json loads cleanly, matches the reference layout and re-saves by
     CHECK(counts[EntityType::Pickup] == 3);
     CHECK(counts[EntityType::GasCylinder] == 6);
     CHECK(counts[EntityType::ControlPanel] == 1);
+    CHECK(counts[EntityType::Sound] == 4);
+    CHECK(level.settings.ambient_sound.value == "ambient_facility");
     CHECK(level.player_start.position == ks::Vec3(0, 0, 25));
     CHECK(level.player_start.yaw == 0.0f);
 
@@ -133,6 +135,7 @@ TEST_CASE("dojo.json loads cleanly, matches the reference and re-saves byte-iden
     CHECK(counts[EntityType::Robot] == 1);
     CHECK(counts[EntityType::TopLight] == 0); // no ceiling, no top lights
     CHECK(level.entities.size() == 15);
+    CHECK(level.settings.ambient_sound.value == "ambient_dojo");
     CHECK(level.player_start.position == ks::Vec3(-90, 0, -5));
 
     for (const Entity& e : level.entities) {

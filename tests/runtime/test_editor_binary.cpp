@@ -272,3 +272,40 @@ TEST_CASE("killswitch-editor --dojo shows the posed robot in its preview") {
     CHECK(count_pixels(img, 10, 60, 640, 400, yellow) > 2000);
     CHECK(run.output.find("error") == std::string::npos);
 }
+
+TEST_CASE("killswitch-editor draws a sound emitter's speaker, and its radius sphere while it is selected") {
+    if (!have_display()) {
+        MESSAGE("no DISPLAY: editor window test skipped (./run.sh test runs it under xvfb-run)");
+        return;
+    }
+    test::ScratchDir dir;
+    build_two_rooms(dir.path());
+    auto level = level::load_level_file(dir / "two_rooms.json");
+    REQUIRE(level);
+    REQUIRE(level::save_level_file(dir / "silent.json", *level));
+    const int id = level->add(level::EntityType::Sound, Vec3(0, 3, -10), "hum").id;
+    level->find(id)->as<level::SoundProps>().radius = 6;
+    REQUIRE(level::save_level_file(dir / "hum.json", *level));
+    write(dir / "none.kss", "select none\n");
+    write(dir / "select.kss", "select " + std::to_string(id) + "\n");
+    auto shot = [&](const char* level_name, const char* script) {
+        const auto png = dir / (std::string(level_name) + "_" + script + ".png");
+        auto run = test::run_command(
+            editor_binary() + " --level " + (dir / level_name).string() + " --run " +
+            (dir / script).string() +
+            " --camera 3,4,-2,0,-10 --width 1280 --height 720 --frames 3 --screenshot " + png.string());
+        INFO(run.output);
+        REQUIRE(run.exit_code == 0);
+        return load_png(png);
+    };
+    const Image silent = shot("silent.json", "none.kss"), idle = shot("hum.json", "none.kss"),
+                selected = shot("hum.json", "select.kss");
+    // The marker's pink (255, 115, 217), blended and anti-aliased: red and blue well above green.
+    auto pink = [](int r, int g, int b) { return r > 180 && b > 140 && r > g + 60 && b > g + 40; };
+    const int p0 = count_pixels(silent, 250, 60, 950, 550, pink),
+              p1 = count_pixels(idle, 250, 60, 950, 550, pink),
+              p2 = count_pixels(selected, 250, 60, 950, 550, pink);
+    INFO("pink pixels: no emitter " << p0 << ", emitter " << p1 << ", selected " << p2);
+    CHECK(p1 > p0 + 20);  // the speaker
+    CHECK(p2 > p1 + 200); // and the sphere of its radius
+}
