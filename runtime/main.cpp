@@ -5,6 +5,7 @@
 #include "core/log.h"
 #include "game/headless.h"
 #include "shell/app_shell.h"
+#include "soundscape/mix_recorder.h"
 #include "views/render_view.h"
 
 #include <cstdio>
@@ -15,7 +16,7 @@ const std::vector<std::string> kFlags = {"no-vsync", "help", "no-hud", "effects"
 void print_headless_help() {
     std::printf(
         "usage: killswitch --headless [--level FILE] [--seconds S] [--seed N] [--autoplay]\n"
-        "                  [--record FILE | --replay FILE] [--stats-json FILE|-]\n"
+        "                  [--record FILE | --replay FILE] [--stats-json FILE|-] [--audio-out FILE.wav]\n"
         "  runs the game without a window at a fixed 120 Hz step, as fast as the CPU allows\n"
         "  --level FILE      the level to play (default levels/main.json)\n"
         "  --seconds S       simulated time limit (default 300)\n"
@@ -24,7 +25,28 @@ void print_headless_help() {
         "  --record FILE     save every step's input (replays bit-exactly)\n"
         "  --replay FILE     play a recording back with its recorded seed\n"
         "  --stats-json F    write the outcome, time, kills, damage and state hash as JSON (- = stdout)\n"
+        "  --audio-out F.wav render the run's sound (heard at the player) to a 48 kHz stereo WAV, plus\n"
+        "                    2 s after the end; the same run writes the same file\n"
         "exit code 0 when the run completed (whatever its outcome), 2 on bad options or a bad level\n");
+}
+
+// --audio-out with --headless: a loopback mix of the run, heard at the player, then a 2 s tail.
+using namespace ks;
+
+void record_audio(game::HeadlessOptions& options, const std::filesystem::path& wav,
+                  std::unique_ptr<soundscape::MixRecorder>& recorder) {
+    options.on_start = [&recorder, wav](const level::Level& level, const game::Game&) -> Result<void> {
+        auto opened = soundscape::MixRecorder::open(wav, level);
+        if (!opened) return opened.error();
+        recorder = std::move(*opened);
+        return {};
+    };
+    options.after_step = [&recorder](const game::Game& g) { return recorder->after_step(g); };
+    options.on_finish = [&recorder](const game::Game& g) -> Result<void> {
+        for (int i = 0; i < 240; ++i)
+            if (auto r = recorder->render(g, soundscape::player_listener(g), g.settings().step); !r) return r;
+        return recorder->finish();
+    };
 }
 
 } // namespace
@@ -46,7 +68,9 @@ int main(int argc, char** argv) {
             print_headless_help();
             return 0;
         }
-        if (auto unknown = cl->unknown(game::headless_option_names()); !unknown.empty()) {
+        std::vector<std::string> headless_known = game::headless_option_names();
+        headless_known.push_back("audio-out");
+        if (auto unknown = cl->unknown(headless_known); !unknown.empty()) {
             log::error("unknown option ", unknown.front(), " for --headless (see common/game/headless.h)");
             return 2;
         }
@@ -54,6 +78,14 @@ int main(int argc, char** argv) {
         if (!options) {
             log::error(options.error().str());
             return 2;
+        }
+        std::unique_ptr<soundscape::MixRecorder> recorder;
+        if (auto wav = cl->get("audio-out")) {
+            if (wav->empty()) {
+                log::error("--audio-out: give a file name, e.g. --audio-out run.wav");
+                return 2;
+            }
+            record_audio(*options, *wav, recorder);
         }
         auto stats = game::run_headless(*options);
         if (!stats) {

@@ -76,7 +76,9 @@ bool AlDevice::open_default(int sources, std::string& reason) {
         close();
         return false;
     }
-    const ALCint attributes[] = {ALC_MONO_SOURCES, sources, ALC_STEREO_SOURCES, sources, 0};
+    // The output limiter: many sounds at once (a volley and an explosion) are compressed instead of clipping.
+    const ALCint attributes[] = {
+        ALC_MONO_SOURCES, sources, ALC_STEREO_SOURCES, sources, ALC_OUTPUT_LIMITER_SOFT, ALC_TRUE, 0};
     return create_context(attributes, reason);
 }
 
@@ -117,6 +119,8 @@ bool AlDevice::open_loopback(int sample_rate, int sources, std::string& reason) 
                                  sources,
                                  ALC_STEREO_SOURCES,
                                  sources,
+                                 ALC_OUTPUT_LIMITER_SOFT,
+                                 ALC_TRUE,
                                  0};
     sample_rate_ = sample_rate;
     if (!create_context(attributes, reason)) return false;

@@ -221,6 +221,9 @@ class Game {
     int robots_killed() const { return robots_killed_; }
     const GameSettings& settings() const { return settings_; }
     const physics::World& world() const { return world_; }
+    // Whether level geometry (walls, floors, closed door leaves: what blocks sight) lies on the straight line
+    // between two points. Characters, pickups and triggers do not count. For sound occlusion.
+    bool line_blocked(const Vec3& from, const Vec3& to) const;
     // The robots' navigation mesh; null when it could not be built (navigation_error() says why).
     const nav::NavMesh* navigation() const { return navigation_.get(); }
     const std::string& navigation_error() const { return navigation_error_; }

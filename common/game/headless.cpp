@@ -107,6 +107,8 @@ Result<HeadlessStats> run_headless(const HeadlessOptions& options) {
         if (!made) return made.error();
         bot = std::make_unique<Autoplay>(std::move(*made));
     }
+    if (options.on_start)
+        if (auto started = options.on_start(*level, game); !started) return started.error();
     Recording record;
     record.seed = seed;
     record.level = options.level.string();
@@ -128,8 +130,12 @@ Result<HeadlessStats> run_headless(const HeadlessOptions& options) {
         if (!options.record.empty()) record.inputs.push_back(input);
         game.step(input);
         ++steps;
+        if (options.after_step)
+            if (auto observed = options.after_step(game); !observed) return observed.error();
     }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (options.on_finish)
+        if (auto finished = options.on_finish(game); !finished) return finished.error();
 
     HeadlessStats stats;
     stats.outcome = game.phase() == Phase::Won ? "win" : game.phase() == Phase::Dead ? "death" : "timeout";

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,12 @@ struct HeadlessOptions {
     std::uint64_t seed = 1;
     bool autoplay = false;
     std::filesystem::path record, replay, stats_json; // stats_json "-" = stdout
+    // Observers a driver adds (the runtime's --audio-out recorder): called once the level and game exist,
+    // after every step, and once at the end (the game in its final state). An error stops the run and is
+    // returned.
+    std::function<Result<void>(const level::Level&, const Game&)> on_start;
+    std::function<Result<void>(const Game&)> after_step;
+    std::function<Result<void>(const Game&)> on_finish;
 };
 
 struct HeadlessStats {

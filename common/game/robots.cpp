@@ -40,6 +40,13 @@ bool Game::robot_line_to_player(const Robot& r, float height) const {
     return !world_.ray_any({from, d / len, len}, filter);
 }
 
+bool Game::line_blocked(const Vec3& from, const Vec3& to) const {
+    const Vec3 d = to - from;
+    const float len = glm::length(d);
+    if (!(len > 1e-4f) || !std::isfinite(len)) return false;
+    return world_.ray_any({from, d / len, len}, physics::RayFilter(physics::layer::kBlocksSight));
+}
+
 bool Game::robot_sees_player(const Robot& r) const {
     return robot_line_to_player(r, settings_.robot_height * 0.9f); // from the eye
 }

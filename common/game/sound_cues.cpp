@@ -79,7 +79,7 @@ void sound_cues(const Game& game, std::span<const Event> events, std::vector<Sou
     for (const Event& e : events) {
         switch (e.type) {
         case EventType::ShotFired:
-            out.push_back(own("rifle_shot", e.position, 0.9f, SoundPriority::Critical));
+            out.push_back(own("rifle_shot", e.position, 0.75f, SoundPriority::Critical));
             break;
         case EventType::DryFire:
             out.push_back(own("dry_fire", e.position, 0.8f, SoundPriority::Combat));
@@ -126,7 +126,7 @@ void sound_cues(const Game& game, std::span<const Event> events, std::vector<Sou
             out.push_back(own("player_death", e.position, 1.0f, SoundPriority::Critical));
             break;
         case EventType::Won:
-            out.push_back(own("win_sting", e.position, 1.0f, SoundPriority::Critical));
+            out.push_back(own("win_sting", e.position, 0.8f, SoundPriority::Critical));
             break;
         case EventType::Jump:
             out.push_back(own("jump", e.position, 0.6f, SoundPriority::Detail));

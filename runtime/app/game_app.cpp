@@ -10,9 +10,9 @@
 namespace ks::runtime {
 
 const std::vector<std::string>& game_app_options() {
-    static const std::vector<std::string> names = {"level",    "dojo",      "screen",      "warp",
-                                                   "dojo-key", "dojo-time", "seed",        "msaa",
-                                                   "help",     "fire",      "status-file", "input-script"};
+    static const std::vector<std::string> names = {
+        "level", "dojo", "screen", "warp",        "dojo-key",     "dojo-time", "seed",
+        "msaa",  "help", "fire",   "status-file", "input-script", "audio-out"};
     return names;
 }
 const std::vector<std::string>& game_app_flags() {
@@ -98,6 +98,9 @@ void GameApp::load(const std::filesystem::path& path, bool dojo, Screen then) {
                                  s->view =
                                      WorldView::build(s->level, *s->game, assets_,
                                                       render::level_scene_options(renderer_.settings()));
+                                 if (audio_)
+                                     s->sounds =
+                                         std::make_unique<soundscape::Soundscape>(audio_->engine(), s->level);
                                  return {};
                              }});
     if (dojo) {
@@ -158,9 +161,7 @@ void GameApp::apply_warp() {
     g.teleport_player(Vec3(v[0], v[1], v[2]), radians(v[3]), radians(v[4]));
     // A few steps so the caption and interaction target settle at the new place.
     for (int i = 0; i < 12; ++i) {
-        session_->view->before_step(g);
-        g.step({});
-        session_->view->after_step(g, static_cast<float>(g.settings().step));
+        advance({}, static_cast<float>(g.settings().step));
     }
 }
 
@@ -177,9 +178,7 @@ void GameApp::pause() {
     if (session_ && session_->game && !session_->game->paused()) {
         game::Input in;
         in.pause = true;
-        session_->view->before_step(*session_->game);
-        session_->game->step(in);
-        session_->view->after_step(*session_->game, 0.0f);
+        advance(in, 0.0f);
     }
 }
 
@@ -187,9 +186,7 @@ void GameApp::resume() {
     if (session_ && session_->game && session_->game->paused()) {
         game::Input in;
         in.pause = true; // toggles back
-        session_->view->before_step(*session_->game);
-        session_->game->step(in);
-        session_->view->after_step(*session_->game, 0.0f);
+        advance(in, 0.0f);
     }
     enter_play();
 }
@@ -231,9 +228,7 @@ void GameApp::fixed_update(double dt) {
         session_->dojo_controller->advance(dt);
     if (!world_runs) return;
     game::Input in = screen_ == Screen::Playing ? input_.gather(events_.state(), options_) : game::Input{};
-    session_->view->before_step(g);
-    g.step(in);
-    session_->view->after_step(g, static_cast<float>(dt));
+    advance(in, static_cast<float>(dt));
     if (g.phase() == game::Phase::Playing) session_->play_seconds += dt;
     if (g.phase() == game::Phase::Dead && g.death_camera().menu_ready && screen_ == Screen::Playing) {
         screen_ = Screen::Dead;
@@ -246,11 +241,38 @@ void GameApp::fixed_update(double dt) {
     }
 }
 
+void GameApp::advance(const game::Input& in, float dt) {
+    auto& g = *session_->game;
+    session_->view->before_step(g);
+    g.step(in);
+    session_->view->after_step(g, dt);
+    if (session_->sounds) session_->sounds->after_step(g);
+}
+
+// The listener is the camera the frame was drawn with; the engine's update (occlusion, gains) runs once.
+void GameApp::update_audio(const shell::FrameInfo& info) {
+    if (!audio_) return;
+    bool updated = false;
+    if (session_ && session_->sounds && session_->view && screen_ != Screen::Loading) {
+        const geometry::Camera& cam = session_->view->camera();
+        session_->sounds->update(*session_->game, {cam.position, cam.forward(), cam.up()},
+                                 static_cast<float>(info.frame_dt));
+        updated = true;
+    }
+    audio_->end_frame(info.frame_dt, updated);
+}
+
 void GameApp::handle_keys() {
     GLFWwindow* w = shell_.window();
     InputState& keys = events_.state();
     const bool esc_pressed = keys.take_press(GLFW_KEY_ESCAPE);
     if (!interactive()) return;
+    if (keys.take_press(GLFW_KEY_M)) { // mute from anywhere, remembered
+        options_.muted = !options_.muted;
+        options_dirty_ = true;
+        save_options_now();
+        if (audio_) audio_->apply_options(options_);
+    }
     // Losing the focus pauses (the mouse is no longer ours); a script's input does not depend on it.
     const bool focus_lost = !scripted_ && !glfwGetWindowAttrib(w, GLFW_FOCUSED);
     if (screen_ == Screen::Playing && (esc_pressed || focus_lost)) {
@@ -285,6 +307,7 @@ void GameApp::render(const shell::FrameInfo& info) {
         empty.instances = &no_instances_;
         empty.lights = &no_lights_;
         stats_ = renderer_.render(empty);
+        update_audio(info);
         return;
     }
     render::SceneFrame frame;
@@ -295,6 +318,7 @@ void GameApp::render(const shell::FrameInfo& info) {
     if (screen_ != Screen::Playing && screen_ != Screen::Paused && screen_ != Screen::Dead)
         frame.view_model = nullptr;
     stats_ = renderer_.render(frame);
+    update_audio(info);
 }
 
 void GameApp::imgui(const shell::FrameInfo& info) {
@@ -307,6 +331,7 @@ void GameApp::imgui(const shell::FrameInfo& info) {
         io.ConfigFlags &= ~ImGuiConfigFlags_NoMouse;
     draw_world_overlay(w, h);
     apply_menu_action(draw_screen(w, h));
+    if (audio_ && screen_ != Screen::Playing) audio_->menu_sounds(ui::buttons_drawn());
     write_status(info);
     if (!shell_.screenshot_mode() && screen_ == Screen::Playing) {
         char text[128];
@@ -372,6 +397,7 @@ MenuAction GameApp::draw_screen(float w, float h) {
         action = options_panel(options_, changed, fonts, w, h);
         options_dirty_ |= changed;
         if (changed) apply_render_options();
+        if (changed && audio_) audio_->apply_options(options_);
         break;
     }
     case Screen::Paused:
@@ -436,6 +462,10 @@ void GameApp::apply_menu_action(MenuAction action) {
 }
 
 Result<void> GameApp::start(const Automation& a) {
+    auto opened = AppAudio::open(a.audio_out);
+    if (!opened) return opened.error();
+    audio_ = std::move(*opened);
+    audio_->apply_options(options_);
     status_path_ = a.status_file;
     script_ = a.script;
     scripted_ = a.scripted;
@@ -465,17 +495,13 @@ Result<void> GameApp::start(const Automation& a) {
         g.teleport_player(Vec3(v[0], v[1], v[2]), radians(v[3]), radians(v[4]));
         // A few steps so the caption and interaction target settle at the new place.
         for (int i = 0; i < 12; ++i) {
-            session_->view->before_step(g);
-            g.step({});
-            session_->view->after_step(g, static_cast<float>(g.settings().step));
+            advance({}, static_cast<float>(g.settings().step));
         }
     }
     if (a.fire) {
         game::Input in;
         in.fire = true;
-        session_->view->before_step(g);
-        g.step(in);
-        session_->view->after_step(g, static_cast<float>(g.settings().step));
+        advance(in, static_cast<float>(g.settings().step));
     }
     if (session_->dojo_controller && a.dojo_key) {
         if (!session_->dojo_controller->press(a.dojo_key))
@@ -495,9 +521,7 @@ Result<void> GameApp::start(const Automation& a) {
         g.damage_player(1.0e6f);
         // Run the death camera to its end so the menu shows.
         for (int i = 0; i < 1000 && !g.death_camera().menu_ready; ++i) {
-            session_->view->before_step(g);
-            g.step({});
-            session_->view->after_step(g, static_cast<float>(g.settings().step));
+            advance({}, static_cast<float>(g.settings().step));
         }
         screen_ = Screen::Dead;
     }
@@ -514,9 +538,7 @@ Result<void> GameApp::start(const Automation& a) {
                 for (int i = 0; i < 4 && g.phase() != game::Phase::Won; ++i) {
                     game::Input in;
                     in.interact = i == 3;
-                    session_->view->before_step(g);
-                    g.step(in);
-                    session_->view->after_step(g, static_cast<float>(g.settings().step));
+                    advance(in, static_cast<float>(g.settings().step));
                 }
             }
         }
@@ -542,6 +564,11 @@ int GameApp::run() {
     save_options_now();
     session_.reset();
     pending_.reset();
+    if (audio_)
+        if (auto finished = audio_->finish(); !finished) {
+            log::error(finished.error().str());
+            if (code == 0) code = 1;
+        }
     return code;
 }
 

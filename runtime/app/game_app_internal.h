@@ -5,6 +5,7 @@
 #include "game_app.h"
 
 #include "anim/dojo.h"
+#include "app_audio.h"
 #include "core/files.h"
 #include "core/log.h"
 #include "core/paths.h"
@@ -19,6 +20,7 @@
 #include "render/scene_renderer.h"
 #include "screens.h"
 #include "shell/hud.h"
+#include "soundscape/soundscape.h"
 #include "step_budget.h"
 #include "world_view.h"
 
@@ -48,6 +50,7 @@ struct Session {
     bool dojo = false;
     std::unique_ptr<game::Game> game;
     std::unique_ptr<WorldView> view;
+    std::unique_ptr<soundscape::Soundscape> sounds; // null when the app has no audio engine
     std::optional<anim::DojoController> dojo_controller;
     DojoDummy dummy;
     double play_seconds = 0.0;
@@ -94,6 +97,7 @@ class GameApp {
         std::filesystem::path status_file; // rewritten each frame with the screen and the game's state
         std::vector<ScriptEvent> script;   // --input-script
         bool scripted = false;
+        std::filesystem::path audio_out; // --audio-out: record the mix to this WAV instead of playing it
     };
     Result<void> start(const Automation& a);
     int run();
@@ -103,6 +107,9 @@ class GameApp {
     Result<void> finish_loading_now();
     void step_loader();
     void fixed_update(double dt);
+    // One game step with its view and sounds (every caller: play, warp, pause, the automation).
+    void advance(const game::Input& in, float dt);
+    void update_audio(const shell::FrameInfo& info);
     void render(const shell::FrameInfo& info);
     void imgui(const shell::FrameInfo& info);
     void draw_world_overlay(float w, float h);
@@ -134,6 +141,7 @@ class GameApp {
     std::uint64_t seed_;
     Options options_;
     bool options_dirty_ = false;
+    std::unique_ptr<AppAudio> audio_; // before the sessions: their Soundscapes play through it
     InputEvents events_;
     PlayerInput input_;
     StepBudget budget_{kMaxStepsPerFrame};

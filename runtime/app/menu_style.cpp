@@ -85,7 +85,7 @@ const std::vector<ButtonRect>& buttons_drawn() {
 
 void record_button(const char* label) {
     const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-    drawn().push_back({label, a.x, a.y, b.x, b.y});
+    drawn().push_back({label, a.x, a.y, b.x, b.y, ImGui::IsItemHovered(), ImGui::IsItemClicked()});
 }
 
 bool big_button(const char* label, const shell::Fonts& fonts, float width_720) {

@@ -37,6 +37,8 @@ bool big_button(const char* label, const shell::Fonts& fonts, float width_720 = 
 struct ButtonRect {
     std::string label;
     float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    bool hovered = false; // under the mouse this frame (the menu's hover sound)
+    bool clicked = false; // pressed this frame (its click sound)
 };
 void begin_frame();
 const std::vector<ButtonRect>& buttons_drawn();

@@ -33,6 +33,12 @@ struct Options {
     // automatic: 1 on GPUs, 0.5 on software rasterisers; else 0.25..1) and the shading quality.
     float render_scale = 0.0f;
     QualityOption quality = QualityOption::Auto;
+    // Sound: master multiplies the effects (shots, robots, doors, the menu's clicks) and the ambience (the
+    // level's ambient loop and its sound emitters); M mutes everything.
+    float master_volume = 0.8f;
+    float effects_volume = 1.0f;
+    float ambience_volume = 0.7f;
+    bool muted = false;
     bool operator==(const Options&) const = default;
 
     static constexpr float kMinSensitivity = 0.1f, kMaxSensitivity = 5.0f;
@@ -60,6 +66,10 @@ inline std::string options_to_json(const Options& o) {
     j["fov_degrees"] = o.fov_degrees;
     j["render_scale"] = o.render_scale;
     j["quality"] = quality_name(o.quality);
+    j["master_volume"] = o.master_volume;
+    j["effects_volume"] = o.effects_volume;
+    j["ambience_volume"] = o.ambience_volume;
+    j["muted"] = o.muted;
     return j.dump(2) + "\n";
 }
 
@@ -85,6 +95,9 @@ inline Options options_from_json(const std::string& text, std::vector<std::strin
     };
     read_number("mouse_sensitivity", o.mouse_sensitivity, Options::kMinSensitivity, Options::kMaxSensitivity);
     read_number("fov_degrees", o.fov_degrees, Options::kMinFov, Options::kMaxFov);
+    read_number("master_volume", o.master_volume, 0.0f, 1.0f);
+    read_number("effects_volume", o.effects_volume, 0.0f, 1.0f);
+    read_number("ambience_volume", o.ambience_volume, 0.0f, 1.0f);
     if (j.contains("render_scale")) {
         const auto& v = j["render_scale"];
         const bool number = v.is_number() && is_finite(v.get<float>());
@@ -106,13 +119,16 @@ inline Options options_from_json(const std::string& text, std::vector<std::strin
             problems.push_back("quality: expected \"auto\", \"full\" or \"fast\", got " + v.dump() +
                                "; using the default \"auto\"");
     }
-    if (j.contains("invert_y")) {
-        if (j["invert_y"].is_boolean())
-            o.invert_y = j["invert_y"].get<bool>();
+    auto read_flag = [&](const char* key, bool& value) {
+        if (!j.contains(key)) return;
+        if (j[key].is_boolean())
+            value = j[key].get<bool>();
         else
-            problems.push_back("invert_y: expected true or false, got " + j["invert_y"].dump() +
-                               "; using the default false");
-    }
+            problems.push_back(std::string(key) + ": expected true or false, got " + j[key].dump() +
+                               "; using the default " + (value ? "true" : "false"));
+    };
+    read_flag("invert_y", o.invert_y);
+    read_flag("muted", o.muted);
     return o;
 }
 

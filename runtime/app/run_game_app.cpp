@@ -33,12 +33,16 @@ void print_help() {
         "  --dojo-time S     ... and advance the animation S seconds, then hold it (for screenshots)\n"
         "  --seed N          the game's random seed (default 1)\n"
         "  --status-file F   rewrite F each frame the state changes: screen, buttons, player, doors, ...\n"
+        "  --audio-out F.wav record the sound mix to a 48 kHz stereo WAV instead of playing it (with\n"
+        "                    --screenshot --frames the frames are a fixed 1/60 s: the same run, the same "
+        "file)\n"
         "  --input-script F  timed key/mouse events by frame (see runtime/app/input_script.h); with\n"
         "                    --screenshot the frames are a fixed 1/60 s, so the run is deterministic\n"
         "  --view MODEL      (renderer) one model on a turntable; --camera x,y,z,yaw,pitch: render-only "
         "view\n"
         "  --headless ...    run the game without a window (see killswitch --headless --help)\n"
-        "controls: WASD/arrows move, mouse looks, click shoots, Space jumps, E interacts, Esc pauses\n"
+        "controls: WASD/arrows move, mouse looks, click shoots, Space jumps, E interacts, Esc pauses, M "
+        "mutes\n"
         "options file: $XDG_CONFIG_HOME/killswitch/options.json (or ~/.config/killswitch/options.json)\n");
 }
 
@@ -77,6 +81,13 @@ int run_game_app(const CommandLine& cl, const shell::ShellConfig& shell_config) 
         automation.scripted = true;
     }
     automation.fire = cl.has("fire");
+    if (auto out = cl.get("audio-out")) {
+        if (out->empty()) {
+            log::error("--audio-out: give a file name, e.g. --audio-out run.wav");
+            return 2;
+        }
+        automation.audio_out = paths::resolve_user_path(*out);
+    }
     if (auto warp = cl.get("warp")) {
         std::array<float, 5> v{};
         if (!parse_floats(*warp, v.data(), 5)) {

@@ -179,7 +179,7 @@ MenuAction options_panel(Options& o, bool& changed, const shell::Fonts& fonts, f
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
     MenuAction action = MenuAction::None;
     const float s = ui::ui_scale(h);
-    ui::begin_panel("##options", "Options", 640, 440, w, h, fonts);
+    ui::begin_panel("##options", "Options", 640, 600, w, h, fonts);
     ImGui::PushStyleColor(ImGuiCol_FrameBg, IM_COL32(205, 214, 218, 255));
     ImGui::PushStyleColor(ImGuiCol_FrameBgHovered, IM_COL32(190, 205, 212, 255));
     ImGui::PushStyleColor(ImGuiCol_FrameBgActive, IM_COL32(180, 198, 206, 255));
@@ -234,6 +234,21 @@ MenuAction options_panel(Options& o, bool& changed, const shell::Fonts& fonts, f
             changed = true;
         }
     }
+    auto volume = [&](const char* text, const char* id, float& value) {
+        label(text);
+        float percent = value * 100.0f;
+        if (ImGui::SliderFloat(id, &percent, 0.0f, 100.0f, "%.0f %%", ImGuiSliderFlags_AlwaysClamp)) {
+            value = percent / 100.0f;
+            changed = true;
+        }
+        ui::record_button(text);
+    };
+    volume("Master volume", "##master", o.master_volume);
+    volume("Effects volume", "##effects", o.effects_volume);
+    volume("Music & ambience", "##ambience", o.ambience_volume);
+    label("Mute (M)");
+    changed |= ImGui::Checkbox("##mute", &o.muted);
+    ui::record_button("Mute (M)");
     ImGui::SetCursorPosX(40 * s);
     ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(90, 100, 110, 255));
     ImGui::TextUnformatted(("Saved to " + options_path().string()).c_str());
