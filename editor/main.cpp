@@ -6,6 +6,7 @@
 #include "model/script.h"
 #include "shell/app_shell.h"
 #include "ui/editor_app.h"
+#include "ui/sound_audition.h"
 
 #include <cstdio>
 
@@ -100,6 +101,7 @@ int main(int argc, char** argv) {
     }
     if (auto status = cl->get("status-file")) options.status_file = paths::resolve_user_path(*status);
     options.executable_dir = std::filesystem::absolute(argv[0]).parent_path();
+    options.audition = editor::ui::make_sound_audition();
     auto shell = shell::AppShell::create(*config);
     if (!shell) {
         log::error(shell.error().str());

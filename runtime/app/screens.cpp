@@ -179,7 +179,8 @@ MenuAction options_panel(Options& o, bool& changed, const shell::Fonts& fonts, f
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
     MenuAction action = MenuAction::None;
     const float s = ui::ui_scale(h);
-    ui::begin_panel("##options", "Options", 640, 600, w, h, fonts);
+    // Two columns (controls and picture | sound) so every row fits a 270-pixel-high window too.
+    ui::begin_panel("##options", "Options", 1000, 440, w, h, fonts);
     ImGui::PushStyleColor(ImGuiCol_FrameBg, IM_COL32(205, 214, 218, 255));
     ImGui::PushStyleColor(ImGuiCol_FrameBgHovered, IM_COL32(190, 205, 212, 255));
     ImGui::PushStyleColor(ImGuiCol_FrameBgActive, IM_COL32(180, 198, 206, 255));
@@ -190,13 +191,15 @@ MenuAction options_panel(Options& o, bool& changed, const shell::Fonts& fonts, f
     ImGui::PushStyleVar(ImGuiStyleVar_GrabMinSize, 18.0f * s);
     ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(10 * s, 9 * s));
     if (fonts.body) ImGui::PushFont(fonts.body);
-    const float label_w = 230 * s;
+    const float column_w = (ImGui::GetWindowWidth() - 100 * s) * 0.5f, label_w = 200 * s;
+    const float top = ImGui::GetCursorPosY();
+    float column_x = 40 * s;
     auto label = [&](const char* text) {
-        ImGui::SetCursorPosX(40 * s);
+        ImGui::SetCursorPosX(column_x);
         ImGui::AlignTextToFramePadding();
         ImGui::TextUnformatted(text);
-        ImGui::SameLine(40 * s + label_w);
-        ImGui::SetNextItemWidth(ImGui::GetWindowWidth() - label_w - 80 * s);
+        ImGui::SameLine(column_x + label_w);
+        ImGui::SetNextItemWidth(column_w - label_w);
     };
     label("Mouse sensitivity");
     changed |= ImGui::SliderFloat("##sens", &o.mouse_sensitivity, Options::kMinSensitivity,
@@ -234,6 +237,10 @@ MenuAction options_panel(Options& o, bool& changed, const shell::Fonts& fonts, f
             changed = true;
         }
     }
+    const float bottom = ImGui::GetCursorPosY();
+    // The sound column.
+    column_x = 60 * s + column_w;
+    ImGui::SetCursorPosY(top);
     auto volume = [&](const char* text, const char* id, float& value) {
         label(text);
         float percent = value * 100.0f;
@@ -244,11 +251,12 @@ MenuAction options_panel(Options& o, bool& changed, const shell::Fonts& fonts, f
         ui::record_button(text);
     };
     volume("Master volume", "##master", o.master_volume);
-    volume("Effects volume", "##effects", o.effects_volume);
+    volume("Effects", "##effects", o.effects_volume);
     volume("Music & ambience", "##ambience", o.ambience_volume);
     label("Mute (M)");
     changed |= ImGui::Checkbox("##mute", &o.muted);
     ui::record_button("Mute (M)");
+    ImGui::SetCursorPosY(std::max(bottom, ImGui::GetCursorPosY()));
     ImGui::SetCursorPosX(40 * s);
     ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(90, 100, 110, 255));
     ImGui::TextUnformatted(("Saved to " + options_path().string()).c_str());

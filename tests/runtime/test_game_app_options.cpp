@@ -21,6 +21,10 @@ TEST_CASE("options: save then load gives the same options, in a folder that did 
     o.fov_degrees = 90.0f;
     o.render_scale = 0.5f;
     o.quality = runtime::QualityOption::Fast;
+    o.master_volume = 0.35f;
+    o.effects_volume = 0.5f;
+    o.ambience_volume = 0.0f;
+    o.muted = true;
     REQUIRE(runtime::save_options(path, o).ok());
     CHECK(runtime::load_options(path) == o);
     // Saving again replaces the file whole (no temporary left beside it).
@@ -65,6 +69,10 @@ TEST_CASE("options: bad files give defaults (per field) and a warning naming the
         {R"({"render_scale": "half"})", "render_scale"},
         {R"({"quality": "ultra"})", "quality"},
         {R"({"quality": 1})", "quality"},
+        {R"({"master_volume": 1.5})", "master_volume"},
+        {R"({"effects_volume": -0.1})", "effects_volume"},
+        {R"({"ambience_volume": "loud"})", "ambience_volume"},
+        {R"({"muted": 1})", "muted"},
     };
     for (const auto& c : cases) {
         CAPTURE(c.text);
