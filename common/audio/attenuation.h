@@ -7,6 +7,8 @@
 // faded linearly to silence over the last quarter before `max_distance`. A rifle shot (ref 8, max 150) is
 // -6 dB at 16 units, -18 dB at 64, -25 dB at 120 and silent past 150; the defaults (ref 4, max 64) suit
 // footsteps, doors and pickups.
+#include "core/math.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -25,6 +27,19 @@ inline float distance_gain(float distance, float ref_distance, float max_distanc
     const float fade_from = kFadeStart * max;
     const float fade = distance <= fade_from ? 1.0f : (max - distance) / (max - fade_from);
     return inverse * fade;
+}
+
+// The back of the head: a sound behind the listener loses highs (head shadow), so front and back, which
+// stereo panning alone cannot tell apart, sound different. The multiplier of the highs (the low-pass
+// filter's GAINHF): 1 anywhere in front, falling with the angle to kRearGainHf straight behind.
+inline constexpr float kRearGainHf = 0.6f;
+
+// `forward`: the listener's unit view direction; `to_source`: from the listener to the sound.
+inline float rear_highs(const Vec3& forward, const Vec3& to_source) {
+    const float len = glm::length(to_source);
+    if (!(len > 1e-4f) || !std::isfinite(len)) return 1.0f;
+    const float cosine = glm::dot(forward, to_source) / len;
+    return 1.0f - (1.0f - kRearGainHf) * std::clamp(-cosine, 0.0f, 1.0f);
 }
 
 } // namespace ks::audio

@@ -21,8 +21,9 @@ struct AudioEngine::Impl {
         float volume = 1.0f;
         float ref_distance = kDefaultRefDistance;
         float max_distance = kDefaultMaxDistance;
-        float applied_gain = -1.0f;      // the AL_GAIN last set (skip redundant calls)
-        float applied_occlusion = -1.0f; // the occlusion amount the filter last got
+        float applied_gain = -1.0f;        // the AL_GAIN last set (skip redundant calls)
+        float applied_filter_gain = -1.0f; // the low-pass gains the filter last got
+        float applied_filter_hf = -1.0f;
     };
 
     Impl(SoundBank sounds, const EngineSettings& settings);
@@ -40,7 +41,8 @@ struct AudioEngine::Impl {
     float base_gain(int slot) const;          // volume, bus and distance
     float occlusion_gain(float amount) const; // the broadband part of occlusion
     ALuint buffer_for(int sound);             // uploads the sound on first use; 0 on failure
-    void apply_filter(int slot, float amount);
+    // The direct path's low-pass: occlusion `amount` (0..1) and the rear shading `rear_hf` (rear_highs()).
+    void apply_filter(int slot, float amount, float rear_hf);
     void retire_ended_voices();
     void start_pending_voices();
 
@@ -55,6 +57,7 @@ struct AudioEngine::Impl {
     std::vector<Vec3> positions;
     std::vector<ALuint> batch; // sources to start or pause together
     Vec3 listener{0.0f};
+    Vec3 listener_forward{0.0f, 0.0f, -1.0f};
     Volumes volumes;
     bool game_paused = false;
     int rays_last_update = 0;

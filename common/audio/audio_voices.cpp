@@ -99,15 +99,20 @@ ALuint AudioEngine::Impl::buffer_for(int sound) {
     return buffer;
 }
 
-void AudioEngine::Impl::apply_filter(int slot, float amount) {
+void AudioEngine::Impl::apply_filter(int slot, float amount, float rear_hf) {
     Voice& v = voices[static_cast<std::size_t>(slot)];
-    if (filters.empty() || std::abs(amount - v.applied_occlusion) < 1e-3f) return;
+    if (filters.empty()) return;
+    const float gain = lerp(1.0f, kBlockedGain, amount),
+                gain_hf = lerp(1.0f, kBlockedGainHf, amount) * rear_hf;
+    if (std::abs(gain - v.applied_filter_gain) < 1e-3f && std::abs(gain_hf - v.applied_filter_hf) < 1e-3f)
+        return;
     const ALuint filter = filters[static_cast<std::size_t>(slot)];
-    al.filter_f(filter, AL_LOWPASS_GAIN, lerp(1.0f, kBlockedGain, amount));
-    al.filter_f(filter, AL_LOWPASS_GAINHF, lerp(1.0f, kBlockedGainHf, amount));
+    al.filter_f(filter, AL_LOWPASS_GAIN, gain);
+    al.filter_f(filter, AL_LOWPASS_GAINHF, gain_hf);
     // A source copies the filter's parameters when it is attached, so attach it again after each change.
     alSourcei(sources[static_cast<std::size_t>(slot)], AL_DIRECT_FILTER, static_cast<ALint>(filter));
-    v.applied_occlusion = amount;
+    v.applied_filter_gain = gain;
+    v.applied_filter_hf = gain_hf;
 }
 
 VoiceHandle AudioEngine::Impl::play(const PlayParams& params) {
@@ -159,7 +164,7 @@ VoiceHandle AudioEngine::Impl::play(const PlayParams& params) {
     const Vec3& p = positions[static_cast<std::size_t>(claim.slot)];
     alSource3f(source, AL_POSITION, p.x, p.y, p.z);
     if (voice.positional) occlusion.start(claim.slot);
-    apply_filter(claim.slot, 0.0f);
+    apply_filter(claim.slot, 0.0f, 1.0f);
     return pool.handle(claim.slot);
 }
 
@@ -230,7 +235,12 @@ void AudioEngine::Impl::update(float dt, BlockedQuery blocked) {
             alSourcef(sources[static_cast<std::size_t>(slot)], AL_GAIN, gain);
             v.applied_gain = gain;
         }
-        apply_filter(slot, amount);
+        float rear_hf = 1.0f;
+        if (v.positional) {
+            const Vec3 to = positions[static_cast<std::size_t>(slot)] - listener;
+            rear_hf = rear_highs(listener_forward, to);
+        }
+        apply_filter(slot, amount, rear_hf);
     }
     start_pending_voices();
 }
@@ -241,6 +251,7 @@ void AudioEngine::Impl::set_listener(Vec3 position, Vec3 forward, Vec3 up) {
     if (fl < 1e-6f || ul < 1e-6f || glm::length(glm::cross(forward, up)) < 1e-6f * fl * ul) return;
     listener = position;
     const Vec3 f = forward / fl, u = up / ul;
+    listener_forward = f;
     const ALfloat orientation[6] = {f.x, f.y, f.z, u.x, u.y, u.z};
     alListener3f(AL_POSITION, position.x, position.y, position.z);
     alListenerfv(AL_ORIENTATION, orientation);

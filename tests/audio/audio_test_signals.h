@@ -60,6 +60,23 @@ inline double high_band_rms(const std::vector<std::int16_t>& stereo, double cuto
     return n ? std::sqrt(sum / static_cast<double>(n)) : 0.0;
 }
 
+// RMS of the left channel after a Butterworth low-pass (RBJ biquad) at `cutoff` Hz.
+inline double low_band_rms(const std::vector<std::int16_t>& stereo, double cutoff, double rate = 48000.0) {
+    const double w = 2.0 * 3.14159265358979 * cutoff / rate, alpha = std::sin(w) / (2.0 * std::sqrt(0.5));
+    const double c = std::cos(w), a0 = 1.0 + alpha;
+    const double b0 = (1.0 - c) / 2.0 / a0, b1 = (1.0 - c) / a0, b2 = b0;
+    const double a1 = -2.0 * c / a0, a2 = (1.0 - alpha) / a0;
+    double x1 = 0, x2 = 0, y1 = 0, y2 = 0, sum = 0;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < stereo.size(); i += 2, ++n) {
+        const double x = stereo[i];
+        const double y = b0 * x + b1 * x1 + b2 * x2 - a1 * y1 - a2 * y2;
+        x2 = x1, x1 = x, y2 = y1, y1 = y;
+        sum += y * y;
+    }
+    return n ? std::sqrt(sum / static_cast<double>(n)) : 0.0;
+}
+
 inline double db(double ratio) {
     return 20.0 * std::log10(ratio);
 }

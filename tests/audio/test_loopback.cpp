@@ -58,6 +58,31 @@ TEST_CASE("loopback: a source to the listener's left is louder in the left chann
     CHECK(left_over_right_db(Vec3(-3.0f, 0.0f, -3.0f), Vec3(0.0f, 0.0f, 1.0f)) < -10.0);
 }
 
+TEST_CASE("loopback: a source behind the listener is duller than the same source in front") {
+    // Stereo panning puts front and back in the same place; the rear shading (attenuation.h, rear_highs:
+    // highs x0.6 at the filter's 5 kHz reference straight behind) tells them apart. OpenAL Soft's stereo
+    // decode itself makes a source straight behind 3.4 dB quieter than in front, at all frequencies.
+    auto render_at = [](Vec3 position) {
+        AudioEngine engine = loopback();
+        engine.play(noise_at(position));
+        engine.update(kFrame);
+        return test::render(engine, kHalfSecond);
+    };
+    const auto front = render_at(Vec3(0.0f, 0.0f, -6.0f)), behind = render_at(Vec3(0.0f, 0.0f, 6.0f));
+    const auto side = render_at(Vec3(-6.0f, 0.0f, 0.0f));
+    const double lows = test::db(test::low_band_rms(behind, 1000.0) / test::low_band_rms(front, 1000.0));
+    const double highs = test::db(test::high_band_rms(behind, 5000.0) / test::high_band_rms(front, 5000.0));
+    MESSAGE("behind vs in front: below 1 kHz " << lows << " dB, above 5 kHz " << highs << " dB");
+    CHECK(lows > -5.0);        // the body of the sound is still clearly heard
+    CHECK(highs < lows - 5.0); // duller, not just quieter
+    // Beside the listener nothing is shaded.
+    CHECK(test::high_band_rms(side, 5000.0) / test::rms(side, 0) ==
+          doctest::Approx(test::high_band_rms(front, 5000.0) / test::rms(front, 0)).epsilon(0.15));
+    CHECK(rear_highs(Vec3(0, 0, -1), Vec3(0, 0, -5)) == 1.0f);
+    CHECK(rear_highs(Vec3(0, 0, -1), Vec3(0, 0, 5)) == doctest::Approx(kRearGainHf));
+    CHECK(rear_highs(Vec3(0, 0, -1), Vec3(0.0f)) == 1.0f);
+}
+
 TEST_CASE("loopback: distance attenuation follows attenuation.h, silent past the max distance") {
     auto level_at = [](float distance) {
         AudioEngine engine = loopback();

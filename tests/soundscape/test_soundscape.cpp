@@ -89,6 +89,28 @@ TEST_CASE("a robot to the player's left is louder in the left channel; turning r
     CHECK(s.motors_running() == 1);
 }
 
+TEST_CASE("a robot behind the player sounds duller than one in front: front and back are told apart") {
+    auto listen_to_robot_at = [](Vec3 feet) {
+        auto lv = flat_level();
+        lv.settings.ambient_sound.value.clear();
+        auto& robot = add_robot(lv, feet);
+        robot.as<level::RobotProps>().eye_radius_min = 0.0f;
+        robot.as<level::RobotProps>().eye_radius_max = 0.0f;
+        auto g = make_game(lv);
+        audio::AudioEngine engine = loopback();
+        soundscape::Soundscape s(engine, lv);
+        return play_and_listen(*g, s, engine, 0.6, 0.3);
+    };
+    const auto ahead = listen_to_robot_at(Vec3(0.0f, 0.0f, -12.0f)),
+               behind = listen_to_robot_at(Vec3(0.0f, 0.0f, 12.0f));
+    const double lows = test::db(test::low_band_rms(behind, 1000.0) / test::low_band_rms(ahead, 1000.0));
+    const double highs = test::db(test::high_band_rms(behind, 5000.0) / test::high_band_rms(ahead, 5000.0));
+    MESSAGE("robot behind vs ahead: below 1 kHz ", lows, " dB, above 5 kHz ", highs, " dB");
+    CHECK(std::abs(test::db(test::rms(behind, 0) / test::rms(behind, 1))) < 1.0); // centred, like ahead
+    CHECK(lows > -6.0);
+    CHECK(highs < lows - 5.0);
+}
+
 TEST_CASE("a wall between the player and a sound muffles it: quieter, and the highs more than the rest") {
     auto measure = [](bool wall) {
         const auto lv = emitter_level(wall);
