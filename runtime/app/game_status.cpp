@@ -22,6 +22,9 @@ void GameApp::write_status(const shell::FrameInfo& info) {
     add("options sensitivity %.2f fov %.0f invert_y %d render_scale %.2f quality %s",
         options_.mouse_sensitivity, options_.fov_degrees, options_.invert_y ? 1 : 0, options_.render_scale,
         quality_name(options_.quality));
+    // What the renderer made of them (automatic values resolved for this GL driver).
+    add("renderer render_scale %.2f quality %s", renderer_.render_scale(),
+        renderer_.quality() == render::RenderQuality::Fast ? "fast" : "full");
     add("sound master %.2f effects %.2f ambience %.2f muted %d", options_.master_volume,
         options_.effects_volume, options_.ambience_volume, options_.muted ? 1 : 0);
     if (audio_) {
@@ -29,9 +32,6 @@ void GameApp::write_status(const shell::FrameInfo& info) {
         add("audio output %d voices %d cues %d", a.output ? 1 : 0, a.active_voices,
             session_ && session_->sounds ? session_->sounds->cues_played() : 0);
     }
-    // What the renderer made of them (automatic values resolved for this GL driver).
-    add("renderer render_scale %.2f quality %s", renderer_.render_scale(),
-        renderer_.quality() == render::RenderQuality::Fast ? "fast" : "full");
     for (const auto& b : ui::buttons_drawn())
         add("button %.0f %.0f %.0f %.0f %s", b.x0, b.y0, b.x1, b.y1, b.label.c_str());
     if (session_ && session_->game) {
