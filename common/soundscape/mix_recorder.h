@@ -4,7 +4,7 @@
 // needed), mixed to 48 kHz 16-bit stereo. Deterministic: the same run (seed, level, inputs) writes the same
 // bytes, because the mix depends only on the calls made, never on a clock.
 #include "audio/audio_engine.h"
-#include "audio/wav.h"
+#include "audio/loopback_recording.h"
 #include "core/result.h"
 #include "soundscape/soundscape.h"
 
@@ -24,11 +24,8 @@ class MixRecorder {
 
     // After each game step: the step's sounds, the listener at the player's eye, one step of samples.
     Result<void> after_step(const game::Game& game);
-    // For a driver that steps and draws separately (the windowed game): the cues of one step...
-    void step_sounds(const game::Game& game) { soundscape_->after_step(game); }
-    // ...and `seconds` of mix heard from `listener` (a frame).
+    // `seconds` more of the mix heard from `listener` with no new step (the tail after a run ends).
     Result<void> render(const game::Game& game, const Listener& listener, double seconds);
-    void set_paused(bool paused) { soundscape_->set_paused(paused); }
     // Writes the header's sizes and moves the file into place.
     Result<void> finish();
 
@@ -39,10 +36,7 @@ class MixRecorder {
     MixRecorder() = default;
     std::unique_ptr<audio::AudioEngine> engine_;
     std::unique_ptr<Soundscape> soundscape_;
-    std::unique_ptr<audio::WavWriter> writer_;
-    std::vector<std::int16_t> buffer_;
-    double owed_frames_ = 0.0; // fractional frames carried between renders so no time is lost
-    int sample_rate_ = 48000;
+    std::unique_ptr<audio::LoopbackRecording> recording_;
 };
 
 } // namespace ks::soundscape

@@ -17,11 +17,10 @@ Result<std::unique_ptr<AppAudio>> AppAudio::open(const std::filesystem::path& re
     }
     auto engine = audio::AudioEngine::open_loopback(std::move(bank));
     if (!engine) return engine.error();
-    auto writer = audio::WavWriter::open(record_to, engine->sample_rate(), 2);
-    if (!writer) return writer.error();
+    auto recording = audio::LoopbackRecording::open(record_to, engine->sample_rate());
+    if (!recording) return recording.error();
     a->engine_ = std::make_unique<audio::AudioEngine>(std::move(*engine));
-    a->recording_ = std::make_unique<audio::WavWriter>(std::move(*writer));
-    a->buffer_.resize(static_cast<std::size_t>(a->engine_->sample_rate()) / 5 * 2);
+    a->recording_ = std::make_unique<audio::LoopbackRecording>(std::move(*recording));
     return a;
 }
 
@@ -66,20 +65,10 @@ void AppAudio::menu_sounds(const std::vector<ui::ButtonRect>& buttons) {
 
 void AppAudio::end_frame(double seconds, bool engine_updated) {
     if (!engine_updated) engine_->update(static_cast<float>(seconds));
-    if (!recording_ || !(seconds > 0.0) || !std::isfinite(seconds)) return;
-    owed_frames_ += seconds * engine_->sample_rate();
-    auto frames = static_cast<int>(std::floor(owed_frames_ + 1e-6));
-    owed_frames_ -= frames;
-    const int chunk = static_cast<int>(buffer_.size() / 2);
-    while (frames > 0) {
-        const int n = std::min(frames, chunk);
-        engine_->render(buffer_.data(), n);
-        if (auto w = recording_->write(buffer_.data(), n); !w) {
-            log::error(w.error().str(), " (recording stopped)");
-            recording_.reset();
-            return;
-        }
-        frames -= n;
+    if (!recording_) return;
+    if (auto recorded = recording_->record(*engine_, seconds); !recorded) {
+        log::error(recorded.error().str(), " (recording stopped)");
+        recording_.reset();
     }
 }
 

@@ -4,7 +4,7 @@
 // a loopback engine whose mix is written to that file frame by frame instead of played (deterministic with
 // --screenshot --frames: fixed 1/60 s frames). Sessions' Soundscapes play through engine().
 #include "audio/audio_engine.h"
-#include "audio/wav.h"
+#include "audio/loopback_recording.h"
 #include "core/result.h"
 #include "menu_style.h"
 #include "options.h"
@@ -37,9 +37,7 @@ class AppAudio {
     void play_ui(const char* sound);
 
     std::unique_ptr<audio::AudioEngine> engine_;
-    std::unique_ptr<audio::WavWriter> recording_;
-    std::vector<std::int16_t> buffer_;
-    double owed_frames_ = 0.0;
+    std::unique_ptr<audio::LoopbackRecording> recording_;
     std::string hovered_;
 };
 

@@ -43,11 +43,14 @@ inline double rms_both(const std::vector<std::int16_t>& stereo) {
     return std::sqrt(0.5 * (l * l + r * r));
 }
 
-// RMS of the left channel after a Butterworth high-pass (RBJ biquad) at `cutoff` Hz.
-inline double high_band_rms(const std::vector<std::int16_t>& stereo, double cutoff, double rate = 48000.0) {
+// RMS of the left channel after a second-order Butterworth filter (RBJ biquad) at `cutoff` Hz: a high-pass
+// (the energy above the cutoff) or a low-pass (below it).
+inline double band_rms(const std::vector<std::int16_t>& stereo, double cutoff, bool high_pass,
+                       double rate = 48000.0) {
     const double w = 2.0 * 3.14159265358979 * cutoff / rate, alpha = std::sin(w) / (2.0 * std::sqrt(0.5));
     const double c = std::cos(w), a0 = 1.0 + alpha;
-    const double b0 = (1.0 + c) / 2.0 / a0, b1 = -(1.0 + c) / a0, b2 = b0;
+    const double b0 = (high_pass ? (1.0 + c) : (1.0 - c)) / 2.0 / a0;
+    const double b1 = (high_pass ? -(1.0 + c) : (1.0 - c)) / a0, b2 = b0;
     const double a1 = -2.0 * c / a0, a2 = (1.0 - alpha) / a0;
     double x1 = 0, x2 = 0, y1 = 0, y2 = 0, sum = 0;
     std::size_t n = 0;
@@ -60,21 +63,11 @@ inline double high_band_rms(const std::vector<std::int16_t>& stereo, double cuto
     return n ? std::sqrt(sum / static_cast<double>(n)) : 0.0;
 }
 
-// RMS of the left channel after a Butterworth low-pass (RBJ biquad) at `cutoff` Hz.
-inline double low_band_rms(const std::vector<std::int16_t>& stereo, double cutoff, double rate = 48000.0) {
-    const double w = 2.0 * 3.14159265358979 * cutoff / rate, alpha = std::sin(w) / (2.0 * std::sqrt(0.5));
-    const double c = std::cos(w), a0 = 1.0 + alpha;
-    const double b0 = (1.0 - c) / 2.0 / a0, b1 = (1.0 - c) / a0, b2 = b0;
-    const double a1 = -2.0 * c / a0, a2 = (1.0 - alpha) / a0;
-    double x1 = 0, x2 = 0, y1 = 0, y2 = 0, sum = 0;
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < stereo.size(); i += 2, ++n) {
-        const double x = stereo[i];
-        const double y = b0 * x + b1 * x1 + b2 * x2 - a1 * y1 - a2 * y2;
-        x2 = x1, x1 = x, y2 = y1, y1 = y;
-        sum += y * y;
-    }
-    return n ? std::sqrt(sum / static_cast<double>(n)) : 0.0;
+inline double high_band_rms(const std::vector<std::int16_t>& stereo, double cutoff) {
+    return band_rms(stereo, cutoff, true);
+}
+inline double low_band_rms(const std::vector<std::int16_t>& stereo, double cutoff) {
+    return band_rms(stereo, cutoff, false);
 }
 
 inline double db(double ratio) {
