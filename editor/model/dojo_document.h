@@ -28,11 +28,11 @@ class DojoDocument {
     bool dirty() const { return dirty_; }
     const DojoHistory& history() const { return history_; }
 
-    // Runs `edit(file)`, one of the dojo's edit functions bound to its arguments; on success it is one undo
-    // step named `name`. Returns what the edit returns.
-    template <class Edit>
-    auto edit(std::string name, Edit&& edit) -> decltype(edit(std::declval<anim::AnimationFile&>())) {
-        auto result = apply_dojo_edit(file_, history_, std::move(name), [&] { return edit(file_); });
+    // Runs `change(file)`, one of the dojo's edit functions bound to its arguments; on success it is one
+    // undo step named `name`. Returns what the edit returns.
+    template <class Change>
+    auto edit(std::string name, Change&& change) -> decltype(change(std::declval<anim::AnimationFile&>())) {
+        auto result = apply_dojo_edit(file_, history_, std::move(name), [&] { return change(file_); });
         if (result) dirty_ = true;
         return result;
     }

@@ -11,7 +11,7 @@ namespace ks::editor {
 namespace fs = std::filesystem;
 namespace {
 
-constexpr double kTimeTolerance = 1e-9;  // sums of a file's durations
+constexpr double kFileTolerance = 1e-9;  // a file's doubles, and sums of its durations
 constexpr double kCurveTolerance = 1e-3; // sampled in float: degrees or units
 
 template <class T>
@@ -241,14 +241,14 @@ class DojoRunner {
                               (next.empty() ? "" : " " + next) + "'");
         }
         case DojoOp::ExpectClipDuration:
-            return expect(close(def.duration(), s.number, kTimeTolerance),
+            return expect(close(def.duration(), s.number, kFileTolerance),
                           name + " lasts " + number_text(def.duration()) + " s, expected " +
                               number_text(s.number));
         case DojoOp::ExpectBlend: {
             auto to = clip(s.words[1]);
             if (!to) return to.error();
             const double actual = blend_grid(file).at(c, *to).seconds;
-            return expect(close(actual, s.number, kTimeTolerance),
+            return expect(close(actual, s.number, kFileTolerance),
                           "blend " + s.words[0] + " -> " + s.words[1] + " is " + number_text(actual) +
                               " s, expected " + number_text(s.number));
         }
@@ -269,7 +269,7 @@ class DojoRunner {
             return expect(false, "clip '" + def.name + "' has no event " + std::to_string(s.index) +
                                      " (it has " + std::to_string(def.events.size()) + ")");
         const anim::ClipEvent& ev = def.events[e];
-        bool match = close(ev.time, s.number, kTimeTolerance);
+        bool match = close(ev.time, s.number, kFileTolerance);
         if (s.words.size() > 1) match = match && ev.name == s.words[1];
         if (s.words.size() > 2)
             match = match && ev.sound == (s.words[2] == "none" ? std::string() : s.words[2]);
@@ -297,7 +297,7 @@ class DojoRunner {
         if (s.op == DojoOp::ExpectKeyTime) {
             double end = 0;
             for (std::size_t p = 0; p <= k; ++p) end += def.phases[p].duration;
-            return expect(close(end, s.number, kTimeTolerance),
+            return expect(close(end, s.number, kFileTolerance),
                           "key " + std::to_string(s.index) + " of clip '" + def.name + "' is at " +
                               number_text(end) + " s, expected " + number_text(s.number));
         }
@@ -308,7 +308,7 @@ class DojoRunner {
         if (!key.keyed)
             return expect(false, s.words[1] + " has no " + s.words[2] + " key in key " +
                                      std::to_string(s.index) + " of clip '" + def.name + "'");
-        return expect(close(key.target_value, s.number, kTimeTolerance),
+        return expect(close(key.target_value, s.number, kFileTolerance),
                       s.words[1] + " " + s.words[2] + " in key " + std::to_string(s.index) + " of clip '" +
                           def.name + "' is " + number_text(key.target_value) + ", expected " +
                           number_text(s.number));
