@@ -5,6 +5,7 @@
 // the shipped robot.json is never touched.
 #include "anim/clip_io.h"
 #include "model/dojo_keys.h"
+#include "runtime/play_session.h"
 #include "runtime/screen_image.h"
 #include "test_support.h"
 
@@ -58,9 +59,12 @@ ScriptedDojo dojo_script(const test::ScratchDir& dir, const fs::path& root, cons
     const auto script = dir / (name + ".txt");
     std::ofstream(script) << "5 key tab tap\n" << (click.empty() ? "" : "8 click " + click + "\n");
     const auto file = dir / (name + ".png"), status = dir / (name + "_status.txt");
+    // An X server of its own: a pointer moved on the shared display (a parallel xdotool test) would reach
+    // ImGui instead of the script's.
+    static const test::PrivateDisplay display;
     auto run = test::run_command(
-        "env KS_DATA_DIR=" + root.string() + " XDG_CONFIG_HOME=" + (dir / "config").string() + " " +
-        (test::bin_dir() / "killswitch").string() +
+        "env DISPLAY=" + display.name() + " KS_DATA_DIR=" + root.string() +
+        " XDG_CONFIG_HOME=" + (dir / "config").string() + " " + (test::bin_dir() / "killswitch").string() +
         " --width 640 --height 360 --frames 70 --dojo --input-script " + script.string() + " --status-file " +
         status.string() + " --screenshot " + file.string());
     INFO(run.output);
