@@ -20,6 +20,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace ks::game {
@@ -45,6 +46,10 @@ inline BodyKind user_kind(std::uint64_t user) {
 inline std::uint32_t user_index(std::uint64_t user) {
     return static_cast<std::uint32_t>(user);
 }
+
+// The robot's shot (the ray, the RobotShot event, the damage) happens when its `shooting` clip passes an
+// event of this name, so animators time the shot in the clip; a shooting clip without one fires at its start.
+inline constexpr std::string_view kMuzzleFlashEvent = "muzzle_flash";
 
 // The robot model's yaw (the level's yaw + 90°): one conversion for every view, kept with the entity shapes.
 using level::robot_model_yaw;
@@ -263,6 +268,8 @@ class Game {
     void robot_wander(Robot& r, std::size_t index, float dt);
     void walk_patrol(Robot& r, float dt);
     void robot_fire(std::size_t index);
+    // The step's clip events of robot `index` (after its animation advanced): cues, and the shot.
+    void robot_clip_events(std::size_t index);
     bool robot_sees_player(const Robot& r) const;
     void update_doors(float dt);
     void update_cylinders(float dt);
@@ -325,6 +332,7 @@ class Game {
         int idle = -1, alert = -1, shoot_pose = -1, shooting = -1, shoot_pose_reverse = -1, death = -1;
     } clips_;
     int hand_tip_node_ = -1;
+    bool shot_on_event_ = true; // the shooting clip has a kMuzzleFlashEvent (else it fires at its start)
     float alert_length_ = 0.6f, aim_length_ = 0.3f, death_length_ = 1.8f;
 };
 

@@ -1,6 +1,8 @@
 // Game construction: level entities become physics bodies and game entities.
 #include "game/game.h"
 
+#include "core/log.h"
+#include "core/paths.h"
 #include "game/robot_rig.h"
 
 #include <algorithm>
@@ -9,10 +11,10 @@
 namespace ks::game {
 namespace {
 
+using geometry::Transform;
 using physics::BodyDesc;
 using physics::Motion;
 using physics::Shape;
-using geometry::Transform;
 namespace layer = physics::layer;
 
 Shape physics_shape(const level::PlacedShape& shape) {
@@ -91,6 +93,15 @@ Result<void> Game::find_clips() {
                               {"shoot_pose_reverse", &clips_.shoot_pose_reverse},
                               {"death", &clips_.death}})
         if (auto r = need(name, *slot); !r) return r;
+    const auto& shooting_events = clips.clips[static_cast<std::size_t>(clips_.shooting)].events;
+    shot_on_event_ = std::any_of(shooting_events.begin(), shooting_events.end(),
+                                 [](const anim::ClipEvent& e) { return e.name == kMuzzleFlashEvent; });
+    if (!shot_on_event_) // the robots still shoot, but the animator should know why the timing is off
+        log::warn(paths::asset("animations/robot.json").string(),
+                  ": the \"shooting\" clip has no \"muzzle_flash\" event, so robots fire as the clip starts; "
+                  "add one where the shot should leave the hand, e.g. \"events\": [{\"time\": 0, \"name\": "
+                  "\"muzzle_flash\", \"sound\": \"robot_shot\"}] (the editor's dojo panel adds events on its "
+                  "timeline)");
     alert_length_ = static_cast<float>(clips.clips[clips_.alert].duration);
     aim_length_ = static_cast<float>(clips.clips[clips_.shoot_pose].duration);
     death_length_ = static_cast<float>(clips.clips[clips_.death].duration);

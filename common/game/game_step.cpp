@@ -76,9 +76,7 @@ void Game::step(const Input& raw) {
         if (r.mode == RobotMode::Dead) continue;
         r.feet = world_.transform(r.body).position - Vec3(0, settings_.robot_height * 0.5f, 0);
         robot_anims_[i].advance(dt);
-        for (const anim::FiredEvent& fired : robot_anims_[i].fired_events())
-            push_cue(EventType::ClipCue, r.feet + Vec3(0, settings_.robot_height * 0.5f, 0), r.entity_id,
-                     fired.event->sound);
+        robot_clip_events(i);
         if (r.feet.y < settings_.fall_limit && r.alive()) damage_robot(i, r.health, false);
     }
     if (phase_ == Phase::Playing && player_.feet.y < settings_.fall_limit) damage_player(1e9f);

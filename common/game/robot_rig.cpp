@@ -13,7 +13,12 @@ Result<anim::Rig> rig_with_model_offsets(const anim::Rig& rig, const std::filesy
 }
 
 Result<std::shared_ptr<const anim::AnimationLibrary>> load_robot_animations() {
-    auto lib = anim::load_animation_library(paths::asset("animations/robot.json"));
+    return load_robot_animations(paths::asset("animations/robot.json"));
+}
+
+Result<std::shared_ptr<const anim::AnimationLibrary>>
+load_robot_animations(const std::filesystem::path& clips) {
+    auto lib = anim::load_animation_library(clips);
     if (!lib) return lib.error();
     const auto model = paths::asset("models/robot.gltf");
     auto rig = rig_with_model_offsets(lib->rig, model);

@@ -13,8 +13,11 @@ namespace ks::game {
 // Rest transforms from `gltf` applied to `rig` (names must match; nodes the model lacks keep theirs).
 Result<anim::Rig> rig_with_model_offsets(const anim::Rig& rig, const std::filesystem::path& gltf);
 
-// assets/animations/robot.json compiled for the rig of assets/models/robot.gltf (falls back to the clip
-// file's own rig, with a warning, when the model is missing or unreadable).
+// assets/animations/robot.json (or `clips`: a copy, for tests and tools) compiled for the rig of
+// assets/models/robot.gltf (falls back to the clip file's own rig, with a warning, when the model is missing
+// or unreadable).
 Result<std::shared_ptr<const anim::AnimationLibrary>> load_robot_animations();
+Result<std::shared_ptr<const anim::AnimationLibrary>>
+load_robot_animations(const std::filesystem::path& clips);
 
 } // namespace ks::game

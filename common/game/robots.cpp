@@ -180,7 +180,7 @@ void Game::robot_fight(std::size_t index, float distance, float dt) {
         if (r.mode == RobotMode::Shoot && r.cooldown <= 0.0f) {
             r.cooldown = r.props.cooldown;
             robot_anims_[index].play(clips_.shooting);
-            robot_fire(index);
+            if (!shot_on_event_) robot_fire(index); // else at the clip's muzzle_flash (robot_clip_events)
         }
         break;
     default:
@@ -245,6 +245,18 @@ void Game::robot_wander(Robot& r, std::size_t index, float dt) {
     }
     mv.velocity.x = velocity.x + r.knockback.x;
     mv.velocity.z = velocity.z + r.knockback.z;
+}
+
+void Game::robot_clip_events(std::size_t index) {
+    const Robot& r = robots_[index];
+    for (const anim::FiredEvent& fired : robot_anims_[index].fired_events()) {
+        push_cue(EventType::ClipCue, r.feet + Vec3(0, settings_.robot_height * 0.5f, 0), r.entity_id,
+                 fired.event->sound);
+        // A shot cut short (the robot turned away or died before the flash) never fires: its clip is no
+        // longer the one playing, so its event is not reported.
+        if (fired.clip == clips_.shooting && fired.event->name == kMuzzleFlashEvent && r.alive())
+            robot_fire(index);
+    }
 }
 
 void Game::robot_fire(std::size_t index) {

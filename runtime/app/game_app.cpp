@@ -107,7 +107,7 @@ void GameApp::load(const std::filesystem::path& path, bool dojo, Screen then) {
         loader_.steps.push_back({"Waking the test robot", [s]() -> Result<void> {
                                      const auto& lib = s->game->animations();
                                      auto c = anim::DojoController::create(lib.clips, lib.rig,
-                                                                           anim::reference_dojo_clips());
+                                                                           anim::dojo_key_clips(lib.clips));
                                      if (!c) return c.error();
                                      s->dojo_controller.emplace(std::move(*c));
                                      for (const auto& e : s->level.entities)
@@ -168,7 +168,18 @@ void GameApp::apply_warp() {
 void GameApp::enter_play() {
     screen_ = Screen::Playing;
     pause_requested_ = false;
+    dojo_picking_ = false;
     if (interactive()) input_.capture(shell_.window(), events_.state());
+}
+
+// Tab in the Dojo: the mouse is freed to click a clip in the list, or taken back to look around.
+void GameApp::toggle_dojo_picking() {
+    if (!dojo_picking_) {
+        dojo_picking_ = true;
+        input_.release(shell_.window(), events_.state());
+    } else {
+        enter_play();
+    }
 }
 
 void GameApp::pause() {
@@ -290,6 +301,7 @@ void GameApp::handle_keys() {
     if (screen_ == Screen::Playing && session_ && session_->dojo_controller) {
         for (int k = 0; k <= 9; ++k)
             if (keys.take_press(GLFW_KEY_0 + k)) session_->dojo_controller->press(static_cast<char>('0' + k));
+        if (keys.take_press(GLFW_KEY_TAB)) toggle_dojo_picking();
     }
 }
 
@@ -369,8 +381,13 @@ void GameApp::draw_world_overlay(float w, float h) {
             const std::size_t n = session_->view->feedback().damage_arcs(p.yaw, p.eye(), arcs);
             draw_damage_arcs(fg, std::span(arcs.data(), n), w, h);
         }
-        if (session_->dojo_controller && screen_ == Screen::Playing)
-            dojo_legend(session_->dojo_controller->legend(), fonts, w, h);
+        if (session_->dojo_controller && screen_ == Screen::Playing) {
+            const int clicked = dojo_legend(*session_->dojo_controller, dojo_picking_, fonts, w, h);
+            if (clicked >= 0)
+                session_->dojo_controller->play_entry(static_cast<std::size_t>(clicked));
+            else if (dojo_picking_ && ImGui::IsMouseClicked(0) && !ImGui::GetIO().WantCaptureMouse)
+                enter_play(); // a click in the world: back to looking around
+        }
     }
 }
 
@@ -504,9 +521,13 @@ Result<void> GameApp::start(const Automation& a) {
         advance(in, static_cast<float>(g.settings().step));
     }
     if (session_->dojo_controller && a.dojo_key) {
-        if (!session_->dojo_controller->press(a.dojo_key))
+        if (!session_->dojo_controller->press(a.dojo_key)) {
+            std::string bound;
+            for (const anim::DojoKey& k : session_->dojo_controller->entries())
+                if (k.key != 0) bound += (bound.empty() ? "" : ", ") + std::string(1, k.key) + " " + k.clip;
             return Error(std::string("--dojo-key '") + a.dojo_key + "' is not bound", Location("--dojo-key"),
-                         "use 1-5 (alert, shoot pose, shooting, shoot pose reverse, death) or 0 (reset)");
+                         "the Dojo's keys: " + bound);
+        }
     }
     if (session_->dojo_controller && a.dojo_time >= 0.0) {
         session_->dojo_controller->advance(a.dojo_time);

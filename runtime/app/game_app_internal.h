@@ -9,6 +9,7 @@
 #include "core/files.h"
 #include "core/log.h"
 #include "core/paths.h"
+#include "dojo_legend.h"
 #include "game/game.h"
 #include "hud_feedback.h"
 #include "input_events.h"
@@ -117,6 +118,7 @@ class GameApp {
     void apply_menu_action(MenuAction action);
     void handle_keys();
     void enter_play();
+    void toggle_dojo_picking();
     void pause();
     void resume();
     void to_menu();
@@ -157,6 +159,7 @@ class GameApp {
     std::unique_ptr<Session> session_, pending_;
     Loader loader_;
     bool freeze_loader_ = false, freeze_dojo_ = false;
+    bool dojo_picking_ = false; // the Dojo's mouse is free to click a clip in the list (Tab)
     std::string error_;
     bool quit_ = false;
     bool pause_requested_ = false;

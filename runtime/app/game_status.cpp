@@ -1,9 +1,11 @@
 // GameApp's --status-file: the screen, buttons, options and game state as text, rewritten when they change.
 #include "game_app_internal.h"
 
+#include "anim/rotation.h"
 #include "core/files.h"
 #include "core/log.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace ks::runtime {
@@ -64,6 +66,20 @@ void GameApp::write_status(const shell::FrameInfo& info) {
             const auto& fb = session_->view->feedback();
             add("feedback arcs %d shakes %d lights %d", static_cast<int>(fb.live_arcs()),
                 static_cast<int>(fb.live_shakes()), static_cast<int>(fb.live_lights()));
+        }
+        if (const auto* dojo = session_->dojo_controller ? &*session_->dojo_controller : nullptr) {
+            // How far the test robot is from its rest pose: the largest node rotation away from rest.
+            anim::Pose rest;
+            rest.set_rest(g.animations().rig);
+            float moved = 0.0f;
+            for (int n = 0; n < rest.size() && n < dojo->pose().size(); ++n) {
+                const auto i = static_cast<std::size_t>(n);
+                moved = std::max(moved, anim::angle_between(dojo->pose().rotation[i], rest.rotation[i]));
+            }
+            const int playing = dojo->playing_entry();
+            add("dojo clips %d playing %s picking %d moved %.1f", static_cast<int>(dojo->entries().size()),
+                playing < 0 ? "-" : dojo->entries()[static_cast<std::size_t>(playing)].clip.c_str(),
+                dojo_picking_ ? 1 : 0, degrees(moved));
         }
         add("game_steps %lld", static_cast<long long>(g.steps()));
     }

@@ -29,7 +29,7 @@ void print_help() {
         "  --warp ...        put the player's feet at x,y,z facing yaw,pitch (degrees) before the first "
         "frame\n"
         "  --fire            fire one shot on the first step (after --warp)\n"
-        "  --dojo-key K      in the Dojo, press key K (0-5) before the first frame\n"
+        "  --dojo-key K      in the Dojo, press key K (0-9) before the first frame\n"
         "  --dojo-time S     ... and advance the animation S seconds, then hold it (for screenshots)\n"
         "  --seed N          the game's random seed (default 1)\n"
         "  --status-file F   rewrite F each frame the state changes: screen, buttons, player, doors, ...\n"
@@ -99,7 +99,7 @@ int run_game_app(const CommandLine& cl, const shell::ShellConfig& shell_config) 
     }
     if (auto key = cl.get("dojo-key")) {
         if (key->size() != 1 || (*key)[0] < '0' || (*key)[0] > '9') {
-            log::error("--dojo-key '", *key, "': expected one digit 0-5");
+            log::error("--dojo-key '", *key, "': expected one digit 0-9");
             return 2;
         }
         automation.dojo_key = (*key)[0];

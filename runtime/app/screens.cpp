@@ -20,7 +20,7 @@ const char* const kControls[][2] = {
     {"E", "open doors, switch lights, use the computer"},
     {"Esc", "pause and free the mouse"},
     {"Click in the window", "resume"},
-    {"1 - 5, 0 (Dojo)", "play robot animations, reset"},
+    {"1 - 9, 0, Tab (Dojo)", "play robot clips, reset, pick from the list"},
 };
 
 void two_columns(const char* left, const char* right, float split) {
@@ -267,27 +267,6 @@ MenuAction options_panel(Options& o, bool& changed, const shell::Fonts& fonts, f
     if (ui::big_button("Back", fonts)) action = MenuAction::Back;
     ui::end_panel();
     return action;
-}
-
-void dojo_legend(const std::vector<std::string>& lines, const shell::Fonts& fonts, float w, float h) {
-    const float s = ui::ui_scale(h);
-    ImDrawList* d = ImGui::GetForegroundDrawList();
-    ImFont* font = fonts.body ? fonts.body : ImGui::GetFont();
-    const float px = 20.0f * s, line = px * 1.35f;
-    const float box_w = 330.0f * s, box_h = line * static_cast<float>(lines.size() + 1) + 16 * s;
-    const ImVec2 p(w - box_w - 16 * s, 16 * s);
-    d->AddRectFilled(p, ImVec2(p.x + box_w, p.y + box_h), IM_COL32(10, 16, 24, 190), 8 * s);
-    d->AddRect(p, ImVec2(p.x + box_w, p.y + box_h), ui::kAccent, 8 * s, 0, 2 * s);
-    d->AddText(fonts.hud ? fonts.hud : font, 22 * s, ImVec2(p.x + 14 * s, p.y + 8 * s), ui::kAccent,
-               "Dojo - robot animations");
-    for (std::size_t i = 0; i < lines.size(); ++i) {
-        const bool playing = lines[i].rfind("playing", 0) == 0;
-        d->AddText(font, px, ImVec2(p.x + 14 * s, p.y + 8 * s + line * static_cast<float>(i + 1)),
-                   playing ? IM_COL32(255, 220, 120, 255) : IM_COL32(235, 240, 245, 255), lines[i].c_str());
-    }
-    const char* hint = "WASD move  -  mouse look  -  Esc pause";
-    const ImVec2 hs = font->CalcTextSizeA(px, 10000.0f, 0.0f, hint);
-    d->AddText(font, px, ImVec2((w - hs.x) * 0.5f, h - hs.y - 60 * s), IM_COL32(235, 240, 245, 220), hint);
 }
 
 } // namespace ks::runtime

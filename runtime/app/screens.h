@@ -5,7 +5,6 @@
 #include "shell/app_shell.h"
 
 #include <string>
-#include <vector>
 
 namespace ks::runtime {
 
@@ -27,8 +26,6 @@ MenuAction credits(const shell::Fonts& fonts, float w, float h);
 // Edits `options` in place; `changed` is set when a value moved this frame.
 MenuAction options_panel(Options& options, bool& changed, const shell::Fonts& fonts, float w, float h);
 
-// The Dojo's key legend (top right) and a hint line at the bottom.
-void dojo_legend(const std::vector<std::string>& lines, const shell::Fonts& fonts, float w, float h);
 // "m:ss.s" for the win screen.
 std::string format_time(double seconds);
 
