@@ -79,8 +79,13 @@ Result<void> EditorApp::init() {
     } else if (!shell_.screenshot_mode()) {
         if (auto offer = find_untitled_recovery(autosaver_.config())) editor_.offer_recovery(*offer);
     }
-    dojo_ = std::make_unique<DojoPanel>(assets_, *renderer_);
+    dojo_ = std::make_unique<DojoPanel>(assets_, *renderer_, options_.dojo_file, options_.audition);
     dojo_tab_ = options_.start_in_dojo;
+    if (options_.dojo_view) {
+        auto view = parse_dojo_view(*options_.dojo_view);
+        if (!view) return view.error();
+        dojo_->apply_view(*view, [this](const std::string& line, bool error) { log_line(line, error); });
+    }
     overlays_.navmesh = options_.show_navmesh;
     set_view(options_.view.value_or(ViewMode::Perspective)); // perspective: from above one corner
     if (options_.camera) {
@@ -138,6 +143,7 @@ void EditorApp::render_views(const shell::FrameInfo& info) {
         dojo_->render(layout.bottom.w, layout.centre.h, info.frame_dt);
     } else {
         rebuild_scene_if_changed();
+        pose_preview_robot(info.frame_dt);
         const int w = static_cast<int>(layout.centre.w), h = static_cast<int>(layout.centre.h - kViewportBar);
         viewport_target_.ensure(w, h);
         view_.set_viewport(Vec2(static_cast<float>(w), static_cast<float>(std::max(1, h))));
@@ -211,7 +217,12 @@ void EditorApp::handle_shortcuts() {
     const bool ctrl = io.KeyCtrl, shift = io.KeyShift;
     if (ctrl && pressed(GLFW_KEY_N)) request(PendingAction::New);
     if (ctrl && pressed(GLFW_KEY_O)) request(PendingAction::Open);
-    if (ctrl && pressed(GLFW_KEY_S)) save(shift);
+    if (ctrl && pressed(GLFW_KEY_S)) {
+        if (dojo_tab_)
+            dojo_->save([this](const std::string& line, bool error) { log_line(line, error); });
+        else
+            save(shift);
+    }
     // Shift decides between undo and redo for every Z event, including auto-repeat: testing only the first
     // press for redo let a held Ctrl+Shift+Z fall through to the repeating undo once the key-repeat delay
     // passed (one slow frame under Xvfb is enough), so the redo was undone straight away.

@@ -49,6 +49,7 @@ void EditorApp::write_status() {
                   {"last_build_cpu_ms", scene_stats_.last_build_cpu_ms}};
     s["view"] = view_mode_name(view_.mode);
     s["tab"] = dojo_tab_ ? "dojo" : "level";
+    s["clip_preview"] = {{"on", clip_preview_}, {"robot", posed_robot_}, {"toggle", point(preview_toggle_)}};
     if (dojo_) {
         const auto d = dojo_->status();
         s["dojo"] = {{"undo", d.undo},
@@ -57,7 +58,14 @@ void EditorApp::write_status() {
                      {"phases", d.phases},
                      {"phase", d.phase},
                      {"add_key", point(Vec2(d.add_key_x, d.add_key_y))},
-                     {"duplicate_key", point(Vec2(d.duplicate_key_x, d.duplicate_key_y))}};
+                     {"duplicate_key", point(Vec2(d.duplicate_key_x, d.duplicate_key_y))},
+                     {"clips", d.clips},
+                     {"clip", d.clip},
+                     {"dirty", d.dirty},
+                     {"changed_on_disk", d.changed_on_disk},
+                     {"onion", d.onion},
+                     {"ghosts", d.ghosts},
+                     {"file", dojo_->clip_file().string()}};
     }
     int wx = 0, wy = 0;
     glfwGetWindowPos(shell_.window(), &wx, &wy);
