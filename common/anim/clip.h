@@ -20,9 +20,10 @@
 namespace ks::anim {
 
 enum class LoopMode : std::uint8_t {
-    Once, // play once and hold the last pose
-    Loop, // repeat forever; each iteration starts from the previous one's end pose
-    Next, // play once, then continue with the clip named by `next`
+    Once,     // play once and hold the last pose
+    Loop,     // repeat forever; each iteration starts from the previous one's end pose
+    Next,     // play once, then continue with the clip named by `next`
+    PingPong, // forward, then backward to the start, forever (the pose at t equals the pose at 2d - t)
 };
 
 // What a phase does to a node it does not name.

@@ -237,8 +237,12 @@ class Reader {
                     clip.loop = LoopMode::Loop;
                 else if (loop == "next")
                     clip.loop = LoopMode::Next;
+                else if (loop == "ping_pong")
+                    clip.loop = LoopMode::PingPong;
                 else
-                    problem(path / "loop", "unknown loop mode '" + loop + "'", "one of once, loop, next");
+                    problem(path / "loop", "unknown loop mode '" + loop + "'",
+                            did_you_mean(loop, {"once", "loop", "ping_pong", "next"}) +
+                                "one of once, loop, ping_pong, next");
             }
         }
         if (j.contains("next")) string(j["next"], path / "next", clip.next);

@@ -127,8 +127,10 @@ class Validator {
             check_loop(c, cp);
             if (c.phases.empty())
                 problem(cp / "phases", "clip '" + c.name + "' has no phases", "at least one phase");
-            if (c.loop == LoopMode::Loop && !(c.duration() > 0))
-                problem(cp / "phases", "looping clip '" + c.name + "' has zero length",
+            if ((c.loop == LoopMode::Loop || c.loop == LoopMode::PingPong) && !(c.duration() > 0))
+                problem(cp / "phases",
+                        std::string(c.loop == LoopMode::Loop ? "looping" : "ping-pong") + " clip '" + c.name +
+                            "' has zero length",
                         "give a phase a duration > 0");
             for (std::size_t pi = 0; pi < c.phases.size(); ++pi)
                 check_phase(c.phases[pi], (cp / "phases")[pi]);

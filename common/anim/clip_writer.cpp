@@ -14,6 +14,8 @@ const char* loop_name(LoopMode m) {
         return "loop";
     case LoopMode::Next:
         return "next";
+    case LoopMode::PingPong:
+        return "ping_pong";
     }
     return "once";
 }

@@ -41,9 +41,18 @@ void sample_clip(const Clip& clip, std::span<const Vec3> start_euler, std::span<
     const double duration = clip.duration;
     double local = t;
     long long iteration = 0;
+    float direction = 1; // -1 on a ping-pong clip's way back: the pose retraces, so its rate flips
     if (clip.loop == LoopMode::Loop && duration > 0) {
         iteration = static_cast<long long>(std::floor(t / duration));
         local = t - static_cast<double>(iteration) * duration;
+    } else if (clip.loop == LoopMode::PingPong && duration > 0) {
+        // Each cycle (2d) starts from the same start pose, so no iteration offset: t and 2d - t are equal.
+        const double cycle = 2 * duration;
+        local = t - std::floor(t / cycle) * cycle;
+        if (local > duration) {
+            local = cycle - local;
+            direction = -1;
+        }
     } else if (local > duration) {
         local = duration;
     }
@@ -69,7 +78,7 @@ void sample_clip(const Clip& clip, std::span<const Vec3> start_euler, std::span<
             const double span = k1.time - k0.time;
             const double u = (local - k0.time) / span;
             value = a + (b - a) * static_cast<float>(k1.ease(u));
-            if (want_velocity) rate = (b - a) * static_cast<float>(k1.ease.derivative(u) / span);
+            if (want_velocity) rate = (b - a) * static_cast<float>(direction * k1.ease.derivative(u) / span);
         }
         (ch.is_position ? out_position : out_euler)[node] = value;
         if (want_velocity) (ch.is_position ? velocity_position : velocity_euler)[node] = rate;
@@ -220,18 +229,27 @@ void Player::collect_events(std::int64_t until) {
     events_done_ = std::max(events_done_, to);
     if (clip.events.empty() || to <= from) return;
     const std::int64_t length = to_flicks(clip.duration);
-    const bool loops = clip.loop == LoopMode::Loop && length > 0;
+    const bool ping_pong = clip.loop == LoopMode::PingPong && length > 0;
+    const bool loops = (clip.loop == LoopMode::Loop || ping_pong) && length > 0;
+    const std::int64_t period = ping_pong ? 2 * length : length;
+    auto fire = [&](std::int64_t at, const ClipEvent& e) {
+        if (at > from && at <= to && fired_.size() < fired_.capacity()) fired_.push_back({current_.clip, &e});
+    };
     // A looping clip reports each iteration it crossed, at most a few per advance (a huge step of a tiny loop
     // would otherwise flood the list).
     constexpr std::int64_t kMaxIterations = 4;
-    const std::int64_t first = loops ? std::max<std::int64_t>(0, from) / length : 0;
-    const std::int64_t last = loops ? std::min(to / length, first + kMaxIterations - 1) : 0;
-    for (std::int64_t k = first; k <= last; ++k)
-        for (const ClipEvent& e : clip.events) {
-            const std::int64_t at = k * length + to_flicks(e.time);
-            if (at > from && at <= to && fired_.size() < fired_.capacity())
-                fired_.push_back({current_.clip, &e});
+    const std::int64_t first = loops ? std::max<std::int64_t>(0, from) / period : 0;
+    const std::int64_t last = loops ? std::min(to / period, first + kMaxIterations - 1) : 0;
+    for (std::int64_t k = first; k <= last; ++k) {
+        for (const ClipEvent& e : clip.events) fire(k * period + to_flicks(e.time), e);
+        if (!ping_pong) continue;
+        // The way back passes the events again, latest first; one at either turn (0 or the end) is the same
+        // instant as its forward firing, so it fires once.
+        for (auto it = clip.events.rbegin(); it != clip.events.rend(); ++it) {
+            const std::int64_t at = to_flicks(it->time);
+            if (at > 0 && at < length) fire(k * period + period - at, *it);
         }
+    }
 }
 
 void Player::advance(double dt_seconds) {

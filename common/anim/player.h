@@ -57,10 +57,11 @@ class Player {
     std::int64_t ticks() const { return now_; }
     double time() const { return to_seconds(now_); }
     bool blending() const { return source_ != Source::None && now_ - blend_start_ < blend_length_; }
-    // A Once clip past its end (a looping clip never finishes).
+    // A Once clip past its end (a looping or ping-pong clip never finishes).
     bool finished() const;
     // The clip events passed by the last advance(), in time order: (previous time, new time] of the clip's
-    // own time, every loop iteration crossed (up to a bound), an event at 0 s once the clip has started.
+    // own time, every loop iteration crossed (up to a bound), an event at 0 s once the clip has started. A
+    // ping-pong clip fires its events on the way there and on the way back (one at a turn fires once).
     std::span<const FiredEvent> fired_events() const { return fired_; }
 
   private:

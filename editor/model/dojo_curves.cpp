@@ -1,0 +1,197 @@
+#include "model/dojo_curves.h"
+
+#include "anim/player.h"
+#include "jsonio/number_text.h"
+#include "model/dojo_edit_support.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace ks::editor {
+namespace {
+using dojo_support::clip_at;
+using dojo_support::seconds_text;
+
+constexpr const char* kChannelNames[] = {"rot.x", "rot.y", "rot.z", "pos.x", "pos.y", "pos.z"};
+constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
+
+Result<anim::PhaseDef*> phase_at(anim::AnimationFile& file, std::size_t clip, std::size_t phase) {
+    auto found = clip_at(file, clip);
+    if (!found) return found.error();
+    auto& phases = (*found)->phases;
+    if (phase >= phases.size())
+        return Error("clip '" + (*found)->name + "' has no key " + std::to_string(phase + 1), {},
+                     "it has " + std::to_string(phases.size()) + " keys");
+    return &phases[phase];
+}
+
+const anim::TargetDef* target_for(const anim::PhaseDef& phase, const std::string& node) {
+    for (const anim::TargetDef& t : phase.targets)
+        if (t.node == node) return &t;
+    return nullptr;
+}
+
+// The channel's value as the curve shows it: degrees, or the offset from the rest position.
+double shown(CurveChannel channel, const Vec3& value, const anim::RigNode& node) {
+    const int c = component(channel);
+    return is_position(channel) ? static_cast<double>(value[c] - node.rest_position[c])
+                                : static_cast<double>(value[c]) * kDegreesPerRadian;
+}
+
+// The easing of the segment ending at this phase for `node` (anim::compile's rule).
+anim::Ease segment_ease(const anim::AnimationFile& file, const anim::PhaseDef& phase,
+                        const std::string& node) {
+    if (const anim::TargetDef* t = target_for(phase, node); t && t->ease) return *t->ease;
+    for (const anim::NodeEase& ne : file.node_ease)
+        if (ne.node == node) return ne.ease;
+    return phase.ease;
+}
+
+const anim::Channel* find_channel(const anim::Clip& clip, int node, bool position) {
+    for (const anim::Channel& ch : clip.channels)
+        if (ch.node == node && ch.is_position == position) return &ch;
+    return nullptr;
+}
+
+void fill_keys(const anim::AnimationFile& file, const anim::ClipDef& def, const anim::Clip& compiled,
+               const anim::RigNode& rig_node, int node, CurveChannel channel, const Vec3& start,
+               ClipCurve& curve) {
+    const bool position = is_position(channel);
+    const anim::Channel* ch = find_channel(compiled, node, position);
+    double time = 0;
+    for (std::size_t p = 0; p < def.phases.size(); ++p) {
+        const anim::PhaseDef& phase = def.phases[p];
+        time += phase.duration;
+        CurveKey key;
+        key.phase = p;
+        key.time = time;
+        key.ease = segment_ease(file, phase, rig_node.name);
+        Vec3 value = start;
+        if (ch) { // compiled keys: [first_key] is the start, then one per phase
+            const anim::Key& k = compiled.keys[ch->first_key + 1 + p];
+            value = k.mode == anim::KeyMode::Absolute ? k.value : start + k.value;
+        }
+        key.value = shown(channel, value, rig_node);
+        if (const anim::TargetDef* t = target_for(phase, rig_node.name)) {
+            const auto& absolute = position ? t->pos : t->rot;
+            const auto& relative = position ? t->add_pos : t->add_rot;
+            key.keyed = absolute || relative;
+            key.relative = !absolute && relative;
+            if (key.keyed) key.target_value = (absolute ? *absolute : *relative)[component(channel)];
+        }
+        curve.keys.push_back(key);
+    }
+}
+
+} // namespace
+
+const char* curve_channel_name(CurveChannel c) {
+    return kChannelNames[static_cast<int>(c)];
+}
+
+std::optional<CurveChannel> curve_channel_from_name(std::string_view name) {
+    for (int i = 0; i < 6; ++i)
+        if (name == kChannelNames[i]) return static_cast<CurveChannel>(i);
+    return std::nullopt;
+}
+
+Result<ClipCurve> clip_curve(const anim::AnimationFile& file, std::size_t clip, const std::string& node,
+                             CurveChannel channel, int samples) {
+    auto found = clip_at(file, clip);
+    if (!found) return found.error();
+    auto rig = anim::build_rig(file);
+    if (!rig) return rig.error();
+    const int node_index = rig->find(node);
+    if (node_index < 0) {
+        std::string names;
+        for (const anim::RigNode& n : rig->nodes()) names += (names.empty() ? "" : ", ") + n.name;
+        return Error("node '" + node + "' is not in the rig", {}, "nodes: " + names);
+    }
+    auto compiled = anim::compile(file, *rig);
+    if (!compiled) return compiled.error();
+    const anim::Clip& c = compiled->clips[clip];
+    const anim::RigNode& rig_node = rig->node(node_index);
+
+    anim::Pose rest;
+    rest.set_rest(*rig);
+    std::vector<Vec3> euler = rest.euler, position = rest.position;
+    ClipCurve curve;
+    curve.duration = c.duration;
+    const Vec3 start = is_position(channel) ? rest.position[static_cast<std::size_t>(node_index)]
+                                            : rest.euler[static_cast<std::size_t>(node_index)];
+    curve.start_value = shown(channel, start, rig_node);
+    const int count = c.duration > 0 ? std::clamp(samples, 2, 4096) : 1;
+    for (int i = 0; i < count; ++i) {
+        const double t = count == 1 ? 0.0 : c.duration * i / (count - 1);
+        anim::sample_clip(c, rest.euler, rest.position, t, euler, position);
+        const Vec3& v = (is_position(channel) ? position : euler)[static_cast<std::size_t>(node_index)];
+        curve.points.push_back({t, shown(channel, v, rig_node)});
+    }
+    fill_keys(file, **found, c, rig_node, node_index, channel, start, curve);
+    return curve;
+}
+
+Result<void> move_key_time(anim::AnimationFile& file, std::size_t clip, std::size_t phase, double seconds) {
+    auto found = phase_at(file, clip, phase);
+    if (!found) return found.error();
+    const auto& phases = file.clips[clip].phases;
+    if (!std::isfinite(seconds))
+        return Error("key time is not a number", {}, "seconds from the clip's start");
+    double previous_end = 0;
+    for (std::size_t p = 0; p < phase; ++p) previous_end += phases[p].duration;
+    const double end = previous_end + phases[phase].duration;
+    const bool has_next = phase + 1 < phases.size();
+    const double next_end = has_next ? end + phases[phase + 1].duration : 0;
+    const std::string key = "key " + std::to_string(phase + 1);
+    if (seconds < previous_end)
+        return Error(key + " cannot move to " + seconds_text(seconds) + ": " +
+                         (phase == 0 ? std::string("that is before the clip's start")
+                                     : "it would pass key " + std::to_string(phase) + " at " +
+                                           seconds_text(previous_end)),
+                     {},
+                     has_next
+                         ? "a time in [" + seconds_text(previous_end) + ", " + seconds_text(next_end) + "]"
+                         : "a time of " + seconds_text(previous_end) + " or later");
+    if (has_next && seconds > next_end)
+        return Error(key + " cannot move to " + seconds_text(seconds) + ": it would pass key " +
+                         std::to_string(phase + 2) + " at " + seconds_text(next_end),
+                     {}, "a time in [" + seconds_text(previous_end) + ", " + seconds_text(next_end) + "]");
+    anim::AnimationFile edited = file;
+    auto& edited_phases = edited.clips[clip].phases;
+    edited_phases[phase].duration = seconds - previous_end;
+    if (has_next) edited_phases[phase + 1].duration = next_end - seconds;
+    if (auto valid = dojo_support::no_new_clip_issues(file, edited, clip); !valid)
+        return Error(key + " cannot move to " + seconds_text(seconds) + ": " + valid.error().message, {},
+                     valid.error().hint);
+    file = std::move(edited);
+    return ok();
+}
+
+Result<void> set_key_value(anim::AnimationFile& file, std::size_t clip, std::size_t phase,
+                           const std::string& node, CurveChannel channel, double value) {
+    auto found = phase_at(file, clip, phase);
+    if (!found) return found.error();
+    if (!target_for(**found, node))
+        return Error("node '" + node + "' has no key in key " + std::to_string(phase + 1) + " of '" +
+                         file.clips[clip].name + "'",
+                     {}, "add a key for it there first");
+    if (!std::isfinite(value)) return Error("key value is not a number", {}, "a finite number");
+    anim::AnimationFile edited = file;
+    anim::TargetDef* target = nullptr;
+    for (anim::TargetDef& t : edited.clips[clip].phases[phase].targets)
+        if (t.node == node) target = &t;
+    auto& absolute = is_position(channel) ? target->pos : target->rot;
+    auto& relative = is_position(channel) ? target->add_pos : target->add_rot;
+    auto& edited_value = absolute ? absolute : relative;
+    if (!edited_value) edited_value = DVec3(0); // keyed for the other kind only: a relative key, no motion
+    (*edited_value)[component(channel)] = value;
+    if (auto valid = dojo_support::no_new_clip_issues(file, edited, clip); !valid)
+        return Error("cannot set " + node + " " + curve_channel_name(channel) + " to " +
+                         jsonio::shortest_text(value) + ": " + valid.error().message,
+                     {}, valid.error().hint);
+    file = std::move(edited);
+    return ok();
+}
+
+} // namespace ks::editor
