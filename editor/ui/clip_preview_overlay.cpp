@@ -23,7 +23,7 @@ void EditorApp::pose_preview_robot(double dt) {
     if (posed_robot_ != robot && posed_robot_ != 0) scene_->set_pose(posed_robot_, nullptr);
     posed_robot_ = robot;
     if (robot == 0) return;
-    dojo_->ensure_loaded([this](const std::string& line, bool error) { log_line(line, error); });
+    dojo_->ensure_loaded();
     dojo_->tick(dt);
     scene_->set_pose(robot, &dojo_->pose());
 }

@@ -37,40 +37,40 @@ void DojoPanel::watch_disk() {
         changed_on_disk_ = true;
 }
 
-void DojoPanel::write_file(const LogFn& log) {
+void DojoPanel::write_file() {
     if (auto r = save_dojo_file(clip_file_, file_); !r) {
-        log("dojo: " + r.error().str(), true);
+        log_("dojo: " + r.error().str(), true);
         return;
     }
     dirty_ = false;
     remember_disk();
-    log("dojo: saved " + clip_file_.string() + " (the runtime's Dojo and robots load it)", false);
+    log_("dojo: saved " + clip_file_.string() + " (the runtime's Dojo and robots load it)", false);
 }
 
-void DojoPanel::reload(const LogFn& log) {
+void DojoPanel::reload() {
     if (dirty_) {
         ask_reload_ = true;
         return;
     }
-    load(&log);
-    log("dojo: reloaded " + clip_file_.string(), false);
+    load();
+    log_("dojo: reloaded " + clip_file_.string(), false);
 }
 
-void DojoPanel::save(const LogFn& log) {
+void DojoPanel::save() {
     if (!issues_.empty()) {
-        log("dojo: not saved: the clip file has " + std::to_string(issues_.size()) +
-                " issues (listed in the Dojo tab)",
-            true);
+        log_("dojo: not saved: the clip file has " + std::to_string(issues_.size()) +
+                 " issues (listed in the Dojo tab)",
+             true);
         return;
     }
     if (changed_on_disk_)
         ask_overwrite_ = true;
     else
-        write_file(log);
+        write_file();
 }
 
 // The issues, the outside-change notice, Save and Reload.
-void DojoPanel::file_row(const LogFn& log) {
+void DojoPanel::file_row() {
     for (const auto& issue : issues_)
         ImGui::TextColored(kErrorColour, "%s: %s (%s)", issue.path.str().c_str(), issue.message.c_str(),
                            issue.hint.c_str());
@@ -79,25 +79,25 @@ void DojoPanel::file_row(const LogFn& log) {
     if (changed_on_disk_) {
         ImGui::TextColored(kNoticeColour, "%s was changed outside the editor.", name.c_str());
         ImGui::SameLine();
-        if (ImGui::SmallButton("Reload it")) reload(log);
+        if (ImGui::SmallButton("Reload it")) reload();
         ImGui::SameLine();
         if (ImGui::SmallButton("Keep mine")) remember_disk();
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("Ignore the outside change; the next Save will overwrite it");
     }
     ImGui::BeginDisabled(!issues_.empty());
-    if (ImGui::Button(("Save " + name + (dirty_ ? " *" : "")).c_str())) save(log);
+    if (ImGui::Button(("Save " + name + (dirty_ ? " *" : "")).c_str())) save();
     ImGui::EndDisabled();
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip(issues_.empty() ? "Ctrl+S: validate and write %s"
                                           : "Fix the issues listed above first (%s)",
                           clip_file_.string().c_str());
     ImGui::SameLine();
-    if (ImGui::Button("Reload")) reload(log);
+    if (ImGui::Button("Reload")) reload();
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Read %s again from disk", clip_file_.string().c_str());
 }
 
-void DojoPanel::file_prompts(const LogFn& log) {
+void DojoPanel::file_prompts() {
     if (ask_reload_) ImGui::OpenPopup("Reload clip file?");
     if (ask_overwrite_) ImGui::OpenPopup("Overwrite clip file?");
     ask_reload_ = ask_overwrite_ = false;
@@ -108,8 +108,8 @@ void DojoPanel::file_prompts(const LogFn& log) {
         ImGui::Text("%s has unsaved edits (%zu undo steps).", name.c_str(), history_.undo_count());
         ImGui::Text("Reloading drops them and reads the file from disk.");
         if (ImGui::Button("Discard and reload")) {
-            load(&log);
-            log("dojo: reloaded " + clip_file_.string() + ", unsaved edits dropped", false);
+            load();
+            log_("dojo: reloaded " + clip_file_.string() + ", unsaved edits dropped", false);
             ImGui::CloseCurrentPopup();
         }
         ImGui::SameLine();
@@ -121,7 +121,7 @@ void DojoPanel::file_prompts(const LogFn& log) {
         ImGui::Text("%s was changed outside the editor since it was loaded.", name.c_str());
         ImGui::Text("Saving overwrites those changes with the dojo's clips.");
         if (ImGui::Button("Overwrite")) {
-            write_file(log);
+            write_file();
             ImGui::CloseCurrentPopup();
         }
         ImGui::SameLine();

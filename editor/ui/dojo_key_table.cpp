@@ -30,23 +30,13 @@ void ease_thumbnail(const anim::Ease& ease, float size) {
 }
 } // namespace
 
-bool DojoPanel::phase_buttons(const LogFn& log) {
+bool DojoPanel::phase_buttons() {
     const auto c = static_cast<std::size_t>(clip_), p = static_cast<std::size_t>(selected_phase_);
     const std::size_t count = file_.clips[c].phases.size();
     const std::string key = "key " + std::to_string(p + 1);
-    auto apply = [&](const std::string& name, auto&& edit) {
-        anim::AnimationFile before = file_;
-        if (auto r = edit(); !r) {
-            log("dojo: " + r.error().str(), true);
-            return false;
-        }
-        history_.record(before, name);
-        return true;
-    };
     bool changed = false;
     const bool duplicate_clicked = ImGui::SmallButton("Duplicate key");
-    duplicate_key_x_ = (ImGui::GetItemRectMin().x + ImGui::GetItemRectMax().x) * 0.5f;
-    duplicate_key_y_ = (ImGui::GetItemRectMin().y + ImGui::GetItemRectMax().y) * 0.5f;
+    mark(DojoSpot::DuplicateKey);
     if (duplicate_clicked)
         changed = apply("duplicate " + key, [&]() -> Result<void> {
             auto copy = duplicate_phase(file_, c, p);
@@ -81,11 +71,9 @@ bool DojoPanel::phase_buttons(const LogFn& log) {
     return changed;
 }
 
-void DojoPanel::key_table(const LogFn& log) {
+void DojoPanel::key_table() {
     if (static_cast<size_t>(clip_) >= file_.clips.size()) return;
     anim::ClipDef& def = file_.clips[static_cast<size_t>(clip_)];
-    if (!ImGui::IsAnyItemActive()) edit_open_ = false; // a dragged field is one undo step
-    ImGui::Text("Clip '%s': %zu keys, %.2f s", def.name.c_str(), def.phases.size(), def.duration());
     if (def.phases.empty()) return;
     selected_phase_ = std::clamp(selected_phase_, 0, static_cast<int>(def.phases.size()) - 1);
     for (int i = 0; i < static_cast<int>(def.phases.size()); ++i) {
@@ -94,25 +82,20 @@ void DojoPanel::key_table(const LogFn& log) {
         if (i) ImGui::SameLine();
         if (ImGui::RadioButton(label, selected_phase_ == i)) selected_phase_ = i;
     }
-    if (phase_buttons(log)) {
-        after_edit();
-        return; // the phase list changed under this frame's references: draw the table next frame
-    }
+    if (phase_buttons()) return; // the phases changed under this frame's references: draw them next frame
     anim::PhaseDef& phase = def.phases[static_cast<size_t>(selected_phase_)];
     bool edited = phase_timing(phase);
     std::string remove_node; // a key to remove, applied after the table (the rows reference the targets)
     edited |= target_rows(phase, remove_node);
     const auto clip_index = static_cast<std::size_t>(clip_),
                phase_index = static_cast<std::size_t>(selected_phase_);
-    if (!remove_node.empty()) {
-        history_.record(file_, "remove key " + remove_node);
-        if (auto r = remove_node_key(file_, clip_index, phase_index, remove_node); !r)
-            log("dojo: " + r.error().str(), true);
-        else
-            edited = true;
-    }
-    edited |= add_key_row(log);
     if (edited) after_edit();
+    if (!remove_node.empty()) {
+        apply("remove key " + remove_node,
+              [&] { return remove_node_key(file_, clip_index, phase_index, remove_node); });
+        return;
+    }
+    add_key_row();
 }
 
 // The selected key's duration and easing (with its curve); true when either changed.
@@ -195,7 +178,7 @@ bool DojoPanel::target_rows(anim::PhaseDef& phase, std::string& remove_node) {
 }
 
 // The node combo and "Add key" button; true when a key was added.
-bool DojoPanel::add_key_row(const LogFn& log) {
+bool DojoPanel::add_key_row() {
     bool edited = false;
     const auto clip_index = static_cast<std::size_t>(clip_),
                phase_index = static_cast<std::size_t>(selected_phase_);
@@ -212,15 +195,10 @@ bool DojoPanel::add_key_row(const LogFn& log) {
     }
     ImGui::SameLine();
     const bool add_clicked = ImGui::Button("Add key");
-    add_key_x_ = (ImGui::GetItemRectMin().x + ImGui::GetItemRectMax().x) * 0.5f;
-    add_key_y_ = (ImGui::GetItemRectMin().y + ImGui::GetItemRectMax().y) * 0.5f;
+    mark(DojoSpot::AddKey);
     if (add_clicked && !free_nodes.empty()) {
-        const std::string& node = free_nodes[static_cast<size_t>(add_node_)];
-        history_.record(file_, "add key " + node);
-        if (auto r = add_node_key(file_, clip_index, phase_index, node); !r)
-            log("dojo: " + r.error().str(), true);
-        else
-            edited = true;
+        const std::string node = free_nodes[static_cast<size_t>(add_node_)];
+        edited = apply("add key " + node, [&] { return add_node_key(file_, clip_index, phase_index, node); });
     }
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(

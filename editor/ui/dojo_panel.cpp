@@ -3,6 +3,7 @@
 #include "ui/dojo_panel.h"
 
 #include "anim/gltf_rig.h"
+#include "anim/required_clips.h"
 #include "core/paths.h"
 #include "render/mesh_data.h"
 
@@ -11,16 +12,18 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <sstream>
 
 namespace ks::editor::ui {
 
 namespace {
-constexpr float kDojoBar = 190.0f; // transport, timeline and transition tester under the preview
-
-const char* loop_name(anim::LoopMode m) {
-    return m == anim::LoopMode::Loop ? "loop" : m == anim::LoopMode::Next ? "next" : "once";
-}
+constexpr float kDojoBar = 212.0f; // transport, timeline (with its event lane) and transition tester
+constexpr const char* kPageNames[] = {"keys", "curves", "blends", "events"};
+constexpr const char* kSpotNames[] = {"add_key",     "duplicate_key", "new_clip",    "clip_name",
+                                      "clip_ok",     "page_keys",     "page_curves", "page_blends",
+                                      "page_events", "save",          "add_event"};
+static_assert(std::size(kSpotNames) == static_cast<size_t>(DojoSpot::Count));
 
 Result<bool> parse_flag(const std::string& key, const std::string& value) {
     if (value == "1" || value == "on" || value == "true") return true;
@@ -45,16 +48,35 @@ Result<DojoView> parse_dojo_view(const std::string& text) {
             if (value.empty() || *end != '\0' || !std::isfinite(view.time) || view.time < 0.0)
                 return Error("--dojo-view: time=" + value + " is not a time in seconds", {},
                              "e.g. time=0.25");
+        } else if (key == "page") {
+            const auto* found = std::find(std::begin(kPageNames), std::end(kPageNames), value);
+            if (found == std::end(kPageNames))
+                return Error("--dojo-view: page=" + value + " is not a page", {},
+                             "pages are keys, curves, blends, events");
+            view.page = static_cast<DojoPage>(found - std::begin(kPageNames));
+        } else if (key == "node" && !value.empty()) {
+            view.node = value;
+        } else if (key == "channel") {
+            auto channel = curve_channel_from_name(value);
+            if (!channel)
+                return Error("--dojo-view: channel=" + value + " is not a channel", {},
+                             "channels are rot.x, rot.y, rot.z, pos.x, pos.y, pos.z");
+            view.channel = *channel;
         } else if (key == "onion") {
             auto on = parse_flag(key, value);
             if (!on) return on.error();
             view.onion = *on;
         } else {
             return Error("--dojo-view: unknown item '" + item + "'", {},
-                         "items are clip=NAME, time=SECONDS, onion=1, separated by commas");
+                         "items are clip=NAME, page=keys|curves|blends|events, node=NODE, channel=rot.x, "
+                         "time=SECONDS, onion=1, separated by commas");
         }
     }
     return view;
+}
+
+const char* dojo_spot_name(DojoSpot spot) {
+    return kSpotNames[static_cast<size_t>(spot)];
 }
 
 void dojo_preview_size(float tab_width, float tab_height, float& w, float& h) {
@@ -62,11 +84,12 @@ void dojo_preview_size(float tab_width, float tab_height, float& w, float& h) {
     h = std::max(64.0f, std::floor(tab_height - kDojoBar));
 }
 
-DojoPanel::DojoPanel(render::AssetLibrary& assets, render::SceneRenderer& renderer,
-                     std::filesystem::path clip_file, SoundAudition audition)
+DojoPanel::DojoPanel(render::AssetLibrary& assets, render::SceneRenderer& renderer, DojoSetup setup)
     : assets_(assets), renderer_(renderer),
-      clip_file_(clip_file.empty() ? paths::asset("animations/robot.json") : std::move(clip_file)),
-      audition_(std::move(audition)) {
+      clip_file_(setup.clip_file.empty() ? paths::asset("animations/robot.json")
+                                         : std::move(setup.clip_file)),
+      audition_(std::move(setup.audition)), log_(std::move(setup.log)) {
+    if (!log_) log_ = [](const std::string&, bool) {};
     render::MeshData floor;
     render::append_box(floor, Vec3(0, -0.05f, 0), Vec3(14, 0.1f, 14), Mat4(1.0f), 2.0f);
     floor_ = std::make_unique<render::GpuMesh>(floor);
@@ -77,14 +100,14 @@ DojoPanel::DojoPanel(render::AssetLibrary& assets, render::SceneRenderer& render
                        Vec3(0.5f, 0.7f, 1.0f), 0.8f, 20.0f, 0.8f, 0.9f});
 }
 
-void DojoPanel::load(const LogFn* log) {
+void DojoPanel::load() {
     loaded_ = true;
     model_ = &assets_.model("robot");
     remember_disk();
     auto file = anim::load_animation_file(clip_file_);
     if (!file) {
         compile_error_ = file.error().str();
-        if (log) (*log)(compile_error_, true);
+        log_(compile_error_, true);
         return;
     }
     file_ = std::move(*file);
@@ -99,22 +122,35 @@ void DojoPanel::load(const LogFn* log) {
     dirty_ = false;
     history_.clear();
     edit_open_ = false;
+    message_.clear();
+    selected_event_ = -1;
     recompile();
     if (clips_.clips.size() > 1 && to_clip_ == 0) to_clip_ = 1;
 }
 
-void DojoPanel::ensure_loaded(const LogFn& log) {
-    if (!loaded_) load(&log);
+void DojoPanel::ensure_loaded() {
+    if (!loaded_) load();
 }
 
-void DojoPanel::apply_view(const DojoView& view, const LogFn& log) {
-    ensure_loaded(log);
+void DojoPanel::apply_view(const DojoView& view) {
+    ensure_loaded();
     if (!view.clip.empty()) {
         const int index = clips_.find(view.clip);
         if (index < 0)
-            log("--dojo-view: no clip '" + view.clip + "' in " + clip_file_.string(), true);
+            log_("--dojo-view: no clip '" + view.clip + "' in " + clip_file_.string(), true);
         else
             show_clip(index);
+    }
+    page_ = view.page;
+    page_requested_ = true;
+    curve_channel_ = view.channel;
+    if (!view.node.empty()) {
+        const auto found = std::find_if(file_.rig.begin(), file_.rig.end(),
+                                        [&](const anim::RigNodeDef& n) { return n.name == view.node; });
+        if (found == file_.rig.end())
+            log_("--dojo-view: no node '" + view.node + "' in the rig", true);
+        else
+            curve_node_ = static_cast<int>(found - file_.rig.begin());
     }
     onion_ = view.onion;
     if (view.time >= 0.0) {
@@ -124,7 +160,9 @@ void DojoPanel::apply_view(const DojoView& view, const LogFn& log) {
 }
 
 void DojoPanel::recompile() {
+    ++revision_; // the file changed: cached ghosts and curves are stale, compiled or not
     issues_ = anim::validate(file_);
+    for (auto& issue : anim::check_required_clips(file_)) issues_.push_back(std::move(issue));
     compile_error_.clear();
     if (!issues_.empty()) return; // keep the last good clips playing until the file is valid again
     auto compiled = anim::compile(file_, rig_);
@@ -133,7 +171,6 @@ void DojoPanel::recompile() {
         return;
     }
     clips_ = std::move(*compiled);
-    ++revision_;
     const int last = std::max(0, static_cast<int>(clips_.clips.size()) - 1);
     clip_ = std::clamp(clip_, 0, last);
     from_clip_ = std::clamp(from_clip_, 0, last);
@@ -147,6 +184,7 @@ void DojoPanel::show_clip(int index) {
     clip_ = index;
     transition_mode_ = false;
     selected_phase_ = 0;
+    selected_event_ = -1;
     playing_ = true;
     restart_at(0.0);
 }
@@ -206,6 +244,39 @@ void DojoPanel::after_edit() {
     recompile();
 }
 
+void DojoPanel::refuse(const Error& error) {
+    message_ = error.message + (error.hint.empty() ? "" : " (" + error.hint + ")");
+    log_("dojo: " + error.str(), true);
+}
+
+void DojoPanel::mark(DojoSpot spot) {
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    spots_[static_cast<size_t>(spot)] = Vec2((a.x + b.x) * 0.5f, (a.y + b.y) * 0.5f);
+}
+
+const anim::ClipDef* DojoPanel::shown_def() const {
+    return static_cast<size_t>(clip_) < file_.clips.size() ? &file_.clips[static_cast<size_t>(clip_)]
+                                                           : nullptr;
+}
+
+// The playhead within the shown clip: a looping clip's time within its pass, a ping-pong's folded back.
+double DojoPanel::clip_time() const {
+    const anim::ClipDef* def = shown_def();
+    if (!def || transition_mode_) return 0.0;
+    const double d = def->duration();
+    if (d <= 0) return 0.0;
+    switch (def->loop) {
+    case anim::LoopMode::Loop:
+        return std::fmod(time_, d);
+    case anim::LoopMode::PingPong: {
+        const double u = std::fmod(time_, 2.0 * d);
+        return u <= d ? u : 2.0 * d - u;
+    }
+    default:
+        return std::min(time_, d);
+    }
+}
+
 DojoPanel::Status DojoPanel::status() const {
     Status st;
     st.undo = history_.undo_count();
@@ -216,12 +287,22 @@ DojoPanel::Status DojoPanel::status() const {
         st.phases = file_.clips[c].phases.size();
         st.phase = p;
     }
-    if (c < file_.clips.size()) st.clip = file_.clips[c].name;
+    if (c < file_.clips.size()) {
+        st.clip = file_.clips[c].name;
+        st.events = file_.clips[c].events.size();
+    }
     st.clips = file_.clips.size();
-    st.duplicate_key_x = duplicate_key_x_;
-    st.duplicate_key_y = duplicate_key_y_;
-    st.add_key_x = add_key_x_;
-    st.add_key_y = add_key_y_;
+    st.page = kPageNames[static_cast<size_t>(page_)];
+    st.undo_name = history_.undo_name();
+    st.message = message_;
+    st.spots = spots_;
+    st.transition = transition_mode_;
+    st.blend_from = blend_from_;
+    st.blend_to = blend_to_;
+    if (page_ == DojoPage::Blends && blend_centres_.size() == file_.clips.size() * file_.clips.size()) {
+        for (const auto& clip : file_.clips) st.blend_clips.push_back(clip.name);
+        st.blend_centres = blend_centres_;
+    }
     st.dirty = dirty_;
     st.changed_on_disk = changed_on_disk_;
     st.onion = onion_;
@@ -241,23 +322,11 @@ bool DojoPanel::redo() {
     return true;
 }
 
-void DojoPanel::clip_list() {
-    ImGui::TextDisabled("Clips (%s)", clip_file_.filename().string().c_str());
-    const float rows = std::min<float>(4.5f, static_cast<float>(clips_.clips.size()));
-    if (!ImGui::BeginListBox("##clips", ImVec2(-1, ImGui::GetTextLineHeightWithSpacing() * rows + 6))) return;
-    for (int i = 0; i < static_cast<int>(clips_.clips.size()); ++i) {
-        const anim::Clip& clip = clips_.clips[static_cast<size_t>(i)];
-        char label[96];
-        std::snprintf(label, sizeof(label), "%-20s %5.2f s  %s", clip.name.c_str(), clip.duration,
-                      loop_name(clip.loop));
-        if (ImGui::Selectable(label, i == clip_ && !transition_mode_)) show_clip(i);
-    }
-    ImGui::EndListBox();
-}
-
-void DojoPanel::panel(float x, float y, float width, float height, const LogFn& log) {
-    ensure_loaded(log);
+void DojoPanel::panel(float x, float y, float width, float height) {
+    ensure_loaded();
     watch_disk();
+    spots_ = {};
+    if (!ImGui::IsAnyItemActive()) edit_open_ = false; // a drag is one undo step
     ImGui::SetNextWindowPos(ImVec2(x, y));
     ImGui::SetNextWindowSize(ImVec2(width, height));
     ImGui::Begin("Dojo", nullptr,
@@ -273,7 +342,7 @@ void DojoPanel::panel(float x, float y, float width, float height, const LogFn& 
     if (clips_.clips.empty()) {
         ImGui::TextColored(ImVec4(1, 0.4f, 0.35f, 1), "%s", compile_error_.c_str());
         ImGui::EndGroup();
-        file_prompts(log);
+        file_prompts();
         ImGui::End();
         return;
     }
@@ -284,13 +353,59 @@ void DojoPanel::panel(float x, float y, float width, float height, const LogFn& 
     ImGui::EndGroup();
 
     ImGui::SetCursorPos(ImVec2(start.x + pw + 12, start.y));
-    ImGui::BeginChild("clips", ImVec2(0, 0), false);
+    ImGui::BeginChild("right", ImVec2(0, 0), false, ImGuiWindowFlags_NoScrollbar);
+    clip_toolbar();
     clip_list();
-    key_table(log);
-    file_row(log);
+    loop_row();
+    right_pages();
+    file_row();
     ImGui::EndChild();
-    file_prompts(log);
+    clip_dialog();
+    add_event_popup();
+    file_prompts();
     ImGui::End();
+}
+
+// Keys, Curves, Blends, Events: one page at a time, the file row kept below them.
+void DojoPanel::right_pages() {
+    const float file_row_height =
+        ImGui::GetFrameHeightWithSpacing() *
+        (1.0f + (changed_on_disk_ ? 1.0f : 0.0f) + static_cast<float>(issues_.size()) +
+         (compile_error_.empty() ? 0.0f : 1.0f));
+    if (!ImGui::BeginTabBar("pages")) return;
+    constexpr const char* kTitles[] = {"Keys", "Curves", "Blends", "Events"};
+    constexpr DojoSpot kSpots[] = {DojoSpot::PageKeys, DojoSpot::PageCurves, DojoSpot::PageBlends,
+                                   DojoSpot::PageEvents};
+    for (int i = 0; i < static_cast<int>(DojoPage::Count); ++i) {
+        const auto page = static_cast<DojoPage>(i);
+        const ImGuiTabItemFlags flags =
+            page_requested_ && page == page_ ? ImGuiTabItemFlags_SetSelected : ImGuiTabItemFlags_None;
+        const bool open = ImGui::BeginTabItem(kTitles[i], nullptr, flags);
+        mark(kSpots[i]);
+        if (!open) continue;
+        if (!page_requested_) page_ = page;
+        ImGui::BeginChild("page", ImVec2(0, -file_row_height), false);
+        switch (page) {
+        case DojoPage::Keys:
+            key_table();
+            break;
+        case DojoPage::Curves:
+            curve_view();
+            break;
+        case DojoPage::Blends:
+            blend_grid();
+            break;
+        case DojoPage::Events:
+            event_list();
+            break;
+        case DojoPage::Count:
+            break;
+        }
+        ImGui::EndChild();
+        ImGui::EndTabItem();
+    }
+    page_requested_ = false;
+    ImGui::EndTabBar();
 }
 
 } // namespace ks::editor::ui

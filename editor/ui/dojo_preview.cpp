@@ -12,10 +12,10 @@
 namespace ks::editor::ui {
 
 namespace {
-// The ghosts' washes (linear rgb added to the shading): the previous key cool, the next key warm, as most
-// animation tools colour the past and the future.
+// The ghosts' washes (linear rgb added to the shading): the previous key blue, the next key magenta, both
+// far from the robot's yellow.
 const Vec3 kPreviousKeyTint(0.05f, 0.25f, 0.75f);
-const Vec3 kNextKeyTint(0.75f, 0.35f, 0.02f);
+const Vec3 kNextKeyTint(0.8f, 0.08f, 0.55f);
 
 bool same_matrix(const Mat4& a, const Mat4& b) {
     for (int c = 0; c < 4; ++c)
@@ -64,14 +64,13 @@ void DojoPanel::update_ghosts() {
 
 // Appends the ghost's instances, keeping only the parts that are not where the live pose has them (a part
 // drawn twice in the same place would flicker between its tinted and plain copies).
-void DojoPanel::emit_ghost(const render::ModelPose& ghost, const Vec3& tint, std::size_t main_first,
-                           std::size_t main_count) {
+void DojoPanel::emit_ghost(const render::ModelPose& ghost, const Vec3& tint, std::size_t main_count) {
     const std::size_t first = instances_.size();
     model_->emit(Mat4(1.0f), ghost, scratch_, instances_);
     std::size_t kept = first;
     for (std::size_t i = first; i < instances_.size(); ++i) {
         const std::size_t k = i - first;
-        if (k < main_count && same_matrix(instances_[i].world, instances_[main_first + k].world)) continue;
+        if (k < main_count && same_matrix(instances_[i].world, instances_[k].world)) continue;
         render::MeshInstance inst = instances_[i];
         inst.tint = tint;
         inst.casts_shadow = false;
@@ -82,7 +81,7 @@ void DojoPanel::emit_ghost(const render::ModelPose& ghost, const Vec3& tint, std
 }
 
 void DojoPanel::render(float width, float height, double dt) {
-    if (!loaded_) load(nullptr);
+    ensure_loaded();
     dojo_preview_size(width, height, preview_w_, preview_h_);
     tick(dt);
     target_.ensure(static_cast<int>(preview_w_), static_cast<int>(preview_h_));
@@ -93,8 +92,8 @@ void DojoPanel::render(float width, float height, double dt) {
         model_->emit(Mat4(1.0f), model_pose_, scratch_, instances_);
         const std::size_t main_count = instances_.size();
         update_ghosts();
-        if (ghosts_[0].shown) emit_ghost(ghosts_[0].pose, kPreviousKeyTint, 0, main_count);
-        if (ghosts_[1].shown) emit_ghost(ghosts_[1].pose, kNextKeyTint, 0, main_count);
+        if (ghosts_[0].shown) emit_ghost(ghosts_[0].pose, kPreviousKeyTint, main_count);
+        if (ghosts_[1].shown) emit_ghost(ghosts_[1].pose, kNextKeyTint, main_count);
     }
     instances_.push_back({floor_.get(), floor_material_, Mat4(1.0f), 1.0f, false});
     const Vec3 target(0.0f, 1.6f, 0.0f);
@@ -103,7 +102,7 @@ void DojoPanel::render(float width, float height, double dt) {
     camera.aspect = preview_w_ / preview_h_;
     camera.yaw = orbit_yaw_;
     camera.pitch = -orbit_pitch_;
-    camera.position = target - camera.forward() * 8.5f;
+    camera.position = target - camera.forward() * orbit_distance_;
     debug_.clear();
     for (int i = -3; i <= 3; ++i) { // a floor grid, one unit apart, to read motion against
         debug_.line(Vec3(i, 0.01f, -3), Vec3(i, 0.01f, 3), Vec4(0.6f, 0.7f, 0.8f, 0.25f));
@@ -132,11 +131,14 @@ void DojoPanel::draw_preview_image(float w, float h) {
         orbit_yaw_ -= d.x * 0.01f;
         orbit_pitch_ = std::clamp(orbit_pitch_ + d.y * 0.01f, -0.2f, 1.3f);
     }
+    if (ImGui::IsItemHovered() && ImGui::GetIO().MouseWheel != 0.0f) // zoom
+        orbit_distance_ =
+            std::clamp(orbit_distance_ * std::pow(0.9f, ImGui::GetIO().MouseWheel), 3.0f, 20.0f);
     const ImVec2 after = ImGui::GetCursorScreenPos();
     ImGui::SetCursorScreenPos(ImVec2(corner.x + 6, corner.y + 6));
     ImGui::Checkbox("Onion skin", &onion_);
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Ghosts of the keys around the playhead: the previous key blue, the next orange");
+        ImGui::SetTooltip("Ghosts of the keys around the playhead: the previous key blue, the next magenta");
     if (onion_) {
         ImDrawList* draw = ImGui::GetWindowDrawList();
         const float line = ImGui::GetTextLineHeight();

@@ -1,6 +1,6 @@
 // The dojo's transport (play, pause, stop, step, loop, speed) and its timeline: ticks every 0.1 s, a marker
-// at the end of every key (phase), the blend window of the transition test, and the playhead; dragging on
-// it scrubs.
+// at the end of every key (phase), the blend window of the transition test, the playhead, and the clip's
+// events in a lane below (dojo_events.cpp); dragging on the ticks scrubs.
 #include "ui/dojo_panel.h"
 
 #include <imgui.h>
@@ -81,8 +81,15 @@ void DojoPanel::timeline(float width) {
     } else {
         markers(clip_, 0.0, IM_COL32(150, 200, 255, 255));
     }
-    const float x = p.x + static_cast<float>(std::fmod(time_, length + 1e-9) / length) * width;
-    draw->AddLine(ImVec2(x, p.y), ImVec2(x, p.y + h), IM_COL32(255, 80, 80, 255), 2.0f);
+    // The playhead: a looping clip's pass, a ping-pong's way back, the transition test's own time.
+    const double shown = transition_mode_ ? std::fmod(time_, length + 1e-9) : clip_time();
+    const float x = p.x + static_cast<float>(shown / length) * width;
+    const float lane = ImGui::GetFrameHeight() * 0.8f;
+    if (!transition_mode_) event_lane(Vec2(p.x, p.y + h + 2), width, lane, length);
+    draw->AddLine(ImVec2(x, p.y), ImVec2(x, p.y + h + (transition_mode_ ? 0 : lane + 2)),
+                  IM_COL32(255, 80, 80, 255), 2.0f);
+    ImGui::SetCursorScreenPos(ImVec2(p.x, p.y + h + 2));
+    ImGui::Dummy(ImVec2(width, lane));
 }
 
 } // namespace ks::editor::ui

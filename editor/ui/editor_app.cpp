@@ -79,12 +79,15 @@ Result<void> EditorApp::init() {
     } else if (!shell_.screenshot_mode()) {
         if (auto offer = find_untitled_recovery(autosaver_.config())) editor_.offer_recovery(*offer);
     }
-    dojo_ = std::make_unique<DojoPanel>(assets_, *renderer_, options_.dojo_file, options_.audition);
+    dojo_ = std::make_unique<DojoPanel>(
+        assets_, *renderer_,
+        DojoSetup{options_.dojo_file, options_.audition,
+                  [this](const std::string& line, bool error) { log_line(line, error); }});
     dojo_tab_ = options_.start_in_dojo;
     if (options_.dojo_view) {
         auto view = parse_dojo_view(*options_.dojo_view);
         if (!view) return view.error();
-        dojo_->apply_view(*view, [this](const std::string& line, bool error) { log_line(line, error); });
+        dojo_->apply_view(*view);
     }
     overlays_.navmesh = options_.show_navmesh;
     set_view(options_.view.value_or(ViewMode::Perspective)); // perspective: from above one corner
@@ -189,8 +192,7 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
                                          ImGui::GetFrameHeight());
     menu_bar();
     if (dojo_tab_) {
-        dojo_->panel(layout.bottom.x, layout.centre.y, layout.bottom.w, layout.centre.h,
-                     [this](const std::string& line, bool error) { log_line(line, error); });
+        dojo_->panel(layout.bottom.x, layout.centre.y, layout.bottom.w, layout.centre.h);
     } else {
         outliner_panel(layout.left.x, layout.left.y, layout.left.w, layout.left.h);
         viewport_panel(layout.centre.x, layout.centre.y, layout.centre.w, layout.centre.h);
@@ -219,7 +221,7 @@ void EditorApp::handle_shortcuts() {
     if (ctrl && pressed(GLFW_KEY_O)) request(PendingAction::Open);
     if (ctrl && pressed(GLFW_KEY_S)) {
         if (dojo_tab_)
-            dojo_->save([this](const std::string& line, bool error) { log_line(line, error); });
+            dojo_->save();
         else
             save(shift);
     }
@@ -237,7 +239,10 @@ void EditorApp::handle_shortcuts() {
         undo();
     }
     if (pressed(GLFW_KEY_F5)) play_test(shift);
-    if (dojo_tab_) return; // the rest acts on the level viewport
+    if (dojo_tab_) {
+        if (pressed(GLFW_KEY_DELETE)) dojo_->delete_selected();
+        return; // the rest acts on the level viewport
+    }
     if (ctrl && pressed(GLFW_KEY_D)) report(editor_.duplicate(), "duplicate");
     if (ctrl && pressed(GLFW_KEY_A)) editor_.select_all();
     if (ctrl && pressed(GLFW_KEY_C)) {
