@@ -80,6 +80,7 @@ void DojoPanel::blend_grid() {
     const float rows_height = (ImGui::GetFrameHeight() + 2.0f) * static_cast<float>(n + 1) + 8.0f;
     const float height =
         std::min(rows_height, ImGui::GetContentRegionAvail().y - ImGui::GetFrameHeightWithSpacing());
+    blend_centres_.assign(n * n, Vec2(0.0f));
     if (ImGui::BeginTable("blend grid", static_cast<int>(n) + 1, flags, ImVec2(0, std::max(80.0f, height)))) {
         ImGui::TableSetupScrollFreeze(1, 1);
         ImGui::TableSetupColumn("from \\ to", ImGuiTableColumnFlags_WidthFixed, name_width);

@@ -174,7 +174,8 @@ void DojoPanel::clip_dialog() {
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
     ImGui::SetNextItemWidth(300);
     const bool entered =
-        ImGui::InputText("##clip name", clip_name_, sizeof(clip_name_), ImGuiInputTextFlags_EnterReturnsTrue);
+        ImGui::InputText("##clip name", clip_name_, sizeof(clip_name_),
+                         ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
     mark(DojoSpot::ClipNameField);
     const std::string name = clip_name_;
     const bool unchanged = rename && def && name == def->name;

@@ -190,6 +190,7 @@ void DojoPanel::curve_view() {
         ImGui::PushID(static_cast<int>(k));
         ImGui::SetCursorScreenPos(ImVec2(c.x - kHandle - 2, c.y - kHandle - 2));
         ImGui::InvisibleButton("key", ImVec2(2 * kHandle + 4, 2 * kHandle + 4));
+        curve_handles_.push_back(Vec2(c.x, c.y));
         const bool hovered = ImGui::IsItemHovered(), active = ImGui::IsItemActive();
         if (ImGui::IsItemActivated()) {
             curve_drag_.active = true;

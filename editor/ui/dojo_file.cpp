@@ -80,6 +80,7 @@ void DojoPanel::file_row() {
         ImGui::TextColored(kNoticeColour, "%s was changed outside the editor.", name.c_str());
         ImGui::SameLine();
         if (ImGui::SmallButton("Reload it")) reload();
+        mark(DojoSpot::ReloadNotice);
         ImGui::SameLine();
         if (ImGui::SmallButton("Keep mine")) remember_disk();
         if (ImGui::IsItemHovered())
@@ -87,6 +88,7 @@ void DojoPanel::file_row() {
     }
     ImGui::BeginDisabled(!issues_.empty());
     if (ImGui::Button(("Save " + name + (dirty_ ? " *" : "")).c_str())) save();
+    mark(DojoSpot::Save);
     ImGui::EndDisabled();
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip(issues_.empty() ? "Ctrl+S: validate and write %s"
@@ -94,6 +96,7 @@ void DojoPanel::file_row() {
                           clip_file_.string().c_str());
     ImGui::SameLine();
     if (ImGui::Button("Reload")) reload();
+    mark(DojoSpot::Reload);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Read %s again from disk", clip_file_.string().c_str());
 }
 

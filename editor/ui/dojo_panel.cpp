@@ -20,9 +20,9 @@ namespace ks::editor::ui {
 namespace {
 constexpr float kDojoBar = 212.0f; // transport, timeline (with its event lane) and transition tester
 constexpr const char* kPageNames[] = {"keys", "curves", "blends", "events"};
-constexpr const char* kSpotNames[] = {"add_key",     "duplicate_key", "new_clip",    "clip_name",
-                                      "clip_ok",     "page_keys",     "page_curves", "page_blends",
-                                      "page_events", "save",          "add_event"};
+constexpr const char* kSpotNames[] = {"add_key",   "duplicate_key", "new_clip",    "clip_name",   "clip_ok",
+                                      "page_keys", "page_curves",   "page_blends", "page_events", "save",
+                                      "reload",    "reload_notice", "add_event"};
 static_assert(std::size(kSpotNames) == static_cast<size_t>(DojoSpot::Count));
 
 Result<bool> parse_flag(const std::string& key, const std::string& value) {
@@ -62,6 +62,12 @@ Result<DojoView> parse_dojo_view(const std::string& text) {
                 return Error("--dojo-view: channel=" + value + " is not a channel", {},
                              "channels are rot.x, rot.y, rot.z, pos.x, pos.y, pos.z");
             view.channel = *channel;
+        } else if (key == "robot") {
+            char* end = nullptr;
+            const long id = std::strtol(value.c_str(), &end, 10);
+            if (value.empty() || *end != '\0' || id <= 0 || id > 1'000'000)
+                return Error("--dojo-view: robot=" + value + " is not an entity id", {}, "e.g. robot=46");
+            view.robot = static_cast<int>(id);
         } else if (key == "onion") {
             auto on = parse_flag(key, value);
             if (!on) return on.error();
@@ -69,7 +75,7 @@ Result<DojoView> parse_dojo_view(const std::string& text) {
         } else {
             return Error("--dojo-view: unknown item '" + item + "'", {},
                          "items are clip=NAME, page=keys|curves|blends|events, node=NODE, channel=rot.x, "
-                         "time=SECONDS, onion=1, separated by commas");
+                         "time=SECONDS, onion=1, robot=ID, separated by commas");
         }
     }
     return view;
@@ -303,6 +309,7 @@ DojoPanel::Status DojoPanel::status() const {
         for (const auto& clip : file_.clips) st.blend_clips.push_back(clip.name);
         st.blend_centres = blend_centres_;
     }
+    if (page_ == DojoPage::Curves) st.curve_keys = curve_handles_;
     st.dirty = dirty_;
     st.changed_on_disk = changed_on_disk_;
     st.onion = onion_;
@@ -326,6 +333,7 @@ void DojoPanel::panel(float x, float y, float width, float height) {
     ensure_loaded();
     watch_disk();
     spots_ = {};
+    curve_handles_.clear();
     if (!ImGui::IsAnyItemActive()) edit_open_ = false; // a drag is one undo step
     ImGui::SetNextWindowPos(ImVec2(x, y));
     ImGui::SetNextWindowSize(ImVec2(width, height));

@@ -50,6 +50,7 @@ struct DojoView {
     CurveChannel channel = CurveChannel::RotX;
     double time = -1.0; // >= 0: paused at this many seconds
     bool onion = false;
+    int robot = 0; // > 0: the level robot with this id plays the clip in the level tab (preview in context)
 };
 // Parses "clip=shooting,page=curves,node=arm_r,channel=rot.z,time=0.25,onion=1"; the error names the
 // unknown key or bad value and lists the keys.
@@ -73,6 +74,8 @@ enum class DojoSpot : std::uint8_t {
     PageBlends,
     PageEvents,
     Save,
+    Reload,
+    ReloadNotice,
     AddEvent,
     Count
 };
@@ -127,6 +130,7 @@ class DojoPanel {
         std::array<Vec2, static_cast<size_t>(DojoSpot::Count)> spots{}; // centres; (0, 0): not drawn
         std::vector<std::string> blend_clips; // the blend grid's rows and columns, while it is shown
         std::vector<Vec2> blend_centres;      // its cells' centres, row-major ((0, 0): not drawn)
+        std::vector<Vec2> curve_keys;         // the curve view's key handles, while it is shown
     };
     Status status() const;
 
@@ -286,6 +290,7 @@ class DojoPanel {
     // Blend grid: the selected cell (its transition plays in the tester).
     int blend_from_ = -1, blend_to_ = -1;
     std::vector<Vec2> blend_centres_; // status: each cell's centre this frame, row-major
+    std::vector<Vec2> curve_handles_; // status: the curve view's key handles this frame
 
     // The clip file on disk: what it was when loaded or saved, and whether it has changed since.
     DiskFingerprint disk_;

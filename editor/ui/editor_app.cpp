@@ -88,6 +88,13 @@ Result<void> EditorApp::init() {
         auto view = parse_dojo_view(*options_.dojo_view);
         if (!view) return view.error();
         dojo_->apply_view(*view);
+        if (view->robot > 0) { // preview in context: select the robot and play the clip on it
+            if (auto r = editor_.select({view->robot}); !r) return r.error();
+            if (preview_robot() != view->robot)
+                return Error("--dojo-view: entity " + std::to_string(view->robot) + " is not a robot", {},
+                             "give the id of a robot in the level (--level FILE)");
+            clip_preview_ = true;
+        }
     }
     overlays_.navmesh = options_.show_navmesh;
     set_view(options_.view.value_or(ViewMode::Perspective)); // perspective: from above one corner

@@ -36,6 +36,8 @@ nlohmann::json dojo_status(const DojoPanel& dojo) {
                 if (d.blend_centres[from * n + to] != Vec2(0.0f)) // drawn (not scrolled out of the table)
                     cells[d.blend_clips[from] + ">" + d.blend_clips[to]] =
                         point(d.blend_centres[from * n + to]);
+    nlohmann::json curve_keys = nlohmann::json::array();
+    for (const Vec2& key : d.curve_keys) curve_keys.push_back(point(key));
     return {{"undo", d.undo},
             {"redo", d.redo},
             {"undo_name", d.undo_name},
@@ -56,6 +58,7 @@ nlohmann::json dojo_status(const DojoPanel& dojo) {
             {"file", dojo.clip_file().string()},
             {"spots", spots},
             {"blend_cells", cells},
+            {"curve_keys", curve_keys},
             // Kept from before the spots map (older tests read them).
             {"add_key", point(d.spots[static_cast<size_t>(DojoSpot::AddKey)])},
             {"duplicate_key", point(d.spots[static_cast<size_t>(DojoSpot::DuplicateKey)])}};
