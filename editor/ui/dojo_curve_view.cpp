@@ -103,6 +103,97 @@ void DojoPanel::curve_picker() {
     }
 }
 
+namespace {
+// The plot's rectangle on screen and the time and value ranges it shows.
+struct Plot {
+    ImVec2 lo, hi; // top-left, bottom-right of the plotting area
+    double t0, t1, v0, v1;
+    float x(double t) const { return lo.x + static_cast<float>((t - t0) / (t1 - t0)) * (hi.x - lo.x); }
+    float y(double v) const { return hi.y - static_cast<float>((v - v0) / (v1 - v0)) * (hi.y - lo.y); }
+    double time_at(float sx) const { return t0 + (sx - lo.x) / (hi.x - lo.x) * (t1 - t0); }
+    double value_at(float sy) const { return v0 + (hi.y - sy) / (hi.y - lo.y) * (v1 - v0); }
+};
+
+// Value lines with their labels, and a faint line at each key's time with the time under the plot.
+void draw_grid(ImDrawList* draw, const Plot& plot, const ClipCurve& curve, bool position) {
+    const ImU32 label_colour = IM_COL32(130, 136, 150, 255);
+    const double step = nice_step(plot.v1 - plot.v0, 5);
+    for (double line = std::ceil(plot.v0 / step) * step; line <= plot.v1; line += step) {
+        const double v = std::abs(line) < step * 1e-6 ? 0.0 : line; // no "-0"
+        const float y = plot.y(v);
+        draw->AddLine(ImVec2(plot.lo.x, y), ImVec2(plot.hi.x, y),
+                      v == 0.0 ? IM_COL32(95, 100, 115, 255) : IM_COL32(45, 49, 58, 255));
+        char label[24];
+        std::snprintf(label, sizeof(label), position ? "%.2f" : "%.0f\xc2\xb0", v);
+        const ImVec2 text = ImGui::CalcTextSize(label);
+        draw->AddText(ImVec2(plot.lo.x - text.x - 6, y - text.y * 0.5f), label_colour, label);
+    }
+    draw->AddText(ImVec2(plot.lo.x - 4, plot.hi.y + 3), label_colour, "0s");
+    for (const CurveKey& key : curve.keys) {
+        const float x = plot.x(key.time);
+        draw->AddLine(ImVec2(x, plot.lo.y), ImVec2(x, plot.hi.y), IM_COL32(60, 64, 76, 255));
+        char label[16];
+        std::snprintf(label, sizeof(label), "%.2fs", key.time);
+        const ImVec2 text = ImGui::CalcTextSize(label);
+        draw->AddText(ImVec2(std::min(x - text.x * 0.5f, plot.hi.x - text.x), plot.hi.y + 3), label_colour,
+                      label);
+    }
+}
+
+// The curve, one eased segment per key in alternating shades with the easing's name over wide segments, and
+// the start value (the rest pose the dojo plays from) as a small dot.
+void draw_segments(ImDrawList* draw, const Plot& plot, const ClipCurve& curve) {
+    ImVec2 points[401];
+    double from = 0.0;
+    for (std::size_t k = 0; k < curve.keys.size(); ++k) {
+        const CurveKey& key = curve.keys[k];
+        int n = 0;
+        for (const CurvePoint& point : curve.points)
+            if (point.time >= from - 1e-9 && point.time <= key.time + 1e-9 && n < 401)
+                points[n++] = ImVec2(plot.x(point.time), plot.y(point.value));
+        const ImU32 colour = kSegmentColours[k % 2];
+        if (n >= 2) draw->AddPolyline(points, n, colour, 0, 2.5f);
+        const std::string ease = anim::ease_name(key.ease);
+        const ImVec2 text = ImGui::CalcTextSize(ease.c_str());
+        if (!ease.empty() && plot.x(key.time) - plot.x(from) > text.x + 8)
+            draw->AddText(
+                ImVec2((plot.x(from) + plot.x(key.time) - text.x) * 0.5f, plot.lo.y - kTopMargin + 2),
+                (colour & 0x00ffffff) | 0xa0000000, ease.c_str());
+        from = key.time;
+    }
+    draw->AddCircleFilled(ImVec2(plot.x(0.0), plot.y(curve.start_value)), 3.5f, IM_COL32(160, 165, 180, 255));
+}
+
+// A key's diamond: filled where the node's key sets the channel, hollow where it does not (yet).
+void draw_handle(ImDrawList* draw, ImVec2 c, const CurveKey& key, bool selected, bool hot) {
+    const ImU32 colour = selected    ? IM_COL32(255, 210, 80, 255)
+                         : key.keyed ? IM_COL32(255, 160, 90, 255)
+                                     : IM_COL32(150, 155, 170, 255);
+    const float r = kHandle + (hot ? 1.5f : 0.0f);
+    const ImVec2 d[4] = {ImVec2(c.x, c.y - r), ImVec2(c.x + r, c.y), ImVec2(c.x, c.y + r),
+                         ImVec2(c.x - r, c.y)};
+    if (key.keyed)
+        draw->AddQuadFilled(d[0], d[1], d[2], d[3], colour);
+    else
+        draw->AddQuad(d[0], d[1], d[2], d[3], colour, 1.8f);
+}
+} // namespace
+
+// The axes: the clip's time, and the values shown with a margin; kept while a key is dragged, so the plot
+// does not rescale under the mouse.
+void DojoPanel::fit_curve_axes() {
+    if (curve_drag_.active) return;
+    double lo = curve_.start_value, hi = curve_.start_value;
+    for (const auto& point : curve_.points) lo = std::min(lo, point.value), hi = std::max(hi, point.value);
+    const double least = is_position(curve_channel_) ? 0.2 : 20.0;
+    if (hi - lo < least) lo -= (least - (hi - lo)) * 0.5, hi = lo + least;
+    const double pad = (hi - lo) * 0.12;
+    curve_drag_.t0 = 0.0;
+    curve_drag_.t1 = std::max(curve_.duration, 0.01);
+    curve_drag_.v0 = lo - pad;
+    curve_drag_.v1 = hi + pad;
+}
+
 void DojoPanel::curve_view() {
     const anim::ClipDef* def = shown_def();
     if (!def || file_.rig.empty()) return;
@@ -112,81 +203,21 @@ void DojoPanel::curve_view() {
                       std::max(120.0f, ImGui::GetContentRegionAvail().y - 26.0f));
     ImDrawList* draw = ImGui::GetWindowDrawList();
     draw->AddRectFilled(p, ImVec2(p.x + size.x, p.y + size.y), IM_COL32(20, 22, 28, 255), 4.0f);
-    const ImVec2 plot0(p.x + kLeftMargin, p.y + kTopMargin);
-    const ImVec2 plot1(p.x + size.x - kRightMargin, p.y + size.y - kBottomMargin);
-    if (!refresh_curve(std::clamp(static_cast<int>((plot1.x - plot0.x) / 3.0f), 16, 400))) {
+    const ImVec2 lo(p.x + kLeftMargin, p.y + kTopMargin);
+    const ImVec2 hi(p.x + size.x - kRightMargin, p.y + size.y - kBottomMargin);
+    if (!refresh_curve(std::clamp(static_cast<int>((hi.x - lo.x) / 3.0f), 16, 400))) {
         ImGui::Dummy(size);
-        draw->AddText(ImVec2(plot0.x, plot0.y + 10), IM_COL32(255, 110, 90, 255), curve_error_.c_str());
+        draw->AddText(ImVec2(lo.x, lo.y + 10), IM_COL32(255, 110, 90, 255), curve_error_.c_str());
         return;
     }
-    // The axes: the clip's time, the values shown with a margin (frozen while a key is dragged).
-    if (!curve_drag_.active) {
-        double lo = curve_.start_value, hi = curve_.start_value;
-        for (const auto& point : curve_.points)
-            lo = std::min(lo, point.value), hi = std::max(hi, point.value);
-        const double least = is_position(curve_channel_) ? 0.2 : 20.0;
-        if (hi - lo < least) lo -= (least - (hi - lo)) * 0.5, hi = lo + least;
-        const double pad = (hi - lo) * 0.12;
-        curve_drag_.t0 = 0.0;
-        curve_drag_.t1 = std::max(curve_.duration, 0.01);
-        curve_drag_.v0 = lo - pad;
-        curve_drag_.v1 = hi + pad;
-    }
-    const CurveDrag& axes = curve_drag_;
-    auto sx = [&](double t) {
-        return plot0.x + static_cast<float>((t - axes.t0) / (axes.t1 - axes.t0)) * (plot1.x - plot0.x);
-    };
-    auto sy = [&](double v) {
-        return plot1.y - static_cast<float>((v - axes.v0) / (axes.v1 - axes.v0)) * (plot1.y - plot0.y);
-    };
-    // Value grid and labels.
-    const double step = nice_step(axes.v1 - axes.v0, 5);
-    for (double line = std::ceil(axes.v0 / step) * step; line <= axes.v1; line += step) {
-        const double v = std::abs(line) < step * 1e-6 ? 0.0 : line; // no "-0"
-        const float y = sy(v);
-        draw->AddLine(ImVec2(plot0.x, y), ImVec2(plot1.x, y),
-                      std::abs(v) < step * 1e-3 ? IM_COL32(95, 100, 115, 255) : IM_COL32(45, 49, 58, 255));
-        char label[24];
-        std::snprintf(label, sizeof(label), is_position(curve_channel_) ? "%.2f" : "%.0f\xc2\xb0", v);
-        const ImVec2 text = ImGui::CalcTextSize(label);
-        draw->AddText(ImVec2(plot0.x - text.x - 6, y - text.y * 0.5f), IM_COL32(130, 136, 150, 255), label);
-    }
-    // Key times: a faint line and the time under the plot (and the start's).
-    draw->AddText(ImVec2(plot0.x - 4, plot1.y + 3), IM_COL32(130, 136, 150, 255), "0s");
-    for (const CurveKey& key : curve_.keys) {
-        const float x = sx(key.time);
-        draw->AddLine(ImVec2(x, plot0.y), ImVec2(x, plot1.y), IM_COL32(60, 64, 76, 255));
-        char label[16];
-        std::snprintf(label, sizeof(label), "%.2fs", key.time);
-        const ImVec2 text = ImGui::CalcTextSize(label);
-        draw->AddText(ImVec2(std::min(x - text.x * 0.5f, plot1.x - text.x), plot1.y + 3),
-                      IM_COL32(130, 136, 150, 255), label);
-    }
-    // The curve, one eased segment per key, alternating shades; the easing's name over wide segments.
-    ImVec2 points[401];
-    double from = 0.0;
-    for (std::size_t k = 0; k < curve_.keys.size(); ++k) {
-        const CurveKey& key = curve_.keys[k];
-        int n = 0;
-        for (const CurvePoint& point : curve_.points)
-            if (point.time >= from - 1e-9 && point.time <= key.time + 1e-9 && n < 401)
-                points[n++] = ImVec2(sx(point.time), sy(point.value));
-        const ImU32 colour = kSegmentColours[k % 2];
-        if (n >= 2) draw->AddPolyline(points, n, colour, 0, 2.5f);
-        const std::string ease = anim::ease_name(key.ease);
-        const ImVec2 text = ImGui::CalcTextSize(ease.c_str());
-        if (!ease.empty() && sx(key.time) - sx(from) > text.x + 8)
-            draw->AddText(ImVec2((sx(from) + sx(key.time) - text.x) * 0.5f, plot0.y - kTopMargin + 2),
-                          (colour & 0x00ffffff) | 0xa0000000, ease.c_str());
-        from = key.time;
-    }
-    // The start (the rest pose the dojo plays from): a small fixed dot.
-    draw->AddCircleFilled(ImVec2(sx(0.0), sy(curve_.start_value)), 3.5f, IM_COL32(160, 165, 180, 255));
-    // Key handles: filled where this node's key sets the channel, hollow where it does not (yet).
+    fit_curve_axes();
+    const Plot plot{lo, hi, curve_drag_.t0, curve_drag_.t1, curve_drag_.v0, curve_drag_.v1};
+    draw_grid(draw, plot, curve_, is_position(curve_channel_));
+    draw_segments(draw, plot, curve_);
     const std::string node = file_.rig[static_cast<size_t>(curve_node_)].name;
     for (std::size_t k = 0; k < curve_.keys.size(); ++k) {
         const CurveKey& key = curve_.keys[k];
-        const ImVec2 c(sx(key.time), sy(key.value));
+        const ImVec2 c(plot.x(key.time), plot.y(key.value));
         ImGui::PushID(static_cast<int>(k));
         ImGui::SetCursorScreenPos(ImVec2(c.x - kHandle - 2, c.y - kHandle - 2));
         ImGui::InvisibleButton("key", ImVec2(2 * kHandle + 4, 2 * kHandle + 4));
@@ -204,22 +235,10 @@ void DojoPanel::curve_view() {
         }
         if (active && curve_drag_.active && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 1.0f)) {
             const ImVec2 mouse = ImGui::GetIO().MousePos;
-            const double t = axes.t0 + (mouse.x - plot0.x) / (plot1.x - plot0.x) * (axes.t1 - axes.t0);
-            const double v = axes.v0 + (plot1.y - mouse.y) / (plot1.y - plot0.y) * (axes.v1 - axes.v0);
-            curve_drag(k, t, v, ImGui::GetIO().KeyShift);
+            curve_drag(k, plot.time_at(mouse.x), plot.value_at(mouse.y), ImGui::GetIO().KeyShift);
         }
         if (ImGui::IsItemDeactivated()) curve_drag_.active = false, curve_drag_.origin = {};
-        const bool selected = static_cast<int>(key.phase) == selected_phase_;
-        const ImU32 colour = selected    ? IM_COL32(255, 210, 80, 255)
-                             : key.keyed ? IM_COL32(255, 160, 90, 255)
-                                         : IM_COL32(150, 155, 170, 255);
-        const float r = kHandle + (hovered || active ? 1.5f : 0.0f);
-        const ImVec2 d[4] = {ImVec2(c.x, c.y - r), ImVec2(c.x + r, c.y), ImVec2(c.x, c.y + r),
-                             ImVec2(c.x - r, c.y)};
-        if (key.keyed)
-            draw->AddQuadFilled(d[0], d[1], d[2], d[3], colour);
-        else
-            draw->AddQuad(d[0], d[1], d[2], d[3], colour, 1.8f);
+        draw_handle(draw, c, key, static_cast<int>(key.phase) == selected_phase_, hovered || active);
         if (hovered && !active)
             ImGui::SetTooltip(
                 "key %zu of %s at %.3f s: %.2f%s\n%s", key.phase + 1, node.c_str(), key.time, key.value,
@@ -228,9 +247,8 @@ void DojoPanel::curve_view() {
                           : "not keyed here: drag up or down to key it");
         ImGui::PopID();
     }
-    // The playhead.
-    const float px = sx(clip_time());
-    draw->AddLine(ImVec2(px, plot0.y), ImVec2(px, plot1.y), IM_COL32(255, 80, 80, 200), 1.5f);
+    const float playhead = plot.x(clip_time());
+    draw->AddLine(ImVec2(playhead, lo.y), ImVec2(playhead, hi.y), IM_COL32(255, 80, 80, 200), 1.5f);
     ImGui::SetCursorScreenPos(p);
     ImGui::Dummy(size);
     ImGui::TextDisabled("Drag keys in time and value (Shift: one direction). Hollow: %s not keyed there.",

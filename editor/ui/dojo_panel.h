@@ -200,6 +200,7 @@ class DojoPanel {
     void curve_view();
     void curve_picker();
     bool refresh_curve(int samples);
+    void fit_curve_axes();
     void curve_drag(std::size_t key, double time, double value, bool shift);
 
     // dojo_blend_grid.cpp
