@@ -6,6 +6,7 @@
 #include "model/dojo_edit_support.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 
 namespace ks::editor {

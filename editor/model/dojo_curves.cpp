@@ -84,6 +84,43 @@ void fill_keys(const anim::AnimationFile& file, const anim::ClipDef& def, const 
     }
 }
 
+// The file compiled on its own rig, with the rest pose clips start from and the node's index.
+struct CompiledClips {
+    anim::Rig rig;
+    anim::ClipSet clips;
+    anim::Pose rest;
+    int node = -1;
+    mutable std::vector<Vec3> euler, position; // sampling scratch
+
+    double sample(std::size_t clip, CurveChannel channel, double t) const {
+        anim::sample_clip(clips.clips[clip], rest.euler, rest.position, t, euler, position);
+        const auto n = static_cast<std::size_t>(node);
+        return shown(channel, is_position(channel) ? position[n] : euler[n], rig.node(node));
+    }
+};
+
+Result<CompiledClips> compile_for(const anim::AnimationFile& file, std::size_t clip,
+                                  const std::string& node) {
+    if (auto found = clip_at(file, clip); !found) return found.error();
+    auto rig = anim::build_rig(file);
+    if (!rig) return rig.error();
+    CompiledClips out;
+    out.node = rig->find(node);
+    if (out.node < 0) {
+        std::string names;
+        for (const anim::RigNode& n : rig->nodes()) names += (names.empty() ? "" : ", ") + n.name;
+        return Error("node '" + node + "' is not in the rig", {}, "nodes: " + names);
+    }
+    auto clips = anim::compile(file, *rig);
+    if (!clips) return clips.error();
+    out.clips = std::move(clips).value();
+    out.rig = std::move(rig).value();
+    out.rest.set_rest(out.rig);
+    out.euler = out.rest.euler;
+    out.position = out.rest.position;
+    return out;
+}
+
 } // namespace
 
 const char* curve_channel_name(CurveChannel c) {
@@ -98,38 +135,30 @@ std::optional<CurveChannel> curve_channel_from_name(std::string_view name) {
 
 Result<ClipCurve> clip_curve(const anim::AnimationFile& file, std::size_t clip, const std::string& node,
                              CurveChannel channel, int samples) {
-    auto found = clip_at(file, clip);
-    if (!found) return found.error();
-    auto rig = anim::build_rig(file);
-    if (!rig) return rig.error();
-    const int node_index = rig->find(node);
-    if (node_index < 0) {
-        std::string names;
-        for (const anim::RigNode& n : rig->nodes()) names += (names.empty() ? "" : ", ") + n.name;
-        return Error("node '" + node + "' is not in the rig", {}, "nodes: " + names);
-    }
-    auto compiled = anim::compile(file, *rig);
+    auto compiled = compile_for(file, clip, node);
     if (!compiled) return compiled.error();
-    const anim::Clip& c = compiled->clips[clip];
-    const anim::RigNode& rig_node = rig->node(node_index);
-
-    anim::Pose rest;
-    rest.set_rest(*rig);
-    std::vector<Vec3> euler = rest.euler, position = rest.position;
+    const anim::Clip& c = compiled->clips.clips[clip];
+    const anim::RigNode& rig_node = compiled->rig.node(compiled->node);
+    const auto n = static_cast<std::size_t>(compiled->node);
     ClipCurve curve;
     curve.duration = c.duration;
-    const Vec3 start = is_position(channel) ? rest.position[static_cast<std::size_t>(node_index)]
-                                            : rest.euler[static_cast<std::size_t>(node_index)];
+    const Vec3 start = is_position(channel) ? compiled->rest.position[n] : compiled->rest.euler[n];
     curve.start_value = shown(channel, start, rig_node);
     const int count = c.duration > 0 ? std::clamp(samples, 2, 4096) : 1;
     for (int i = 0; i < count; ++i) {
         const double t = count == 1 ? 0.0 : c.duration * i / (count - 1);
-        anim::sample_clip(c, rest.euler, rest.position, t, euler, position);
-        const Vec3& v = (is_position(channel) ? position : euler)[static_cast<std::size_t>(node_index)];
-        curve.points.push_back({t, shown(channel, v, rig_node)});
+        curve.points.push_back({t, compiled->sample(clip, channel, t)});
     }
-    fill_keys(file, **found, c, rig_node, node_index, channel, start, curve);
+    fill_keys(file, file.clips[clip], c, rig_node, compiled->node, channel, start, curve);
     return curve;
+}
+
+Result<double> curve_value(const anim::AnimationFile& file, std::size_t clip, const std::string& node,
+                           CurveChannel channel, double seconds) {
+    if (!std::isfinite(seconds)) return Error("time is not a number", {}, "seconds from the clip's start");
+    auto compiled = compile_for(file, clip, node);
+    if (!compiled) return compiled.error();
+    return compiled->sample(clip, channel, seconds);
 }
 
 Result<void> move_key_time(anim::AnimationFile& file, std::size_t clip, std::size_t phase, double seconds) {

@@ -55,6 +55,12 @@ struct ClipCurve {
 Result<ClipCurve> clip_curve(const anim::AnimationFile& file, std::size_t clip, const std::string& node,
                              CurveChannel channel, int samples = 64);
 
+// The channel's value (as ClipCurve shows it) `seconds` after the clip starts from the rest pose, past its
+// end too (a loop repeats, a ping-pong clip comes back, a once clip holds): a readout, and what scripts
+// check.
+Result<double> curve_value(const anim::AnimationFile& file, std::size_t clip, const std::string& node,
+                           CurveChannel channel, double seconds);
+
 // Moves key `phase` (the end of that phase) to `seconds` from the clip's start: that phase's duration and
 // the next one's change so every other key stays where it is; the last key changes the clip's length.
 // Refused when it would cross (not meet) a neighbouring key, leave an event outside the clip, or give a

@@ -1,6 +1,7 @@
 #include "model/dojo_keys.h"
 
 #include "anim/clip_io.h"
+#include "anim/required_clips.h"
 
 #include <algorithm>
 
@@ -133,8 +134,14 @@ void DojoHistory::clear() {
     redo_.clear();
 }
 
+std::vector<anim::Issue> dojo_file_issues(const anim::AnimationFile& file) {
+    auto issues = anim::validate(file);
+    for (anim::Issue& issue : anim::check_required_clips(file)) issues.push_back(std::move(issue));
+    return issues;
+}
+
 Result<void> save_dojo_file(const std::filesystem::path& path, const anim::AnimationFile& file) {
-    const auto issues = anim::validate(file);
+    const auto issues = dojo_file_issues(file);
     if (!issues.empty()) {
         const auto& first = issues.front();
         return Error(

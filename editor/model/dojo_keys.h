@@ -4,6 +4,7 @@
 // undo/redo history of whole-file snapshots (animation files are a few kilobytes), and a save that
 // validates before it writes atomically.
 #include "anim/clip.h"
+#include "anim/clip_io.h"
 #include "core/result.h"
 
 #include <cstddef>
@@ -57,8 +58,12 @@ class DojoHistory {
     std::vector<Step> undo_, redo_;
 };
 
-// Validates `file` (anim::validate) and writes it atomically; on validation issues nothing is written and
-// the error names the file, the first issue's JSON path, its message and fix, and how many issues there are.
+// What the dojo checks live and before saving: anim::validate (durations, finite values, events inside their
+// clip, ...) and then anim::check_required_clips (the robot's clips the game and the Dojo play).
+std::vector<anim::Issue> dojo_file_issues(const anim::AnimationFile& file);
+
+// Checks `file` (dojo_file_issues) and writes it atomically; on issues nothing is written and the error
+// names the file, the first issue's JSON path, its message and fix, and how many issues there are.
 Result<void> save_dojo_file(const std::filesystem::path& path, const anim::AnimationFile& file);
 
 } // namespace ks::editor

@@ -110,8 +110,8 @@ void check_patrol_on_mesh(const level::Level& level, nav::NavMesh& mesh, const V
                 if (auto nearest = mesh.nearest_point(p, Vec3(8.0f, extents.y, 8.0f))) {
                     fix.kind = QuickFix::Kind::MovePatrolPoint;
                     fix.label = "Snap to the nearest walkable point";
-                    // The mesh floats a little above the floor (its height samples): keep the point's own height,
-                    // which the support check has just found on a surface.
+                    // The mesh floats a little above the floor (its height samples): keep the point's own
+                    // height, which the support check has just found on a surface.
                     fix.position = {nearest->x, p.y, nearest->z};
                     fix.index = static_cast<int>(i);
                 }

@@ -60,6 +60,60 @@ enum class ScriptOp {
     ExpectPatrol,
     ExpectDirty,
     ExpectClean,
+    Dojo, // a command on the clip file (ScriptStep::dojo): see DojoOp
+};
+
+// The dojo context: commands on an animation clip file (`dojo open`, `clip ...`, `blend ...`, `event ...`,
+// `key ...`) and its expectations, run on the script's DojoDocument (script_dojo_parser.cpp,
+// script_dojo_runner.cpp). Kept in groups in this order (files, clips, blends, events, keys, expectations):
+// the runner sends each group to its own function by range.
+enum class DojoOp {
+    Open,
+    Save,
+    Undo,
+    Redo,
+    ClipNew,
+    ClipDuplicate,
+    ClipRename,
+    ClipDelete,
+    ClipLoop,
+    BlendDefault,
+    BlendSet,
+    BlendClear,
+    EventAdd,
+    EventMove,
+    EventRename,
+    EventSound,
+    EventRemove,
+    KeyTime,
+    KeyValue,
+    KeyAdd,
+    KeyRemove,
+    ExpectClipExists,
+    ExpectClipMissing,
+    ExpectClipLoop,
+    ExpectClipDuration,
+    ExpectBlend,
+    ExpectEvents,
+    ExpectEvent,
+    ExpectKeyTime,
+    ExpectKeyValue,
+    ExpectCurve,
+    ExpectValid,
+    ExpectIssue,
+    ExpectDirty,
+    ExpectClean,
+};
+
+// One dojo line: `words` holds the names in the order the line gives them (clips, nodes, channel, loop mode,
+// event name and sound, file path), `number` the seconds or value, `index` the key or event (counted from 1,
+// as the panel shows them) or the undo/redo count (-1: all).
+struct DojoStep {
+    DojoOp op = DojoOp::Open;
+    std::vector<std::string> words;
+    double number = 0, number2 = 0;
+    bool has_number = false;
+    int index = 0;
 };
 
 // One parsed line. Which members matter depends on op (see script_parser.cpp).
@@ -75,6 +129,7 @@ struct ScriptStep {
     std::vector<int> ids;
     SelectMode mode = SelectMode::Replace;
     std::string text, text2; // field names, values, paths, names
+    DojoStep dojo;           // ScriptOp::Dojo
 };
 
 struct Script {
@@ -86,7 +141,7 @@ struct Script {
 struct ScriptReport {
     int lines_run = 0;
     int expectations_checked = 0;
-    std::vector<std::filesystem::path> saved; // every file written by `save`, in order
+    std::vector<std::filesystem::path> saved; // every file written by `save` and `dojo save`, in order
 };
 
 // Parses every line; all syntax errors at once, one per line of the combined Error.

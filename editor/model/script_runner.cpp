@@ -1,5 +1,6 @@
 // The script language's runner: each parsed step applied to an Editor, expectations checked.
 #include "model/script.h"
+#include "model/script_dojo.h"
 #include "model/script_tokens.h"
 
 #include "core/log.h"
@@ -92,6 +93,8 @@ class Runner {
         case ScriptOp::ExpectDirty:
         case ScriptOp::ExpectClean:
             return run_expectation(s);
+        case ScriptOp::Dojo:
+            return run_dojo_step(s.dojo, dojo_, script_.base_dir, report_);
         }
         return ok();
     }
@@ -408,6 +411,7 @@ class Runner {
 
     const Script& script_;
     Editor& editor_;
+    DojoDocument dojo_; // the clip file the dojo lines edit (`dojo open`)
     ScriptReport report_;
 };
 

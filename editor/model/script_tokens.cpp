@@ -51,6 +51,18 @@ bool to_int(std::string_view s, int& out) {
     return res.ec == std::errc() && res.ptr == s.data() + s.size();
 }
 
+bool to_double(std::string_view s, double& out) {
+    if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+    auto res = std::from_chars(s.data(), s.data() + s.size(), out);
+    return res.ec == std::errc() && res.ptr == s.data() + s.size() && std::isfinite(out);
+}
+
+Error error_at(const std::vector<Token>& tokens, std::string_view line, size_t token, const std::string& file,
+               int line_no, std::string message, std::string hint) {
+    const int column = token < tokens.size() ? tokens[token].column : static_cast<int>(line.size()) + 1;
+    return Error(std::move(message), Location{file, line_no, column}, std::move(hint));
+}
+
 bool to_vec3(std::string_view s, Vec3& out) {
     for (int i = 0; i < 3; ++i) {
         size_t comma = s.find(',');

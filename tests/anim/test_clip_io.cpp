@@ -56,7 +56,11 @@ TEST_CASE("load -> save -> load -> save is byte-identical for every feature of t
     two.loop = LoopMode::Loop;
     two.phases.push_back(PhaseDef{0.5, Ease::linear(), {}});
     two.events = {{0.0, "muzzle_flash", "robot_shot"}, {1.0 / 3.0, "step \"left\"", ""}};
-    f.clips = {one, two};
+    ClipDef three;
+    three.name = "three";
+    three.loop = LoopMode::PingPong;
+    three.phases.push_back(PhaseDef{0.25, Ease::linear(), {}});
+    f.clips = {one, two, three};
     f.clips[0].next = two.name;
     f.blends[1].to = two.name;
     f.blends[0].to = two.name;
@@ -72,6 +76,7 @@ TEST_CASE("load -> save -> load -> save is byte-identical for every feature of t
     CHECK(reloaded->clips[1].name == "two \"quoted\"");
     CHECK(reloaded->clips[1].events == f.clips[1].events);
     CHECK(reloaded->clips[0].events.empty());
+    CHECK(reloaded->clips[2].loop == LoopMode::PingPong);
     CHECK_FALSE(reloaded->wrap_captured_angles);
     REQUIRE(reloaded->node_ease.size() == 2);
     CHECK(reloaded->node_ease[1].ease == Ease::power(1.5f, EaseMode::Out));
@@ -134,7 +139,8 @@ TEST_CASE("malformed clip files give clear errors: file, line:column, JSON path,
         {"unknown_next.json",
          {"unknown_next.json:14:15", "clips[0].next", "unknown clip 'ghost'", "known clips: nod"}},
         {"unknown_loop_mode.json",
-         {"unknown_loop_mode.json:13:15", "unknown loop mode 'pingpong'", "once, loop, next"}},
+         {"unknown_loop_mode.json:13:15", "unknown loop mode 'pingpong'", "did you mean 'ping_pong'?",
+          "one of once, loop, ping_pong, next"}},
         {"parent_after_child.json",
          {"parent_after_child.json:6:32", "rig[1].parent",
           "parent 'chest' is not a node listed before 'head'", "earlier nodes: robot"}},
@@ -145,6 +151,8 @@ TEST_CASE("malformed clip files give clear errors: file, line:column, JSON path,
         {"wrong_version.json", {"wrong_version.json:3:14", "unsupported version 7", "version 1"}},
         {"duplicate_clip.json", {"duplicate_clip.json:25:15", "clips[1].name", "duplicate clip 'nod'"}},
         {"zero_length_loop.json", {"zero_length_loop.json:14:17", "looping clip 'nod' has zero length"}},
+        {"zero_length_ping_pong.json",
+         {"zero_length_ping_pong.json:14:17", "ping-pong clip 'nod' has zero length"}},
         {"bad_bezier.json", {"bad_bezier.json:17:19", "x1 and x2 must be in [0, 1]"}},
         {"rot_and_add_rot.json", {"rot_and_add_rot.json:19:21", "both \"rot\" and \"add_rot\""}},
         {"unknown_rest_node.json", {"unknown_rest_node.json:9:27", "rest_nodes[1]", "unknown node 'neck'"}},
