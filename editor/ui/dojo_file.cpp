@@ -100,7 +100,36 @@ void DojoPanel::file_row() {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Read %s again from disk", clip_file_.string().c_str());
 }
 
-void DojoPanel::file_prompts() {
+DojoPanel::QuitAnswer DojoPanel::take_quit_answer() {
+    const QuitAnswer answer = quit_answer_;
+    quit_answer_ = QuitAnswer::Pending;
+    return answer;
+}
+
+void DojoPanel::quit_prompt() {
+    if (ask_quit_) ImGui::OpenPopup("Unsaved clip edits");
+    ask_quit_ = false;
+    ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    if (!ImGui::BeginPopupModal("Unsaved clip edits", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    ImGui::Text("%s has unsaved edits from the Dojo tab (%zu undo steps).",
+                clip_file_.filename().string().c_str(), history_.undo_count());
+    ImGui::Text("Save them before quitting?");
+    if (ImGui::Button("Save", ImVec2(100, 0))) {
+        save(); // refused (issues) or waiting on the overwrite question: quitting stops, the edits kept
+        quit_answer_ = dirty_ ? QuitAnswer::Stay : QuitAnswer::Go;
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Discard", ImVec2(100, 0))) quit_answer_ = QuitAnswer::Go, ImGui::CloseCurrentPopup();
+    mark(DojoSpot::QuitDiscard);
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel", ImVec2(100, 0))) quit_answer_ = QuitAnswer::Stay, ImGui::CloseCurrentPopup();
+    mark(DojoSpot::QuitCancel);
+    ImGui::EndPopup();
+}
+
+void DojoPanel::prompts() {
+    quit_prompt();
     if (ask_reload_) ImGui::OpenPopup("Reload clip file?");
     if (ask_overwrite_) ImGui::OpenPopup("Overwrite clip file?");
     ask_reload_ = ask_overwrite_ = false;

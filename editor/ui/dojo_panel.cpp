@@ -3,7 +3,6 @@
 #include "ui/dojo_panel.h"
 
 #include "anim/gltf_rig.h"
-#include "anim/required_clips.h"
 #include "core/paths.h"
 #include "render/mesh_data.h"
 
@@ -20,9 +19,10 @@ namespace ks::editor::ui {
 namespace {
 constexpr float kDojoBar = 212.0f; // transport, timeline (with its event lane) and transition tester
 constexpr const char* kPageNames[] = {"keys", "curves", "blends", "events"};
-constexpr const char* kSpotNames[] = {"add_key",   "duplicate_key", "new_clip",    "clip_name",   "clip_ok",
-                                      "page_keys", "page_curves",   "page_blends", "page_events", "save",
-                                      "reload",    "reload_notice", "add_event"};
+constexpr const char* kSpotNames[] = {"add_key",     "duplicate_key", "new_clip",    "clip_name",
+                                      "clip_ok",     "page_keys",     "page_curves", "page_blends",
+                                      "page_events", "save",          "reload",      "reload_notice",
+                                      "add_event",   "quit_cancel",   "quit_discard"};
 static_assert(std::size(kSpotNames) == static_cast<size_t>(DojoSpot::Count));
 
 Result<bool> parse_flag(const std::string& key, const std::string& value) {
@@ -167,8 +167,7 @@ void DojoPanel::apply_view(const DojoView& view) {
 
 void DojoPanel::recompile() {
     ++revision_; // the file changed: cached ghosts and curves are stale, compiled or not
-    issues_ = anim::validate(file_);
-    for (auto& issue : anim::check_required_clips(file_)) issues_.push_back(std::move(issue));
+    issues_ = dojo_file_issues(file_);
     compile_error_.clear();
     if (!issues_.empty()) return; // keep the last good clips playing until the file is valid again
     auto compiled = anim::compile(file_, rig_);
@@ -255,6 +254,11 @@ void DojoPanel::refuse(const Error& error) {
     log_("dojo: " + error.str(), true);
 }
 
+void DojoPanel::begin_frame() {
+    spots_ = {};
+    curve_handles_.clear();
+}
+
 void DojoPanel::mark(DojoSpot spot) {
     const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
     spots_[static_cast<size_t>(spot)] = Vec2((a.x + b.x) * 0.5f, (a.y + b.y) * 0.5f);
@@ -332,8 +336,6 @@ bool DojoPanel::redo() {
 void DojoPanel::panel(float x, float y, float width, float height) {
     ensure_loaded();
     watch_disk();
-    spots_ = {};
-    curve_handles_.clear();
     if (!ImGui::IsAnyItemActive()) edit_open_ = false; // a drag is one undo step
     ImGui::SetNextWindowPos(ImVec2(x, y));
     ImGui::SetNextWindowSize(ImVec2(width, height));
@@ -350,7 +352,6 @@ void DojoPanel::panel(float x, float y, float width, float height) {
     if (clips_.clips.empty()) {
         ImGui::TextColored(ImVec4(1, 0.4f, 0.35f, 1), "%s", compile_error_.c_str());
         ImGui::EndGroup();
-        file_prompts();
         ImGui::End();
         return;
     }
@@ -370,7 +371,6 @@ void DojoPanel::panel(float x, float y, float width, float height) {
     ImGui::EndChild();
     clip_dialog();
     add_event_popup();
-    file_prompts();
     ImGui::End();
 }
 

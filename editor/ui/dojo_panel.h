@@ -77,6 +77,8 @@ enum class DojoSpot : std::uint8_t {
     Reload,
     ReloadNotice,
     AddEvent,
+    QuitCancel,
+    QuitDiscard,
     Count
 };
 const char* dojo_spot_name(DojoSpot spot);
@@ -88,6 +90,8 @@ class DojoPanel {
     // GL pass (before ImGui): advances playback by dt and renders the posed robot into the preview target
     // for a tab of w x h.
     void render(float width, float height, double dt);
+    // Before the frame's ImGui calls: forgets where things were drawn last frame (the status file's spots).
+    void begin_frame();
     // The ImGui tab itself, at (x, y) with size w x h.
     void panel(float x, float y, float width, float height);
     // Applies a start view (--dojo-view); an unknown clip or node is logged and the default kept.
@@ -105,6 +109,14 @@ class DojoPanel {
     void reload();
     // Delete in the Dojo tab: removes the selected event; false when none is selected.
     bool delete_selected();
+    // The dojo's questions (reload over unsaved edits, save over outside changes, quit with unsaved edits),
+    // drawn whichever tab is shown.
+    void prompts();
+    // Quitting with unsaved clip edits: asks Save / Discard / Cancel. take_quit_answer() returns Go once
+    // the edits are saved or dropped, Stay when cancelled (or the save refused), Pending until then.
+    enum class QuitAnswer : std::uint8_t { Pending, Go, Stay };
+    void ask_before_quit() { ask_quit_ = true; }
+    QuitAnswer take_quit_answer();
 
     // Preview in context: the level viewport shows a level robot posed by this player. ensure_loaded()
     // reads the clip file if the tab was never shown; tick() advances playback (render() does in the tab).
@@ -211,7 +223,7 @@ class DojoPanel {
     // dojo_file.cpp
     void file_row();
     void watch_disk();
-    void file_prompts();
+    void quit_prompt();
     void write_file();
     void remember_disk();
 
@@ -297,7 +309,8 @@ class DojoPanel {
     DiskFingerprint disk_;
     double next_disk_check_ = 0.0; // ImGui time of the next look at the file
     bool changed_on_disk_ = false;
-    bool ask_reload_ = false, ask_overwrite_ = false;
+    bool ask_reload_ = false, ask_overwrite_ = false, ask_quit_ = false;
+    QuitAnswer quit_answer_ = QuitAnswer::Pending;
 
     // Preview
     RenderTarget target_;

@@ -22,6 +22,11 @@ namespace fs = std::filesystem;
 namespace {
 EditorApp* g_app = nullptr; // the window-close callback has no user pointer to spare (ImGui's backend)
 
+Vec2 item_centre() {
+    return Vec2((ImGui::GetItemRectMin().x + ImGui::GetItemRectMax().x) * 0.5f,
+                (ImGui::GetItemRectMin().y + ImGui::GetItemRectMax().y) * 0.5f);
+}
+
 fs::path recent_files_path() {
     fs::path dir = default_config_dir();
     if (dir.empty()) dir = fs::temp_directory_path() / "killswitch";
@@ -197,6 +202,7 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
     wheel_ = ImGui::GetIO().MouseWheel;
     const Layout layout = compute_layout(static_cast<float>(info.width), static_cast<float>(info.height),
                                          ImGui::GetFrameHeight());
+    dojo_->begin_frame();
     menu_bar();
     if (dojo_tab_) {
         dojo_->panel(layout.bottom.x, layout.centre.y, layout.bottom.w, layout.centre.h);
@@ -289,7 +295,10 @@ void EditorApp::handle_shortcuts() {
 
 void EditorApp::menu_bar() {
     if (!ImGui::BeginMainMenuBar()) return;
-    if (ImGui::BeginMenu("File")) {
+    const bool file_menu = ImGui::BeginMenu("File");
+    menu_spots_[0] = item_centre();
+    menu_spots_[1] = Vec2(0.0f);
+    if (file_menu) {
         if (ImGui::MenuItem("New", "Ctrl+N")) request(PendingAction::New);
         if (ImGui::MenuItem("Open...", "Ctrl+O")) request(PendingAction::Open);
         if (ImGui::BeginMenu("Open Recent", !recent_.entries().empty())) {
@@ -301,6 +310,7 @@ void EditorApp::menu_bar() {
         if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) save(true);
         ImGui::Separator();
         if (ImGui::MenuItem("Quit")) request(PendingAction::Quit);
+        menu_spots_[1] = item_centre();
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Edit")) {
@@ -371,6 +381,10 @@ void EditorApp::menu_bar() {
 }
 
 void EditorApp::request(PendingAction action, fs::path path) {
+    if (action == PendingAction::Quit && dojo_->dirty() && !dojo_quit_confirmed_) {
+        dojo_->ask_before_quit(); // the clip file first; its answer comes back through modal_prompts
+        return;
+    }
     pending_ = action;
     pending_path_ = std::move(path);
     if (editor_.has_unsaved_changes())
@@ -442,6 +456,11 @@ void EditorApp::modal_prompts() {
     if (ask_overwrite_) ImGui::OpenPopup("Overwrite?");
     if (editor_.recovery_offer() && !ask_unsaved_ && !ask_path_) ImGui::OpenPopup("Recover autosave");
     ask_unsaved_ = ask_path_ = ask_overwrite_ = false;
+    dojo_->prompts();
+    if (dojo_->take_quit_answer() == DojoPanel::QuitAnswer::Go) {
+        dojo_quit_confirmed_ = true;
+        request(PendingAction::Quit); // on to the level's unsaved changes, if any
+    }
 
     const ImVec2 centre = ImGui::GetMainViewport()->GetCenter();
     ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));

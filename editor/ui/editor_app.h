@@ -176,9 +176,12 @@ class EditorApp {
     bool scroll_log_ = false;
     bool dojo_tab_ = false;
     std::unique_ptr<DojoPanel> dojo_;
-    bool clip_preview_ = false; // "Preview clip" on the selected robot
-    int posed_robot_ = 0;       // the robot the level scene draws in the dojo's pose (0: none)
-    Vec2 preview_toggle_{0.0f}; // the "Preview clip" check box's centre (status file; 0 when hidden)
+    bool dojo_quit_confirmed_ = false; // the dojo's unsaved clip edits were saved or dropped for quitting
+    bool clip_preview_ = false;        // "Preview clip" on the selected robot
+    int posed_robot_ = 0;              // the robot the level scene draws in the dojo's pose (0: none)
+    Vec2 preview_toggle_{0.0f};
+    std::array<Vec2, 2> menu_spots_{}; // status: the File menu's title and its Quit item (while open) // the
+                                       // "Preview clip" check box's centre (status file; 0 when hidden)
 
     // prompts
     PendingAction pending_ = PendingAction::None;

@@ -91,6 +91,7 @@ void EditorApp::write_status() {
                   {"last_build_cpu_ms", scene_stats_.last_build_cpu_ms}};
     s["view"] = view_mode_name(view_.mode);
     s["tab"] = dojo_tab_ ? "dojo" : "level";
+    s["menu"] = {{"file", point(menu_spots_[0])}, {"quit", point(menu_spots_[1])}};
     s["clip_preview"] = {{"on", clip_preview_}, {"robot", posed_robot_}, {"toggle", point(preview_toggle_)}};
     if (dojo_) s["dojo"] = dojo_status(*dojo_);
     int wx = 0, wy = 0;

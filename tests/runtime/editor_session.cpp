@@ -39,6 +39,19 @@ bool EditorProcess::alive() const {
     return pid_ > 0 && waitpid(pid_, nullptr, WNOHANG) == 0;
 }
 
+int EditorProcess::wait_exit(double seconds) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    while (pid_ > 0 && std::chrono::steady_clock::now() < deadline) {
+        int status = 0;
+        if (waitpid(pid_, &status, WNOHANG) == pid_) {
+            pid_ = -1; // reaped: the destructor has nothing to stop
+            return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(40));
+    }
+    return -1;
+}
+
 EditorSession::EditorSession(std::filesystem::path status, const EditorProcess& process,
                              const PrivateDisplay& display)
     : status_(std::move(status)), process_(process), display_(display.name()) {}

@@ -24,6 +24,8 @@ class EditorProcess {
     EditorProcess(const EditorProcess&) = delete;
     EditorProcess& operator=(const EditorProcess&) = delete;
     bool alive() const;
+    // Waits up to `seconds` for the editor to exit by itself; its exit code, or -1 if it did not.
+    int wait_exit(double seconds);
 
   private:
     pid_t pid_ = -1;

@@ -111,6 +111,25 @@ TEST_CASE("dojo input: New clip typed into its dialog, a blend cell from idle ty
     REQUIRE(pair);
     CHECK(pair->time == 0.35);
     CHECK(saved->clips.size() == clip_count + 1);
+
+    // Quitting with unsaved clip edits asks first: Cancel stays, Discard quits without writing.
+    s.key("ctrl+z");
+    st = s.wait("the blend undone", [](const json& j) { return j["dojo"]["dirty"] == true; });
+    for (const char* answer : {"quit_cancel", "quit_discard"}) {
+        s.click(st["menu"]["file"]);
+        st = s.wait("the File menu", [](const json& j) { return j["menu"]["quit"][0].get<float>() > 0.0f; });
+        s.click(st["menu"]["quit"]);
+        st = s.wait("the unsaved clip edits question", [&](const json& j) { return has_spot(j, answer); });
+        s.click(st["dojo"]["spots"][answer]);
+        if (std::string(answer) == "quit_cancel") {
+            st = s.wait("the question answered", [&](const json& j) { return !has_spot(j, answer); });
+            CHECK(st["dojo"]["dirty"] == true); // still running, the edits kept
+        }
+    }
+    CHECK(editor.wait_exit(60) == 0);
+    auto after = anim::load_animation_file(clips);
+    REQUIRE(after);
+    CHECK(find_pair(*after, "idle", "wave")); // the undone blend was not written
     CHECK(*files::read_text(shipped_clips()) == *shipped_before);
 }
 
