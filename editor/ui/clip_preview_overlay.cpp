@@ -38,7 +38,7 @@ void EditorApp::clip_preview_overlay(Vec2 origin, Vec2 size) {
     ImGui::SetCursorScreenPos(ImVec2(origin.x + 6, origin.y + size.y - 32 - height));
     ImGui::PushStyleColor(ImGuiCol_ChildBg, IM_COL32(15, 17, 22, 215));
     ImGui::PushStyleVar(ImGuiStyleVar_ChildRounding, 4.0f);
-    ImGui::BeginChild("clip preview", ImVec2(std::min(size.x - 12, 560.0f), height), false,
+    ImGui::BeginChild("clip preview", ImVec2(std::min(size.x - 12, 720.0f), height), false,
                       ImGuiWindowFlags_AlwaysUseWindowPadding | ImGuiWindowFlags_NoScrollbar);
     char label[96];
     std::snprintf(label, sizeof(label), "Preview clip on %s",

@@ -190,7 +190,7 @@ void DojoPanel::blend_details(const BlendGrid& grid) {
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip("Remove this pair: the cell falls back to the * pairs or the default");
     ImGui::SameLine();
-    ImGui::TextDisabled(transition_mode_ ? "(playing in the tester)" : "");
+    if (transition_mode_) ImGui::TextDisabled("(in the tester)");
 }
 
 } // namespace ks::editor::ui

@@ -68,6 +68,13 @@ Result<DojoView> parse_dojo_view(const std::string& text) {
             if (value.empty() || *end != '\0' || id <= 0 || id > 1'000'000)
                 return Error("--dojo-view: robot=" + value + " is not an entity id", {}, "e.g. robot=46");
             view.robot = static_cast<int>(id);
+        } else if (key == "blend") {
+            const auto arrow = value.find('>');
+            if (arrow == std::string::npos || arrow == 0 || arrow + 1 == value.size())
+                return Error("--dojo-view: blend=" + value + " is not a pair of clips", {},
+                             "e.g. blend=idle>alert");
+            view.blend_from = value.substr(0, arrow);
+            view.blend_to = value.substr(arrow + 1);
         } else if (key == "onion") {
             auto on = parse_flag(key, value);
             if (!on) return on.error();
@@ -75,7 +82,7 @@ Result<DojoView> parse_dojo_view(const std::string& text) {
         } else {
             return Error("--dojo-view: unknown item '" + item + "'", {},
                          "items are clip=NAME, page=keys|curves|blends|events, node=NODE, channel=rot.x, "
-                         "time=SECONDS, onion=1, robot=ID, separated by commas");
+                         "time=SECONDS, onion=1, robot=ID, blend=FROM>TO, separated by commas");
         }
     }
     return view;
@@ -159,6 +166,15 @@ void DojoPanel::apply_view(const DojoView& view) {
             curve_node_ = static_cast<int>(found - file_.rig.begin());
     }
     onion_ = view.onion;
+    if (!view.blend_from.empty()) {
+        const int from = clips_.find(view.blend_from), to = clips_.find(view.blend_to);
+        if (from < 0 || to < 0)
+            log_("--dojo-view: blend=" + view.blend_from + ">" + view.blend_to +
+                     " names a clip the file lacks",
+                 true);
+        else
+            blend_from_ = from, blend_to_ = to, test_transition(from, to);
+    }
     if (view.time >= 0.0) {
         playing_ = false;
         restart_at(view.time);

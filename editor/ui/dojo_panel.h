@@ -51,6 +51,7 @@ struct DojoView {
     double time = -1.0; // >= 0: paused at this many seconds
     bool onion = false;
     int robot = 0; // > 0: the level robot with this id plays the clip in the level tab (preview in context)
+    std::string blend_from, blend_to; // a blend cell selected (its transition plays in the tester)
 };
 // Parses "clip=shooting,page=curves,node=arm_r,channel=rot.z,time=0.25,onion=1"; the error names the
 // unknown key or bad value and lists the keys.
@@ -321,7 +322,7 @@ class DojoPanel {
     std::unique_ptr<render::GpuMesh> floor_;
     const render::Material* floor_material_ = nullptr;
     render::DebugDraw debug_;
-    float orbit_yaw_ = 0.6f, orbit_pitch_ = 0.25f, orbit_distance_ = 8.5f;
+    float orbit_yaw_ = 0.6f, orbit_pitch_ = 0.25f, orbit_distance_ = 7.0f;
     float preview_w_ = 400, preview_h_ = 300;
 
     // Onion skin: the poses at the keys before and after the playhead, recomputed when either key time or
