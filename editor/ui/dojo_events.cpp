@@ -51,6 +51,7 @@ void DojoPanel::event_lane(Vec2 origin, float width, float height, double length
     // The lane itself: double-click adds an event there, right-click offers to.
     ImGui::SetCursorScreenPos(p);
     ImGui::InvisibleButton("event lane", ImVec2(width, height));
+    ImGui::SetItemAllowOverlap(); // the flags drawn over it take the mouse first
     const float mouse_x = ImGui::GetIO().MousePos.x;
     if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left))
         open_add_event(time_at(mouse_x));
@@ -81,6 +82,7 @@ void DojoPanel::event_lane(Vec2 origin, float width, float height, double length
         ImGui::PushID(static_cast<int>(i));
         ImGui::SetCursorScreenPos(ImVec2(x - 5, p.y));
         ImGui::InvisibleButton("event", ImVec2(std::max(10.0f, text_x + label.x - x + 5), height));
+        event_flags_.push_back(Vec2(x, p.y + height * 0.5f));
         if (ImGui::IsItemActivated()) {
             selected_event_ = static_cast<int>(i);
             event_drag_ = true;

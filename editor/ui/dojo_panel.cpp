@@ -273,6 +273,7 @@ void DojoPanel::refuse(const Error& error) {
 void DojoPanel::begin_frame() {
     spots_ = {};
     curve_handles_.clear();
+    event_flags_.clear();
 }
 
 void DojoPanel::mark(DojoSpot spot) {
@@ -330,6 +331,7 @@ DojoPanel::Status DojoPanel::status() const {
         st.blend_centres = blend_centres_;
     }
     if (page_ == DojoPage::Curves) st.curve_keys = curve_handles_;
+    st.event_flags = event_flags_;
     st.dirty = dirty_;
     st.changed_on_disk = changed_on_disk_;
     st.onion = onion_;

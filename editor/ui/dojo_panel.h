@@ -144,6 +144,7 @@ class DojoPanel {
         std::vector<std::string> blend_clips; // the blend grid's rows and columns, while it is shown
         std::vector<Vec2> blend_centres;      // its cells' centres, row-major ((0, 0): not drawn)
         std::vector<Vec2> curve_keys;         // the curve view's key handles, while it is shown
+        std::vector<Vec2> event_flags;        // the event lane's flags (the event's time on the lane)
     };
     Status status() const;
 
@@ -305,6 +306,7 @@ class DojoPanel {
     int blend_from_ = -1, blend_to_ = -1;
     std::vector<Vec2> blend_centres_; // status: each cell's centre this frame, row-major
     std::vector<Vec2> curve_handles_; // status: the curve view's key handles this frame
+    std::vector<Vec2> event_flags_;   // status: the event lane's flags this frame
 
     // The clip file on disk: what it was when loaded or saved, and whether it has changed since.
     DiskFingerprint disk_;

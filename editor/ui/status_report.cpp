@@ -38,6 +38,8 @@ nlohmann::json dojo_status(const DojoPanel& dojo) {
                         point(d.blend_centres[from * n + to]);
     nlohmann::json curve_keys = nlohmann::json::array();
     for (const Vec2& key : d.curve_keys) curve_keys.push_back(point(key));
+    nlohmann::json event_flags = nlohmann::json::array();
+    for (const Vec2& flag : d.event_flags) event_flags.push_back(point(flag));
     return {{"undo", d.undo},
             {"redo", d.redo},
             {"undo_name", d.undo_name},
@@ -59,6 +61,7 @@ nlohmann::json dojo_status(const DojoPanel& dojo) {
             {"spots", spots},
             {"blend_cells", cells},
             {"curve_keys", curve_keys},
+            {"event_flags", event_flags},
             // Kept from before the spots map (older tests read them).
             {"add_key", point(d.spots[static_cast<size_t>(DojoSpot::AddKey)])},
             {"duplicate_key", point(d.spots[static_cast<size_t>(DojoSpot::DuplicateKey)])}};

@@ -159,6 +159,18 @@ TEST_CASE("dojo input: an event added at the playhead, a curve key dragged (one 
     s.key("Return");
     st = s.wait("the event added", [](const json& j) { return j["dojo"]["events"] == 1; });
     CHECK(st["dojo"]["undo"] == 1);
+    // Its flag on the lane under the timeline, dragged later: one undo step for the whole drag.
+    st = s.wait("the event's flag", [](const json& j) { return j["dojo"]["event_flags"].size() == 1; });
+    const float flag_x = st["dojo"]["event_flags"][0][0];
+    s.drag(st["dojo"]["event_flags"][0], 80.0f, 0.0f);
+    st = s.wait("the event moved", [&](const json& j) {
+        return j["dojo"]["undo"] == 2 && j["dojo"]["event_flags"].size() == 1 &&
+               j["dojo"]["event_flags"][0][0].get<float>() > flag_x + 40.0f;
+    });
+    CHECK(st["dojo"]["undo_name"] == "move event footstep");
+    s.key("ctrl+z"); // back to 0.1 s
+    st = s.wait("the move undone", [&](const json& j) { return j["dojo"]["undo"] == 1; });
+    CHECK(st["dojo"]["event_flags"][0][0].get<float>() == doctest::Approx(flag_x).epsilon(0.001));
 
     // Curves page: the shoot pose's one key on arm_r's z rotation (60 degrees, absolute), dragged up.
     s.click(st["dojo"]["spots"]["page_curves"]);
