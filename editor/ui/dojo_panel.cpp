@@ -241,9 +241,9 @@ void DojoPanel::advance(double dt) {
     }
     player_->advance(step);
     time_ += step;
-    if (!audition_) return;
+    if (!audition_ || !event_sounds_) return;
     for (const anim::FiredEvent& fired : player_->fired_events())
-        if (fired.event && !fired.event->sound.empty()) audition_(fired.event->sound, 1.0f);
+        if (fired.event && !fired.event->sound.empty()) audition_(fired.event->sound, 1.0f), ++auditioned_;
 }
 
 void DojoPanel::evaluate_pose() {
@@ -336,6 +336,7 @@ DojoPanel::Status DojoPanel::status() const {
     st.changed_on_disk = changed_on_disk_;
     st.onion = onion_;
     st.ghosts = ghost_instances_;
+    st.auditioned = auditioned_;
     return st;
 }
 

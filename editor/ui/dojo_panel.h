@@ -139,6 +139,7 @@ class DojoPanel {
         std::string clip, page, undo_name, message;  // message: the last refused edit's reason
         bool dirty = false, changed_on_disk = false, onion = false, transition = false;
         int ghosts = 0;                     // onion-skin ghost instances drawn in the last preview
+        int auditioned = 0;                 // event sounds played as the playhead passed them
         int blend_from = -1, blend_to = -1; // the selected blend cell
         std::array<Vec2, static_cast<size_t>(DojoSpot::Count)> spots{}; // centres; (0, 0): not drawn
         std::vector<std::string> blend_clips; // the blend grid's rows and columns, while it is shown
@@ -233,6 +234,8 @@ class DojoPanel {
     render::SceneRenderer& renderer_;
     std::filesystem::path clip_file_;
     SoundAudition audition_;
+    bool event_sounds_ = true; // the transport's Sounds toggle: play events' sounds as the playhead passes
+    int auditioned_ = 0;       // event sounds played so far (status)
     LogFn log_;
     const render::Model* model_ = nullptr;
 

@@ -27,7 +27,12 @@ void DojoPanel::transport() {
     ImGui::SameLine();
     ImGui::Checkbox("Loop", &loop_);
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(90);
+    if (audition_) {
+        ImGui::Checkbox("Sounds", &event_sounds_);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Play the events' sounds as the playhead passes them");
+        ImGui::SameLine();
+    }
+    ImGui::SetNextItemWidth(80);
     ImGui::DragFloat("speed", &speed_, 0.01f, 0.05f, 4.0f, "%.2fx");
     ImGui::SameLine();
     ImGui::Text("t = %.3f s%s", time_, player_ && player_->blending() ? "  (blending)" : "");

@@ -57,6 +57,7 @@ nlohmann::json dojo_status(const DojoPanel& dojo) {
             {"changed_on_disk", d.changed_on_disk},
             {"onion", d.onion},
             {"ghosts", d.ghosts},
+            {"auditioned", d.auditioned},
             {"file", dojo.clip_file().string()},
             {"spots", spots},
             {"blend_cells", cells},

@@ -1,6 +1,7 @@
 // What the dojo panel draws, from the real editor's screenshots (--dojo-view puts it in a state; the status
-// file reports what it drew): the onion skin's tinted ghosts, the curve view's segments and key handles, and
-// a clip previewed on a level robot in the level viewport (preview in context).
+// file reports what it drew): the onion skin's tinted ghosts, the curve view's segments and key handles,
+// a clip previewed on a level robot in the level viewport (preview in context), and the events' sounds
+// played as the playhead passes them.
 #include "level/level_io.h"
 #include "runtime/screen_image.h"
 #include "test_support.h"
@@ -142,4 +143,18 @@ TEST_CASE("dojo preview in context: a clip plays on the selected level robot, in
     INFO("viewport pixels changed by the preview: " << changed);
     CHECK(changed > 1500);
     CHECK(posed.output.find("error") == std::string::npos);
+}
+
+TEST_CASE("dojo event sounds: an event's sound is played as the playhead passes it") {
+    if (!test::have_display()) {
+        MESSAGE("no DISPLAY: dojo view test skipped");
+        return;
+    }
+    test::ScratchDir dir;
+    // shooting's muzzle_flash (sound robot_shot) sits at 0 s: it fires as soon as the clip plays. idle has no
+    // events. Without a sound card the editor's player runs silently, and still counts what it was given.
+    const Shot shooting = editor_shot(dir, "shooting", "--dojo --dojo-view clip=shooting");
+    const Shot idle = editor_shot(dir, "idle", "--dojo --dojo-view clip=idle");
+    CHECK(shooting.status["dojo"]["auditioned"].get<int>() >= 1);
+    CHECK(idle.status["dojo"]["auditioned"] == 0);
 }
