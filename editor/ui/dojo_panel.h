@@ -104,6 +104,7 @@ class DojoPanel {
     // False when there is nothing to undo / redo.
     bool undo();
     bool redo();
+    const DojoHistory& history() const { return history_; }
     // Ctrl+S in the Dojo tab: validates and writes the clip file (asks first when it changed on disk).
     void save();
     // Reads the clip file again; with unsaved edits it asks first.

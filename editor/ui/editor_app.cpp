@@ -314,10 +314,19 @@ void EditorApp::menu_bar() {
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Edit")) {
-        const auto& h = editor_.history();
-        if (ImGui::MenuItem(("Undo " + h.undo_name()).c_str(), "Ctrl+Z", false, h.can_undo())) editor_.undo();
-        if (ImGui::MenuItem(("Redo " + h.redo_name()).c_str(), "Ctrl+Shift+Z", false, h.can_redo()))
-            editor_.redo();
+        if (dojo_tab_) { // the clip file's history, as Ctrl+Z in the tab
+            const auto& h = dojo_->history();
+            if (ImGui::MenuItem(("Undo " + h.undo_name()).c_str(), "Ctrl+Z", false, h.can_undo()))
+                dojo_->undo();
+            if (ImGui::MenuItem(("Redo " + h.redo_name()).c_str(), "Ctrl+Shift+Z", false, h.can_redo()))
+                dojo_->redo();
+        } else {
+            const auto& h = editor_.history();
+            if (ImGui::MenuItem(("Undo " + h.undo_name()).c_str(), "Ctrl+Z", false, h.can_undo()))
+                editor_.undo();
+            if (ImGui::MenuItem(("Redo " + h.redo_name()).c_str(), "Ctrl+Shift+Z", false, h.can_redo()))
+                editor_.redo();
+        }
         ImGui::Separator();
         const bool any = !editor_.doc().selection.empty();
         if (ImGui::MenuItem("Duplicate", "Ctrl+D", false, any)) report(editor_.duplicate(), "duplicate");
