@@ -394,6 +394,7 @@ void EditorApp::request(PendingAction action, fs::path path) {
         dojo_->ask_before_quit(); // the clip file first; its answer comes back through modal_prompts
         return;
     }
+    dojo_quit_confirmed_ = false; // a confirmation counts for this one request
     pending_ = action;
     pending_path_ = std::move(path);
     if (editor_.has_unsaved_changes())
