@@ -217,6 +217,11 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
     log_panel(layout.bottom.x + layout.bottom.w * 0.32f, layout.bottom.y, layout.bottom.w * 0.68f,
               layout.bottom.h);
     modal_prompts();
+    dojo_->prompts(); // the clip file's questions, whichever tab is shown
+    if (dojo_->take_quit_answer() == DojoPanel::QuitAnswer::Go) {
+        dojo_quit_confirmed_ = true;
+        request(PendingAction::Quit); // on to the level's unsaved changes, if any
+    }
     handle_shortcuts();
     update_title();
     ++frame_;
@@ -466,11 +471,6 @@ void EditorApp::modal_prompts() {
     if (ask_overwrite_) ImGui::OpenPopup("Overwrite?");
     if (editor_.recovery_offer() && !ask_unsaved_ && !ask_path_) ImGui::OpenPopup("Recover autosave");
     ask_unsaved_ = ask_path_ = ask_overwrite_ = false;
-    dojo_->prompts();
-    if (dojo_->take_quit_answer() == DojoPanel::QuitAnswer::Go) {
-        dojo_quit_confirmed_ = true;
-        request(PendingAction::Quit); // on to the level's unsaved changes, if any
-    }
 
     const ImVec2 centre = ImGui::GetMainViewport()->GetCenter();
     ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
