@@ -17,6 +17,7 @@ void print_help() {
     std::printf(
         "usage: killswitch-editor [--level FILE] [--script FILE] [--run FILE] [--camera x,y,z,yaw,pitch] "
         "[--dojo] [--navmesh]\n"
+        "                         [--dojo-file FILE] [--dojo-view clip=NAME,time=S,onion=1]\n"
         "                         [--view top|front|side|perspective] [--status-file FILE]\n"
         "                         [--width W] [--height H] [--screenshot FILE --frames N] [--no-vsync]\n"
         "  --level FILE      open a level file (default: a new untitled level)\n"
@@ -25,6 +26,8 @@ void print_help() {
         "  --run FILE        run editor commands in the window session before the first frame\n"
         "  --camera ...      viewport camera x,y,z,yaw,pitch in degrees (yaw 0 looks along -z)\n"
         "  --dojo            start in the dojo (animation) tab\n"
+        "  --dojo-file FILE  the dojo's clip file (default: assets/animations/robot.json)\n"
+        "  --dojo-view V     where the dojo starts: clip=NAME (shown), time=S (paused there), onion=1\n"
         "  --navmesh         show the robots' navigation mesh (View > Navigation mesh)\n"
         "  --view V          start in the top, front or side (orthographic) or perspective view\n"
         "  --status-file F   rewrite F with a JSON snapshot of the session (selection, entity count, undo\n"
@@ -58,8 +61,8 @@ int main(int argc, char** argv) {
         return 0;
     }
     std::vector<std::string> known = shell::shell_options();
-    known.insert(known.end(),
-                 {"level", "script", "run", "camera", "help", "dojo", "view", "status-file", "navmesh"});
+    known.insert(known.end(), {"level", "script", "run", "camera", "help", "dojo", "view", "status-file",
+                               "navmesh", "dojo-file", "dojo-view"});
     if (auto unknown = cl->unknown(known); !unknown.empty()) {
         log::error("unknown option --", unknown.front(), " (see killswitch-editor --help)");
         return 2;
@@ -81,6 +84,8 @@ int main(int argc, char** argv) {
     editor::ui::AppOptions options;
     if (auto level = cl->get("level")) options.level = paths::resolve_user_path(*level);
     options.start_in_dojo = cl->has("dojo");
+    if (auto file = cl->get("dojo-file")) options.dojo_file = paths::resolve_user_path(*file);
+    options.dojo_view = cl->get("dojo-view");
     options.show_navmesh = cl->has("navmesh");
     if (auto run = cl->get("run")) options.run_script = paths::resolve_user_path(*run);
     options.camera = cl->get("camera");

@@ -224,6 +224,11 @@ void LevelScene::set_door_open(int id, float fraction) {
         if (p.entity_id == id) p.door_open = std::clamp(is_finite(fraction) ? fraction : 0.0f, 0.0f, 1.0f);
 }
 
+void LevelScene::set_pose(int id, const ModelPose* pose) {
+    for (auto& p : props_)
+        if (p.entity_id == id) p.pose = pose;
+}
+
 namespace {
 // A door's leaves are solid bevelled slabs (assets/generator/model_door.cpp: rounded_box with a 0.02 bevel,
 // one segment): inset by more than the bevel across the height and thickness, and kept whole across the
@@ -285,6 +290,8 @@ void LevelScene::emit(std::vector<MeshInstance>& instances, std::vector<Light>& 
             const size_t first = instances.size();
             p.model->emit(p.root, pose_, scratch_, instances);
             if (doors_occlude_) mark_door_leaves(*p.model, l, r, first, instances);
+        } else if (p.pose) {
+            p.model->emit(p.root, *p.pose, scratch_, instances);
         } else {
             // Light fixtures glow with their light; they cast no sun shadow (thin stands, lamp heads).
             p.model->emit(p.root, scratch_, instances, is_light ? (p.light_on ? 1.5f : 0.0f) : 1.0f,

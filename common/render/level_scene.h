@@ -43,6 +43,9 @@ class LevelScene {
 
     void set_light_on(int entity_id, bool on);
     void set_door_open(int entity_id, float fraction); // 0 closed .. 1 open
+    // Draws a prop (a robot) in `pose`, its model's node locals, instead of its rest pose: the editor's clip
+    // preview in context. nullptr: the rest pose again. The pose must outlive the emit() calls that use it.
+    void set_pose(int entity_id, const ModelPose* pose);
     // Door leaves are emitted as occluders (MeshInstance::occluder) unless this is off (benchmarks).
     void set_doors_occlude(bool on) { doors_occlude_ = on; }
     // Clears and fills `instances` and `lights` for the current state.
@@ -72,9 +75,10 @@ class LevelScene {
         Mat4 root{1.0f};
         bool light_on = true;
         float door_open = 0.0f;
-        level::DoorProps door; // for doors: the leaves slide as level::door_leaf_centre says
-        Light light;           // for floor/top lights
-        int bake_light = -1;   // its index in the light bake
+        const ModelPose* pose = nullptr; // set_pose
+        level::DoorProps door;           // for doors: the leaves slide as level::door_leaf_centre says
+        Light light;                     // for floor/top lights
+        int bake_light = -1;             // its index in the light bake
     };
     static Prop make_prop(const level::Entity& e, const Model* model, const Mat4& root);
     std::vector<Surface> surfaces_;

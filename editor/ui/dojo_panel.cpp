@@ -1,9 +1,9 @@
+// The dojo panel's core: loading the clip file and the robot's rig, recompiling after edits, playback and
+// the history, and the tab's layout. The parts live beside it (see dojo_panel.h).
 #include "ui/dojo_panel.h"
 
 #include "anim/gltf_rig.h"
 #include "core/paths.h"
-#include "model/dojo_keys.h"
-#include "render/level_scene.h"
 #include "render/mesh_data.h"
 
 #include <imgui.h>
@@ -11,26 +11,98 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
+#include <sstream>
 
 namespace ks::editor::ui {
 
 namespace {
-constexpr float kDojoBar = 190.0f; // transport, timeline and transition tester under the preview
+constexpr float kDojoBar = 212.0f; // transport, timeline (with its event lane) and transition tester
+constexpr const char* kPageNames[] = {"keys", "curves", "blends", "events"};
+constexpr const char* kSpotNames[] = {"add_key",     "duplicate_key", "new_clip",    "clip_name",
+                                      "clip_ok",     "page_keys",     "page_curves", "page_blends",
+                                      "page_events", "save",          "reload",      "reload_notice",
+                                      "add_event",   "quit_cancel",   "quit_discard"};
+static_assert(std::size(kSpotNames) == static_cast<size_t>(DojoSpot::Count));
 
-const char* loop_name(anim::LoopMode m) {
-    return m == anim::LoopMode::Loop ? "loop" : m == anim::LoopMode::Next ? "next" : "once";
+Result<bool> parse_flag(const std::string& key, const std::string& value) {
+    if (value == "1" || value == "on" || value == "true") return true;
+    if (value == "0" || value == "off" || value == "false") return false;
+    return Error("--dojo-view: " + key + "=" + value + " is not on or off", {}, "use " + key + "=1 or 0");
 }
 } // namespace
+
+Result<DojoView> parse_dojo_view(const std::string& text) {
+    DojoView view;
+    std::stringstream items(text);
+    std::string item;
+    while (std::getline(items, item, ',')) {
+        const auto eq = item.find('=');
+        const std::string key = item.substr(0, eq),
+                          value = eq == std::string::npos ? "" : item.substr(eq + 1);
+        if (key == "clip" && !value.empty()) {
+            view.clip = value;
+        } else if (key == "time") {
+            char* end = nullptr;
+            view.time = std::strtod(value.c_str(), &end);
+            if (value.empty() || *end != '\0' || !std::isfinite(view.time) || view.time < 0.0)
+                return Error("--dojo-view: time=" + value + " is not a time in seconds", {},
+                             "e.g. time=0.25");
+        } else if (key == "page") {
+            const auto* found = std::find(std::begin(kPageNames), std::end(kPageNames), value);
+            if (found == std::end(kPageNames))
+                return Error("--dojo-view: page=" + value + " is not a page", {},
+                             "pages are keys, curves, blends, events");
+            view.page = static_cast<DojoPage>(found - std::begin(kPageNames));
+        } else if (key == "node" && !value.empty()) {
+            view.node = value;
+        } else if (key == "channel") {
+            auto channel = curve_channel_from_name(value);
+            if (!channel)
+                return Error("--dojo-view: channel=" + value + " is not a channel", {},
+                             "channels are rot.x, rot.y, rot.z, pos.x, pos.y, pos.z");
+            view.channel = *channel;
+        } else if (key == "robot") {
+            char* end = nullptr;
+            const long id = std::strtol(value.c_str(), &end, 10);
+            if (value.empty() || *end != '\0' || id <= 0 || id > 1'000'000)
+                return Error("--dojo-view: robot=" + value + " is not an entity id", {}, "e.g. robot=46");
+            view.robot = static_cast<int>(id);
+        } else if (key == "blend") {
+            const auto arrow = value.find('>');
+            if (arrow == std::string::npos || arrow == 0 || arrow + 1 == value.size())
+                return Error("--dojo-view: blend=" + value + " is not a pair of clips", {},
+                             "e.g. blend=idle>alert");
+            view.blend_from = value.substr(0, arrow);
+            view.blend_to = value.substr(arrow + 1);
+        } else if (key == "onion") {
+            auto on = parse_flag(key, value);
+            if (!on) return on.error();
+            view.onion = *on;
+        } else {
+            return Error("--dojo-view: unknown item '" + item + "'", {},
+                         "items are clip=NAME, page=keys|curves|blends|events, node=NODE, channel=rot.x, "
+                         "time=SECONDS, onion=1, robot=ID, blend=FROM>TO, separated by commas");
+        }
+    }
+    return view;
+}
+
+const char* dojo_spot_name(DojoSpot spot) {
+    return kSpotNames[static_cast<size_t>(spot)];
+}
 
 void dojo_preview_size(float tab_width, float tab_height, float& w, float& h) {
     w = std::max(64.0f, std::floor(tab_width * 0.5f));
     h = std::max(64.0f, std::floor(tab_height - kDojoBar));
 }
 
-DojoPanel::DojoPanel(render::AssetLibrary& assets, render::SceneRenderer& renderer,
-                     std::filesystem::path clip_file)
+DojoPanel::DojoPanel(render::AssetLibrary& assets, render::SceneRenderer& renderer, DojoSetup setup)
     : assets_(assets), renderer_(renderer),
-      clip_file_(clip_file.empty() ? paths::asset("animations/robot.json") : std::move(clip_file)) {
+      clip_file_(setup.clip_file.empty() ? paths::asset("animations/robot.json")
+                                         : std::move(setup.clip_file)),
+      audition_(std::move(setup.audition)), log_(std::move(setup.log)) {
+    if (!log_) log_ = [](const std::string&, bool) {};
     render::MeshData floor;
     render::append_box(floor, Vec3(0, -0.05f, 0), Vec3(14, 0.1f, 14), Mat4(1.0f), 2.0f);
     floor_ = std::make_unique<render::GpuMesh>(floor);
@@ -41,13 +113,14 @@ DojoPanel::DojoPanel(render::AssetLibrary& assets, render::SceneRenderer& render
                        Vec3(0.5f, 0.7f, 1.0f), 0.8f, 20.0f, 0.8f, 0.9f});
 }
 
-void DojoPanel::load(const LogFn* log) {
+void DojoPanel::load() {
     loaded_ = true;
     model_ = &assets_.model("robot");
+    remember_disk();
     auto file = anim::load_animation_file(clip_file_);
     if (!file) {
         compile_error_ = file.error().str();
-        if (log) (*log)(compile_error_, true);
+        log_(compile_error_, true);
         return;
     }
     file_ = std::move(*file);
@@ -60,12 +133,57 @@ void DojoPanel::load(const LogFn* log) {
     binding_ = anim::RigBinding(rig_, model_->node_names());
     model_pose_ = model_->rest_pose();
     dirty_ = false;
+    history_.clear();
+    edit_open_ = false;
+    message_.clear();
+    selected_event_ = -1;
     recompile();
-    if (clips_.clips.size() > 1) to_clip_ = 1;
+    if (clips_.clips.size() > 1 && to_clip_ == 0) to_clip_ = 1;
+}
+
+void DojoPanel::ensure_loaded() {
+    if (!loaded_) load();
+}
+
+void DojoPanel::apply_view(const DojoView& view) {
+    ensure_loaded();
+    if (!view.clip.empty()) {
+        const int index = clips_.find(view.clip);
+        if (index < 0)
+            log_("--dojo-view: no clip '" + view.clip + "' in " + clip_file_.string(), true);
+        else
+            show_clip(index);
+    }
+    page_ = view.page;
+    page_requested_ = true;
+    curve_channel_ = view.channel;
+    if (!view.node.empty()) {
+        const auto found = std::find_if(file_.rig.begin(), file_.rig.end(),
+                                        [&](const anim::RigNodeDef& n) { return n.name == view.node; });
+        if (found == file_.rig.end())
+            log_("--dojo-view: no node '" + view.node + "' in the rig", true);
+        else
+            curve_node_ = static_cast<int>(found - file_.rig.begin());
+    }
+    onion_ = view.onion;
+    if (!view.blend_from.empty()) {
+        const int from = clips_.find(view.blend_from), to = clips_.find(view.blend_to);
+        if (from < 0 || to < 0)
+            log_("--dojo-view: blend=" + view.blend_from + ">" + view.blend_to +
+                     " names a clip the file lacks",
+                 true);
+        else
+            blend_from_ = from, blend_to_ = to, test_transition(from, to);
+    }
+    if (view.time >= 0.0) {
+        playing_ = false;
+        restart_at(view.time);
+    }
 }
 
 void DojoPanel::recompile() {
-    issues_ = anim::validate(file_);
+    ++revision_; // the file changed: cached ghosts and curves are stale, compiled or not
+    issues_ = dojo_file_issues(file_);
     compile_error_.clear();
     if (!issues_.empty()) return; // keep the last good clips playing until the file is valid again
     auto compiled = anim::compile(file_, rig_);
@@ -80,6 +198,16 @@ void DojoPanel::recompile() {
     to_clip_ = std::clamp(to_clip_, 0, last);
     player_ = std::make_unique<anim::Player>(clips_, rig_);
     restart_at(time_);
+}
+
+void DojoPanel::show_clip(int index) {
+    if (index < 0 || index >= static_cast<int>(clips_.clips.size())) return;
+    clip_ = index;
+    transition_mode_ = false;
+    selected_phase_ = 0;
+    selected_event_ = -1;
+    playing_ = true;
+    restart_at(0.0);
 }
 
 // A pose is a pure function of the time since play() from the rest pose, so scrubbing replays from the start.
@@ -100,207 +228,80 @@ void DojoPanel::restart_at(double seconds) {
     time_ = seconds;
 }
 
+// Playback by dt: a Once clip (or the transition test) starts over when Loop is on; events the playhead
+// passes are auditioned when they name a sound.
+void DojoPanel::advance(double dt) {
+    if (!player_ || !playing_ || !(dt > 0) || clips_.clips.empty()) return;
+    const double step = dt * speed_;
+    const double length = timeline_length();
+    if (loop_ && length > 0 && time_ + step > length &&
+        (transition_mode_ || clips_.clips[static_cast<size_t>(clip_)].loop == anim::LoopMode::Once)) {
+        restart_at(0.0);
+        return;
+    }
+    player_->advance(step);
+    time_ += step;
+    if (!audition_ || !event_sounds_) return;
+    for (const anim::FiredEvent& fired : player_->fired_events())
+        if (fired.event && !fired.event->sound.empty()) audition_(fired.event->sound, 1.0f), ++auditioned_;
+}
+
 void DojoPanel::evaluate_pose() {
     if (player_) binding_.write_locals(player_->pose(), model_pose_.local);
 }
 
-void DojoPanel::render(float width, float height, double dt) {
-    if (!loaded_) load(nullptr);
-    dojo_preview_size(width, height, preview_w_, preview_h_);
-    if (player_ && playing_ && dt > 0) {
-        const double step = dt * speed_;
-        const double length = transition_mode_ ? switch_time_ + blend_time_ + clips_.clips[to_clip_].duration
-                                               : clips_.clips[clip_].duration;
-        if (loop_ && length > 0 && time_ + step > length &&
-            (transition_mode_ || clips_.clips[clip_].loop == anim::LoopMode::Once))
-            restart_at(0.0);
-        else {
-            player_->advance(step);
-            time_ += step;
-        }
-    }
+void DojoPanel::tick(double dt) {
+    advance(dt);
     evaluate_pose();
-    target_.ensure(static_cast<int>(preview_w_), static_cast<int>(preview_h_));
-    target_.bind();
-    instances_.clear();
-    if (model_) model_->emit(Mat4(1.0f), model_pose_, scratch_, instances_);
-    instances_.push_back({floor_.get(), floor_material_, Mat4(1.0f), 1.0f, false});
-    const Vec3 target(0.0f, 1.6f, 0.0f);
-    geometry::Camera camera;
-    camera.fov_y = radians(40.0f);
-    camera.aspect = preview_w_ / preview_h_;
-    camera.yaw = orbit_yaw_;
-    camera.pitch = -orbit_pitch_;
-    camera.position = target - camera.forward() * 8.5f;
-    const render::Environment env = render::preview_environment(0.02f);
-    debug_.clear();
-    for (int i = -3; i <= 3; ++i) { // a floor grid, one unit apart, to read motion against
-        debug_.line(Vec3(i, 0.01f, -3), Vec3(i, 0.01f, 3), Vec4(0.6f, 0.7f, 0.8f, 0.25f));
-        debug_.line(Vec3(-3, 0.01f, i), Vec3(3, 0.01f, i), Vec4(0.6f, 0.7f, 0.8f, 0.25f));
-    }
-    render::SceneFrame frame;
-    frame.camera = camera;
-    frame.environment = env;
-    frame.instances = &instances_;
-    frame.lights = &lights_;
-    frame.debug = &debug_;
-    frame.width = target_.width();
-    frame.height = target_.height();
-    renderer_.invalidate_shadows(); // the level viewport shares the renderer's shadow cache
-    renderer_.render(frame);
-    renderer_.invalidate_shadows();
-}
-
-void DojoPanel::curve(const anim::Ease& ease, float size) {
-    ImDrawList* draw = ImGui::GetWindowDrawList();
-    const ImVec2 p = ImGui::GetCursorScreenPos();
-    const float h = size * 0.6f, pad = h * 0.25f;
-    draw->AddRectFilled(p, ImVec2(p.x + size, p.y + h + 2 * pad), IM_COL32(20, 22, 28, 255), 3.0f);
-    draw->AddLine(ImVec2(p.x, p.y + pad), ImVec2(p.x + size, p.y + pad), IM_COL32(80, 80, 90, 255));
-    draw->AddLine(ImVec2(p.x, p.y + pad + h), ImVec2(p.x + size, p.y + pad + h), IM_COL32(80, 80, 90, 255));
-    ImVec2 points[64];
-    for (int i = 0; i < 64; ++i) {
-        const double t = i / 63.0;
-        points[i] =
-            ImVec2(p.x + static_cast<float>(t) * size, p.y + pad + h - static_cast<float>(ease(t)) * h);
-    }
-    draw->AddPolyline(points, 64, IM_COL32(120, 200, 255, 255), 0, 2.0f);
-    ImGui::Dummy(ImVec2(size, h + 2 * pad));
-}
-
-void DojoPanel::timeline(float width) {
-    if (clips_.clips.empty()) return;
-    const double length = transition_mode_ ? switch_time_ + blend_time_ + clips_.clips[to_clip_].duration
-                                           : std::max(0.01, clips_.clips[clip_].duration);
-    ImDrawList* draw = ImGui::GetWindowDrawList();
-    const ImVec2 p = ImGui::GetCursorScreenPos();
-    const float h = 34.0f;
-    ImGui::InvisibleButton("timeline", ImVec2(width, h));
-    if (ImGui::IsItemActive()) { // scrub
-        const float u = std::clamp((ImGui::GetIO().MousePos.x - p.x) / width, 0.0f, 1.0f);
-        playing_ = false;
-        restart_at(u * length);
-    }
-    draw->AddRectFilled(p, ImVec2(p.x + width, p.y + h), IM_COL32(28, 31, 38, 255), 4.0f);
-    for (int s = 0; s <= static_cast<int>(length * 10); ++s) { // ticks every 0.1 s, labels every second
-        const float x = p.x + static_cast<float>(s / 10.0 / length) * width;
-        const bool second = s % 10 == 0;
-        draw->AddLine(ImVec2(x, p.y + h - (second ? 12 : 6)), ImVec2(x, p.y + h),
-                      IM_COL32(110, 115, 130, 255));
-        if (second) {
-            char t[16];
-            std::snprintf(t, sizeof(t), "%ds", s / 10);
-            draw->AddText(ImVec2(x + 2, p.y + h - 26), IM_COL32(150, 155, 170, 255), t);
-        }
-    }
-    // Key markers: the end of every phase (where its targets are reached).
-    auto markers = [&](const anim::ClipDef& def, double offset, ImU32 colour) {
-        double t = 0;
-        for (size_t i = 0; i < def.phases.size(); ++i) {
-            t += def.phases[i].duration;
-            const float x = p.x + static_cast<float>((offset + t) / length) * width;
-            if (x > p.x + width + 1) break;
-            const bool sel = !transition_mode_ && static_cast<int>(i) == selected_phase_;
-            draw->AddQuadFilled(ImVec2(x, p.y + 3), ImVec2(x + 5, p.y + 9), ImVec2(x, p.y + 15),
-                                ImVec2(x - 5, p.y + 9), sel ? IM_COL32(255, 210, 80, 255) : colour);
-        }
-    };
-    if (transition_mode_) {
-        markers(file_.clips[static_cast<size_t>(from_clip_)], 0.0, IM_COL32(150, 200, 255, 255));
-        markers(file_.clips[static_cast<size_t>(to_clip_)], switch_time_, IM_COL32(255, 150, 120, 255));
-        const float xs = p.x + static_cast<float>(switch_time_ / length) * width;
-        const float xb = p.x + static_cast<float>((switch_time_ + blend_time_) / length) * width;
-        draw->AddRectFilled(ImVec2(xs, p.y), ImVec2(xb, p.y + h), IM_COL32(255, 200, 80, 50));
-    } else if (static_cast<size_t>(clip_) < file_.clips.size()) {
-        markers(file_.clips[static_cast<size_t>(clip_)], 0.0, IM_COL32(150, 200, 255, 255));
-    }
-    const float x = p.x + static_cast<float>(std::fmod(time_, length + 1e-9) / length) * width;
-    draw->AddLine(ImVec2(x, p.y), ImVec2(x, p.y + h), IM_COL32(255, 80, 80, 255), 2.0f);
-}
-
-void DojoPanel::transition_tester() {
-    if (clips_.clips.empty()) return;
-    ImGui::Checkbox("Transition test", &transition_mode_);
-    if (ImGui::IsItemEdited()) restart_at(0.0);
-    auto clip_combo = [&](const char* label, int& index) {
-        bool changed = false;
-        ImGui::SetNextItemWidth(140);
-        if (ImGui::BeginCombo(label, clips_.clips[static_cast<size_t>(index)].name.c_str())) {
-            for (int i = 0; i < static_cast<int>(clips_.clips.size()); ++i)
-                if (ImGui::Selectable(clips_.clips[static_cast<size_t>(i)].name.c_str(), i == index))
-                    index = i, changed = true;
-            ImGui::EndCombo();
-        }
-        return changed;
-    };
-    bool changed = clip_combo("from", from_clip_);
-    ImGui::SameLine();
-    changed |= clip_combo("to", to_clip_);
-    ImGui::SetNextItemWidth(140);
-    changed |= ImGui::DragFloat("switch at", &switch_time_, 0.01f, 0.0f, 10.0f, "%.2f s");
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(140);
-    changed |= ImGui::DragFloat("blend", &blend_time_, 0.01f, 0.0f, 5.0f, "%.2f s");
-    ImGui::SameLine();
-    if (ImGui::SmallButton("file's blend"))
-        blend_time_ = clips_.blend_time(from_clip_, to_clip_), changed = true;
-    if (changed && transition_mode_) restart_at(0.0);
-}
-
-bool DojoPanel::phase_buttons(const LogFn& log) {
-    const auto c = static_cast<std::size_t>(clip_), p = static_cast<std::size_t>(selected_phase_);
-    const std::size_t count = file_.clips[c].phases.size();
-    const std::string key = "key " + std::to_string(p + 1);
-    auto apply = [&](const std::string& name, auto&& edit) {
-        anim::AnimationFile before = file_;
-        if (auto r = edit(); !r) {
-            log("dojo: " + r.error().str(), true);
-            return false;
-        }
-        history_.record(before, name);
-        return true;
-    };
-    bool changed = false;
-    const bool duplicate_clicked = ImGui::SmallButton("Duplicate key");
-    duplicate_key_x_ = (ImGui::GetItemRectMin().x + ImGui::GetItemRectMax().x) * 0.5f;
-    duplicate_key_y_ = (ImGui::GetItemRectMin().y + ImGui::GetItemRectMax().y) * 0.5f;
-    if (duplicate_clicked)
-        changed = apply("duplicate " + key, [&]() -> Result<void> {
-            auto copy = duplicate_phase(file_, c, p);
-            if (!copy) return copy.error();
-            selected_phase_ = static_cast<int>(*copy);
-            return {};
-        });
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Insert a copy of this key after it: absolute targets hold the pose (a pause), "
-                          "relative ones repeat the motion");
-    ImGui::SameLine();
-    ImGui::BeginDisabled(count <= 1);
-    if (ImGui::SmallButton("Remove key"))
-        changed = apply("remove " + key, [&]() -> Result<void> {
-            auto r = remove_phase(file_, c, p);
-            if (r) selected_phase_ = std::max(0, selected_phase_ - 1);
-            return r;
-        });
-    ImGui::EndDisabled();
-    for (int offset : {-1, +1}) {
-        ImGui::SameLine();
-        ImGui::BeginDisabled(offset < 0 ? p == 0 : p + 1 >= count);
-        if (ImGui::SmallButton(offset < 0 ? "Earlier" : "Later"))
-            changed = apply("move " + key + (offset < 0 ? " earlier" : " later"), [&]() -> Result<void> {
-                auto moved = move_phase(file_, c, p, offset);
-                if (!moved) return moved.error();
-                selected_phase_ = static_cast<int>(*moved);
-                return {};
-            });
-        ImGui::EndDisabled();
-    }
-    return changed;
 }
 
 void DojoPanel::begin_edit(const std::string& name) {
     if (!edit_open_) history_.record(file_, name);
     edit_open_ = true;
+}
+
+void DojoPanel::after_edit() {
+    dirty_ = true;
+    recompile();
+}
+
+void DojoPanel::refuse(const Error& error) {
+    message_ = error.message + (error.hint.empty() ? "" : " (" + error.hint + ")");
+    log_("dojo: " + error.str(), true);
+}
+
+void DojoPanel::begin_frame() {
+    spots_ = {};
+    curve_handles_.clear();
+    event_flags_.clear();
+}
+
+void DojoPanel::mark(DojoSpot spot) {
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    spots_[static_cast<size_t>(spot)] = Vec2((a.x + b.x) * 0.5f, (a.y + b.y) * 0.5f);
+}
+
+const anim::ClipDef* DojoPanel::shown_def() const {
+    return static_cast<size_t>(clip_) < file_.clips.size() ? &file_.clips[static_cast<size_t>(clip_)]
+                                                           : nullptr;
+}
+
+// The playhead within the shown clip: a looping clip's time within its pass, a ping-pong's folded back.
+double DojoPanel::clip_time() const {
+    const anim::ClipDef* def = shown_def();
+    if (!def || transition_mode_) return 0.0;
+    const double d = def->duration();
+    if (d <= 0) return 0.0;
+    switch (def->loop) {
+    case anim::LoopMode::Loop:
+        return std::fmod(time_, d);
+    case anim::LoopMode::PingPong: {
+        const double u = std::fmod(time_, 2.0 * d);
+        return u <= d ? u : 2.0 * d - u;
+    }
+    default:
+        return std::min(time_, d);
+    }
 }
 
 DojoPanel::Status DojoPanel::status() const {
@@ -313,203 +314,48 @@ DojoPanel::Status DojoPanel::status() const {
         st.phases = file_.clips[c].phases.size();
         st.phase = p;
     }
-    st.duplicate_key_x = duplicate_key_x_;
-    st.duplicate_key_y = duplicate_key_y_;
-    st.add_key_x = add_key_x_;
-    st.add_key_y = add_key_y_;
+    if (c < file_.clips.size()) {
+        st.clip = file_.clips[c].name;
+        st.events = file_.clips[c].events.size();
+    }
+    st.clips = file_.clips.size();
+    st.page = kPageNames[static_cast<size_t>(page_)];
+    st.undo_name = history_.undo_name();
+    st.message = message_;
+    st.spots = spots_;
+    st.transition = transition_mode_;
+    st.blend_from = blend_from_;
+    st.blend_to = blend_to_;
+    if (page_ == DojoPage::Blends && blend_centres_.size() == file_.clips.size() * file_.clips.size()) {
+        for (const auto& clip : file_.clips) st.blend_clips.push_back(clip.name);
+        st.blend_centres = blend_centres_;
+    }
+    if (page_ == DojoPage::Curves) st.curve_keys = curve_handles_;
+    st.event_flags = event_flags_;
+    st.dirty = dirty_;
+    st.changed_on_disk = changed_on_disk_;
+    st.onion = onion_;
+    st.ghosts = ghost_instances_;
+    st.auditioned = auditioned_;
     return st;
 }
 
 bool DojoPanel::undo() {
     if (!history_.undo(file_)) return false;
-    dirty_ = true;
-    recompile();
+    after_edit();
     return true;
 }
 
 bool DojoPanel::redo() {
     if (!history_.redo(file_)) return false;
-    dirty_ = true;
-    recompile();
+    after_edit();
     return true;
 }
 
-void DojoPanel::key_table(const LogFn& log) {
-    if (static_cast<size_t>(clip_) >= file_.clips.size()) return;
-    anim::ClipDef& def = file_.clips[static_cast<size_t>(clip_)];
-    if (!ImGui::IsAnyItemActive()) edit_open_ = false; // a dragged field is one undo step
-    ImGui::Text("Clip '%s': %s, %zu phases, %.2f s", def.name.c_str(), loop_name(def.loop), def.phases.size(),
-                def.duration());
-    if (def.phases.empty()) return;
-    selected_phase_ = std::clamp(selected_phase_, 0, static_cast<int>(def.phases.size()) - 1);
-    for (int i = 0; i < static_cast<int>(def.phases.size()); ++i) {
-        char label[32];
-        std::snprintf(label, sizeof(label), "key %d", i + 1);
-        if (i) ImGui::SameLine();
-        if (ImGui::RadioButton(label, selected_phase_ == i)) selected_phase_ = i;
-    }
-    if (phase_buttons(log)) {
-        dirty_ = true;
-        recompile();
-        return; // the phase list changed under this frame's references: draw the table next frame
-    }
-    anim::PhaseDef& phase = def.phases[static_cast<size_t>(selected_phase_)];
-    bool edited = phase_timing(phase);
-    std::string remove_node; // a key to remove, applied after the table (the rows reference the targets)
-    edited |= target_rows(phase, remove_node);
-    const auto clip_index = static_cast<std::size_t>(clip_),
-               phase_index = static_cast<std::size_t>(selected_phase_);
-    if (!remove_node.empty()) {
-        history_.record(file_, "remove key " + remove_node);
-        if (auto r = remove_node_key(file_, clip_index, phase_index, remove_node); !r)
-            log("dojo: " + r.error().str(), true);
-        else
-            edited = true;
-    }
-    edited |= add_key_row(log);
-    if (edited) {
-        dirty_ = true;
-        recompile();
-    }
-    save_row(log);
-}
-
-// The selected key's duration and easing (with its curve); true when either changed.
-bool DojoPanel::phase_timing(anim::PhaseDef& phase) {
-    bool edited = false;
-    ImGui::BeginGroup();
-    float duration = static_cast<float>(phase.duration);
-    ImGui::SetNextItemWidth(120);
-    if (ImGui::DragFloat("duration", &duration, 0.005f, 0.0f, 30.0f, "%.3f s", ImGuiSliderFlags_AlwaysClamp))
-        begin_edit("key duration"), phase.duration = duration, edited = true;
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Seconds to reach this key's targets; a key with no targets is a delay.");
-    ImGui::SetNextItemWidth(170);
-    const std::string current = anim::ease_name(phase.ease);
-    if (ImGui::BeginCombo("easing", current.empty() ? "custom" : current.c_str())) {
-        for (const auto& name : anim::known_ease_names())
-            if (ImGui::Selectable(name.c_str(), name == current))
-                if (auto e = anim::parse_ease_name(name))
-                    begin_edit("key easing"), phase.ease = *e, edited = true;
-        ImGui::EndCombo();
-    }
-    ImGui::EndGroup();
-    ImGui::SameLine();
-    curve(phase.ease, 96.0f);
-
-    return edited;
-}
-
-// One row per keyed node: rotation, position offset, mode and a remove button (`remove_node` names it).
-bool DojoPanel::target_rows(anim::PhaseDef& phase, std::string& remove_node) {
-    bool edited = false;
-    if (ImGui::BeginTable("targets", 5,
-                          ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
-                              ImGuiTableFlags_SizingStretchProp,
-                          ImVec2(0, std::max(80.0f, ImGui::GetContentRegionAvail().y - 64.0f)))) {
-        ImGui::TableSetupColumn("node", ImGuiTableColumnFlags_WidthFixed, 90);
-        ImGui::TableSetupColumn("rotation (deg, XYZ)");
-        ImGui::TableSetupColumn("position offset");
-        ImGui::TableSetupColumn("mode", ImGuiTableColumnFlags_WidthFixed, 60);
-        ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, 24);
-        ImGui::TableHeadersRow();
-        for (size_t t = 0; t < phase.targets.size(); ++t) {
-            anim::TargetDef& target = phase.targets[t];
-            ImGui::PushID(static_cast<int>(t));
-            ImGui::TableNextRow();
-            ImGui::TableNextColumn();
-            ImGui::TextUnformatted(target.node.c_str());
-            ImGui::TableNextColumn();
-            auto& rot = target.rot ? target.rot : target.add_rot;
-            if (rot) {
-                float v[3] = {static_cast<float>(rot->x), static_cast<float>(rot->y),
-                              static_cast<float>(rot->z)};
-                ImGui::SetNextItemWidth(-1);
-                if (ImGui::DragFloat3("##rot", v, 0.5f, -3600.0f, 3600.0f, "%.1f"))
-                    begin_edit("rotate " + target.node), *rot = DVec3(v[0], v[1], v[2]), edited = true;
-            } else if (ImGui::SmallButton("+ rot")) {
-                begin_edit("rotate " + target.node), target.rot = DVec3(0.0), edited = true;
-            }
-            ImGui::TableNextColumn();
-            auto& pos = target.pos ? target.pos : target.add_pos;
-            if (pos) {
-                float v[3] = {static_cast<float>(pos->x), static_cast<float>(pos->y),
-                              static_cast<float>(pos->z)};
-                ImGui::SetNextItemWidth(-1);
-                if (ImGui::DragFloat3("##pos", v, 0.01f, -100.0f, 100.0f, "%.2f"))
-                    begin_edit("move " + target.node), *pos = DVec3(v[0], v[1], v[2]), edited = true;
-            } else if (ImGui::SmallButton("+ pos")) {
-                begin_edit("move " + target.node), target.pos = DVec3(0.0), edited = true;
-            }
-            ImGui::TableNextColumn();
-            ImGui::TextDisabled("%s", target.add_rot || target.add_pos ? "relative" : "absolute");
-            ImGui::TableNextColumn();
-            if (ImGui::SmallButton("x")) remove_node = target.node;
-            if (ImGui::IsItemHovered()) ImGui::SetTooltip("Remove this node's key from this phase");
-            ImGui::PopID();
-        }
-        ImGui::EndTable();
-    }
-    return edited;
-}
-
-// The node combo and "Add key" button; true when a key was added.
-bool DojoPanel::add_key_row(const LogFn& log) {
-    bool edited = false;
-    const auto clip_index = static_cast<std::size_t>(clip_),
-               phase_index = static_cast<std::size_t>(selected_phase_);
-    const auto free_nodes = unkeyed_nodes(file_, clip_index, phase_index);
-    add_node_ = std::clamp(add_node_, 0, std::max(0, static_cast<int>(free_nodes.size()) - 1));
-    ImGui::BeginDisabled(free_nodes.empty());
-    ImGui::SetNextItemWidth(140);
-    if (ImGui::BeginCombo("##add_node", free_nodes.empty()
-                                            ? "(every node keyed)"
-                                            : free_nodes[static_cast<size_t>(add_node_)].c_str())) {
-        for (int i = 0; i < static_cast<int>(free_nodes.size()); ++i)
-            if (ImGui::Selectable(free_nodes[static_cast<size_t>(i)].c_str(), i == add_node_)) add_node_ = i;
-        ImGui::EndCombo();
-    }
-    ImGui::SameLine();
-    const bool add_clicked = ImGui::Button("Add key");
-    add_key_x_ = (ImGui::GetItemRectMin().x + ImGui::GetItemRectMax().x) * 0.5f;
-    add_key_y_ = (ImGui::GetItemRectMin().y + ImGui::GetItemRectMax().y) * 0.5f;
-    if (add_clicked && !free_nodes.empty()) {
-        const std::string& node = free_nodes[static_cast<size_t>(add_node_)];
-        history_.record(file_, "add key " + node);
-        if (auto r = add_node_key(file_, clip_index, phase_index, node); !r)
-            log("dojo: " + r.error().str(), true);
-        else
-            edited = true;
-    }
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
-            "Key this node in this phase (holds its pose until you edit the key); Ctrl+Z undoes");
-    ImGui::EndDisabled();
-    return edited;
-}
-
-// The clip file's problems, Save (disabled while it has any) and Reload.
-void DojoPanel::save_row(const LogFn& log) {
-    for (const auto& issue : issues_)
-        ImGui::TextColored(ImVec4(1, 0.4f, 0.35f, 1), "%s: %s (%s)", issue.path.str().c_str(),
-                           issue.message.c_str(), issue.hint.c_str());
-    if (!compile_error_.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.35f, 1), "%s", compile_error_.c_str());
-    ImGui::BeginDisabled(!issues_.empty());
-    if (ImGui::Button(dirty_ ? "Save robot.json *" : "Save robot.json")) {
-        if (auto r = save_dojo_file(clip_file_, file_); !r)
-            log("dojo: " + r.error().str(), true);
-        else {
-            dirty_ = false;
-            log("dojo: saved " + clip_file_.string() + " (the runtime's Dojo and robots load it)", false);
-        }
-    }
-    ImGui::EndDisabled();
-    ImGui::SameLine();
-    if (ImGui::Button("Reload")) load(&log);
-}
-
-void DojoPanel::panel(float x, float y, float width, float height, const LogFn& log) {
-    if (!loaded_) load(&log);
+void DojoPanel::panel(float x, float y, float width, float height) {
+    ensure_loaded();
+    watch_disk();
+    if (!ImGui::IsAnyItemActive()) edit_open_ = false; // a drag is one undo step
     ImGui::SetNextWindowPos(ImVec2(x, y));
     ImGui::SetNextWindowSize(ImVec2(width, height));
     ImGui::Begin("Dojo", nullptr,
@@ -521,63 +367,72 @@ void DojoPanel::panel(float x, float y, float width, float height, const LogFn& 
     pw = std::min(pw, static_cast<float>(target_.width()));
     ph = std::min(ph, static_cast<float>(target_.height()));
     ImGui::BeginGroup();
-    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(target_.texture())), ImVec2(pw, ph),
-                 ImVec2(0, 1), ImVec2(1, 0));
-    if (ImGui::IsItemHovered() && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) { // orbit the preview
-        const ImVec2 d = ImGui::GetIO().MouseDelta;
-        orbit_yaw_ -= d.x * 0.01f;
-        orbit_pitch_ = std::clamp(orbit_pitch_ + d.y * 0.01f, -0.2f, 1.3f);
-    }
+    draw_preview_image(pw, ph);
     if (clips_.clips.empty()) {
         ImGui::TextColored(ImVec4(1, 0.4f, 0.35f, 1), "%s", compile_error_.c_str());
         ImGui::EndGroup();
         ImGui::End();
         return;
     }
-    // Transport.
-    if (ImGui::Button(playing_ ? "Pause" : "Play")) playing_ = !playing_;
-    ImGui::SameLine();
-    if (ImGui::Button("Stop")) playing_ = false, restart_at(0.0);
-    ImGui::SameLine();
-    if (ImGui::Button("Step")) playing_ = false, restart_at(time_ + 1.0 / 30.0);
-    ImGui::SameLine();
-    ImGui::Checkbox("Loop", &loop_);
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(90);
-    ImGui::DragFloat("speed", &speed_, 0.01f, 0.05f, 4.0f, "%.2fx");
-    ImGui::SameLine();
-    ImGui::Text("t = %.3f s%s", time_, player_ && player_->blending() ? "  (blending)" : "");
+    transport();
     timeline(pw);
     ImGui::Spacing();
     transition_tester();
     ImGui::EndGroup();
 
     ImGui::SetCursorPos(ImVec2(start.x + pw + 12, start.y));
-    ImGui::BeginChild("clips", ImVec2(0, 0), false);
-    ImGui::TextDisabled("Clips (%s)", clip_file_.filename().string().c_str());
-    if (ImGui::BeginListBox(
-            "##clips", ImVec2(-1, ImGui::GetTextLineHeightWithSpacing() *
-                                          std::min<float>(4.5f, static_cast<float>(clips_.clips.size())) +
-                                      6))) {
-        for (int i = 0; i < static_cast<int>(clips_.clips.size()); ++i) {
-            char label[96];
-            std::snprintf(label, sizeof(label), "%-20s %5.2f s  %s",
-                          clips_.clips[static_cast<size_t>(i)].name.c_str(),
-                          clips_.clips[static_cast<size_t>(i)].duration,
-                          loop_name(clips_.clips[static_cast<size_t>(i)].loop));
-            if (ImGui::Selectable(label, i == clip_ && !transition_mode_)) {
-                clip_ = i;
-                transition_mode_ = false;
-                selected_phase_ = 0;
-                playing_ = true;
-                restart_at(0.0);
-            }
-        }
-        ImGui::EndListBox();
-    }
-    key_table(log);
+    ImGui::BeginChild("right", ImVec2(0, 0), false, ImGuiWindowFlags_NoScrollbar);
+    clip_toolbar();
+    clip_list();
+    loop_row();
+    right_pages();
+    file_row();
     ImGui::EndChild();
+    clip_dialog();
+    add_event_popup();
     ImGui::End();
+}
+
+// Keys, Curves, Blends, Events: one page at a time, the file row kept below them.
+void DojoPanel::right_pages() {
+    const float file_row_height =
+        ImGui::GetFrameHeightWithSpacing() *
+        (1.0f + (changed_on_disk_ ? 1.0f : 0.0f) + static_cast<float>(issues_.size()) +
+         (compile_error_.empty() ? 0.0f : 1.0f));
+    if (!ImGui::BeginTabBar("pages")) return;
+    constexpr const char* kTitles[] = {"Keys", "Curves", "Blends", "Events"};
+    constexpr DojoSpot kSpots[] = {DojoSpot::PageKeys, DojoSpot::PageCurves, DojoSpot::PageBlends,
+                                   DojoSpot::PageEvents};
+    for (int i = 0; i < static_cast<int>(DojoPage::Count); ++i) {
+        const auto page = static_cast<DojoPage>(i);
+        const ImGuiTabItemFlags flags =
+            page_requested_ && page == page_ ? ImGuiTabItemFlags_SetSelected : ImGuiTabItemFlags_None;
+        const bool open = ImGui::BeginTabItem(kTitles[i], nullptr, flags);
+        mark(kSpots[i]);
+        if (!open) continue;
+        if (!page_requested_) page_ = page;
+        ImGui::BeginChild("page", ImVec2(0, -file_row_height), false);
+        switch (page) {
+        case DojoPage::Keys:
+            key_table();
+            break;
+        case DojoPage::Curves:
+            curve_view();
+            break;
+        case DojoPage::Blends:
+            blend_grid();
+            break;
+        case DojoPage::Events:
+            event_list();
+            break;
+        case DojoPage::Count:
+            break;
+        }
+        ImGui::EndChild();
+        ImGui::EndTabItem();
+    }
+    page_requested_ = false;
+    ImGui::EndTabBar();
 }
 
 } // namespace ks::editor::ui

@@ -22,6 +22,11 @@ namespace fs = std::filesystem;
 namespace {
 EditorApp* g_app = nullptr; // the window-close callback has no user pointer to spare (ImGui's backend)
 
+Vec2 item_centre() {
+    return Vec2((ImGui::GetItemRectMin().x + ImGui::GetItemRectMax().x) * 0.5f,
+                (ImGui::GetItemRectMin().y + ImGui::GetItemRectMax().y) * 0.5f);
+}
+
 fs::path recent_files_path() {
     fs::path dir = default_config_dir();
     if (dir.empty()) dir = fs::temp_directory_path() / "killswitch";
@@ -79,8 +84,23 @@ Result<void> EditorApp::init() {
     } else if (!shell_.screenshot_mode()) {
         if (auto offer = find_untitled_recovery(autosaver_.config())) editor_.offer_recovery(*offer);
     }
-    dojo_ = std::make_unique<DojoPanel>(assets_, *renderer_);
+    dojo_ = std::make_unique<DojoPanel>(
+        assets_, *renderer_,
+        DojoSetup{options_.dojo_file, options_.audition,
+                  [this](const std::string& line, bool error) { log_line(line, error); }});
     dojo_tab_ = options_.start_in_dojo;
+    if (options_.dojo_view) {
+        auto view = parse_dojo_view(*options_.dojo_view);
+        if (!view) return view.error();
+        dojo_->apply_view(*view);
+        if (view->robot > 0) { // preview in context: select the robot and play the clip on it
+            if (auto r = editor_.select({view->robot}); !r) return r.error();
+            if (preview_robot() != view->robot)
+                return Error("--dojo-view: entity " + std::to_string(view->robot) + " is not a robot", {},
+                             "give the id of a robot in the level (--level FILE)");
+            clip_preview_ = true;
+        }
+    }
     overlays_.navmesh = options_.show_navmesh;
     set_view(options_.view.value_or(ViewMode::Perspective)); // perspective: from above one corner
     if (options_.camera) {
@@ -138,6 +158,7 @@ void EditorApp::render_views(const shell::FrameInfo& info) {
         dojo_->render(layout.bottom.w, layout.centre.h, info.frame_dt);
     } else {
         rebuild_scene_if_changed();
+        pose_preview_robot(info.frame_dt);
         const int w = static_cast<int>(layout.centre.w), h = static_cast<int>(layout.centre.h - kViewportBar);
         viewport_target_.ensure(w, h);
         view_.set_viewport(Vec2(static_cast<float>(w), static_cast<float>(std::max(1, h))));
@@ -181,10 +202,10 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
     wheel_ = ImGui::GetIO().MouseWheel;
     const Layout layout = compute_layout(static_cast<float>(info.width), static_cast<float>(info.height),
                                          ImGui::GetFrameHeight());
+    dojo_->begin_frame();
     menu_bar();
     if (dojo_tab_) {
-        dojo_->panel(layout.bottom.x, layout.centre.y, layout.bottom.w, layout.centre.h,
-                     [this](const std::string& line, bool error) { log_line(line, error); });
+        dojo_->panel(layout.bottom.x, layout.centre.y, layout.bottom.w, layout.centre.h);
     } else {
         outliner_panel(layout.left.x, layout.left.y, layout.left.w, layout.left.h);
         viewport_panel(layout.centre.x, layout.centre.y, layout.centre.w, layout.centre.h);
@@ -196,6 +217,11 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
     log_panel(layout.bottom.x + layout.bottom.w * 0.32f, layout.bottom.y, layout.bottom.w * 0.68f,
               layout.bottom.h);
     modal_prompts();
+    dojo_->prompts(); // the clip file's questions, whichever tab is shown
+    if (dojo_->take_quit_answer() == DojoPanel::QuitAnswer::Go) {
+        dojo_quit_confirmed_ = true;
+        request(PendingAction::Quit); // on to the level's unsaved changes, if any
+    }
     handle_shortcuts();
     update_title();
     ++frame_;
@@ -211,7 +237,12 @@ void EditorApp::handle_shortcuts() {
     const bool ctrl = io.KeyCtrl, shift = io.KeyShift;
     if (ctrl && pressed(GLFW_KEY_N)) request(PendingAction::New);
     if (ctrl && pressed(GLFW_KEY_O)) request(PendingAction::Open);
-    if (ctrl && pressed(GLFW_KEY_S)) save(shift);
+    if (ctrl && pressed(GLFW_KEY_S)) {
+        if (dojo_tab_)
+            dojo_->save();
+        else
+            save(shift);
+    }
     // Shift decides between undo and redo for every Z event, including auto-repeat: testing only the first
     // press for redo let a held Ctrl+Shift+Z fall through to the repeating undo once the key-repeat delay
     // passed (one slow frame under Xvfb is enough), so the redo was undone straight away.
@@ -226,7 +257,10 @@ void EditorApp::handle_shortcuts() {
         undo();
     }
     if (pressed(GLFW_KEY_F5)) play_test(shift);
-    if (dojo_tab_) return; // the rest acts on the level viewport
+    if (dojo_tab_) {
+        if (pressed(GLFW_KEY_DELETE)) dojo_->delete_selected();
+        return; // the rest acts on the level viewport
+    }
     if (ctrl && pressed(GLFW_KEY_D)) report(editor_.duplicate(), "duplicate");
     if (ctrl && pressed(GLFW_KEY_A)) editor_.select_all();
     if (ctrl && pressed(GLFW_KEY_C)) {
@@ -266,7 +300,10 @@ void EditorApp::handle_shortcuts() {
 
 void EditorApp::menu_bar() {
     if (!ImGui::BeginMainMenuBar()) return;
-    if (ImGui::BeginMenu("File")) {
+    const bool file_menu = ImGui::BeginMenu("File");
+    menu_spots_[0] = item_centre();
+    menu_spots_[1] = Vec2(0.0f);
+    if (file_menu) {
         if (ImGui::MenuItem("New", "Ctrl+N")) request(PendingAction::New);
         if (ImGui::MenuItem("Open...", "Ctrl+O")) request(PendingAction::Open);
         if (ImGui::BeginMenu("Open Recent", !recent_.entries().empty())) {
@@ -278,13 +315,23 @@ void EditorApp::menu_bar() {
         if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) save(true);
         ImGui::Separator();
         if (ImGui::MenuItem("Quit")) request(PendingAction::Quit);
+        menu_spots_[1] = item_centre();
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Edit")) {
-        const auto& h = editor_.history();
-        if (ImGui::MenuItem(("Undo " + h.undo_name()).c_str(), "Ctrl+Z", false, h.can_undo())) editor_.undo();
-        if (ImGui::MenuItem(("Redo " + h.redo_name()).c_str(), "Ctrl+Shift+Z", false, h.can_redo()))
-            editor_.redo();
+        if (dojo_tab_) { // the clip file's history, as Ctrl+Z in the tab
+            const auto& h = dojo_->history();
+            if (ImGui::MenuItem(("Undo " + h.undo_name()).c_str(), "Ctrl+Z", false, h.can_undo()))
+                dojo_->undo();
+            if (ImGui::MenuItem(("Redo " + h.redo_name()).c_str(), "Ctrl+Shift+Z", false, h.can_redo()))
+                dojo_->redo();
+        } else {
+            const auto& h = editor_.history();
+            if (ImGui::MenuItem(("Undo " + h.undo_name()).c_str(), "Ctrl+Z", false, h.can_undo()))
+                editor_.undo();
+            if (ImGui::MenuItem(("Redo " + h.redo_name()).c_str(), "Ctrl+Shift+Z", false, h.can_redo()))
+                editor_.redo();
+        }
         ImGui::Separator();
         const bool any = !editor_.doc().selection.empty();
         if (ImGui::MenuItem("Duplicate", "Ctrl+D", false, any)) report(editor_.duplicate(), "duplicate");
@@ -348,6 +395,11 @@ void EditorApp::menu_bar() {
 }
 
 void EditorApp::request(PendingAction action, fs::path path) {
+    if (action == PendingAction::Quit && dojo_->dirty() && !dojo_quit_confirmed_) {
+        dojo_->ask_before_quit(); // the clip file first; its answer comes back through modal_prompts
+        return;
+    }
+    dojo_quit_confirmed_ = false; // a confirmation counts for this one request
     pending_ = action;
     pending_path_ = std::move(path);
     if (editor_.has_unsaved_changes())

@@ -45,8 +45,12 @@ struct AppOptions {
     // --status-file: a JSON snapshot of the session rewritten whenever it changes (status_report.cpp), so
     // tests that drive the window with real input wait on state rather than on time.
     std::optional<std::filesystem::path> status_file;
-    // Plays a sound for the inspector's Audition buttons (sound_widgets.h); unset, they are hidden.
+    // Plays a sound for the inspector's Audition buttons (sound_widgets.h) and the dojo's clip events;
+    // unset, the buttons are hidden and the events silent.
     SoundAudition audition;
+    std::filesystem::path
+        dojo_file; // --dojo-file: the dojo's clip file (default assets/animations/robot.json)
+    std::optional<std::string> dojo_view; // --dojo-view: where the dojo starts (ui/dojo_panel.h, DojoView)
 };
 
 struct Overlays {
@@ -110,6 +114,11 @@ class EditorApp {
     void set_view(ViewMode mode);
     void play_test(bool from_camera);
 
+    // clip_preview_overlay.cpp: a dojo clip played on the selected level robot
+    int preview_robot() const; // the primary selection when it is a robot, else 0
+    void pose_preview_robot(double dt);
+    void clip_preview_overlay(Vec2 origin, Vec2 size);
+
     // panels.cpp
     void outliner_panel(float x, float y, float w, float h);
     void palette_bar();
@@ -167,6 +176,12 @@ class EditorApp {
     bool scroll_log_ = false;
     bool dojo_tab_ = false;
     std::unique_ptr<DojoPanel> dojo_;
+    bool dojo_quit_confirmed_ = false; // the dojo's unsaved clip edits were saved or dropped for quitting
+    bool clip_preview_ = false;        // "Preview clip" on the selected robot
+    int posed_robot_ = 0;              // the robot the level scene draws in the dojo's pose (0: none)
+    Vec2 preview_toggle_{0.0f};
+    std::array<Vec2, 2> menu_spots_{}; // status: the File menu's title and its Quit item (while open) // the
+                                       // "Preview clip" check box's centre (status file; 0 when hidden)
 
     // prompts
     PendingAction pending_ = PendingAction::None;

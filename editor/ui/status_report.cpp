@@ -21,6 +21,52 @@ namespace {
 nlohmann::json point(Vec2 p) {
     return nlohmann::json::array({p.x, p.y});
 }
+
+// The dojo tab: history, what is shown, the clip file's state, and where its buttons and blend cells are.
+nlohmann::json dojo_status(const DojoPanel& dojo) {
+    const auto d = dojo.status();
+    nlohmann::json spots = nlohmann::json::object();
+    for (size_t i = 0; i < d.spots.size(); ++i)
+        if (d.spots[i] != Vec2(0.0f)) spots[dojo_spot_name(static_cast<DojoSpot>(i))] = point(d.spots[i]);
+    nlohmann::json cells = nlohmann::json::object(); // "from>to": centre, while the Blends page is shown
+    const size_t n = d.blend_clips.size();
+    if (d.blend_centres.size() == n * n)
+        for (size_t from = 0; from < n; ++from)
+            for (size_t to = 0; to < n; ++to)
+                if (d.blend_centres[from * n + to] != Vec2(0.0f)) // drawn (not scrolled out of the table)
+                    cells[d.blend_clips[from] + ">" + d.blend_clips[to]] =
+                        point(d.blend_centres[from * n + to]);
+    nlohmann::json curve_keys = nlohmann::json::array();
+    for (const Vec2& key : d.curve_keys) curve_keys.push_back(point(key));
+    nlohmann::json event_flags = nlohmann::json::array();
+    for (const Vec2& flag : d.event_flags) event_flags.push_back(point(flag));
+    return {{"undo", d.undo},
+            {"redo", d.redo},
+            {"undo_name", d.undo_name},
+            {"keys", d.keys},
+            {"phases", d.phases},
+            {"phase", d.phase},
+            {"clips", d.clips},
+            {"clip", d.clip},
+            {"events", d.events},
+            {"page", d.page},
+            {"message", d.message},
+            {"transition", d.transition},
+            {"blend_selected", {d.blend_from, d.blend_to}},
+            {"dirty", d.dirty},
+            {"changed_on_disk", d.changed_on_disk},
+            {"onion", d.onion},
+            {"ghosts", d.ghosts},
+            {"auditioned", d.auditioned},
+            {"file", dojo.clip_file().string()},
+            {"spots", spots},
+            {"blend_cells", cells},
+            {"curve_keys", curve_keys},
+            {"event_flags", event_flags},
+            // Kept from before the spots map (older tests read them).
+            {"add_key", point(d.spots[static_cast<size_t>(DojoSpot::AddKey)])},
+            {"duplicate_key", point(d.spots[static_cast<size_t>(DojoSpot::DuplicateKey)])}};
+}
 } // namespace
 
 void EditorApp::write_status() {
@@ -49,16 +95,9 @@ void EditorApp::write_status() {
                   {"last_build_cpu_ms", scene_stats_.last_build_cpu_ms}};
     s["view"] = view_mode_name(view_.mode);
     s["tab"] = dojo_tab_ ? "dojo" : "level";
-    if (dojo_) {
-        const auto d = dojo_->status();
-        s["dojo"] = {{"undo", d.undo},
-                     {"redo", d.redo},
-                     {"keys", d.keys},
-                     {"phases", d.phases},
-                     {"phase", d.phase},
-                     {"add_key", point(Vec2(d.add_key_x, d.add_key_y))},
-                     {"duplicate_key", point(Vec2(d.duplicate_key_x, d.duplicate_key_y))}};
-    }
+    s["menu"] = {{"file", point(menu_spots_[0])}, {"quit", point(menu_spots_[1])}};
+    s["clip_preview"] = {{"on", clip_preview_}, {"robot", posed_robot_}, {"toggle", point(preview_toggle_)}};
+    if (dojo_) s["dojo"] = dojo_status(*dojo_);
     int wx = 0, wy = 0;
     glfwGetWindowPos(shell_.window(), &wx, &wy);
     s["window"] = {wx, wy};

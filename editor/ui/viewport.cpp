@@ -386,6 +386,7 @@ void EditorApp::viewport_panel(float x, float y, float w, float h) {
                         ImVec2(origin.x + size.x - 6, origin.y + size.y - 4), IM_COL32(15, 17, 22, 170),
                         4.0f);
     draw->AddText(ImVec2(origin.x + 12, origin.y + size.y - 23), IM_COL32(225, 230, 240, 255), text);
+    clip_preview_overlay(viewport_origin_, size);
     if (placing_) {
         const std::string hint =
             "Click to place " + std::string(level::type_name(*placing_)) + "  (Esc: stop)";

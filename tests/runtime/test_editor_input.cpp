@@ -8,7 +8,7 @@
 // only while the window is focused), so clicks would land nowhere.
 #include "core/files.h"
 #include "level/level_io.h"
-#include "runtime/play_session.h"
+#include "runtime/editor_session.h"
 #include "runtime/screen_image.h"
 #include "test_support.h"
 
@@ -16,16 +16,13 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
-#include <csignal>
 #include <cstdlib>
 #include <fstream>
-#include <functional>
-#include <sys/wait.h>
-#include <thread>
-#include <unistd.h>
 
 using namespace ks;
 using nlohmann::json;
+using test::EditorProcess;
+using Session = test::EditorSession;
 
 namespace {
 const char* kLevelScript = R"(new
@@ -45,123 +42,6 @@ void write(const std::filesystem::path& path, const std::string& text) {
     std::ofstream out(path);
     out << text;
 }
-
-// The editor as a child process, killed when the test ends.
-class EditorProcess {
-  public:
-    EditorProcess(const std::vector<std::string>& args, std::vector<std::string> env,
-                  const test::PrivateDisplay& display) {
-        env.push_back("DISPLAY=" + display.name());
-        pid_ = fork();
-        if (pid_ == 0) {
-            for (auto& e : env) putenv(e.data());
-            std::vector<std::string> all = {(test::bin_dir() / "killswitch-editor").string()};
-            all.insert(all.end(), args.begin(), args.end());
-            std::vector<char*> argv;
-            for (auto& a : all) argv.push_back(a.data());
-            argv.push_back(nullptr);
-            execv(argv[0], argv.data());
-            _exit(127);
-        }
-    }
-    ~EditorProcess() {
-        if (pid_ > 0) {
-            kill(pid_, SIGTERM);
-            waitpid(pid_, nullptr, 0);
-        }
-    }
-    bool alive() const { return pid_ > 0 && waitpid(pid_, nullptr, WNOHANG) == 0; }
-
-  private:
-    pid_t pid_ = -1;
-};
-
-class Session {
-  public:
-    Session(std::filesystem::path status, const EditorProcess& process, const test::PrivateDisplay& display)
-        : status_(std::move(status)), process_(process), display_(display.name()) {}
-
-    // Waits (up to 90 s: frames take a quarter second under llvmpipe on a busy machine) until `ready`
-    // accepts the status; fails with the last status otherwise.
-    json wait(const char* what, const std::function<bool(const json&)>& ready) {
-        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(90);
-        while (std::chrono::steady_clock::now() < deadline) {
-            std::ifstream in(status_);
-            std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-            json s = json::parse(text, nullptr, false);
-            if (!s.is_discarded()) {
-                last_ = s;
-                if (ready(s)) return s;
-            }
-            if (!process_.alive()) break;
-            std::this_thread::sleep_for(std::chrono::milliseconds(40));
-        }
-        FAIL("timed out waiting for: " << std::string(what) << "\nlast status: " << last_.dump());
-        return last_;
-    }
-    // Waits until the editor has drawn `n` more frames (so it has seen the input sent before). Counted from
-    // the status as it is now, not from the last one read: that one can be many frames old (xdotool calls
-    // take time), and counting from it let a key's release follow its press within one frame, which ImGui
-    // 1.86 (no input queue) never sees.
-    json frames(int n) {
-        wait("the current frame", [](const json&) { return true; });
-        const auto start = last_.value("frame", 0ull);
-        return wait("frames",
-                    [&](const json& s) { return s["frame"].get<unsigned long long>() >= start + n; });
-    }
-    // Window coordinates from the status to screen coordinates for xdotool.
-    std::string at(const json& point) const {
-        const int x = last_["window"][0].get<int>() + static_cast<int>(point[0].get<float>());
-        const int y = last_["window"][1].get<int>() + static_cast<int>(point[1].get<float>());
-        return std::to_string(x) + " " + std::to_string(y);
-    }
-    // Keys go to the focused window; with no window manager under Xvfb, focus the editor's first. ImGui
-    // 1.86 samples key state once per frame (no input queue), so the key is held for two frames.
-    void key(const std::string& keys, std::chrono::milliseconds hold = std::chrono::milliseconds(0)) {
-        focus();
-        xdo("keydown " + keys);
-        frames(2);
-        if (hold.count() > 0) { // past ImGui's key-repeat delay (0.275 s), then two more frames see it
-            std::this_thread::sleep_for(hold);
-            frames(2);
-        }
-        xdo("keyup " + keys);
-        frames(2); // the release is seen before the next press of the same key
-    }
-    // Gives the editor's window the keyboard focus (no window manager under Xvfb does it) and waits until
-    // the X server has done so.
-    void focus() {
-        if (window_.empty()) {
-            // `search --sync` waits for the window forever; `timeout` bounds it should the editor not map
-            // one.
-            window_ =
-                xdo("search --sync --onlyvisible --pid " + std::to_string(last_["pid"].get<long>()), 60);
-            window_ = window_.substr(0, window_.find('\n'));
-        }
-        xdo("windowfocus --sync " + window_);
-    }
-    // Moves the pointer to `point` (window coordinates), lets the editor see it for two frames, then clicks.
-    void click(const json& point) {
-        focus();
-        xdo("mousemove " + at(point));
-        frames(2);
-        xdo("click 1");
-    }
-    std::string xdo(const std::string& args, int timeout_s = 30) const {
-        bool ok = false;
-        const std::string output = test::xdotool(args, &ok, display_, timeout_s);
-        INFO("xdotool " << args << ": " << output);
-        REQUIRE(ok);
-        return output;
-    }
-
-  private:
-    std::filesystem::path status_;
-    const EditorProcess& process_;
-    std::string display_;
-    std::string window_;
-    json last_;
-};
 
 // Builds input.json in `dir` with the editor's scripted mode.
 void build_input_level(const std::filesystem::path& dir) {

@@ -16,9 +16,9 @@
 using namespace ks;
 
 namespace {
-using ks::test::Image;
 using ks::test::distinct_colours;
 using ks::test::have_display;
+using ks::test::Image;
 using ks::test::load_png;
 using Test = std::function<bool(int r, int g, int b)>;
 // Fraction of the pixels in the rectangle (fractions of the image size) that pass `test`.

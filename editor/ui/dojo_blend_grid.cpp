@@ -1,0 +1,196 @@
+// The dojo's blend table editor: the default blend time, and a from -> to grid of the blend time the game
+// uses for every pair of clips (model: blend_grid), explicit pairs highlighted, wildcard ("*") pairs
+// tinted, the rest at the default. A cell is dragged or typed (Ctrl+click or double-click) to set its pair,
+// and cleared back from its menu or the Clear button; selecting a cell plays that transition in the
+// transition tester. Each change is one undo step through model/dojo_clips.h.
+#include "ui/dojo_panel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+
+namespace ks::editor::ui {
+
+namespace {
+constexpr double kBlendMin = 0.0, kBlendMax = kMaxBlendSeconds;
+const ImVec4 kExplicitFill(0.22f, 0.42f, 0.72f, 1.0f);
+const ImVec4 kWildcardFill(0.36f, 0.27f, 0.52f, 1.0f);
+const ImVec4 kDefaultFill(0.14f, 0.15f, 0.19f, 1.0f);
+
+ImVec4 fill_of(BlendCell::Source source) {
+    return source == BlendCell::Source::Explicit   ? kExplicitFill
+           : source == BlendCell::Source::Wildcard ? kWildcardFill
+                                                   : kDefaultFill;
+}
+
+ImVec4 lighter(ImVec4 c, float by) {
+    return ImVec4(std::min(1.0f, c.x + by), std::min(1.0f, c.y + by), std::min(1.0f, c.z + by), c.w);
+}
+
+void legend_chip(const ImVec4& fill, const char* label) {
+    const float h = ImGui::GetTextLineHeight();
+    const ImVec2 p = ImGui::GetCursorScreenPos();
+    ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(p.x, p.y + 2), ImVec2(p.x + h, p.y + h - 2),
+                                              ImGui::GetColorU32(fill), 2.0f);
+    ImGui::Dummy(ImVec2(h + 2, h));
+    ImGui::SameLine(0, 4);
+    ImGui::TextDisabled("%s", label);
+}
+} // namespace
+
+void DojoPanel::blend_grid() {
+    const BlendGrid grid = editor::blend_grid(file_);
+    const std::size_t n = grid.clips.size();
+    if (blend_from_ >= static_cast<int>(n) || blend_to_ >= static_cast<int>(n)) blend_from_ = blend_to_ = -1;
+    double seconds = grid.default_seconds;
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted("Default blend");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(90);
+    if (ImGui::DragScalar("##default", ImGuiDataType_Double, &seconds, 0.005f, &kBlendMin, &kBlendMax,
+                          "%.2f s", ImGuiSliderFlags_AlwaysClamp)) {
+        begin_edit("default blend");
+        if (auto r = set_default_blend(file_, seconds); !r)
+            refuse(r.error());
+        else
+            after_edit();
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("The blend time of every pair not set below");
+    ImGui::SameLine(0, 18);
+    legend_chip(kExplicitFill, "set for the pair");
+    ImGui::SameLine(0, 12);
+    legend_chip(kWildcardFill, "from a * pair");
+    ImGui::SameLine(0, 12);
+    legend_chip(kDefaultFill, "default");
+
+    // Compact cells, so the robot's clips fit without scrolling; the columns are numbered (the rows name
+    // them), since names as long as shoot_pose_reverse would not fit over a cell.
+    ImGui::PushStyleVar(ImGuiStyleVar_CellPadding, ImVec2(2.0f, 1.0f));
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(3.0f, 1.0f));
+    float name_width = ImGui::CalcTextSize("from \\ to").x;
+    for (std::size_t i = 0; i < n; ++i)
+        name_width =
+            std::max(name_width, ImGui::CalcTextSize(grid.clips[i].c_str()).x + ImGui::CalcTextSize("00 ").x);
+    name_width += 8.0f;
+    const float avail = ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ScrollbarSize;
+    const float cell_width = std::clamp((avail - name_width) / static_cast<float>(n) - 4.0f, 38.0f, 72.0f);
+    const ImGuiTableFlags flags = ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX |
+                                  ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersInnerH;
+    const float rows_height = (ImGui::GetFrameHeight() + 2.0f) * static_cast<float>(n + 1) + 8.0f;
+    const float height =
+        std::min(rows_height, ImGui::GetContentRegionAvail().y - ImGui::GetFrameHeightWithSpacing());
+    blend_centres_.assign(n * n, Vec2(0.0f));
+    if (ImGui::BeginTable("blend grid", static_cast<int>(n) + 1, flags, ImVec2(0, std::max(80.0f, height)))) {
+        ImGui::TableSetupScrollFreeze(1, 1);
+        ImGui::TableSetupColumn("from \\ to", ImGuiTableColumnFlags_WidthFixed, name_width);
+        for (std::size_t to = 0; to < n; ++to) {
+            char header[24];
+            std::snprintf(header, sizeof(header), "%zu", to + 1);
+            ImGui::TableSetupColumn(header, ImGuiTableColumnFlags_WidthFixed, cell_width);
+        }
+        ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
+        for (int column = 0; column <= static_cast<int>(n); ++column) {
+            ImGui::TableSetColumnIndex(column);
+            ImGui::TableHeader(ImGui::TableGetColumnName(column));
+            if (column > 0 && ImGui::IsItemHovered())
+                ImGui::SetTooltip("to %s", grid.clips[static_cast<size_t>(column - 1)].c_str());
+        }
+        for (std::size_t from = 0; from < n; ++from) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::AlignTextToFramePadding();
+            ImGui::TextDisabled("%zu", from + 1);
+            ImGui::SameLine();
+            ImGui::TextUnformatted(grid.clips[from].c_str());
+            for (std::size_t to = 0; to < n; ++to) {
+                ImGui::TableNextColumn();
+                blend_cell(from, to, grid.at(from, to), cell_width);
+            }
+        }
+        ImGui::EndTable();
+    }
+    ImGui::PopStyleVar(2);
+    blend_details(grid);
+}
+
+void DojoPanel::blend_cell(std::size_t from, std::size_t to, const BlendCell& cell, float width) {
+    const std::string from_name = file_.clips[from].name, to_name = file_.clips[to].name;
+    const bool selected = blend_from_ == static_cast<int>(from) && blend_to_ == static_cast<int>(to);
+    const ImVec4 fill = fill_of(cell.source);
+    ImGui::PushID(static_cast<int>(from * 1000 + to));
+    ImGui::PushStyleColor(ImGuiCol_FrameBg, fill);
+    ImGui::PushStyleColor(ImGuiCol_FrameBgHovered, lighter(fill, 0.08f));
+    ImGui::PushStyleColor(ImGuiCol_FrameBgActive, lighter(fill, 0.14f));
+    if (cell.source == BlendCell::Source::Default)
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::PushStyleVar(ImGuiStyleVar_FrameBorderSize, selected ? 2.0f : 0.0f);
+    ImGui::PushStyleColor(ImGuiCol_Border, ImVec4(1.0f, 0.82f, 0.3f, 1.0f));
+    double seconds = cell.seconds;
+    ImGui::SetNextItemWidth(width);
+    const bool changed = ImGui::DragScalar("##cell", ImGuiDataType_Double, &seconds, 0.005f, &kBlendMin,
+                                           &kBlendMax, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+    ImGui::PopStyleColor(cell.source == BlendCell::Source::Default ? 5 : 4);
+    ImGui::PopStyleVar();
+    if (const std::size_t n = file_.clips.size(); blend_centres_.size() == n * n && ImGui::IsItemVisible()) {
+        const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+        blend_centres_[from * n + to] = Vec2((min.x + max.x) * 0.5f, (min.y + max.y) * 0.5f);
+    }
+    if (ImGui::IsItemActivated() && !selected) {
+        blend_from_ = static_cast<int>(from), blend_to_ = static_cast<int>(to);
+        test_transition(static_cast<int>(from), static_cast<int>(to));
+    }
+    if (changed) {
+        begin_edit("blend " + from_name + " -> " + to_name);
+        if (auto r = set_blend(file_, from_name, to_name, seconds); !r)
+            refuse(r.error());
+        else
+            after_edit(), test_transition(static_cast<int>(from), static_cast<int>(to));
+    }
+    if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
+        ImGui::SetTooltip("%s -> %s: %.3f s (%s)\ndrag, or Ctrl+click to type; right-click to clear",
+                          from_name.c_str(), to_name.c_str(), cell.seconds,
+                          cell.source == BlendCell::Source::Explicit   ? "set for this pair"
+                          : cell.source == BlendCell::Source::Wildcard ? "from a * pair"
+                                                                       : "the default");
+    if (ImGui::BeginPopupContextItem("cell menu")) {
+        ImGui::TextDisabled("%s -> %s", from_name.c_str(), to_name.c_str());
+        if (ImGui::MenuItem("Clear (back to the * pairs or the default)", nullptr, false,
+                            cell.source == BlendCell::Source::Explicit))
+            apply("clear blend " + from_name + " -> " + to_name,
+                  [&] { return clear_blend(file_, from_name, to_name); });
+        if (ImGui::MenuItem("Preview in the transition tester"))
+            blend_from_ = static_cast<int>(from), blend_to_ = static_cast<int>(to),
+            test_transition(static_cast<int>(from), static_cast<int>(to));
+        ImGui::EndPopup();
+    }
+    ImGui::PopID();
+}
+
+// The selected cell, where its time comes from, and Clear.
+void DojoPanel::blend_details(const BlendGrid& grid) {
+    if (blend_from_ < 0 || blend_to_ < 0) {
+        ImGui::TextDisabled("Select a cell to play that transition in the tester under the preview.");
+        return;
+    }
+    const auto from = static_cast<size_t>(blend_from_), to = static_cast<size_t>(blend_to_);
+    if (from >= grid.clips.size() || to >= grid.clips.size()) return;
+    const BlendCell& cell = grid.at(from, to);
+    ImGui::AlignTextToFramePadding();
+    ImGui::Text("%s -> %s: %.2f s, %s", grid.clips[from].c_str(), grid.clips[to].c_str(), cell.seconds,
+                cell.source == BlendCell::Source::Explicit   ? "set for this pair"
+                : cell.source == BlendCell::Source::Wildcard ? "from a * pair"
+                                                             : "the default");
+    ImGui::SameLine();
+    ImGui::BeginDisabled(cell.source != BlendCell::Source::Explicit);
+    if (ImGui::SmallButton("Clear"))
+        apply("clear blend " + grid.clips[from] + " -> " + grid.clips[to],
+              [&] { return clear_blend(file_, grid.clips[from], grid.clips[to]); });
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("Remove this pair: the cell falls back to the * pairs or the default");
+    ImGui::SameLine();
+    if (transition_mode_) ImGui::TextDisabled("(in the tester)");
+}
+
+} // namespace ks::editor::ui

@@ -1,0 +1,210 @@
+// The selected key's (phase's) editor: the key list, Duplicate / Remove / Earlier / Later, its duration and
+// easing (with the easing's curve), one row per keyed node (rotation, position offset, mode, remove) and
+// Add key. Every change is one step of the dojo's history (a dragged field is one step).
+#include "ui/dojo_panel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+
+namespace ks::editor::ui {
+
+namespace {
+// The easing's shape, 0..1 over 0..1, in a small box.
+void ease_thumbnail(const anim::Ease& ease, float size) {
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const ImVec2 p = ImGui::GetCursorScreenPos();
+    const float h = size * 0.6f, pad = h * 0.25f;
+    draw->AddRectFilled(p, ImVec2(p.x + size, p.y + h + 2 * pad), IM_COL32(20, 22, 28, 255), 3.0f);
+    draw->AddLine(ImVec2(p.x, p.y + pad), ImVec2(p.x + size, p.y + pad), IM_COL32(80, 80, 90, 255));
+    draw->AddLine(ImVec2(p.x, p.y + pad + h), ImVec2(p.x + size, p.y + pad + h), IM_COL32(80, 80, 90, 255));
+    ImVec2 points[64];
+    for (int i = 0; i < 64; ++i) {
+        const double t = i / 63.0;
+        points[i] =
+            ImVec2(p.x + static_cast<float>(t) * size, p.y + pad + h - static_cast<float>(ease(t)) * h);
+    }
+    draw->AddPolyline(points, 64, IM_COL32(120, 200, 255, 255), 0, 2.0f);
+    ImGui::Dummy(ImVec2(size, h + 2 * pad));
+}
+} // namespace
+
+bool DojoPanel::phase_buttons() {
+    const auto c = static_cast<std::size_t>(clip_), p = static_cast<std::size_t>(selected_phase_);
+    const std::size_t count = file_.clips[c].phases.size();
+    const std::string key = "key " + std::to_string(p + 1);
+    bool changed = false;
+    const bool duplicate_clicked = ImGui::SmallButton("Duplicate key");
+    mark(DojoSpot::DuplicateKey);
+    if (duplicate_clicked)
+        changed = apply("duplicate " + key, [&]() -> Result<void> {
+            auto copy = duplicate_phase(file_, c, p);
+            if (!copy) return copy.error();
+            selected_phase_ = static_cast<int>(*copy);
+            return {};
+        });
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Insert a copy of this key after it: absolute targets hold the pose (a pause), "
+                          "relative ones repeat the motion");
+    ImGui::SameLine();
+    ImGui::BeginDisabled(count <= 1);
+    if (ImGui::SmallButton("Remove key"))
+        changed = apply("remove " + key, [&]() -> Result<void> {
+            auto r = remove_phase(file_, c, p);
+            if (r) selected_phase_ = std::max(0, selected_phase_ - 1);
+            return r;
+        });
+    ImGui::EndDisabled();
+    for (int offset : {-1, +1}) {
+        ImGui::SameLine();
+        ImGui::BeginDisabled(offset < 0 ? p == 0 : p + 1 >= count);
+        if (ImGui::SmallButton(offset < 0 ? "Earlier" : "Later"))
+            changed = apply("move " + key + (offset < 0 ? " earlier" : " later"), [&]() -> Result<void> {
+                auto moved = move_phase(file_, c, p, offset);
+                if (!moved) return moved.error();
+                selected_phase_ = static_cast<int>(*moved);
+                return {};
+            });
+        ImGui::EndDisabled();
+    }
+    return changed;
+}
+
+void DojoPanel::key_table() {
+    if (static_cast<size_t>(clip_) >= file_.clips.size()) return;
+    anim::ClipDef& def = file_.clips[static_cast<size_t>(clip_)];
+    if (def.phases.empty()) return;
+    selected_phase_ = std::clamp(selected_phase_, 0, static_cast<int>(def.phases.size()) - 1);
+    for (int i = 0; i < static_cast<int>(def.phases.size()); ++i) {
+        char label[32];
+        std::snprintf(label, sizeof(label), "key %d", i + 1);
+        if (i) ImGui::SameLine();
+        if (ImGui::RadioButton(label, selected_phase_ == i)) selected_phase_ = i;
+    }
+    if (phase_buttons()) return; // the phases changed under this frame's references: draw them next frame
+    anim::PhaseDef& phase = def.phases[static_cast<size_t>(selected_phase_)];
+    bool edited = phase_timing(phase);
+    std::string remove_node; // a key to remove, applied after the table (the rows reference the targets)
+    edited |= target_rows(phase, remove_node);
+    const auto clip_index = static_cast<std::size_t>(clip_),
+               phase_index = static_cast<std::size_t>(selected_phase_);
+    if (edited) after_edit();
+    if (!remove_node.empty()) {
+        apply("remove key " + remove_node,
+              [&] { return remove_node_key(file_, clip_index, phase_index, remove_node); });
+        return;
+    }
+    add_key_row();
+}
+
+// The selected key's duration and easing (with its curve); true when either changed.
+bool DojoPanel::phase_timing(anim::PhaseDef& phase) {
+    bool edited = false;
+    ImGui::BeginGroup();
+    float duration = static_cast<float>(phase.duration);
+    ImGui::SetNextItemWidth(120);
+    if (ImGui::DragFloat("duration", &duration, 0.005f, 0.0f, 30.0f, "%.3f s", ImGuiSliderFlags_AlwaysClamp))
+        begin_edit("key duration"), phase.duration = duration, edited = true;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Seconds to reach this key's targets; a key with no targets is a delay.");
+    ImGui::SetNextItemWidth(170);
+    const std::string current = anim::ease_name(phase.ease);
+    if (ImGui::BeginCombo("easing", current.empty() ? "custom" : current.c_str())) {
+        for (const auto& name : anim::known_ease_names())
+            if (ImGui::Selectable(name.c_str(), name == current))
+                if (auto e = anim::parse_ease_name(name))
+                    begin_edit("key easing"), phase.ease = *e, edited = true;
+        ImGui::EndCombo();
+    }
+    ImGui::EndGroup();
+    ImGui::SameLine();
+    ease_thumbnail(phase.ease, 96.0f);
+
+    return edited;
+}
+
+// One row per keyed node: rotation, position offset, mode and a remove button (`remove_node` names it).
+bool DojoPanel::target_rows(anim::PhaseDef& phase, std::string& remove_node) {
+    bool edited = false;
+    if (ImGui::BeginTable("targets", 5,
+                          ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
+                              ImGuiTableFlags_SizingStretchProp,
+                          ImVec2(0, std::max(80.0f, ImGui::GetContentRegionAvail().y - 64.0f)))) {
+        ImGui::TableSetupColumn("node", ImGuiTableColumnFlags_WidthFixed, 90);
+        ImGui::TableSetupColumn("rotation (deg, XYZ)");
+        ImGui::TableSetupColumn("position offset");
+        ImGui::TableSetupColumn("mode", ImGuiTableColumnFlags_WidthFixed, 60);
+        ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, 24);
+        ImGui::TableHeadersRow();
+        for (size_t t = 0; t < phase.targets.size(); ++t) {
+            anim::TargetDef& target = phase.targets[t];
+            ImGui::PushID(static_cast<int>(t));
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(target.node.c_str());
+            ImGui::TableNextColumn();
+            auto& rot = target.rot ? target.rot : target.add_rot;
+            if (rot) {
+                float v[3] = {static_cast<float>(rot->x), static_cast<float>(rot->y),
+                              static_cast<float>(rot->z)};
+                ImGui::SetNextItemWidth(-1);
+                if (ImGui::DragFloat3("##rot", v, 0.5f, -3600.0f, 3600.0f, "%.1f"))
+                    begin_edit("rotate " + target.node), *rot = DVec3(v[0], v[1], v[2]), edited = true;
+            } else if (ImGui::SmallButton("+ rot")) {
+                begin_edit("rotate " + target.node), target.rot = DVec3(0.0), edited = true;
+            }
+            ImGui::TableNextColumn();
+            auto& pos = target.pos ? target.pos : target.add_pos;
+            if (pos) {
+                float v[3] = {static_cast<float>(pos->x), static_cast<float>(pos->y),
+                              static_cast<float>(pos->z)};
+                ImGui::SetNextItemWidth(-1);
+                if (ImGui::DragFloat3("##pos", v, 0.01f, -100.0f, 100.0f, "%.2f"))
+                    begin_edit("move " + target.node), *pos = DVec3(v[0], v[1], v[2]), edited = true;
+            } else if (ImGui::SmallButton("+ pos")) {
+                begin_edit("move " + target.node), target.pos = DVec3(0.0), edited = true;
+            }
+            ImGui::TableNextColumn();
+            ImGui::TextDisabled("%s", target.add_rot || target.add_pos ? "relative" : "absolute");
+            ImGui::TableNextColumn();
+            if (ImGui::SmallButton("x")) remove_node = target.node;
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("Remove this node's key from this phase");
+            ImGui::PopID();
+        }
+        ImGui::EndTable();
+    }
+    return edited;
+}
+
+// The node combo and "Add key" button; true when a key was added.
+bool DojoPanel::add_key_row() {
+    bool edited = false;
+    const auto clip_index = static_cast<std::size_t>(clip_),
+               phase_index = static_cast<std::size_t>(selected_phase_);
+    const auto free_nodes = unkeyed_nodes(file_, clip_index, phase_index);
+    add_node_ = std::clamp(add_node_, 0, std::max(0, static_cast<int>(free_nodes.size()) - 1));
+    ImGui::BeginDisabled(free_nodes.empty());
+    ImGui::SetNextItemWidth(140);
+    if (ImGui::BeginCombo("##add_node", free_nodes.empty()
+                                            ? "(every node keyed)"
+                                            : free_nodes[static_cast<size_t>(add_node_)].c_str())) {
+        for (int i = 0; i < static_cast<int>(free_nodes.size()); ++i)
+            if (ImGui::Selectable(free_nodes[static_cast<size_t>(i)].c_str(), i == add_node_)) add_node_ = i;
+        ImGui::EndCombo();
+    }
+    ImGui::SameLine();
+    const bool add_clicked = ImGui::Button("Add key");
+    mark(DojoSpot::AddKey);
+    if (add_clicked && !free_nodes.empty()) {
+        const std::string node = free_nodes[static_cast<size_t>(add_node_)];
+        edited = apply("add key " + node, [&] { return add_node_key(file_, clip_index, phase_index, node); });
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "Key this node in this phase (holds its pose until you edit the key); Ctrl+Z undoes");
+    ImGui::EndDisabled();
+    return edited;
+}
+
+} // namespace ks::editor::ui

@@ -1,0 +1,100 @@
+// The dojo's transport (play, pause, stop, step, loop, speed) and its timeline: ticks every 0.1 s, a marker
+// at the end of every key (phase), the blend window of the transition test, the playhead, and the clip's
+// events in a lane below (dojo_events.cpp); dragging on the ticks scrubs.
+#include "ui/dojo_panel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace ks::editor::ui {
+
+double DojoPanel::timeline_length() const {
+    if (clips_.clips.empty()) return 0.0;
+    if (transition_mode_)
+        return switch_time_ + blend_time_ + clips_.clips[static_cast<size_t>(to_clip_)].duration;
+    return clips_.clips[static_cast<size_t>(clip_)].duration;
+}
+
+void DojoPanel::transport() {
+    if (ImGui::Button(playing_ ? "Pause" : "Play")) playing_ = !playing_;
+    ImGui::SameLine();
+    if (ImGui::Button("Stop")) playing_ = false, restart_at(0.0);
+    ImGui::SameLine();
+    if (ImGui::Button("Step")) playing_ = false, restart_at(time_ + 1.0 / 30.0);
+    ImGui::SameLine();
+    ImGui::Checkbox("Loop", &loop_);
+    ImGui::SameLine();
+    if (audition_) {
+        ImGui::Checkbox("Sounds", &event_sounds_);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Play the events' sounds as the playhead passes them");
+        ImGui::SameLine();
+    }
+    ImGui::SetNextItemWidth(80);
+    ImGui::DragFloat("speed", &speed_, 0.01f, 0.05f, 4.0f, "%.2fx");
+    ImGui::SameLine();
+    ImGui::Text("t = %.3f s%s", time_, player_ && player_->blending() ? "  (blending)" : "");
+}
+
+void DojoPanel::timeline(float width) {
+    if (clips_.clips.empty()) return;
+    const double length = std::max(0.01, timeline_length());
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const ImVec2 p = ImGui::GetCursorScreenPos();
+    const float h = 34.0f;
+    ImGui::InvisibleButton("timeline", ImVec2(width, h));
+    if (ImGui::IsItemActive()) { // scrub
+        const float u = std::clamp((ImGui::GetIO().MousePos.x - p.x) / width, 0.0f, 1.0f);
+        playing_ = false;
+        restart_at(u * length);
+    }
+    draw->AddRectFilled(p, ImVec2(p.x + width, p.y + h), IM_COL32(28, 31, 38, 255), 4.0f);
+    for (int s = 0; s <= static_cast<int>(length * 10); ++s) { // ticks every 0.1 s, labels every second
+        const float x = p.x + static_cast<float>(s / 10.0 / length) * width;
+        const bool second = s % 10 == 0;
+        draw->AddLine(ImVec2(x, p.y + h - (second ? 12 : 6)), ImVec2(x, p.y + h),
+                      IM_COL32(110, 115, 130, 255));
+        if (second) {
+            char t[16];
+            std::snprintf(t, sizeof(t), "%ds", s / 10);
+            draw->AddText(ImVec2(x + 2, p.y + h - 26), IM_COL32(150, 155, 170, 255), t);
+        }
+    }
+    // Key markers: the end of every phase (where its targets are reached).
+    // The file's clips can outnumber the compiled ones while the file has issues: index with care.
+    auto markers = [&](int clip, double offset, ImU32 colour) {
+        if (clip < 0 || static_cast<size_t>(clip) >= file_.clips.size()) return;
+        const anim::ClipDef& def = file_.clips[static_cast<size_t>(clip)];
+        double t = 0;
+        for (size_t i = 0; i < def.phases.size(); ++i) {
+            t += def.phases[i].duration;
+            const float x = p.x + static_cast<float>((offset + t) / length) * width;
+            if (x > p.x + width + 1) break;
+            const bool sel = !transition_mode_ && static_cast<int>(i) == selected_phase_;
+            draw->AddQuadFilled(ImVec2(x, p.y + 3), ImVec2(x + 5, p.y + 9), ImVec2(x, p.y + 15),
+                                ImVec2(x - 5, p.y + 9), sel ? IM_COL32(255, 210, 80, 255) : colour);
+        }
+    };
+    if (transition_mode_) {
+        markers(from_clip_, 0.0, IM_COL32(150, 200, 255, 255));
+        markers(to_clip_, switch_time_, IM_COL32(255, 150, 120, 255));
+        const float xs = p.x + static_cast<float>(switch_time_ / length) * width;
+        const float xb = p.x + static_cast<float>((switch_time_ + blend_time_) / length) * width;
+        draw->AddRectFilled(ImVec2(xs, p.y), ImVec2(xb, p.y + h), IM_COL32(255, 200, 80, 50));
+    } else {
+        markers(clip_, 0.0, IM_COL32(150, 200, 255, 255));
+    }
+    // The playhead: a looping clip's pass, a ping-pong's way back, the transition test's own time.
+    const double shown = transition_mode_ ? std::fmod(time_, length + 1e-9) : clip_time();
+    const float x = p.x + static_cast<float>(shown / length) * width;
+    const float lane = ImGui::GetFrameHeight() * 0.8f;
+    if (!transition_mode_) event_lane(Vec2(p.x, p.y + h + 2), width, lane, length);
+    draw->AddLine(ImVec2(x, p.y), ImVec2(x, p.y + h + (transition_mode_ ? 0 : lane + 2)),
+                  IM_COL32(255, 80, 80, 255), 2.0f);
+    ImGui::SetCursorScreenPos(ImVec2(p.x, p.y + h + 2));
+    ImGui::Dummy(ImVec2(width, lane));
+}
+
+} // namespace ks::editor::ui

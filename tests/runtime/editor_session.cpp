@@ -1,0 +1,145 @@
+// killswitch-editor driven by real X input in tests: see editor_session.h.
+#include "runtime/editor_session.h"
+
+#include <doctest/doctest.h>
+
+#include <csignal>
+#include <cstdlib>
+#include <fstream>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+namespace ks::test {
+
+EditorProcess::EditorProcess(const std::vector<std::string>& args, std::vector<std::string> env,
+                             const PrivateDisplay& display) {
+    env.push_back("DISPLAY=" + display.name());
+    pid_ = fork();
+    if (pid_ == 0) {
+        for (auto& e : env) putenv(e.data());
+        std::vector<std::string> all = {(bin_dir() / "killswitch-editor").string()};
+        all.insert(all.end(), args.begin(), args.end());
+        std::vector<char*> argv;
+        for (auto& a : all) argv.push_back(a.data());
+        argv.push_back(nullptr);
+        execv(argv[0], argv.data());
+        _exit(127);
+    }
+}
+
+EditorProcess::~EditorProcess() {
+    if (pid_ > 0) {
+        kill(pid_, SIGTERM);
+        waitpid(pid_, nullptr, 0);
+    }
+}
+
+bool EditorProcess::alive() const {
+    return pid_ > 0 && waitpid(pid_, nullptr, WNOHANG) == 0;
+}
+
+int EditorProcess::wait_exit(double seconds) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    while (pid_ > 0 && std::chrono::steady_clock::now() < deadline) {
+        int status = 0;
+        if (waitpid(pid_, &status, WNOHANG) == pid_) {
+            pid_ = -1; // reaped: the destructor has nothing to stop
+            return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(40));
+    }
+    return -1;
+}
+
+EditorSession::EditorSession(std::filesystem::path status, const EditorProcess& process,
+                             const PrivateDisplay& display)
+    : status_(std::move(status)), process_(process), display_(display.name()) {}
+
+EditorSession::json EditorSession::wait(const char* what, const std::function<bool(const json&)>& ready) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(90);
+    while (std::chrono::steady_clock::now() < deadline) {
+        std::ifstream in(status_);
+        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        json s = json::parse(text, nullptr, false);
+        if (!s.is_discarded()) {
+            last_ = s;
+            if (ready(s)) return s;
+        }
+        if (!process_.alive()) break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(40));
+    }
+    FAIL("timed out waiting for: " << std::string(what) << "\nlast status: " << last_.dump());
+    return last_;
+}
+
+EditorSession::json EditorSession::frames(int n) {
+    wait("the current frame", [](const json&) { return true; });
+    const auto start = last_.value("frame", 0ull);
+    return wait("frames", [&](const json& s) { return s["frame"].get<unsigned long long>() >= start + n; });
+}
+
+std::string EditorSession::at(const json& point) const {
+    const int x = last_["window"][0].get<int>() + static_cast<int>(point[0].get<float>());
+    const int y = last_["window"][1].get<int>() + static_cast<int>(point[1].get<float>());
+    return std::to_string(x) + " " + std::to_string(y);
+}
+
+void EditorSession::key(const std::string& keys, std::chrono::milliseconds hold) {
+    focus();
+    xdo("keydown " + keys);
+    frames(2);
+    if (hold.count() > 0) { // past ImGui's key-repeat delay (0.275 s), then two more frames see it
+        std::this_thread::sleep_for(hold);
+        frames(2);
+    }
+    xdo("keyup " + keys);
+    frames(2); // the release is seen before the next press of the same key
+}
+
+void EditorSession::type(const std::string& text) {
+    focus();
+    xdo("type --delay 60 '" + text + "'");
+    frames(2);
+}
+
+void EditorSession::focus() {
+    if (window_.empty()) {
+        // `search --sync` waits for the window forever; `timeout` bounds it should the editor not map one.
+        window_ = xdo("search --sync --onlyvisible --pid " + std::to_string(last_["pid"].get<long>()), 60);
+        window_ = window_.substr(0, window_.find('\n'));
+    }
+    xdo("windowfocus --sync " + window_);
+}
+
+void EditorSession::click(const json& point) {
+    focus();
+    xdo("mousemove " + at(point));
+    frames(2);
+    xdo("click 1");
+}
+
+void EditorSession::drag(const json& from, float dx, float dy, int steps) {
+    focus();
+    xdo("mousemove " + at(from));
+    frames(2);
+    xdo("mousedown 1");
+    frames(2);
+    for (int i = 1; i <= steps; ++i) {
+        const float u = static_cast<float>(i) / static_cast<float>(steps);
+        xdo("mousemove " + at(json{from[0].get<float>() + dx * u, from[1].get<float>() + dy * u}));
+        frames(1);
+    }
+    xdo("mouseup 1");
+    frames(2);
+}
+
+std::string EditorSession::xdo(const std::string& args, int timeout_s) const {
+    bool ok = false;
+    const std::string output = xdotool(args, &ok, display_, timeout_s);
+    INFO("xdotool " << args << ": " << output);
+    REQUIRE(ok);
+    return output;
+}
+
+} // namespace ks::test

@@ -1,0 +1,72 @@
+#pragma once
+// The editor window driven by real X input in tests (xdotool under Xvfb): killswitch-editor as a child
+// process on a display of the test's own, and a session that reads its --status-file, waits on the state
+// an input should produce (never on time), and sends keys and clicks at places the status names.
+#include "runtime/play_session.h"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <sys/types.h>
+#include <vector>
+
+namespace ks::test {
+
+// The editor as a child process, killed when the test ends.
+class EditorProcess {
+  public:
+    EditorProcess(const std::vector<std::string>& args, std::vector<std::string> env,
+                  const PrivateDisplay& display);
+    ~EditorProcess();
+    EditorProcess(const EditorProcess&) = delete;
+    EditorProcess& operator=(const EditorProcess&) = delete;
+    bool alive() const;
+    // Waits up to `seconds` for the editor to exit by itself; its exit code, or -1 if it did not.
+    int wait_exit(double seconds);
+
+  private:
+    pid_t pid_ = -1;
+};
+
+class EditorSession {
+  public:
+    using json = nlohmann::json;
+    EditorSession(std::filesystem::path status, const EditorProcess& process, const PrivateDisplay& display);
+
+    // Waits (up to 90 s: frames take a quarter second under llvmpipe on a busy machine) until `ready`
+    // accepts the status; fails with the last status otherwise.
+    json wait(const char* what, const std::function<bool(const json&)>& ready);
+    // Waits until the editor has drawn `n` more frames (so it has seen the input sent before). Counted from
+    // the status as it is now, not from the last one read: that one can be many frames old (xdotool calls
+    // take time), and counting from it let a key's release follow its press within one frame, which ImGui
+    // 1.86 (no input queue) never sees.
+    json frames(int n);
+    // Window coordinates from the status to screen coordinates for xdotool.
+    std::string at(const json& point) const;
+    // Keys go to the focused window; with no window manager under Xvfb, focus the editor's first. ImGui
+    // 1.86 samples key state once per frame (no input queue), so the key is held for two frames.
+    void key(const std::string& keys, std::chrono::milliseconds hold = std::chrono::milliseconds(0));
+    // Types text into the focused text field, then waits two frames.
+    void type(const std::string& text);
+    // Gives the editor's window the keyboard focus (no window manager under Xvfb does it) and waits until
+    // the X server has done so.
+    void focus();
+    // Moves the pointer to `point` (window coordinates), lets the editor see it for two frames, then clicks.
+    void click(const json& point);
+    // A left-button drag from `from` by (dx, dy) pixels in `steps` moves, a frame each.
+    void drag(const json& from, float dx, float dy, int steps = 4);
+    std::string xdo(const std::string& args, int timeout_s = 30) const;
+    const json& last() const { return last_; }
+
+  private:
+    std::filesystem::path status_;
+    const EditorProcess& process_;
+    std::string display_;
+    std::string window_;
+    json last_;
+};
+
+} // namespace ks::test
