@@ -62,7 +62,8 @@ Result<void> clear_blend(anim::AnimationFile& file, const std::string& from, con
     std::string source = "it uses the default blend (" + seconds_text(file.default_blend) + ")";
     const auto from_index = find_clip_index(file, from), to_index = find_clip_index(file, to);
     if (from_index && to_index) {
-        const BlendCell& cell = blend_grid(file).at(*from_index, *to_index);
+        const BlendGrid grid = blend_grid(file); // kept: at() returns a reference into it
+        const BlendCell& cell = grid.at(*from_index, *to_index);
         if (cell.source == BlendCell::Source::Wildcard)
             source = "its " + seconds_text(cell.seconds) + " comes from a pair with *; clear that one";
     }
