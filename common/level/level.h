@@ -1,5 +1,5 @@
 #pragma once
-// Level format v1: the one data model that the loader reads, the editor edits, and the game spawns from.
+// Level format v2: the one data model that the loader reads, the editor edits, and the game spawns from.
 // Each entity type's properties are defined once, as a struct with a visit() that lists every field with
 // its default, range, unit and tooltip; loading, saving, validation and the editor's inspector all walk
 // that list, so there are no parallel copies to keep in step. See docs/level-format.md.
@@ -15,7 +15,7 @@
 namespace ks::level {
 
 inline constexpr std::string_view kFormatName = "killswitch-level";
-inline constexpr int kFormatVersion = 1;
+inline constexpr int kFormatVersion = 2;
 
 // Metadata a visitor receives with each field. Ranges are inclusive; a field outside its range is an error.
 struct FieldInfo {
@@ -123,6 +123,7 @@ struct DoorProps {
     bool open = false;          // initial state
     float open_offset = 2.0f;   // how far each leaf slides sideways
     float open_time = 0.5f;     // seconds to open or close
+    bool locked = false;        // the player's E does nothing (links still open and close it)
     template <class V>
     void visit(V& v) {
         v.field(width, {"width", "Width of the doorway (two sliding leaves)", 0.5, 100, "units"});
@@ -130,6 +131,7 @@ struct DoorProps {
         v.field(open, {"open", "Open when the level starts"});
         v.field(open_offset, {"open_offset", "How far each leaf slides when opening", 0, 100, "units"});
         v.field(open_time, {"open_time", "Seconds to open or close", 0.01, 60, "s"});
+        v.field(locked, {.name = "locked", .tooltip = "Locked when the level starts: the player cannot open or close it (links still can; an unlock link frees it)", .omitted_at_default = true});
     }
     bool operator==(const DoorProps&) const = default;
 };
@@ -188,6 +190,7 @@ struct RobotProps {
     float search_time = 8.0f;          // after losing the player: keeps hunting, then searches, then idles
     float hearing_radius = 30.0f;      // shots and explosions inside this path distance alert the robot
     Patrol patrol;                     // walked while idle; none: random wander
+    bool dormant = false;              // stands still, seeing and hearing nothing, until activated or shot
     template <class V>
     void visit(V& v) {
         v.field(health, {"health", "Hit points", 1, 1e5});
@@ -204,6 +207,7 @@ struct RobotProps {
         v.field(search_time, {"search_time", "After losing the player, hunts and then searches this long before returning to idle or patrol", 0, 600, "s", true});
         v.field(hearing_radius, {"hearing_radius", "Shots and explosions within this distance along the navigation mesh alert the robot", 0, 1000, "units", true});
         v.field(patrol, {"patrol", "Points walked in order while idle, instead of wandering", -1e5, 1e5, "units", true});
+        v.field(dormant, {.name = "dormant", .tooltip = "Stands still, seeing and hearing nothing, until a link activates or alerts it or it is shot", .omitted_at_default = true});
     }
     bool operator==(const RobotProps&) const = default;
 };
@@ -263,20 +267,117 @@ struct SoundProps {
     bool operator==(const SoundProps&) const = default;
 };
 
+// ---- level logic (docs/level-format.md, "Level logic") ---------------------------------------------------
+// The logic entities are invisible in the game: a trigger is a box that notices who walks in, a spawner makes
+// robots during play, a message is a line of HUD text. Like every entity they stand on `position`.
+
+// A box (bottom centre on position, turned by the yaw) that emits on_enter when someone of `who` enters it
+// while it was empty and on_exit when the last one leaves.
+struct TriggerProps {
+    Vec3 size{4.0f, 4.0f, 4.0f};
+    Choice who{"player", {"player", "robots", "both"}};
+    bool enabled = true;
+    template <class V>
+    void visit(V& v) {
+        v.field(size, {"size", "Width, height and depth of the box", 0.1, 1e4, "units"});
+        v.field(who, {"who", "Who sets it off: the player, robots, or both"});
+        v.field(enabled, {"enabled", "Notices anyone when the level starts (enable and disable links switch it)"});
+    }
+    bool operator==(const TriggerProps&) const = default;
+};
+
+// Makes robots (with `robot`'s properties) when a spawn link fires: `count` of them, one every `interval`
+// seconds, never more than `max_alive` of its robots alive at once, each on the robots' navigation mesh.
+struct SpawnerProps {
+    int count = 3;
+    float interval = 2.0f;
+    int max_alive = 3;
+    RobotProps robot;
+    template <class V>
+    void visit(V& v) {
+        v.field(count, {"count", "Robots made by each spawn link", 1, 100});
+        v.field(interval, {"interval", "Seconds between two robots", 0, 600, "s"});
+        v.field(max_alive, {"max_alive", "At most this many of its robots alive at once (it waits)", 1, 100});
+        robot.visit(v);
+    }
+    bool operator==(const SpawnerProps&) const = default;
+};
+
+inline constexpr int kMaxMessageLength = 500; // characters: one or two lines of HUD text
+
+// A line of HUD text that a show link puts on screen for `duration` seconds.
+struct MessageProps {
+    std::string text = "Message";
+    float duration = 4.0f;
+    template <class V>
+    void visit(V& v) {
+        v.field(text, {"text", "What the HUD shows", 1, kMaxMessageLength});
+        v.field(duration, {"duration", "Seconds on screen", 0.5, 600, "s"});
+    }
+    bool operator==(const MessageProps&) const = default;
+};
+
 // The variant's order is the EntityType order.
 using Props = std::variant<WallProps, FloorProps, StairProps, DoorProps, FloorLightProps, TopLightProps, RobotProps,
-                           PickupProps, GasCylinderProps, ControlPanelProps, SoundProps>;
+                           PickupProps, GasCylinderProps, ControlPanelProps, SoundProps, TriggerProps,
+                           SpawnerProps, MessageProps>;
 
 enum class EntityType : std::uint8_t {
-    Wall, Floor, Stair, Door, FloorLight, TopLight, Robot, Pickup, GasCylinder, ControlPanel, Sound, Count
+    Wall, Floor, Stair, Door, FloorLight, TopLight, Robot, Pickup, GasCylinder, ControlPanel, Sound, Trigger,
+    Spawner, Message, Count
 };
 
 // "wall", "floor", "stair", "door", "floor_light", "top_light", "robot", "pickup", "gas_cylinder",
-// "control_panel", "sound"
+// "control_panel", "sound", "trigger", "spawner", "message"
 std::string_view type_name(EntityType type);
 bool type_from_name(std::string_view name, EntityType& out);
 const std::array<EntityType, static_cast<size_t>(EntityType::Count)>& all_types();
 Props default_props(EntityType type);
+
+// "When `event` happens here, do `action` to `target`", `delay` seconds later; a `once` link fires only the
+// first time. The target is named: an entity by its `name` (which must then be unique in the level), an
+// objective by its `id`, or the level itself as "level" (win, lose). Which events a source emits and which
+// actions a target takes are in level/logic_names.h; the names stay strings here so that a draft with a typo
+// still loads into the editor, and the checks name the typo.
+struct Link {
+    std::string event;
+    std::string target;
+    std::string action;
+    float delay = 0.0f; // seconds
+    bool once = false;
+    template <class V>
+    void visit(V& v) {
+        v.field(event, {"event", "What sets the link off (on_enter, on_death, on_use, ...)"});
+        v.field(target, {"target", "The entity name, objective id or \"level\" it acts on"});
+        v.field(action, {"action", "What it does to the target (open, show, spawn, complete, win, ...)"});
+        v.field(delay, {"delay", "Seconds between the event and the action", 0, 3600, "s"});
+        v.field(once, {"once", "Fires only the first time the event happens"});
+    }
+    bool operator==(const Link&) const = default;
+};
+inline constexpr int kMaxLinks = 64;          // per entity, objective or level: a fan-out, not a script
+inline constexpr double kMaxLinkDelay = 3600; // seconds
+inline constexpr std::string_view kLevelTarget = "level";
+
+// One thing the player must do. It completes when a `complete` link names it, or when everything in `kill`
+// (robots, and spawners: all their robots made and dead) is dead; completing it fires its on_complete links.
+// The level is won when every objective is complete.
+struct Objective {
+    std::string id;   // unique among the objectives; links name it
+    std::string text; // what the HUD shows
+    std::vector<std::string> kill;
+    std::vector<Link> links;
+    template <class V>
+    void visit(V& v) {
+        v.field(id, {"id", "Names the objective in links (unique)"});
+        v.field(text, {"text", "What the HUD shows", 1, kMaxMessageLength});
+        v.field(kill, {"kill", "Names of robots and spawners that must all be dead to complete it"});
+        v.field(links, {"links", "on_complete links"});
+    }
+    bool operator==(const Objective&) const = default;
+};
+inline constexpr int kMaxObjectives = 32;
+inline constexpr int kMaxKillNames = 256;
 
 struct Entity {
     int id = 0;               // stable, unique within the level, never reused
@@ -284,6 +385,7 @@ struct Entity {
     Vec3 position{0.0f};
     Vec3 rotation{0.0f};      // yaw (about +y), pitch (about +x), roll (about +z), degrees
     Props props;
+    std::vector<Link> links;  // what this entity's events set off (file key "links", after "props")
 
     EntityType type() const { return static_cast<EntityType>(props.index()); }
     template <class T> T& as() { return std::get<T>(props); }
@@ -331,6 +433,8 @@ struct Level {
     Settings settings;
     PlayerStart player_start;
     int next_id = 1;
+    std::vector<Objective> objectives; // all complete: the level is won (none: it is never won by them)
+    std::vector<Link> links;           // the level's own: on_start
     std::vector<Entity> entities;
 
     Entity* find(int id);

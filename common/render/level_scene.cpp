@@ -183,6 +183,9 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
             break;
         }
         case EntityType::Sound: // heard, not seen: the editor draws its own marker
+        case EntityType::Trigger: // the logic entities are invisible in the game
+        case EntityType::Spawner:
+        case EntityType::Message:
         case EntityType::Count:
             break;
         }
