@@ -4,7 +4,7 @@
 // or does not take the action, a delay that is negative, NaN or over an hour, too many links; objectives
 // without an id, with a duplicate id, or killing something that is not a robot or a spawner. Warnings (a
 // level that loads but cannot work as meant): a zero-delay loop, an objective nothing can complete, a locked
-// door nothing unlocks or opens, a spawner nothing starts, a message nothing shows.
+// door nothing unlocks or opens.
 #include "level/diagnostics.h"
 #include "level/level.h"
 #include "level/logic_names.h"

@@ -1,6 +1,6 @@
 // The warnings about a level's logic that loads but cannot work as the designer meant: a zero-delay loop of
-// doors, an objective nothing can complete, a locked door nothing frees, a spawner nothing starts, a message
-// nothing shows. Links whose targets do not resolve are left to the errors (logic_checks.cpp).
+// doors, an objective nothing can complete (nothing completes it, or it waits on a spawner nothing starts), a
+// locked door nothing frees. Links whose targets do not resolve are left to the errors (logic_checks.cpp).
 #include "jsonio/json_path.h"
 #include "jsonio/suggest.h"
 #include "level/logic_checks.h"
@@ -164,13 +164,12 @@ void check_door_loops(const Level& level, const std::vector<LinkRef>& refs, Diag
 
 void check_reachability(const Level& level, const NameIndex& names, const std::vector<LinkRef>& refs,
                         DiagnosticSink& sink, const std::vector<size_t>& source_index) {
-    std::vector<bool> spawned(level.entities.size()), shown(level.entities.size()), freed(level.entities.size());
+    std::vector<bool> spawned(level.entities.size()), freed(level.entities.size());
     std::vector<std::string> completed;
     for (const LinkRef& r : refs) {
         if (is_action(r, {LinkAction::Complete})) completed.push_back(r.link->target);
         if (r.target == kNone) continue;
         if (is_action(r, {LinkAction::Spawn})) spawned[r.target] = true;
-        if (is_action(r, {LinkAction::Show})) shown[r.target] = true;
         if (is_action(r, {LinkAction::Unlock, LinkAction::Open, LinkAction::Toggle})) freed[r.target] = true;
     }
     for (size_t i = 0; i < level.entities.size(); ++i) {
@@ -181,12 +180,6 @@ void check_reachability(const Level& level, const NameIndex& names, const std::v
             sink.warning(member_path(member_path(path, "props"), "locked"),
                          "the door is locked and no link unlocks or opens it: the player can never pass",
                          "add a link with \"action\": \"unlock\" (or \"open\") and \"target\": " + in_quotes(e.name));
-        if (e.type() == EntityType::Spawner && !spawned[i])
-            sink.warning(path, "no link tells the spawner to spawn, so it never makes a robot",
-                         "add a link with \"action\": \"spawn\" and \"target\": " + in_quotes(e.name) +
-                             " (the level's on_start, a trigger's on_enter, ...)");
-        if (e.type() == EntityType::Message && !shown[i])
-            sink.warning(path, "no link shows the message", "add a link with \"action\": \"show\" and \"target\": " + in_quotes(e.name));
     }
     for (size_t i = 0; i < level.objectives.size(); ++i) {
         const Objective& o = level.objectives[i];
