@@ -295,7 +295,7 @@ class Game {
     void apply_action(const LogicLink& link);
     void complete_objective_at(std::size_t index);
     void check_kill_objectives();
-    void update_spawners(float dt);
+    void update_spawners();
     bool spawn_robot(SpawnerState& s);
     std::optional<Vec3> spawn_point(const SpawnerState& s);
     bool spawn_spot_clear(const Vec3& feet) const;

@@ -9,10 +9,10 @@
 namespace ks::game {
 namespace {
 
+using geometry::Transform;
 using physics::BodyDesc;
 using physics::Motion;
 using physics::Shape;
-using geometry::Transform;
 namespace layer = physics::layer;
 
 Shape physics_shape(const level::PlacedShape& shape) {
@@ -109,7 +109,8 @@ Result<void> Game::build(const level::Level& level) {
     std::size_t robot_count = 0;
     for (const auto& e : level.entities) {
         if (auto* r = e.try_as<level::RobotProps>(); r && !r->dummy) ++robot_count;
-        if (auto* s = e.try_as<level::SpawnerProps>()) robot_count += static_cast<std::size_t>(std::clamp(s->count, 0, 100));
+        if (auto* s = e.try_as<level::SpawnerProps>())
+            robot_count += static_cast<std::size_t>(std::clamp(s->count, 0, 100));
     }
     robots_.reserve(robot_count);
     robot_anims_.reserve(robot_count);

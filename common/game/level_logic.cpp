@@ -77,8 +77,9 @@ bool LevelLogic::next_ready(std::uint32_t& link) {
         ready_.clear();
         ready_head_ = 0;
         if (!std::exchange(overflow_reported_, true))
-            report("more than " + std::to_string(kMaxActionsPerStep) +
-                   " actions in one step (a zero-delay loop of links?); the rest of that step's were dropped");
+            report(
+                "more than " + std::to_string(kMaxActionsPerStep) +
+                " actions in one step (a zero-delay loop of links?); the rest of that step's were dropped");
         return false;
     }
     link = ready_[ready_head_++];

@@ -21,7 +21,17 @@ namespace ks::game {
 
 // What a resolved link acts on; its index is into the game's array of that kind (doors(), lights(),
 // robots()) or the logic's (triggers(), spawners(), messages, sounds, objectives()).
-enum class LogicTarget : std::uint8_t { Door, Light, Trigger, Robot, Spawner, Message, Sound, Objective, Level };
+enum class LogicTarget : std::uint8_t {
+    Door,
+    Light,
+    Trigger,
+    Robot,
+    Spawner,
+    Message,
+    Sound,
+    Objective,
+    Level
+};
 
 struct LogicLink {
     level::LinkEvent event = level::LinkEvent::OnStart;
@@ -64,9 +74,9 @@ struct SpawnerState {
     Vec3 position{0.0f};
     float yaw_degrees = 0.0f;
     int count = 1, max_alive = 1;
-    float interval = 0.0f;
-    int left = 0;      // robots still to make in the current wave
-    float wait = 0.0f; // seconds until the next may be made
+    std::int64_t interval_steps = 0; // the interval rounded to whole steps
+    int left = 0;                    // robots still to make in the current wave
+    std::int64_t next_step = 0;      // the step from which the next may be made
     bool started = false;
     bool stuck = false; // no navigation mesh, or no walkable ground near it: it can never make a robot
     std::vector<std::uint32_t> robots; // indices into Game::robots() of those it made

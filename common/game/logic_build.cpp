@@ -23,7 +23,9 @@ std::optional<std::uint32_t> index_of(const Records& records, int entity_id) {
 }
 
 TriggerWho trigger_who(const level::Choice& who) {
-    return who.value == "robots" ? TriggerWho::Robots : who.value == "both" ? TriggerWho::Both : TriggerWho::Player;
+    return who.value == "robots" ? TriggerWho::Robots
+           : who.value == "both" ? TriggerWho::Both
+                                 : TriggerWho::Player;
 }
 
 } // namespace
@@ -34,7 +36,8 @@ void Game::build_logic(const level::Level& level) {
     for (const level::Entity& e : level.entities) {
         largest_id = std::max(largest_id, e.id);
         if (const auto* t = e.try_as<level::TriggerProps>()) {
-            logic.triggers_.push_back({e.id, level::upright_frame(e), t->size, trigger_who(t->who), t->enabled, false});
+            logic.triggers_.push_back(
+                {e.id, level::upright_frame(e), t->size, trigger_who(t->who), t->enabled, false});
         } else if (const auto* s = e.try_as<level::SpawnerProps>()) {
             SpawnerState state;
             state.entity_id = e.id;
@@ -45,7 +48,9 @@ void Game::build_logic(const level::Level& level) {
             state.yaw_degrees = e.rotation.x;
             state.count = std::max(1, s->count);
             state.max_alive = std::max(1, s->max_alive);
-            state.interval = std::isfinite(s->interval) ? std::max(0.0f, s->interval) : 0.0f;
+            const double interval =
+                std::isfinite(s->interval) ? std::clamp(static_cast<double>(s->interval), 0.0, 600.0) : 0.0;
+            state.interval_steps = std::llround(interval / settings_.step);
             state.robots.reserve(static_cast<std::size_t>(state.count));
             logic.spawners_.push_back(std::move(state));
         } else if (const auto* m = e.try_as<level::MessageProps>()) {
@@ -63,8 +68,8 @@ void Game::build_logic(const level::Level& level) {
     // The record a link acts on, or a problem.
     auto resolve = [&](const level::Link& link, std::string_view owner, LogicLink& out) -> bool {
         auto problem = [&](const std::string& what) {
-            logic.report(std::string(owner) + ": link " + link.event + " -> " + link.action + " " + link.target + ": " +
-                         what + " (the link is ignored)");
+            logic.report(std::string(owner) + ": link " + link.event + " -> " + link.action + " " +
+                         link.target + ": " + what + " (the link is ignored)");
             return false;
         };
         const auto event = level::event_from_name(link.event);
@@ -74,14 +79,16 @@ void Game::build_logic(const level::Level& level) {
         out.event = *event;
         out.action = *action;
         out.once = link.once;
-        out.delay_steps = std::llround(std::min(static_cast<double>(link.delay), level::kMaxLinkDelay) / settings_.step);
+        out.delay_steps =
+            std::llround(std::min(static_cast<double>(link.delay), level::kMaxLinkDelay) / settings_.step);
         switch (level::target_kind(*action)) {
         case level::TargetKind::Level:
             out.target = LogicTarget::Level;
             return true;
         case level::TargetKind::Objective: {
             const auto& objectives = level.objectives;
-            auto it = std::find_if(objectives.begin(), objectives.end(), [&](const level::Objective& o) { return o.id == link.target; });
+            auto it = std::find_if(objectives.begin(), objectives.end(),
+                                   [&](const level::Objective& o) { return o.id == link.target; });
             if (it == objectives.end()) return problem("no such objective");
             out.target = LogicTarget::Objective;
             out.target_index = static_cast<std::uint32_t>(it - objectives.begin());
@@ -91,20 +98,37 @@ void Game::build_logic(const level::Level& level) {
             break;
         }
         const auto found = names.find(link.target);
-        if (found.size() != 1) return problem(found.empty() ? "no entity of that name" : "the name is not unique");
+        if (found.size() != 1)
+            return problem(found.empty() ? "no entity of that name" : "the name is not unique");
         const level::Entity& target = level.entities[found.front()];
-        if (!level::entity_takes(target.type(), *action)) return problem("the target does not take the action");
+        if (!level::entity_takes(target.type(), *action))
+            return problem("the target does not take the action");
         std::optional<std::uint32_t> index;
         switch (target.type()) {
-        case EntityType::Door: out.target = LogicTarget::Door, index = index_of(doors_, target.id); break;
+        case EntityType::Door:
+            out.target = LogicTarget::Door, index = index_of(doors_, target.id);
+            break;
         case EntityType::FloorLight:
-        case EntityType::TopLight: out.target = LogicTarget::Light, index = index_of(lights_, target.id); break;
-        case EntityType::Trigger: out.target = LogicTarget::Trigger, index = index_of(logic.triggers_, target.id); break;
-        case EntityType::Robot: out.target = LogicTarget::Robot, index = index_of(robots_, target.id); break;
-        case EntityType::Spawner: out.target = LogicTarget::Spawner, index = index_of(logic.spawners_, target.id); break;
-        case EntityType::Message: out.target = LogicTarget::Message, index = index_of(logic.messages_, target.id); break;
-        case EntityType::Sound: out.target = LogicTarget::Sound, index = index_of(logic.sounds_, target.id); break;
-        default: break;
+        case EntityType::TopLight:
+            out.target = LogicTarget::Light, index = index_of(lights_, target.id);
+            break;
+        case EntityType::Trigger:
+            out.target = LogicTarget::Trigger, index = index_of(logic.triggers_, target.id);
+            break;
+        case EntityType::Robot:
+            out.target = LogicTarget::Robot, index = index_of(robots_, target.id);
+            break;
+        case EntityType::Spawner:
+            out.target = LogicTarget::Spawner, index = index_of(logic.spawners_, target.id);
+            break;
+        case EntityType::Message:
+            out.target = LogicTarget::Message, index = index_of(logic.messages_, target.id);
+            break;
+        case EntityType::Sound:
+            out.target = LogicTarget::Sound, index = index_of(logic.sounds_, target.id);
+            break;
+        default:
+            break;
         }
         if (!index) return problem("the target is not in the game (an animation dummy?)");
         out.target_index = *index;
@@ -121,7 +145,8 @@ void Game::build_logic(const level::Level& level) {
                 logic.report(std::string(owner) + " does not emit " + link.event + " (the link is ignored)");
                 continue;
             }
-            if (resolved.action == LinkAction::Lock || resolved.action == LinkAction::Unlock) logic.uses_locks_ = true;
+            if (resolved.action == LinkAction::Lock || resolved.action == LinkAction::Unlock)
+                logic.uses_locks_ = true;
             logic.links_.push_back(resolved);
             ++range.count;
         }
@@ -140,8 +165,10 @@ void Game::build_logic(const level::Level& level) {
                 robot = index_of(robots_, level.entities[found.front()].id);
                 spawner = index_of(logic.spawners_, level.entities[found.front()].id);
             }
-            if (robot) state.kill_robots.push_back(*robot);
-            else if (spawner) state.kill_spawners.push_back(*spawner);
+            if (robot)
+                state.kill_robots.push_back(*robot);
+            else if (spawner)
+                state.kill_spawners.push_back(*spawner);
             else {
                 state.kill_condition = false;
                 logic.report("objective \"" + o.id + "\": nothing to kill is called \"" + name +
@@ -153,7 +180,8 @@ void Game::build_logic(const level::Level& level) {
     // Objectives' links come after, so the objectives' ids exist when their own links name one another.
     for (std::size_t i = 0; i < level.objectives.size(); ++i) {
         const std::array events{level::kObjectiveEvent};
-        logic.objectives_[i].links = add_links(level.objectives[i].links, events, "objective \"" + level.objectives[i].id + "\"");
+        logic.objectives_[i].links =
+            add_links(level.objectives[i].links, events, "objective \"" + level.objectives[i].id + "\"");
     }
     const std::array level_events{level::kLevelEvent};
     logic.level_links_ = add_links(level.links, level_events, "the level");

@@ -20,7 +20,7 @@ void Game::update_logic(float dt) {
     if (message.visible()) message.time_left = std::max(0.0f, message.time_left - dt);
     test_triggers();
     run_logic_cascade(0);
-    update_spawners(dt);
+    update_spawners();
     if (phase_ == Phase::Playing && logic_.all_objectives_complete()) set_phase(Phase::Won);
 }
 
@@ -100,7 +100,8 @@ void Game::apply_action(const LogicLink& link) {
     case LinkAction::Toggle:
         if (link.target == LogicTarget::Door) {
             Door& d = doors_[i];
-            set_door_opening(d, link.action == LinkAction::Toggle ? !d.opening : link.action == LinkAction::Open);
+            set_door_opening(d, link.action == LinkAction::Toggle ? !d.opening
+                                                                  : link.action == LinkAction::Open);
             return;
         }
         [[fallthrough]]; // a light's toggle
@@ -143,19 +144,21 @@ void Game::apply_action(const LogicLink& link) {
         SpawnerState& s = logic_.spawners_[i];
         if (s.left > 0) return; // a wave is under way: it goes on as it was
         s.left = s.count;
-        s.wait = 0.0f;
+        s.next_step = steps_;
         s.started = true;
         return;
     }
     case LinkAction::Show: {
         const MessageEntity& m = logic_.messages_[i];
         logic_.message_ = {m.entity_id, m.text, m.duration, m.duration};
-        events_.push_back({EventType::MessageShown, player_.eye(), Vec3(0.0f), m.entity_id, m.duration, m.text});
+        events_.push_back(
+            {EventType::MessageShown, player_.eye(), Vec3(0.0f), m.entity_id, m.duration, m.text});
         return;
     }
     case LinkAction::Play: {
         const SoundEntity& s = logic_.sounds_[i];
-        events_.push_back({EventType::SoundPlayed, s.position, Vec3(s.radius, 0.0f, 0.0f), s.entity_id, s.volume, s.sound});
+        events_.push_back(
+            {EventType::SoundPlayed, s.position, Vec3(s.radius, 0.0f, 0.0f), s.entity_id, s.volume, s.sound});
         return;
     }
     case LinkAction::Complete:
@@ -176,7 +179,8 @@ void Game::complete_objective_at(std::size_t index) {
     ObjectiveState& o = logic_.objectives_[index];
     if (o.completed) return;
     o.completed = true;
-    events_.push_back({EventType::ObjectiveCompleted, player_.feet, Vec3(0.0f), -1, static_cast<float>(index), o.id});
+    events_.push_back(
+        {EventType::ObjectiveCompleted, player_.feet, Vec3(0.0f), -1, static_cast<float>(index), o.id});
     logic_.fire(o.links, LinkEvent::OnComplete, steps_);
 }
 
@@ -186,10 +190,12 @@ void Game::check_kill_objectives() {
         const ObjectiveState& o = logic_.objectives_[k];
         if (o.completed || !o.kill_condition) continue;
         const bool robots_dead = std::all_of(o.kill_robots.begin(), o.kill_robots.end(), dead);
-        const bool spawners_done = std::all_of(o.kill_spawners.begin(), o.kill_spawners.end(), [&](std::uint32_t s) {
-            const SpawnerState& spawner = logic_.spawners_[s];
-            return spawner.started && spawner.left == 0 && std::all_of(spawner.robots.begin(), spawner.robots.end(), dead);
-        });
+        const bool spawners_done =
+            std::all_of(o.kill_spawners.begin(), o.kill_spawners.end(), [&](std::uint32_t s) {
+                const SpawnerState& spawner = logic_.spawners_[s];
+                return spawner.started && spawner.left == 0 &&
+                       std::all_of(spawner.robots.begin(), spawner.robots.end(), dead);
+            });
         if (robots_dead && spawners_done) complete_objective_at(k);
     }
 }

@@ -16,23 +16,22 @@ constexpr float kSpawnRings[] = {0.0f, 2.5f, 5.0f};
 
 } // namespace
 
-void Game::update_spawners(float dt) {
+void Game::update_spawners() {
     for (SpawnerState& s : logic_.spawners_) {
-        if (s.left <= 0 || s.stuck) continue;
-        s.wait -= dt;
-        if (s.wait > 0.0f) continue;
+        if (s.left <= 0 || s.stuck || steps_ < s.next_step) continue;
         int alive = 0;
         for (std::uint32_t r : s.robots) alive += robots_[r].alive() ? 1 : 0;
         if (alive >= s.max_alive) continue; // the next comes as soon as one of them dies
         if (robots_.size() >= LevelLogic::kMaxRobots) {
             s.stuck = true;
-            logic_.report("spawner \"" + s.name + "\": the game holds " + std::to_string(LevelLogic::kMaxRobots) +
+            logic_.report("spawner \"" + s.name + "\": the game holds " +
+                          std::to_string(LevelLogic::kMaxRobots) +
                           " robots, the most it may; it makes no more");
             continue;
         }
         if (!spawn_robot(s)) continue; // no room now: it tries again next step
         --s.left;
-        s.wait = s.interval;
+        s.next_step = steps_ + s.interval_steps;
     }
 }
 
@@ -64,8 +63,8 @@ bool Game::spawn_robot(SpawnerState& s) {
     if (!navigation_ || !navigation_->nearest_point(s.position, Vec3(kSpawnReach, 4.0f, kSpawnReach))) {
         s.stuck = true; // the mesh never changes where it lies: this spawner can never spawn
         logic_.report("spawner \"" + s.name + "\": " +
-                      (navigation_ ? "no walkable ground within " + std::to_string(static_cast<int>(kSpawnReach)) +
-                                         " units of it"
+                      (navigation_ ? "no walkable ground within " +
+                                         std::to_string(static_cast<int>(kSpawnReach)) + " units of it"
                                    : "the level has no navigation mesh (" + navigation_error_ + ")") +
                       ", so it makes no robots");
         return false;
@@ -87,7 +86,8 @@ bool Game::spawn_robot(SpawnerState& s) {
     robots_.back().path.reserve(kMaxPathCorners);
     s.robots.push_back(index);
     logic_.robot_dead_.push_back(false);
-    events_.push_back({EventType::RobotSpawned, *point, Vec3(0.0f), entity.id, static_cast<float>(s.entity_id), {}});
+    events_.push_back(
+        {EventType::RobotSpawned, *point, Vec3(0.0f), entity.id, static_cast<float>(s.entity_id), {}});
     return true;
 }
 

@@ -90,7 +90,8 @@ std::uint64_t Game::state_hash() const {
     // The level logic, only where it holds state: a level without any (the main level, whose one objective
     // completes in the step it is won, which the phase already says) hashes as before the logic existed.
     const auto objectives = logic_.objectives();
-    const auto completed = std::count_if(objectives.begin(), objectives.end(), [](const auto& o) { return o.completed; });
+    const auto completed =
+        std::count_if(objectives.begin(), objectives.end(), [](const auto& o) { return o.completed; });
     if (completed > 0 && completed < static_cast<std::ptrdiff_t>(objectives.size()))
         for (const ObjectiveState& o : objectives) h.add(o.completed);
     const auto links = logic_.links();
@@ -107,7 +108,7 @@ std::uint64_t Game::state_hash() const {
     }
     for (const SpawnerState& s : logic_.spawners()) {
         h.add(s.left);
-        h.add(s.wait);
+        h.add(s.next_step);
         h.add(s.started);
     }
     if (logic_.message().visible()) {

@@ -142,7 +142,8 @@ PlacedShape bounding_shape(const Entity& e) {
         return placed(ShapeKind::Box, upright_frame(e), Vec3(0, kRobotHeight * 0.5f, 0),
                       {kRobotRadius, kRobotHeight * 0.5f, kRobotRadius});
     case EntityType::Message:
-        return unturned(ShapeKind::Box, e.position, Vec3(0, kLogicMarkerHalfSize, 0), Vec3(kLogicMarkerHalfSize));
+        return unturned(ShapeKind::Box, e.position, Vec3(0, kLogicMarkerHalfSize, 0),
+                        Vec3(kLogicMarkerHalfSize));
     default:
         break;
     }

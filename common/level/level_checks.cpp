@@ -68,12 +68,14 @@ class FieldChecker {
         if (std::string_view(info.name) == "texture" && v.empty())
             sink_.error(path_of(info), "texture name is empty",
                         "name a material from assets/textures, e.g. \"concrete\"");
-        if (info.min >= 0 && (static_cast<double>(v.size()) < info.min || static_cast<double>(v.size()) > info.max))
+        if (info.min >= 0 &&
+            (static_cast<double>(v.size()) < info.min || static_cast<double>(v.size()) > info.max))
             sink_.error(path_of(info),
                         v.empty() ? std::string(info.name) + " is empty"
-                                  : std::string(info.name) + " of " + std::to_string(v.size()) + " characters is too long",
-                        "valid: " + jsonio::format_readable(info.min) + " .. " + jsonio::format_readable(info.max) +
-                            " characters; " + info.tooltip);
+                                  : std::string(info.name) + " of " + std::to_string(v.size()) +
+                                        " characters is too long",
+                        "valid: " + jsonio::format_readable(info.min) + " .. " +
+                            jsonio::format_readable(info.max) + " characters; " + info.tooltip);
     }
     template <int N>
     void field(glm::vec<N, float>& v, const FieldInfo& info) {
@@ -144,12 +146,13 @@ void check_entity(const Entity& entity, const std::string& path, DiagnosticSink&
     const RobotProps* robot = spawner ? &spawner->robot : entity.try_as<RobotProps>();
     if (robot && robot->eye_radius_min > robot->eye_radius_max)
         sink.error(member_path(props_path, "eye_radius_min"),
-                   "eye_radius_min " + number_text(robot->eye_radius_min) + " is larger than eye_radius_max " +
-                       number_text(robot->eye_radius_max),
+                   "eye_radius_min " + number_text(robot->eye_radius_min) +
+                       " is larger than eye_radius_max " + number_text(robot->eye_radius_max),
                    "the robot starts following inside eye_radius_min and keeps following inside "
                    "eye_radius_max, so min <= max");
     if (spawner && spawner->robot.dummy)
-        sink.error(member_path(props_path, "dummy"), entity_subject(entity) + ": a spawner cannot make animation dummies",
+        sink.error(member_path(props_path, "dummy"),
+                   entity_subject(entity) + ": a spawner cannot make animation dummies",
                    "set \"dummy\": false; dummies belong in the dojo");
     SubjectScope scope(sink, entity_subject(entity));
     check_links(entity.links, entity_events(entity.type()), with_article(type_name(entity.type())),

@@ -63,7 +63,8 @@ const std::vector<Migration>& migrations() {
     static const std::vector<Migration> table = {
         {0, "\"objects\" renamed \"entities\"; an entity's \"yaw\" number became \"rotation\": [yaw, 0, 0]",
          &migrate_0_to_1},
-        {1, "the control panel's win became the objective \"shutdown\", completed by each panel's on_use link",
+        {1,
+         "the control panel's win became the objective \"shutdown\", completed by each panel's on_use link",
          &migrate_1_to_2},
     };
     return table;

@@ -166,7 +166,8 @@ bool expect_object(const Json& value, const std::string& path, std::string_view 
 void read_patrol(const Json& value, const std::string& path, const FieldInfo& info, DiagnosticSink& sink,
                  Patrol& out);
 void read_links(const Json& value, const std::string& path, DiagnosticSink& sink, std::vector<Link>& out);
-void read_names(const Json& value, const std::string& path, DiagnosticSink& sink, std::vector<std::string>& out);
+void read_names(const Json& value, const std::string& path, DiagnosticSink& sink,
+                std::vector<std::string>& out);
 
 // Walks a props struct's visit() list: reads each field that is present, leaves the others at their
 // defaults, then warns about members that no field claimed.
@@ -313,8 +314,8 @@ bool check_list(const Json& value, const std::string& path, const char* what, co
         return false;
     }
     if (value.size() > limit) {
-        sink.error(path,
-                   std::to_string(value.size()) + " " + what + "; at most " + std::to_string(limit), hint);
+        sink.error(path, std::to_string(value.size()) + " " + what + "; at most " + std::to_string(limit),
+                   hint);
         return false;
     }
     return true;
@@ -323,8 +324,8 @@ bool check_list(const Json& value, const std::string& path, const char* what, co
 // A link is read whole or not at all: one without its event, target or action could never fire.
 void read_links(const Json& value, const std::string& path, DiagnosticSink& sink, std::vector<Link>& out) {
     if (!check_list(value, path, "links", "[{\"event\": ..., \"target\": ..., \"action\": ...}, ...]",
-                    kMaxLinks, "split the work over more entities (a trigger can start a chain), or remove links",
-                    sink))
+                    kMaxLinks,
+                    "split the work over more entities (a trigger can start a chain), or remove links", sink))
         return;
     out.clear();
     for (size_t i = 0; i < value.size(); ++i) {
@@ -346,9 +347,11 @@ void read_links(const Json& value, const std::string& path, DiagnosticSink& sink
     }
 }
 
-void read_names(const Json& value, const std::string& path, DiagnosticSink& sink, std::vector<std::string>& out) {
+void read_names(const Json& value, const std::string& path, DiagnosticSink& sink,
+                std::vector<std::string>& out) {
     if (!check_list(value, path, "names", "[\"guard_1\", \"hall_spawner\"]", kMaxKillNames,
-                    "list the robots and spawners by name; a spawner stands for all the robots it makes", sink))
+                    "list the robots and spawners by name; a spawner stands for all the robots it makes",
+                    sink))
         return;
     out.clear();
     for (size_t i = 0; i < value.size(); ++i) {
@@ -359,8 +362,9 @@ void read_names(const Json& value, const std::string& path, DiagnosticSink& sink
 
 std::vector<Objective> read_objectives(const Json& value, const std::string& path, DiagnosticSink& sink) {
     std::vector<Objective> objectives;
-    if (!check_list(value, path, "objectives", "[{\"id\": \"clear_hall\", \"text\": \"Clear the hall\"}, ...]",
-                    kMaxObjectives, "a level is a few objectives; merge some", sink))
+    if (!check_list(value, path, "objectives",
+                    "[{\"id\": \"clear_hall\", \"text\": \"Clear the hall\"}, ...]", kMaxObjectives,
+                    "a level is a few objectives; merge some", sink))
         return objectives;
     for (size_t i = 0; i < value.size(); ++i) {
         const std::string objective_path = element_path(path, i);

@@ -62,7 +62,8 @@ class TargetChecker {
         switch (target_kind(*action)) {
         case TargetKind::Level:
             if (link.target != kLevelTarget)
-                sink_.error(target_path, in_quotes(link.action) + " acts on the level, not on " + in_quotes(link.target),
+                sink_.error(target_path,
+                            in_quotes(link.action) + " acts on the level, not on " + in_quotes(link.target),
                             "write \"target\": \"level\"");
             return;
         case TargetKind::Objective:
@@ -97,7 +98,8 @@ class TargetChecker {
 
   private:
     void check_objective_target(const Link& link, const std::string& path) {
-        if (std::find(objective_ids_.begin(), objective_ids_.end(), link.target) != objective_ids_.end()) return;
+        if (std::find(objective_ids_.begin(), objective_ids_.end(), link.target) != objective_ids_.end())
+            return;
         std::string hint = did_you_mean(link.target, objective_ids_, budget_);
         hint += objective_ids_.empty() ? "the level has no objectives; add one under \"objectives\""
                                        : "objectives: " + join(objective_ids_);
@@ -126,8 +128,7 @@ class TargetChecker {
         const Entity& target = level_.entities[found.front()];
         if (!entity_takes(target.type(), action)) {
             const auto actions = entity_actions(target.type());
-            sink_.error(path,
-                        entity_subject(target) + " cannot " + in_quotes(link.action),
+            sink_.error(path, entity_subject(target) + " cannot " + in_quotes(link.action),
                         actions.empty() ? with_article(type_name(target.type())) + " takes no actions"
                                         : with_article(type_name(target.type())) +
                                               " takes: " + join(action_names(actions)));
@@ -139,9 +140,12 @@ class TargetChecker {
 
     void ambiguous(const std::string& name, std::span<const size_t> found, const std::string& path) {
         std::vector<std::string> holders;
-        for (size_t i = 0; i < found.size() && i < 4; ++i) holders.push_back(entity_subject(level_.entities[found[i]]));
+        for (size_t i = 0; i < found.size() && i < 4; ++i)
+            holders.push_back(entity_subject(level_.entities[found[i]]));
         if (found.size() > 4) holders.push_back("...");
-        sink_.error(path, in_quotes(name) + " names " + std::to_string(found.size()) + " entities (" + join(holders) + ")",
+        sink_.error(path,
+                    in_quotes(name) + " names " + std::to_string(found.size()) + " entities (" +
+                        join(holders) + ")",
                     "a name that links or objectives use must be unique; rename the others");
     }
 
@@ -159,26 +163,36 @@ void check_objectives(const Level& level, TargetChecker& targets, DiagnosticSink
         const std::string path = element_path("objectives", i);
         SubjectScope scope(sink, "objective " + in_quotes(o.id));
         if (o.id.empty())
-            sink.error(member_path(path, "id"), "the objective has no id", "give it a short unique id, e.g. \"clear_hall\"");
+            sink.error(member_path(path, "id"), "the objective has no id",
+                       "give it a short unique id, e.g. \"clear_hall\"");
         else if (!seen.insert(o.id).second)
-            sink.error(member_path(path, "id"), "duplicate objective id " + in_quotes(o.id), "objective ids must be unique");
+            sink.error(member_path(path, "id"), "duplicate objective id " + in_quotes(o.id),
+                       "objective ids must be unique");
         if (o.text.empty() || o.text.size() > static_cast<size_t>(kMaxMessageLength))
             sink.error(member_path(path, "text"),
-                       o.text.empty() ? "the objective has no text" : "text of " + std::to_string(o.text.size()) + " characters is too long",
-                       "write what the player must do, in at most " + std::to_string(kMaxMessageLength) + " characters");
+                       o.text.empty()
+                           ? "the objective has no text"
+                           : "text of " + std::to_string(o.text.size()) + " characters is too long",
+                       "write what the player must do, in at most " + std::to_string(kMaxMessageLength) +
+                           " characters");
         if (o.kill.size() > static_cast<size_t>(kMaxKillNames))
-            sink.error(member_path(path, "kill"), std::to_string(o.kill.size()) + " names; at most " + std::to_string(kMaxKillNames),
+            sink.error(member_path(path, "kill"),
+                       std::to_string(o.kill.size()) + " names; at most " + std::to_string(kMaxKillNames),
                        "a spawner stands for all the robots it makes");
         else
-            for (size_t k = 0; k < o.kill.size(); ++k) targets.check_kill(o.kill[k], element_path(member_path(path, "kill"), k));
+            for (size_t k = 0; k < o.kill.size(); ++k)
+                targets.check_kill(o.kill[k], element_path(member_path(path, "kill"), k));
         const std::array events{kObjectiveEvent};
         const std::string links_path = member_path(path, "links");
         check_links(o.links, events, "an objective", links_path, sink);
         if (o.links.size() <= static_cast<size_t>(kMaxLinks))
-            for (size_t k = 0; k < o.links.size(); ++k) targets.check(o.links[k], element_path(links_path, k));
+            for (size_t k = 0; k < o.links.size(); ++k)
+                targets.check(o.links[k], element_path(links_path, k));
     }
     if (level.objectives.size() > static_cast<size_t>(kMaxObjectives))
-        sink.error("objectives", std::to_string(level.objectives.size()) + " objectives; at most " + std::to_string(kMaxObjectives),
+        sink.error("objectives",
+                   std::to_string(level.objectives.size()) + " objectives; at most " +
+                       std::to_string(kMaxObjectives),
                    "a level is a few objectives; merge some");
 }
 
@@ -195,7 +209,8 @@ std::span<const size_t> NameIndex::find(std::string_view name) const {
 }
 
 std::string with_article(std::string_view noun) {
-    const bool vowel = !noun.empty() && std::string_view("aeiou").find(noun.front()) != std::string_view::npos;
+    const bool vowel =
+        !noun.empty() && std::string_view("aeiou").find(noun.front()) != std::string_view::npos;
     std::string out = (vowel ? "an " : "a ") + std::string(noun);
     std::replace(out.begin(), out.end(), '_', ' ');
     return out;
@@ -224,8 +239,9 @@ void check_links(const std::vector<Link>& links, std::span<const LinkEvent> emit
         const auto event = event_from_name(link.event);
         const bool emits = event && std::find(emitted.begin(), emitted.end(), *event) != emitted.end();
         if (!emits) {
-            const std::string message = event ? std::string(source) + " does not emit " + in_quotes(link.event)
-                                              : "unknown event " + in_quotes(link.event);
+            const std::string message = event
+                                            ? std::string(source) + " does not emit " + in_quotes(link.event)
+                                            : "unknown event " + in_quotes(link.event);
             sink.error(member_path(link_path, "event"), message,
                        did_you_mean(link.event, emitted_names, budget) + std::string(source) +
                            " emits: " + join(emitted_names));
@@ -247,7 +263,8 @@ void check_logic(const Level& level, DiagnosticSink& sink, const std::vector<siz
     TargetChecker targets(level, names, sink);
     for (size_t i = 0; i < level.entities.size(); ++i) {
         const Entity& e = level.entities[i];
-        if (e.links.empty() || e.links.size() > static_cast<size_t>(kMaxLinks) || entity_events(e.type()).empty())
+        if (e.links.empty() || e.links.size() > static_cast<size_t>(kMaxLinks) ||
+            entity_events(e.type()).empty())
             continue; // check_entity reported the list itself
         SubjectScope scope(sink, entity_subject(e));
         const std::string path = member_path(entity_path(i, source_index), "links");
@@ -258,7 +275,8 @@ void check_logic(const Level& level, DiagnosticSink& sink, const std::vector<siz
         const std::array events{kLevelEvent};
         check_links(level.links, events, "the level", "links", sink);
         if (level.links.size() <= static_cast<size_t>(kMaxLinks))
-            for (size_t k = 0; k < level.links.size(); ++k) targets.check(level.links[k], element_path("links", k));
+            for (size_t k = 0; k < level.links.size(); ++k)
+                targets.check(level.links[k], element_path("links", k));
     }
     check_objectives(level, targets, sink);
     check_logic_design(level, names, sink, source_index);

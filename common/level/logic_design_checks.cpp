@@ -119,7 +119,8 @@ void check_door_loops(const Level& level, const std::vector<LinkRef>& refs, Diag
     for (size_t i = 0; i < refs.size(); ++i) {
         const LinkRef& r = refs[i];
         if (r.source == kNone || r.target == kNone || r.link->once || r.link->delay != 0.0f) continue;
-        if (level.entities[r.source].type() != EntityType::Door || level.entities[r.target].type() != EntityType::Door)
+        if (level.entities[r.source].type() != EntityType::Door ||
+            level.entities[r.target].type() != EntityType::Door)
             continue;
         if (is_action(r, {LinkAction::Open, LinkAction::Close, LinkAction::Toggle})) nodes.push_back(i);
     }
@@ -132,7 +133,8 @@ void check_door_loops(const Level& level, const std::vector<LinkRef>& refs, Diag
         const auto caused = events_caused(*action_from_name(from.link->action));
         for (size_t m : by_source[from.target]) {
             const auto event = event_from_name(refs[nodes[m]].link->event);
-            if (event && std::find(caused.begin(), caused.end(), *event) != caused.end()) edges[n].push_back(m);
+            if (event && std::find(caused.begin(), caused.end(), *event) != caused.end())
+                edges[n].push_back(m);
         }
     }
     find_cycles(edges, [&](std::vector<size_t> component) {
@@ -143,16 +145,18 @@ void check_door_loops(const Level& level, const std::vector<LinkRef>& refs, Diag
             const LinkRef& r = refs[nodes[component[k]]];
             turns.emplace_back(r.target, *action_from_name(r.link->action));
             if (k < kMaxLoopLinksShown)
-                chain += (k ? "; " : "") + in_quotes(level.entities[r.source].name) + " " + r.link->event + " -> " +
-                         r.link->action + " " + in_quotes(r.link->target);
+                chain += (k ? "; " : "") + in_quotes(level.entities[r.source].name) + " " + r.link->event +
+                         " -> " + r.link->action + " " + in_quotes(r.link->target);
         }
         if (component.size() > kMaxLoopLinksShown) chain += "; ...";
         bool both_ways = false;
         for (const auto& [door, action] : turns) {
             auto turned = [&](LinkAction a) {
-                return std::any_of(turns.begin(), turns.end(), [&](const auto& t) { return t.first == door && t.second == a; });
+                return std::any_of(turns.begin(), turns.end(),
+                                   [&](const auto& t) { return t.first == door && t.second == a; });
             };
-            both_ways |= action == LinkAction::Toggle || (turned(LinkAction::Open) && turned(LinkAction::Close));
+            both_ways |=
+                action == LinkAction::Toggle || (turned(LinkAction::Open) && turned(LinkAction::Close));
         }
         if (!both_ways) return;
         sink.warning(refs[nodes[component.front()]].path,
@@ -179,7 +183,8 @@ void check_reachability(const Level& level, const NameIndex& names, const std::v
         if (const auto* door = e.try_as<DoorProps>(); door && door->locked && !door->open && !freed[i])
             sink.warning(member_path(member_path(path, "props"), "locked"),
                          "the door is locked and no link unlocks or opens it: the player can never pass",
-                         "add a link with \"action\": \"unlock\" (or \"open\") and \"target\": " + in_quotes(e.name));
+                         "add a link with \"action\": \"unlock\" (or \"open\") and \"target\": " +
+                             in_quotes(e.name));
     }
     for (size_t i = 0; i < level.objectives.size(); ++i) {
         const Objective& o = level.objectives[i];
@@ -187,7 +192,9 @@ void check_reachability(const Level& level, const NameIndex& names, const std::v
         SubjectScope scope(sink, "objective " + in_quotes(o.id));
         const bool by_link = std::find(completed.begin(), completed.end(), o.id) != completed.end();
         if (o.kill.empty() && !by_link) {
-            sink.warning(path, "nothing completes the objective (no link completes it and it lists nothing to kill), so the level can never be won",
+            sink.warning(path,
+                         "nothing completes the objective (no link completes it and it lists nothing to "
+                         "kill), so the level can never be won",
                          "add a link with \"action\": \"complete\" and \"target\": " + in_quotes(o.id) +
                              ", or list robots or spawners under \"kill\"");
             continue;
@@ -195,9 +202,11 @@ void check_reachability(const Level& level, const NameIndex& names, const std::v
         if (by_link) continue;
         for (size_t k = 0; k < o.kill.size(); ++k) {
             const auto found = names.find(o.kill[k]);
-            if (found.size() == 1 && level.entities[found.front()].type() == EntityType::Spawner && !spawned[found.front()])
+            if (found.size() == 1 && level.entities[found.front()].type() == EntityType::Spawner &&
+                !spawned[found.front()])
                 sink.warning(element_path(member_path(path, "kill"), k),
-                             "spawner " + in_quotes(o.kill[k]) + " never spawns, so the objective can never complete",
+                             "spawner " + in_quotes(o.kill[k]) +
+                                 " never spawns, so the objective can never complete",
                              "add a link that spawns it, or remove it from \"kill\"");
         }
     }

@@ -9,20 +9,20 @@ using E = LinkEvent;
 using A = LinkAction;
 
 constexpr std::array<std::string_view, static_cast<size_t>(E::Count)> kEventNames = {
-    "on_enter", "on_exit", "on_alert", "on_death", "on_open", "on_close", "on_use", "on_pickup", "on_start",
-    "on_complete",
+    "on_enter", "on_exit", "on_alert",  "on_death", "on_open",
+    "on_close", "on_use",  "on_pickup", "on_start", "on_complete",
 };
 
 constexpr std::array<std::string_view, static_cast<size_t>(A::Count)> kActionNames = {
-    "open",   "close",    "toggle", "lock", "unlock", "on",       "off", "enable", "disable",
-    "activate", "alert",  "kill",   "spawn", "show",  "play", "complete", "win",    "lose",
+    "open",     "close", "toggle", "lock",  "unlock", "on",   "off",      "enable", "disable",
+    "activate", "alert", "kill",   "spawn", "show",   "play", "complete", "win",    "lose",
 };
 
-constexpr std::array kAllEvents = {E::OnEnter, E::OnExit,  E::OnAlert,  E::OnDeath, E::OnOpen,
-                                   E::OnClose, E::OnUse,   E::OnPickup, E::OnStart, E::OnComplete};
-constexpr std::array kAllActions = {A::Open,    A::Close, A::Toggle, A::Lock,  A::Unlock,   A::On,
-                                    A::Off,     A::Enable, A::Disable, A::Activate, A::Alert, A::Kill,
-                                    A::Spawn,   A::Show,  A::Play,   A::Complete, A::Win, A::Lose};
+constexpr std::array kAllEvents = {E::OnEnter, E::OnExit, E::OnAlert,  E::OnDeath, E::OnOpen,
+                                   E::OnClose, E::OnUse,  E::OnPickup, E::OnStart, E::OnComplete};
+constexpr std::array kAllActions = {A::Open,  A::Close,  A::Toggle,  A::Lock,     A::Unlock, A::On,
+                                    A::Off,   A::Enable, A::Disable, A::Activate, A::Alert,  A::Kill,
+                                    A::Spawn, A::Show,   A::Play,    A::Complete, A::Win,    A::Lose};
 static_assert(kAllEvents.size() == static_cast<size_t>(E::Count));
 static_assert(kAllActions.size() == static_cast<size_t>(A::Count));
 

@@ -27,15 +27,24 @@ enum class LinkEvent : std::uint8_t {
 };
 
 enum class LinkAction : std::uint8_t {
-    Open, Close, Toggle, Lock, Unlock, // doors (toggle: lights too)
-    On, Off,                           // lights
-    Enable, Disable,                   // triggers
-    Activate, Alert, Kill,             // robots
-    Spawn,                             // spawners
-    Show,                              // messages
-    Play,                              // sounds
-    Complete,                          // objectives
-    Win, Lose,                         // the level
+    Open,
+    Close,
+    Toggle,
+    Lock,
+    Unlock, // doors (toggle: lights too)
+    On,
+    Off, // lights
+    Enable,
+    Disable, // triggers
+    Activate,
+    Alert,
+    Kill,     // robots
+    Spawn,    // spawners
+    Show,     // messages
+    Play,     // sounds
+    Complete, // objectives
+    Win,
+    Lose, // the level
     Count
 };
 

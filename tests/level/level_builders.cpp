@@ -109,7 +109,8 @@ void add_random_links(Rng& rng, Level& level) {
         targets.emplace_back(i, actions[rng.below(static_cast<std::uint32_t>(actions.size()))]);
     }
     for (auto& [i, action] : targets)
-        if (auto* door = level.entities[i].try_as<DoorProps>(); door && door->locked) action = LinkAction::Unlock;
+        if (auto* door = level.entities[i].try_as<DoorProps>(); door && door->locked)
+            action = LinkAction::Unlock;
     if (targets.empty()) return;
     for (const auto& [i, action] : targets) {
         Link link{"on_start", level.entities[i].name, std::string(action_name(action)),
@@ -182,7 +183,8 @@ Level level_with_every_type() {
     for (Entity& e : level.entities) e.rotation = {static_cast<float>(yaw += 37), 0.5f, -1.25f};
 
     // Links on every kind of source, every kind of target; two objectives.
-    auto link = [](const char* event, const char* target, const char* action, float delay = 0, bool once = false) {
+    auto link = [](const char* event, const char* target, const char* action, float delay = 0,
+                   bool once = false) {
         return Link{event, target, action, delay, once};
     };
     auto named = [&](const char* name) -> Entity& {
@@ -199,8 +201,9 @@ Level level_with_every_type() {
     named("Panel").links = {link("on_use", "shutdown", "complete")};
     named("Pickup").links = {link("on_pickup", "Vent", "play", 1)};
     level.links = {link("on_start", "Hall trigger", "enable"), link("on_start", "Welcome", "show", 3, true)};
-    level.objectives = {{"clear", "Clear the hall", {"Hall spawner"}, {link("on_complete", "Door", "unlock")}},
-                        {"shutdown", "Shut down the simulation", {}, {link("on_complete", "level", "win", 2)}}};
+    level.objectives = {
+        {"clear", "Clear the hall", {"Hall spawner"}, {link("on_complete", "Door", "unlock")}},
+        {"shutdown", "Shut down the simulation", {}, {link("on_complete", "level", "win", 2)}}};
     return level;
 }
 

@@ -38,8 +38,8 @@ class DocLister {
     // A text whose FieldInfo has a non-negative minimum bounds its length.
     void field(std::string&, const FieldInfo& info) {
         row(info, "string",
-            info.min >= 0 ? ks::jsonio::format_readable(info.min) + " .. " + ks::jsonio::format_readable(info.max) +
-                                " characters"
+            info.min >= 0 ? ks::jsonio::format_readable(info.min) + " .. " +
+                                ks::jsonio::format_readable(info.max) + " characters"
                           : "");
     }
     void field(ks::Vec2&, const FieldInfo& info) { row(info, "[x, z]", range_text_of(info) + " each"); }
@@ -142,14 +142,17 @@ TEST_CASE("every field name and type name appears in the doc, and its example le
     const std::string doc = ks::test::read_file(doc_path());
     for (EntityType type : all_types())
         CHECK(doc.find("`" + std::string(type_name(type)) + "`") != std::string::npos);
-    for (const char* key : {"format", "version", "name", "settings", "player_start", "next_id", "entities",
-                            "id", "type", "position", "rotation", "props", "yaw", "links", "objectives", "event",
-                            "target", "action", "delay", "once", "kill", "text"})
+    for (const char* key :
+         {"format", "version",  "name",     "settings", "player_start", "next_id", "entities",   "id",
+          "type",   "position", "rotation", "props",    "yaw",          "links",   "objectives", "event",
+          "target", "action",   "delay",    "once",     "kill",         "text"})
         CHECK_MESSAGE(doc.find("`" + std::string(key) + "`") != std::string::npos, key);
     for (LinkEvent event : all_events())
-        CHECK_MESSAGE(doc.find("`" + std::string(event_name(event)) + "`") != std::string::npos, event_name(event));
+        CHECK_MESSAGE(doc.find("`" + std::string(event_name(event)) + "`") != std::string::npos,
+                      event_name(event));
     for (LinkAction action : all_actions())
-        CHECK_MESSAGE(doc.find("`" + std::string(action_name(action)) + "`") != std::string::npos, action_name(action));
+        CHECK_MESSAGE(doc.find("`" + std::string(action_name(action)) + "`") != std::string::npos,
+                      action_name(action));
 
     // The example between ```json fences after "## Example" must load without a single diagnostic.
     const size_t example = doc.find("## Example");

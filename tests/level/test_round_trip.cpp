@@ -63,8 +63,9 @@ TEST_CASE("the saved text has the documented layout") {
     CHECK(text.find("\n\n") == std::string::npos);
     CHECK(text.rfind("{\n  \"format\": \"killswitch-level\",\n  \"version\": 2,\n  \"name\": ", 0) == 0);
     // Key order: the format's, not alphabetical.
-    const char* const order[] = {"\"format\"",  "\"version\"",    "\"name\"",  "\"settings\"", "\"player_start\"",
-                                 "\"next_id\"", "\"objectives\"", "\"links\"", "\"entities\""};
+    const char* const order[] = {"\"format\"",     "\"version\"",      "\"name\"",
+                                 "\"settings\"",   "\"player_start\"", "\"next_id\"",
+                                 "\"objectives\"", "\"links\"",        "\"entities\""};
     size_t at = 0;
     for (const char* key : order) {
         const size_t found = text.find(key, at);
