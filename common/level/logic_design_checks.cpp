@@ -150,13 +150,14 @@ void check_door_loops(const Level& level, const std::vector<LinkRef>& refs, Diag
         }
         if (component.size() > kMaxLoopLinksShown) chain += "; ...";
         bool both_ways = false;
-        for (const auto& [door, action] : turns) {
+        for (const auto& turn : turns) {
+            const size_t door = turn.first;
             auto turned = [&](LinkAction a) {
                 return std::any_of(turns.begin(), turns.end(),
                                    [&](const auto& t) { return t.first == door && t.second == a; });
             };
             both_ways |=
-                action == LinkAction::Toggle || (turned(LinkAction::Open) && turned(LinkAction::Close));
+                turn.second == LinkAction::Toggle || (turned(LinkAction::Open) && turned(LinkAction::Close));
         }
         if (!both_ways) return;
         sink.warning(refs[nodes[component.front()]].path,
