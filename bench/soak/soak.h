@@ -19,6 +19,7 @@
 #include "game/autoplay.h"
 #include "game/game.h"
 #include "level/level.h"
+#include "level/shutdown_objective.h"
 
 #include <cmath>
 #include <cstdint>
@@ -138,6 +139,7 @@ inline level::Level large_level(const LargeLevelOptions& o = {}) {
                 lv.add(level::EntityType::Robot, inside(5.0f), "robot").rotation.x = rng.uniform(-180, 180);
         }
     lv.player_start.position = Vec3(kRoom * 0.5f, 0.0f, -kRoom * 0.5f);
+    level::add_shutdown_objective(lv); // the panel wins
     return lv;
 }
 

@@ -10,6 +10,7 @@
 #include "core/result.h"
 #include "game/caption.h"
 #include "game/game_types.h"
+#include "game/level_logic.h"
 #include "game/patrol.h"
 #include "level/entity_shapes.h"
 #include "level/level.h"
@@ -18,6 +19,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -110,6 +112,7 @@ struct Robot {
     float hunt_left = 0.0f;
     bool heard = false; // a sound reached it this step (Game::hear_sound)
     Vec3 search_point{0.0f};
+    bool dormant = false; // stands still, blind and deaf, until a link activates or alerts it or it is hurt
     // The path being followed on the navigation mesh (corners), the goal it was planned for, the next
     // corner and the seconds until it is planned again.
     std::vector<Vec3> path;
@@ -128,6 +131,7 @@ struct Door {
     physics::BodyId leaves[2], sensor;
     float progress = 0.0f; // 0 closed .. 1 open (linear in time, as the reference)
     bool opening = false;  // where it is heading
+    bool locked = false;   // the player's E does nothing (links still open and close it)
     bool player_inside = false;
     float leaf_offset() const { return level::door_leaf_slide(props, progress); } // each leaf slides this far
     // Where leaf `side` (0: local -x, 1: +x) is at the current progress (level::door_leaf_centre).
@@ -242,6 +246,8 @@ class Game {
     int interact_target() const { return interact_target_; }
     // FNV-1a over the whole simulation state (positions, velocities, health, timers, modes, the Rng).
     std::uint64_t state_hash() const;
+    // The level's logic: objectives (the HUD's list), the message on screen, triggers, spawners, problems.
+    const LevelLogic& logic() const { return logic_; }
 
     // Direct effects, also used by tests to stage scenarios. Damage from `source` (a robot's hand tip, a
     // blast centre) says so in its PlayerDamaged event; without one the event points nowhere.
@@ -250,6 +256,11 @@ class Game {
     void damage_robot(std::size_t index, float amount, bool by_player);
     void explode_cylinder(std::size_t index);
     void teleport_player(const Vec3& feet, float yaw, float pitch = 0.0f);
+    // Runs a link action now, as a link would (the editor's "try it" and tests): `target` is an entity id,
+    // or -1 for the level; objectives are named by complete_objective. Returns false when the entity does
+    // not take the action.
+    bool run_action(level::LinkAction action, int target);
+    bool complete_objective(std::string_view id);
 
   private:
     explicit Game(GameOptions options);
@@ -277,6 +288,25 @@ class Game {
     void update_interaction(const Input& input);
     void interact(int entity_id);
     void take_pickup(Pickup& p);
+    void set_door_opening(Door& d, bool opening);
+    // Level logic (logic_build.cpp, logic_step.cpp, spawners.cpp).
+    void build_logic(const level::Level& level);
+    void update_logic(float dt);
+    // Runs ready actions and what they set off until nothing is left (or the step's budget is spent); the
+    // game's events from `cursor` on are new to the logic.
+    void run_logic_cascade(std::size_t cursor);
+    void translate_events(std::size_t& cursor);
+    void note_deaths();
+    void test_triggers();
+    bool trigger_holds(const TriggerState& t) const;
+    void apply_action(const LogicLink& link);
+    void complete_objective_at(std::size_t index);
+    void check_kill_objectives();
+    void update_spawners();
+    bool spawn_robot(SpawnerState& s);
+    std::optional<Vec3> spawn_point(const SpawnerState& s);
+    bool spawn_spot_clear(const Vec3& feet) const;
+    void hold_dormant(std::size_t index, float dt);
     void set_phase(Phase phase);
     void push(EventType type, Vec3 position = Vec3(0.0f), int entity = -1, float amount = 0.0f,
               Vec3 end = Vec3(0.0f));
@@ -315,6 +345,7 @@ class Game {
     std::vector<Pickup> pickups_;
     std::vector<Cylinder> cylinders_;
     std::vector<Panel> panels_;
+    LevelLogic logic_;
     Caption caption_;
     std::unique_ptr<nav::NavMesh> navigation_; // null when the level has none (robots stand guard)
     std::string navigation_error_;

@@ -115,10 +115,14 @@ Result<void> Game::find_clips() {
 
 Result<void> Game::build(const level::Level& level) {
     if (auto found = find_clips(); !found) return found;
-    // Count first so the arrays never reallocate while bodies refer to indices.
+    // Room for the level's robots and a wave of each spawner's: bodies refer to robots by index, so growth
+    // is safe, but the first wave then allocates nothing.
     std::size_t robot_count = 0;
-    for (const auto& e : level.entities)
+    for (const auto& e : level.entities) {
         if (auto* r = e.try_as<level::RobotProps>(); r && !r->dummy) ++robot_count;
+        if (auto* s = e.try_as<level::SpawnerProps>())
+            robot_count += static_cast<std::size_t>(std::clamp(s->count, 0, 100));
+    }
     robots_.reserve(robot_count);
     robot_anims_.reserve(robot_count);
     gravity_ = level.settings.gravity;
@@ -130,6 +134,7 @@ Result<void> Game::build(const level::Level& level) {
     }
     if (auto added = add_player(level); !added) return added;
     build_navigation(level);
+    build_logic(level);
     events_.reserve(64);
     world_.build_static();
     return ok();
@@ -204,6 +209,7 @@ Result<void> Game::add_door(const level::Entity& e) {
     d.frame = level::upright_frame(e);
     d.opening = d.props.open;
     d.progress = d.props.open ? 1.0f : 0.0f;
+    d.locked = d.props.locked;
     const auto index = static_cast<std::uint32_t>(doors_.size());
     for (int side = 0; side < 2; ++side) {
         BodyDesc leaf;
@@ -241,6 +247,7 @@ Result<void> Game::add_robot(const level::Entity& e) {
     r.health = rp.health;
     r.wander_from = r.wander_to = yaw;
     r.wander_length = 0.0f; // first idle step draws a new wander
+    r.dormant = rp.dormant;
     BodyDesc d;
     d.shape = Shape::capsule(settings_.robot_radius, settings_.robot_height * 0.5f - settings_.robot_radius);
     d.transform = {e.position + Vec3(0, settings_.robot_height * 0.5f + d.character.skin, 0),

@@ -1,4 +1,5 @@
-// One fixed step: input, player, robots, doors, fuses, physics, then what the physics reported.
+// One fixed step: input, player, robots, doors, fuses, physics, what the physics reported, E, then the level
+// logic (which reads what all of that did).
 #include "game/game.h"
 
 #include "anim/easing.h"
@@ -57,7 +58,10 @@ void Game::step(const Input& raw) {
     phase_time_ += dt;
 
     update_player(input, dt);
-    for (std::size_t i = 0; i < robots_.size(); ++i) update_robot(i, dt);
+    for (std::size_t i = 0; i < robots_.size(); ++i) {
+        if (robots_[i].dormant) hold_dormant(i, dt); // hurt, it wakes and acts at once
+        if (!robots_[i].dormant) update_robot(i, dt);
+    }
     update_doors(dt);
     update_cylinders(dt);
     world_.step(dt);
@@ -81,6 +85,7 @@ void Game::step(const Input& raw) {
     }
     if (phase_ == Phase::Playing && player_.feet.y < settings_.fall_limit) damage_player(1e9f);
     if (phase_ == Phase::Playing) update_interaction(input);
+    update_logic(dt);
 }
 
 // Footsteps (one per stride of ground walked, so their pace follows the speed; on a slope they are stair

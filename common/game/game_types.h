@@ -51,6 +51,14 @@ enum class EventType : std::uint8_t {
     ShieldHit, // the shield absorbed damage: amount = absorbed (PlayerDamaged follows with the total)
     ClipCue,   // a robot's animation clip passed an event: entity = robot, cue = the event's sound (may be
                // empty), position = the robot's centre
+    // Level logic (game/level_logic.h):
+    Used,               // the player pressed E on it: entity = door, floor light or control panel
+    LockedDoorUsed,     // E at a locked door (nothing opens): entity = door, position = the doorway
+    ObjectiveCompleted, // cue = the objective's id, amount = its index in Game::logic().objectives()
+    MessageShown,       // entity = message, cue = its text, amount = seconds on screen
+    SoundPlayed,        // a play link: entity = sound emitter, position = its point, cue = its sound name,
+                        // amount = its volume, end.x = its radius
+    RobotSpawned,       // entity = the new robot, position = its feet, amount = the spawner's entity id
 };
 
 struct Event {

@@ -147,9 +147,23 @@ void sound_cues(const Game& game, std::span<const Event> events, std::vector<Sou
             if (!e.cue.empty())
                 out.push_back(world(e.cue, e.position, e.entity, SoundPriority::Combat, 12.0f));
             break;
+        case EventType::SoundPlayed: // a level's emitter, played by a link: its radius sets how far it
+                                     // carries
+            if (!e.cue.empty()) {
+                SoundCue c = world(e.cue, e.position, e.entity, SoundPriority::Detail,
+                                   std::max(1.0f, e.end.x * 0.25f));
+                c.volume = std::clamp(e.amount, 0.0f, 1.0f);
+                out.push_back(c);
+            }
+            break;
         case EventType::RobotShot: // the shooting clip's muzzle_flash event carries the sound (ClipCue)
         case EventType::CaptionChanged:
         case EventType::Paused:
+        case EventType::Used: // doors and lights make their own sounds; the panel's beeps are an emitter
+        case EventType::LockedDoorUsed:
+        case EventType::ObjectiveCompleted:
+        case EventType::MessageShown:
+        case EventType::RobotSpawned:
             break;
         }
     }

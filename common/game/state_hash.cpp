@@ -2,6 +2,7 @@
 // one number. Floats are hashed by their bits: equal hashes mean bit-identical states.
 #include "game/game.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace ks::game {
@@ -70,6 +71,7 @@ std::uint64_t Game::state_hash() const {
             h.add(r.patrol.direction);
             h.add(r.patrol.waiting);
         }
+        if (r.props.dormant) h.add(r.dormant); // as patrols: robots that never slept hash as before
         h.add(robot_anims_[i].ticks());
         h.add(robot_anims_[i].current_clip());
     }
@@ -85,6 +87,36 @@ std::uint64_t Game::state_hash() const {
     }
     h.add(caption_.visible());
     h.add(caption_.owner());
+    // The level logic, only where it holds state: a level without any (the main level, whose one objective
+    // completes in the step it is won, which the phase already says) hashes as before the logic existed.
+    const auto objectives = logic_.objectives();
+    const auto completed =
+        std::count_if(objectives.begin(), objectives.end(), [](const auto& o) { return o.completed; });
+    if (completed > 0 && completed < static_cast<std::ptrdiff_t>(objectives.size()))
+        for (const ObjectiveState& o : objectives) h.add(o.completed);
+    const auto links = logic_.links();
+    for (std::size_t k = 0; k < links.size(); ++k)
+        if (links[k].once && links[k].fired) h.add(static_cast<std::uint32_t>(k));
+    for (const LevelLogic::Pending& p : logic_.pending()) {
+        h.add(p.due);
+        h.add(p.sequence);
+        h.add(p.link);
+    }
+    for (const TriggerState& t : logic_.triggers()) {
+        h.add(t.enabled);
+        h.add(t.occupied);
+    }
+    for (const SpawnerState& s : logic_.spawners()) {
+        h.add(s.left);
+        h.add(s.next_step);
+        h.add(s.started);
+    }
+    if (logic_.message().visible()) {
+        h.add(logic_.message().entity_id);
+        h.add(logic_.message().time_left);
+    }
+    if (logic_.uses_locks())
+        for (const Door& d : doors_) h.add(d.locked);
     return h.value();
 }
 

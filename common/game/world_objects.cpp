@@ -1,4 +1,4 @@
-// Doors, gas cylinders, E interaction and the caption.
+// Doors, gas cylinders, E interaction and the caption (a locked door's says "Locked").
 #include "game/game.h"
 
 #include <algorithm>
@@ -110,7 +110,9 @@ void Game::update_interaction(const Input& input) {
         if (!d.player_inside) continue;
         const Vec3 centre = d.frame.to_world({0, d.props.height * 0.5f, 0});
         consider(d.entity_id, centre, glm::length(centre - eye),
-                 d.opening ? "Press E to close the door" : "Press E to open the door");
+                 d.locked    ? "Locked"
+                 : d.opening ? "Press E to close the door"
+                             : "Press E to open the door");
     }
     for (const Light& l : lights_) {
         if (!l.floor) continue;
@@ -137,11 +139,23 @@ void Game::update_interaction(const Input& input) {
     if (input.interact && best >= 0) interact(best);
 }
 
+void Game::set_door_opening(Door& d, bool opening) {
+    if (d.opening == opening) return;
+    d.opening = opening;
+    push(EventType::DoorToggled, d.frame.position, d.entity_id, opening ? 1.0f : 0.0f);
+}
+
+// What E does. The control panel does what its links say (the level logic's on_use): in a level from
+// before the logic existed, complete the shutdown objective, which wins.
 void Game::interact(int entity_id) {
     for (Door& d : doors_) {
         if (d.entity_id != entity_id) continue;
-        d.opening = !d.opening;
-        push(EventType::DoorToggled, d.frame.position, d.entity_id, d.opening ? 1.0f : 0.0f);
+        if (d.locked) {
+            push(EventType::LockedDoorUsed, d.frame.position, d.entity_id);
+            return;
+        }
+        set_door_opening(d, !d.opening);
+        push(EventType::Used, d.frame.position, d.entity_id);
         caption_.show(d.opening ? "Press E to close the door" : "Press E to open the door", d.entity_id);
         push(EventType::CaptionChanged, d.frame.position, d.entity_id);
         return;
@@ -150,11 +164,12 @@ void Game::interact(int entity_id) {
         if (l.entity_id != entity_id || !l.floor) continue;
         l.on = !l.on;
         push(EventType::LightToggled, l.position, l.entity_id, l.on ? 1.0f : 0.0f);
+        push(EventType::Used, l.position, l.entity_id);
         return;
     }
     for (const Panel& k : panels_) {
         if (k.entity_id != entity_id) continue;
-        set_phase(Phase::Won);
+        push(EventType::Used, k.centre, k.entity_id);
         return;
     }
 }

@@ -76,6 +76,9 @@ std::optional<PlacedShape> static_solid_shape(const Entity& e) {
     case EntityType::Robot:
     case EntityType::Pickup:
     case EntityType::Sound:
+    case EntityType::Trigger:
+    case EntityType::Spawner:
+    case EntityType::Message:
     case EntityType::Count:
         break;
     }
@@ -133,10 +136,23 @@ PlacedShape bounding_shape(const Entity& e) {
         return unturned(ShapeKind::Box, e.position, Vec3(0, kPickupCentreHeight, 0), Vec3(kPickupHalfSize));
     case EntityType::Sound: // omnidirectional: its rotation turns nothing
         return unturned(ShapeKind::Box, e.position, Vec3(0.0f), Vec3(kSoundMarkerHalfSize));
+    case EntityType::Trigger:
+        return trigger_box(e);
+    case EntityType::Spawner: // where its robots appear: one robot's body
+        return placed(ShapeKind::Box, upright_frame(e), Vec3(0, kRobotHeight * 0.5f, 0),
+                      {kRobotRadius, kRobotHeight * 0.5f, kRobotRadius});
+    case EntityType::Message:
+        return unturned(ShapeKind::Box, e.position, Vec3(0, kLogicMarkerHalfSize, 0),
+                        Vec3(kLogicMarkerHalfSize));
     default:
         break;
     }
     return placed(ShapeKind::Box, entity_frame(e), Vec3(0.0f), Vec3(0.5f));
+}
+
+PlacedShape trigger_box(const Entity& trigger) {
+    const Vec3 size = trigger.as<TriggerProps>().size;
+    return placed(ShapeKind::Box, upright_frame(trigger), Vec3(0, size.y * 0.5f, 0), size * 0.5f);
 }
 
 Mat4 robot_model_matrix(const Vec3& feet, float level_yaw) {

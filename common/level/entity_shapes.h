@@ -43,6 +43,7 @@ inline constexpr float kPickupCentreHeight = 0.8f;     // a pickup's trigger cub
 inline constexpr float kPickupHalfSize = 0.4f;
 inline constexpr float kPickupModelLift = 0.4f;      // the pickup model's origin above the entity
 inline constexpr float kSoundMarkerHalfSize = 0.75f; // the editor's box around a sound emitter's point
+inline constexpr float kLogicMarkerHalfSize = 0.75f; // the editor's box on a message's position
 
 // The solid static body of walls, floors, stairs, floor-light stands, control panels and gas cylinders;
 // nullopt for entities that have none (doors, robots, pickups and top lights are built otherwise; sound
@@ -64,9 +65,14 @@ Vec3 pickup_centre(const Vec3& position);
 // A gas cylinder's centre (its body's), from the entity's position (the cylinder's bottom centre).
 Vec3 gas_cylinder_centre(const Vec3& position, const GasCylinderProps& cylinder);
 
+// A trigger's volume: its size standing on its position, turned by its yaw only (the game tests characters
+// against it, the editor draws and picks it).
+PlacedShape trigger_box(const Entity& trigger);
+
 // The box the editor selects, picks and checks overlaps with: the solid shape where there is one (a stair
 // as the box around its wedge), otherwise the doorway with closed leaves, the robot's body, the pickup's
-// cube, the top light's hanging bulb, the sound emitter's marker (an upright cube around its point).
+// cube, the top light's hanging bulb, the sound emitter's marker (an upright cube around its point), the
+// trigger's volume, a robot's body where a spawner makes them, a cube on a message's position.
 PlacedShape bounding_shape(const Entity& entity);
 
 // ---- model placements: the transform from a generated model's frame to the world -----------------------

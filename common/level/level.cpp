@@ -7,8 +7,8 @@ namespace ks::level {
 namespace {
 
 constexpr std::array<std::string_view, static_cast<size_t>(EntityType::Count)> kTypeNames = {
-    "wall",  "floor",  "stair",        "door",          "floor_light", "top_light",
-    "robot", "pickup", "gas_cylinder", "control_panel", "sound",
+    "wall",   "floor",        "stair",         "door",  "floor_light", "top_light", "robot",
+    "pickup", "gas_cylinder", "control_panel", "sound", "trigger",     "spawner",   "message",
 };
 
 // Builds the variant alternative whose index is `index` (the EntityType order is the variant order).

@@ -1,5 +1,5 @@
 #pragma once
-// Level format v1: the one data model that the loader reads, the editor edits, and the game spawns from.
+// Level format v2: the one data model that the loader reads, the editor edits, and the game spawns from.
 // Each entity type's properties are defined once, as a struct with a visit() that lists every field with
 // its default, range, unit and tooltip; loading, saving, validation and the editor's inspector all walk
 // that list, so there are no parallel copies to keep in step. See docs/level-format.md.
@@ -15,7 +15,7 @@
 namespace ks::level {
 
 inline constexpr std::string_view kFormatName = "killswitch-level";
-inline constexpr int kFormatVersion = 1;
+inline constexpr int kFormatVersion = 2;
 
 // Metadata a visitor receives with each field. Ranges are inclusive; a field outside its range is an error.
 struct FieldInfo {
@@ -65,9 +65,9 @@ struct Patrol {
     bool ping_pong() const { return mode.value == "ping_pong"; }
     bool operator==(const Patrol&) const = default;
 };
-inline constexpr int kMaxPatrolPoints = 256; // a route, not a polyline export: more is a mistake
+inline constexpr int kMaxPatrolPoints = 256;  // a route, not a polyline export: more is a mistake
 inline constexpr double kMaxPatrolWait = 600; // seconds, the same bound as angry_duration
-inline constexpr double kPatrolReach = 50; // how far outside the level's extent a point may lie, units
+inline constexpr double kPatrolReach = 50;    // how far outside the level's extent a point may lie, units
 
 // ---- per-type properties -------------------------------------------------------------------------------
 // Positions: walls, stairs, doors, lights, robots, pickups, cylinders and the panel stand on `position`
@@ -82,7 +82,8 @@ struct WallProps {
     void visit(V& v) {
         v.field(size, {"size", "Width, height and thickness of the wall slab", 0.01, 1e4, "units"});
         v.field(texture, {"texture", "Material name from assets/textures (concrete, wood, metal, tiles)"});
-        v.field(texture_scale, {"texture_scale", "World units covered by one repeat of the texture", 0.01, 1e4, "units"});
+        v.field(texture_scale,
+                {"texture_scale", "World units covered by one repeat of the texture", 0.01, 1e4, "units"});
     }
     bool operator==(const WallProps&) const = default;
 };
@@ -96,10 +97,12 @@ struct FloorProps {
     template <class V>
     void visit(V& v) {
         v.field(size, {"size", "Extent along local x and z", 0.01, 1e4, "units"});
-        v.field(thickness, {"thickness", "Slab thickness (below the surface, or above it for a ceiling)", 0.01, 100, "units"});
+        v.field(thickness, {"thickness", "Slab thickness (below the surface, or above it for a ceiling)",
+                            0.01, 100, "units"});
         v.field(ceiling, {"ceiling", "Acts as a ceiling: the slab is above position.y and faces down"});
         v.field(texture, {"texture", "Material name from assets/textures"});
-        v.field(texture_scale, {"texture_scale", "World units covered by one repeat of the texture", 0.01, 1e4, "units"});
+        v.field(texture_scale,
+                {"texture_scale", "World units covered by one repeat of the texture", 0.01, 1e4, "units"});
     }
     bool operator==(const FloorProps&) const = default;
 };
@@ -110,7 +113,8 @@ struct StairProps {
     std::string texture = "tiles";
     template <class V>
     void visit(V& v) {
-        v.field(size, {"size", "Width, total rise and total run; the stair rises toward its local -z", 0.01, 1e4, "units"});
+        v.field(size, {"size", "Width, total rise and total run; the stair rises toward its local -z", 0.01,
+                       1e4, "units"});
         v.field(steps, {"steps", "Number of steps", 1, 200});
         v.field(texture, {"texture", "Material name from assets/textures"});
     }
@@ -120,9 +124,10 @@ struct StairProps {
 struct DoorProps {
     float width = 5.0f;
     float height = 5.0f;
-    bool open = false;          // initial state
-    float open_offset = 2.0f;   // how far each leaf slides sideways
-    float open_time = 0.5f;     // seconds to open or close
+    bool open = false;        // initial state
+    float open_offset = 2.0f; // how far each leaf slides sideways
+    float open_time = 0.5f;   // seconds to open or close
+    bool locked = false;      // the player's E does nothing (links still open and close it)
     template <class V>
     void visit(V& v) {
         v.field(width, {"width", "Width of the doorway (two sliding leaves)", 0.5, 100, "units"});
@@ -130,6 +135,10 @@ struct DoorProps {
         v.field(open, {"open", "Open when the level starts"});
         v.field(open_offset, {"open_offset", "How far each leaf slides when opening", 0, 100, "units"});
         v.field(open_time, {"open_time", "Seconds to open or close", 0.01, 60, "s"});
+        v.field(locked, {.name = "locked",
+                         .tooltip = "Locked when the level starts: the player cannot open or close it (links "
+                                    "still can; an unlock link frees it)",
+                         .omitted_at_default = true});
     }
     bool operator==(const DoorProps&) const = default;
 };
@@ -175,35 +184,55 @@ struct TopLightProps {
 
 struct RobotProps {
     float health = 100.0f;
-    float velocity = 8.0f;             // chase speed
-    float rotation_velocity = 8.0f;    // turn rate
-    float shooting_distance = 11.0f;   // stops and shoots at or inside this distance
-    float eye_radius_min = 19.0f;      // notices the player inside this distance (with line of sight)
-    float eye_radius_max = 25.0f;      // keeps following inside this distance
-    float cooldown = 1.0f;             // seconds between shots
-    float hit_probability = 0.7f;      // chance that a shot is fired at all
-    float angry_duration = 10.0f;      // after being shot, follows regardless of distance
-    float damage = 10.0f;              // damage per hit on the player
-    bool dummy = false;                // the dojo's test robot: no AI, no collision, keys 1-5 play animations
-    float search_time = 8.0f;          // after losing the player: keeps hunting, then searches, then idles
-    float hearing_radius = 30.0f;      // shots and explosions inside this path distance alert the robot
-    Patrol patrol;                     // walked while idle; none: random wander
+    float velocity = 8.0f;           // chase speed
+    float rotation_velocity = 8.0f;  // turn rate
+    float shooting_distance = 11.0f; // stops and shoots at or inside this distance
+    float eye_radius_min = 19.0f;    // notices the player inside this distance (with line of sight)
+    float eye_radius_max = 25.0f;    // keeps following inside this distance
+    float cooldown = 1.0f;           // seconds between shots
+    float hit_probability = 0.7f;    // chance that a shot is fired at all
+    float angry_duration = 10.0f;    // after being shot, follows regardless of distance
+    float damage = 10.0f;            // damage per hit on the player
+    bool dummy = false;              // the dojo's test robot: no AI, no collision, keys 1-5 play animations
+    float search_time = 8.0f;        // after losing the player: keeps hunting, then searches, then idles
+    float hearing_radius = 30.0f;    // shots and explosions inside this path distance alert the robot
+    Patrol patrol;                   // walked while idle; none: random wander
+    bool dormant = false;            // stands still, seeing and hearing nothing, until activated or shot
     template <class V>
     void visit(V& v) {
         v.field(health, {"health", "Hit points", 1, 1e5});
         v.field(velocity, {"velocity", "Chase speed", 0, 200, "units/s"});
         v.field(rotation_velocity, {"rotation_velocity", "Turn rate", 0, 100, "rad/s"});
-        v.field(shooting_distance, {"shooting_distance", "Stops and shoots at or inside this distance", 0, 1000, "units"});
-        v.field(eye_radius_min, {"eye_radius_min", "Notices the player inside this distance, with line of sight", 0, 1000, "units"});
-        v.field(eye_radius_max, {"eye_radius_max", "Keeps following the player inside this distance", 0, 1000, "units"});
+        v.field(shooting_distance,
+                {"shooting_distance", "Stops and shoots at or inside this distance", 0, 1000, "units"});
+        v.field(eye_radius_min,
+                {"eye_radius_min", "Notices the player inside this distance, with line of sight", 0, 1000,
+                 "units"});
+        v.field(eye_radius_max,
+                {"eye_radius_max", "Keeps following the player inside this distance", 0, 1000, "units"});
         v.field(cooldown, {"cooldown", "Seconds between shots", 0, 60, "s"});
         v.field(hit_probability, {"hit_probability", "Chance that a shot is fired at all", 0, 1});
-        v.field(angry_duration, {"angry_duration", "After being shot, follows regardless of distance for this long", 0, 600, "s"});
+        v.field(angry_duration,
+                {"angry_duration", "After being shot, follows regardless of distance for this long", 0, 600,
+                 "s"});
         v.field(damage, {"damage", "Damage dealt to the player per hit", 0, 1000});
-        v.field(dummy, {"dummy", "Animation dummy (the dojo's test robot): no AI, cannot be shot or collided with; keys 1-5 play its animations"});
-        v.field(search_time, {"search_time", "After losing the player, hunts and then searches this long before returning to idle or patrol", 0, 600, "s", true});
-        v.field(hearing_radius, {"hearing_radius", "Shots and explosions within this distance along the navigation mesh alert the robot", 0, 1000, "units", true});
-        v.field(patrol, {"patrol", "Points walked in order while idle, instead of wandering", -1e5, 1e5, "units", true});
+        v.field(dummy, {"dummy", "Animation dummy (the dojo's test robot): no AI, cannot be shot or collided "
+                                 "with; keys 1-5 play its animations"});
+        v.field(
+            search_time,
+            {"search_time",
+             "After losing the player, hunts and then searches this long before returning to idle or patrol",
+             0, 600, "s", true});
+        v.field(hearing_radius,
+                {"hearing_radius",
+                 "Shots and explosions within this distance along the navigation mesh alert the robot", 0,
+                 1000, "units", true});
+        v.field(patrol, {"patrol", "Points walked in order while idle, instead of wandering", -1e5, 1e5,
+                         "units", true});
+        v.field(dormant, {.name = "dormant",
+                          .tooltip = "Stands still, seeing and hearing nothing, until a link activates or "
+                                     "alerts it or it is shot",
+                          .omitted_at_default = true});
     }
     bool operator==(const RobotProps&) const = default;
 };
@@ -222,7 +251,7 @@ struct PickupProps {
 struct GasCylinderProps {
     float radius = 0.5f;
     float height = 2.0f;
-    float damage = 30.0f;          // at the centre of the blast; falls off with distance
+    float damage = 30.0f; // at the centre of the blast; falls off with distance
     float blast_radius = 7.0f;
     float explosion_power = 25.0f; // knock-back speed
     template <class V>
@@ -231,7 +260,8 @@ struct GasCylinderProps {
         v.field(height, {"height", "Cylinder height", 0.1, 20, "units"});
         v.field(damage, {"damage", "Damage at the centre of the blast", 0, 1000});
         v.field(blast_radius, {"blast_radius", "Radius of the blast", 0, 100, "units"});
-        v.field(explosion_power, {"explosion_power", "Knock-back speed given to bodies in the blast", 0, 500, "units/s"});
+        v.field(explosion_power,
+                {"explosion_power", "Knock-back speed given to bodies in the blast", 0, 500, "units/s"});
     }
     bool operator==(const GasCylinderProps&) const = default;
 };
@@ -255,42 +285,180 @@ struct SoundProps {
     bool loop = true;     // off: played once when the level starts
     template <class V>
     void visit(V& v) {
-        v.field(sound, {"sound", "Sound file in assets/sounds, named without .wav (machine_hum, vent_loop, ...)", 1, kMaxSoundNameLength});
-        v.field(volume, {.name = "volume", .tooltip = "Loudness at the emitter: 0 silent, 1 as recorded", .min = 0, .max = 1, .slider = true});
-        v.field(radius, {.name = "radius", .tooltip = "Heard within this distance, fading to silence at it", .min = 0.5, .max = 500, .unit = "units", .slider = true});
-        v.field(loop, {"loop", "Repeats for as long as the level runs; off: plays once when the level starts"});
+        v.field(sound,
+                {"sound", "Sound file in assets/sounds, named without .wav (machine_hum, vent_loop, ...)", 1,
+                 kMaxSoundNameLength});
+        v.field(volume, {.name = "volume",
+                         .tooltip = "Loudness at the emitter: 0 silent, 1 as recorded",
+                         .min = 0,
+                         .max = 1,
+                         .slider = true});
+        v.field(radius, {.name = "radius",
+                         .tooltip = "Heard within this distance, fading to silence at it",
+                         .min = 0.5,
+                         .max = 500,
+                         .unit = "units",
+                         .slider = true});
+        v.field(loop,
+                {"loop", "Repeats for as long as the level runs; off: plays once when the level starts"});
     }
     bool operator==(const SoundProps&) const = default;
 };
 
+// ---- level logic (docs/level-format.md, "Level logic") ---------------------------------------------------
+// The logic entities are invisible in the game: a trigger is a box that notices who walks in, a spawner makes
+// robots during play, a message is a line of HUD text. Like every entity they stand on `position`.
+
+// A box (bottom centre on position, turned by the yaw) that emits on_enter when someone of `who` enters it
+// while it was empty and on_exit when the last one leaves.
+struct TriggerProps {
+    Vec3 size{4.0f, 4.0f, 4.0f};
+    Choice who{"player", {"player", "robots", "both"}};
+    bool enabled = true;
+    template <class V>
+    void visit(V& v) {
+        v.field(size, {"size", "Width, height and depth of the box", 0.1, 1e4, "units"});
+        v.field(who, {"who", "Who sets it off: the player, robots, or both"});
+        v.field(enabled,
+                {"enabled", "Notices anyone when the level starts (enable and disable links switch it)"});
+    }
+    bool operator==(const TriggerProps&) const = default;
+};
+
+// Makes robots (with `robot`'s properties) when a spawn link fires: `count` of them, one every `interval`
+// seconds, never more than `max_alive` of its robots alive at once, each on the robots' navigation mesh.
+struct SpawnerProps {
+    int count = 3;
+    float interval = 2.0f;
+    int max_alive = 3;
+    RobotProps robot;
+    template <class V>
+    void visit(V& v) {
+        v.field(count, {"count", "Robots made by each spawn link", 1, 100});
+        v.field(interval, {"interval", "Seconds between two robots", 0, 600, "s"});
+        v.field(max_alive, {"max_alive", "At most this many of its robots alive at once (it waits)", 1, 100});
+        robot.visit(v);
+    }
+    bool operator==(const SpawnerProps&) const = default;
+};
+
+inline constexpr int kMaxMessageLength = 500; // characters: one or two lines of HUD text
+
+// A line of HUD text that a show link puts on screen for `duration` seconds.
+struct MessageProps {
+    std::string text = "Message";
+    float duration = 4.0f;
+    template <class V>
+    void visit(V& v) {
+        v.field(text, {"text", "What the HUD shows", 1, kMaxMessageLength});
+        v.field(duration, {"duration", "Seconds on screen", 0.5, 600, "s"});
+    }
+    bool operator==(const MessageProps&) const = default;
+};
+
 // The variant's order is the EntityType order.
-using Props = std::variant<WallProps, FloorProps, StairProps, DoorProps, FloorLightProps, TopLightProps, RobotProps,
-                           PickupProps, GasCylinderProps, ControlPanelProps, SoundProps>;
+using Props = std::variant<WallProps, FloorProps, StairProps, DoorProps, FloorLightProps, TopLightProps,
+                           RobotProps, PickupProps, GasCylinderProps, ControlPanelProps, SoundProps,
+                           TriggerProps, SpawnerProps, MessageProps>;
 
 enum class EntityType : std::uint8_t {
-    Wall, Floor, Stair, Door, FloorLight, TopLight, Robot, Pickup, GasCylinder, ControlPanel, Sound, Count
+    Wall,
+    Floor,
+    Stair,
+    Door,
+    FloorLight,
+    TopLight,
+    Robot,
+    Pickup,
+    GasCylinder,
+    ControlPanel,
+    Sound,
+    Trigger,
+    Spawner,
+    Message,
+    Count
 };
 
 // "wall", "floor", "stair", "door", "floor_light", "top_light", "robot", "pickup", "gas_cylinder",
-// "control_panel", "sound"
+// "control_panel", "sound", "trigger", "spawner", "message"
 std::string_view type_name(EntityType type);
 bool type_from_name(std::string_view name, EntityType& out);
 const std::array<EntityType, static_cast<size_t>(EntityType::Count)>& all_types();
 Props default_props(EntityType type);
 
+// "When `event` happens here, do `action` to `target`", `delay` seconds later; a `once` link fires only the
+// first time. The target is named: an entity by its `name` (which must then be unique in the level), an
+// objective by its `id`, or the level itself as "level" (win, lose). Which events a source emits and which
+// actions a target takes are in level/logic_names.h; the names stay strings here so that a draft with a typo
+// still loads into the editor, and the checks name the typo.
+struct Link {
+    std::string event;
+    std::string target;
+    std::string action;
+    float delay = 0.0f; // seconds
+    bool once = false;
+    template <class V>
+    void visit(V& v) {
+        v.field(event, {"event", "What sets the link off (on_enter, on_death, on_use, ...)"});
+        v.field(target, {"target", "The entity name, objective id or \"level\" it acts on"});
+        v.field(action, {"action", "What it does to the target (open, show, spawn, complete, win, ...)"});
+        v.field(delay, {"delay", "Seconds between the event and the action", 0, 3600, "s"});
+        v.field(once, {"once", "Fires only the first time the event happens"});
+    }
+    bool operator==(const Link&) const = default;
+};
+inline constexpr int kMaxLinks = 64;          // per entity, objective or level: a fan-out, not a script
+inline constexpr double kMaxLinkDelay = 3600; // seconds
+inline constexpr std::string_view kLevelTarget = "level";
+
+// One thing the player must do. It completes when a `complete` link names it, or when everything in `kill`
+// (robots, and spawners: all their robots made and dead) is dead; completing it fires its on_complete links.
+// The level is won when every objective is complete.
+struct Objective {
+    std::string id;   // unique among the objectives; links name it
+    std::string text; // what the HUD shows
+    std::vector<std::string> kill;
+    std::vector<Link> links;
+    template <class V>
+    void visit(V& v) {
+        v.field(id, {"id", "Names the objective in links (unique)"});
+        v.field(text, {"text", "What the HUD shows", 1, kMaxMessageLength});
+        v.field(kill, {"kill", "Names of robots and spawners that must all be dead to complete it"});
+        v.field(links, {"links", "on_complete links"});
+    }
+    bool operator==(const Objective&) const = default;
+};
+inline constexpr int kMaxObjectives = 32;
+inline constexpr int kMaxKillNames = 256;
+
 struct Entity {
-    int id = 0;               // stable, unique within the level, never reused
-    std::string name;         // free text shown in the editor's outliner
+    int id = 0;       // stable, unique within the level, never reused
+    std::string name; // free text shown in the editor's outliner
     Vec3 position{0.0f};
-    Vec3 rotation{0.0f};      // yaw (about +y), pitch (about +x), roll (about +z), degrees
+    Vec3 rotation{0.0f}; // yaw (about +y), pitch (about +x), roll (about +z), degrees
     Props props;
+    std::vector<Link> links; // what this entity's events set off (file key "links", after "props")
 
     EntityType type() const { return static_cast<EntityType>(props.index()); }
-    template <class T> T& as() { return std::get<T>(props); }
-    template <class T> const T& as() const { return std::get<T>(props); }
-    template <class T> T* try_as() { return std::get_if<T>(&props); }
-    template <class T> const T* try_as() const { return std::get_if<T>(&props); }
-    Quat orientation() const { return quat_from_ypr(radians(rotation.x), radians(rotation.y), radians(rotation.z)); }
+    template <class T>
+    T& as() {
+        return std::get<T>(props);
+    }
+    template <class T>
+    const T& as() const {
+        return std::get<T>(props);
+    }
+    template <class T>
+    T* try_as() {
+        return std::get_if<T>(&props);
+    }
+    template <class T>
+    const T* try_as() const {
+        return std::get_if<T>(&props);
+    }
+    Quat orientation() const {
+        return quat_from_ypr(radians(rotation.x), radians(rotation.y), radians(rotation.z));
+    }
     bool operator==(const Entity&) const = default;
 };
 
@@ -300,10 +468,12 @@ struct Settings {
     float ambient_intensity = 0.2f;
     Color fog_color{13 / 255.0f, 15 / 255.0f, 20 / 255.0f};
     float fog_density = 0.004f; // exponential fog; 0 disables
-    Vec3 sun_direction{-0.28221625f, -0.94072086f, -0.18814416f}; // the direction sunlight travels: (-0.3, -1, -0.2) normalised, as loading keeps it
+    Vec3 sun_direction{
+        -0.28221625f, -0.94072086f,
+        -0.18814416f}; // the direction sunlight travels: (-0.3, -1, -0.2) normalised, as loading keeps it
     Color sun_color{1.0f, 245 / 255.0f, 230 / 255.0f};
     float sun_intensity = 0.1f;
-    float gravity = -25.0f; // units/s^2 along y
+    float gravity = -25.0f;                      // units/s^2 along y
     SoundName ambient_sound{"ambient_facility"}; // the level's ambient loop; "" = none
     template <class V>
     void visit(V& v) {
@@ -315,7 +485,10 @@ struct Settings {
         v.field(sun_color, {"sun_color", "Colour of the sun"});
         v.field(sun_intensity, {"sun_intensity", "Sun strength", 0, 100});
         v.field(gravity, {"gravity", "Vertical acceleration (negative is down)", -1000, 0, "units/s^2"});
-        v.field(ambient_sound, {"ambient_sound", "The level's ambient loop from assets/sounds, named without .wav (\"\" = none)", 0, kMaxSoundNameLength, "", true});
+        v.field(ambient_sound,
+                {"ambient_sound",
+                 "The level's ambient loop from assets/sounds, named without .wav (\"\" = none)", 0,
+                 kMaxSoundNameLength, "", true});
     }
     bool operator==(const Settings&) const = default;
 };
@@ -331,6 +504,8 @@ struct Level {
     Settings settings;
     PlayerStart player_start;
     int next_id = 1;
+    std::vector<Objective> objectives; // all complete: the level is won (none: it is never won by them)
+    std::vector<Link> links;           // the level's own: on_start
     std::vector<Entity> entities;
 
     Entity* find(int id);

@@ -2,6 +2,7 @@
 
 #include "jsonio/number_text.h"
 #include "jsonio/suggest.h"
+#include "level/logic_checks.h"
 #include "level/patrol_checks.h"
 #include "level/sound_name.h"
 
@@ -62,10 +63,19 @@ class FieldChecker {
     }
     void field(int& v, const FieldInfo& info) { check_int(v, path_of(info), info, sink_); }
     void field(bool&, const FieldInfo&) {}
+    // A text field with a non-negative minimum bounds its length (a message's text).
     void field(std::string& v, const FieldInfo& info) {
         if (std::string_view(info.name) == "texture" && v.empty())
             sink_.error(path_of(info), "texture name is empty",
                         "name a material from assets/textures, e.g. \"concrete\"");
+        if (info.min >= 0 &&
+            (static_cast<double>(v.size()) < info.min || static_cast<double>(v.size()) > info.max))
+            sink_.error(path_of(info),
+                        v.empty() ? std::string(info.name) + " is empty"
+                                  : std::string(info.name) + " of " + std::to_string(v.size()) +
+                                        " characters is too long",
+                        "valid: " + jsonio::format_readable(info.min) + " .. " +
+                            jsonio::format_readable(info.max) + " characters; " + info.tooltip);
     }
     template <int N>
     void field(glm::vec<N, float>& v, const FieldInfo& info) {
@@ -132,14 +142,21 @@ void check_entity(const Entity& entity, const std::string& path, DiagnosticSink&
     std::visit([&](const auto& props) { check_fields(props, props_path, sink, entity_subject(entity)); },
                entity.props);
 
-    if (const auto* robot = entity.try_as<RobotProps>()) {
-        if (robot->eye_radius_min > robot->eye_radius_max)
-            sink.error(member_path(props_path, "eye_radius_min"),
-                       "eye_radius_min " + number_text(robot->eye_radius_min) +
-                           " is larger than eye_radius_max " + number_text(robot->eye_radius_max),
-                       "the robot starts following inside eye_radius_min and keeps following inside "
-                       "eye_radius_max, so min <= max");
-    }
+    const auto* spawner = entity.try_as<SpawnerProps>();
+    const RobotProps* robot = spawner ? &spawner->robot : entity.try_as<RobotProps>();
+    if (robot && robot->eye_radius_min > robot->eye_radius_max)
+        sink.error(member_path(props_path, "eye_radius_min"),
+                   "eye_radius_min " + number_text(robot->eye_radius_min) +
+                       " is larger than eye_radius_max " + number_text(robot->eye_radius_max),
+                   "the robot starts following inside eye_radius_min and keeps following inside "
+                   "eye_radius_max, so min <= max");
+    if (spawner && spawner->robot.dummy)
+        sink.error(member_path(props_path, "dummy"),
+                   entity_subject(entity) + ": a spawner cannot make animation dummies",
+                   "set \"dummy\": false; dummies belong in the dojo");
+    SubjectScope scope(sink, entity_subject(entity));
+    check_links(entity.links, entity_events(entity.type()), with_article(type_name(entity.type())),
+                member_path(path, "links"), sink);
 }
 
 void check_level(const Level& level, DiagnosticSink& sink, const std::vector<size_t>& source_index) {
@@ -178,6 +195,7 @@ void check_level(const Level& level, DiagnosticSink& sink, const std::vector<siz
         }
     }
     check_patrol_reach(level, sink, source_index);
+    check_logic(level, sink, source_index);
     if (level.next_id <= largest_id)
         sink.error("next_id",
                    "next_id " + std::to_string(level.next_id) + " is not above the largest id " +

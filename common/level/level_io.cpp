@@ -27,8 +27,10 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 constexpr size_t kMaxErrorsInMessage = 50;
-const char* const kFormatHint =
-    "a level file starts with {\"format\": \"killswitch-level\", \"version\": 1, ...}";
+std::string format_hint() {
+    return "a level file starts with {\"format\": \"killswitch-level\", \"version\": " +
+           std::to_string(kFormatVersion) + ", ...}";
+}
 
 bool is_blank(std::string_view text) {
     return std::all_of(text.begin(), text.end(),
@@ -75,7 +77,8 @@ std::string clean_parse_message(const std::string& what) {
 int read_version(const Json& document, DiagnosticSink& sink) {
     auto it = document.find("version");
     if (it == document.end()) {
-        sink.error("version", "missing required field \"version\"", "add \"version\": 1");
+        sink.error("version", "missing required field \"version\"",
+                   "add \"version\": " + std::to_string(kFormatVersion));
         return -1;
     }
     const double number = it->is_number() ? it->get<double>() : 0.5;
@@ -121,7 +124,7 @@ std::optional<Level> parse_level(std::string_view text, DiagnosticSink& sink, Po
     // Some Windows editors start UTF-8 files with a byte-order mark; it is not JSON, but it is not an error.
     if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
     if (is_blank(text)) {
-        sink.error_at({}, "", "file is empty", kFormatHint);
+        sink.error_at({}, "", "file is empty", format_hint());
         return std::nullopt;
     }
     if (size_t bad = first_binary_byte(text); bad != std::string_view::npos) {
@@ -131,7 +134,7 @@ std::optional<Level> parse_level(std::string_view text, DiagnosticSink& sink, Po
         sink.error_at(jsonio::position_of_offset(text, bad), "",
                       std::string("file is not a text file (byte ") + byte + " at offset " +
                           std::to_string(bad) + ")",
-                      "this does not look like a level file; " + std::string(kFormatHint));
+                      "this does not look like a level file; " + format_hint());
         return std::nullopt;
     }
 
@@ -179,7 +182,7 @@ std::optional<Level> parse_level(std::string_view text, DiagnosticSink& sink, Po
         sink.error_at(positions.find(""), "",
                       "expected the level as a JSON object {...}, found " +
                           std::string(document.is_array() ? "an array" : document.type_name()),
-                      kFormatHint);
+                      format_hint());
         return std::nullopt;
     }
     auto format = document.find("format");

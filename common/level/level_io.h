@@ -1,5 +1,5 @@
 #pragma once
-// Loading and saving level files (format v1). Loading validates everything and reports every problem at
+// Loading and saving level files (format v2). Loading validates everything and reports every problem at
 // once (file, line:column where known, JSON path, what would be valid); saving is deterministic so that
 // load -> save -> load -> save is byte-identical.
 #include "core/result.h"
@@ -28,7 +28,8 @@ struct LoadReport {
 
 // Parses and validates. On any error the Result holds one combined Error listing all of them; `report`, when
 // given, receives every diagnostic (warnings too) either way.
-Result<Level> load_level_string(std::string_view text, const std::string& file_name, LoadReport* report = nullptr);
+Result<Level> load_level_string(std::string_view text, const std::string& file_name,
+                                LoadReport* report = nullptr);
 Result<Level> load_level_file(const std::filesystem::path& path, LoadReport* report = nullptr);
 
 // Deterministic text: stable key order, entities in their order, floats printed shortest round-trip.
@@ -38,7 +39,8 @@ Result<void> save_level_file(const std::filesystem::path& path, const Level& lev
 
 // One entity as JSON (the editor's copy/paste format), and back with the same validation as a level file.
 nlohmann::json entity_to_json(const Entity& entity);
-Result<Entity> entity_from_json(const nlohmann::json& json, const std::string& context, LoadReport* report = nullptr);
+Result<Entity> entity_from_json(const nlohmann::json& json, const std::string& context,
+                                LoadReport* report = nullptr);
 
 // Semantic checks on an in-memory level (ranges, NaN, duplicate ids, next_id > every id, ...), the same
 // ones the loader runs after parsing. The editor calls it live.

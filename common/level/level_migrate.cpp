@@ -1,6 +1,7 @@
 #include "level/level_migrate.h"
 
 #include "level/level.h"
+#include "level/shutdown_objective.h"
 
 namespace ks::level {
 namespace {
@@ -28,12 +29,43 @@ void migrate_0_to_1(Json& document) {
     }
 }
 
+// Version 1 had no level logic: using a control panel won the level. Version 2 wins when every objective is
+// complete, and a panel does only what its links say; so a version-1 level gets the objective it always had
+// (shut the simulation down) and each panel a link completing it. Keys that version 1 ignored as unknown
+// ("objectives", "links") are dropped, so the level plays exactly as it did.
+void migrate_1_to_2(Json& document) {
+    if (!document.is_object()) return;
+    document.erase("objectives");
+    document.erase("links");
+    auto entities = document.find("entities");
+    if (entities == document.end() || !entities->is_array()) return;
+    bool has_panel = false;
+    for (Json& entity : *entities) {
+        if (!entity.is_object()) continue;
+        entity.erase("links");
+        auto type = entity.find("type");
+        if (type == entity.end() || *type != "control_panel") continue;
+        has_panel = true;
+        entity["links"] = Json::array({Json{{"event", "on_use"},
+                                            {"target", kShutdownObjective},
+                                            {"action", "complete"},
+                                            {"delay", 0},
+                                            {"once", false}}});
+    }
+    if (has_panel)
+        document["objectives"] =
+            Json::array({Json{{"id", kShutdownObjective}, {"text", kShutdownObjectiveText}}});
+}
+
 } // namespace
 
 const std::vector<Migration>& migrations() {
     static const std::vector<Migration> table = {
         {0, "\"objects\" renamed \"entities\"; an entity's \"yaw\" number became \"rotation\": [yaw, 0, 0]",
          &migrate_0_to_1},
+        {1,
+         "the control panel's win became the objective \"shutdown\", completed by each panel's on_use link",
+         &migrate_1_to_2},
     };
     return table;
 }

@@ -1,7 +1,7 @@
 #pragma once
 // Older level files are upgraded in memory, one version step at a time, before they are read: migration
-// N turns a version-N document into a version-(N+1) one. Adding format version 2 means adding one function
-// to the table (1 -> 2) and bumping kFormatVersion; files on disk are only rewritten when a designer saves.
+// N turns a version-N document into a version-(N+1) one. Adding a format version means adding one function
+// to the table and bumping kFormatVersion; files on disk are only rewritten when a designer saves.
 #include <nlohmann/json.hpp>
 
 #include <string>

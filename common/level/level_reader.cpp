@@ -165,6 +165,9 @@ bool expect_object(const Json& value, const std::string& path, std::string_view 
 
 void read_patrol(const Json& value, const std::string& path, const FieldInfo& info, DiagnosticSink& sink,
                  Patrol& out);
+void read_links(const Json& value, const std::string& path, DiagnosticSink& sink, std::vector<Link>& out);
+void read_names(const Json& value, const std::string& path, DiagnosticSink& sink,
+                std::vector<std::string>& out);
 
 // Walks a props struct's visit() list: reads each field that is present, leaves the others at their
 // defaults, then warns about members that no field claimed.
@@ -206,6 +209,20 @@ class FieldReader {
         if (!j) return;
         SubjectScope scope(sink_, subject_);
         read_patrol(*j, path_of(info), info, sink_, v);
+    }
+
+    // Links and name lists hang off an entity or an objective, so their messages name it too.
+    void field(std::vector<Link>& v, const FieldInfo& info) {
+        const Json* j = member(info);
+        if (!j) return;
+        SubjectScope scope(sink_, subject_);
+        read_links(*j, path_of(info), sink_, v);
+    }
+    void field(std::vector<std::string>& v, const FieldInfo& info) {
+        const Json* j = member(info);
+        if (!j) return;
+        SubjectScope scope(sink_, subject_);
+        read_names(*j, path_of(info), sink_, v);
     }
 
     void set_subject(std::string subject) { subject_ = std::move(subject); }
@@ -285,6 +302,82 @@ void read_patrol(const Json& value, const std::string& path, const FieldInfo& in
         out = std::move(patrol);
     else
         check_patrol_mode_and_wait(patrol, path, sink); // the checks after loading see no patrol
+}
+
+// A list longer than `limit` is refused whole before any element is read: a file with a million links is a
+// generator gone wrong, and reading it would bury the one message that matters.
+bool check_list(const Json& value, const std::string& path, const char* what, const char* example,
+                size_t limit, const char* hint, DiagnosticSink& sink) {
+    if (!value.is_array()) {
+        sink.error(path, std::string("expected an array of ") + what + ", found " + describe_value(value),
+                   std::string("write it as ") + example);
+        return false;
+    }
+    if (value.size() > limit) {
+        sink.error(path, std::to_string(value.size()) + " " + what + "; at most " + std::to_string(limit),
+                   hint);
+        return false;
+    }
+    return true;
+}
+
+// A link is read whole or not at all: one without its event, target or action could never fire.
+void read_links(const Json& value, const std::string& path, DiagnosticSink& sink, std::vector<Link>& out) {
+    if (!check_list(value, path, "links", "[{\"event\": ..., \"target\": ..., \"action\": ...}, ...]",
+                    kMaxLinks,
+                    "split the work over more entities (a trigger can start a chain), or remove links", sink))
+        return;
+    out.clear();
+    for (size_t i = 0; i < value.size(); ++i) {
+        const std::string link_path = element_path(path, i);
+        if (!expect_object(value[i], link_path, "a link", sink)) continue;
+        Link link;
+        FieldReader reader(value[i], link_path, sink);
+        link.visit(reader);
+        reader.warn_unknown("link");
+        bool complete = true;
+        for (const char* key : {"event", "target", "action"}) {
+            if (value[i].contains(key)) continue;
+            sink.error(member_path(link_path, key), std::string("missing required field \"") + key + "\"",
+                       "a link is {\"event\": \"on_enter\", \"target\": \"door_2\", \"action\": \"open\"}"
+                       " with an optional \"delay\" and \"once\"");
+            complete = false;
+        }
+        if (complete) out.push_back(std::move(link));
+    }
+}
+
+void read_names(const Json& value, const std::string& path, DiagnosticSink& sink,
+                std::vector<std::string>& out) {
+    if (!check_list(value, path, "names", "[\"guard_1\", \"hall_spawner\"]", kMaxKillNames,
+                    "list the robots and spawners by name; a spawner stands for all the robots it makes",
+                    sink))
+        return;
+    out.clear();
+    for (size_t i = 0; i < value.size(); ++i) {
+        std::string name;
+        if (read_string(value[i], element_path(path, i), sink, name)) out.push_back(std::move(name));
+    }
+}
+
+std::vector<Objective> read_objectives(const Json& value, const std::string& path, DiagnosticSink& sink) {
+    std::vector<Objective> objectives;
+    if (!check_list(value, path, "objectives",
+                    "[{\"id\": \"clear_hall\", \"text\": \"Clear the hall\"}, ...]", kMaxObjectives,
+                    "a level is a few objectives; merge some", sink))
+        return objectives;
+    for (size_t i = 0; i < value.size(); ++i) {
+        const std::string objective_path = element_path(path, i);
+        if (!expect_object(value[i], objective_path, "an objective", sink)) continue;
+        Objective objective;
+        FieldReader reader(value[i], objective_path, sink);
+        if (auto id = value[i].find("id"); id != value[i].end() && id->is_string())
+            reader.set_subject("objective \"" + id->get<std::string>() + "\"");
+        objective.visit(reader);
+        reader.warn_unknown("objective");
+        objectives.push_back(std::move(objective));
+    }
+    return objectives;
 }
 
 Settings read_settings(const Json& json, const std::string& path, DiagnosticSink& sink) {
@@ -367,6 +460,8 @@ std::optional<Entity> read_entity(const Json& json, const std::string& path, Dia
             props_reader.warn_unknown(std::string(type_name(entity.type())));
         }
     }
+    reader.set_subject(typed ? entity_subject(entity) : "entity " + std::to_string(entity.id));
+    reader.field(entity.links, {"links", "What this entity's events set off"});
     reader.warn_unknown("entity");
     if (!complete) return std::nullopt;
     return entity;
@@ -388,6 +483,12 @@ ReadLevel read_level(const Json& document, DiagnosticSink& sink) {
 
     bool has_next_id = document.contains("next_id");
     reader.field(level.next_id, {"next_id", "The id the next new entity gets", 1, INT_MAX});
+    reader.claim("objectives");
+    if (auto it = document.find("objectives"); it != document.end())
+        level.objectives = read_objectives(*it, "objectives", sink);
+    reader.set_subject("the level");
+    reader.field(level.links, {"links", "The level's on_start links"});
+    reader.set_subject({});
 
     reader.claim("entities");
     auto entities = document.find("entities");

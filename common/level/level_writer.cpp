@@ -31,6 +31,8 @@ Json patrol_json(const Patrol& patrol) {
     return json;
 }
 
+Json links_json(const std::vector<Link>& links);
+
 class FieldWriter {
   public:
     explicit FieldWriter(Json& object) : object_(object) {}
@@ -46,6 +48,13 @@ class FieldWriter {
     // No patrol is no key at all (random wander), so robots without one save as they always did.
     void field(Patrol& v, const FieldInfo& info) {
         if (v.active()) object_[info.name] = patrol_json(v);
+    }
+    // Lists are left out while empty, so entities and objectives without them save as they always did.
+    void field(std::vector<Link>& v, const FieldInfo& info) {
+        if (!v.empty()) object_[info.name] = links_json(v);
+    }
+    void field(std::vector<std::string>& v, const FieldInfo& info) {
+        if (!v.empty()) object_[info.name] = v;
     }
 
   private:
@@ -81,6 +90,12 @@ Json fields_json(const T& object) {
     return json;
 }
 
+Json links_json(const std::vector<Link>& links) {
+    Json array = Json::array();
+    for (const Link& link : links) array.push_back(fields_json(link));
+    return array;
+}
+
 } // namespace
 
 Vec3 normalized_direction(Vec3 direction) {
@@ -109,6 +124,7 @@ Json write_entity(const Entity& entity) {
     json["position"] = vec_json(entity.position);
     json["rotation"] = vec_json(entity.rotation);
     json["props"] = std::visit([](const auto& props) { return fields_json(props); }, entity.props);
+    if (!entity.links.empty()) json["links"] = links_json(entity.links);
     return json;
 }
 
@@ -124,6 +140,12 @@ Json write_level(const Level& level) {
     json["player_start"]["position"] = vec_json(level.player_start.position);
     json["player_start"]["yaw"] = number(level.player_start.yaw);
     json["next_id"] = level.next_id;
+    if (!level.objectives.empty()) {
+        Json objectives = Json::array();
+        for (const Objective& objective : level.objectives) objectives.push_back(fields_json(objective));
+        json["objectives"] = std::move(objectives);
+    }
+    if (!level.links.empty()) json["links"] = links_json(level.links);
     Json entities = Json::array();
     for (const Entity& entity : level.entities) entities.push_back(write_entity(entity));
     json["entities"] = std::move(entities);

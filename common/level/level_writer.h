@@ -1,8 +1,9 @@
 #pragma once
 // Level -> JSON in the one key order the format defines (see docs/level-format.md): format, version, name,
-// settings, player_start, next_id, entities; each entity id, type, name, position, rotation, props; props in
-// their visit() order. Every field is written, defaults included, so a file never depends on today's
-// defaults.
+// settings, player_start, next_id, objectives, links, entities; each entity id, type, name, position,
+// rotation, props, links; props in their visit() order. Every field is written, defaults included, so a file
+// never depends on today's defaults -- but for the fields added after version 1 (marked omitted_at_default)
+// and the logic's lists, which are left out while default or empty.
 #include "level/level.h"
 
 #include <nlohmann/json.hpp>

@@ -182,7 +182,10 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
                 make_prop(e, &assets.model("control_panel"), level::control_panel_model_matrix(e)));
             break;
         }
-        case EntityType::Sound: // heard, not seen: the editor draws its own marker
+        case EntityType::Sound:   // heard, not seen: the editor draws its own marker
+        case EntityType::Trigger: // the logic entities are invisible in the game
+        case EntityType::Spawner:
+        case EntityType::Message:
         case EntityType::Count:
             break;
         }

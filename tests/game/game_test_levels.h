@@ -80,4 +80,29 @@ inline int count_events(const Game& g, EventType type) {
     return n;
 }
 
+// Level logic helpers: a message entity, a link, what the HUD's message line shows now.
+inline level::Entity& add_message(level::Level& lv, const char* name, const char* text,
+                                  float duration = 2.0f) {
+    auto& m = lv.add(level::EntityType::Message, Vec3(0, 2, 0), name);
+    m.as<level::MessageProps>() = {text, duration};
+    return m;
+}
+
+inline level::Link link(const char* event, const char* target, const char* action, float delay = 0.0f,
+                        bool once = false) {
+    return {event, target, action, delay, once};
+}
+
+inline std::string on_screen(const Game& g) {
+    return g.logic().message().visible() ? std::string(g.logic().message().text) : std::string();
+}
+
+// MessageShown events of the last step with this text.
+inline int shown(const Game& g, std::string_view text) {
+    int n = 0;
+    for (const Event& e : g.events())
+        if (e.type == EventType::MessageShown && e.cue == text) ++n;
+    return n;
+}
+
 } // namespace ks::game::test

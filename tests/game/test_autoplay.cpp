@@ -2,6 +2,7 @@
 #include "game/autoplay.h"
 #include "game/headless.h"
 #include "level/level_io.h"
+#include "level/shutdown_objective.h"
 #include "test_support.h"
 
 #include <doctest/doctest.h>
@@ -43,6 +44,7 @@ TEST_CASE("autoplay without ammo ignores the robots it sees and walks to the pan
     props.eye_radius_max = 0.0f;
     props.hit_probability = 0.0f;
     lv.add(level::EntityType::ControlPanel, Vec3(0.0f, 0.0f, -20.0f), "panel");
+    level::add_shutdown_objective(lv);
     for (int start_ammo : {0, 150}) {
         CAPTURE(start_ammo);
         GameOptions options;

@@ -1,5 +1,6 @@
 // Player stats: shield first, caps, pickups, shots and ammo, the death and win flows.
 #include "game_test_levels.h"
+#include "level/shutdown_objective.h"
 
 #include <cmath>
 
@@ -139,6 +140,7 @@ TEST_CASE("death flow: fall camera (0.3 s Quadratic.In drop, 0.3 s Bounce roll),
 TEST_CASE("win flow: E at the control panel ends the game in victory") {
     auto lv = flat_level();
     lv.add(level::EntityType::ControlPanel, Vec3(0, 0, -5), "panel");
+    level::add_shutdown_objective(lv);
     auto g = make_game(lv);
     g->step({});
     CHECK(g->interact_target() == lv.entities.back().id);

@@ -1,6 +1,7 @@
 #include "level_builders.h"
 
 #include "level/level_io.h"
+#include "level/logic_names.h"
 
 #include <doctest/doctest.h>
 
@@ -57,6 +58,7 @@ class RandomFiller {
     void field(std::string& v, const FieldInfo& info) {
         static const char* const kTextures[] = {"concrete", "wood", "tiles", "ceiling", "metal"};
         v = std::string_view(info.name) == "texture" ? kTextures[rng_.below(5)] : random_name(rng_);
+        if (v.empty() && info.min >= 1) v = "text"; // a message needs some
     }
     void field(Vec2& v, const FieldInfo& info) {
         for (int i = 0; i < 2; ++i) v[i] = random_float(rng_, info.min, info.max);
@@ -93,6 +95,40 @@ class RandomFiller {
     Rng& rng_;
 };
 
+// Links between random entities, each to a target that takes its action: targets get unique names (a link
+// target's name must be unique), and a locked door is always freed by some link.
+void add_random_links(Rng& rng, Level& level) {
+    std::vector<std::pair<size_t, LinkAction>> targets;
+    for (size_t i = 0; i < level.entities.size(); ++i) {
+        const auto actions = entity_actions(level.entities[i].type());
+        const auto* robot = level.entities[i].try_as<RobotProps>();
+        const auto* door = level.entities[i].try_as<DoorProps>();
+        const bool must = door && door->locked; // else the checks warn that it can never open
+        if (actions.empty() || (robot && robot->dummy) || (!must && !rng.chance(0.6f))) continue;
+        level.entities[i].name = "target " + std::to_string(level.entities[i].id);
+        targets.emplace_back(i, actions[rng.below(static_cast<std::uint32_t>(actions.size()))]);
+    }
+    for (auto& [i, action] : targets)
+        if (auto* door = level.entities[i].try_as<DoorProps>(); door && door->locked)
+            action = LinkAction::Unlock;
+    if (targets.empty()) return;
+    for (const auto& [i, action] : targets) {
+        Link link{"on_start", level.entities[i].name, std::string(action_name(action)),
+                  static_cast<float>(rng.below(8)) * 0.25f, rng.chance(0.5f)};
+        // From the level, or from an entity that emits events (its first event).
+        std::vector<size_t> sources;
+        for (size_t k = 0; k < level.entities.size(); ++k)
+            if (!entity_events(level.entities[k].type()).empty()) sources.push_back(k);
+        if (sources.empty() || rng.chance(0.3f)) {
+            level.links.push_back(std::move(link));
+            continue;
+        }
+        Entity& source = level.entities[sources[rng.below(static_cast<std::uint32_t>(sources.size()))]];
+        link.event = std::string(event_name(entity_events(source.type()).front()));
+        source.links.push_back(std::move(link));
+    }
+}
+
 } // namespace
 
 Level level_with_every_type() {
@@ -111,7 +147,7 @@ Level level_with_every_type() {
     auto& stair = level.add(EntityType::Stair, {8, 0, -84}, "Stair").as<StairProps>();
     stair = {{12, 6, 12}, 12, "metal"};
     auto& door = level.add(EntityType::Door, {0, 0, -30}, "Door").as<DoorProps>();
-    door = {6, 5.5f, true, 2.1f, 0.8f};
+    door = {6, 5.5f, true, 2.1f, 0.8f, true};
     auto& floor_light = level.add(EntityType::FloorLight, {7, 0, -6}, "Floor light").as<FloorLightProps>();
     floor_light = {{{1, 204 / 255.0f, 128 / 255.0f}, 0.8f, 20, false}, 40, 3.8f};
     auto& top_light = level.add(EntityType::TopLight, {0, 16, 20}, "Top light").as<TopLightProps>();
@@ -121,6 +157,7 @@ Level level_with_every_type() {
     robot.patrol.points = {{54, 6, -37}, {60, 6, -37}, {60, 6, -31.5f}};
     robot.patrol.mode.value = "ping_pong";
     robot.patrol.wait = 1.5f;
+    robot.dormant = true;
     auto& pickup = level.add(EntityType::Pickup, {-2, 6, -82}, "Pickup").as<PickupProps>();
     pickup.kind.value = "shield";
     pickup.amount = 25;
@@ -131,8 +168,42 @@ Level level_with_every_type() {
     auto& sound = level.add(EntityType::Sound, {0, 14, -60}, "Vent").as<SoundProps>();
     sound = {{"vent_loop"}, 0.35f, 22.5f, false};
     level.settings.ambient_sound.value = "ambient_dojo";
+    auto& trigger = level.add(EntityType::Trigger, {0, 0, -20}, "Hall trigger").as<TriggerProps>();
+    trigger.size = {10, 5, 6.5f};
+    trigger.who.value = "both";
+    trigger.enabled = false;
+    auto& spawner = level.add(EntityType::Spawner, {40, 0, -60}, "Hall spawner").as<SpawnerProps>();
+    spawner.count = 5;
+    spawner.interval = 1.5f;
+    spawner.max_alive = 2;
+    spawner.robot.health = 60;
+    spawner.robot.hearing_radius = 45;
+    level.add(EntityType::Message, {0, 2, 0}, "Welcome").as<MessageProps>() = {"Clear the \"hall\"", 6.5f};
     int yaw = -144;
     for (Entity& e : level.entities) e.rotation = {static_cast<float>(yaw += 37), 0.5f, -1.25f};
+
+    // Links on every kind of source, every kind of target; two objectives.
+    auto link = [](const char* event, const char* target, const char* action, float delay = 0,
+                   bool once = false) {
+        return Link{event, target, action, delay, once};
+    };
+    auto named = [&](const char* name) -> Entity& {
+        for (Entity& e : level.entities)
+            if (e.name == name) return e;
+        FAIL("no entity " << name);
+        return level.entities.front();
+    };
+    named("Hall trigger").links = {link("on_enter", "Hall spawner", "spawn", 0.5f, true),
+                                   link("on_exit", "Door", "close", 2.25f)};
+    named("Robot").links = {link("on_death", "Welcome", "show"), link("on_alert", "Hall trigger", "disable")};
+    named("Door").links = {link("on_open", "Floor light", "on")};
+    named("Floor light").links = {link("on_use", "Top light", "toggle")};
+    named("Panel").links = {link("on_use", "shutdown", "complete")};
+    named("Pickup").links = {link("on_pickup", "Vent", "play", 1)};
+    level.links = {link("on_start", "Hall trigger", "enable"), link("on_start", "Welcome", "show", 3, true)};
+    level.objectives = {
+        {"clear", "Clear the hall", {"Hall spawner"}, {link("on_complete", "Door", "unlock")}},
+        {"shutdown", "Shut down the simulation", {}, {link("on_complete", "level", "win", 2)}}};
     return level;
 }
 
@@ -166,10 +237,14 @@ Level random_level(Rng& rng, int entity_count) {
         std::visit([&](auto& props) { props.visit(filler); }, e.props);
         if (auto* robot = e.try_as<RobotProps>())
             for (Vec3& p : robot->patrol.points) p += e.position;
-        if (auto* robot = e.try_as<RobotProps>(); robot && robot->eye_radius_min > robot->eye_radius_max)
+        auto* spawner = e.try_as<SpawnerProps>();
+        if (spawner) spawner->robot.dummy = false; // a spawner makes fighting robots
+        RobotProps* robot = spawner ? &spawner->robot : e.try_as<RobotProps>();
+        if (robot && robot->eye_radius_min > robot->eye_radius_max)
             std::swap(robot->eye_radius_min, robot->eye_radius_max);
         level.entities.push_back(std::move(e));
     }
+    add_random_links(rng, level);
     level.next_id = entity_count * 3 + 1 + static_cast<int>(rng.below(5));
     return level;
 }

@@ -1,5 +1,7 @@
 #include "reference_levels.h"
 
+#include "level/shutdown_objective.h"
+
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -227,6 +229,8 @@ Level reference_main_level() {
     // 4.10 control panel.
     auto& panel = level.add(EntityType::ControlPanel, {90, 0, 50}, "Control panel").as<ControlPanelProps>();
     panel.size = {2.94f, 4.0f, 5.34f};
+    // Using it wins: the level's one objective, which the panel's on_use link completes (format v2).
+    add_shutdown_objective(level);
 
     // Sound emitters: the panel beeps so a player can find it by ear; machines and a vent give the rooms a
     // voice; an alarm, quiet and short-ranged, marks the way into the last room. The level's ambient loop is

@@ -7,6 +7,7 @@
 #include "level/diagnostics.h"
 #include "level/level_io.h"
 #include "level/level_writer.h"
+#include "level/logic_names.h"
 #include "test_support.h"
 
 #include <doctest/doctest.h>
@@ -33,8 +34,14 @@ class DocLister {
         row(info, "number", range_text_of(info), ks::jsonio::format_number(ks::jsonio::float_to_double(v)));
     }
     void field(int&, const FieldInfo& info) { row(info, "whole number", range_text_of(info)); }
-    void field(bool&, const FieldInfo& info) { row(info, "true / false", ""); }
-    void field(std::string&, const FieldInfo& info) { row(info, "string", ""); }
+    void field(bool& v, const FieldInfo& info) { row(info, "true / false", "", v ? "true" : "false"); }
+    // A text whose FieldInfo has a non-negative minimum bounds its length.
+    void field(std::string&, const FieldInfo& info) {
+        row(info, "string",
+            info.min >= 0 ? ks::jsonio::format_readable(info.min) + " .. " +
+                                ks::jsonio::format_readable(info.max) + " characters"
+                          : "");
+    }
     void field(ks::Vec2&, const FieldInfo& info) { row(info, "[x, z]", range_text_of(info) + " each"); }
     void field(ks::Vec3&, const FieldInfo& info) { row(info, "[x, y, z]", range_text_of(info) + " each"); }
     void field(Color&, const FieldInfo& info) { row(info, "colour \"#rrggbb\"", ""); }
@@ -49,6 +56,12 @@ class DocLister {
     }
     void field(Patrol&, const FieldInfo& info) {
         row(info, "{points, mode, wait} (see Patrols)", "", "none: wanders");
+    }
+    void field(std::vector<Link>&, const FieldInfo& info) {
+        row(info, "array of links (see Level logic)", "at most " + std::to_string(kMaxLinks), "[]");
+    }
+    void field(std::vector<std::string>&, const FieldInfo& info) {
+        row(info, "array of names", "at most " + std::to_string(kMaxKillNames), "[]");
     }
     std::string table() const {
         return "| field | value | default | range | unit | meaning |\n|---|---|---|---|---|---|\n" + rows_;
@@ -90,6 +103,14 @@ std::string generated_tables() {
         out += "### `" + std::string(type_name(type)) + "`\n\n";
         out += std::visit([&](auto p) { return table_for(p, props); }, entity.props) + "\n";
     }
+    // The level logic's own objects: a link (under an entity's, an objective's or the level's "links") and
+    // an objective (under the level's "objectives").
+    Level with_logic;
+    with_logic.objectives.push_back({});
+    with_logic.links.push_back({});
+    const auto logic_json = write_level(with_logic);
+    out += "### link\n\n" + table_for(Link{}, logic_json["links"][0]) + "\n";
+    out += "### objective\n\n" + table_for(Objective{}, logic_json["objectives"][0]) + "\n";
     out += kEnd;
     return out;
 }
@@ -121,9 +142,17 @@ TEST_CASE("every field name and type name appears in the doc, and its example le
     const std::string doc = ks::test::read_file(doc_path());
     for (EntityType type : all_types())
         CHECK(doc.find("`" + std::string(type_name(type)) + "`") != std::string::npos);
-    for (const char* key : {"format", "version", "name", "settings", "player_start", "next_id", "entities",
-                            "id", "type", "position", "rotation", "props", "yaw"})
+    for (const char* key :
+         {"format", "version",  "name",     "settings", "player_start", "next_id", "entities",   "id",
+          "type",   "position", "rotation", "props",    "yaw",          "links",   "objectives", "event",
+          "target", "action",   "delay",    "once",     "kill",         "text"})
         CHECK_MESSAGE(doc.find("`" + std::string(key) + "`") != std::string::npos, key);
+    for (LinkEvent event : all_events())
+        CHECK_MESSAGE(doc.find("`" + std::string(event_name(event)) + "`") != std::string::npos,
+                      event_name(event));
+    for (LinkAction action : all_actions())
+        CHECK_MESSAGE(doc.find("`" + std::string(action_name(action)) + "`") != std::string::npos,
+                      action_name(action));
 
     // The example between ```json fences after "## Example" must load without a single diagnostic.
     const size_t example = doc.find("## Example");

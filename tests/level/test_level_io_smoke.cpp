@@ -6,7 +6,7 @@
 using namespace ks::level;
 
 TEST_CASE("a minimal level file loads with defaults") {
-    const char* text = R"({"format": "killswitch-level", "version": 1, "entities": [
+    const char* text = R"({"format": "killswitch-level", "version": 2, "entities": [
         {"id": 1, "type": "wall", "position": [0, 0, -5]}]})";
     LoadReport report;
     auto level = load_level_string(text, "minimal.json", &report);

@@ -20,20 +20,21 @@ TEST_CASE("the migration table has one step per older version, in order") {
     }
 }
 
-TEST_CASE("a version 0 file loads through the migration and saves as version 1") {
+TEST_CASE("a version 0 file loads through both migrations and saves as the current version") {
     LoadReport report;
     auto level =
         load_level_file(ks::test::data_dir() / "levels" / "good" / "version0_migration.json", &report);
     REQUIRE_MESSAGE(level.ok(), report.str());
     CHECK(report.error_count() == 0);
-    REQUIRE(report.warning_count() == 1);
+    REQUIRE(report.warning_count() == 2);
     CHECK(report.str().find("version 0 -> 1") != std::string::npos);
+    CHECK(report.str().find("version 1 -> 2") != std::string::npos);
     REQUIRE(level->entities.size() == 2);
     CHECK(level->entities[0].rotation == ks::Vec3(90, 0, 0));
     CHECK(level->entities[1].rotation == ks::Vec3(-90, 0, 0));
     CHECK(level->entities[1].as<RobotProps>().health == 50.0f);
     const std::string saved = save_level_string(*level);
-    CHECK(saved.find("\"version\": 1,") != std::string::npos);
+    CHECK(saved.find("\"version\": 2,") != std::string::npos);
     CHECK(saved.find("\"objects\"") == std::string::npos);
     LoadReport again;
     REQUIRE(load_level_string(saved, "upgraded.json", &again).ok());
@@ -43,13 +44,13 @@ TEST_CASE("a version 0 file loads through the migration and saves as version 1")
 TEST_CASE("migration 0 -> 1 renames in place and leaves unrelated keys alone") {
     nlohmann::ordered_json doc = nlohmann::ordered_json::parse(
         R"({"format": "killswitch-level", "version": 0, "objects": [{"id": 1, "yaw": 30, "x": 1}, 5], "tail": true})");
-    const auto applied = migrate(doc, 0);
-    CHECK(applied.size() == 1);
+    migrations()[0].apply(doc);
     CHECK(
         doc.dump() ==
         R"({"format":"killswitch-level","version":0,"entities":[{"id":1,"x":1,"rotation":[30,0,0]},5],"tail":true})");
-    nlohmann::ordered_json current = nlohmann::ordered_json::parse(R"({"version": 1})");
-    CHECK(migrate(current, 1).empty());
+    CHECK(migrate(doc, 0).size() == 2); // 0 -> 1 -> 2
+    nlohmann::ordered_json current = nlohmann::ordered_json::parse(R"({"version": 2})");
+    CHECK(migrate(current, kFormatVersion).empty());
 }
 
 TEST_CASE("entity_to_json and entity_from_json round-trip every type") {

@@ -12,7 +12,7 @@ using namespace ks::level;
 namespace {
 
 std::string level_text(const std::string& robot_props) {
-    return R"({"format": "killswitch-level", "version": 1, "entities": [
+    return R"({"format": "killswitch-level", "version": 2, "entities": [
   {"id": 1, "type": "floor", "position": [0, 0, 0], "props": {"size": [40, 40]}},
   {"id": 12, "type": "robot", "name": "guard", "position": [0, 0, 0], "props": )" +
            robot_props + "}\n]}\n";

@@ -61,10 +61,11 @@ TEST_CASE("the saved text has the documented layout") {
     REQUIRE(!text.empty());
     CHECK(text.back() == '\n');
     CHECK(text.find("\n\n") == std::string::npos);
-    CHECK(text.rfind("{\n  \"format\": \"killswitch-level\",\n  \"version\": 1,\n  \"name\": ", 0) == 0);
+    CHECK(text.rfind("{\n  \"format\": \"killswitch-level\",\n  \"version\": 2,\n  \"name\": ", 0) == 0);
     // Key order: the format's, not alphabetical.
-    const char* const order[] = {"\"format\"",       "\"version\"", "\"name\"",    "\"settings\"",
-                                 "\"player_start\"", "\"next_id\"", "\"entities\""};
+    const char* const order[] = {"\"format\"",     "\"version\"",      "\"name\"",
+                                 "\"settings\"",   "\"player_start\"", "\"next_id\"",
+                                 "\"objectives\"", "\"links\"",        "\"entities\""};
     size_t at = 0;
     for (const char* key : order) {
         const size_t found = text.find(key, at);
@@ -114,7 +115,7 @@ TEST_CASE("a hand-written file settles after one save") {
         {"props": {"light": 1, "intensity": 0.80000001, "color": "#FFCC80"}, "position": [1E1, -0.0, 5.0],
          "type": "floor_light", "id": 7, "rotation": [45.000000001, 0, 0]},
         {"type": "wall", "id": 2, "position": [0, 0, 0], "name": "W\u00e9st \"wall\""}],
-      "version": 1, "format": "killswitch-level", "settings": {"sun_direction": [0, -2, 0]}})";
+      "version": 2, "format": "killswitch-level", "settings": {"sun_direction": [0, -2, 0]}})";
     LoadReport report;
     auto first = load_level_string(messy, "messy.json", &report);
     REQUIRE_MESSAGE(first.ok(), report.str());

@@ -15,7 +15,7 @@ namespace {
 
 // A level whose second entity is a sound emitter with `props` (JSON text), on line 3 of the file.
 std::string level_text(const std::string& props, const std::string& settings = "{}") {
-    return R"({"format": "killswitch-level", "version": 1, "settings": )" + settings + R"(, "entities": [
+    return R"({"format": "killswitch-level", "version": 2, "settings": )" + settings + R"(, "entities": [
   {"id": 1, "type": "floor", "position": [0, 0, 0], "props": {"size": [40, 40]}},
   {"id": 7, "type": "sound", "name": "hum", "position": [0, 2, 0], "props": )" +
            props + "}\n]}\n";

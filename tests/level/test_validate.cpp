@@ -88,7 +88,7 @@ TEST_CASE("validate: the ends of each range are valid, just beyond is not") {
 TEST_CASE("loading reports semantic errors at their line and column") {
     const std::string text = "{\n"
                              "  \"format\": \"killswitch-level\",\n"
-                             "  \"version\": 1,\n"
+                             "  \"version\": 2,\n"
                              "  \"entities\": [\n"
                              "    {\"id\": 1, \"type\": \"robot\", \"position\": [0, 0, 0],\n"
                              "     \"props\": {\"hit_probability\": 2}}\n"
@@ -105,7 +105,7 @@ TEST_CASE("loading reports semantic errors at their line and column") {
 }
 
 TEST_CASE("many errors are all reported, in document order") {
-    std::string text = "{\"format\": \"killswitch-level\", \"version\": 1, \"entities\": [\n";
+    std::string text = "{\"format\": \"killswitch-level\", \"version\": 2, \"entities\": [\n";
     for (int i = 0; i < 120; ++i) {
         if (i) text += ",\n";
         text += "{\"id\": " + std::to_string(i + 1) +
@@ -126,7 +126,7 @@ TEST_CASE("many errors are all reported, in document order") {
 TEST_CASE("Windows line endings and a byte-order mark load, with the right positions") {
     const std::string text = "\xEF\xBB\xBF{\r\n"
                              "  \"format\": \"killswitch-level\",\r\n"
-                             "  \"version\": 1,\r\n"
+                             "  \"version\": 2,\r\n"
                              "  \"entities\": [{\"id\": 1, \"type\": \"wall\", \"position\": [0, 0, 0], "
                              "\"props\": {\"size\": [0, 1, 1]}}]\r\n"
                              "}\r\n";

@@ -17,7 +17,7 @@ std::string corridor_level_json(double start_yaw) {
     std::snprintf(start, sizeof(start), R"({"position": [0, 0, 20], "yaw": %.4f})", start_yaw);
     return std::string(R"({
   "format": "killswitch-level",
-  "version": 1,
+  "version": 2,
   "name": "Input test corridor",
   "player_start": )") +
            start + R"(,
@@ -35,8 +35,10 @@ std::string corridor_level_json(double start_yaw) {
     {"id": 12, "type": "door", "name": "Door", "position": [0, 0, 0]},
     {"id": 13, "type": "gas_cylinder", "name": "Cylinder", "position": [0, 0, -14],
      "props": {"radius": 0.8, "height": 5}},
-    {"id": 14, "type": "control_panel", "name": "Panel", "position": [0, 0, -24]}
-  ]
+    {"id": 14, "type": "control_panel", "name": "Panel", "position": [0, 0, -24],
+     "links": [{"event": "on_use", "target": "shutdown", "action": "complete"}]}
+  ],
+  "objectives": [{"id": "shutdown", "text": "Shut down the simulation at the control panel"}]
 }
 )";
 }

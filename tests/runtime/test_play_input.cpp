@@ -363,7 +363,7 @@ TEST_CASE("play with real X input (xdotool): shot dead by a robot, the fall, the
     test::ScratchDir dir;
     // One robot 10 units ahead, facing the player, that always hits and kills with one shot.
     write(dir / "duel.json", R"({
-  "format": "killswitch-level", "version": 1, "name": "Duel",
+  "format": "killswitch-level", "version": 2, "name": "Duel",
   "player_start": {"position": [0, 0, 20], "yaw": 0},
   "entities": [
     {"id": 1, "type": "floor", "name": "Ground", "position": [0, 0, 0], "props": {"size": [60, 60]}},

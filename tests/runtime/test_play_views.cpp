@@ -58,7 +58,7 @@ double difference(const test::Image& a, const test::Image& b, double x0, double 
 
 // An open floor under one lamp, nothing else: after the fall the only ground in view is at one side.
 const char* kOpenFloor = R"({
-  "format": "killswitch-level", "version": 1, "name": "Open floor",
+  "format": "killswitch-level", "version": 2, "name": "Open floor",
   "player_start": {"position": [0, 0, 0], "yaw": 0},
   "entities": [
     {"id": 1, "type": "floor", "name": "Ground", "position": [0, 0, 0], "props": {"size": [400, 400]}},
@@ -117,7 +117,7 @@ TEST_CASE("robot facing: the game view and the render-only view draw a level's r
     auto level = [&](const char* name, int yaw) {
         const auto path = dir / name;
         write(path, std::string(R"({
-  "format": "killswitch-level", "version": 1, "name": "One robot",
+  "format": "killswitch-level", "version": 2, "name": "One robot",
   "player_start": {"position": [0, 0, 7], "yaw": 0},
   "entities": [
     {"id": 1, "type": "floor", "name": "Ground", "position": [0, 0, 0], "props": {"size": [60, 60]}},

@@ -1,0 +1,97 @@
+#include "game/level_logic.h"
+
+#include "core/log.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace ks::game {
+namespace {
+
+// Orders the pending heap so its front is the earliest due action, first scheduled first.
+bool later(const LevelLogic::Pending& a, const LevelLogic::Pending& b) {
+    return a.due != b.due ? a.due > b.due : a.sequence > b.sequence;
+}
+
+} // namespace
+
+int LevelLogic::current_objective() const {
+    for (std::size_t i = 0; i < objectives_.size(); ++i)
+        if (!objectives_[i].completed) return static_cast<int>(i);
+    return -1;
+}
+
+bool LevelLogic::all_objectives_complete() const {
+    return !objectives_.empty() && current_objective() < 0;
+}
+
+void LevelLogic::fire(LinkRange range, level::LinkEvent event, std::int64_t step) {
+    for (std::uint32_t k = range.first; k < range.first + range.count; ++k) {
+        LogicLink& link = links_[k];
+        if (link.event != event || (link.once && link.fired)) continue;
+        link.fired = true;
+        if (link.delay_steps <= 0) {
+            if (ready_.size() - ready_head_ >= static_cast<std::size_t>(kMaxActionsPerStep)) {
+                ++dropped_;
+                continue;
+            }
+            ready_.push_back(k);
+        } else if (pending_.size() >= kMaxPending) {
+            ++dropped_;
+            if (!std::exchange(pending_full_reported_, true))
+                report("more than " + std::to_string(kMaxPending) +
+                       " delayed actions wait at once; the newest are dropped");
+        } else {
+            pending_.push_back({step + link.delay_steps, sequence_++, k});
+            std::push_heap(pending_.begin(), pending_.end(), later);
+        }
+    }
+}
+
+void LevelLogic::fire_entity(int entity_id, level::LinkEvent event, std::int64_t step) {
+    if (entity_links_.empty()) return;
+    if (auto it = entity_links_.find(entity_id); it != entity_links_.end()) fire(it->second, event, step);
+}
+
+void LevelLogic::reset_budget() {
+    spent_ = 0;
+    ready_.clear();
+    ready_head_ = 0;
+}
+
+void LevelLogic::begin_step(std::int64_t step) {
+    reset_budget();
+    // More due than one step may run wait for the next step rather than being dropped.
+    while (!pending_.empty() && pending_.front().due <= step &&
+           ready_.size() < static_cast<std::size_t>(kMaxActionsPerStep)) {
+        std::pop_heap(pending_.begin(), pending_.end(), later);
+        ready_.push_back(pending_.back().link);
+        pending_.pop_back();
+    }
+}
+
+bool LevelLogic::next_ready(std::uint32_t& link) {
+    if (ready_head_ >= ready_.size()) return false;
+    if (spent_ >= kMaxActionsPerStep) {
+        dropped_ += static_cast<std::int64_t>(ready_.size() - ready_head_);
+        ready_.clear();
+        ready_head_ = 0;
+        if (!std::exchange(overflow_reported_, true))
+            report(
+                "more than " + std::to_string(kMaxActionsPerStep) +
+                " actions in one step (a zero-delay loop of links?); the rest of that step's were dropped");
+        return false;
+    }
+    link = ready_[ready_head_++];
+    ++spent_;
+    return true;
+}
+
+void LevelLogic::report(std::string problem) {
+    if (problems_.size() >= kMaxProblems) return;
+    if (std::find(problems_.begin(), problems_.end(), problem) != problems_.end()) return;
+    log::warn("level logic: " + problem);
+    problems_.push_back(std::move(problem));
+}
+
+} // namespace ks::game

@@ -1,0 +1,225 @@
+// The warnings about a level's logic that loads but cannot work as the designer meant: a zero-delay loop of
+// doors, an objective nothing can complete (nothing completes it, or it waits on a spawner nothing starts), a
+// locked door nothing frees. Links whose targets do not resolve are left to the errors (logic_checks.cpp).
+#include "jsonio/json_path.h"
+#include "jsonio/suggest.h"
+#include "level/logic_checks.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace ks::level {
+namespace {
+
+using jsonio::element_path;
+using jsonio::member_path;
+
+constexpr size_t kNone = std::numeric_limits<size_t>::max();
+constexpr size_t kMaxLoopLinksShown = 6;
+
+struct LinkRef {
+    const Link* link = nullptr;
+    size_t source = kNone; // entity index; kNone: the level or an objective
+    size_t target = kNone; // entity index of a resolved, unique entity target
+    std::string path;
+};
+
+std::string in_quotes(std::string_view s) {
+    return "\"" + std::string(s) + "\"";
+}
+
+std::string entity_path(size_t i, const std::vector<size_t>& source_index) {
+    return element_path("entities", i < source_index.size() ? source_index[i] : i);
+}
+
+std::vector<LinkRef> gather_links(const Level& level, const NameIndex& names,
+                                  const std::vector<size_t>& source_index) {
+    std::vector<LinkRef> refs;
+    auto add = [&](const std::vector<Link>& links, size_t source, const std::string& path) {
+        if (links.size() > static_cast<size_t>(kMaxLinks)) return;
+        for (size_t k = 0; k < links.size(); ++k) {
+            LinkRef ref{&links[k], source, kNone, element_path(path, k)};
+            const auto action = action_from_name(links[k].action);
+            if (action && target_kind(*action) == TargetKind::Entity) {
+                const auto found = names.find(links[k].target);
+                if (found.size() == 1) ref.target = found.front();
+            }
+            refs.push_back(std::move(ref));
+        }
+    };
+    for (size_t i = 0; i < level.entities.size(); ++i)
+        add(level.entities[i].links, i, member_path(entity_path(i, source_index), "links"));
+    add(level.links, kNone, "links");
+    for (size_t i = 0; i < level.objectives.size(); ++i)
+        add(level.objectives[i].links, kNone, member_path(element_path("objectives", i), "links"));
+    return refs;
+}
+
+bool is_action(const LinkRef& ref, std::initializer_list<LinkAction> actions) {
+    const auto action = action_from_name(ref.link->action);
+    return action && std::find(actions.begin(), actions.end(), *action) != actions.end();
+}
+
+// Strongly connected components (Tarjan, iterative: a generated level may chain thousands of links) of the
+// graph `edges` (node -> successors); calls found(component) for each component that holds a cycle.
+template <class Found>
+void find_cycles(const std::vector<std::vector<size_t>>& edges, Found found) {
+    const size_t n = edges.size();
+    std::vector<size_t> index(n, kNone), low(n, 0), stack;
+    std::vector<bool> on_stack(n, false);
+    size_t counter = 0;
+    struct Frame {
+        size_t node, next_edge;
+    };
+    std::vector<Frame> calls;
+    for (size_t root = 0; root < n; ++root) {
+        if (index[root] != kNone) continue;
+        calls.push_back({root, 0});
+        index[root] = low[root] = counter++;
+        stack.push_back(root);
+        on_stack[root] = true;
+        while (!calls.empty()) {
+            Frame& frame = calls.back();
+            const size_t v = frame.node;
+            if (frame.next_edge < edges[v].size()) {
+                const size_t w = edges[v][frame.next_edge++];
+                if (index[w] == kNone) {
+                    index[w] = low[w] = counter++;
+                    stack.push_back(w);
+                    on_stack[w] = true;
+                    calls.push_back({w, 0});
+                } else if (on_stack[w]) {
+                    low[v] = std::min(low[v], index[w]);
+                }
+                continue;
+            }
+            if (low[v] == index[v]) {
+                std::vector<size_t> component;
+                size_t w = kNone;
+                do {
+                    w = stack.back();
+                    stack.pop_back();
+                    on_stack[w] = false;
+                    component.push_back(w);
+                } while (w != v);
+                const bool self_loop = std::find(edges[v].begin(), edges[v].end(), v) != edges[v].end();
+                if (component.size() > 1 || self_loop) found(component);
+            }
+            calls.pop_back();
+            if (!calls.empty()) low[calls.back().node] = std::min(low[calls.back().node], low[v]);
+        }
+    }
+}
+
+// Only doors can loop for ever within one step: a robot dies once and an objective completes once, so a
+// chain through them ends. A cycle of zero-delay door links loops when it turns some door both ways (a
+// toggle, or an open and a close); one that only opens (or only closes) stops at the first door already so.
+void check_door_loops(const Level& level, const std::vector<LinkRef>& refs, DiagnosticSink& sink) {
+    std::vector<size_t> nodes; // indices into refs
+    for (size_t i = 0; i < refs.size(); ++i) {
+        const LinkRef& r = refs[i];
+        if (r.source == kNone || r.target == kNone || r.link->once || r.link->delay != 0.0f) continue;
+        if (level.entities[r.source].type() != EntityType::Door ||
+            level.entities[r.target].type() != EntityType::Door)
+            continue;
+        if (is_action(r, {LinkAction::Open, LinkAction::Close, LinkAction::Toggle})) nodes.push_back(i);
+    }
+    if (nodes.empty()) return;
+    std::vector<std::vector<size_t>> by_source(level.entities.size());
+    for (size_t n = 0; n < nodes.size(); ++n) by_source[refs[nodes[n]].source].push_back(n);
+    std::vector<std::vector<size_t>> edges(nodes.size());
+    for (size_t n = 0; n < nodes.size(); ++n) {
+        const LinkRef& from = refs[nodes[n]];
+        const auto caused = events_caused(*action_from_name(from.link->action));
+        for (size_t m : by_source[from.target]) {
+            const auto event = event_from_name(refs[nodes[m]].link->event);
+            if (event && std::find(caused.begin(), caused.end(), *event) != caused.end())
+                edges[n].push_back(m);
+        }
+    }
+    find_cycles(edges, [&](std::vector<size_t> component) {
+        std::sort(component.begin(), component.end());
+        std::vector<std::pair<size_t, LinkAction>> turns; // door, action
+        std::string chain;
+        for (size_t k = 0; k < component.size(); ++k) {
+            const LinkRef& r = refs[nodes[component[k]]];
+            turns.emplace_back(r.target, *action_from_name(r.link->action));
+            if (k < kMaxLoopLinksShown)
+                chain += (k ? "; " : "") + in_quotes(level.entities[r.source].name) + " " + r.link->event +
+                         " -> " + r.link->action + " " + in_quotes(r.link->target);
+        }
+        if (component.size() > kMaxLoopLinksShown) chain += "; ...";
+        bool both_ways = false;
+        for (const auto& turn : turns) {
+            const size_t door = turn.first;
+            auto turned = [&](LinkAction a) {
+                return std::any_of(turns.begin(), turns.end(),
+                                   [&](const auto& t) { return t.first == door && t.second == a; });
+            };
+            both_ways |=
+                turn.second == LinkAction::Toggle || (turned(LinkAction::Open) && turned(LinkAction::Close));
+        }
+        if (!both_ways) return;
+        sink.warning(refs[nodes[component.front()]].path,
+                     "zero-delay loop of door links (" + chain +
+                         "): each sets the next off in the same step, for ever (the game cuts it off)",
+                     "give one of these links a delay, or make one of them \"once\"");
+    });
+}
+
+void check_reachability(const Level& level, const NameIndex& names, const std::vector<LinkRef>& refs,
+                        DiagnosticSink& sink, const std::vector<size_t>& source_index) {
+    std::vector<bool> spawned(level.entities.size()), freed(level.entities.size());
+    std::vector<std::string> completed;
+    for (const LinkRef& r : refs) {
+        if (is_action(r, {LinkAction::Complete})) completed.push_back(r.link->target);
+        if (r.target == kNone) continue;
+        if (is_action(r, {LinkAction::Spawn})) spawned[r.target] = true;
+        if (is_action(r, {LinkAction::Unlock, LinkAction::Open, LinkAction::Toggle})) freed[r.target] = true;
+    }
+    for (size_t i = 0; i < level.entities.size(); ++i) {
+        const Entity& e = level.entities[i];
+        const std::string path = entity_path(i, source_index);
+        SubjectScope scope(sink, entity_subject(e));
+        if (const auto* door = e.try_as<DoorProps>(); door && door->locked && !door->open && !freed[i])
+            sink.warning(member_path(member_path(path, "props"), "locked"),
+                         "the door is locked and no link unlocks or opens it: the player can never pass",
+                         "add a link with \"action\": \"unlock\" (or \"open\") and \"target\": " +
+                             in_quotes(e.name));
+    }
+    for (size_t i = 0; i < level.objectives.size(); ++i) {
+        const Objective& o = level.objectives[i];
+        const std::string path = element_path("objectives", i);
+        SubjectScope scope(sink, "objective " + in_quotes(o.id));
+        const bool by_link = std::find(completed.begin(), completed.end(), o.id) != completed.end();
+        if (o.kill.empty() && !by_link) {
+            sink.warning(path,
+                         "nothing completes the objective (no link completes it and it lists nothing to "
+                         "kill), so the level can never be won",
+                         "add a link with \"action\": \"complete\" and \"target\": " + in_quotes(o.id) +
+                             ", or list robots or spawners under \"kill\"");
+            continue;
+        }
+        if (by_link) continue;
+        for (size_t k = 0; k < o.kill.size(); ++k) {
+            const auto found = names.find(o.kill[k]);
+            if (found.size() == 1 && level.entities[found.front()].type() == EntityType::Spawner &&
+                !spawned[found.front()])
+                sink.warning(element_path(member_path(path, "kill"), k),
+                             "spawner " + in_quotes(o.kill[k]) +
+                                 " never spawns, so the objective can never complete",
+                             "add a link that spawns it, or remove it from \"kill\"");
+        }
+    }
+}
+
+} // namespace
+
+void check_logic_design(const Level& level, const NameIndex& names, DiagnosticSink& sink,
+                        const std::vector<size_t>& source_index) {
+    const std::vector<LinkRef> refs = gather_links(level, names, source_index);
+    check_door_loops(level, refs, sink);
+    check_reachability(level, names, refs, sink, source_index);
+}
+
+} // namespace ks::level
