@@ -83,7 +83,6 @@ void GameApp::load(const std::filesystem::path& path, bool dojo, Screen then) {
                                  auto g = game::Game::create(s->level, go);
                                  if (!g) return g.error();
                                  s->game = std::move(*g);
-                                 s->robots_total = static_cast<int>(s->game->robots().size());
                                  return {};
                              }});
     // Models one per frame: their textures are the slow part of loading.
@@ -246,7 +245,7 @@ void GameApp::fixed_update(double dt) {
         input_.release(shell_.window(), events_.state());
     }
     if (g.phase() == game::Phase::Won && screen_ == Screen::Playing) {
-        win_ = {session_->play_seconds, g.robots_killed(), session_->robots_total};
+        win_ = {session_->play_seconds, g.robots_killed(), static_cast<int>(g.robots().size())};
         screen_ = Screen::Won;
         input_.release(shell_.window(), events_.state());
     }
@@ -567,7 +566,7 @@ Result<void> GameApp::start(const Automation& a) {
             return Error("--screen win: could not reach a control panel in this level",
                          Location(level_path_.string()),
                          "use a level with a control panel (levels/main.json has one)");
-        win_ = {session_->play_seconds, g.robots_killed(), session_->robots_total};
+        win_ = {session_->play_seconds, g.robots_killed(), static_cast<int>(g.robots().size())};
         screen_ = Screen::Won;
     }
     return {};

@@ -55,7 +55,6 @@ struct Session {
     std::optional<anim::DojoController> dojo_controller;
     DojoDummy dummy;
     double play_seconds = 0.0;
-    int robots_total = 0;
     ~Session() { dojo_controller.reset(); }
 };
 
