@@ -89,11 +89,10 @@ Result<void> write_wav(const std::filesystem::path& path, const SoundData& sound
 
 Result<WavWriter> WavWriter::open(const std::filesystem::path& path, int sample_rate, int channels) {
     if (auto problem = check_shape(path, sample_rate, channels)) return *problem;
-    const std::filesystem::path folder =
-        path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-    std::string temp = (folder / ("." + path.filename().string() + ".tmp-XXXXXX")).string();
-    const int fd = ::mkstemp(temp.data());
-    if (fd < 0) return io_error(path, "cannot create a temporary file in " + folder.string());
+    auto created = files::create_temp_beside(path);
+    if (!created) return created.error();
+    const int fd = created->fd;
+    const std::string temp = created->path.string();
     WavWriter writer;
     writer.file_ = ::fdopen(fd, "wb");
     if (!writer.file_) {

@@ -3,9 +3,9 @@
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
-#include <sys/stat.h>
 #include <fstream>
 #include <sstream>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace ks::files {
@@ -30,12 +30,15 @@ bool write_all(int fd, const char* data, size_t size) {
 }
 } // namespace
 
-void inject_fault(Fault fault) { g_fault = fault; }
+void inject_fault(Fault fault) {
+    g_fault = fault;
+}
 
 Result<std::string> read_text(const std::filesystem::path& path) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec))
-        return Error("file not found", Location{path.string()}, "check the path; it is resolved from the current folder");
+        return Error("file not found", Location{path.string()},
+                     "check the path; it is resolved from the current folder");
     if (std::filesystem::is_directory(path, ec))
         return Error("is a folder, not a file", Location{path.string()});
     std::ifstream in(path, std::ios::binary);
@@ -46,10 +49,10 @@ Result<std::string> read_text(const std::filesystem::path& path) {
     return buffer.str();
 }
 
-Result<void> write_atomic(const std::filesystem::path& path, std::string_view data) {
-    const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+Result<TempFile> create_temp_beside(const std::filesystem::path& path) {
+    const std::filesystem::path folder =
+        path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
     std::string temp = (folder / ("." + path.filename().string() + ".tmp-XXXXXX")).string();
-
     int fd = -1;
     if (g_fault == Fault::OpenTemp) {
         errno = EROFS;
@@ -59,6 +62,16 @@ Result<void> write_atomic(const std::filesystem::path& path, std::string_view da
     if (fd < 0)
         return io_error(path, "cannot create a temporary file in " + folder.string(), errno,
                         "the folder must exist and be writable; the previous file was left untouched");
+    return TempFile{fd, temp};
+}
+
+Result<void> write_atomic(const std::filesystem::path& path, std::string_view data) {
+    const std::filesystem::path folder =
+        path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+    auto created = create_temp_beside(path);
+    if (!created) return created.error();
+    const int fd = created->fd;
+    const std::string temp = created->path.string();
 
     auto fail = [&](const std::string& what, int err) {
         ::close(fd);
@@ -72,7 +85,7 @@ Result<void> write_atomic(const std::filesystem::path& path, std::string_view da
     if (g_fault == Fault::ShortWrite) return fail("write failed", ENOSPC);
     if (::fsync(fd) != 0) return fail("flush to disk failed", errno);
     // Keep the permissions of the file being replaced, or the usual 0644 for a new one.
-    struct stat st{};
+    struct stat st {};
     ::fchmod(fd, ::stat(path.c_str(), &st) == 0 ? (st.st_mode & 07777) : 0644);
     if (::close(fd) != 0) {
         ::unlink(temp.c_str());
@@ -80,7 +93,8 @@ Result<void> write_atomic(const std::filesystem::path& path, std::string_view da
     }
     if (g_fault == Fault::BeforeRename) {
         // A crash here leaves the temporary file behind and the target untouched; emulate exactly that.
-        return Error("simulated crash before rename", Location{path.string()}, "the previous file was left untouched");
+        return Error("simulated crash before rename", Location{path.string()},
+                     "the previous file was left untouched");
     }
     if (::rename(temp.c_str(), path.c_str()) != 0) {
         int err = errno;

@@ -14,13 +14,21 @@ namespace ks::files {
 Result<std::string> read_text(const std::filesystem::path& path);
 Result<void> write_atomic(const std::filesystem::path& path, std::string_view data);
 
+// A new, empty temporary file beside `path` (same folder, so a rename over `path` is atomic), open for
+// writing: the first step of write_atomic and of streamed writers that rename their result into place.
+struct TempFile {
+    int fd = -1;
+    std::filesystem::path path;
+};
+Result<TempFile> create_temp_beside(const std::filesystem::path& path);
+
 // Fault injection for tests: make the next atomic writes fail at a chosen stage, as a full disk, a crash
 // between write and rename, or a read-only folder would.
 enum class Fault : std::uint8_t {
     None,
-    OpenTemp,      // the temporary file cannot be created (read-only folder)
-    ShortWrite,    // the disk fills up after half the data
-    BeforeRename,  // the process "dies" after writing the temp file, before the rename
+    OpenTemp,     // the temporary file cannot be created (read-only folder)
+    ShortWrite,   // the disk fills up after half the data
+    BeforeRename, // the process "dies" after writing the temp file, before the rename
 };
 void inject_fault(Fault fault); // applies to every write until reset with Fault::None
 
