@@ -31,16 +31,6 @@ float flat_distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
     return glm::length(ap - t * ab);
 }
 
-// The mesh point nearest to the panel's foot, searched within the panel's footprint plus the body's radius
-// and a margin, at about the foot's height (tall extents would snap onto the panel's own top).
-std::optional<Vec3> panel_goal(const Game& game, nav::NavMesh& mesh) {
-    if (game.panels().empty()) return std::nullopt;
-    const Panel& panel = game.panels().front();
-    const Vec3 foot = panel.centre - Vec3(0.0f, panel.size.y * 0.5f, 0.0f);
-    const float reach = 0.5f * std::hypot(panel.size.x, panel.size.z) + mesh.settings().agent_radius + 1.0f;
-    return mesh.nearest_point(foot, Vec3(reach, 1.0f, reach));
-}
-
 } // namespace
 
 Result<std::shared_ptr<nav::NavMesh>> build_autoplay_mesh(const level::Level& level,
@@ -66,8 +56,7 @@ Result<Autoplay> Autoplay::create(const level::Level& level, const Game& game, s
 
 Autoplay::Autoplay(const Game& game, std::shared_ptr<nav::NavMesh> mesh, std::uint64_t seed,
                    AutoplaySettings settings)
-    : settings_(settings), rng_(seed, 0x626f74ull), mesh_(std::move(mesh)) {
-    goal_ = panel_goal(game, *mesh_);
+    : settings_(settings), rng_(seed, 0x626f74ull), mesh_(std::move(mesh)), planner_(game) {
     path_.reserve(64);
 }
 
@@ -111,13 +100,62 @@ void Autoplay::aim_at(const Game& game, const Vec3& point, Input& in, float& yaw
     in.look_pitch = std::clamp(pitch_error, -max_turn, max_turn);
 }
 
+void Autoplay::notice_events(const Game& game) {
+    for (const Event& e : game.events()) {
+        switch (e.type) {
+        case EventType::ObjectiveCompleted:
+        case EventType::DoorToggled:
+        case EventType::RobotSpawned:
+        case EventType::PickupTaken:
+        case EventType::Used:
+        case EventType::LockedDoorUsed:
+            goal_stale_ = true;
+            break;
+        default:
+            break;
+        }
+    }
+    if (goal_.kind == BotGoalKind::Hunt) { // it died (spawned robots are not in the level's records)
+        for (const Robot& r : game.robots())
+            if (r.entity_id == goal_.entity_id && !r.alive()) goal_stale_ = true;
+    } else if (goal_.kind == BotGoalKind::Enter) { // the trigger noticed the bot
+        for (const TriggerState& t : game.logic().triggers())
+            if (t.entity_id == goal_.entity_id && t.occupied) goal_stale_ = true;
+    }
+}
+
+void Autoplay::refresh_goal(const Game& game) {
+    goal_stale_ = false;
+    since_goal_ = 0.0f;
+    const BotGoal next = planner_.choose(game, *mesh_);
+    if (!next.same_target(goal_)) since_plan_ = 1e9f; // a new goal: plan for it now
+    goal_ = next;
+}
+
+bool Autoplay::use_goal(const Game& game, Input& in) {
+    if (goal_.kind != BotGoalKind::Use || game.interact_target() != goal_.entity_id) return false;
+    Vec3 aim = goal_.point;
+    for (const Panel& k : game.panels())
+        if (k.entity_id == goal_.entity_id) aim = k.centre;
+    for (const Light& l : game.lights())
+        if (l.entity_id == goal_.entity_id) aim = l.position + Vec3(0.0f, 2.0f, 0.0f); // the lamp
+    float yaw_error = 0.0f, pitch_error = 0.0f;
+    aim_at(game, aim, in, yaw_error, pitch_error);
+    if (interact_wait_ <= 0.0f) {
+        in.interact = true;
+        interact_wait_ = 0.3f;
+    }
+    return true;
+}
+
 void Autoplay::follow_path(const Game& game) {
     const Vec3& feet = game.player().feet;
     if (since_plan_ >= settings_.replan_interval) {
         since_plan_ = 0.0f;
-        // Found or Partial alike: walk as far as the mesh goes toward the panel.
-        if (!goal_ || mesh_->find_path(feet, *goal_, path_) == nav::PathStatus::StartOffMesh ||
-            path_.size() < 2)
+        close_blocking_doors(game, *mesh_); // the mesh may be shared: set its doors for this game
+        // Found or Partial alike: walk as far as the mesh goes toward the goal.
+        if (goal_.kind == BotGoalKind::None ||
+            mesh_->find_path(feet, goal_.point, path_) == nav::PathStatus::StartOffMesh || path_.size() < 2)
             path_.clear();
         waypoint_ = 1; // path_[0] is where the bot stands, snapped to the mesh
     }
@@ -139,7 +177,9 @@ bool Autoplay::path_passes_near(const Vec3& from, const Vec3& point, float radiu
 bool Autoplay::open_door_on_path(const Game& game, Input& in) {
     const PlayerState& p = game.player();
     for (const Door& d : game.doors()) {
-        if (!d.player_inside || d.progress >= 0.95f) continue;
+        // A locked, shut door: E does nothing; the goal says what opens it (a link opening it still
+        // lets the bot wait here for it).
+        if (!d.player_inside || d.progress >= 0.95f || door_blocks(d)) continue;
         if (!path_passes_near(p.feet, d.frame.position, 3.0f, 16.0f)) continue;
         float yaw_error = 0.0f, pitch_error = 0.0f;
         aim_at(game, d.frame.position + Vec3(0, 2.5f, 0), in, yaw_error, pitch_error);
@@ -182,6 +222,8 @@ Input Autoplay::decide(const Game& game) {
     fire_wait_ = std::max(0.0f, fire_wait_ - dt);
     interact_wait_ = std::max(0.0f, interact_wait_ - dt);
     since_plan_ += dt;
+    since_goal_ += dt;
+    notice_events(game);
     float yaw_error = 0.0f, pitch_error = 0.0f;
 
     // Fight: the nearest robot in sight — with ammo. Without, fighting is standing still (the soak found the
@@ -204,25 +246,24 @@ Input Autoplay::decide(const Game& game) {
         return in;
     }
 
-    // At the panel: face it and press E.
-    if (!game.panels().empty() && game.interact_target() == game.panels().front().entity_id) {
-        aim_at(game, game.panels().front().centre, in, yaw_error, pitch_error);
-        if (interact_wait_ <= 0.0f) {
-            in.interact = true;
-            interact_wait_ = 0.3f;
-        }
-        return in;
-    }
+    if (goal_stale_ || since_goal_ >= settings_.replan_interval) refresh_goal(game);
+    if (use_goal(game, in)) return in;
 
     follow_path(game);
     if (open_door_on_path(game, in)) return in;
+    // Waiting (for a delayed link, a door, a spawner's next robot): stand where the goal says.
+    if (goal_.kind == BotGoalKind::Wait && flat_distance(p.feet, goal_.point) < 1.0f) {
+        stuck_time_ = 0.0f;
+        stuck_anchor_ = p.feet;
+        return in;
+    }
     if (!path_.empty()) {
         const Vec3& corner = path_[waypoint_];
         aim_at(game, corner + Vec3(0, p.eye().y - corner.y, 0), in, yaw_error, pitch_error);
         in.look_pitch = std::clamp(-p.pitch, -0.1f, 0.1f);
         in.move_forward = std::abs(yaw_error) < 0.5f ? 1.0f : 0.2f;
     }
-    if (goal_) unstick(game, in); // off the mesh too: a strafe may bring it back
+    if (goal_.kind != BotGoalKind::None) unstick(game, in); // off the mesh too: a strafe may bring it back
     return in;
 }
 

@@ -1,11 +1,14 @@
 #pragma once
 // The autoplay bot: plays a level through with the same Input a keyboard produces. It plans on a navigation
-// mesh built for the player's body with every door open (build_autoplay_mesh), walks the path's corners
-// toward the control panel, opens each closed door with E as it reaches it, turns to and shoots every robot
-// it can see (aiming at a human-like turn rate and click rate), and presses E at the panel. Its own
-// randomness (unsticking) comes from its own seeded Rng, and it reads nothing but the game's state and its
-// mesh, so a run with a given seed is reproducible and its inputs replayable.
+// mesh built for the player's body with every door open (build_autoplay_mesh). What it walks to comes from
+// the level's logic (GoalPlanner, autoplay_goals.h): the panel to use, the trigger to enter, the robot to
+// hunt, the pickup to take, the door to open, or where to wait for a locked door. It walks the path's
+// corners there, opens each closed door with E as it reaches it, turns to and shoots every robot it can see
+// (aiming at a human-like turn rate and click rate), and presses E at the panel or floor light its goal
+// names. Its own randomness (unsticking) comes from its own seeded Rng, and it reads nothing but the game's
+// state and its mesh, so a run with a given seed is reproducible and its inputs replayable.
 #include "core/random.h"
+#include "game/autoplay_goals.h"
 #include "game/game.h"
 #include "nav/nav_mesh.h"
 
@@ -43,13 +46,18 @@ class Autoplay {
     // The corners of the current plan (the first is where the bot stood when it planned).
     const std::vector<Vec3>& path() const { return path_; }
     const nav::NavMesh& mesh() const { return *mesh_; }
+    // What the bot is after now (chosen at its first decide, then again each replan interval and whenever
+    // the game's events say the logic moved on).
+    const BotGoal& goal() const { return goal_; }
 
   private:
     int pick_target(const Game& game) const;
     void aim_at(const Game& game, const Vec3& point, Input& in, float& yaw_error, float& pitch_error) const;
-    // Where the bot walks to: the mesh point nearest to the panel's foot (the panel is a solid, so its own
-    // centre is off the mesh); the player's feet when the level has no panel or no mesh near it.
-    Vec3 goal(const Game& game);
+    // Marks the goal for choosing again when this step's events may have changed what is needed.
+    void notice_events(const Game& game);
+    void refresh_goal(const Game& game);
+    // Faces the panel or floor light the goal names and presses E; false when E would not reach it.
+    bool use_goal(const Game& game, Input& in);
     void follow_path(const Game& game);
     // Whether the rest of the plan, over its next `length` units, passes within `radius` of `point` (x, z).
     bool path_passes_near(const Vec3& from, const Vec3& point, float radius, float length) const;
@@ -59,7 +67,10 @@ class Autoplay {
     AutoplaySettings settings_;
     Rng rng_;
     std::shared_ptr<nav::NavMesh> mesh_;
-    std::optional<Vec3> goal_;
+    GoalPlanner planner_;
+    BotGoal goal_;
+    bool goal_stale_ = true;
+    float since_goal_ = 0.0f;
     std::vector<Vec3> path_;
     std::size_t waypoint_ = 0;
     float since_plan_ = 1e9f;

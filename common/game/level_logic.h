@@ -119,6 +119,14 @@ class LevelLogic {
     std::span<const SpawnerState> spawners() const { return spawners_; }
     const ShownMessage& message() const { return message_; }
     std::span<const LogicLink> links() const { return links_; }
+    // The links an entity's events fire (empty when it has none) and the level's own (on_start); an
+    // objective's on_complete links are in its ObjectiveState. The bot reads these backward: which event
+    // of which entity completes an objective, unlocks a door, starts a spawner.
+    LinkRange entity_links(int entity_id) const {
+        const auto it = entity_links_.find(entity_id);
+        return it == entity_links_.end() ? LinkRange{} : it->second;
+    }
+    LinkRange level_links() const { return level_links_; }
     // Actions that were dropped: past kMaxActionsPerStep in one step (a zero-delay loop) or kMaxPending.
     std::int64_t dropped_actions() const { return dropped_; }
     // What went wrong at run time, each said once: dangling links in a level that was not validated, a

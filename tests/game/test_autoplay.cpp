@@ -1,4 +1,5 @@
-// The autoplay bot wins the shipped main level headless, for several seeds, within a simulated time limit.
+// The autoplay bot wins the shipped main level and the logic example level headless, for several seeds,
+// within a simulated time limit.
 #include "game/autoplay.h"
 #include "game/headless.h"
 #include "level/level_io.h"
@@ -27,6 +28,21 @@ TEST_CASE("autoplay wins levels/main.json for several seeds") {
         CHECK(stats->shots > 0);
         CHECK(stats->sim_time_s < 60.0);
         CHECK(stats->robots_killed >= 4);
+    }
+}
+
+TEST_CASE("autoplay wins the logic example level (trigger, spawner, locked exit, panel) for seeds 1-6") {
+    for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+        HeadlessOptions o;
+        o.level = test::source_dir() / "tests/data/levels/logic_hall.json";
+        o.seconds = 60.0;
+        o.seed = seed;
+        o.autoplay = true;
+        auto stats = run_headless(o);
+        if (!stats) FAIL(stats.error().str());
+        MESSAGE("seed " << seed << ": " << stats->summary());
+        CHECK(stats->outcome == "win");
+        CHECK(stats->robots_killed == 3); // the spawner's three, before the exit opens
     }
 }
 
