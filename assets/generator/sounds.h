@@ -58,6 +58,10 @@ synth::Signal footstep_stairs();
 synth::Signal ui_hover();
 synth::Signal ui_click();
 synth::Signal win_sting();
+// sound_logic.cpp
+synth::Signal door_locked();
+synth::Signal objective_complete();
+synth::Signal message_shown();
 // sound_ambience.cpp
 synth::Signal ambient_facility();
 synth::Signal ambient_dojo();

@@ -37,14 +37,26 @@ const fs::path& data_root() {
     return root;
 }
 
-fs::path asset(std::string_view relative) { return data_root() / "assets" / relative; }
-fs::path level(std::string_view relative) { return data_root() / "levels" / relative; }
+fs::path asset(std::string_view relative) {
+    return data_root() / "assets" / relative;
+}
+fs::path level(std::string_view relative) {
+    return data_root() / "levels" / relative;
+}
 
 fs::path resolve_user_path(const fs::path& given) {
     std::error_code ec;
     if (given.is_absolute() || fs::exists(given, ec)) return given;
     if (fs::exists(data_root() / given, ec)) return data_root() / given;
     return given;
+}
+
+fs::path user_levels_dir() {
+    if (const char* xdg = std::getenv("XDG_DATA_HOME"); xdg && *xdg && fs::path(xdg).is_absolute())
+        return fs::path(xdg) / "killswitch" / "levels";
+    if (const char* home = std::getenv("HOME"); home && *home)
+        return fs::path(home) / ".local" / "share" / "killswitch" / "levels";
+    return {};
 }
 
 } // namespace ks::paths

@@ -10,9 +10,13 @@ namespace ks::paths {
 std::filesystem::path executable_dir();
 // The folder that holds assets/ and levels/ (found once, then cached).
 const std::filesystem::path& data_root();
-std::filesystem::path asset(std::string_view relative);  // data_root()/assets/relative
-std::filesystem::path level(std::string_view relative);  // data_root()/levels/relative
+std::filesystem::path asset(std::string_view relative); // data_root()/assets/relative
+std::filesystem::path level(std::string_view relative); // data_root()/levels/relative
 // A path given by the user: absolute or relative to the current folder, else relative to data_root().
 std::filesystem::path resolve_user_path(const std::filesystem::path& given);
+// Where the player's own levels live: $XDG_DATA_HOME/killswitch/levels, else
+// ~/.local/share/killswitch/levels (the XDG base directory rule; a relative XDG_DATA_HOME is ignored, as the
+// rule says). Empty when neither variable gives a folder. Read from the environment on every call.
+std::filesystem::path user_levels_dir();
 
 } // namespace ks::paths

@@ -70,6 +70,7 @@ struct PlayerState {
     float hit_marker = 0.0f;   // seconds left of the hit marker
     float recoil = 0.0f;       // seconds since the last shot (large = at rest)
     int shots = 0;
+    int hits = 0; // shots that hit a live robot: accuracy is hits / shots (a statistic: not hashed)
     float damage_taken = 0.0f;
     float stride = 0.0f;   // ground distance walked since the last footstep (sound only; not hashed)
     float air_time = 0.0f; // seconds since the feet left the ground (sound only; not hashed)

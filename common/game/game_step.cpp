@@ -175,6 +175,7 @@ void Game::fire_player_shot() {
         if (robots_[i].alive()) {
             damage_robot(i, settings_.player_shot_damage, true);
             p.hit_marker = 0.3f;
+            ++p.hits;
         }
     } else if (kind == BodyKind::Cylinder) {
         const std::size_t i = user_index(user);

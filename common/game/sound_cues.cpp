@@ -28,7 +28,10 @@ constexpr auto kEventSounds = std::to_array<std::string_view>({"rifle_shot",
                                                                "jump",
                                                                "land",
                                                                "footstep_floor",
-                                                               "footstep_stairs"});
+                                                               "footstep_stairs",
+                                                               "door_locked",
+                                                               "objective_complete",
+                                                               "message_shown"});
 
 SoundCue own(std::string_view sound, Vec3 at, float volume, SoundPriority priority) {
     SoundCue c;
@@ -156,13 +159,20 @@ void sound_cues(const Game& game, std::span<const Event> events, std::vector<Sou
                 out.push_back(c);
             }
             break;
+        case EventType::LockedDoorUsed: // at the door, so the refusal comes from where the player pushed
+            out.push_back(
+                world("door_locked", e.position + Vec3(0, 2.0f, 0), e.entity, SoundPriority::Combat));
+            break;
+        case EventType::ObjectiveCompleted: // news for the player, not a sound in the world
+            out.push_back(own("objective_complete", e.position, 0.8f, SoundPriority::Critical));
+            break;
+        case EventType::MessageShown:
+            out.push_back(own("message_shown", e.position, 0.6f, SoundPriority::Combat));
+            break;
         case EventType::RobotShot: // the shooting clip's muzzle_flash event carries the sound (ClipCue)
         case EventType::CaptionChanged:
         case EventType::Paused:
         case EventType::Used: // doors and lights make their own sounds; the panel's beeps are an emitter
-        case EventType::LockedDoorUsed:
-        case EventType::ObjectiveCompleted:
-        case EventType::MessageShown:
         case EventType::RobotSpawned:
             break;
         }

@@ -5,6 +5,7 @@
 #include "jsonio/describe.h"
 #include "jsonio/json_writer.h"
 #include "jsonio/number_text.h"
+#include "jsonio/parse_failure.h"
 #include "jsonio/position_map.h"
 #include "level/diagnostics.h"
 #include "level/level_checks.h"
@@ -61,17 +62,6 @@ size_t first_binary_byte(std::string_view text) {
         i += static_cast<size_t>(continuation) + 1;
     }
     return std::string_view::npos;
-}
-
-// nlohmann's message starts with "[json.exception.parse_error.101] parse error at line 3, column 5: "; the
-// place goes into our Location instead, so keep only the part after the last ": " prefix it adds.
-std::string clean_parse_message(const std::string& what) {
-    std::string message = what;
-    if (auto at = message.find("syntax error"); at != std::string::npos)
-        message = message.substr(at);
-    else if (auto colon = message.find(": "); colon != std::string::npos)
-        message = message.substr(colon + 2);
-    return "JSON " + message;
 }
 
 int read_version(const Json& document, DiagnosticSink& sink) {
@@ -157,15 +147,12 @@ std::optional<Level> parse_level(std::string_view text, DiagnosticSink& sink, Po
     try {
         document = Json::parse(to_parse);
     } catch (const nlohmann::json::parse_error& e) {
-        const size_t offset = e.byte > 0 ? e.byte - 1 : 0;
-        const bool at_end = offset >= text.size();
-        if (at_end)
-            sink.error_at(jsonio::position_of_offset(text, offset), "",
-                          "file ends early (truncated?): " + clean_parse_message(e.what()),
+        const jsonio::ParseFailure failure = jsonio::describe_parse_error(text, e);
+        if (failure.at_end)
+            sink.error_at(failure.position, "", "file ends early (truncated?): " + failure.message,
                           "complete the file or restore it from a backup");
         else
-            sink.error_at(jsonio::position_of_offset(text, offset), "", clean_parse_message(e.what()),
-                          "fix the JSON syntax at this place");
+            sink.error_at(failure.position, "", failure.message, "fix the JSON syntax at this place");
         return std::nullopt;
     } catch (const nlohmann::json::exception& e) {
         sink.error_at({}, "", std::string("JSON could not be read: ") + e.what(), "fix the JSON syntax");

@@ -1,7 +1,9 @@
 #pragma once
 // The GameApp class behind run_game_app (game_app.h): the screens' state machine, the loaded session and
-// the automation hooks. Shared by game_app.cpp (the state machine), game_script.cpp (--input-script),
-// game_status.cpp (--status-file) and run_game_app.cpp (the command line); not for other code.
+// the automation hooks. Shared by game_app.cpp (the state machine), game_app_frame.cpp (one frame: keys,
+// scene, HUD, menus), game_app_start.cpp (the automation's first screen), game_app_names.cpp (option and
+// screen names), game_script.cpp (--input-script), game_status.cpp (--status-file) and run_game_app.cpp (the
+// command line); not for other code.
 #include "game_app.h"
 
 #include "anim/dojo.h"

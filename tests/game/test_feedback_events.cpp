@@ -114,6 +114,7 @@ TEST_CASE("the hit marker shows only when a shot hits a robot: not a wall, not a
         g->step(fire);
         CHECK(count_events(*g, EventType::Hit) == 1);
         CHECK(g->player().hit_marker == 0.0f);
+        CHECK(g->player().hits == 0);
     }
     {
         auto lv = flat_level();
@@ -123,6 +124,7 @@ TEST_CASE("the hit marker shows only when a shot hits a robot: not a wall, not a
         g->step(fire);
         CHECK(g->cylinders()[0].exploded);
         CHECK(g->player().hit_marker == 0.0f);
+        CHECK(g->player().hits == 0);
     }
     {
         auto lv = flat_level();
@@ -132,5 +134,23 @@ TEST_CASE("the hit marker shows only when a shot hits a robot: not a wall, not a
         g->step(fire);
         CHECK(g->robots()[0].health < 100.0f);
         CHECK(g->player().hit_marker > 0.0f);
+        CHECK(g->player().hits == 1);
+        CHECK(g->player().shots == 1);
     }
+}
+
+TEST_CASE("hits count the shots that hit a live robot: accuracy is hits / shots") {
+    Input fire;
+    fire.fire = true;
+    auto lv = flat_level();
+    add_robot(lv, Vec3(0, 0, -10));
+    auto g = make_game(lv);
+    g->teleport_player(Vec3(0.0f), 0.0f, std::atan2(-1.5f, 10.0f));
+    // Five hits of 20 kill the 100 hp robot; shots into its dying body or past it are misses.
+    for (int i = 0; i < 8; ++i) {
+        g->step(fire);
+        for (int k = 0; k < 40; ++k) g->step({});
+    }
+    CHECK(g->player().shots == 8);
+    CHECK(g->player().hits == 5);
 }

@@ -2,6 +2,7 @@
 // emits events; these tests read them and the cues directly, without an audio device.
 #include "game/sound_cues.h"
 #include "game_test_levels.h"
+#include "level/level_io.h"
 
 #include <algorithm>
 #include <string>
@@ -165,6 +166,37 @@ TEST_CASE("shield and health: a hit the shield takes sounds as a shield hit; the
     g->damage_player(1000.0f);
     sound_cues(*g, g->events(), step);
     CHECK(count(step, "player_death") == 1);
+}
+
+TEST_CASE(
+    "level logic is heard: a locked door refuses at the door, an objective and a message are the player's") {
+    level::LoadReport report;
+    auto lv = level::load_level_file(ks::test::data_dir() / "levels" / "logic_hall.json", &report);
+    REQUIRE_MESSAGE(lv.ok(), report.str());
+    auto g = make_game(*lv);
+    std::vector<SoundCue> step;
+    g->step({}); // on_start shows the welcome message
+    sound_cues(*g, g->events(), step);
+    REQUIRE(count(step, "message_shown") == 1);
+    CHECK_FALSE(find(step, "message_shown")->positional);
+
+    g->teleport_player(Vec3(0, 0, -25), 0.0f); // at the locked exit
+    g->step({});
+    Input use;
+    use.interact = true;
+    g->step(use);
+    sound_cues(*g, g->events(), step);
+    REQUIRE(count(step, "door_locked") == 1);
+    const SoundCue& locked = *find(step, "door_locked");
+    CHECK(locked.positional);
+    CHECK(locked.entity == 12);
+    CHECK(locked.position.z == doctest::Approx(-30.0f));
+
+    REQUIRE(g->complete_objective("clear_hall"));
+    sound_cues(*g, g->events(), step);
+    REQUIRE(count(step, "objective_complete") == 1);
+    CHECK_FALSE(find(step, "objective_complete")->positional);
+    CHECK(find(step, "objective_complete")->priority == SoundPriority::Critical);
 }
 
 TEST_CASE("every event sound is a name of the sound list, and cues are deterministic") {

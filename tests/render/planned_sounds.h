@@ -36,7 +36,10 @@ inline const std::vector<std::string>& planned_one_shots() {
                                                    "impact",
                                                    "ui_hover",
                                                    "ui_click",
-                                                   "win_sting"};
+                                                   "win_sting",
+                                                   "door_locked",
+                                                   "objective_complete",
+                                                   "message_shown"};
     return names;
 }
 

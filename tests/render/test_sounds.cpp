@@ -134,6 +134,12 @@ double centroid(const std::vector<double>& x, std::size_t from = 0, std::size_t 
     return total > 0.0 ? weighted / total : 0.0;
 }
 
+// The frequency of the strongest bin in samples [from, to): the pitch of a clear note.
+double dominant_hz(const std::vector<double>& x, std::size_t from, std::size_t to) {
+    const auto power = power_spectrum(x, from, to);
+    return bin_hz(static_cast<std::size_t>(std::max_element(power.begin() + 1, power.end()) - power.begin()));
+}
+
 // Share of the power below `hz` in samples [from, to).
 double low_share(const std::vector<double>& x, double hz, std::size_t from = 0, std::size_t to = SIZE_MAX) {
     const auto power = power_spectrum(x, from, to);
@@ -229,7 +235,7 @@ TEST_CASE("every sound of the audio plan is committed as 48 kHz mono 16-bit PCM,
             CHECK(f.rate == 48000);
             CHECK(f.bits == 16);
         }
-    CHECK(ks::test::planned_one_shots().size() == 25);
+    CHECK(ks::test::planned_one_shots().size() == 28);
     CHECK(ks::test::planned_loops().size() == 7);
     CHECK(bytes < 6u * 1024u * 1024u);
 }
@@ -303,7 +309,7 @@ TEST_CASE("every sound differs from every other in spectrum, envelope or length"
         bands[name] = band_profile(s.x);
         envelopes[name] = envelope(s.x);
     }
-    REQUIRE(list.size() == 32 - ks::test::designer_sounds().size());
+    REQUIRE(list.size() == 35 - ks::test::designer_sounds().size());
     for (std::size_t i = 0; i < list.size(); ++i)
         for (std::size_t j = i + 1; j < list.size(); ++j) {
             const Sound &a = *list[i], &b = *list[j];
@@ -349,6 +355,19 @@ TEST_CASE("the sounds keep the relations of their design") {
     if (ours({"robot_alert"})) { // it rises: the second chirp is higher than the first
         const auto& alert = sound("robot_alert").x;
         CHECK(centroid(alert, 0, 5000) < centroid(alert, 8000, 15000));
+    }
+    if (ours({"door_locked", "door_open"})) { // the refusal is short and low: a buzz, not a slide
+        CHECK(sound("door_locked").seconds() < 0.6 * sound("door_open").seconds());
+        CHECK(centroid(sound("door_locked").x) < 2500.0);
+    }
+    if (ours({"objective_complete", "win_sting"})) { // good news that rises, smaller than the win
+        const auto& done = sound("objective_complete").x;
+        CHECK(dominant_hz(done, 0, 5000) * 1.3 < dominant_hz(done, 7000, 14000));
+        CHECK(sound("objective_complete").seconds() < 0.6 * sound("win_sting").seconds());
+    }
+    if (ours({"message_shown", "objective_complete", "ui_click"})) { // a chirp: brief, between UI and news
+        CHECK(sound("message_shown").seconds() < sound("objective_complete").seconds());
+        CHECK(sound("message_shown").seconds() > sound("ui_click").seconds());
     }
     if (ours({"player_death"})) { // it falls
         const auto& death = sound("player_death").x;

@@ -1,0 +1,227 @@
+// One frame of the game app: the keys it handles itself (Esc, M, the Dojo's), the scene, the HUD over the
+// world and the current screen's menu, and what each menu choice does.
+#include "game_app_internal.h"
+
+#include <cstdio>
+
+namespace ks::runtime {
+
+// The listener is the camera the frame was drawn with; the engine's update (occlusion, gains) runs once.
+void GameApp::update_audio(const shell::FrameInfo& info) {
+    if (!audio_) return;
+    bool updated = false;
+    if (session_ && session_->sounds && session_->view && screen_ != Screen::Loading) {
+        const geometry::Camera& cam = session_->view->camera();
+        session_->sounds->update(*session_->game, {cam.position, cam.forward(), cam.up()},
+                                 static_cast<float>(info.frame_dt));
+        updated = true;
+    }
+    audio_->end_frame(info.frame_dt, updated);
+}
+
+void GameApp::handle_keys() {
+    GLFWwindow* w = shell_.window();
+    InputState& keys = events_.state();
+    const bool esc_pressed = keys.take_press(GLFW_KEY_ESCAPE);
+    if (!interactive()) return;
+    if (keys.take_press(GLFW_KEY_M)) { // mute from anywhere, remembered
+        options_.muted = !options_.muted;
+        options_dirty_ = true;
+        save_options_now();
+        if (audio_) audio_->apply_options(options_);
+    }
+    // Losing the focus pauses (the mouse is no longer ours); a script's input does not depend on it.
+    const bool focus_lost = !scripted_ && !glfwGetWindowAttrib(w, GLFW_FOCUSED);
+    if (screen_ == Screen::Playing && (esc_pressed || focus_lost)) {
+        pause();
+        return;
+    }
+    if (esc_pressed) {
+        if (screen_ == Screen::Paused)
+            resume();
+        else if (screen_ == Screen::HowTo || screen_ == Screen::Credits || screen_ == Screen::Options) {
+            save_options_now();
+            screen_ = return_to_;
+        }
+    }
+    if (screen_ == Screen::Playing && session_ && session_->dojo_controller) {
+        for (int k = 0; k <= 9; ++k)
+            if (keys.take_press(GLFW_KEY_0 + k)) session_->dojo_controller->press(static_cast<char>('0' + k));
+        if (keys.take_press(GLFW_KEY_TAB)) toggle_dojo_picking();
+    }
+}
+
+void GameApp::render(const shell::FrameInfo& info) {
+    if (scripted_) run_script(info.frame_index);
+    step_loader();
+    handle_keys();
+    budget_.new_frame(); // the next frame's fixed steps come after this call
+    if (!session_ || !session_->view || screen_ == Screen::Loading) {
+        // Nothing loaded yet: an empty scene clears to the fog colour behind the loading panel.
+        render::SceneFrame empty;
+        empty.width = info.width;
+        empty.height = info.height;
+        empty.environment.fog_color = Vec3(0.02f, 0.025f, 0.04f);
+        empty.instances = &no_instances_;
+        empty.lights = &no_lights_;
+        stats_ = renderer_.render(empty);
+        update_audio(info);
+        return;
+    }
+    render::SceneFrame frame;
+    frame.width = info.width;
+    frame.height = info.height;
+    const DojoDummy* dummy = session_->dojo_controller ? &session_->dummy : nullptr;
+    session_->view->fill(*session_->game, static_cast<float>(info.alpha), options_.fov_degrees, dummy, frame);
+    if (screen_ != Screen::Playing && screen_ != Screen::Paused && screen_ != Screen::Dead)
+        frame.view_model = nullptr;
+    stats_ = renderer_.render(frame);
+    update_audio(info);
+}
+
+void GameApp::imgui(const shell::FrameInfo& info) {
+    const float w = static_cast<float>(info.width), h = static_cast<float>(info.height);
+    ImGuiIO& io = ImGui::GetIO();
+    ui::begin_frame();
+    if (input_.captured())
+        io.ConfigFlags |= ImGuiConfigFlags_NoMouse;
+    else
+        io.ConfigFlags &= ~ImGuiConfigFlags_NoMouse;
+    draw_world_overlay(w, h);
+    apply_menu_action(draw_screen(w, h));
+    if (audio_ && screen_ != Screen::Playing) audio_->menu_sounds(ui::buttons_drawn());
+    write_status(info);
+    if (!shell_.screenshot_mode() && screen_ == Screen::Playing) {
+        char text[128];
+        std::snprintf(text, sizeof(text), "%.1f ms  %d draws", info.frame_dt * 1000.0, stats_.draw_calls);
+        ImGui::GetForegroundDrawList()->AddText(shell_.fonts().mono, 0.0f, ImVec2(10.0f, h - 22.0f),
+                                                IM_COL32(255, 255, 255, 140), text);
+    }
+}
+
+// The HUD, hit marker and Dojo legend over the world while it is on screen.
+void GameApp::draw_world_overlay(float w, float h) {
+    const auto& fonts = shell_.fonts();
+    const bool world_visible =
+        session_ && session_->game &&
+        (screen_ == Screen::Playing || screen_ == Screen::Paused || screen_ == Screen::Dead);
+    if (world_visible) {
+        const auto& p = session_->game->player();
+        const auto& st = session_->game->settings();
+        shell::HudState hud;
+        hud.health = p.health;
+        hud.health_max = st.max_health;
+        hud.shield = p.shield;
+        hud.shield_max = st.max_shield;
+        hud.ammo = static_cast<float>(p.ammo);
+        hud.ammo_max = static_cast<float>(st.max_ammo);
+        const auto& caption = session_->game->caption();
+        if (caption.visible() && screen_ == Screen::Playing) hud.caption = caption.text();
+        hud.damage_flash = std::clamp(p.damage_flash / 0.4f, 0.0f, 1.0f);
+        hud.crosshair = screen_ == Screen::Playing && session_->game->phase() == game::Phase::Playing;
+        ImDrawList* fg = ImGui::GetForegroundDrawList();
+        if (screen_ == Screen::Playing) {
+            shell::draw_hud(fg, hud, shell::HudFonts{fonts.hud}, w, h);
+            draw_hit_marker(fg, std::clamp(p.hit_marker / 0.3f, 0.0f, 1.0f), w, h);
+            std::array<feedback::DamageArc, feedback::Feedback::kMaxArcs> arcs;
+            const std::size_t n = session_->view->feedback().damage_arcs(p.yaw, p.eye(), arcs);
+            draw_damage_arcs(fg, std::span(arcs.data(), n), w, h);
+        }
+        if (session_->dojo_controller && screen_ == Screen::Playing) {
+            const int clicked = dojo_legend(*session_->dojo_controller, dojo_picking_, fonts, w, h);
+            if (clicked >= 0)
+                session_->dojo_controller->play_entry(static_cast<std::size_t>(clicked));
+            else if (dojo_picking_ && ImGui::IsMouseClicked(0) && !ImGui::GetIO().WantCaptureMouse)
+                enter_play(); // a click in the world: back to looking around
+        }
+    }
+}
+
+// The current screen's menu or panel; returns what the player chose on it.
+MenuAction GameApp::draw_screen(float w, float h) {
+    const auto& fonts = shell_.fonts();
+    const ImGuiIO& io = ImGui::GetIO();
+    MenuAction action = MenuAction::None;
+    switch (screen_) {
+    case Screen::Loading:
+        loading_screen(loader_.fraction(), loader_.label(), fonts, w, h);
+        break;
+    case Screen::Menu:
+        action = main_menu(error_, fonts, w, h);
+        break;
+    case Screen::HowTo:
+        action = how_to_play(fonts, w, h);
+        break;
+    case Screen::Credits:
+        action = credits(fonts, w, h);
+        break;
+    case Screen::Options: {
+        bool changed = false;
+        action = options_panel(options_, changed, fonts, w, h);
+        options_dirty_ |= changed;
+        if (changed) apply_render_options();
+        if (changed && audio_) audio_->apply_options(options_);
+        break;
+    }
+    case Screen::Paused:
+        action = pause_menu(fonts, w, h);
+        // Clicking back into the game (outside the panel) resumes, as the reference's pointer lock.
+        if (action == MenuAction::None && interactive() && ImGui::IsMouseClicked(0) && !io.WantCaptureMouse)
+            action = MenuAction::Resume;
+        break;
+    case Screen::Dead:
+        if (session_ && session_->game && session_->game->death_camera().menu_ready)
+            action = death_menu(fonts, w, h);
+        break;
+    case Screen::Won:
+        action = win_menu(win_, fonts, w, h);
+        break;
+    case Screen::Playing:
+        break;
+    }
+    return action;
+}
+
+void GameApp::apply_menu_action(MenuAction action) {
+    switch (action) {
+    case MenuAction::Play:
+        if (session_ && !session_->dojo && session_->play_seconds == 0.0 &&
+            session_->game->phase() == game::Phase::Playing)
+            enter_play();
+        else
+            load(level_path_, false, Screen::Playing);
+        break;
+    case MenuAction::Dojo:
+        load(paths::level("dojo.json"), true, Screen::Playing);
+        break;
+    case MenuAction::HowTo:
+        open_sub(Screen::HowTo);
+        break;
+    case MenuAction::Credits:
+        open_sub(Screen::Credits);
+        break;
+    case MenuAction::Options:
+        open_sub(Screen::Options);
+        break;
+    case MenuAction::Back:
+        save_options_now();
+        screen_ = return_to_;
+        break;
+    case MenuAction::Quit:
+        quit_ = true;
+        break;
+    case MenuAction::Resume:
+        resume();
+        break;
+    case MenuAction::MainMenu:
+        to_menu();
+        break;
+    case MenuAction::Retry:
+        retry();
+        break;
+    case MenuAction::None:
+        break;
+    }
+}
+
+} // namespace ks::runtime

@@ -1,0 +1,63 @@
+// The game app's command-line vocabulary (options, flags, --screen names), the screens' names in the status
+// file, and --warp's number list.
+#include "game_app_internal.h"
+
+#include <sstream>
+
+namespace ks::runtime {
+
+const std::vector<std::string>& game_app_options() {
+    static const std::vector<std::string> names = {
+        "level", "dojo", "screen", "warp",        "dojo-key",     "dojo-time", "seed",
+        "msaa",  "help", "fire",   "status-file", "input-script", "audio-out"};
+    return names;
+}
+const std::vector<std::string>& game_app_flags() {
+    static const std::vector<std::string> flags = {"dojo", "help", "fire"};
+    return flags;
+}
+const std::vector<std::string>& game_app_screens() {
+    static const std::vector<std::string> screens = {"loading", "menu",  "howto", "credits", "options",
+                                                     "pause",   "death", "win",   "play",    "dojo"};
+    return screens;
+}
+
+const char* screen_name(Screen s) {
+    switch (s) {
+    case Screen::Loading:
+        return "loading";
+    case Screen::Menu:
+        return "menu";
+    case Screen::HowTo:
+        return "howto";
+    case Screen::Credits:
+        return "credits";
+    case Screen::Options:
+        return "options";
+    case Screen::Playing:
+        return "playing";
+    case Screen::Paused:
+        return "paused";
+    case Screen::Dead:
+        return "dead";
+    case Screen::Won:
+        return "won";
+    }
+    return "?";
+}
+
+bool parse_floats(const std::string& text, float* out, int count) {
+    std::stringstream ss(text);
+    std::string item;
+    int n = 0;
+    while (std::getline(ss, item, ',')) {
+        if (n >= count) return false;
+        char* end = nullptr;
+        out[n] = std::strtof(item.c_str(), &end);
+        if (end == item.c_str() || *end != '\0' || !is_finite(out[n])) return false;
+        ++n;
+    }
+    return n == count;
+}
+
+} // namespace ks::runtime
