@@ -187,6 +187,9 @@ bool Autoplay::open_door_on_path(const Game& game, Input& in) {
             in.interact = true;
             interact_wait_ = 0.3f;
         }
+        // E would act on something nearer (a floor lamp beside the door): step up to the door.
+        if (game.interact_target() >= 0 && game.interact_target() != d.entity_id && !d.opening)
+            in.move_forward = std::abs(yaw_error) < 0.5f ? 1.0f : 0.0f;
         return true;
     }
     return false;

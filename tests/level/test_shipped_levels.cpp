@@ -153,3 +153,34 @@ TEST_CASE("dojo.json loads cleanly, matches the reference and re-saves byte-iden
         if (const auto* floor = e.try_as<FloorProps>()) CHECK_FALSE(floor->ceiling);
     }
 }
+
+TEST_CASE(
+    "lockdown.json loads with no error or warning (format and logic checks) and re-saves byte-identically") {
+    // Built by the editor from levels/source/lockdown.kss (tests/editor/test_lockdown_script.cpp rebuilds
+    // it).
+    const Level level = load_clean("lockdown.json");
+    CHECK(save_level_string(level) == ks::test::read_file(shipped("lockdown.json")));
+    CHECK(level.name == "Lockdown");
+
+    auto counts = count_types(level);
+    CHECK(counts[EntityType::Trigger] >= 1);
+    CHECK(counts[EntityType::Spawner] >= 1);
+    CHECK(counts[EntityType::Message] >= 1);
+    CHECK(counts[EntityType::ControlPanel] == 1);
+    CHECK(counts[EntityType::Stair] >= 1);
+    CHECK(counts[EntityType::GasCylinder] >= 1);
+    CHECK(level.objectives.size() >= 2);
+    int locked = 0;
+    for (const Entity& e : level.entities) {
+        CHECK_MESSAGE(!e.name.empty(), "entity ", e.id, " has no name");
+        if (const auto* door = e.try_as<DoorProps>()) locked += door->locked;
+        if (const auto* wall = e.try_as<WallProps>()) CHECK(wall->size.y <= 16.0f); // main.json's storey
+        if (e.try_as<PickupProps>()) CHECK_MESSAGE(on_floor(level, e.position), e.name);
+        if (const auto* stair = e.try_as<StairProps>()) {
+            const ks::Vec3 top = e.position + forward_of_yaw(e.rotation.x) * (stair->size.z / 2) +
+                                 ks::Vec3(0, stair->size.y, 0);
+            CHECK_MESSAGE(on_floor(level, top), e.name, " ends at (", top.x, ", ", top.y, ", ", top.z, ")");
+        }
+    }
+    CHECK(locked >= 1);
+}
