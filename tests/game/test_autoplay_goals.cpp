@@ -256,3 +256,20 @@ TEST_CASE("a health pickup at full health cannot be taken, so it is no goal unti
     check_goal(*p.bot, BotGoalKind::Pickup, medkit_id);
     CHECK(play(p, 10.0));
 }
+
+TEST_CASE("a floor lamp beside a door that E would reach first: the bot steps up to the door and opens it") {
+    // Found building levels/lockdown.json: in the door's sensor, 8 from the door, E's target was the lamp
+    // 5 away, so the bot stood waiting to face a door it could not use.
+    int door = 0, panel = 0;
+    auto lv = divided_level(false, door, panel);
+    lv.add(level::EntityType::FloorLight, Vec3(-5, 0, 5), "Lamp beside the door").rotation.x = -30.0f;
+    auto p = start(lv);
+    check_goal(*p.bot, BotGoalKind::Use, panel);
+    int lamp_toggles = 0;
+    for (int i = 0; i < 120 * 15 && p.game->phase() == Phase::Playing; ++i) {
+        p.game->step(p.bot->decide(*p.game));
+        lamp_toggles += count_events(*p.game, EventType::LightToggled);
+    }
+    CHECK(p.game->phase() == Phase::Won);
+    CHECK(lamp_toggles == 0);
+}
