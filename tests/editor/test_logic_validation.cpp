@@ -143,6 +143,9 @@ TEST_CASE("logic_loop: two doors toggling each other with no delay; the fix dela
     fix_in_one_step(ed, Rule::LogicLoop);
     CHECK(ed.level().find(kDoor)->links[0].delay == kLoopBreakDelay);
     CHECK(ed.level().find(kDoor)->links[0].action == "toggle");
+    REQUIRE(ed.undo());
+    run_ok(ed, "expect issue logic_loop 9\nfix logic_loop\nexpect no_issue logic_loop\n"
+               "expect link 9 1 on_open Other toggle delay 0.1\n");
 }
 
 TEST_CASE("objective: one nothing can complete gets an on_use -> complete link on the control panel") {
