@@ -4,6 +4,7 @@
 #include "core/cli.h"
 #include "core/log.h"
 #include "game/headless.h"
+#include "game/headless_campaign.h"
 #include "shell/app_shell.h"
 #include "soundscape/mix_recorder.h"
 #include "views/render_view.h"
@@ -27,7 +28,37 @@ void print_headless_help() {
         "  --stats-json F    write the outcome, time, kills, damage and state hash as JSON (- = stdout)\n"
         "  --audio-out F.wav render the run's sound (heard at the player) to a 48 kHz stereo WAV, plus\n"
         "                    2 s after the end; the same run writes the same file\n"
-        "exit code 0 when the run completed (whatever its outcome), 2 on bad options or a bad level\n");
+        "exit code 0 when the run completed (whatever its outcome), 2 on bad options or a bad level\n"
+        "\n"
+        "usage: killswitch --headless --campaign FILE [--seed N] [--seconds S]\n"
+        "  the bot plays every level of the campaign in order (each with the seed and time limit) and stops\n"
+        "  at the first level it does not win; one line per level, then the campaign's\n"
+        "exit code 0 when every level was won, 1 naming the level lost, 2 on bad options or a bad file\n");
+}
+
+// --headless --campaign: every level in order with the bot (CI proves the campaign can be won).
+int run_campaign(const ks::CommandLine& cl) {
+    using namespace ks;
+    if (auto unknown = cl.unknown(game::campaign_run_option_names()); !unknown.empty()) {
+        log::error("unknown option ", unknown.front(),
+                   " for --headless --campaign (see killswitch --headless --help)");
+        return 2;
+    }
+    auto options = game::parse_campaign_run_options(cl);
+    if (!options) {
+        log::error(options.error().str());
+        return 2;
+    }
+    auto result = game::run_headless_campaign(*options, [](const game::CampaignLevelRun& run) {
+        std::printf("%s\n", run.summary().c_str());
+        std::fflush(stdout);
+    });
+    if (!result) {
+        log::error(result.error().str());
+        return 2;
+    }
+    std::printf("%s\n", result->summary().c_str());
+    return result->won() ? 0 : 1;
 }
 
 // --audio-out with --headless: a loopback mix of the run, heard at the player, then a 2 s tail.
@@ -68,6 +99,7 @@ int main(int argc, char** argv) {
             print_headless_help();
             return 0;
         }
+        if (cl->has("campaign")) return run_campaign(*cl);
         std::vector<std::string> headless_known = game::headless_option_names();
         headless_known.push_back("audio-out");
         if (auto unknown = cl->unknown(headless_known); !unknown.empty()) {

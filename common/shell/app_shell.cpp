@@ -40,6 +40,10 @@ Result<ShellConfig> shell_config_from_command_line(const CommandLine& cl, ShellC
 }
 
 namespace {
+// Latin-1 and the punctuation menus and level texts use (dashes, quotes, the ellipsis of "Custom level…",
+// bullets), arrows and check marks: DejaVu has them all; ImGui's default range stops at U+00FF.
+const ImWchar kGlyphRanges[] = {0x0020, 0x00FF, 0x2010, 0x2027, 0x2190, 0x2193, 0x2713, 0x2714, 0};
+
 ImFont* load_font(const char* file, float size) {
     std::string path = paths::asset(std::string("fonts/") + file).string();
     ImGuiIO& io = ImGui::GetIO();
@@ -48,7 +52,7 @@ ImFont* load_font(const char* file, float size) {
         ImFontConfig cfg;
         cfg.OversampleH = 2;
         cfg.OversampleV = 2;
-        if (ImFont* font = io.Fonts->AddFontFromFileTTF(path.c_str(), size, &cfg)) return font;
+        if (ImFont* font = io.Fonts->AddFontFromFileTTF(path.c_str(), size, &cfg, kGlyphRanges)) return font;
     }
     log::warn(path, ": font missing or unreadable; using ImGui's built-in font (reinstall assets/fonts/)");
     ImFontConfig cfg;

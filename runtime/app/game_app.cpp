@@ -7,11 +7,13 @@
 
 namespace ks::runtime {
 
-void GameApp::load(const std::filesystem::path& path, bool dojo, Screen then) {
+void GameApp::load(const std::filesystem::path& path, bool dojo, Screen then, Screen on_failure) {
     pending_ = std::make_unique<Session>();
+    pending_->file = path;
     pending_->dojo = dojo;
     loader_ = Loader{};
     loader_.then = then;
+    loader_.on_failure = on_failure;
     Session* s = pending_.get();
     loader_.steps.push_back({"Reading " + path.filename().string(), [s, path]() -> Result<void> {
                                  level::LoadReport report;
@@ -72,7 +74,8 @@ void GameApp::step_loader() {
         error_ = "Could not load: " + result.error().str();
         log::error(result.error().str());
         pending_.reset();
-        screen_ = session_ ? Screen::Menu : Screen::Menu;
+        screen_ = loader_.on_failure;
+        if (screen_ == Screen::Menu) campaign_.reset(); // a campaign whose level fails cannot go on
         loader_ = Loader{};
         return;
     }
@@ -147,16 +150,18 @@ void GameApp::resume() {
 
 void GameApp::to_menu() {
     input_.release(shell_.window(), events_.state());
+    campaign_.reset();
     // The menu shows the main level behind it; a finished or Dojo session is replaced by a fresh main one.
     if (!session_ || session_->dojo || session_->game->phase() != game::Phase::Playing ||
-        session_->play_seconds > 0.0)
+        session_->play_seconds > 0.0 || session_->file != level_path_)
         load(level_path_, false, Screen::Menu);
     else
         screen_ = Screen::Menu;
 }
 
+// The same level again (a campaign stays on it).
 void GameApp::retry() {
-    load(level_path_, session_ && session_->dojo, Screen::Playing);
+    load(session_ ? session_->file : level_path_, session_ && session_->dojo, Screen::Playing);
 }
 
 // The options a slow machine needs, passed to the renderer (at start and whenever the panel changes them).
@@ -189,9 +194,8 @@ void GameApp::fixed_update(double dt) {
         input_.release(shell_.window(), events_.state());
     }
     if (g.phase() == game::Phase::Won && screen_ == Screen::Playing) {
-        win_ = {session_->play_seconds, g.robots_killed(), static_cast<int>(g.robots().size())};
-        screen_ = Screen::Won;
         input_.release(shell_.window(), events_.state());
+        level_won();
     }
 }
 
@@ -200,6 +204,7 @@ void GameApp::advance(const game::Input& in, float dt) {
     session_->view->before_step(g);
     g.step(in);
     session_->view->after_step(g, dt);
+    session_->objective_flash.after_step(g, dt);
     if (session_->sounds) session_->sounds->after_step(g);
 }
 

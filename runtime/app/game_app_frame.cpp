@@ -122,6 +122,7 @@ void GameApp::draw_world_overlay(float w, float h) {
         ImDrawList* fg = ImGui::GetForegroundDrawList();
         if (screen_ == Screen::Playing) {
             shell::draw_hud(fg, hud, shell::HudFonts{fonts.hud}, w, h);
+            if (!session_->dojo) draw_logic_hud(fg, *session_->game, session_->objective_flash, fonts, w, h);
             draw_hit_marker(fg, std::clamp(p.hit_marker / 0.3f, 0.0f, 1.0f), w, h);
             std::array<feedback::DamageArc, feedback::Feedback::kMaxArcs> arcs;
             const std::size_t n = session_->view->feedback().damage_arcs(p.yaw, p.eye(), arcs);
@@ -176,6 +177,15 @@ MenuAction GameApp::draw_screen(float w, float h) {
     case Screen::Won:
         action = win_menu(win_, fonts, w, h);
         break;
+    case Screen::Summary:
+        if (campaign_) action = summary_screen(*campaign_, fonts, w, h);
+        break;
+    case Screen::CampaignComplete:
+        if (campaign_) action = campaign_complete_screen(*campaign_, fonts, w, h);
+        break;
+    case Screen::CustomLevels:
+        action = custom_levels_screen(custom_levels_, picked_level_, fonts, w, h);
+        break;
     case Screen::Playing:
         break;
     }
@@ -185,11 +195,24 @@ MenuAction GameApp::draw_screen(float w, float h) {
 void GameApp::apply_menu_action(MenuAction action) {
     switch (action) {
     case MenuAction::Play:
-        if (session_ && !session_->dojo && session_->play_seconds == 0.0 &&
+        if (session_ && !session_->dojo && session_->play_seconds == 0.0 && session_->file == level_path_ &&
             session_->game->phase() == game::Phase::Playing)
             enter_play();
         else
             load(level_path_, false, Screen::Playing);
+        break;
+    case MenuAction::Campaign:
+        if (auto started = start_campaign(); !started)
+            error_ = "Could not start the campaign: " + started.error().str();
+        break;
+    case MenuAction::CustomLevels:
+        open_custom_levels();
+        break;
+    case MenuAction::PlayCustom:
+        if (picked_level_) play_custom(*picked_level_);
+        break;
+    case MenuAction::NextLevel:
+        next_level();
         break;
     case MenuAction::Dojo:
         load(paths::level("dojo.json"), true, Screen::Playing);

@@ -1,13 +1,16 @@
 #pragma once
 // The GameApp class behind run_game_app (game_app.h): the screens' state machine, the loaded session and
 // the automation hooks. Shared by game_app.cpp (the state machine), game_app_frame.cpp (one frame: keys,
-// scene, HUD, menus), game_app_start.cpp (the automation's first screen), game_app_names.cpp (option and
+// scene, HUD, menus), game_app_start.cpp (the automation's first screen), game_app_campaign.cpp (the
+// campaign and the custom level list), game_app_names.cpp (option and
 // screen names), game_script.cpp (--input-script), game_status.cpp (--status-file) and run_game_app.cpp (the
 // command line); not for other code.
 #include "game_app.h"
 
 #include "anim/dojo.h"
 #include "app_audio.h"
+#include "campaign_progress.h"
+#include "campaign_screens.h"
 #include "core/files.h"
 #include "core/log.h"
 #include "core/paths.h"
@@ -17,6 +20,7 @@
 #include "input_events.h"
 #include "input_script.h"
 #include "level/level_io.h"
+#include "logic_hud.h"
 #include "menu_style.h"
 #include "options.h"
 #include "player_input.h"
@@ -39,7 +43,20 @@
 
 namespace ks::runtime {
 
-enum class Screen { Loading, Menu, HowTo, Credits, Options, Playing, Paused, Dead, Won };
+enum class Screen {
+    Loading,
+    Menu,
+    HowTo,
+    Credits,
+    Options,
+    CustomLevels,
+    Playing,
+    Paused,
+    Dead,
+    Won,              // a single level won (Play, a custom level)
+    Summary,          // a campaign level won, more to come
+    CampaignComplete, // the campaign's last level won
+};
 
 const char* screen_name(Screen s);
 
@@ -49,6 +66,7 @@ constexpr int kMaxStepsPerFrame = 30;
 
 // One loaded level with its game and view. The Dojo's controller borrows the game's clips, so it goes first.
 struct Session {
+    std::filesystem::path file; // the level file (Retry loads it again)
     level::Level level;
     bool dojo = false;
     std::unique_ptr<game::Game> game;
@@ -56,6 +74,7 @@ struct Session {
     std::unique_ptr<soundscape::Soundscape> sounds; // null when the app has no audio engine
     std::optional<anim::DojoController> dojo_controller;
     DojoDummy dummy;
+    ObjectiveFlash objective_flash;
     double play_seconds = 0.0;
     ~Session() { dojo_controller.reset(); }
 };
@@ -69,6 +88,7 @@ struct Loader {
     std::vector<Step> steps;
     std::size_t next = 0;
     Screen then = Screen::Menu;
+    Screen on_failure = Screen::Menu; // where a file that fails to load sends the player (with the error)
     float fraction() const { return steps.empty() ? 1.0f : static_cast<float>(next) / steps.size(); }
     bool done() const { return next >= steps.size(); }
     std::string label() const { return done() ? "Ready" : steps[next].label; }
@@ -100,12 +120,15 @@ class GameApp {
         std::vector<ScriptEvent> script;   // --input-script
         bool scripted = false;
         std::filesystem::path audio_out; // --audio-out: record the mix to this WAV instead of playing it
+        std::filesystem::path campaign;  // --campaign: start this campaign (else levels/campaign.json)
+        bool start_campaign = false;     // --campaign given: play it from its first level at once
     };
     Result<void> start(const Automation& a);
+    Result<void> set_up_scenario(const Automation& a, const std::string& screen);
     int run();
 
   private:
-    void load(const std::filesystem::path& path, bool dojo, Screen then);
+    void load(const std::filesystem::path& path, bool dojo, Screen then, Screen on_failure = Screen::Menu);
     Result<void> finish_loading_now();
     void step_loader();
     void fixed_update(double dt);
@@ -124,6 +147,15 @@ class GameApp {
     void resume();
     void to_menu();
     void retry();
+    // The campaign and the custom level list (game_app_campaign.cpp).
+    Result<void> start_campaign();
+    void level_won();
+    void next_level();
+    void open_custom_levels();
+    void play_custom(const level::LevelFileEntry& entry);
+    LevelResult result_now() const;
+    // The automation's way to win: stand at a control panel, face it, press E (--screen win, summary).
+    Result<void> win_at_panel();
     void open_sub(Screen s) {
         return_to_ = screen_;
         screen_ = s;
@@ -134,6 +166,8 @@ class GameApp {
     void apply_warp();
     void run_script(long long frame);
     void write_status(const shell::FrameInfo& info);
+    void write_logic_status(std::string& s) const;
+    void write_campaign_status(std::string& s) const;
     // Real input drives the app: not a screenshot run, or a screenshot run driven by --input-script.
     bool interactive() const { return !shell_.screenshot_mode() || scripted_; }
 
@@ -165,7 +199,11 @@ class GameApp {
     bool quit_ = false;
     bool pause_requested_ = false;
     render::FrameStats stats_;
-    WinStats win_;
+    LevelResult win_; // the level just won (the win screen; the campaign keeps its own)
+    std::filesystem::path campaign_path_;
+    std::optional<CampaignProgress> campaign_;            // while a campaign is played
+    std::vector<LevelGroup> custom_levels_;               // the custom level list, scanned when it opens
+    const level::LevelFileEntry* picked_level_ = nullptr; // in custom_levels_: the one clicked this frame
     std::vector<render::MeshInstance> no_instances_;
     std::vector<render::Light> no_lights_;
 };

@@ -9,7 +9,7 @@ namespace ks::runtime {
 const std::vector<std::string>& game_app_options() {
     static const std::vector<std::string> names = {
         "level", "dojo", "screen", "warp",        "dojo-key",     "dojo-time", "seed",
-        "msaa",  "help", "fire",   "status-file", "input-script", "audio-out"};
+        "msaa",  "help", "fire",   "status-file", "input-script", "audio-out", "campaign"};
     return names;
 }
 const std::vector<std::string>& game_app_flags() {
@@ -17,8 +17,9 @@ const std::vector<std::string>& game_app_flags() {
     return flags;
 }
 const std::vector<std::string>& game_app_screens() {
-    static const std::vector<std::string> screens = {"loading", "menu",  "howto", "credits", "options",
-                                                     "pause",   "death", "win",   "play",    "dojo"};
+    static const std::vector<std::string> screens = {
+        "loading", "menu", "howto", "credits", "options",           "pause",        "death",
+        "win",     "play", "dojo",  "summary", "campaign-complete", "custom-levels"};
     return screens;
 }
 
@@ -42,6 +43,12 @@ const char* screen_name(Screen s) {
         return "dead";
     case Screen::Won:
         return "won";
+    case Screen::Summary:
+        return "summary";
+    case Screen::CampaignComplete:
+        return "campaign_complete";
+    case Screen::CustomLevels:
+        return "custom_levels";
     }
     return "?";
 }

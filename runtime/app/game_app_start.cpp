@@ -1,8 +1,14 @@
-// GameApp::start: the first screen and the scenario the command line asks for (--screen, --warp, --fire,
-// --dojo-key, --dojo-time), set up before the first frame for tests and screenshots.
+// GameApp::start: the first screen and the scenario the command line asks for (--screen, --campaign, --warp,
+// --fire, --dojo-key, --dojo-time), set up before the first frame for tests and screenshots.
 #include "game_app_internal.h"
 
 namespace ks::runtime {
+
+namespace {
+bool campaign_screen(const std::string& screen) {
+    return screen == "summary" || screen == "campaign-complete";
+}
+} // namespace
 
 Result<void> GameApp::start(const Automation& a) {
     auto opened = AppAudio::open(a.audio_out);
@@ -12,14 +18,23 @@ Result<void> GameApp::start(const Automation& a) {
     status_path_ = a.status_file;
     script_ = a.script;
     scripted_ = a.scripted;
+    campaign_path_ = a.campaign.empty() ? paths::level("campaign.json") : a.campaign;
     // A screenshot without --screen shows the game (what the render-only view used to show, now playable);
     // a scripted screenshot run starts where a player does, at the loading screen.
     const std::string screen =
         a.screen.empty() && shell_.screenshot_mode() && !a.scripted ? "play" : a.screen;
     const bool dojo = a.dojo || screen == "dojo";
-    const bool wants_world =
-        screen == "play" || screen == "pause" || screen == "death" || screen == "win" || dojo;
-    load(dojo ? paths::level("dojo.json") : level_path_, dojo, wants_world ? Screen::Playing : Screen::Menu);
+    if (!dojo && (a.start_campaign || campaign_screen(screen))) {
+        auto campaign = level::load_campaign(campaign_path_);
+        if (!campaign) return campaign.error();
+        campaign_.emplace(std::move(*campaign), campaign_path_);
+    }
+    const bool wants_world = screen == "play" || screen == "pause" || screen == "death" || screen == "win" ||
+                             campaign_screen(screen) || dojo || (a.start_campaign && screen.empty());
+    const std::filesystem::path first = dojo        ? paths::level("dojo.json")
+                                        : campaign_ ? campaign_->current_path()
+                                                    : level_path_;
+    load(first, dojo, wants_world ? Screen::Playing : Screen::Menu);
     if (screen == "loading") {
         // Stop half way: the bar shows progress and the label the step in hand.
         for (int i = 0; i < 6; ++i) step_loader();
@@ -31,7 +46,12 @@ Result<void> GameApp::start(const Automation& a) {
         return {};
     }
     if (auto done = finish_loading_now(); !done) return done;
-    if (!session_) return Error("loading failed", Location(level_path_.string()));
+    if (!session_) return Error("loading failed", Location(first.string()));
+    return set_up_scenario(a, screen);
+}
+
+// After the first level has loaded: the player's place and shot, the Dojo's clip, then the screen asked for.
+Result<void> GameApp::set_up_scenario(const Automation& a, const std::string& screen) {
     auto& g = *session_->game;
     if (a.warp) {
         const auto& v = *a.warp;
@@ -63,6 +83,7 @@ Result<void> GameApp::start(const Automation& a) {
     if (screen == "howto") open_sub(Screen::HowTo);
     if (screen == "credits") open_sub(Screen::Credits);
     if (screen == "options") open_sub(Screen::Options);
+    if (screen == "custom-levels") open_custom_levels();
     if (screen == "pause") pause();
     if (screen == "death") {
         g.damage_player(1.0e6f);
@@ -72,29 +93,19 @@ Result<void> GameApp::start(const Automation& a) {
         }
         screen_ = Screen::Dead;
     }
-    if (screen == "win") {
-        // Win for real: stand in front of the control panel (trying each side), face it and press E.
-        for (const auto& panel : g.panels()) {
-            for (int side = 0; side < 4 && g.phase() != game::Phase::Won; ++side) {
-                const float a = panel.yaw + static_cast<float>(side) * kPi * 0.5f;
-                const Vec3 out(-std::sin(a), 0.0f, -std::cos(a)); // yaw 0 faces -z
-                const float reach = std::max(panel.size.x, panel.size.z) * 0.5f + 2.0f;
-                const Vec3 feet(panel.centre.x + out.x * reach, panel.centre.y - panel.size.y * 0.5f,
-                                panel.centre.z + out.z * reach);
-                g.teleport_player(feet, a + kPi, -0.3f); // turned round: facing the panel
-                for (int i = 0; i < 4 && g.phase() != game::Phase::Won; ++i) {
-                    game::Input in;
-                    in.interact = i == 3;
-                    advance(in, static_cast<float>(g.settings().step));
-                }
-            }
+    if (screen == "win" || campaign_screen(screen)) {
+        // Win for real, at the control panel; the campaign-complete screen wins every level in turn.
+        if (auto won = win_at_panel(); !won)
+            return Error("--screen " + screen + ": " + won.error().message, won.error().where,
+                         won.error().hint);
+        while (screen == "campaign-complete" && campaign_ && !campaign_->finished()) {
+            next_level();
+            if (auto done = finish_loading_now(); !done) return done;
+            if (auto won = win_at_panel(); !won)
+                return Error("--screen " + screen + ": " + won.error().message, won.error().where,
+                             won.error().hint);
         }
-        if (g.phase() != game::Phase::Won)
-            return Error("--screen win: could not reach a control panel in this level",
-                         Location(level_path_.string()),
-                         "use a level with a control panel (levels/main.json has one)");
-        win_ = {session_->play_seconds, g.robots_killed(), static_cast<int>(g.robots().size())};
-        screen_ = Screen::Won;
+        if (screen == "summary") screen_ = Screen::Summary; // also for a campaign of one level
     }
     return {};
 }

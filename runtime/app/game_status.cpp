@@ -51,6 +51,7 @@ void GameApp::write_status(const shell::FrameInfo& info) {
         add("shield %.1f", p.shield);
         add("ammo %d", p.ammo);
         add("shots %d", p.shots);
+        add("hits %d", p.hits);
         int alive = 0;
         for (const auto& r : g.robots()) alive += r.alive() ? 1 : 0;
         add("robots %d alive %d killed %d", static_cast<int>(g.robots().size()), alive, g.robots_killed());
@@ -61,6 +62,7 @@ void GameApp::write_status(const shell::FrameInfo& info) {
         for (const auto& c : g.cylinders())
             add("cylinder %d %s", c.entity_id, c.exploded ? "exploded" : "standing");
         add("caption %s", g.caption().visible() ? g.caption().text().c_str() : "-");
+        write_logic_status(s);
         if (session_->view) {
             add("camera_roll %.2f", degrees(session_->view->camera().roll));
             const auto& fb = session_->view->feedback();
@@ -83,6 +85,7 @@ void GameApp::write_status(const shell::FrameInfo& info) {
         }
         add("game_steps %lld", static_cast<long long>(g.steps()));
     }
+    write_campaign_status(s);
     add("dropped_steps %lld", budget_.dropped());
     if (s == status_last_) return;
     status_last_ = s;
@@ -92,6 +95,51 @@ void GameApp::write_status(const shell::FrameInfo& info) {
         log::warn(written.error().str(), " (--status-file: no more status written)");
         status_path_.clear();
     }
+}
+
+// What the HUD shows of the level logic: each objective's state, the message line and the banner.
+void GameApp::write_logic_status(std::string& s) const {
+    const game::Game& g = *session_->game;
+    const int current = g.logic().current_objective();
+    int index = 0;
+    for (const game::ObjectiveState& o : g.logic().objectives()) {
+        s += "objective " + std::to_string(index) + " " +
+             (o.completed        ? "done"
+              : index == current ? "current"
+                                 : "open") +
+             " " + o.id + " " + o.text + "\n";
+        ++index;
+    }
+    const game::ShownMessage& message = g.logic().message();
+    s += "message " + (message.visible() ? std::string(message.text) : std::string("-")) + "\n";
+    const ObjectiveFlash& flash = session_->objective_flash;
+    s += "objective_flash " + (flash.visible() ? flash.text() : std::string("-")) + "\n";
+    s += "level_file " + session_->file.string() + "\n";
+    s += "level_name " + session_->level.name + "\n";
+}
+
+// The campaign in play (its level, the results so far) and the custom level list while it is open.
+void GameApp::write_campaign_status(std::string& s) const {
+    auto result_line = [&s](const char* key, const LevelResult& r) {
+        char numbers[96];
+        std::snprintf(numbers, sizeof(numbers), " %.2f %d %d %d %d ", r.seconds, r.robots_killed,
+                      r.robots_total, r.shots, r.hits);
+        s += key + std::string(numbers) + r.title + "\n";
+    };
+    if (campaign_) {
+        s += "campaign " + std::to_string(campaign_->index() + 1) + " " + std::to_string(campaign_->count()) +
+             " " + campaign_->current().file + " " + campaign_->current().title + "\n";
+        for (const LevelResult& r : campaign_->results()) result_line("campaign_result", r);
+        if (campaign_->finished()) result_line("campaign_total", campaign_->totals());
+    } else {
+        s += "campaign -\n";
+    }
+    if (screen_ == Screen::Won) result_line("win_result", win_);
+    if (screen_ != Screen::CustomLevels) return;
+    for (std::size_t group = 0; group < custom_levels_.size(); ++group)
+        for (const level::LevelFileEntry& e : custom_levels_[group].folder.levels)
+            s += "custom_level " + std::to_string(group) + " " + (e.ok() ? "ok " : "error ") +
+                 e.file.filename().string() + " " + e.name + "\n";
 }
 
 } // namespace ks::runtime

@@ -110,6 +110,45 @@ bool big_button(const char* label, const shell::Fonts& fonts, float width_720) {
     return clicked;
 }
 
+int button_row(std::initializer_list<const char*> labels, const shell::Fonts& fonts, float width_720,
+               std::size_t quiet_from) {
+    const float s = ImGui::GetIO().DisplaySize.y > 0 ? ui_scale(ImGui::GetIO().DisplaySize.y) : 1.0f;
+    const float gap = 10.0f * s, total = width_720 * s;
+    const float each =
+        (total - gap * static_cast<float>(labels.size() - 1)) / static_cast<float>(labels.size());
+    const float x0 = (ImGui::GetWindowWidth() - total) * 0.5f;
+    int clicked = -1;
+    ImGui::PushStyleColor(ImGuiCol_Button, kAccent);
+    ImGui::PushStyleColor(ImGuiCol_ButtonHovered, kAccentHover);
+    ImGui::PushStyleColor(ImGuiCol_ButtonActive, kAccentActive);
+    ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 255, 255, 255));
+    ImGui::PushStyleVar(ImGuiStyleVar_FrameRounding, 6.0f * s);
+    if (fonts.hud) ImGui::PushFont(fonts.hud);
+    const float y = ImGui::GetCursorPosY();
+    std::size_t i = 0;
+    for (const char* label : labels) {
+        const float x = x0 + static_cast<float>(i) * (each + gap);
+        ImGui::SetCursorPos(ImVec2(x, y));
+        const ImVec2 p = ImGui::GetCursorScreenPos();
+        ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(p.x + 2 * s, p.y + 5 * s),
+                                                  ImVec2(p.x + each + 2 * s, p.y + 52 * s + 5 * s),
+                                                  IM_COL32(0, 0, 0, 60), 6.0f * s);
+        const bool quiet = i >= quiet_from;
+        if (quiet) {
+            ImGui::PushStyleColor(ImGuiCol_Button, IM_COL32(120, 130, 140, 255));
+            ImGui::PushStyleColor(ImGuiCol_ButtonHovered, IM_COL32(140, 150, 160, 255));
+        }
+        if (ImGui::Button(label, ImVec2(each, 52 * s))) clicked = static_cast<int>(i);
+        record_button(label);
+        if (quiet) ImGui::PopStyleColor(2);
+        ++i;
+    }
+    if (fonts.hud) ImGui::PopFont();
+    ImGui::PopStyleVar();
+    ImGui::PopStyleColor(4);
+    return clicked;
+}
+
 void centred_text(const std::string& text, ImFont* font, ImU32 colour) {
     if (font) ImGui::PushFont(font);
     const float tw = ImGui::CalcTextSize(text.c_str()).x;

@@ -6,6 +6,8 @@
 
 #include <imgui.h>
 
+#include <cstdint>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -32,6 +34,10 @@ void end_panel();
 
 // A big accent button centred in the panel; returns true when clicked.
 bool big_button(const char* label, const shell::Fonts& fonts, float width_720 = 320.0f);
+// A row of buttons sharing `width_720` (gaps included), centred; those from `quiet_from` on are grey (less
+// used: Quit). Returns the index of the one clicked, or -1.
+int button_row(std::initializer_list<const char*> labels, const shell::Fonts& fonts, float width_720 = 320.0f,
+               std::size_t quiet_from = SIZE_MAX);
 // Where this frame's buttons are (window pixels), for --status-file and --input-script's "click LABEL":
 // tests click menu buttons where the player sees them. Cleared by begin_frame().
 struct ButtonRect {

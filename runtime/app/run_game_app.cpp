@@ -5,6 +5,7 @@
 #include "core/files.h"
 #include "core/log.h"
 #include "core/paths.h"
+#include "level/campaign.h"
 #include "level/level_io.h"
 
 #include <algorithm>
@@ -17,15 +18,23 @@ namespace {
 
 void print_help() {
     std::printf(
-        "usage: killswitch [--level FILE] [--dojo] [--seed N] [--msaa N] [--width W] [--height H]\n"
+        "usage: killswitch [--level FILE | --campaign FILE] [--dojo] [--seed N] [--msaa N] [--width W] "
+        "[--height H]\n"
         "                  [--screen NAME --screenshot FILE --frames N] [--warp x,y,z,yaw,pitch]\n"
         "                  [--dojo-key K --dojo-time S] [--no-vsync]\n"
-        "  (no option)       loading screen, then the main menu (Play, Dojo, How to Play, Credits, Options, "
-        "Quit)\n"
+        "  (no option)       loading screen, then the main menu (Campaign, Play, Custom level..., Dojo, How "
+        "to "
+        "Play,\n"
+        "                    Options, Credits, Quit)\n"
         "  --level FILE      the level Play starts (default levels/main.json)\n"
+        "  --campaign FILE   play this campaign from its first level at once (the menu's Campaign plays it "
+        "too;\n"
+        "                    default levels/campaign.json)\n"
         "  --dojo            go straight to the Dojo (levels/dojo.json)\n"
         "  --screen NAME     start on one screen: loading menu howto credits options pause death win play "
         "dojo\n"
+        "                    summary campaign-complete (a campaign's levels won at their control panels)\n"
+        "                    custom-levels (the list of levels/ and the user's levels folder)\n"
         "  --warp ...        put the player's feet at x,y,z facing yaw,pitch (degrees) before the first "
         "frame\n"
         "  --fire            fire one shot on the first step (after --warp)\n"
@@ -58,9 +67,9 @@ int run_game_app(const CommandLine& cl, const shell::ShellConfig& shell_config) 
     const auto& screens = game_app_screens();
     if (!automation.screen.empty() &&
         std::find(screens.begin(), screens.end(), automation.screen) == screens.end()) {
-        log::error(
-            "--screen '", automation.screen,
-            "': not a screen; use one of loading menu howto credits options pause death win play dojo");
+        std::string names;
+        for (const std::string& name : screens) names += " " + name;
+        log::error("--screen '", automation.screen, "': not a screen; use one of", names);
         return 2;
     }
     automation.dojo = cl.has("dojo");
@@ -121,6 +130,15 @@ int run_game_app(const CommandLine& cl, const shell::ShellConfig& shell_config) 
     if (!msaa) {
         log::error(msaa.error().str());
         return 2;
+    }
+    if (auto campaign = cl.get("campaign")) {
+        // Checked before a window opens, like a level: a bad file is a command-line error.
+        automation.campaign = paths::resolve_user_path(*campaign);
+        automation.start_campaign = true;
+        if (auto loaded = level::load_campaign(automation.campaign); !loaded) {
+            log::error(loaded.error().str());
+            return 2;
+        }
     }
     const auto level_path = paths::resolve_user_path(cl.get_or("level", paths::level("main.json").string()));
     {

@@ -1,5 +1,6 @@
 #include "screens.h"
 
+#include "campaign_screens.h"
 #include "menu_style.h"
 
 #include <imgui.h>
@@ -53,36 +54,36 @@ void loading_screen(float fraction, const std::string& step, const shell::Fonts&
 MenuAction main_menu(const std::string& error, const shell::Fonts& fonts, float w, float h) {
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
     MenuAction action = MenuAction::None;
-    ui::begin_panel("##main", "Killswitch", 640, error.empty() ? 440 : 500, w, h, fonts);
+    ui::begin_panel("##main", "Killswitch", 640, error.empty() ? 400 : 480, w, h, fonts);
     ui::centred_text("A virtual disaster simulator. The robots went rogue.", fonts.body);
-    if (ui::big_button("Play", fonts)) action = MenuAction::Play;
-    if (ui::big_button("Dojo", fonts)) action = MenuAction::Dojo;
-    if (ui::big_button("How to Play", fonts)) action = MenuAction::HowTo;
-    if (ui::big_button("Credits", fonts)) action = MenuAction::Credits;
-    // Options and Quit share a row: they are used less often.
-    {
-        const float s = ui::ui_scale(h);
-        const float x0 = (ImGui::GetWindowWidth() - 320 * s) * 0.5f;
-        ImGui::PushID("row");
-        const float cursor_y = ImGui::GetCursorPosY();
-        ImGui::SetCursorPos(ImVec2(x0, cursor_y));
-        ImGui::PushStyleColor(ImGuiCol_Button, ui::kAccent);
-        ImGui::PushStyleColor(ImGuiCol_ButtonHovered, ui::kAccentHover);
-        ImGui::PushStyleColor(ImGuiCol_ButtonActive, ui::kAccentActive);
-        ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 255, 255, 255));
-        ImGui::PushStyleVar(ImGuiStyleVar_FrameRounding, 6.0f * s);
-        if (fonts.hud) ImGui::PushFont(fonts.hud);
-        if (ImGui::Button("Options", ImVec2(155 * s, 52 * s))) action = MenuAction::Options;
-        ui::record_button("Options");
-        ImGui::SameLine(x0 + 165 * s);
-        ImGui::PushStyleColor(ImGuiCol_Button, IM_COL32(120, 130, 140, 255));
-        if (ImGui::Button("Quit", ImVec2(155 * s, 52 * s))) action = MenuAction::Quit;
-        ui::record_button("Quit");
-        ImGui::PopStyleColor();
-        if (fonts.hud) ImGui::PopFont();
-        ImGui::PopStyleVar();
-        ImGui::PopStyleColor(4);
-        ImGui::PopID();
+    // The campaign first; the less used choices share rows (Quit grey).
+    if (ui::big_button("Campaign", fonts, 420)) action = MenuAction::Campaign;
+    switch (ui::button_row({"Play", "Custom level\u2026"}, fonts, 420)) {
+    case 0:
+        action = MenuAction::Play;
+        break;
+    case 1:
+        action = MenuAction::CustomLevels;
+        break;
+    }
+    switch (ui::button_row({"Dojo", "How to Play"}, fonts, 420)) {
+    case 0:
+        action = MenuAction::Dojo;
+        break;
+    case 1:
+        action = MenuAction::HowTo;
+        break;
+    }
+    switch (ui::button_row({"Options", "Credits", "Quit"}, fonts, 420, 2)) {
+    case 0:
+        action = MenuAction::Options;
+        break;
+    case 1:
+        action = MenuAction::Credits;
+        break;
+    case 2:
+        action = MenuAction::Quit;
+        break;
     }
     if (!error.empty()) {
         ImGui::PushTextWrapPos(ImGui::GetWindowWidth() - 30 * ui::ui_scale(h));
@@ -123,15 +124,12 @@ MenuAction death_menu(const shell::Fonts& fonts, float w, float h) {
     return action;
 }
 
-MenuAction win_menu(const WinStats& stats, const shell::Fonts& fonts, float w, float h) {
+MenuAction win_menu(const LevelResult& result, const shell::Fonts& fonts, float w, float h) {
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h, 0.85f);
     MenuAction action = MenuAction::None;
-    ui::begin_panel("##win", "You Won", 560, 340, w, h, fonts);
+    ui::begin_panel("##win", "You Won", 600, 380, w, h, fonts);
     ui::centred_text("Simulation ended", fonts.hud, ui::kAccentActive);
-    ui::centred_text("Time  " + format_time(stats.seconds), fonts.hud);
-    ui::centred_text("Robots killed  " + std::to_string(stats.robots_killed) + " / " +
-                         std::to_string(stats.robots_total),
-                     fonts.hud);
+    result_tiles(result, fonts);
     if (ui::big_button("Play Again", fonts)) action = MenuAction::Retry;
     if (ui::big_button("Main Menu", fonts)) action = MenuAction::MainMenu;
     ui::end_panel();

@@ -1,6 +1,7 @@
 #pragma once
 // The game's screens as immediate-mode functions: each draws itself centred in the window and returns what
 // the player chose this frame. The app's state machine (game_app.cpp) decides what each choice does.
+#include "campaign_progress.h"
 #include "options.h"
 #include "shell/app_shell.h"
 
@@ -8,19 +9,30 @@
 
 namespace ks::runtime {
 
-enum class MenuAction { None, Play, Dojo, HowTo, Credits, Options, Quit, Resume, MainMenu, Retry, Back };
-
-struct WinStats {
-    double seconds = 0.0;
-    int robots_killed = 0;
-    int robots_total = 0;
+enum class MenuAction {
+    None,
+    Play,
+    Campaign,
+    CustomLevels,
+    PlayCustom, // a level picked in the custom level list
+    NextLevel,
+    Dojo,
+    HowTo,
+    Credits,
+    Options,
+    Quit,
+    Resume,
+    MainMenu,
+    Retry,
+    Back
 };
 
 void loading_screen(float fraction, const std::string& step, const shell::Fonts& fonts, float w, float h);
 MenuAction main_menu(const std::string& error, const shell::Fonts& fonts, float w, float h);
 MenuAction pause_menu(const shell::Fonts& fonts, float w, float h);
 MenuAction death_menu(const shell::Fonts& fonts, float w, float h);
-MenuAction win_menu(const WinStats& stats, const shell::Fonts& fonts, float w, float h);
+// A single level won (Play, a custom level): its time, robots and accuracy, Play Again or Main Menu.
+MenuAction win_menu(const LevelResult& result, const shell::Fonts& fonts, float w, float h);
 MenuAction how_to_play(const shell::Fonts& fonts, float w, float h);
 MenuAction credits(const shell::Fonts& fonts, float w, float h);
 // Edits `options` in place; `changed` is set when a value moved this frame.

@@ -1,0 +1,139 @@
+// The runtime's GL-free campaign and HUD state: CampaignProgress (levels in order, results, totals),
+// accuracy text, the "Objective complete" banner's timer and the objective list's rows.
+#include "game/game_test_levels.h"
+#include "level/level_io.h"
+#include "runtime/app/campaign_progress.h"
+#include "runtime/app/logic_hud.h"
+#include "test_support.h"
+
+#include <doctest/doctest.h>
+
+using namespace ks;
+using namespace ks::runtime;
+
+namespace {
+level::Campaign two_levels() {
+    return {"Test run", {{"one.json", "First Light"}, {"more/two.json", "Second Wind"}}};
+}
+} // namespace
+
+TEST_CASE("campaign progress: levels in order, a result per win, totals, and no step past the end") {
+    CampaignProgress progress(two_levels(), "/data/campaigns/run.json");
+    CHECK(progress.count() == 2);
+    CHECK(progress.index() == 0);
+    CHECK(progress.current().title == "First Light");
+    CHECK(progress.current_path() == std::filesystem::path("/data/campaigns/one.json"));
+    CHECK_FALSE(progress.on_last_level());
+    CHECK_FALSE(progress.advance()); // not won yet
+    CHECK(progress.last_result() == nullptr);
+
+    progress.record_win({"ignored", 62.5, 3, 4, 20, 15});
+    CHECK(progress.results().size() == 1);
+    CHECK(progress.last_result()->title == "First Light"); // the campaign's title, not the level's name
+    CHECK_FALSE(progress.finished());
+    // A retry after a win (Play Again is not offered, but a second win must not add a row).
+    progress.record_win({"", 60.0, 4, 4, 18, 16});
+    CHECK(progress.results().size() == 1);
+    CHECK(progress.results()[0].seconds == 60.0);
+
+    REQUIRE(progress.advance());
+    CHECK(progress.index() == 1);
+    CHECK(progress.current_path() == std::filesystem::path("/data/campaigns/more/two.json"));
+    CHECK(progress.on_last_level());
+    progress.record_win({"", 30.25, 2, 5, 10, 4});
+    CHECK(progress.finished());
+    CHECK_FALSE(progress.advance());
+    const LevelResult total = progress.totals();
+    CHECK(total.title == "Test run");
+    CHECK(total.seconds == doctest::Approx(90.25));
+    CHECK(total.robots_killed == 6);
+    CHECK(total.robots_total == 9);
+    CHECK(total.shots == 28);
+    CHECK(total.hits == 20);
+    progress.record_win({"", 1.0, 0, 0, 0, 0}); // after the end: nothing changes
+    CHECK(progress.results().size() == 2);
+}
+
+TEST_CASE("accuracy: hits over shots as a whole percent, a dash without a shot") {
+    CHECK(accuracy_text(15, 20) == "75 %");
+    CHECK(accuracy_text(1, 3) == "33 %");
+    CHECK(accuracy_text(2, 3) == "67 %");
+    CHECK(accuracy_text(0, 12) == "0 %");
+    CHECK(accuracy_text(5, 5) == "100 %");
+    CHECK(accuracy_text(0, 0) == "-");
+    CHECK(accuracy_text(9, 4) == "100 %"); // never above 100
+    CHECK(accuracy_text(-1, 4) == "0 %");
+}
+
+TEST_CASE(
+    "objective banner: an ObjectiveCompleted event shows the objective's text, then it fades and ends") {
+    level::LoadReport report;
+    auto lv = level::load_level_file(test::data_dir() / "levels" / "logic_hall.json", &report);
+    REQUIRE_MESSAGE(lv.ok(), report.str());
+    auto g = game::test::make_game(*lv);
+    ObjectiveFlash flash;
+    const float dt = static_cast<float>(g->settings().step);
+    g->step({});
+    flash.after_step(*g, dt);
+    CHECK_FALSE(flash.visible());
+    REQUIRE(g->complete_objective("clear_hall"));
+    flash.after_step(*g, 0.0f);
+    CHECK(flash.visible());
+    CHECK(flash.text() == "Clear the hall");
+    CHECK(flash.strength() == 1.0f);
+    CHECK(flash.age() == 0.0f);
+    float t = 0.0f;
+    for (; t < ObjectiveFlash::kSeconds - ObjectiveFlash::kFadeSeconds * 0.5f; t += dt) {
+        g->step({});
+        flash.after_step(*g, dt);
+    }
+    CHECK(flash.visible());
+    CHECK(flash.strength() == doctest::Approx(0.5f).epsilon(0.05));
+    for (; t < ObjectiveFlash::kSeconds + 0.1f; t += dt) {
+        g->step({});
+        flash.after_step(*g, dt);
+    }
+    CHECK_FALSE(flash.visible());
+    CHECK(flash.strength() == 0.0f);
+}
+
+TEST_CASE("objective list rows: at most six, around the current objective, the last ones when all are done") {
+    const ObjectiveRows few = objective_rows(3, 1);
+    CHECK(few.first == 0);
+    CHECK(few.end == 3);
+    CHECK(few.hidden_before + few.hidden_after == 0);
+    const ObjectiveRows early = objective_rows(10, 1);
+    CHECK(early.first == 0);
+    CHECK(early.end == 6);
+    CHECK(early.hidden_after == 4);
+    const ObjectiveRows middle = objective_rows(10, 5);
+    CHECK(middle.first == 3); // two done ones before the current
+    CHECK(middle.end == 9);
+    CHECK(middle.hidden_before == 3);
+    CHECK(middle.hidden_after == 1);
+    const ObjectiveRows late = objective_rows(10, 9);
+    CHECK(late.first == 4);
+    CHECK(late.end == 10);
+    const ObjectiveRows done = objective_rows(10, -1);
+    CHECK(done.first == 4);
+    CHECK(done.end == 10);
+    const ObjectiveRows none = objective_rows(0, -1);
+    CHECK(none.first == 0);
+    CHECK(none.end == 0);
+}
+
+TEST_CASE("message line: fades in over 0.2 s and out over the last 0.5 s") {
+    game::ShownMessage m;
+    m.text = "Hello";
+    m.duration = 4.0f;
+    m.time_left = 0.0f;
+    CHECK(message_alpha(m) == 0.0f);
+    m.time_left = 4.0f;
+    CHECK(message_alpha(m) == 0.0f);
+    m.time_left = 3.9f;
+    CHECK(message_alpha(m) == doctest::Approx(0.5f));
+    m.time_left = 2.0f;
+    CHECK(message_alpha(m) == 1.0f);
+    m.time_left = 0.25f;
+    CHECK(message_alpha(m) == doctest::Approx(0.5f));
+}
