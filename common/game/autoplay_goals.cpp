@@ -11,8 +11,8 @@ namespace {
 using level::LinkAction;
 using level::LinkEvent;
 
-// Chains longer than this are not followed (a designer's chain is a handful of links; loops are cut by the
-// search's own stack before that).
+// Chains longer than this are not followed (a designer's chain is a handful of links; loops are cut before
+// that, as no need is worked out twice in one choice).
 constexpr int kMaxDepth = 12;
 // Costs are path lengths; these rank what is not a walk: an unreachable goal below any reachable one, a wait
 // below both (something that can be done beats waiting for something else to happen).
@@ -104,18 +104,17 @@ struct GoalPlanner::Search {
     bool doors_block = false;
     BotGoal best;
     float best_cost = 0.0f;
-    std::vector<std::uint64_t>& stack; // what is being worked out now: a loop of links stops here
-    std::vector<Vec3>& path;           // scratch
+    std::vector<std::uint64_t>& expanded; // needs worked out in this choice: a loop or a second way in stops
+    std::vector<Vec3>& path;              // scratch
     bool enter(std::uint64_t key) {
-        if (std::find(stack.begin(), stack.end(), key) != stack.end()) return false;
-        stack.push_back(key);
+        if (std::find(expanded.begin(), expanded.end(), key) != expanded.end()) return false;
+        expanded.push_back(key);
         return true;
     }
-    void leave() { stack.pop_back(); }
 };
 
 GoalPlanner::GoalPlanner(const Game& game) {
-    stack_.reserve(2 * kMaxDepth + 2);
+    expanded_.reserve(64);
     path_.reserve(64);
     const LevelLogic& logic = game.logic();
     sources_.assign(logic.links().size(), Source{});
@@ -139,14 +138,14 @@ GoalPlanner::GoalPlanner(const Game& game) {
 }
 
 BotGoal GoalPlanner::choose(const Game& game, nav::NavMesh& mesh) {
-    stack_.clear();
+    expanded_.clear();
     Search s{game,
              mesh,
              game.player().feet,
              close_blocking_doors(game, mesh),
              BotGoal{},
              std::numeric_limits<float>::infinity(),
-             stack_,
+             expanded_,
              path_};
     const LevelLogic& logic = game.logic();
     // The first objective not complete; a later one only when nothing is found for it.
@@ -190,7 +189,6 @@ void GoalPlanner::objective(Search& s, std::size_t index, int depth) const {
                 offer(s, {BotGoalKind::Wait, -1, s.feet}, kWait);
         }
     }
-    s.leave();
 }
 
 void GoalPlanner::action_on(Search& s, LogicTarget target, std::uint32_t index,
@@ -212,7 +210,6 @@ void GoalPlanner::action_on(Search& s, LogicTarget target, std::uint32_t index,
         if (link.once && link.fired) continue;
         cause(s, sources_[k], link.event, depth + 1);
     }
-    s.leave();
 }
 
 void GoalPlanner::cause(Search& s, const Source& source, LinkEvent event, int depth) const {
@@ -291,6 +288,9 @@ void GoalPlanner::hunt(Search& s, std::uint32_t robot, int depth) const {
 }
 
 void GoalPlanner::consider(Search& s, BotGoal goal, int depth) const {
+    // A walk is never shorter than the straight line: a goal that far cannot win, so skip its path query
+    // (with no door in the way; a blocked goal's openers are goals of their own).
+    if (!s.doors_block && flat_distance(s.feet, goal.point) >= s.best_cost) return;
     if (const auto length = s.mesh.path_length(s.feet, goal.point)) {
         offer(s, goal, *length);
         return;

@@ -85,7 +85,7 @@ class GoalPlanner {
 
     std::vector<Source> sources_; // parallel to LevelLogic::links()
     // Scratch kept between choices, so choosing allocates nothing once they have grown.
-    std::vector<std::uint64_t> stack_;
+    std::vector<std::uint64_t> expanded_;
     std::vector<Vec3> path_;
 };
 
