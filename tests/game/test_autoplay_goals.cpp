@@ -11,6 +11,16 @@ using namespace ks::game::test;
 
 namespace {
 
+// A 96 x 88 floor (x -48..48, z -52..36), the player at z 20 facing -z: small, so both meshes build fast.
+level::Level arena() {
+    level::Level lv;
+    lv.name = "arena";
+    auto& floor = lv.add(level::EntityType::Floor, Vec3(0.0f, 0.0f, -8.0f), "ground");
+    floor.as<level::FloorProps>().size = Vec2(96.0f, 88.0f);
+    lv.player_start.position = Vec3(0.0f, 0.0f, 20.0f);
+    return lv;
+}
+
 level::Entity& add_trigger(level::Level& lv, const char* name, Vec3 at, Vec3 size) {
     auto& t = lv.add(level::EntityType::Trigger, at, name);
     t.as<level::TriggerProps>().size = size;
@@ -86,8 +96,7 @@ void check_goal(const Autoplay& bot, BotGoalKind kind, int entity) {
 } // namespace
 
 TEST_CASE("the bot walks into the trigger whose on_enter completes the objective") {
-    auto lv = flat_level();
-    lv.player_start.position = Vec3(0, 0, 20);
+    auto lv = arena();
     const int gate = add_trigger(lv, "Gate", Vec3(10, 0, -10), Vec3(4, 4, 4)).id;
     lv.entities.back().links = {link("on_enter", "reach", "complete")};
     lv.add(level::EntityType::ControlPanel, Vec3(-10, 0, 0), "Decoy panel"); // completes nothing
@@ -100,8 +109,7 @@ TEST_CASE("the bot walks into the trigger whose on_enter completes the objective
 
 TEST_CASE(
     "a kill list's spawner that has not spawned: the bot enters the trigger that spawns it, then hunts") {
-    auto lv = flat_level();
-    lv.player_start.position = Vec3(0, 0, 20);
+    auto lv = arena();
     const int gate = add_trigger(lv, "Gate", Vec3(0, 0, 0), Vec3(8, 4, 4)).id;
     lv.entities.back().links = {link("on_enter", "Pit", "spawn", 0.5f, true)};
     auto& spawner = lv.add(level::EntityType::Spawner, Vec3(0, 0, -30), "Pit");
@@ -189,10 +197,9 @@ TEST_CASE("an unlocked door whose on_open completes the objective: the bot opens
 }
 
 TEST_CASE("a robot's on_death completes the objective: the bot hunts that robot, not the nearer one") {
-    auto lv = flat_level();
-    lv.player_start.position = Vec3(0, 0, 20);
-    add_harmless_robot(lv, "Bystander", Vec3(-45, 0, 20)); // farther than the bot engages
-    const int target = add_harmless_robot(lv, "Target", Vec3(50, 0, -60)).id;
+    auto lv = arena();
+    add_harmless_robot(lv, "Bystander", Vec3(-44, 0, 20)); // farther than the bot engages
+    const int target = add_harmless_robot(lv, "Target", Vec3(30, 0, -40)).id;
     lv.entities.back().links = {link("on_death", "kill", "complete")};
     lv.objectives.push_back(objective("kill"));
     auto p = start(lv);
@@ -201,8 +208,7 @@ TEST_CASE("a robot's on_death completes the objective: the bot hunts that robot,
 }
 
 TEST_CASE("a pickup's on_pickup completes the objective; a disabled trigger is enabled by the panel first") {
-    auto lv = flat_level();
-    lv.player_start.position = Vec3(0, 0, 20);
+    auto lv = arena();
     auto& medkit = lv.add(level::EntityType::Pickup, Vec3(15, 0, 0), "Medkit");
     medkit.as<level::PickupProps>().kind.value = "shield"; // taken: the player starts without a shield
     medkit.links = {link("on_pickup", "take", "complete")};
@@ -230,8 +236,7 @@ TEST_CASE("a pickup's on_pickup completes the objective; a disabled trigger is e
 }
 
 TEST_CASE("objectives that complete only each other: the bot stops looking and falls back to the panel") {
-    auto lv = flat_level();
-    lv.player_start.position = Vec3(0, 0, 20);
+    auto lv = arena();
     auto a = objective("a"), b = objective("b");
     a.links = {link("on_complete", "b", "complete")};
     b.links = {link("on_complete", "a", "complete")};
@@ -243,8 +248,7 @@ TEST_CASE("objectives that complete only each other: the bot stops looking and f
 }
 
 TEST_CASE("a health pickup at full health cannot be taken, so it is no goal until the player is hurt") {
-    auto lv = flat_level();
-    lv.player_start.position = Vec3(0, 0, 20);
+    auto lv = arena();
     auto& medkit = lv.add(level::EntityType::Pickup, Vec3(15, 0, 0), "Medkit");
     medkit.links = {link("on_pickup", "heal", "complete")};
     const int medkit_id = medkit.id;
