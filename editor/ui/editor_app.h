@@ -15,6 +15,7 @@
 #include "ui/playtest.h"
 #include "ui/render_target.h"
 #include "ui/sound_widgets.h"
+#include "view/link_arrows.h"
 #include "view/patrol_drag.h"
 #include "view/picking.h"
 #include "view/sound_marker.h"
@@ -65,6 +66,7 @@ struct Overlays {
     bool outlines =
         true; // in the axis views: walls, doors and stairs outlined, so the plan reads at a glance
     bool ceilings = false; // off by default: ceilings would hide the rooms from an editor camera above them
+    bool links = true;     // arrows for the links between entities (the selection's bright and labelled)
 };
 
 // A question the user must answer before an action goes on (unsaved changes, overwrite, recovery).
@@ -105,6 +107,10 @@ class EditorApp {
     void draw_navmesh();
     void draw_sound_emitter(const level::Entity& e, bool selected);
     void draw_axis_grid(ImDrawList* draw, Vec2 origin) const;
+    // logic_overlay.cpp: logic entity markers (render pass), trigger fills and link arrows (ImGui pass)
+    void draw_logic_marker(const level::Entity& e, bool selected);
+    void update_link_arrows();
+    void logic_overlay(ImDrawList* draw, Vec2 origin);
     void viewport_input(Vec2 origin, bool hovered);
     int pick(const geometry::Ray& ray) const;
     bool shown(const level::Entity& e) const; // not hidden, and not a ceiling while ceilings are off
@@ -170,8 +176,12 @@ class EditorApp {
     int type_filter_ = -1;         // -1: all
     int outliner_scrolled_to_ = 0; // primary selection the outliner last scrolled to
     char search_[64] = {};
-    std::vector<std::string> sound_names_; // offered by the inspector's sound lists (sound_widgets.h)
-    std::vector<MarkerLine> marker_lines_; // a sound emitter's marker, reused every frame
+    std::vector<std::string> sound_names_;  // offered by the inspector's sound lists (sound_widgets.h)
+    std::vector<MarkerLine> marker_lines_;  // a marker's or an arrow's lines, reused every frame
+    std::vector<LinkArrow> link_arrows_;    // cached until the level, the selection or what is shown changes
+    std::vector<std::string> arrow_labels_; // each arrow's labels, one per line
+    std::uint64_t arrows_key_ = ~0ull;
+    std::vector<int> arrows_selection_;
     std::deque<std::pair<std::string, bool>> log_;
     bool scroll_log_ = false;
     bool dojo_tab_ = false;

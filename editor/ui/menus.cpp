@@ -94,6 +94,7 @@ void EditorApp::menu_bar() {
         ImGui::MenuItem("All sound radii", nullptr, &overlays_.sound_radii);
         ImGui::MenuItem("Navigation mesh", nullptr, &overlays_.navmesh);
         ImGui::MenuItem("Ceilings", nullptr, &overlays_.ceilings);
+        ImGui::MenuItem("Show links", nullptr, &overlays_.links);
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Play")) {

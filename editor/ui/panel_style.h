@@ -46,6 +46,12 @@ inline ImVec4 type_colour(level::EntityType t) {
         return ImVec4(0.8f, 0.6f, 1.0f, 1);
     case level::EntityType::Sound:
         return ImVec4(1.0f, 0.5f, 0.85f, 1);
+    case level::EntityType::Trigger:
+        return ImVec4(0.45f, 1.0f, 0.6f, 1);
+    case level::EntityType::Spawner:
+        return ImVec4(1.0f, 0.55f, 0.4f, 1);
+    case level::EntityType::Message:
+        return ImVec4(0.65f, 0.85f, 1.0f, 1);
     default:
         return ImVec4(1, 1, 1, 1);
     }

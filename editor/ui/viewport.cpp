@@ -193,6 +193,7 @@ void EditorApp::draw_overlays() {
         if (const auto* r = e.try_as<level::RobotProps>(); r && (selected || overlays_.patrols))
             patrol_route(debug_, r->patrol, selected);
         if (e.type() == level::EntityType::Sound) draw_sound_emitter(e, selected);
+        draw_logic_marker(e, selected);
     }
     if (overlays_.player_start) {
         const auto& ps = doc.level.player_start;
@@ -369,6 +370,7 @@ void EditorApp::viewport_panel(float x, float y, float w, float h) {
 
     ImDrawList* draw = ImGui::GetWindowDrawList();
     if (overlays_.grid && view_.orthographic()) draw_axis_grid(draw, viewport_origin_);
+    logic_overlay(draw, viewport_origin_);
     if (!editor_.doc().selection.empty() && !placing_)
         draw_gizmo(draw, gizmo_, view_, viewport_origin_, selection_pivot(), hovered_handle_);
     if (box_selecting_) {
