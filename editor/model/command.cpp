@@ -54,6 +54,8 @@ void LevelChange::apply(Document& doc) const {
     if (settings) doc.level.settings = settings->after;
     if (player_start) doc.level.player_start = player_start->after;
     if (next_id) doc.level.next_id = next_id->after;
+    if (level_links) doc.level.links = level_links->after;
+    if (objectives) doc.level.objectives = objectives->after;
     doc.selection = selection_after;
 }
 
@@ -63,6 +65,8 @@ void LevelChange::revert(Document& doc) const {
     if (settings) doc.level.settings = settings->before;
     if (player_start) doc.level.player_start = player_start->before;
     if (next_id) doc.level.next_id = next_id->before;
+    if (level_links) doc.level.links = level_links->before;
+    if (objectives) doc.level.objectives = objectives->before;
     for (auto it = insertions.rbegin(); it != insertions.rend(); ++it) {
         assert(it->index < entities.size() && entities[it->index].id == it->entity.id);
         entities.erase(entities.begin() + static_cast<std::ptrdiff_t>(it->index));
@@ -75,7 +79,7 @@ void LevelChange::revert(Document& doc) const {
 
 bool LevelChange::empty() const {
     return updates.empty() && removals.empty() && insertions.empty() && !level_name && !settings &&
-           !player_start && !next_id;
+           !player_start && !next_id && !level_links && !objectives;
 }
 
 bool LevelChange::try_merge(const LevelChange& next) {
@@ -94,6 +98,8 @@ bool LevelChange::try_merge(const LevelChange& next) {
     merge_field(settings, next.settings);
     merge_field(player_start, next.player_start);
     merge_field(next_id, next.next_id);
+    merge_field(level_links, next.level_links);
+    merge_field(objectives, next.objectives);
     selection_after = next.selection_after;
     return true;
 }

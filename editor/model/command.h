@@ -1,8 +1,9 @@
 #pragma once
 // Every edit is a command that can be applied and reverted exactly. LevelChange is the one concrete edit: it
 // records entity insertions and removals with their indices, entity updates as before/after copies, and the
-// level fields (name, settings, player start, next_id) before and after, so undo restores entity order, ids
-// and next_id bit for bit. CompoundCommand groups several into one history step (transactions).
+// level fields (name, settings, player start, next_id, the level's own links, the objectives) before and
+// after, so undo restores entity order, ids and next_id bit for bit. CompoundCommand groups several into one
+// history step (transactions).
 #include "model/document.h"
 
 #include <memory>
@@ -50,6 +51,8 @@ class LevelChange final : public Command {
     std::optional<Change<level::Settings>> settings;
     std::optional<Change<level::PlayerStart>> player_start;
     std::optional<Change<int>> next_id;
+    std::optional<Change<std::vector<level::Link>>> level_links;
+    std::optional<Change<std::vector<level::Objective>>> objectives; // the whole list (at most a few dozen)
 
     // Commands with the same non-empty key that follow each other may merge (a slider dragged in the
     // inspector: one step, not one per frame).

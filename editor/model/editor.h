@@ -8,6 +8,7 @@
 #include "model/disk_fingerprint.h"
 #include "model/field_access.h"
 #include "model/history.h"
+#include "model/logic_edit.h"
 #include "model/reachability.h"
 #include "model/validation.h"
 
@@ -108,6 +109,22 @@ class Editor {
     Result<void> patrol_set_mode(int id, std::string_view mode);
     Result<void> patrol_set_wait(int id, float seconds, std::string merge_key = {});
 
+    // ---- level logic (editor_logic.cpp; each one undoable step; see logic_edit.h) ----
+    // Link and objective indices count from 0. A link's event must be one its owner emits, its action a
+    // known one and its delay in 0 .. 3600 s; its target may name nothing yet (validation reports it).
+    const std::vector<level::Link>* links_of(const LinkOwner& owner) const; // nullptr: no such owner
+    Result<int> link_add(const LinkOwner& owner, level::Link link);         // returns the new index
+    Result<void> link_set(const LinkOwner& owner, int index, level::Link link, std::string merge_key = {});
+    Result<void> link_remove(const LinkOwner& owner, int index);
+    Result<void> objective_add(level::Objective objective); // appended; id must be new & non-empty
+    // Renaming the id re-targets the links that named it (complete links), in the same step.
+    Result<void> objective_set(int index, level::Objective objective, std::string merge_key = {});
+    Result<void> objective_remove(int index);
+    Result<void> objective_move(int from, int to);
+    // Name an entity so links can target it: a unique name from its type ("door_2") if it has none (or from
+    // its name if another entity shares it); returns it. No step when it already has a unique name.
+    Result<std::string> ensure_link_name(int entity_id);
+
     bool undo();
     bool redo();
     // A drag or compound edit as one step.
@@ -153,6 +170,15 @@ class Editor {
     Result<void> edit_patrol(int id, std::string name,
                              const std::function<Result<void>(level::Patrol&)>& edit,
                              std::string merge_key = {});
+    // One LevelChange replacing `owner`'s links with `edit`'s result; nothing changes if it fails.
+    Result<void> edit_links(const LinkOwner& owner, std::string name,
+                            const std::function<Result<void>(std::vector<level::Link>&)>& edit,
+                            std::string merge_key = {});
+    // One LevelChange replacing the objectives with `edit`'s result (checked), links following `renames`.
+    Result<void> edit_objectives(std::string name,
+                                 const std::function<Result<void>(std::vector<level::Objective>&)>& edit,
+                                 std::string merge_key = {}, const TargetRenames& renames = {});
+    // Executes through History; entity renames in `change` take the links and kill lists naming them along.
     void execute(std::unique_ptr<LevelChange> change, std::vector<int> selection_after);
     Result<SaveReport> write_to(const std::filesystem::path& path);
     void replace_level(level::Level level, std::filesystem::path path);

@@ -44,6 +44,7 @@ constexpr const char* kClipboardKey = "killswitch-clipboard";
 } // namespace
 
 void Editor::execute(std::unique_ptr<LevelChange> change, std::vector<int> selection_after) {
+    follow_entity_renames(doc_.level, *change);
     change->selection_after = std::move(selection_after);
     history_.execute(doc_, std::move(change));
 }

@@ -134,6 +134,8 @@ Result<void> Editor::accept_recovery() {
     change->settings = Change<level::Settings>{doc_.level.settings, loaded->settings};
     change->player_start = Change<level::PlayerStart>{doc_.level.player_start, loaded->player_start};
     change->next_id = Change<int>{doc_.level.next_id, loaded->next_id};
+    change->level_links = Change<std::vector<level::Link>>{doc_.level.links, loaded->links};
+    change->objectives = Change<std::vector<level::Objective>>{doc_.level.objectives, loaded->objectives};
     execute(std::move(change), {});
     recovery_.reset();
     return ok();
