@@ -35,6 +35,7 @@ EditorApp::EditorApp(shell::AppShell& shell, const AppOptions& options)
 
 EditorApp::~EditorApp() {
     log::set_sink(nullptr);
+    if (crosshair_) glfwDestroyCursor(crosshair_);
     if (g_app == this) g_app = nullptr;
 }
 
@@ -98,6 +99,7 @@ Result<void> EditorApp::init() {
         }
     }
     overlays_.navmesh = options_.show_navmesh;
+    select_tab_ = options_.inspector_tab;
     set_view(options_.view.value_or(ViewMode::Perspective)); // perspective: from above one corner
     if (options_.camera) {
         float v[5];
@@ -199,15 +201,19 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
     const Layout layout = compute_layout(static_cast<float>(info.width), static_cast<float>(info.height),
                                          ImGui::GetFrameHeight());
     dojo_->begin_frame();
+    spots_.enabled = options_.status_file.has_value();
+    spots_.clear();
     menu_bar();
     if (dojo_tab_) {
         dojo_->panel(layout.bottom.x, layout.centre.y, layout.bottom.w, layout.centre.h);
     } else {
         outliner_panel(layout.left.x, layout.left.y, layout.left.w, layout.left.h);
         viewport_panel(layout.centre.x, layout.centre.y, layout.centre.w, layout.centre.h);
-        inspector_panel(layout.right.x, layout.right.y, layout.right.w, layout.right.h * 0.62f);
-        validation_panel(layout.right.x, layout.right.y + layout.right.h * 0.62f, layout.right.w,
-                         layout.right.h * 0.38f);
+        // Wiring links and objectives takes more rows than an entity's fields: those tabs get more height.
+        const float split = shown_tab_ == InspectorTab::Properties ? 0.62f : 0.74f;
+        inspector_panel(layout.right.x, layout.right.y, layout.right.w, layout.right.h * split);
+        validation_panel(layout.right.x, layout.right.y + layout.right.h * split, layout.right.w,
+                         layout.right.h * (1.0f - split));
     }
     history_panel(layout.bottom.x, layout.bottom.y, layout.bottom.w * 0.32f, layout.bottom.h);
     log_panel(layout.bottom.x + layout.bottom.w * 0.32f, layout.bottom.y, layout.bottom.w * 0.68f,
@@ -270,7 +276,9 @@ void EditorApp::handle_shortcuts() {
     }
     if (pressed(GLFW_KEY_DELETE)) report(editor_.delete_selection(), "delete");
     if (pressed(GLFW_KEY_ESCAPE)) {
-        if (gizmo_.dragging())
+        if (pick_)
+            end_pick();
+        else if (gizmo_.dragging())
             gizmo_.cancel(editor_);
         else if (placing_)
             placing_.reset();

@@ -145,14 +145,60 @@ bool EditorApp::field_widget(const FieldDescriptor& field, FieldValue& value, bo
     return changed;
 }
 
+std::optional<InspectorTab> parse_inspector_tab(std::string_view name) {
+    if (name == "properties") return InspectorTab::Properties;
+    if (name == "links") return InspectorTab::Links;
+    if (name == "objectives") return InspectorTab::Objectives;
+    return std::nullopt;
+}
+
 void EditorApp::inspector_panel(float x, float y, float w, float h) {
     place_panel(x, y, w, h);
     ImGui::Begin("Inspector", nullptr, kPanelFlags);
+    if (ImGui::BeginTabBar("inspector_tabs")) {
+        auto flags = [this](InspectorTab tab) {
+            return select_tab_ == tab ? ImGuiTabItemFlags_SetSelected : ImGuiTabItemFlags_None;
+        };
+        const bool properties = ImGui::BeginTabItem("Properties", nullptr, flags(InspectorTab::Properties));
+        spots_.here("tab.properties");
+        if (properties) {
+            shown_tab_ = InspectorTab::Properties;
+            selection_inspector(w);
+            ImGui::EndTabItem();
+        }
+        const auto selected = editor_.selected_entities();
+        char links_title[48];
+        std::snprintf(links_title, sizeof links_title, "Links (%zu)###links",
+                      selected.size() == 1 ? selected.front()->links.size() : editor_.level().links.size());
+        const bool links = ImGui::BeginTabItem(links_title, nullptr, flags(InspectorTab::Links));
+        spots_.here("tab.links");
+        if (links) {
+            shown_tab_ = InspectorTab::Links;
+            links_tab();
+            ImGui::EndTabItem();
+        }
+        char objectives_title[48];
+        std::snprintf(objectives_title, sizeof objectives_title, "Objectives (%zu)###objectives",
+                      editor_.level().objectives.size());
+        const bool objectives =
+            ImGui::BeginTabItem(objectives_title, nullptr, flags(InspectorTab::Objectives));
+        spots_.here("tab.objectives");
+        if (objectives) {
+            shown_tab_ = InspectorTab::Objectives;
+            objectives_tab();
+            ImGui::EndTabItem();
+        }
+        ImGui::EndTabBar();
+        select_tab_.reset();
+    }
+    ImGui::End();
+}
+
+void EditorApp::selection_inspector(float w) {
     const auto selected = editor_.selected_entities();
     if (selected.empty()) {
         ImGui::TextDisabled("Nothing selected: level settings");
         settings_section();
-        ImGui::End();
         return;
     }
     const level::Entity& primary = *selected.front();
@@ -227,7 +273,53 @@ void EditorApp::inspector_panel(float x, float y, float w, float h) {
     ImGui::SameLine();
     if (ImGui::Button("Focus")) focus_selection();
     if (ImGui::CollapsingHeader("Level settings")) settings_section();
-    ImGui::End();
+}
+
+// The Links tab: the selected entity's links (what its events set off) and the links that act on it; with
+// nothing selected, the level's own (on_start).
+void EditorApp::links_tab() {
+    const auto selected = editor_.selected_entities();
+    if (selected.size() > 1) {
+        ImGui::TextWrapped("%zu selected: select one entity to wire its links.", selected.size());
+        return;
+    }
+    if (selected.empty()) {
+        ImGui::TextWrapped("Nothing selected: the level's own links, set off when it starts (on_start). "
+                           "Select an entity to wire its events.");
+        ImGui::PushID("level_links");
+        link_list(LinkOwner::level(), "level_link");
+        ImGui::PopID();
+        return;
+    }
+    const level::Entity& entity = *selected.front();
+    ImGui::TextColored(type_colour(entity.type()), "%s", entity_title(entity).c_str());
+    if (!level::entity_events(entity.type()).empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+        ImGui::TextWrapped("Each link: on the event, do the action to the target (after the delay; once: "
+                           "the first time only).");
+        ImGui::PopStyleColor();
+    }
+    ImGui::PushID("links");
+    link_list(LinkOwner::entity(entity.id), "link");
+    ImGui::PopID();
+    const auto incoming = incoming_links(editor_.level(), entity.id);
+    ImGui::Spacing();
+    if (incoming.empty()) {
+        ImGui::TextDisabled(entity.name.empty() ? "No links act on it (it has no name to be targeted by)"
+                                                : "No links act on it");
+        return;
+    }
+    ImGui::TextDisabled("Acted on by:");
+    for (size_t i = 0; i < incoming.size(); ++i) {
+        ImGui::PushID(static_cast<int>(i));
+        const std::string row = incoming[i].source + ": " + incoming[i].label;
+        if (ImGui::Selectable(row.c_str(), false) && incoming[i].source_entity != 0)
+            report(editor_.select({incoming[i].source_entity}), "select");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip(incoming[i].source_entity != 0 ? "Click to select the source"
+                                                             : "In the Objectives tab or the level settings");
+        ImGui::PopID();
+    }
 }
 
 void EditorApp::settings_section() {
@@ -270,6 +362,11 @@ void EditorApp::settings_section() {
         ImGui::PopID();
     }
     audition_button(options_.audition, editor_.level().settings.ambient_sound.value, 1.0f);
+    ImGui::Separator();
+    ImGui::TextDisabled("When the level starts (on_start):");
+    ImGui::PushID("level_links");
+    link_list(LinkOwner::level(), "level_link");
+    ImGui::PopID();
 }
 
 } // namespace ks::editor::ui

@@ -17,7 +17,7 @@ namespace {
 const Vec4 kSpawnerMarker(1.0f, 0.45f, 0.3f, 1.0f);
 const Vec4 kMessageMarker(0.65f, 0.85f, 1.0f, 1.0f);
 const Vec4 kTriggerDisabled(0.6f, 0.6f, 0.65f, 1.0f);
-const ImU32 kArrowFaint = IM_COL32(225, 230, 245, 80);
+const ImU32 kArrowFaint = IM_COL32(225, 230, 245, 150);
 const ImU32 kArrowOutgoing = IM_COL32(255, 200, 60, 255);
 const ImU32 kArrowIncoming = IM_COL32(80, 215, 255, 235);
 constexpr int kArrowSegments = 16;
@@ -122,7 +122,7 @@ void EditorApp::logic_overlay(ImDrawList* draw, Vec2 origin) {
                 for (const MarkerLine& line : marker_lines_) {
                     ImVec2 a, b;
                     if (screen(line.a, a) && screen(line.b, b))
-                        draw->AddLine(a, b, colour, bright ? 2.5f : 1.2f);
+                        draw->AddLine(a, b, colour, bright ? 2.5f : 1.5f);
                 }
             }
         for (size_t i = 0; i < link_arrows_.size(); ++i) { // labels last: over every line

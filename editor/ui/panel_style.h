@@ -57,4 +57,11 @@ inline ImVec4 type_colour(level::EntityType t) {
     }
 }
 
+// "Hall trigger  (trigger #13)", or "trigger #13" for an unnamed one.
+inline std::string entity_title(const level::Entity& e) {
+    const std::string type(level::type_name(e.type()));
+    return e.name.empty() ? type + " #" + std::to_string(e.id)
+                          : e.name + "  (" + type + " #" + std::to_string(e.id) + ")";
+}
+
 } // namespace ks::editor::ui

@@ -91,6 +91,36 @@ std::optional<std::string> pick_refusal(const level::Level& level, int entity_id
            " takes no action: pick a door, light, trigger, robot, spawner, message or sound";
 }
 
+std::vector<TargetOption> kill_options(const level::Level& level) {
+    std::vector<TargetOption> out;
+    for (const auto& e : level.entities)
+        if (e.type() == level::EntityType::Robot || e.type() == level::EntityType::Spawner)
+            out.push_back({level::TargetKind::Entity, e.name, e.id, entity_label(e)});
+    return out;
+}
+
+std::optional<std::string> kill_refusal(const level::Level& level, int entity_id) {
+    const level::Entity* e = level.find(entity_id);
+    if (!e) return "entity " + std::to_string(entity_id) + " does not exist";
+    if (e->type() == level::EntityType::Robot || e->type() == level::EntityType::Spawner) return std::nullopt;
+    return level::entity_subject(*e) + " cannot be killed: pick a robot or a spawner";
+}
+
+std::vector<IncomingLink> incoming_links(const level::Level& level, int entity_id) {
+    std::vector<IncomingLink> out;
+    const level::Entity* target = level.find(entity_id);
+    if (!target || target->name.empty()) return out;
+    auto scan = [&](const std::vector<level::Link>& links, int source_entity, const std::string& source) {
+        for (const auto& link : links)
+            if (link.target == target->name && link_target_kind(level, link) == level::TargetKind::Entity)
+                out.push_back({source_entity, source, link_label(link)});
+    };
+    for (const auto& e : level.entities) scan(e.links, e.id, entity_label(e));
+    for (const auto& o : level.objectives) scan(o.links, 0, "objective " + o.id);
+    scan(level.links, 0, "level");
+    return out;
+}
+
 std::string link_label(const level::Link& link) {
     return link.event + " -> " + link.action;
 }

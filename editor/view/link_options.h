@@ -45,6 +45,21 @@ std::string target_label(const level::Level& level, level::TargetKind kind, std:
 // else why the link stays as it is ("wall #3 \"North\" takes no action: ...").
 std::optional<std::string> pick_refusal(const level::Level& level, int entity_id);
 
+// The robots and spawners an objective's kill list may name, in level order (unnamed ones too: they are
+// named when chosen).
+std::vector<TargetOption> kill_options(const level::Level& level);
+// As pick_refusal, for a kill list: nullopt for a robot or a spawner.
+std::optional<std::string> kill_refusal(const level::Level& level, int entity_id);
+
+// A link that acts on an entity, seen from that entity (the inspector's "Incoming" list).
+struct IncomingLink {
+    int source_entity = 0; // 0: an objective's or the level's link
+    std::string source;    // "Hall trigger (trigger)", "objective clear_hall", "level"
+    std::string label;     // "on_enter -> spawn"
+};
+// Every link in the level whose target is the entity (by its name: none when it has no name).
+std::vector<IncomingLink> incoming_links(const level::Level& level, int entity_id);
+
 // "on_enter -> open" (the editor's font has no arrow glyph).
 std::string link_label(const level::Link& link);
 

@@ -234,3 +234,33 @@ TEST_CASE("logic markers: a spawner's ring, post and facing; a message's bubble;
         }
     }
 }
+
+TEST_CASE("kill lists take robots and spawners; incoming links list who acts on an entity") {
+    level::Level level = logic_hall();
+    level::Entity& robot = level.add(level::EntityType::Robot, Vec3(0, 0, -40));
+    robot.name.clear();
+    const auto options = kill_options(level);
+    REQUIRE(options.size() == 2);
+    CHECK(options[0].label == "Hall spawner (spawner)");
+    CHECK(options[1].label == "robot #" + std::to_string(robot.id) + " (unnamed)");
+    CHECK_FALSE(kill_refusal(level, robot.id));
+    CHECK_FALSE(kill_refusal(level, named(level, "Hall spawner").id));
+    REQUIRE(kill_refusal(level, named(level, "Exit door").id));
+    CHECK(*kill_refusal(level, named(level, "Exit door").id) ==
+          "door 12 (\"Exit door\") cannot be killed: pick a robot or a spawner");
+
+    const auto door = incoming_links(level, named(level, "Exit door").id);
+    REQUIRE(door.size() == 2); // the objective's unlock and open
+    CHECK(door[0].source == "objective clear_hall");
+    CHECK(door[0].source_entity == 0);
+    CHECK(door[0].label == "on_complete -> unlock");
+    CHECK(door[1].label == "on_complete -> open");
+    const auto spawner = incoming_links(level, named(level, "Hall spawner").id);
+    REQUIRE(spawner.size() == 1);
+    CHECK(spawner[0].source == "Hall trigger (trigger)");
+    CHECK(spawner[0].source_entity == 13);
+    const auto welcome = incoming_links(level, named(level, "Welcome").id);
+    REQUIRE(welcome.size() == 1);
+    CHECK(welcome[0].source == "level");
+    CHECK(incoming_links(level, robot.id).empty()); // no name: nothing can name it
+}
