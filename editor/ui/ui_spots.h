@@ -15,9 +15,10 @@ class UiSpots {
   public:
     bool enabled = false;
     void clear() { spots_.clear(); }
-    // The centre of the last item ImGui drew.
+    // The centre of the last item ImGui drew. Not while its window appears: a popup's first frame only
+    // measures it (hidden, and not yet where it will be).
     void here(const std::string& name) {
-        if (!enabled) return;
+        if (!enabled || ImGui::IsWindowAppearing()) return;
         const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
         spots_[name] = Vec2((lo.x + hi.x) * 0.5f, (lo.y + hi.y) * 0.5f);
     }

@@ -5,6 +5,7 @@
 #include "level/entity_shapes.h"
 #include "view/link_arrows.h"
 #include "view/link_options.h"
+#include "view/link_problems.h"
 #include "view/logic_markers.h"
 
 #include <algorithm>
@@ -263,4 +264,34 @@ TEST_CASE("kill lists take robots and spawners; incoming links list who acts on 
     REQUIRE(welcome.size() == 1);
     CHECK(welcome[0].source == "level");
     CHECK(incoming_links(level, robot.id).empty()); // no name: nothing can name it
+}
+
+TEST_CASE("logic problems are found again by the path of the list, link, objective or kill name drawn") {
+    level::Level level = logic_hall();
+    CHECK(logic_problems(level).empty());
+    CHECK(links_path(level, LinkOwner::entity(13)) == "entities[12].links");
+    CHECK(links_path(level, LinkOwner::objective("shutdown")) == "objectives[1].links");
+    CHECK(links_path(level, LinkOwner::level()) == "links");
+    CHECK(links_path(level, LinkOwner::entity(999)).empty());
+    CHECK(links_path(level, LinkOwner::objective("nope")).empty());
+
+    level.find(13)->links.push_back({"on_enter", "Nobody", "open"});
+    level.objectives[0].kill.push_back("Exit door");
+    level.objectives[1].links.push_back({"on_complete", "Welcome", "open"});
+    const auto problems = logic_problems(level);
+    const auto dangling = problems_at(problems, "entities[12].links[2]");
+    REQUIRE(dangling.size() == 1);
+    CHECK(dangling[0]->error);
+    CHECK(dangling[0]->message.find("no entity named \"Nobody\"") != std::string::npos);
+    CHECK(problems_at(problems, "entities[12].links[0]").empty());
+    CHECK(problems_at(problems, "entities[12].links").size() == 1); // the list: everything under it
+    const auto kill = problems_at(problems, "objectives[0].kill[1]");
+    REQUIRE(kill.size() == 1);
+    CHECK(kill[0]->message.find("cannot be killed") != std::string::npos);
+    const auto wrong_action = problems_at(problems, "objectives[1].links[0]");
+    REQUIRE(wrong_action.size() == 1);
+    CHECK(wrong_action[0]->message.find("cannot \"open\"") != std::string::npos);
+    // A path is a prefix only at a step: objectives[1] is not objectives[10].
+    CHECK(problems_at({{"objectives[10].id", "m", "", true}}, "objectives[1]").empty());
+    CHECK(problems_at(problems, "").empty());
 }
