@@ -60,7 +60,8 @@ enum class ScriptOp {
     ExpectPatrol,
     ExpectDirty,
     ExpectClean,
-    Dojo, // a command on the clip file (ScriptStep::dojo): see DojoOp
+    Dojo,  // a command on the clip file (ScriptStep::dojo): see DojoOp
+    Logic, // a link, objective or naming command (ScriptStep::logic): see LogicOp
 };
 
 // The dojo context: commands on an animation clip file (`dojo open`, `clip ...`, `blend ...`, `event ...`,
@@ -116,6 +117,36 @@ struct DojoStep {
     int index = 0;
 };
 
+// The level-logic lines (script_logic.h): `name`, `link`, `objective` and their expectations.
+enum class LogicOp {
+    Name,
+    LinkAdd,
+    LinkSet,
+    LinkRemove,
+    ObjectiveAdd,
+    ObjectiveText,
+    ObjectiveKill,
+    ObjectiveRemove,
+    ObjectiveMove,
+    ExpectLinks,
+    ExpectLink,
+    ExpectObjectives,
+};
+
+// One logic line. `owner` is the SOURCE of link lines; `index` a link or the objective position, counted
+// from 0 (scripts count from 1); `words` the kill list; `text` the name, objective id or link field,
+// `value` the objective text or the link field's value; `link` the link added or expected.
+struct LogicStep {
+    LogicOp op = LogicOp::Name;
+    LinkOwner owner;
+    int entity_id = 0;
+    int index = 0;
+    int count = 0;
+    std::string text, value;
+    std::vector<std::string> words;
+    level::Link link;
+};
+
 // One parsed line. Which members matter depends on op (see script_parser.cpp).
 struct ScriptStep {
     ScriptOp op = ScriptOp::New;
@@ -130,6 +161,7 @@ struct ScriptStep {
     SelectMode mode = SelectMode::Replace;
     std::string text, text2; // field names, values, paths, names
     DojoStep dojo;           // ScriptOp::Dojo
+    LogicStep logic;         // ScriptOp::Logic
 };
 
 struct Script {

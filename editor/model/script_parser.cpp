@@ -1,6 +1,7 @@
 // The script language's parser: every line to a ScriptStep, or an error at the offending word.
 #include "model/script.h"
 #include "model/script_dojo.h"
+#include "model/script_logic.h"
 #include "model/script_tokens.h"
 
 namespace ks::editor {
@@ -61,22 +62,25 @@ class LineParser {
             {"recover", ScriptOp::Recover, &LineParser::recover, "recover accept|decline"},
             {"expect", ScriptOp::ExpectValid, &LineParser::expect,
              "expect count TYPE N | valid | issue RULE [ID] | no_issue RULE | selected N | "
-             "field ID FIELD VALUE | patrol ID POINTS | dirty | clean; clip files: expect clip | blend | "
-             "events | "
-             "event | key | curve | dojo ..."},
+             "field ID FIELD VALUE | patrol ID POINTS | dirty | clean; level logic: expect links | link | "
+             "objectives ...; clip files: expect clip | blend | events | event | key | curve | dojo ..."},
         };
         step_.line = line_no_;
         const std::string_view word = tokens_[0].text;
         if (is_dojo_command(word) ||
             (word == "expect" && tokens_.size() > 1 && is_dojo_expectation(tokens_[1].text)))
             return parse_dojo_line(line_, tokens_, line_no_, file_);
+        if (is_logic_command(word) ||
+            (word == "expect" && tokens_.size() > 1 && is_logic_expectation(tokens_[1].text)))
+            return parse_logic_line(line_, tokens_, line_no_, file_);
         for (const Command& command : kCommands)
             if (word == command.word) return (this->*command.parse)(command.op, command.usage);
         return fail(
             0, "unknown command '" + std::string(word) + "'",
             "commands: new open save place select move nudge rotate scale set reset setting player_start "
             "level_name delete duplicate copy paste undo redo grid snap lock unlock hide show begin commit "
-            "cancel fix patrol recover expect; clip files: dojo clip blend event key");
+            "cancel fix patrol recover expect; level logic: name link objective; clip files: dojo clip blend "
+            "event key");
     }
 
   private:

@@ -1,6 +1,7 @@
 // The script language's runner: each parsed step applied to an Editor, expectations checked.
 #include "model/script.h"
 #include "model/script_dojo.h"
+#include "model/script_logic.h"
 #include "model/script_tokens.h"
 
 #include "core/log.h"
@@ -95,6 +96,8 @@ class Runner {
             return run_expectation(s);
         case ScriptOp::Dojo:
             return run_dojo_step(s.dojo, dojo_, script_.base_dir, report_);
+        case ScriptOp::Logic:
+            return run_logic_step(s.logic, editor_, report_);
         }
         return ok();
     }
