@@ -1,6 +1,7 @@
 #pragma once
-// The editor window: a fixed ImGui layout (menu bar; outliner left; inspector, settings and validation
-// right; history and log below; the 3D viewport in the middle, or the dojo tab) around one Editor session.
+// The editor window: a fixed ImGui layout (menu bar; outliner left; the inspector's Properties, Links and
+// Objectives tabs and validation right; history and log below; the 3D viewport in the middle, or the dojo
+// tab) around one Editor session.
 // Panels only present the model and dispatch Editor calls; every edit goes through its commands.
 #include "model/autosave.h"
 #include "model/editor.h"

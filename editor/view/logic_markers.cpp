@@ -8,7 +8,7 @@ namespace ks::editor {
 
 void spawner_marker(const Vec3& feet, float yaw_degrees, std::vector<MarkerLine>& out) {
     const Vec3 base = feet + Vec3(0, 0.08f, 0);
-    const float ring = level::kRobotRadius * 1.5f;
+    const float ring = level::kRobotRadius * 2.0f;
     constexpr int kSegments = 24;
     Vec3 previous = base + Vec3(ring, 0, 0);
     for (int i = 1; i <= kSegments; ++i) {
@@ -17,7 +17,16 @@ void spawner_marker(const Vec3& feet, float yaw_degrees, std::vector<MarkerLine>
         out.push_back({previous, p});
         previous = p;
     }
-    // The post the robots' height, and a plus on top: "robots are made here".
+    // A robot's body as a wire box (upright: where each one appears), the post through it, and a plus on
+    // top: "robots are made here".
+    const float r = level::kRobotRadius, h = level::kRobotHeight;
+    const Vec3 corners[4] = {{-r, 0, -r}, {r, 0, -r}, {r, 0, r}, {-r, 0, r}};
+    for (int k = 0; k < 4; ++k) {
+        const Vec3 a = feet + corners[k], b = feet + corners[(k + 1) % 4];
+        out.push_back({a, b});
+        out.push_back({a + Vec3(0, h, 0), b + Vec3(0, h, 0)});
+        out.push_back({a, a + Vec3(0, h, 0)});
+    }
     const Vec3 top = feet + Vec3(0, level::kRobotHeight, 0);
     out.push_back({base, top});
     const float arm = level::kRobotRadius * 0.8f;

@@ -1,8 +1,9 @@
 #pragma once
 // How the viewport shows the logic entities, window-free (the game draws none of them): a spawner as a ring
-// on the ground where its robots appear with a post of a robot's height, a plus on top and an arrow the way
-// they face; a message as a speech bubble with lines of text, facing the camera inside its pick box; a
-// trigger as its box, whose faces the UI fills translucently. The UI draws the lines; tests check them.
+// on the ground around a robot-sized wire box where its robots appear, a post with a plus on top and an
+// arrow the way they face; a message as a speech bubble with lines of text, facing the camera inside its pick
+// box; a trigger as its box, whose faces the UI fills translucently. The UI draws the lines; tests check
+// them.
 #include "geometry/obb.h"
 #include "view/sound_marker.h"
 

@@ -202,7 +202,7 @@ TEST_CASE("logic markers: a spawner's ring, post and facing; a message's bubble;
     // Yaw 90 faces -x: the arrow's tip is the farthest point in -x.
     float west = 1e9f;
     for (const auto& l : lines) west = std::min({west, l.a.x, l.b.x});
-    CHECK(west == doctest::Approx(feet.x - level::kRobotRadius * 1.5f - 1.2f));
+    CHECK(west == doctest::Approx(feet.x - level::kRobotRadius * 2.0f - 1.2f));
 
     lines.clear();
     const Vec3 centre(0, 2, 0), right(1, 0, 0), up(0, 1, 0);
