@@ -36,7 +36,10 @@ void EditorApp::palette_bar() {
         const bool active = placing_ && *placing_ == type;
         if (active) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.25f, 0.55f, 0.3f, 1));
         ImGui::PushStyleColor(ImGuiCol_Text, type_colour(type));
-        if (ImGui::SmallButton(type_label(type))) placing_ = type;
+        if (ImGui::SmallButton(type_label(type))) {
+            if (pick_) end_pick(); // placing takes the viewport's clicks
+            placing_ = type;
+        }
         ImGui::PopStyleColor(active ? 2 : 1);
         palette_rects_[static_cast<size_t>(type)] = {
             Vec2(ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y),

@@ -3,7 +3,8 @@
 // by clicking an unnamed door in the viewport (a wall is refused; Esc and a right click cancel), choose the
 // action, save, check the file, undo; and in the Objectives tab add an objective, put a robot on its kill
 // list by picking it, give it an on_complete link that wins the level, save and undo. The editor reports its
-// state and where its widgets are in --status-file every frame; the test waits on that, never on time.
+// state and where its widgets are in --status-file every frame; the test waits on that, never on time. A
+// screenshot test checks the selected trigger's link arrows are drawn.
 #include "level/level_io.h"
 #include "runtime/editor_session.h"
 #include "runtime/screen_image.h"
@@ -232,4 +233,49 @@ TEST_CASE("editor logic input: add an objective, pick a robot for its kill list,
     st = s.wait("back to the new objective", [&](const json& j) { return j["undo"] == undo0; });
     CHECK(st["objectives"][0]["kill"].empty());
     CHECK(st["objectives"][0]["links"].empty());
+}
+
+TEST_CASE(
+    "killswitch-editor draws the selected trigger's outgoing links as bright arrows, and none without a "
+    "selection; --inspector takes only its three tabs") {
+    require_window_test_tools();
+    test::ScratchDir dir;
+    const std::string editor = (test::bin_dir() / "killswitch-editor").string();
+    const auto level = test::source_dir() / "tests/data/levels/logic_hall.json";
+    std::ofstream(dir / "select.kss") << "select 13\n";
+    std::ofstream(dir / "none.kss") << "select none\n";
+    auto shot = [&](const char* name, const char* script) {
+        const auto png = dir / (std::string(name) + ".png");
+        const auto run =
+            test::run_command(editor + " --level " + level.string() + " --run " + (dir / script).string() +
+                              " --camera 15,17,-1,40,-40 --inspector links" +
+                              " --width 1280 --height 720 --frames 4 --screenshot " + png.string());
+        INFO(run.output);
+        REQUIRE(run.exit_code == 0);
+        return test::load_png(png);
+    };
+    const test::Image selected = shot("selected", "select.kss"), none = shot("none", "none.kss");
+    REQUIRE_FALSE(selected.rgb.empty());
+    REQUIRE_FALSE(none.rgb.empty());
+    // The outgoing arrows and their labels are (255, 200, 60); the lights' ranges are paler, the gizmo
+    // red, green and blue.
+    auto outgoing = [](const unsigned char* p) {
+        return p[0] > 235 && p[1] > 175 && p[1] < 220 && p[2] < 100;
+    };
+    auto count = [&](const test::Image& img) {
+        int n = 0;
+        for (int y = 60; y < 550; ++y) // the viewport
+            for (int x = 250; x < 950; ++x) n += outgoing(img.at(x, y));
+        return n;
+    };
+    const int bright = count(selected), unselected = count(none);
+    INFO("outgoing-arrow pixels with the trigger selected " << bright << ", without " << unselected);
+    CHECK(bright > 150);
+    CHECK(bright > 20 * std::max(unselected, 1));
+
+    const auto bad =
+        test::run_command(editor + " --inspector nope --frames 1 --screenshot " + (dir / "bad.png").string());
+    CHECK(bad.exit_code == 2);
+    CHECK(bad.output.find("--inspector 'nope': expected properties, links or objectives") !=
+          std::string::npos);
 }
