@@ -31,6 +31,12 @@ void DiagnosticSink::error_at(jsonio::TextPosition pos, const std::string& path,
     add(Diagnostic::Severity::Error, pos, path, std::move(message), std::move(hint));
 }
 
+void DiagnosticSink::tag_last(Diagnostic::Kind kind, std::string suggestion) {
+    if (list_.empty()) return;
+    list_.back().kind = kind;
+    list_.back().suggestion = std::move(suggestion);
+}
+
 bool DiagnosticSink::has_errors() const {
     return std::any_of(list_.begin(), list_.end(),
                        [](const Diagnostic& d) { return d.severity == Diagnostic::Severity::Error; });

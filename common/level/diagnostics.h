@@ -21,6 +21,9 @@ class DiagnosticSink {
     void error_at(jsonio::TextPosition pos, const std::string& path, std::string message,
                   std::string hint = {});
 
+    // Marks the diagnostic added last as a finding of `kind` (see Diagnostic::Kind).
+    void tag_last(Diagnostic::Kind kind, std::string suggestion = {});
+
     // A path whose value was already reported (e.g. a number that overflowed before parsing); readers skip it
     // so one mistake gives one message.
     void mark_reported(const std::string& path) { reported_.insert(path); }

@@ -16,6 +16,18 @@ namespace ks::level {
 struct Diagnostic {
     enum class Severity { Warning, Error } severity = Severity::Error;
     Error error; // message, location (file, line, column, JSON path), hint
+    // The logic findings a tool can offer a fix for (the editor's quick fixes); Other for everything else.
+    // DanglingTarget: a link target or kill-list name that names nothing; LogicLoop: a zero-delay loop (the
+    // path is one link of it); ObjectiveNeverCompletes: the path is the objective (nothing completes it) or
+    // a kill-list name (a spawner nothing starts); LockedDoor: a locked door nothing frees.
+    enum class Kind {
+        Other,
+        DanglingTarget,
+        LogicLoop,
+        ObjectiveNeverCompletes,
+        LockedDoor
+    } kind = Kind::Other;
+    std::string suggestion{}; // DanglingTarget: the name that would resolve ("did you mean"), or ""
 };
 
 struct LoadReport {

@@ -33,11 +33,19 @@ std::string number_text(float v) {
     return jsonio::format_readable(jsonio::float_to_double(v));
 }
 
-std::string did_you_mean(std::string_view word, const std::vector<std::string>& candidates, int& budget) {
+// The candidate closest to `word`, while the budget lasts.
+std::string closest(std::string_view word, const std::vector<std::string>& candidates, int& budget) {
     if (budget <= 0 || candidates.empty()) return {};
     --budget;
-    const std::string near = jsonio::closest_match(word, candidates);
+    return jsonio::closest_match(word, candidates);
+}
+
+std::string did_you_mean(const std::string& near) {
     return near.empty() ? std::string() : "did you mean " + in_quotes(near) + "? ";
+}
+
+std::string did_you_mean(std::string_view word, const std::vector<std::string>& candidates, int& budget) {
+    return did_you_mean(closest(word, candidates, budget));
 }
 
 std::vector<std::string> type_list_where(bool (*accept)(EntityType)) {
@@ -61,10 +69,12 @@ class TargetChecker {
         const std::string target_path = member_path(path, "target");
         switch (target_kind(*action)) {
         case TargetKind::Level:
-            if (link.target != kLevelTarget)
+            if (link.target != kLevelTarget) {
                 sink_.error(target_path,
                             in_quotes(link.action) + " acts on the level, not on " + in_quotes(link.target),
                             "write \"target\": \"level\"");
+                sink_.tag_last(Diagnostic::Kind::DanglingTarget, std::string(kLevelTarget));
+            }
             return;
         case TargetKind::Objective:
             check_objective_target(link, target_path);
@@ -83,9 +93,10 @@ class TargetChecker {
             return (robot && !robot->dummy) || e.type() == EntityType::Spawner;
         };
         if (found.empty()) {
+            const std::string near = closest(name, names_.names_where(level_, killable), budget_);
             sink_.error(path, "no robot or spawner named " + in_quotes(name),
-                        did_you_mean(name, names_.names_where(level_, killable), budget_) +
-                            "name robots and spawners by their \"name\"");
+                        did_you_mean(near) + "name robots and spawners by their \"name\"");
+            sink_.tag_last(Diagnostic::Kind::DanglingTarget, near);
         } else if (found.size() > 1) {
             ambiguous(name, found, path);
         } else if (!killable(level_.entities[found.front()])) {
@@ -100,25 +111,30 @@ class TargetChecker {
     void check_objective_target(const Link& link, const std::string& path) {
         if (std::find(objective_ids_.begin(), objective_ids_.end(), link.target) != objective_ids_.end())
             return;
-        std::string hint = did_you_mean(link.target, objective_ids_, budget_);
+        const std::string near = closest(link.target, objective_ids_, budget_);
+        std::string hint = did_you_mean(near);
         hint += objective_ids_.empty() ? "the level has no objectives; add one under \"objectives\""
                                        : "objectives: " + join(objective_ids_);
         sink_.error(path, "no objective " + in_quotes(link.target), hint);
+        sink_.tag_last(Diagnostic::Kind::DanglingTarget, near);
     }
 
     void check_entity_target(const Link& link, LinkAction action, const std::string& path) {
         if (link.target.empty()) {
             sink_.error(path, "the link has no target", "name the entity it acts on");
+            sink_.tag_last(Diagnostic::Kind::DanglingTarget);
             return;
         }
         const auto found = names_.find(link.target);
         if (found.empty()) {
             auto takes = [action](const Entity& e) { return entity_takes(e.type(), action); };
             std::vector<std::string> candidates = names_.names_where(level_, takes);
-            std::string hint = did_you_mean(link.target, candidates, budget_);
+            const std::string near = closest(link.target, candidates, budget_);
+            std::string hint = did_you_mean(near);
             hint += candidates.empty() ? "no entity in the level takes " + in_quotes(link.action)
                                        : "name the target by its \"name\"";
             sink_.error(path, "no entity named " + in_quotes(link.target), hint);
+            sink_.tag_last(Diagnostic::Kind::DanglingTarget, near);
             return;
         }
         if (found.size() > 1) {

@@ -164,6 +164,7 @@ void check_door_loops(const Level& level, const std::vector<LinkRef>& refs, Diag
                      "zero-delay loop of door links (" + chain +
                          "): each sets the next off in the same step, for ever (the game cuts it off)",
                      "give one of these links a delay, or make one of them \"once\"");
+        sink.tag_last(Diagnostic::Kind::LogicLoop);
     });
 }
 
@@ -181,11 +182,13 @@ void check_reachability(const Level& level, const NameIndex& names, const std::v
         const Entity& e = level.entities[i];
         const std::string path = entity_path(i, source_index);
         SubjectScope scope(sink, entity_subject(e));
-        if (const auto* door = e.try_as<DoorProps>(); door && door->locked && !door->open && !freed[i])
+        if (const auto* door = e.try_as<DoorProps>(); door && door->locked && !door->open && !freed[i]) {
             sink.warning(member_path(member_path(path, "props"), "locked"),
                          "the door is locked and no link unlocks or opens it: the player can never pass",
                          "add a link with \"action\": \"unlock\" (or \"open\") and \"target\": " +
                              in_quotes(e.name));
+            sink.tag_last(Diagnostic::Kind::LockedDoor);
+        }
     }
     for (size_t i = 0; i < level.objectives.size(); ++i) {
         const Objective& o = level.objectives[i];
@@ -198,17 +201,20 @@ void check_reachability(const Level& level, const NameIndex& names, const std::v
                          "kill), so the level can never be won",
                          "add a link with \"action\": \"complete\" and \"target\": " + in_quotes(o.id) +
                              ", or list robots or spawners under \"kill\"");
+            sink.tag_last(Diagnostic::Kind::ObjectiveNeverCompletes);
             continue;
         }
         if (by_link) continue;
         for (size_t k = 0; k < o.kill.size(); ++k) {
             const auto found = names.find(o.kill[k]);
             if (found.size() == 1 && level.entities[found.front()].type() == EntityType::Spawner &&
-                !spawned[found.front()])
+                !spawned[found.front()]) {
                 sink.warning(element_path(member_path(path, "kill"), k),
                              "spawner " + in_quotes(o.kill[k]) +
                                  " never spawns, so the objective can never complete",
                              "add a link that spawns it, or remove it from \"kill\"");
+                sink.tag_last(Diagnostic::Kind::ObjectiveNeverCompletes);
+            }
         }
     }
 }

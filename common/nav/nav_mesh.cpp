@@ -169,11 +169,52 @@ bool NavMesh::set_door_open(int door_entity_id, bool open) {
     if (index < 0 || doors_[static_cast<size_t>(index)].polygons.empty()) return false;
     Door* door = &doors_[static_cast<size_t>(index)];
     door->open = open;
+    islands_.clear();
     const std::uint16_t flags = open ? (kFlagWalk | kFlagDoor) : kFlagDoor;
     bool all_set = true;
     for (std::uint64_t ref : door->polygons)
         all_set = !dtStatusFailed(mesh_->setPolyFlags(static_cast<dtPolyRef>(ref), flags)) && all_set;
     return all_set;
+}
+
+void NavMesh::number_islands() {
+    islands_.clear();
+    int count = 0;
+    std::vector<dtPolyRef> frontier;
+    auto walkable = [](const dtPoly& poly) {
+        return (poly.flags & kFlagWalk) != 0 && poly.getType() != DT_POLYTYPE_OFFMESH_CONNECTION;
+    };
+    each_polygon(*mesh_, [&](const dtMeshTile& tile, int p, dtPolyRef seed) {
+        if (!walkable(tile.polys[p]) || islands_.contains(seed)) return;
+        islands_.emplace(seed, ++count);
+        frontier.assign(1, seed);
+        while (!frontier.empty()) {
+            const dtPolyRef ref = frontier.back();
+            frontier.pop_back();
+            const dtMeshTile* at = nullptr;
+            const dtPoly* poly = nullptr;
+            mesh_->getTileAndPolyByRefUnsafe(ref, &at, &poly);
+            for (unsigned int k = poly->firstLink; k != DT_NULL_LINK; k = at->links[k].next) {
+                const dtPolyRef next = at->links[k].ref;
+                const dtMeshTile* next_tile = nullptr;
+                const dtPoly* next_poly = nullptr;
+                if (next == 0 || islands_.contains(next)) continue;
+                mesh_->getTileAndPolyByRefUnsafe(next, &next_tile, &next_poly);
+                if (!walkable(*next_poly)) continue;
+                islands_.emplace(next, count);
+                frontier.push_back(next);
+            }
+        }
+    });
+}
+
+int NavMesh::island(const Vec3& p, const Vec3& half_extents) {
+    if (islands_.empty()) number_islands();
+    Vec3 on_mesh(0.0f);
+    const std::uint64_t ref = nearest_polygon(p, half_extents, on_mesh);
+    if (ref == 0) return 0;
+    auto it = islands_.find(ref);
+    return it == islands_.end() ? 0 : it->second;
 }
 
 bool NavMesh::door_open(int door_entity_id) const {

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <unordered_map>
 #include <vector>
 
 class dtNavMesh;
@@ -70,6 +71,11 @@ class NavMesh {
     // Length along the mesh from `from` to `to` (for how far a sound travels); nullopt when not reachable.
     std::optional<float> path_length(const Vec3& from, const Vec3& to);
     bool reachable(const Vec3& from, const Vec3& to);
+    // Which connected piece of the walkable surface (through the doors open now) holds the nearest polygon
+    // within `half_extents` of `p`: 1, 2, ...; 0 when there is none. Two points are reachable from each
+    // other exactly when their islands are equal and not 0, so asking many points costs one flood of the
+    // polygons (redone on the first call after a door opens or closes) and a polygon lookup each.
+    int island(const Vec3& p, const Vec3& half_extents);
     // True when the straight line from `from` to `to` stays on walkable polygons (Detour's raycast along
     // the surface): a robot may walk it directly.
     bool walkable_line(const Vec3& from, const Vec3& to);
@@ -96,6 +102,7 @@ class NavMesh {
     // String-pulls the corridor into straight_points_; returns the number of corners (0 on failure).
     int straighten(const Vec3& start, const Vec3& end, int polygon_count);
     int find_door(int entity_id) const; // index into doors_, -1 when none
+    void number_islands();
     void index_door_polygons(const std::vector<DoorFootprint>& footprints);
 
     NavSettings settings_;
@@ -104,6 +111,8 @@ class NavMesh {
     std::unique_ptr<dtNavMeshQuery, void (*)(dtNavMeshQuery*)> query_;
     std::unique_ptr<dtQueryFilter> filter_;
     std::vector<Door> doors_;
+    // island() answers: polygon reference -> island number; empty until asked, cleared when a door changes.
+    std::unordered_map<std::uint64_t, int> islands_;
     // Query scratch, sized once at build.
     std::vector<std::uint32_t> corridor_; // dtPolyRef
     std::vector<float> straight_points_;  // x, y, z per corner

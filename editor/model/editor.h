@@ -178,6 +178,8 @@ class Editor {
     Result<void> edit_objectives(std::string name,
                                  const std::function<Result<void>(std::vector<level::Objective>&)>& edit,
                                  std::string merge_key = {}, const TargetRenames& renames = {});
+    // The link and objective quick fixes (editor_logic.cpp), each one step through the edits above.
+    Result<void> apply_logic_fix(const QuickFix& fix);
     // Executes through History; entity renames in `change` take the links and kill lists naming them along.
     void execute(std::unique_ptr<LevelChange> change, std::vector<int> selection_after);
     Result<SaveReport> write_to(const std::filesystem::path& path);

@@ -192,6 +192,7 @@ const std::vector<Issue>& Editor::issues() {
             if (walk_mesh_) {
                 check_robot_reach(doc_.level, *walk_mesh_, validation_options_, issues_);
                 check_patrol_on_mesh(doc_.level, *walk_mesh_, validation_options_, issues_);
+                check_trigger_reach(doc_.level, *walk_mesh_, validation_options_, issues_);
             }
         }
         issues_revision_ = key;
@@ -234,6 +235,12 @@ Result<void> Editor::apply_quick_fix(const Issue& issue) {
         return patrol_move(issue.entity_id, fix.index, fix.position);
     case QuickFix::Kind::SetSetting:
         return set_setting(fix.field, fix.value);
+    case QuickFix::Kind::SetLink:
+    case QuickFix::Kind::RemoveLink:
+    case QuickFix::Kind::AddLink:
+    case QuickFix::Kind::SetKillName:
+    case QuickFix::Kind::RemoveKillName:
+        return apply_logic_fix(fix);
     case QuickFix::Kind::MovePlayerStart: {
         auto change = std::make_unique<LevelChange>();
         change->set_name(name);

@@ -243,6 +243,38 @@ Result<void> Editor::objective_move(int from, int to) {
     });
 }
 
+Result<void> Editor::apply_logic_fix(const QuickFix& fix) {
+    switch (fix.kind) {
+    case QuickFix::Kind::SetLink:
+        return link_set(fix.owner, fix.index, fix.link);
+    case QuickFix::Kind::RemoveLink:
+        return link_remove(fix.owner, fix.index);
+    case QuickFix::Kind::AddLink: {
+        auto added = link_add(fix.owner, fix.link);
+        if (!added) return added.error();
+        return ok();
+    }
+    case QuickFix::Kind::SetKillName:
+    case QuickFix::Kind::RemoveKillName: {
+        if (auto r = check_index(fix.index, doc_.level.objectives.size(), "objective", "the level"); !r)
+            return r;
+        level::Objective objective = doc_.level.objectives[static_cast<size_t>(fix.index)];
+        if (auto r = check_index(fix.kill_index, objective.kill.size(), "kill-list name",
+                                 "objective " + in_quotes(objective.id));
+            !r)
+            return r;
+        auto name = objective.kill.begin() + fix.kill_index;
+        if (fix.kind == QuickFix::Kind::SetKillName)
+            *name = fix.name;
+        else
+            objective.kill.erase(name);
+        return objective_set(fix.index, std::move(objective));
+    }
+    default:
+        return Error("not a link or objective quick fix: " + fix.label);
+    }
+}
+
 Result<std::string> Editor::ensure_link_name(int entity_id) {
     const level::Entity* e = doc_.level.find(entity_id);
     if (!e) return Error("name for links: no entity with id " + std::to_string(entity_id));

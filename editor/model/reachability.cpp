@@ -1,11 +1,13 @@
 #include "model/reachability.h"
 
+#include "level/diagnostics.h"
 #include "model/patrol_validation.h"
 
 #include "nav/nav_mesh.h"
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 namespace ks::editor {
 namespace {
@@ -64,6 +66,50 @@ std::vector<Vec3> panel_approaches(nav::NavMesh& mesh, const Entity& panel, cons
     return out;
 }
 
+bool has_trigger(const level::Level& level) {
+    return std::any_of(level.entities.begin(), level.entities.end(),
+                       [](const Entity& e) { return e.type() == EntityType::Trigger; });
+}
+
+// How far from a body's feet the mesh may lie and still be under them.
+Vec3 feet_extents(const ValidationOptions& o) {
+    const float reach = o.character.radius + o.walk_cell;
+    return {reach, o.character.step_height + o.support_tolerance, reach};
+}
+
+// Whether the mesh, at a point whose island `accept` takes, lies inside the trigger's box the way the game
+// tests a body (game/logic_step.cpp, trigger_holds): the feet within the footprint (grown by `grow` on each
+// side), the body's upright extent [feet, feet + height] meeting the box's. The footprint is sampled in cells
+// of about a unit, at most 8 x 8, each asked for its nearest mesh point.
+template <class Accept>
+bool box_meets_mesh(nav::NavMesh& mesh, const Entity& e, const level::TriggerProps& t, float height,
+                    float grow, const ValidationOptions& o, Accept accept) {
+    const Quat yaw = quat_from_ypr(radians(e.rotation.x), 0.0f, 0.0f); // the game turns triggers by yaw only
+    const Vec3 ax = yaw * Vec3(1, 0, 0), az = yaw * Vec3(0, 0, 1);
+    const float hx = t.size.x * 0.5f + grow, hz = t.size.z * 0.5f + grow;
+    const int nx = std::clamp(static_cast<int>(std::ceil(2.0f * hx)), 1, 8);
+    const int nz = std::clamp(static_cast<int>(std::ceil(2.0f * hz)), 1, 8);
+    const float cx = hx / static_cast<float>(nx), cz = hz / static_cast<float>(nz); // half a cell
+    const float c = std::abs(ax.x), s = std::abs(ax.z);
+    const Vec3 extents(cx * c + cz * s, (t.size.y + height) * 0.5f, cx * s + cz * c);
+    const float mid_y = e.position.y + (t.size.y - height) * 0.5f;
+    const Vec3 snap(o.walk_cell, o.character.step_height, o.walk_cell);
+    for (int i = 0; i < nx; ++i)
+        for (int k = 0; k < nz; ++k) {
+            Vec3 p = e.position + ax * (-hx + cx * static_cast<float>(2 * i + 1)) +
+                     az * (-hz + cz * static_cast<float>(2 * k + 1));
+            p.y = mid_y;
+            const auto on_mesh = mesh.nearest_point(p, extents);
+            if (!on_mesh) continue;
+            const Vec3 local = *on_mesh - e.position;
+            if (std::abs(glm::dot(local, ax)) > hx || std::abs(glm::dot(local, az)) > hz ||
+                local.y > t.size.y || local.y + height < 0.0f)
+                continue;
+            if (accept(mesh.island(*on_mesh, snap))) return true;
+        }
+    return false;
+}
+
 const Entity* find_panel(const level::Level& level) {
     for (const auto& e : level.entities)
         if (e.type() == EntityType::ControlPanel) return &e;
@@ -76,7 +122,7 @@ WalkCheck walk_to_control_panel(const level::Level& level, const ValidationOptio
     WalkCheck check;
     const Entity* panel = find_panel(level);
     const Vec3 start = level.player_start.position;
-    if (!panel || !is_finite(start)) return check;
+    if ((!panel && !has_trigger(level)) || !is_finite(start)) return check;
     auto built = nav::NavMesh::build(level, walk_settings(o));
     if (!built) {
         check.build_problem = built.error().str();
@@ -87,6 +133,7 @@ WalkCheck walk_to_control_panel(const level::Level& level, const ValidationOptio
     check.polygons = mesh.stats().polygons;
     for (const auto& e : level.entities)
         if (e.type() == EntityType::Door) mesh.set_door_open(e.id, true);
+    if (!panel) return check; // built for the triggers alone
     // The start must be on the mesh: the player stands there (the player_start rule reports it otherwise).
     const float reach = o.character.radius + o.walk_cell;
     if (!mesh.nearest_point(start, Vec3(reach, o.character.step_height + o.support_tolerance, reach)))
@@ -111,6 +158,8 @@ std::uint64_t walk_fingerprint(const level::Level& level, const ValidationOption
     mix_value(o.character.radius), mix_value(o.character.height), mix_value(o.character.step_height);
     mix_value(o.character.max_slope_degrees);
     mix_value(level.player_start.position);
+    const bool triggers = has_trigger(level); // without a panel, the mesh is built only for triggers
+    mix_value(triggers);
     for (const auto& e : level.entities) {
         const EntityType t = e.type();
         if (!shapes_the_mesh(t)) continue;
@@ -127,6 +176,9 @@ PanelReachability check_panel_reachability(const level::Level& level, const Vali
     WalkCheck check = walk_to_control_panel(level, options);
     PanelReachability result;
     result.mesh = std::move(check.mesh);
+    // Numbering the islands floods every polygon: done here, in the background job, so that the trigger
+    // rule's questions on the UI thread are polygon lookups.
+    if (result.mesh) (void)result.mesh->island(level.player_start.position, feet_extents(options));
     if (!check.decided || check.reachable) return result;
     const int panel_id = find_panel(level)->id;
     result.issues.push_back(
@@ -160,6 +212,53 @@ void check_robot_reach(const level::Level& level, nav::NavMesh& mesh, const Vali
     }
 }
 
+void check_trigger_reach(const level::Level& level, nav::NavMesh& mesh, const ValidationOptions& o,
+                         std::vector<Issue>& out) {
+    const Vec3 extents = feet_extents(o);
+    // Robots are narrower than the player: their mesh reaches this much closer to walls than the player's.
+    const float robot_grow = std::max(0.0f, o.character.radius - level::kRobotRadius);
+    const int player_island =
+        is_finite(level.player_start.position) ? mesh.island(level.player_start.position, extents) : 0;
+    std::vector<int> robot_islands;
+    for (const Entity& e : level.entities) {
+        const auto* robot = e.try_as<level::RobotProps>();
+        if (!((robot && !robot->dummy) || e.type() == EntityType::Spawner) || !is_finite(e.position))
+            continue;
+        if (const int island = mesh.island(e.position, extents + Vec3(robot_grow, 0, robot_grow)))
+            robot_islands.push_back(island);
+    }
+    std::sort(robot_islands.begin(), robot_islands.end());
+    robot_islands.erase(std::unique(robot_islands.begin(), robot_islands.end()), robot_islands.end());
+    for (const Entity& e : level.entities) {
+        const auto* t = e.try_as<level::TriggerProps>();
+        if (!t || !is_finite(e.position) || !is_finite(e.rotation)) continue;
+        const bool for_player = t->who.value != "robots", for_robots = t->who.value != "player";
+        if (for_player && player_island == 0 && !for_robots) continue; // the player start rule reports it
+        if (for_player && player_island != 0 &&
+            box_meets_mesh(mesh, e, *t, o.character.height, 0.0f, o,
+                           [&](int island) { return island == player_island; }))
+            continue;
+        if (for_robots && box_meets_mesh(mesh, e, *t, level::kRobotHeight, robot_grow, o, [&](int island) {
+                return std::binary_search(robot_islands.begin(), robot_islands.end(), island);
+            }))
+            continue;
+        const std::string who = for_player && for_robots ? "neither the player nor any robot"
+                                : for_player             ? "the player"
+                                                         : "no robot";
+        const std::string how = for_robots && robot_islands.empty() && !for_player
+                                    ? "the level has no robot or spawner: place one, or set who to player"
+                                    : "move or grow the box so that it meets the floor where they walk "
+                                      "(doors count as open, jumps "
+                                      "are not counted)";
+        out.push_back({Rule::TriggerReach,
+                       IssueSeverity::Warning,
+                       e.id,
+                       level::entity_subject(e) + " can never be set off: " + who +
+                           (for_player && !for_robots ? " cannot" : " can") + " walk into its box; " + how,
+                       {}});
+    }
+}
+
 void check_reachability(const level::Level& level, const ValidationOptions& options,
                         std::vector<Issue>& out) {
     PanelReachability panel = check_panel_reachability(level, options);
@@ -167,6 +266,7 @@ void check_reachability(const level::Level& level, const ValidationOptions& opti
     if (!panel.mesh) return;
     check_robot_reach(level, *panel.mesh, options, out);
     check_patrol_on_mesh(level, *panel.mesh, options, out);
+    check_trigger_reach(level, *panel.mesh, options, out);
 }
 
 } // namespace ks::editor

@@ -33,8 +33,9 @@ WalkCheck walk_to_control_panel(const level::Level& level, const ValidationOptio
 // with their boxes, the player start, the options): equal fingerprints give the same answer, so the editor
 // skips the check after edits that cannot change it (moving a robot or a pickup, renaming, tuning a light).
 std::uint64_t walk_fingerprint(const level::Level& level, const ValidationOptions& options);
-// The expensive half of the reachability rules: the mesh build and the control panel's answer. The mesh
-// comes back for the cheap half, so the editor reruns only that after edits that move robots.
+// The expensive half of the reachability rules: the mesh build (when the level has a control panel or a
+// trigger), its islands (nav::NavMesh::island) and the control panel's answer. The mesh comes back for the
+// cheap half, so the editor reruns only that after edits that move robots or triggers.
 struct PanelReachability {
     std::vector<Issue> issues;
     std::shared_ptr<nav::NavMesh> mesh;
@@ -44,7 +45,13 @@ PanelReachability check_panel_reachability(const level::Level& level, const Vali
 // where they stand. Robots the mesh does not reach under their feet are the support rule's business.
 void check_robot_reach(const level::Level& level, nav::NavMesh& mesh, const ValidationOptions& options,
                        std::vector<Issue>& out);
-// Both, for a fresh validation.
+// Triggers that no one they notice can set off on `mesh` (doors open; islands numbered by
+// check_panel_reachability, off the UI thread): the player's feet must reach the box from the player start,
+// a robot's from where some robot or spawner stands. Robots are asked on the player's mesh, their body's
+// smaller radius added around the box.
+void check_trigger_reach(const level::Level& level, nav::NavMesh& mesh, const ValidationOptions& options,
+                         std::vector<Issue>& out);
+// All of them, for a fresh validation.
 void check_reachability(const level::Level& level, const ValidationOptions& options, std::vector<Issue>& out);
 
 } // namespace ks::editor

@@ -8,9 +8,10 @@
 namespace ks::editor::script_tokens {
 namespace {
 
-constexpr Rule kRules[] = {Rule::Format,  Rule::PlayerStart, Rule::ControlPanel, Rule::WallOverlap,
-                           Rule::Support, Rule::StairSlope,  Rule::DoorGap,      Rule::Reachability,
-                           Rule::Patrol,  Rule::RobotReach,  Rule::Sound};
+constexpr Rule kRules[] = {Rule::Format,    Rule::PlayerStart,  Rule::ControlPanel, Rule::WallOverlap,
+                           Rule::Support,   Rule::StairSlope,   Rule::DoorGap,      Rule::Reachability,
+                           Rule::Patrol,    Rule::RobotReach,   Rule::Sound,        Rule::LinkTarget,
+                           Rule::LogicLoop, Rule::TriggerReach, Rule::Objective,    Rule::LockedDoor};
 
 } // namespace
 

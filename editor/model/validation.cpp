@@ -1,6 +1,7 @@
 #include "model/validation.h"
 
 #include "level/level_io.h"
+#include "model/logic_validation.h"
 #include "model/patrol_validation.h"
 #include "model/reachability.h"
 #include "model/sound_validation.h"
@@ -164,6 +165,10 @@ std::optional<Vec3> push_out(const geometry::Overlap& ov) {
 void check_format(const Level& level, std::vector<Issue>& out) {
     const auto report = level::validate(level);
     for (const auto& d : report.diagnostics) {
+        if (d.kind != level::Diagnostic::Kind::Other) {
+            out.push_back(logic_issue(level, d));
+            continue;
+        }
         Issue issue;
         issue.rule = Rule::Format;
         issue.severity =
@@ -354,6 +359,16 @@ const char* rule_name(Rule rule) {
         return "robot_reach";
     case Rule::Sound:
         return "sound";
+    case Rule::LinkTarget:
+        return "link_target";
+    case Rule::LogicLoop:
+        return "logic_loop";
+    case Rule::TriggerReach:
+        return "trigger_reach";
+    case Rule::Objective:
+        return "objective";
+    case Rule::LockedDoor:
+        return "locked_door";
     }
     return "?";
 }

@@ -4,6 +4,7 @@
 // select it, and carries a quick fix where the fix is obvious.
 #include "model/bounds.h"
 #include "model/field_access.h"
+#include "model/logic_edit.h"
 
 #include <optional>
 #include <string>
@@ -23,6 +24,12 @@ enum class Rule {
     Patrol,       // a robot's patrol point is not on a floor or stair surface
     RobotReach,   // a robot that can never walk to where the player starts
     Sound,        // a sound emitter or the level's ambient_sound names no file in assets/sounds
+    // Level logic (logic_validation.cpp; the level's own checks, level/logic_checks.h, find them):
+    LinkTarget,   // a link target or kill-list name that names nothing
+    LogicLoop,    // a zero-delay loop of door links
+    TriggerReach, // a trigger whose box no one it notices can walk into (reachability.cpp)
+    Objective,    // an objective that can never complete
+    LockedDoor,   // a locked door that no link unlocks or opens
 };
 const char* rule_name(Rule rule);
 
@@ -36,13 +43,22 @@ struct QuickFix {
         DeleteEntity,
         SetField,
         MovePatrolPoint,
-        SetSetting
+        SetSetting,
+        SetLink,       // replace link `index` of `owner` with `link`
+        RemoveLink,    // remove link `index` of `owner`
+        AddLink,       // append `link` to `owner`'s links
+        SetKillName,   // objective `index`: kill-list name `kill_index` becomes `name`
+        RemoveKillName // objective `index`: remove kill-list name `kill_index`
     } kind = Kind::None;
     std::string label;   // "Drop to floor", shown on the button
     Vec3 position{0.0f}; // MoveEntity / MovePlayerStart / MovePatrolPoint
     std::string field;   // SetField / SetSetting
     FieldValue value;    // SetField / SetSetting
-    int index = 0;       // MovePatrolPoint: which point of the issue's robot
+    int index = 0;       // MovePatrolPoint: which point of the issue's robot; link and objective fixes
+    LinkOwner owner{};   // SetLink, RemoveLink, AddLink
+    level::Link link{};  // SetLink, AddLink: the link as the fix leaves it
+    int kill_index = 0;  // SetKillName, RemoveKillName
+    std::string name{};  // SetKillName
 };
 
 struct Issue {
@@ -51,6 +67,10 @@ struct Issue {
     int entity_id = 0; // 0: the level itself or its player start
     std::string message;
     QuickFix fix;
+    // Logic rules: whose links (or which objective) the issue is about and which link (-1: none), so the
+    // inspector can show it; select_issue selects the owner when it is an entity.
+    std::optional<LinkOwner> owner{};
+    int link_index = -1;
 };
 
 struct ValidationOptions {

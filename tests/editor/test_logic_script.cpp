@@ -184,3 +184,26 @@ TEST_CASE("logic script: run-time refusals stop at their line and change nothing
     fails("expect link 14 5 on_enter Guard alert\n", "no link 5");
     fails("expect objectives 3\n", "the level has 2 objectives, expected 3");
 }
+
+TEST_CASE("logic script: the logic example in docs/editor.md runs on the two-room level and is sound") {
+    const std::string doc = ks::test::read_file(ks::test::source_dir() / "docs" / "editor.md");
+    size_t begin = doc.find("Logic example (on the two-room level");
+    REQUIRE(begin != std::string::npos);
+    begin = doc.find("```\n", begin);
+    REQUIRE(begin != std::string::npos);
+    begin += 4;
+    const size_t end = doc.find("```", begin);
+    REQUIRE(end != std::string::npos);
+    Editor ed = two_rooms();
+    auto r = run(ed, doc.substr(begin, end - begin));
+    REQUIRE_MESSAGE(r.ok(), (r.ok() ? std::string() : r.error().str()));
+    CHECK(r->expectations_checked == 2);
+    for (const Issue& issue : ed.issues()) {
+        INFO(issue.message);
+        CHECK(issue.rule != Rule::Format);
+        CHECK(issue.rule != Rule::LinkTarget);
+        CHECK(issue.rule != Rule::Objective);
+        CHECK(issue.rule != Rule::LockedDoor);
+        CHECK(issue.rule != Rule::TriggerReach);
+    }
+}

@@ -145,6 +145,33 @@ TEST_CASE("a link target that names nothing, two things or the wrong kind of thi
                 true);
 }
 
+TEST_CASE("findings a tool can fix are tagged with their kind and the did-you-mean name") {
+    auto kinds = [](const std::string& text) {
+        LoadReport report;
+        (void)load_level_string(text, "logic.json", &report);
+        std::vector<std::pair<Diagnostic::Kind, std::string>> out;
+        for (const Diagnostic& d : report.diagnostics) out.emplace_back(d.kind, d.suggestion);
+        return out;
+    };
+    using Kind = Diagnostic::Kind;
+    using Tags = std::vector<std::pair<Kind, std::string>>;
+    CHECK(kinds(logic_level("[" + link("on_enter", "Door 3", "open") + "]")) ==
+          Tags{{Kind::DanglingTarget, "Door 2"}});
+    CHECK(kinds(logic_level("[" + link("on_enter", "Zebra", "open") + "]")) ==
+          Tags{{Kind::DanglingTarget, ""}});
+    CHECK(kinds(logic_level("[" + link("on_enter", "Door 2", "win") + "]")) ==
+          Tags{{Kind::DanglingTarget, "level"}});
+    CHECK(kinds(logic_level("[]", "[]", R"([{"id": "clear", "text": "Clear", "kill": ["Gaurd"]}])")) ==
+          Tags{{Kind::DanglingTarget, "Guard"}});
+    // Not a dangling name: a light cannot open. Left untagged.
+    CHECK(kinds(logic_level("[" + link("on_enter", "Lamp", "open") + "]")) == Tags{{Kind::Other, ""}});
+    CHECK(kinds(logic_level("[]", "[]", R"([{"id": "clear", "text": "Clear"}])")) ==
+          Tags{{Kind::ObjectiveNeverCompletes, ""}});
+    CHECK(kinds(logic_level("[]", "[]", "[]",
+                            R"(, {"id": 11, "type": "door", "name": "Vault", "position": [9, 0, -5], )"
+                            R"("props": {"locked": true}})")) == Tags{{Kind::LockedDoor, ""}});
+}
+
 TEST_CASE("negative, NaN and absurd delays, and a link missing a key, are errors naming the entity") {
     std::string r =
         only_error(logic_level("[" + link("on_enter", "Door 2", "open", R"(, "delay": -1)") + "]"));

@@ -153,3 +153,24 @@ TEST_CASE("gas cylinders in a corridor are walked around") {
     }
     CHECK(path.size() > 2);
 }
+
+TEST_CASE("islands: points are on the same island exactly when a path joins them, doors as they are now") {
+    level::Level lv = split_room();
+    const int door = add_door(lv, Vec3(7.5f, 0, 0), 5.0f, false).id;
+    add_floor(lv, Vec3(60, 0, 0), Vec2(10, 10)); // apart from the room
+    auto mesh = build(lv);
+    const Vec3 extents(1, 1, 1), near(0, 0, 8), far(0, 0, -8), apart(60, 0, 0);
+    const int near_island = mesh->island(near, extents);
+    CHECK(near_island != 0);
+    CHECK(mesh->island(Vec3(-10, 0, 10), extents) == near_island);
+    CHECK(mesh->island(far, extents) != near_island); // the door is closed
+    CHECK(mesh->island(apart, extents) != 0);
+    CHECK(mesh->island(apart, extents) != near_island);
+    CHECK(mesh->island(apart, extents) != mesh->island(far, extents));
+    CHECK(mesh->island(Vec3(200, 0, 0), extents) == 0); // no mesh there
+    REQUIRE(mesh->set_door_open(door, true));
+    CHECK(mesh->island(far, extents) == mesh->island(near, extents));
+    CHECK(mesh->reachable(near, far));
+    CHECK(mesh->island(apart, extents) != mesh->island(near, extents));
+    CHECK_FALSE(mesh->reachable(near, apart));
+}
