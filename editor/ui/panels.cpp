@@ -186,15 +186,20 @@ void EditorApp::validation_panel(float x, float y, float w, float h) {
         ImGui::TextColored(error ? ImVec4(1, 0.35f, 0.3f, 1) : ImVec4(1, 0.8f, 0.3f, 1), "%s",
                            error ? "ERR " : "WARN");
         ImGui::SameLine();
-        ImGui::PushTextWrapPos(w - (issue.fix.kind != QuickFix::Kind::None ? 110.0f : 12.0f));
-        char line[512];
-        std::snprintf(line, sizeof(line), "[%s] %s", rule_name(issue.rule), issue.message.c_str());
-        if (ImGui::Selectable(line, false)) report(editor_.select_issue(issue), "select");
-        ImGui::PopTextWrapPos();
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Click to select the entity this is about");
+        // The message wraps in the narrow column (a logic finding names entity, link and target); the quick
+        // fix goes under it, where its label has the width it needs.
+        ImGui::TextWrapped("[%s] %s", rule_name(issue.rule), issue.message.c_str());
+        if (ImGui::IsItemHovered()) {
+            ImGui::GetWindowDrawList()->AddRectFilled(ImGui::GetItemRectMin(), ImGui::GetItemRectMax(),
+                                                      IM_COL32(90, 120, 180, 50));
+            ImGui::SetTooltip("Click to select what this is about");
+        }
+        if (ImGui::IsItemClicked()) report(editor_.select_issue(issue), "select");
         if (issue.fix.kind != QuickFix::Kind::None) {
-            ImGui::SameLine(w - 104);
-            if (ImGui::SmallButton(issue.fix.label.c_str())) {
+            ImGui::Indent(40.0f);
+            const bool fix = ImGui::SmallButton(issue.fix.label.c_str());
+            ImGui::Unindent(40.0f);
+            if (fix) {
                 report(editor_.apply_quick_fix(issue), "quick fix");
                 ImGui::PopID();
                 break;
