@@ -203,6 +203,7 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
     dojo_->begin_frame();
     spots_.enabled = options_.status_file.has_value();
     spots_.clear();
+    refresh_logic_problems();
     menu_bar();
     if (dojo_tab_) {
         dojo_->panel(layout.bottom.x, layout.centre.y, layout.bottom.w, layout.centre.h);

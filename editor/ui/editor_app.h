@@ -165,7 +165,11 @@ class EditorApp {
                   const std::string& spot); // false: the list changed
     // The link's target (an entity is named first if it needs a name) and an action it takes: one step.
     Result<void> apply_link_target(const LinkOwner& owner, int index, const TargetOption& option);
-    const std::vector<LogicProblem>& current_logic_problems(); // cached per revision
+    bool target_widgets(const LinkOwner& owner, int index, const level::Link& link, float width,
+                        const std::string& spot); // true: the target changed
+    // The level checks' findings, redone at the start of a frame after a change: the pointers the widgets
+    // take into logic_problems_ stay valid for the whole frame.
+    void refresh_logic_problems();
 
     // link_pick.cpp
     void begin_pick(PickRequest request);

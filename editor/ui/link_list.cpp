@@ -45,12 +45,10 @@ std::string owner_key(const LinkOwner& owner) {
 
 } // namespace
 
-const std::vector<LogicProblem>& EditorApp::current_logic_problems() {
-    if (problems_revision_ != editor_.revision()) {
-        logic_problems_ = logic_problems(editor_.level());
-        problems_revision_ = editor_.revision();
-    }
-    return logic_problems_;
+void EditorApp::refresh_logic_problems() {
+    if (problems_revision_ == editor_.revision()) return;
+    logic_problems_ = logic_problems(editor_.level());
+    problems_revision_ = editor_.revision();
 }
 
 Result<void> EditorApp::apply_link_target(const LinkOwner& owner, int index, const TargetOption& option) {
@@ -83,13 +81,48 @@ Result<void> EditorApp::apply_link_target(const LinkOwner& owner, int index, con
     return ok();
 }
 
+// The target combo and its Pick button; true when the target changed (the list changed under the caller).
+bool EditorApp::target_widgets(const LinkOwner& owner, int index, const level::Link& link, float width,
+                               const std::string& spot) {
+    const level::Level& level = editor_.level();
+    const level::TargetKind kind = link_target_kind(level, link);
+    const bool picking =
+        pick_ && pick_->purpose == PickPurpose::LinkTarget && pick_->owner == owner && pick_->index == index;
+    bool changed = false;
+    ImGui::SetNextItemWidth(std::max(40.0f, width));
+    // The name alone (narrow inspector); the entries and the tooltip say what it is.
+    if (ImGui::BeginCombo("##target", link.target.empty() ? "(no target)" : link.target.c_str())) {
+        for (const TargetOption& option : target_options(level)) {
+            const bool current =
+                option.kind == kind && !option.target.empty() && option.target == link.target;
+            if (ImGui::Selectable(option.label.c_str(), current) && !changed) {
+                report(apply_link_target(owner, index, option), "link target");
+                changed = true;
+            }
+            spots_.here("combo:" + option.label);
+        }
+        ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", target_label(level, kind, link.target).c_str());
+    spots_.here(spot + ".target");
+    ImGui::SameLine();
+    if (picking) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.25f, 0.55f, 0.3f, 1));
+    if (ImGui::SmallButton("Pick"))
+        picking ? end_pick() : begin_pick({PickPurpose::LinkTarget, owner, index});
+    if (picking) ImGui::PopStyleColor();
+    spots_.here(spot + ".pick");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Pick the target by clicking it in the viewport (Esc cancels)");
+    return changed;
+}
+
 bool EditorApp::link_row(const LinkOwner& owner, int index, const std::vector<std::string>& events,
                          const std::string& spot) {
     const level::Level& level = editor_.level();
     level::Link link =
         (*editor_.links_of(owner))[static_cast<size_t>(index)]; // a copy: edits change the list
     const std::string path = jsonio::element_path(links_path(level, owner), static_cast<size_t>(index));
-    const auto problems = problems_at(current_logic_problems(), path);
+    const auto problems = problems_at(logic_problems_, path);
     const bool broken = std::any_of(problems.begin(), problems.end(), [](auto* p) { return p->error; });
     if (broken) ImGui::PushStyleColor(ImGuiCol_FrameBg, ImVec4(0.5f, 0.12f, 0.1f, 1.0f));
     const float width = ImGui::GetContentRegionAvail().x;
@@ -117,32 +150,9 @@ bool EditorApp::link_row(const LinkOwner& owner, int index, const std::vector<st
     ImGui::TextUnformatted("->");
     ImGui::SameLine();
     const level::TargetKind kind = link_target_kind(level, link);
-    ImGui::SetNextItemWidth(std::max(40.0f, target_w));
-    // The name alone (narrow inspector); the entries and the tooltip say what it is.
-    if (ImGui::BeginCombo("##target", link.target.empty() ? "(no target)" : link.target.c_str())) {
-        for (const TargetOption& option : target_options(level)) {
-            const bool current =
-                option.kind == kind && !option.target.empty() && option.target == link.target;
-            if (ImGui::Selectable(option.label.c_str(), current) && !changed) {
-                report(apply_link_target(owner, index, option), "link target");
-                changed = true;
-            }
-            spots_.here("combo:" + option.label);
-        }
-        ImGui::EndCombo();
-    }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", target_label(level, kind, link.target).c_str());
-    spots_.here(spot + ".target");
-    ImGui::SameLine();
     const bool picking =
         pick_ && pick_->purpose == PickPurpose::LinkTarget && pick_->owner == owner && pick_->index == index;
-    if (picking) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.25f, 0.55f, 0.3f, 1));
-    if (ImGui::SmallButton("Pick"))
-        picking ? end_pick() : begin_pick({PickPurpose::LinkTarget, owner, index});
-    if (picking) ImGui::PopStyleColor();
-    spots_.here(spot + ".pick");
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Pick the target by clicking it in the viewport (Esc cancels)");
+    if (target_widgets(owner, index, link, target_w, spot) && !changed) changed = true;
 
     // Line 2: action, delay, once, remove
     ImGui::SetNextItemWidth(width * 0.36f);
@@ -195,7 +205,7 @@ void EditorApp::link_list(const LinkOwner& owner, const std::string& spot) {
     const std::vector<std::string> events = level::event_names(owner_events(level, owner));
     const std::string path = links_path(level, owner);
     std::vector<const LogicProblem*> whole_list;
-    for (const LogicProblem* p : problems_at(current_logic_problems(), path))
+    for (const LogicProblem* p : problems_at(logic_problems_, path))
         if (p->path == path) whole_list.push_back(p);
     problem_lines(whole_list);
     ImGui::PushID(spot.c_str());

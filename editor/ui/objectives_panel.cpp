@@ -67,9 +67,8 @@ bool EditorApp::kill_list(int index, const level::Objective& objective, const st
         ImGui::SameLine(0.0f, 2.0f);
         const bool removed = ImGui::SmallButton("x");
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Remove from the kill list");
-        problem_lines(
-            problems_at(current_logic_problems(),
-                        jsonio::element_path(jsonio::member_path(path, "kill"), static_cast<size_t>(k))));
+        problem_lines(problems_at(logic_problems_, jsonio::element_path(jsonio::member_path(path, "kill"),
+                                                                        static_cast<size_t>(k))));
         ImGui::PopID();
         if (removed) {
             level::Objective edited = objective;
@@ -109,7 +108,7 @@ bool EditorApp::objective_item(int index) {
     const std::string path = jsonio::element_path("objectives", static_cast<size_t>(index));
     const std::string spot = "objective" + std::to_string(index);
     std::vector<const LogicProblem*> own; // about the objective itself, its id or text (not kills or links)
-    for (const LogicProblem* p : problems_at(current_logic_problems(), path)) {
+    for (const LogicProblem* p : problems_at(logic_problems_, path)) {
         const std::string_view below = std::string_view(p->path).substr(path.size());
         if (!below.starts_with(".kill") && !below.starts_with(".links")) own.push_back(p);
     }
