@@ -105,7 +105,10 @@ void EditorApp::menu_bar() {
     }
     ImGui::Separator();
     if (ImGui::RadioButton("Level", !dojo_tab_)) dojo_tab_ = false;
-    if (ImGui::RadioButton("Dojo", dojo_tab_)) dojo_tab_ = true;
+    if (ImGui::RadioButton("Dojo", dojo_tab_)) {
+        dojo_tab_ = true;
+        if (pick_) end_pick(); // the level's viewport, where the pick would land, is gone
+    }
     ImGui::Separator();
     const std::string status = editor_.title();
     ImGui::TextDisabled("%s", status.c_str());
