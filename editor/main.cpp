@@ -18,7 +18,8 @@ void print_help() {
         "usage: killswitch-editor [--level FILE] [--script FILE] [--run FILE] [--camera x,y,z,yaw,pitch] "
         "[--dojo] [--navmesh]\n"
         "                         [--dojo-file FILE] [--dojo-view clip=NAME,time=S,onion=1]\n"
-        "                         [--view top|front|side|perspective] [--status-file FILE]\n"
+        "                         [--view top|front|side|perspective] [--inspector TAB] [--status-file "
+        "FILE]\n"
         "                         [--width W] [--height H] [--screenshot FILE --frames N] [--no-vsync]\n"
         "  --level FILE      open a level file (default: a new untitled level)\n"
         "  --script FILE     run editor commands (docs/editor.md) without a window, then exit:\n"
@@ -30,6 +31,7 @@ void print_help() {
         "  --dojo-view V     where the dojo starts: clip=NAME (shown), time=S (paused there), onion=1\n"
         "  --navmesh         show the robots' navigation mesh (View > Navigation mesh)\n"
         "  --view V          start in the top, front or side (orthographic) or perspective view\n"
+        "  --inspector TAB   start with the inspector's properties, links or objectives tab shown\n"
         "  --status-file F   rewrite F with a JSON snapshot of the session (selection, entity count, undo\n"
         "                    depth, dirty flag, play-test, where the palette and gizmo are) when it changes\n"
         "  $KS_PLAYTEST_COMMAND  the runtime F5 starts (default: killswitch next to the editor)\n"
@@ -62,7 +64,7 @@ int main(int argc, char** argv) {
     }
     std::vector<std::string> known = shell::shell_options();
     known.insert(known.end(), {"level", "script", "run", "camera", "help", "dojo", "view", "status-file",
-                               "navmesh", "dojo-file", "dojo-view"});
+                               "navmesh", "dojo-file", "dojo-view", "inspector"});
     if (auto unknown = cl->unknown(known); !unknown.empty()) {
         log::error("unknown option --", unknown.front(), " (see killswitch-editor --help)");
         return 2;
@@ -101,6 +103,13 @@ int main(int argc, char** argv) {
             options.view = editor::ViewMode::Perspective;
         else {
             log::error("--view '", v, "': expected top, front, side or perspective");
+            return 2;
+        }
+    }
+    if (auto tab = cl->get("inspector")) {
+        options.inspector_tab = editor::ui::parse_inspector_tab(*tab);
+        if (!options.inspector_tab) {
+            log::error("--inspector '", *tab, "': expected properties, links or objectives");
             return 2;
         }
     }

@@ -121,6 +121,9 @@ class Editor {
     Result<void> objective_set(int index, level::Objective objective, std::string merge_key = {});
     Result<void> objective_remove(int index);
     Result<void> objective_move(int from, int to);
+    // The objective every version-1 level had: "shutdown", completed by using any control panel (each panel
+    // gets the on_use -> complete link); one undoable step. Fails when the level has no control panel.
+    Result<void> add_shutdown_objective();
     // Name an entity so links can target it: a unique name from its type ("door_2") if it has none (or from
     // its name if another entity shares it); returns it. No step when it already has a unique name.
     Result<std::string> ensure_link_name(int entity_id);

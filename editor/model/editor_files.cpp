@@ -240,6 +240,7 @@ Result<void> Editor::apply_quick_fix(const Issue& issue) {
     case QuickFix::Kind::AddLink:
     case QuickFix::Kind::SetKillName:
     case QuickFix::Kind::RemoveKillName:
+    case QuickFix::Kind::AddShutdownObjective:
         return apply_logic_fix(fix);
     case QuickFix::Kind::MovePlayerStart: {
         auto change = std::make_unique<LevelChange>();

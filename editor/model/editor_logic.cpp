@@ -5,6 +5,7 @@
 #include "jsonio/suggest.h"
 #include "level/diagnostics.h"
 #include "level/logic_checks.h"
+#include "level/shutdown_objective.h"
 
 #include <algorithm>
 #include <optional>
@@ -270,9 +271,28 @@ Result<void> Editor::apply_logic_fix(const QuickFix& fix) {
             objective.kill.erase(name);
         return objective_set(fix.index, std::move(objective));
     }
+    case QuickFix::Kind::AddShutdownObjective:
+        return add_shutdown_objective();
     default:
         return Error("not a link or objective quick fix: " + fix.label);
     }
+}
+
+Result<void> Editor::add_shutdown_objective() {
+    level::Level after = doc_.level;
+    if (!level::add_shutdown_objective(after))
+        return Error("the shutdown objective: nothing to add", Location{},
+                     doc_.level.entities.empty() ? "place a control panel first"
+                                                 : "it needs a control panel, and is added once");
+    auto change = std::make_unique<LevelChange>();
+    change->set_name("Add the shutdown objective");
+    for (size_t i = 0; i < after.entities.size(); ++i)
+        if (!(after.entities[i] == doc_.level.entities[i]))
+            change->updates.push_back({doc_.level.entities[i], after.entities[i]});
+    if (after.objectives != doc_.level.objectives)
+        change->objectives = Change<std::vector<level::Objective>>{doc_.level.objectives, after.objectives};
+    execute(std::move(change), doc_.selection);
+    return ok();
 }
 
 Result<std::string> Editor::ensure_link_name(int entity_id) {

@@ -2,6 +2,7 @@
 
 #include "level/shutdown_objective.h"
 
+#include <algorithm>
 #include <charconv>
 #include <string_view>
 
@@ -158,6 +159,32 @@ Rule rule_of(Kind kind) {
 }
 
 } // namespace
+
+void check_level_can_be_won(const level::Level& level, std::vector<Issue>& out) {
+    if (!level.objectives.empty()) return;
+    auto wins = [](const std::vector<level::Link>& links) {
+        return std::any_of(links.begin(), links.end(),
+                           [](const level::Link& l) { return l.action == "win"; });
+    };
+    if (wins(level.links)) return;
+    bool panel = false;
+    for (const level::Entity& e : level.entities) {
+        if (wins(e.links)) return;
+        panel |= e.type() == level::EntityType::ControlPanel;
+    }
+    Issue issue;
+    issue.rule = Rule::Objective;
+    issue.severity = IssueSeverity::Warning;
+    issue.message = "the level has no objectives and no link wins it, so it can never be won";
+    issue.message += panel ? " (using the control panel does nothing until an objective asks for it)"
+                           : "; add an objective, or a link with the action win";
+    if (panel) {
+        issue.fix.kind = QuickFix::Kind::AddShutdownObjective;
+        issue.fix.label =
+            "Add the objective \"" + std::string(level::kShutdownObjective) + "\": use the control panel";
+    }
+    out.push_back(std::move(issue));
+}
 
 Issue logic_issue(const level::Level& level, const level::Diagnostic& d) {
     Issue issue;

@@ -16,4 +16,9 @@ inline constexpr float kLoopBreakDelay = 0.1f; // seconds
 // The issue for `diagnostic`, a logic finding (its kind is not Other) of level::validate(level).
 Issue logic_issue(const level::Level& level, const level::Diagnostic& diagnostic);
 
+// A level with no objectives and no win link can never be won (a version-2 level is won when its objectives
+// are complete; the control panel alone no longer wins it): an `objective` issue, fixed by the shutdown
+// objective when the level has a control panel.
+void check_level_can_be_won(const level::Level& level, std::vector<Issue>& out);
+
 } // namespace ks::editor

@@ -225,7 +225,8 @@ void check_control_panels(const Level& level, std::vector<Issue>& out) {
         out.push_back({Rule::ControlPanel, IssueSeverity::Warning, e.id,
                        describe(e) + " is an extra control panel; the level needs exactly one", fix});
     }
-    if (count == 0)
+    // With objectives, the level is won by completing them: the objective rule says when it cannot be.
+    if (count == 0 && level.objectives.empty())
         out.push_back({Rule::ControlPanel,
                        IssueSeverity::Error,
                        0,
@@ -385,6 +386,7 @@ std::vector<Issue> validate_design(const Level& level, const ValidationOptions& 
     const Solids solids(level);
     check_player_start(level, solids, options, out);
     check_control_panels(level, out);
+    check_level_can_be_won(level, out);
     check_wall_overlaps(level, solids, out);
     check_support(level, solids, options, out);
     check_stairs(level, options, out);

@@ -28,7 +28,7 @@ enum class Rule {
     LinkTarget,   // a link target or kill-list name that names nothing
     LogicLoop,    // a zero-delay loop of door links
     TriggerReach, // a trigger whose box no one it notices can walk into (reachability.cpp)
-    Objective,    // an objective that can never complete
+    Objective,    // an objective that can never complete, or a level with no objectives and no win link
     LockedDoor,   // a locked door that no link unlocks or opens
 };
 const char* rule_name(Rule rule);
@@ -44,11 +44,12 @@ struct QuickFix {
         SetField,
         MovePatrolPoint,
         SetSetting,
-        SetLink,       // replace link `index` of `owner` with `link`
-        RemoveLink,    // remove link `index` of `owner`
-        AddLink,       // append `link` to `owner`'s links
-        SetKillName,   // objective `index`: kill-list name `kill_index` becomes `name`
-        RemoveKillName // objective `index`: remove kill-list name `kill_index`
+        SetLink,             // replace link `index` of `owner` with `link`
+        RemoveLink,          // remove link `index` of `owner`
+        AddLink,             // append `link` to `owner`'s links
+        SetKillName,         // objective `index`: kill-list name `kill_index` becomes `name`
+        RemoveKillName,      // objective `index`: remove kill-list name `kill_index`
+        AddShutdownObjective // the objective "shutdown", completed by using the control panel (v1's win)
     } kind = Kind::None;
     std::string label;   // "Drop to floor", shown on the button
     Vec3 position{0.0f}; // MoveEntity / MovePlayerStart / MovePatrolPoint

@@ -277,6 +277,9 @@ void DojoPanel::begin_frame() {
 }
 
 void DojoPanel::mark(DojoSpot spot) {
+    // Not while its window appears: a popup is only measured in its first frame, and a click that follows
+    // the spot reported then comes too early for it (the quit question's Cancel was missed).
+    if (ImGui::IsWindowAppearing()) return;
     const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
     spots_[static_cast<size_t>(spot)] = Vec2((a.x + b.x) * 0.5f, (a.y + b.y) * 0.5f);
 }

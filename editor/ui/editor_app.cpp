@@ -1,5 +1,6 @@
-// The editor window's frame: layout, menus, shortcuts, file prompts and the title. The viewport and the
-// panels live in viewport.cpp and panels.cpp; the dojo tab in dojo_panel.cpp.
+// The editor window's frame: start-up, layout, shortcuts and the title. The menus are in menus.cpp, the file
+// prompts in file_prompts.cpp, the viewport in viewport.cpp, the panels in panels.cpp and inspector.cpp, the
+// dojo tab in dojo_panel.cpp.
 #include "ui/editor_app.h"
 
 #include "core/files.h"
@@ -22,11 +23,6 @@ namespace fs = std::filesystem;
 namespace {
 EditorApp* g_app = nullptr; // the window-close callback has no user pointer to spare (ImGui's backend)
 
-Vec2 item_centre() {
-    return Vec2((ImGui::GetItemRectMin().x + ImGui::GetItemRectMax().x) * 0.5f,
-                (ImGui::GetItemRectMin().y + ImGui::GetItemRectMax().y) * 0.5f);
-}
-
 fs::path recent_files_path() {
     fs::path dir = default_config_dir();
     if (dir.empty()) dir = fs::temp_directory_path() / "killswitch";
@@ -39,6 +35,7 @@ EditorApp::EditorApp(shell::AppShell& shell, const AppOptions& options)
 
 EditorApp::~EditorApp() {
     log::set_sink(nullptr);
+    if (crosshair_) glfwDestroyCursor(crosshair_);
     if (g_app == this) g_app = nullptr;
 }
 
@@ -102,6 +99,7 @@ Result<void> EditorApp::init() {
         }
     }
     overlays_.navmesh = options_.show_navmesh;
+    select_tab_ = options_.inspector_tab;
     set_view(options_.view.value_or(ViewMode::Perspective)); // perspective: from above one corner
     if (options_.camera) {
         float v[5];
@@ -203,15 +201,20 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
     const Layout layout = compute_layout(static_cast<float>(info.width), static_cast<float>(info.height),
                                          ImGui::GetFrameHeight());
     dojo_->begin_frame();
+    spots_.enabled = options_.status_file.has_value();
+    spots_.clear();
+    refresh_logic_problems();
     menu_bar();
     if (dojo_tab_) {
         dojo_->panel(layout.bottom.x, layout.centre.y, layout.bottom.w, layout.centre.h);
     } else {
         outliner_panel(layout.left.x, layout.left.y, layout.left.w, layout.left.h);
         viewport_panel(layout.centre.x, layout.centre.y, layout.centre.w, layout.centre.h);
-        inspector_panel(layout.right.x, layout.right.y, layout.right.w, layout.right.h * 0.62f);
-        validation_panel(layout.right.x, layout.right.y + layout.right.h * 0.62f, layout.right.w,
-                         layout.right.h * 0.38f);
+        // Wiring links and objectives takes more rows than an entity's fields: those tabs get more height.
+        const float split = shown_tab_ == InspectorTab::Properties ? 0.62f : 0.74f;
+        inspector_panel(layout.right.x, layout.right.y, layout.right.w, layout.right.h * split);
+        validation_panel(layout.right.x, layout.right.y + layout.right.h * split, layout.right.w,
+                         layout.right.h * (1.0f - split));
     }
     history_panel(layout.bottom.x, layout.bottom.y, layout.bottom.w * 0.32f, layout.bottom.h);
     log_panel(layout.bottom.x + layout.bottom.w * 0.32f, layout.bottom.y, layout.bottom.w * 0.68f,
@@ -274,7 +277,9 @@ void EditorApp::handle_shortcuts() {
     }
     if (pressed(GLFW_KEY_DELETE)) report(editor_.delete_selection(), "delete");
     if (pressed(GLFW_KEY_ESCAPE)) {
-        if (gizmo_.dragging())
+        if (pick_)
+            end_pick();
+        else if (gizmo_.dragging())
             gizmo_.cancel(editor_);
         else if (placing_)
             placing_.reset();
@@ -296,292 +301,6 @@ void EditorApp::handle_shortcuts() {
     if (pressed(GLFW_KEY_KP_1)) set_view(ViewMode::Front);
     if (pressed(GLFW_KEY_KP_3)) set_view(ViewMode::Side);
     if (pressed(GLFW_KEY_KP_5)) set_view(ViewMode::Perspective);
-}
-
-void EditorApp::menu_bar() {
-    if (!ImGui::BeginMainMenuBar()) return;
-    const bool file_menu = ImGui::BeginMenu("File");
-    menu_spots_[0] = item_centre();
-    menu_spots_[1] = Vec2(0.0f);
-    if (file_menu) {
-        if (ImGui::MenuItem("New", "Ctrl+N")) request(PendingAction::New);
-        if (ImGui::MenuItem("Open...", "Ctrl+O")) request(PendingAction::Open);
-        if (ImGui::BeginMenu("Open Recent", !recent_.entries().empty())) {
-            for (const auto& entry : recent_.entries())
-                if (ImGui::MenuItem(entry.string().c_str())) request(PendingAction::OpenRecent, entry);
-            ImGui::EndMenu();
-        }
-        if (ImGui::MenuItem("Save", "Ctrl+S")) save(false);
-        if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) save(true);
-        ImGui::Separator();
-        if (ImGui::MenuItem("Quit")) request(PendingAction::Quit);
-        menu_spots_[1] = item_centre();
-        ImGui::EndMenu();
-    }
-    if (ImGui::BeginMenu("Edit")) {
-        if (dojo_tab_) { // the clip file's history, as Ctrl+Z in the tab
-            const auto& h = dojo_->history();
-            if (ImGui::MenuItem(("Undo " + h.undo_name()).c_str(), "Ctrl+Z", false, h.can_undo()))
-                dojo_->undo();
-            if (ImGui::MenuItem(("Redo " + h.redo_name()).c_str(), "Ctrl+Shift+Z", false, h.can_redo()))
-                dojo_->redo();
-        } else {
-            const auto& h = editor_.history();
-            if (ImGui::MenuItem(("Undo " + h.undo_name()).c_str(), "Ctrl+Z", false, h.can_undo()))
-                editor_.undo();
-            if (ImGui::MenuItem(("Redo " + h.redo_name()).c_str(), "Ctrl+Shift+Z", false, h.can_redo()))
-                editor_.redo();
-        }
-        ImGui::Separator();
-        const bool any = !editor_.doc().selection.empty();
-        if (ImGui::MenuItem("Duplicate", "Ctrl+D", false, any)) report(editor_.duplicate(), "duplicate");
-        if (ImGui::MenuItem("Delete", "Del", false, any)) report(editor_.delete_selection(), "delete");
-        if (ImGui::MenuItem("Copy", "Ctrl+C", false, any))
-            glfwSetClipboardString(shell_.window(), editor_.copy().c_str());
-        if (ImGui::MenuItem("Paste", "Ctrl+V")) {
-            const char* text = glfwGetClipboardString(shell_.window());
-            report(text ? editor_.paste_text(text) : editor_.paste(), "paste");
-        }
-        ImGui::Separator();
-        if (ImGui::MenuItem("Select All", "Ctrl+A")) editor_.select_all();
-        if (ImGui::BeginMenu("Select All of Type")) {
-            for (auto type : level::all_types())
-                if (ImGui::MenuItem(std::string(level::type_name(type)).c_str()))
-                    editor_.select_all_of_type(type);
-            ImGui::EndMenu();
-        }
-        if (ImGui::MenuItem("Select None", "Esc")) editor_.clear_selection();
-        ImGui::Separator();
-        auto& grid = editor_.grid();
-        ImGui::Checkbox("Snap to grid", &grid.snap);
-        ImGui::SetNextItemWidth(90);
-        ImGui::DragFloat("Grid step", &grid.step, 0.05f, 0.05f, 16.0f, "%.2f");
-        ImGui::SetNextItemWidth(90);
-        ImGui::DragFloat("Rotation step", &grid.rotation_step, 0.5f, 1.0f, 90.0f, "%.0f deg");
-        ImGui::EndMenu();
-    }
-    if (ImGui::BeginMenu("View")) {
-        if (ImGui::MenuItem("Perspective", "Num 5")) set_view(ViewMode::Perspective);
-        if (ImGui::MenuItem("Top", "Num 7")) set_view(ViewMode::Top);
-        if (ImGui::MenuItem("Front", "Num 1")) set_view(ViewMode::Front);
-        if (ImGui::MenuItem("Side", "Num 3")) set_view(ViewMode::Side);
-        if (ImGui::MenuItem("Focus Selection", "F")) focus_selection();
-        ImGui::Separator();
-        ImGui::MenuItem("Grid", nullptr, &overlays_.grid);
-        ImGui::MenuItem("Collision bounds", nullptr, &overlays_.collision);
-        ImGui::MenuItem("Structure outlines (axis views)", nullptr, &overlays_.outlines);
-        ImGui::MenuItem("Light ranges", nullptr, &overlays_.lights);
-        ImGui::MenuItem("Robot eye / shooting radii", nullptr, &overlays_.robots);
-        ImGui::MenuItem("Player start", nullptr, &overlays_.player_start);
-        ImGui::MenuItem("All patrol routes", nullptr, &overlays_.patrols);
-        ImGui::MenuItem("All sound radii", nullptr, &overlays_.sound_radii);
-        ImGui::MenuItem("Navigation mesh", nullptr, &overlays_.navmesh);
-        ImGui::MenuItem("Ceilings", nullptr, &overlays_.ceilings);
-        ImGui::EndMenu();
-    }
-    if (ImGui::BeginMenu("Play")) {
-        if (ImGui::MenuItem("Play from start", "F5", false, !play_.running())) play_test(false);
-        if (ImGui::MenuItem("Play from camera", "Shift+F5", false, !play_.running())) play_test(true);
-        if (ImGui::MenuItem("Stop", nullptr, false, play_.running())) play_.stop();
-        ImGui::EndMenu();
-    }
-    ImGui::Separator();
-    if (ImGui::RadioButton("Level", !dojo_tab_)) dojo_tab_ = false;
-    if (ImGui::RadioButton("Dojo", dojo_tab_)) dojo_tab_ = true;
-    ImGui::Separator();
-    const std::string status = editor_.title();
-    ImGui::TextDisabled("%s", status.c_str());
-    ImGui::EndMainMenuBar();
-}
-
-void EditorApp::request(PendingAction action, fs::path path) {
-    if (action == PendingAction::Quit && dojo_->dirty() && !dojo_quit_confirmed_) {
-        dojo_->ask_before_quit(); // the clip file first; its answer comes back through modal_prompts
-        return;
-    }
-    dojo_quit_confirmed_ = false; // a confirmation counts for this one request
-    pending_ = action;
-    pending_path_ = std::move(path);
-    if (editor_.has_unsaved_changes())
-        ask_unsaved_ = true;
-    else
-        perform(action);
-}
-
-void EditorApp::perform(PendingAction action) {
-    switch (action) {
-    case PendingAction::New:
-        editor_.new_document();
-        log_line("new level");
-        break;
-    case PendingAction::Open:
-        path_for_save_ = false;
-        ask_path_ = true;
-        std::snprintf(path_input_, sizeof(path_input_), "%s",
-                      editor_.file_path().empty() ? paths::level("").string().c_str()
-                                                  : editor_.file_path().string().c_str());
-        return; // pending_ stays until the path is given
-    case PendingAction::OpenRecent:
-        open_file(pending_path_);
-        break;
-    case PendingAction::Quit:
-        quit_ = true;
-        break;
-    case PendingAction::None:
-        break;
-    }
-    pending_ = PendingAction::None;
-}
-
-void EditorApp::open_file(const fs::path& path) {
-    if (auto r = editor_.open(path); !r) {
-        log_line(r.error().str(), true);
-        if (!fs::exists(path)) recent_.remove(path);
-        return;
-    }
-    log_line("opened " + path.string());
-    if (editor_.recovery_offer()) log_line("an autosave newer than the file exists: recover it?");
-    set_view(ViewMode::Perspective);
-}
-
-void EditorApp::save(bool save_as) {
-    if (save_as || editor_.file_path().empty()) {
-        path_for_save_ = true;
-        ask_path_ = true;
-        std::snprintf(path_input_, sizeof(path_input_), "%s",
-                      editor_.file_path().empty() ? (paths::level("") / "untitled.json").string().c_str()
-                                                  : editor_.file_path().string().c_str());
-        return;
-    }
-    auto r = editor_.save();
-    if (!r) {
-        log_line(r.error().str(), true);
-        if (editor_.disk_status() == DiskStatus::Modified) ask_overwrite_ = true;
-        return;
-    }
-    log_line((r->draft ? "saved as DRAFT (" + std::to_string(r->error_count) + " design errors): "
-                       : std::string("saved ")) +
-                 r->path.string(),
-             r->draft);
-}
-
-void EditorApp::modal_prompts() {
-    if (ask_unsaved_) ImGui::OpenPopup("Unsaved changes");
-    if (ask_path_) ImGui::OpenPopup(path_for_save_ ? "Save level as" : "Open level");
-    if (ask_overwrite_) ImGui::OpenPopup("Overwrite?");
-    if (editor_.recovery_offer() && !ask_unsaved_ && !ask_path_) ImGui::OpenPopup("Recover autosave");
-    ask_unsaved_ = ask_path_ = ask_overwrite_ = false;
-
-    const ImVec2 centre = ImGui::GetMainViewport()->GetCenter();
-    ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        ImGui::Text("%s has unsaved changes.", editor_.file_path().empty()
-                                                   ? "The untitled level"
-                                                   : editor_.file_path().filename().string().c_str());
-        ImGui::Text("Save them before going on?");
-        if (ImGui::Button("Save")) {
-            ImGui::CloseCurrentPopup();
-            save(false);
-            if (!editor_.has_unsaved_changes()) perform(pending_);
-        }
-        ImGui::SameLine();
-        if (ImGui::Button("Discard")) {
-            ImGui::CloseCurrentPopup();
-            perform(pending_);
-        }
-        ImGui::SameLine();
-        if (ImGui::Button("Cancel")) {
-            ImGui::CloseCurrentPopup();
-            pending_ = PendingAction::None;
-        }
-        ImGui::EndPopup();
-    }
-    for (const char* title : {"Open level", "Save level as"}) {
-        ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-        if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) continue;
-        ImGui::Text("Level file (JSON):");
-        ImGui::SetNextItemWidth(520);
-        if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-        const bool entered = ImGui::InputText("##path", path_input_, sizeof(path_input_),
-                                              ImGuiInputTextFlags_EnterReturnsTrue);
-        if (!recent_.entries().empty()) {
-            ImGui::TextDisabled("Recent:");
-            for (const auto& entry : recent_.entries())
-                if (ImGui::Selectable(entry.string().c_str()))
-                    std::snprintf(path_input_, sizeof(path_input_), "%s", entry.string().c_str());
-        }
-        if (entered || ImGui::Button(path_for_save_ ? "Save" : "Open")) {
-            const fs::path path = paths::resolve_user_path(path_input_);
-            ImGui::CloseCurrentPopup();
-            if (path_for_save_) {
-                auto r = editor_.save_as(path);
-                if (!r && fs::exists(path)) {
-                    pending_path_ = path;
-                    ask_overwrite_ = true;
-                } else if (!r) {
-                    log_line(r.error().str(), true);
-                } else {
-                    log_line((r->draft ? "saved as DRAFT: " : "saved ") + r->path.string(), r->draft);
-                    if (pending_ != PendingAction::None) perform(pending_);
-                }
-            } else {
-                open_file(path);
-                pending_ = PendingAction::None;
-            }
-        }
-        ImGui::SameLine();
-        if (ImGui::Button("Cancel")) {
-            ImGui::CloseCurrentPopup();
-            pending_ = PendingAction::None;
-        }
-        ImGui::EndPopup();
-    }
-    ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    if (ImGui::BeginPopupModal("Overwrite?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        const fs::path target = pending_path_.empty() ? editor_.file_path() : pending_path_;
-        ImGui::Text("%s exists or was changed on disk since it was opened.", target.string().c_str());
-        ImGui::Text("Overwrite it?");
-        if (ImGui::Button("Overwrite")) {
-            SaveOptions options;
-            options.overwrite_existing = true;
-            options.overwrite_external_changes = true;
-            auto r = pending_path_.empty() ? editor_.save(options) : editor_.save_as(pending_path_, options);
-            if (r)
-                log_line((r->draft ? "saved as DRAFT: " : "saved ") + r->path.string(), r->draft);
-            else
-                log_line(r.error().str(), true);
-            pending_path_.clear();
-            ImGui::CloseCurrentPopup();
-        }
-        ImGui::SameLine();
-        if (ImGui::Button("Cancel")) {
-            pending_path_.clear();
-            ImGui::CloseCurrentPopup();
-        }
-        ImGui::EndPopup();
-    }
-    ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    if (ImGui::BeginPopupModal("Recover autosave", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        const auto& offer = editor_.recovery_offer();
-        if (offer) {
-            ImGui::Text("An autosave is newer than %s:", offer->level_file.empty()
-                                                             ? "the untitled level"
-                                                             : offer->level_file.string().c_str());
-            ImGui::TextDisabled("%s", offer->autosave.string().c_str());
-            ImGui::Text("The editor may have closed without saving. Recover it? (Undo returns to the file.)");
-        }
-        if (ImGui::Button("Recover")) {
-            report(editor_.accept_recovery(), "recover");
-            ImGui::CloseCurrentPopup();
-        }
-        ImGui::SameLine();
-        if (ImGui::Button("Keep the file")) {
-            editor_.decline_recovery();
-            ImGui::CloseCurrentPopup();
-        }
-        if (!offer) ImGui::CloseCurrentPopup();
-        ImGui::EndPopup();
-    }
 }
 
 } // namespace ks::editor::ui

@@ -1,6 +1,7 @@
 #pragma once
-// The editor window: a fixed ImGui layout (menu bar; outliner left; inspector, settings and validation
-// right; history and log below; the 3D viewport in the middle, or the dojo tab) around one Editor session.
+// The editor window: a fixed ImGui layout (menu bar; outliner left; the inspector's Properties, Links and
+// Objectives tabs and validation right; history and log below; the 3D viewport in the middle, or the dojo
+// tab) around one Editor session.
 // Panels only present the model and dispatch Editor calls; every edit goes through its commands.
 #include "model/autosave.h"
 #include "model/editor.h"
@@ -15,10 +16,16 @@
 #include "ui/playtest.h"
 #include "ui/render_target.h"
 #include "ui/sound_widgets.h"
+#include "ui/ui_spots.h"
+#include "view/link_arrows.h"
+#include "view/link_options.h"
+#include "view/link_problems.h"
 #include "view/patrol_drag.h"
 #include "view/picking.h"
 #include "view/sound_marker.h"
 #include "view/view_camera.h"
+
+#include <nlohmann/json_fwd.hpp>
 
 #include <array>
 #include <deque>
@@ -29,10 +36,15 @@
 #include <vector>
 
 struct ImDrawList;
+struct GLFWcursor;
 
 namespace ks::editor::ui {
 
 class DojoPanel;
+
+// The inspector's tabs (inspector.cpp).
+enum class InspectorTab { Properties, Links, Objectives };
+std::optional<InspectorTab> parse_inspector_tab(std::string_view name); // "properties", "links", "objectives"
 
 struct AppOptions {
     std::optional<std::filesystem::path> level;
@@ -42,6 +54,7 @@ struct AppOptions {
     std::optional<std::string> camera;               // x,y,z,yaw,pitch (degrees) for the viewport
     std::filesystem::path executable_dir;            // where killswitch (the runtime) is looked for
     std::optional<ViewMode> view;                    // --view top|front|side|perspective
+    std::optional<InspectorTab> inspector_tab;       // --inspector: the tab shown first
     // --status-file: a JSON snapshot of the session rewritten whenever it changes (status_report.cpp), so
     // tests that drive the window with real input wait on state rather than on time.
     std::optional<std::filesystem::path> status_file;
@@ -65,6 +78,15 @@ struct Overlays {
     bool outlines =
         true; // in the axis views: walls, doors and stairs outlined, so the plan reads at a glance
     bool ceilings = false; // off by default: ceilings would hide the rooms from an editor camera above them
+    bool links = true;     // arrows for the links between entities (the selection's bright and labelled)
+};
+
+// Pick mode (link_pick.cpp): what the next click on an entity in the viewport is for.
+enum class PickPurpose { LinkTarget, KillName };
+struct PickRequest {
+    PickPurpose purpose = PickPurpose::LinkTarget;
+    LinkOwner owner; // LinkTarget: whose link
+    int index = 0;   // LinkTarget: the link; KillName: the objective
 };
 
 // A question the user must answer before an action goes on (unsaved changes, overwrite, recovery).
@@ -88,6 +110,7 @@ class EditorApp {
     void handle_shortcuts();
     void update_title();
     void write_status(); // status_report.cpp
+    void logic_status(nlohmann::json& status) const;
 
     // editor_app.cpp: menus and files
     void menu_bar();
@@ -105,6 +128,10 @@ class EditorApp {
     void draw_navmesh();
     void draw_sound_emitter(const level::Entity& e, bool selected);
     void draw_axis_grid(ImDrawList* draw, Vec2 origin) const;
+    // logic_overlay.cpp: logic entity markers (render pass), trigger fills and link arrows (ImGui pass)
+    void draw_logic_marker(const level::Entity& e, bool selected);
+    void update_link_arrows();
+    void logic_overlay(ImDrawList* draw, Vec2 origin);
     void viewport_input(Vec2 origin, bool hovered);
     int pick(const geometry::Ray& ray) const;
     bool shown(const level::Entity& e) const; // not hidden, and not a ceiling while ceilings are off
@@ -123,12 +150,38 @@ class EditorApp {
     void outliner_panel(float x, float y, float w, float h);
     void palette_bar();
     void viewport_toolbar();
-    void inspector_panel(float x, float y, float w, float h);
+    void inspector_panel(float x, float y, float w, float h); // tabs: Properties, Objectives
+    void selection_inspector(float w);
     void settings_section();
     void validation_panel(float x, float y, float w, float h);
     void history_panel(float x, float y, float w, float h);
     void log_panel(float x, float y, float w, float h);
     bool field_widget(const FieldDescriptor& field, FieldValue& value, bool mixed);
+    void links_tab(); // inspector.cpp: the selected entity's links and those acting on it, or the level's
+
+    // link_list.cpp: the link-list widget; `spot` names its widgets in the status file ("link0.event")
+    void link_list(const LinkOwner& owner, const std::string& spot);
+    bool link_row(const LinkOwner& owner, int index, const std::vector<std::string>& events,
+                  const std::string& spot); // false: the list changed
+    // The link's target (an entity is named first if it needs a name) and an action it takes: one step.
+    Result<void> apply_link_target(const LinkOwner& owner, int index, const TargetOption& option);
+    bool target_widgets(const LinkOwner& owner, int index, const level::Link& link, float width,
+                        const std::string& spot); // true: the target changed
+    // The level checks' findings, redone at the start of a frame after a change: the pointers the widgets
+    // take into logic_problems_ stay valid for the whole frame.
+    void refresh_logic_problems();
+
+    // link_pick.cpp
+    void begin_pick(PickRequest request);
+    void end_pick();
+    void pick_click(int entity_id);
+    void pick_hint(ImDrawList* draw, Vec2 origin);
+
+    // objectives_panel.cpp
+    void objectives_tab();
+    bool objective_item(int index); // false: the list changed
+    bool kill_list(int index, const level::Objective& objective, const std::string& path);
+    Result<void> add_kill_name(int objective, int entity_id); // naming the entity if needed: one step
 
     shell::AppShell& shell_;
     AppOptions options_;
@@ -170,8 +223,12 @@ class EditorApp {
     int type_filter_ = -1;         // -1: all
     int outliner_scrolled_to_ = 0; // primary selection the outliner last scrolled to
     char search_[64] = {};
-    std::vector<std::string> sound_names_; // offered by the inspector's sound lists (sound_widgets.h)
-    std::vector<MarkerLine> marker_lines_; // a sound emitter's marker, reused every frame
+    std::vector<std::string> sound_names_;  // offered by the inspector's sound lists (sound_widgets.h)
+    std::vector<MarkerLine> marker_lines_;  // a marker's or an arrow's lines, reused every frame
+    std::vector<LinkArrow> link_arrows_;    // cached until the level, the selection or what is shown changes
+    std::vector<std::string> arrow_labels_; // each arrow's labels, one per line
+    std::uint64_t arrows_key_ = ~0ull;
+    std::vector<int> arrows_selection_;
     std::deque<std::pair<std::string, bool>> log_;
     bool scroll_log_ = false;
     bool dojo_tab_ = false;
@@ -182,6 +239,16 @@ class EditorApp {
     Vec2 preview_toggle_{0.0f};
     std::array<Vec2, 2> menu_spots_{}; // status: the File menu's title and its Quit item (while open) // the
                                        // "Preview clip" check box's centre (status file; 0 when hidden)
+
+    // level logic
+    std::optional<InspectorTab> select_tab_; // brought to the front on the next frame
+    InspectorTab shown_tab_ = InspectorTab::Properties;
+    std::optional<PickRequest> pick_;
+    std::string pick_message_; // the hint over the viewport while picking
+    GLFWcursor* crosshair_ = nullptr;
+    std::vector<LogicProblem> logic_problems_;
+    std::uint64_t problems_revision_ = ~0ull;
+    UiSpots spots_; // --status-file: where the logic widgets were drawn this frame
 
     // prompts
     PendingAction pending_ = PendingAction::None;

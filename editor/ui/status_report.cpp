@@ -67,7 +67,38 @@ nlohmann::json dojo_status(const DojoPanel& dojo) {
             {"add_key", point(d.spots[static_cast<size_t>(DojoSpot::AddKey)])},
             {"duplicate_key", point(d.spots[static_cast<size_t>(DojoSpot::DuplicateKey)])}};
 }
+nlohmann::json links_json(const std::vector<level::Link>& links) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const auto& l : links)
+        out.push_back({{"event", l.event},
+                       {"target", l.target},
+                       {"action", l.action},
+                       {"delay", l.delay},
+                       {"once", l.once}});
+    return out;
+}
 } // namespace
+
+// The level logic: objectives, the level's links, pick mode and where the logic widgets are.
+void EditorApp::logic_status(nlohmann::json& s) const {
+    using nlohmann::json;
+    json objectives = json::array();
+    for (const auto& o : editor_.level().objectives)
+        objectives.push_back(
+            {{"id", o.id}, {"text", o.text}, {"kill", o.kill}, {"links", links_json(o.links)}});
+    s["objectives"] = objectives;
+    s["level_links"] = links_json(editor_.level().links);
+    s["pick"] = {{"active", pick_.has_value()},
+                 {"purpose", !pick_                                      ? ""
+                             : pick_->purpose == PickPurpose::LinkTarget ? "link_target"
+                                                                         : "kill"},
+                 {"message", pick_message_}};
+    json spots = json::object();
+    for (const auto& [name, at] : spots_.all()) spots[name] = point(at);
+    s["spots"] = spots;
+    s["show_links"] = overlays_.links;
+    s["link_arrows"] = link_arrows_.size();
+}
 
 void EditorApp::write_status() {
     using nlohmann::json;
@@ -139,10 +170,11 @@ void EditorApp::write_status() {
     }
     if (!editor_.doc().selection.empty())
         if (const level::Entity* e = editor_.level().find(editor_.doc().selection.front()))
-            s["primary"] = {{"id", e->id},
-                            {"type", std::string(level::type_name(e->type()))},
-                            {"position", {e->position.x, e->position.y, e->position.z}},
-                            {"yaw", e->rotation.x}};
+            s["primary"] = {
+                {"id", e->id},          {"type", std::string(level::type_name(e->type()))},
+                {"name", e->name},      {"position", {e->position.x, e->position.y, e->position.z}},
+                {"yaw", e->rotation.x}, {"links", links_json(e->links)}};
+    logic_status(s);
     json play;
     play["running"] = play_.running();
     play["command"] = play_command_;

@@ -193,6 +193,7 @@ void EditorApp::draw_overlays() {
         if (const auto* r = e.try_as<level::RobotProps>(); r && (selected || overlays_.patrols))
             patrol_route(debug_, r->patrol, selected);
         if (e.type() == level::EntityType::Sound) draw_sound_emitter(e, selected);
+        draw_logic_marker(e, selected);
     }
     if (overlays_.player_start) {
         const auto& ps = doc.level.player_start;
@@ -369,6 +370,7 @@ void EditorApp::viewport_panel(float x, float y, float w, float h) {
 
     ImDrawList* draw = ImGui::GetWindowDrawList();
     if (overlays_.grid && view_.orthographic()) draw_axis_grid(draw, viewport_origin_);
+    logic_overlay(draw, viewport_origin_);
     if (!editor_.doc().selection.empty() && !placing_)
         draw_gizmo(draw, gizmo_, view_, viewport_origin_, selection_pivot(), hovered_handle_);
     if (box_selecting_) {
@@ -387,6 +389,7 @@ void EditorApp::viewport_panel(float x, float y, float w, float h) {
                         4.0f);
     draw->AddText(ImVec2(origin.x + 12, origin.y + size.y - 23), IM_COL32(225, 230, 240, 255), text);
     clip_preview_overlay(viewport_origin_, size);
+    pick_hint(draw, viewport_origin_);
     if (placing_) {
         const std::string hint =
             "Click to place " + std::string(level::type_name(*placing_)) + "  (Esc: stop)";
@@ -418,7 +421,15 @@ void EditorApp::viewport_input(Vec2 origin, bool hovered) {
                             hovered && !gizmo_.dragging() && !patrol_drag_.dragging() && !box_selecting_,
                             mouse, hovered ? wheel_ : 0.0f),
             io.DeltaTime);
+    if (pick_ && hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Right) &&
+        io.MouseDragMaxDistanceSqr[1] < 16.0f)
+        end_pick(); // a right click (not a fly drag) cancels picking
     if (flying_) return;
+    if (pick_) { // the next left click picks; nothing else happens meanwhile
+        if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) pick_click(pick(view_.ray(mouse)));
+        hovered_handle_ = Handle::None;
+        return;
+    }
     const bool has_selection = !editor_.doc().selection.empty();
     if (patrol_drag_.dragging()) {
         if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {

@@ -21,7 +21,8 @@ inline level::Level load_shipped(const char* name) {
     return *loaded;
 }
 
-// A small valid level: two rooms joined by a door, a floor, a robot, a pickup and the control panel.
+// A small valid level: two rooms joined by a door, a floor, a robot, a pickup and the control panel, whose
+// use completes the level's one objective.
 inline const char* kTwoRoomScript = R"(# two rooms along z, joined by a door in the wall at z = 0
 level_name Two rooms
 grid 0.5 15
@@ -49,6 +50,8 @@ place pickup at 5,0,10
 set kind shield
 place control_panel at 0,0,-15 name Panel
 player_start 0,0,15
+objective add shutdown Shut down the simulation at the control panel
+link 13 add on_use shutdown complete
 )";
 
 // A clock the test moves by hand, for the autosaver's idle timing.

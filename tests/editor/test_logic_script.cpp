@@ -45,8 +45,6 @@ link 14 add on_enter Hint show delay 0.5 once
 link 10 add on_death Door unlock
 objective add clear Kill the guard
 objective clear kill Guard
-objective add shutdown Shut the simulation down at the panel
-link 13 add on_use shutdown complete
 link objective:clear add on_complete Door open delay 1
 link level add on_start Hint show
 expect links 14 2
@@ -64,14 +62,14 @@ TEST_CASE("logic script: builds a level's links and objectives, every line one u
     auto r = run(ed, kLogicScript);
     REQUIRE_MESSAGE(r.ok(), (r.ok() ? std::string() : r.error().str()));
     CHECK(r->expectations_checked == 5);
-    // 2 places, 1 set text, 1 name, 2 selects (no step), 2 sets, 6 links, 2 objective adds, 1 kill list
-    CHECK(ed.history().undo_count() == steps + 2 + 1 + 1 + 2 + 6 + 3);
+    // 2 places, 1 set text, 1 name, 2 selects (no step), 2 sets, 5 links, 1 objective add, 1 kill list
+    CHECK(ed.history().undo_count() == steps + 2 + 1 + 1 + 2 + 5 + 2);
     const level::Level& level = ed.level();
     REQUIRE(level.find(kTrigger)->type() == level::EntityType::Trigger);
     REQUIRE(level.find(kMessage)->type() == level::EntityType::Message);
     CHECK(level.find(kRobot)->name == "Guard");
-    REQUIRE(level.objectives.size() == 2);
-    CHECK(level.objectives[0].kill == std::vector<std::string>{"Guard"});
+    REQUIRE(level.objectives.size() == 2); // the two-room level's shutdown, then clear
+    CHECK(level.objectives[1].kill == std::vector<std::string>{"Guard"});
     CHECK(level.find(kPanel)->links ==
           std::vector<level::Link>{{"on_use", "shutdown", "complete", 0, false}});
     CHECK(level.find(kDoor)->as<level::DoorProps>().locked);
@@ -103,7 +101,8 @@ expect links 14 1
 expect link 14 1 on_enter Hint show delay 2.5
 objective clear text Kill every guard
 objective clear kill
-objective shutdown move 1
+objective clear move 1
+expect objectives 2
 objective clear remove
 expect objectives 1
 name 9 Vault_door

@@ -12,8 +12,8 @@ using level::EntityType;
 
 namespace {
 
-// kTwoRoomScript: the door between the rooms, the robot in the far room, the control panel. The player starts
-// in the near room (z > 0), the robot stands in the far one (z < 0).
+// kTwoRoomScript: the door between the rooms, the robot in the far room, the control panel (completing the
+// objective "shutdown"). The player starts in the near room (z > 0), the robot stands in the far one (z < 0).
 constexpr int kDoor = 9, kRobot = 10, kPanel = 13;
 
 Editor two_rooms() {
@@ -110,7 +110,7 @@ TEST_CASE("link_target: kill-list names and links to a deleted entity") {
     CHECK(issues[0].owner == LinkOwner::objective("clear"));
     CHECK(issues[0].fix.kind == QuickFix::Kind::SetKillName);
     fix_in_one_step(ed, Rule::LinkTarget);
-    CHECK(ed.level().objectives[0].kill == std::vector<std::string>{"Guard"});
+    CHECK(ed.level().objectives[1].kill == std::vector<std::string>{"Guard"});
 
     // Deleting the door leaves the panel's link naming nothing, and nothing else takes "open": removed.
     REQUIRE(ed.link_add(LinkOwner::entity(kPanel), link("on_use", "Door", "open")).ok());
@@ -122,8 +122,8 @@ TEST_CASE("link_target: kill-list names and links to a deleted entity") {
     // Deleting the guard too: its kill-list name goes.
     REQUIRE(ed.delete_entities({kRobot}).ok());
     run_ok(ed, "fix link_target\nexpect no_issue link_target\n");
-    CHECK(ed.level().find(kPanel)->links.empty());
-    CHECK(ed.level().objectives[0].kill.empty());
+    CHECK(ed.level().find(kPanel)->links == std::vector{link("on_use", "shutdown", "complete")});
+    CHECK(ed.level().objectives[1].kill.empty());
 }
 
 TEST_CASE("logic_loop: two doors toggling each other with no delay; the fix delays the first link") {
@@ -150,30 +150,33 @@ TEST_CASE("logic_loop: two doors toggling each other with no delay; the fix dela
 
 TEST_CASE("objective: one nothing can complete gets an on_use -> complete link on the control panel") {
     Editor ed = two_rooms();
+    CHECK(issues_of(ed, Rule::Objective).empty()); // the panel completes "shutdown"
     REQUIRE(ed.rename(kRobot, "Guard").ok());
     REQUIRE(ed.objective_add({"clear", "Kill the guard", {"Guard"}, {}}).ok());
     CHECK(issues_of(ed, Rule::Objective).empty()); // completed by the kill list
 
-    REQUIRE(ed.objective_add({"shutdown", "Shut it down", {}, {}}).ok());
+    REQUIRE(ed.objective_add({"escape", "Escape", {}, {}}).ok());
     auto issues = issues_of(ed, Rule::Objective);
     REQUIRE(issues.size() == 1);
-    CHECK(issues[0].owner == LinkOwner::objective("shutdown"));
+    CHECK(issues[0].owner == LinkOwner::objective("escape"));
     CHECK(issues[0].entity_id == 0);
     CHECK(issues[0].message.find("can never be won") != std::string::npos);
     CHECK(issues[0].fix.kind == QuickFix::Kind::AddLink);
     fix_in_one_step(ed, Rule::Objective);
-    CHECK(ed.level().find(kPanel)->links == std::vector{link("on_use", "shutdown", "complete")});
+    CHECK(ed.level().find(kPanel)->links ==
+          std::vector{link("on_use", "shutdown", "complete"), link("on_use", "escape", "complete")});
 
-    // Without a control panel there is nothing to add the link to: no fix, and `fix objective` leaves it.
+    // Without a control panel there is nothing to add the link to: no fix, and `fix objective` leaves them.
     REQUIRE(ed.delete_entities({kPanel}).ok());
     issues = issues_of(ed, Rule::Objective);
-    REQUIRE(issues.size() == 1);
+    REQUIRE(issues.size() == 2); // shutdown and escape
     CHECK(issues[0].fix.kind == QuickFix::Kind::None);
-    run_ok(ed, "fix objective\nexpect issue objective\n");
+    run_ok(ed, "fix objective\nexpect issue objective\nexpect no_issue control_panel\n");
 
     // A spawner nothing starts: reported on the kill-list name, no fix (the hint says what to add).
     const int spawner = *ed.place(EntityType::Spawner, {0, 0, -10}, 0, "Wave");
-    REQUIRE(ed.objective_set(1, {"shutdown", "Beat the wave", {"Wave"}, {}}).ok());
+    REQUIRE(ed.objective_remove(2).ok());
+    REQUIRE(ed.objective_set(0, {"shutdown", "Beat the wave", {"Wave"}, {}}).ok());
     issues = issues_of(ed, Rule::Objective);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].message.find("never spawns") != std::string::npos);
@@ -182,6 +185,33 @@ TEST_CASE("objective: one nothing can complete gets an on_use -> complete link o
     REQUIRE(ed.link_add(LinkOwner::entity(trigger), link("on_enter", "Wave", "spawn")).ok());
     CHECK(issues_of(ed, Rule::Objective).empty());
     CHECK(ed.level().find(spawner) != nullptr);
+}
+
+TEST_CASE("objective: a level with no objectives and no win link can never be won; the fix adds shutdown") {
+    Editor ed = two_rooms();
+    REQUIRE(ed.objective_remove(0).ok());
+    REQUIRE(ed.link_remove(LinkOwner::entity(kPanel), 0).ok());
+    auto issues = issues_of(ed, Rule::Objective);
+    REQUIRE(issues.size() == 1);
+    CHECK(issues[0].message.find("no objectives and no link wins it") != std::string::npos);
+    CHECK(issues[0].fix.kind == QuickFix::Kind::AddShutdownObjective);
+    fix_in_one_step(ed, Rule::Objective);
+    REQUIRE(ed.level().objectives.size() == 1);
+    CHECK(ed.level().objectives[0].id == "shutdown");
+    CHECK(ed.level().find(kPanel)->links == std::vector{link("on_use", "shutdown", "complete")});
+
+    // A win link is enough; without a panel there is nothing to fix with, and the panel is missed again.
+    REQUIRE(ed.undo());
+    const int trigger = *ed.place(EntityType::Trigger, {0, 0, -10}, 0, "Exit");
+    REQUIRE(ed.link_add(LinkOwner::entity(trigger), link("on_enter", "level", "win")).ok());
+    CHECK(issues_of(ed, Rule::Objective).empty());
+    REQUIRE(ed.link_remove(LinkOwner::entity(trigger), 0).ok());
+    REQUIRE(ed.delete_entities({kPanel}).ok());
+    issues = issues_of(ed, Rule::Objective);
+    REQUIRE(issues.size() == 1);
+    CHECK(issues[0].fix.kind == QuickFix::Kind::None);
+    CHECK(issues_of(ed, Rule::ControlPanel).size() == 1);
+    CHECK_FALSE(ed.add_shutdown_objective().ok());
 }
 
 TEST_CASE("locked_door: a locked door nothing frees is unlocked by the fix") {

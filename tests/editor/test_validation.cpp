@@ -109,7 +109,8 @@ TEST_CASE("rule player_start: floating (drop fix), outside every floor, inside a
     CHECK(of_rule(ed.issues(), Rule::PlayerStart).empty());
 }
 
-TEST_CASE("rule control_panel: missing is an error, extras are warnings with a delete fix") {
+TEST_CASE("rule control_panel: missing in a level without objectives is an error, extras are warnings with a "
+          "delete fix") {
     Editor ed;
     build_two_rooms(ed);
     const int panel = id_named(ed, "Panel");
@@ -122,7 +123,11 @@ TEST_CASE("rule control_panel: missing is an error, extras are warnings with a d
     REQUIRE(ed.apply_quick_fix(issues[0]).ok());
     CHECK(of_rule(ed.issues(), Rule::ControlPanel).empty());
 
+    // With an objective (the panel's "shutdown"), the objective rule says whether the level can be won.
     REQUIRE(ed.delete_entities({panel}).ok());
+    CHECK(of_rule(ed.issues(), Rule::ControlPanel).empty());
+    CHECK(of_rule(ed.issues(), Rule::Objective).size() == 1);
+    REQUIRE(ed.objective_remove(0).ok());
     issues = of_rule(ed.issues(), Rule::ControlPanel);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].severity == IssueSeverity::Error);

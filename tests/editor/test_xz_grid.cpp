@@ -3,6 +3,7 @@
 // miss is a rule that silently stops firing). And the rules built on it still find each planted defect on
 // a level far larger than one grid cell, wherever it is.
 #include "editor_test_util.h"
+#include "level/shutdown_objective.h"
 #include "model/validation.h"
 #include "model/xz_grid.h"
 
@@ -97,6 +98,7 @@ TEST_CASE("validation on a 10 x 10 room level finds each planted defect wherever
             doorway_wall({j * room, 0, i * room}, {(j + 1) * room, 0, i * room});
         }
     lv.add(level::EntityType::ControlPanel, Vec3(span - 12, 0, span - 12), "panel");
+    level::add_shutdown_objective(lv); // won at the panel
     lv.player_start.position = Vec3(12, 0, 12);
     ValidationOptions options;
     options.check_reachability = false; // this test is about the rules that ask the grid

@@ -1,0 +1,117 @@
+// The editor window's menu bar: File, Edit, View, Play and the Level / Dojo tabs.
+#include "ui/dojo_panel.h"
+#include "ui/editor_app.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+namespace ks::editor::ui {
+
+namespace {
+Vec2 item_centre() {
+    return Vec2((ImGui::GetItemRectMin().x + ImGui::GetItemRectMax().x) * 0.5f,
+                (ImGui::GetItemRectMin().y + ImGui::GetItemRectMax().y) * 0.5f);
+}
+} // namespace
+
+void EditorApp::menu_bar() {
+    if (!ImGui::BeginMainMenuBar()) return;
+    const bool file_menu = ImGui::BeginMenu("File");
+    menu_spots_[0] = item_centre();
+    menu_spots_[1] = Vec2(0.0f);
+    if (file_menu) {
+        if (ImGui::MenuItem("New", "Ctrl+N")) request(PendingAction::New);
+        if (ImGui::MenuItem("Open...", "Ctrl+O")) request(PendingAction::Open);
+        if (ImGui::BeginMenu("Open Recent", !recent_.entries().empty())) {
+            for (const auto& entry : recent_.entries())
+                if (ImGui::MenuItem(entry.string().c_str())) request(PendingAction::OpenRecent, entry);
+            ImGui::EndMenu();
+        }
+        if (ImGui::MenuItem("Save", "Ctrl+S")) save(false);
+        if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) save(true);
+        ImGui::Separator();
+        if (ImGui::MenuItem("Quit")) request(PendingAction::Quit);
+        menu_spots_[1] = item_centre();
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Edit")) {
+        if (dojo_tab_) { // the clip file's history, as Ctrl+Z in the tab
+            const auto& h = dojo_->history();
+            if (ImGui::MenuItem(("Undo " + h.undo_name()).c_str(), "Ctrl+Z", false, h.can_undo()))
+                dojo_->undo();
+            if (ImGui::MenuItem(("Redo " + h.redo_name()).c_str(), "Ctrl+Shift+Z", false, h.can_redo()))
+                dojo_->redo();
+        } else {
+            const auto& h = editor_.history();
+            if (ImGui::MenuItem(("Undo " + h.undo_name()).c_str(), "Ctrl+Z", false, h.can_undo()))
+                editor_.undo();
+            if (ImGui::MenuItem(("Redo " + h.redo_name()).c_str(), "Ctrl+Shift+Z", false, h.can_redo()))
+                editor_.redo();
+        }
+        ImGui::Separator();
+        const bool any = !editor_.doc().selection.empty();
+        if (ImGui::MenuItem("Duplicate", "Ctrl+D", false, any)) report(editor_.duplicate(), "duplicate");
+        if (ImGui::MenuItem("Delete", "Del", false, any)) report(editor_.delete_selection(), "delete");
+        if (ImGui::MenuItem("Copy", "Ctrl+C", false, any))
+            glfwSetClipboardString(shell_.window(), editor_.copy().c_str());
+        if (ImGui::MenuItem("Paste", "Ctrl+V")) {
+            const char* text = glfwGetClipboardString(shell_.window());
+            report(text ? editor_.paste_text(text) : editor_.paste(), "paste");
+        }
+        ImGui::Separator();
+        if (ImGui::MenuItem("Select All", "Ctrl+A")) editor_.select_all();
+        if (ImGui::BeginMenu("Select All of Type")) {
+            for (auto type : level::all_types())
+                if (ImGui::MenuItem(std::string(level::type_name(type)).c_str()))
+                    editor_.select_all_of_type(type);
+            ImGui::EndMenu();
+        }
+        if (ImGui::MenuItem("Select None", "Esc")) editor_.clear_selection();
+        ImGui::Separator();
+        auto& grid = editor_.grid();
+        ImGui::Checkbox("Snap to grid", &grid.snap);
+        ImGui::SetNextItemWidth(90);
+        ImGui::DragFloat("Grid step", &grid.step, 0.05f, 0.05f, 16.0f, "%.2f");
+        ImGui::SetNextItemWidth(90);
+        ImGui::DragFloat("Rotation step", &grid.rotation_step, 0.5f, 1.0f, 90.0f, "%.0f deg");
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("View")) {
+        if (ImGui::MenuItem("Perspective", "Num 5")) set_view(ViewMode::Perspective);
+        if (ImGui::MenuItem("Top", "Num 7")) set_view(ViewMode::Top);
+        if (ImGui::MenuItem("Front", "Num 1")) set_view(ViewMode::Front);
+        if (ImGui::MenuItem("Side", "Num 3")) set_view(ViewMode::Side);
+        if (ImGui::MenuItem("Focus Selection", "F")) focus_selection();
+        ImGui::Separator();
+        ImGui::MenuItem("Grid", nullptr, &overlays_.grid);
+        ImGui::MenuItem("Collision bounds", nullptr, &overlays_.collision);
+        ImGui::MenuItem("Structure outlines (axis views)", nullptr, &overlays_.outlines);
+        ImGui::MenuItem("Light ranges", nullptr, &overlays_.lights);
+        ImGui::MenuItem("Robot eye / shooting radii", nullptr, &overlays_.robots);
+        ImGui::MenuItem("Player start", nullptr, &overlays_.player_start);
+        ImGui::MenuItem("All patrol routes", nullptr, &overlays_.patrols);
+        ImGui::MenuItem("All sound radii", nullptr, &overlays_.sound_radii);
+        ImGui::MenuItem("Navigation mesh", nullptr, &overlays_.navmesh);
+        ImGui::MenuItem("Ceilings", nullptr, &overlays_.ceilings);
+        ImGui::MenuItem("Show links", nullptr, &overlays_.links);
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Play")) {
+        if (ImGui::MenuItem("Play from start", "F5", false, !play_.running())) play_test(false);
+        if (ImGui::MenuItem("Play from camera", "Shift+F5", false, !play_.running())) play_test(true);
+        if (ImGui::MenuItem("Stop", nullptr, false, play_.running())) play_.stop();
+        ImGui::EndMenu();
+    }
+    ImGui::Separator();
+    if (ImGui::RadioButton("Level", !dojo_tab_)) dojo_tab_ = false;
+    if (ImGui::RadioButton("Dojo", dojo_tab_)) {
+        dojo_tab_ = true;
+        if (pick_) end_pick(); // the level's viewport, where the pick would land, is gone
+    }
+    ImGui::Separator();
+    const std::string status = editor_.title();
+    ImGui::TextDisabled("%s", status.c_str());
+    ImGui::EndMainMenuBar();
+}
+} // namespace ks::editor::ui
