@@ -56,7 +56,7 @@ MenuAction from_row(int clicked, MenuAction first, MenuAction second) {
 void results_table(const CampaignProgress& progress, const shell::Fonts& fonts) {
     const float s = scale();
     const float width = ImGui::GetWindowWidth() - 80 * s, row_h = 30 * s;
-    const float columns[4] = {0.02f, 0.56f, 0.72f, 0.87f};
+    const float columns[4] = {0.02f, 0.52f, 0.67f, 0.82f};
     ImDrawList* d = ImGui::GetWindowDrawList();
     ImGui::SetCursorPosX(40 * s);
     const ImVec2 origin = ImGui::GetCursorScreenPos();
@@ -184,7 +184,7 @@ void result_tiles(const LevelResult& r, const shell::Fonts& fonts) {
 
 MenuAction summary_screen(const CampaignProgress& progress, const shell::Fonts& fonts, float w, float h) {
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h, 0.85f);
-    ui::begin_panel("##summary", "Level Complete", 640, 360, w, h, fonts);
+    ui::begin_panel("##summary", "Level Complete", 640, 330, w, h, fonts);
     const LevelResult* result = progress.last_result();
     ui::centred_text(progress.campaign().name + "  \u00b7  level " + std::to_string(progress.index() + 1) +
                          " of " + std::to_string(progress.count()),
@@ -222,7 +222,9 @@ MenuAction custom_levels_screen(const std::vector<LevelGroup>& groups, const lev
                                 const shell::Fonts& fonts, float w, float h) {
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
     MenuAction action = MenuAction::None;
-    ui::begin_panel("##custom", "Custom Level", 760, 440, w, h, fonts);
+    // Taller where the window has room for more of the list (440 at 270p and 540p, 540 from 720p on).
+    const float panel_h = std::clamp(h / ui::ui_scale(h) - 180.0f, 440.0f, 540.0f);
+    ui::begin_panel("##custom", "Custom Level", 760, panel_h, w, h, fonts);
     const float s = scale();
     ui::centred_text("Play one level on its own. Your levels folder is listed below the shipped ones.",
                      fonts.body, kMuted);
@@ -232,7 +234,7 @@ MenuAction custom_levels_screen(const std::vector<LevelGroup>& groups, const lev
     ImGui::PushStyleColor(ImGuiCol_ScrollbarBg, IM_COL32(0, 0, 0, 20));
     ImGui::PushStyleColor(ImGuiCol_ScrollbarGrab, ui::kAccent);
     ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(8 * s, 6 * s));
-    ImGui::BeginChild("##levels", ImVec2(list_w, 270 * s), false);
+    ImGui::BeginChild("##levels", ImVec2(list_w, (panel_h - 170.0f) * s), false);
     const float row_w = list_w - 18 * s; // room for the scroll bar
     for (const LevelGroup& group : groups) {
         group_heading(group, fonts, row_w);

@@ -268,7 +268,8 @@ TEST_CASE("HUD: the objective list, the message line, the Locked caption and the
     // The target robot shot down: its objective ticked, the next one current, the banner up.
     const std::string command = killswitch(dir, dir / "xdg-data") + "--campaign " +
                                 (test::data_dir() / "campaign" / "campaign.json").string() + " ";
-    const Run banner = run_script(command, dir, "banner", level_one_script(15), 75);
+    const Run banner = run_script(command, dir, "banner",
+                                  test::read_file(test::data_dir() / "campaign" / "play_through.txt"), 75);
     INFO(banner.command.output);
     INFO(banner.status);
     REQUIRE(banner.command.exit_code == 0);
