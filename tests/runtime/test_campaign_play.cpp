@@ -164,6 +164,25 @@ TEST_CASE(
     CHECK(line(done.status, "level_name") == "Test level two");
 }
 
+TEST_CASE("campaign by script: a campaign file that does not load leaves the menu up with its error") {
+    REQUIRE_MESSAGE(test::have_display(), "no DISPLAY: run the GL tests under xvfb-run (./run.sh test does)");
+    TestDataRoot data;
+    write(data.root() / "levels" / "campaign.json",
+          "{\"name\": \"Broken\", \"levels\": [{\"file\": \"onee.json\", \"title\": \"Typo\"}]}");
+    const std::string command = killswitch(data.dir, data.dir / "xdg-data", data.root().string()) +
+                                "--level " + (data.root() / "levels" / "two.json").string() + " ";
+    const Run run = run_script(command, data.dir, "broken", "20 click Campaign\n", 30);
+    INFO(run.command.output);
+    INFO(run.status);
+    REQUIRE(run.command.exit_code == 0);
+    CHECK(line(run.status, "screen") == "menu");
+    CHECK(line(run.status, "campaign") == "-");
+    const std::string error = line(run.status, "error");
+    CHECK(error.find("Could not start the campaign: ") == 0);
+    CHECK(error.find("levels[0].file: level file \"onee.json\" not found") != std::string::npos);
+    CHECK(error.find("did you mean \"one.json\"?") != std::string::npos);
+}
+
 TEST_CASE("campaign by script: dying offers Retry, which plays the same level of the campaign again") {
     REQUIRE_MESSAGE(test::have_display(), "no DISPLAY: run the GL tests under xvfb-run (./run.sh test does)");
     test::ScratchDir dir;
