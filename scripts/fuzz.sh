@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (fuzz/, clang) and runs each for a bounded time.
-#   scripts/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]      (default 60 s, all three targets)
+#   scripts/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]      (default 60 s, all four targets)
 # Environment: KS_FUZZ_BUILD (build folder, default build-fuzz), KS_FUZZ_FLAGS (extra libFuzzer flags),
 # KS_FUZZ_NO_BUILD=1 (run the targets already built there), KS_FUZZ_TIMEOUT (seconds one input may take,
 # default 30: wall-clock, so generous on a shared machine), KS_FUZZ_MAX_LEN (default 32768 bytes: the largest
@@ -19,7 +19,7 @@ if ! [[ $seconds =~ ^[0-9]+$ ]] || (( seconds < 1 )); then
     exit 2
 fi
 targets=("$@")
-(( ${#targets[@]} )) || targets=(fuzz_level_loader fuzz_clip_loader fuzz_editor_script)
+(( ${#targets[@]} )) || targets=(fuzz_level_loader fuzz_campaign_loader fuzz_clip_loader fuzz_editor_script)
 build=${KS_FUZZ_BUILD:-$root/build-fuzz}
 jobs=$(nproc 2>/dev/null || echo 2)
 
@@ -35,6 +35,7 @@ fi
 seeds_for() {
     case $1 in
     fuzz_level_loader) echo "$root/levels $root/tests/data/levels/good $root/tests/data/levels/bad" ;;
+    fuzz_campaign_loader) echo "$root/levels $root/tests/data/campaign" ;;
     fuzz_clip_loader) echo "$root/assets/animations $root/tests/data/anim/bad" ;;
     fuzz_editor_script) echo "" ;;
     *) echo "fuzz.sh: unknown target '$1'" >&2; exit 2 ;;
@@ -43,6 +44,7 @@ seeds_for() {
 dict_for() {
     case $1 in
     fuzz_level_loader) echo "$root/fuzz/level.dict" ;;
+    fuzz_campaign_loader) echo "$root/fuzz/campaign.dict" ;;
     fuzz_clip_loader) echo "$root/fuzz/clip.dict" ;;
     fuzz_editor_script) echo "$root/fuzz/script.dict" ;;
     esac

@@ -138,7 +138,8 @@ void check_level_files_exist(const std::vector<ListedLevel>& levels, const fs::p
         std::error_code ec;
         if (fs::is_regular_file(full, ec)) continue;
         std::string hint = "level files are relative to the campaign file's folder";
-        const std::vector<std::string> beside = level_files_in(full.parent_path());
+        const std::vector<std::string> beside =
+            level_files_in(full.parent_path().empty() ? fs::path(".") : full.parent_path());
         if (std::string near = jsonio::closest_match(relative.filename().string(), beside); !near.empty())
             hint = "did you mean \"" + (relative.parent_path() / near).generic_string() + "\"? " + hint;
         const std::string what = fs::is_directory(full, ec) ? "is a folder, not a level file" : "not found";

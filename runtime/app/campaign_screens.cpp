@@ -56,7 +56,7 @@ MenuAction from_row(int clicked, MenuAction first, MenuAction second) {
 void results_table(const CampaignProgress& progress, const shell::Fonts& fonts) {
     const float s = scale();
     const float width = ImGui::GetWindowWidth() - 80 * s, row_h = 30 * s;
-    const float columns[4] = {0.02f, 0.56f, 0.72f, 0.87f};
+    const float columns[4] = {0.02f, 0.52f, 0.67f, 0.82f};
     ImDrawList* d = ImGui::GetWindowDrawList();
     ImGui::SetCursorPosX(40 * s);
     const ImVec2 origin = ImGui::GetCursorScreenPos();
@@ -115,24 +115,43 @@ bool level_row(const level::LevelFileEntry& entry, const shell::Fonts& fonts, fl
     return clicked;
 }
 
-// A list row for a file that does not load: its name, "cannot be played", and the loader's first problem.
+// A list row for a file that does not load: its name, "cannot be played", and the loader's first problem in
+// at most two lines (the log has the whole report).
 void broken_row(const level::LevelFileEntry& entry, const shell::Fonts& fonts, float width) {
-    const float s = scale(), pad = 10 * s;
-    const float name_px = font_px(19), error_px = font_px(14);
-    std::string error = entry.error.substr(0, entry.error.find('\n', entry.error.find(':') + 1));
-    if (error.size() > 260) error = error.substr(0, 260) + "\u2026";
-    const float wrap = width - 36 * s;
-    const ImVec2 es = text_size(fonts.body, error_px, error.c_str(), wrap);
-    const float row_h = pad + name_px + 6 * s + es.y + pad;
+    const float s = scale(), pad = 9 * s;
+    const float name_px = font_px(18), error_px = font_px(14), wrap = width - 36 * s;
+    std::string first = entry.error.substr(0, entry.error.find('\n'));
+    if (const std::string full = entry.file.string(); first.rfind(full, 0) == 0) // the row says which folder
+        first.replace(0, full.size(), entry.file.filename().string());
+    const float error_h = std::min(text_size(fonts.body, error_px, first.c_str(), wrap).y, error_px * 2.4f);
+    const float row_h = pad + name_px + 5 * s + error_h + pad;
     const ImVec2 at = ImGui::GetCursorScreenPos();
     ImDrawList* d = ImGui::GetWindowDrawList();
     d->AddRectFilled(at, ImVec2(at.x + width, at.y + row_h), IM_COL32(250, 232, 230, 220), 6.0f * s);
     d->AddRectFilled(at, ImVec2(at.x + 5 * s, at.y + row_h), kError, 6.0f * s, ImDrawFlags_RoundCornersLeft);
     const std::string title = entry.name + "  \u2014  cannot be played";
     d->AddText(fonts.hud, name_px, ImVec2(at.x + 18 * s, at.y + pad), kError, title.c_str());
-    d->AddText(fonts.body, error_px, ImVec2(at.x + 18 * s, at.y + pad + name_px + 6 * s),
-               IM_COL32(120, 40, 40, 255), error.c_str(), nullptr, wrap);
+    const ImVec2 error_at(at.x + 18 * s, at.y + pad + name_px + 5 * s);
+    d->PushClipRect(error_at, ImVec2(error_at.x + wrap, error_at.y + error_h), true);
+    d->AddText(fonts.body, error_px, error_at, IM_COL32(120, 40, 40, 255), first.c_str(), nullptr, wrap);
+    d->PopClipRect();
     ImGui::Dummy(ImVec2(width, row_h));
+}
+
+// A folder's heading: its title, and where it is at the right.
+void group_heading(const LevelGroup& group, const shell::Fonts& fonts, float width) {
+    const float s = scale(), title_px = font_px(19), path_px = font_px(13);
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    ImDrawList* d = ImGui::GetWindowDrawList();
+    d->AddText(fonts.hud, title_px, at, ui::kAccentActive, group.title.c_str());
+    const std::string where = group.folder.folder.empty() ? "(no home folder)" : group.folder.folder.string();
+    const ImVec2 ps = text_size(fonts.body, path_px, where.c_str());
+    const float title_w = text_size(fonts.hud, title_px, group.title.c_str()).x;
+    const float x = std::max(at.x + title_w + 16 * s, at.x + width - ps.x - 6 * s);
+    d->PushClipRect(ImVec2(at.x, at.y), ImVec2(at.x + width, at.y + title_px + 4 * s), true);
+    d->AddText(fonts.body, path_px, ImVec2(x, at.y + title_px - path_px - 1 * s), kMuted, where.c_str());
+    d->PopClipRect();
+    ImGui::Dummy(ImVec2(width, title_px + 2 * s));
 }
 
 void note(const std::string& text, const shell::Fonts& fonts, float width) {
@@ -165,7 +184,7 @@ void result_tiles(const LevelResult& r, const shell::Fonts& fonts) {
 
 MenuAction summary_screen(const CampaignProgress& progress, const shell::Fonts& fonts, float w, float h) {
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h, 0.85f);
-    ui::begin_panel("##summary", "Level Complete", 640, 360, w, h, fonts);
+    ui::begin_panel("##summary", "Level Complete", 640, 330, w, h, fonts);
     const LevelResult* result = progress.last_result();
     ui::centred_text(progress.campaign().name + "  \u00b7  level " + std::to_string(progress.index() + 1) +
                          " of " + std::to_string(progress.count()),
@@ -203,7 +222,9 @@ MenuAction custom_levels_screen(const std::vector<LevelGroup>& groups, const lev
                                 const shell::Fonts& fonts, float w, float h) {
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
     MenuAction action = MenuAction::None;
-    ui::begin_panel("##custom", "Custom Level", 760, 440, w, h, fonts);
+    // Taller where the window has room for more of the list (440 at 270p and 540p, 540 from 720p on).
+    const float panel_h = std::clamp(h / ui::ui_scale(h) - 180.0f, 440.0f, 540.0f);
+    ui::begin_panel("##custom", "Custom Level", 760, panel_h, w, h, fonts);
     const float s = scale();
     ui::centred_text("Play one level on its own. Your levels folder is listed below the shipped ones.",
                      fonts.body, kMuted);
@@ -213,17 +234,10 @@ MenuAction custom_levels_screen(const std::vector<LevelGroup>& groups, const lev
     ImGui::PushStyleColor(ImGuiCol_ScrollbarBg, IM_COL32(0, 0, 0, 20));
     ImGui::PushStyleColor(ImGuiCol_ScrollbarGrab, ui::kAccent);
     ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(8 * s, 6 * s));
-    ImGui::BeginChild("##levels", ImVec2(list_w, 262 * s), false);
+    ImGui::BeginChild("##levels", ImVec2(list_w, (panel_h - 170.0f) * s), false);
     const float row_w = list_w - 18 * s; // room for the scroll bar
     for (const LevelGroup& group : groups) {
-        const std::string where =
-            group.folder.folder.empty() ? "(no home folder)" : group.folder.folder.string();
-        ImGui::PushStyleColor(ImGuiCol_Text, ui::kAccentActive);
-        if (fonts.hud) ImGui::PushFont(fonts.hud);
-        ImGui::TextUnformatted(group.title.c_str());
-        if (fonts.hud) ImGui::PopFont();
-        ImGui::PopStyleColor();
-        note(where, fonts, row_w);
+        group_heading(group, fonts, row_w);
         if (!group.folder.exists)
             note("No folder yet. Levels saved there from the editor will be listed here.", fonts, row_w);
         else if (group.folder.levels.empty())
@@ -241,7 +255,7 @@ MenuAction custom_levels_screen(const std::vector<LevelGroup>& groups, const lev
         }
         if (group.folder.left_out > 0)
             note("+" + std::to_string(group.folder.left_out) + " more files not listed", fonts, row_w);
-        ImGui::Dummy(ImVec2(row_w, 8 * s));
+        ImGui::Dummy(ImVec2(row_w, 4 * s));
     }
     ImGui::EndChild();
     ImGui::PopStyleVar();

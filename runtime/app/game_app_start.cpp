@@ -107,6 +107,8 @@ Result<void> GameApp::set_up_scenario(const Automation& a, const std::string& sc
         }
         if (screen == "summary") screen_ = Screen::Summary; // also for a campaign of one level
     }
+    // A menu's buttons take the mouse (a scripted run captured it when the level started).
+    if (screen_ != Screen::Playing) input_.release(shell_.window(), events_.state());
     return {};
 }
 

@@ -21,6 +21,8 @@ void GameApp::write_status(const shell::FrameInfo& info) {
     };
     add("screen %s", screen_name(screen_));
     add("captured %d", input_.captured() ? 1 : 0);
+    // The menu's error (a level or campaign that would not load): its first line, as the menu shows it.
+    s += "error " + (error_.empty() ? std::string("-") : error_.substr(0, error_.find('\n'))) + "\n";
     add("options sensitivity %.2f fov %.0f invert_y %d render_scale %.2f quality %s",
         options_.mouse_sensitivity, options_.fov_degrees, options_.invert_y ? 1 : 0, options_.render_scale,
         quality_name(options_.quality));

@@ -146,7 +146,7 @@ void draw_flash(ImDrawList* d, const ObjectiveFlash& flash, const shell::Fonts& 
     const char* title = "OBJECTIVE COMPLETE";
     const float title_w = fonts.hud ? fonts.hud->CalcTextSizeA(title_size, FLT_MAX, 0.0f, title).x : 0.0f;
     const float icon = title_size * 0.9f, gap = 12.0f * s;
-    const float cy = h * 0.3f;
+    const float cy = h * 0.32f;
     const float band_top = cy - title_size * 0.5f - 14.0f * s,
                 band_bottom = cy + title_size * 0.5f + text_size + 22.0f * s;
     const ImU32 dark = rgba(8, 20, 14, 0.7f * a), clear = rgba(8, 20, 14, 0.0f);

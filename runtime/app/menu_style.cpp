@@ -84,7 +84,14 @@ const std::vector<ButtonRect>& buttons_drawn() {
 }
 
 void record_button(const char* label) {
-    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    // Only the part that can be clicked: a row scrolled half out of a list is cut to what shows.
+    const ImVec2 clip_min = ImGui::GetWindowDrawList()->GetClipRectMin();
+    const ImVec2 clip_max = ImGui::GetWindowDrawList()->GetClipRectMax();
+    const ImVec2 a(std::max(ImGui::GetItemRectMin().x, clip_min.x),
+                   std::max(ImGui::GetItemRectMin().y, clip_min.y));
+    const ImVec2 b(std::min(ImGui::GetItemRectMax().x, clip_max.x),
+                   std::min(ImGui::GetItemRectMax().y, clip_max.y));
+    if (a.x >= b.x || a.y >= b.y) return; // scrolled out of sight
     drawn().push_back({label, a.x, a.y, b.x, b.y, ImGui::IsItemHovered(), ImGui::IsItemClicked()});
 }
 

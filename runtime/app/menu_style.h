@@ -48,7 +48,8 @@ struct ButtonRect {
 };
 void begin_frame();
 const std::vector<ButtonRect>& buttons_drawn();
-// Records the last ImGui item as a button named `label` (for buttons not drawn by big_button).
+// Records the last ImGui item as a button named `label` (for buttons not drawn by big_button): the part of
+// it not clipped away, nothing when it is out of sight.
 void record_button(const char* label);
 
 // Centred body text lines.

@@ -54,7 +54,7 @@ void loading_screen(float fraction, const std::string& step, const shell::Fonts&
 MenuAction main_menu(const std::string& error, const shell::Fonts& fonts, float w, float h) {
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
     MenuAction action = MenuAction::None;
-    ui::begin_panel("##main", "Killswitch", 640, error.empty() ? 400 : 480, w, h, fonts);
+    ui::begin_panel("##main", "Killswitch", 640, error.empty() ? 380 : 460, w, h, fonts);
     ui::centred_text("A virtual disaster simulator. The robots went rogue.", fonts.body);
     // The campaign first; the less used choices share rows (Quit grey).
     if (ui::big_button("Campaign", fonts, 420)) action = MenuAction::Campaign;

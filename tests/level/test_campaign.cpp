@@ -199,6 +199,21 @@ TEST_CASE("campaign: malformed files give every problem with file, line:column, 
     }
 }
 
+TEST_CASE("campaign: a campaign named relative to the current folder finds its levels and suggests names") {
+    CampaignFolder folder;
+    const fs::path previous = fs::current_path();
+    fs::current_path(folder.dir.path());
+    const std::string text = "{\"name\": \"C\", \"levels\": [{\"file\": \"frist.json\", \"title\": \"A\"}]}";
+    REQUIRE(files::write_atomic("relative.json", text).ok());
+    Result<Campaign> campaign = load_campaign("relative.json");
+    fs::current_path(previous);
+    REQUIRE_FALSE(campaign.ok());
+    check_contains(
+        campaign.error().str(),
+        {"relative.json:1:27: levels[0].file: level file \"frist.json\" not found (looked for frist.json)",
+         "did you mean \"first.json\"?"});
+}
+
 TEST_CASE("campaign: the user's levels folder follows XDG_DATA_HOME, else HOME") {
     const char* old_xdg = std::getenv("XDG_DATA_HOME");
     const std::string saved_xdg = old_xdg ? old_xdg : "";
