@@ -54,10 +54,7 @@ Vec3 mean_rgb(const std::vector<unsigned char>& rgb, float x0 = 1.0f / 3.0f, flo
 } // namespace
 
 TEST_CASE("a tinted instance turns red on both paths; an untinted copy beside it does not") {
-    if (!test::gl_context()) {
-        MESSAGE("skipped: no display (run under xvfb-run, as ./run.sh test does)");
-        return;
-    }
+    REQUIRE_MESSAGE(test::gl_context(), "cannot run: no display (run under xvfb-run, as ./run.sh test does)");
     AssetLibrary assets(test::source_dir() / "assets");
     const Model& robot = assets.model("robot");
     REQUIRE_FALSE(robot.placeholder);
@@ -94,10 +91,7 @@ TEST_CASE("a tinted instance turns red on both paths; an untinted copy beside it
 }
 
 TEST_CASE("a dynamic light lights the baked floor on the fast path; a level light there is in the map") {
-    if (!test::gl_context()) {
-        MESSAGE("skipped: no display (run under xvfb-run, as ./run.sh test does)");
-        return;
-    }
+    REQUIRE_MESSAGE(test::gl_context(), "cannot run: no display (run under xvfb-run, as ./run.sh test does)");
     auto level = level::load_level_file(test::source_dir() / "levels" / "main.json");
     REQUIRE(level.ok());
     AssetLibrary assets(test::source_dir() / "assets");

@@ -29,10 +29,8 @@ using namespace ks::render;
 namespace fs = std::filesystem;
 
 #define KS_REQUIRE_GL()                                                                                      \
-    if (!ks::test::gl_context()) {                                                                           \
-        MESSAGE("skipped: no display (run under xvfb-run, as ./run.sh test does)");                          \
-        return;                                                                                              \
-    }
+    REQUIRE_MESSAGE(ks::test::gl_context(),                                                                  \
+                    "no display: run the GL tests under xvfb-run (./run.sh test does)")
 
 namespace {
 fs::path assets_dir() {

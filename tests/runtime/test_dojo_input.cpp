@@ -45,10 +45,8 @@ bool has_spot(const json& j, const char* spot) {
 } // namespace
 
 TEST_CASE("dojo input: New clip typed into its dialog, a blend cell from idle typed, Save writes both") {
-    if (!test::have_display() || !test::have_xdotool()) {
-        MESSAGE("no DISPLAY or xdotool: dojo input test skipped");
-        return;
-    }
+    REQUIRE_MESSAGE((test::have_display() && test::have_xdotool()),
+                    "no DISPLAY or xdotool: dojo input test cannot run");
     test::ScratchDir dir;
     const auto clips = copy_clips(dir);
     const auto shipped_before = files::read_text(shipped_clips());
@@ -135,10 +133,8 @@ TEST_CASE("dojo input: New clip typed into its dialog, a blend cell from idle ty
 
 TEST_CASE("dojo input: an event added at the playhead, a curve key dragged (one undo step), Save; a change "
           "made outside is noticed and reloaded") {
-    if (!test::have_display() || !test::have_xdotool()) {
-        MESSAGE("no DISPLAY or xdotool: dojo input test skipped");
-        return;
-    }
+    REQUIRE_MESSAGE((test::have_display() && test::have_xdotool()),
+                    "no DISPLAY or xdotool: dojo input test cannot run");
     test::ScratchDir dir;
     const auto clips = copy_clips(dir);
     const auto status = dir / "status.json";

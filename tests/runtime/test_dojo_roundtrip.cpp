@@ -85,10 +85,8 @@ int pixels_changed(const test::Image& a, const test::Image& b) {
 } // namespace
 
 TEST_CASE("dojo round trip: a shoot pose changed and saved in the dojo is what the runtime's Dojo plays") {
-    if (!test::have_display()) {
-        MESSAGE("no DISPLAY: dojo round-trip test skipped (./run.sh test runs it under xvfb-run)");
-        return;
-    }
+    REQUIRE_MESSAGE(test::have_display(),
+                    "no DISPLAY: dojo round-trip test cannot run (./run.sh test runs it under xvfb-run)");
     test::ScratchDir dir;
     const fs::path root = dir / "data";
     make_data_copy(root);
@@ -125,10 +123,8 @@ TEST_CASE("dojo round trip: a shoot pose changed and saved in the dojo is what t
 }
 
 TEST_CASE("dojo round trip: a new clip saved in the dojo is listed in the runtime's Dojo and plays from it") {
-    if (!test::have_display()) {
-        MESSAGE("no DISPLAY: dojo round-trip test skipped (./run.sh test runs it under xvfb-run)");
-        return;
-    }
+    REQUIRE_MESSAGE(test::have_display(),
+                    "no DISPLAY: dojo round-trip test cannot run (./run.sh test runs it under xvfb-run)");
     test::ScratchDir dir;
     const fs::path root = dir / "data";
     make_data_copy(root);

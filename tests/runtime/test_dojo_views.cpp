@@ -51,10 +51,8 @@ bool magenta(int r, int g, int b) {
 } // namespace
 
 TEST_CASE("dojo onion skin: the keys around the playhead are drawn as tinted ghosts, only when switched on") {
-    if (!test::have_display()) {
-        MESSAGE("no DISPLAY: dojo view test skipped (./run.sh test runs it under xvfb-run)");
-        return;
-    }
+    REQUIRE_MESSAGE(test::have_display(),
+                    "no DISPLAY: dojo view test cannot run (./run.sh test runs it under xvfb-run)");
     test::ScratchDir dir;
     // Halfway into the shoot pose: the previous key is the rest pose, the next the raised arms.
     const Shot on = editor_shot(dir, "onion", "--dojo --dojo-view clip=shoot_pose,time=0.15,onion=1");
@@ -73,10 +71,7 @@ TEST_CASE("dojo onion skin: the keys around the playhead are drawn as tinted gho
 }
 
 TEST_CASE("dojo curve view: a node's channel drawn over the clip's time, one handle per key") {
-    if (!test::have_display()) {
-        MESSAGE("no DISPLAY: dojo view test skipped");
-        return;
-    }
+    REQUIRE_MESSAGE(test::have_display(), "no DISPLAY: dojo view test cannot run");
     test::ScratchDir dir;
     const Shot death =
         editor_shot(dir, "curve", "--dojo --dojo-view clip=death,page=curves,node=chest,channel=rot.x");
@@ -96,10 +91,7 @@ TEST_CASE("dojo curve view: a node's channel drawn over the clip's time, one han
 }
 
 TEST_CASE("dojo preview in context: a clip plays on the selected level robot, in place in the viewport") {
-    if (!test::have_display()) {
-        MESSAGE("no DISPLAY: dojo view test skipped");
-        return;
-    }
+    REQUIRE_MESSAGE(test::have_display(), "no DISPLAY: dojo view test cannot run");
     test::ScratchDir dir;
     {
         std::ofstream script(dir / "room.kss");
@@ -146,10 +138,7 @@ TEST_CASE("dojo preview in context: a clip plays on the selected level robot, in
 }
 
 TEST_CASE("dojo event sounds: an event's sound is played as the playhead passes it") {
-    if (!test::have_display()) {
-        MESSAGE("no DISPLAY: dojo view test skipped");
-        return;
-    }
+    REQUIRE_MESSAGE(test::have_display(), "no DISPLAY: dojo view test cannot run");
     test::ScratchDir dir;
     // shooting's muzzle_flash (sound robot_shot) sits at 0 s: it fires as soon as the clip plays. idle has no
     // events. Without a sound card the editor's player runs silently, and still counts what it was given.

@@ -149,10 +149,8 @@ TEST_CASE("killswitch-editor --script reports a bad line as file:line and exits 
 }
 
 TEST_CASE("killswitch-editor --screenshot shows the level in its viewport between the panels") {
-    if (!have_display()) {
-        MESSAGE("no DISPLAY: editor window test skipped (./run.sh test runs it under xvfb-run)");
-        return;
-    }
+    REQUIRE_MESSAGE(have_display(),
+                    "no DISPLAY: editor window test cannot run (./run.sh test runs it under xvfb-run)");
     test::ScratchDir dir;
     build_two_rooms(dir.path());
     auto shot = dir / "editor.png";
@@ -186,10 +184,8 @@ TEST_CASE("killswitch-editor --screenshot shows the level in its viewport betwee
 }
 
 TEST_CASE("killswitch-editor draws the selection outline and the gizmo for a selected entity") {
-    if (!have_display()) {
-        MESSAGE("no DISPLAY: editor window test skipped (./run.sh test runs it under xvfb-run)");
-        return;
-    }
+    REQUIRE_MESSAGE(have_display(),
+                    "no DISPLAY: editor window test cannot run (./run.sh test runs it under xvfb-run)");
     test::ScratchDir dir;
     build_two_rooms(dir.path());
     write(dir / "select.kss", "select all robot\n");
@@ -220,10 +216,8 @@ TEST_CASE("killswitch-editor draws the selection outline and the gizmo for a sel
 }
 
 TEST_CASE("killswitch-editor's top view outlines the walls, so the floor plan reads from above") {
-    if (!have_display()) {
-        MESSAGE("no DISPLAY: editor window test skipped (./run.sh test runs it under xvfb-run)");
-        return;
-    }
+    REQUIRE_MESSAGE(have_display(),
+                    "no DISPLAY: editor window test cannot run (./run.sh test runs it under xvfb-run)");
     test::ScratchDir dir;
     build_two_rooms(dir.path());
     // The same level without its walls: the outline colour must come from the walls, not from the grid,
@@ -255,10 +249,8 @@ TEST_CASE("killswitch-editor's top view outlines the walls, so the floor plan re
 }
 
 TEST_CASE("killswitch-editor --dojo shows the posed robot in its preview") {
-    if (!have_display()) {
-        MESSAGE("no DISPLAY: dojo window test skipped (./run.sh test runs it under xvfb-run)");
-        return;
-    }
+    REQUIRE_MESSAGE(have_display(),
+                    "no DISPLAY: dojo window test cannot run (./run.sh test runs it under xvfb-run)");
     test::ScratchDir dir;
     auto shot = dir / "dojo.png";
     auto run = test::run_command(
@@ -274,10 +266,8 @@ TEST_CASE("killswitch-editor --dojo shows the posed robot in its preview") {
 }
 
 TEST_CASE("killswitch-editor draws a sound emitter's speaker, and its radius sphere while it is selected") {
-    if (!have_display()) {
-        MESSAGE("no DISPLAY: editor window test skipped (./run.sh test runs it under xvfb-run)");
-        return;
-    }
+    REQUIRE_MESSAGE(have_display(),
+                    "no DISPLAY: editor window test cannot run (./run.sh test runs it under xvfb-run)");
     test::ScratchDir dir;
     build_two_rooms(dir.path());
     auto level = level::load_level_file(dir / "two_rooms.json");

@@ -58,10 +58,8 @@ std::vector<int> selection(const json& s) {
 
 TEST_CASE("editor input: place from the palette, select, drag the gizmo, undo, redo and save with real "
           "X events") {
-    if (!ks::test::have_display() || !test::have_xdotool()) {
-        MESSAGE("no DISPLAY or xdotool: input test skipped (./run.sh test runs it under xvfb-run)");
-        return;
-    }
+    REQUIRE_MESSAGE((ks::test::have_display() && test::have_xdotool()),
+                    "no DISPLAY or xdotool: input test cannot run (./run.sh test runs it under xvfb-run)");
     test::ScratchDir dir;
     build_input_level(dir.path());
     const auto level_file = dir / "input.json";
@@ -168,10 +166,8 @@ TEST_CASE("editor input: place from the palette, select, drag the gizmo, undo, r
 
 TEST_CASE("editor input: F5 plays the current document in the runtime, Shift+F5 from the camera, and a "
           "failing runtime is reported") {
-    if (!ks::test::have_display() || !test::have_xdotool()) {
-        MESSAGE("no DISPLAY or xdotool: play-test input test skipped");
-        return;
-    }
+    REQUIRE_MESSAGE((ks::test::have_display() && test::have_xdotool()),
+                    "no DISPLAY or xdotool: play-test input test cannot run");
     test::ScratchDir dir;
     build_input_level(dir.path());
     // The substitute runtime: answers --help like killswitch, records its arguments and the level it was
@@ -247,10 +243,8 @@ TEST_CASE("editor input: F5 plays the current document in the runtime, Shift+F5 
 TEST_CASE(
     "editor input: the dojo's Add key button keys a node, Ctrl+Z takes it back, Ctrl+Shift+Z redoes it; "
     "Duplicate key inserts a phase, Ctrl+Z removes it") {
-    if (!ks::test::have_display() || !test::have_xdotool()) {
-        MESSAGE("no DISPLAY or xdotool: dojo input test skipped");
-        return;
-    }
+    REQUIRE_MESSAGE((ks::test::have_display() && test::have_xdotool()),
+                    "no DISPLAY or xdotool: dojo input test cannot run");
     test::ScratchDir dir;
     const auto shipped = test::source_dir() / "assets" / "animations" / "robot.json";
     const auto shipped_before = files::read_text(shipped);

@@ -256,10 +256,8 @@ TEST_CASE("event particles: sparks out of a wall, a blue crackle on a robot, non
 }
 
 TEST_CASE("the game: a shot lights up for a few frames then not, and the robot it hits turns red") {
-    if (!test::have_display()) {
-        MESSAGE("no DISPLAY: GL screen tests skipped (./run.sh test runs them under xvfb-run)");
-        return;
-    }
+    REQUIRE_MESSAGE(test::have_display(),
+                    "no DISPLAY: GL screen tests cannot run (./run.sh test runs them under xvfb-run)");
     test::ScratchDir dir;
     // Robot 42 of the main level stands 7 ahead of this spot; the shot hits its chest.
     auto run = [&](const std::string& name, const std::string& args, int frames) {

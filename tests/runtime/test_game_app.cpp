@@ -58,10 +58,8 @@ Shot screenshot(const test::ScratchDir& dir, const std::string& name, const std:
 } // namespace
 
 TEST_CASE("game app: the menus draw a light panel with accent buttons over a darkened level") {
-    if (!have_display()) {
-        MESSAGE("no DISPLAY: GL screen tests skipped (./run.sh test runs them under xvfb-run)");
-        return;
-    }
+    REQUIRE_MESSAGE(have_display(),
+                    "no DISPLAY: GL screen tests cannot run (./run.sh test runs them under xvfb-run)");
     test::ScratchDir dir;
     for (const char* screen : {"menu", "howto", "credits", "options", "pause"}) {
         CAPTURE(screen);
@@ -80,10 +78,7 @@ TEST_CASE("game app: the menus draw a light panel with accent buttons over a dar
 }
 
 TEST_CASE("game app: the loading screen shows a part-filled bar") {
-    if (!have_display()) {
-        MESSAGE("no DISPLAY: skipped");
-        return;
-    }
+    REQUIRE_MESSAGE(have_display(), "no DISPLAY: cannot run");
     test::ScratchDir dir;
     Shot s = screenshot(dir, "loading", "--screen loading");
     INFO(s.output);
@@ -112,10 +107,7 @@ TEST_CASE("game app: the loading screen shows a part-filled bar") {
 }
 
 TEST_CASE("game app: the game screen shows the HUD bars in their colours and the world behind") {
-    if (!have_display()) {
-        MESSAGE("no DISPLAY: skipped");
-        return;
-    }
+    REQUIRE_MESSAGE(have_display(), "no DISPLAY: cannot run");
     test::ScratchDir dir;
     Shot s = screenshot(dir, "play", "--screen play");
     INFO(s.output);
@@ -134,10 +126,7 @@ TEST_CASE("game app: the game screen shows the HUD bars in their colours and the
 }
 
 TEST_CASE("game app: death and win menus") {
-    if (!have_display()) {
-        MESSAGE("no DISPLAY: skipped");
-        return;
-    }
+    REQUIRE_MESSAGE(have_display(), "no DISPLAY: cannot run");
     test::ScratchDir dir;
     Shot death = screenshot(dir, "death", "--screen death");
     INFO(death.output);
@@ -154,10 +143,7 @@ TEST_CASE("game app: death and win menus") {
 }
 
 TEST_CASE("game app: the Dojo robot moves when key 2 plays the shoot pose") {
-    if (!have_display()) {
-        MESSAGE("no DISPLAY: skipped");
-        return;
-    }
+    REQUIRE_MESSAGE(have_display(), "no DISPLAY: cannot run");
     test::ScratchDir dir;
     Shot rest = screenshot(dir, "dojo_rest", "--screen dojo --dojo-time 1");
     Shot posed = screenshot(dir, "dojo_key2", "--screen dojo --dojo-key 2 --dojo-time 1");

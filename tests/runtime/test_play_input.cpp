@@ -55,10 +55,8 @@ constexpr double kDegreesPerPixel = 0.0022 * 180.0 / 3.14159265358979;
 } // namespace
 
 TEST_CASE("play by script: menu click, walk, pickup, light, door, aim, shoot, pause/resume, win") {
-    if (!test::have_display()) {
-        MESSAGE("no DISPLAY: play tests skipped (./run.sh test runs them under xvfb-run)");
-        return;
-    }
+    REQUIRE_MESSAGE(test::have_display(),
+                    "no DISPLAY: play tests cannot run (./run.sh test runs them under xvfb-run)");
     test::ScratchDir dir;
     // The start faces 100 px of mouse look to the left of the corridor; the script's look turns it straight.
     const double start_yaw = 100.0 * kDegreesPerPixel;
@@ -155,7 +153,8 @@ TEST_CASE("play by script: menu click, walk, pickup, light, door, aim, shoot, pa
 }
 
 TEST_CASE("play by script on levels/main.json: Play, walk to the first door, E opens it, Esc, Resume") {
-    if (!test::have_display()) return;
+    REQUIRE_MESSAGE(test::have_display(),
+                    "no DISPLAY: run the window tests under xvfb-run (./run.sh test does)");
     test::ScratchDir dir;
     // --warp without --screen puts the player in room 1, 8 units before door 1, once the level has loaded.
     write(dir / "main.txt", R"(20 click Play
@@ -187,7 +186,8 @@ TEST_CASE("play by script on levels/main.json: Play, walk to the first door, E o
 }
 
 TEST_CASE("play by script: a click on a button that is not there fails with the line and the screen") {
-    if (!test::have_display()) return;
+    REQUIRE_MESSAGE(test::have_display(),
+                    "no DISPLAY: run the window tests under xvfb-run (./run.sh test does)");
     test::ScratchDir dir;
     write(dir / "level.json", test::corridor_level_json());
     write(dir / "bad.txt", "2 click Play\n");
@@ -209,14 +209,9 @@ TEST_CASE("play by script: a click on a button that is not there fails with the 
 }
 
 TEST_CASE("play with real X input (xdotool): the same play-through, waiting on the status file") {
-    if (!test::have_display()) {
-        MESSAGE("no DISPLAY: xdotool play test skipped");
-        return;
-    }
-    if (!test::have_xdotool()) {
-        MESSAGE("xdotool not installed: real-input play test skipped (run.sh installs it)");
-        return;
-    }
+    REQUIRE_MESSAGE(test::have_display(), "no DISPLAY: xdotool play test cannot run");
+    REQUIRE_MESSAGE(test::have_xdotool(),
+                    "xdotool not installed: real-input play test cannot run (run.sh installs it)");
     test::ScratchDir dir;
     write(dir / "level.json", test::corridor_level_json());
     const auto status_file = dir / "status.txt";
@@ -356,10 +351,7 @@ TEST_CASE("play with real X input (xdotool): the same play-through, waiting on t
 }
 
 TEST_CASE("play with real X input (xdotool): shot dead by a robot, the fall, the death menu, Retry") {
-    if (!test::have_display() || !test::have_xdotool()) {
-        MESSAGE("no DISPLAY or no xdotool: skipped");
-        return;
-    }
+    REQUIRE_MESSAGE((test::have_display() && test::have_xdotool()), "no DISPLAY or no xdotool: cannot run");
     test::ScratchDir dir;
     // One robot 10 units ahead, facing the player, that always hits and kills with one shot.
     write(dir / "duel.json", R"({

@@ -25,7 +25,8 @@ std::string scripted_env(const test::ScratchDir& dir) {
 } // namespace
 
 TEST_CASE("options through the menu: Fast quality clicked, saved, and handed to the renderer") {
-    if (!test::have_display()) return;
+    REQUIRE_MESSAGE(test::have_display(),
+                    "no DISPLAY: run the window tests under xvfb-run (./run.sh test does)");
     test::ScratchDir dir;
     write(dir / "level.json", test::corridor_level_json());
     write(dir / "options.txt", "20 click Options\n26 click Full\n30 click Fast\n34 click Back\n");

@@ -69,10 +69,7 @@ const char* kOpenFloor = R"({
 } // namespace
 
 TEST_CASE("death camera: the fall rolls the view onto the left side (ground on the left of the picture)") {
-    if (!test::have_display()) {
-        MESSAGE("no DISPLAY: view tests skipped");
-        return;
-    }
+    REQUIRE_MESSAGE(test::have_display(), "no DISPLAY: view tests cannot run");
     test::ScratchDir dir;
     write(dir / "open.json", kOpenFloor);
     const auto status = dir / "status.txt";
@@ -104,10 +101,7 @@ TEST_CASE("death camera: the fall rolls the view onto the left side (ground on t
 }
 
 TEST_CASE("robot facing: the game view and the render-only view draw a level's robot the same way") {
-    if (!test::have_display()) {
-        MESSAGE("no DISPLAY: view tests skipped");
-        return;
-    }
+    REQUIRE_MESSAGE(test::have_display(), "no DISPLAY: view tests cannot run");
     test::ScratchDir dir;
     // Both views at 60° field of view (the render-only view's), eye at (0, 3, 7), looking 12° down at a
     // robot that faces the camera (yaw 180 faces +z). It does not notice the player (eye radii 0).

@@ -19,10 +19,8 @@ using ks::test::load_png;
 } // namespace
 
 TEST_CASE("killswitch --screenshot renders a non-blank frame of the requested size") {
-    if (!have_display()) {
-        MESSAGE("no DISPLAY: GL smoke test skipped (./run.sh test runs it under xvfb-run)");
-        return;
-    }
+    REQUIRE_MESSAGE(have_display(),
+                    "no DISPLAY: GL smoke test cannot run (./run.sh test runs it under xvfb-run)");
     test::ScratchDir dir;
     auto shot = dir / "shot.png";
     auto run = test::run_command((test::bin_dir() / "killswitch").string() +
@@ -36,10 +34,7 @@ TEST_CASE("killswitch --screenshot renders a non-blank frame of the requested si
 }
 
 TEST_CASE("killswitch-editor --screenshot renders a frame") {
-    if (!have_display()) {
-        MESSAGE("no DISPLAY: GL smoke test skipped");
-        return;
-    }
+    REQUIRE_MESSAGE(have_display(), "no DISPLAY: GL smoke test cannot run");
     test::ScratchDir dir;
     auto shot = dir / "editor.png";
     auto run = test::run_command((test::bin_dir() / "killswitch-editor").string() +
