@@ -51,6 +51,7 @@ enum class ScriptOp {
     Fix,
     Patrol,
     Recover,
+    CampaignAdd,
     ExpectCount,
     ExpectValid,
     ExpectIssue,
@@ -60,6 +61,7 @@ enum class ScriptOp {
     ExpectPatrol,
     ExpectDirty,
     ExpectClean,
+    ExpectCampaign,
     Dojo,  // a command on the clip file (ScriptStep::dojo): see DojoOp
     Logic, // a link, objective or naming command (ScriptStep::logic): see LogicOp
 };

@@ -60,9 +60,12 @@ class LineParser {
              "patrol ID add X,Y,Z [after INDEX] | patrol ID move INDEX X,Y,Z | patrol ID remove INDEX | "
              "patrol ID mode loop|ping_pong | patrol ID wait SECONDS"},
             {"recover", ScriptOp::Recover, &LineParser::recover, "recover accept|decline"},
+            {"campaign", ScriptOp::CampaignAdd, &LineParser::campaign_add,
+             "campaign add FILE [title TEXT...]"},
             {"expect", ScriptOp::ExpectValid, &LineParser::expect,
              "expect count TYPE N | valid | issue RULE [ID] | no_issue RULE | selected N | "
-             "field ID FIELD VALUE | patrol ID POINTS | dirty | clean; level logic: expect links | link | "
+             "field ID FIELD VALUE | patrol ID POINTS | dirty | clean | campaign FILE N; level logic: expect "
+             "links | link | "
              "objectives ...; clip files: expect clip | blend | events | event | key | curve | dojo ..."},
         };
         step_.line = line_no_;
@@ -79,7 +82,8 @@ class LineParser {
             0, "unknown command '" + std::string(word) + "'",
             "commands: new open save place select move nudge rotate scale set reset setting player_start "
             "level_name delete duplicate copy paste undo redo grid snap lock unlock hide show begin commit "
-            "cancel fix patrol recover expect; level logic: name link objective; clip files: dojo clip blend "
+            "cancel fix patrol recover campaign expect; level logic: name link objective; clip files: dojo "
+            "clip blend "
             "event key");
     }
 
@@ -206,6 +210,20 @@ class LineParser {
         if (tokens_[1].text != "accept" && tokens_[1].text != "decline")
             return fail(1, "expected accept or decline", "recover accept");
         step_.count = tokens_[1].text == "accept";
+        return step_;
+    }
+
+    // campaign add FILE [title TEXT...]: text is the campaign file, text2 the title (empty: the level's
+    // name).
+    Result<ScriptStep> campaign_add(ScriptOp op, const char* usage) {
+        step_.op = op;
+        if (tokens_.size() < 2 || tokens_[1].text != "add") return fail(1, "expected 'add'", usage);
+        if (tokens_.size() < 3) return fail(2, "expected the campaign file", usage);
+        if (tokens_.size() > 3 && tokens_[3].text != "title")
+            return fail(3, "unexpected '" + std::string(tokens_[3].text) + "'", usage);
+        if (tokens_.size() == 4) return fail(4, "expected the title after 'title'", usage);
+        step_.text = std::string(tokens_[2].text);
+        if (tokens_.size() > 4) step_.text2 = rest(4);
         return step_;
     }
 
@@ -422,6 +440,14 @@ class LineParser {
             step_.ids = {id};
             if (!to_int(tokens_[3].text, step_.count) || step_.count < 0)
                 return fail(3, "expected a count of points", usage);
+            return step_;
+        }
+        if (w == "campaign") {
+            step_.op = ScriptOp::ExpectCampaign;
+            if (auto r = need(4, 4, usage); !r) return r.error();
+            step_.text = std::string(tokens_[2].text);
+            if (!to_int(tokens_[3].text, step_.count) || step_.count < 0)
+                return fail(3, "expected a count of levels", usage);
             return step_;
         }
         if (w == "field") {

@@ -1,10 +1,12 @@
 // The script language's runner: each parsed step applied to an Editor, expectations checked.
+#include "model/campaign_add.h"
 #include "model/script.h"
 #include "model/script_dojo.h"
 #include "model/script_logic.h"
 #include "model/script_tokens.h"
 
 #include "core/log.h"
+#include "level/campaign.h"
 
 #include <optional>
 
@@ -45,6 +47,7 @@ class Runner {
         case ScriptOp::Save:
         case ScriptOp::SaveAs:
         case ScriptOp::Recover:
+        case ScriptOp::CampaignAdd:
             return run_file_step(s);
         case ScriptOp::Select:
         case ScriptOp::SelectAll:
@@ -93,6 +96,7 @@ class Runner {
         case ScriptOp::ExpectPatrol:
         case ScriptOp::ExpectDirty:
         case ScriptOp::ExpectClean:
+        case ScriptOp::ExpectCampaign:
             return run_expectation(s);
         case ScriptOp::Dojo:
             return run_dojo_step(s.dojo, dojo_, script_.base_dir, report_);
@@ -123,6 +127,13 @@ class Runner {
             if (s.count) return editor_.accept_recovery();
             editor_.decline_recovery();
             return ok();
+        case ScriptOp::CampaignAdd: {
+            auto added = add_to_campaign(editor_, resolve(s.text), s.text2);
+            if (!added) return added.error();
+            log::info(script_.file_name, ":", s.line, ": added ", added->file, " to ", s.text, " as level ",
+                      added->position, " (\"", added->title, "\")");
+            return ok();
+        }
         default:
             break;
         }
@@ -345,6 +356,13 @@ class Runner {
             return expect(editor_.has_unsaved_changes(), "the document is clean");
         case ScriptOp::ExpectClean:
             return expect(!editor_.has_unsaved_changes(), "the document has unsaved changes");
+        case ScriptOp::ExpectCampaign: {
+            auto campaign = level::load_campaign(resolve(s.text));
+            if (!campaign) return campaign.error();
+            const int n = static_cast<int>(campaign->levels.size());
+            return expect(n == s.count, s.text + " lists " + std::to_string(n) + " level(s), expected " +
+                                            std::to_string(s.count));
+        }
         default:
             break;
         }

@@ -220,6 +220,7 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
     log_panel(layout.bottom.x + layout.bottom.w * 0.32f, layout.bottom.y, layout.bottom.w * 0.68f,
               layout.bottom.h);
     modal_prompts();
+    campaign_prompt();
     dojo_->prompts(); // the clip file's questions, whichever tab is shown
     if (dojo_->take_quit_answer() == DojoPanel::QuitAnswer::Go) {
         dojo_quit_confirmed_ = true;

@@ -118,6 +118,8 @@ class EditorApp {
     void perform(PendingAction action);
     void save(bool save_as);
     void modal_prompts();
+    void open_campaign_prompt(); // campaign_prompt.cpp: File > Add to Campaign...
+    void campaign_prompt();
     void open_file(const std::filesystem::path& path);
     void report(const Result<void>& result, const char* what);
 
@@ -258,6 +260,9 @@ class EditorApp {
     bool path_for_save_ = false;
     bool ask_overwrite_ = false;
     char path_input_[512] = {};
+    bool ask_campaign_ = false;
+    char campaign_input_[512] = {};
+    char campaign_title_[256] = {};
     bool quit_ = false;
     bool close_requested_ = false;
     std::string last_title_;

@@ -30,6 +30,7 @@ void EditorApp::menu_bar() {
         }
         if (ImGui::MenuItem("Save", "Ctrl+S")) save(false);
         if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) save(true);
+        if (ImGui::MenuItem("Add to Campaign...")) open_campaign_prompt();
         ImGui::Separator();
         if (ImGui::MenuItem("Quit")) request(PendingAction::Quit);
         menu_spots_[1] = item_centre();

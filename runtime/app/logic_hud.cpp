@@ -7,6 +7,7 @@
 
 #include <cfloat>
 #include <cstdio>
+#include <utility>
 
 namespace ks::runtime {
 
@@ -14,11 +15,6 @@ namespace {
 
 ImU32 rgba(int r, int g, int b, float alpha) {
     return IM_COL32(r, g, b, static_cast<int>(std::clamp(alpha, 0.0f, 1.0f) * 255.0f));
-}
-
-// The HUD's own scale (shell/hud.cpp): the bars and this list grow and shrink together.
-float hud_scale(float height) {
-    return std::max(0.5f, height / 720.0f);
 }
 
 // A check mark inside the square at `at` of side `size`.
@@ -41,9 +37,10 @@ float text_width(ImFont* font, float size, const std::string& text) {
 }
 
 // Top right: a dark panel like the HUD's bars, a header with the count done, then one row per objective.
-void draw_objectives(ImDrawList* d, const game::Game& game, const shell::Fonts& fonts, float w, float s) {
+// Returns the panel's box (empty without objectives) for the message line to keep clear of.
+HudBox draw_objectives(ImDrawList* d, const game::Game& game, const shell::Fonts& fonts, float w, float s) {
     const auto objectives = game.logic().objectives();
-    if (objectives.empty()) return;
+    if (objectives.empty()) return {};
     const int count = static_cast<int>(objectives.size());
     const int current = game.logic().current_objective();
     const ObjectiveRows rows = objective_rows(count, current);
@@ -53,12 +50,9 @@ void draw_objectives(ImDrawList* d, const game::Game& game, const shell::Fonts& 
     for (int i = rows.first; i < rows.end; ++i)
         widest = std::max(widest, text_width(i == current ? fonts.hud : fonts.body, text_size,
                                              objectives[static_cast<std::size_t>(i)].text));
-    const float panel_w = std::clamp(widest + box + pad * 3.0f, 240.0f * s, w * 0.42f);
     const int more_rows = (rows.hidden_before > 0) + (rows.hidden_after > 0);
-    const ImVec2 p0(w - 14.0f * s - panel_w, 14.0f * s);
-    const ImVec2 p1(w - 14.0f * s, p0.y + header_h +
-                                       row_h * static_cast<float>(rows.end - rows.first + more_rows) +
-                                       pad * 0.6f);
+    const HudBox panel = objective_panel_box(w, s, widest, rows.end - rows.first + more_rows);
+    const ImVec2 p0(panel.x0, panel.y0), p1(panel.x1, panel.y1);
     d->AddRectFilled(p0, p1, IM_COL32(15, 18, 24, 170), 8.0f * s);
     d->AddRect(p0, p1, IM_COL32(230, 235, 240, 90), 8.0f * s, 0, 1.5f * s);
     d->PushClipRect(p0, p1, true);
@@ -114,24 +108,28 @@ void draw_objectives(ImDrawList* d, const game::Game& game, const shell::Fonts& 
     }
     if (rows.hidden_after > 0) more_line(rows.hidden_after, "more");
     d->PopClipRect();
+    return panel;
 }
 
-// Upper middle: the message in a dark pill with an accent edge, wrapped to 60 % of the window.
+// Upper middle, clear of the bars and the objective panel (message_layout): the message in a dark pill with
+// an accent edge.
 void draw_message(ImDrawList* d, const game::ShownMessage& message, const shell::Fonts& fonts, float w,
-                  float h, float s) {
+                  float h, float s, const HudBox& panel) {
     const float alpha = message_alpha(message);
     if (!(alpha > 0.0f) || message.text.empty()) return;
     const char* begin = message.text.data();
     const char* end = begin + message.text.size();
-    const float size = 24.0f * s, wrap = w * 0.6f;
-    const ImVec2 ts =
-        fonts.hud ? fonts.hud->CalcTextSizeA(size, FLT_MAX, wrap, begin, end) : ImVec2(wrap, size);
-    const ImVec2 at((w - ts.x) * 0.5f, h * 0.17f);
-    const ImVec2 p0(at.x - 24.0f * s, at.y - 11.0f * s), p1(at.x + ts.x + 24.0f * s, at.y + ts.y + 11.0f * s);
+    const float size = 24.0f * s;
+    const MessageLayout l = message_layout(w, h, s, panel, [&](float wrap) {
+        const ImVec2 ts =
+            fonts.hud ? fonts.hud->CalcTextSizeA(size, FLT_MAX, wrap, begin, end) : ImVec2(wrap, size);
+        return std::pair(ts.x, ts.y);
+    });
+    const ImVec2 at(l.text_x, l.text_y), p0(l.box.x0, l.box.y0), p1(l.box.x1, l.box.y1);
     d->AddRectFilled(p0, p1, rgba(10, 14, 22, 0.75f * alpha), 10.0f * s);
     d->AddRectFilled(p0, ImVec2(p0.x + 6.0f * s, p1.y), rgba(41, 171, 226, alpha), 10.0f * s,
                      ImDrawFlags_RoundCornersLeft);
-    text_with_shadow(d, fonts.hud, size, at, rgba(255, 255, 255, alpha), begin, end, wrap);
+    text_with_shadow(d, fonts.hud, size, at, rgba(255, 255, 255, alpha), begin, end, l.wrap);
 }
 
 // Above the crosshair: "OBJECTIVE COMPLETE" with a tick and the objective's text, on a band that fades at
@@ -171,8 +169,8 @@ void draw_flash(ImDrawList* d, const ObjectiveFlash& flash, const shell::Fonts& 
 void draw_logic_hud(ImDrawList* d, const game::Game& game, const ObjectiveFlash& flash,
                     const shell::Fonts& fonts, float width, float height) {
     const float s = hud_scale(height);
-    draw_objectives(d, game, fonts, width, s);
-    draw_message(d, game.logic().message(), fonts, width, height, s);
+    const HudBox panel = draw_objectives(d, game, fonts, width, s);
+    draw_message(d, game.logic().message(), fonts, width, height, s, panel);
     draw_flash(d, flash, fonts, width, height, s);
 }
 

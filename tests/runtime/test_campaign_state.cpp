@@ -8,6 +8,9 @@
 
 #include <doctest/doctest.h>
 
+#include <cmath>
+#include <utility>
+
 using namespace ks;
 using namespace ks::runtime;
 
@@ -136,4 +139,49 @@ TEST_CASE("message line: fades in over 0.2 s and out over the last 0.5 s") {
     CHECK(message_alpha(m) == 1.0f);
     m.time_left = 0.25f;
     CHECK(message_alpha(m) == doctest::Approx(0.5f));
+}
+
+TEST_CASE("message line: never covers the objective panel or the bars, at any window size and panel size") {
+    // Text measured as a fixed-width font of 24 px at 720 (13 px per character, lines as tall as the font, as
+    // ImGui sets them), wrapped at `wrap`.
+    auto measure_for = [](std::size_t chars, float s) {
+        return [chars, s](float wrap) {
+            const float advance = 13.0f * s, line = 24.0f * s;
+            const float per_line = std::max(1.0f, std::floor(wrap / advance));
+            const float lines = std::ceil(static_cast<float>(chars) / per_line);
+            return std::pair(std::min(static_cast<float>(chars), per_line) * advance, lines * line);
+        };
+    };
+    const std::pair<float, float> sizes[] = {{1280, 720},  {1920, 1080}, {800, 600},   {1024, 768},
+                                             {2560, 1440}, {640, 480},   {1280, 1024}, {3440, 1440}};
+    const std::size_t messages[] = {12, 40, 69, 140};
+    const float widest_texts[] = {0.0f, 200.0f, 430.0f, 2000.0f};
+    for (const auto& [w, h] : sizes)
+        for (const float widest : widest_texts)
+            for (int lines = 1; lines <= ObjectiveRows::kMaxRows + 2; ++lines)
+                for (const std::size_t chars : messages) {
+                    const float s = hud_scale(h);
+                    const HudBox panel = objective_panel_box(w, s, widest * s, lines);
+                    const MessageLayout l = message_layout(w, h, s, panel, measure_for(chars, s));
+                    INFO(w << "x" << h << ", panel " << widest << " wide with " << lines << " rows, " << chars
+                           << " characters");
+                    CHECK_FALSE(l.box.overlaps(panel));
+                    CHECK_FALSE(l.box.overlaps(status_bars_box(s)));
+                    CHECK(l.box.x0 >= 0.0f);
+                    CHECK(l.box.x1 <= w);
+                }
+    // Lockdown at 1280x720 (three objectives, a message of one line at 60 % of the width): the message stays
+    // upper middle, centred, below the panel.
+    const HudBox lockdown = objective_panel_box(1280, 1, 430, 3);
+    const MessageLayout l = message_layout(1280, 720, 1, lockdown, measure_for(58, 1));
+    CHECK(l.box.y0 >= lockdown.y1);
+    CHECK(l.box.y1 < 720 * 0.3f);
+    CHECK((l.box.x0 + l.box.x1) * 0.5f == doctest::Approx(640));
+    // Without objectives and with a short message it keeps its old place at 17 % of the height.
+    CHECK(message_layout(1280, 720, 1, HudBox{}, measure_for(12, 1)).text_y == doctest::Approx(720 * 0.17f));
+    // A panel of eight lines pushes a centred message into the banner's band: it moves up beside the panel.
+    const HudBox tall = objective_panel_box(1280, 1, 300, 8);
+    const MessageLayout beside = message_layout(1280, 720, 1, tall, measure_for(40, 1));
+    CHECK(beside.box.y0 < tall.y1);
+    CHECK(beside.box.x1 <= tall.x0);
 }
