@@ -76,7 +76,7 @@ int main(int argc, char** argv) {
                                "navmesh", "dojo-file", "dojo-view", "inspector"});
     for (const auto& name : editor::analyze_option_names()) known.push_back(name);
     if (auto unknown = cl->unknown(known); !unknown.empty()) {
-        log::error("unknown option --", unknown.front(), " (see killswitch-editor --help)");
+        log::error("unknown option ", unknown.front(), " (see killswitch-editor --help)");
         return 2;
     }
     if (auto script = cl->get("script")) return run_script_mode(*script);

@@ -140,17 +140,22 @@ PlaytestReport summarize_runs(std::vector<RunRecord> runs, const ReportSetup& se
 
 std::string PlaytestReport::summary() const {
     const int finished = static_cast<int>(runs.size());
-    char text[512];
-    std::snprintf(text, sizeof text,
-                  "%s: %d of %d runs%s (seeds 1..%d, %.0f s limit each)\n"
-                  "won %d (%.0f %%), died %d, timed out %d; time to win mean %.1f s, median %.1f s, "
-                  "min %.1f s, max %.1f s\n"
-                  "damage taken mean %.0f, median %.0f, max %.0f; %zu cells took damage, deaths in %zu cells",
-                  level.c_str(), finished, requested, cancelled ? " (cancelled)" : "", requested,
-                  seconds_limit, wins, 100.0 * win_rate, deaths, timeouts, time_to_win.mean,
-                  time_to_win.median, time_to_win.min, time_to_win.max, damage_taken.mean,
-                  damage_taken.median, damage_taken.max, damage_heat.cells.size(), death_heat.cells.size());
-    return text;
+    char head[256], wins_line[256], damage_line[256];
+    std::snprintf(head, sizeof head, "%s: %d of %d runs%s (seeds 1..%d, %.0f s limit each)", level.c_str(),
+                  finished, requested, cancelled ? " (cancelled)" : "", requested, seconds_limit);
+    if (time_to_win.count > 0)
+        std::snprintf(wins_line, sizeof wins_line,
+                      "won %d (%.0f %%), died %d, timed out %d; time to win mean %.1f s, median %.1f s, "
+                      "min %.1f s, max %.1f s",
+                      wins, 100.0 * win_rate, deaths, timeouts, time_to_win.mean, time_to_win.median,
+                      time_to_win.min, time_to_win.max);
+    else
+        std::snprintf(wins_line, sizeof wins_line, "won none, died %d, timed out %d", deaths, timeouts);
+    std::snprintf(damage_line, sizeof damage_line,
+                  "damage taken mean %.0f, median %.0f, max %.0f; hit in %zu heat-map cells, died in %zu",
+                  damage_taken.mean, damage_taken.median, damage_taken.max, damage_heat.cells.size(),
+                  death_heat.cells.size());
+    return std::string(head) + "\n" + wins_line + "\n" + damage_line;
 }
 
 std::string level_fingerprint(const level::Level& level) {
