@@ -225,6 +225,7 @@ class EditorApp {
     QuadView quad_;
     std::array<RenderTarget, kQuadPanes> pane_targets_;
     std::array<PaneRect, kQuadPanes> pane_rects_{};
+    PaneRect viewport_area_;                 // the single view's or the four panes' area (window pixels)
     std::optional<geometry::Ray> place_ray_; // the mouse's ray in the active view, while it is hovered
     Overlays overlays_;
     Gizmo gizmo_;

@@ -367,6 +367,7 @@ void EditorApp::viewport_panel(float x, float y, float w, float h) {
     // The same size the render pass gave the views (render_views).
     const Vec2 area(static_cast<float>(static_cast<int>(w)),
                     static_cast<float>(std::max(1, static_cast<int>(h - kViewportBar))));
+    viewport_area_ = {Vec2(origin.x, origin.y), area};
     if (quad_.on) {
         quad_viewport(Vec2(origin.x, origin.y), area);
     } else {

@@ -129,6 +129,8 @@ void EditorApp::toggle_quad() {
 void EditorApp::panes_status(nlohmann::json& s) const {
     using nlohmann::json;
     s["quad"] = quad_.on;
+    s["viewport_area"] = {viewport_area_.origin.x, viewport_area_.origin.y, viewport_area_.size.x,
+                          viewport_area_.size.y};
     s["active_pane"] = quad_.on ? quad_.active : -1;
     json panes = json::array();
     if (quad_.on)
