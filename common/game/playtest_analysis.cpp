@@ -2,7 +2,6 @@
 
 #include "game/autoplay.h"
 #include "game/game.h"
-#include "game/robot_rig.h"
 
 #include <algorithm>
 #include <cmath>
@@ -28,7 +27,7 @@ struct RunSlot {
 struct Shared {
     const level::Level& level;
     const AnalysisOptions& options;
-    std::shared_ptr<const anim::AnimationLibrary> animations;
+    std::shared_ptr<const nav::NavMesh> robot_navigation; // copied by every game (null: each builds one)
     std::stop_token stop;
     AnalysisProgress* progress = nullptr;
 };
@@ -44,7 +43,7 @@ bool play_run(const Shared& shared, const std::shared_ptr<nav::NavMesh>& mesh, s
               RunSlot& slot) {
     GameOptions game_options;
     game_options.seed = seed;
-    game_options.animations = shared.animations;
+    game_options.navigation = shared.robot_navigation;
     auto created = Game::create(shared.level, game_options);
     if (!created) {
         slot.error = created.error();
@@ -82,33 +81,49 @@ bool play_run(const Shared& shared, const std::shared_ptr<nav::NavMesh>& mesh, s
     run.damage_taken = game.player().damage_taken;
     run.robots_killed = game.robots_killed();
     run.shots = game.player().shots;
+    run.state_hash = game.state_hash();
     return true;
 }
 
-// A worker: takes the next run until none is left, the analysis is stopped or a run failed.
-void work(const Shared& shared, int worker, std::atomic<int>& next, std::vector<RunSlot>& slots,
-          std::atomic<bool>& failed) {
-    // The bot's mesh is read-only once built, but its queries keep state: one per thread, reused run after
-    // run (as the soak does).
-    auto mesh = build_autoplay_mesh(shared.level, AutoplaySettings{}.cylinder_keep_out);
+// A worker: takes the next run until none is left, the analysis is stopped or a run failed. `mesh` is the
+// bot's mesh, its own: queries keep state in the mesh, and it serves run after run (as the soak does).
+void work(const Shared& shared, int worker, const std::shared_ptr<nav::NavMesh>& mesh, std::atomic<int>& next,
+          std::vector<RunSlot>& slots, std::atomic<bool>& failed) {
     for (int i = next.fetch_add(1); i < static_cast<int>(slots.size()); i = next.fetch_add(1)) {
         if (failed.load() || shared.stop.stop_requested()) return;
         RunSlot& slot = slots[static_cast<std::size_t>(i)];
-        if (!mesh) {
-            slot.error =
-                Error("the bot cannot plan on this level: " + mesh.error().message, mesh.error().where,
-                      mesh.error().hint.empty() ? "give the level a floor the player can walk on"
-                                                : mesh.error().hint);
-            failed = true;
-            return;
-        }
-        if (!play_run(shared, *mesh, static_cast<std::uint64_t>(i) + 1, worker, slot)) return;
+        if (!play_run(shared, mesh, static_cast<std::uint64_t>(i) + 1, worker, slot)) return;
         if (slot.error) {
             failed = true;
             return;
         }
         if (shared.progress) shared.progress->finish_run(worker);
     }
+}
+
+// The bot's mesh, one per worker (copies of one build), and the robots' mesh every game copies (null when
+// the level has none: each game then gives its own answer, robots standing guard). The two builds are most
+// of an analysis' fixed cost, so they run side by side.
+Result<std::vector<std::shared_ptr<nav::NavMesh>>> build_meshes(const level::Level& level, int workers,
+                                                                std::shared_ptr<const nav::NavMesh>& robots) {
+    std::optional<Result<std::shared_ptr<nav::NavMesh>>> bot;
+    {
+        std::jthread builder(
+            [&] { bot.emplace(build_autoplay_mesh(level, AutoplaySettings{}.cylinder_keep_out)); });
+        if (auto built = build_robot_navigation(level)) robots = std::move(*built);
+    }
+    if (!*bot) {
+        const Error& e = bot->error();
+        return Error("the bot cannot plan on this level: " + e.message, e.where,
+                     e.hint.empty() ? "give the level a floor the player can walk on" : e.hint);
+    }
+    std::vector<std::shared_ptr<nav::NavMesh>> meshes{**bot};
+    while (static_cast<int>(meshes.size()) < workers) {
+        auto copy = meshes.front()->clone();
+        if (!copy) return copy.error();
+        meshes.push_back(std::move(*copy));
+    }
+    return meshes;
 }
 
 Error option_error(const std::string& what, const std::string& option, const std::string& hint) {
@@ -164,23 +179,25 @@ Result<void> check_analysis_options(const AnalysisOptions& o) {
 Result<PlaytestReport> analyze_level(const level::Level& level, const AnalysisOptions& options,
                                      std::stop_token stop, AnalysisProgress* progress) {
     if (auto checked = check_analysis_options(options); !checked) return checked.error();
-    auto animations = load_robot_animations();
-    if (!animations) return animations.error();
     const int threads = analysis_threads(options.threads, options.runs);
     if (progress) progress->reset(options.runs);
+    std::shared_ptr<const nav::NavMesh> robot_navigation;
+    auto meshes = build_meshes(level, threads, robot_navigation);
+    if (!meshes) return meshes.error();
 
     // A failed run stops the others; a stop from outside does too (stop_callback forwards it).
     std::stop_source abort;
     std::stop_callback forward(stop, [&abort] { abort.request_stop(); });
-    const Shared shared{level, options, *animations, abort.get_token(), progress};
+    const Shared shared{level, options, robot_navigation, abort.get_token(), progress};
     std::vector<RunSlot> slots(static_cast<std::size_t>(options.runs));
     std::atomic<int> next{0};
     std::atomic<bool> failed{false};
     {
         std::vector<std::jthread> workers;
         for (int t = 1; t < threads; ++t)
-            workers.emplace_back([&, t] { work(shared, t, next, slots, failed); });
-        work(shared, 0, next, slots, failed);
+            workers.emplace_back(
+                [&, t] { work(shared, t, (*meshes)[static_cast<std::size_t>(t)], next, slots, failed); });
+        work(shared, 0, meshes->front(), next, slots, failed);
     } // the workers join here
 
     // The first failed run by seed, whichever thread met it first: the same error every time.

@@ -36,7 +36,8 @@ struct RunRecord {
     double time = 0.0;         // simulated seconds when the run ended
     float damage_taken = 0.0f; // PlayerState::damage_taken at the end
     int robots_killed = 0, shots = 0;
-    std::optional<Vec3> death; // the feet where the player died
+    std::uint64_t state_hash = 0; // Game::state_hash at the end: the same run gives the same hash
+    std::optional<Vec3> death;    // the feet where the player died
     std::vector<DamageSample> damage;
     std::vector<Vec3> path; // the feet at the start, every path interval, and where the run ended
     bool operator==(const RunRecord&) const = default;

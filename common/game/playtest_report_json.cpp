@@ -9,6 +9,8 @@
 #include "jsonio/position_map.h"
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <optional>
 
 namespace ks::game {
@@ -23,6 +25,11 @@ Json number(float v) {
 }
 Json point(const Vec3& p) {
     return Json::array({number(p.x), number(p.y), number(p.z)});
+}
+std::string hex(std::uint64_t value) {
+    char text[24];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
+    return text;
 }
 Json spread_json(const Spread& s) {
     return {{"count", s.count}, {"mean", s.mean}, {"median", s.median}, {"min", s.min}, {"max", s.max}};
@@ -48,6 +55,7 @@ Json run_json(const RunRecord& run) {
     j["damage_taken"] = number(run.damage_taken);
     j["robots_killed"] = run.robots_killed;
     j["shots"] = run.shots;
+    j["state_hash"] = hex(run.state_hash);
     j["death"] = run.death ? point(*run.death) : Json(nullptr);
     j["damage"] = damage;
     j["path"] = path;
@@ -191,6 +199,11 @@ RunRecord read_run(Reader& in, const Json& j, const std::string& path) {
     run.damage_taken = static_cast<float>(in.real(j, path, "damage_taken"));
     run.robots_killed = in.whole(j, path, "robots_killed", 0, 1 << 30);
     run.shots = in.whole(j, path, "shots", 0, 1 << 30);
+    const std::string hash = in.text(j, path, "state_hash");
+    char* end = nullptr;
+    run.state_hash = std::strtoull(hash.c_str(), &end, 16);
+    if (!in.error() && (hash.size() != 16 || *end != '\0'))
+        in.fail(jsonio::member_path(path, "state_hash"), "\"state_hash\" must be 16 hex digits", "");
     if (const Json* death = in.member(j, path, "death"); death && !death->is_null())
         run.death = in.vec3(j, path, "death");
     const Json& damage = in.array(j, path, "damage");

@@ -175,6 +175,31 @@ TEST_CASE("a run of the analysis is the headless runner's run with the same seed
         CHECK(stats->sim_time_s == run.time);
         CHECK(stats->damage_taken == run.damage_taken);
         CHECK(stats->shots == run.shots);
+        CHECK(stats->state_hash == run.state_hash); // the very same simulation
+    }
+}
+
+TEST_CASE("on the main level (doors, stairs, a platform) a run is the headless runner's run too") {
+    // The analysis gives every game a copy of one robot navigation mesh; a copy must walk like a fresh
+    // build through every door the level opens.
+    auto lv = level::load_level_file(ks::test::source_dir() / "levels/main.json");
+    REQUIRE(lv);
+    AnalysisOptions o;
+    o.runs = 2;
+    o.threads = 2;
+    auto report = analyze_level(*lv, o);
+    REQUIRE(report);
+    for (const RunRecord& run : report->runs) {
+        HeadlessOptions h;
+        h.level = ks::test::source_dir() / "levels/main.json";
+        h.seed = run.seed;
+        h.autoplay = true;
+        auto stats = run_headless(h);
+        REQUIRE(stats);
+        CAPTURE(run.seed);
+        CHECK(stats->outcome == "win");
+        CHECK(stats->state_hash == run.state_hash);
+        CHECK(stats->sim_time_s == run.time);
     }
 }
 
