@@ -107,9 +107,12 @@ void AnalysisView::numbers() const {
                     r.time_to_win.median, r.time_to_win.min, r.time_to_win.max);
     else
         ImGui::Text("Time to win: no run won (limit %.0f s)", r.seconds_limit);
-    ImGui::Text("Damage taken: mean %.0f, median %.0f, max %.0f  |  hit in %zu cells, deaths in %zu",
-                r.damage_taken.mean, r.damage_taken.median, r.damage_taken.max, r.damage_heat.cells.size(),
-                r.death_heat.cells.size());
+    ImGui::Text("Damage taken: mean %.0f, median %.0f, max %.0f", r.damage_taken.mean, r.damage_taken.median,
+                r.damage_taken.max);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Hit in %zu cells of %g x %g units; died in %zu cells", r.damage_heat.cells.size(),
+                          static_cast<double>(r.damage_heat.cell_size),
+                          static_cast<double>(r.damage_heat.cell_size), r.death_heat.cells.size());
 }
 
 void AnalysisView::panel(const level::Level& level, const fs::path& level_file, UiSpots& spots) {
@@ -137,23 +140,35 @@ void AnalysisView::panel(const level::Level& level, const fs::path& level_file, 
         }
     }
     if (!report_) {
-        ImGui::TextDisabled("No report yet: Analyze plays the level with the bot and shows where it took");
-        ImGui::TextDisabled(
-            "damage, where it died and the paths it took (also: killswitch-editor --analyze).");
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped(
+            "No report yet: Analyze has the bot play the level and shows where it took damage, "
+            "where it died and the paths it took (from a terminal: killswitch-editor --analyze "
+            "LEVEL).");
+        ImGui::PopStyleColor();
         return;
     }
-    if (stale_)
-        ImGui::TextColored(ImVec4(1.0f, 0.78f, 0.25f, 1),
-                           "Stale: the level changed since this report - Analyze again to update it.");
+    if (stale_) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.78f, 0.25f, 1));
+        ImGui::TextWrapped("Stale: the level changed since this report. Analyze again to update it.");
+        ImGui::PopStyleColor();
+    }
     numbers();
     ImGui::Checkbox("Show on viewport", &overlay);
     spots.here("analysis_overlay");
-    ImGui::SameLine();
-    ImGui::Checkbox("Damage", &heat);
-    ImGui::SameLine();
-    ImGui::Checkbox("Deaths", &deaths);
-    ImGui::SameLine();
-    ImGui::Checkbox("Paths", &paths);
+    // The toggles' labels in the colours they draw with (playtest_overlay.cpp): the legend.
+    auto toggle = [](const char* label, bool* value, ImVec4 colour, const char* tip) {
+        ImGui::SameLine();
+        ImGui::PushStyleColor(ImGuiCol_Text, colour);
+        ImGui::Checkbox(label, value);
+        ImGui::PopStyleColor();
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
+    };
+    toggle("Damage", &heat, ImVec4(1.0f, 0.6f, 0.2f, 1),
+           "Cells on the floor where the bot was hit: orange for a little damage, red for the most");
+    toggle("Deaths", &deaths, ImVec4(1.0f, 0.3f, 0.3f, 1), "A red cross where the bot died");
+    toggle("Paths", &paths, ImVec4(0.4f, 0.8f, 1.0f, 1),
+           "The bot's path in each run: blue won, red died, grey ran out of time");
 }
 
 } // namespace ks::editor::ui

@@ -113,9 +113,12 @@ Result<void> EditorApp::init() {
     if (options_.quad_view) toggle_quad();
     analysis_.runs = options_.analysis_runs;
     analysis_.update(editor_.level(), editor_.revision(), false, editor_.file_path()); // the report beside it
-    if (options_.report && !analysis_.load(*options_.report))
-        return Error("--report " + options_.report->string() + ": cannot be read", {},
-                     "give a report written by killswitch-editor --analyze or the Analyze button");
+    if (options_.report) {
+        if (!analysis_.load(*options_.report))
+            return Error("--report " + options_.report->string() + ": cannot be read", {},
+                         "give a report written by killswitch-editor --analyze or the Analyze button");
+        log_line("play-test report " + options_.report->string());
+    }
     if (options_.run_script) {
         auto text = files::read_text(*options_.run_script);
         if (!text) return text.error();
@@ -207,8 +210,8 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
                          layout.right.h * (1.0f - split));
     }
     // Along the bottom: history, the play-test report, the log.
-    history_panel(layout.bottom.x, layout.bottom.y, layout.bottom.w * 0.22f, layout.bottom.h);
-    analysis_panel(layout.bottom.x + layout.bottom.w * 0.22f, layout.bottom.y, layout.bottom.w * 0.38f,
+    history_panel(layout.bottom.x, layout.bottom.y, layout.bottom.w * 0.2f, layout.bottom.h);
+    analysis_panel(layout.bottom.x + layout.bottom.w * 0.2f, layout.bottom.y, layout.bottom.w * 0.4f,
                    layout.bottom.h);
     log_panel(layout.bottom.x + layout.bottom.w * 0.6f, layout.bottom.y, layout.bottom.w * 0.4f,
               layout.bottom.h);

@@ -63,8 +63,17 @@ void draw_cells(ImDrawList* draw, const Projector& screen, const game::HeatGrid&
             draw->AddQuad(q[0], q[1], q[2], q[3], IM_COL32(255, 40, 40, static_cast<int>(230 * alpha)), 2.0f);
             continue;
         }
-        draw->AddQuadFilled(q[0], q[1], q[2], q[3], heat_colour(t, (0.4f + 0.4f * t) * alpha));
-        draw->AddQuad(q[0], q[1], q[2], q[3], heat_colour(t, 0.9f * alpha), 1.0f);
+        draw->AddQuadFilled(q[0], q[1], q[2], q[3], heat_colour(t, (0.45f + 0.4f * t) * alpha));
+        draw->AddQuad(q[0], q[1], q[2], q[3], heat_colour(t, 0.95f * alpha), 1.5f);
+        // The damage beside the cell, on a dark tab, so a small cell far away still reads.
+        char text[16];
+        std::snprintf(text, sizeof text, "%.0f", static_cast<double>(cell.value));
+        const ImVec2 extent = ImGui::CalcTextSize(text);
+        const ImVec2 at(std::max({q[0].x, q[1].x, q[2].x, q[3].x}) + 3.0f,
+                        std::min({q[0].y, q[1].y, q[2].y, q[3].y}) - extent.y * 0.5f);
+        draw->AddRectFilled(ImVec2(at.x - 2, at.y - 1), ImVec2(at.x + extent.x + 2, at.y + extent.y + 1),
+                            IM_COL32(15, 17, 22, static_cast<int>(170 * alpha)), 3.0f);
+        draw->AddText(at, heat_colour(t, alpha), text);
     }
 }
 

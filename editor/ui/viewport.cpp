@@ -375,17 +375,22 @@ void EditorApp::viewport_panel(float x, float y, float w, float h) {
         single_viewport(Vec2(origin.x, origin.y), hovered);
     }
     ImDrawList* draw = ImGui::GetWindowDrawList();
-    // Status overlay: view, camera speed, grid, what a drag does.
+    // Status overlay: view, camera speed, grid, what a drag does; in the 4-up view over the active pane.
+    const ImVec2 under = quad_.on ? ImVec2(viewport_origin_.x, viewport_origin_.y) : origin;
+    const Vec2 span = quad_.on ? viewport_size_ : area;
     char text[256];
-    std::snprintf(text, sizeof(text), "%s%s  |  fly speed %.1f u/s (wheel)  |  grid %.2f %s  |  %s%s%s",
-                  quad_.on ? "4-up: " : "", view_mode_name(view_.mode), view_.speed, editor_.doc().grid.step,
+    char speed[48] = "";
+    if (!quad_.on) std::snprintf(speed, sizeof(speed), "  |  fly speed %.1f u/s (wheel)", view_.speed);
+    std::snprintf(text, sizeof(text), "%s%s%s  |  grid %.2f %s  |  %s%s%s", quad_.on ? "4-up: " : "",
+                  view_mode_name(view_.mode), speed, editor_.doc().grid.step,
                   editor_.doc().grid.snap ? "snap" : "free", gizmo_mode_name(gizmo_.mode),
                   gizmo_.readout().empty() ? "" : "  ", gizmo_.readout().c_str());
-    draw->AddRectFilled(ImVec2(origin.x + 6, origin.y + area.y - 26),
-                        ImVec2(origin.x + area.x - 6, origin.y + area.y - 4), IM_COL32(15, 17, 22, 170),
-                        4.0f);
-    draw->AddText(ImVec2(origin.x + 12, origin.y + area.y - 23), IM_COL32(225, 230, 240, 255), text);
-    clip_preview_overlay(Vec2(origin.x, origin.y), area);
+    draw->PushClipRect(under, ImVec2(under.x + span.x, under.y + span.y), true);
+    draw->AddRectFilled(ImVec2(under.x + 6, under.y + span.y - 26),
+                        ImVec2(under.x + span.x - 6, under.y + span.y - 4), IM_COL32(15, 17, 22, 170), 4.0f);
+    draw->AddText(ImVec2(under.x + 12, under.y + span.y - 23), IM_COL32(225, 230, 240, 255), text);
+    draw->PopClipRect();
+    clip_preview_overlay(Vec2(under.x, under.y), span);
     pick_hint(draw, viewport_origin_);
     if (placing_) {
         const std::string hint =

@@ -4,11 +4,15 @@
 // the mouse, so every overlay, pick and gizmo drag works unchanged in every pane; between frames it holds
 // the active pane's camera, where the menus, keys and the status file find it.
 #include "ui/editor_app.h"
+#include "ui/layout.h"
 
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace ks::editor::ui {
 
@@ -120,7 +124,13 @@ void EditorApp::toggle_quad() {
     }
     Vec3 lo, hi;
     level_box(lo, hi);
-    quad_.enter(view_, lo, hi);
+    // The panes' size now (before the first frame too): from the window, as the layout computes it.
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(shell_.window(), &width, &height);
+    const Layout layout =
+        compute_layout(static_cast<float>(width), static_cast<float>(height), ImGui::GetFrameHeight());
+    const Vec2 area(std::floor(layout.centre.w), std::max(1.0f, std::floor(layout.centre.h - kViewportBar)));
+    quad_.enter(view_, lo, hi, quad_panes(Vec2(0.0f), area, kPaneGap)[0].size);
     view_ = quad_.cameras[static_cast<size_t>(quad_.active)];
     log_line("4-up view: top, front, side and perspective (Numpad 0 toggles)");
 }

@@ -25,21 +25,28 @@ void frame_box(ViewCamera& view, ViewMode mode, const Vec3& lo, const Vec3& hi) 
     view.set_view(mode, (lo + hi) * 0.5f, std::max({size.x, size.z, size.y * 1.5f}));
 }
 
-void QuadView::frame_all(const Vec3& lo, const Vec3& hi) {
-    for (int i = 0; i < kQuadPanes; ++i) {
-        ViewCamera& view = cameras[static_cast<std::size_t>(i)];
-        const Vec2 viewport = view.viewport();
-        frame_box(view, kQuadModes[static_cast<std::size_t>(i)], lo, hi);
-        view.set_viewport(viewport);
+void fit_box(ViewCamera& view, ViewMode mode, const Vec3& lo, const Vec3& hi, Vec2 viewport) {
+    view.set_viewport(viewport);
+    if (mode == ViewMode::Perspective) {
+        frame_box(view, mode, lo, hi);
+        return;
     }
-    framed_ = true;
+    const Vec3 size = glm::max(hi - lo, Vec3(0.0f));
+    const float width = mode == ViewMode::Side ? size.z : size.x;
+    const float height = mode == ViewMode::Top ? size.z : size.y;
+    const float aspect = view.viewport().x / view.viewport().y;
+    view.set_view(mode, (lo + hi) * 0.5f, std::max(height, width / aspect));
 }
 
-void QuadView::enter(const ViewCamera& single, const Vec3& lo, const Vec3& hi) {
-    if (!framed_) frame_all(lo, hi);
+void QuadView::enter(const ViewCamera& single, const Vec3& lo, const Vec3& hi, Vec2 pane_size) {
     on = true;
     const auto mode = std::find(kQuadModes.begin(), kQuadModes.end(), single.mode);
     active = static_cast<int>(mode - kQuadModes.begin());
+    if (!framed_)
+        for (int i = 0; i < kQuadPanes; ++i)
+            fit_box(cameras[static_cast<std::size_t>(i)], kQuadModes[static_cast<std::size_t>(i)], lo, hi,
+                    pane_size);
+    framed_ = true;
     ViewCamera& pane = cameras[static_cast<std::size_t>(active)];
     const Vec2 viewport = pane.viewport();
     pane = single;

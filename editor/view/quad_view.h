@@ -36,20 +36,21 @@ class QuadView {
     std::array<ViewCamera, kQuadPanes> cameras;
 
     // Turns the 4-up view on from the single view `single`: the pane of its mode takes its camera (and
-    // becomes active); the other panes keep where they were the last time, or frame the box lo..hi the
-    // first time.
-    void enter(const ViewCamera& single, const Vec3& lo, const Vec3& hi);
+    // becomes active); the other panes keep where they were the last time, or, the first time, frame the
+    // box lo..hi in panes of `pane_size` pixels.
+    void enter(const ViewCamera& single, const Vec3& lo, const Vec3& hi, Vec2 pane_size);
     // The single view to go back to: the active pane's camera.
     const ViewCamera& leave();
-    // Every pane framed on lo..hi in its own mode (View > Frame level in 4-up, and the first enter()).
-    void frame_all(const Vec3& lo, const Vec3& hi);
 
   private:
     bool framed_ = false;
 };
 
-// How an editor frames a box in `mode` (the single view's set_view and every pane's): centred, sized to
-// the larger of its width, depth and 1.5 times its height.
+// How an editor frames a box in `mode` (the single view's set_view): centred, sized to the larger of its
+// width, depth and 1.5 times its height.
 void frame_box(ViewCamera& view, ViewMode mode, const Vec3& lo, const Vec3& hi);
+// The box filling a picture of `viewport` pixels in `mode`: an axis view sized to the box's two sides it
+// shows (top: x and z, front: x and y, side: z and y) at the picture's aspect, perspective as frame_box.
+void fit_box(ViewCamera& view, ViewMode mode, const Vec3& lo, const Vec3& hi, Vec2 viewport);
 
 } // namespace ks::editor

@@ -58,7 +58,7 @@ TEST_CASE("entering the 4-up view frames the panes once, takes the single view i
     single.set_viewport(Vec2(960, 540));
     frame_box(single, ViewMode::Front, Vec3(-10), Vec3(10));
     single.zoom_at(3.0f, Vec2(100, 100)); // the designer's own zoom
-    quad.enter(single, Vec3(-40.0f), Vec3(40.0f));
+    quad.enter(single, Vec3(-40.0f), Vec3(40.0f), Vec2(479, 269));
     CHECK(quad.on);
     CHECK(quad.active == 1); // the front pane
     CHECK(quad.cameras[1].camera.position == single.camera.position);
@@ -76,7 +76,7 @@ TEST_CASE("entering the 4-up view frames the panes once, takes the single view i
     const ViewCamera back = quad.leave();
     CHECK_FALSE(quad.on);
     CHECK(back.mode == ViewMode::Side);
-    quad.enter(back, Vec3(-1000.0f), Vec3(1000.0f));
+    quad.enter(back, Vec3(-1000.0f), Vec3(1000.0f), Vec2(479, 269));
     CHECK(quad.active == 2);
     CHECK(quad.cameras[0].camera.position == panned);
 }
@@ -90,7 +90,7 @@ TEST_CASE("a click picks through each pane's own camera, before and after the vi
     ViewCamera single;
     single.set_viewport(Vec2(960, 540));
     frame_box(single, ViewMode::Perspective, Vec3(-30, 0, -30), Vec3(30, 10, 30));
-    quad.enter(single, Vec3(-30, 0, -30), Vec3(30, 10, 30));
+    quad.enter(single, Vec3(-30, 0, -30), Vec3(30, 10, 30), Vec2(479, 269));
     CHECK(quad.active == 3);
     for (const Vec2 size : {Vec2(960, 540), Vec2(1400, 380), Vec2(700, 640)}) {
         CAPTURE(size.x);
@@ -111,4 +111,31 @@ TEST_CASE("a click picks through each pane's own camera, before and after the vi
             }
         }
     }
+}
+
+TEST_CASE("fit_box fills an axis pane with the two sides of the box it shows, at the pane's aspect") {
+    const Vec3 lo(-100, 0, -30), hi(60, 16, 50); // 160 wide (x), 80 deep (z), 16 high
+    for (const Vec2 pane : {Vec2(479, 269), Vec2(300, 500)})
+        for (const ViewMode mode : {ViewMode::Top, ViewMode::Front, ViewMode::Side}) {
+            CAPTURE(pane.x);
+            CAPTURE(view_mode_name(mode));
+            ViewCamera view;
+            fit_box(view, mode, lo, hi, pane);
+            CHECK(view.viewport() == pane);
+            // Every corner of the box is in the picture, and the box fills it along one side (1/1.1).
+            Vec2 min_px(1e9f), max_px(-1e9f);
+            for (int corner = 0; corner < 8; ++corner) {
+                const Vec3 p((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y,
+                             (corner & 4) ? hi.z : lo.z);
+                Vec2 at;
+                REQUIRE(view.project(p, at));
+                min_px = glm::min(min_px, at), max_px = glm::max(max_px, at);
+            }
+            CHECK(min_px.x >= -0.5f);
+            CHECK(min_px.y >= -0.5f);
+            CHECK(max_px.x <= pane.x + 0.5f);
+            CHECK(max_px.y <= pane.y + 0.5f);
+            const Vec2 filled = (max_px - min_px) / pane;
+            CHECK(std::max(filled.x, filled.y) == doctest::Approx(1.0f / 1.1f).epsilon(0.02));
+        }
 }
