@@ -151,7 +151,9 @@ class EditorApp {
 
     // viewport_panes.cpp: the 4-up view (view/quad_view.h) and the render pass of the level's views
     void render_level_views(int width, int height);
-    void render_view(int width, int height); // view_ into the bound target
+    // view_ into the bound target; with `last_key`, only when the picture would differ from the one it
+    // keeps (false: skipped).
+    bool render_view(int width, int height, std::uint64_t* last_key = nullptr);
     void quad_viewport(Vec2 origin, Vec2 size);
     void toggle_quad();
     void sync_active_pane(); // view_ is the active pane's camera between frames: write it back
@@ -225,6 +227,9 @@ class EditorApp {
     QuadView quad_;
     std::array<RenderTarget, kQuadPanes> pane_targets_;
     std::array<PaneRect, kQuadPanes> pane_rects_{};
+    std::array<std::uint64_t, kQuadPanes> pane_keys_{};         // what each pane's picture shows
+    std::array<unsigned long long, kQuadPanes> pane_renders_{}; // how often each was drawn (status file)
+    std::uint64_t single_key_ = 0;                              // what the single view's picture shows
     PaneRect viewport_area_;                 // the single view's or the four panes' area (window pixels)
     std::optional<geometry::Ray> place_ray_; // the mouse's ray in the active view, while it is hovered
     Overlays overlays_;

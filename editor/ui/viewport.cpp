@@ -390,7 +390,7 @@ void EditorApp::viewport_panel(float x, float y, float w, float h) {
                         ImVec2(under.x + span.x - 6, under.y + span.y - 4), IM_COL32(15, 17, 22, 170), 4.0f);
     draw->AddText(ImVec2(under.x + 12, under.y + span.y - 23), IM_COL32(225, 230, 240, 255), text);
     draw->PopClipRect();
-    clip_preview_overlay(Vec2(under.x, under.y), span);
+    clip_preview_overlay(Vec2(origin.x, origin.y), area); // the selection's, not a pane's: across the bottom
     pick_hint(draw, viewport_origin_);
     if (placing_) {
         const std::string hint =

@@ -13,18 +13,68 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <type_traits>
 
 namespace ks::editor::ui {
 
 namespace {
 constexpr float kPaneGap = 2.0f;
+
+// FNV-1a over the bytes of plain values (no padding in any of them).
+struct Fnv {
+    std::uint64_t h = 1469598103934665603ull;
+    template <class T>
+    void add(const T& value) {
+        static_assert(std::is_trivially_copyable_v<T>);
+        unsigned char bytes[sizeof(T)];
+        std::memcpy(bytes, &value, sizeof(T));
+        for (unsigned char b : bytes) h = (h ^ b) * 1099511628211ull;
+    }
+};
+
+// Everything a view's picture is made of: a view whose key has not changed keeps the picture it has, so an
+// idle editor draws nothing, and the 4-up view (the level four times) redraws only the panes that change:
+// one of four while it is navigated. `scene_builds` stands for the level scene's meshes, light map and
+// environment.
+std::uint64_t picture_key(const render::SceneFrame& frame, unsigned long long scene_builds) {
+    Fnv key;
+    key.add(scene_builds);
+    key.add(frame.camera);
+    key.add(frame.width);
+    key.add(frame.height);
+    for (const render::MeshInstance& m : *frame.instances) {
+        key.add(m.mesh);
+        key.add(m.material);
+        key.add(m.world);
+        key.add(m.emissive_scale);
+        key.add(m.tint);
+        key.add(m.lightmap);
+        key.add(static_cast<unsigned char>(m.casts_shadow));
+    }
+    for (const render::Light& l : *frame.lights) {
+        key.add(l.type);
+        key.add(l.position);
+        key.add(l.direction);
+        key.add(l.color);
+        key.add(l.intensity);
+        key.add(l.range);
+        key.add(l.cos_outer);
+        key.add(l.cos_inner);
+    }
+    for (const render::DebugVertex& v : frame.debug->vertices()) {
+        key.add(v.position);
+        key.add(v.color);
+    }
+    return key.h;
+}
 } // namespace
 
 void EditorApp::sync_active_pane() {
     if (quad_.on) quad_.cameras[static_cast<size_t>(quad_.active)] = view_;
 }
 
-void EditorApp::render_view(int width, int height) {
+bool EditorApp::render_view(int width, int height, std::uint64_t* last_key) {
     debug_.clear();
     draw_overlays();
     render::SceneFrame frame;
@@ -36,7 +86,13 @@ void EditorApp::render_view(int width, int height) {
     frame.debug = &debug_;
     frame.width = width;
     frame.height = height;
+    if (last_key) {
+        const std::uint64_t key = picture_key(frame, scene_stats_.builds);
+        if (key == *last_key) return false;
+        *last_key = key;
+    }
     renderer_->render(frame);
+    return true;
 }
 
 void EditorApp::render_level_views(int width, int height) {
@@ -45,7 +101,7 @@ void EditorApp::render_level_views(int width, int height) {
         viewport_target_.ensure(width, height);
         view_.set_viewport(Vec2(static_cast<float>(width), static_cast<float>(std::max(1, height))));
         viewport_target_.bind();
-        render_view(width, height);
+        render_view(width, height, &single_key_);
         return;
     }
     sync_active_pane();
@@ -57,7 +113,7 @@ void EditorApp::render_level_views(int width, int height) {
         view_ = quad_.cameras[i];
         view_.set_viewport(panes[i].size);
         pane_targets_[i].bind();
-        render_view(w, h);
+        if (render_view(w, h, &pane_keys_[i])) ++pane_renders_[i];
         quad_.cameras[i] = view_;
     }
     view_ = quad_.cameras[static_cast<size_t>(quad_.active)];
@@ -160,7 +216,8 @@ void EditorApp::panes_status(nlohmann::json& s) const {
             }
             panes.push_back({{"view", view_mode_name(view.mode)},
                              {"rect", {rect.origin.x, rect.origin.y, rect.size.x, rect.size.y}},
-                             {"screen", screen}});
+                             {"screen", screen},
+                             {"renders", pane_renders_[i]}});
         }
     s["panes"] = panes;
 }

@@ -1,7 +1,8 @@
 // The 4-up view and the Analyze action in the real killswitch-editor window, with real X input (xdotool,
 // under Xvfb): Numpad 0 splits the viewport into top, front, side and perspective panes; a click selects in
 // an orthographic pane, the gizmo drags in another, a box select works in a third, each pane becoming the
-// active one; the panes follow a window resize and still pick; Numpad 0 goes back to one view. The Analyze
+// active one; idle panes are not drawn again; the panes follow a window resize and still pick; Numpad 0
+// goes back to one view. The Analyze
 // button plays the level with the bot in the background, saves the report beside the level and marks it
 // stale after an edit. The editor reports its state in --status-file every frame; the test waits on that.
 #include "game/playtest_report.h"
@@ -93,6 +94,10 @@ TEST_CASE("editor 4-up view: select, drag the gizmo and box select in different 
     CHECK(st["panes"][3]["view"] == "Perspective");
     check_tiling(st);
     for (int pane = 0; pane < 4; ++pane) CHECK(st["panes"][pane]["screen"].contains(std::to_string(kRobot)));
+    // Idle panes keep their pictures: nothing is drawn again while nothing changes.
+    const json idle = s.frames(3)["panes"];
+    st = s.frames(3);
+    for (int pane = 0; pane < 4; ++pane) CHECK(st["panes"][pane]["renders"] == idle[pane]["renders"]);
 
     // A click on the robot in the top pane selects it, and makes the top pane the active one.
     s.click(in_pane(st, 0));
@@ -117,6 +122,8 @@ TEST_CASE("editor 4-up view: select, drag the gizmo and box select in different 
                 [&](const json& j) { return j["dragging"] == false && j["undo"] == undo0 + 1; });
     CHECK(st["primary"]["position"][0].get<float>() > x0 + 2.0f);
     CHECK(st["active_pane"] == 1);
+    for (int pane = 0; pane < 4; ++pane) // the robot moved in every pane's picture
+        CHECK(st["panes"][pane]["renders"].get<int>() > idle[pane]["renders"].get<int>());
     s.key("ctrl+z");
     st = s.wait("the drag undone", [&](const json& j) { return j["undo"] == undo0; });
     CHECK(st["primary"]["position"][0].get<float>() == x0);
