@@ -152,7 +152,7 @@ std::string PlaytestReport::summary() const {
     else
         std::snprintf(wins_line, sizeof wins_line, "won none, died %d, timed out %d", deaths, timeouts);
     std::snprintf(damage_line, sizeof damage_line,
-                  "damage taken mean %.0f, median %.0f, max %.0f; hit in %zu heat-map cells, died in %zu",
+                  "damage taken mean %.0f, median %.0f, max %.0f; heat map: %zu cells hit, %zu with deaths",
                   damage_taken.mean, damage_taken.median, damage_taken.max, damage_heat.cells.size(),
                   death_heat.cells.size());
     return std::string(head) + "\n" + wins_line + "\n" + damage_line;
