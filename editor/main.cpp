@@ -1,5 +1,6 @@
 // killswitch-editor: the level editor. `--script FILE` runs editor commands without a window; otherwise a
 // window with the viewport and panels (editor/ui/), optionally rendering N frames to a PNG (--screenshot).
+#include "analyze_cli.h"
 #include "core/cli.h"
 #include "core/log.h"
 #include "core/paths.h"
@@ -18,8 +19,10 @@ void print_help() {
         "usage: killswitch-editor [--level FILE] [--script FILE] [--run FILE] [--camera x,y,z,yaw,pitch] "
         "[--dojo] [--navmesh]\n"
         "                         [--dojo-file FILE] [--dojo-view clip=NAME,time=S,onion=1]\n"
-        "                         [--view top|front|side|perspective] [--inspector TAB] [--status-file "
+        "                         [--view top|front|side|perspective|4up] [--inspector TAB] [--status-file "
         "FILE]\n"
+        "                         [--report FILE]\n"
+        "       killswitch-editor --analyze LEVEL [--runs N] [--report FILE] [--seconds S] [--threads T]\n"
         "                         [--width W] [--height H] [--screenshot FILE --frames N] [--no-vsync]\n"
         "  --level FILE      open a level file (default: a new untitled level)\n"
         "  --script FILE     run editor commands (docs/editor.md) without a window, then exit:\n"
@@ -30,7 +33,13 @@ void print_help() {
         "  --dojo-file FILE  the dojo's clip file (default: assets/animations/robot.json)\n"
         "  --dojo-view V     where the dojo starts: clip=NAME (shown), time=S (paused there), onion=1\n"
         "  --navmesh         show the robots' navigation mesh (View > Navigation mesh)\n"
-        "  --view V          start in the top, front or side (orthographic) or perspective view\n"
+        "  --view V          start in the top, front or side (orthographic) or perspective view, or in the\n"
+        "                    4-up view (all four at once; Numpad 0 or View > 4-up toggles it)\n"
+        "  --report FILE     show this play-test report over the viewport (default: LEVEL.playtest.json\n"
+        "                    beside the level, when there is one)\n"
+        "  --analyze LEVEL   play LEVEL N times with the autoplay bot (seeds 1..N, --runs, default 20) on\n"
+        "                    every core, without a window; write the report (default LEVEL.playtest.json\n"
+        "                    beside it; --seconds: time limit per run, default 300), print a summary\n"
         "  --inspector TAB   start with the inspector's properties, links or objectives tab shown\n"
         "  --status-file F   rewrite F with a JSON snapshot of the session (selection, entity count, undo\n"
         "                    depth, dirty flag, play-test, where the palette and gizmo are) when it changes\n"
@@ -65,11 +74,18 @@ int main(int argc, char** argv) {
     std::vector<std::string> known = shell::shell_options();
     known.insert(known.end(), {"level", "script", "run", "camera", "help", "dojo", "view", "status-file",
                                "navmesh", "dojo-file", "dojo-view", "inspector"});
+    for (const auto& name : editor::analyze_option_names()) known.push_back(name);
     if (auto unknown = cl->unknown(known); !unknown.empty()) {
-        log::error("unknown option --", unknown.front(), " (see killswitch-editor --help)");
+        log::error("unknown option ", unknown.front(), " (see killswitch-editor --help)");
         return 2;
     }
     if (auto script = cl->get("script")) return run_script_mode(*script);
+    if (cl->has("analyze")) return editor::run_analyze_mode(*cl);
+    for (const char* analyze_only : {"seconds", "threads"})
+        if (cl->has(analyze_only)) {
+            log::error("--", analyze_only, " goes with --analyze LEVEL (see killswitch-editor --help)");
+            return 2;
+        }
 
     shell::ShellConfig defaults;
     defaults.title = "Killswitch Editor";
@@ -101,8 +117,10 @@ int main(int argc, char** argv) {
             options.view = editor::ViewMode::Side;
         else if (v == "perspective")
             options.view = editor::ViewMode::Perspective;
+        else if (v == "4up")
+            options.quad_view = true;
         else {
-            log::error("--view '", v, "': expected top, front, side or perspective");
+            log::error("--view '", v, "': expected top, front, side, perspective or 4up");
             return 2;
         }
     }
@@ -112,6 +130,13 @@ int main(int argc, char** argv) {
             log::error("--inspector '", *tab, "': expected properties, links or objectives");
             return 2;
         }
+    }
+    if (auto report = cl->get("report")) options.report = paths::resolve_user_path(*report);
+    if (auto runs = cl->get_int("runs", options.analysis_runs, 1, 200); !runs) {
+        log::error(runs.error().str());
+        return 2;
+    } else {
+        options.analysis_runs = *runs;
     }
     if (auto status = cl->get("status-file")) options.status_file = paths::resolve_user_path(*status);
     options.executable_dir = std::filesystem::absolute(argv[0]).parent_path();

@@ -197,7 +197,15 @@ struct GameOptions {
     GameSettings settings;
     // Robot clips and rig; loaded from assets/animations/robot.json when null.
     std::shared_ptr<const anim::AnimationLibrary> animations;
+    // The robots' navigation mesh of this level (build_robot_navigation): the game walks a copy of it (its
+    // doors open and close) instead of building its own, which is most of a game's build. For many games
+    // of one level (the play-test analysis); built when null.
+    std::shared_ptr<const nav::NavMesh> navigation;
 };
+
+// The robots' navigation mesh of `level`, as every Game builds it (nav::robot_nav_settings with the
+// character controller's climb and slope).
+Result<std::unique_ptr<nav::NavMesh>> build_robot_navigation(const level::Level& level);
 
 class Game {
   public:
@@ -349,6 +357,7 @@ class Game {
     LevelLogic logic_;
     Caption caption_;
     std::unique_ptr<nav::NavMesh> navigation_; // null when the level has none (robots stand guard)
+    std::shared_ptr<const nav::NavMesh> navigation_source_; // GameOptions::navigation, until the build
     std::string navigation_error_;
     geometry::Aabb level_bounds_ = geometry::Aabb::empty();
     Vec3 player_start_{0.0f};

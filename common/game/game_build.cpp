@@ -59,7 +59,8 @@ Vec3 PlayerState::view_direction() const {
 
 Game::Game(GameOptions options)
     : settings_(options.settings), animations_(std::move(options.animations)), rng_(options.seed),
-      world_(physics::WorldSettings{options.settings.step, 240}) {}
+      world_(physics::WorldSettings{options.settings.step, 240}),
+      navigation_source_(std::move(options.navigation)) {}
 
 Result<std::unique_ptr<Game>> Game::create(const level::Level& level, GameOptions options) {
     if (!(options.settings.step > 0.0 && options.settings.step <= 0.1))

@@ -23,10 +23,15 @@ float horizontal_distance(const Vec3& a, const Vec3& b) {
 
 } // namespace
 
-void Game::build_navigation(const level::Level& level) {
+Result<std::unique_ptr<nav::NavMesh>> build_robot_navigation(const level::Level& level) {
     const physics::CharacterSettings character;
-    auto mesh = nav::NavMesh::build(
-        level, nav::robot_nav_settings(character.step_height, character.max_slope_degrees));
+    return nav::NavMesh::build(level,
+                               nav::robot_nav_settings(character.step_height, character.max_slope_degrees));
+}
+
+void Game::build_navigation(const level::Level& level) {
+    auto mesh = navigation_source_ ? navigation_source_->clone() : build_robot_navigation(level);
+    navigation_source_.reset();
     if (!mesh) {
         // One clear message; robots without a mesh stand guard (turn, aim and shoot, never walk).
         navigation_error_ = mesh.error().str();

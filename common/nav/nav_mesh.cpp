@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstring>
 #include <type_traits>
 
 namespace ks::nav {
@@ -126,6 +127,40 @@ Result<std::unique_ptr<NavMesh>> NavMesh::build(const level::Level& level, const
     nav->straight_points_.assign(static_cast<size_t>(settings.max_path_polygons) * 3, 0.0f);
     nav->index_door_polygons(input->doors);
     return nav;
+}
+
+Result<std::unique_ptr<NavMesh>> NavMesh::clone() const {
+    std::unique_ptr<NavMesh> copy(new NavMesh());
+    copy->settings_ = settings_;
+    copy->stats_ = stats_;
+    copy->doors_ = doors_;
+    copy->islands_ = islands_;
+    copy->mesh_.reset(dtAllocNavMesh());
+    copy->query_.reset(dtAllocNavMeshQuery());
+    if (!copy->mesh_ || !copy->query_)
+        return Error("navigation mesh: out of memory allocating Detour objects");
+    const dtNavMesh& source = *mesh_;
+    if (dtStatusFailed(copy->mesh_->init(source.getParams())))
+        return Error("navigation mesh: Detour could not initialise the copy");
+    // In index order, which is the order the build added them (Detour hands out free tiles from index 0), so
+    // the links between tiles are made in the same order too.
+    for (int i = 0; i < source.getMaxTiles(); ++i) {
+        const dtMeshTile* tile = source.getTile(i);
+        if (!tile->header || !tile->data) continue;
+        auto* data = static_cast<unsigned char*>(dtAlloc(tile->dataSize, DT_ALLOC_PERM));
+        if (!data) return Error("navigation mesh: out of memory copying a tile");
+        std::memcpy(data, tile->data, static_cast<std::size_t>(tile->dataSize));
+        if (dtStatusFailed(copy->mesh_->addTile(data, tile->dataSize, DT_TILE_FREE_DATA,
+                                                source.getTileRef(tile), nullptr))) {
+            dtFree(data);
+            return Error("navigation mesh: Detour refused a copied tile");
+        }
+    }
+    if (dtStatusFailed(copy->query_->init(copy->mesh_.get(), settings_.max_search_nodes)))
+        return Error("navigation mesh: Detour could not set up its query (node pool)");
+    copy->corridor_.assign(corridor_.size(), 0);
+    copy->straight_points_.assign(straight_points_.size(), 0.0f);
+    return copy;
 }
 
 namespace {

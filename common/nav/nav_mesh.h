@@ -53,6 +53,10 @@ class NavMesh {
     // Builds the mesh for `level`. Errors: unusable settings, an entity with non-finite or absurd numbers
     // (named), a level with nothing walkable (named, with what to add), a Recast/Detour failure.
     static Result<std::unique_ptr<NavMesh>> build(const level::Level& level, const NavSettings& settings);
+    // A copy with its own Detour mesh and query, every tile restored at its reference (so polygon references,
+    // door state and every query answer are the original's): many games of one level build the mesh once
+    // (game::GameOptions::navigation). Reads the original only, so threads may copy one mesh at once.
+    Result<std::unique_ptr<NavMesh>> clone() const;
     ~NavMesh();
     NavMesh(const NavMesh&) = delete;
     NavMesh& operator=(const NavMesh&) = delete;

@@ -110,6 +110,15 @@ Result<void> EditorApp::init() {
         view_.camera.yaw = radians(v[3]);
         view_.camera.pitch = radians(v[4]);
     }
+    if (options_.quad_view) toggle_quad();
+    analysis_.runs = options_.analysis_runs;
+    analysis_.update(editor_.level(), editor_.revision(), false, editor_.file_path()); // the report beside it
+    if (options_.report) {
+        if (!analysis_.load(*options_.report))
+            return Error("--report " + options_.report->string() + ": cannot be read", {},
+                         "give a report written by killswitch-editor --analyze or the Analyze button");
+        log_line("play-test report " + options_.report->string());
+    }
     if (options_.run_script) {
         auto text = files::read_text(*options_.run_script);
         if (!text) return text.error();
@@ -158,22 +167,7 @@ void EditorApp::render_views(const shell::FrameInfo& info) {
         rebuild_scene_if_changed();
         pose_preview_robot(info.frame_dt);
         const int w = static_cast<int>(layout.centre.w), h = static_cast<int>(layout.centre.h - kViewportBar);
-        viewport_target_.ensure(w, h);
-        view_.set_viewport(Vec2(static_cast<float>(w), static_cast<float>(std::max(1, h))));
-        viewport_target_.bind();
-        scene_->emit(instances_, lights_);
-        debug_.clear();
-        draw_overlays();
-        render::SceneFrame frame;
-        frame.camera = view_.camera;
-        frame.camera.aspect = static_cast<float>(w) / static_cast<float>(std::max(1, h));
-        frame.environment = scene_->environment();
-        frame.instances = &instances_;
-        frame.lights = &lights_;
-        frame.debug = &debug_;
-        frame.width = w;
-        frame.height = h;
-        renderer_->render(frame);
+        render_level_views(w, std::max(1, h));
     }
     RenderTarget::clear_window(info.width, info.height);
 }
@@ -216,8 +210,11 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
         validation_panel(layout.right.x, layout.right.y + layout.right.h * split, layout.right.w,
                          layout.right.h * (1.0f - split));
     }
-    history_panel(layout.bottom.x, layout.bottom.y, layout.bottom.w * 0.32f, layout.bottom.h);
-    log_panel(layout.bottom.x + layout.bottom.w * 0.32f, layout.bottom.y, layout.bottom.w * 0.68f,
+    // Along the bottom: history, the play-test report, the log.
+    history_panel(layout.bottom.x, layout.bottom.y, layout.bottom.w * 0.2f, layout.bottom.h);
+    analysis_panel(layout.bottom.x + layout.bottom.w * 0.2f, layout.bottom.y, layout.bottom.w * 0.4f,
+                   layout.bottom.h);
+    log_panel(layout.bottom.x + layout.bottom.w * 0.6f, layout.bottom.y, layout.bottom.w * 0.4f,
               layout.bottom.h);
     modal_prompts();
     campaign_prompt();
@@ -302,6 +299,7 @@ void EditorApp::handle_shortcuts() {
     if (pressed(GLFW_KEY_KP_1)) set_view(ViewMode::Front);
     if (pressed(GLFW_KEY_KP_3)) set_view(ViewMode::Side);
     if (pressed(GLFW_KEY_KP_5)) set_view(ViewMode::Perspective);
+    if (pressed(GLFW_KEY_KP_0)) toggle_quad();
 }
 
 } // namespace ks::editor::ui

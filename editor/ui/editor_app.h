@@ -12,6 +12,7 @@
 #include "render/level_scene.h"
 #include "render/scene_renderer.h"
 #include "shell/app_shell.h"
+#include "ui/analysis_view.h"
 #include "ui/gizmo_draw.h"
 #include "ui/playtest.h"
 #include "ui/render_target.h"
@@ -22,6 +23,7 @@
 #include "view/link_problems.h"
 #include "view/patrol_drag.h"
 #include "view/picking.h"
+#include "view/quad_view.h"
 #include "view/sound_marker.h"
 #include "view/view_camera.h"
 
@@ -54,6 +56,9 @@ struct AppOptions {
     std::optional<std::string> camera;               // x,y,z,yaw,pitch (degrees) for the viewport
     std::filesystem::path executable_dir;            // where killswitch (the runtime) is looked for
     std::optional<ViewMode> view;                    // --view top|front|side|perspective
+    bool quad_view = false;                          // --view 4up: the 4-up view from the start
+    std::optional<std::filesystem::path> report;     // --report: a play-test report to show
+    int analysis_runs = 20;                          // --runs: how many runs Analyze plays
     std::optional<InspectorTab> inspector_tab;       // --inspector: the tab shown first
     // --status-file: a JSON snapshot of the session rewritten whenever it changes (status_report.cpp), so
     // tests that drive the window with real input wait on state rather than on time.
@@ -125,6 +130,8 @@ class EditorApp {
 
     // viewport.cpp
     void viewport_panel(float x, float y, float w, float h);
+    void single_viewport(Vec2 origin, bool& hovered);
+    void pane_overlays(ImDrawList* draw, Vec2 origin, bool active);
     void rebuild_scene_if_changed();
     void draw_overlays();
     void draw_navmesh();
@@ -141,7 +148,23 @@ class EditorApp {
     Vec3 selection_pivot() const;
     void focus_selection();
     void set_view(ViewMode mode);
+    void level_box(Vec3& lo, Vec3& hi) const; // every entity's bounds (±20 around 0 for an empty level)
     void play_test(bool from_camera);
+
+    // viewport_panes.cpp: the 4-up view (view/quad_view.h) and the render pass of the level's views
+    void render_level_views(int width, int height);
+    // view_ into the bound target; with `last_key`, only when the picture would differ from the one it
+    // keeps (false: skipped).
+    bool render_view(int width, int height, std::uint64_t* last_key = nullptr);
+    void quad_viewport(Vec2 origin, Vec2 size);
+    void toggle_quad();
+    void sync_active_pane(); // view_ is the active pane's camera between frames: write it back
+    void panes_status(nlohmann::json& status) const;
+
+    // analysis_panel.cpp: Play > Analyze and the Play-test report panel
+    void analysis_panel(float x, float y, float w, float h);
+    void start_analysis();
+    void analysis_status(nlohmann::json& status) const;
 
     // clip_preview_overlay.cpp: a dojo clip played on the selected level robot
     int preview_robot() const; // the primary selection when it is a robot, else 0
@@ -205,7 +228,16 @@ class EditorApp {
     std::vector<render::Light> lights_;
     render::DebugDraw debug_;
     RenderTarget viewport_target_;
-    ViewCamera view_;
+    ViewCamera view_; // the single view's camera; in the 4-up view, the pane's being drawn (between frames:
+                      // the active pane's)
+    QuadView quad_;
+    std::array<RenderTarget, kQuadPanes> pane_targets_;
+    std::array<PaneRect, kQuadPanes> pane_rects_{};
+    std::array<std::uint64_t, kQuadPanes> pane_keys_{};         // what each pane's picture shows
+    std::array<unsigned long long, kQuadPanes> pane_renders_{}; // how often each was drawn (status file)
+    std::uint64_t single_key_ = 0;                              // what the single view's picture shows
+    PaneRect viewport_area_;                 // the single view's or the four panes' area (window pixels)
+    std::optional<geometry::Ray> place_ray_; // the mouse's ray in the active view, while it is hovered
     Overlays overlays_;
     Gizmo gizmo_;
     PatrolDrag patrol_drag_;
@@ -268,6 +300,7 @@ class EditorApp {
     std::string last_title_;
 
     PlayTest play_;
+    AnalysisView analysis_{[this](const std::string& line, bool error) { log_line(line, error); }};
     std::filesystem::path play_file_;
     std::vector<std::string> play_command_; // the last play-test's runtime and arguments
     std::optional<int> play_exit_code_;     // the last play-test's exit code, once it ended

@@ -83,6 +83,7 @@ void EditorApp::menu_bar() {
         if (ImGui::MenuItem("Top", "Num 7")) set_view(ViewMode::Top);
         if (ImGui::MenuItem("Front", "Num 1")) set_view(ViewMode::Front);
         if (ImGui::MenuItem("Side", "Num 3")) set_view(ViewMode::Side);
+        if (ImGui::MenuItem("4-up view", "Num 0", quad_.on)) toggle_quad();
         if (ImGui::MenuItem("Focus Selection", "F")) focus_selection();
         ImGui::Separator();
         ImGui::MenuItem("Grid", nullptr, &overlays_.grid);
@@ -102,6 +103,11 @@ void EditorApp::menu_bar() {
         if (ImGui::MenuItem("Play from start", "F5", false, !play_.running())) play_test(false);
         if (ImGui::MenuItem("Play from camera", "Shift+F5", false, !play_.running())) play_test(true);
         if (ImGui::MenuItem("Stop", nullptr, false, play_.running())) play_.stop();
+        ImGui::Separator();
+        if (ImGui::MenuItem("Analyze (bot play-tests)", nullptr, false, !analysis_.running()))
+            start_analysis();
+        if (ImGui::MenuItem("Cancel analysis", nullptr, false, analysis_.running())) analysis_.cancel();
+        ImGui::MenuItem("Show play-test report", nullptr, &analysis_.overlay, analysis_.report() != nullptr);
         ImGui::EndMenu();
     }
     ImGui::Separator();

@@ -67,6 +67,13 @@ void EditorApp::viewport_toolbar() {
         if (active) ImGui::PopStyleColor();
     }
     ImGui::SameLine();
+    if (quad_.on) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.26f, 0.45f, 0.75f, 1));
+    if (ImGui::SmallButton("4-up")) toggle_quad();
+    if (quad_.on) ImGui::PopStyleColor();
+    spots_.here("view_4up");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Top, front, side and perspective at once, each with its own camera (Numpad 0)");
+    ImGui::SameLine();
     ImGui::TextDisabled("|");
     ImGui::SameLine();
     ImGui::Checkbox("Snap", &editor_.grid().snap);

@@ -175,6 +175,8 @@ void EditorApp::write_status() {
                 {"name", e->name},      {"position", {e->position.x, e->position.y, e->position.z}},
                 {"yaw", e->rotation.x}, {"links", links_json(e->links)}};
     logic_status(s);
+    panes_status(s);
+    analysis_status(s);
     json play;
     play["running"] = play_.running();
     play["command"] = play_command_;

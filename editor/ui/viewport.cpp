@@ -207,10 +207,8 @@ void EditorApp::draw_overlays() {
         debug_.line(base + fwd * 3.0f, base + fwd * 2.0f + side * 0.7f, green);
         debug_.line(base + fwd * 3.0f, base + fwd * 2.0f - side * 0.7f, green);
     }
-    if (placing_ && viewport_hovered_) { // where a click would place
-        const ImVec2 m = ImGui::GetIO().MousePos;
-        const geometry::Ray ray = view_.ray(Vec2(m.x, m.y) - viewport_origin_);
-        const Vec3 p = place_point(ray);
+    if (placing_ && place_ray_) { // where a click would place (in every pane of the 4-up view)
+        const Vec3 p = place_point(*place_ray_);
         level::Entity preview;
         preview.position = placement_for(*placing_, p);
         preview.props = level::default_props(*placing_);
@@ -300,20 +298,29 @@ void EditorApp::focus_selection() {
             lo = glm::min(lo, b.min), hi = glm::max(hi, b.max);
         }
     }
-    view_.focus(lo, hi);
+    if (!quad_.on) {
+        view_.focus(lo, hi);
+        return;
+    }
+    sync_active_pane(); // F in the 4-up view focuses every pane
+    for (ViewCamera& pane : quad_.cameras) pane.focus(lo, hi);
+    view_ = quad_.cameras[static_cast<size_t>(quad_.active)];
 }
 
-void EditorApp::set_view(ViewMode mode) {
-    Vec3 lo(-20.0f), hi(20.0f);
-    if (!editor_.level().entities.empty()) {
-        lo = Vec3(1e30f), hi = Vec3(-1e30f);
-        for (const auto& e : editor_.level().entities) {
-            const geometry::Aabb b = entity_obb(e).aabb();
-            lo = glm::min(lo, b.min), hi = glm::max(hi, b.max);
-        }
+void EditorApp::level_box(Vec3& lo, Vec3& hi) const {
+    lo = Vec3(-20.0f), hi = Vec3(20.0f);
+    if (editor_.level().entities.empty()) return;
+    lo = Vec3(1e30f), hi = Vec3(-1e30f);
+    for (const auto& e : editor_.level().entities) {
+        const geometry::Aabb b = entity_obb(e).aabb();
+        lo = glm::min(lo, b.min), hi = glm::max(hi, b.max);
     }
-    const Vec3 size = hi - lo;
-    view_.set_view(mode, (lo + hi) * 0.5f, std::max({size.x, size.z, size.y * 1.5f}));
+}
+
+void EditorApp::set_view(ViewMode mode) { // in the 4-up view: the active pane's
+    Vec3 lo, hi;
+    level_box(lo, hi);
+    frame_box(view_, mode, lo, hi);
 }
 
 void EditorApp::play_test(bool from_camera) {
@@ -356,46 +363,75 @@ void EditorApp::viewport_panel(float x, float y, float w, float h) {
     ImGui::SetCursorPos(ImVec2(6, 4));
     viewport_toolbar();
     ImGui::SetCursorPos(ImVec2(0, kViewportBar));
-    const Vec2 size(static_cast<float>(viewport_target_.width()),
-                    static_cast<float>(viewport_target_.height()));
     const ImVec2 origin = ImGui::GetCursorScreenPos();
-    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(viewport_target_.texture())),
-                 ImVec2(size.x, size.y), ImVec2(0, 1), ImVec2(1, 0));
-    viewport_origin_ = Vec2(origin.x, origin.y);
-    viewport_size_ = size;
-    view_.set_viewport(size);
-    const bool hovered = ImGui::IsItemHovered();
-    viewport_hovered_ = hovered;
-    viewport_input(viewport_origin_, hovered);
-
-    ImDrawList* draw = ImGui::GetWindowDrawList();
-    if (overlays_.grid && view_.orthographic()) draw_axis_grid(draw, viewport_origin_);
-    logic_overlay(draw, viewport_origin_);
-    if (!editor_.doc().selection.empty() && !placing_)
-        draw_gizmo(draw, gizmo_, view_, viewport_origin_, selection_pivot(), hovered_handle_);
-    if (box_selecting_) {
-        const ImVec2 m = ImGui::GetIO().MousePos;
-        draw->AddRectFilled(ImVec2(box_start_.x, box_start_.y), m, IM_COL32(90, 160, 255, 40));
-        draw->AddRect(ImVec2(box_start_.x, box_start_.y), m, IM_COL32(90, 160, 255, 200));
+    // The same size the render pass gave the views (render_views).
+    const Vec2 area(static_cast<float>(static_cast<int>(w)),
+                    static_cast<float>(std::max(1, static_cast<int>(h - kViewportBar))));
+    viewport_area_ = {Vec2(origin.x, origin.y), area};
+    if (quad_.on) {
+        quad_viewport(Vec2(origin.x, origin.y), area);
+    } else {
+        bool hovered = false;
+        single_viewport(Vec2(origin.x, origin.y), hovered);
     }
-    // Status overlay: view, camera speed, grid, what a drag does.
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    // Status overlay: view, camera speed, grid, what a drag does; in the 4-up view over the active pane.
+    const ImVec2 under = quad_.on ? ImVec2(viewport_origin_.x, viewport_origin_.y) : origin;
+    const Vec2 span = quad_.on ? viewport_size_ : area;
     char text[256];
-    std::snprintf(text, sizeof(text), "%s  |  fly speed %.1f u/s (wheel)  |  grid %.2f %s  |  %s%s%s",
-                  view_mode_name(view_.mode), view_.speed, editor_.doc().grid.step,
+    char speed[48] = "";
+    if (!quad_.on) std::snprintf(speed, sizeof(speed), "  |  fly speed %.1f u/s (wheel)", view_.speed);
+    std::snprintf(text, sizeof(text), "%s%s%s  |  grid %.2f %s  |  %s%s%s", quad_.on ? "4-up: " : "",
+                  view_mode_name(view_.mode), speed, editor_.doc().grid.step,
                   editor_.doc().grid.snap ? "snap" : "free", gizmo_mode_name(gizmo_.mode),
                   gizmo_.readout().empty() ? "" : "  ", gizmo_.readout().c_str());
-    draw->AddRectFilled(ImVec2(origin.x + 6, origin.y + size.y - 26),
-                        ImVec2(origin.x + size.x - 6, origin.y + size.y - 4), IM_COL32(15, 17, 22, 170),
-                        4.0f);
-    draw->AddText(ImVec2(origin.x + 12, origin.y + size.y - 23), IM_COL32(225, 230, 240, 255), text);
-    clip_preview_overlay(viewport_origin_, size);
+    draw->PushClipRect(under, ImVec2(under.x + span.x, under.y + span.y), true);
+    draw->AddRectFilled(ImVec2(under.x + 6, under.y + span.y - 26),
+                        ImVec2(under.x + span.x - 6, under.y + span.y - 4), IM_COL32(15, 17, 22, 170), 4.0f);
+    draw->AddText(ImVec2(under.x + 12, under.y + span.y - 23), IM_COL32(225, 230, 240, 255), text);
+    draw->PopClipRect();
+    clip_preview_overlay(Vec2(origin.x, origin.y), area); // the selection's, not a pane's: across the bottom
     pick_hint(draw, viewport_origin_);
     if (placing_) {
         const std::string hint =
             "Click to place " + std::string(level::type_name(*placing_)) + "  (Esc: stop)";
-        draw->AddText(ImVec2(origin.x + 12, origin.y + 8), IM_COL32(140, 255, 160, 255), hint.c_str());
+        draw->AddText(ImVec2(viewport_origin_.x + 12, viewport_origin_.y + 8), IM_COL32(140, 255, 160, 255),
+                      hint.c_str());
     }
-    // Axis indicator in the corner.
+    ImGui::End();
+}
+
+// The single view: the picture, the mouse and the overlays.
+void EditorApp::single_viewport(Vec2 origin, bool& hovered) {
+    const Vec2 size(static_cast<float>(viewport_target_.width()),
+                    static_cast<float>(viewport_target_.height()));
+    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(viewport_target_.texture())),
+                 ImVec2(size.x, size.y), ImVec2(0, 1), ImVec2(1, 0));
+    viewport_origin_ = origin;
+    viewport_size_ = size;
+    view_.set_viewport(size);
+    hovered = ImGui::IsItemHovered();
+    viewport_hovered_ = hovered;
+    viewport_input(viewport_origin_, hovered);
+    pane_overlays(ImGui::GetWindowDrawList(), viewport_origin_, true);
+}
+
+// Over one view (the single view, or a pane of the 4-up view with its camera in view_): the axis views'
+// grid, the level logic, the play-test report, the gizmo, the box being dragged (`active`: the view the
+// mouse works in) and the axis indicator in the corner.
+void EditorApp::pane_overlays(ImDrawList* draw, Vec2 origin, bool active) {
+    const Vec2 size = view_.viewport();
+    draw->PushClipRect(ImVec2(origin.x, origin.y), ImVec2(origin.x + size.x, origin.y + size.y), true);
+    if (overlays_.grid && view_.orthographic()) draw_axis_grid(draw, origin);
+    logic_overlay(draw, origin);
+    analysis_.draw(draw, view_, origin);
+    if (!editor_.doc().selection.empty() && !placing_)
+        draw_gizmo(draw, gizmo_, view_, origin, selection_pivot(), active ? hovered_handle_ : Handle::None);
+    if (active && box_selecting_) {
+        const ImVec2 m = ImGui::GetIO().MousePos;
+        draw->AddRectFilled(ImVec2(box_start_.x, box_start_.y), m, IM_COL32(90, 160, 255, 40));
+        draw->AddRect(ImVec2(box_start_.x, box_start_.y), m, IM_COL32(90, 160, 255, 200));
+    }
     const Vec2 corner(origin.x + size.x - 40, origin.y + 40);
     const Mat4 view_matrix = view_.camera.view();
     const char* names[3] = {"X", "Y", "Z"};
@@ -409,12 +445,14 @@ void EditorApp::viewport_panel(float x, float y, float w, float h) {
         draw->AddLine(ImVec2(corner.x, corner.y), tip, colours[i], 2.0f);
         draw->AddText(ImVec2(tip.x - 3, tip.y - 7), colours[i], names[i]);
     }
-    ImGui::End();
+    draw->PopClipRect();
 }
 
 void EditorApp::viewport_input(Vec2 origin, bool hovered) {
     const ImGuiIO& io = ImGui::GetIO();
     const Vec2 mouse(io.MousePos.x - origin.x, io.MousePos.y - origin.y);
+    place_ray_.reset();
+    if (hovered) place_ray_ = view_.ray(mouse);
     if (!shell_.screenshot_mode())
         flying_ = view_.update(
             read_view_input(shell_.window(),
