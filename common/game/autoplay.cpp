@@ -1,5 +1,6 @@
 #include "game/autoplay.h"
 
+#include "geometry/ground_plane.h"
 #include "physics/character.h"
 
 #include <algorithm>
@@ -17,18 +18,6 @@ float wrap_angle(float a) {
 
 float yaw_toward(const Vec3& from, const Vec3& to) {
     return std::atan2(-(to.x - from.x), -(to.z - from.z));
-}
-
-float flat_distance(const Vec3& a, const Vec3& b) {
-    return glm::length(Vec2(a.x - b.x, a.z - b.z));
-}
-
-// Distance (x, z) from p to the segment a..b.
-float flat_distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
-    const Vec2 ab(b.x - a.x, b.z - a.z), ap(p.x - a.x, p.z - a.z);
-    const float len2 = glm::dot(ab, ab);
-    const float t = len2 > 1e-8f ? std::clamp(glm::dot(ap, ab) / len2, 0.0f, 1.0f) : 0.0f;
-    return glm::length(ap - t * ab);
 }
 
 } // namespace
@@ -159,15 +148,15 @@ void Autoplay::follow_path(const Game& game) {
             path_.clear();
         waypoint_ = 1; // path_[0] is where the bot stands, snapped to the mesh
     }
-    while (waypoint_ + 1 < path_.size() && flat_distance(path_[waypoint_], feet) < kCornerReached)
+    while (waypoint_ + 1 < path_.size() && geometry::ground_distance(path_[waypoint_], feet) < kCornerReached)
         ++waypoint_;
 }
 
 bool Autoplay::path_passes_near(const Vec3& from, const Vec3& point, float radius, float length) const {
     Vec3 a = from;
     for (std::size_t k = waypoint_; k < path_.size() && length > 0.0f; ++k) {
-        if (flat_distance_to_segment(point, a, path_[k]) < radius) return true;
-        length -= flat_distance(a, path_[k]);
+        if (geometry::ground_distance_to_segment(point, a, path_[k]) < radius) return true;
+        length -= geometry::ground_distance(a, path_[k]);
         a = path_[k];
     }
     return false;
@@ -255,7 +244,7 @@ Input Autoplay::decide(const Game& game) {
     follow_path(game);
     if (open_door_on_path(game, in)) return in;
     // Waiting (for a delayed link, a door, a spawner's next robot): stand where the goal says.
-    if (goal_.kind == BotGoalKind::Wait && flat_distance(p.feet, goal_.point) < 1.0f) {
+    if (goal_.kind == BotGoalKind::Wait && geometry::ground_distance(p.feet, goal_.point) < 1.0f) {
         stuck_time_ = 0.0f;
         stuck_anchor_ = p.feet;
         return in;

@@ -1,5 +1,7 @@
 #include "game/autoplay_goals.h"
 
+#include "geometry/ground_plane.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -28,17 +30,6 @@ constexpr std::array kCompleters{LinkAction::Complete};
 constexpr std::array kSpawners{LinkAction::Spawn};
 constexpr std::array kEnablers{LinkAction::Enable};
 constexpr std::array kWinners{LinkAction::Win};
-
-float flat_distance(const Vec3& a, const Vec3& b) {
-    return glm::length(Vec2(a.x - b.x, a.z - b.z));
-}
-
-float flat_distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
-    const Vec2 ab(b.x - a.x, b.z - a.z), ap(p.x - a.x, p.z - a.z);
-    const float len2 = glm::dot(ab, ab);
-    const float t = len2 > 1e-8f ? std::clamp(glm::dot(ap, ab) / len2, 0.0f, 1.0f) : 0.0f;
-    return glm::length(ap - t * ab);
-}
 
 // What the search is working out: an objective by any means (`by_link` false), or a target a link must act
 // on (an objective's complete link among them).
@@ -204,7 +195,7 @@ void GoalPlanner::action_on(Search& s, LogicTarget target, std::uint32_t index,
         const auto pending = logic.pending();
         if (std::any_of(pending.begin(), pending.end(),
                         [&](const LevelLogic::Pending& p) { return p.link == k; })) {
-            offer(s, {BotGoalKind::Wait, -1, wait_at}, kWait + flat_distance(s.feet, wait_at));
+            offer(s, {BotGoalKind::Wait, -1, wait_at}, kWait + geometry::ground_distance(s.feet, wait_at));
             continue;
         }
         if (link.once && link.fired) continue;
@@ -290,7 +281,7 @@ void GoalPlanner::hunt(Search& s, std::uint32_t robot, int depth) const {
 void GoalPlanner::consider(Search& s, BotGoal goal, int depth) const {
     // A walk is never shorter than the straight line: a goal that far cannot win, so skip its path query
     // (with no door in the way; a blocked goal's openers are goals of their own).
-    if (!s.doors_block && flat_distance(s.feet, goal.point) >= s.best_cost) return;
+    if (!s.doors_block && geometry::ground_distance(s.feet, goal.point) >= s.best_cost) return;
     if (const auto length = s.mesh.path_length(s.feet, goal.point)) {
         offer(s, goal, *length);
         return;
@@ -299,7 +290,7 @@ void GoalPlanner::consider(Search& s, BotGoal goal, int depth) const {
         door_in_the_way(s, goal, depth);
         return;
     }
-    offer(s, goal, kUnreachable + flat_distance(s.feet, goal.point));
+    offer(s, goal, kUnreachable + geometry::ground_distance(s.feet, goal.point));
 }
 
 // The goal cannot be reached with the locked doors shut: the first of them on the path with every door
@@ -319,8 +310,8 @@ void GoalPlanner::door_in_the_way(Search& s, const BotGoal& goal, int depth) con
             if (!door_blocks(d)) continue;
             const Vec3& centre = d.frame.position;
             const float reach = 0.5f * d.props.width + kDoorwayMargin;
-            if (flat_distance_to_segment(centre, s.path[k - 1], s.path[k]) > reach) continue;
-            const float along = flat_distance(centre, s.path[k - 1]);
+            if (geometry::ground_distance_to_segment(centre, s.path[k - 1], s.path[k]) > reach) continue;
+            const float along = geometry::ground_distance(centre, s.path[k - 1]);
             if (along < nearest) {
                 nearest = along;
                 blocker = i;
@@ -329,12 +320,12 @@ void GoalPlanner::door_in_the_way(Search& s, const BotGoal& goal, int depth) con
         }
     }
     if (blocker == doors.size()) {
-        offer(s, goal, kUnreachable + flat_distance(s.feet, goal.point));
+        offer(s, goal, kUnreachable + geometry::ground_distance(s.feet, goal.point));
         return;
     }
     const Vec3 wait_at = door_wait_point(s, doors[blocker], before);
     action_on(s, LogicTarget::Door, static_cast<std::uint32_t>(blocker), kDoorOpeners, wait_at, depth + 1);
-    offer(s, {BotGoalKind::Wait, -1, wait_at}, kWaitHopeless + flat_distance(s.feet, wait_at));
+    offer(s, {BotGoalKind::Wait, -1, wait_at}, kWaitHopeless + geometry::ground_distance(s.feet, wait_at));
 }
 
 Vec3 GoalPlanner::door_wait_point(Search& s, const Door& door, const Vec3& from) const {

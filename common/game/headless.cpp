@@ -52,22 +52,29 @@ const std::vector<std::string>& headless_option_names() {
     return names;
 }
 
-Result<HeadlessOptions> parse_headless_options(const CommandLine& cl) {
-    HeadlessOptions o;
-    o.level = paths::resolve_user_path(cl.get_or("level", paths::level("main.json").string()));
-    auto seconds = cl.get_double("seconds", o.seconds);
-    if (!seconds) return seconds.error();
-    if (!(*seconds > 0.0 && *seconds <= 86400.0))
+Result<void> parse_run_limits(const CommandLine& cl, double& seconds, std::uint64_t& seed,
+                              std::string_view seconds_hint) {
+    auto parsed = cl.get_double("seconds", seconds);
+    if (!parsed) return parsed.error();
+    if (!(*parsed > 0.0 && *parsed <= 86400.0))
         return Error("--seconds must be in (0, 86400]", Location("command line", 0, 0, "--seconds"),
-                     "give the simulated time limit in seconds, e.g. --seconds 300");
-    o.seconds = *seconds;
+                     "give " + std::string(seconds_hint) + " in seconds, e.g. --seconds 300");
+    seconds = *parsed;
     if (auto s = cl.get("seed")) {
         char* end = nullptr;
-        o.seed = std::strtoull(s->c_str(), &end, 10);
+        seed = std::strtoull(s->c_str(), &end, 10);
         if (s->empty() || *end != '\0' || (*s)[0] == '-')
             return Error("--seed must be a non-negative integer", Location("command line", 0, 0, "--seed"),
                          "e.g. --seed 42");
     }
+    return {};
+}
+
+Result<HeadlessOptions> parse_headless_options(const CommandLine& cl) {
+    HeadlessOptions o;
+    o.level = paths::resolve_user_path(cl.get_or("level", paths::level("main.json").string()));
+    if (auto limits = parse_run_limits(cl, o.seconds, o.seed, "the simulated time limit"); !limits)
+        return limits.error();
     o.autoplay = cl.has("autoplay");
     if (auto r = cl.get("record")) o.record = *r;
     if (auto r = cl.get("replay")) o.replay = paths::resolve_user_path(*r);

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace ks::game {
@@ -48,6 +49,10 @@ struct HeadlessStats {
 const std::vector<std::string>& headless_flags();        // --headless, --autoplay
 const std::vector<std::string>& headless_option_names(); // every option above
 Result<HeadlessOptions> parse_headless_options(const CommandLine& command_line);
+// --seconds (in (0, 86400]; `seconds` keeps its default when absent) and --seed (a non-negative integer),
+// shared by every headless command line; `seconds_hint` says what the limit applies to in the error's fix.
+Result<void> parse_run_limits(const CommandLine& command_line, double& seconds, std::uint64_t& seed,
+                              std::string_view seconds_hint);
 Result<HeadlessStats> run_headless(const HeadlessOptions& options);
 
 } // namespace ks::game

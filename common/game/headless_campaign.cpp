@@ -53,19 +53,8 @@ Result<CampaignRunOptions> parse_campaign_run_options(const CommandLine& cl) {
         return Error("--campaign needs a campaign file", Location("command line", 0, 0, "--campaign"),
                      "e.g. --campaign levels/campaign.json");
     o.campaign = paths::resolve_user_path(campaign);
-    auto seconds = cl.get_double("seconds", o.seconds);
-    if (!seconds) return seconds.error();
-    if (!(*seconds > 0.0 && *seconds <= 86400.0))
-        return Error("--seconds must be in (0, 86400]", Location("command line", 0, 0, "--seconds"),
-                     "give each level's simulated time limit in seconds, e.g. --seconds 300");
-    o.seconds = *seconds;
-    if (auto s = cl.get("seed")) {
-        char* end = nullptr;
-        o.seed = std::strtoull(s->c_str(), &end, 10);
-        if (s->empty() || *end != '\0' || (*s)[0] == '-')
-            return Error("--seed must be a non-negative integer", Location("command line", 0, 0, "--seed"),
-                         "e.g. --seed 42");
-    }
+    if (auto limits = parse_run_limits(cl, o.seconds, o.seed, "each level's simulated time limit"); !limits)
+        return limits.error();
     return o;
 }
 

@@ -2,6 +2,7 @@
 // doors move, path following toward a goal, and sounds that travel along the mesh to robots' ears.
 #include "core/log.h"
 #include "game/game.h"
+#include "geometry/ground_plane.h"
 #include "physics/character.h"
 
 #include <algorithm>
@@ -16,10 +17,6 @@ constexpr float kCornerReached = 0.6f;
 constexpr float kGoalMoved = 1.5f;
 // Robots closer than this many robot radii (centre to centre) push each other aside while walking.
 constexpr float kSeparationRadii = 3.0f;
-
-float horizontal_distance(const Vec3& a, const Vec3& b) {
-    return glm::length(Vec2(a.x - b.x, a.z - b.z));
-}
 
 } // namespace
 
@@ -53,7 +50,7 @@ void Game::update_door_navigation(const Door& d, float previous_progress) {
 Vec3 Game::follow_path(Robot& r, const Vec3& goal, float speed, float dt) {
     if (!navigation_ || !(speed > 0.0f)) return Vec3(0.0f);
     r.replan_in -= dt;
-    if (r.replan_in <= 0.0f || horizontal_distance(goal, r.path_goal) > kGoalMoved || r.path.empty()) {
+    if (r.replan_in <= 0.0f || geometry::ground_distance(goal, r.path_goal) > kGoalMoved || r.path.empty()) {
         r.replan_in = settings_.robot_replan_interval;
         r.path_goal = goal;
         r.path_next = 0;
@@ -61,7 +58,8 @@ Vec3 Game::follow_path(Robot& r, const Vec3& goal, float speed, float dt) {
         if (status == nav::PathStatus::StartOffMesh || status == nav::PathStatus::EndOffMesh) r.path.clear();
         if (r.path.size() > kMaxPathCorners) r.path.resize(kMaxPathCorners);
     }
-    while (r.path_next < r.path.size() && horizontal_distance(r.path[r.path_next], r.feet) < kCornerReached)
+    while (r.path_next < r.path.size() &&
+           geometry::ground_distance(r.path[r.path_next], r.feet) < kCornerReached)
         ++r.path_next;
     if (r.path_next >= r.path.size()) return Vec3(0.0f);
     const Vec3 corner = r.path[r.path_next];
