@@ -14,35 +14,36 @@
 using namespace ks;
 using namespace ks::game;
 
+namespace {
+// The headless bot on a shipped or test level (relative to the source tree), 60 s simulated.
+HeadlessStats autoplay_run(const char* level, std::uint64_t seed) {
+    HeadlessOptions o;
+    o.level = test::source_dir() / level;
+    o.seconds = 60.0;
+    o.seed = seed;
+    o.autoplay = true;
+    auto stats = run_headless(o);
+    if (!stats) FAIL(stats.error().str());
+    MESSAGE("seed " << seed << ": " << stats->summary());
+    return *stats;
+}
+} // namespace
+
 TEST_CASE("autoplay wins levels/main.json for several seeds") {
     for (std::uint64_t seed : {1ull, 2ull, 3ull, 4ull, 5ull, 6ull}) {
-        HeadlessOptions o;
-        o.level = test::source_dir() / "levels/main.json";
-        o.seconds = 60.0;
-        o.seed = seed;
-        o.autoplay = true;
-        auto stats = run_headless(o);
-        if (!stats) FAIL(stats.error().str());
-        MESSAGE("seed " << seed << ": " << stats->summary());
-        CHECK(stats->outcome == "win");
-        CHECK(stats->shots > 0);
-        CHECK(stats->sim_time_s < 60.0);
-        CHECK(stats->robots_killed >= 4);
+        const auto stats = autoplay_run("levels/main.json", seed);
+        CHECK(stats.outcome == "win");
+        CHECK(stats.shots > 0);
+        CHECK(stats.sim_time_s < 60.0);
+        CHECK(stats.robots_killed >= 4);
     }
 }
 
 TEST_CASE("autoplay wins the logic example level (trigger, spawner, locked exit, panel) for seeds 1-6") {
     for (std::uint64_t seed = 1; seed <= 6; ++seed) {
-        HeadlessOptions o;
-        o.level = test::source_dir() / "tests/data/levels/logic_hall.json";
-        o.seconds = 60.0;
-        o.seed = seed;
-        o.autoplay = true;
-        auto stats = run_headless(o);
-        if (!stats) FAIL(stats.error().str());
-        MESSAGE("seed " << seed << ": " << stats->summary());
-        CHECK(stats->outcome == "win");
-        CHECK(stats->robots_killed == 3); // the spawner's three, before the exit opens
+        const auto stats = autoplay_run("tests/data/levels/logic_hall.json", seed);
+        CHECK(stats.outcome == "win");
+        CHECK(stats.robots_killed == 3); // the spawner's three, before the exit opens
     }
 }
 
