@@ -11,7 +11,7 @@
 #include <cstdio>
 
 namespace {
-const std::vector<std::string> kFlags = {"no-vsync", "help", "dojo", "navmesh"};
+const std::vector<std::string> kFlags = {"no-vsync", "help", "dojo", "navmesh", "textures"};
 
 void print_help() {
     std::printf(
@@ -20,6 +20,7 @@ void print_help() {
         "                         [--dojo-file FILE] [--dojo-view clip=NAME,time=S,onion=1]\n"
         "                         [--view top|front|side|perspective] [--inspector TAB] [--status-file "
         "FILE]\n"
+        "                         [--gizmo move|rotate|scale[,local]] [--textures]\n"
         "                         [--width W] [--height H] [--screenshot FILE --frames N] [--no-vsync]\n"
         "  --level FILE      open a level file (default: a new untitled level)\n"
         "  --script FILE     run editor commands (docs/editor.md) without a window, then exit:\n"
@@ -32,6 +33,8 @@ void print_help() {
         "  --navmesh         show the robots' navigation mesh (View > Navigation mesh)\n"
         "  --view V          start in the top, front or side (orthographic) or perspective view\n"
         "  --inspector TAB   start with the inspector's properties, links or objectives tab shown\n"
+        "  --gizmo MODE      start with the gizmo in move, rotate or scale mode (rotate,local: own axes)\n"
+        "  --textures        open the texture browser for the selection (select it with --run)\n"
         "  --status-file F   rewrite F with a JSON snapshot of the session (selection, entity count, undo\n"
         "                    depth, dirty flag, play-test, where the palette and gizmo are) when it changes\n"
         "  $KS_PLAYTEST_COMMAND  the runtime F5 starts (default: killswitch next to the editor)\n"
@@ -64,7 +67,7 @@ int main(int argc, char** argv) {
     }
     std::vector<std::string> known = shell::shell_options();
     known.insert(known.end(), {"level", "script", "run", "camera", "help", "dojo", "view", "status-file",
-                               "navmesh", "dojo-file", "dojo-view", "inspector"});
+                               "navmesh", "dojo-file", "dojo-view", "inspector", "gizmo", "textures"});
     if (auto unknown = cl->unknown(known); !unknown.empty()) {
         log::error("unknown option --", unknown.front(), " (see killswitch-editor --help)");
         return 2;
@@ -88,6 +91,8 @@ int main(int argc, char** argv) {
     options.start_in_dojo = cl->has("dojo");
     if (auto file = cl->get("dojo-file")) options.dojo_file = paths::resolve_user_path(*file);
     options.dojo_view = cl->get("dojo-view");
+    options.gizmo = cl->get("gizmo");
+    options.texture_browser = cl->has("textures");
     options.show_navmesh = cl->has("navmesh");
     if (auto run = cl->get("run")) options.run_script = paths::resolve_user_path(*run);
     options.camera = cl->get("camera");

@@ -34,4 +34,13 @@ inline Quat quat_from_ypr(float yaw, float pitch, float roll) {
            glm::angleAxis(roll, Vec3(0, 0, 1));
 }
 
+// The same rotation in double precision from degrees, for editing steps that compose rotations (the
+// editor's three-axis gizmo) and must not drift.
+glm::dquat dquat_from_ypr_degrees(const DVec3& yaw_pitch_roll);
+// The inverse of quat_from_ypr, in degrees: yaw and roll in (-180, 180], pitch in [-90, 90] (every rotation
+// has one such triple). At gimbal lock (pitch +-90, where yaw and roll turn about the same axis) roll is 0
+// and yaw carries the whole turn. Read through the rotation matrix with atan2 only (no asin), so angles near
+// the lock stay accurate.
+DVec3 ypr_degrees_from_quat(const glm::dquat& rotation);
+
 } // namespace ks

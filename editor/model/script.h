@@ -60,6 +60,7 @@ enum class ScriptOp {
     ExpectPatrol,
     ExpectDirty,
     ExpectClean,
+    ExpectPlayerStart,
     Dojo,  // a command on the clip file (ScriptStep::dojo): see DojoOp
     Logic, // a link, objective or naming command (ScriptStep::logic): see LogicOp
 };

@@ -195,18 +195,7 @@ void EditorApp::draw_overlays() {
         if (e.type() == level::EntityType::Sound) draw_sound_emitter(e, selected);
         draw_logic_marker(e, selected);
     }
-    if (overlays_.player_start) {
-        const auto& ps = doc.level.player_start;
-        const float yaw = radians(ps.yaw);
-        const Vec3 fwd(-std::sin(yaw), 0, -std::cos(yaw)), side(fwd.z, 0, -fwd.x);
-        const Vec3 base = ps.position + Vec3(0, 0.1f, 0);
-        const Vec4 green(0.3f, 1.0f, 0.4f, 1.0f);
-        debug_.capsule(ps.position + Vec3(0, 1, 0), ps.position + Vec3(0, 2, 0), 1.0f,
-                       Vec4(0.3f, 1.0f, 0.4f, 0.5f));
-        debug_.line(base, base + fwd * 3.0f, green);
-        debug_.line(base + fwd * 3.0f, base + fwd * 2.0f + side * 0.7f, green);
-        debug_.line(base + fwd * 3.0f, base + fwd * 2.0f - side * 0.7f, green);
-    }
+    draw_player_start();
     if (placing_ && viewport_hovered_) { // where a click would place
         const ImVec2 m = ImGui::GetIO().MousePos;
         const geometry::Ray ray = view_.ray(Vec2(m.x, m.y) - viewport_origin_);
@@ -279,16 +268,20 @@ Vec3 EditorApp::place_point(const geometry::Ray& ray) const {
 }
 
 Vec3 EditorApp::selection_pivot() const {
-    Vec3 sum(0.0f);
-    int n = 0;
-    for (const level::Entity* e : editor_.selected_entities()) sum += e->position, ++n;
-    return n ? sum / static_cast<float>(n) : Vec3(0.0f);
+    return gizmo_frame().pivot;
+}
+
+GizmoFrame EditorApp::gizmo_frame() const {
+    return editor::gizmo_frame(editor_.doc(), gizmo_.space);
 }
 
 void EditorApp::focus_selection() {
     const auto selected = editor_.selected_entities();
     Vec3 lo(1e30f), hi(-1e30f);
-    if (selected.empty()) {
+    if (editor_.doc().player_start_selected()) {
+        const geometry::Aabb b = player_obb(editor_.level().player_start).aabb();
+        lo = b.min, hi = b.max;
+    } else if (selected.empty()) {
         for (const auto& e : editor_.level().entities) {
             const geometry::Aabb b = entity_obb(e).aabb();
             lo = glm::min(lo, b.min), hi = glm::max(hi, b.max);
@@ -372,7 +365,7 @@ void EditorApp::viewport_panel(float x, float y, float w, float h) {
     if (overlays_.grid && view_.orthographic()) draw_axis_grid(draw, viewport_origin_);
     logic_overlay(draw, viewport_origin_);
     if (!editor_.doc().selection.empty() && !placing_)
-        draw_gizmo(draw, gizmo_, view_, viewport_origin_, selection_pivot(), hovered_handle_);
+        draw_gizmo(draw, gizmo_, view_, viewport_origin_, gizmo_frame(), hovered_handle_);
     if (box_selecting_) {
         const ImVec2 m = ImGui::GetIO().MousePos;
         draw->AddRectFilled(ImVec2(box_start_.x, box_start_.y), m, IM_COL32(90, 160, 255, 40));
@@ -382,7 +375,7 @@ void EditorApp::viewport_panel(float x, float y, float w, float h) {
     char text[256];
     std::snprintf(text, sizeof(text), "%s  |  fly speed %.1f u/s (wheel)  |  grid %.2f %s  |  %s%s%s",
                   view_mode_name(view_.mode), view_.speed, editor_.doc().grid.step,
-                  editor_.doc().grid.snap ? "snap" : "free", gizmo_mode_name(gizmo_.mode),
+                  editor_.doc().grid.snap ? "snap" : "free", gizmo_label(gizmo_).c_str(),
                   gizmo_.readout().empty() ? "" : "  ", gizmo_.readout().c_str());
     draw->AddRectFilled(ImVec2(origin.x + 6, origin.y + size.y - 26),
                         ImVec2(origin.x + size.x - 6, origin.y + size.y - 4), IM_COL32(15, 17, 22, 170),
@@ -442,14 +435,15 @@ void EditorApp::viewport_input(Vec2 origin, bool hovered) {
     }
     if (gizmo_.dragging()) {
         if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
-            if (auto message = gizmo_.drag(editor_, view_, mouse); !message.empty()) log_line(message, true);
+            if (auto message = gizmo_.drag(editor_, view_, mouse, io.KeyCtrl); !message.empty())
+                log_line(message, true);
         } else {
             gizmo_.end(editor_);
         }
         return;
     }
     hovered_handle_ =
-        hovered && has_selection && !placing_ ? gizmo_.hit(view_, selection_pivot(), mouse) : Handle::None;
+        hovered && has_selection && !placing_ ? gizmo_.hit(view_, gizmo_frame(), mouse) : Handle::None;
     if (io.KeyAlt) return; // Alt + left drag orbits
     if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
         if (placing_) {
@@ -464,7 +458,7 @@ void EditorApp::viewport_input(Vec2 origin, bool hovered) {
             return;
         }
         if (hovered_handle_ != Handle::None) {
-            gizmo_.begin(editor_, view_, selection_pivot(), hovered_handle_, mouse);
+            gizmo_.begin(editor_, view_, gizmo_frame(), hovered_handle_, mouse);
             return;
         }
         box_selecting_ = true;
@@ -476,8 +470,11 @@ void EditorApp::viewport_input(Vec2 origin, bool hovered) {
         const SelectMode mode = io.KeyCtrl    ? SelectMode::Toggle
                                 : io.KeyShift ? SelectMode::Add
                                               : SelectMode::Replace;
-        if (glm::length(end - box_start_) < 4.0f) { // a click: pick under the cursor
-            const int id = pick(view_.ray(mouse));
+        if (glm::length(end - box_start_) < 4.0f) { // a click: pick under the cursor (the player start too)
+            const int id = pick_selectable(
+                               editor_.doc(), view_.ray(mouse), [this](const level::Entity& e) { return shown(e); },
+                               overlays_.player_start)
+                               .id;
             if (id)
                 report(editor_.select({id}, mode), "select");
             else if (mode == SelectMode::Replace)
