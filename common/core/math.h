@@ -1,9 +1,9 @@
 #pragma once
 // The math vocabulary shared by every module: GLM types under short names, plus the few helpers that
 // several modules need. Angles are radians in code; level files store degrees.
+#include <cmath>
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
-#include <cmath>
 #include <numbers>
 
 namespace ks {
@@ -18,11 +18,19 @@ using DVec3 = glm::dvec3;
 
 inline constexpr float kPi = std::numbers::pi_v<float>;
 
-constexpr float radians(float degrees) { return degrees * (kPi / 180.0f); }
-constexpr float degrees(float radians) { return radians * (180.0f / kPi); }
+constexpr float radians(float degrees) {
+    return degrees * (kPi / 180.0f);
+}
+constexpr float degrees(float radians) {
+    return radians * (180.0f / kPi);
+}
 
-inline bool is_finite(float v) { return std::isfinite(v); }
-inline bool is_finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+inline bool is_finite(float v) {
+    return std::isfinite(v);
+}
+inline bool is_finite(const Vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 inline bool is_finite(const Quat& q) {
     return std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z) && std::isfinite(q.w);
 }

@@ -76,7 +76,8 @@ void check_texture_names(const Level& level, const std::vector<std::string>& kno
                                   "\" is not a surface material in assets/textures";
             if (!suggestion.empty()) message += "; did you mean \"" + suggestion + "\"?";
             sink.warning(path, std::move(message),
-                         "surface materials: " + jsonio::join(known) + " (the game shows magenta for others)");
+                         "surface materials: " + jsonio::join(known) +
+                             "; the game draws any other name magenta");
             sink.tag_last(Diagnostic::Kind::UnknownTexture, std::move(suggestion));
         }
     }

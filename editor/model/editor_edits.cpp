@@ -107,7 +107,8 @@ Result<void> Editor::move_selection(Vec3 delta, bool snap, std::string merge_key
     }
     return modify_selection(
         "Move", [&](Entity& e) { return set_entity_field(e, "position", e.position + delta); },
-        std::move(merge_key), [&](level::PlayerStart& start) -> Result<void> {
+        std::move(merge_key),
+        [&](level::PlayerStart& start) -> Result<void> {
             start.position += delta;
             return ok();
         });

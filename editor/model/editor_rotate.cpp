@@ -13,7 +13,8 @@ Result<void> Editor::rotate_selection_about(int axis, float degrees, RotationSpa
                                             std::string merge_key) {
     if (axis < 0 || axis > 2) return Error("rotate: the axis must be x, y or z");
     if (!std::isfinite(degrees)) return Error("rotate: the angle must be a finite number");
-    if (doc_.selection.empty()) return Error("Rotate: nothing is selected", Location{}, "select entities first");
+    if (doc_.selection.empty())
+        return Error("Rotate: nothing is selected", Location{}, "select entities first");
     if (axis != 1)
         if (std::string reason = yaw_only_reason(doc_); !reason.empty())
             return Error("rotate about " + std::string(1, "xyz"[axis]) + ": " + reason, Location{},
@@ -39,9 +40,10 @@ Result<void> Editor::rotate_selection_about(int axis, float degrees, RotationSpa
         [&](level::Entity& e) -> Result<void> {
             if (auto r = set_entity_field(e, "position", turned_position(e.position)); !r) return r;
             // Types that stand upright turn by their yaw whatever pitch a file gave them.
-            const Vec3 rotation = level::keeps_pitch_and_roll(e.type())
-                                      ? turned_ypr(e.rotation, axis, degrees, space)
-                                      : Vec3(wrap_degrees(e.rotation.x + degrees), e.rotation.y, e.rotation.z);
+            const Vec3 rotation =
+                level::keeps_pitch_and_roll(e.type())
+                    ? turned_ypr(e.rotation, axis, degrees, space)
+                    : Vec3(wrap_degrees(e.rotation.x + degrees), e.rotation.y, e.rotation.z);
             return set_entity_field(e, "rotation", rotation);
         },
         std::move(merge_key),

@@ -445,7 +445,8 @@ class LineParser {
         if (w == "issue" || w == "no_issue") return expect_issue(w == "issue", usage);
         if (w == "player_start") {
             step_.op = ScriptOp::ExpectPlayerStart;
-            if (tokens_.size() != 3 && tokens_.size() != 5) return fail(tokens_.size(), "wrong number of words", usage);
+            if (tokens_.size() != 3 && tokens_.size() != 5)
+                return fail(tokens_.size(), "wrong number of words", usage);
             if (auto r = vec(2, step_.vec); !r) return r.error();
             if (tokens_.size() == 5) {
                 if (tokens_[3].text != "yaw") return fail(3, "expected 'yaw'", usage);

@@ -172,7 +172,10 @@ Issue texture_issue(const Level& level, const level::Diagnostic& d) {
     issue.message = d.error.str();
     if (!d.suggestion.empty()) {
         const std::string& path = d.error.where.path;
-        issue.fix = {QuickFix::Kind::SetField, "Use " + d.suggestion, {}, path.substr(path.rfind('.') + 1),
+        issue.fix = {QuickFix::Kind::SetField,
+                     "Use " + d.suggestion,
+                     {},
+                     path.substr(path.rfind('.') + 1),
                      FieldValue(d.suggestion)};
     }
     return issue;

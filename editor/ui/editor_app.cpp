@@ -243,8 +243,8 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
         validation_panel(layout.right.x, layout.right.y + layout.right.h * split, layout.right.w,
                          layout.right.h * (1.0f - split));
         // Over the viewport's right edge, beside the inspector whose texture field opened it.
-        texture_browser_window(Vec2(layout.right.x - TextureBrowser::width() - 8.0f,
-                                    layout.centre.y + kViewportBar + 8.0f));
+        texture_browser_window(
+            Vec2(layout.right.x - TextureBrowser::width() - 8.0f, layout.centre.y + kViewportBar + 8.0f));
     }
     history_panel(layout.bottom.x, layout.bottom.y, layout.bottom.w * 0.32f, layout.bottom.h);
     log_panel(layout.bottom.x + layout.bottom.w * 0.32f, layout.bottom.y, layout.bottom.w * 0.68f,

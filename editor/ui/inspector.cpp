@@ -339,11 +339,11 @@ void EditorApp::settings_section() {
     level::PlayerStart start = editor_.level().player_start;
     ImGui::SetNextItemWidth(-90);
     if (ImGui::DragFloat3("Start", &start.position.x, 0.1f))
-        report(editor_.set_player_start(start), "player start");
+        report(editor_.set_player_start(start, "settings:player_start"), "player start");
     if (ImGui::IsItemDeactivatedAfterEdit()) editor_.end_merging();
     ImGui::SetNextItemWidth(-90);
     if (ImGui::DragFloat("Start yaw", &start.yaw, 1.0f, -360.0f, 360.0f, "%.0f deg"))
-        report(editor_.set_player_start(start), "player start");
+        report(editor_.set_player_start(start, "settings:player_start"), "player start");
     if (ImGui::IsItemDeactivatedAfterEdit()) editor_.end_merging();
     if (ImGui::Button("Player start at camera")) {
         level::PlayerStart at = start;

@@ -58,12 +58,14 @@ void EditorApp::viewport_toolbar() {
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Gizmo mode (W / E / R)");
         ImGui::SameLine();
     }
-    if (ImGui::SmallButton(gizmo_.space == RotationSpace::World ? "World" : "Local"))
-        gizmo_.space = gizmo_.space == RotationSpace::World ? RotationSpace::Local : RotationSpace::World;
-    spots_.here("gizmo_space");
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("The rotate rings turn about the world's axes or the entity's own (X toggles)");
-    ImGui::SameLine();
+    if (gizmo_.mode == GizmoMode::Rotate) { // the space only matters to the rings
+        if (ImGui::SmallButton(gizmo_.space == RotationSpace::World ? "World" : "Local"))
+            gizmo_.space = gizmo_.space == RotationSpace::World ? RotationSpace::Local : RotationSpace::World;
+        spots_.here("gizmo_space");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("The rotate rings turn about the world's axes or the entity's own (X toggles)");
+        ImGui::SameLine();
+    }
     ImGui::TextDisabled("|");
     for (ViewMode v : {ViewMode::Perspective, ViewMode::Top, ViewMode::Front, ViewMode::Side}) {
         ImGui::SameLine();

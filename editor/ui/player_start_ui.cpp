@@ -20,8 +20,9 @@ bool mentions(const char* haystack, const char* needle) {
     if (!*needle) return true;
     for (const char* h = haystack; *h; ++h) {
         size_t i = 0;
-        while (needle[i] && h[i] && std::tolower(static_cast<unsigned char>(h[i])) ==
-                                        std::tolower(static_cast<unsigned char>(needle[i])))
+        while (needle[i] && h[i] &&
+               std::tolower(static_cast<unsigned char>(h[i])) ==
+                   std::tolower(static_cast<unsigned char>(needle[i])))
             ++i;
         if (!needle[i]) return true;
     }
@@ -44,10 +45,13 @@ void EditorApp::player_start_row() {
                                            ImGuiSelectableFlags_AllowDoubleClick);
     ImGui::PopStyleColor();
     spots_.here("outliner.player_start");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Where the player starts: click to select, then move and turn it");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Where the player starts: click to select, then move and turn it");
     if (!clicked) return;
     const ImGuiIO& io = ImGui::GetIO();
-    const SelectMode mode = io.KeyCtrl ? SelectMode::Toggle : io.KeyShift ? SelectMode::Add : SelectMode::Replace;
+    const SelectMode mode = io.KeyCtrl    ? SelectMode::Toggle
+                            : io.KeyShift ? SelectMode::Add
+                                          : SelectMode::Replace;
     report(editor_.select({kPlayerStartId}, mode), "select");
     if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) focus_selection();
 }
@@ -65,8 +69,9 @@ void EditorApp::player_start_section() {
         report(editor_.set_player_start(start, "inspector:player_start"), "player start");
     if (ImGui::IsItemDeactivatedAfterEdit()) editor_.end_merging();
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-    ImGui::TextWrapped("The player's feet and facing (yaw 0 faces -z). In the viewport: W moves it, E turns it "
-                       "(the y ring), F focuses on it; F5 play-tests from it.");
+    ImGui::TextWrapped(
+        "The player's feet and facing (yaw 0 faces -z). In the viewport: W moves it, E turns it "
+        "(the y ring), F focuses on it; F5 play-tests from it.");
     ImGui::PopStyleColor();
     if (ImGui::Button("Player start at camera")) {
         level::PlayerStart at = start;

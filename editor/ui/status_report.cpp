@@ -190,11 +190,13 @@ void EditorApp::write_status() {
     }
     if (!editor_.doc().selection.empty())
         if (const level::Entity* e = editor_.level().find(editor_.doc().selection.front())) {
-            s["primary"] = {
-                {"id", e->id},          {"type", std::string(level::type_name(e->type()))},
-                {"name", e->name},      {"position", {e->position.x, e->position.y, e->position.z}},
-                {"yaw", e->rotation.x}, {"rotation", {e->rotation.x, e->rotation.y, e->rotation.z}},
-                {"links", links_json(e->links)}};
+            s["primary"] = {{"id", e->id},
+                            {"type", std::string(level::type_name(e->type()))},
+                            {"name", e->name},
+                            {"position", {e->position.x, e->position.y, e->position.z}},
+                            {"yaw", e->rotation.x},
+                            {"rotation", {e->rotation.x, e->rotation.y, e->rotation.z}},
+                            {"links", links_json(e->links)}};
             if (const auto texture = selection_texture()) s["primary"]["texture"] = texture->name;
         }
     objects_status(s);

@@ -30,8 +30,8 @@ void TextureBrowser::open(std::string query) {
 
 ImTextureID TextureBrowser::thumbnail(render::AssetLibrary& assets, const std::string& name) {
     if (!known_texture(name)) return nullptr;
-    const render::Texture& texture =
-        assets.textures().get(assets.root() / "textures" / (name + "_basecolor.png"), render::ColorSpace::Srgb);
+    const render::Texture& texture = assets.textures().get(
+        assets.root() / "textures" / (name + "_basecolor.png"), render::ColorSpace::Srgb);
     return reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture.id));
 }
 
@@ -55,7 +55,7 @@ std::optional<std::string> TextureBrowser::draw(render::AssetLibrary& assets, co
     ImGui::SetNextWindowSize(ImVec2(width(), 0), ImGuiCond_Always); // 0: the height fits the rows
     bool keep_open = true;
     std::optional<std::string> picked;
-    if (!ImGui::Begin("Textures###texture_browser", &keep_open,
+    if (!ImGui::Begin("Textures###texture_browser", nullptr,
                       ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
                           ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove)) {
         ImGui::End();
@@ -75,15 +75,16 @@ std::optional<std::string> TextureBrowser::draw(render::AssetLibrary& assets, co
         if (i % kColumns != 0) ImGui::SameLine();
         ImGui::BeginGroup();
         const bool is_current = name == current;
-        ImGui::PushStyleColor(ImGuiCol_Button, is_current ? ImVec4(0.55f, 0.35f, 0.08f, 1.0f)
-                                                          : style.Colors[ImGuiCol_Button]);
+        ImGui::PushStyleColor(ImGuiCol_Button,
+                              is_current ? ImVec4(0.55f, 0.35f, 0.08f, 1.0f) : style.Colors[ImGuiCol_Button]);
         if (ImGui::ImageButton(thumbnail(assets, name), ImVec2(kTextureThumbnail, kTextureThumbnail)))
             picked = name;
         ImGui::PopStyleColor();
         spots.here("texture:" + name);
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s: click to use it", name.c_str());
         const float text_w = ImGui::CalcTextSize(name.c_str()).x;
-        ImGui::SetCursorPosX(ImGui::GetCursorPosX() + std::max(0.0f, (cell - style.ItemSpacing.x - text_w) * 0.5f));
+        ImGui::SetCursorPosX(ImGui::GetCursorPosX() +
+                             std::max(0.0f, (cell - style.ItemSpacing.x - text_w) * 0.5f));
         if (is_current)
             ImGui::TextColored(kCurrentColour, "%s", name.c_str());
         else
@@ -92,11 +93,13 @@ std::optional<std::string> TextureBrowser::draw(render::AssetLibrary& assets, co
         ImGui::PopID();
     }
     ImGui::Separator();
-    ImGui::TextDisabled("%zu of %zu surface materials in assets/textures", shown_.size(),
-                        level::shipped_texture_names().size());
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextDisabled("%zu of %zu materials", shown_.size(), level::shipped_texture_names().size());
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("The surface materials in assets/textures");
     ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - ImGui::CalcTextSize("Close").x -
                     style.FramePadding.x * 2);
-    if (ImGui::SmallButton("Close")) keep_open = false;
+    // Esc closes it too (editor_app.cpp, handle_shortcuts).
+    if (ImGui::Button("Close")) keep_open = false;
     spots.here("texture_close");
     ImGui::End();
     open_ = keep_open;
@@ -119,7 +122,8 @@ bool EditorApp::texture_field_widget(FieldValue& value) {
     ImGui::SetNextItemWidth(-1);
     char buffer[128];
     std::snprintf(buffer, sizeof buffer, "%s", name.c_str());
-    if (!ImGui::InputText("##texture", buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue)) return false;
+    if (!ImGui::InputText("##texture", buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue))
+        return false;
     value = std::string(buffer);
     return true;
 }

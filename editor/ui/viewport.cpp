@@ -357,7 +357,8 @@ void EditorApp::viewport_panel(float x, float y, float w, float h) {
     viewport_origin_ = Vec2(origin.x, origin.y);
     viewport_size_ = size;
     view_.set_viewport(size);
-    const bool hovered = ImGui::IsItemHovered();
+    // A screenshot does not depend on where the X pointer happens to rest (no hot gizmo handle).
+    const bool hovered = ImGui::IsItemHovered() && !shell_.screenshot_mode();
     viewport_hovered_ = hovered;
     viewport_input(viewport_origin_, hovered);
 
@@ -472,8 +473,8 @@ void EditorApp::viewport_input(Vec2 origin, bool hovered) {
                                               : SelectMode::Replace;
         if (glm::length(end - box_start_) < 4.0f) { // a click: pick under the cursor (the player start too)
             const int id = pick_selectable(
-                               editor_.doc(), view_.ray(mouse), [this](const level::Entity& e) { return shown(e); },
-                               overlays_.player_start)
+                               editor_.doc(), view_.ray(mouse),
+                               [this](const level::Entity& e) { return shown(e); }, overlays_.player_start)
                                .id;
             if (id)
                 report(editor_.select({id}, mode), "select");

@@ -21,7 +21,8 @@ PickHit pick_selectable(const Document& doc, const geometry::Ray& ray, const Sho
                         bool player_start_shown) {
     PickHit best = pick_entity(doc, ray, shown);
     if (!player_start_shown) return best;
-    if (const auto t = pick_player_start(doc.level.player_start, ray); t && (best.id == 0 || *t < best.distance))
+    if (const auto t = pick_player_start(doc.level.player_start, ray);
+        t && (best.id == 0 || *t < best.distance))
         best = {kPlayerStartId, *t};
     return best;
 }
