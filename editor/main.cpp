@@ -12,7 +12,7 @@
 #include <cstdio>
 
 namespace {
-const std::vector<std::string> kFlags = {"no-vsync", "help", "dojo", "navmesh"};
+const std::vector<std::string> kFlags = {"no-vsync", "help", "dojo", "navmesh", "textures"};
 
 void print_help() {
     std::printf(
@@ -21,7 +21,7 @@ void print_help() {
         "                         [--dojo-file FILE] [--dojo-view clip=NAME,time=S,onion=1]\n"
         "                         [--view top|front|side|perspective|4up] [--inspector TAB] [--status-file "
         "FILE]\n"
-        "                         [--report FILE]\n"
+        "                         [--report FILE] [--gizmo move|rotate|scale[,local]] [--textures]\n"
         "       killswitch-editor --analyze LEVEL [--runs N] [--report FILE] [--seconds S] [--threads T]\n"
         "                         [--width W] [--height H] [--screenshot FILE --frames N] [--no-vsync]\n"
         "  --level FILE      open a level file (default: a new untitled level)\n"
@@ -41,6 +41,8 @@ void print_help() {
         "                    every core, without a window; write the report (default LEVEL.playtest.json\n"
         "                    beside it; --seconds: time limit per run, default 300), print a summary\n"
         "  --inspector TAB   start with the inspector's properties, links or objectives tab shown\n"
+        "  --gizmo MODE      start with the gizmo in move, rotate or scale mode (rotate,local: own axes)\n"
+        "  --textures        open the texture browser for the selection (select it with --run)\n"
         "  --status-file F   rewrite F with a JSON snapshot of the session (selection, entity count, undo\n"
         "                    depth, dirty flag, play-test, where the palette and gizmo are) when it changes\n"
         "  $KS_PLAYTEST_COMMAND  the runtime F5 starts (default: killswitch next to the editor)\n"
@@ -73,7 +75,7 @@ int main(int argc, char** argv) {
     }
     std::vector<std::string> known = shell::shell_options();
     known.insert(known.end(), {"level", "script", "run", "camera", "help", "dojo", "view", "status-file",
-                               "navmesh", "dojo-file", "dojo-view", "inspector"});
+                               "navmesh", "dojo-file", "dojo-view", "inspector", "gizmo", "textures"});
     for (const auto& name : editor::analyze_option_names()) known.push_back(name);
     if (auto unknown = cl->unknown(known); !unknown.empty()) {
         log::error("unknown option ", unknown.front(), " (see killswitch-editor --help)");
@@ -104,6 +106,8 @@ int main(int argc, char** argv) {
     options.start_in_dojo = cl->has("dojo");
     if (auto file = cl->get("dojo-file")) options.dojo_file = paths::resolve_user_path(*file);
     options.dojo_view = cl->get("dojo-view");
+    options.gizmo = cl->get("gizmo");
+    options.texture_browser = cl->has("textures");
     options.show_navmesh = cl->has("navmesh");
     if (auto run = cl->get("run")) options.run_script = paths::resolve_user_path(*run);
     options.camera = cl->get("camera");

@@ -1,9 +1,9 @@
 #pragma once
 // The math vocabulary shared by every module: GLM types under short names, plus the few helpers that
 // several modules need. Angles are radians in code; level files store degrees.
+#include <cmath>
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
-#include <cmath>
 #include <numbers>
 
 namespace ks {
@@ -18,11 +18,19 @@ using DVec3 = glm::dvec3;
 
 inline constexpr float kPi = std::numbers::pi_v<float>;
 
-constexpr float radians(float degrees) { return degrees * (kPi / 180.0f); }
-constexpr float degrees(float radians) { return radians * (180.0f / kPi); }
+constexpr float radians(float degrees) {
+    return degrees * (kPi / 180.0f);
+}
+constexpr float degrees(float radians) {
+    return radians * (180.0f / kPi);
+}
 
-inline bool is_finite(float v) { return std::isfinite(v); }
-inline bool is_finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+inline bool is_finite(float v) {
+    return std::isfinite(v);
+}
+inline bool is_finite(const Vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 inline bool is_finite(const Quat& q) {
     return std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z) && std::isfinite(q.w);
 }
@@ -33,5 +41,14 @@ inline Quat quat_from_ypr(float yaw, float pitch, float roll) {
     return glm::angleAxis(yaw, Vec3(0, 1, 0)) * glm::angleAxis(pitch, Vec3(1, 0, 0)) *
            glm::angleAxis(roll, Vec3(0, 0, 1));
 }
+
+// The same rotation in double precision from degrees, for editing steps that compose rotations (the
+// editor's three-axis gizmo) and must not drift.
+glm::dquat dquat_from_ypr_degrees(const DVec3& yaw_pitch_roll);
+// The inverse of quat_from_ypr, in degrees: yaw and roll in (-180, 180], pitch in [-90, 90] (every rotation
+// has one such triple). At gimbal lock (pitch +-90, where yaw and roll turn about the same axis) roll is 0
+// and yaw carries the whole turn. Read through the rotation matrix with atan2 only (no asin), so angles near
+// the lock stay accurate.
+DVec3 ypr_degrees_from_quat(const glm::dquat& rotation);
 
 } // namespace ks

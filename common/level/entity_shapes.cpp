@@ -41,6 +41,18 @@ geometry::Transform upright_frame(const Entity& entity) {
     return {entity.position, glm::angleAxis(radians(entity.rotation.x), Vec3(0, 1, 0))};
 }
 
+bool keeps_pitch_and_roll(EntityType type) {
+    switch (type) {
+    case EntityType::Wall:
+    case EntityType::Floor:
+    case EntityType::Stair:
+    case EntityType::ControlPanel:
+        return true;
+    default:
+        return false;
+    }
+}
+
 std::optional<PlacedShape> static_solid_shape(const Entity& e) {
     switch (e.type()) {
     case EntityType::Wall: {

@@ -15,6 +15,11 @@ geometry::Transform entity_frame(const Entity& entity);
 // The entity's position turned by its yaw only: doors, lights and props stand upright whatever their pitch.
 geometry::Transform upright_frame(const Entity& entity);
 
+// Whether the game turns this type's body by its pitch and roll too: walls, floors, stairs and the control
+// panel (their solid shapes use entity_frame). Every other type stands upright and turns by its yaw alone,
+// so the editor offers it only the yaw ring.
+bool keeps_pitch_and_roll(EntityType type);
+
 enum class ShapeKind : std::uint8_t {
     Box,      // half extents `half`
     Wedge,    // a ramp in a box of half extents `half`, rising toward local -z (physics::Shape::wedge)

@@ -81,7 +81,8 @@ struct WallProps {
     template <class V>
     void visit(V& v) {
         v.field(size, {"size", "Width, height and thickness of the wall slab", 0.01, 1e4, "units"});
-        v.field(texture, {"texture", "Material name from assets/textures (concrete, wood, metal, tiles)"});
+        v.field(texture,
+                {"texture", "Surface material from assets/textures (the texture browser shows them)"});
         v.field(texture_scale,
                 {"texture_scale", "World units covered by one repeat of the texture", 0.01, 1e4, "units"});
     }
@@ -100,7 +101,8 @@ struct FloorProps {
         v.field(thickness, {"thickness", "Slab thickness (below the surface, or above it for a ceiling)",
                             0.01, 100, "units"});
         v.field(ceiling, {"ceiling", "Acts as a ceiling: the slab is above position.y and faces down"});
-        v.field(texture, {"texture", "Material name from assets/textures"});
+        v.field(texture,
+                {"texture", "Surface material from assets/textures (the texture browser shows them)"});
         v.field(texture_scale,
                 {"texture_scale", "World units covered by one repeat of the texture", 0.01, 1e4, "units"});
     }
@@ -116,7 +118,8 @@ struct StairProps {
         v.field(size, {"size", "Width, total rise and total run; the stair rises toward its local -z", 0.01,
                        1e4, "units"});
         v.field(steps, {"steps", "Number of steps", 1, 200});
-        v.field(texture, {"texture", "Material name from assets/textures"});
+        v.field(texture,
+                {"texture", "Surface material from assets/textures (the texture browser shows them)"});
     }
     bool operator==(const StairProps&) const = default;
 };

@@ -5,6 +5,7 @@
 #include "level/logic_checks.h"
 #include "level/patrol_checks.h"
 #include "level/sound_name.h"
+#include "level/texture_names.h"
 
 #include <algorithm>
 #include <cmath>
@@ -65,7 +66,7 @@ class FieldChecker {
     void field(bool&, const FieldInfo&) {}
     // A text field with a non-negative minimum bounds its length (a message's text).
     void field(std::string& v, const FieldInfo& info) {
-        if (std::string_view(info.name) == "texture" && v.empty())
+        if (is_texture_field(info.name) && v.empty())
             sink_.error(path_of(info), "texture name is empty",
                         "name a material from assets/textures, e.g. \"concrete\"");
         if (info.min >= 0 &&
@@ -196,6 +197,7 @@ void check_level(const Level& level, DiagnosticSink& sink, const std::vector<siz
     }
     check_patrol_reach(level, sink, source_index);
     check_logic(level, sink, source_index);
+    check_texture_names(level, shipped_texture_names(), sink, source_index);
     if (level.next_id <= largest_id)
         sink.error("next_id",
                    "next_id " + std::to_string(level.next_id) + " is not above the largest id " +

@@ -19,15 +19,18 @@ struct Diagnostic {
     // The logic findings a tool can offer a fix for (the editor's quick fixes); Other for everything else.
     // DanglingTarget: a link target or kill-list name that names nothing; LogicLoop: a zero-delay loop (the
     // path is one link of it); ObjectiveNeverCompletes: the path is the objective (nothing completes it) or
-    // a kill-list name (a spawner nothing starts); LockedDoor: a locked door nothing frees.
+    // a kill-list name (a spawner nothing starts); LockedDoor: a locked door nothing frees. UnknownTexture: a
+    // texture field naming no surface material in assets/textures (level/texture_names.h).
     enum class Kind {
         Other,
         DanglingTarget,
         LogicLoop,
         ObjectiveNeverCompletes,
-        LockedDoor
+        LockedDoor,
+        UnknownTexture
     } kind = Kind::Other;
-    std::string suggestion{}; // DanglingTarget: the name that would resolve ("did you mean"), or ""
+    // DanglingTarget, UnknownTexture: the name that would resolve ("did you mean"), or ""
+    std::string suggestion{};
 };
 
 struct LoadReport {

@@ -45,9 +45,14 @@ class IdSet {
     std::vector<int> ids_;
 };
 
+// The player start in a selection: it is picked, moved and turned like an entity, under an id no entity has
+// (entity ids start at 1). It has no level::Entity, so selected_entities() leaves it out.
+inline constexpr int kPlayerStartId = -1;
+
 struct Document {
     level::Level level;
-    // Selection in the order entities were picked (the first is the primary: gizmo pivot, inspector header).
+    // Selection in the order entities were picked (the first is the primary: gizmo pivot, inspector header);
+    // it may hold kPlayerStartId.
     std::vector<int> selection;
     IdSet hidden;
     IdSet locked;
@@ -56,6 +61,7 @@ struct Document {
     bool is_selected(int id) const {
         return std::find(selection.begin(), selection.end(), id) != selection.end();
     }
+    bool player_start_selected() const { return is_selected(kPlayerStartId); }
     // Tools may pick and edit it: it exists and is not locked.
     bool is_editable(int id) const { return level.find(id) != nullptr && !locked.contains(id); }
     int index_of(int id) const {

@@ -10,6 +10,7 @@
 #include "model/history.h"
 #include "model/logic_edit.h"
 #include "model/reachability.h"
+#include "model/rotation.h"
 #include "model/validation.h"
 
 #include <filesystem>
@@ -78,8 +79,15 @@ class Editor {
     // One grid step along axis 0/1/2 in direction +1/-1 (arrow keys).
     Result<void> nudge(int axis, int direction);
     // Yaw about the selection's pivot (the entity itself, or the centre of several); snapped to the rotation
-    // step when the grid snaps.
+    // step when the grid snaps. The same as rotate_selection_about(1, degrees, RotationSpace::World).
     Result<void> rotate_selection(float degrees, std::string merge_key = {});
+    // A turn about axis 0 (x), 1 (y) or 2 (z) (editor_rotate.cpp, maths in rotation.h), snapped like
+    // rotate_selection. World: the selection turns as one about its pivot (positions too); Local: each entity
+    // turns in place about its own axis. About x or z only when every selected object keeps pitch and roll
+    // (selection_turns_on_three_axes); the player start and the other types turn about y only.
+    // `snap` false: the angle as given (a gizmo drag with Ctrl held), whatever the grid says.
+    Result<void> rotate_selection_about(int axis, float degrees, RotationSpace space, bool snap = true,
+                                        std::string merge_key = {});
     // Multiplies size fields along local x, y, z (types without size fields are left alone).
     Result<void> scale_selection(Vec3 factors, std::string merge_key = {});
     // On every selected entity that has the field (multi-selection edits common fields).
@@ -96,7 +104,8 @@ class Editor {
     const std::string& clipboard() const { return clipboard_; }
     Result<void> set_setting(std::string_view name, const FieldValue& value, std::string merge_key = {});
     Result<void> set_setting_text(std::string_view name, std::string_view text);
-    Result<void> set_player_start(const level::PlayerStart& start);
+    // Snapped to the grid; a drag of the inspector's fields passes a merge key (one step).
+    Result<void> set_player_start(const level::PlayerStart& start, std::string merge_key = {});
     Result<void> rename_level(std::string name);
 
     // ---- robot patrols (editor_patrol.cpp; each one undoable step; the robot is named by id) ----
@@ -166,9 +175,11 @@ class Editor {
     void decline_recovery() { recovery_.reset(); }
 
   private:
-    // Builds one LevelChange updating every selected entity with `edit`; nothing changes if any edit fails.
+    // Builds one LevelChange updating every selected entity with `edit` and, when the player start is
+    // selected and `start_edit` is given, the player start; nothing changes if any edit fails.
+    using StartEdit = std::function<Result<void>(level::PlayerStart&)>;
     Result<void> modify_selection(std::string name, const std::function<Result<void>(level::Entity&)>& edit,
-                                  std::string merge_key = {});
+                                  std::string merge_key = {}, const StartEdit& start_edit = {});
     // One LevelChange updating robot `id`'s patrol with `edit`; nothing changes if it fails.
     Result<void> edit_patrol(int id, std::string name,
                              const std::function<Result<void>(level::Patrol&)>& edit,

@@ -2,6 +2,7 @@
 #include "model/editor.h"
 
 #include "level/level_io.h"
+#include "model/rotation.h"
 
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -15,29 +16,6 @@ using level::EntityType;
 
 std::string describe(const Entity& e) {
     return std::string(level::type_name(e.type())) + " " + std::to_string(e.id);
-}
-
-// sin/cos of a yaw in degrees, exact at multiples of 90 so that quarter turns keep grid positions exact.
-void sin_cos_degrees(float degrees, double& s, double& c) {
-    const double wrapped = std::fmod(static_cast<double>(degrees), 360.0);
-    if (std::fmod(wrapped, 90.0) == 0.0) {
-        const int quarter = (static_cast<int>(wrapped / 90.0) + 4) % 4;
-        static constexpr double kSin[4] = {0, 1, 0, -1}, kCos[4] = {1, 0, -1, 0};
-        s = kSin[quarter];
-        c = kCos[quarter];
-        return;
-    }
-    const double r = wrapped * std::numbers::pi / 180.0;
-    s = std::sin(r);
-    c = std::cos(r);
-}
-
-// Into (-180, 180], so repeated turns never walk out of the rotation field's range.
-float wrap_degrees(float degrees) {
-    float w = std::fmod(degrees, 360.0f);
-    if (w > 180.0f) w -= 360.0f;
-    if (w <= -180.0f) w += 360.0f;
-    return w;
 }
 
 constexpr const char* kClipboardKey = "killswitch-clipboard";
@@ -57,7 +35,7 @@ bool Editor::redo() {
 }
 
 Result<void> Editor::modify_selection(std::string name, const std::function<Result<void>(Entity&)>& edit,
-                                      std::string merge_key) {
+                                      std::string merge_key, const StartEdit& start_edit) {
     if (doc_.selection.empty())
         return Error(name + ": nothing is selected", Location{}, "select entities first");
     auto change = std::make_unique<LevelChange>();
@@ -76,6 +54,18 @@ Result<void> Editor::modify_selection(std::string name, const std::function<Resu
             return e;
         }
         if (!(after == *current)) change->updates.push_back({*current, std::move(after)});
+    }
+    if (start_edit && doc_.player_start_selected()) {
+        level::PlayerStart after = doc_.level.player_start;
+        if (auto r = start_edit(after); !r) {
+            Error e = r.error();
+            e.message = name + ": player start: " + e.message;
+            return e;
+        }
+        if (!is_finite(after.position) || !std::isfinite(after.yaw))
+            return Error(name + ": the player start would leave the finite numbers");
+        if (!(after == doc_.level.player_start))
+            change->player_start = Change<level::PlayerStart>{doc_.level.player_start, after};
     }
     if (change->empty()) return ok(); // nothing actually changed: no history step
     change->set_name(std::move(name));
@@ -108,12 +98,20 @@ Result<int> Editor::place(EntityType type, Vec3 position, float yaw_degrees, std
 Result<void> Editor::move_selection(Vec3 delta, bool snap, std::string merge_key) {
     if (!is_finite(delta)) return Error("move: the offset must be finite numbers");
     if (snap && !doc_.selection.empty()) {
-        if (const Entity* primary = doc_.level.find(doc_.selection.front()))
+        if (doc_.selection.front() == kPlayerStartId) {
+            const Vec3 start = doc_.level.player_start.position;
+            delta = doc_.grid.snap_point(start + delta) - start;
+        } else if (const Entity* primary = doc_.level.find(doc_.selection.front())) {
             delta = doc_.grid.snap_point(primary->position + delta) - primary->position;
+        }
     }
     return modify_selection(
         "Move", [&](Entity& e) { return set_entity_field(e, "position", e.position + delta); },
-        std::move(merge_key));
+        std::move(merge_key),
+        [&](level::PlayerStart& start) -> Result<void> {
+            start.position += delta;
+            return ok();
+        });
 }
 
 Result<void> Editor::nudge(int axis, int direction) {
@@ -122,31 +120,6 @@ Result<void> Editor::nudge(int axis, int direction) {
     Vec3 delta(0.0f);
     delta[axis] = static_cast<float>(direction) * doc_.grid.step;
     return move_selection(delta, false, "nudge");
-}
-
-Result<void> Editor::rotate_selection(float degrees, std::string merge_key) {
-    if (!std::isfinite(degrees)) return Error("rotate: the angle must be a finite number");
-    degrees = doc_.grid.snap_angle(degrees);
-    auto selected = selected_entities();
-    if (selected.empty()) return Error("Rotate: nothing is selected", Location{}, "select entities first");
-    // Pivot: the centre of the selected positions' bounds (a single entity turns in place).
-    Vec3 lo(selected.front()->position), hi(lo);
-    for (const auto* e : selected) lo = glm::min(lo, e->position), hi = glm::max(hi, e->position);
-    const glm::dvec3 pivot = (glm::dvec3(lo) + glm::dvec3(hi)) * 0.5;
-    double s = 0, c = 1;
-    sin_cos_degrees(degrees, s, c);
-    return modify_selection(
-        "Rotate",
-        [&](Entity& e) -> Result<void> {
-            const glm::dvec3 d = glm::dvec3(e.position) - pivot;
-            // Yaw turns +x toward -z (quat_from_ypr about +y).
-            const glm::dvec3 turned(d.x * c + d.z * s, d.y, -d.x * s + d.z * c);
-            Vec3 position = selected.size() == 1 ? e.position : Vec3(pivot + turned);
-            if (auto r = set_entity_field(e, "position", position); !r) return r;
-            return set_entity_field(e, "rotation",
-                                    Vec3(wrap_degrees(e.rotation.x + degrees), e.rotation.y, e.rotation.z));
-        },
-        std::move(merge_key));
 }
 
 Result<void> Editor::scale_selection(Vec3 factors, std::string merge_key) {
@@ -352,7 +325,7 @@ Result<void> Editor::set_setting_text(std::string_view name, std::string_view te
     return set_settings_field(doc_.level.settings, name, FieldValue(0.0)); // unknown: lists the valid names
 }
 
-Result<void> Editor::set_player_start(const level::PlayerStart& start) {
+Result<void> Editor::set_player_start(const level::PlayerStart& start, std::string merge_key) {
     if (!is_finite(start.position) || !std::isfinite(start.yaw))
         return Error("player start: position and yaw must be finite numbers");
     level::PlayerStart snapped{doc_.grid.snap_point(start.position),
@@ -361,6 +334,7 @@ Result<void> Editor::set_player_start(const level::PlayerStart& start) {
     auto change = std::make_unique<LevelChange>();
     change->set_name("Move player start");
     change->player_start = Change<level::PlayerStart>{doc_.level.player_start, snapped};
+    change->merge_key = std::move(merge_key);
     execute(std::move(change), doc_.selection);
     return ok();
 }

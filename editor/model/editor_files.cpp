@@ -201,7 +201,7 @@ const std::vector<Issue>& Editor::issues() {
 }
 
 Result<void> Editor::select_issue(const Issue& issue) {
-    if (issue.entity_id == 0) return ok();
+    if (issue.entity_id == 0) return issue.rule == Rule::PlayerStart ? select({kPlayerStartId}) : ok();
     return select({issue.entity_id});
 }
 

@@ -34,6 +34,7 @@ Editor::Editor() = default;
 
 Result<void> Editor::select(const std::vector<int>& ids, SelectMode mode) {
     for (int id : ids) {
+        if (id == kPlayerStartId) continue; // always there, never locked
         if (!doc_.level.find(id))
             return Error("no entity with id " + std::to_string(id), Location{path_.string()},
                          "ids are listed in the outliner; the level's highest is " +

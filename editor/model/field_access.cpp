@@ -1,6 +1,7 @@
 #include "model/field_access.h"
 
 #include "level/sound_name.h"
+#include "level/texture_names.h"
 
 #include <algorithm>
 #include <charconv>
@@ -38,6 +39,8 @@ constexpr FieldKind kind_of() {
 template <class T>
 FieldDescriptor describe(const T& value, const level::FieldInfo& info) {
     FieldDescriptor d{info.name, info.tooltip, info.min, info.max, info.unit, kind_of<T>(), {}, info.slider};
+    if constexpr (std::is_same_v<T, std::string>)
+        if (level::is_texture_field(info.name)) d.kind = FieldKind::Texture;
     if constexpr (std::is_same_v<T, level::Choice>) d.options = value.options;
     if constexpr (std::is_same_v<T, level::Color>) d.min = 0, d.max = 1;
     return d;
@@ -193,6 +196,8 @@ const char* field_kind_name(FieldKind kind) {
         return "choice";
     case FieldKind::Sound:
         return "sound name";
+    case FieldKind::Texture:
+        return "texture name";
     }
     return "?";
 }
@@ -240,8 +245,12 @@ Result<void> check_field_value(const FieldDescriptor& field, const FieldValue& v
     }
     case FieldKind::Bool:
         return std::holds_alternative<bool>(value) ? ok() : Result<void>(wrong_type());
-    case FieldKind::String: {
+    case FieldKind::String:
+    case FieldKind::Texture: {
         if (!std::holds_alternative<std::string>(value)) return wrong_type();
+        if (field.kind == FieldKind::Texture && std::get<std::string>(value).empty())
+            return Error("'" + field.name + "' is empty", Location{},
+                         "name a surface material from assets/textures (the texture browser lists them)");
         for (char c : std::get<std::string>(value))
             if (static_cast<unsigned char>(c) < 0x20)
                 return Error("'" + field.name + "' contains a control character", Location{},
@@ -372,6 +381,7 @@ Result<FieldValue> parse_field_value(const FieldDescriptor& field, std::string_v
     case FieldKind::String:
     case FieldKind::Choice:
     case FieldKind::Sound:
+    case FieldKind::Texture:
         value = std::string(text);
         break;
     case FieldKind::Vec2: {

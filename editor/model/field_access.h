@@ -13,7 +13,9 @@
 namespace ks::editor {
 
 // Sound: a sound name (level::SoundName), travelling as a string; its min and max bound the name's length.
-enum class FieldKind { Float, Int, Bool, String, Vec2, Vec3, Color, Choice, Sound };
+// Texture: a texture field's name (level::is_texture_field), travelling as a string; whether the material
+// exists is the validation's texture rule (a draft may name one that does not, so the fix can be offered).
+enum class FieldKind { Float, Int, Bool, String, Vec2, Vec3, Color, Choice, Sound, Texture };
 const char* field_kind_name(FieldKind kind);
 
 // A field as the inspector shows it: widget kind, range, unit, tooltip and, for choices, the options.

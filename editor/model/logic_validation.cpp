@@ -152,6 +152,7 @@ Rule rule_of(Kind kind) {
         return Rule::Objective;
     case Kind::LockedDoor:
         return Rule::LockedDoor;
+    case Kind::UnknownTexture: // not a logic finding: validation.cpp makes it a texture issue
     case Kind::Other:
         break;
     }
@@ -210,6 +211,7 @@ Issue logic_issue(const level::Level& level, const level::Diagnostic& d) {
         if (c.entity)
             issue.fix = {QuickFix::Kind::SetField, "Unlock the door", {}, "locked", FieldValue(false)};
         break;
+    case Kind::UnknownTexture:
     case Kind::Other:
         break;
     }

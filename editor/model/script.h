@@ -62,6 +62,7 @@ enum class ScriptOp {
     ExpectDirty,
     ExpectClean,
     ExpectCampaign,
+    ExpectPlayerStart,
     Dojo,  // a command on the clip file (ScriptStep::dojo): see DojoOp
     Logic, // a link, objective or naming command (ScriptStep::logic): see LogicOp
 };

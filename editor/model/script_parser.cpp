@@ -30,10 +30,11 @@ class LineParser {
             {"save", ScriptOp::Save, &LineParser::save, "save PATH [overwrite]"},
             {"place", ScriptOp::Place, &LineParser::place, "place TYPE at X,Y,Z [yaw D] [name TEXT]"},
             {"select", ScriptOp::Select, &LineParser::select,
-             "select [add|toggle|remove] ID... | select all [TYPE] | select none | select box X,Y,Z X,Y,Z"},
+             "select [add|toggle|remove] ID|player_start... | select all [TYPE] | select none | select box "
+             "X,Y,Z X,Y,Z"},
             {"move", ScriptOp::Move, &LineParser::move, "move DX,DY,DZ [snap]"},
             {"nudge", ScriptOp::Nudge, &LineParser::nudge, "nudge +x|-x|+y|-y|+z|-z"},
-            {"rotate", ScriptOp::Rotate, &LineParser::number_argument, "rotate DEGREES"},
+            {"rotate", ScriptOp::Rotate, &LineParser::rotate, "rotate [x|y|z] DEGREES [world|local]"},
             {"scale", ScriptOp::Scale, &LineParser::scale, "scale S or scale SX,SY,SZ"},
             {"set", ScriptOp::Set, &LineParser::field_and_value, "set FIELD VALUE"},
             {"setting", ScriptOp::Setting, &LineParser::field_and_value, "setting FIELD VALUE"},
@@ -64,8 +65,8 @@ class LineParser {
              "campaign add FILE [title TEXT...]"},
             {"expect", ScriptOp::ExpectValid, &LineParser::expect,
              "expect count TYPE N | valid | issue RULE [ID] | no_issue RULE | selected N | "
-             "field ID FIELD VALUE | patrol ID POINTS | dirty | clean | campaign FILE N; level logic: expect "
-             "links | link | "
+             "field ID FIELD VALUE | patrol ID POINTS | player_start X,Y,Z [yaw D] | dirty | clean | campaign "
+             "FILE N; level logic: expect links | link | "
              "objectives ...; clip files: expect clip | blend | events | event | key | curve | dojo ..."},
         };
         step_.line = line_no_;
@@ -117,10 +118,15 @@ class LineParser {
                         "types: " + type_names());
         return step_;
     }
-    Result<ScriptStep> ids_from(ScriptOp op, const char* usage, size_t first) {
+    // With `player_start`, the word player_start stands for the player start (kPlayerStartId).
+    Result<ScriptStep> ids_from(ScriptOp op, const char* usage, size_t first, bool player_start = false) {
         step_.op = op;
         if (tokens_.size() <= first) return fail(first, "expected entity ids", usage);
         for (size_t i = first; i < tokens_.size(); ++i) {
+            if (player_start && tokens_[i].text == "player_start") {
+                step_.ids.push_back(kPlayerStartId);
+                continue;
+            }
             int id = 0;
             if (!to_int(tokens_[i].text, id) || id < 1)
                 return fail(i, "expected an entity id (a positive whole number)", usage);
@@ -272,7 +278,7 @@ class LineParser {
             step_.mode = SelectMode::Toggle, first = 2;
         else if (w == "remove")
             step_.mode = SelectMode::Remove, first = 2;
-        return ids_from(op, usage, first);
+        return ids_from(op, usage, first, true);
     }
 
     // ---- transforms -----------------------------------------------------------------------------------
@@ -283,6 +289,28 @@ class LineParser {
         if (auto r = vec(1, step_.vec); !r) return r.error();
         if (tokens_.size() == 3 && tokens_[2].text != "snap") return fail(2, "expected 'snap'", usage);
         step_.count = tokens_.size() == 3;
+        return step_;
+    }
+    // count: the axis (0 x, 1 y, 2 z; y when none is given), number: degrees, text: "world" or "local".
+    Result<ScriptStep> rotate(ScriptOp op, const char* usage) {
+        step_.op = op;
+        if (auto r = need(2, 4, usage); !r) return r.error();
+        size_t i = 1;
+        step_.count = 1;
+        if (const std::string_view w = tokens_[1].text; w == "x" || w == "y" || w == "z") {
+            step_.count = w[0] - 'x';
+            ++i;
+        }
+        if (i >= tokens_.size() || !to_float(tokens_[i].text, step_.number))
+            return fail(i, "expected the angle in degrees", usage);
+        step_.text = "world";
+        if (++i < tokens_.size()) {
+            if (tokens_[i].text != "world" && tokens_[i].text != "local")
+                return fail(i, "expected world or local", usage);
+            step_.text = std::string(tokens_[i].text);
+            ++i;
+        }
+        if (i < tokens_.size()) return fail(i, "unexpected '" + std::string(tokens_[i].text) + "'", usage);
         return step_;
     }
     Result<ScriptStep> nudge(ScriptOp op, const char* usage) {
@@ -432,6 +460,18 @@ class LineParser {
             return step_;
         }
         if (w == "issue" || w == "no_issue") return expect_issue(w == "issue", usage);
+        if (w == "player_start") {
+            step_.op = ScriptOp::ExpectPlayerStart;
+            if (tokens_.size() != 3 && tokens_.size() != 5)
+                return fail(tokens_.size(), "wrong number of words", usage);
+            if (auto r = vec(2, step_.vec); !r) return r.error();
+            if (tokens_.size() == 5) {
+                if (tokens_[3].text != "yaw") return fail(3, "expected 'yaw'", usage);
+                if (!to_float(tokens_[4].text, step_.number)) return fail(4, "expected degrees", "yaw 90");
+                step_.has_number = true;
+            }
+            return step_;
+        }
         if (w == "patrol") {
             step_.op = ScriptOp::ExpectPatrol;
             if (auto r = need(4, 4, usage); !r) return r.error();

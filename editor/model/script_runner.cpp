@@ -97,6 +97,7 @@ class Runner {
         case ScriptOp::ExpectDirty:
         case ScriptOp::ExpectClean:
         case ScriptOp::ExpectCampaign:
+        case ScriptOp::ExpectPlayerStart:
             return run_expectation(s);
         case ScriptOp::Dojo:
             return run_dojo_step(s.dojo, dojo_, script_.base_dir, report_);
@@ -195,7 +196,8 @@ class Runner {
         case ScriptOp::Nudge:
             return editor_.nudge(s.count, static_cast<int>(s.number));
         case ScriptOp::Rotate:
-            return editor_.rotate_selection(s.number);
+            return editor_.rotate_selection_about(
+                s.count, s.number, s.text == "local" ? RotationSpace::Local : RotationSpace::World);
         case ScriptOp::Scale:
             return editor_.scale_selection(s.vec);
         case ScriptOp::Delete:
@@ -363,6 +365,8 @@ class Runner {
             return expect(n == s.count, s.text + " lists " + std::to_string(n) + " level(s), expected " +
                                             std::to_string(s.count));
         }
+        case ScriptOp::ExpectPlayerStart:
+            return expect_player_start(s);
         default:
             break;
         }
@@ -417,6 +421,18 @@ class Runner {
                                                   format_field_value(*actual) + ", expected " + s.text2);
         }
         return Error("no field " + s.text);
+    }
+
+    // Within a ten-thousandth: positions and angles that went through a turn carry float rounding.
+    Result<void> expect_player_start(const ScriptStep& s) {
+        const level::PlayerStart& start = editor_.level().player_start;
+        const bool at = glm::all(glm::lessThanEqual(glm::abs(start.position - s.vec), Vec3(1e-4f)));
+        const bool facing = !s.has_number || std::abs(start.yaw - s.number) <= 1e-4f;
+        const auto text = [](const Vec3& p, float yaw) {
+            return format_field_value(p) + " yaw " + format_field_value(static_cast<double>(yaw));
+        };
+        return expect(at && facing, "the player start is at " + text(start.position, start.yaw) +
+                                        ", expected " + text(s.vec, s.has_number ? s.number : start.yaw));
     }
 
     Result<void> expect_patrol(const ScriptStep& s) {

@@ -11,7 +11,8 @@ namespace {
 constexpr Rule kRules[] = {Rule::Format,    Rule::PlayerStart,  Rule::ControlPanel, Rule::WallOverlap,
                            Rule::Support,   Rule::StairSlope,   Rule::DoorGap,      Rule::Reachability,
                            Rule::Patrol,    Rule::RobotReach,   Rule::Sound,        Rule::LinkTarget,
-                           Rule::LogicLoop, Rule::TriggerReach, Rule::Objective,    Rule::LockedDoor};
+                           Rule::LogicLoop, Rule::TriggerReach, Rule::Objective,    Rule::LockedDoor,
+                           Rule::Texture};
 
 } // namespace
 

@@ -162,9 +162,32 @@ std::optional<Vec3> push_out(const geometry::Overlap& ov) {
     return horizontal / len * (ov.depth / len + 0.01f);
 }
 
+// The loader warns about an unknown texture (the level still loads); the editor calls it an error (saved as
+// a draft: the game would show magenta) with the did-you-mean as its quick fix.
+Issue texture_issue(const Level& level, const level::Diagnostic& d) {
+    Issue issue;
+    issue.rule = Rule::Texture;
+    issue.severity = IssueSeverity::Error;
+    issue.entity_id = entity_id_from_path(level, d.error.where.path);
+    issue.message = d.error.str();
+    if (!d.suggestion.empty()) {
+        const std::string& path = d.error.where.path;
+        issue.fix = {QuickFix::Kind::SetField,
+                     "Use " + d.suggestion,
+                     {},
+                     path.substr(path.rfind('.') + 1),
+                     FieldValue(d.suggestion)};
+    }
+    return issue;
+}
+
 void check_format(const Level& level, std::vector<Issue>& out) {
     const auto report = level::validate(level);
     for (const auto& d : report.diagnostics) {
+        if (d.kind == level::Diagnostic::Kind::UnknownTexture) {
+            out.push_back(texture_issue(level, d));
+            continue;
+        }
         if (d.kind != level::Diagnostic::Kind::Other) {
             out.push_back(logic_issue(level, d));
             continue;
@@ -370,6 +393,8 @@ const char* rule_name(Rule rule) {
         return "objective";
     case Rule::LockedDoor:
         return "locked_door";
+    case Rule::Texture:
+        return "texture";
     }
     return "?";
 }

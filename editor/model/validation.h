@@ -30,6 +30,7 @@ enum class Rule {
     TriggerReach, // a trigger whose box no one it notices can walk into (reachability.cpp)
     Objective,    // an objective that can never complete, or a level with no objectives and no win link
     LockedDoor,   // a locked door that no link unlocks or opens
+    Texture,      // a texture field naming no surface material in assets/textures (level/texture_names.h)
 };
 const char* rule_name(Rule rule);
 

@@ -127,6 +127,7 @@ Result<void> EditorApp::init() {
         if (!ran) return ran.error();
         log_line("ran " + options_.run_script->string());
     }
+    if (auto r = apply_start_ui_options(); !r) return r.error();
     rebuild_scene_if_changed();
     g_app = this;
     glfwSetWindowCloseCallback(shell_.window(), [](GLFWwindow* window) {
@@ -134,6 +135,33 @@ Result<void> EditorApp::init() {
         glfwSetWindowShouldClose(window, GLFW_FALSE); // the app decides, after asking about unsaved work
         g_app->request(PendingAction::Quit);
     });
+    return ok();
+}
+
+// --gizmo MODE[,local] and --textures: the viewport tools as a screenshot or a test wants them.
+Result<void> EditorApp::apply_start_ui_options() {
+    if (options_.gizmo) {
+        std::string mode = *options_.gizmo;
+        if (mode.ends_with(",local")) {
+            gizmo_.space = RotationSpace::Local;
+            mode.resize(mode.size() - 6);
+        }
+        if (mode == "move")
+            gizmo_.mode = GizmoMode::Move;
+        else if (mode == "rotate")
+            gizmo_.mode = GizmoMode::Rotate;
+        else if (mode == "scale")
+            gizmo_.mode = GizmoMode::Scale;
+        else
+            return Error("--gizmo '" + *options_.gizmo + "': expected move, rotate or scale", {},
+                         "add ,local for the entity's own rotation axes, e.g. --gizmo rotate,local");
+    }
+    if (options_.texture_browser) {
+        if (!selection_texture())
+            return Error("--textures: the selection has no texture field", {},
+                         "select a wall, floor or stair first (--run a script with 'select ID')");
+        texture_browser_.open();
+    }
     return ok();
 }
 
@@ -209,6 +237,9 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
         inspector_panel(layout.right.x, layout.right.y, layout.right.w, layout.right.h * split);
         validation_panel(layout.right.x, layout.right.y + layout.right.h * split, layout.right.w,
                          layout.right.h * (1.0f - split));
+        // Over the viewport's right edge, beside the inspector whose texture field opened it.
+        texture_browser_window(
+            Vec2(layout.right.x - TextureBrowser::width() - 8.0f, layout.centre.y + kViewportBar + 8.0f));
     }
     // Along the bottom: history, the play-test report, the log.
     history_panel(layout.bottom.x, layout.bottom.y, layout.bottom.w * 0.2f, layout.bottom.h);
@@ -275,7 +306,9 @@ void EditorApp::handle_shortcuts() {
     }
     if (pressed(GLFW_KEY_DELETE)) report(editor_.delete_selection(), "delete");
     if (pressed(GLFW_KEY_ESCAPE)) {
-        if (pick_)
+        if (texture_browser_.is_open())
+            texture_browser_.close();
+        else if (pick_)
             end_pick();
         else if (gizmo_.dragging())
             gizmo_.cancel(editor_);
@@ -295,6 +328,8 @@ void EditorApp::handle_shortcuts() {
     if (pressed(GLFW_KEY_W)) gizmo_.mode = GizmoMode::Move;
     if (pressed(GLFW_KEY_E)) gizmo_.mode = GizmoMode::Rotate;
     if (pressed(GLFW_KEY_R)) gizmo_.mode = GizmoMode::Scale;
+    if (pressed(GLFW_KEY_X))
+        gizmo_.space = gizmo_.space == RotationSpace::World ? RotationSpace::Local : RotationSpace::World;
     if (pressed(GLFW_KEY_KP_7)) set_view(ViewMode::Top);
     if (pressed(GLFW_KEY_KP_1)) set_view(ViewMode::Front);
     if (pressed(GLFW_KEY_KP_3)) set_view(ViewMode::Side);

@@ -17,6 +17,7 @@
 #include "ui/playtest.h"
 #include "ui/render_target.h"
 #include "ui/sound_widgets.h"
+#include "ui/texture_browser.h"
 #include "ui/ui_spots.h"
 #include "view/link_arrows.h"
 #include "view/link_options.h"
@@ -24,6 +25,7 @@
 #include "view/patrol_drag.h"
 #include "view/picking.h"
 #include "view/quad_view.h"
+#include "view/player_start_marker.h"
 #include "view/sound_marker.h"
 #include "view/view_camera.h"
 
@@ -69,6 +71,14 @@ struct AppOptions {
     std::filesystem::path
         dojo_file; // --dojo-file: the dojo's clip file (default assets/animations/robot.json)
     std::optional<std::string> dojo_view; // --dojo-view: where the dojo starts (ui/dojo_panel.h, DojoView)
+    // --gizmo MODE[,local]: the gizmo's mode (move, rotate, scale) and rotation space at start-up.
+    std::optional<std::string> gizmo;
+    bool texture_browser = false; // --textures: the texture browser open for the selection at start-up
+};
+
+// The texture field the selected entities share (its name) and the primary's texture.
+struct SelectionTexture {
+    std::string field, name;
 };
 
 struct Overlays {
@@ -108,6 +118,7 @@ class EditorApp {
   private:
     EditorApp(shell::AppShell& shell, const AppOptions& options);
     Result<void> init();
+    Result<void> apply_start_ui_options(); // --gizmo, --textures
 
     // frame
     void render_views(const shell::FrameInfo& info);
@@ -116,6 +127,7 @@ class EditorApp {
     void update_title();
     void write_status(); // status_report.cpp
     void logic_status(nlohmann::json& status) const;
+    void objects_status(nlohmann::json& status) const;
 
     // editor_app.cpp: menus and files
     void menu_bar();
@@ -165,6 +177,17 @@ class EditorApp {
     void analysis_panel(float x, float y, float w, float h);
     void start_analysis();
     void analysis_status(nlohmann::json& status) const;
+    GizmoFrame gizmo_frame() const; // the selection's pivot and the rings' axes in the gizmo's space
+
+    // player_start_ui.cpp: the player start as a viewport object (figure, outliner row, inspector section)
+    void draw_player_start();
+    void player_start_row();
+    void player_start_section();
+
+    // texture_browser.cpp: the inspector's texture field, and the browser window for the selection
+    bool texture_field_widget(FieldValue& value);
+    std::optional<SelectionTexture> selection_texture() const;
+    void texture_browser_window(Vec2 position);
 
     // clip_preview_overlay.cpp: a dojo clip played on the selected level robot
     int preview_robot() const; // the primary selection when it is a robot, else 0
@@ -240,6 +263,7 @@ class EditorApp {
     std::optional<geometry::Ray> place_ray_; // the mouse's ray in the active view, while it is hovered
     Overlays overlays_;
     Gizmo gizmo_;
+    TextureBrowser texture_browser_;
     PatrolDrag patrol_drag_;
     Handle hovered_handle_ = Handle::None;
     Vec2 viewport_origin_{0.0f}, viewport_size_{640.0f, 360.0f};

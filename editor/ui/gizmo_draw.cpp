@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <cmath>
+#include <utility>
 
 namespace ks::editor::ui {
 
@@ -13,28 +14,41 @@ const ImU32 kPlaneColours[3] = {kAxisColours[2], kAxisColours[1], kAxisColours[0
 const ImU32 kHot = IM_COL32(255, 220, 60, 255);
 constexpr Handle kPlanes[3] = {Handle::PlaneXY, Handle::PlaneXZ, Handle::PlaneYZ};
 constexpr Handle kAxes[3] = {Handle::AxisX, Handle::AxisY, Handle::AxisZ};
+constexpr Handle kRings[3] = {Handle::RingX, Handle::RingY, Handle::RingZ};
+
+// The rings about x, y and z in their axes' colours (the one under the mouse or dragged hot and thick),
+// the others first so the hot one lies on top; ticks every 15 degrees help read the snapping (48 segments:
+// every other point is 15 degrees).
+template <class At>
+void draw_rings(ImDrawList* draw, const GizmoShape& s, Handle shown, const At& at) {
+    int order[3] = {0, 1, 2};
+    for (int& k : order)
+        if (kRings[k] == shown) std::swap(k, order[2]);
+    for (int k : order) {
+        if (!s.ring_visible[k]) continue;
+        const bool hot = shown == kRings[k];
+        const ImU32 colour = hot ? kHot : kAxisColours[k];
+        ImVec2 points[kGizmoRingSegments + 1];
+        for (int i = 0; i <= kGizmoRingSegments; ++i) points[i] = at(s.rings[k][i]);
+        draw->AddPolyline(points, kGizmoRingSegments + 1, colour, 0, hot ? 4.0f : 2.5f);
+        const ImVec2 c = at(s.centre);
+        for (int i = 0; i < kGizmoRingSegments; i += 2) {
+            const ImVec2 p = points[i];
+            draw->AddLine(ImVec2(p.x + (c.x - p.x) * 0.07f, p.y + (c.y - p.y) * 0.07f), p, colour, 1.5f);
+        }
+    }
+    draw->AddCircleFilled(at(s.centre), 3.0f, IM_COL32(240, 240, 240, 255));
+}
 } // namespace
 
-void draw_gizmo(ImDrawList* draw, const Gizmo& gizmo, const ViewCamera& view, Vec2 origin, const Vec3& pivot,
-                Handle hovered) {
-    const GizmoShape s = gizmo_shape(view, pivot);
+void draw_gizmo(ImDrawList* draw, const Gizmo& gizmo, const ViewCamera& view, Vec2 origin,
+                const GizmoFrame& frame, Handle hovered) {
+    const GizmoShape s = gizmo_shape(view, frame);
     if (!s.valid) return;
     const Handle shown = gizmo.dragging() ? gizmo.active() : hovered;
     auto at = [&](Vec2 p) { return ImVec2(p.x + origin.x, p.y + origin.y); };
     if (gizmo.mode == GizmoMode::Rotate) {
-        const ImU32 colour = shown == Handle::Yaw ? kHot : kAxisColours[1];
-        if (s.ring_visible) {
-            ImVec2 points[kGizmoRingSegments + 1];
-            for (int i = 0; i <= kGizmoRingSegments; ++i) points[i] = at(s.ring[i]);
-            draw->AddPolyline(points, kGizmoRingSegments + 1, colour, 0, shown == Handle::Yaw ? 4.0f : 2.5f);
-            // Ticks every 15 degrees help read the snapping (the ring has 48 segments: every third point).
-            const ImVec2 c = at(s.centre);
-            for (int i = 0; i < kGizmoRingSegments; i += 2) {
-                const ImVec2 p = points[i];
-                draw->AddLine(ImVec2(p.x + (c.x - p.x) * 0.07f, p.y + (c.y - p.y) * 0.07f), p, colour, 1.5f);
-            }
-        }
-        draw->AddCircleFilled(at(s.centre), 3.0f, colour);
+        draw_rings(draw, s, shown, at);
         return;
     }
     if (gizmo.mode == GizmoMode::Move) {

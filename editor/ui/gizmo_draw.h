@@ -7,7 +7,7 @@ struct ImDrawList;
 namespace ks::editor::ui {
 
 // `origin`: the viewport's top-left in screen pixels.
-void draw_gizmo(ImDrawList* draw, const Gizmo& gizmo, const ViewCamera& view, Vec2 origin, const Vec3& pivot,
-                Handle hovered);
+void draw_gizmo(ImDrawList* draw, const Gizmo& gizmo, const ViewCamera& view, Vec2 origin,
+                const GizmoFrame& frame, Handle hovered);
 
 } // namespace ks::editor::ui

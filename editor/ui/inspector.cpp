@@ -140,6 +140,9 @@ bool EditorApp::field_widget(const FieldDescriptor& field, FieldValue& value, bo
         if (changed) value = name;
         break;
     }
+    case FieldKind::Texture:
+        changed = texture_field_widget(value);
+        break;
     }
     if (mixed) ImGui::PopStyleColor();
     return changed;
@@ -196,6 +199,10 @@ void EditorApp::inspector_panel(float x, float y, float w, float h) {
 
 void EditorApp::selection_inspector(float w) {
     const auto selected = editor_.selected_entities();
+    if (selected.empty() && editor_.doc().player_start_selected()) {
+        player_start_section();
+        return;
+    }
     if (selected.empty()) {
         ImGui::TextDisabled("Nothing selected: level settings");
         settings_section();
@@ -246,7 +253,8 @@ void EditorApp::selection_inspector(float w) {
             FieldValue edited = *value;
             if (field_widget(field, edited, mixed)) {
                 report(editor_.set_field(field.name, edited, "inspector:" + field.name), field.name.c_str());
-                if (field.kind == FieldKind::Sound) editor_.end_merging(); // each name picked is its own step
+                if (field.kind == FieldKind::Sound || field.kind == FieldKind::Texture)
+                    editor_.end_merging(); // each name picked is its own step
             }
             if (ImGui::IsItemDeactivatedAfterEdit()) editor_.end_merging(); // one drag = one step
             ImGui::TableNextColumn();
@@ -331,11 +339,11 @@ void EditorApp::settings_section() {
     level::PlayerStart start = editor_.level().player_start;
     ImGui::SetNextItemWidth(-90);
     if (ImGui::DragFloat3("Start", &start.position.x, 0.1f))
-        report(editor_.set_player_start(start), "player start");
+        report(editor_.set_player_start(start, "settings:player_start"), "player start");
     if (ImGui::IsItemDeactivatedAfterEdit()) editor_.end_merging();
     ImGui::SetNextItemWidth(-90);
     if (ImGui::DragFloat("Start yaw", &start.yaw, 1.0f, -360.0f, 360.0f, "%.0f deg"))
-        report(editor_.set_player_start(start), "player start");
+        report(editor_.set_player_start(start, "settings:player_start"), "player start");
     if (ImGui::IsItemDeactivatedAfterEdit()) editor_.end_merging();
     if (ImGui::Button("Player start at camera")) {
         level::PlayerStart at = start;

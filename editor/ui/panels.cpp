@@ -58,6 +58,14 @@ void EditorApp::viewport_toolbar() {
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Gizmo mode (W / E / R)");
         ImGui::SameLine();
     }
+    if (gizmo_.mode == GizmoMode::Rotate) { // the space only matters to the rings
+        if (ImGui::SmallButton(gizmo_.space == RotationSpace::World ? "World" : "Local"))
+            gizmo_.space = gizmo_.space == RotationSpace::World ? RotationSpace::Local : RotationSpace::World;
+        spots_.here("gizmo_space");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("The rotate rings turn about the world's axes or the entity's own (X toggles)");
+        ImGui::SameLine();
+    }
     ImGui::TextDisabled("|");
     for (ViewMode v : {ViewMode::Perspective, ViewMode::Top, ViewMode::Front, ViewMode::Side}) {
         ImGui::SameLine();
@@ -114,6 +122,7 @@ void EditorApp::outliner_panel(float x, float y, float w, float h) {
     ImGui::BeginChild("entities", ImVec2(0, 0), false);
     const Document& doc = editor_.doc();
     ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(4, 2));
+    player_start_row();
     for (const auto& e : doc.level.entities) {
         if (type_filter_ >= 0 && static_cast<int>(e.type()) != type_filter_) continue;
         const std::string label = e.name.empty() ? std::string(level::type_name(e.type())) : e.name;

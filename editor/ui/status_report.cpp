@@ -100,6 +100,23 @@ void EditorApp::logic_status(nlohmann::json& s) const {
     s["link_arrows"] = link_arrows_.size();
 }
 
+// The player start (where it is, whether it is selected, its body's centre on screen), the gizmo's
+// rotation space and the texture browser.
+void EditorApp::objects_status(nlohmann::json& s) const {
+    const level::PlayerStart& start = editor_.level().player_start;
+    nlohmann::json player_start = {{"position", {start.position.x, start.position.y, start.position.z}},
+                                   {"yaw", start.yaw},
+                                   {"selected", editor_.doc().player_start_selected()}};
+    Vec2 p;
+    if (!dojo_tab_ && view_.project(player_obb(start).center, p))
+        player_start["screen"] = point(p + viewport_origin_);
+    s["player_start"] = player_start;
+    s["gizmo_space"] = rotation_space_name(gizmo_.space);
+    s["texture_browser"] = {{"open", texture_browser_.is_open()},
+                            {"query", texture_browser_.query()},
+                            {"shown", texture_browser_.shown()}};
+}
+
 void EditorApp::write_status() {
     using nlohmann::json;
     json s;
@@ -157,23 +174,32 @@ void EditorApp::write_status() {
     }
     s["screen"] = screen;
     if (!editor_.doc().selection.empty() && !dojo_tab_) {
-        const GizmoShape g = gizmo_shape(view_, selection_pivot());
+        const GizmoShape g = gizmo_shape(view_, gizmo_frame());
         if (g.valid) {
             json handles;
             handles["centre"] = point(g.centre + viewport_origin_);
             const char* axes[3] = {"x", "y", "z"};
-            for (int i = 0; i < 3; ++i)
+            for (int i = 0; i < 3; ++i) {
                 if (g.axis_visible[i]) // the middle of the arrow: a safe place to grab it
                     handles[axes[i]] = point((g.centre + g.tips[i]) * 0.5f + viewport_origin_);
+                if (g.ring_visible[i] && gizmo_.mode == GizmoMode::Rotate) // where the ring starts
+                    handles[std::string("ring_") + axes[i]] = point(g.rings[i][0] + viewport_origin_);
+            }
             s["gizmo_handles"] = handles;
         }
     }
     if (!editor_.doc().selection.empty())
-        if (const level::Entity* e = editor_.level().find(editor_.doc().selection.front()))
-            s["primary"] = {
-                {"id", e->id},          {"type", std::string(level::type_name(e->type()))},
-                {"name", e->name},      {"position", {e->position.x, e->position.y, e->position.z}},
-                {"yaw", e->rotation.x}, {"links", links_json(e->links)}};
+        if (const level::Entity* e = editor_.level().find(editor_.doc().selection.front())) {
+            s["primary"] = {{"id", e->id},
+                            {"type", std::string(level::type_name(e->type()))},
+                            {"name", e->name},
+                            {"position", {e->position.x, e->position.y, e->position.z}},
+                            {"yaw", e->rotation.x},
+                            {"rotation", {e->rotation.x, e->rotation.y, e->rotation.z}},
+                            {"links", links_json(e->links)}};
+            if (const auto texture = selection_texture()) s["primary"]["texture"] = texture->name;
+        }
+    objects_status(s);
     logic_status(s);
     panes_status(s);
     analysis_status(s);

@@ -195,18 +195,7 @@ void EditorApp::draw_overlays() {
         if (e.type() == level::EntityType::Sound) draw_sound_emitter(e, selected);
         draw_logic_marker(e, selected);
     }
-    if (overlays_.player_start) {
-        const auto& ps = doc.level.player_start;
-        const float yaw = radians(ps.yaw);
-        const Vec3 fwd(-std::sin(yaw), 0, -std::cos(yaw)), side(fwd.z, 0, -fwd.x);
-        const Vec3 base = ps.position + Vec3(0, 0.1f, 0);
-        const Vec4 green(0.3f, 1.0f, 0.4f, 1.0f);
-        debug_.capsule(ps.position + Vec3(0, 1, 0), ps.position + Vec3(0, 2, 0), 1.0f,
-                       Vec4(0.3f, 1.0f, 0.4f, 0.5f));
-        debug_.line(base, base + fwd * 3.0f, green);
-        debug_.line(base + fwd * 3.0f, base + fwd * 2.0f + side * 0.7f, green);
-        debug_.line(base + fwd * 3.0f, base + fwd * 2.0f - side * 0.7f, green);
-    }
+    draw_player_start();
     if (placing_ && place_ray_) { // where a click would place (in every pane of the 4-up view)
         const Vec3 p = place_point(*place_ray_);
         level::Entity preview;
@@ -277,16 +266,20 @@ Vec3 EditorApp::place_point(const geometry::Ray& ray) const {
 }
 
 Vec3 EditorApp::selection_pivot() const {
-    Vec3 sum(0.0f);
-    int n = 0;
-    for (const level::Entity* e : editor_.selected_entities()) sum += e->position, ++n;
-    return n ? sum / static_cast<float>(n) : Vec3(0.0f);
+    return gizmo_frame().pivot;
+}
+
+GizmoFrame EditorApp::gizmo_frame() const {
+    return editor::gizmo_frame(editor_.doc(), gizmo_.space);
 }
 
 void EditorApp::focus_selection() {
     const auto selected = editor_.selected_entities();
     Vec3 lo(1e30f), hi(-1e30f);
-    if (selected.empty()) {
+    if (editor_.doc().player_start_selected()) {
+        const geometry::Aabb b = player_obb(editor_.level().player_start).aabb();
+        lo = b.min, hi = b.max;
+    } else if (selected.empty()) {
         for (const auto& e : editor_.level().entities) {
             const geometry::Aabb b = entity_obb(e).aabb();
             lo = glm::min(lo, b.min), hi = glm::max(hi, b.max);
@@ -383,7 +376,7 @@ void EditorApp::viewport_panel(float x, float y, float w, float h) {
     if (!quad_.on) std::snprintf(speed, sizeof(speed), "  |  fly speed %.1f u/s (wheel)", view_.speed);
     std::snprintf(text, sizeof(text), "%s%s%s  |  grid %.2f %s  |  %s%s%s", quad_.on ? "4-up: " : "",
                   view_mode_name(view_.mode), speed, editor_.doc().grid.step,
-                  editor_.doc().grid.snap ? "snap" : "free", gizmo_mode_name(gizmo_.mode),
+                  editor_.doc().grid.snap ? "snap" : "free", gizmo_label(gizmo_).c_str(),
                   gizmo_.readout().empty() ? "" : "  ", gizmo_.readout().c_str());
     draw->PushClipRect(under, ImVec2(under.x + span.x, under.y + span.y), true);
     draw->AddRectFilled(ImVec2(under.x + 6, under.y + span.y - 26),
@@ -410,7 +403,8 @@ void EditorApp::single_viewport(Vec2 origin, bool& hovered) {
     viewport_origin_ = origin;
     viewport_size_ = size;
     view_.set_viewport(size);
-    hovered = ImGui::IsItemHovered();
+    // A screenshot does not depend on where the X pointer happens to rest (no hot gizmo handle).
+    hovered = ImGui::IsItemHovered() && !shell_.screenshot_mode();
     viewport_hovered_ = hovered;
     viewport_input(viewport_origin_, hovered);
     pane_overlays(ImGui::GetWindowDrawList(), viewport_origin_, true);
@@ -426,7 +420,7 @@ void EditorApp::pane_overlays(ImDrawList* draw, Vec2 origin, bool active) {
     logic_overlay(draw, origin);
     analysis_.draw(draw, view_, origin);
     if (!editor_.doc().selection.empty() && !placing_)
-        draw_gizmo(draw, gizmo_, view_, origin, selection_pivot(), active ? hovered_handle_ : Handle::None);
+        draw_gizmo(draw, gizmo_, view_, origin, gizmo_frame(), active ? hovered_handle_ : Handle::None);
     if (active && box_selecting_) {
         const ImVec2 m = ImGui::GetIO().MousePos;
         draw->AddRectFilled(ImVec2(box_start_.x, box_start_.y), m, IM_COL32(90, 160, 255, 40));
@@ -480,14 +474,15 @@ void EditorApp::viewport_input(Vec2 origin, bool hovered) {
     }
     if (gizmo_.dragging()) {
         if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
-            if (auto message = gizmo_.drag(editor_, view_, mouse); !message.empty()) log_line(message, true);
+            if (auto message = gizmo_.drag(editor_, view_, mouse, io.KeyCtrl); !message.empty())
+                log_line(message, true);
         } else {
             gizmo_.end(editor_);
         }
         return;
     }
     hovered_handle_ =
-        hovered && has_selection && !placing_ ? gizmo_.hit(view_, selection_pivot(), mouse) : Handle::None;
+        hovered && has_selection && !placing_ ? gizmo_.hit(view_, gizmo_frame(), mouse) : Handle::None;
     if (io.KeyAlt) return; // Alt + left drag orbits
     if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
         if (placing_) {
@@ -502,7 +497,7 @@ void EditorApp::viewport_input(Vec2 origin, bool hovered) {
             return;
         }
         if (hovered_handle_ != Handle::None) {
-            gizmo_.begin(editor_, view_, selection_pivot(), hovered_handle_, mouse);
+            gizmo_.begin(editor_, view_, gizmo_frame(), hovered_handle_, mouse);
             return;
         }
         box_selecting_ = true;
@@ -514,8 +509,11 @@ void EditorApp::viewport_input(Vec2 origin, bool hovered) {
         const SelectMode mode = io.KeyCtrl    ? SelectMode::Toggle
                                 : io.KeyShift ? SelectMode::Add
                                               : SelectMode::Replace;
-        if (glm::length(end - box_start_) < 4.0f) { // a click: pick under the cursor
-            const int id = pick(view_.ray(mouse));
+        if (glm::length(end - box_start_) < 4.0f) { // a click: pick under the cursor (the player start too)
+            const int id = pick_selectable(
+                               editor_.doc(), view_.ray(mouse),
+                               [this](const level::Entity& e) { return shown(e); }, overlays_.player_start)
+                               .id;
             if (id)
                 report(editor_.select({id}, mode), "select");
             else if (mode == SelectMode::Replace)

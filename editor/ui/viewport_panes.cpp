@@ -145,7 +145,7 @@ void EditorApp::quad_viewport(Vec2 origin, Vec2 size) {
         ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(pane_targets_[i].texture())),
                      ImVec2(pane.size.x, pane.size.y), ImVec2(0, 1), ImVec2(1, 0));
         ImGui::PopID();
-        const bool hovered = ImGui::IsItemHovered();
+        const bool hovered = ImGui::IsItemHovered() && !shell_.screenshot_mode();
         if (active) {
             viewport_origin_ = pane.origin;
             viewport_size_ = pane.size;

@@ -1,5 +1,7 @@
 #include "view/picking.h"
 
+#include "view/player_start_marker.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -12,6 +14,16 @@ PickHit pick_entity(const Document& doc, const geometry::Ray& ray, const ShownFn
         const float t = geometry::ray_obb(ray, entity_obb(e));
         if (t >= 0.0f && t < best.distance) best = {e.id, t};
     }
+    return best;
+}
+
+PickHit pick_selectable(const Document& doc, const geometry::Ray& ray, const ShownFn& shown,
+                        bool player_start_shown) {
+    PickHit best = pick_entity(doc, ray, shown);
+    if (!player_start_shown) return best;
+    if (const auto t = pick_player_start(doc.level.player_start, ray);
+        t && (best.id == 0 || *t < best.distance))
+        best = {kPlayerStartId, *t};
     return best;
 }
 

@@ -19,6 +19,10 @@ struct PickHit {
 };
 // The nearest shown, unlocked entity the ray enters.
 PickHit pick_entity(const Document& doc, const geometry::Ray& ray, const ShownFn& shown);
+// What a click selects: pick_entity, or the player start (id kPlayerStartId) when it is shown and its body
+// box is nearer.
+PickHit pick_selectable(const Document& doc, const geometry::Ray& ray, const ShownFn& shown,
+                        bool player_start_shown);
 
 // Where a palette click places: the first floor, stair or wall the ray meets (its top or face), else the
 // ground plane y = 0 in front of the camera, else (a level ray in the front and side views) the plane

@@ -59,7 +59,7 @@ TEST_CASE("handles seen end-on are hidden and not hit") {
     CHECK_FALSE(top.plane_visible[0]); // XY edge-on
     CHECK(top.plane_visible[1]);       // XZ faces the viewer
     CHECK_FALSE(top.plane_visible[2]); // YZ edge-on
-    CHECK(top.ring_visible);
+    CHECK(top.ring_visible[1]);
     // Clicks around the centre, where the hidden y axis is a point, never grab "y".
     for (Vec2 d : {Vec2(0, 0), Vec2(-4, -4), Vec2(-6, 2)})
         CHECK(gizmo_hit(GizmoMode::Move, top, top.centre + d) != Handle::AxisY);
@@ -71,7 +71,7 @@ TEST_CASE("handles seen end-on are hidden and not hit") {
     CHECK_FALSE(front.axis_visible[2]);
     CHECK(front.plane_visible[0]);
     CHECK_FALSE(front.plane_visible[1]);
-    CHECK_FALSE(front.ring_visible); // the yaw ring is a line from the front: rotate from the top view
+    CHECK_FALSE(front.ring_visible[1]); // the yaw ring is a line from the front: rotate from the top view
     CHECK(gizmo_hit(GizmoMode::Rotate, front, front.centre + Vec2(60, 0)) == Handle::None);
 
     ViewCamera persp;
@@ -98,8 +98,8 @@ TEST_CASE("gizmo hit tests: axes within 9 pixels, plane squares inside, the ring
     CHECK(gizmo_hit(GizmoMode::Scale, s, (q[0] + q[2]) * 0.5f) == Handle::None); // scale has no planes
     CHECK(gizmo_hit(GizmoMode::Scale, s, s.tips[0]) == Handle::AxisX);
     // Ring: a point on it hits, the centre does not.
-    const Vec2 on_ring = s.ring[7];
-    CHECK(gizmo_hit(GizmoMode::Rotate, s, on_ring + Vec2(3, 3)) == Handle::Yaw);
+    const Vec2 on_ring = s.rings[1][7];
+    CHECK(gizmo_hit(GizmoMode::Rotate, s, on_ring + Vec2(3, 3)) == Handle::RingY);
     CHECK(gizmo_hit(GizmoMode::Rotate, s, s.centre) == Handle::None);
     // Behind the camera: nothing.
     ViewCamera persp;
@@ -175,9 +175,9 @@ TEST_CASE("plane drag in the top view moves in x and z; cancel reverts; yaw ring
     gizmo.mode = GizmoMode::Rotate;
     const float r = s.length / wpp; // ring radius in pixels
     const Vec2 east = s.centre + Vec2(r, 0), north = s.centre + Vec2(0, -r);
-    REQUIRE(gizmo.hit(top, Vec3(0.0f), east) == Handle::Yaw);
+    REQUIRE(gizmo.hit(top, Vec3(0.0f), east) == Handle::RingY);
     const float yaw0 = editor.level().find(id)->rotation.x;
-    gizmo.begin(editor, top, Vec3(0.0f), Handle::Yaw, east);
+    gizmo.begin(editor, top, Vec3(0.0f), Handle::RingY, east);
     gizmo.drag(editor, top, s.centre + Vec2(r * 0.707f, -r * 0.66f)); // about 43 degrees: snaps to 45
     CHECK(std::remainder(editor.level().find(id)->rotation.x - yaw0, 360.0f) == doctest::Approx(45.0f));
     gizmo.drag(editor, top, north); // a quarter turn counterclockwise seen from above: +90

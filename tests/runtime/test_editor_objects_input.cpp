@@ -1,0 +1,174 @@
+// The player start and the texture browser in the real killswitch-editor window, with real X input (xdotool
+// under Xvfb), as a designer uses them: click the player start in the top view, drag it with the gizmo's x
+// arrow and turn it with the yaw ring (each drag one undo step), Ctrl+Z; open the texture browser from the
+// selected wall's texture field, search, click a thumbnail (the wall's texture changes, one undo step),
+// close it, Ctrl+Z. The editor reports its state in --status-file every frame; the test waits on that, never
+// on time. Without a display or xdotool these tests fail: ./run.sh test provides both.
+#include "level/level_io.h"
+#include "runtime/editor_session.h"
+#include "runtime/screen_image.h"
+#include "test_support.h"
+
+#include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+
+using namespace ks;
+using nlohmann::json;
+using test::EditorProcess;
+using Session = test::EditorSession;
+
+namespace {
+// A floor, a wall of concrete to the north, the control panel; the player start in the open, facing -z.
+const char* kLevel = R"({
+  "format": "killswitch-level",
+  "version": 2,
+  "name": "Objects input test",
+  "player_start": {"position": [6, 0, 8], "yaw": 0},
+  "next_id": 4,
+  "entities": [
+    {"id": 1, "type": "floor", "name": "Ground", "position": [0, 0, 0], "props": {"size": [40, 40]}},
+    {"id": 2, "type": "wall", "name": "North", "position": [0, 0, -12], "props": {"size": [20, 16, 0.5]}},
+    {"id": 3, "type": "control_panel", "position": [-10, 0, -6]}
+  ]
+})";
+constexpr int kWall = 2;
+
+std::filesystem::path write_level(const std::filesystem::path& dir) {
+    const auto file = dir / "objects_input.json";
+    std::ofstream(file) << kLevel;
+    return file;
+}
+
+void require_window_test_tools() {
+    // Under ./run.sh test there is always a display (xvfb-run) and xdotool: their absence is a failure.
+    REQUIRE_MESSAGE(test::have_display(), "needs a display: ./run.sh test runs this under xvfb-run");
+    REQUIRE_MESSAGE(test::have_xdotool(), "needs xdotool (./run.sh installs it)");
+}
+
+Vec3 start_position(const json& status) {
+    const json& p = status["player_start"]["position"];
+    return {p[0].get<float>(), p[1].get<float>(), p[2].get<float>()};
+}
+} // namespace
+
+TEST_CASE("editor objects input: click the player start in the top view, drag it and turn it with the gizmo, "
+          "undo with real X events") {
+    require_window_test_tools();
+    test::ScratchDir dir;
+    const auto level_file = write_level(dir.path());
+    const auto status = dir / "status.json";
+    const test::PrivateDisplay display;
+    EditorProcess editor({"--level", level_file.string(), "--view", "top", "--width", "1280", "--height",
+                          "720", "--status-file", status.string()},
+                         {"XDG_CONFIG_HOME=" + (dir / "config").string()}, display);
+    Session s(status, editor, display);
+    json st = s.wait("the player start on screen", [](const json& j) {
+        return j["frame"] >= 2 && j["view"] == "Top" && j["player_start"].contains("screen");
+    });
+    CHECK(st["player_start"]["selected"] == false);
+
+    s.click(st["player_start"]["screen"]);
+    st = s.wait("the player start selected by a click", [](const json& j) {
+        return j["player_start"]["selected"] == true && j.contains("gizmo_handles") &&
+               j["gizmo_handles"].contains("x");
+    });
+    CHECK(st["selection"] == json::array({-1}));
+    const size_t undo_before = st["undo"];
+
+    // The x arrow, 90 pixels to the right: east, snapped to the 1-unit grid, one step.
+    s.drag(st["gizmo_handles"]["x"], 90.0f, 0.0f, 3);
+    st = s.wait("the move drag ended",
+                [&](const json& j) { return j["dragging"] == false && j["undo"] == undo_before + 1; });
+    const Vec3 moved = start_position(st);
+    CHECK(moved.x > 6.0f + 3.0f);
+    CHECK(moved.x == std::round(moved.x));
+    CHECK(moved.z == 8.0f);
+    CHECK(st["player_start"]["selected"] == true);
+
+    // E: the rotate gizmo, the yaw ring only (the player start turns about y). Its start point lies south
+    // of the centre in the top view (+z); dragging it to the east point is a quarter turn counterclockwise
+    // seen from above: yaw +90.
+    s.key("e");
+    st = s.wait("the yaw ring", [](const json& j) {
+        return j["gizmo"] == "Rotate" && j.contains("gizmo_handles") && j["gizmo_handles"].contains("ring_y");
+    });
+    CHECK_FALSE(st["gizmo_handles"].contains("ring_x"));
+    CHECK_FALSE(st["gizmo_handles"].contains("ring_z"));
+    const json ring = st["gizmo_handles"]["ring_y"], centre = st["gizmo_handles"]["centre"];
+    const float r = ring[1].get<float>() - centre[1].get<float>();
+    REQUIRE(r > 20.0f);
+    s.drag(ring, r, -r, 6);
+    st = s.wait("the turn ended",
+                [&](const json& j) { return j["dragging"] == false && j["undo"] == undo_before + 2; });
+    CHECK(st["player_start"]["yaw"].get<float>() == doctest::Approx(90.0f));
+    CHECK(start_position(st) == moved); // alone, it turns in place
+
+    s.key("ctrl+z");
+    st = s.wait("the turn undone", [&](const json& j) { return j["undo"] == undo_before + 1; });
+    CHECK(st["player_start"]["yaw"].get<float>() == 0.0f);
+    s.key("ctrl+z");
+    st = s.wait("the move undone", [&](const json& j) { return j["undo"] == undo_before; });
+    CHECK(start_position(st) == Vec3(6, 0, 8));
+    s.key("ctrl+s");
+    s.wait("saved", [](const json& j) { return j["dirty"] == false; });
+    auto saved = level::load_level_file(level_file);
+    REQUIRE(saved);
+    CHECK(saved->player_start == level::PlayerStart{Vec3(6, 0, 8), 0.0f});
+}
+
+TEST_CASE("editor objects input: open the texture browser from the wall's texture field, search, click a "
+          "thumbnail, close, undo with real X events") {
+    require_window_test_tools();
+    test::ScratchDir dir;
+    const auto level_file = write_level(dir.path());
+    std::ofstream(dir / "select.kss") << "select " << kWall << "\n";
+    const auto status = dir / "status.json";
+    const test::PrivateDisplay display;
+    EditorProcess editor({"--level", level_file.string(), "--run", (dir / "select.kss").string(), "--width",
+                          "1280", "--height", "720", "--status-file", status.string()},
+                         {"XDG_CONFIG_HOME=" + (dir / "config").string()}, display);
+    Session s(status, editor, display);
+    json st = s.wait("the wall's texture field", [](const json& j) {
+        return j["frame"] >= 2 && j.contains("primary") && j["spots"].contains("inspector.texture");
+    });
+    CHECK(st["primary"]["texture"] == "concrete");
+    CHECK(st["texture_browser"]["open"] == false);
+    const size_t undo_before = st["undo"];
+
+    s.click(st["spots"]["inspector.texture"]);
+    st = s.wait("the browser open with every material", [](const json& j) {
+        return j["texture_browser"]["open"] == true && j["spots"].contains("texture:concrete") &&
+               j["texture_browser"]["shown"].size() >= 6;
+    });
+    const auto all = st["texture_browser"]["shown"].get<std::vector<std::string>>();
+    CHECK(std::find(all.begin(), all.end(), "wood") != all.end());
+
+    s.click(st["spots"]["texture_search"]);
+    s.type("wo");
+    st = s.wait("the search narrowed to wood", [](const json& j) {
+        return j["texture_browser"]["query"] == "wo" &&
+               j["texture_browser"]["shown"] == json::array({"wood"}) && j["spots"].contains("texture:wood");
+    });
+    CHECK_FALSE(st["spots"].contains("texture:concrete"));
+
+    s.click(st["spots"]["texture:wood"]);
+    st = s.wait("the wall is wood", [](const json& j) { return j["primary"]["texture"] == "wood"; });
+    CHECK(st["undo"] == undo_before + 1);
+    CHECK(st["texture_browser"]["open"] == true); // stays open to try another
+
+    s.click(st["spots"]["texture_close"]);
+    st = s.wait("the browser closed", [](const json& j) { return j["texture_browser"]["open"] == false; });
+    s.key("ctrl+z");
+    st = s.wait("the texture undone", [](const json& j) { return j["primary"]["texture"] == "concrete"; });
+    CHECK(st["undo"] == undo_before);
+    s.key("ctrl+y");
+    s.wait("the texture redone", [](const json& j) { return j["primary"]["texture"] == "wood"; });
+    s.key("ctrl+s");
+    s.wait("saved", [](const json& j) { return j["dirty"] == false; });
+    auto saved = level::load_level_file(level_file);
+    REQUIRE(saved);
+    CHECK(saved->find(kWall)->as<level::WallProps>().texture == "wood");
+}
