@@ -4,6 +4,7 @@
 // its default, range, unit and tooltip; loading, saving, validation and the editor's inspector all walk
 // that list, so there are no parallel copies to keep in step. See docs/level-format.md.
 #include "core/math.h"
+#include "level/editor_data.h"
 
 #include <array>
 #include <cstdint>
@@ -510,6 +511,7 @@ struct Level {
     std::vector<Objective> objectives; // all complete: the level is won (none: it is never won by them)
     std::vector<Link> links;           // the level's own: on_start
     std::vector<Entity> entities;
+    EditorData editor; // the editor's layers, groups, prefab instances, hidden and locked entities
 
     Entity* find(int id);
     const Entity* find(int id) const;

@@ -1,5 +1,7 @@
 #include "level/level_reader.h"
 
+#include "level/editor_data_io.h"
+
 #include "jsonio/describe.h"
 #include "jsonio/number_text.h"
 #include "jsonio/suggest.h"
@@ -512,6 +514,11 @@ ReadLevel read_level(const Json& document, DiagnosticSink& sink) {
         // Optional: hand-written files may leave it out; it then follows the largest id.
         level.next_id = 1;
         for (const Entity& e : level.entities) level.next_id = std::max(level.next_id, e.id + 1);
+    }
+    reader.claim("editor");
+    if (auto it = document.find("editor"); it != document.end()) {
+        level.editor = read_editor_data(*it, "editor", sink);
+        reconcile_editor_data(level.editor, level, "editor", sink);
     }
     reader.warn_unknown("level");
     return out;

@@ -1,5 +1,7 @@
 #include "level/level_writer.h"
 
+#include "level/editor_data_io.h"
+
 #include "jsonio/number_text.h"
 
 #include <algorithm>
@@ -149,6 +151,7 @@ Json write_level(const Level& level) {
     Json entities = Json::array();
     for (const Entity& entity : level.entities) entities.push_back(write_entity(entity));
     json["entities"] = std::move(entities);
+    if (!level.editor.empty()) json["editor"] = write_editor_data(level.editor);
     return json;
 }
 

@@ -56,6 +56,7 @@ void LevelChange::apply(Document& doc) const {
     if (next_id) doc.level.next_id = next_id->after;
     if (level_links) doc.level.links = level_links->after;
     if (objectives) doc.level.objectives = objectives->after;
+    if (editor_data) doc.level.editor = editor_data->after;
     doc.selection = selection_after;
 }
 
@@ -67,6 +68,7 @@ void LevelChange::revert(Document& doc) const {
     if (next_id) doc.level.next_id = next_id->before;
     if (level_links) doc.level.links = level_links->before;
     if (objectives) doc.level.objectives = objectives->before;
+    if (editor_data) doc.level.editor = editor_data->before;
     for (auto it = insertions.rbegin(); it != insertions.rend(); ++it) {
         assert(it->index < entities.size() && entities[it->index].id == it->entity.id);
         entities.erase(entities.begin() + static_cast<std::ptrdiff_t>(it->index));
@@ -79,7 +81,7 @@ void LevelChange::revert(Document& doc) const {
 
 bool LevelChange::empty() const {
     return updates.empty() && removals.empty() && insertions.empty() && !level_name && !settings &&
-           !player_start && !next_id && !level_links && !objectives;
+           !player_start && !next_id && !level_links && !objectives && !editor_data;
 }
 
 bool LevelChange::try_merge(const LevelChange& next) {
@@ -100,6 +102,7 @@ bool LevelChange::try_merge(const LevelChange& next) {
     merge_field(next_id, next.next_id);
     merge_field(level_links, next.level_links);
     merge_field(objectives, next.objectives);
+    merge_field(editor_data, next.editor_data);
     selection_after = next.selection_after;
     return true;
 }

@@ -1,7 +1,8 @@
 #pragma once
 // Every edit is a command that can be applied and reverted exactly. LevelChange is the one concrete edit: it
 // records entity insertions and removals with their indices, entity updates as before/after copies, and the
-// level fields (name, settings, player start, next_id, the level's own links, the objectives) before and
+// level fields (name, settings, player start, next_id, the level's own links, the objectives, the editor
+// section) before and
 // after, so undo restores entity order, ids and next_id bit for bit. CompoundCommand groups several into one
 // history step (transactions).
 #include "model/document.h"
@@ -53,6 +54,9 @@ class LevelChange final : public Command {
     std::optional<Change<int>> next_id;
     std::optional<Change<std::vector<level::Link>>> level_links;
     std::optional<Change<std::vector<level::Objective>>> objectives; // the whole list (at most a few dozen)
+    // The editor section (layers, groups, prefab links, hide/lock): whole, before and after; it holds ids,
+    // not entities, so a copy stays small next to the entities an edit records.
+    std::optional<Change<level::EditorData>> editor_data;
 
     // Commands with the same non-empty key that follow each other may merge (a slider dragged in the
     // inspector: one step, not one per frame).
