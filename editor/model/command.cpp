@@ -1,5 +1,7 @@
 #include "model/command.h"
 
+#include "model/groups.h"
+
 #include <algorithm>
 #include <cassert>
 #include <unordered_map>
@@ -58,6 +60,7 @@ void LevelChange::apply(Document& doc) const {
     if (objectives) doc.level.objectives = objectives->after;
     if (editor_data) doc.level.editor = editor_data->after;
     doc.selection = selection_after;
+    if (editor_data) refresh_view_sets(doc);
 }
 
 void LevelChange::revert(Document& doc) const {
@@ -77,6 +80,7 @@ void LevelChange::revert(Document& doc) const {
         entities.insert(entities.begin() + static_cast<std::ptrdiff_t>(rem.index), rem.entity);
     write_updates(doc, updates, false); // ids are distinct, so order does not matter
     doc.selection = selection_before;
+    if (editor_data) refresh_view_sets(doc);
 }
 
 bool LevelChange::empty() const {

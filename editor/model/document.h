@@ -1,7 +1,8 @@
 #pragma once
-// The document an editor session edits: the level itself plus the editor-only state around it (selection,
-// hidden and locked entities, grid). Only commands change `level`; selection, visibility and locks are view
-// state that is not saved in the level file and not recorded as history steps.
+// The document an editor session edits: the level itself (with its editor section: layers, groups, prefab
+// instances, entities hidden and locked one by one, all saved in the file) plus view state around it
+// (selection, the entered group, grid). Only commands change `level`; the selection and the entered group
+// are not saved and not history steps.
 #include "level/level.h"
 
 #include <algorithm>
@@ -54,9 +55,13 @@ struct Document {
     // Selection in the order entities were picked (the first is the primary: gizmo pivot, inspector header);
     // it may hold kPlayerStartId.
     std::vector<int> selection;
+    // What tools must not show or touch: the entities hidden or locked one by one or through their layer
+    // (refresh_view_sets in groups.h derives both from level.editor after every change).
     IdSet hidden;
     IdSet locked;
     GridSettings grid;
+    // The group entered by a double-click (0: none): clicks pick its members one by one (groups.h pick_unit).
+    int open_group = 0;
 
     bool is_selected(int id) const {
         return std::find(selection.begin(), selection.end(), id) != selection.end();

@@ -7,8 +7,10 @@
 #include "model/bounds.h"
 #include "model/disk_fingerprint.h"
 #include "model/field_access.h"
+#include "model/groups.h"
 #include "model/history.h"
 #include "model/logic_edit.h"
+#include "model/prefab_library.h"
 #include "model/reachability.h"
 #include "model/rotation.h"
 #include "model/validation.h"
@@ -23,6 +25,7 @@
 namespace ks::editor {
 
 class RecentFiles;
+class PrefabSync;
 
 enum class SelectMode { Replace, Add, Toggle, Remove };
 
@@ -67,8 +70,17 @@ class Editor {
     void clear_selection() { doc_.selection.clear(); }
     std::vector<const level::Entity*> selected_entities() const;
 
-    void set_hidden(int id, bool hidden);
-    void set_locked(int id, bool locked); // locking drops the entity from the selection
+    // Hiding and locking one entity is saved in the level's editor section: one undoable step each. Locking
+    // drops the entity from the selection. Unknown ids are an error.
+    Result<void> set_hidden(int id, bool hidden);
+    Result<void> set_locked(int id, bool locked);
+    // What a click in the viewport selects (groups.h pick_unit): the entity's outermost group, or inside an
+    // entered group its child group or the entity itself. A click outside the entered group leaves it.
+    Result<void> select_picked(int entity_id, SelectMode mode = SelectMode::Replace);
+    // Box select: every visible, unlocked entity the predicate accepts, each with what a click on it picks
+    // (its whole group); returns how many entities were accepted.
+    int select_picked_where(const std::function<bool(const level::Entity&)>& accept,
+                            SelectMode mode = SelectMode::Replace);
     GridSettings& grid() { return doc_.grid; }
 
     // ---- edits (each one undoable step) ----
@@ -137,6 +149,54 @@ class Editor {
     // its name if another entity shares it); returns it. No step when it already has a unique name.
     Result<std::string> ensure_link_name(int entity_id);
 
+    // ---- groups (editor_groups.cpp; each edit one undoable step) ----
+    // Ctrl+G: the selection becomes one group (inside the entered group, if any). A group that is partly
+    // selected joins whole. Returns the new group's id; its frame is the selection's centre at floor level.
+    Result<int> group_selection(std::string name = {});
+    // Ctrl+Shift+G: the groups the selection picks are dissolved (a prefab instance loses its link); their
+    // members join the parent group.
+    Result<void> ungroup_selection();
+    // Double-click: the group's members become pickable one by one (view state, not a step).
+    Result<void> enter_group(int group_id);
+    void exit_group(); // one level up
+    int open_group() const { return doc_.open_group; }
+    Result<void> rename_group(int group_id, std::string name);
+    // The groups the selection holds whole and that a click would pick (under the entered group).
+    std::vector<int> selected_groups() const;
+
+    // ---- layers (editor_layers.cpp; each edit one undoable step) ----
+    // Layer 0 is "Default" and holds every entity no other layer lists; adding the first layer creates it.
+    Result<int> layer_add(std::string name);
+    Result<void> layer_rename(int index, std::string name);
+    Result<void> layer_remove(int index); // not the Default layer; its entities go to Default
+    Result<void> layer_set_visible(int index, bool visible);
+    Result<void> layer_set_locked(int index, bool locked);
+    Result<void> layer_set_active(int index); // where new entities go
+    Result<void> move_selection_to_layer(int index);
+
+    // ---- prefabs (editor_prefabs.cpp; see prefab.h) ----
+    PrefabLibrary& prefabs() { return prefabs_; }
+    const PrefabLibrary& prefabs() const { return prefabs_; }
+    // The selection as prefabs/NAME.json (origin: the selection's centre at floor level, on the grid); the
+    // selection becomes a linked instance of it (one step). Refuses a name in use unless `replace`.
+    Result<std::filesystem::path> save_prefab(const std::string& name, std::string title = {},
+                                              bool replace = false);
+    // A linked instance with its origin at `position` (snapped) turned by `yaw`; selects it and returns
+    // its group id. New names are made unique; links inside the prefab follow them.
+    Result<int> place_prefab(const std::string& name, Vec3 position, float yaw_degrees = 0.0f);
+    // The instance's members, as they are now, become the prefab (its file is rewritten); every instance
+    // in the level follows (one step); the instance's overrides are cleared.
+    Result<std::filesystem::path> apply_instance_to_prefab(int group_id);
+    // Brings every instance in line with its prefab file (after a prefab changed on disk; open does it).
+    // One step named after the prefabs when anything changed; returns how many entities changed.
+    Result<int> update_prefab_instances();
+    // Drops the instance's overrides (all, or one field of one member): they follow the prefab again.
+    Result<void> revert_prefab_overrides(int group_id, int entity_id = 0, std::string field = {});
+    // The instance becomes a plain group: it no longer follows its prefab.
+    Result<void> unlink_prefab(int group_id);
+    // The instance (group id) entity `entity_id` belongs to, or 0.
+    int prefab_instance_of(int entity_id) const;
+
     bool undo();
     bool redo();
     // A drag or compound edit as one step.
@@ -178,8 +238,16 @@ class Editor {
     // Builds one LevelChange updating every selected entity with `edit` and, when the player start is
     // selected and `start_edit` is given, the player start; nothing changes if any edit fails.
     using StartEdit = std::function<Result<void>(level::PlayerStart&)>;
+    // `frame_edit` moves the frames of the groups the selection holds whole (a move or a turn).
+    using FrameEdit = std::function<void(level::Group&)>;
     Result<void> modify_selection(std::string name, const std::function<Result<void>(level::Entity&)>& edit,
-                                  std::string merge_key = {}, const StartEdit& start_edit = {});
+                                  std::string merge_key = {}, const StartEdit& start_edit = {},
+                                  const FrameEdit& frame_edit = {});
+    // The editor section after `change` (groups_edit.cpp): removed entities leave layers, groups and
+    // instances; new ones join the active layer; edited prefab members record their overrides.
+    void follow_structure(LevelChange& change) const;
+    // One LevelChange replacing the editor section with `data` (no step when equal).
+    void change_structure(std::string name, level::EditorData data, std::vector<int> selection_after);
     // One LevelChange updating robot `id`'s patrol with `edit`; nothing changes if it fails.
     Result<void> edit_patrol(int id, std::string name,
                              const std::function<Result<void>(level::Patrol&)>& edit,
@@ -222,6 +290,14 @@ class Editor {
     std::uint64_t walk_results_ = 0; // finished walk checks taken in: part of issues()' cache key
     void poll_walk_job(bool wait);
     std::uint64_t reloads_ = 0;
+    PrefabLibrary prefabs_;
+    // Prefab syncs (editor_prefabs.cpp): one step from a PrefabSync and the editor section it leaves; while
+    // it runs, members change because their prefab did, so no overrides are recorded.
+    struct SyncScope;
+    friend struct SyncScope;
+    bool syncing_prefabs_ = false;
+    void execute_sync(std::string name, const PrefabSync& sync, level::EditorData data,
+                      std::vector<int> selection_after);
 };
 
 } // namespace ks::editor

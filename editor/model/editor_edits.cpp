@@ -23,6 +23,7 @@ constexpr const char* kClipboardKey = "killswitch-clipboard";
 
 void Editor::execute(std::unique_ptr<LevelChange> change, std::vector<int> selection_after) {
     follow_entity_renames(doc_.level, *change);
+    follow_structure(*change);
     change->selection_after = std::move(selection_after);
     history_.execute(doc_, std::move(change));
 }
@@ -35,7 +36,8 @@ bool Editor::redo() {
 }
 
 Result<void> Editor::modify_selection(std::string name, const std::function<Result<void>(Entity&)>& edit,
-                                      std::string merge_key, const StartEdit& start_edit) {
+                                      std::string merge_key, const StartEdit& start_edit,
+                                      const FrameEdit& frame_edit) {
     if (doc_.selection.empty())
         return Error(name + ": nothing is selected", Location{}, "select entities first");
     auto change = std::make_unique<LevelChange>();
@@ -66,6 +68,15 @@ Result<void> Editor::modify_selection(std::string name, const std::function<Resu
             return Error(name + ": the player start would leave the finite numbers");
         if (!(after == doc_.level.player_start))
             change->player_start = Change<level::PlayerStart>{doc_.level.player_start, after};
+    }
+    if (frame_edit && !change->updates.empty() && !doc_.level.editor.groups.empty()) {
+        std::vector<int> moved;
+        for (const EntityUpdate& u : change->updates) moved.push_back(u.after.id);
+        std::sort(moved.begin(), moved.end());
+        level::EditorData data = doc_.level.editor;
+        for (int id : groups_wholly_in(data, moved)) frame_edit(*data.find_group(id));
+        if (data != doc_.level.editor)
+            change->editor_data = Change<level::EditorData>{doc_.level.editor, data};
     }
     if (change->empty()) return ok(); // nothing actually changed: no history step
     change->set_name(std::move(name));
@@ -111,7 +122,8 @@ Result<void> Editor::move_selection(Vec3 delta, bool snap, std::string merge_key
         [&](level::PlayerStart& start) -> Result<void> {
             start.position += delta;
             return ok();
-        });
+        },
+        [&](level::Group& group) { group.position += delta; });
 }
 
 Result<void> Editor::nudge(int axis, int direction) {
@@ -212,6 +224,7 @@ Result<void> Editor::duplicate(std::optional<Vec3> offset) {
     if (!is_finite(delta)) return Error("duplicate: the offset must be finite numbers");
     auto change = std::make_unique<LevelChange>();
     std::vector<int> new_ids;
+    std::unordered_map<int, int> copies; // original id -> copy's id
     int next = doc_.level.next_id;
     const std::unordered_set<int> selected(doc_.selection.begin(), doc_.selection.end());
     for (const auto& e : doc_.level.entities) { // level order, so copies keep their relative order
@@ -222,11 +235,17 @@ Result<void> Editor::duplicate(std::optional<Vec3> offset) {
             return Error("Duplicate: " + describe(e) + ": " + r.error().message, Location{}, r.error().hint);
         change->insertions.push_back({doc_.level.entities.size() + new_ids.size(), copy});
         new_ids.push_back(copy.id);
+        copies.emplace(e.id, copy.id);
     }
     if (new_ids.empty()) return Error("Duplicate: nothing is selected", Location{}, "select entities first");
     change->set_name(new_ids.size() == 1 ? "Duplicate"
                                          : "Duplicate " + std::to_string(new_ids.size()) + " entities");
     change->next_id = Change<int>{doc_.level.next_id, next};
+    if (!doc_.level.editor.empty()) { // groups copied whole stay groups (a prefab instance stays linked)
+        level::EditorData data = doc_.level.editor;
+        copy_structure(data, copies, delta);
+        change->editor_data = Change<level::EditorData>{doc_.level.editor, std::move(data)};
+    }
     execute(std::move(change), new_ids);
     return ok();
 }

@@ -16,7 +16,8 @@ namespace ks::editor {
 namespace fs = std::filesystem;
 
 void Editor::replace_level(level::Level level, fs::path path) {
-    doc_ = Document{std::move(level), {}, {}, {}, doc_.grid};
+    doc_ = Document{std::move(level), {}, {}, {}, doc_.grid, 0};
+    refresh_view_sets(doc_);
     history_.clear();
     path_ = std::move(path);
     disk_ = path_.empty() ? DiskFingerprint{} : fingerprint_file(path_);
@@ -46,6 +47,11 @@ Result<void> Editor::open(const fs::path& path) {
     disk_ = fingerprint_text(*text, disk_.mtime);
     recovery_ = find_recovery(path);
     remember_recent(path);
+    // Prefabs edited since the level was saved: its instances follow them now (one undoable step).
+    if (std::any_of(doc_.level.editor.groups.begin(), doc_.level.editor.groups.end(),
+                    [](const level::Group& g) { return g.has_prefab; }))
+        if (auto updated = update_prefab_instances(); !updated)
+            log::warn(path.string(), ": prefab instances not updated: ", updated.error().str());
     return ok();
 }
 

@@ -51,6 +51,13 @@ Result<void> Editor::rotate_selection_about(int axis, float degrees, RotationSpa
             start.position = turned_position(start.position);
             start.yaw = wrap_degrees(start.yaw + degrees);
             return ok();
+        },
+        // A group turned as one about y keeps its frame with its members (a prefab instance stays in line
+        // with its prefab); other turns leave the frame, and prefab members record what they changed.
+        [&](level::Group& group) {
+            if (axis != 1 || (!around_pivot && positions.size() > 1)) return;
+            group.position = turned_position(group.position);
+            group.yaw = wrap_degrees(group.yaw + degrees);
         });
 }
 

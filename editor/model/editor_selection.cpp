@@ -1,4 +1,4 @@
-// Editor: selection, visibility and locks (view state, not history steps).
+// Editor: selection (view state, not history steps), and hiding and locking one entity (saved steps).
 #include "model/editor.h"
 
 namespace ks::editor {
@@ -30,7 +30,7 @@ void apply_mode(std::vector<int>& selection, const std::vector<int>& ids, Select
 }
 } // namespace
 
-Editor::Editor() = default;
+Editor::Editor() : prefabs_(default_prefab_folders()) {}
 
 Result<void> Editor::select(const std::vector<int>& ids, SelectMode mode) {
     for (int id : ids) {
@@ -74,20 +74,65 @@ std::vector<const level::Entity*> Editor::selected_entities() const {
     return out;
 }
 
-void Editor::set_hidden(int id, bool hidden) {
-    if (hidden)
-        doc_.hidden.insert(id);
-    else
-        doc_.hidden.erase(id);
+Result<void> Editor::set_hidden(int id, bool hidden) {
+    const level::Entity* e = doc_.level.find(id);
+    if (!e) return Error("hide: no entity with id " + std::to_string(id));
+    level::EditorData data = doc_.level.editor;
+    auto& list = data.hidden;
+    auto at = std::lower_bound(list.begin(), list.end(), id);
+    const bool listed = at != list.end() && *at == id;
+    if (hidden && !listed) list.insert(at, id);
+    if (!hidden && listed) list.erase(at);
+    change_structure(std::string(hidden ? "Hide " : "Show ") + std::string(level::type_name(e->type())) +
+                         " " + std::to_string(id),
+                     std::move(data), doc_.selection);
+    return ok();
 }
 
-void Editor::set_locked(int id, bool locked) {
-    if (locked) {
-        doc_.locked.insert(id);
-        std::erase(doc_.selection, id);
-    } else {
-        doc_.locked.erase(id);
+Result<void> Editor::set_locked(int id, bool locked) {
+    const level::Entity* e = doc_.level.find(id);
+    if (!e) return Error("lock: no entity with id " + std::to_string(id));
+    level::EditorData data = doc_.level.editor;
+    auto& list = data.locked;
+    auto at = std::lower_bound(list.begin(), list.end(), id);
+    const bool listed = at != list.end() && *at == id;
+    if (locked && !listed) list.insert(at, id);
+    if (!locked && listed) list.erase(at);
+    std::vector<int> selection = doc_.selection;
+    if (locked) std::erase(selection, id);
+    change_structure(std::string(locked ? "Lock " : "Unlock ") + std::string(level::type_name(e->type())) +
+                         " " + std::to_string(id),
+                     std::move(data), std::move(selection));
+    return ok();
+}
+
+int Editor::select_picked_where(const std::function<bool(const level::Entity&)>& accept, SelectMode mode) {
+    std::vector<int> ids;
+    int accepted = 0;
+    for (const auto& e : doc_.level.entities) {
+        if (doc_.hidden.contains(e.id) || doc_.locked.contains(e.id) || !accept(e)) continue;
+        ++accepted;
+        for (int id : pick_unit_entities(doc_.level.editor, doc_.open_group, e.id))
+            if (!doc_.locked.contains(id) && std::find(ids.begin(), ids.end(), id) == ids.end())
+                ids.push_back(id);
     }
+    apply_mode(doc_.selection, ids, mode);
+    return accepted;
+}
+
+Result<void> Editor::select_picked(int entity_id, SelectMode mode) {
+    if (!doc_.level.find(entity_id)) return Error("no entity with id " + std::to_string(entity_id));
+    const level::EditorData& data = doc_.level.editor;
+    if (doc_.open_group != 0) {
+        const int parent = parent_group_of_entity(data, entity_id);
+        if (parent == 0 || !group_within(data, parent, doc_.open_group)) doc_.open_group = 0;
+    }
+    std::vector<int> ids;
+    for (int id : pick_unit_entities(data, doc_.open_group, entity_id))
+        if (!doc_.locked.contains(id)) ids.push_back(id);
+    if (ids.empty()) return Error("entity " + std::to_string(entity_id) + " is locked");
+    apply_mode(doc_.selection, ids, mode);
+    return ok();
 }
 
 } // namespace ks::editor

@@ -63,8 +63,9 @@ enum class ScriptOp {
     ExpectClean,
     ExpectCampaign,
     ExpectPlayerStart,
-    Dojo,  // a command on the clip file (ScriptStep::dojo): see DojoOp
-    Logic, // a link, objective or naming command (ScriptStep::logic): see LogicOp
+    Dojo,      // a command on the clip file (ScriptStep::dojo): see DojoOp
+    Logic,     // a link, objective or naming command (ScriptStep::logic): see LogicOp
+    Structure, // a group, layer or prefab command (ScriptStep::structure): see StructureOp
 };
 
 // The dojo context: commands on an animation clip file (`dojo open`, `clip ...`, `blend ...`, `event ...`,
@@ -150,6 +151,56 @@ struct LogicStep {
     level::Link link;
 };
 
+// Groups, layers and prefabs (script_structure.h) and their expectations.
+enum class StructureOp {
+    Group,
+    Ungroup,
+    Enter,
+    Exit,
+    Pick,
+    LayerAdd,
+    LayerRename,
+    LayerRemove,
+    LayerShow,
+    LayerHide,
+    LayerLock,
+    LayerUnlock,
+    LayerActive,
+    LayerMove,
+    PrefabFolder,
+    PrefabSave,
+    PrefabPlace,
+    PrefabApply,
+    PrefabUpdate,
+    PrefabRevert,
+    PrefabUnlink,
+    ExpectGroups,
+    ExpectGroup,
+    ExpectLayers,
+    ExpectLayer,
+    ExpectInstance,
+    ExpectOverride,
+    ExpectNoOverride,
+    ExpectHidden,
+    ExpectShown,
+    ExpectOpenGroup,
+};
+
+// One structure line. `layer` names a layer by name or index (resolved when the line runs); `id` is a
+// group id (or the entity of `pick`), `entity_id` a member; `name` a group, layer or prefab name, `text` a
+// title, field or path; `count` what an expectation counts; `state` a layer's expected visible/locked
+// words ("visible", "hidden", "locked", "unlocked").
+struct StructureStep {
+    StructureOp op = StructureOp::Group;
+    std::string layer, name, text;
+    std::vector<std::string> state;
+    int id = 0, entity_id = 0, count = 0;
+    Vec3 position{0.0f};
+    float yaw = 0.0f;
+    bool replace = false;
+    SelectMode mode = SelectMode::Replace;
+};
+
 // One parsed line. Which members matter depends on op (see script_parser.cpp).
 struct ScriptStep {
     ScriptOp op = ScriptOp::New;
@@ -165,6 +216,7 @@ struct ScriptStep {
     std::string text, text2; // field names, values, paths, names
     DojoStep dojo;           // ScriptOp::Dojo
     LogicStep logic;         // ScriptOp::Logic
+    StructureStep structure; // ScriptOp::Structure
 };
 
 struct Script {

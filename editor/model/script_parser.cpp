@@ -2,6 +2,7 @@
 #include "model/script.h"
 #include "model/script_dojo.h"
 #include "model/script_logic.h"
+#include "model/script_structure.h"
 #include "model/script_tokens.h"
 
 namespace ks::editor {
@@ -65,7 +66,8 @@ class LineParser {
              "campaign add FILE [title TEXT...]"},
             {"expect", ScriptOp::ExpectValid, &LineParser::expect,
              "expect count TYPE N | valid | issue RULE [ID] | no_issue RULE | selected N | "
-             "field ID FIELD VALUE | patrol ID POINTS | player_start X,Y,Z [yaw D] | dirty | clean | campaign "
+             "field ID FIELD VALUE | patrol ID POINTS | player_start X,Y,Z [yaw D] | dirty | clean | "
+             "campaign "
              "FILE N; level logic: expect links | link | "
              "objectives ...; clip files: expect clip | blend | events | event | key | curve | dojo ..."},
         };
@@ -74,6 +76,9 @@ class LineParser {
         if (is_dojo_command(word) ||
             (word == "expect" && tokens_.size() > 1 && is_dojo_expectation(tokens_[1].text)))
             return parse_dojo_line(line_, tokens_, line_no_, file_);
+        if (is_structure_command(word) ||
+            (word == "expect" && tokens_.size() > 1 && is_structure_expectation(tokens_[1].text)))
+            return parse_structure_line(line_, tokens_, line_no_, file_);
         if (is_logic_command(word) ||
             (word == "expect" && tokens_.size() > 1 && is_logic_expectation(tokens_[1].text)))
             return parse_logic_line(line_, tokens_, line_no_, file_);
@@ -83,7 +88,9 @@ class LineParser {
             0, "unknown command '" + std::string(word) + "'",
             "commands: new open save place select move nudge rotate scale set reset setting player_start "
             "level_name delete duplicate copy paste undo redo grid snap lock unlock hide show begin commit "
-            "cancel fix patrol recover campaign expect; level logic: name link objective; clip files: dojo "
+            "cancel fix patrol recover campaign expect; groups, layers, prefabs: group ungroup enter exit "
+            "pick "
+            "layer prefab; level logic: name link objective; clip files: dojo "
             "clip blend "
             "event key");
     }

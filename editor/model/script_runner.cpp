@@ -3,6 +3,7 @@
 #include "model/script.h"
 #include "model/script_dojo.h"
 #include "model/script_logic.h"
+#include "model/script_structure.h"
 #include "model/script_tokens.h"
 
 #include "core/log.h"
@@ -103,6 +104,8 @@ class Runner {
             return run_dojo_step(s.dojo, dojo_, script_.base_dir, report_);
         case ScriptOp::Logic:
             return run_logic_step(s.logic, editor_, report_);
+        case ScriptOp::Structure:
+            return run_structure_step(s.structure, editor_, script_.base_dir, report_);
         }
         return ok();
     }
@@ -325,10 +328,10 @@ class Runner {
     Result<void> set_lock_or_visibility(const ScriptStep& s) {
         for (int id : s.ids) {
             if (!editor_.level().find(id)) return Error("no entity with id " + std::to_string(id));
-            if (s.op == ScriptOp::Lock || s.op == ScriptOp::Unlock)
-                editor_.set_locked(id, s.op == ScriptOp::Lock);
-            else
-                editor_.set_hidden(id, s.op == ScriptOp::Hide);
+            auto done = s.op == ScriptOp::Lock || s.op == ScriptOp::Unlock
+                            ? editor_.set_locked(id, s.op == ScriptOp::Lock)
+                            : editor_.set_hidden(id, s.op == ScriptOp::Hide);
+            if (!done) return done;
         }
         return ok();
     }

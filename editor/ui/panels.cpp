@@ -133,14 +133,14 @@ void EditorApp::outliner_panel(float x, float y, float w, float h) {
         const bool hidden = doc.hidden.contains(e.id), locked = doc.locked.contains(e.id);
         ImGui::PushStyleColor(ImGuiCol_Text,
                               hidden ? ImVec4(0.45f, 0.45f, 0.5f, 1) : ImVec4(0.8f, 0.85f, 0.95f, 1));
-        if (ImGui::SmallButton(hidden ? "-" : "o")) editor_.set_hidden(e.id, !hidden);
+        if (ImGui::SmallButton(hidden ? "-" : "o")) report(editor_.set_hidden(e.id, !hidden), "Hide");
         ImGui::PopStyleColor();
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(hidden ? "Hidden: click to show" : "Visible: click to hide");
         ImGui::SameLine();
         ImGui::PushStyleColor(ImGuiCol_Text,
                               locked ? ImVec4(1.0f, 0.7f, 0.3f, 1) : ImVec4(0.45f, 0.45f, 0.5f, 1));
-        if (ImGui::SmallButton(locked ? "L" : ".")) editor_.set_locked(e.id, !locked);
+        if (ImGui::SmallButton(locked ? "L" : ".")) report(editor_.set_locked(e.id, !locked), "Lock");
         ImGui::PopStyleColor();
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(locked ? "Locked: click to unlock" : "Click to lock (no picking)");

@@ -28,8 +28,8 @@ TEST_CASE(
     CHECK(ed.select_all_of_type(EntityType::Robot) == 3);
     CHECK(ed.doc().selection == std::vector<int>{a, b, d});
 
-    ed.set_locked(b, true);
-    ed.set_hidden(d, true);
+    REQUIRE(ed.set_locked(b, true).ok());
+    REQUIRE(ed.set_hidden(d, true).ok());
     CHECK(ed.doc().selection == std::vector<int>{a, d}); // locking drops it from the selection
     CHECK(ed.select_all_of_type(EntityType::Robot) == 1);
     CHECK(ed.doc().selection == std::vector<int>{a});
@@ -48,7 +48,7 @@ TEST_CASE(
     CHECK(ed.select_all() == 2);
 
     // Locked entities are not edited even when an operation names them.
-    ed.set_locked(b, true);
+    REQUIRE(ed.set_locked(b, true).ok());
     CHECK_FALSE(ed.rename(b, "x").ok());
     CHECK_FALSE(ed.delete_entities({b}).ok());
 }

@@ -173,9 +173,16 @@ TEST_CASE("failed link and objective edits change nothing and say what is wrong"
     fails(ed.link_set(trigger, 0, link("on_enter", "Gate", "explode")), "link 0: unknown action");
     fails(ed.link_remove(trigger, -1), "no link -1");
     fails(ed.link_remove(LinkOwner::level(), 0), "no link 0", "has none");
-    ed.set_locked(h.trigger, true);
-    fails(ed.link_add(trigger, link("on_enter", "Gate", "close")), "locked", "unlock");
-    ed.set_locked(h.trigger, false);
+    REQUIRE(ed.set_locked(h.trigger, true).ok()); // a step of its own (saved in the level's editor section)
+    {
+        const Snapshot locked(ed);
+        auto refused = ed.link_add(trigger, link("on_enter", "Gate", "close"));
+        REQUIRE_FALSE(refused.ok());
+        CHECK(refused.error().message.find("locked") != std::string::npos);
+        CHECK(refused.error().hint.find("unlock") != std::string::npos);
+        CHECK(locked.same(ed));
+    }
+    REQUIRE(ed.undo()); // the lock
 
     fails(ed.objective_add({"clear", "Again", {}, {}}), "already an objective \"clear\"");
     fails(ed.objective_add({"", "No id", {}, {}}), "needs an id");
@@ -293,7 +300,7 @@ TEST_CASE("ensure_link_name gives an entity a unique one-word name when it has n
     CHECK(ed.level().find(h.trigger)->name == "Hall trigger");
 
     CHECK_FALSE(ed.ensure_link_name(999).ok());
-    ed.set_locked(h.other_door, true);
+    REQUIRE(ed.set_locked(h.other_door, true).ok());
     REQUIRE(ed.rename(h.other_door, "").ok() == false);
     CHECK(ed.ensure_link_name(h.other_door).ok()); // named uniquely already: nothing to change
 }

@@ -34,9 +34,9 @@ TEST_CASE("top view picks with parallel rays anywhere in the picture") {
     CHECK(pick_entity(editor.doc(), top.ray(at_pickup), all_shown).id == pickup);
     CHECK(pick_entity(editor.doc(), top.ray(at_robot + Vec2(40, 0)), all_shown).id == 0);
     // Locked and hidden entities are not picked.
-    editor.set_locked(robot, true);
+    REQUIRE(editor.set_locked(robot, true).ok());
     CHECK(pick_entity(editor.doc(), top.ray(at_robot), all_shown).id == 0);
-    editor.set_locked(robot, false);
+    REQUIRE(editor.set_locked(robot, false).ok());
     CHECK(pick_entity(editor.doc(), top.ray(at_robot), [&](const level::Entity& e) {
               return e.id != robot;
           }).id == 0);
@@ -52,7 +52,7 @@ TEST_CASE("front view picks the nearest of entities in line along the view") {
     REQUIRE(front.project(Vec3(0, 1, 0), p));
     const PickHit hit = pick_entity(editor.doc(), front.ray(p), all_shown);
     CHECK(hit.id == front_robot);
-    editor.set_hidden(front_robot, true);
+    REQUIRE(editor.set_hidden(front_robot, true).ok());
     CHECK(pick_entity(editor.doc(), front.ray(p), [&](const level::Entity& e) {
               return !editor.doc().hidden.contains(e.id);
           }).id == back);

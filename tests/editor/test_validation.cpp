@@ -333,7 +333,7 @@ TEST_CASE("validation: issues are cached per revision and clicking one selects t
     REQUIRE(ed.select_issue(issues[0]).ok());
     CHECK(ed.doc().selection == std::vector<int>{pickup});
     // A locked offender cannot be selected or fixed.
-    ed.set_locked(pickup, true);
+    REQUIRE(ed.set_locked(pickup, true).ok());
     CHECK_FALSE(ed.select_issue(issues[0]).ok());
     CHECK_FALSE(ed.apply_quick_fix(issues[0]).ok());
 }

@@ -1,0 +1,129 @@
+// Editor: layers. Each edit is one undoable step on the level's editor section (saved in the file, read
+// past by the game); the document's hidden and locked sets follow (groups.h refresh_view_sets).
+#include "model/editor.h"
+
+#include <algorithm>
+
+namespace ks::editor {
+namespace {
+using level::EditorData;
+using level::Layer;
+
+constexpr const char* kDefaultLayer = "Default";
+
+void ensure_default_layer(EditorData& data) {
+    if (data.layers.empty()) data.layers.push_back(Layer{kDefaultLayer, true, false, {}});
+}
+
+Result<void> check_layer(const EditorData& data, int index, const std::string& what) {
+    if (index >= 0 && index < static_cast<int>(data.layers.size())) return ok();
+    return Error(what + ": no layer " + std::to_string(index), Location{},
+                 data.layers.empty()
+                     ? "the level has no layers yet: add one first"
+                     : "layers count from 0 (Default) to " + std::to_string(data.layers.size() - 1));
+}
+
+} // namespace
+
+Result<int> Editor::layer_add(std::string name) {
+    if (name.empty() || name.size() > static_cast<size_t>(level::kMaxLayerNameLength))
+        return Error("Add layer: a layer's name has 1 to " + std::to_string(level::kMaxLayerNameLength) +
+                         " characters",
+                     Location{}, "type a name");
+    EditorData data = doc_.level.editor;
+    ensure_default_layer(data);
+    for (const Layer& layer : data.layers)
+        if (layer.name == name)
+            return Error("Add layer: a layer named '" + name + "' exists", Location{}, "choose another name");
+    if (data.layers.size() >= static_cast<size_t>(level::kMaxLayers))
+        return Error("Add layer: a level has at most " + std::to_string(level::kMaxLayers) + " layers",
+                     Location{}, "merge layers you no longer need");
+    data.layers.push_back(Layer{name, true, false, {}});
+    const int index = static_cast<int>(data.layers.size()) - 1;
+    change_structure("Add layer " + name, std::move(data), doc_.selection);
+    return index;
+}
+
+Result<void> Editor::layer_rename(int index, std::string name) {
+    if (auto r = check_layer(doc_.level.editor, index, "Rename layer"); !r) return r;
+    if (name.empty() || name.size() > static_cast<size_t>(level::kMaxLayerNameLength))
+        return Error("Rename layer: a layer's name has 1 to " + std::to_string(level::kMaxLayerNameLength) +
+                         " characters",
+                     Location{}, "type a name");
+    EditorData data = doc_.level.editor;
+    for (size_t i = 0; i < data.layers.size(); ++i)
+        if (static_cast<int>(i) != index && data.layers[i].name == name)
+            return Error("Rename layer: a layer named '" + name + "' exists", Location{},
+                         "choose another name");
+    data.layers[static_cast<size_t>(index)].name = std::move(name);
+    change_structure("Rename layer", std::move(data), doc_.selection);
+    return ok();
+}
+
+Result<void> Editor::layer_remove(int index) {
+    if (auto r = check_layer(doc_.level.editor, index, "Remove layer"); !r) return r;
+    if (index == 0)
+        return Error("Remove layer: the Default layer stays", Location{},
+                     "it holds every entity no other layer lists");
+    EditorData data = doc_.level.editor;
+    const std::string name = data.layers[static_cast<size_t>(index)].name;
+    data.layers.erase(data.layers.begin() + index);
+    if (data.active_layer == index)
+        data.active_layer = 0;
+    else if (data.active_layer > index)
+        --data.active_layer;
+    change_structure("Remove layer " + name, std::move(data), doc_.selection);
+    return ok();
+}
+
+Result<void> Editor::layer_set_visible(int index, bool visible) {
+    if (auto r = check_layer(doc_.level.editor, index, visible ? "Show layer" : "Hide layer"); !r) return r;
+    EditorData data = doc_.level.editor;
+    Layer& layer = data.layers[static_cast<size_t>(index)];
+    layer.visible = visible;
+    const std::string name = (visible ? "Show layer " : "Hide layer ") + layer.name;
+    change_structure(name, std::move(data), doc_.selection);
+    return ok();
+}
+
+Result<void> Editor::layer_set_locked(int index, bool locked) {
+    if (auto r = check_layer(doc_.level.editor, index, locked ? "Lock layer" : "Unlock layer"); !r) return r;
+    EditorData data = doc_.level.editor;
+    Layer& layer = data.layers[static_cast<size_t>(index)];
+    layer.locked = locked;
+    const std::string name = (locked ? "Lock layer " : "Unlock layer ") + layer.name;
+    change_structure(name, std::move(data), doc_.selection);
+    return ok();
+}
+
+Result<void> Editor::layer_set_active(int index) {
+    if (auto r = check_layer(doc_.level.editor, index, "Set active layer"); !r) return r;
+    EditorData data = doc_.level.editor;
+    data.active_layer = index;
+    std::string name = "Set active layer " + data.layers[static_cast<size_t>(index)].name;
+    change_structure(std::move(name), std::move(data), doc_.selection);
+    return ok();
+}
+
+Result<void> Editor::move_selection_to_layer(int index) {
+    if (auto r = check_layer(doc_.level.editor, index, "Move to layer"); !r) return r;
+    std::vector<int> ids;
+    for (int id : doc_.selection)
+        if (doc_.level.find(id) && !doc_.locked.contains(id)) ids.push_back(id);
+    if (ids.empty()) return Error("Move to layer: nothing is selected", Location{}, "select entities first");
+    EditorData data = doc_.level.editor;
+    for (size_t i = 1; i < data.layers.size(); ++i)
+        for (int id : ids) std::erase(data.layers[i].entities, id);
+    if (index > 0) {
+        auto& list = data.layers[static_cast<size_t>(index)].entities;
+        list.insert(list.end(), ids.begin(), ids.end());
+        std::sort(list.begin(), list.end());
+        list.erase(std::unique(list.begin(), list.end()), list.end());
+    }
+    const std::string name =
+        "Move " + std::to_string(ids.size()) + " to layer " + data.layers[static_cast<size_t>(index)].name;
+    change_structure(name, std::move(data), doc_.selection);
+    return ok();
+}
+
+} // namespace ks::editor

@@ -1,0 +1,274 @@
+// Groups and layers in the editor model: Ctrl+G / Ctrl+Shift+G, what a click picks inside and outside an
+// entered group, moving, turning and duplicating a group as one, deleting members, layers' visibility and
+// locks, and everything surviving save, reopen and undo.
+#include "editor_test_util.h"
+#include "model/script.h"
+
+using namespace ks;
+using namespace ks::editor;
+
+namespace {
+
+// Four walls 1..4 along x, a robot 5.
+Editor four_walls() {
+    Editor ed;
+    for (int i = 0; i < 4; ++i) REQUIRE(ed.place(level::EntityType::Wall, Vec3(4.0f * i, 0, 0)).ok());
+    REQUIRE(ed.place(level::EntityType::Robot, Vec3(0, 0, 8)).ok());
+    return ed;
+}
+
+std::vector<int> sorted(std::vector<int> ids) {
+    std::sort(ids.begin(), ids.end());
+    return ids;
+}
+
+} // namespace
+
+TEST_CASE("Ctrl+G groups the selection; a click on a member selects the group; ungroup dissolves it") {
+    Editor ed = four_walls();
+    REQUIRE(ed.select({1, 2}).ok());
+    auto group = ed.group_selection("Pair");
+    REQUIRE(group.ok());
+    CHECK(*group == 1);
+    const level::Group* g = ed.level().editor.find_group(1);
+    REQUIRE(g);
+    CHECK(g->name == "Pair");
+    CHECK(g->entities == std::vector<int>{1, 2});
+    CHECK(g->position == Vec3(2, 0, 0)); // the selection's centre at floor level
+    REQUIRE(ed.select_picked(2).ok());
+    CHECK(sorted(ed.doc().selection) == std::vector<int>{1, 2});
+    CHECK(ed.selected_groups() == std::vector<int>{1});
+    REQUIRE(ed.select_picked(3).ok());
+    CHECK(ed.doc().selection == std::vector<int>{3});
+
+    // A group of the group and a wall: nesting; the click picks the outermost.
+    REQUIRE(ed.select({1, 2, 3}).ok());
+    auto outer = ed.group_selection();
+    REQUIRE(outer.ok());
+    CHECK(ed.level().editor.find_group(*outer)->groups == std::vector<int>{1});
+    CHECK(ed.level().editor.find_group(*outer)->entities == std::vector<int>{3});
+    REQUIRE(ed.select_picked(1).ok());
+    CHECK(sorted(ed.doc().selection) == std::vector<int>{1, 2, 3});
+
+    // Entering the outer group: a click picks its child group, or its own member.
+    REQUIRE(ed.enter_group(*outer).ok());
+    REQUIRE(ed.select_picked(1).ok());
+    CHECK(sorted(ed.doc().selection) == std::vector<int>{1, 2});
+    REQUIRE(ed.select_picked(3).ok());
+    CHECK(ed.doc().selection == std::vector<int>{3});
+    REQUIRE(ed.enter_group(1).ok());
+    REQUIRE(ed.select_picked(2).ok());
+    CHECK(ed.doc().selection == std::vector<int>{2});
+    // A click outside the entered group leaves it.
+    REQUIRE(ed.select_picked(5).ok());
+    CHECK(ed.open_group() == 0);
+
+    REQUIRE(ed.select_picked(1).ok());
+    REQUIRE(ed.ungroup_selection().ok());
+    CHECK(ed.level().editor.groups.size() == 1); // the inner pair is top-level again
+    CHECK(ed.level().editor.find_group(1) != nullptr);
+    CHECK(ed.undo());
+    CHECK(ed.level().editor.groups.size() == 2);
+    CHECK(ed.undo()); // the outer group
+    CHECK(ed.undo()); // the pair
+    CHECK(ed.level().editor.empty());
+}
+
+TEST_CASE("a group moves, turns and duplicates as one; its frame follows; copies stay groups") {
+    Editor ed = four_walls();
+    REQUIRE(ed.select({1, 2}).ok());
+    REQUIRE(ed.group_selection("Pair").ok());
+    REQUIRE(ed.select_picked(1).ok());
+    REQUIRE(ed.move_selection(Vec3(0, 0, 3)).ok());
+    CHECK(ed.level().find(1)->position == Vec3(0, 0, 3));
+    CHECK(ed.level().find(2)->position == Vec3(4, 0, 3));
+    CHECK(ed.level().editor.find_group(1)->position == Vec3(2, 0, 3));
+    REQUIRE(ed.rotate_selection(90).ok());
+    const level::Group* g = ed.level().editor.find_group(1);
+    CHECK(g->yaw == doctest::Approx(90));
+    CHECK(g->position.x == doctest::Approx(2));
+    CHECK(g->position.z == doctest::Approx(3));
+    CHECK(ed.level().find(1)->position.z == doctest::Approx(5)); // (-2, 0) turned a quarter: (0, 2)
+    REQUIRE(ed.duplicate(Vec3(10, 0, 0)).ok());
+    REQUIRE(ed.level().editor.groups.size() == 2);
+    const level::Group& copy = ed.level().editor.groups[1];
+    CHECK(copy.id == 2);
+    CHECK(copy.name == "Pair");
+    CHECK(copy.entities == std::vector<int>{6, 7});
+    CHECK(copy.position.x == doctest::Approx(12));
+    CHECK(sorted(ed.doc().selection) == std::vector<int>{6, 7});
+    // Moving one member (inside the entered group) leaves the frame.
+    REQUIRE(ed.enter_group(1).ok());
+    REQUIRE(ed.select_picked(1).ok());
+    REQUIRE(ed.move_selection(Vec3(1, 0, 0)).ok());
+    CHECK(ed.level().editor.find_group(1)->position.x == doctest::Approx(2));
+}
+
+TEST_CASE("deleting members: empty groups go; undo brings entities and group back bit for bit") {
+    Editor ed = four_walls();
+    REQUIRE(ed.select({1, 2}).ok());
+    REQUIRE(ed.group_selection().ok());
+    const std::string grouped = editor_test::text_of(ed);
+    REQUIRE(ed.delete_entities({1}).ok());
+    CHECK(ed.level().editor.find_group(1)->entities == std::vector<int>{2});
+    REQUIRE(ed.delete_entities({2}).ok());
+    CHECK(ed.level().editor.groups.empty());
+    CHECK(ed.undo());
+    CHECK(ed.undo());
+    CHECK(editor_test::text_of(ed) == grouped);
+}
+
+TEST_CASE("grouping refuses nothing selected and a selection that is one group already") {
+    Editor ed = four_walls();
+    ed.clear_selection();
+    CHECK(!ed.group_selection().ok());
+    REQUIRE(ed.select({1, 2}).ok());
+    REQUIRE(ed.group_selection().ok());
+    auto again = ed.group_selection();
+    REQUIRE(!again.ok());
+    CHECK(again.error().message.find("one group already") != std::string::npos);
+    CHECK(!ed.enter_group(42).ok());
+}
+
+TEST_CASE("layers: new entities join the active layer; hide and lock a layer; remove it; undo") {
+    Editor ed = four_walls();
+    auto walls = ed.layer_add("Walls");
+    REQUIRE(walls.ok());
+    CHECK(*walls == 1);
+    CHECK(ed.level().editor.layers.size() == 2);
+    CHECK(ed.level().editor.layers[0].name == "Default");
+    CHECK(!ed.layer_add("Walls").ok()); // names are unique
+    CHECK(!ed.layer_add("").ok());
+    REQUIRE(ed.select({1, 2, 3, 4}).ok());
+    REQUIRE(ed.move_selection_to_layer(1).ok());
+    CHECK(layer_of(ed.level().editor, 3) == 1);
+    CHECK(layer_of(ed.level().editor, 5) == 0);
+    REQUIRE(ed.layer_set_active(1).ok());
+    auto placed = ed.place(level::EntityType::Wall, Vec3(0, 0, -8));
+    REQUIRE(placed.ok());
+    CHECK(layer_of(ed.level().editor, *placed) == 1);
+
+    REQUIRE(ed.layer_set_visible(1, false).ok());
+    CHECK(ed.doc().hidden.contains(1));
+    CHECK(!ed.doc().hidden.contains(5));
+    CHECK(ed.select_all() == 1); // only the robot is visible
+    REQUIRE(ed.layer_set_visible(1, true).ok());
+    REQUIRE(ed.layer_set_locked(1, true).ok());
+    CHECK(ed.doc().locked.contains(2));
+    CHECK(!ed.select({2}).ok());
+    CHECK(!ed.select_picked(2).ok());
+    CHECK(ed.undo()); // unlock again
+    CHECK(!ed.doc().locked.contains(2));
+    REQUIRE(ed.layer_remove(1).ok());
+    CHECK(ed.level().editor.layers.size() == 1);
+    CHECK(layer_of(ed.level().editor, 1) == 0);
+    CHECK(ed.level().editor.active_layer == 0);
+    CHECK(!ed.layer_remove(0).ok()); // Default stays
+    CHECK(!ed.layer_set_visible(7, false).ok());
+}
+
+TEST_CASE("hiding and locking one entity are saved steps") {
+    Editor ed = four_walls();
+    REQUIRE(ed.set_hidden(2, true).ok());
+    REQUIRE(ed.set_locked(3, true).ok());
+    CHECK(ed.has_unsaved_changes());
+    CHECK(ed.level().editor.hidden == std::vector<int>{2});
+    CHECK(ed.level().editor.locked == std::vector<int>{3});
+    CHECK(ed.doc().hidden.contains(2));
+    CHECK(ed.doc().locked.contains(3));
+    CHECK(!ed.set_hidden(99, true).ok());
+    CHECK(ed.undo());
+    CHECK(!ed.doc().locked.contains(3));
+}
+
+TEST_CASE("layers, groups, hidden and locked entities survive save and reopen exactly") {
+    test::ScratchDir dir;
+    Editor ed = four_walls();
+    REQUIRE(ed.layer_add("Walls").ok());
+    REQUIRE(ed.select({1, 2}).ok());
+    REQUIRE(ed.move_selection_to_layer(1).ok());
+    REQUIRE(ed.group_selection("Pair").ok());
+    REQUIRE(ed.layer_set_visible(1, false).ok());
+    REQUIRE(ed.set_locked(5, true).ok());
+    REQUIRE(ed.set_hidden(4, true).ok());
+    REQUIRE(ed.save_as(dir / "structure.json").ok());
+    const std::string saved = editor_test::text_of(ed);
+    Editor again;
+    REQUIRE(again.open(dir / "structure.json").ok());
+    CHECK(editor_test::text_of(again) == saved);
+    CHECK(!again.has_unsaved_changes());
+    CHECK(again.level().editor == ed.level().editor);
+    CHECK(again.doc().hidden == ed.doc().hidden);
+    CHECK(again.doc().locked == ed.doc().locked);
+    CHECK(again.doc().hidden.contains(1)); // through the hidden layer
+    // The game reads past the editor section: the level loads with the same entities.
+    auto loaded = level::load_level_file(dir / "structure.json");
+    REQUIRE(loaded.ok());
+    CHECK(loaded->entities.size() == 5);
+}
+
+TEST_CASE("the script's group and layer lines, with expectations") {
+    Editor ed;
+    auto report = run_script_text(R"(
+place wall at 0,0,0
+place wall at 4,0,0
+place wall at 8,0,0
+select 1 2
+group Pair
+expect groups 1
+expect group 1 2
+pick 2
+expect selected 2
+select 1 2 3
+group
+enter 2
+pick 1
+expect selected 2
+expect open_group 2
+exit
+expect open_group 0
+layer add Walls
+layer Walls move
+expect layer Walls 2 visible unlocked
+layer Walls hide
+expect hidden 1
+expect shown 3
+layer 1 show
+expect shown 1
+layer Walls lock
+expect layer 1 2 locked
+expect layers 2
+ungroup
+)",
+                                  "structure.kss", {}, ed);
+    // ungroup with nothing selected (the layer lock dropped the selection) is a clear error
+    REQUIRE(!report.ok());
+    INFO(report.error().str());
+    CHECK(report.error().str().find("structure.kss:30") != std::string::npos);
+    CHECK(report.error().str().find("no group is selected") != std::string::npos);
+    auto bad = parse_script("layer Walls paint\n", "bad.kss");
+    REQUIRE(!bad.ok());
+    CHECK(bad.error().str().find("unknown layer command 'paint'") != std::string::npos);
+    Editor fresh;
+    auto typo = run_script_text("layer add Walls\nlayer Wals hide\n", "typo.kss", {}, fresh);
+    REQUIRE(!typo.ok());
+    INFO(typo.error().str());
+    CHECK(typo.error().str().find("did you mean 'Walls'") != std::string::npos);
+}
+
+TEST_CASE("a 2 000-entity level: a 1 000-entity group picks, moves and undoes as one") {
+    // Timings are ks_bench structure's (docs/performance.md); this checks the structure at that size.
+    Editor ed;
+    for (int i = 0; i < 2000; ++i)
+        REQUIRE(ed.place(level::EntityType::Wall, Vec3(float(i % 50) * 4, 0, float(i / 50) * 4)).ok());
+    std::vector<int> half;
+    for (int id = 1; id <= 1000; ++id) half.push_back(id);
+    REQUIRE(ed.select(half).ok());
+    REQUIRE(ed.group_selection().ok());
+    REQUIRE(ed.select_picked(500).ok());
+    CHECK(ed.doc().selection.size() == 1000);
+    REQUIRE(ed.move_selection(Vec3(0, 0, 1)).ok());
+    CHECK(ed.undo());
+    CHECK(ed.undo());
+    CHECK(ed.level().editor.groups.empty());
+}
