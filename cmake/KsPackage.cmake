@@ -12,6 +12,8 @@ set(CPACK_STRIP_FILES ON)
 # Only the install rules of this project (no third-party ones), into one package.
 set(CPACK_INSTALL_CMAKE_PROJECTS "${CMAKE_BINARY_DIR};Killswitch;ALL;/")
 
+# Debian's games layout: the programs move from usr/bin to usr/games in the package only.
+set(CPACK_PRE_BUILD_SCRIPTS ${CMAKE_SOURCE_DIR}/packaging/deb_games_layout.cmake)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT) # killswitch_0.9.0_amd64.deb
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_SECTION games)

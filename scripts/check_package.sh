@@ -22,14 +22,16 @@ DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "$deb" >/dev/null
 remove() {
     say "apt remove killswitch"
     DEBIAN_FRONTEND=noninteractive $sudo apt-get remove -y -qq killswitch >/dev/null
-    [ ! -e /usr/bin/killswitch ] || fail "/usr/bin/killswitch is still there after apt remove"
+    [ ! -e /usr/games/killswitch ] && [ ! -e /usr/share/killswitch ] || fail "files left after apt remove"
 }
 trap remove EXIT
 
 cd "$(mktemp -d)"
+# Debian's games layout: the programs are in /usr/games (on users' PATH; not on root's).
 for program in killswitch killswitch-editor; do
-    path="$(command -v "$program")" || fail "$program is not on PATH after installing"
-    out="$(env -u DISPLAY "$program" --version)"
+    path="/usr/games/$program"
+    [ -x "$path" ] || fail "$path is not installed"
+    out="$(env -u DISPLAY "$path" --version)"
     [ "$out" = "$program $version" ] || fail "$path --version printed '$out', not '$program $version'"
     if ldd "$path" | grep -q "not found"; then
         ldd "$path" | grep "not found" >&2
@@ -37,7 +39,7 @@ for program in killswitch killswitch-editor; do
     fi
     say "$path --version: $out"
 done
-summary="$(env -u DISPLAY -u KS_DATA_DIR killswitch --headless --autoplay --seed 1 --seconds 200)"
+summary="$(env -u DISPLAY -u KS_DATA_DIR /usr/games/killswitch --headless --autoplay --seed 1 --seconds 200)"
 case "$summary" in win\ after*) ;; *) fail "the installed game's bot did not win: $summary" ;; esac
 say "installed killswitch --headless --autoplay from $PWD: $summary"
 
