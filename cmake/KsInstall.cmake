@@ -1,14 +1,18 @@
 # cmake --install: the two executables in bin/, their data in share/killswitch/ (found at run time as
 # <prefix>/bin/../share/killswitch by common/core/paths.cpp), and what a desktop needs: menu entries, icons,
 # manual pages, AppStream metadata, the copyright file and changelog (packaging/, docs/building.md "Install").
-# The Debian package (cmake/KsPackage.cmake) is this tree under /usr.
+# The Debian package (cmake/KsPackage.cmake) is this tree under /usr, the programs in /usr/games.
 set(KS_INSTALL_DATADIR share/killswitch)
 set(KS_PACKAGING_DIR ${CMAKE_SOURCE_DIR}/packaging)
 set(KS_PACKAGING_OUT ${CMAKE_BINARY_DIR}/packaging)
-# The release date of this version: the AppStream release, the manual pages' footer and the changelog check.
+# The release date of this version: the AppStream release and the manual pages' footer.
 set(KS_RELEASE_DATE 2026-11-28)
 # The project has no public web page yet; give one to add the Homepage field and the AppStream link.
 set(KS_HOMEPAGE_URL "" CACHE STRING "Homepage of the Debian package and the AppStream metadata (empty: none)")
+set(KS_METAINFO_HOMEPAGE "")
+if(KS_HOMEPAGE_URL)
+    set(KS_METAINFO_HOMEPAGE "\n  <url type=\"homepage\">${KS_HOMEPAGE_URL}</url>")
+endif()
 
 if(KS_BUILD_GL)
     install(TARGETS killswitch killswitch-editor RUNTIME DESTINATION bin)
