@@ -29,6 +29,9 @@ install(DIRECTORY ${CMAKE_SOURCE_DIR}/assets/ DESTINATION ${KS_INSTALL_DATADIR}/
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/levels/ DESTINATION ${KS_INSTALL_DATADIR}/levels
         FILES_MATCHING PATTERN "*.json"
         PATTERN source EXCLUDE)
+# The editor's shipped prefabs (prefabs/*.json, read from the data folder's prefabs/), where the tree has them.
+install(DIRECTORY ${CMAKE_SOURCE_DIR}/prefabs/ DESTINATION ${KS_INSTALL_DATADIR}/prefabs OPTIONAL
+        FILES_MATCHING PATTERN "*.json")
 
 # The changelog (Debian's format, shipped as changelog.gz) must name this version first: a release bumps both.
 file(STRINGS ${KS_PACKAGING_DIR}/changelog ks_changelog_head LIMIT_COUNT 1)

@@ -3,7 +3,7 @@
 # <prefix>/share/killswitch, not in the source tree the prefix sits in: --version of both, the bot wins
 # levels/main.json headless, and with the installed main.json gone the error names the installed path.
 # The layout a desktop needs (menu entries, icons, manual pages, metadata, copyright) is checked too.
-foreach(var BUILD_DIR)
+foreach(var SOURCE_DIR BUILD_DIR)
     if(NOT DEFINED ${var})
         message(FATAL_ERROR "pass -D${var}=...")
     endif()
@@ -32,6 +32,11 @@ foreach(size 16 24 32 48 64 128 256)
     foreach(name killswitch killswitch-editor)
         list(APPEND expected share/icons/hicolor/${size}x${size}/apps/${name}.png)
     endforeach()
+endforeach()
+# The editor's shipped prefabs, once the tree has them.
+file(GLOB prefabs RELATIVE ${SOURCE_DIR} ${SOURCE_DIR}/prefabs/*.json)
+foreach(prefab IN LISTS prefabs)
+    list(APPEND expected share/killswitch/${prefab})
 endforeach()
 foreach(file IN LISTS expected)
     if(NOT EXISTS ${prefix}/${file})
