@@ -7,6 +7,9 @@
 #   ./run.sh editor   build and start the level editor
 #   ./run.sh bench    build and run the benchmarks (tables on stdout, plots in docs/bench/)
 #                     (./run.sh bench fuzz [SECONDS]: each libFuzzer target for SECONDS, default 60)
+#   ./run.sh package  build (Release) and make the Debian package build/package/killswitch_<version>_amd64.deb,
+#                     then check it with lintian (./run.sh package --check: also install it with apt, run
+#                     both programs from it, validate its desktop files and remove it again; needs root/sudo)
 # Extra arguments after the command go to the program, e.g. ./run.sh play --level levels/dojo.json
 set -euo pipefail
 cd "$(dirname "$(readlink -f "$0")")"
@@ -18,9 +21,12 @@ PACKAGES=(
     libstb-dev doctest-dev zlib1g-dev librecast-dev libopenal-dev
     xvfb xauth libgl1-mesa-dri mesa-utils xdotool
     gnuplot-nox
+    desktop-file-utils appstream groff-base
 )
 # Only for `./run.sh bench fuzz` (libFuzzer needs clang and its runtime); installed on first use.
 FUZZ_PACKAGES=(clang libclang-rt-14-dev)
+# Only for `./run.sh package`: CPack's dependency lookup (dpkg-shlibdeps), fakeroot and the package checker.
+PACKAGE_PACKAGES=(dpkg-dev fakeroot file lintian)
 
 log() { printf '\033[1;34m[run.sh]\033[0m %s\n' "$*" >&2; }
 die() { printf '\033[1;31m[run.sh]\033[0m %s\n' "$*" >&2; exit 1; }
@@ -129,10 +135,24 @@ case "$cmd" in
         mkdir -p docs/bench
         with_display ./build/bin/ks_bench "${@:-all}"
         ;;
+    package)
+        install_missing_packages "${PACKAGE_PACKAGES[@]}"
+        build release
+        log "packaging (cpack -G DEB)"
+        rm -f build/package/killswitch_*.deb
+        (cd build && cpack -G DEB >/dev/null)
+        deb="$(ls build/package/killswitch_*_amd64.deb)"
+        log "lintian $deb"
+        lintian --display-info --fail-on error "$deb"
+        log "built $deb ($(du -h "$deb" | cut -f1))"
+        if [ "${1:-}" = "--check" ]; then
+            exec scripts/check_package.sh "$deb"
+        fi
+        ;;
     ""|-h|--help|help)
-        sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'
+        sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'
         ;;
     *)
-        die "unknown command '$cmd' (use play, test, editor or bench)"
+        die "unknown command '$cmd' (use play, test, editor, bench or package)"
         ;;
 esac

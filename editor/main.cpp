@@ -4,6 +4,7 @@
 #include "core/cli.h"
 #include "core/log.h"
 #include "core/paths.h"
+#include "core/version.h"
 #include "model/script.h"
 #include "shell/app_shell.h"
 #include "ui/editor_app.h"
@@ -12,7 +13,7 @@
 #include <cstdio>
 
 namespace {
-const std::vector<std::string> kFlags = {"no-vsync", "help", "dojo", "navmesh", "textures"};
+const std::vector<std::string> kFlags = {"no-vsync", "help", "dojo", "navmesh", "textures", "version"};
 
 void print_help() {
     std::printf(
@@ -22,6 +23,7 @@ void print_help() {
         "                         [--view top|front|side|perspective|4up] [--inspector TAB] [--status-file "
         "FILE]\n"
         "                         [--report FILE] [--gizmo move|rotate|scale[,local]] [--textures]\n"
+        "       killswitch-editor --version  (prints \"killswitch-editor VERSION\" and exits)\n"
         "       killswitch-editor --analyze LEVEL [--runs N] [--report FILE] [--seconds S] [--threads T]\n"
         "                         [--width W] [--height H] [--screenshot FILE --frames N] [--no-vsync]\n"
         "  --level FILE      open a level file (default: a new untitled level)\n"
@@ -71,6 +73,10 @@ int main(int argc, char** argv) {
     }
     if (cl->has("help")) {
         print_help();
+        return 0;
+    }
+    if (cl->has("version")) {
+        std::printf("%s\n", version::line("killswitch-editor").c_str());
         return 0;
     }
     std::vector<std::string> known = shell::shell_options();

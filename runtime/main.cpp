@@ -3,6 +3,7 @@
 #include "app/game_app.h"
 #include "core/cli.h"
 #include "core/log.h"
+#include "core/version.h"
 #include "game/headless.h"
 #include "game/headless_campaign.h"
 #include "shell/app_shell.h"
@@ -12,7 +13,7 @@
 #include <cstdio>
 
 namespace {
-const std::vector<std::string> kFlags = {"no-vsync", "help", "no-hud", "effects"};
+const std::vector<std::string> kFlags = {"no-vsync", "help", "no-hud", "effects", "version"};
 
 void print_headless_help() {
     std::printf(
@@ -91,6 +92,10 @@ int main(int argc, char** argv) {
     if (!cl) {
         log::error(cl.error().str());
         return 2;
+    }
+    if (cl->has("version")) {
+        std::printf("%s\n", version::line("killswitch").c_str());
+        return 0;
     }
     // Routing: --headless → the game without a window; --view / --camera → the renderer's turntable and
     // render-only views (below); anything else → the playable game (menus, game, Dojo).

@@ -1,6 +1,6 @@
 // ks_assetgen: writes every asset we make ourselves (textures, glTF models, particle sprites, sound
-// effects) into DIR/textures, DIR/models and DIR/sounds. Deterministic: the same binary always writes the
-// same bytes, so the committed assets/ can be checked against a fresh run.
+// effects, application icons) into DIR/textures, DIR/models, DIR/sounds and DIR/icons. Deterministic: the
+// same binary always writes the same bytes, so the committed assets/ can be checked against a fresh run.
 //
 //   ks_assetgen --out DIR [--only NAME] [--contact-sheet FILE.png] [--preview FOLDER [--preview-size N]]
 //   [--sound-report] [--sound-views FOLDER] [--list]
@@ -29,8 +29,9 @@ int fail(const Error& e) {
 void usage() {
     std::printf("usage: ks_assetgen --out DIR [--only NAME] [--contact-sheet FILE.png] [--preview FOLDER "
                 "[--preview-size N]] [--sound-report] [--sound-views FOLDER] [--list]\n"
-                "  writes DIR/textures/*.png, DIR/models/*.gltf|.bin and DIR/sounds/*.wav; `--out assets` "
-                "regenerates the committed files\n");
+                "  writes DIR/textures/*.png, DIR/models/*.gltf|.bin, DIR/sounds/*.wav and "
+                "DIR/icons/hicolor/*/apps/*.png; "
+                "`--out assets` regenerates the committed files\n");
 }
 } // namespace
 

@@ -26,6 +26,15 @@ Result<void> Output::texture(const std::string& name, const Image& image, PngCha
     return ok();
 }
 
+Result<void> Output::icon(const std::string& name, const Image& image) {
+    const std::string size = std::to_string(image.width) + "x" + std::to_string(image.height);
+    const fs::path path = root_ / "icons" / "hicolor" / size / "apps" / (name + ".png");
+    KS_ASSETGEN_TRY(ensure_folder(path.parent_path()));
+    KS_ASSETGEN_TRY(write_png(path, image, PngChannels::Rgba));
+    written_.push_back(path);
+    return ok();
+}
+
 Result<void> Output::material(const std::string& name, const MaterialMaps& maps) {
     KS_ASSETGEN_TRY(texture(name + "_basecolor", maps.basecolor, PngChannels::Rgb));
     KS_ASSETGEN_TRY(texture(name + "_normal", maps.normal, PngChannels::Rgb));

@@ -1,5 +1,6 @@
 #pragma once
-// Where generated assets go: DIR/textures/<name>.png, DIR/models/<name>.gltf|.bin and DIR/sounds/<name>.wav.
+// Where generated assets go: DIR/textures/<name>.png, DIR/models/<name>.gltf|.bin, DIR/sounds/<name>.wav and
+// DIR/icons/hicolor/<size>x<size>/apps/<name>.png.
 // Keeps what it wrote in memory too (textures for the contact sheet, models for previews, sounds for the
 // sound report) and lists every file written.
 #include "gltf_writer.h"
@@ -41,6 +42,9 @@ class Output {
         : root_(std::move(root)), font_(std::move(font)), keep_images_(keep_images) {}
 
     Result<void> texture(const std::string& name, const Image& image, PngChannels channels);
+    // Writes DIR/icons/hicolor/<size>x<size>/apps/<name>.png (RGBA, straight alpha): the freedesktop icon
+    // theme's layout, installed as it is into share/icons/.
+    Result<void> icon(const std::string& name, const Image& image);
     // Writes <name>_basecolor, _normal, _orm (+ _emissive, _height when present).
     Result<void> material(const std::string& name, const MaterialMaps& maps);
     Result<void> model(const Model& model);

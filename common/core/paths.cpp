@@ -14,7 +14,11 @@ bool holds_data(const fs::path& dir) {
 
 fs::path find_data_root() {
     if (const char* env = std::getenv("KS_DATA_DIR"); env && *env && holds_data(env)) return fs::path(env);
-    for (fs::path dir = executable_dir(); !dir.empty(); dir = dir.parent_path()) {
+    const fs::path exe_dir = executable_dir();
+    // An installed prefix first, so a prefix inside a source tree still uses its own copy.
+    if (holds_data(exe_dir)) return exe_dir;
+    if (const fs::path installed = installed_data_dir(exe_dir); holds_data(installed)) return installed;
+    for (fs::path dir = exe_dir; !dir.empty(); dir = dir.parent_path()) {
         if (holds_data(dir)) return dir;
         if (dir == dir.root_path()) break;
     }
@@ -24,6 +28,10 @@ fs::path find_data_root() {
     return fs::current_path();
 }
 } // namespace
+
+fs::path installed_data_dir(const fs::path& executable_dir) {
+    return (executable_dir / ".." / "share" / "killswitch").lexically_normal();
+}
 
 fs::path executable_dir() {
     std::error_code ec;

@@ -1,13 +1,16 @@
 #pragma once
-// Finding the data folders (assets/, levels/) from any working directory: next to the executable first
-// (an installed layout), then up from it (build/bin/ inside the source tree), then the source tree the
-// binary was built from. KS_DATA_DIR overrides all of them.
+// Finding the data folders (assets/, levels/) from any working directory: next to the executable first,
+// then the installed layout (<prefix>/bin/../share/killswitch from `cmake --install`; the Debian package's
+// /usr/games/../share/killswitch), then up from the executable (build/bin/ inside the source tree), then
+// the source tree the binary was built from. KS_DATA_DIR overrides all of them.
 #include <filesystem>
 #include <string_view>
 
 namespace ks::paths {
 
 std::filesystem::path executable_dir();
+// Where an installed executable's data lives: <executable_dir>/../share/killswitch (normalised).
+std::filesystem::path installed_data_dir(const std::filesystem::path& executable_dir);
 // The folder that holds assets/ and levels/ (found once, then cached).
 const std::filesystem::path& data_root();
 std::filesystem::path asset(std::string_view relative); // data_root()/assets/relative

@@ -249,6 +249,7 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
               layout.bottom.h);
     modal_prompts();
     campaign_prompt();
+    about_.draw(spots_);
     dojo_->prompts(); // the clip file's questions, whichever tab is shown
     if (dojo_->take_quit_answer() == DojoPanel::QuitAnswer::Go) {
         dojo_quit_confirmed_ = true;

@@ -12,6 +12,7 @@
 #include "render/level_scene.h"
 #include "render/scene_renderer.h"
 #include "shell/app_shell.h"
+#include "ui/about_box.h"
 #include "ui/analysis_view.h"
 #include "ui/gizmo_draw.h"
 #include "ui/playtest.h"
@@ -24,8 +25,8 @@
 #include "view/link_problems.h"
 #include "view/patrol_drag.h"
 #include "view/picking.h"
-#include "view/quad_view.h"
 #include "view/player_start_marker.h"
+#include "view/quad_view.h"
 #include "view/sound_marker.h"
 #include "view/view_camera.h"
 
@@ -320,6 +321,7 @@ class EditorApp {
     char campaign_input_[512] = {};
     char campaign_title_[256] = {};
     bool quit_ = false;
+    AboutBox about_; // Help > About
     bool close_requested_ = false;
     std::string last_title_;
 

@@ -1,4 +1,4 @@
-// The editor window's menu bar: File, Edit, View, Play and the Level / Dojo tabs.
+// The editor window's menu bar: File, Edit, View, Play, Help and the Level / Dojo tabs.
 #include "ui/dojo_panel.h"
 #include "ui/editor_app.h"
 
@@ -110,6 +110,7 @@ void EditorApp::menu_bar() {
         ImGui::MenuItem("Show play-test report", nullptr, &analysis_.overlay, analysis_.report() != nullptr);
         ImGui::EndMenu();
     }
+    about_.menu(spots_);
     ImGui::Separator();
     if (ImGui::RadioButton("Level", !dojo_tab_)) dojo_tab_ = false;
     if (ImGui::RadioButton("Dojo", dojo_tab_)) {

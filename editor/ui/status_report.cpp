@@ -144,6 +144,7 @@ void EditorApp::write_status() {
     s["view"] = view_mode_name(view_.mode);
     s["tab"] = dojo_tab_ ? "dojo" : "level";
     s["menu"] = {{"file", point(menu_spots_[0])}, {"quit", point(menu_spots_[1])}};
+    s["about"] = about_.status();
     s["clip_preview"] = {{"on", clip_preview_}, {"robot", posed_robot_}, {"toggle", point(preview_toggle_)}};
     if (dojo_) s["dojo"] = dojo_status(*dojo_);
     int wx = 0, wy = 0;

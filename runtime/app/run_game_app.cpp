@@ -50,6 +50,7 @@ void print_help() {
         "  --view MODEL      (renderer) one model on a turntable; --camera x,y,z,yaw,pitch: render-only "
         "view\n"
         "  --headless ...    run the game without a window (see killswitch --headless --help)\n"
+        "  --version         print \"killswitch VERSION\" and exit\n"
         "controls: WASD/arrows move, mouse looks, click shoots, Space jumps, E interacts, Esc pauses, M "
         "mutes\n"
         "options file: $XDG_CONFIG_HOME/killswitch/options.json (or ~/.config/killswitch/options.json)\n");

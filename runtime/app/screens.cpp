@@ -2,6 +2,7 @@
 
 #include "campaign_screens.h"
 #include "menu_style.h"
+#include "version_label.h"
 
 #include <imgui.h>
 
@@ -53,6 +54,7 @@ void loading_screen(float fraction, const std::string& step, const shell::Fonts&
 
 MenuAction main_menu(const std::string& error, const shell::Fonts& fonts, float w, float h) {
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
+    version_label(fonts, w, h);
     MenuAction action = MenuAction::None;
     ui::begin_panel("##main", "Killswitch", 640, error.empty() ? 380 : 460, w, h, fonts);
     ui::centred_text("A virtual disaster simulator. The robots went rogue.", fonts.body);

@@ -31,10 +31,10 @@ fs::path committed() {
     return ks::test::source_dir() / "assets";
 }
 
-// The generated folders: models/*.gltf|*.bin, textures/**.png and sounds/*.wav.
+// The generated folders: models/*.gltf|*.bin, textures/**.png, sounds/*.wav and icons/**.png.
 std::set<std::string> generated_files(const fs::path& root) {
     std::set<std::string> out;
-    for (const char* folder : {"models", "textures", "sounds"}) {
+    for (const char* folder : {"models", "textures", "sounds", "icons"}) {
         if (!fs::exists(root / folder)) continue;
         for (const auto& entry : fs::recursive_directory_iterator(root / folder)) {
             if (!entry.is_regular_file()) continue;
@@ -67,6 +67,11 @@ std::vector<std::string> expected_files() {
         files.push_back(std::string("textures/particles/") + p + ".png");
     for (const auto* names : {&ks::test::planned_one_shots(), &ks::test::planned_loops()})
         for (const std::string& s : *names) files.push_back("sounds/" + s + ".wav");
+    // The application icons at the icon theme's sizes (cmake/KsInstall.cmake installs them).
+    for (int size : {16, 24, 32, 48, 64, 128, 256})
+        for (const char* icon : {"killswitch", "killswitch-editor"})
+            files.push_back("icons/hicolor/" + std::to_string(size) + "x" + std::to_string(size) + "/apps/" +
+                            icon + ".png");
     return files;
 }
 
