@@ -168,11 +168,13 @@ const std::vector<Issue>& Editor::issues() {
     poll_walk_job(false);
     const bool dragging = history_.in_transaction();
     const std::uint64_t key =
-        ((history_.revision() + reloads_ + (walk_results_ << 32)) << 1) | (dragging ? 1u : 0u);
+        ((history_.revision() + reloads_ + (walk_results_ << 32) + (prefabs_.revision() << 48)) << 1) |
+        (dragging ? 1u : 0u);
     if (issues_revision_ != key) {
         ValidationOptions options = validation_options_;
         options.check_reachability = false;
         issues_ = validate_design(doc_.level, options);
+        check_prefab_instances(doc_.level, prefabs_, issues_);
         if (validation_options_.check_reachability && !dragging) {
             const std::uint64_t fingerprint = walk_fingerprint(doc_.level, validation_options_);
             const bool stale = !walk_known_ || fingerprint != walk_fingerprint_;
@@ -248,6 +250,8 @@ Result<void> Editor::apply_quick_fix(const Issue& issue) {
     case QuickFix::Kind::RemoveKillName:
     case QuickFix::Kind::AddShutdownObjective:
         return apply_logic_fix(fix);
+    case QuickFix::Kind::UnlinkPrefab:
+        return unlink_prefab(fix.index);
     case QuickFix::Kind::MovePlayerStart: {
         auto change = std::make_unique<LevelChange>();
         change->set_name(name);

@@ -52,4 +52,9 @@ class PrefabLibrary {
     std::uint64_t revision_ = 0;
 };
 
+struct Issue;
+// The `prefab` rule: an instance whose prefab is not in `library` (with a did-you-mean) or does not load
+// is a warning on its first member, fixed by unlinking it (it keeps its entities as they are).
+void check_prefab_instances(const level::Level& level, const PrefabLibrary& library, std::vector<Issue>& out);
+
 } // namespace ks::editor

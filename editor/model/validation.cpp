@@ -395,6 +395,8 @@ const char* rule_name(Rule rule) {
         return "locked_door";
     case Rule::Texture:
         return "texture";
+    case Rule::Prefab:
+        return "prefab";
     }
     return "?";
 }

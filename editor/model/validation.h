@@ -31,6 +31,7 @@ enum class Rule {
     Objective,    // an objective that can never complete, or a level with no objectives and no win link
     LockedDoor,   // a locked door that no link unlocks or opens
     Texture,      // a texture field naming no surface material in assets/textures (level/texture_names.h)
+    Prefab,       // a prefab instance whose prefab file is missing or broken (prefab_validation.cpp)
 };
 const char* rule_name(Rule rule);
 
@@ -45,12 +46,13 @@ struct QuickFix {
         SetField,
         MovePatrolPoint,
         SetSetting,
-        SetLink,             // replace link `index` of `owner` with `link`
-        RemoveLink,          // remove link `index` of `owner`
-        AddLink,             // append `link` to `owner`'s links
-        SetKillName,         // objective `index`: kill-list name `kill_index` becomes `name`
-        RemoveKillName,      // objective `index`: remove kill-list name `kill_index`
-        AddShutdownObjective // the objective "shutdown", completed by using the control panel (v1's win)
+        SetLink,              // replace link `index` of `owner` with `link`
+        RemoveLink,           // remove link `index` of `owner`
+        AddLink,              // append `link` to `owner`'s links
+        SetKillName,          // objective `index`: kill-list name `kill_index` becomes `name`
+        RemoveKillName,       // objective `index`: remove kill-list name `kill_index`
+        AddShutdownObjective, // the objective "shutdown", completed by using the control panel (v1's win)
+        UnlinkPrefab          // group `index` (a prefab instance) becomes a plain group
     } kind = Kind::None;
     std::string label;   // "Drop to floor", shown on the button
     Vec3 position{0.0f}; // MoveEntity / MovePlayerStart / MovePatrolPoint

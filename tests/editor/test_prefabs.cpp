@@ -237,3 +237,26 @@ TEST_CASE("the shipped prefabs load, place into a level and give a valid level")
     CHECK_MESSAGE(!report.has_errors(),
                   (report.diagnostics.empty() ? "" : report.diagnostics.front().error.str()));
 }
+
+TEST_CASE("the prefab rule: an instance whose prefab is gone is a warning, fixed by unlinking it") {
+    test::ScratchDir dir;
+    Editor ed = doorway(dir.path());
+    REQUIRE(ed.save_prefab("doorway").ok());
+    auto prefab_issue = [&]() -> const Issue* {
+        for (const Issue& issue : ed.issues())
+            if (issue.rule == Rule::Prefab) return &issue;
+        return nullptr;
+    };
+    CHECK(prefab_issue() == nullptr);
+    std::filesystem::rename(dir / "doorway.json", dir / "doorway_old.json");
+    ed.prefabs().rescan();
+    const Issue* issue = prefab_issue();
+    REQUIRE(issue);
+    CHECK(issue->severity == IssueSeverity::Warning);
+    CHECK(issue->entity_id == 1);
+    CHECK(issue->message.find("no prefab named 'doorway'") != std::string::npos);
+    CHECK(issue->message.find("prefabs: doorway_old") != std::string::npos);
+    REQUIRE(ed.apply_quick_fix(*issue).ok());
+    CHECK(!ed.level().editor.find_group(1)->has_prefab);
+    CHECK(prefab_issue() == nullptr);
+}
