@@ -224,7 +224,10 @@ MenuAction GameApp::draw_screen(float w, float h) {
         break;
     case Screen::Controls: {
         bool changed = false;
+        const bool was_waiting = controls_.waiting();
         action = controls_screen(options_, controls_, changed, fonts, w, h);
+        // The click (or Space, Enter) that asked for a key must not be taken as the key.
+        if (!was_waiting && controls_.waiting()) events_.state().clear_latches();
         options_dirty_ |= changed;
         break;
     }

@@ -153,8 +153,9 @@ TEST_CASE("controls: Campaign > Continue resumes a saved run at its next level; 
                     "no DISPLAY: run the window tests under xvfb-run (./run.sh test does)");
     test::ScratchDir dir;
     write(dir / "level.json", test::corridor_level_json());
+    write(dir / "level2.json", test::corridor_level_json());
     write(dir / "campaign.json", R"({"name": "Two rooms", "levels": [
-        {"file": "level.json", "title": "First"}, {"file": "level.json", "title": "Second"}]})");
+        {"file": "level.json", "title": "First"}, {"file": "level2.json", "title": "Second"}]})");
     const auto save = dir / "data" / "killswitch" / "campaign_save.json";
     std::filesystem::create_directories(save.parent_path());
     write(save, R"({"format": "killswitch-campaign-save", "version": 1, "campaign": ")" +
@@ -169,7 +170,7 @@ TEST_CASE("controls: Campaign > Continue resumes a saved run at its next level; 
     CHECK(r.status.screen == "campaign_choice");
     r = play(dir, "20 click Campaign\n24 click Continue: level 2\n", 60, campaign);
     CHECK(r.status.screen == "playing");
-    CHECK(r.status.text.find("campaign 2 2 level.json Second") != std::string::npos);
+    CHECK(r.status.text.find("campaign 2 2 level2.json Second") != std::string::npos);
     CHECK(r.status.text.find("campaign_result 12.50 0 0 2 0 First") != std::string::npos);
     // New campaign: level 1, and the save says nothing is won yet.
     r = play(dir, "20 click Campaign\n24 click New campaign\n", 60, campaign);
