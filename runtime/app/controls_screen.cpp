@@ -16,9 +16,9 @@ constexpr ImU32 kQuiet = IM_COL32(90, 100, 110, 255);
 
 // The gamepad's fixed layout (GLFW's standard mapping: Xbox names, the same buttons on any pad).
 const char* const kPadRows[][2] = {
-    {"Left stick", "move"},         {"Right stick", "look"},    {"A", "jump"},
-    {"Right trigger", "shoot"},     {"X", "interact"},          {"Start", "pause / resume"},
-    {"D-pad, left stick", "menus"}, {"A / B", "choose / back"},
+    {"Left stick", "move"},         {"Right stick", "look"}, {"A", "jump"},
+    {"Right trigger", "shoot"},     {"X", "interact"},       {"Start", "pause / resume"},
+    {"D-pad, A, B", "menus, back"},
 };
 
 void text_at(float x, const char* text, ImU32 colour) {
@@ -62,10 +62,14 @@ void bindings_table(Options& o, ControlsState& st, float x, float width) {
     const auto clash = conflicts(o.bindings);
     const float top = ImGui::GetCursorPosY();
     text_at(x, "Action", kQuiet);
-    ImGui::SameLine(key_x);
-    ImGui::TextUnformatted("Key");
-    ImGui::SameLine(key_x + key_w + gap);
-    ImGui::TextUnformatted("Alternative");
+    for (std::size_t slot = 0; slot < kSlots; ++slot) {
+        const char* head = slot == 0 ? "Key" : "Alternative";
+        const float cx = key_x + static_cast<float>(slot) * (key_w + gap) + key_w * 0.5f;
+        ImGui::SameLine(cx - ImGui::CalcTextSize(head).x * 0.5f);
+        ImGui::PushStyleColor(ImGuiCol_Text, kQuiet);
+        ImGui::TextUnformatted(head);
+        ImGui::PopStyleColor();
+    }
     ImGui::SetCursorPosY(top + ImGui::GetFrameHeight() + 2 * s);
     for (std::size_t i = 0; i < kActionCount; ++i) {
         const auto a = static_cast<Action>(i);
@@ -116,24 +120,33 @@ MenuAction controls_screen(Options& o, ControlsState& st, bool& changed, const s
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
     MenuAction action = MenuAction::None;
     const float s = ui::ui_scale(h);
-    ui::begin_panel("##controls", "Controls", 1100, 580, w, h, fonts);
+    // As tall as the window allows (520 at 720p); in a small window the table and the pad column scroll
+    // (keyboard and pad navigation scroll to the highlighted key) and the note and buttons stay.
+    const float panel_h = std::clamp(h / s - 80.0f, 420.0f, 510.0f);
+    ui::begin_panel("##controls", "Controls", 1060, panel_h, w, h, fonts);
     ImGui::PushStyleColor(ImGuiCol_FrameBg, IM_COL32(205, 214, 218, 255));
     ImGui::PushStyleColor(ImGuiCol_FrameBgHovered, IM_COL32(190, 205, 212, 255));
     ImGui::PushStyleColor(ImGuiCol_FrameBgActive, IM_COL32(180, 198, 206, 255));
     ImGui::PushStyleColor(ImGuiCol_SliderGrab, ui::kAccent);
     ImGui::PushStyleColor(ImGuiCol_SliderGrabActive, ui::kAccentActive);
+    ImGui::PushStyleColor(ImGuiCol_ScrollbarBg, IM_COL32(0, 0, 0, 20));
+    ImGui::PushStyleColor(ImGuiCol_ScrollbarGrab, ui::kAccent);
     ImGui::PushStyleVar(ImGuiStyleVar_FrameRounding, 5.0f * s);
     ImGui::PushStyleVar(ImGuiStyleVar_GrabMinSize, 18.0f * s);
     ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(8 * s, 4 * s));
-    ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(10 * s, 6 * s));
+    ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(10 * s, 7 * s));
     if (fonts.body) ImGui::PushFont(fonts.body);
+    ImGui::BeginChild("##controls_body", ImVec2(0, (panel_h - 168.0f) * s), false,
+                      ImGuiWindowFlags_NoBackground | ImGuiWindowFlags_NavFlattened);
     const float top = ImGui::GetCursorPosY();
-    const float left_w = 600 * s, right_x = 40 * s + left_w + 50 * s;
-    bindings_table(o, st, 40 * s, left_w);
+    const float left_w = 580 * s, right_x = 10 * s + left_w + 50 * s;
+    bindings_table(o, st, 10 * s, left_w);
     const float bottom = ImGui::GetCursorPosY();
     ImGui::SetCursorPosY(top);
-    gamepad_column(o, changed, right_x, ImGui::GetWindowWidth() - right_x - 40 * s);
-    ImGui::SetCursorPosY(std::max(bottom, ImGui::GetCursorPosY()) + 6 * s);
+    gamepad_column(o, changed, right_x, ImGui::GetWindowWidth() - right_x - 20 * s);
+    ImGui::SetCursorPosY(std::max(bottom, ImGui::GetCursorPosY()));
+    ImGui::EndChild();
+    ImGui::Dummy(ImVec2(1, 2 * s));
     const auto clash = conflicts(o.bindings);
     const bool any_clash = std::find(clash.begin(), clash.end(), true) != clash.end();
     std::string note = st.message;
@@ -146,7 +159,7 @@ MenuAction controls_screen(Options& o, ControlsState& st, bool& changed, const s
     ImGui::PopStyleColor();
     if (fonts.body) ImGui::PopFont();
     ImGui::PopStyleVar(4);
-    ImGui::PopStyleColor(5);
+    ImGui::PopStyleColor(7);
     switch (ui::button_row({"Reset to defaults", "Back"}, fonts, 560)) {
     case 0:
         o.bindings = Bindings::defaults();

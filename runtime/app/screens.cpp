@@ -6,6 +6,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 
@@ -136,7 +137,9 @@ MenuAction win_menu(const LevelResult& result, const shell::Fonts& fonts, float 
 MenuAction how_to_play(const Options& options, const shell::Fonts& fonts, float w, float h) {
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
     MenuAction action = MenuAction::None;
-    ui::begin_panel("##howto", "How to Play", 900, 600, w, h, fonts);
+    // 500 at 720p; in a smaller window the controls list scrolls above Back.
+    const float panel_h = std::clamp(h / ui::ui_scale(h) - 80.0f, 440.0f, 500.0f);
+    ui::begin_panel("##howto", "How to Play", 900, panel_h, w, h, fonts);
     ImGui::PushTextWrapPos(ImGui::GetWindowWidth() - 30 * ui::ui_scale(h));
     ImGui::TextWrapped("Survive the rogue robots and reach the computer at the end of the level to end the "
                        "simulation. Shoot gas cylinders to blow up robots near them - keep your distance. "
@@ -144,13 +147,22 @@ MenuAction how_to_play(const Options& options, const shell::Fonts& fonts, float 
     ImGui::PopTextWrapPos();
     if (fonts.body) ImGui::PushFont(fonts.body);
     ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(10 * ui::ui_scale(h), 5 * ui::ui_scale(h)));
+    ImGui::PushStyleColor(ImGuiCol_ScrollbarBg, IM_COL32(0, 0, 0, 20));
+    ImGui::PushStyleColor(ImGuiCol_ScrollbarGrab, ui::kAccent);
+    ImGui::BeginChild("##howto_keys", ImVec2(0, ImGui::GetContentRegionAvail().y - 70 * ui::ui_scale(h)),
+                      false, ImGuiWindowFlags_NoBackground | ImGuiWindowFlags_NavFlattened);
     const auto& b = options.bindings;
     const std::string move = keys_text(b, Action::Forward) + ", " + keys_text(b, Action::Left) + ", " +
                              keys_text(b, Action::Back) + ", " + keys_text(b, Action::Right);
     two_columns(move.c_str(), "move forward, left, back, right", 0.36f);
-    for (Action a : {Action::Jump, Action::Fire, Action::Interact, Action::Pause, Action::Mute})
-        two_columns(keys_text(b, a).c_str(), action_info(a).label, 0.36f);
+    for (Action a : {Action::Jump, Action::Fire, Action::Interact, Action::Pause, Action::Mute}) {
+        std::string what = action_info(a).label; // "Jump" → "jump", as the other rows
+        what[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(what[0])));
+        two_columns(keys_text(b, a).c_str(), what.c_str(), 0.36f);
+    }
     for (const auto& row : kFixedControls) two_columns(row[0], row[1], 0.36f);
+    ImGui::EndChild();
+    ImGui::PopStyleColor(2);
     ImGui::PopStyleVar();
     if (fonts.body) ImGui::PopFont();
     if (ui::big_button("Back", fonts)) action = MenuAction::Back;
