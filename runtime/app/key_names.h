@@ -28,21 +28,21 @@ struct NamedKey {
     int code;
     const char* name;
 };
-// Every named non-printable key GLFW has, plus the punctuation keys; letters, digits and F-keys are
-// generated in key_name().
+// Every named non-printable key GLFW has, plus the punctuation keys by name ("Minus", not "-", which the
+// menus use for an empty slot); letters, digits, F-keys and the keypad digits are generated in key_name().
 inline constexpr std::array<NamedKey, 54> kNamedKeys{{
     {32, "Space"},
-    {39, "'"},
-    {44, ","},
-    {45, "-"},
-    {46, "."},
-    {47, "/"},
-    {59, ";"},
-    {61, "="},
-    {91, "["},
-    {92, "\\"},
-    {93, "]"},
-    {96, "`"},
+    {39, "Apostrophe"},
+    {44, "Comma"},
+    {45, "Minus"},
+    {46, "Period"},
+    {47, "Slash"},
+    {59, "Semicolon"},
+    {61, "Equals"},
+    {91, "Left Bracket"},
+    {92, "Backslash"},
+    {93, "Right Bracket"},
+    {96, "Backquote"},
     {256, "Esc"},
     {257, "Enter"},
     {258, "Tab"},

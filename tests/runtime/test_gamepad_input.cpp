@@ -3,6 +3,7 @@
 // the trigger's pull, interact, the menus' B and Start — the radial dead zone (inside, the edge, diagonals,
 // NaN and out-of-range axes) and the menu navigation the pad feeds to ImGui.
 #include "runtime/app/gamepad_input.h"
+#include "runtime/app/input_script.h"
 #include "runtime/app/player_input.h"
 #include "shell/gamepad.h"
 
@@ -256,4 +257,29 @@ TEST_CASE("player input: keys and pad together, as PlayerInput::gather adds them
     g.add_to(in, kStep, o);
     CHECK(in.move_forward == 1.0f);
     CHECK(in.move_right == doctest::Approx(1.0f));
+}
+
+TEST_CASE("input script: pad buttons and axes parse; bad pad lines are refused with a fix") {
+    auto events = parse_input_script("10 pad a tap\n11 pad start down\n12 pad ddown up\n13 pad ly -1\n"
+                                     "14 pad rt 0.5\n",
+                                     "pad.txt");
+    REQUIRE(events.ok());
+    REQUIRE(events->size() == 5);
+    CHECK((*events)[0].kind == ScriptEvent::Kind::PadButton);
+    CHECK((*events)[0].code == shell::kPadA);
+    CHECK((*events)[0].action == 2);
+    CHECK((*events)[1].code == shell::kPadStart);
+    CHECK((*events)[1].action == 1);
+    CHECK((*events)[2].code == shell::kPadDpadDown);
+    CHECK((*events)[2].action == 0);
+    CHECK((*events)[3].kind == ScriptEvent::Kind::PadAxis);
+    CHECK((*events)[3].code == shell::kPadLeftY);
+    CHECK((*events)[3].x == -1.0);
+    CHECK((*events)[4].code == shell::kPadRightTrigger);
+    for (const char* bad : {"1 pad z tap", "1 pad a hold", "1 pad ly", "1 pad ly 2", "1 pad rx nan",
+                            "1 pad lx 0.5x", "1 pad a tap extra"}) {
+        auto r = parse_input_script(bad, "pad.txt");
+        CHECK_MESSAGE(!r.ok(), bad);
+        if (!r.ok()) CHECK(r.error().str().find("pad.txt:1") != std::string::npos);
+    }
 }
