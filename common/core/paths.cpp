@@ -59,12 +59,25 @@ fs::path resolve_user_path(const fs::path& given) {
     return given;
 }
 
-fs::path user_levels_dir() {
+fs::path user_data_dir() {
     if (const char* xdg = std::getenv("XDG_DATA_HOME"); xdg && *xdg && fs::path(xdg).is_absolute())
-        return fs::path(xdg) / "killswitch" / "levels";
+        return fs::path(xdg) / "killswitch";
     if (const char* home = std::getenv("HOME"); home && *home)
-        return fs::path(home) / ".local" / "share" / "killswitch" / "levels";
+        return fs::path(home) / ".local" / "share" / "killswitch";
     return {};
+}
+
+fs::path user_levels_dir() {
+    const fs::path data = user_data_dir();
+    return data.empty() ? fs::path() : data / "levels";
+}
+
+fs::path ensure_user_levels_dir() {
+    const fs::path dir = user_levels_dir();
+    if (dir.empty()) return {};
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    return fs::is_directory(dir, ec) ? dir : fs::path();
 }
 
 } // namespace ks::paths

@@ -17,9 +17,14 @@ std::filesystem::path asset(std::string_view relative); // data_root()/assets/re
 std::filesystem::path level(std::string_view relative); // data_root()/levels/relative
 // A path given by the user: absolute or relative to the current folder, else relative to data_root().
 std::filesystem::path resolve_user_path(const std::filesystem::path& given);
-// Where the player's own levels live: $XDG_DATA_HOME/killswitch/levels, else
-// ~/.local/share/killswitch/levels (the XDG base directory rule; a relative XDG_DATA_HOME is ignored, as the
-// rule says). Empty when neither variable gives a folder. Read from the environment on every call.
+// The player's data (levels, campaign saves): $XDG_DATA_HOME/killswitch, else ~/.local/share/killswitch (the
+// XDG base directory rule; a relative XDG_DATA_HOME is ignored, as the rule says). Empty when neither
+// variable gives a folder. Read from the environment on every call.
+std::filesystem::path user_data_dir();
+// Where the player's own levels live: user_data_dir()/levels (empty when user_data_dir() is).
 std::filesystem::path user_levels_dir();
+// user_levels_dir(), created when missing (the editor's folder for a new level); empty when there is no such
+// folder or it cannot be made.
+std::filesystem::path ensure_user_levels_dir();
 
 } // namespace ks::paths

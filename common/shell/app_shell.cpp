@@ -120,6 +120,7 @@ int AppShell::run(const ShellHooks& hooks) {
     int exit_code = 0;
     while (!glfwWindowShouldClose(window_)) {
         glfwPollEvents();
+        if (!gamepad_injected_) poll_gamepad(gamepad_);
         double now = glfwGetTime();
         // Screenshot runs use a fixed 1/60 s per frame so the picture is the same on every machine.
         info.frame_dt = screenshot_mode() ? 1.0 / 60.0 : now - last;
@@ -137,6 +138,7 @@ int AppShell::run(const ShellHooks& hooks) {
         }
         render::begin_imgui_frame();
         ImGui_ImplGlfw_NewFrame();
+        feed_imgui_nav(gamepad_);
         ImGui::NewFrame();
         if (hooks.imgui) hooks.imgui(info);
         ImGui::Render();

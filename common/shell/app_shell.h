@@ -7,6 +7,7 @@
 // through render/ (window_target.h, imgui_renderer.h).
 #include "core/result.h"
 #include "shell/display.h"
+#include "shell/gamepad.h"
 
 #include <functional>
 #include <string>
@@ -72,6 +73,13 @@ class AppShell {
     const ShellConfig& config() const { return config_; }
     bool screenshot_mode() const { return !config_.screenshot_path.empty(); }
     std::string gl_renderer() const;
+    // The first gamepad as polled at the start of this frame (before the fixed steps).
+    const GamepadState& gamepad() const { return gamepad_; }
+    // Scripted input (tests): from now on the pad reads `state` instead of the real one.
+    void inject_gamepad(const GamepadState& state) {
+        gamepad_ = state;
+        gamepad_injected_ = true;
+    }
 
   private:
     AppShell() = default;
@@ -82,6 +90,8 @@ class AppShell {
     GLFWwindow* window_ = nullptr;
     Fonts fonts_;
     bool imgui_ready_ = false;
+    GamepadState gamepad_;
+    bool gamepad_injected_ = false;
 };
 
 } // namespace ks::shell

@@ -11,6 +11,15 @@
 namespace ks::editor::ui {
 namespace fs = std::filesystem;
 
+namespace {
+// Where an untitled level is offered to be saved: the player's levels folder (created here), which the
+// game's Custom level... lists; the shipped levels/ folder when there is no home or it cannot be made.
+fs::path new_level_folder() {
+    const fs::path user = paths::ensure_user_levels_dir();
+    return user.empty() ? paths::level("") : user;
+}
+} // namespace
+
 void EditorApp::request(PendingAction action, fs::path path) {
     if (action == PendingAction::Quit && dojo_->dirty() && !dojo_quit_confirmed_) {
         dojo_->ask_before_quit(); // the clip file first; its answer comes back through modal_prompts
@@ -66,7 +75,7 @@ void EditorApp::save(bool save_as) {
         path_for_save_ = true;
         ask_path_ = true;
         std::snprintf(path_input_, sizeof(path_input_), "%s",
-                      editor_.file_path().empty() ? (paths::level("") / "untitled.json").string().c_str()
+                      editor_.file_path().empty() ? (new_level_folder() / "untitled.json").string().c_str()
                                                   : editor_.file_path().string().c_str());
         return;
     }

@@ -4,7 +4,9 @@
 // header-only so the tests use it directly (runtime/ sources are compiled only into the killswitch binary).
 #include "level/campaign.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <filesystem>
 #include <span>
@@ -61,6 +63,15 @@ class CampaignProgress {
         if (results_.size() <= index_ || on_last_level()) return false;
         ++index_;
         return true;
+    }
+
+    // Resumes a saved run (campaign_save.h): `won` are the first levels' results; play goes on at the next
+    // level (the last one when every level was won). Results past the campaign's end are dropped.
+    void restore(std::span<const LevelResult> won) {
+        results_.assign(won.begin(),
+                        won.begin() + static_cast<std::ptrdiff_t>(std::min(won.size(), count())));
+        for (std::size_t i = 0; i < results_.size(); ++i) results_[i].title = campaign_.levels[i].title;
+        index_ = std::min(results_.size(), count() - 1);
     }
 
     std::span<const LevelResult> results() const { return results_; }

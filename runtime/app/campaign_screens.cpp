@@ -210,6 +210,37 @@ MenuAction campaign_complete_screen(const CampaignProgress& progress, const shel
     return action;
 }
 
+MenuAction campaign_choice_screen(const CampaignSave& save, const shell::Fonts& fonts, float w, float h) {
+    ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
+    ui::begin_panel("##campaign", "Campaign", 640, 400, w, h, fonts);
+    const std::string name = save.name.empty() ? save.campaign.stem().string() : save.name;
+    ui::centred_text(name + "  \u00b7  " + std::to_string(save.won.size()) + " of " +
+                         std::to_string(save.level_count) + " levels won",
+                     fonts.body, kMuted);
+    LevelResult sum;
+    for (const LevelResult& r : save.won) {
+        sum.seconds += r.seconds;
+        sum.robots_killed += r.robots_killed;
+        sum.robots_total += r.robots_total;
+        sum.shots += r.shots;
+        sum.hits += r.hits;
+    }
+    result_tiles(sum, fonts);
+    MenuAction action = MenuAction::None;
+    const std::string next = "Continue: level " + std::to_string(save.won.size() + 1);
+    if (ui::big_button(next.c_str(), fonts, 440)) action = MenuAction::Continue;
+    switch (ui::button_row({"New campaign", "Back"}, fonts, 440, 1)) {
+    case 0:
+        action = MenuAction::NewCampaign;
+        break;
+    case 1:
+        action = MenuAction::Back;
+        break;
+    }
+    ui::end_panel();
+    return action;
+}
+
 std::vector<LevelGroup> scan_custom_levels() {
     std::vector<LevelGroup> groups;
     groups.push_back({"Shipped levels", level::list_level_files(paths::data_root() / "levels",

@@ -4,6 +4,7 @@
 // levels to play one at a time (the shipped levels/ folder and the player's own, each level with its name,
 // a broken file with its error instead of a button).
 #include "campaign_progress.h"
+#include "campaign_save.h"
 #include "level/level_catalog.h"
 #include "shell/app_shell.h"
 
@@ -22,6 +23,10 @@ MenuAction summary_screen(const CampaignProgress& progress, const shell::Fonts& 
 // After the last level: one row per level and the totals; Main Menu.
 MenuAction campaign_complete_screen(const CampaignProgress& progress, const shell::Fonts& fonts, float w,
                                     float h);
+
+// Campaign with a saved run: Continue (at the next level, with the levels won so far and their totals) or
+// New campaign (replaces the save); Back.
+MenuAction campaign_choice_screen(const CampaignSave& save, const shell::Fonts& fonts, float w, float h);
 
 // One folder of the custom level list.
 struct LevelGroup {

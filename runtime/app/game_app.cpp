@@ -186,7 +186,9 @@ void GameApp::fixed_update(double dt) {
     if (session_->dojo_controller && !freeze_dojo_ && screen_ == Screen::Playing)
         session_->dojo_controller->advance(dt);
     if (!world_runs) return;
-    game::Input in = screen_ == Screen::Playing ? input_.gather(events_.state(), options_) : game::Input{};
+    game::Input in = screen_ == Screen::Playing
+                         ? input_.gather(events_.state(), options_, static_cast<float>(dt))
+                         : game::Input{};
     advance(in, static_cast<float>(dt));
     if (g.phase() == game::Phase::Playing) session_->play_seconds += dt;
     if (g.phase() == game::Phase::Dead && g.death_camera().menu_ready && screen_ == Screen::Playing) {

@@ -7,13 +7,48 @@
 
 namespace ks::runtime {
 
-Result<void> GameApp::start_campaign() {
-    auto campaign = level::load_campaign(campaign_path_);
+void GameApp::open_campaign() {
+    if (campaign_save_ && !campaign_save_->won.empty() && !campaign_save_->finished()) {
+        open_sub(Screen::CampaignChoice);
+        return;
+    }
+    if (auto started = start_campaign(); !started)
+        error_ = "Could not start the campaign: " + started.error().str();
+}
+
+Result<void> GameApp::start_campaign(bool resume) {
+    const std::filesystem::path file = resume && campaign_save_ ? campaign_save_->campaign : campaign_path_;
+    auto campaign = level::load_campaign(file);
     if (!campaign) return campaign.error();
-    campaign_.emplace(std::move(*campaign), campaign_path_);
+    campaign_.emplace(std::move(*campaign), file);
+    if (resume && campaign_save_) campaign_->restore(campaign_save_->won);
+    if (!resume) write_save(); // a new run replaces the saved one at once
     error_.clear();
     load(campaign_->current_path(), false, Screen::Playing);
     return {};
+}
+
+// The run so far, written atomically; only by a real player's run (a --screenshot run without a script
+// leaves the player's saves alone).
+void GameApp::write_save() {
+    if (!campaign_ || !interactive()) return;
+    const std::filesystem::path path = campaign_save_path();
+    if (save_unreadable_) { // never overwrite what could not be read: move it aside, once
+        save_unreadable_ = false;
+        std::filesystem::path aside = path;
+        aside += ".unreadable";
+        std::error_code ec;
+        std::filesystem::rename(path, aside, ec);
+        if (ec)
+            log::warn(path.string(), ": could not keep the unreadable save as ", aside.string(), ": ",
+                      ec.message(), " (campaign progress not saved)");
+        else
+            log::warn(path.string(), ": the unreadable save is kept as ", aside.string());
+        if (ec) return;
+    }
+    campaign_save_ = save_of(*campaign_);
+    if (auto written = write_campaign_save(path, *campaign_save_); !written)
+        log::warn(written.error().str(), " (campaign progress not saved)");
 }
 
 LevelResult GameApp::result_now() const {
@@ -39,6 +74,7 @@ void GameApp::level_won() {
         return;
     }
     campaign_->record_win(win_);
+    write_save();
     screen_ = campaign_->finished() ? Screen::CampaignComplete : Screen::Summary;
 }
 

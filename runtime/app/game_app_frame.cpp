@@ -19,12 +19,39 @@ void GameApp::update_audio(const shell::FrameInfo& info) {
     audio_->end_frame(info.frame_dt, updated);
 }
 
+bool GameApp::handle_rebind_keys() {
+    InputState& keys = events_.state();
+    if (screen_ != Screen::Controls || !controls_.waiting()) return false;
+    GamepadInput& pad = input_.pad();
+    if (keys.take_press(GLFW_KEY_ESCAPE) || pad.take_press(shell::kPadB)) {
+        controls_.cancel(); // Esc or B cancels the rebind, it does not leave the screen
+        return true;
+    }
+    if (finish_rebind(options_, controls_, keys.take_any_press())) {
+        options_dirty_ = true;
+        save_options_now();
+    }
+    return true;
+}
+
+// Esc or the pad's B on a sub-screen: the screen it was opened from (Controls goes back to Options).
+void GameApp::go_back() {
+    save_options_now();
+    controls_.cancel();
+    screen_ = screen_ == Screen::Controls ? Screen::Options : return_to_;
+}
+
 void GameApp::handle_keys() {
     GLFWwindow* w = shell_.window();
     InputState& keys = events_.state();
+    GamepadInput& pad = input_.pad();
+    pad.poll(shell_.gamepad());
+    if (handle_rebind_keys()) return;
     const bool esc_pressed = keys.take_press(GLFW_KEY_ESCAPE);
+    const bool pause_pressed = action_pressed(keys, options_.bindings, Action::Pause);
+    const bool start_pressed = pad.take_press(shell::kPadStart), b_pressed = pad.take_press(shell::kPadB);
     if (!interactive()) return;
-    if (keys.take_press(GLFW_KEY_M)) { // mute from anywhere, remembered
+    if (action_pressed(keys, options_.bindings, Action::Mute)) { // mute from anywhere, remembered
         options_.muted = !options_.muted;
         options_dirty_ = true;
         save_options_now();
@@ -32,17 +59,18 @@ void GameApp::handle_keys() {
     }
     // Losing the focus pauses (the mouse is no longer ours); a script's input does not depend on it.
     const bool focus_lost = !scripted_ && !glfwGetWindowAttrib(w, GLFW_FOCUSED);
-    if (screen_ == Screen::Playing && (esc_pressed || focus_lost)) {
+    if (screen_ == Screen::Playing && (esc_pressed || pause_pressed || start_pressed || focus_lost)) {
         pause();
         return;
     }
-    if (esc_pressed) {
-        if (screen_ == Screen::Paused)
-            resume();
-        else if (screen_ == Screen::HowTo || screen_ == Screen::Credits || screen_ == Screen::Options) {
-            save_options_now();
+    if (screen_ == Screen::Paused && (esc_pressed || pause_pressed || start_pressed || b_pressed)) {
+        resume();
+    } else if (esc_pressed || b_pressed) {
+        if (screen_ == Screen::HowTo || screen_ == Screen::Credits || screen_ == Screen::Options ||
+            screen_ == Screen::Controls)
+            go_back();
+        else if (screen_ == Screen::CustomLevels || screen_ == Screen::CampaignChoice)
             screen_ = return_to_;
-        }
     }
     if (screen_ == Screen::Playing && session_ && session_->dojo_controller) {
         for (int k = 0; k <= 9; ++k)
@@ -83,10 +111,21 @@ void GameApp::imgui(const shell::FrameInfo& info) {
     const float w = static_cast<float>(info.width), h = static_cast<float>(info.height);
     ImGuiIO& io = ImGui::GetIO();
     ui::begin_frame();
-    if (input_.captured())
+    // While a rebind waits (and until the mouse button it bound is let go) ImGui must not see the keys and
+    // clicks: they are the binding, not menu input.
+    if (controls_.hold_mouse && !events_.state().any_button_held()) controls_.hold_mouse = false;
+    const bool menu_input_off = controls_.waiting() || controls_.hold_mouse;
+    if (input_.captured() || menu_input_off)
         io.ConfigFlags |= ImGuiConfigFlags_NoMouse;
     else
         io.ConfigFlags &= ~ImGuiConfigFlags_NoMouse;
+    // Menus are played with the keyboard (arrows, Enter or Space, Esc) and the pad (d-pad or left stick, A,
+    // B) too; not while playing, where those keys are the game's.
+    constexpr ImGuiConfigFlags kNav = ImGuiConfigFlags_NavEnableKeyboard | ImGuiConfigFlags_NavEnableGamepad;
+    if (input_.captured() || menu_input_off || screen_ == Screen::Playing)
+        io.ConfigFlags &= ~kNav;
+    else
+        io.ConfigFlags |= kNav;
     draw_world_overlay(w, h);
     apply_menu_action(draw_screen(w, h));
     if (audio_ && screen_ != Screen::Playing) audio_->menu_sounds(ui::buttons_drawn());
@@ -151,7 +190,7 @@ MenuAction GameApp::draw_screen(float w, float h) {
         action = main_menu(error_, fonts, w, h);
         break;
     case Screen::HowTo:
-        action = how_to_play(fonts, w, h);
+        action = how_to_play(options_, fonts, w, h);
         break;
     case Screen::Credits:
         action = credits(fonts, w, h);
@@ -183,6 +222,18 @@ MenuAction GameApp::draw_screen(float w, float h) {
     case Screen::CampaignComplete:
         if (campaign_) action = campaign_complete_screen(*campaign_, fonts, w, h);
         break;
+    case Screen::Controls: {
+        bool changed = false;
+        const bool was_waiting = controls_.waiting();
+        action = controls_screen(options_, controls_, changed, fonts, w, h);
+        // The click (or Space, Enter) that asked for a key must not be taken as the key.
+        if (!was_waiting && controls_.waiting()) events_.state().clear_latches();
+        options_dirty_ |= changed;
+        break;
+    }
+    case Screen::CampaignChoice:
+        if (campaign_save_) action = campaign_choice_screen(*campaign_save_, fonts, w, h);
+        break;
     case Screen::CustomLevels:
         action = custom_levels_screen(custom_levels_, picked_level_, fonts, w, h);
         break;
@@ -202,8 +253,14 @@ void GameApp::apply_menu_action(MenuAction action) {
             load(level_path_, false, Screen::Playing);
         break;
     case MenuAction::Campaign:
-        if (auto started = start_campaign(); !started)
+        open_campaign();
+        break;
+    case MenuAction::Continue:
+    case MenuAction::NewCampaign:
+        if (auto started = start_campaign(action == MenuAction::Continue); !started) {
             error_ = "Could not start the campaign: " + started.error().str();
+            screen_ = Screen::Menu;
+        }
         break;
     case MenuAction::CustomLevels:
         open_custom_levels();
@@ -226,9 +283,12 @@ void GameApp::apply_menu_action(MenuAction action) {
     case MenuAction::Options:
         open_sub(Screen::Options);
         break;
+    case MenuAction::Controls:
+        controls_.cancel();
+        screen_ = Screen::Controls; // from Options: Back comes back to it
+        break;
     case MenuAction::Back:
-        save_options_now();
-        screen_ = return_to_;
+        go_back();
         break;
     case MenuAction::Quit:
         quit_ = true;

@@ -10,7 +10,9 @@
 #include "anim/dojo.h"
 #include "app_audio.h"
 #include "campaign_progress.h"
+#include "campaign_save.h"
 #include "campaign_screens.h"
+#include "controls_screen.h"
 #include "core/files.h"
 #include "core/log.h"
 #include "core/paths.h"
@@ -49,7 +51,9 @@ enum class Screen {
     HowTo,
     Credits,
     Options,
+    Controls, // Options > Controls
     CustomLevels,
+    CampaignChoice, // Campaign with a saved run: Continue or New campaign
     Playing,
     Paused,
     Dead,
@@ -104,6 +108,9 @@ class GameApp {
         : shell_(shell), renderer_(renderer), assets_(assets), level_path_(std::move(level_path)),
           seed_(seed) {
         options_ = load_options(options_path());
+        campaign_save_ = load_campaign_save(campaign_save_path());
+        std::error_code ec;
+        save_unreadable_ = !campaign_save_ && std::filesystem::exists(campaign_save_path(), ec);
         apply_render_options();
         events_.install(shell_.window());
     }
@@ -141,6 +148,10 @@ class GameApp {
     MenuAction draw_screen(float w, float h);
     void apply_menu_action(MenuAction action);
     void handle_keys();
+    // The Controls screen waiting for a key: the next key or button goes to it (true: this frame's keys are
+    // spent).
+    bool handle_rebind_keys();
+    void go_back();
     void enter_play();
     void toggle_dojo_picking();
     void pause();
@@ -148,7 +159,11 @@ class GameApp {
     void to_menu();
     void retry();
     // The campaign and the custom level list (game_app_campaign.cpp).
-    Result<void> start_campaign();
+    // Campaign: the choice screen when a run is saved, else a new run of campaign_path_.
+    void open_campaign();
+    // A new run of campaign_path_ (its save replaced), or the saved run at its next level.
+    Result<void> start_campaign(bool resume = false);
+    void write_save();
     void level_won();
     void next_level();
     void open_custom_levels();
@@ -178,6 +193,7 @@ class GameApp {
     std::uint64_t seed_;
     Options options_;
     bool options_dirty_ = false;
+    ControlsState controls_;
     std::unique_ptr<AppAudio> audio_; // before the sessions: their Soundscapes play through it
     InputEvents events_;
     PlayerInput input_;
@@ -189,6 +205,7 @@ class GameApp {
     std::size_t script_next_ = 0;
     bool scripted_ = false;
     bool click_next_frame_ = false;
+    unsigned pad_release_next_ = 0; // --input-script: pad buttons tapped last frame (bit per button)
     int exit_code_ = 0;
     Screen screen_ = Screen::Loading, return_to_ = Screen::Menu;
     std::unique_ptr<Session> session_, pending_;
@@ -201,7 +218,9 @@ class GameApp {
     render::FrameStats stats_;
     LevelResult win_; // the level just won (the win screen; the campaign keeps its own)
     std::filesystem::path campaign_path_;
-    std::optional<CampaignProgress> campaign_;            // while a campaign is played
+    std::optional<CampaignProgress> campaign_;  // while a campaign is played
+    std::optional<CampaignSave> campaign_save_; // the saved run (campaign_save.h), if it read
+    bool save_unreadable_ = false; // a save exists but did not read: kept aside before a new one is written
     std::vector<LevelGroup> custom_levels_;               // the custom level list, scanned when it opens
     const level::LevelFileEntry* picked_level_ = nullptr; // in custom_levels_: the one clicked this frame
     std::vector<render::MeshInstance> no_instances_;

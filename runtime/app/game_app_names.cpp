@@ -18,8 +18,9 @@ const std::vector<std::string>& game_app_flags() {
 }
 const std::vector<std::string>& game_app_screens() {
     static const std::vector<std::string> screens = {
-        "loading", "menu", "howto", "credits", "options",           "pause",        "death",
-        "win",     "play", "dojo",  "summary", "campaign-complete", "custom-levels"};
+        "loading",       "menu",     "howto",          "credits", "options", "pause",
+        "death",         "win",      "play",           "dojo",    "summary", "campaign-complete",
+        "custom-levels", "controls", "campaign-choice"};
     return screens;
 }
 
@@ -35,6 +36,8 @@ const char* screen_name(Screen s) {
         return "credits";
     case Screen::Options:
         return "options";
+    case Screen::Controls:
+        return "controls";
     case Screen::Playing:
         return "playing";
     case Screen::Paused:
@@ -49,6 +52,8 @@ const char* screen_name(Screen s) {
         return "campaign_complete";
     case Screen::CustomLevels:
         return "custom_levels";
+    case Screen::CampaignChoice:
+        return "campaign_choice";
     }
     return "?";
 }

@@ -18,6 +18,8 @@ Result<void> GameApp::start(const Automation& a) {
     status_path_ = a.status_file;
     script_ = a.script;
     scripted_ = a.scripted;
+    // A scripted run reads no real pad (a controller on the desk must not disturb a test): only the script's.
+    if (scripted_) shell_.inject_gamepad(shell::GamepadState{});
     campaign_path_ = a.campaign.empty() ? paths::level("campaign.json") : a.campaign;
     // A screenshot without --screen shows the game (what the render-only view used to show, now playable);
     // a scripted screenshot run starts where a player does, at the loading screen.
@@ -83,7 +85,18 @@ Result<void> GameApp::set_up_scenario(const Automation& a, const std::string& sc
     if (screen == "howto") open_sub(Screen::HowTo);
     if (screen == "credits") open_sub(Screen::Credits);
     if (screen == "options") open_sub(Screen::Options);
+    if (screen == "controls") {
+        open_sub(Screen::Options);
+        screen_ = Screen::Controls; // Back returns to Options
+    }
     if (screen == "custom-levels") open_custom_levels();
+    if (screen == "campaign-choice") {
+        if (!campaign_save_ || campaign_save_->won.empty() || campaign_save_->finished())
+            return Error("--screen campaign-choice: no campaign run in progress is saved",
+                         Location(campaign_save_path().string()),
+                         "win a campaign level first, or set XDG_DATA_HOME to a folder with a save");
+        open_sub(Screen::CampaignChoice);
+    }
     if (screen == "pause") pause();
     if (screen == "death") {
         g.damage_player(1.0e6f);

@@ -16,6 +16,13 @@ void GameApp::run_script(long long frame) {
         events_.inject_button(GLFW_MOUSE_BUTTON_LEFT, GLFW_PRESS);
         events_.inject_button(GLFW_MOUSE_BUTTON_LEFT, GLFW_RELEASE);
     }
+    if (pad_release_next_ != 0) { // the pad buttons tapped last frame come up now
+        shell::GamepadState pad = shell_.gamepad();
+        for (int b = 0; b < shell::kPadButtonCount; ++b)
+            if (pad_release_next_ & (1u << b)) pad.buttons[static_cast<std::size_t>(b)] = false;
+        pad_release_next_ = 0;
+        shell_.inject_gamepad(pad);
+    }
     while (script_next_ < script_.size() && script_[script_next_].frame <= frame) {
         const ScriptEvent& e = script_[script_next_++];
         switch (e.kind) {
@@ -52,6 +59,21 @@ void GameApp::run_script(long long frame) {
             // frame, and a pointer that only just entered the window may not count yet (as with a hand).
             events_.inject_cursor((it->x0 + it->x1) * 0.5, (it->y0 + it->y1) * 0.5);
             click_next_frame_ = true;
+            break;
+        }
+        case ScriptEvent::Kind::PadButton: {
+            shell::GamepadState pad = shell_.gamepad();
+            pad.connected = true;
+            pad.buttons[static_cast<std::size_t>(e.code)] = e.action != 0;
+            if (e.action == 2) pad_release_next_ |= 1u << e.code;
+            shell_.inject_gamepad(pad);
+            break;
+        }
+        case ScriptEvent::Kind::PadAxis: {
+            shell::GamepadState pad = shell_.gamepad();
+            pad.connected = true;
+            pad.axes[static_cast<std::size_t>(e.code)] = static_cast<float>(e.x);
+            shell_.inject_gamepad(pad);
             break;
         }
         case ScriptEvent::Kind::Quit:

@@ -29,6 +29,12 @@ void GameApp::write_status(const shell::FrameInfo& info) {
     // What the renderer made of them (automatic values resolved for this GL driver).
     add("renderer render_scale %.2f quality %s", renderer_.render_scale(),
         renderer_.quality() == render::RenderQuality::Fast ? "fast" : "full");
+    add("pad connected %d look %.2f dead_zone %.2f", shell_.gamepad().connected ? 1 : 0,
+        options_.pad_look_sensitivity, options_.pad_dead_zone);
+    add("controls waiting %s",
+        controls_.waiting() ? action_info(static_cast<Action>(controls_.waiting_action)).id : "-");
+    for (std::size_t a = 0; a < kActionCount; ++a)
+        add("bind %s %s", kActionInfo[a].id, keys_text(options_.bindings, static_cast<Action>(a)).c_str());
     add("sound master %.2f effects %.2f ambience %.2f muted %d", options_.master_volume,
         options_.effects_volume, options_.ambience_volume, options_.muted ? 1 : 0);
     if (audio_) {
@@ -38,6 +44,8 @@ void GameApp::write_status(const shell::FrameInfo& info) {
     }
     for (const auto& b : ui::buttons_drawn())
         add("button %.0f %.0f %.0f %.0f %s", b.x0, b.y0, b.x1, b.y1, b.label.c_str());
+    for (const auto& b : ui::buttons_drawn())
+        if (b.focused) add("focus %s", b.label.c_str());
     if (session_ && session_->game) {
         const auto& g = *session_->game;
         const auto& p = g.player();
@@ -136,6 +144,11 @@ void GameApp::write_campaign_status(std::string& s) const {
     } else {
         s += "campaign -\n";
     }
+    if (campaign_save_)
+        s += "campaign_save " + std::to_string(campaign_save_->won.size()) + " " +
+             std::to_string(campaign_save_->level_count) + " " + campaign_save_->campaign.string() + "\n";
+    else
+        s += "campaign_save -\n";
     if (screen_ == Screen::Won) result_line("win_result", win_);
     if (screen_ != Screen::CustomLevels) return;
     for (std::size_t group = 0; group < custom_levels_.size(); ++group)

@@ -5,6 +5,8 @@
 // key's and button's held state, a latch "went down since the game last asked", and the cursor's motion
 // since the game last asked. Scripted input (--input-script) enters through the same handlers.
 // Header-only state (InputState) so tests use it without a window; input_events.cpp binds it to GLFW.
+#include "key_names.h"
+
 #include <array>
 
 struct GLFWwindow;
@@ -38,6 +40,20 @@ class InputState {
     // True once for each time the key went down since the last call (a tap shorter than a frame counts).
     bool take_press(int key) { return take(slot(keys_, key)); }
     bool take_click(int b) { return take(slot(buttons_, b)); }
+    // The first key, else mouse button (kMouseBase + button, key_names.h), that went down since the last
+    // take; kNoKey when none did (the Controls screen waiting for the key to bind).
+    int take_any_press() {
+        for (int k = 0; k < kKeys; ++k)
+            if (take_press(k)) return k;
+        for (int b = 0; b < kButtons; ++b)
+            if (take_click(b)) return kMouseBase + b;
+        return kNoKey;
+    }
+    bool any_button_held() const {
+        for (const auto& b : buttons_)
+            if (b.held) return true;
+        return false;
+    }
     // Held now, or tapped since the last take: what a per-step "is it down" question should see.
     bool down_or_tapped(int key) { return take_press(key) || held(key); }
     // Cursor motion since the last call, in pixels.

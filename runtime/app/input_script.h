@@ -10,6 +10,9 @@
 //   <frame> move <x> <y>                  the cursor to window pixel (x, y)
 //   <frame> look <dx> <dy>                move the cursor by (dx, dy) pixels (mouse look while captured)
 //   <frame> click <button label>          move onto the menu button with that label (drawn last frame), click
+//   <frame> pad <button> down|up|tap      a gamepad button: a b x y lb rb back start dup ddown dleft dright
+//                                         (tap: down this frame, up the next: the pad is polled once a frame)
+//   <frame> pad <axis> <value>            a gamepad axis: lx ly rx ry (-1..1, up is -1) lt rt (-1..1)
 //   <frame> quit                          end the program (exit 0)
 //
 // Frames count from 0 (the first frame the window draws) and must not decrease down the file.
@@ -17,6 +20,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -24,7 +28,7 @@
 namespace ks::runtime {
 
 struct ScriptEvent {
-    enum class Kind { Key, Mouse, Move, Look, ClickButton, Quit };
+    enum class Kind { Key, Mouse, Move, Look, ClickButton, PadButton, PadAxis, Quit };
     long long frame = 0;
     Kind kind = Kind::Key;
     int code = 0;   // GLFW key or mouse button
@@ -42,10 +46,27 @@ inline int script_key_code(const std::string& name) {
     if (name == "escape" || name == "esc") return 256;
     if (name == "enter") return 257;
     if (name == "tab") return 258;
+    if (name == "backspace") return 259;
     if (name == "right") return 262;
     if (name == "left") return 263;
     if (name == "down") return 264;
     if (name == "up") return 265;
+    return -1;
+}
+
+// shell::GamepadButton / GamepadAxis for the script's pad names; -1 for unknown names.
+inline int script_pad_button(const std::string& name) {
+    static const char* const names[] = {"a",      "b",    "x",      "y",     "lb",
+                                        "rb",     "back", "start",  "guide", "lthumb",
+                                        "rthumb", "dup",  "dright", "ddown", "dleft"};
+    for (int i = 0; i < static_cast<int>(std::size(names)); ++i)
+        if (name == names[i]) return i;
+    return -1;
+}
+inline int script_pad_axis(const std::string& name) {
+    static const char* const names[] = {"lx", "ly", "rx", "ry", "lt", "rt"};
+    for (int i = 0; i < static_cast<int>(std::size(names)); ++i)
+        if (name == names[i]) return i;
     return -1;
 }
 
@@ -116,6 +137,26 @@ inline Result<std::vector<ScriptEvent>> parse_input_script(const std::string& te
             const auto last = e.label.find_last_not_of(" \t\r");
             e.label = first == std::string::npos ? "" : e.label.substr(first, last - first + 1);
             if (e.label.empty()) return fail("click needs a button label", "e.g. '10 click Play'");
+        } else if (verb == "pad") {
+            std::string name, act;
+            in >> name >> act;
+            if (script_pad_axis(name) >= 0) {
+                e.kind = ScriptEvent::Kind::PadAxis;
+                e.code = script_pad_axis(name);
+                char* end = nullptr;
+                e.x = std::strtod(act.c_str(), &end);
+                if (act.empty() || *end != '\0' || !std::isfinite(e.x) || std::abs(e.x) > 1.0)
+                    return fail("pad axis " + name + " needs a value in -1..1", "e.g. '10 pad ly -1'");
+            } else {
+                e.kind = ScriptEvent::Kind::PadButton;
+                e.code = script_pad_button(name);
+                e.action = action_of(act, "tap");
+                if (e.code < 0)
+                    return fail(
+                        "unknown pad button or axis '" + name + "'",
+                        "buttons: a b x y lb rb back start dup ddown dleft dright; axes: lx ly rx ry lt rt");
+                if (e.action < 0) return fail("pad action '" + act + "'", "use down, up or tap");
+            }
         } else if (verb == "quit") {
             e.kind = ScriptEvent::Kind::Quit;
         } else {

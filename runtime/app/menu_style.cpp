@@ -1,5 +1,7 @@
 #include "menu_style.h"
 
+#include <imgui_internal.h>
+
 #include <algorithm>
 
 namespace ks::runtime::ui {
@@ -52,6 +54,7 @@ void begin_panel(const char* id, const std::string& title, float panel_w, float 
     ImGui::PushStyleColor(ImGuiCol_WindowBg, IM_COL32(0, 0, 0, 0));
     ImGui::PushStyleColor(ImGuiCol_Border, IM_COL32(0, 0, 0, 0));
     ImGui::PushStyleColor(ImGuiCol_Text, kInk);
+    ImGui::PushStyleColor(ImGuiCol_NavHighlight, kNavRing);
     ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(10 * s, 14 * s));
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(30 * s, 14 * s));
     ImGui::Begin(id, nullptr,
@@ -65,7 +68,7 @@ void begin_panel(const char* id, const std::string& title, float panel_w, float 
 void end_panel() {
     ImGui::End();
     ImGui::PopStyleVar(2);
-    ImGui::PopStyleColor(3);
+    ImGui::PopStyleColor(4);
 }
 
 namespace {
@@ -95,6 +98,18 @@ void record_button(const char* label) {
     drawn().push_back({label, a.x, a.y, b.x, b.y, ImGui::IsItemHovered(), ImGui::IsItemClicked()});
 }
 
+void nav_focus_ring() {
+    const ImGuiContext* g = ImGui::GetCurrentContext();
+    if (!g || g->NavDisableHighlight || !ImGui::IsItemFocused()) return;
+    if (!drawn().empty() && drawn().back().x0 >= ImGui::GetItemRectMin().x - 1.0f &&
+        drawn().back().x1 <= ImGui::GetItemRectMax().x + 1.0f)
+        drawn().back().focused = true; // the button record_button() just recorded
+    const float s = ui_scale(ImGui::GetIO().DisplaySize.y);
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    ImGui::GetWindowDrawList()->AddRect(ImVec2(a.x - 4 * s, a.y - 4 * s), ImVec2(b.x + 4 * s, b.y + 4 * s),
+                                        kNavRing, 8.0f * s, 0, 4.0f * s);
+}
+
 bool big_button(const char* label, const shell::Fonts& fonts, float width_720) {
     const float s = ImGui::GetIO().DisplaySize.y > 0 ? ui_scale(ImGui::GetIO().DisplaySize.y) : 1.0f;
     const ImVec2 size(width_720 * s, 52.0f * s);
@@ -111,6 +126,7 @@ bool big_button(const char* label, const shell::Fonts& fonts, float width_720) {
     if (fonts.hud) ImGui::PushFont(fonts.hud);
     const bool clicked = ImGui::Button(label, size);
     record_button(label);
+    nav_focus_ring();
     if (fonts.hud) ImGui::PopFont();
     ImGui::PopStyleVar();
     ImGui::PopStyleColor(4);
@@ -147,6 +163,7 @@ int button_row(std::initializer_list<const char*> labels, const shell::Fonts& fo
         }
         if (ImGui::Button(label, ImVec2(each, 52 * s))) clicked = static_cast<int>(i);
         record_button(label);
+        nav_focus_ring();
         if (quiet) ImGui::PopStyleColor(2);
         ++i;
     }

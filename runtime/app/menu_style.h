@@ -45,12 +45,18 @@ struct ButtonRect {
     float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
     bool hovered = false; // under the mouse this frame (the menu's hover sound)
     bool clicked = false; // pressed this frame (its click sound)
+    bool focused = false; // highlighted by keyboard or gamepad navigation (nav_focus_ring)
 };
 void begin_frame();
 const std::vector<ButtonRect>& buttons_drawn();
 // Records the last ImGui item as a button named `label` (for buttons not drawn by big_button): the part of
 // it not clipped away, nothing when it is out of sight.
 void record_button(const char* label);
+
+// The keyboard/gamepad highlight: a thick warm ring round the last item when it has the navigation focus and
+// the player is navigating with keys or a pad (ImGui hides it while the mouse is used).
+inline constexpr ImU32 kNavRing = IM_COL32(255, 160, 30, 255);
+void nav_focus_ring();
 
 // Centred body text lines.
 void centred_text(const std::string& text, ImFont* font, ImU32 colour = kInk);

@@ -1,13 +1,14 @@
 #pragma once
-// The player's options (mouse sensitivity, invert Y, field of view) and their file,
-// $XDG_CONFIG_HOME/killswitch/options.json (or ~/.config/killswitch/options.json). GL-free and header-only so
-// the tests use it directly (runtime/ sources are compiled only into the killswitch executable).
-// A missing file means defaults; a bad file (not JSON, wrong types, NaN, out of range) gives one warning
-// naming the file and the field, and the defaults for what could not be read — never a failure.
+// The player's options (mouse sensitivity, invert Y, field of view, sound, key bindings, gamepad) and their
+// file, $XDG_CONFIG_HOME/killswitch/options.json (or ~/.config/killswitch/options.json). GL-free and
+// header-only so the tests use it directly (runtime/ sources are compiled only into the killswitch
+// executable). A missing file means defaults; a bad file (not JSON, wrong types, NaN, out of range) gives one
+// warning naming the file and the field, and the defaults for what could not be read — never a failure.
 #include "core/files.h"
 #include "core/log.h"
 #include "core/math.h"
 #include "core/result.h"
+#include "key_bindings.h"
 
 #include <nlohmann/json.hpp>
 
@@ -39,12 +40,18 @@ struct Options {
     float effects_volume = 1.0f;
     float ambience_volume = 0.7f;
     bool muted = false;
+    // Controls: the keys of every action (key_bindings.h), and the gamepad's look speed (multiplies
+    // GamepadInput::kLookRate) and its sticks' radial dead zone (a fraction of full tilt).
+    Bindings bindings;
+    float pad_look_sensitivity = 1.0f;
+    float pad_dead_zone = 0.15f;
     bool operator==(const Options&) const = default;
 
     static constexpr float kMinSensitivity = 0.1f, kMaxSensitivity = 5.0f;
     static constexpr float kMinFov = 50.0f, kMaxFov = 110.0f;
     static constexpr float kRadiansPerPixel = 0.0022f;
     static constexpr float kMinRenderScale = 0.25f, kMaxRenderScale = 1.0f;
+    static constexpr float kMinDeadZone = 0.0f, kMaxDeadZone = 0.5f;
 };
 
 // Where the options live: $XDG_CONFIG_HOME/killswitch, else $HOME/.config/killswitch, else ./.killswitch.
@@ -70,6 +77,9 @@ inline std::string options_to_json(const Options& o) {
     j["effects_volume"] = o.effects_volume;
     j["ambience_volume"] = o.ambience_volume;
     j["muted"] = o.muted;
+    j["bindings"] = bindings_to_json(o.bindings);
+    j["pad_look_sensitivity"] = o.pad_look_sensitivity;
+    j["pad_dead_zone"] = o.pad_dead_zone;
     return j.dump(2) + "\n";
 }
 
@@ -98,6 +108,10 @@ inline Options options_from_json(const std::string& text, std::vector<std::strin
     read_number("master_volume", o.master_volume, 0.0f, 1.0f);
     read_number("effects_volume", o.effects_volume, 0.0f, 1.0f);
     read_number("ambience_volume", o.ambience_volume, 0.0f, 1.0f);
+    read_number("pad_look_sensitivity", o.pad_look_sensitivity, Options::kMinSensitivity,
+                Options::kMaxSensitivity);
+    read_number("pad_dead_zone", o.pad_dead_zone, Options::kMinDeadZone, Options::kMaxDeadZone);
+    if (j.contains("bindings")) o.bindings = bindings_from_json(j["bindings"], problems);
     if (j.contains("render_scale")) {
         const auto& v = j["render_scale"];
         const bool number = v.is_number() && is_finite(v.get<float>());

@@ -1,12 +1,18 @@
 #include "player_input.h"
 
 #define GLFW_INCLUDE_NONE
-#define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
-#include <cmath>
-
 namespace ks::runtime {
+
+// key_names.h mirrors GLFW's codes so that the tests need no GLFW.
+static_assert(kKeyEscape == GLFW_KEY_ESCAPE && kLastKeyCode == GLFW_KEY_LAST && kKeySpace == GLFW_KEY_SPACE);
+static_assert(kKeyUp == GLFW_KEY_UP && kKeyDown == GLFW_KEY_DOWN && kKeyLeft == GLFW_KEY_LEFT &&
+              kKeyRight == GLFW_KEY_RIGHT);
+static_assert(kMouseButtons == GLFW_MOUSE_BUTTON_LAST + 1);
+static_assert(GLFW_KEY_F1 == 290 && GLFW_KEY_F25 == 314 && GLFW_KEY_KP_0 == 320 && GLFW_KEY_KP_EQUAL == 336);
+static_assert(GLFW_KEY_LEFT_SHIFT == 340 && GLFW_KEY_MENU == 348 && GLFW_KEY_PAGE_UP == 266 &&
+              GLFW_KEY_CAPS_LOCK == 280 && GLFW_KEY_PAUSE == 284 && GLFW_KEY_GRAVE_ACCENT == 96);
 
 void PlayerInput::capture(GLFWwindow* window, InputState& state) {
     if (window) {
@@ -16,6 +22,7 @@ void PlayerInput::capture(GLFWwindow* window, InputState& state) {
     captured_ = true;
     // The click that resumed the game must not also fire; the jump to the locked cursor is no look.
     state.clear_latches();
+    pad_.clear_latches();
     if (window) {
         // The origin for the motion that follows, so that the very first movement already turns.
         double x = 0.0, y = 0.0;
@@ -31,27 +38,12 @@ void PlayerInput::release(GLFWwindow* window, InputState& state) {
     }
     captured_ = false;
     state.clear_latches();
+    pad_.clear_latches();
 }
 
-game::Input PlayerInput::gather(InputState& state, const Options& options) {
-    game::Input in;
-    // A tap shorter than a step still moves the player for one step.
-    auto axis = [&](int a, int b) {
-        const bool first = state.down_or_tapped(a), second = state.down_or_tapped(b); // both latches read
-        return first || second ? 1.0f : 0.0f;
-    };
-    in.move_forward = axis(GLFW_KEY_W, GLFW_KEY_UP) - axis(GLFW_KEY_S, GLFW_KEY_DOWN);
-    in.move_right = axis(GLFW_KEY_D, GLFW_KEY_RIGHT) - axis(GLFW_KEY_A, GLFW_KEY_LEFT);
-    in.jump = state.down_or_tapped(GLFW_KEY_SPACE); // held jump re-jumps on landing, as the reference
-    in.interact = state.take_press(GLFW_KEY_E);
-    const bool left = state.take_click(GLFW_MOUSE_BUTTON_LEFT);
-    const bool right = state.take_click(GLFW_MOUSE_BUTTON_RIGHT);
-    in.fire = captured_ && (left || right);
-
-    double dx = 0.0, dy = 0.0;
-    state.take_motion(dx, dy);
-    if (captured_ && std::isfinite(dx) && std::isfinite(dy))
-        look_from_motion(dx, dy, options, in.look_yaw, in.look_pitch);
+game::Input PlayerInput::gather(InputState& state, const Options& options, float dt) {
+    game::Input in = keyboard_mouse_input(state, options, captured_);
+    pad_.add_to(in, dt, options);
     return in;
 }
 

@@ -7,21 +7,19 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 
 namespace ks::runtime {
 
 namespace {
-// The controls, shared by How to Play and the docs (seed doc: WASD/arrows, Space, E, mouse, Esc).
-const char* const kControls[][2] = {
-    {"W A S D / arrow keys", "move"},
+// The controls that are not bindings (How to Play lists the bindings first, from the options).
+const char* const kFixedControls[][2] = {
     {"Mouse", "look around"},
-    {"Left or right click", "shoot"},
-    {"Space", "jump"},
-    {"E", "open doors, switch lights, use the computer"},
-    {"Esc", "pause and free the mouse"},
-    {"Click in the window", "resume"},
+    {"Esc", "pause and free the mouse; back in menus"},
+    {"Gamepad", "left stick move, right stick look, A jump"},
+    {"", "right trigger shoot, X interact, Start pause"},
     {"1 - 9, 0, Tab (Dojo)", "play robot clips, reset, pick from the list"},
 };
 
@@ -138,17 +136,36 @@ MenuAction win_menu(const LevelResult& result, const shell::Fonts& fonts, float 
     return action;
 }
 
-MenuAction how_to_play(const shell::Fonts& fonts, float w, float h) {
+MenuAction how_to_play(const Options& options, const shell::Fonts& fonts, float w, float h) {
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
     MenuAction action = MenuAction::None;
-    ui::begin_panel("##howto", "How to Play", 760, 470, w, h, fonts);
+    // 500 at 720p; in a smaller window the controls list scrolls above Back.
+    const float panel_h = std::clamp(h / ui::ui_scale(h) - 80.0f, 440.0f, 500.0f);
+    ui::begin_panel("##howto", "How to Play", 900, panel_h, w, h, fonts);
     ImGui::PushTextWrapPos(ImGui::GetWindowWidth() - 30 * ui::ui_scale(h));
     ImGui::TextWrapped("Survive the rogue robots and reach the computer at the end of the level to end the "
                        "simulation. Shoot gas cylinders to blow up robots near them - keep your distance. "
                        "Pick up health (red), shield (blue) and ammo (yellow) on the way.");
     ImGui::PopTextWrapPos();
     if (fonts.body) ImGui::PushFont(fonts.body);
-    for (const auto& row : kControls) two_columns(row[0], row[1], 0.42f);
+    ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(10 * ui::ui_scale(h), 5 * ui::ui_scale(h)));
+    ImGui::PushStyleColor(ImGuiCol_ScrollbarBg, IM_COL32(0, 0, 0, 20));
+    ImGui::PushStyleColor(ImGuiCol_ScrollbarGrab, ui::kAccent);
+    ImGui::BeginChild("##howto_keys", ImVec2(0, ImGui::GetContentRegionAvail().y - 70 * ui::ui_scale(h)),
+                      false, ImGuiWindowFlags_NoBackground | ImGuiWindowFlags_NavFlattened);
+    const auto& b = options.bindings;
+    const std::string move = keys_text(b, Action::Forward) + ", " + keys_text(b, Action::Left) + ", " +
+                             keys_text(b, Action::Back) + ", " + keys_text(b, Action::Right);
+    two_columns(move.c_str(), "move forward, left, back, right", 0.36f);
+    for (Action a : {Action::Jump, Action::Fire, Action::Interact, Action::Pause, Action::Mute}) {
+        std::string what = action_info(a).label; // "Jump" → "jump", as the other rows
+        what[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(what[0])));
+        two_columns(keys_text(b, a).c_str(), what.c_str(), 0.36f);
+    }
+    for (const auto& row : kFixedControls) two_columns(row[0], row[1], 0.36f);
+    ImGui::EndChild();
+    ImGui::PopStyleColor(2);
+    ImGui::PopStyleVar();
     if (fonts.body) ImGui::PopFont();
     if (ui::big_button("Back", fonts)) action = MenuAction::Back;
     ui::end_panel();
@@ -264,7 +281,14 @@ MenuAction options_panel(Options& o, bool& changed, const shell::Fonts& fonts, f
     if (fonts.body) ImGui::PopFont();
     ImGui::PopStyleVar(3);
     ImGui::PopStyleColor(6);
-    if (ui::big_button("Back", fonts)) action = MenuAction::Back;
+    switch (ui::button_row({"Controls\u2026", "Back"}, fonts, 560)) {
+    case 0:
+        action = MenuAction::Controls;
+        break;
+    case 1:
+        action = MenuAction::Back;
+        break;
+    }
     ui::end_panel();
     return action;
 }

@@ -20,6 +20,9 @@ enum class MenuAction {
     HowTo,
     Credits,
     Options,
+    Controls, // Options > Controls (key bindings, gamepad)
+    Continue, // Campaign > Continue: the saved campaign at its next level
+    NewCampaign,
     Quit,
     Resume,
     MainMenu,
@@ -33,7 +36,8 @@ MenuAction pause_menu(const shell::Fonts& fonts, float w, float h);
 MenuAction death_menu(const shell::Fonts& fonts, float w, float h);
 // A single level won (Play, a custom level): its time, robots and accuracy, Play Again or Main Menu.
 MenuAction win_menu(const LevelResult& result, const shell::Fonts& fonts, float w, float h);
-MenuAction how_to_play(const shell::Fonts& fonts, float w, float h);
+// The goal and the controls: the player's current key bindings and the gamepad's layout.
+MenuAction how_to_play(const Options& options, const shell::Fonts& fonts, float w, float h);
 MenuAction credits(const shell::Fonts& fonts, float w, float h);
 // Edits `options` in place; `changed` is set when a value moved this frame.
 MenuAction options_panel(Options& options, bool& changed, const shell::Fonts& fonts, float w, float h);

@@ -150,6 +150,9 @@ TEST_CASE(
     CHECK(count(summary.image, 0.25, 0.6, 0.55, 0.8,
                 [](const unsigned char* p) { return near(p, 41, 171, 226); }) > 200);
 
+    // The first run saved its progress (level one won): without the save, Campaign starts afresh again
+    // instead of offering Continue (test_play_controls.cpp covers Continue).
+    std::filesystem::remove(dir / "xdg-data" / "killswitch" / "campaign_save.json");
     const Run done = run_script(command, dir, "complete", script, 262);
     INFO(done.command.output);
     INFO(done.status);
