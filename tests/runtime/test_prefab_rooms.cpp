@@ -1,6 +1,6 @@
 // Issue 17's "done when", as a test: a designer builds three rooms from the shipped prefabs with layers and
-// groups (docs/prefabs/three_rooms.kss), the play-test report shows where the bot dies (at the guard room's door),
-// the fix (three_rooms_fix.kss) makes it win every run, and the reopened file has everything as it was
+// groups (docs/prefabs/three_rooms.kss), the play-test report shows where the bot dies (at the guard room's
+// door), the fix (three_rooms_fix.kss) makes it win every run, and the reopened file has everything as it was
 // left. Here (not tests/editor) because it needs both the editor's model and the game.
 #include "game/playtest_analysis.h"
 #include "level/level_io.h"
