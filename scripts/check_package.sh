@@ -4,7 +4,8 @@
 # killswitch package is already installed, so it never removes one it did not install.
 #   - both programs run from /tmp and print their version; the bot wins the installed main level headless;
 #   - the shared libraries all resolve (the package's dependencies are complete);
-#   - the desktop entries, AppStream metadata and manual pages validate; the icons are in the theme.
+#   - the desktop entries, AppStream metadata and manual pages validate; the icons are in the theme;
+#   - a level the installed editor saves into the user levels folder is listed by the installed game.
 set -euo pipefail
 [ $# -eq 1 ] && [ -f "$1" ] || { echo "usage: $0 build/package/killswitch_VERSION_amd64.deb" >&2; exit 2; }
 deb="$(readlink -f "$1")"
@@ -59,6 +60,34 @@ if command -v xvfb-run >/dev/null; then
         fi
     done
     say "both programs drew their windows (screenshots in $PWD)"
+
+    # A designer's level: saved by the installed editor into the user levels folder, listed by the
+    # installed game's Custom level... screen (both under a scratch XDG_DATA_HOME), and won by its bot.
+    export XDG_DATA_HOME="$PWD/data"
+    levels="$XDG_DATA_HOME/killswitch/levels"
+    mkdir -p "$levels"
+    cat >designer.kss <<KSS
+level_name A designer's level
+place floor at 0,0,0 name Ground
+set size 20,20
+place control_panel at 0,0,-6 name Panel
+player_start 0,0,6
+objective add shutdown Shut the simulation down
+link 2 add on_use shutdown complete
+prefab place doorway at 0,0,-9
+save $levels/designers_level.json
+KSS
+    env -u DISPLAY /usr/games/killswitch-editor --script designer.kss >editor_script.log 2>&1 ||
+        { cat editor_script.log >&2; fail "the installed editor could not build and save a level"; }
+    xvfb-run -a -s "-screen 0 1280x720x24 -noreset" /usr/games/killswitch --screen custom-levels \
+        --status-file custom.txt --width 640 --height 360 --frames 5 --screenshot "$PWD/custom.png" \
+        >custom.log 2>&1 || { cat custom.log >&2; fail "the installed game's Custom level screen failed"; }
+    grep -q "^custom_level .* ok designers_level.json A designer's level$" custom.txt ||
+        { cat custom.txt >&2; fail "the installed game does not list the level the installed editor saved"; }
+    won="$(env -u DISPLAY /usr/games/killswitch --headless --autoplay --level "$levels/designers_level.json")"
+    case "$won" in win\ after*) ;; *) fail "the bot did not win the designer's level: $won" ;; esac
+    unset XDG_DATA_HOME
+    say "a level saved by the installed editor (with the shipped doorway prefab) is listed and won by the installed game"
 fi
 
 desktop-file-validate /usr/share/applications/killswitch.desktop /usr/share/applications/killswitch-editor.desktop
