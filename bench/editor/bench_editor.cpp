@@ -9,6 +9,7 @@
 // Writes docs/bench/editor_walk_cell.csv (not with --quick).
 #include "bench_registry.h"
 #include "core/paths.h"
+#include "editor/median_time.h"
 #include "level/level_io.h"
 #include "model/editor.h"
 #include "model/reachability.h"
@@ -36,19 +37,7 @@ std::filesystem::path out_dir() {
     return std::filesystem::path(KS_SOURCE_DIR) / "docs" / "bench";
 }
 
-// Median wall time of `fn` in milliseconds over `reps` runs (after one warm-up run).
-double median_ms(int reps, const std::function<void()>& fn) {
-    fn();
-    std::vector<double> t;
-    t.reserve(static_cast<size_t>(reps));
-    for (int i = 0; i < reps; ++i) {
-        const auto t0 = Clock::now();
-        fn();
-        t.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
-    }
-    std::nth_element(t.begin(), t.begin() + reps / 2, t.end());
-    return t[static_cast<size_t>(reps / 2)];
-}
+using bench::median_ms;
 
 // A 40 x 40 room split along z = 0 by a wall with a gap `width` wide centred at x = `offset`; the player
 // starts on one side, the control panel stands on the other.

@@ -5,6 +5,7 @@
 #include "bench_registry.h"
 #include "core/files.h"
 #include "core/paths.h"
+#include "editor/median_time.h"
 #include "level/level_io.h"
 #include "model/editor.h"
 #include "model/prefab.h"
@@ -23,20 +24,9 @@
 namespace {
 
 using namespace ks;
-using Clock = std::chrono::steady_clock;
 constexpr double kFrameMs = 1000.0 / 60.0;
 
-double median_ms(int reps, const std::function<void()>& fn) {
-    fn();
-    std::vector<double> t;
-    for (int i = 0; i < reps; ++i) {
-        const auto t0 = Clock::now();
-        fn();
-        t.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
-    }
-    std::nth_element(t.begin(), t.begin() + reps / 2, t.end());
-    return t[static_cast<size_t>(reps / 2)];
-}
+using bench::median_ms;
 
 // Rooms until the level holds at least `entities` entities.
 level::Level level_of(size_t entities) {

@@ -246,6 +246,10 @@ class Editor {
     // The editor section after `change` (groups_edit.cpp): removed entities leave layers, groups and
     // instances; new ones join the active layer; edited prefab members record their overrides.
     void follow_structure(LevelChange& change) const;
+    // Hiding/locking one entity (`list`: EditorData::hidden or ::locked) and a layer's visible/locked flag.
+    Result<void> set_entity_flag(int id, std::vector<int> level::EditorData::*list, bool on,
+                                 const char* what);
+    Result<void> set_layer_flag(int index, bool level::Layer::*flag, bool value, const char* what);
     // One LevelChange replacing the editor section with `data` (no step when equal).
     void change_structure(std::string name, level::EditorData data, std::vector<int> selection_after);
     // One LevelChange updating robot `id`'s patrol with `edit`; nothing changes if it fails.

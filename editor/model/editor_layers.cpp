@@ -77,22 +77,20 @@ Result<void> Editor::layer_remove(int index) {
 }
 
 Result<void> Editor::layer_set_visible(int index, bool visible) {
-    if (auto r = check_layer(doc_.level.editor, index, visible ? "Show layer" : "Hide layer"); !r) return r;
-    EditorData data = doc_.level.editor;
-    Layer& layer = data.layers[static_cast<size_t>(index)];
-    layer.visible = visible;
-    const std::string name = (visible ? "Show layer " : "Hide layer ") + layer.name;
-    change_structure(name, std::move(data), doc_.selection);
-    return ok();
+    return set_layer_flag(index, &level::Layer::visible, visible, visible ? "Show layer" : "Hide layer");
 }
 
 Result<void> Editor::layer_set_locked(int index, bool locked) {
-    if (auto r = check_layer(doc_.level.editor, index, locked ? "Lock layer" : "Unlock layer"); !r) return r;
+    return set_layer_flag(index, &level::Layer::locked, locked, locked ? "Lock layer" : "Unlock layer");
+}
+
+Result<void> Editor::set_layer_flag(int index, bool level::Layer::*flag, bool value, const char* what) {
+    if (auto r = check_layer(doc_.level.editor, index, what); !r) return r;
     EditorData data = doc_.level.editor;
     Layer& layer = data.layers[static_cast<size_t>(index)];
-    layer.locked = locked;
-    const std::string name = (locked ? "Lock layer " : "Unlock layer ") + layer.name;
-    change_structure(name, std::move(data), doc_.selection);
+    layer.*flag = value;
+    std::string name = std::string(what) + " " + layer.name;
+    change_structure(std::move(name), std::move(data), doc_.selection);
     return ok();
 }
 

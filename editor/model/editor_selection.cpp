@@ -75,34 +75,28 @@ std::vector<const level::Entity*> Editor::selected_entities() const {
 }
 
 Result<void> Editor::set_hidden(int id, bool hidden) {
-    const level::Entity* e = doc_.level.find(id);
-    if (!e) return Error("hide: no entity with id " + std::to_string(id));
-    level::EditorData data = doc_.level.editor;
-    auto& list = data.hidden;
-    auto at = std::lower_bound(list.begin(), list.end(), id);
-    const bool listed = at != list.end() && *at == id;
-    if (hidden && !listed) list.insert(at, id);
-    if (!hidden && listed) list.erase(at);
-    change_structure(std::string(hidden ? "Hide " : "Show ") + std::string(level::type_name(e->type())) +
-                         " " + std::to_string(id),
-                     std::move(data), doc_.selection);
-    return ok();
+    return set_entity_flag(id, &level::EditorData::hidden, hidden, hidden ? "Hide" : "Show");
 }
 
 Result<void> Editor::set_locked(int id, bool locked) {
+    return set_entity_flag(id, &level::EditorData::locked, locked, locked ? "Lock" : "Unlock");
+}
+
+Result<void> Editor::set_entity_flag(int id, std::vector<int> level::EditorData::*list, bool on,
+                                     const char* what) {
     const level::Entity* e = doc_.level.find(id);
-    if (!e) return Error("lock: no entity with id " + std::to_string(id));
+    if (!e) return Error(std::string(what) + ": no entity with id " + std::to_string(id));
     level::EditorData data = doc_.level.editor;
-    auto& list = data.locked;
-    auto at = std::lower_bound(list.begin(), list.end(), id);
-    const bool listed = at != list.end() && *at == id;
-    if (locked && !listed) list.insert(at, id);
-    if (!locked && listed) list.erase(at);
+    auto& ids = data.*list;
+    auto at = std::lower_bound(ids.begin(), ids.end(), id);
+    const bool listed = at != ids.end() && *at == id;
+    if (on && !listed) ids.insert(at, id);
+    if (!on && listed) ids.erase(at);
     std::vector<int> selection = doc_.selection;
-    if (locked) std::erase(selection, id);
-    change_structure(std::string(locked ? "Lock " : "Unlock ") + std::string(level::type_name(e->type())) +
-                         " " + std::to_string(id),
-                     std::move(data), std::move(selection));
+    if (on && list == &level::EditorData::locked) std::erase(selection, id); // a locked entity is not picked
+    std::string name =
+        std::string(what) + " " + std::string(level::type_name(e->type())) + " " + std::to_string(id);
+    change_structure(std::move(name), std::move(data), std::move(selection));
     return ok();
 }
 
