@@ -209,7 +209,10 @@ void EditorApp::selection_inspector(float w) {
         return;
     }
     const level::Entity& primary = *selected.front();
-    if (selected.size() == 1)
+    if (group_section()) // one whole group: its name and prefab; the fields below are its first member's
+        ImGui::TextColored(type_colour(primary.type()), "%s  #%d%s", type_label(primary.type()), primary.id,
+                           selected.size() > 1 ? "  (common fields)" : "");
+    else if (selected.size() == 1)
         ImGui::TextColored(type_colour(primary.type()), "%s  #%d", type_label(primary.type()), primary.id);
     else
         ImGui::TextColored(ImVec4(0.9f, 0.9f, 1, 1), "%zu selected (common fields; grey = values differ)",
@@ -248,6 +251,7 @@ void EditorApp::selection_inspector(float w) {
                 }
                 ImGui::SetTooltip("%s", tip.c_str());
             }
+            override_marker(field.name);
             ImGui::TableNextColumn();
             ImGui::SetNextItemWidth(-1);
             FieldValue edited = *value;

@@ -70,6 +70,8 @@ void EditorApp::menu_bar() {
         }
         if (ImGui::MenuItem("Select None", "Esc")) editor_.clear_selection();
         ImGui::Separator();
+        structure_menu_items();
+        ImGui::Separator();
         auto& grid = editor_.grid();
         ImGui::Checkbox("Snap to grid", &grid.snap);
         ImGui::SetNextItemWidth(90);

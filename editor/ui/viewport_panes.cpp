@@ -153,6 +153,7 @@ void EditorApp::quad_viewport(Vec2 origin, Vec2 size) {
             viewport_input(pane.origin, hovered);
         }
         pane_overlays(draw, pane.origin, active);
+        open_group_hint(draw, pane.origin);
         const char* name = view_mode_name(view_.mode);
         const ImVec2 label(pane.origin.x + 8, pane.origin.y + 6), extent = ImGui::CalcTextSize(name);
         draw->AddRectFilled(ImVec2(label.x - 4, label.y - 2),
