@@ -347,6 +347,7 @@ void EditorApp::layers_section() {
             if (ImGui::BeginPopupContextItem("layer_menu")) {
                 if (ImGui::MenuItem("Move selection here", nullptr, false, !editor_.doc().selection.empty()))
                     report(editor_.move_selection_to_layer(i), "move to layer");
+                spots_.here("layer_menu.move");
                 if (ImGui::MenuItem("Select all in layer")) {
                     const auto table = layer_table(editor_.level().editor);
                     editor_.select_where([&](const level::Entity& e) {
