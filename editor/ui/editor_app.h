@@ -357,7 +357,7 @@ class EditorApp {
     double last_rescan_ = -1e9;
     bool was_focused_ = true;
     bool ask_prefab_ = false;
-    bool prefab_exists_ = false;
+    bool prefab_prompt_open_ = false; // status file
     char prefab_name_[80] = {};
     char prefab_title_[128] = {};
     std::string prefab_error_;

@@ -154,6 +154,13 @@ void EditorApp::structure_status(nlohmann::json& s) const {
                            {"error", entry.prefab ? std::string() : entry.prefab.error().str()}});
     s["prefabs"] = prefabs;
     s["prefab_thumbnails"] = thumbnails_.size();
+    s["prefab_prompt"] = {{"open", prefab_prompt_open_},
+                          {"name", std::string(prefab_name_)},
+                          {"problem", prefab_name_[0] ? prefab_name_problem(prefab_name_) : std::string()},
+                          {"exists", editor_.prefabs().find(prefab_name_) != nullptr},
+                          {"error", prefab_error_}};
+    s["prefab_folders"] = json::array();
+    for (const auto& folder : editor_.prefabs().folders()) s["prefab_folders"].push_back(folder.string());
 }
 
 void EditorApp::write_status() {

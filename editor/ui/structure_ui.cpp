@@ -79,6 +79,7 @@ void EditorApp::structure_menu_items() {
         ungroup_selection_ui();
     if (ImGui::MenuItem("Leave group", "Esc", false, editor_.open_group() != 0)) leave_group();
     if (ImGui::MenuItem("Save selection as prefab...", nullptr, false, any)) open_prefab_prompt();
+    spots_.here("menu.save_prefab");
     const auto& layers = editor_.level().editor.layers;
     if (ImGui::BeginMenu("Move selection to layer", any)) {
         if (layers.empty()) {
@@ -100,7 +101,6 @@ void EditorApp::structure_menu_items() {
 void EditorApp::open_prefab_prompt() {
     if (editor_.doc().selection.empty()) return;
     ask_prefab_ = true;
-    prefab_exists_ = false;
     prefab_error_.clear();
     prefab_name_[0] = prefab_title_[0] = '\0';
 }
@@ -112,14 +112,16 @@ void EditorApp::prefab_prompt() {
         ask_prefab_ = false;
     }
     ImGui::SetNextWindowSize(ImVec2(440, 0), ImGuiCond_Appearing);
+    prefab_prompt_open_ = false;
     if (!ImGui::BeginPopupModal("Save selection as prefab", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
         return;
+    prefab_prompt_open_ = true;
     ImGui::TextWrapped("%zu entities become prefabs/NAME.json and a linked instance of it.",
                        editor_.doc().selection.size());
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
     ImGui::SetNextItemWidth(300);
     if (ImGui::InputTextWithHint("name", "a-z 0-9 _ -", prefab_name_, sizeof(prefab_name_)))
-        prefab_exists_ = false, prefab_error_.clear();
+        prefab_error_.clear();
     spots_.here("prefab_prompt.name");
     ImGui::SetNextItemWidth(300);
     ImGui::InputTextWithHint("title", "shown in the Prefabs tab", prefab_title_, sizeof(prefab_title_));
@@ -147,6 +149,7 @@ void EditorApp::prefab_prompt() {
     ImGui::EndDisabled();
     ImGui::SameLine();
     if (ImGui::Button("Cancel", ImVec2(100, 0))) ImGui::CloseCurrentPopup();
+    spots_.here("prefab_prompt.cancel");
     ImGui::EndPopup();
 }
 

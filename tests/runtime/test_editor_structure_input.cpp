@@ -212,3 +212,60 @@ TEST_CASE("editor structure input: click a prefab's thumbnail, then the viewport
     CHECK(st["selection"].size() == 4);
     CHECK(st["undo"] == 1);
 }
+
+TEST_CASE("editor structure input: Edit > Save selection as prefab... refuses a bad name, saves, offers "
+          "Replace for a name in use, with real X events") {
+    require_window_test_tools();
+    test::ScratchDir dir;
+    const auto level_file = dir / "structure_input.json";
+    std::ofstream(level_file) << kLevel;
+    const auto prefabs = dir / "my_prefabs";
+    std::ofstream(dir / "setup.kss") << "prefab folder " << prefabs.string() << "\nselect 2 3\n";
+    const auto status = dir / "status.json";
+    const test::PrivateDisplay display;
+    EditorProcess process(
+        {"--level", level_file.string(), "--run", (dir / "setup.kss").string(), "--width", "1280", "--height",
+         "720", "--status-file", status.string()},
+        {"XDG_CONFIG_HOME=" + (dir / "config").string(), "XDG_DATA_HOME=" + (dir / "data").string()},
+        display);
+    Session s(status, process, display);
+    auto open_prompt = [&] {
+        json st = s.wait("the Edit menu", [](const json& j) { return j["spots"].contains("menu.edit"); });
+        s.click(st["spots"]["menu.edit"]);
+        st = s.wait("its Save as prefab item",
+                    [](const json& j) { return j["spots"].contains("menu.save_prefab"); });
+        s.click(st["spots"]["menu.save_prefab"]);
+        return s.wait("the prompt", [](const json& j) {
+            return j["prefab_prompt"]["open"] == true && j["spots"].contains("prefab_prompt.save");
+        });
+    };
+    json st = s.wait("the two walls selected", [](const json& j) {
+        return j["frame"] >= 2 && j["selection"] == ids({2, 3});
+    });
+    CHECK(st["prefab_folders"] == json::array({prefabs.string()}));
+    open_prompt();
+    s.type("Two Walls");
+    st = s.wait("the name refused", [](const json& j) { return j["prefab_prompt"]["problem"] != ""; });
+    s.key("ctrl+a");
+    s.type("twin_walls");
+    st = s.wait("the name accepted", [](const json& j) {
+        return j["prefab_prompt"]["name"] == "twin_walls" && j["prefab_prompt"]["problem"] == "";
+    });
+    CHECK(st["prefab_prompt"]["exists"] == false);
+    s.click(st["spots"]["prefab_prompt.title"]);
+    s.type("Twin walls");
+    s.click(st["spots"]["prefab_prompt.save"]);
+    st = s.wait("saved as an instance",
+                [](const json& j) { return j["prefab_prompt"]["open"] == false && j["groups"].size() == 1; });
+    CHECK(st["groups"][0]["prefab"] == "twin_walls");
+    CHECK(std::filesystem::exists(prefabs / "twin_walls.json"));
+    CHECK(st["prefab_prompt"]["error"] == "");
+
+    open_prompt(); // the instance is still selected: the same name is offered Replace
+    s.type("twin_walls");
+    st = s.wait("the name in use", [](const json& j) { return j["prefab_prompt"]["exists"] == true; });
+    s.click(st["spots"]["prefab_prompt.save"]);
+    st = s.wait("replaced", [](const json& j) { return j["prefab_prompt"]["open"] == false; });
+    CHECK(st["prefab_prompt"]["error"] == "");
+    CHECK(st["groups"].size() == 1);
+}
