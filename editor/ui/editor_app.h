@@ -133,7 +133,8 @@ struct OutlinerTree {
     std::vector<int> top_groups; // groups in no group
     std::vector<int> loose;      // indices into level.entities of the entities in no group
     std::vector<int> filtered;   // indices of the entities a type filter or search shows (flat list)
-    std::string filter_key;      // the filter and search the flat list is for
+    int filter_type = -2;        // the type filter and search the flat list is for
+    std::string filter_search;
     std::vector<std::pair<int, int>> issues; // per entity index: errors, warnings
     std::vector<int> layer_counts;           // entities per layer
 };
@@ -173,8 +174,8 @@ class EditorApp {
     void structure_menu_items();            // the Edit menu's group, prefab and layer items
     void open_prefab_prompt();
     void prefab_prompt();
-    void draw_open_group_box();                                // render pass: the entered group's bounds
-    void open_group_hint(ImDrawList* draw, Vec2 origin) const; // "Inside group NAME"
+    void draw_open_group_box(); // render pass: the entered group's bounds
+    void open_group_hint(ImDrawList* draw, Vec2 origin, Vec2 size, bool pane) const; // "Inside group"
     std::string group_label(const level::Group& group) const;
 
     // editor_app.cpp: menus and files

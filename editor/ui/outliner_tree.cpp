@@ -41,12 +41,11 @@ SelectMode click_mode() {
 void EditorApp::refresh_outliner_tree() {
     const auto& issues = editor_.issues();
     const level::Level& level = editor_.level();
-    const std::string filter_key = std::to_string(type_filter_) + "/" + search_;
     const bool changed = tree_.revision != editor_.revision() || tree_.issue_count != issues.size();
     if (changed) {
         tree_.revision = editor_.revision();
         tree_.issue_count = issues.size();
-        tree_.filter_key = "\x01"; // the flat list too
+        tree_.filter_type = -2; // the flat list too
         const level::EditorData& data = level.editor;
         tree_.top_groups.clear();
         for (const level::Group& g : data.groups)
@@ -74,8 +73,9 @@ void EditorApp::refresh_outliner_tree() {
             if (layer < tree_.layer_counts.size()) ++tree_.layer_counts[layer];
         }
     }
-    if (tree_.filter_key != filter_key) {
-        tree_.filter_key = filter_key;
+    if (tree_.filter_type != type_filter_ || tree_.filter_search != search_) {
+        tree_.filter_type = type_filter_;
+        tree_.filter_search = search_;
         tree_.filtered.clear();
         for (size_t i = 0; i < level.entities.size(); ++i) {
             const level::Entity& e = level.entities[i];
@@ -249,7 +249,6 @@ void EditorApp::outliner_group_node(const level::Group& group) {
 }
 
 void EditorApp::outliner_tree() {
-    refresh_outliner_tree();
     const Document& doc = editor_.doc();
     const bool flat = type_filter_ >= 0 || search_[0] != '\0';
     ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(4, 2));

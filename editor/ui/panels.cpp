@@ -93,6 +93,7 @@ void EditorApp::outliner_panel(float x, float y, float w, float h) {
         palette_bar();
         ImGui::Separator();
     }
+    refresh_outliner_tree(); // cheap unless the level changed: the tree, issue badges, layer counts
     if (!ImGui::BeginTabBar("left_tabs")) {
         ImGui::End();
         return;
@@ -107,7 +108,6 @@ void EditorApp::outliner_panel(float x, float y, float w, float h) {
         "Layers", nullptr, start_tab_ == LeftTab::Layers ? ImGuiTabItemFlags_SetSelected : 0);
     spots_.here("tab.layers");
     if (layers) {
-        refresh_outliner_tree(); // the layers' entity counts
         layers_section();
         ImGui::EndTabItem();
     }

@@ -171,17 +171,23 @@ void EditorApp::draw_open_group_box() {
     debug_.box(m, (hi - lo) * 0.5f, Vec4(0.55f, 0.75f, 1.0f, 0.9f));
 }
 
-void EditorApp::open_group_hint(ImDrawList* draw, Vec2 origin) const {
+// Over a view's top-left corner (under a 4-up pane's name and grid label), clipped to the view.
+void EditorApp::open_group_hint(ImDrawList* draw, Vec2 origin, Vec2 size, bool pane) const {
     const int open = editor_.open_group();
     if (open == 0) return;
     const level::Group* group = editor_.level().editor.find_group(open);
     if (!group) return;
-    const std::string text = "Inside group " + group_label(*group) + "  -  Esc to leave";
-    const ImVec2 at(origin.x + 12, origin.y + (placing_ || pick_ ? 28 : 8));
-    const ImVec2 size = ImGui::CalcTextSize(text.c_str());
-    draw->AddRectFilled(ImVec2(at.x - 5, at.y - 3), ImVec2(at.x + size.x + 5, at.y + size.y + 3),
+    // A 4-up pane is narrow: the group's name alone.
+    const std::string text = pane ? "In " + group->name + " (Esc leaves)"
+                                  : "Inside group " + group_label(*group) + "  -  Esc to leave";
+    const float top = pane ? 46.0f : (placing_ || pick_ ? 28.0f : 8.0f);
+    const ImVec2 at(origin.x + 12, origin.y + top);
+    const ImVec2 extent = ImGui::CalcTextSize(text.c_str());
+    draw->PushClipRect(ImVec2(origin.x, origin.y), ImVec2(origin.x + size.x, origin.y + size.y), true);
+    draw->AddRectFilled(ImVec2(at.x - 5, at.y - 3), ImVec2(at.x + extent.x + 5, at.y + extent.y + 3),
                         IM_COL32(20, 35, 60, 210), 3.0f);
     draw->AddText(at, IM_COL32(150, 195, 255, 255), text.c_str());
+    draw->PopClipRect();
 }
 
 } // namespace ks::editor::ui

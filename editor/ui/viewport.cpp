@@ -396,7 +396,7 @@ void EditorApp::viewport_panel(float x, float y, float w, float h) {
     draw->PopClipRect();
     clip_preview_overlay(Vec2(origin.x, origin.y), area); // the selection's, not a pane's: across the bottom
     pick_hint(draw, viewport_origin_);
-    if (!quad_.on) open_group_hint(draw, viewport_origin_);
+    if (!quad_.on) open_group_hint(draw, viewport_origin_, viewport_size_, false);
     if (placing_) {
         const std::string hint = "Click to place " + placing_.label() + "  (Shift: several, Esc: stop)";
         draw->AddText(ImVec2(viewport_origin_.x + 12, viewport_origin_.y + 8), IM_COL32(140, 255, 160, 255),

@@ -153,13 +153,13 @@ void EditorApp::quad_viewport(Vec2 origin, Vec2 size) {
             viewport_input(pane.origin, hovered);
         }
         pane_overlays(draw, pane.origin, active);
-        open_group_hint(draw, pane.origin);
         const char* name = view_mode_name(view_.mode);
         const ImVec2 label(pane.origin.x + 8, pane.origin.y + 6), extent = ImGui::CalcTextSize(name);
         draw->AddRectFilled(ImVec2(label.x - 4, label.y - 2),
                             ImVec2(label.x + extent.x + 4, label.y + extent.y + 2), IM_COL32(15, 17, 22, 190),
                             3.0f);
         draw->AddText(label, active ? IM_COL32(255, 200, 90, 255) : IM_COL32(210, 215, 225, 255), name);
+        open_group_hint(draw, pane.origin, pane.size, true);
         if (active) // the pane the keys and the mouse work in
             draw->AddRect(ImVec2(pane.origin.x, pane.origin.y),
                           ImVec2(pane.origin.x + pane.size.x, pane.origin.y + pane.size.y),
