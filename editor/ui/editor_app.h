@@ -125,6 +125,13 @@ struct PrefabThumbnail {
     bool drawn = false;
 };
 
+// The prefab instance the primary selected entity belongs to, and the fields it keeps as its own there
+// (group_inspector.cpp; looked up once a frame for the inspector's field table).
+struct PrimaryOverrides {
+    int instance = 0, entity = 0;
+    const std::vector<std::string>* fields = nullptr;
+};
+
 // The outliner's tree (outliner_tree.cpp), rebuilt when the level changes: each group's members, the
 // entities in no group, and each entity's issue counts.
 struct OutlinerTree {
@@ -261,7 +268,8 @@ class EditorApp {
     void render_prefab_thumbnails();
     // group_inspector.cpp: the inspector of one selected group (a prefab instance's overrides too)
     bool group_section(); // true when the selection is one group
-    void override_marker(const std::string& field);
+    PrimaryOverrides primary_overrides() const;
+    void override_marker(const PrimaryOverrides& primary, const std::string& field);
     void viewport_toolbar();
     void inspector_panel(float x, float y, float w, float h); // tabs: Properties, Objectives
     void selection_inspector(float w);

@@ -104,20 +104,26 @@ bool EditorApp::group_section() {
     return true;
 }
 
+PrimaryOverrides EditorApp::primary_overrides() const {
+    PrimaryOverrides out;
+    const auto& selection = editor_.doc().selection;
+    if (selection.empty() || selection.front() <= 0) return out;
+    out.entity = selection.front();
+    out.instance = editor_.prefab_instance_of(out.entity);
+    if (const level::Group* group = editor_.level().editor.find_group(out.instance))
+        out.fields = member_overrides(*group, out.entity);
+    return out;
+}
+
 // After a field's name in the inspector table: a mark when the primary selected entity keeps this field as
 // its own in its prefab instance, and the name's context menu to revert it.
-void EditorApp::override_marker(const std::string& field) {
-    const auto selected = editor_.selected_entities();
-    if (selected.empty()) return;
-    const int entity = selected.front()->id;
-    const int instance = editor_.prefab_instance_of(entity);
-    if (instance == 0) return;
-    const level::Group* group = editor_.level().editor.find_group(instance);
-    const auto* fields = group ? member_overrides(*group, entity) : nullptr;
+void EditorApp::override_marker(const PrimaryOverrides& primary, const std::string& field) {
+    if (primary.instance == 0) return;
+    const auto* fields = primary.fields;
     const bool overridden = fields && std::find(fields->begin(), fields->end(), field) != fields->end();
     if (ImGui::BeginPopupContextItem("field_menu")) {
         if (ImGui::MenuItem("Revert to prefab", nullptr, false, overridden))
-            report(editor_.revert_prefab_overrides(instance, entity, field), "revert");
+            report(editor_.revert_prefab_overrides(primary.instance, primary.entity, field), "revert");
         ImGui::EndPopup();
     }
     if (!overridden) return;

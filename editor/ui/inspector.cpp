@@ -219,6 +219,7 @@ void EditorApp::selection_inspector(float w) {
                            selected.size());
     ImGui::Separator();
     const auto fields = common_fields(selected);
+    const PrimaryOverrides overrides = primary_overrides();
     // The name column is as wide as this type's longest field name (capped), the values get the rest.
     float name_w = 0;
     for (const auto& field : fields) name_w = std::max(name_w, ImGui::CalcTextSize(field.name.c_str()).x);
@@ -251,7 +252,7 @@ void EditorApp::selection_inspector(float w) {
                 }
                 ImGui::SetTooltip("%s", tip.c_str());
             }
-            override_marker(field.name);
+            override_marker(overrides, field.name);
             ImGui::TableNextColumn();
             ImGui::SetNextItemWidth(-1);
             FieldValue edited = *value;
