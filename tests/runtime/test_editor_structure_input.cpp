@@ -220,6 +220,8 @@ TEST_CASE("editor structure input: Edit > Save selection as prefab... refuses a 
     const auto level_file = dir / "structure_input.json";
     std::ofstream(level_file) << kLevel;
     const auto prefabs = dir / "my_prefabs";
+    std::filesystem::create_directories(prefabs);
+    std::ofstream(prefabs / "broken.json") << "{\"format\": \"killswitch-prefab\", \"version\": 1,";
     std::ofstream(dir / "setup.kss") << "prefab folder " << prefabs.string() << "\nselect 2 3\n";
     const auto status = dir / "status.json";
     const test::PrivateDisplay display;
@@ -243,6 +245,13 @@ TEST_CASE("editor structure input: Edit > Save selection as prefab... refuses a 
         return j["frame"] >= 2 && j["selection"] == ids({2, 3});
     });
     CHECK(st["prefab_folders"] == json::array({prefabs.string()}));
+    // A broken file is listed with its error (the Prefabs tab shows it in red), never dropped.
+    REQUIRE(st["prefabs"].size() == 1);
+    CHECK(st["prefabs"][0]["name"] == "broken");
+    CHECK(st["prefabs"][0]["ok"] == false);
+    CHECK(st["prefabs"][0]["error"].get<std::string>().find("broken.json") != std::string::npos);
+    s.click(st["spots"]["tab.prefabs"]);
+    s.wait("the broken prefab's row", [](const json& j) { return j["spots"].contains("prefab:broken"); });
     open_prompt();
     s.type("Two Walls");
     st = s.wait("the name refused", [](const json& j) { return j["prefab_prompt"]["problem"] != ""; });
@@ -260,6 +269,9 @@ TEST_CASE("editor structure input: Edit > Save selection as prefab... refuses a 
     CHECK(st["groups"][0]["prefab"] == "twin_walls");
     CHECK(std::filesystem::exists(prefabs / "twin_walls.json"));
     CHECK(st["prefab_prompt"]["error"] == "");
+    s.wait("its thumbnail in the Prefabs tab", [](const json& j) {
+        return j["prefab_thumbnails"] == 1 && j["spots"].contains("prefab:twin_walls");
+    });
 
     open_prompt(); // the instance is still selected: the same name is offered Replace
     s.type("twin_walls");
