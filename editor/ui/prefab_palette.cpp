@@ -17,7 +17,7 @@
 namespace ks::editor::ui {
 
 namespace {
-constexpr int kThumbnailSize = 96;
+constexpr int kThumbnailSize = 92; // two to a row in the narrowest left column (1280 wide)
 constexpr double kRescanSeconds = 2.0;
 
 // A three-quarter view from the front right, above, framing the prefab's bounds.
@@ -111,23 +111,15 @@ void EditorApp::prefab_palette() {
         return;
     }
     ImGui::BeginChild("prefab_cells");
-    const float cell = static_cast<float>(kThumbnailSize) + 8.0f;
+    const float cell = static_cast<float>(kThumbnailSize) + 4.0f;
     const float width = ImGui::GetContentRegionAvail().x;
-    const int columns = std::max(1, static_cast<int>(width / (cell + ImGui::GetStyle().ItemSpacing.x)));
+    const float spacing = ImGui::GetStyle().ItemSpacing.x;
+    const int columns = std::max(1, static_cast<int>((width + spacing) / (cell + spacing)));
     int column = 0;
+    // The prefabs that load first, in a grid; then each broken file, its name and error across the column.
     for (const PrefabEntry& entry : library.entries()) {
+        if (!entry.prefab) continue;
         ImGui::PushID(entry.name.c_str());
-        if (!entry.prefab) { // a broken file: its name and error, across the whole row
-            if (column != 0) ImGui::NewLine();
-            column = 0;
-            ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.45f, 0.4f, 1));
-            ImGui::TextWrapped("%s: %s", entry.path.filename().string().c_str(),
-                               entry.prefab.error().str().c_str());
-            ImGui::PopStyleColor();
-            spots_.here("prefab:" + entry.name);
-            ImGui::PopID();
-            continue;
-        }
         if (column > 0) ImGui::SameLine();
         ImGui::BeginGroup();
         const bool armed = placing_.prefab == entry.name;
@@ -140,9 +132,9 @@ void EditorApp::prefab_palette() {
         if (thumbnail)
             clicked = ImGui::ImageButton(
                 reinterpret_cast<ImTextureID>(static_cast<intptr_t>(thumbnail->target.texture())), size,
-                ImVec2(0, 1), ImVec2(1, 0), 4);
+                ImVec2(0, 1), ImVec2(1, 0), 2);
         else
-            clicked = ImGui::Button("...", ImVec2(size.x + 8, size.y + 8));
+            clicked = ImGui::Button("...", ImVec2(size.x + 4, size.y + 4));
         if (armed) ImGui::PopStyleColor();
         spots_.here("prefab:" + entry.name);
         if (clicked) {
@@ -166,6 +158,15 @@ void EditorApp::prefab_palette() {
         ImGui::EndGroup();
         column = (column + 1) % columns;
         ImGui::PopID();
+    }
+    for (const PrefabEntry& entry : library.entries()) {
+        if (entry.prefab) continue;
+        ImGui::Separator();
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.45f, 0.4f, 1));
+        ImGui::TextWrapped("%s: %s", entry.path.filename().string().c_str(),
+                           entry.prefab.error().str().c_str());
+        ImGui::PopStyleColor();
+        spots_.here("prefab:" + entry.name);
     }
     ImGui::EndChild();
 }
