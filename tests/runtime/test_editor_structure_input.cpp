@@ -2,7 +2,8 @@
 // as a designer uses them: select two walls, Ctrl+G, a click on one member selects both, a double click
 // enters the group (one member selected), Esc leaves it, Ctrl+Shift+G dissolves it; add a layer in the
 // Layers tab, move the selection there from the layer's context menu, hide it with its eye; click a
-// prefab in the Prefabs tab, then in the viewport: a linked instance appears. The editor reports its state
+// prefab in the Prefabs tab, then in the viewport: a linked instance appears, and the inspector unlinks it;
+// save a prefab from Edit > Save selection as prefab.... The editor reports its state
 // in --status-file every frame; the test waits on that, never on time. Without a display or xdotool these
 // tests fail: ./run.sh test provides both.
 #include "runtime/editor_session.h"
@@ -211,6 +212,16 @@ TEST_CASE("editor structure input: click a prefab's thumbnail, then the viewport
     CHECK(st["placing_prefab"] == ""); // one placed: the tool is done (Shift keeps it)
     CHECK(st["selection"].size() == 4);
     CHECK(st["undo"] == 1);
+
+    // The inspector shows the selected instance: Unlink makes it a plain group (one step).
+    st = s.wait("the instance's Unlink button",
+                [](const json& j) { return j["spots"].contains("group.unlink"); });
+    s.click(st["spots"]["group.unlink"]);
+    // The frame that ran the click drew the instance's buttons before it; the next one draws none.
+    st = s.wait("a plain group, without the prefab buttons", [](const json& j) {
+        return j["groups"][0]["prefab"] == "" && !j["spots"].contains("group.apply");
+    });
+    CHECK(st["undo"] == 2);
 }
 
 TEST_CASE("editor structure input: Edit > Save selection as prefab... refuses a bad name, saves, offers "
