@@ -23,6 +23,7 @@ void print_help() {
         "                         [--view top|front|side|perspective|4up] [--inspector TAB] [--status-file "
         "FILE]\n"
         "                         [--report FILE] [--gizmo move|rotate|scale[,local]] [--textures]\n"
+        "                         [--left-tab outliner|layers|prefabs]\n"
         "       killswitch-editor --version  (prints \"killswitch-editor VERSION\" and exits)\n"
         "       killswitch-editor --analyze LEVEL [--runs N] [--report FILE] [--seconds S] [--threads T]\n"
         "                         [--width W] [--height H] [--screenshot FILE --frames N] [--no-vsync]\n"
@@ -45,6 +46,7 @@ void print_help() {
         "  --inspector TAB   start with the inspector's properties, links or objectives tab shown\n"
         "  --gizmo MODE      start with the gizmo in move, rotate or scale mode (rotate,local: own axes)\n"
         "  --textures        open the texture browser for the selection (select it with --run)\n"
+        "  --left-tab TAB    start with the left column's outliner, layers or prefabs tab shown\n"
         "  --status-file F   rewrite F with a JSON snapshot of the session (selection, entity count, undo\n"
         "                    depth, dirty flag, play-test, where the palette and gizmo are) when it changes\n"
         "  $KS_PLAYTEST_COMMAND  the runtime F5 starts (default: killswitch next to the editor)\n"
@@ -80,8 +82,9 @@ int main(int argc, char** argv) {
         return 0;
     }
     std::vector<std::string> known = shell::shell_options();
-    known.insert(known.end(), {"level", "script", "run", "camera", "help", "dojo", "view", "status-file",
-                               "navmesh", "dojo-file", "dojo-view", "inspector", "gizmo", "textures"});
+    known.insert(known.end(),
+                 {"level", "script", "run", "camera", "help", "dojo", "view", "status-file", "navmesh",
+                  "dojo-file", "dojo-view", "inspector", "gizmo", "textures", "left-tab"});
     for (const auto& name : editor::analyze_option_names()) known.push_back(name);
     if (auto unknown = cl->unknown(known); !unknown.empty()) {
         log::error("unknown option ", unknown.front(), " (see killswitch-editor --help)");
@@ -138,6 +141,13 @@ int main(int argc, char** argv) {
         options.inspector_tab = editor::ui::parse_inspector_tab(*tab);
         if (!options.inspector_tab) {
             log::error("--inspector '", *tab, "': expected properties, links or objectives");
+            return 2;
+        }
+    }
+    if (auto tab = cl->get("left-tab")) {
+        options.left_tab = editor::ui::parse_left_tab(*tab);
+        if (!options.left_tab) {
+            log::error("--left-tab '", *tab, "': expected outliner, layers or prefabs");
             return 2;
         }
     }

@@ -128,6 +128,8 @@ Result<void> EditorApp::init() {
         log_line("ran " + options_.run_script->string());
     }
     if (auto r = apply_start_ui_options(); !r) return r.error();
+    start_tab_ = options_.left_tab.value_or(LeftTab::Outliner);
+    editor_.prefabs().rescan(); // the Prefabs tab lists them from the first frame
     rebuild_scene_if_changed();
     g_app = this;
     glfwSetWindowCloseCallback(shell_.window(), [](GLFWwindow* window) {
@@ -194,6 +196,7 @@ void EditorApp::render_views(const shell::FrameInfo& info) {
     } else {
         rebuild_scene_if_changed();
         pose_preview_robot(info.frame_dt);
+        render_prefab_thumbnails();
         const int w = static_cast<int>(layout.centre.w), h = static_cast<int>(layout.centre.h - kViewportBar);
         render_level_views(w, std::max(1, h));
     }
@@ -226,6 +229,7 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
     spots_.enabled = options_.status_file.has_value();
     spots_.clear();
     refresh_logic_problems();
+    if (!dojo_tab_) rescan_prefabs();
     menu_bar();
     if (dojo_tab_) {
         dojo_->panel(layout.bottom.x, layout.centre.y, layout.bottom.w, layout.centre.h);
@@ -250,6 +254,7 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
     modal_prompts();
     campaign_prompt();
     about_.draw(spots_);
+    prefab_prompt();
     dojo_->prompts(); // the clip file's questions, whichever tab is shown
     if (dojo_->take_quit_answer() == DojoPanel::QuitAnswer::Go) {
         dojo_quit_confirmed_ = true;
@@ -315,9 +320,12 @@ void EditorApp::handle_shortcuts() {
             gizmo_.cancel(editor_);
         else if (placing_)
             placing_.reset();
+        else if (editor_.open_group() != 0)
+            leave_group();
         else
             editor_.clear_selection();
     }
+    if (ctrl && pressed(GLFW_KEY_G)) shift ? ungroup_selection_ui() : group_selection_ui();
     if (flying_ || ctrl) return;
     if (repeat(GLFW_KEY_LEFT)) report(editor_.nudge(0, -1), "nudge");
     if (repeat(GLFW_KEY_RIGHT)) report(editor_.nudge(0, +1), "nudge");

@@ -51,6 +51,10 @@ class DojoPanel;
 enum class InspectorTab { Properties, Links, Objectives };
 std::optional<InspectorTab> parse_inspector_tab(std::string_view name); // "properties", "links", "objectives"
 
+// The left column's tabs (panels.cpp).
+enum class LeftTab { Outliner, Layers, Prefabs };
+std::optional<LeftTab> parse_left_tab(std::string_view name); // "outliner", "layers", "prefabs"
+
 struct AppOptions {
     std::optional<std::filesystem::path> level;
     bool start_in_dojo = false;
@@ -74,7 +78,8 @@ struct AppOptions {
     std::optional<std::string> dojo_view; // --dojo-view: where the dojo starts (ui/dojo_panel.h, DojoView)
     // --gizmo MODE[,local]: the gizmo's mode (move, rotate, scale) and rotation space at start-up.
     std::optional<std::string> gizmo;
-    bool texture_browser = false; // --textures: the texture browser open for the selection at start-up
+    std::optional<LeftTab> left_tab; // --left-tab: the left column's tab shown first
+    bool texture_browser = false;    // --textures: the texture browser open for the selection at start-up
 };
 
 // The texture field the selected entities share (its name) and the primary's texture.
@@ -105,6 +110,43 @@ struct PickRequest {
     int index = 0;   // LinkTarget: the link; KillName: the objective
 };
 
+// What the next viewport click places: an entity type from the palette or a prefab from the Prefabs tab.
+struct PlaceTool {
+    std::optional<level::EntityType> type;
+    std::string prefab; // a prefab's name
+    explicit operator bool() const { return type.has_value() || !prefab.empty(); }
+    void reset() { type.reset(), prefab.clear(); }
+    std::string label() const { return type ? std::string(level::type_name(*type)) : "prefab " + prefab; }
+};
+
+// A prefab's thumbnail (prefab_palette.cpp): its entities rendered offscreen from a three-quarter view.
+struct PrefabThumbnail {
+    std::string name;
+    RenderTarget target;
+    bool drawn = false;
+};
+
+// The prefab instance the primary selected entity belongs to, and the fields it keeps as its own there
+// (group_inspector.cpp; looked up once a frame for the inspector's field table).
+struct PrimaryOverrides {
+    int instance = 0, entity = 0;
+    const std::vector<std::string>* fields = nullptr;
+};
+
+// The outliner's tree (outliner_tree.cpp), rebuilt when the level changes: each group's members, the
+// entities in no group, and each entity's issue counts.
+struct OutlinerTree {
+    std::uint64_t revision = ~0ull;
+    size_t issue_count = ~size_t(0);
+    std::vector<int> top_groups; // groups in no group
+    std::vector<int> loose;      // indices into level.entities of the entities in no group
+    std::vector<int> filtered;   // indices of the entities a type filter or search shows (flat list)
+    int filter_type = -2;        // the type filter and search the flat list is for
+    std::string filter_search;
+    std::vector<std::pair<int, int>> issues; // per entity index: errors, warnings
+    std::vector<int> layer_counts;           // entities per layer
+};
+
 // A question the user must answer before an action goes on (unsaved changes, overwrite, recovery).
 enum class PendingAction { None, New, Open, OpenRecent, Quit };
 
@@ -129,6 +171,20 @@ class EditorApp {
     void write_status(); // status_report.cpp
     void logic_status(nlohmann::json& status) const;
     void objects_status(nlohmann::json& status) const;
+    void structure_status(nlohmann::json& status) const; // groups, layers, prefabs
+
+    // structure_ui.cpp: groups and prefabs from the viewport, the keys and the Edit menu
+    void group_selection_ui();
+    void ungroup_selection_ui();
+    void leave_group(); // Esc inside a group: up one level, the group left selected
+    void select_group(int group_id, SelectMode mode = SelectMode::Replace);
+    bool double_click_enter(int entity_id); // true: a group was entered
+    void structure_menu_items();            // the Edit menu's group, prefab and layer items
+    void open_prefab_prompt();
+    void prefab_prompt();
+    void draw_open_group_box(); // render pass: the entered group's bounds
+    void open_group_hint(ImDrawList* draw, Vec2 origin, Vec2 size, bool pane) const; // "Inside group"
+    std::string group_label(const level::Group& group) const;
 
     // editor_app.cpp: menus and files
     void menu_bar();
@@ -198,6 +254,23 @@ class EditorApp {
     // panels.cpp
     void outliner_panel(float x, float y, float w, float h);
     void palette_bar();
+    // outliner_tree.cpp: the outliner's group tree (or flat filtered list) and the Layers tab
+    void outliner_list(); // panels.cpp: the Outliner tab
+    void outliner_tree();
+    void refresh_outliner_tree();
+    void outliner_group_node(const level::Group& group);
+    void outliner_entity_row(int index);
+    void group_context_menu(const level::Group& group);
+    void rename_group_popup();
+    void layers_section(); // the Layers tab
+    // prefab_palette.cpp: the Prefabs tab (thumbnails, placing) and the thumbnails' render pass
+    void prefab_palette();
+    void rescan_prefabs();
+    void render_prefab_thumbnails();
+    // group_inspector.cpp: the inspector of one selected group (a prefab instance's overrides too)
+    bool group_section(); // true when the selection is one group
+    PrimaryOverrides primary_overrides() const;
+    void override_marker(const PrimaryOverrides& primary, const std::string& field);
     void viewport_toolbar();
     void inspector_panel(float x, float y, float w, float h); // tabs: Properties, Objectives
     void selection_inspector(float w);
@@ -273,7 +346,7 @@ class EditorApp {
     float wheel_ = 0.0f;
 
     // tools
-    std::optional<level::EntityType> placing_; // palette: the next click places one
+    PlaceTool placing_; // palette or prefab: the next click places one
     bool box_selecting_ = false;
     Vec2 box_start_{0.0f};
     bool click_pending_ = false;
@@ -282,6 +355,22 @@ class EditorApp {
     int type_filter_ = -1;         // -1: all
     int outliner_scrolled_to_ = 0; // primary selection the outliner last scrolled to
     char search_[64] = {};
+    OutlinerTree tree_;
+    int rename_group_ = 0;  // the group the rename popup is for
+    int rename_layer_ = -1; // the layer whose name is being edited inline
+    char rename_buffer_[128] = {};
+    bool focus_rename_ = false;
+    LeftTab start_tab_ = LeftTab::Outliner; // Layers, Prefabs: brought to the front on the next frame
+    // prefabs
+    std::vector<std::unique_ptr<PrefabThumbnail>> thumbnails_;
+    std::uint64_t thumbnails_revision_ = ~0ull;
+    double last_rescan_ = -1e9;
+    bool was_focused_ = true;
+    bool ask_prefab_ = false;
+    bool prefab_prompt_open_ = false; // status file
+    char prefab_name_[80] = {};
+    char prefab_title_[128] = {};
+    std::string prefab_error_;
     std::vector<std::string> sound_names_;  // offered by the inspector's sound lists (sound_widgets.h)
     std::vector<MarkerLine> marker_lines_;  // a marker's or an arrow's lines, reused every frame
     std::vector<LinkArrow> link_arrows_;    // cached until the level, the selection or what is shown changes

@@ -209,13 +209,17 @@ void EditorApp::selection_inspector(float w) {
         return;
     }
     const level::Entity& primary = *selected.front();
-    if (selected.size() == 1)
+    if (group_section()) // one whole group: its name and prefab; the fields below are its first member's
+        ImGui::TextColored(type_colour(primary.type()), "%s  #%d%s", type_label(primary.type()), primary.id,
+                           selected.size() > 1 ? "  (common fields)" : "");
+    else if (selected.size() == 1)
         ImGui::TextColored(type_colour(primary.type()), "%s  #%d", type_label(primary.type()), primary.id);
     else
         ImGui::TextColored(ImVec4(0.9f, 0.9f, 1, 1), "%zu selected (common fields; grey = values differ)",
                            selected.size());
     ImGui::Separator();
     const auto fields = common_fields(selected);
+    const PrimaryOverrides overrides = primary_overrides();
     // The name column is as wide as this type's longest field name (capped), the values get the rest.
     float name_w = 0;
     for (const auto& field : fields) name_w = std::max(name_w, ImGui::CalcTextSize(field.name.c_str()).x);
@@ -248,6 +252,7 @@ void EditorApp::selection_inspector(float w) {
                 }
                 ImGui::SetTooltip("%s", tip.c_str());
             }
+            override_marker(overrides, field.name);
             ImGui::TableNextColumn();
             ImGui::SetNextItemWidth(-1);
             FieldValue edited = *value;

@@ -36,7 +36,9 @@ void EditorApp::menu_bar() {
         menu_spots_[1] = item_centre();
         ImGui::EndMenu();
     }
-    if (ImGui::BeginMenu("Edit")) {
+    const bool edit_menu = ImGui::BeginMenu("Edit");
+    spots_.here("menu.edit");
+    if (edit_menu) {
         if (dojo_tab_) { // the clip file's history, as Ctrl+Z in the tab
             const auto& h = dojo_->history();
             if (ImGui::MenuItem(("Undo " + h.undo_name()).c_str(), "Ctrl+Z", false, h.can_undo()))
@@ -69,6 +71,8 @@ void EditorApp::menu_bar() {
             ImGui::EndMenu();
         }
         if (ImGui::MenuItem("Select None", "Esc")) editor_.clear_selection();
+        ImGui::Separator();
+        structure_menu_items();
         ImGui::Separator();
         auto& grid = editor_.grid();
         ImGui::Checkbox("Snap to grid", &grid.snap);

@@ -12,16 +12,6 @@
 
 namespace ks::editor::ui {
 
-namespace {
-bool contains_text(const std::string& haystack, const char* needle) {
-    if (!*needle) return true;
-    std::string a = haystack, b = needle;
-    for (auto& c : a) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    for (auto& c : b) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return a.find(b) != std::string::npos;
-}
-} // namespace
-
 void EditorApp::palette_bar() {
     ImGui::TextDisabled("Place:");
     const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
@@ -33,12 +23,13 @@ void EditorApp::palette_bar() {
             if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + w > right) ImGui::NewLine();
         }
         first = false;
-        const bool active = placing_ && *placing_ == type;
+        const bool active = placing_.type == type;
         if (active) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.25f, 0.55f, 0.3f, 1));
         ImGui::PushStyleColor(ImGuiCol_Text, type_colour(type));
         if (ImGui::SmallButton(type_label(type))) {
             if (pick_) end_pick(); // placing takes the viewport's clicks
-            placing_ = type;
+            placing_.reset();
+            placing_.type = type;
         }
         ImGui::PopStyleColor(active ? 2 : 1);
         palette_rects_[static_cast<size_t>(type)] = {
@@ -102,6 +93,38 @@ void EditorApp::outliner_panel(float x, float y, float w, float h) {
         palette_bar();
         ImGui::Separator();
     }
+    refresh_outliner_tree(); // cheap unless the level changed: the tree, issue badges, layer counts
+    if (!ImGui::BeginTabBar("left_tabs")) {
+        ImGui::End();
+        return;
+    }
+    const bool outliner = ImGui::BeginTabItem("Outliner");
+    spots_.here("tab.outliner");
+    if (outliner) {
+        outliner_list();
+        ImGui::EndTabItem();
+    }
+    const bool layers = ImGui::BeginTabItem(
+        "Layers", nullptr, start_tab_ == LeftTab::Layers ? ImGuiTabItemFlags_SetSelected : 0);
+    spots_.here("tab.layers");
+    if (layers) {
+        layers_section();
+        ImGui::EndTabItem();
+    }
+    const bool prefabs = ImGui::BeginTabItem(
+        "Prefabs", nullptr, start_tab_ == LeftTab::Prefabs ? ImGuiTabItemFlags_SetSelected : 0);
+    spots_.here("tab.prefabs");
+    if (prefabs) {
+        prefab_palette();
+        ImGui::EndTabItem();
+    }
+    start_tab_ = LeftTab::Outliner;
+    ImGui::EndTabBar();
+    ImGui::End();
+}
+
+// The Outliner tab: type filter, search and the entity tree (outliner_tree.cpp).
+void EditorApp::outliner_list() {
     ImGui::SetNextItemWidth(-1);
     const char* preview =
         type_filter_ < 0 ? "All types" : type_label(static_cast<level::EntityType>(type_filter_));
@@ -116,73 +139,9 @@ void EditorApp::outliner_panel(float x, float y, float w, float h) {
     ImGui::InputTextWithHint("##search", "Search names...", search_, sizeof(search_));
     if (type_filter_ >= 0 && ImGui::Button("Select all of this type", ImVec2(-1, 0)))
         editor_.select_all_of_type(static_cast<level::EntityType>(type_filter_));
-
-    // Issue count per entity, for the warning badges.
-    const auto& issues = editor_.issues();
     ImGui::BeginChild("entities", ImVec2(0, 0), false);
-    const Document& doc = editor_.doc();
-    ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(4, 2));
-    player_start_row();
-    for (const auto& e : doc.level.entities) {
-        if (type_filter_ >= 0 && static_cast<int>(e.type()) != type_filter_) continue;
-        const std::string label = e.name.empty() ? std::string(level::type_name(e.type())) : e.name;
-        if (!contains_text(label, search_) &&
-            !contains_text(std::string(level::type_name(e.type())), search_))
-            continue;
-        ImGui::PushID(e.id);
-        const bool hidden = doc.hidden.contains(e.id), locked = doc.locked.contains(e.id);
-        ImGui::PushStyleColor(ImGuiCol_Text,
-                              hidden ? ImVec4(0.45f, 0.45f, 0.5f, 1) : ImVec4(0.8f, 0.85f, 0.95f, 1));
-        if (ImGui::SmallButton(hidden ? "-" : "o")) report(editor_.set_hidden(e.id, !hidden), "Hide");
-        ImGui::PopStyleColor();
-        if (ImGui::IsItemHovered())
-            ImGui::SetTooltip(hidden ? "Hidden: click to show" : "Visible: click to hide");
-        ImGui::SameLine();
-        ImGui::PushStyleColor(ImGuiCol_Text,
-                              locked ? ImVec4(1.0f, 0.7f, 0.3f, 1) : ImVec4(0.45f, 0.45f, 0.5f, 1));
-        if (ImGui::SmallButton(locked ? "L" : ".")) report(editor_.set_locked(e.id, !locked), "Lock");
-        ImGui::PopStyleColor();
-        if (ImGui::IsItemHovered())
-            ImGui::SetTooltip(locked ? "Locked: click to unlock" : "Click to lock (no picking)");
-        ImGui::SameLine();
-        int errors = 0, warnings = 0;
-        for (const auto& issue : issues)
-            if (issue.entity_id == e.id) (issue.severity == IssueSeverity::Error ? errors : warnings)++;
-        char row[160];
-        std::snprintf(row, sizeof(row), "%-4d %s", e.id, label.c_str());
-        ImGui::PushStyleColor(ImGuiCol_Text, type_colour(e.type()));
-        const float badge_w = (errors || warnings) ? 22.0f : 0.0f;
-        if (ImGui::Selectable(row, doc.is_selected(e.id), ImGuiSelectableFlags_AllowDoubleClick,
-                              ImVec2(ImGui::GetContentRegionAvail().x - badge_w, 0))) {
-            const ImGuiIO& io = ImGui::GetIO();
-            const SelectMode mode = io.KeyCtrl    ? SelectMode::Toggle
-                                    : io.KeyShift ? SelectMode::Add
-                                                  : SelectMode::Replace;
-            report(editor_.select({e.id}, mode), "select");
-            if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) focus_selection();
-        }
-        ImGui::PopStyleColor();
-        if (!doc.selection.empty() && doc.selection.front() == e.id && outliner_scrolled_to_ != e.id) {
-            ImGui::SetScrollHereY(0.5f); // picked in the viewport: bring its row into view
-            outliner_scrolled_to_ = e.id;
-        }
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s #%d", type_label(e.type()), e.id);
-        if (errors || warnings) {
-            ImGui::SameLine();
-            ImGui::TextColored(errors ? ImVec4(1, 0.35f, 0.3f, 1) : ImVec4(1, 0.8f, 0.3f, 1), "!%d",
-                               errors + warnings);
-            if (ImGui::IsItemHovered()) {
-                std::string tip;
-                for (const auto& issue : issues)
-                    if (issue.entity_id == e.id) tip += issue.message + "\n";
-                ImGui::SetTooltip("%s", tip.c_str());
-            }
-        }
-        ImGui::PopID();
-    }
-    ImGui::PopStyleVar();
+    outliner_tree();
     ImGui::EndChild();
-    ImGui::End();
 }
 
 void EditorApp::validation_panel(float x, float y, float w, float h) {

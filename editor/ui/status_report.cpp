@@ -117,6 +117,52 @@ void EditorApp::objects_status(nlohmann::json& s) const {
                             {"shown", texture_browser_.shown()}};
 }
 
+// Groups, layers, the entered group and the prefab library, so tests can wait on the structure.
+void EditorApp::structure_status(nlohmann::json& s) const {
+    using nlohmann::json;
+    const level::EditorData& data = editor_.level().editor;
+    json groups = json::array();
+    for (const level::Group& g : data.groups)
+        groups.push_back({{"id", g.id},
+                          {"name", g.name},
+                          {"entities", group_entities_deep(data, g.id)},
+                          {"groups", g.groups},
+                          {"prefab", g.has_prefab ? g.prefab.prefab : std::string()},
+                          {"overrides", g.has_prefab ? json(g.prefab.overrides) : json::array()}});
+    s["groups"] = groups;
+    s["selected_groups"] = editor_.selected_groups();
+    s["open_group"] = editor_.open_group();
+    json layers = json::array();
+    for (size_t i = 0; i < data.layers.size(); ++i) {
+        const level::Layer& l = data.layers[i];
+        layers.push_back({{"name", l.name},
+                          {"visible", l.visible},
+                          {"locked", l.locked},
+                          {"count", i < tree_.layer_counts.size() ? tree_.layer_counts[i] : 0}});
+    }
+    s["layers"] = layers;
+    s["active_layer"] = data.active_layer;
+    json hidden = json::array();
+    for (const level::Entity& e : editor_.level().entities)
+        if (editor_.doc().hidden.contains(e.id)) hidden.push_back(e.id);
+    s["hidden"] = hidden;
+    json prefabs = json::array();
+    for (const PrefabEntry& entry : editor_.prefabs().entries())
+        prefabs.push_back({{"name", entry.name},
+                           {"ok", entry.prefab.ok()},
+                           {"entities", entry.prefab ? entry.prefab->entities.size() : 0},
+                           {"error", entry.prefab ? std::string() : entry.prefab.error().str()}});
+    s["prefabs"] = prefabs;
+    s["prefab_thumbnails"] = thumbnails_.size();
+    s["prefab_prompt"] = {{"open", prefab_prompt_open_},
+                          {"name", std::string(prefab_name_)},
+                          {"problem", prefab_name_[0] ? prefab_name_problem(prefab_name_) : std::string()},
+                          {"exists", editor_.prefabs().find(prefab_name_) != nullptr},
+                          {"error", prefab_error_}};
+    s["prefab_folders"] = json::array();
+    for (const auto& folder : editor_.prefabs().folders()) s["prefab_folders"].push_back(folder.string());
+}
+
 void EditorApp::write_status() {
     using nlohmann::json;
     json s;
@@ -129,7 +175,8 @@ void EditorApp::write_status() {
     s["undo"] = editor_.history().undo_count();
     s["redo"] = editor_.history().step_names().size() - editor_.history().undo_count();
     s["dirty"] = editor_.has_unsaved_changes();
-    s["placing"] = placing_ ? std::string(level::type_name(*placing_)) : std::string();
+    s["placing"] = placing_.type ? std::string(level::type_name(*placing_.type)) : std::string();
+    s["placing_prefab"] = placing_.prefab;
     s["gizmo"] = gizmo_mode_name(gizmo_.mode);
     s["dragging"] = gizmo_.dragging();
     s["render_scale"] = renderer_ ? renderer_->render_scale() : 0.0f;
@@ -201,6 +248,7 @@ void EditorApp::write_status() {
             if (const auto texture = selection_texture()) s["primary"]["texture"] = texture->name;
         }
     objects_status(s);
+    structure_status(s);
     logic_status(s);
     panes_status(s);
     analysis_status(s);

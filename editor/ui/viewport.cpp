@@ -198,12 +198,23 @@ void EditorApp::draw_overlays() {
     draw_player_start();
     if (placing_ && place_ray_) { // where a click would place (in every pane of the 4-up view)
         const Vec3 p = place_point(*place_ray_);
-        level::Entity preview;
-        preview.position = placement_for(*placing_, p);
-        preview.props = level::default_props(*placing_);
-        const geometry::Obb box = entity_obb(preview);
-        debug_.box(obb_transform(box), box.half, Vec4(0.4f, 1.0f, 0.5f, 0.9f));
+        if (placing_.type) {
+            level::Entity preview;
+            preview.position = placement_for(*placing_.type, p);
+            preview.props = level::default_props(*placing_.type);
+            const geometry::Obb box = entity_obb(preview);
+            debug_.box(obb_transform(box), box.half, Vec4(0.4f, 1.0f, 0.5f, 0.9f));
+        } else if (const PrefabEntry* entry = editor_.prefabs().find(placing_.prefab);
+                   entry && entry->prefab) {
+            for (const level::Entity& local : entry->prefab->entities) { // each entity where it would land
+                level::Entity at = local;
+                at.position += p;
+                const geometry::Obb box = entity_obb(at);
+                debug_.box(obb_transform(box), box.half, Vec4(0.4f, 1.0f, 0.5f, 0.75f));
+            }
+        }
     }
+    draw_open_group_box();
 }
 
 // A speaker facing the camera (the renderer draws nothing for a sound: it is heard, not seen); selected, the
@@ -385,9 +396,9 @@ void EditorApp::viewport_panel(float x, float y, float w, float h) {
     draw->PopClipRect();
     clip_preview_overlay(Vec2(origin.x, origin.y), area); // the selection's, not a pane's: across the bottom
     pick_hint(draw, viewport_origin_);
+    if (!quad_.on) open_group_hint(draw, viewport_origin_, viewport_size_, false);
     if (placing_) {
-        const std::string hint =
-            "Click to place " + std::string(level::type_name(*placing_)) + "  (Esc: stop)";
+        const std::string hint = "Click to place " + placing_.label() + "  (Shift: several, Esc: stop)";
         draw->AddText(ImVec2(viewport_origin_.x + 12, viewport_origin_.y + 8), IM_COL32(140, 255, 160, 255),
                       hint.c_str());
     }
@@ -487,11 +498,20 @@ void EditorApp::viewport_input(Vec2 origin, bool hovered) {
     if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
         if (placing_) {
             const geometry::Ray ray = view_.ray(mouse);
-            auto placed = editor_.place(*placing_, placement_for(*placing_, place_point(ray)));
-            if (!placed) log_line("place: " + placed.error().str(), true);
+            if (placing_.type) {
+                auto placed = editor_.place(*placing_.type, placement_for(*placing_.type, place_point(ray)));
+                if (!placed) log_line("place: " + placed.error().str(), true);
+            } else {
+                auto placed = editor_.place_prefab(placing_.prefab, place_point(ray), 0.0f);
+                if (!placed) log_line("place prefab: " + placed.error().str(), true);
+            }
             if (!io.KeyShift) placing_.reset(); // Shift keeps placing
             return;
         }
+        // A double click on a group's member enters the group (before the gizmo: the first click selected
+        // the group, and its gizmo may lie under the pointer now).
+        if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && double_click_enter(pick(view_.ray(mouse))))
+            return;
         if (auto point = pick_patrol_point(editor_, view_, mouse)) { // a route point beats the gizmo
             patrol_drag_.begin(editor_, view_, *point, mouse);
             return;
@@ -514,14 +534,16 @@ void EditorApp::viewport_input(Vec2 origin, bool hovered) {
                                editor_.doc(), view_.ray(mouse),
                                [this](const level::Entity& e) { return shown(e); }, overlays_.player_start)
                                .id;
-            if (id)
+            if (id > 0) // its whole group, or inside an entered group what lies in it
+                report(editor_.select_picked(id, mode), "select");
+            else if (id)
                 report(editor_.select({id}, mode), "select");
             else if (mode == SelectMode::Replace)
                 editor_.clear_selection();
             return;
         }
         const Vec2 lo = glm::min(box_start_, end) - origin, hi = glm::max(box_start_, end) - origin;
-        const int n = editor_.select_where(
+        const int n = editor_.select_picked_where(
             [&](const level::Entity& e) {
                 Vec2 p;
                 if (!view_.project(entity_obb(e).center, p)) return false;

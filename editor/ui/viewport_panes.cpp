@@ -159,6 +159,7 @@ void EditorApp::quad_viewport(Vec2 origin, Vec2 size) {
                             ImVec2(label.x + extent.x + 4, label.y + extent.y + 2), IM_COL32(15, 17, 22, 190),
                             3.0f);
         draw->AddText(label, active ? IM_COL32(255, 200, 90, 255) : IM_COL32(210, 215, 225, 255), name);
+        open_group_hint(draw, pane.origin, pane.size, true);
         if (active) // the pane the keys and the mouse work in
             draw->AddRect(ImVec2(pane.origin.x, pane.origin.y),
                           ImVec2(pane.origin.x + pane.size.x, pane.origin.y + pane.size.y),

@@ -1,0 +1,174 @@
+// The left column's Prefabs tab: every prefab of the library (editor_.prefabs(): the shipped prefabs/ and
+// the designer's own folder) with a rendered thumbnail, its title and entity count; a broken file shows
+// its error in red. Clicking one arms placing it: the next viewport click places a linked instance
+// (Shift keeps placing). The library is rescanned (file times only) every two seconds and when the window
+// regains focus; thumbnails are rendered offscreen in the render pass, again only when the library's
+// revision changes.
+#include "ui/editor_app.h"
+#include "ui/panel_style.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ks::editor::ui {
+
+namespace {
+constexpr int kThumbnailSize = 92; // two to a row in the narrowest left column (1280 wide)
+constexpr double kRescanSeconds = 2.0;
+
+// A three-quarter view from the front right, above, framing the prefab's bounds.
+geometry::Camera thumbnail_camera(Vec3 lo, Vec3 hi) {
+    geometry::Camera camera;
+    camera.aspect = 1.0f;
+    camera.fov_y = radians(40.0f);
+    camera.yaw = radians(35.0f);
+    camera.pitch = radians(-28.0f);
+    const Vec3 centre = (lo + hi) * 0.5f;
+    const float radius = std::max(0.5f, glm::length(hi - lo) * 0.5f);
+    const float distance = radius / std::sin(camera.fov_y * 0.5f) * 1.02f;
+    camera.position = centre - camera.forward() * distance;
+    camera.near_plane = std::max(0.05f, distance - radius * 2.0f);
+    camera.far_plane = distance + radius * 2.0f;
+    return camera;
+}
+} // namespace
+
+void EditorApp::rescan_prefabs() {
+    const double now = glfwGetTime();
+    const bool focused = glfwGetWindowAttrib(shell_.window(), GLFW_FOCUSED) != 0;
+    const bool regained = focused && !was_focused_;
+    was_focused_ = focused;
+    if (!regained && now - last_rescan_ < kRescanSeconds) return;
+    last_rescan_ = now;
+    editor_.prefabs().rescan();
+}
+
+// Render pass: one small target per prefab, drawn again only when the library changed.
+void EditorApp::render_prefab_thumbnails() {
+    const PrefabLibrary& library = editor_.prefabs();
+    if (thumbnails_revision_ == library.revision()) return;
+    thumbnails_revision_ = library.revision();
+    std::vector<std::unique_ptr<PrefabThumbnail>> kept;
+    render::LevelSceneOptions options = render::level_scene_options(renderer_->settings());
+    options.bake_light_map = false; // a thumbnail is lit per vertex: no bake for 96 pixels
+    std::vector<render::MeshInstance> instances;
+    std::vector<render::Light> lights;
+    render::DebugDraw no_debug;
+    renderer_->invalidate_shadows(); // the cached shadow map is the level's
+    for (const PrefabEntry& entry : library.entries()) {
+        if (!entry.prefab || entry.prefab->entities.empty()) continue;
+        auto thumbnail = std::make_unique<PrefabThumbnail>();
+        for (auto& old : thumbnails_)
+            if (old && old->name == entry.name) thumbnail = std::move(old); // reuse its target
+        thumbnail->name = entry.name;
+        level::Level level;
+        level.entities = entry.prefab->entities;
+        Vec3 lo(1e30f), hi(-1e30f);
+        for (const level::Entity& e : level.entities) {
+            const geometry::Aabb b = entity_obb(e).aabb();
+            lo = glm::min(lo, b.min), hi = glm::max(hi, b.max);
+        }
+        auto scene = render::LevelScene::build(level, assets_, options);
+        scene->emit(instances, lights);
+        // A prefab without lights of its own is lit by a lamp over the camera's shoulder.
+        const geometry::Camera camera = thumbnail_camera(lo, hi);
+        if (lights.empty()) {
+            render::Light lamp;
+            lamp.position = camera.position + Vec3(0, glm::length(hi - lo) * 0.5f, 0);
+            lamp.range = glm::length(hi - lo) * 3.0f + 10.0f;
+            lamp.intensity = 1.6f;
+            lights.push_back(lamp);
+        }
+        render::SceneFrame frame;
+        frame.camera = camera;
+        frame.environment = scene->environment();
+        frame.environment.sky_color = glm::max(frame.environment.sky_color, Vec3(0.35f));
+        frame.instances = &instances;
+        frame.lights = &lights;
+        frame.debug = &no_debug;
+        frame.width = frame.height = kThumbnailSize;
+        if (!thumbnail->target.ensure(kThumbnailSize, kThumbnailSize)) continue;
+        thumbnail->target.bind();
+        renderer_->render(frame);
+        renderer_->invalidate_shadows();
+        thumbnail->drawn = true;
+        kept.push_back(std::move(thumbnail));
+    }
+    thumbnails_ = std::move(kept);
+}
+
+void EditorApp::prefab_palette() {
+    const PrefabLibrary& library = editor_.prefabs();
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+    ImGui::TextWrapped("Click one, then click in the viewport (Shift: several)");
+    ImGui::PopStyleColor();
+    if (library.entries().empty()) {
+        ImGui::TextWrapped("No prefabs yet. Select some entities and use Edit > Save selection as prefab...");
+        return;
+    }
+    ImGui::BeginChild("prefab_cells");
+    const float cell = static_cast<float>(kThumbnailSize) + 4.0f;
+    const float width = ImGui::GetContentRegionAvail().x;
+    const float spacing = ImGui::GetStyle().ItemSpacing.x;
+    const int columns = std::max(1, static_cast<int>((width + spacing) / (cell + spacing)));
+    int column = 0;
+    // The prefabs that load first, in a grid; then each broken file, its name and error across the column.
+    for (const PrefabEntry& entry : library.entries()) {
+        if (!entry.prefab) continue;
+        ImGui::PushID(entry.name.c_str());
+        if (column > 0) ImGui::SameLine();
+        ImGui::BeginGroup();
+        const bool armed = placing_.prefab == entry.name;
+        const PrefabThumbnail* thumbnail = nullptr;
+        for (const auto& t : thumbnails_)
+            if (t->name == entry.name && t->drawn) thumbnail = t.get();
+        if (armed) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.25f, 0.55f, 0.3f, 1));
+        const ImVec2 size(static_cast<float>(kThumbnailSize), static_cast<float>(kThumbnailSize));
+        bool clicked = false;
+        if (thumbnail)
+            clicked = ImGui::ImageButton(
+                reinterpret_cast<ImTextureID>(static_cast<intptr_t>(thumbnail->target.texture())), size,
+                ImVec2(0, 1), ImVec2(1, 0), 2);
+        else
+            clicked = ImGui::Button("...", ImVec2(size.x + 4, size.y + 4));
+        if (armed) ImGui::PopStyleColor();
+        spots_.here("prefab:" + entry.name);
+        if (clicked) {
+            if (pick_) end_pick(); // placing takes the viewport's clicks
+            placing_.reset();
+            placing_.prefab = entry.name;
+        }
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("%s\n%s  (%zu entities)\n%s\nClick, then click in the viewport to place a "
+                              "linked instance; Shift+click places several.",
+                              entry.prefab->title.empty() ? entry.name.c_str() : entry.prefab->title.c_str(),
+                              entry.name.c_str(), entry.prefab->entities.size(), entry.path.string().c_str());
+        // The name under the picture, cut to the cell's width.
+        std::string label = entry.name;
+        while (label.size() > 3 && ImGui::CalcTextSize(label.c_str()).x > cell)
+            label.resize(label.size() - 4), label += "..";
+        ImGui::PushStyleColor(ImGuiCol_Text,
+                              armed ? ImVec4(0.55f, 1.0f, 0.65f, 1) : ImVec4(0.85f, 0.9f, 1, 1));
+        ImGui::TextUnformatted(label.c_str());
+        ImGui::PopStyleColor();
+        ImGui::EndGroup();
+        column = (column + 1) % columns;
+        ImGui::PopID();
+    }
+    for (const PrefabEntry& entry : library.entries()) {
+        if (entry.prefab) continue;
+        ImGui::Separator();
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.45f, 0.4f, 1));
+        ImGui::TextWrapped("%s: %s", entry.path.filename().string().c_str(),
+                           entry.prefab.error().str().c_str());
+        ImGui::PopStyleColor();
+        spots_.here("prefab:" + entry.name);
+    }
+    ImGui::EndChild();
+}
+
+} // namespace ks::editor::ui

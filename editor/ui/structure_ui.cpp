@@ -1,0 +1,193 @@
+// Groups, layers and prefabs from the viewport, the keys and the Edit menu: Ctrl+G / Ctrl+Shift+G, a
+// double click entering a group and Esc leaving it, the entered group's outline and hint, the "Save
+// selection as prefab..." prompt and the "Move selection to layer" submenu. Every edit is an Editor call
+// (editor_groups.cpp, editor_layers.cpp, editor_prefabs.cpp).
+#include "ui/editor_app.h"
+
+#include <imgui.h>
+
+#include <cstdio>
+
+namespace ks::editor::ui {
+
+std::string EditorApp::group_label(const level::Group& group) const {
+    std::string label = group.name.empty() ? "group " + std::to_string(group.id) : group.name;
+    if (group.has_prefab) label += "  [" + group.prefab.prefab + "]";
+    return label;
+}
+
+void EditorApp::group_selection_ui() {
+    if (editor_.doc().selection.empty()) return;
+    auto group = editor_.group_selection();
+    if (!group) {
+        log_line("group: " + group.error().str(), true);
+        return;
+    }
+    if (const level::Group* g = editor_.level().editor.find_group(*group))
+        log_line("grouped " + std::to_string(group_entities_deep(editor_.level().editor, *group).size()) +
+                 " entities as " + g->name);
+}
+
+void EditorApp::ungroup_selection_ui() {
+    if (editor_.selected_groups().empty()) {
+        log_line("ungroup: the selection holds no whole group", true);
+        return;
+    }
+    report(editor_.ungroup_selection(), "ungroup");
+}
+
+// Up one level; the group just left stays selected as a whole, so Esc then Ctrl+Shift+G ungroups it.
+void EditorApp::leave_group() {
+    const int left = editor_.open_group();
+    editor_.exit_group();
+    select_group(left);
+}
+
+// The group as a click would pick it: its parent is entered first (or every group left for a top-level
+// one), so a nested group's row in the outliner selects that group and not its outermost ancestor.
+void EditorApp::select_group(int group_id, SelectMode mode) {
+    const level::EditorData& data = editor_.level().editor;
+    if (!data.find_group(group_id)) return;
+    const int parent = parent_group_of_group(data, group_id);
+    if (parent != editor_.open_group()) {
+        if (parent == 0)
+            while (editor_.open_group() != 0) editor_.exit_group();
+        else
+            report(editor_.enter_group(parent), "enter group");
+    }
+    const std::vector<int> members = group_entities_deep(data, group_id);
+    if (members.empty()) return;
+    report(editor_.select_picked(members.front(), mode), "select");
+}
+
+bool EditorApp::double_click_enter(int entity_id) {
+    if (entity_id <= 0) return false;
+    const int unit = pick_unit(editor_.level().editor, editor_.open_group(), entity_id);
+    if (unit == 0) return false;
+    if (auto r = editor_.enter_group(unit); !r) {
+        report(r, "enter group");
+        return false;
+    }
+    report(editor_.select_picked(entity_id), "select");
+    return true;
+}
+
+void EditorApp::structure_menu_items() {
+    const bool any = !editor_.doc().selection.empty();
+    if (ImGui::MenuItem("Group", "Ctrl+G", false, any)) group_selection_ui();
+    if (ImGui::MenuItem("Ungroup", "Ctrl+Shift+G", false, !editor_.selected_groups().empty()))
+        ungroup_selection_ui();
+    if (ImGui::MenuItem("Leave group", "Esc", false, editor_.open_group() != 0)) leave_group();
+    if (ImGui::MenuItem("Save selection as prefab...", nullptr, false, any)) open_prefab_prompt();
+    spots_.here("menu.save_prefab");
+    const auto& layers = editor_.level().editor.layers;
+    if (ImGui::BeginMenu("Move selection to layer", any)) {
+        if (layers.empty()) {
+            if (ImGui::MenuItem("New layer")) {
+                auto added = editor_.layer_add("Layer 1");
+                if (added)
+                    report(editor_.move_selection_to_layer(*added), "move to layer");
+                else
+                    report(added.error(), "layer");
+            }
+        }
+        for (size_t i = 0; i < layers.size(); ++i)
+            if (ImGui::MenuItem(layers[i].name.c_str()))
+                report(editor_.move_selection_to_layer(static_cast<int>(i)), "move to layer");
+        ImGui::EndMenu();
+    }
+}
+
+void EditorApp::open_prefab_prompt() {
+    if (editor_.doc().selection.empty()) return;
+    ask_prefab_ = true;
+    prefab_error_.clear();
+    prefab_name_[0] = prefab_title_[0] = '\0';
+}
+
+// Name (the file's stem, checked by the model as it is typed) and title; a name in use offers Replace.
+void EditorApp::prefab_prompt() {
+    if (ask_prefab_) {
+        ImGui::OpenPopup("Save selection as prefab");
+        ask_prefab_ = false;
+    }
+    ImGui::SetNextWindowSize(ImVec2(440, 0), ImGuiCond_Appearing);
+    prefab_prompt_open_ = false;
+    if (!ImGui::BeginPopupModal("Save selection as prefab", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
+        return;
+    prefab_prompt_open_ = true;
+    ImGui::TextWrapped("%zu entities become prefabs/NAME.json and a linked instance of it.",
+                       editor_.doc().selection.size());
+    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+    ImGui::SetNextItemWidth(300);
+    if (ImGui::InputTextWithHint("name", "a-z 0-9 _ -", prefab_name_, sizeof(prefab_name_)))
+        prefab_error_.clear();
+    spots_.here("prefab_prompt.name");
+    ImGui::SetNextItemWidth(300);
+    ImGui::InputTextWithHint("title", "shown in the Prefabs tab", prefab_title_, sizeof(prefab_title_));
+    spots_.here("prefab_prompt.title");
+    const std::string problem = prefab_name_problem(prefab_name_);
+    const bool exists = editor_.prefabs().find(prefab_name_) != nullptr;
+    if (prefab_name_[0] && !problem.empty())
+        ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", problem.c_str());
+    else if (exists)
+        ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "A prefab named %s exists: Replace rewrites it.",
+                           prefab_name_);
+    if (!prefab_error_.empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", prefab_error_.c_str());
+    auto save = [&](bool replace) {
+        auto saved = editor_.save_prefab(prefab_name_, prefab_title_, replace);
+        if (!saved) {
+            prefab_error_ = saved.error().str();
+            return;
+        }
+        log_line("saved prefab " + saved->string());
+        ImGui::CloseCurrentPopup();
+    };
+    ImGui::BeginDisabled(!problem.empty() || !prefab_name_[0]);
+    if (ImGui::Button(exists ? "Replace" : "Save", ImVec2(100, 0))) save(exists);
+    spots_.here("prefab_prompt.save");
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel", ImVec2(100, 0))) ImGui::CloseCurrentPopup();
+    spots_.here("prefab_prompt.cancel");
+    ImGui::EndPopup();
+}
+
+// The entered group's bounds, a thin box in every view, so the designer sees they are inside it.
+void EditorApp::draw_open_group_box() {
+    const int open = editor_.open_group();
+    if (open == 0) return;
+    Vec3 lo(1e30f), hi(-1e30f);
+    for (int id : group_entities_deep(editor_.level().editor, open))
+        if (const level::Entity* e = editor_.level().find(id)) {
+            const geometry::Aabb b = entity_obb(*e).aabb();
+            lo = glm::min(lo, b.min), hi = glm::max(hi, b.max);
+        }
+    if (lo.x > hi.x) return;
+    const Vec3 pad(0.25f);
+    lo -= pad, hi += pad;
+    Mat4 m(1.0f);
+    m[3] = Vec4((lo + hi) * 0.5f, 1.0f);
+    debug_.box(m, (hi - lo) * 0.5f, Vec4(0.55f, 0.75f, 1.0f, 0.9f));
+}
+
+// Over a view's top-left corner (under a 4-up pane's name and grid label), clipped to the view.
+void EditorApp::open_group_hint(ImDrawList* draw, Vec2 origin, Vec2 size, bool pane) const {
+    const int open = editor_.open_group();
+    if (open == 0) return;
+    const level::Group* group = editor_.level().editor.find_group(open);
+    if (!group) return;
+    // A 4-up pane is narrow: the group's name alone.
+    const std::string text = pane ? "In " + group->name + " (Esc leaves)"
+                                  : "Inside group " + group_label(*group) + "  -  Esc to leave";
+    const float top = pane ? 46.0f : (placing_ || pick_ ? 28.0f : 8.0f);
+    const ImVec2 at(origin.x + 12, origin.y + top);
+    const ImVec2 extent = ImGui::CalcTextSize(text.c_str());
+    draw->PushClipRect(ImVec2(origin.x, origin.y), ImVec2(origin.x + size.x, origin.y + size.y), true);
+    draw->AddRectFilled(ImVec2(at.x - 5, at.y - 3), ImVec2(at.x + extent.x + 5, at.y + extent.y + 3),
+                        IM_COL32(20, 35, 60, 210), 3.0f);
+    draw->AddText(at, IM_COL32(150, 195, 255, 255), text.c_str());
+    draw->PopClipRect();
+}
+
+} // namespace ks::editor::ui
