@@ -21,11 +21,11 @@ constexpr const char* kExpectUsage =
     "expect key CLIP N time S | expect key CLIP N NODE CHANNEL V | expect curve CLIP NODE CHANNEL TIME V | "
     "expect dojo valid|dirty|clean | expect dojo issue TEXT";
 
-class DojoLineParser {
+class DojoLineParser : LineWords {
   public:
     DojoLineParser(std::string_view line, const std::vector<Token>& tokens, int line_no,
                    const std::string& file)
-        : line_(line), tokens_(tokens), line_no_(line_no), file_(file) {
+        : LineWords(line, tokens, line_no, file) {
         step_.op = ScriptOp::Dojo;
         step_.line = line_no;
     }
@@ -45,9 +45,6 @@ class DojoLineParser {
   private:
     // ---- helpers --------------------------------------------------------------------------------------
 
-    Error fail(size_t token, std::string message, std::string hint) const {
-        return error_at(tokens_, line_, token, file_, line_no_, std::move(message), std::move(hint));
-    }
     static std::string usage_of(std::string_view command) {
         // The part of the usage about this command, e.g. every "clip ..." form.
         std::string out;
@@ -336,10 +333,6 @@ class DojoLineParser {
         return as(DojoOp::ExpectKeyValue);
     }
 
-    std::string_view line_;
-    const std::vector<Token>& tokens_;
-    int line_no_;
-    const std::string& file_;
     ScriptStep step_;
 };
 

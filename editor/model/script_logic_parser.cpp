@@ -25,11 +25,11 @@ constexpr const char* kExpectUsage =
     "expect objectives N";
 constexpr std::string_view kObjectivePrefix = "objective:";
 
-class LogicLineParser {
+class LogicLineParser : LineWords {
   public:
     LogicLineParser(std::string_view line, const std::vector<Token>& tokens, int line_no,
                     const std::string& file)
-        : line_(line), tokens_(tokens), line_no_(line_no), file_(file) {
+        : LineWords(line, tokens, line_no, file) {
         step_.op = ScriptOp::Logic;
         step_.line = line_no;
     }
@@ -45,19 +45,6 @@ class LogicLineParser {
   private:
     // ---- helpers --------------------------------------------------------------------------------------
 
-    Error fail(size_t token, std::string message, std::string hint) const {
-        return error_at(tokens_, line_, token, file_, line_no_, std::move(message), std::move(hint));
-    }
-    Result<void> need(size_t min, size_t max, const char* usage) const {
-        if (tokens_.size() < min) return fail(tokens_.size(), "missing words", usage);
-        if (tokens_.size() > max)
-            return fail(max, "unexpected '" + std::string(tokens_[max].text) + "'", usage);
-        return ok();
-    }
-    std::string word(size_t token) const { return std::string(tokens_[token].text); }
-    std::string rest(size_t token) const {
-        return std::string(line_.substr(static_cast<size_t>(tokens_[token].column - 1)));
-    }
     LogicStep& logic() { return step_.logic; }
 
     // A position counted from 1, as the inspector shows them; kept counted from 0.
@@ -256,10 +243,6 @@ class LogicLineParser {
         return step_;
     }
 
-    std::string_view line_;
-    const std::vector<Token>& tokens_;
-    int line_no_;
-    const std::string& file_;
     ScriptStep step_;
 };
 

@@ -19,11 +19,11 @@ constexpr const char* kExpectUsage =
     "[locked|unlocked] | expect instance GROUP PREFAB N | expect override GROUP ID FIELD | expect "
     "no_override GROUP ID FIELD | expect hidden ID | expect shown ID | expect open_group GROUP";
 
-class StructureLineParser {
+class StructureLineParser : LineWords {
   public:
     StructureLineParser(std::string_view line, const std::vector<Token>& tokens, int line_no,
                         const std::string& file)
-        : line_(line), tokens_(tokens), line_no_(line_no), file_(file) {
+        : LineWords(line, tokens, line_no, file) {
         step_.op = ScriptOp::Structure;
         step_.line = line_no;
     }
@@ -44,19 +44,6 @@ class StructureLineParser {
     }
 
   private:
-    Error fail(size_t token, std::string message, std::string hint) const {
-        return error_at(tokens_, line_, token, file_, line_no_, std::move(message), std::move(hint));
-    }
-    Result<void> need(size_t min, size_t max, const char* usage) const {
-        if (tokens_.size() < min) return fail(tokens_.size(), "missing words", usage);
-        if (tokens_.size() > max)
-            return fail(max, "unexpected '" + std::string(tokens_[max].text) + "'", usage);
-        return ok();
-    }
-    std::string word(size_t token) const { return std::string(tokens_[token].text); }
-    std::string rest(size_t token) const {
-        return std::string(line_.substr(static_cast<size_t>(tokens_[token].column - 1)));
-    }
     Result<void> number(size_t token, int& out, const char* what, const char* usage, int min = 1) const {
         if (token >= tokens_.size()) return fail(token, std::string("expected ") + what, usage);
         if (!to_int(tokens_[token].text, out) || out < min)
@@ -231,10 +218,6 @@ class StructureLineParser {
         return number(2, s().entity_id, "an entity id", kExpectUsage);
     }
 
-    std::string_view line_;
-    const std::vector<Token>& tokens_;
-    int line_no_;
-    const std::string& file_;
     ScriptStep step_;
 };
 
