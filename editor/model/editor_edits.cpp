@@ -280,6 +280,7 @@ std::string Editor::copy() {
     for (const auto& e : doc_.level.entities)
         if (selected.contains(e.id)) list.push_back(level::entity_to_json(e));
     nlohmann::json clip = {{kClipboardKey, 1}, {"entities", std::move(list)}};
+    if (nlohmann::json groups = copied_structure(doc_); !groups.is_null()) clip["editor"] = std::move(groups);
     clipboard_ = clip.dump(2);
     return clipboard_;
 }
@@ -318,6 +319,16 @@ Result<void> Editor::paste_text(std::string_view text) {
     }
     change->set_name(new_ids.size() == 1 ? "Paste" : "Paste " + std::to_string(new_ids.size()) + " entities");
     change->next_id = Change<int>{doc_.level.next_id, next};
+    if (json.is_object() && json.contains("editor")) { // groups and prefab instances copied whole
+        std::unordered_map<int, int> pasted;
+        for (size_t i = 0; i < list.size(); ++i)
+            if (list[i].contains("id") && list[i]["id"].is_number_integer())
+                pasted.emplace(list[i]["id"].get<int>(), new_ids[i]);
+        level::EditorData data = doc_.level.editor;
+        paste_structure(data, json["editor"], pasted, doc_.open_group);
+        if (data != doc_.level.editor)
+            change->editor_data = Change<level::EditorData>{doc_.level.editor, std::move(data)};
+    }
     execute(std::move(change), new_ids);
     return ok();
 }

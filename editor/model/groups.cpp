@@ -2,6 +2,8 @@
 
 #include "model/document.h"
 
+#include "level/editor_data_io.h"
+
 #include "core/math.h"
 
 #include <algorithm>
@@ -129,6 +131,60 @@ void copy_structure(EditorData& data, const std::unordered_map<int, int>& copies
         p->groups.insert(std::lower_bound(p->groups.begin(), p->groups.end(), child), child);
     }
     for (Group& g : made) data.groups.push_back(std::move(g));
+}
+
+nlohmann::json copied_structure(const Document& doc) {
+    const EditorData& data = doc.level.editor;
+    if (data.groups.empty()) return nullptr;
+    std::vector<int> ids;
+    for (int id : doc.selection)
+        if (id != kPlayerStartId && doc.level.find(id)) ids.push_back(id);
+    std::sort(ids.begin(), ids.end());
+    const auto whole = groups_wholly_in(data, ids);
+    if (whole.empty()) return nullptr;
+    EditorData copy;
+    for (int id : whole) {
+        Group g = *data.find_group(id);
+        std::erase_if(g.groups,
+                      [&](int child) { return std::find(whole.begin(), whole.end(), child) == whole.end(); });
+        copy.next_group_id = std::max(copy.next_group_id, g.id + 1);
+        copy.groups.push_back(std::move(g));
+    }
+    return nlohmann::json(level::write_editor_data(copy));
+}
+
+void paste_structure(EditorData& data, const nlohmann::json& copied,
+                     const std::unordered_map<int, int>& pasted, int open_group) {
+    level::DiagnosticSink sink("clipboard"); // a hand-edited clipboard's mistakes leave those groups out
+    const EditorData clip = level::read_editor_data(nlohmann::ordered_json(copied), "editor", sink);
+    std::unordered_map<int, int> group_ids;
+    std::vector<int> children;
+    for (const Group& g : clip.groups) {
+        group_ids[g.id] = data.next_group_id++;
+        children.insert(children.end(), g.groups.begin(), g.groups.end());
+    }
+    auto mapped = [](const std::unordered_map<int, int>& map, int id) {
+        auto it = map.find(id);
+        return it == map.end() ? 0 : it->second;
+    };
+    for (Group g : clip.groups) {
+        const bool top = std::find(children.begin(), children.end(), g.id) == children.end();
+        g.id = group_ids[g.id];
+        std::vector<int> entities, groups;
+        for (int id : g.entities)
+            if (int n = mapped(pasted, id)) entities.push_back(n);
+        for (int id : g.groups)
+            if (int n = mapped(group_ids, id)) groups.push_back(n);
+        std::sort(entities.begin(), entities.end());
+        std::sort(groups.begin(), groups.end());
+        g.entities = std::move(entities);
+        g.groups = std::move(groups);
+        for (int& member : g.prefab.members) member = member == 0 ? 0 : mapped(pasted, member);
+        if (g.entities.empty() && g.groups.empty()) continue;
+        if (Group* parent = data.find_group(open_group); top && parent && !parent->has_prefab)
+            parent->groups.insert(std::lower_bound(parent->groups.begin(), parent->groups.end(), g.id), g.id);
+        data.groups.push_back(std::move(g));
+    }
 }
 
 int layer_of(const EditorData& data, int entity_id) {

@@ -6,6 +6,8 @@
 #include "core/math.h"
 #include "level/editor_data.h"
 
+#include <nlohmann/json.hpp>
+
 #include <unordered_map>
 #include <vector>
 
@@ -41,6 +43,14 @@ std::vector<int> groups_wholly_in(const level::EditorData& data, const std::vect
 // a group that was not copied whole joins that group (unless it is a prefab instance); every copy joins
 // its original's layer.
 void copy_structure(level::EditorData& data, const std::unordered_map<int, int>& copies, Vec3 offset);
+
+// Copy and paste (the clipboard's "editor" key): the groups the selection holds whole, as the level file
+// writes its editor section (null when there are none); and those groups pasted into `data` with fresh
+// ids, their entities renumbered by `pasted` (clipboard id -> new id), inside `open_group` when it is a
+// plain group. Prefab instances stay linked to their prefab.
+nlohmann::json copied_structure(const Document& doc);
+void paste_structure(level::EditorData& data, const nlohmann::json& copied,
+                     const std::unordered_map<int, int>& pasted, int open_group);
 
 // The index of the layer entity `entity_id` is in (0: the Default layer, also when there are no layers).
 int layer_of(const level::EditorData& data, int entity_id);

@@ -272,3 +272,35 @@ TEST_CASE("a 2 000-entity level: a 1 000-entity group picks, moves and undoes as
     CHECK(ed.undo());
     CHECK(ed.level().editor.groups.empty());
 }
+
+TEST_CASE("copy and paste keep groups and prefab links; a plain entity pastes plain") {
+    test::ScratchDir dir;
+    Editor ed = four_walls();
+    ed.prefabs().set_folders({dir.path()});
+    REQUIRE(ed.select({1, 2}).ok());
+    REQUIRE(ed.group_selection("Pair").ok());
+    REQUIRE(ed.select({3, 4}).ok());
+    REQUIRE(ed.save_prefab("two_walls").ok()); // group 2, an instance
+    REQUIRE(ed.select({1, 2, 3, 4}).ok());
+    const std::string text = ed.copy();
+    CHECK(text.find("\"editor\"") != std::string::npos);
+    REQUIRE(ed.paste().ok());
+    CHECK(sorted(ed.doc().selection) == std::vector<int>{6, 7, 8, 9});
+    REQUIRE(ed.level().editor.groups.size() == 4);
+    const level::Group& pair = ed.level().editor.groups[2];
+    CHECK(pair.id == 3);
+    CHECK(pair.name == "Pair");
+    CHECK(pair.entities == std::vector<int>{6, 7});
+    const level::Group& instance = ed.level().editor.groups[3];
+    CHECK(instance.has_prefab);
+    CHECK(instance.prefab.members == std::vector<int>{8, 9});
+    REQUIRE(ed.select_picked(8).ok());
+    CHECK(sorted(ed.doc().selection) == std::vector<int>{8, 9});
+    CHECK(ed.undo());
+    CHECK(ed.level().editor.groups.size() == 2);
+    // One member alone pastes as a plain entity.
+    REQUIRE(ed.select({1}).ok());
+    (void)ed.copy();
+    REQUIRE(ed.paste().ok());
+    CHECK(ed.level().editor.groups.size() == 2);
+}
