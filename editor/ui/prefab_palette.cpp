@@ -44,7 +44,16 @@ void EditorApp::rescan_prefabs() {
     was_focused_ = focused;
     if (!regained && now - last_rescan_ < kRescanSeconds) return;
     last_rescan_ = now;
-    editor_.prefabs().rescan();
+    if (!editor_.prefabs().rescan() || editor_.history().in_transaction()) return;
+    // A prefab file changed on disk (another editor applied an instance, an edit by hand): the instances in
+    // this level follow it at once, as opening the level would, in one step that undo takes back.
+    auto updated = editor_.update_prefab_instances();
+    if (!updated)
+        log_line("prefab instances not updated: " + updated.error().str(), true);
+    else if (*updated > 0)
+        log_line("a prefab changed on disk: " + std::to_string(*updated) +
+                 " entities of its instances follow it (" + editor_.history().undo_name() +
+                 "; undo keeps the old)");
 }
 
 // Render pass: one small target per prefab, drawn again only when the library changed.

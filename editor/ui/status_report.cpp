@@ -173,6 +173,7 @@ void EditorApp::write_status() {
     s["entities"] = editor_.level().entities.size();
     s["selection"] = editor_.doc().selection;
     s["undo"] = editor_.history().undo_count();
+    s["undo_name"] = editor_.history().undo_name();
     s["redo"] = editor_.history().step_names().size() - editor_.history().undo_count();
     s["dirty"] = editor_.has_unsaved_changes();
     s["placing"] = placing_.type ? std::string(level::type_name(*placing_.type)) : std::string();

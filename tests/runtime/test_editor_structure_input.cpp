@@ -291,4 +291,16 @@ TEST_CASE("editor structure input: Edit > Save selection as prefab... refuses a 
     st = s.wait("replaced", [](const json& j) { return j["prefab_prompt"]["open"] == false; });
     CHECK(st["prefab_prompt"]["error"] == "");
     CHECK(st["groups"].size() == 1);
+
+    // Another editor changes the prefab on disk: the open level's instance follows it within the rescan's
+    // two seconds, as one undo step, without a click.
+    json prefab = json::parse(test::read_file(prefabs / "twin_walls.json"));
+    for (json& e : prefab["entities"]) e["props"]["size"] = json::array({8, 12, 0.5});
+    std::ofstream(prefabs / "twin_walls.json.tmp") << prefab.dump(2);
+    std::filesystem::rename(prefabs / "twin_walls.json.tmp", prefabs / "twin_walls.json");
+    st = s.wait("the instance follows the changed prefab", [](const json& j) {
+        return j["undo_name"].get<std::string>().find("Update prefab instances (twin_walls)") == 0;
+    });
+    CHECK(st["groups"].size() == 1);
+    CHECK(st["dirty"] == true);
 }
