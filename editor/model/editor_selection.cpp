@@ -1,6 +1,8 @@
 // Editor: selection (view state, not history steps), and hiding and locking one entity (saved steps).
 #include "model/editor.h"
 
+#include <unordered_set>
+
 namespace ks::editor {
 namespace {
 void apply_mode(std::vector<int>& selection, const std::vector<int>& ids, SelectMode mode) {
@@ -102,13 +104,14 @@ Result<void> Editor::set_entity_flag(int id, std::vector<int> level::EditorData:
 
 int Editor::select_picked_where(const std::function<bool(const level::Entity&)>& accept, SelectMode mode) {
     std::vector<int> ids;
+    std::unordered_set<int> taken; // a group's members come once, however many of them the box holds
     int accepted = 0;
     for (const auto& e : doc_.level.entities) {
         if (doc_.hidden.contains(e.id) || doc_.locked.contains(e.id) || !accept(e)) continue;
         ++accepted;
+        if (taken.contains(e.id)) continue;
         for (int id : pick_unit_entities(doc_.level.editor, doc_.open_group, e.id))
-            if (!doc_.locked.contains(id) && std::find(ids.begin(), ids.end(), id) == ids.end())
-                ids.push_back(id);
+            if (!doc_.locked.contains(id) && taken.insert(id).second) ids.push_back(id);
     }
     apply_mode(doc_.selection, ids, mode);
     return accepted;

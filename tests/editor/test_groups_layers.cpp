@@ -304,3 +304,15 @@ TEST_CASE("copy and paste keep groups and prefab links; a plain entity pastes pl
     REQUIRE(ed.paste().ok());
     CHECK(ed.level().editor.groups.size() == 2);
 }
+
+TEST_CASE("box select takes the groups it touches whole, and counts what the box held") {
+    Editor ed = four_walls();
+    REQUIRE(ed.select({1, 2}).ok());
+    REQUIRE(ed.group_selection().ok());
+    const int held = ed.select_picked_where([](const level::Entity& e) { return e.id == 2 || e.id == 3; });
+    CHECK(held == 2);
+    CHECK(sorted(ed.doc().selection) == std::vector<int>{1, 2, 3});
+    REQUIRE(ed.enter_group(1).ok()); // inside the group, members one by one
+    (void)ed.select_picked_where([](const level::Entity& e) { return e.id == 2; });
+    CHECK(ed.doc().selection == std::vector<int>{2});
+}
