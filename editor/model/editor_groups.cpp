@@ -17,26 +17,6 @@ using level::Group;
 void erase_id(std::vector<int>& ids, int id) {
     std::erase(ids, id);
 }
-void insert_sorted(std::vector<int>& ids, int id) {
-    auto at = std::lower_bound(ids.begin(), ids.end(), id);
-    if (at == ids.end() || *at != id) ids.insert(at, id);
-}
-
-// Groups left with nothing in them go, as do prefab instances all of whose members were deleted.
-void prune_empty_groups(EditorData& data) {
-    for (bool pruned = true; pruned;) {
-        pruned = false;
-        for (size_t i = 0; i < data.groups.size(); ++i) {
-            const Group& g = data.groups[i];
-            if (!g.entities.empty() || !g.groups.empty()) continue;
-            const int id = g.id;
-            data.groups.erase(data.groups.begin() + static_cast<std::ptrdiff_t>(i));
-            for (Group& other : data.groups) erase_id(other.groups, id);
-            pruned = true;
-            break;
-        }
-    }
-}
 
 Frame frame_of(const Group& g) {
     return {g.position, g.yaw};

@@ -13,11 +13,6 @@ namespace {
 using level::EditorData;
 using level::Group;
 
-void insert_sorted(std::vector<int>& ids, int id) {
-    auto at = std::lower_bound(ids.begin(), ids.end(), id);
-    if (at == ids.end() || *at != id) ids.insert(at, id);
-}
-
 Error instance_error(const std::string& what, int group_id) {
     return Error(what + ": group " + std::to_string(group_id) + " is not a prefab instance", Location{},
                  "select a placed prefab (its outliner row shows the prefab's name)");
@@ -87,7 +82,7 @@ Result<std::filesystem::path> Editor::save_prefab(const std::string& name, std::
             std::erase(g.entities, id);
             if (g.has_prefab) std::replace(g.prefab.members.begin(), g.prefab.members.end(), id, 0);
         }
-    std::erase_if(data.groups, [](const Group& g) { return g.entities.empty() && g.groups.empty(); });
+    prune_empty_groups(data);
     instance.id = data.next_group_id++;
     if (Group* parent = data.find_group(doc_.open_group); parent && !parent->has_prefab)
         insert_sorted(parent->groups, instance.id);

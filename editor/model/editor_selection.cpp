@@ -89,11 +89,10 @@ Result<void> Editor::set_entity_flag(int id, std::vector<int> level::EditorData:
     const level::Entity* e = doc_.level.find(id);
     if (!e) return Error(std::string(what) + ": no entity with id " + std::to_string(id));
     level::EditorData data = doc_.level.editor;
-    auto& ids = data.*list;
-    auto at = std::lower_bound(ids.begin(), ids.end(), id);
-    const bool listed = at != ids.end() && *at == id;
-    if (on && !listed) ids.insert(at, id);
-    if (!on && listed) ids.erase(at);
+    if (on)
+        insert_sorted(data.*list, id);
+    else
+        std::erase(data.*list, id);
     std::vector<int> selection = doc_.selection;
     if (on && list == &level::EditorData::locked) std::erase(selection, id); // a locked entity is not picked
     std::string name =

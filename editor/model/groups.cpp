@@ -115,21 +115,12 @@ void copy_structure(EditorData& data, const std::unordered_map<int, int>& copies
     }
     for (const auto& [old_id, new_id] : copies) {
         const int parent = parent_group_of_entity(data, old_id);
-        const Group* p = data.find_group(parent);
-        if (p && !group_copies.contains(parent) && !p->has_prefab) {
-            Group* target = data.find_group(parent);
-            target->entities.insert(
-                std::lower_bound(target->entities.begin(), target->entities.end(), new_id), new_id);
-        }
-        if (const int layer = layer_of(data, old_id); layer > 0) {
-            auto& list = data.layers[static_cast<size_t>(layer)].entities;
-            list.insert(std::lower_bound(list.begin(), list.end(), new_id), new_id);
-        }
+        if (Group* p = data.find_group(parent); p && !group_copies.contains(parent) && !p->has_prefab)
+            insert_sorted(p->entities, new_id);
+        if (const int layer = layer_of(data, old_id); layer > 0)
+            insert_sorted(data.layers[static_cast<size_t>(layer)].entities, new_id);
     }
-    for (const auto& [parent, child] : joins) {
-        Group* p = data.find_group(parent);
-        p->groups.insert(std::lower_bound(p->groups.begin(), p->groups.end(), child), child);
-    }
+    for (const auto& [parent, child] : joins) insert_sorted(data.find_group(parent)->groups, child);
     for (Group& g : made) data.groups.push_back(std::move(g));
 }
 
@@ -182,8 +173,28 @@ void paste_structure(EditorData& data, const nlohmann::json& copied,
         for (int& member : g.prefab.members) member = member == 0 ? 0 : mapped(pasted, member);
         if (g.entities.empty() && g.groups.empty()) continue;
         if (Group* parent = data.find_group(open_group); top && parent && !parent->has_prefab)
-            parent->groups.insert(std::lower_bound(parent->groups.begin(), parent->groups.end(), g.id), g.id);
+            insert_sorted(parent->groups, g.id);
         data.groups.push_back(std::move(g));
+    }
+}
+
+void insert_sorted(std::vector<int>& ids, int id) {
+    auto at = std::lower_bound(ids.begin(), ids.end(), id);
+    if (at == ids.end() || *at != id) ids.insert(at, id);
+}
+
+void prune_empty_groups(EditorData& data) {
+    for (bool pruned = true; pruned;) {
+        pruned = false;
+        for (size_t i = 0; i < data.groups.size(); ++i) {
+            const Group& g = data.groups[i];
+            if (!g.entities.empty() || !g.groups.empty()) continue;
+            const int id = g.id;
+            data.groups.erase(data.groups.begin() + static_cast<std::ptrdiff_t>(i));
+            for (Group& other : data.groups) std::erase(other.groups, id);
+            pruned = true;
+            break;
+        }
     }
 }
 

@@ -52,6 +52,12 @@ nlohmann::json copied_structure(const Document& doc);
 void paste_structure(level::EditorData& data, const nlohmann::json& copied,
                      const std::unordered_map<int, int>& pasted, int open_group);
 
+// A sorted id list with `id` in it (once).
+void insert_sorted(std::vector<int>& ids, int id);
+// Groups left with no entities and no child groups go (each also leaves its parent's list), until none is
+// left empty; a prefab instance all of whose members were deleted is such a group.
+void prune_empty_groups(level::EditorData& data);
+
 // The index of the layer entity `entity_id` is in (0: the Default layer, also when there are no layers).
 int layer_of(const level::EditorData& data, int entity_id);
 // Entity id -> layer index for every entity some layer > 0 lists (the rest are in layer 0).

@@ -15,9 +15,9 @@ namespace fs = std::filesystem;
 
 std::vector<fs::path> default_prefab_folders() {
     const fs::path shipped = paths::data_root() / "prefabs";
-    const fs::path user_levels = paths::user_levels_dir();
-    if (user_levels.empty()) return {shipped};
-    const fs::path own = user_levels.parent_path() / "prefabs";
+    const fs::path user_data = paths::user_data_dir();
+    if (user_data.empty()) return {shipped};
+    const fs::path own = user_data / "prefabs";
     return ::access(shipped.c_str(), W_OK) == 0 ? std::vector<fs::path>{shipped, own}
                                                 : std::vector<fs::path>{own, shipped};
 }
