@@ -39,7 +39,7 @@ bool DojoPanel::delete_selected() {
 
 void DojoPanel::event_lane(Vec2 origin, float width, float height, double length) {
     const anim::ClipDef* def = shown_def();
-    if (!def) return;
+    if (!def || !(width >= 1.0f && height >= 1.0f)) return; // InvisibleButton asserts on a zero size
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const ImVec2 p(origin.x, origin.y);
     draw->AddRectFilled(p, ImVec2(p.x + width, p.y + height), IM_COL32(22, 25, 31, 255), 4.0f);

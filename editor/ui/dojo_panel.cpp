@@ -210,26 +210,27 @@ void DojoPanel::show_clip(int index) {
     restart_at(0.0);
 }
 
-// A pose is a pure function of the time since play() from the rest pose, so scrubbing replays from the start.
+DojoPlayPlan DojoPanel::play_plan() const {
+    DojoPlayPlan plan;
+    plan.transition = transition_mode_;
+    plan.clip = clip_;
+    plan.from = from_clip_;
+    plan.to = to_clip_;
+    plan.switch_at = switch_time_;
+    plan.blend = blend_time_;
+    return plan;
+}
+
 void DojoPanel::restart_at(double seconds) {
     if (!player_ || clips_.clips.empty()) return;
     player_ = std::make_unique<anim::Player>(clips_, rig_);
-    if (transition_mode_) {
-        player_->play(from_clip_, 0.0f);
-        player_->advance(std::min<double>(seconds, switch_time_));
-        if (seconds > switch_time_) {
-            player_->play(to_clip_, blend_time_);
-            player_->advance(seconds - switch_time_);
-        }
-    } else {
-        player_->play(clip_, 0.0f);
-        player_->advance(seconds);
-    }
+    dojo_restart_at(*player_, play_plan(), seconds);
     time_ = seconds;
 }
 
-// Playback by dt: a Once clip (or the transition test) starts over when Loop is on; events the playhead
-// passes are auditioned when they name a sound.
+// Playback by dt: a Once clip (or the transition test) starts over when Loop is on; the transition test
+// hands over to its `to` clip at the switch time; events the playhead passes are auditioned when they name
+// a sound.
 void DojoPanel::advance(double dt) {
     if (!player_ || !playing_ || !(dt > 0) || clips_.clips.empty()) return;
     const double step = dt * speed_;
@@ -239,11 +240,13 @@ void DojoPanel::advance(double dt) {
         restart_at(0.0);
         return;
     }
-    player_->advance(step);
+    dojo_advance(*player_, play_plan(), time_, step, [this](const anim::Player& player) {
+        if (!audition_ || !event_sounds_) return;
+        for (const anim::FiredEvent& fired : player.fired_events())
+            if (fired.event && !fired.event->sound.empty())
+                audition_(fired.event->sound, 1.0f), ++auditioned_;
+    });
     time_ += step;
-    if (!audition_ || !event_sounds_) return;
-    for (const anim::FiredEvent& fired : player_->fired_events())
-        if (fired.event && !fired.event->sound.empty()) audition_(fired.event->sound, 1.0f), ++auditioned_;
 }
 
 void DojoPanel::evaluate_pose() {
@@ -367,8 +370,12 @@ void DojoPanel::panel(float x, float y, float width, float height) {
     const ImVec2 start = ImGui::GetCursorPos();
     float pw = 0, ph = 0;
     dojo_preview_size(width, height, pw, ph);
-    pw = std::min(pw, static_cast<float>(target_.width()));
-    ph = std::min(ph, static_cast<float>(target_.height()));
+    // The preview is rendered before the UI is built, so on the frame the tab is opened it has not been
+    // rendered yet and its target has no size: lay the panel out at the size the preview is about to get.
+    if (target_.width() > 0 && target_.height() > 0) {
+        pw = std::min(pw, static_cast<float>(target_.width()));
+        ph = std::min(ph, static_cast<float>(target_.height()));
+    }
     ImGui::BeginGroup();
     draw_preview_image(pw, ph);
     if (clips_.clips.empty()) {

@@ -21,6 +21,7 @@
 #include "model/dojo_clips.h"
 #include "model/dojo_curves.h"
 #include "model/dojo_keys.h"
+#include "model/dojo_playback.h"
 #include "render/asset_library.h"
 #include "render/debug_draw.h"
 #include "render/scene_renderer.h"
@@ -154,6 +155,7 @@ class DojoPanel {
     // dojo_panel.cpp
     void load();
     void recompile(); // after an edit: validate and rebuild the clip set and player
+    DojoPlayPlan play_plan() const; // what the transport plays, from the panel's choices
     void restart_at(double seconds);
     void advance(double dt);
     void evaluate_pose();

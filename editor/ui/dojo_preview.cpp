@@ -124,6 +124,10 @@ void DojoPanel::render(float width, float height, double dt) {
 // The rendered preview (drag to orbit) with the onion-skin toggle and its legend over its top-left corner.
 void DojoPanel::draw_preview_image(float w, float h) {
     const ImVec2 corner = ImGui::GetCursorScreenPos();
+    if (target_.texture() == 0) { // not rendered yet (the tab's first frame): keep its place
+        ImGui::Dummy(ImVec2(w, h));
+        return;
+    }
     ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(target_.texture())), ImVec2(w, h),
                  ImVec2(0, 1), ImVec2(1, 0));
     if (ImGui::IsItemHovered() && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {

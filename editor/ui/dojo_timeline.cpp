@@ -39,7 +39,8 @@ void DojoPanel::transport() {
 }
 
 void DojoPanel::timeline(float width) {
-    if (clips_.clips.empty()) return;
+    // InvisibleButton refuses (asserts on) a zero size: a window too small for a timeline shows none.
+    if (clips_.clips.empty() || !(width >= 1.0f)) return;
     const double length = std::max(0.01, timeline_length());
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const ImVec2 p = ImGui::GetCursorScreenPos();

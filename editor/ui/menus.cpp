@@ -117,10 +117,12 @@ void EditorApp::menu_bar() {
     about_.menu(spots_);
     ImGui::Separator();
     if (ImGui::RadioButton("Level", !dojo_tab_)) dojo_tab_ = false;
+    spots_.here("tab.level");
     if (ImGui::RadioButton("Dojo", dojo_tab_)) {
         dojo_tab_ = true;
         if (pick_) end_pick(); // the level's viewport, where the pick would land, is gone
     }
+    spots_.here("tab.dojo");
     ImGui::Separator();
     const std::string status = editor_.title();
     ImGui::TextDisabled("%s", status.c_str());

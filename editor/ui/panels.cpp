@@ -101,6 +101,7 @@ void EditorApp::outliner_panel(float x, float y, float w, float h) {
     const bool outliner = ImGui::BeginTabItem("Outliner");
     spots_.here("tab.outliner");
     if (outliner) {
+        shown_left_tab_ = LeftTab::Outliner;
         outliner_list();
         ImGui::EndTabItem();
     }
@@ -108,6 +109,7 @@ void EditorApp::outliner_panel(float x, float y, float w, float h) {
         "Layers", nullptr, start_tab_ == LeftTab::Layers ? ImGuiTabItemFlags_SetSelected : 0);
     spots_.here("tab.layers");
     if (layers) {
+        shown_left_tab_ = LeftTab::Layers;
         layers_section();
         ImGui::EndTabItem();
     }
@@ -115,6 +117,7 @@ void EditorApp::outliner_panel(float x, float y, float w, float h) {
         "Prefabs", nullptr, start_tab_ == LeftTab::Prefabs ? ImGuiTabItemFlags_SetSelected : 0);
     spots_.here("tab.prefabs");
     if (prefabs) {
+        shown_left_tab_ = LeftTab::Prefabs;
         prefab_palette();
         ImGui::EndTabItem();
     }

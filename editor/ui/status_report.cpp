@@ -191,6 +191,10 @@ void EditorApp::write_status() {
                   {"last_build_cpu_ms", scene_stats_.last_build_cpu_ms}};
     s["view"] = view_mode_name(view_.mode);
     s["tab"] = dojo_tab_ ? "dojo" : "level";
+    constexpr const char* kLeftTabs[] = {"outliner", "layers", "prefabs"};
+    constexpr const char* kInspectorTabs[] = {"properties", "links", "objectives"};
+    s["left_tab"] = kLeftTabs[static_cast<int>(shown_left_tab_)];
+    s["inspector_tab"] = kInspectorTabs[static_cast<int>(shown_tab_)];
     s["menu"] = {{"file", point(menu_spots_[0])}, {"quit", point(menu_spots_[1])}};
     s["about"] = about_.status();
     s["clip_preview"] = {{"on", clip_preview_}, {"robot", posed_robot_}, {"toggle", point(preview_toggle_)}};
