@@ -64,10 +64,13 @@ void DojoPanel::clip_toolbar() {
 }
 
 void DojoPanel::clip_list() {
-    const float rows = std::min<float>(4.5f, static_cast<float>(file_.clips.size()));
+    // In a short window the list gives way (it scrolls) so that the pages under it stay on screen.
+    const float line = ImGui::GetTextLineHeightWithSpacing();
+    const float fits = (ImGui::GetContentRegionAvail().y * 0.35f - 8.0f) / line - 1.0f;
+    const float rows = std::clamp(fits, 1.0f, std::min<float>(4.5f, static_cast<float>(file_.clips.size())));
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
                                   ImGuiTableFlags_BordersOuter | ImGuiTableFlags_SizingStretchProp;
-    const float height = ImGui::GetTextLineHeightWithSpacing() * (rows + 1.0f) + 8.0f;
+    const float height = line * (rows + 1.0f) + 8.0f;
     if (ImGui::BeginTable("clip list", 4, flags, ImVec2(0, height))) {
         ImGui::TableSetupScrollFreeze(0, 1);
         ImGui::TableSetupColumn("clip", ImGuiTableColumnFlags_WidthStretch, 3.0f);

@@ -392,6 +392,7 @@ class EditorApp {
     std::optional<InspectorTab> select_tab_; // brought to the front on the next frame
     InspectorTab shown_tab_ = InspectorTab::Properties;
     LeftTab shown_left_tab_ = LeftTab::Outliner; // the status file reports it
+    float palette_height_ = 1e4f;                // the place palette's height when last drawn in full
     std::optional<PickRequest> pick_;
     std::string pick_message_; // the hint over the viewport while picking
     GLFWcursor* crosshair_ = nullptr;

@@ -90,7 +90,14 @@ void EditorApp::outliner_panel(float x, float y, float w, float h) {
     place_panel(x, y, w, h);
     ImGui::Begin("Outliner", nullptr, kPanelFlags);
     if (!dojo_tab_) {
+        // The palette takes at most 40 % of the column and scrolls past that, so the tab bar under it stays
+        // on screen in a small window; it is measured each frame for the next.
+        const float most =
+            std::max(ImGui::GetFrameHeightWithSpacing() * 2.0f, ImGui::GetContentRegionAvail().y * 0.4f);
+        ImGui::BeginChild("palette", ImVec2(0, std::min(palette_height_, most)));
         palette_bar();
+        palette_height_ = ImGui::GetCursorPosY();
+        ImGui::EndChild();
         ImGui::Separator();
     }
     refresh_outliner_tree(); // cheap unless the level changed: the tree, issue badges, layer counts
