@@ -257,7 +257,7 @@ class Runner {
         for (int guard = 0; guard < 10000; ++guard) {
             std::optional<Issue> next;
             for (const auto& i : editor_.issues())
-                if (i.rule == rule && i.fix.kind != QuickFix::Kind::None) {
+                if (i.rule == rule && i.fix.available()) {
                     next = i;
                     break;
                 }
