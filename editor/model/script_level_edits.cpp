@@ -1,6 +1,5 @@
-// The script language's level commands (script_level.h): files, selection, entity edits, fields and
-// settings, patrols, history and editing aids; each command's parser, its steps' `run`, and the table entry
-// that registers it (script_command.h).
+// The script language's level commands for files, selection and entity edits (script_level.h): each
+// command's parser, its steps' `run`, and the table entry that registers it (script_command.h).
 #include "model/campaign_add.h"
 #include "model/script_level_words.h"
 
@@ -169,6 +168,7 @@ Result<ScriptStep> parse_duplicate(const LineWords& w) {
     return level_step(step);
 }
 
+// An edit's result without its value.
 Result<void> done(const auto& r) {
     if (!r) return r.error();
     return ok();

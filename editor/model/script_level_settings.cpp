@@ -10,6 +10,7 @@ namespace {
 using namespace script_tokens;
 using namespace level_words;
 
+// lock|unlock|hide|show ID...: the step's flag (locked or hidden) set to `value`.
 template <class T>
 Result<ScriptStep> ids_argument(const LineWords& w, const char* usage, bool value) {
     T step;
