@@ -6,6 +6,7 @@
 #include "core/paths.h"
 #include "core/version.h"
 #include "model/script.h"
+#include "model/script_command.h"
 #include "shell/app_shell.h"
 #include "ui/editor_app.h"
 #include "ui/sound_audition.h"
@@ -13,7 +14,8 @@
 #include <cstdio>
 
 namespace {
-const std::vector<std::string> kFlags = {"no-vsync", "help", "dojo", "navmesh", "textures", "version"};
+const std::vector<std::string> kFlags = {"no-vsync", "help",     "help-script", "dojo",
+                                         "navmesh",  "textures", "version"};
 
 void print_help() {
     std::printf(
@@ -30,6 +32,7 @@ void print_help() {
         "  --level FILE      open a level file (default: a new untitled level)\n"
         "  --script FILE     run editor commands (docs/editor.md) without a window, then exit:\n"
         "                    0 when every line ran, 1 with 'file:line: message' otherwise\n"
+        "  --help-script     list every script command (its forms and what it does) and exit\n"
         "  --run FILE        run editor commands in the window session before the first frame\n"
         "  --camera ...      viewport camera x,y,z,yaw,pitch in degrees (yaw 0 looks along -z)\n"
         "  --dojo            start in the dojo (animation) tab\n"
@@ -77,14 +80,19 @@ int main(int argc, char** argv) {
         print_help();
         return 0;
     }
+    if (cl->has("help-script")) {
+        std::printf("script commands (killswitch-editor --script FILE; docs/editor.md):\n%s",
+                    editor::script_usage_listing().c_str());
+        return 0;
+    }
     if (cl->has("version")) {
         std::printf("%s\n", version::line("killswitch-editor").c_str());
         return 0;
     }
     std::vector<std::string> known = shell::shell_options();
     known.insert(known.end(),
-                 {"level", "script", "run", "camera", "help", "dojo", "view", "status-file", "navmesh",
-                  "dojo-file", "dojo-view", "inspector", "gizmo", "textures", "left-tab"});
+                 {"level", "script", "run", "camera", "help", "help-script", "dojo", "view", "status-file",
+                  "navmesh", "dojo-file", "dojo-view", "inspector", "gizmo", "textures", "left-tab"});
     for (const auto& name : editor::analyze_option_names()) known.push_back(name);
     if (auto unknown = cl->unknown(known); !unknown.empty()) {
         log::error("unknown option ", unknown.front(), " (see killswitch-editor --help)");

@@ -264,8 +264,9 @@ class Editor {
     Result<void> edit_objectives(std::string name,
                                  const std::function<Result<void>(std::vector<level::Objective>&)>& edit,
                                  std::string merge_key = {}, const TargetRenames& renames = {});
-    // The link and objective quick fixes (editor_logic.cpp), each one step through the edits above.
-    Result<void> apply_logic_fix(const QuickFix& fix);
+    // Each kind of quick fix applied by its own specialization (quick_fix.cpp), one undo step named `name`.
+    template <class Fix>
+    Result<void> apply_fix(const Issue& issue, const std::string& name, const Fix& fix);
     // Executes through History; entity renames in `change` take the links and kill lists naming them along.
     void execute(std::unique_ptr<LevelChange> change, std::vector<int> selection_after);
     Result<SaveReport> write_to(const std::filesystem::path& path);

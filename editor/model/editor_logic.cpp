@@ -13,18 +13,6 @@
 namespace ks::editor {
 namespace {
 
-std::string in_quotes(std::string_view s) {
-    return "\"" + std::string(s) + "\"";
-}
-
-Result<void> check_index(int index, size_t size, const std::string& what, const std::string& owner) {
-    if (index >= 0 && static_cast<size_t>(index) < size) return ok();
-    return Error("no " + what + " " + std::to_string(index) + " on " + owner, Location{},
-                 size == 0
-                     ? owner + " has none"
-                     : "valid: 0 .. " + std::to_string(size - 1) + " (" + std::to_string(size) + " in all)");
-}
-
 // An error from check_link about link `index` of a list (none: the link being added).
 Error about_link(Error e, std::optional<int> index) {
     if (index) e.message = "link " + std::to_string(*index) + ": " + e.message;
@@ -242,40 +230,6 @@ Result<void> Editor::objective_move(int from, int to) {
         list.insert(list.begin() + to, std::move(moving));
         return ok();
     });
-}
-
-Result<void> Editor::apply_logic_fix(const QuickFix& fix) {
-    switch (fix.kind) {
-    case QuickFix::Kind::SetLink:
-        return link_set(fix.owner, fix.index, fix.link);
-    case QuickFix::Kind::RemoveLink:
-        return link_remove(fix.owner, fix.index);
-    case QuickFix::Kind::AddLink: {
-        auto added = link_add(fix.owner, fix.link);
-        if (!added) return added.error();
-        return ok();
-    }
-    case QuickFix::Kind::SetKillName:
-    case QuickFix::Kind::RemoveKillName: {
-        if (auto r = check_index(fix.index, doc_.level.objectives.size(), "objective", "the level"); !r)
-            return r;
-        level::Objective objective = doc_.level.objectives[static_cast<size_t>(fix.index)];
-        if (auto r = check_index(fix.kill_index, objective.kill.size(), "kill-list name",
-                                 "objective " + in_quotes(objective.id));
-            !r)
-            return r;
-        auto name = objective.kill.begin() + fix.kill_index;
-        if (fix.kind == QuickFix::Kind::SetKillName)
-            *name = fix.name;
-        else
-            objective.kill.erase(name);
-        return objective_set(fix.index, std::move(objective));
-    }
-    case QuickFix::Kind::AddShutdownObjective:
-        return add_shutdown_objective();
-    default:
-        return Error("not a link or objective quick fix: " + fix.label);
-    }
 }
 
 Result<void> Editor::add_shutdown_objective() {

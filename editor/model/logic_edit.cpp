@@ -15,10 +15,6 @@ namespace {
 using level::LinkAction;
 using level::TargetKind;
 
-std::string in_quotes(std::string_view s) {
-    return "\"" + std::string(s) + "\"";
-}
-
 std::string did_you_mean(std::string_view word, const std::vector<std::string>& candidates) {
     const std::string near = jsonio::closest_match(word, candidates);
     return near.empty() ? std::string() : "did you mean " + in_quotes(near) + "? ";
@@ -54,6 +50,18 @@ level::Entity* pending_update(LevelChange& change, int id) {
     return nullptr;
 }
 } // namespace
+
+std::string in_quotes(std::string_view s) {
+    return "\"" + std::string(s) + "\"";
+}
+
+Result<void> check_index(int index, size_t size, const std::string& what, const std::string& owner) {
+    if (index >= 0 && static_cast<size_t>(index) < size) return ok();
+    return Error("no " + what + " " + std::to_string(index) + " on " + owner, Location{},
+                 size == 0
+                     ? owner + " has none"
+                     : "valid: 0 .. " + std::to_string(size - 1) + " (" + std::to_string(size) + " in all)");
+}
 
 LinkOwner LinkOwner::entity(int id) {
     LinkOwner owner;

@@ -27,6 +27,11 @@ struct LinkOwner {
     bool operator==(const LinkOwner&) const = default;
 };
 
+// "\"text\"": how messages quote a name.
+std::string in_quotes(std::string_view s);
+// An error "no WHAT INDEX on OWNER" (with the valid range) unless 0 <= index < size.
+Result<void> check_index(int index, size_t size, const std::string& what, const std::string& owner);
+
 // The events an owner's links may listen to: an entity's type's (level/logic_names.h), on_complete for an
 // objective, on_start for the level.
 std::span<const level::LinkEvent> owner_events(const level::Level& level, const LinkOwner& owner);

@@ -82,64 +82,40 @@ const level::Link* link_at(const level::Level& level, const Culprit& c) {
     return &(*links)[static_cast<size_t>(c.link)];
 }
 
-std::string in_quotes(std::string_view s) {
-    return "\"" + std::string(s) + "\"";
-}
-
 QuickFix dangling_fix(const level::Level& level, const Culprit& c, const std::string& suggestion) {
-    QuickFix fix;
     if (const level::Link* link = link_at(level, c)) {
-        fix.owner = *c.owner;
-        fix.index = c.link;
-        if (suggestion.empty()) {
-            fix.kind = QuickFix::Kind::RemoveLink;
-            fix.label = "Remove the link";
-            return fix;
-        }
-        fix.kind = QuickFix::Kind::SetLink;
-        fix.label = "Retarget to " + in_quotes(suggestion);
-        fix.link = *link;
-        fix.link.target = suggestion;
-        return fix;
+        if (suggestion.empty()) return {"Remove the link", fixes::RemoveLink{*c.owner, c.link}};
+        level::Link retargeted = *link;
+        retargeted.target = suggestion;
+        return {"Retarget to " + in_quotes(suggestion), fixes::SetLink{*c.owner, c.link, retargeted}};
     }
     if (c.objective >= 0 && c.kill >= 0 &&
         static_cast<size_t>(c.kill) < level.objectives[static_cast<size_t>(c.objective)].kill.size()) {
-        fix.index = c.objective;
-        fix.kill_index = c.kill;
-        fix.kind = suggestion.empty() ? QuickFix::Kind::RemoveKillName : QuickFix::Kind::SetKillName;
-        fix.label = suggestion.empty() ? "Remove from the kill list" : "Rename to " + in_quotes(suggestion);
-        fix.name = suggestion;
+        if (suggestion.empty())
+            return {"Remove from the kill list", fixes::RemoveKillName{c.objective, c.kill}};
+        return {"Rename to " + in_quotes(suggestion), fixes::SetKillName{c.objective, c.kill, suggestion}};
     }
-    return fix;
+    return {};
 }
 
 QuickFix loop_fix(const level::Level& level, const Culprit& c) {
-    QuickFix fix;
     const level::Link* link = link_at(level, c);
-    if (!link) return fix;
-    fix.kind = QuickFix::Kind::SetLink;
-    fix.label = "Delay this link by 0.1 s";
-    fix.owner = *c.owner;
-    fix.index = c.link;
-    fix.link = *link;
-    fix.link.delay = kLoopBreakDelay;
-    return fix;
+    if (!link) return {};
+    level::Link delayed = *link;
+    delayed.delay = kLoopBreakDelay;
+    return {"Delay this link by 0.1 s", fixes::SetLink{*c.owner, c.link, delayed}};
 }
 
 // Nothing completes the objective: using the control panel will, when the level has one.
 QuickFix objective_fix(const level::Level& level, const Culprit& c) {
-    QuickFix fix;
-    if (c.objective < 0 || c.kill >= 0) return fix; // a spawner nothing starts: the hint says what to add
+    if (c.objective < 0 || c.kill >= 0) return {}; // a spawner nothing starts: the hint says what to add
     for (const level::Entity& e : level.entities) {
         if (e.type() != level::EntityType::ControlPanel) continue;
-        fix.kind = QuickFix::Kind::AddLink;
-        fix.label = "Complete it at the control panel";
-        fix.owner = LinkOwner::entity(e.id);
-        fix.link = level::shutdown_link();
-        fix.link.target = level.objectives[static_cast<size_t>(c.objective)].id;
-        return fix;
+        level::Link link = level::shutdown_link();
+        link.target = level.objectives[static_cast<size_t>(c.objective)].id;
+        return {"Complete it at the control panel", fixes::AddLink{LinkOwner::entity(e.id), link}};
     }
-    return fix;
+    return {};
 }
 
 Rule rule_of(Kind kind) {
@@ -180,9 +156,9 @@ void check_level_can_be_won(const level::Level& level, std::vector<Issue>& out) 
     issue.message += panel ? " (using the control panel does nothing until an objective asks for it)"
                            : "; add an objective, or a link with the action win";
     if (panel) {
-        issue.fix.kind = QuickFix::Kind::AddShutdownObjective;
-        issue.fix.label =
-            "Add the objective \"" + std::string(level::kShutdownObjective) + "\": use the control panel";
+        issue.fix = {"Add the objective \"" + std::string(level::kShutdownObjective) +
+                         "\": use the control panel",
+                     fixes::AddShutdownObjective{}};
     }
     out.push_back(std::move(issue));
 }
@@ -208,8 +184,7 @@ Issue logic_issue(const level::Level& level, const level::Diagnostic& d) {
         issue.fix = objective_fix(level, c);
         break;
     case Kind::LockedDoor:
-        if (c.entity)
-            issue.fix = {QuickFix::Kind::SetField, "Unlock the door", {}, "locked", FieldValue(false)};
+        if (c.entity) issue.fix = {"Unlock the door", fixes::SetField{"locked", FieldValue(false)}};
         break;
     case Kind::UnknownTexture:
     case Kind::Other:

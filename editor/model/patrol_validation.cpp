@@ -75,12 +75,9 @@ void check_patrol_support(const level::Level& level, const ValidationOptions& op
             auto problem = point_problem(*surfaces, p, options);
             if (!problem) continue;
             QuickFix fix;
-            if (problem->fixed_y) {
-                fix.kind = QuickFix::Kind::MovePatrolPoint;
-                fix.label = "Snap onto the floor";
-                fix.position = {p.x, *problem->fixed_y, p.z};
-                fix.index = static_cast<int>(i);
-            }
+            if (problem->fixed_y)
+                fix = {"Snap onto the floor",
+                       fixes::MovePatrolPoint{static_cast<int>(i), {p.x, *problem->fixed_y, p.z}}};
             out.push_back({Rule::Patrol, IssueSeverity::Warning, e.id,
                            who + std::to_string(i) + " " + problem->message, std::move(fix)});
         }
@@ -107,14 +104,11 @@ void check_patrol_on_mesh(const level::Level& level, nav::NavMesh& mesh, const V
             const auto on_mesh = mesh.nearest_point(p, extents);
             if (!on_mesh || glm::length(Vec2(on_mesh->x - p.x, on_mesh->z - p.z)) > reach) {
                 QuickFix fix;
-                if (auto nearest = mesh.nearest_point(p, Vec3(8.0f, extents.y, 8.0f))) {
-                    fix.kind = QuickFix::Kind::MovePatrolPoint;
-                    fix.label = "Snap to the nearest walkable point";
-                    // The mesh floats a little above the floor (its height samples): keep the point's own
-                    // height, which the support check has just found on a surface.
-                    fix.position = {nearest->x, p.y, nearest->z};
-                    fix.index = static_cast<int>(i);
-                }
+                // The mesh floats a little above the floor (its height samples): keep the point's own
+                // height, which the support check has just found on a surface.
+                if (auto nearest = mesh.nearest_point(p, Vec3(8.0f, extents.y, 8.0f)))
+                    fix = {"Snap to the nearest walkable point",
+                           fixes::MovePatrolPoint{static_cast<int>(i), {nearest->x, p.y, nearest->z}}};
                 out.push_back(
                     {Rule::Patrol, IssueSeverity::Warning, e.id,
                      who + std::to_string(i) + " is where robots cannot walk (too close to a wall or a prop)",

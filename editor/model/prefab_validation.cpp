@@ -23,9 +23,7 @@ void check_prefab_instances(const level::Level& level, const PrefabLibrary& libr
                         ") cannot follow its prefab: " + prefab.error().message +
                         (prefab.error().hint.empty() ? "" : " (" + prefab.error().hint + ")") +
                         "; its entities stay as they are";
-        issue.fix.kind = QuickFix::Kind::UnlinkPrefab;
-        issue.fix.label = "Unlink the instance";
-        issue.fix.index = g.id;
+        issue.fix = {"Unlink the instance", fixes::UnlinkPrefab{g.id}};
         out.push_back(std::move(issue));
     }
 }

@@ -1,33 +1,211 @@
 #pragma once
-// The script language's dojo context (script.h, DojoOp): the lines that edit an animation clip file, parsed
-// by script_dojo_parser.cpp and run on a DojoDocument by script_dojo_runner.cpp. The level parser hands a
-// line to it when its first word is a dojo word, or `expect` is followed by one.
-#include "model/dojo_document.h"
-#include "model/script.h"
-#include "model/script_tokens.h"
+// The script language's dojo steps: commands on an animation clip file (`dojo open`, `clip ...`,
+// `blend ...`, `event ...`, `key ...`) and its expectations, parsed and registered by
+// script_dojo_parser.cpp and run on the script's DojoDocument by script_dojo_runner.cpp (every step but
+// `dojo open` needs an open file). Clips and nodes are named; keys and events count from 1, as the panel
+// shows them; a channel is its name (rot.x ... pos.z), checked when parsed.
+#include "core/result.h"
 
-#include <filesystem>
+#include <optional>
 #include <string>
-#include <string_view>
-#include <vector>
+#include <variant>
 
 namespace ks::editor {
 
-// dojo, clip, blend, event, key.
-bool is_dojo_command(std::string_view word);
-// What may follow `expect` in the dojo context: clip, blend, events, event, key, curve, dojo.
-bool is_dojo_expectation(std::string_view word);
-// "dojo open [FILE] | ... ": every dojo command's usage, for the level parser's hints.
-const char* dojo_commands_usage();
+struct ScriptContext;
 
-// Parses a dojo line (tokens[0] is a dojo command, or `expect` and a dojo expectation) into a ScriptOp::Dojo
-// step; errors carry the line and the column of the offending word.
-Result<ScriptStep> parse_dojo_line(std::string_view line, const std::vector<script_tokens::Token>& tokens,
-                                   int line_no, const std::string& file);
+namespace steps {
 
-// Runs one dojo step on `dojo` (relative paths against `base_dir`); a saved file and a checked expectation
-// are counted in `report`.
-Result<void> run_dojo_step(const DojoStep& step, DojoDocument& dojo, const std::filesystem::path& base_dir,
-                           ScriptReport& report);
+// ---- the file and its history (count -1: all) ---------------------------------------------------------
+struct DojoOpen {
+    std::string path; // empty: the robot's clips
+    Result<void> run(ScriptContext& c) const;
+};
+struct DojoSave {
+    std::string path; // empty: the opened file
+    Result<void> run(ScriptContext& c) const;
+};
+struct DojoUndo {
+    int count = 1;
+    Result<void> run(ScriptContext& c) const;
+};
+struct DojoRedo {
+    int count = 1;
+    Result<void> run(ScriptContext& c) const;
+};
+
+// ---- clips --------------------------------------------------------------------------------------------
+struct ClipNew {
+    std::string name, from;        // from empty: an empty key
+    std::optional<double> seconds; // the pose `from` reaches then (default: its end)
+    Result<void> run(ScriptContext& c) const;
+};
+struct ClipDuplicate {
+    std::string clip;
+    Result<void> run(ScriptContext& c) const;
+};
+struct ClipRename {
+    std::string clip, name;
+    Result<void> run(ScriptContext& c) const;
+};
+struct ClipDelete {
+    std::string clip;
+    Result<void> run(ScriptContext& c) const;
+};
+struct ClipLoop {
+    std::string clip, mode, next; // next: with mode next only
+    Result<void> run(ScriptContext& c) const;
+};
+
+// ---- the blend table ----------------------------------------------------------------------------------
+struct BlendDefault {
+    double seconds = 0;
+    Result<void> run(ScriptContext& c) const;
+};
+struct BlendSet {
+    std::string from, to;
+    double seconds = 0;
+    Result<void> run(ScriptContext& c) const;
+};
+struct BlendClear {
+    std::string from, to;
+    Result<void> run(ScriptContext& c) const;
+};
+
+// ---- events -------------------------------------------------------------------------------------------
+struct EventAdd {
+    std::string clip;
+    double time = 0;
+    std::string name, sound; // sound empty: none
+    Result<void> run(ScriptContext& c) const;
+};
+struct EventMove {
+    std::string clip;
+    int event = 1;
+    double time = 0;
+    Result<void> run(ScriptContext& c) const;
+};
+struct EventRename {
+    std::string clip;
+    int event = 1;
+    std::string name;
+    Result<void> run(ScriptContext& c) const;
+};
+struct EventSound {
+    std::string clip;
+    int event = 1;
+    std::string sound; // "none" clears it
+    Result<void> run(ScriptContext& c) const;
+};
+struct EventRemove {
+    std::string clip;
+    int event = 1;
+    Result<void> run(ScriptContext& c) const;
+};
+
+// ---- keys ---------------------------------------------------------------------------------------------
+struct KeyTime {
+    std::string clip;
+    int key = 1;
+    double seconds = 0;
+    Result<void> run(ScriptContext& c) const;
+};
+struct KeyValue {
+    std::string clip;
+    int key = 1;
+    std::string node, channel;
+    double value = 0;
+    Result<void> run(ScriptContext& c) const;
+};
+struct KeyAdd {
+    std::string clip;
+    int key = 1;
+    std::string node;
+    Result<void> run(ScriptContext& c) const;
+};
+struct KeyRemove {
+    std::string clip;
+    int key = 1;
+    std::string node;
+    Result<void> run(ScriptContext& c) const;
+};
+
+// ---- expectations -------------------------------------------------------------------------------------
+struct ExpectClipExists {
+    std::string clip;
+    bool exists = true; // false: `missing`
+    Result<void> run(ScriptContext& c) const;
+};
+struct ExpectClipLoop {
+    std::string clip, mode, next;
+    Result<void> run(ScriptContext& c) const;
+};
+struct ExpectClipDuration {
+    std::string clip;
+    double seconds = 0;
+    Result<void> run(ScriptContext& c) const;
+};
+struct ExpectBlend {
+    std::string from, to;
+    double seconds = 0;
+    Result<void> run(ScriptContext& c) const;
+};
+struct ExpectEvents {
+    std::string clip;
+    int count = 0;
+    Result<void> run(ScriptContext& c) const;
+};
+struct ExpectEvent {
+    std::string clip;
+    int event = 1;
+    double time = 0;
+    std::optional<std::string> name, sound; // sound "none": no sound
+    Result<void> run(ScriptContext& c) const;
+};
+struct ExpectKeyTime {
+    std::string clip;
+    int key = 1;
+    double seconds = 0;
+    Result<void> run(ScriptContext& c) const;
+};
+struct ExpectKeyValue {
+    std::string clip;
+    int key = 1;
+    std::string node, channel;
+    double value = 0;
+    Result<void> run(ScriptContext& c) const;
+};
+struct ExpectCurve {
+    std::string clip, node, channel;
+    double time = 0, value = 0;
+    Result<void> run(ScriptContext& c) const;
+};
+struct ExpectDojoValid {
+    Result<void> run(ScriptContext& c) const;
+};
+struct ExpectDojoIssue {
+    std::string text; // a part of the issue's message
+    Result<void> run(ScriptContext& c) const;
+};
+struct ExpectDojoDirty {
+    bool dirty = true; // false: `clean`
+    Result<void> run(ScriptContext& c) const;
+};
+
+} // namespace steps
+
+struct DojoStep {
+    std::variant<steps::DojoOpen, steps::DojoSave, steps::DojoUndo, steps::DojoRedo, steps::ClipNew,
+                 steps::ClipDuplicate, steps::ClipRename, steps::ClipDelete, steps::ClipLoop,
+                 steps::BlendDefault, steps::BlendSet, steps::BlendClear, steps::EventAdd, steps::EventMove,
+                 steps::EventRename, steps::EventSound, steps::EventRemove, steps::KeyTime, steps::KeyValue,
+                 steps::KeyAdd, steps::KeyRemove, steps::ExpectClipExists, steps::ExpectClipLoop,
+                 steps::ExpectClipDuration, steps::ExpectBlend, steps::ExpectEvents, steps::ExpectEvent,
+                 steps::ExpectKeyTime, steps::ExpectKeyValue, steps::ExpectCurve, steps::ExpectDojoValid,
+                 steps::ExpectDojoIssue, steps::ExpectDojoDirty>
+        step;
+    // Every step but DojoOpen refuses to run before a clip file is open.
+    Result<void> run(ScriptContext& c) const;
+};
 
 } // namespace ks::editor

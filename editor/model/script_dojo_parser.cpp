@@ -1,359 +1,348 @@
-// The script language's dojo lines (script_dojo.h): each to a DojoStep, or an error at the offending word.
+// The script language's dojo commands (script_dojo.h): each command's parser and the table that registers
+// it (script_command.h); their steps run in script_dojo_runner.cpp.
 #include "model/dojo_curves.h"
-#include "model/script_dojo.h"
-
-#include <algorithm>
+#include "model/script_command.h"
 
 namespace ks::editor {
 namespace {
 using namespace script_tokens;
 
-constexpr const char* kDojoUsage =
-    "dojo open [FILE] | dojo save [FILE] | dojo undo|redo [N|all] | clip new NAME [from CLIP [SECONDS]] | "
-    "clip duplicate|delete NAME | clip rename OLD NEW | clip loop NAME once|loop|ping_pong|next [NEXT] | "
-    "blend default S | blend FROM TO S | blend clear FROM TO | event add CLIP TIME NAME [SOUND] | "
-    "event move CLIP N TIME | event rename CLIP N NAME | event sound CLIP N SOUND|none | "
-    "event remove CLIP N | key time CLIP N S | key value CLIP N NODE rot.x..pos.z V | "
-    "key add|remove CLIP N NODE";
-constexpr const char* kExpectUsage =
-    "expect clip NAME exists|missing | expect clip NAME loop MODE [NEXT] | expect clip NAME duration S | "
-    "expect blend FROM TO S | expect events CLIP N | expect event CLIP N TIME [NAME [SOUND]] | "
-    "expect key CLIP N time S | expect key CLIP N NODE CHANNEL V | expect curve CLIP NODE CHANNEL TIME V | "
-    "expect dojo valid|dirty|clean | expect dojo issue TEXT";
+constexpr const char* kDojoUsage = "dojo open [FILE] | dojo save [FILE] | dojo undo|redo [N|all]";
+constexpr const char* kClipUsage =
+    "clip new NAME [from CLIP [SECONDS]] | clip duplicate|delete NAME | clip rename "
+    "OLD NEW | clip loop NAME once|loop|ping_pong|next [NEXT]";
+constexpr const char* kBlendUsage = "blend default S | blend FROM TO S | blend clear FROM TO";
+constexpr const char* kEventUsage =
+    "event add CLIP TIME NAME [SOUND] | event move CLIP N TIME | event rename "
+    "CLIP N NAME | event sound CLIP N SOUND|none | event remove CLIP N";
+constexpr const char* kKeyUsage =
+    "key time CLIP N S | key value CLIP N NODE rot.x..pos.z V | key add|remove CLIP "
+    "N NODE";
+constexpr const char* kExpectClipUsage =
+    "expect clip NAME exists|missing | expect clip NAME loop MODE [NEXT] | expect clip NAME duration S";
+constexpr const char* kExpectBlendUsage = "expect blend FROM TO S";
+constexpr const char* kExpectEventsUsage = "expect events CLIP N";
+constexpr const char* kExpectEventUsage = "expect event CLIP N TIME [NAME [SOUND]]";
+constexpr const char* kExpectKeyUsage = "expect key CLIP N time S | expect key CLIP N NODE CHANNEL V";
+constexpr const char* kExpectCurveUsage = "expect curve CLIP NODE CHANNEL TIME V";
+constexpr const char* kExpectDojoUsage = "expect dojo valid|dirty|clean | expect dojo issue TEXT";
 
-class DojoLineParser : LineWords {
+template <class T>
+Result<ScriptStep> dojo_step(T step) {
+    return step_of<DojoStep>(std::move(step));
+}
+
+// The dojo lines' word readers: seconds and values, key and event numbers, channels.
+class DojoWords : public LineWords {
   public:
-    DojoLineParser(std::string_view line, const std::vector<Token>& tokens, int line_no,
-                   const std::string& file)
-        : LineWords(line, tokens, line_no, file) {
-        step_.op = ScriptOp::Dojo;
-        step_.line = line_no;
-    }
+    explicit DojoWords(const LineWords& words) : LineWords(words) {}
 
-    Result<ScriptStep> parse() {
-        const std::string_view word = tokens_[0].text;
-        if (word == "expect") return expect();
-        if (tokens_.size() < 2) return fail(1, "missing words", usage_of(word));
-        const std::string_view action = tokens_[1].text;
-        if (word == "dojo") return dojo(action);
-        if (word == "clip") return clip(action);
-        if (word == "blend") return blend(action);
-        if (word == "event") return event(action);
-        return key(action);
-    }
-
-  private:
-    // ---- helpers --------------------------------------------------------------------------------------
-
-    static std::string usage_of(std::string_view command) {
-        // The part of the usage about this command, e.g. every "clip ..." form.
-        std::string out;
-        const std::string all = kDojoUsage, prefix = std::string(command) + " ";
-        for (size_t at = 0; at < all.size();) {
-            const size_t end = std::min(all.find(" | ", at), all.size());
-            const std::string form = all.substr(at, end - at);
-            if (form.rfind(prefix, 0) == 0) out += (out.empty() ? "" : " | ") + form;
-            at = end + 3;
-        }
-        return out;
-    }
-    Result<ScriptStep> words(size_t min, size_t max, const std::string& usage) const {
-        if (tokens_.size() < min) return fail(tokens_.size(), "missing words", usage);
-        if (tokens_.size() > max)
-            return fail(max, "unexpected '" + std::string(tokens_[max].text) + "'", usage);
-        return step_;
-    }
-    // Copies words [first, last) into the step's names.
-    void keep(size_t first, size_t last) {
-        for (size_t i = first; i < last && i < tokens_.size(); ++i)
-            step_.dojo.words.emplace_back(tokens_[i].text);
-    }
     Result<void> number(size_t token, double& out, const char* what, const std::string& usage) const {
         if (!to_double(tokens_[token].text, out))
-            return fail(token,
-                        "expected " + std::string(what) + ", got '" + std::string(tokens_[token].text) + "'",
-                        usage);
+            return fail(token, "expected " + std::string(what) + ", got '" + word(token) + "'", usage);
         return ok();
     }
-    Result<void> ordinal(size_t token, const char* what, const std::string& usage) {
-        if (!to_int(tokens_[token].text, step_.dojo.index) || step_.dojo.index < 1)
+    // A key or event number, counted from 1.
+    Result<void> ordinal(size_t token, int& out, const char* what, const std::string& usage) const {
+        if (!to_int(tokens_[token].text, out) || out < 1)
             return fail(token, "expected " + std::string(what) + " number (1 is the first)", usage);
         return ok();
     }
-    Result<void> channel(size_t token) const {
+    Result<void> channel(size_t token, std::string& out) const {
         if (!curve_channel_from_name(tokens_[token].text))
-            return fail(token, "unknown channel '" + std::string(tokens_[token].text) + "'",
+            return fail(token, "unknown channel '" + word(token) + "'",
                         "rot.x, rot.y, rot.z, pos.x, pos.y or pos.z");
+        out = word(token);
         return ok();
     }
-    Result<ScriptStep> as(DojoOp op) {
-        step_.dojo.op = op;
-        return step_;
-    }
-
-    // ---- dojo FILE, save, undo, redo ----------------------------------------------------------------
-
-    Result<ScriptStep> dojo(std::string_view action) {
-        const std::string usage = usage_of("dojo");
-        if (action == "open" || action == "save") {
-            step_.dojo.op = action == "open" ? DojoOp::Open : DojoOp::Save;
-            if (tokens_.size() > 2) step_.dojo.words.emplace_back(line_.substr(tokens_[2].column - 1));
-            return step_;
-        }
-        if (action == "undo" || action == "redo") {
-            if (auto r = words(2, 3, usage); !r) return r;
-            step_.dojo.index = 1;
-            if (tokens_.size() == 3 && tokens_[2].text == "all")
-                step_.dojo.index = -1;
-            else if (tokens_.size() == 3 &&
-                     (!to_int(tokens_[2].text, step_.dojo.index) || step_.dojo.index < 1))
-                return fail(2, "expected a count of steps", "dojo " + std::string(action) + " 3, or all");
-            return as(action == "undo" ? DojoOp::Undo : DojoOp::Redo);
-        }
-        return fail(1, "unknown dojo action '" + std::string(action) + "'", usage);
-    }
-
-    // ---- clips ----------------------------------------------------------------------------------------
-
-    Result<ScriptStep> clip(std::string_view action) {
-        const std::string usage = usage_of("clip");
-        if (action == "new") {
-            if (tokens_.size() != 3 && tokens_.size() != 5 && tokens_.size() != 6)
-                return fail(
-                    tokens_.size() < 3 ? tokens_.size() : 3, "wrong number of words",
-                    "clip new NAME, or clip new NAME from CLIP [SECONDS] (its pose then, default its end)");
-            keep(2, 3);
-            if (tokens_.size() > 3) {
-                if (tokens_[3].text != "from")
-                    return fail(3, "expected 'from'", "clip new NAME from CLIP [SECONDS]");
-                keep(4, 5);
-                if (tokens_.size() == 6) {
-                    if (auto r = number(5, step_.dojo.number, "seconds", usage); !r) return r.error();
-                    step_.dojo.has_number = true;
-                }
-            }
-            return as(DojoOp::ClipNew);
-        }
-        if (action == "duplicate" || action == "delete") {
-            if (auto r = words(3, 3, usage); !r) return r;
-            keep(2, 3);
-            return as(action == "duplicate" ? DojoOp::ClipDuplicate : DojoOp::ClipDelete);
-        }
-        if (action == "rename") {
-            if (auto r = words(4, 4, usage); !r) return r;
-            keep(2, 4);
-            return as(DojoOp::ClipRename);
-        }
-        if (action == "loop") return loop(DojoOp::ClipLoop, 2, usage);
-        return fail(1, "unknown clip action '" + std::string(action) + "'", usage);
-    }
-    // NAME MODE [NEXT] from word `first`: NEXT only (and always) with mode next.
-    Result<ScriptStep> loop(DojoOp op, size_t first, const std::string& usage) {
-        if (auto r = words(first + 2, first + 3, usage); !r) return r;
-        const std::string_view mode = tokens_[first + 1].text;
+    // CLIP MODE [NEXT] from word `first`: NEXT only (and always) with mode next.
+    Result<void> loop(size_t first, std::string& mode, std::string& next, const std::string& usage) const {
+        if (auto r = need(first + 2, first + 3, usage); !r) return r;
+        mode = word(first + 1);
         if (mode != "once" && mode != "loop" && mode != "ping_pong" && mode != "next")
-            return fail(first + 1, "unknown loop mode '" + std::string(mode) + "'",
-                        "once, loop, ping_pong or next");
+            return fail(first + 1, "unknown loop mode '" + mode + "'", "once, loop, ping_pong or next");
         if ((mode == "next") != (tokens_.size() == first + 3))
             return fail(first + 2,
                         mode == "next" ? "loop mode next needs the clip to play next"
                                        : "only loop mode next names another clip",
                         usage);
-        keep(first, first + 3);
-        return as(op);
+        if (tokens_.size() == first + 3) next = word(first + 2);
+        return ok();
     }
+};
 
-    // ---- blend table ----------------------------------------------------------------------------------
+// ---- dojo open|save|undo|redo -------------------------------------------------------------------------
 
-    Result<ScriptStep> blend(std::string_view action) {
-        const std::string usage = usage_of("blend");
-        if (action == "default") {
-            if (auto r = words(3, 3, usage); !r) return r;
-            if (auto r = number(2, step_.dojo.number, "seconds", usage); !r) return r.error();
-            return as(DojoOp::BlendDefault);
-        }
-        if (action == "clear") {
-            if (auto r = words(4, 4, usage); !r) return r;
-            keep(2, 4);
-            return as(DojoOp::BlendClear);
-        }
-        if (auto r = words(4, 4, usage); !r) return r;
-        if (auto r = number(3, step_.dojo.number, "seconds", usage); !r) return r.error();
-        keep(1, 3);
-        return as(DojoOp::BlendSet);
+Result<ScriptStep> parse_dojo(const LineWords& words) {
+    const DojoWords w(words);
+    if (w.size() < 2) return w.fail(1, "missing words", kDojoUsage);
+    const std::string_view action = w.text(1);
+    if (action == "open") return dojo_step(steps::DojoOpen{w.size() > 2 ? w.rest(2) : std::string()});
+    if (action == "save") return dojo_step(steps::DojoSave{w.size() > 2 ? w.rest(2) : std::string()});
+    if (action == "undo" || action == "redo") {
+        if (auto r = w.need(2, 3, kDojoUsage); !r) return r.error();
+        int count = 1;
+        if (w.size() == 3 && w.text(2) == "all")
+            count = -1;
+        else if (w.size() == 3 && (!to_int(w.text(2), count) || count < 1))
+            return w.fail(2, "expected a count of steps", "dojo " + std::string(action) + " 3, or all");
+        if (action == "undo") return dojo_step(steps::DojoUndo{count});
+        return dojo_step(steps::DojoRedo{count});
     }
+    return w.fail(1, "unknown dojo action '" + std::string(action) + "'", kDojoUsage);
+}
 
-    // ---- events ---------------------------------------------------------------------------------------
+// ---- clips --------------------------------------------------------------------------------------------
 
-    Result<ScriptStep> event(std::string_view action) {
-        const std::string usage = usage_of("event");
-        if (action == "add") {
-            if (auto r = words(5, 6, usage); !r) return r;
-            if (auto r = number(3, step_.dojo.number, "seconds", usage); !r) return r.error();
-            keep(2, 3);
-            keep(4, 6);
-            return as(DojoOp::EventAdd);
+Result<ScriptStep> parse_clip_new(const DojoWords& w) {
+    steps::ClipNew step;
+    if (w.size() != 3 && w.size() != 5 && w.size() != 6)
+        return w.fail(w.size() < 3 ? w.size() : 3, "wrong number of words",
+                      "clip new NAME, or clip new NAME from CLIP [SECONDS] (its pose then, default its end)");
+    step.name = w.word(2);
+    if (w.size() > 3) {
+        if (w.text(3) != "from") return w.fail(3, "expected 'from'", "clip new NAME from CLIP [SECONDS]");
+        step.from = w.word(4);
+        if (w.size() == 6) {
+            double seconds = 0;
+            if (auto r = w.number(5, seconds, "seconds", kClipUsage); !r) return r.error();
+            step.seconds = seconds;
         }
-        struct Form {
-            std::string_view action;
-            DojoOp op;
-            size_t count; // words on the line
-        };
-        static constexpr Form kForms[] = {{"move", DojoOp::EventMove, 5},
-                                          {"rename", DojoOp::EventRename, 5},
-                                          {"sound", DojoOp::EventSound, 5},
-                                          {"remove", DojoOp::EventRemove, 4}};
-        for (const Form& form : kForms) {
-            if (action != form.action) continue;
-            if (auto r = words(form.count, form.count, usage); !r) return r;
-            keep(2, 3);
-            if (auto r = ordinal(3, "an event", usage); !r) return r.error();
-            if (form.op == DojoOp::EventMove) {
-                if (auto r = number(4, step_.dojo.number, "seconds", usage); !r) return r.error();
-            } else {
-                keep(4, 5);
-            }
-            return as(form.op);
-        }
-        return fail(1, "unknown event action '" + std::string(action) + "'", usage);
     }
+    return dojo_step(std::move(step));
+}
 
-    // ---- keys -----------------------------------------------------------------------------------------
+Result<ScriptStep> parse_clip(const LineWords& words) {
+    const DojoWords w(words);
+    if (w.size() < 2) return w.fail(1, "missing words", kClipUsage);
+    const std::string_view action = w.text(1);
+    if (action == "new") return parse_clip_new(w);
+    if (action == "duplicate" || action == "delete") {
+        if (auto r = w.need(3, 3, kClipUsage); !r) return r.error();
+        if (action == "duplicate") return dojo_step(steps::ClipDuplicate{w.word(2)});
+        return dojo_step(steps::ClipDelete{w.word(2)});
+    }
+    if (action == "rename") {
+        if (auto r = w.need(4, 4, kClipUsage); !r) return r.error();
+        return dojo_step(steps::ClipRename{w.word(2), w.word(3)});
+    }
+    if (action == "loop") {
+        steps::ClipLoop step;
+        if (auto r = w.loop(2, step.mode, step.next, kClipUsage); !r) return r.error();
+        step.clip = w.word(2);
+        return dojo_step(std::move(step));
+    }
+    return w.fail(1, "unknown clip action '" + std::string(action) + "'", kClipUsage);
+}
 
-    Result<ScriptStep> key(std::string_view action) {
-        const std::string usage = usage_of("key");
-        if (action != "time" && action != "value" && action != "add" && action != "remove")
-            return fail(1, "unknown key action '" + std::string(action) + "'", usage);
-        const size_t count = action == "time" ? 5 : action == "value" ? 7 : 5;
-        if (auto r = words(count, count, usage); !r) return r;
-        keep(2, 3);
-        if (auto r = ordinal(3, "a key", usage); !r) return r.error();
-        if (action == "time") {
-            if (auto r = number(4, step_.dojo.number, "seconds", usage); !r) return r.error();
-            return as(DojoOp::KeyTime);
-        }
-        keep(4, 5);
-        if (action != "value") return as(action == "add" ? DojoOp::KeyAdd : DojoOp::KeyRemove);
-        if (auto r = channel(5); !r) return r.error();
-        keep(5, 6);
-        if (auto r = number(6, step_.dojo.number, "a value", usage); !r) return r.error();
-        return as(DojoOp::KeyValue);
-    }
+// ---- the blend table ----------------------------------------------------------------------------------
 
-    // ---- expectations ---------------------------------------------------------------------------------
+Result<ScriptStep> parse_blend(const LineWords& words) {
+    const DojoWords w(words);
+    if (w.size() < 2) return w.fail(1, "missing words", kBlendUsage);
+    const std::string_view action = w.text(1);
+    if (action == "default") {
+        steps::BlendDefault step;
+        if (auto r = w.need(3, 3, kBlendUsage); !r) return r.error();
+        if (auto r = w.number(2, step.seconds, "seconds", kBlendUsage); !r) return r.error();
+        return dojo_step(step);
+    }
+    if (action == "clear") {
+        if (auto r = w.need(4, 4, kBlendUsage); !r) return r.error();
+        return dojo_step(steps::BlendClear{w.word(2), w.word(3)});
+    }
+    steps::BlendSet step{w.word(1), {}, 0};
+    if (auto r = w.need(4, 4, kBlendUsage); !r) return r.error();
+    if (auto r = w.number(3, step.seconds, "seconds", kBlendUsage); !r) return r.error();
+    step.to = w.word(2);
+    return dojo_step(std::move(step));
+}
 
-    Result<ScriptStep> expect() {
-        const std::string_view what = tokens_[1].text;
-        if (what == "dojo") return expect_dojo();
-        if (what == "clip") return expect_clip();
-        if (what == "blend") {
-            if (auto r = words(5, 5, kExpectUsage); !r) return r;
-            if (auto r = number(4, step_.dojo.number, "seconds", kExpectUsage); !r) return r.error();
-            keep(2, 4);
-            return as(DojoOp::ExpectBlend);
-        }
-        if (what == "events") {
-            if (auto r = words(4, 4, kExpectUsage); !r) return r;
-            keep(2, 3);
-            if (!to_int(tokens_[3].text, step_.dojo.index) || step_.dojo.index < 0)
-                return fail(3, "expected a count of events", kExpectUsage);
-            return as(DojoOp::ExpectEvents);
-        }
-        if (what == "event") {
-            if (auto r = words(5, 7, kExpectUsage); !r) return r;
-            keep(2, 3);
-            if (auto r = ordinal(3, "an event", kExpectUsage); !r) return r.error();
-            if (auto r = number(4, step_.dojo.number, "seconds", kExpectUsage); !r) return r.error();
-            keep(5, 7);
-            return as(DojoOp::ExpectEvent);
-        }
-        if (what == "key") return expect_key();
-        // curve CLIP NODE CHANNEL TIME V
-        if (auto r = words(7, 7, kExpectUsage); !r) return r;
-        keep(2, 4);
-        if (auto r = channel(4); !r) return r.error();
-        keep(4, 5);
-        if (auto r = number(5, step_.dojo.number, "seconds", kExpectUsage); !r) return r.error();
-        if (auto r = number(6, step_.dojo.number2, "a value", kExpectUsage); !r) return r.error();
-        return as(DojoOp::ExpectCurve);
-    }
-    Result<ScriptStep> expect_dojo() {
-        if (tokens_.size() < 3) return fail(2, "missing words", kExpectUsage);
-        const std::string_view what = tokens_[2].text;
-        if (what == "issue") {
-            if (tokens_.size() < 4)
-                return fail(3, "expected words of the issue's message", "expect dojo issue missing");
-            step_.dojo.words.emplace_back(line_.substr(tokens_[3].column - 1));
-            return as(DojoOp::ExpectIssue);
-        }
-        if (auto r = words(3, 3, kExpectUsage); !r) return r;
-        if (what == "valid") return as(DojoOp::ExpectValid);
-        if (what == "dirty") return as(DojoOp::ExpectDirty);
-        if (what == "clean") return as(DojoOp::ExpectClean);
-        return fail(2, "unknown dojo expectation '" + std::string(what) + "'",
-                    "valid, dirty, clean or issue TEXT");
-    }
-    Result<ScriptStep> expect_clip() {
-        if (tokens_.size() < 4) return fail(tokens_.size(), "missing words", kExpectUsage);
-        const std::string_view what = tokens_[3].text;
-        if (what == "exists" || what == "missing") {
-            if (auto r = words(4, 4, kExpectUsage); !r) return r;
-            keep(2, 3);
-            return as(what == "exists" ? DojoOp::ExpectClipExists : DojoOp::ExpectClipMissing);
-        }
-        if (what == "duration") {
-            if (auto r = words(5, 5, kExpectUsage); !r) return r;
-            keep(2, 3);
-            if (auto r = number(4, step_.dojo.number, "seconds", kExpectUsage); !r) return r.error();
-            return as(DojoOp::ExpectClipDuration);
-        }
-        if (what == "loop") {
-            // NAME loop MODE [NEXT]: checked like `clip loop NAME MODE [NEXT]`, so the name moves first.
-            if (auto r = loop(DojoOp::ExpectClipLoop, 3, kExpectUsage); !r) return r;
-            step_.dojo.words[0] = std::string(tokens_[2].text);
-            return step_;
-        }
-        return fail(3, "unknown clip expectation '" + std::string(what) + "'",
-                    "exists, missing, loop MODE [NEXT] or duration S");
-    }
-    Result<ScriptStep> expect_key() {
-        if (auto r = words(6, 7, kExpectUsage); !r) return r;
-        keep(2, 3);
-        if (auto r = ordinal(3, "a key", kExpectUsage); !r) return r.error();
-        if (tokens_[4].text == "time") {
-            if (auto r = words(6, 6, kExpectUsage); !r) return r;
-            if (auto r = number(5, step_.dojo.number, "seconds", kExpectUsage); !r) return r.error();
-            return as(DojoOp::ExpectKeyTime);
-        }
-        if (auto r = words(7, 7, kExpectUsage); !r) return r;
-        keep(4, 5);
-        if (auto r = channel(5); !r) return r.error();
-        keep(5, 6);
-        if (auto r = number(6, step_.dojo.number, "a value", kExpectUsage); !r) return r.error();
-        return as(DojoOp::ExpectKeyValue);
-    }
+// ---- events -------------------------------------------------------------------------------------------
 
-    ScriptStep step_;
+Result<ScriptStep> parse_event(const LineWords& words) {
+    const DojoWords w(words);
+    if (w.size() < 2) return w.fail(1, "missing words", kEventUsage);
+    const std::string_view action = w.text(1);
+    if (action == "add") {
+        steps::EventAdd step;
+        if (auto r = w.need(5, 6, kEventUsage); !r) return r.error();
+        if (auto r = w.number(3, step.time, "seconds", kEventUsage); !r) return r.error();
+        step.clip = w.word(2);
+        step.name = w.word(4);
+        if (w.size() > 5) step.sound = w.word(5);
+        return dojo_step(std::move(step));
+    }
+    if (action != "move" && action != "rename" && action != "sound" && action != "remove")
+        return w.fail(1, "unknown event action '" + std::string(action) + "'", kEventUsage);
+    const size_t count = action == "remove" ? 4 : 5;
+    if (auto r = w.need(count, count, kEventUsage); !r) return r.error();
+    const std::string clip = w.word(2);
+    int event = 1;
+    if (auto r = w.ordinal(3, event, "an event", kEventUsage); !r) return r.error();
+    if (action == "move") {
+        steps::EventMove step{clip, event, 0};
+        if (auto r = w.number(4, step.time, "seconds", kEventUsage); !r) return r.error();
+        return dojo_step(std::move(step));
+    }
+    if (action == "rename") return dojo_step(steps::EventRename{clip, event, w.word(4)});
+    if (action == "sound") return dojo_step(steps::EventSound{clip, event, w.word(4)});
+    return dojo_step(steps::EventRemove{clip, event});
+}
+
+// ---- keys ---------------------------------------------------------------------------------------------
+
+Result<ScriptStep> parse_key(const LineWords& words) {
+    const DojoWords w(words);
+    if (w.size() < 2) return w.fail(1, "missing words", kKeyUsage);
+    const std::string_view action = w.text(1);
+    if (action != "time" && action != "value" && action != "add" && action != "remove")
+        return w.fail(1, "unknown key action '" + std::string(action) + "'", kKeyUsage);
+    const size_t count = action == "value" ? 7 : 5;
+    if (auto r = w.need(count, count, kKeyUsage); !r) return r.error();
+    const std::string clip = w.word(2);
+    int key = 1;
+    if (auto r = w.ordinal(3, key, "a key", kKeyUsage); !r) return r.error();
+    if (action == "time") {
+        steps::KeyTime step{clip, key, 0};
+        if (auto r = w.number(4, step.seconds, "seconds", kKeyUsage); !r) return r.error();
+        return dojo_step(std::move(step));
+    }
+    if (action == "add") return dojo_step(steps::KeyAdd{clip, key, w.word(4)});
+    if (action == "remove") return dojo_step(steps::KeyRemove{clip, key, w.word(4)});
+    steps::KeyValue step{clip, key, w.word(4), {}, 0};
+    if (auto r = w.channel(5, step.channel); !r) return r.error();
+    if (auto r = w.number(6, step.value, "a value", kKeyUsage); !r) return r.error();
+    return dojo_step(std::move(step));
+}
+
+// ---- expectations -------------------------------------------------------------------------------------
+
+Result<ScriptStep> parse_expect_dojo(const LineWords& words) {
+    const DojoWords w(words);
+    if (w.size() < 3) return w.fail(2, "missing words", kExpectDojoUsage);
+    const std::string_view what = w.text(2);
+    if (what == "issue") {
+        if (w.size() < 4)
+            return w.fail(3, "expected words of the issue's message", "expect dojo issue missing");
+        return dojo_step(steps::ExpectDojoIssue{w.rest(3)});
+    }
+    if (auto r = w.need(3, 3, kExpectDojoUsage); !r) return r.error();
+    if (what == "valid") return dojo_step(steps::ExpectDojoValid{});
+    if (what == "dirty" || what == "clean") return dojo_step(steps::ExpectDojoDirty{what == "dirty"});
+    return w.fail(2, "unknown dojo expectation '" + std::string(what) + "'",
+                  "valid, dirty, clean or issue TEXT");
+}
+
+Result<ScriptStep> parse_expect_clip(const LineWords& words) {
+    const DojoWords w(words);
+    if (w.size() < 4) return w.fail(w.size(), "missing words", kExpectClipUsage);
+    const std::string clip = w.word(2);
+    const std::string_view what = w.text(3);
+    if (what == "exists" || what == "missing") {
+        if (auto r = w.need(4, 4, kExpectClipUsage); !r) return r.error();
+        return dojo_step(steps::ExpectClipExists{clip, what == "exists"});
+    }
+    if (what == "duration") {
+        steps::ExpectClipDuration step{clip, 0};
+        if (auto r = w.need(5, 5, kExpectClipUsage); !r) return r.error();
+        if (auto r = w.number(4, step.seconds, "seconds", kExpectClipUsage); !r) return r.error();
+        return dojo_step(std::move(step));
+    }
+    if (what == "loop") {
+        // NAME loop MODE [NEXT]: checked like `clip loop NAME MODE [NEXT]`.
+        steps::ExpectClipLoop step{clip, {}, {}};
+        if (auto r = w.loop(3, step.mode, step.next, kExpectClipUsage); !r) return r.error();
+        return dojo_step(std::move(step));
+    }
+    return w.fail(3, "unknown clip expectation '" + std::string(what) + "'",
+                  "exists, missing, loop MODE [NEXT] or duration S");
+}
+
+Result<ScriptStep> parse_expect_blend(const LineWords& words) {
+    const DojoWords w(words);
+    steps::ExpectBlend step;
+    if (auto r = w.need(5, 5, kExpectBlendUsage); !r) return r.error();
+    if (auto r = w.number(4, step.seconds, "seconds", kExpectBlendUsage); !r) return r.error();
+    step.from = w.word(2);
+    step.to = w.word(3);
+    return dojo_step(std::move(step));
+}
+
+Result<ScriptStep> parse_expect_events(const LineWords& words) {
+    const DojoWords w(words);
+    steps::ExpectEvents step;
+    if (auto r = w.need(4, 4, kExpectEventsUsage); !r) return r.error();
+    step.clip = w.word(2);
+    if (!to_int(w.text(3), step.count) || step.count < 0)
+        return w.fail(3, "expected a count of events", kExpectEventsUsage);
+    return dojo_step(std::move(step));
+}
+
+Result<ScriptStep> parse_expect_event(const LineWords& words) {
+    const DojoWords w(words);
+    steps::ExpectEvent step;
+    if (auto r = w.need(5, 7, kExpectEventUsage); !r) return r.error();
+    step.clip = w.word(2);
+    if (auto r = w.ordinal(3, step.event, "an event", kExpectEventUsage); !r) return r.error();
+    if (auto r = w.number(4, step.time, "seconds", kExpectEventUsage); !r) return r.error();
+    if (w.size() > 5) step.name = w.word(5);
+    if (w.size() > 6) step.sound = w.word(6);
+    return dojo_step(std::move(step));
+}
+
+Result<ScriptStep> parse_expect_key(const LineWords& words) {
+    const DojoWords w(words);
+    if (auto r = w.need(6, 7, kExpectKeyUsage); !r) return r.error();
+    const std::string clip = w.word(2);
+    int key = 1;
+    if (auto r = w.ordinal(3, key, "a key", kExpectKeyUsage); !r) return r.error();
+    if (w.text(4) == "time") {
+        steps::ExpectKeyTime step{clip, key, 0};
+        if (auto r = w.need(6, 6, kExpectKeyUsage); !r) return r.error();
+        if (auto r = w.number(5, step.seconds, "seconds", kExpectKeyUsage); !r) return r.error();
+        return dojo_step(std::move(step));
+    }
+    steps::ExpectKeyValue step{clip, key, w.word(4), {}, 0};
+    if (auto r = w.need(7, 7, kExpectKeyUsage); !r) return r.error();
+    if (auto r = w.channel(5, step.channel); !r) return r.error();
+    if (auto r = w.number(6, step.value, "a value", kExpectKeyUsage); !r) return r.error();
+    return dojo_step(std::move(step));
+}
+
+Result<ScriptStep> parse_expect_curve(const LineWords& words) {
+    const DojoWords w(words);
+    steps::ExpectCurve step;
+    if (auto r = w.need(7, 7, kExpectCurveUsage); !r) return r.error();
+    step.clip = w.word(2);
+    step.node = w.word(3);
+    if (auto r = w.channel(4, step.channel); !r) return r.error();
+    if (auto r = w.number(5, step.time, "seconds", kExpectCurveUsage); !r) return r.error();
+    if (auto r = w.number(6, step.value, "a value", kExpectCurveUsage); !r) return r.error();
+    return dojo_step(std::move(step));
+}
+
+constexpr CommandSpec kCommands[] = {
+    {"dojo", false, kDojoUsage, "open or save a clip file; its own undo history", parse_dojo},
+    {"clip", false, kClipUsage, "add, copy, rename, delete a clip; its loop mode", parse_clip},
+    {"blend", false, kBlendUsage, "the default blend; set or clear a cell of the blend table", parse_blend},
+    {"event", false, kEventUsage, "add, move, rename, re-sound or remove a clip event", parse_event},
+    {"key", false, kKeyUsage, "move a key in time; set, add or remove a node's key", parse_key},
+    {"clip", true, kExpectClipUsage, "a clip exists or not; its loop mode; its duration", parse_expect_clip},
+    {"blend", true, kExpectBlendUsage, "the effective blend time", parse_expect_blend},
+    {"events", true, kExpectEventsUsage, "a clip's number of events", parse_expect_events},
+    {"event", true, kExpectEventUsage, "an event's time (name, sound: none for no sound)",
+     parse_expect_event},
+    {"key", true, kExpectKeyUsage, "a key's time; the stored target value", parse_expect_key},
+    {"curve", true, kExpectCurveUsage, "the sampled value at TIME, within 0.001", parse_expect_curve},
+    {"dojo", true, kExpectDojoUsage, "the file's checks; unsaved edits; an issue containing TEXT",
+     parse_expect_dojo},
 };
 
 } // namespace
 
-bool is_dojo_command(std::string_view word) {
-    return word == "dojo" || word == "clip" || word == "blend" || word == "event" || word == "key";
-}
-
-bool is_dojo_expectation(std::string_view word) {
-    return word == "clip" || word == "blend" || word == "events" || word == "event" || word == "key" ||
-           word == "curve" || word == "dojo";
-}
-
-const char* dojo_commands_usage() {
-    return kDojoUsage;
-}
-
-Result<ScriptStep> parse_dojo_line(std::string_view line, const std::vector<Token>& tokens, int line_no,
-                                   const std::string& file) {
-    return DojoLineParser(line, tokens, line_no, file).parse();
+std::span<const CommandSpec> dojo_commands() {
+    return kCommands;
 }
 
 } // namespace ks::editor

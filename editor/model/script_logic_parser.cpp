@@ -1,7 +1,8 @@
-// The script language's level-logic lines (script_logic.h): each to a LogicStep, or an error at the
-// offending word. Event and action names are checked here against the whole vocabulary (with a did-you-mean);
-// whether the source emits the event is the Editor's check when the line runs.
-#include "model/script_logic.h"
+// The script language's level-logic commands (script_logic.h): each command's parser and the table that
+// registers it (script_command.h); their steps run in script_logic_runner.cpp. Event and action names are
+// checked here against the whole vocabulary (with a did-you-mean); whether the source emits the event is
+// the Editor's check when the line runs.
+#include "model/script_command.h"
 
 #include "jsonio/suggest.h"
 #include "level/logic_names.h"
@@ -20,32 +21,20 @@ constexpr const char* kLinkUsage =
 constexpr const char* kObjectiveUsage = "objective add ID TEXT... | objective ID text TEXT... | objective ID "
                                         "kill NAME... | objective ID remove | "
                                         "objective ID move INDEX   (INDEX from 1)";
-constexpr const char* kExpectUsage =
-    "expect links SOURCE N | expect link SOURCE INDEX EVENT TARGET ACTION [delay S] [once] | "
-    "expect objectives N";
+constexpr const char* kLinksUsage = "expect links SOURCE N";
+constexpr const char* kLinkExpectUsage = "expect link SOURCE INDEX EVENT TARGET ACTION [delay S] [once]";
+constexpr const char* kObjectivesUsage = "expect objectives N";
 constexpr std::string_view kObjectivePrefix = "objective:";
 
-class LogicLineParser : LineWords {
+template <class T>
+Result<ScriptStep> logic_step(T step) {
+    return step_of<LogicStep>(std::move(step));
+}
+
+// The logic lines' word readers: positions counted from 1, sources, event and action names, delays.
+class LogicWords : public LineWords {
   public:
-    LogicLineParser(std::string_view line, const std::vector<Token>& tokens, int line_no,
-                    const std::string& file)
-        : LineWords(line, tokens, line_no, file) {
-        step_.op = ScriptOp::Logic;
-        step_.line = line_no;
-    }
-
-    Result<ScriptStep> parse() {
-        const std::string_view word = tokens_[0].text;
-        if (word == "expect") return expect();
-        if (word == "name") return name();
-        if (word == "link") return link();
-        return objective();
-    }
-
-  private:
-    // ---- helpers --------------------------------------------------------------------------------------
-
-    LogicStep& logic() { return step_.logic; }
+    explicit LogicWords(const LineWords& words) : LineWords(words) {}
 
     // A position counted from 1, as the inspector shows them; kept counted from 0.
     Result<void> position(size_t token, int& out, const char* what, const char* usage) const {
@@ -63,16 +52,16 @@ class LogicLineParser : LineWords {
         return ok();
     }
     // SOURCE: an entity id, `level` or `objective:ID`.
-    Result<void> source(size_t token, const char* usage) {
+    Result<void> source(size_t token, LinkOwner& owner, const char* usage) const {
         if (token >= tokens_.size()) return fail(token, "expected the links' source", usage);
         const std::string_view w = tokens_[token].text;
         int id = 0;
         if (w == "level")
-            logic().owner = LinkOwner::level();
+            owner = LinkOwner::level();
         else if (w.starts_with(kObjectivePrefix) && w.size() > kObjectivePrefix.size())
-            logic().owner = LinkOwner::objective(std::string(w.substr(kObjectivePrefix.size())));
+            owner = LinkOwner::objective(std::string(w.substr(kObjectivePrefix.size())));
         else if (to_int(w, id) && id >= 1)
-            logic().owner = LinkOwner::entity(id);
+            owner = LinkOwner::entity(id);
         else
             return fail(token, "expected an entity id, level or objective:ID, got '" + std::string(w) + "'",
                         usage);
@@ -102,9 +91,8 @@ class LogicLineParser : LineWords {
         return ok();
     }
     // EVENT TARGET ACTION [delay S] [once], from token `first` to the end of the line.
-    Result<void> link_words(size_t first, const char* usage) {
+    Result<void> link_words(size_t first, level::Link& link, const char* usage) const {
         if (tokens_.size() < first + 3) return fail(tokens_.size(), "missing words", usage);
-        level::Link& link = logic().link;
         if (auto r = event(first, link.event); !r) return r;
         link.target = word(first + 1);
         if (auto r = action(first + 2, link.action); !r) return r;
@@ -120,145 +108,147 @@ class LogicLineParser : LineWords {
         }
         return ok();
     }
+};
 
-    // ---- commands -------------------------------------------------------------------------------------
+// ---- commands -----------------------------------------------------------------------------------------
 
-    Result<ScriptStep> name() {
-        logic().op = LogicOp::Name;
-        if (tokens_.size() < 3) return fail(tokens_.size(), "missing words", kNameUsage);
-        if (!to_int(tokens_[1].text, logic().entity_id) || logic().entity_id < 1)
-            return fail(1, "expected an entity id, got '" + word(1) + "'", kNameUsage);
-        logic().text = rest(2);
-        return step_;
+Result<ScriptStep> parse_name(const LineWords& w) {
+    steps::Name step;
+    if (w.size() < 3) return w.fail(w.size(), "missing words", kNameUsage);
+    if (!to_int(w.text(1), step.entity_id) || step.entity_id < 1)
+        return w.fail(1, "expected an entity id, got '" + w.word(1) + "'", kNameUsage);
+    step.name = w.rest(2);
+    return logic_step(std::move(step));
+}
+
+Result<ScriptStep> parse_link_set(const LogicWords& w, const LinkOwner& owner) {
+    steps::LinkSet step{owner, 0, {}, {}, {}};
+    if (w.size() < 6) return w.fail(w.size(), "missing words", kLinkUsage);
+    if (auto r = w.position(3, step.index, "a link number", kLinkUsage); !r) return r.error();
+    const std::string field = w.word(4);
+    step.field = field;
+    if (field == "target") {
+        step.value = w.rest(5); // entity names may hold spaces
+        return logic_step(std::move(step));
     }
-
-    Result<ScriptStep> link() {
-        if (tokens_.size() < 3) return fail(tokens_.size(), "missing words", kLinkUsage);
-        if (auto r = source(1, kLinkUsage); !r) return r.error();
-        const std::string_view verb = tokens_[2].text;
-        if (verb == "add") {
-            logic().op = LogicOp::LinkAdd;
-            if (auto r = link_words(3, kLinkUsage); !r) return r.error();
-            return step_;
-        }
-        if (verb == "remove") {
-            logic().op = LogicOp::LinkRemove;
-            if (auto r = need(4, 4, kLinkUsage); !r) return r.error();
-            if (auto r = position(3, logic().index, "a link number", kLinkUsage); !r) return r.error();
-            return step_;
-        }
-        if (verb == "set") return link_set();
-        return fail(2, "unknown link command '" + std::string(verb) + "'", "link commands: add, set, remove");
+    if (field != "event" && field != "action" && field != "delay" && field != "once") {
+        const std::string near = jsonio::closest_match(field, {"event", "target", "action", "delay", "once"});
+        return w.fail(4, "unknown link field '" + field + "'",
+                      (near.empty() ? std::string() : "did you mean '" + near + "'? ") +
+                          "fields: event, target, action, delay, once");
     }
-
-    Result<ScriptStep> link_set() {
-        logic().op = LogicOp::LinkSet;
-        if (tokens_.size() < 6) return fail(tokens_.size(), "missing words", kLinkUsage);
-        if (auto r = position(3, logic().index, "a link number", kLinkUsage); !r) return r.error();
-        const std::string field = word(4);
-        logic().text = field;
-        if (field == "event") {
-            if (auto r = need(6, 6, kLinkUsage); !r) return r.error();
-            if (auto r = event(5, logic().value); !r) return r.error();
-        } else if (field == "action") {
-            if (auto r = need(6, 6, kLinkUsage); !r) return r.error();
-            if (auto r = action(5, logic().value); !r) return r.error();
-        } else if (field == "target") {
-            logic().value = rest(5); // entity names may hold spaces
-        } else if (field == "delay") {
-            if (auto r = need(6, 6, kLinkUsage); !r) return r.error();
-            if (auto r = delay(5, logic().link.delay, kLinkUsage); !r) return r.error();
-        } else if (field == "once") {
-            if (auto r = need(6, 6, kLinkUsage); !r) return r.error();
-            if (tokens_[5].text != "true" && tokens_[5].text != "false")
-                return fail(5, "expected true or false, got '" + word(5) + "'", "link 3 set 1 once true");
-            logic().link.once = tokens_[5].text == "true";
-        } else {
-            const std::string near =
-                jsonio::closest_match(field, {"event", "target", "action", "delay", "once"});
-            return fail(4, "unknown link field '" + field + "'",
-                        (near.empty() ? std::string() : "did you mean '" + near + "'? ") +
-                            "fields: event, target, action, delay, once");
-        }
-        return step_;
+    if (auto r = w.need(6, 6, kLinkUsage); !r) return r.error();
+    if (field == "event") {
+        if (auto r = w.event(5, step.value); !r) return r.error();
+    } else if (field == "action") {
+        if (auto r = w.action(5, step.value); !r) return r.error();
+    } else if (field == "delay") {
+        if (auto r = w.delay(5, step.link.delay, kLinkUsage); !r) return r.error();
+    } else {
+        if (w.text(5) != "true" && w.text(5) != "false")
+            return w.fail(5, "expected true or false, got '" + w.word(5) + "'", "link 3 set 1 once true");
+        step.link.once = w.text(5) == "true";
     }
+    return logic_step(std::move(step));
+}
 
-    Result<ScriptStep> objective() {
-        if (tokens_.size() < 3) return fail(tokens_.size(), "missing words", kObjectiveUsage);
-        if (tokens_[1].text == "add") {
-            logic().op = LogicOp::ObjectiveAdd;
-            if (tokens_.size() < 4)
-                return fail(tokens_.size(), "expected the objective's text", kObjectiveUsage);
-            logic().text = word(2);
-            logic().value = rest(3);
-            return step_;
-        }
-        logic().text = word(1);
-        const std::string_view verb = tokens_[2].text;
-        if (verb == "text") {
-            logic().op = LogicOp::ObjectiveText;
-            if (tokens_.size() < 4)
-                return fail(tokens_.size(), "expected the objective's text", kObjectiveUsage);
-            logic().value = rest(3);
-            return step_;
-        }
-        if (verb == "kill") {
-            logic().op = LogicOp::ObjectiveKill;
-            for (size_t i = 3; i < tokens_.size(); ++i) logic().words.push_back(word(i));
-            return step_;
-        }
-        if (verb == "remove") {
-            logic().op = LogicOp::ObjectiveRemove;
-            if (auto r = need(3, 3, kObjectiveUsage); !r) return r.error();
-            return step_;
-        }
-        if (verb == "move") {
-            logic().op = LogicOp::ObjectiveMove;
-            if (auto r = need(4, 4, kObjectiveUsage); !r) return r.error();
-            if (auto r = position(3, logic().index, "a position", kObjectiveUsage); !r) return r.error();
-            return step_;
-        }
-        return fail(2, "unknown objective command '" + std::string(verb) + "'",
-                    "objective commands: add, text, kill, remove, move");
+Result<ScriptStep> parse_link(const LineWords& words) {
+    const LogicWords w(words);
+    LinkOwner owner;
+    if (w.size() < 3) return w.fail(w.size(), "missing words", kLinkUsage);
+    if (auto r = w.source(1, owner, kLinkUsage); !r) return r.error();
+    const std::string_view verb = w.text(2);
+    if (verb == "add") {
+        steps::LinkAdd step{owner, {}};
+        if (auto r = w.link_words(3, step.link, kLinkUsage); !r) return r.error();
+        return logic_step(std::move(step));
     }
-
-    Result<ScriptStep> expect() {
-        const std::string_view what = tokens_[1].text;
-        if (what == "objectives") {
-            logic().op = LogicOp::ExpectObjectives;
-            if (auto r = need(3, 3, kExpectUsage); !r) return r.error();
-            if (auto r = count(2, logic().count, kExpectUsage); !r) return r.error();
-            return step_;
-        }
-        if (auto r = source(2, kExpectUsage); !r) return r.error();
-        if (what == "links") {
-            logic().op = LogicOp::ExpectLinks;
-            if (auto r = need(4, 4, kExpectUsage); !r) return r.error();
-            if (auto r = count(3, logic().count, kExpectUsage); !r) return r.error();
-            return step_;
-        }
-        logic().op = LogicOp::ExpectLink;
-        if (auto r = position(3, logic().index, "a link number", kExpectUsage); !r) return r.error();
-        if (auto r = link_words(4, kExpectUsage); !r) return r.error();
-        return step_;
+    if (verb == "remove") {
+        steps::LinkRemove step{owner, 0};
+        if (auto r = w.need(4, 4, kLinkUsage); !r) return r.error();
+        if (auto r = w.position(3, step.index, "a link number", kLinkUsage); !r) return r.error();
+        return logic_step(std::move(step));
     }
+    if (verb == "set") return parse_link_set(w, owner);
+    return w.fail(2, "unknown link command '" + std::string(verb) + "'", "link commands: add, set, remove");
+}
 
-    ScriptStep step_;
+Result<ScriptStep> parse_objective(const LineWords& words) {
+    const LogicWords w(words);
+    if (w.size() < 3) return w.fail(w.size(), "missing words", kObjectiveUsage);
+    if (w.text(1) == "add") {
+        if (w.size() < 4) return w.fail(w.size(), "expected the objective's text", kObjectiveUsage);
+        return logic_step(steps::ObjectiveAdd{w.word(2), w.rest(3)});
+    }
+    const std::string id = w.word(1);
+    const std::string_view verb = w.text(2);
+    if (verb == "text") {
+        if (w.size() < 4) return w.fail(w.size(), "expected the objective's text", kObjectiveUsage);
+        return logic_step(steps::ObjectiveText{id, w.rest(3)});
+    }
+    if (verb == "kill") {
+        steps::ObjectiveKill step{id, {}};
+        for (size_t i = 3; i < w.size(); ++i) step.names.push_back(w.word(i));
+        return logic_step(std::move(step));
+    }
+    if (verb == "remove") {
+        if (auto r = w.need(3, 3, kObjectiveUsage); !r) return r.error();
+        return logic_step(steps::ObjectiveRemove{id});
+    }
+    if (verb == "move") {
+        steps::ObjectiveMove step{id, 0};
+        if (auto r = w.need(4, 4, kObjectiveUsage); !r) return r.error();
+        if (auto r = w.position(3, step.index, "a position", kObjectiveUsage); !r) return r.error();
+        return logic_step(std::move(step));
+    }
+    return w.fail(2, "unknown objective command '" + std::string(verb) + "'",
+                  "objective commands: add, text, kill, remove, move");
+}
+
+// ---- expectations -------------------------------------------------------------------------------------
+
+Result<ScriptStep> parse_expect_objectives(const LineWords& words) {
+    const LogicWords w(words);
+    steps::ExpectObjectives step;
+    if (auto r = w.need(3, 3, kObjectivesUsage); !r) return r.error();
+    if (auto r = w.count(2, step.count, kObjectivesUsage); !r) return r.error();
+    return logic_step(step);
+}
+
+Result<ScriptStep> parse_expect_links(const LineWords& words) {
+    const LogicWords w(words);
+    steps::ExpectLinks step;
+    if (auto r = w.source(2, step.owner, kLinksUsage); !r) return r.error();
+    if (auto r = w.need(4, 4, kLinksUsage); !r) return r.error();
+    if (auto r = w.count(3, step.count, kLinksUsage); !r) return r.error();
+    return logic_step(std::move(step));
+}
+
+Result<ScriptStep> parse_expect_link(const LineWords& words) {
+    const LogicWords w(words);
+    steps::ExpectLink step;
+    if (auto r = w.source(2, step.owner, kLinkExpectUsage); !r) return r.error();
+    if (auto r = w.position(3, step.index, "a link number", kLinkExpectUsage); !r) return r.error();
+    if (auto r = w.link_words(4, step.link, kLinkExpectUsage); !r) return r.error();
+    return logic_step(std::move(step));
+}
+
+constexpr CommandSpec kCommands[] = {
+    {"name", false, kNameUsage, "name an entity (links and kill lists naming its old, unique name follow)",
+     parse_name},
+    {"link", false, kLinkUsage, "add, change or remove a link of an entity, an objective or the level",
+     parse_link},
+    {"objective", false, kObjectiveUsage, "add, edit, remove or move an objective", parse_objective},
+    {"links", true, kLinksUsage, "the number of a source's links", parse_expect_links},
+    {"link", true, kLinkExpectUsage, "one link exactly (delay 0 and not once unless given)",
+     parse_expect_link},
+    {"objectives", true, kObjectivesUsage, "the number of objectives", parse_expect_objectives},
 };
 
 } // namespace
 
-bool is_logic_command(std::string_view word) {
-    return word == "name" || word == "link" || word == "objective";
-}
-
-bool is_logic_expectation(std::string_view word) {
-    return word == "links" || word == "link" || word == "objectives";
-}
-
-Result<ScriptStep> parse_logic_line(std::string_view line, const std::vector<Token>& tokens, int line_no,
-                                    const std::string& file) {
-    return LogicLineParser(line, tokens, line_no, file).parse();
+std::span<const CommandSpec> logic_commands() {
+    return kCommands;
 }
 
 } // namespace ks::editor

@@ -1,6 +1,6 @@
-// The script language's level-logic lines (script_logic.h) run on the Editor's logic edits, and their
+// The script language's level-logic steps (script_logic.h) run on the Editor's logic edits, and their
 // expectations checked. Every edit is the Editor's own, so a script's line is one undo step like the panel's.
-#include "model/script_logic.h"
+#include "model/script_command.h"
 
 #include "jsonio/number_text.h"
 #include "jsonio/suggest.h"
@@ -27,138 +27,133 @@ std::string source_text(const LinkOwner& owner) {
     return {};
 }
 
-class LogicRunner {
-  public:
-    LogicRunner(Editor& editor, ScriptReport& report) : editor_(editor), report_(report) {}
+Error missing_objective(const Editor& editor, const std::string& id) {
+    std::vector<std::string> ids;
+    for (const auto& o : editor.level().objectives) ids.push_back(o.id);
+    const std::string near = jsonio::closest_match(id, ids);
+    return Error("no objective \"" + id + "\"", Location{},
+                 (near.empty() ? std::string() : "did you mean \"" + near + "\"? ") +
+                     (ids.empty() ? "the level has no objectives: objective add ID TEXT..."
+                                  : "objectives: " + jsonio::join(ids)));
+}
 
-    Result<void> run(const LogicStep& s) {
-        switch (s.op) {
-        case LogicOp::Name:
-            return editor_.rename(s.entity_id, s.text);
-        case LogicOp::LinkAdd: {
-            auto r = editor_.link_add(s.owner, s.link);
-            if (!r) return r.error();
-            return ok();
-        }
-        case LogicOp::LinkSet:
-            return link_set(s);
-        case LogicOp::LinkRemove:
-            return editor_.link_remove(s.owner, s.index);
-        case LogicOp::ObjectiveAdd:
-            return editor_.objective_add({s.text, s.value, {}, {}});
-        case LogicOp::ObjectiveText:
-        case LogicOp::ObjectiveKill:
-        case LogicOp::ObjectiveRemove:
-        case LogicOp::ObjectiveMove:
-            return objective_edit(s);
-        case LogicOp::ExpectLinks:
-        case LogicOp::ExpectLink:
-        case LogicOp::ExpectObjectives:
-            return expectation(s);
-        }
-        return ok();
-    }
+Result<const std::vector<level::Link>*> links(const Editor& editor, const LinkOwner& owner) {
+    if (const auto* list = editor.links_of(owner)) return list;
+    if (owner.kind == LinkOwner::Kind::Entity)
+        return Error("no entity with id " + std::to_string(owner.entity_id));
+    return missing_objective(editor, owner.objective_id);
+}
 
-  private:
-    Result<const std::vector<level::Link>*> links(const LinkOwner& owner) const {
-        if (const auto* list = editor_.links_of(owner)) return list;
-        if (owner.kind == LinkOwner::Kind::Entity)
-            return Error("no entity with id " + std::to_string(owner.entity_id));
-        return missing_objective(owner.objective_id);
-    }
+// The position of objective `id`, or an error with a did-you-mean.
+Result<int> objective_index(const Editor& editor, const std::string& id) {
+    const auto& objectives = editor.level().objectives;
+    for (size_t i = 0; i < objectives.size(); ++i)
+        if (objectives[i].id == id) return static_cast<int>(i);
+    return missing_objective(editor, id);
+}
 
-    Error missing_objective(const std::string& id) const {
-        std::vector<std::string> ids;
-        for (const auto& o : editor_.level().objectives) ids.push_back(o.id);
-        const std::string near = jsonio::closest_match(id, ids);
-        return Error("no objective \"" + id + "\"", Location{},
-                     (near.empty() ? std::string() : "did you mean \"" + near + "\"? ") +
-                         (ids.empty() ? "the level has no objectives: objective add ID TEXT..."
-                                      : "objectives: " + jsonio::join(ids)));
-    }
-
-    Result<void> link_set(const LogicStep& s) {
-        auto list = links(s.owner);
-        if (!list) return list.error();
-        if (s.index >= static_cast<int>((*list)->size()))
-            return Error("no link " + std::to_string(s.index + 1) + " on " + source_text(s.owner), Location{},
-                         "it has " + std::to_string((*list)->size()) + " (counted from 1)");
-        level::Link link = (**list)[static_cast<size_t>(s.index)];
-        if (s.text == "event")
-            link.event = s.value;
-        else if (s.text == "target")
-            link.target = s.value;
-        else if (s.text == "action")
-            link.action = s.value;
-        else if (s.text == "delay")
-            link.delay = s.link.delay;
-        else
-            link.once = s.link.once;
-        return editor_.link_set(s.owner, s.index, std::move(link));
-    }
-
-    Result<void> objective_edit(const LogicStep& s) {
-        const auto& objectives = editor_.level().objectives;
-        int index = -1;
-        for (size_t i = 0; i < objectives.size() && index < 0; ++i)
-            if (objectives[i].id == s.text) index = static_cast<int>(i);
-        if (index < 0) return missing_objective(s.text);
-        level::Objective objective = objectives[static_cast<size_t>(index)];
-        switch (s.op) {
-        case LogicOp::ObjectiveText:
-            objective.text = s.value;
-            return editor_.objective_set(index, std::move(objective));
-        case LogicOp::ObjectiveKill:
-            objective.kill = s.words;
-            return editor_.objective_set(index, std::move(objective));
-        case LogicOp::ObjectiveRemove:
-            return editor_.objective_remove(index);
-        default:
-            if (s.index >= static_cast<int>(objectives.size()))
-                return Error("no position " + std::to_string(s.index + 1) + " among the objectives",
-                             Location{},
-                             "the level has " + std::to_string(objectives.size()) + " (counted from 1)");
-            return editor_.objective_move(index, s.index);
-        }
-    }
-
-    Result<void> expect(bool condition, std::string message) {
-        ++report_.expectations_checked;
-        if (!condition) return Error("expectation failed: " + std::move(message));
-        return ok();
-    }
-
-    Result<void> expectation(const LogicStep& s) {
-        if (s.op == LogicOp::ExpectObjectives) {
-            const size_t n = editor_.level().objectives.size();
-            return expect(n == static_cast<size_t>(s.count), "the level has " + std::to_string(n) +
-                                                                 " objectives, expected " +
-                                                                 std::to_string(s.count));
-        }
-        auto list = links(s.owner);
-        if (!list) return list.error();
-        const std::vector<level::Link>& have = **list;
-        const std::string source = source_text(s.owner);
-        if (s.op == LogicOp::ExpectLinks)
-            return expect(have.size() == static_cast<size_t>(s.count),
-                          source + " has " + std::to_string(have.size()) + " links, expected " +
-                              std::to_string(s.count));
-        if (s.index >= static_cast<int>(have.size()))
-            return expect(false, source + " has " + std::to_string(have.size()) + " links, no link " +
-                                     std::to_string(s.index + 1));
-        const level::Link& actual = have[static_cast<size_t>(s.index)];
-        return expect(actual == s.link, "link " + std::to_string(s.index + 1) + " of " + source + " is '" +
-                                            link_text(actual) + "', expected '" + link_text(s.link) + "'");
-    }
-
-    Editor& editor_;
-    ScriptReport& report_;
-};
+// Objective `id` edited by `edit`, then set back in one undo step.
+template <class Edit>
+Result<void> edit_objective(Editor& editor, const std::string& id, Edit edit) {
+    auto index = objective_index(editor, id);
+    if (!index) return index.error();
+    level::Objective objective = editor.level().objectives[static_cast<size_t>(*index)];
+    edit(objective);
+    return editor.objective_set(*index, std::move(objective));
+}
 
 } // namespace
 
-Result<void> run_logic_step(const LogicStep& step, Editor& editor, ScriptReport& report) {
-    return LogicRunner(editor, report).run(step);
+Result<void> LogicStep::run(ScriptContext& c) const {
+    return std::visit([&](const auto& s) { return s.run(c); }, step);
 }
 
+namespace steps {
+
+Result<void> Name::run(ScriptContext& c) const {
+    return c.editor.rename(entity_id, name);
+}
+
+Result<void> LinkAdd::run(ScriptContext& c) const {
+    auto r = c.editor.link_add(owner, link);
+    if (!r) return r.error();
+    return ok();
+}
+
+Result<void> LinkSet::run(ScriptContext& c) const {
+    auto list = links(c.editor, owner);
+    if (!list) return list.error();
+    if (index >= static_cast<int>((*list)->size()))
+        return Error("no link " + std::to_string(index + 1) + " on " + source_text(owner), Location{},
+                     "it has " + std::to_string((*list)->size()) + " (counted from 1)");
+    level::Link changed = (**list)[static_cast<size_t>(index)];
+    if (field == "event")
+        changed.event = value;
+    else if (field == "target")
+        changed.target = value;
+    else if (field == "action")
+        changed.action = value;
+    else if (field == "delay")
+        changed.delay = link.delay;
+    else
+        changed.once = link.once;
+    return c.editor.link_set(owner, index, std::move(changed));
+}
+
+Result<void> LinkRemove::run(ScriptContext& c) const {
+    return c.editor.link_remove(owner, index);
+}
+
+Result<void> ObjectiveAdd::run(ScriptContext& c) const {
+    return c.editor.objective_add({id, text, {}, {}});
+}
+Result<void> ObjectiveText::run(ScriptContext& c) const {
+    return edit_objective(c.editor, id, [&](level::Objective& o) { o.text = text; });
+}
+Result<void> ObjectiveKill::run(ScriptContext& c) const {
+    return edit_objective(c.editor, id, [&](level::Objective& o) { o.kill = names; });
+}
+Result<void> ObjectiveRemove::run(ScriptContext& c) const {
+    auto at = objective_index(c.editor, id);
+    if (!at) return at.error();
+    return c.editor.objective_remove(*at);
+}
+Result<void> ObjectiveMove::run(ScriptContext& c) const {
+    auto at = objective_index(c.editor, id);
+    if (!at) return at.error();
+    const size_t count = c.editor.level().objectives.size();
+    if (index >= static_cast<int>(count))
+        return Error("no position " + std::to_string(index + 1) + " among the objectives", Location{},
+                     "the level has " + std::to_string(count) + " (counted from 1)");
+    return c.editor.objective_move(*at, index);
+}
+
+Result<void> ExpectObjectives::run(ScriptContext& c) const {
+    const size_t n = c.editor.level().objectives.size();
+    return c.expect(n == static_cast<size_t>(count),
+                    "the level has " + std::to_string(n) + " objectives, expected " + std::to_string(count));
+}
+
+Result<void> ExpectLinks::run(ScriptContext& c) const {
+    auto list = links(c.editor, owner);
+    if (!list) return list.error();
+    const size_t n = (*list)->size();
+    return c.expect(n == static_cast<size_t>(count), source_text(owner) + " has " + std::to_string(n) +
+                                                         " links, expected " + std::to_string(count));
+}
+
+Result<void> ExpectLink::run(ScriptContext& c) const {
+    auto list = links(c.editor, owner);
+    if (!list) return list.error();
+    const std::vector<level::Link>& have = **list;
+    const std::string source = source_text(owner);
+    if (index >= static_cast<int>(have.size()))
+        return c.expect(false, source + " has " + std::to_string(have.size()) + " links, no link " +
+                                   std::to_string(index + 1));
+    const level::Link& actual = have[static_cast<size_t>(index)];
+    return c.expect(actual == link, "link " + std::to_string(index + 1) + " of " + source + " is '" +
+                                        link_text(actual) + "', expected '" + link_text(link) + "'");
+}
+
+} // namespace steps
 } // namespace ks::editor

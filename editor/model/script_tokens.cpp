@@ -81,6 +81,20 @@ std::optional<Rule> rule_from_name(std::string_view name) {
     return std::nullopt;
 }
 
+Result<void> entity_type(const LineWords& words, size_t token, level::EntityType& out) {
+    if (token >= words.size()) return words.fail(token, "expected an entity type", "types: " + type_names());
+    if (!level::type_from_name(words.text(token), out))
+        return words.fail(token, "unknown entity type '" + words.word(token) + "'", "types: " + type_names());
+    return ok();
+}
+
+Result<void> rule(const LineWords& words, size_t token, Rule& out) {
+    const auto found = rule_from_name(words.text(token));
+    if (!found) return words.fail(token, "unknown rule", "rules: " + rule_names());
+    out = *found;
+    return ok();
+}
+
 std::string rule_names() {
     std::string s;
     for (Rule r : kRules) s += (s.empty() ? "" : ", ") + std::string(rule_name(r));

@@ -44,11 +44,7 @@ void check_sound_names(const level::Level& level, const ValidationOptions& optio
         const Verdict v = judge(ambient, known);
         QuickFix fix;
         if (!v.suggestion.empty())
-            fix = {QuickFix::Kind::SetSetting,
-                   "Use " + v.suggestion,
-                   {},
-                   "ambient_sound",
-                   FieldValue(v.suggestion)};
+            fix = {"Use " + v.suggestion, fixes::SetSetting{"ambient_sound", FieldValue(v.suggestion)}};
         out.push_back(
             {Rule::Sound, IssueSeverity::Error, 0, "the level's ambient_sound is " + v.text, std::move(fix)});
     }
@@ -58,7 +54,7 @@ void check_sound_names(const level::Level& level, const ValidationOptions& optio
         const Verdict v = judge(sound->sound.value, known);
         QuickFix fix;
         if (!v.suggestion.empty())
-            fix = {QuickFix::Kind::SetField, "Use " + v.suggestion, {}, "sound", FieldValue(v.suggestion)};
+            fix = {"Use " + v.suggestion, fixes::SetField{"sound", FieldValue(v.suggestion)}};
         std::string who = "sound " + std::to_string(e.id);
         if (!e.name.empty()) who += " '" + e.name + "'";
         out.push_back({Rule::Sound, IssueSeverity::Error, e.id, who + " plays " + v.text, std::move(fix)});

@@ -172,11 +172,8 @@ Issue texture_issue(const Level& level, const level::Diagnostic& d) {
     issue.message = d.error.str();
     if (!d.suggestion.empty()) {
         const std::string& path = d.error.where.path;
-        issue.fix = {QuickFix::Kind::SetField,
-                     "Use " + d.suggestion,
-                     {},
-                     path.substr(path.rfind('.') + 1),
-                     FieldValue(d.suggestion)};
+        issue.fix = {"Use " + d.suggestion,
+                     fixes::SetField{path.substr(path.rfind('.') + 1), FieldValue(d.suggestion)}};
     }
     return issue;
 }
@@ -214,11 +211,9 @@ void check_player_start(const Level& level, const Solids& solids, const Validati
     }
     if (auto problem = support_problem(solids, 0, start.position, o)) {
         QuickFix fix;
-        if (problem->fixed_y) {
-            fix.kind = QuickFix::Kind::MovePlayerStart;
-            fix.label = "Drop to floor";
-            fix.position = {start.position.x, *problem->fixed_y, start.position.z};
-        }
+        if (problem->fixed_y)
+            fix = {"Drop to floor",
+                   fixes::MovePlayerStart{{start.position.x, *problem->fixed_y, start.position.z}}};
         // Without ground under it the player falls forever: that is an error, not a nit.
         add(problem->fixed_y ? problem->severity : IssueSeverity::Error, problem->message, std::move(fix));
     }
@@ -228,11 +223,8 @@ void check_player_start(const Level& level, const Solids& solids, const Validati
         geometry::Overlap ov = geometry::obb_overlap(body, w.box);
         if (!ov.overlapping) continue;
         QuickFix fix;
-        if (auto delta = push_out(ov)) {
-            fix.kind = QuickFix::Kind::MovePlayerStart;
-            fix.label = "Push out of the wall";
-            fix.position = start.position + *delta;
-        }
+        if (auto delta = push_out(ov))
+            fix = {"Push out of the wall", fixes::MovePlayerStart{start.position + *delta}};
         add(IssueSeverity::Error, "is inside " + describe(*w.entity) + " (by " + num(ov.depth) + ")",
             std::move(fix));
         break;
@@ -244,7 +236,7 @@ void check_control_panels(const Level& level, std::vector<Issue>& out) {
     for (const auto& e : level.entities) {
         if (e.type() != EntityType::ControlPanel) continue;
         if (++count == 1) continue;
-        QuickFix fix{QuickFix::Kind::DeleteEntity, "Delete", {}, {}, {}};
+        QuickFix fix{"Delete", fixes::DeleteEntity{}};
         out.push_back({Rule::ControlPanel, IssueSeverity::Warning, e.id,
                        describe(e) + " is an extra control panel; the level needs exactly one", fix});
     }
@@ -268,11 +260,8 @@ void check_wall_overlaps(const Level& level, const Solids& solids, std::vector<I
             geometry::Overlap ov = geometry::obb_overlap(box, w.box, 0.01f);
             if (!ov.overlapping) continue;
             QuickFix fix;
-            if (auto delta = push_out(ov)) {
-                fix.kind = QuickFix::Kind::MoveEntity;
-                fix.label = "Push out of the wall";
-                fix.position = e.position + *delta;
-            }
+            if (auto delta = push_out(ov))
+                fix = {"Push out of the wall", fixes::MoveEntity{e.position + *delta}};
             out.push_back({Rule::WallOverlap, IssueSeverity::Error, e.id,
                            describe(e) + " overlaps " + describe(*w.entity) + " by " + num(ov.depth),
                            std::move(fix)});
@@ -287,12 +276,9 @@ void check_support(const Level& level, const Solids& solids, const ValidationOpt
         if (!stands_on_ground(e.type()) || !is_finite(e.position)) continue;
         auto problem = support_problem(solids, e.id, e.position, o);
         if (!problem) continue;
-        QuickFix fix{QuickFix::Kind::DeleteEntity, "Delete", {}, {}, {}};
-        if (problem->fixed_y) {
-            fix.kind = QuickFix::Kind::MoveEntity;
-            fix.label = "Drop to floor";
-            fix.position = {e.position.x, *problem->fixed_y, e.position.z};
-        }
+        QuickFix fix{"Delete", fixes::DeleteEntity{}};
+        if (problem->fixed_y)
+            fix = {"Drop to floor", fixes::MoveEntity{{e.position.x, *problem->fixed_y, e.position.z}}};
         out.push_back(
             {Rule::Support, problem->severity, e.id, describe(e) + " " + problem->message, std::move(fix)});
     }
@@ -307,11 +293,8 @@ void check_stairs(const Level& level, const ValidationOptions& o, std::vector<Is
         if (!(slope > limit + 1e-3f)) continue;
         // The shortest run the character can still climb, rounded up to a hundredth.
         const float run = std::ceil(s->size.y / std::tan(radians(limit)) * 100.0f) / 100.0f;
-        QuickFix fix{QuickFix::Kind::SetField,
-                     "Lengthen the run to " + num(run),
-                     {},
-                     "size",
-                     FieldValue(Vec3(s->size.x, s->size.y, run))};
+        QuickFix fix{"Lengthen the run to " + num(run),
+                     fixes::SetField{"size", FieldValue(Vec3(s->size.x, s->size.y, run))}};
         out.push_back(
             {Rule::StairSlope, IssueSeverity::Error, e.id,
              describe(e) + " rises at " + num(slope) + " degrees; the character climbs at most " + num(limit),

@@ -5,6 +5,7 @@
 #include "model/bounds.h"
 #include "model/field_access.h"
 #include "model/logic_edit.h"
+#include "model/quick_fix.h"
 
 #include <optional>
 #include <string>
@@ -36,34 +37,6 @@ enum class Rule {
 const char* rule_name(Rule rule);
 
 enum class IssueSeverity { Warning, Error };
-
-struct QuickFix {
-    enum class Kind {
-        None,
-        MoveEntity,
-        MovePlayerStart,
-        DeleteEntity,
-        SetField,
-        MovePatrolPoint,
-        SetSetting,
-        SetLink,              // replace link `index` of `owner` with `link`
-        RemoveLink,           // remove link `index` of `owner`
-        AddLink,              // append `link` to `owner`'s links
-        SetKillName,          // objective `index`: kill-list name `kill_index` becomes `name`
-        RemoveKillName,       // objective `index`: remove kill-list name `kill_index`
-        AddShutdownObjective, // the objective "shutdown", completed by using the control panel (v1's win)
-        UnlinkPrefab          // group `index` (a prefab instance) becomes a plain group
-    } kind = Kind::None;
-    std::string label;   // "Drop to floor", shown on the button
-    Vec3 position{0.0f}; // MoveEntity / MovePlayerStart / MovePatrolPoint
-    std::string field;   // SetField / SetSetting
-    FieldValue value;    // SetField / SetSetting
-    int index = 0;       // MovePatrolPoint: which point of the issue's robot; link and objective fixes
-    LinkOwner owner{};   // SetLink, RemoveLink, AddLink
-    level::Link link{};  // SetLink, AddLink: the link as the fix leaves it
-    int kill_index = 0;  // SetKillName, RemoveKillName
-    std::string name{};  // SetKillName
-};
 
 struct Issue {
     Rule rule = Rule::Format;

@@ -180,7 +180,7 @@ void EditorApp::validation_panel(float x, float y, float w, float h) {
             ImGui::SetTooltip("Click to select what this is about");
         }
         if (ImGui::IsItemClicked()) report(editor_.select_issue(issue), "select");
-        if (issue.fix.kind != QuickFix::Kind::None) {
+        if (issue.fix.available()) {
             ImGui::Indent(40.0f);
             const bool fix = ImGui::SmallButton(issue.fix.label.c_str());
             ImGui::Unindent(40.0f);

@@ -75,7 +75,7 @@ TEST_CASE("link_target: a link naming nothing is retargeted to the did-you-mean 
     CHECK(issues[0].owner == LinkOwner::entity(trigger));
     CHECK(issues[0].link_index == 0);
     CHECK(issues[0].message.find("no entity named \"Dor\"") != std::string::npos);
-    CHECK(issues[0].fix.kind == QuickFix::Kind::SetLink);
+    CHECK(issues[0].fix.is<fixes::SetLink>());
     CHECK(issues[0].fix.label == "Retarget to \"Door\"");
     for (const Issue& issue : ed.issues()) CHECK(issue.rule != Rule::Format); // not reported twice
     REQUIRE(ed.select_issue(issues[0]).ok());
@@ -89,7 +89,7 @@ TEST_CASE("link_target: a link naming nothing is retargeted to the did-you-mean 
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].entity_id == 0);
     CHECK(issues[0].owner == LinkOwner::level());
-    CHECK(issues[0].fix.kind == QuickFix::Kind::RemoveLink);
+    CHECK(issues[0].fix.is<fixes::RemoveLink>());
     fix_in_one_step(ed, Rule::LinkTarget);
     CHECK(ed.level().links.empty());
 
@@ -108,7 +108,7 @@ TEST_CASE("link_target: kill-list names and links to a deleted entity") {
     auto issues = issues_of(ed, Rule::LinkTarget);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].owner == LinkOwner::objective("clear"));
-    CHECK(issues[0].fix.kind == QuickFix::Kind::SetKillName);
+    CHECK(issues[0].fix.is<fixes::SetKillName>());
     fix_in_one_step(ed, Rule::LinkTarget);
     CHECK(ed.level().objectives[1].kill == std::vector<std::string>{"Guard"});
 
@@ -118,7 +118,7 @@ TEST_CASE("link_target: kill-list names and links to a deleted entity") {
     issues = issues_of(ed, Rule::LinkTarget);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].entity_id == kPanel);
-    CHECK(issues[0].fix.kind == QuickFix::Kind::RemoveLink);
+    CHECK(issues[0].fix.is<fixes::RemoveLink>());
     // Deleting the guard too: its kill-list name goes.
     REQUIRE(ed.delete_entities({kRobot}).ok());
     run_ok(ed, "fix link_target\nexpect no_issue link_target\n");
@@ -161,7 +161,7 @@ TEST_CASE("objective: one nothing can complete gets an on_use -> complete link o
     CHECK(issues[0].owner == LinkOwner::objective("escape"));
     CHECK(issues[0].entity_id == 0);
     CHECK(issues[0].message.find("can never be won") != std::string::npos);
-    CHECK(issues[0].fix.kind == QuickFix::Kind::AddLink);
+    CHECK(issues[0].fix.is<fixes::AddLink>());
     fix_in_one_step(ed, Rule::Objective);
     CHECK(ed.level().find(kPanel)->links ==
           std::vector{link("on_use", "shutdown", "complete"), link("on_use", "escape", "complete")});
@@ -170,7 +170,7 @@ TEST_CASE("objective: one nothing can complete gets an on_use -> complete link o
     REQUIRE(ed.delete_entities({kPanel}).ok());
     issues = issues_of(ed, Rule::Objective);
     REQUIRE(issues.size() == 2); // shutdown and escape
-    CHECK(issues[0].fix.kind == QuickFix::Kind::None);
+    CHECK(!issues[0].fix.available());
     run_ok(ed, "fix objective\nexpect issue objective\nexpect no_issue control_panel\n");
 
     // A spawner nothing starts: reported on the kill-list name, no fix (the hint says what to add).
@@ -180,7 +180,7 @@ TEST_CASE("objective: one nothing can complete gets an on_use -> complete link o
     issues = issues_of(ed, Rule::Objective);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].message.find("never spawns") != std::string::npos);
-    CHECK(issues[0].fix.kind == QuickFix::Kind::None);
+    CHECK(!issues[0].fix.available());
     const int trigger = *ed.place(EntityType::Trigger, {0, 0, 10}, 0, "Entry");
     REQUIRE(ed.link_add(LinkOwner::entity(trigger), link("on_enter", "Wave", "spawn")).ok());
     CHECK(issues_of(ed, Rule::Objective).empty());
@@ -194,7 +194,7 @@ TEST_CASE("objective: a level with no objectives and no win link can never be wo
     auto issues = issues_of(ed, Rule::Objective);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].message.find("no objectives and no link wins it") != std::string::npos);
-    CHECK(issues[0].fix.kind == QuickFix::Kind::AddShutdownObjective);
+    CHECK(issues[0].fix.is<fixes::AddShutdownObjective>());
     fix_in_one_step(ed, Rule::Objective);
     REQUIRE(ed.level().objectives.size() == 1);
     CHECK(ed.level().objectives[0].id == "shutdown");
@@ -209,7 +209,7 @@ TEST_CASE("objective: a level with no objectives and no win link can never be wo
     REQUIRE(ed.delete_entities({kPanel}).ok());
     issues = issues_of(ed, Rule::Objective);
     REQUIRE(issues.size() == 1);
-    CHECK(issues[0].fix.kind == QuickFix::Kind::None);
+    CHECK(!issues[0].fix.available());
     CHECK(issues_of(ed, Rule::ControlPanel).size() == 1);
     CHECK_FALSE(ed.add_shutdown_objective().ok());
 }
@@ -247,7 +247,7 @@ TEST_CASE("trigger_reach: a trigger the player or the robots can never walk into
     CHECK(issues[0].entity_id == outside);
     CHECK(issues[1].entity_id == high);
     CHECK(issues[0].message.find("the player cannot walk into its box") != std::string::npos);
-    CHECK(issues[0].fix.kind == QuickFix::Kind::None);
+    CHECK(!issues[0].fix.available());
     // Lowered to 2 units up, the box meets the player's body (3 units tall) again.
     REQUIRE(ed.select({high}).ok());
     REQUIRE(ed.move_selection({0, -3, 0}).ok());

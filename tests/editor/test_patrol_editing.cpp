@@ -183,9 +183,9 @@ TEST_CASE(
     CHECK(issues[0]->message == "robot 10 patrol point 1 floats 2.50 units above the floor");
     CHECK(issues[1]->message == "robot 10 patrol point 2 is sunk 0.30 units into the floor");
     CHECK(issues[2]->message == "robot 10 patrol point 3 is outside every floor");
-    CHECK(issues[2]->fix.kind == QuickFix::Kind::None);
-    CHECK(issues[0]->fix.kind == QuickFix::Kind::MovePatrolPoint);
-    CHECK(issues[0]->fix.index == 1);
+    CHECK(!issues[2]->fix.available());
+    CHECK(issues[0]->fix.is<fixes::MovePatrolPoint>());
+    CHECK(std::get<fixes::MovePatrolPoint>(issues[0]->fix.action).index == 1);
 
     const Issue first = *issues[0];
     REQUIRE(ed.apply_quick_fix(first).ok());

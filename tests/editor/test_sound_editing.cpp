@@ -197,7 +197,7 @@ TEST_CASE("validation: an unknown sound is an error with a did-you-mean and a fi
           "sound " + std::to_string(id) +
               " 'hum' plays \"machine_hmu\", which is not a file in assets/sounds; did you "
               "mean \"machine_hum\"?");
-    CHECK(issues[0].fix.kind == QuickFix::Kind::SetField);
+    CHECK(issues[0].fix.is<fixes::SetField>());
     REQUIRE(editor.apply_quick_fix(issues[0]).ok());
     CHECK(editor.level().find(id)->as<level::SoundProps>().sound.value == "machine_hum");
     CHECK(sound_issues(editor).empty());
@@ -209,7 +209,7 @@ TEST_CASE("validation: an unknown sound is an error with a did-you-mean and a fi
     CHECK(issues[0].message.find(
               "\"thunder\", which is not a file in assets/sounds (known sounds: ambient_dojo, "
               "ambient_facility, alarm_loop,") != std::string::npos);
-    CHECK(issues[0].fix.kind == QuickFix::Kind::None);
+    CHECK(!issues[0].fix.available());
     REQUIRE(editor.undo());
 
     // The level's ambient loop, fixed through the settings (one undoable step).
@@ -219,7 +219,7 @@ TEST_CASE("validation: an unknown sound is an error with a did-you-mean and a fi
     CHECK(issues[0].entity_id == 0);
     CHECK(issues[0].message == "the level's ambient_sound is \"ambient_facilty\", which is not a file in "
                                "assets/sounds; did you mean \"ambient_facility\"?");
-    CHECK(issues[0].fix.kind == QuickFix::Kind::SetSetting);
+    CHECK(issues[0].fix.is<fixes::SetSetting>());
     REQUIRE(editor.apply_quick_fix(issues[0]).ok());
     CHECK(editor.level().settings.ambient_sound.value == "ambient_facility");
     CHECK(sound_issues(editor).empty());

@@ -57,9 +57,9 @@ TEST_CASE("an unknown texture is a validation error with the closest material as
     CHECK(typo.message.find("entities[0].props.texture") != std::string::npos);
     CHECK(typo.message.find("wall 1 (\"North\"): texture \"concret\"") != std::string::npos);
     CHECK(typo.message.find("did you mean \"concrete\"?") != std::string::npos);
-    REQUIRE(typo.fix.kind == QuickFix::Kind::SetField);
+    REQUIRE(typo.fix.is<fixes::SetField>());
     CHECK(typo.fix.label == "Use concrete");
-    CHECK(issues[1].fix.kind == QuickFix::Kind::None); // nothing close: no guess
+    CHECK(!issues[1].fix.available()); // nothing close: no guess
     CHECK(issues[1].message.find("surface materials") != std::string::npos);
     // No duplicate under the format rule.
     for (const Issue& issue : editor.issues())

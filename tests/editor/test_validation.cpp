@@ -89,7 +89,7 @@ TEST_CASE("rule player_start: floating (drop fix), outside every floor, inside a
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].entity_id == 0);
     CHECK(issues[0].message.find("floats 2.00") != std::string::npos);
-    REQUIRE(issues[0].fix.kind == QuickFix::Kind::MovePlayerStart);
+    REQUIRE(issues[0].fix.is<fixes::MovePlayerStart>());
     REQUIRE(ed.apply_quick_fix(issues[0]).ok());
     CHECK(ed.level().player_start.position == Vec3(0, 0, 15));
     CHECK(of_rule(ed.issues(), Rule::PlayerStart).empty());
@@ -132,7 +132,7 @@ TEST_CASE("rule control_panel: missing in a level without objectives is an error
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].severity == IssueSeverity::Error);
     CHECK(issues[0].entity_id == 0);
-    CHECK(issues[0].fix.kind == QuickFix::Kind::None);
+    CHECK(!issues[0].fix.available());
     CHECK_FALSE(ed.apply_quick_fix(issues[0]).ok());
 }
 
@@ -144,7 +144,7 @@ TEST_CASE("rule wall_overlap: a robot in a wall is found by its oriented box and
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].entity_id == robot);
     CHECK(issues[0].message.find("West") != std::string::npos);
-    REQUIRE(issues[0].fix.kind == QuickFix::Kind::MoveEntity);
+    REQUIRE(issues[0].fix.is<fixes::MoveEntity>());
     REQUIRE(ed.apply_quick_fix(issues[0]).ok());
     CHECK(ed.doc().selection == std::vector<int>{robot});
     CHECK(of_rule(ed.issues(), Rule::WallOverlap).empty());
@@ -183,7 +183,7 @@ TEST_CASE("rule support: floating and sunk entities drop to the floor; outside e
     CHECK(issues[1].message.find("sunk 0.50") != std::string::npos);
     CHECK(issues[2].entity_id == robot);
     CHECK(issues[2].severity == IssueSeverity::Error);
-    CHECK(issues[2].fix.kind == QuickFix::Kind::DeleteEntity);
+    CHECK(issues[2].fix.is<fixes::DeleteEntity>());
     for (const auto& issue : issues) REQUIRE(ed.apply_quick_fix(issue).ok());
     CHECK(ed.level().find(pickup)->position.y == 0.0f);
     CHECK(ed.level().find(gas)->position.y == 0.0f);
@@ -464,7 +464,7 @@ TEST_CASE("rule patrol on the mesh: a point inside a prop snaps to the nearest w
     INFO(dump(ed.issues()));
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].message.find("patrol point 1 is where robots cannot walk") != std::string::npos);
-    REQUIRE(issues[0].fix.kind == QuickFix::Kind::MovePatrolPoint);
+    REQUIRE(issues[0].fix.is<fixes::MovePatrolPoint>());
     CHECK(dump(ed.issues()) == dump(validate_design(ed.level())));
     REQUIRE(ed.apply_quick_fix(issues[0]).ok());
     CHECK(of_rule(ed.issues(), Rule::Patrol).empty());

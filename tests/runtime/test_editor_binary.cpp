@@ -148,6 +148,17 @@ TEST_CASE("killswitch-editor --script reports a bad line as file:line and exits 
     CHECK(missing.output.find("nope.kss") != std::string::npos);
 }
 
+TEST_CASE("killswitch-editor --help-script lists the script commands from the registry, without a display") {
+    auto help = test::run_command("env -u DISPLAY -u WAYLAND_DISPLAY " + editor_binary() + " --help-script");
+    INFO(help.output);
+    CHECK(help.exit_code == 0);
+    for (const char* form : {"place TYPE at X,Y,Z [yaw D] [name TEXT]", "expect valid", "prefab update",
+                             "link SOURCE remove INDEX", "expect curve CLIP NODE CHANNEL TIME V"})
+        CHECK(help.output.find(form) != std::string::npos);
+    CHECK(test::run_command("env -u DISPLAY " + editor_binary() + " --help").output.find("--help-script") !=
+          std::string::npos);
+}
+
 TEST_CASE("killswitch-editor --screenshot shows the level in its viewport between the panels") {
     REQUIRE_MESSAGE(have_display(),
                     "no DISPLAY: editor window test cannot run (./run.sh test runs it under xvfb-run)");
