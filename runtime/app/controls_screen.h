@@ -2,8 +2,8 @@
 // Options > Controls: every action with its two keys (click one, press the new key or mouse button; Esc or
 // the pad's B cancels, Backspace clears the slot), keys shared by two actions in red, Reset to defaults, and
 // the gamepad's layout with its look speed and dead zone. In the menus' style (menu_style.h).
-#include "key_bindings.h"
-#include "options.h"
+#include "runtime/model/key_bindings.h"
+#include "runtime/model/options.h"
 #include "shell/app_shell.h"
 
 #include <cstddef>

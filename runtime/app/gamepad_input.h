@@ -6,7 +6,7 @@
 // at zero past it; look uses the square of the deflection for fine aim near the centre and turns at
 // kLookRate × the look sensitivity at full tilt. GL-free and header-only so the tests use it directly.
 #include "game/game_types.h"
-#include "options.h"
+#include "runtime/model/options.h"
 #include "shell/gamepad.h"
 
 #include <algorithm>

@@ -5,7 +5,7 @@
 // key's and button's held state, a latch "went down since the game last asked", and the cursor's motion
 // since the game last asked. Scripted input (--input-script) enters through the same handlers.
 // Header-only state (InputState) so tests use it without a window; input_events.cpp binds it to GLFW.
-#include "key_names.h"
+#include "runtime/model/key_names.h"
 
 #include <array>
 

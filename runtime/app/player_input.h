@@ -8,7 +8,7 @@
 #include "game/game_types.h"
 #include "gamepad_input.h"
 #include "input_events.h"
-#include "options.h"
+#include "runtime/model/options.h"
 
 #include <cmath>
 

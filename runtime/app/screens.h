@@ -1,8 +1,8 @@
 #pragma once
 // The game's screens as immediate-mode functions: each draws itself centred in the window and returns what
 // the player chose this frame. The app's state machine (game_app.cpp) decides what each choice does.
-#include "campaign_progress.h"
-#include "options.h"
+#include "runtime/model/campaign_progress.h"
+#include "runtime/model/options.h"
 #include "shell/app_shell.h"
 
 #include <string>

@@ -5,7 +5,7 @@
 #include "core/files.h"
 #include "core/log.h"
 #include "core/paths.h"
-#include "runtime/app/campaign_save.h"
+#include "runtime/model/campaign_save.h"
 #include "test_support.h"
 
 #include <doctest/doctest.h>

@@ -2,8 +2,8 @@
 // accuracy text, the "Objective complete" banner's timer and the objective list's rows.
 #include "game/game_test_levels.h"
 #include "level/level_io.h"
-#include "runtime/app/campaign_progress.h"
 #include "runtime/app/logic_hud.h"
+#include "runtime/model/campaign_progress.h"
 #include "test_support.h"
 
 #include <doctest/doctest.h>

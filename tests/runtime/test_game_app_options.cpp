@@ -2,7 +2,7 @@
 // round trip, atomic write into a new folder, and every kind of bad file giving defaults plus a warning.
 #include "core/files.h"
 #include "core/log.h"
-#include "runtime/app/options.h"
+#include "runtime/model/options.h"
 #include "test_support.h"
 
 #include <doctest/doctest.h>

@@ -5,9 +5,9 @@
 // state.
 #include "core/log.h"
 #include "runtime/app/controls_screen.h"
-#include "runtime/app/key_bindings.h"
-#include "runtime/app/options.h"
 #include "runtime/app/player_input.h"
+#include "runtime/model/key_bindings.h"
+#include "runtime/model/options.h"
 #include "test_support.h"
 
 #include <doctest/doctest.h>
