@@ -1,10 +1,10 @@
 #pragma once
 // Turns the keyboard, mouse and gamepad into the game's per-step Input: the keys and mouse through the
-// bindings (runtime/model/keyboard_mouse_input.h), the pad through gamepad_input.h, and the cursor captured
-// while playing.
+// bindings (runtime/model/keyboard_mouse_input.h), the pad through runtime/model/gamepad_input.h, and the
+// cursor captured while playing.
 #include "game/game_types.h"
-#include "gamepad_input.h"
 #include "input_events.h"
+#include "runtime/model/gamepad_input.h"
 #include "runtime/model/keyboard_mouse_input.h"
 #include "runtime/model/options.h"
 
