@@ -18,7 +18,6 @@
 #include "game/game.h"
 #include "hud_feedback.h"
 #include "input_events.h"
-#include "input_script.h"
 #include "level/level_io.h"
 #include "logic_hud.h"
 #include "menu_style.h"
@@ -26,12 +25,13 @@
 #include "render/scene_renderer.h"
 #include "runtime/model/campaign_progress.h"
 #include "runtime/model/campaign_save.h"
+#include "runtime/model/input_script.h"
 #include "runtime/model/options.h"
 #include "runtime/model/screen_table.h"
+#include "runtime/model/step_budget.h"
 #include "screens.h"
 #include "shell/hud.h"
 #include "soundscape/soundscape.h"
-#include "step_budget.h"
 #include "world_view.h"
 
 #define GLFW_INCLUDE_NONE
@@ -46,8 +46,8 @@
 
 namespace ks::runtime {
 
-// At most this many fixed steps per frame (0.25 s of game time; step_budget.h says why): 4 frames per
-// second still play in real time, slower machines in slow motion.
+// At most this many fixed steps per frame (0.25 s of game time; runtime/model/step_budget.h says why): 4
+// frames per second still play in real time, slower machines in slow motion.
 constexpr int kMaxStepsPerFrame = 30;
 
 // One loaded level with its game and view. The Dojo's controller borrows the game's clips, so it goes first.

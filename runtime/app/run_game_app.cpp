@@ -44,7 +44,7 @@ void print_help() {
         "  --audio-out F.wav record the sound mix to a 48 kHz stereo WAV instead of playing it (with\n"
         "                    --screenshot --frames the frames are a fixed 1/60 s: the same run, the same "
         "file)\n"
-        "  --input-script F  timed key/mouse events by frame (see runtime/app/input_script.h); with\n"
+        "  --input-script F  timed key/mouse events by frame (see runtime/model/input_script.h); with\n"
         "                    --screenshot the frames are a fixed 1/60 s, so the run is deterministic\n"
         "  --view MODEL      (renderer) one model on a turntable; --camera x,y,z,yaw,pitch: render-only "
         "view\n"

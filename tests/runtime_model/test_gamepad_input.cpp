@@ -3,8 +3,8 @@
 // on the trigger's pull, interact, the menus' B and Start — and the radial dead zone (inside, the edge,
 // diagonals, NaN and out-of-range axes). The menus' navigation is the shell's (test_gamepad_nav.cpp).
 #include "core/gamepad_state.h"
-#include "runtime/app/input_script.h"
 #include "runtime/model/gamepad_input.h"
+#include "runtime/model/input_script.h"
 #include "runtime/model/keyboard_mouse_input.h"
 
 #include <doctest/doctest.h>
