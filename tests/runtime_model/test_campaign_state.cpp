@@ -1,9 +1,9 @@
-// The runtime's GL-free campaign and HUD state: CampaignProgress (levels in order, results, totals),
+// The runtime model's campaign and HUD state: CampaignProgress (levels in order, results, totals),
 // accuracy text, the "Objective complete" banner's timer and the objective list's rows.
 #include "game/game_test_levels.h"
 #include "level/level_io.h"
-#include "runtime/app/logic_hud.h"
 #include "runtime/model/campaign_progress.h"
+#include "runtime/model/hud_presentation.h"
 #include "test_support.h"
 
 #include <doctest/doctest.h>
