@@ -42,7 +42,4 @@ MenuAction credits(const shell::Fonts& fonts, float w, float h);
 // Edits `options` in place; `changed` is set when a value moved this frame.
 MenuAction options_panel(Options& options, bool& changed, const shell::Fonts& fonts, float w, float h);
 
-// "m:ss.s" for the win screen.
-std::string format_time(double seconds);
-
 } // namespace ks::runtime

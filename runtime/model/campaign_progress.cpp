@@ -14,6 +14,15 @@ std::string accuracy_text(int hits, int shots) {
     return text;
 }
 
+std::string format_time(double seconds) {
+    if (!std::isfinite(seconds) || seconds < 0.0 || seconds > 1.0e9) seconds = 0.0;
+    // In tenths first, so 59.96 s reads "1:00.0", not "0:60.0".
+    const long long tenths = std::llround(seconds * 10.0);
+    char text[32];
+    std::snprintf(text, sizeof(text), "%lld:%02lld.%lld", tenths / 600, tenths % 600 / 10, tenths % 10);
+    return text;
+}
+
 void CampaignProgress::record_win(LevelResult result) {
     if (finished()) return;
     result.title = current().title;

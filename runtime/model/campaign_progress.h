@@ -24,6 +24,8 @@ struct LevelResult {
 
 // "75 %" of the shots that hit, or "-" without a shot (nothing to measure).
 std::string accuracy_text(int hits, int shots);
+// "m:ss.s", the time a level took on the win screens ("0:00.0" for anything not a time).
+std::string format_time(double seconds);
 
 class CampaignProgress {
   public:
