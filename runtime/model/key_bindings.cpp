@@ -5,6 +5,7 @@ namespace ks::runtime {
 const ActionInfo& action_info(Action a) {
     return kActionInfo[static_cast<std::size_t>(a)];
 }
+
 std::string keys_text(const Bindings& b, Action a) {
     std::string text;
     for (int code : b[a]) {
@@ -14,6 +15,7 @@ std::string keys_text(const Bindings& b, Action a) {
     }
     return text.empty() ? "-" : text;
 }
+
 std::array<bool, kActionCount> conflicts(const Bindings& b) {
     std::array<bool, kActionCount> out{};
     for (std::size_t a = 0; a < kActionCount; ++a)
@@ -26,6 +28,7 @@ std::array<bool, kActionCount> conflicts(const Bindings& b) {
         }
     return out;
 }
+
 RebindResult rebind(Bindings& b, Action action, std::size_t slot, int code) {
     RebindResult r;
     if (slot >= kSlots) return r;
