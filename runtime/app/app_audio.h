@@ -7,7 +7,7 @@
 #include "audio/loopback_recording.h"
 #include "core/result.h"
 #include "menu_style.h"
-#include "options.h"
+#include "runtime/model/options.h"
 
 #include <filesystem>
 #include <memory>

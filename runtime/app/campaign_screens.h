@@ -3,9 +3,9 @@
 // campaign level is won, the campaign-complete screen with every level and the totals, and the list of
 // levels to play one at a time (the shipped levels/ folder and the player's own, each level with its name,
 // a broken file with its error instead of a button).
-#include "campaign_progress.h"
-#include "campaign_save.h"
 #include "level/level_catalog.h"
+#include "runtime/model/campaign_progress.h"
+#include "runtime/model/campaign_save.h"
 #include "shell/app_shell.h"
 
 #include <string>

@@ -14,8 +14,6 @@ namespace ks::runtime {
 //   --msaa N
 const std::vector<std::string>& game_app_options();
 const std::vector<std::string>& game_app_flags(); // options without a value (--dojo)
-// The screens --screen accepts.
-const std::vector<std::string>& game_app_screens();
 
 // Runs the app; returns the process exit code (0 ok, 1 runtime failure, 2 bad input, 3 no display).
 int run_game_app(const CommandLine& cl, const shell::ShellConfig& shell_config);

@@ -2,15 +2,13 @@
 // The GameApp class behind run_game_app (game_app.h): the screens' state machine, the loaded session and
 // the automation hooks. Shared by game_app.cpp (the state machine), game_app_frame.cpp (one frame: keys,
 // scene, HUD, menus), game_app_start.cpp (the automation's first screen), game_app_campaign.cpp (the
-// campaign and the custom level list), game_app_names.cpp (option and
-// screen names), game_script.cpp (--input-script), game_status.cpp (--status-file) and run_game_app.cpp (the
+// campaign and the custom level list), game_app_names.cpp (option
+// names), game_script.cpp (--input-script), game_status.cpp (--status-file) and run_game_app.cpp (the
 // command line); not for other code.
 #include "game_app.h"
 
 #include "anim/dojo.h"
 #include "app_audio.h"
-#include "campaign_progress.h"
-#include "campaign_save.h"
 #include "campaign_screens.h"
 #include "controls_screen.h"
 #include "core/files.h"
@@ -20,17 +18,20 @@
 #include "game/game.h"
 #include "hud_feedback.h"
 #include "input_events.h"
-#include "input_script.h"
 #include "level/level_io.h"
 #include "logic_hud.h"
 #include "menu_style.h"
-#include "options.h"
 #include "player_input.h"
 #include "render/scene_renderer.h"
+#include "runtime/model/campaign_progress.h"
+#include "runtime/model/campaign_save.h"
+#include "runtime/model/input_script.h"
+#include "runtime/model/options.h"
+#include "runtime/model/screen_table.h"
+#include "runtime/model/step_budget.h"
 #include "screens.h"
 #include "shell/hud.h"
 #include "soundscape/soundscape.h"
-#include "step_budget.h"
 #include "world_view.h"
 
 #define GLFW_INCLUDE_NONE
@@ -45,27 +46,8 @@
 
 namespace ks::runtime {
 
-enum class Screen {
-    Loading,
-    Menu,
-    HowTo,
-    Credits,
-    Options,
-    Controls, // Options > Controls
-    CustomLevels,
-    CampaignChoice, // Campaign with a saved run: Continue or New campaign
-    Playing,
-    Paused,
-    Dead,
-    Won,              // a single level won (Play, a custom level)
-    Summary,          // a campaign level won, more to come
-    CampaignComplete, // the campaign's last level won
-};
-
-const char* screen_name(Screen s);
-
-// At most this many fixed steps per frame (0.25 s of game time; step_budget.h says why): 4 frames per
-// second still play in real time, slower machines in slow motion.
+// At most this many fixed steps per frame (0.25 s of game time; runtime/model/step_budget.h says why): 4
+// frames per second still play in real time, slower machines in slow motion.
 constexpr int kMaxStepsPerFrame = 30;
 
 // One loaded level with its game and view. The Dojo's controller borrows the game's clips, so it goes first.
@@ -117,8 +99,8 @@ class GameApp {
 
     // Command-line automation: the screen to show and the scenario to set up (tests and screenshots).
     struct Automation {
-        std::string screen;
-        bool dojo = false;
+        std::optional<Screen> screen; // --screen (runtime/model/screen_table.h)
+        bool dojo = false;            // --dojo, or --screen dojo
         std::optional<std::array<float, 5>> warp;
         char dojo_key = 0;
         double dojo_time = -1.0;
@@ -131,7 +113,7 @@ class GameApp {
         bool start_campaign = false;     // --campaign given: play it from its first level at once
     };
     Result<void> start(const Automation& a);
-    Result<void> set_up_scenario(const Automation& a, const std::string& screen);
+    Result<void> set_up_scenario(const Automation& a, std::optional<Screen> screen);
     int run();
 
   private:

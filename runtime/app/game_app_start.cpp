@@ -5,8 +5,18 @@
 namespace ks::runtime {
 
 namespace {
-bool campaign_screen(const std::string& screen) {
-    return screen == "summary" || screen == "campaign-complete";
+// The screens --screen reaches by winning the campaign's levels.
+bool campaign_screen(std::optional<Screen> screen) {
+    return screen == Screen::Summary || screen == Screen::CampaignComplete;
+}
+// The screens --screen shows over a level being played (the Dojo is one too).
+bool world_screen(std::optional<Screen> screen) {
+    return screen == Screen::Playing || screen == Screen::Paused || screen == Screen::Dead ||
+           screen == Screen::Won || campaign_screen(screen);
+}
+// "--screen win: ..." for an error met while setting up that screen.
+Error screen_error(Screen screen, const Error& e) {
+    return Error("--screen " + std::string(command_line_name(screen)) + ": " + e.message, e.where, e.hint);
 }
 } // namespace
 
@@ -23,27 +33,26 @@ Result<void> GameApp::start(const Automation& a) {
     campaign_path_ = a.campaign.empty() ? paths::level("campaign.json") : a.campaign;
     // A screenshot without --screen shows the game (what the render-only view used to show, now playable);
     // a scripted screenshot run starts where a player does, at the loading screen.
-    const std::string screen =
-        a.screen.empty() && shell_.screenshot_mode() && !a.scripted ? "play" : a.screen;
-    const bool dojo = a.dojo || screen == "dojo";
+    const std::optional<Screen> screen =
+        !a.screen && shell_.screenshot_mode() && !a.scripted ? Screen::Playing : a.screen;
+    const bool dojo = a.dojo;
     if (!dojo && (a.start_campaign || campaign_screen(screen))) {
         auto campaign = level::load_campaign(campaign_path_);
         if (!campaign) return campaign.error();
         campaign_.emplace(std::move(*campaign), campaign_path_);
     }
-    const bool wants_world = screen == "play" || screen == "pause" || screen == "death" || screen == "win" ||
-                             campaign_screen(screen) || dojo || (a.start_campaign && screen.empty());
+    const bool wants_world = world_screen(screen) || dojo || (a.start_campaign && !screen);
     const std::filesystem::path first = dojo        ? paths::level("dojo.json")
                                         : campaign_ ? campaign_->current_path()
                                                     : level_path_;
     load(first, dojo, wants_world ? Screen::Playing : Screen::Menu);
-    if (screen == "loading") {
+    if (screen == Screen::Loading) {
         // Stop half way: the bar shows progress and the label the step in hand.
         for (int i = 0; i < 6; ++i) step_loader();
         freeze_loader_ = true;
         return {};
     }
-    if (screen.empty() && !dojo) {
+    if (!screen && !dojo) {
         pending_warp_ = a.warp; // interactive: load across frames with the bar, then warp
         return {};
     }
@@ -53,7 +62,7 @@ Result<void> GameApp::start(const Automation& a) {
 }
 
 // After the first level has loaded: the player's place and shot, the Dojo's clip, then the screen asked for.
-Result<void> GameApp::set_up_scenario(const Automation& a, const std::string& screen) {
+Result<void> GameApp::set_up_scenario(const Automation& a, std::optional<Screen> screen) {
     auto& g = *session_->game;
     if (a.warp) {
         const auto& v = *a.warp;
@@ -81,44 +90,56 @@ Result<void> GameApp::set_up_scenario(const Automation& a, const std::string& sc
         session_->dojo_controller->advance(a.dojo_time);
         freeze_dojo_ = true;
     }
-    if (screen == "menu") screen_ = Screen::Menu;
-    if (screen == "howto") open_sub(Screen::HowTo);
-    if (screen == "credits") open_sub(Screen::Credits);
-    if (screen == "options") open_sub(Screen::Options);
-    if (screen == "controls") {
+    switch (screen.value_or(Screen::Playing)) {
+    case Screen::Menu:
+        screen_ = Screen::Menu;
+        break;
+    case Screen::HowTo:
+    case Screen::Credits:
+    case Screen::Options:
+        open_sub(*screen);
+        break;
+    case Screen::Controls:
         open_sub(Screen::Options);
         screen_ = Screen::Controls; // Back returns to Options
-    }
-    if (screen == "custom-levels") open_custom_levels();
-    if (screen == "campaign-choice") {
+        break;
+    case Screen::CustomLevels:
+        open_custom_levels();
+        break;
+    case Screen::CampaignChoice:
         if (!campaign_save_ || campaign_save_->won.empty() || campaign_save_->finished())
-            return Error("--screen campaign-choice: no campaign run in progress is saved",
-                         Location(campaign_save_path().string()),
-                         "win a campaign level first, or set XDG_DATA_HOME to a folder with a save");
+            return screen_error(*screen, Error("no campaign run in progress is saved",
+                                               Location(campaign_save_path().string()),
+                                               "win a campaign level first, or set XDG_DATA_HOME to a "
+                                               "folder with a save"));
         open_sub(Screen::CampaignChoice);
-    }
-    if (screen == "pause") pause();
-    if (screen == "death") {
+        break;
+    case Screen::Paused:
+        pause();
+        break;
+    case Screen::Dead:
         g.damage_player(1.0e6f);
         // Run the death camera to its end so the menu shows.
         for (int i = 0; i < 1000 && !g.death_camera().menu_ready; ++i) {
             advance({}, static_cast<float>(g.settings().step));
         }
         screen_ = Screen::Dead;
-    }
-    if (screen == "win" || campaign_screen(screen)) {
+        break;
+    case Screen::Won:
+    case Screen::Summary:
+    case Screen::CampaignComplete:
         // Win for real, at the control panel; the campaign-complete screen wins every level in turn.
-        if (auto won = win_at_panel(); !won)
-            return Error("--screen " + screen + ": " + won.error().message, won.error().where,
-                         won.error().hint);
-        while (screen == "campaign-complete" && campaign_ && !campaign_->finished()) {
+        if (auto won = win_at_panel(); !won) return screen_error(*screen, won.error());
+        while (screen == Screen::CampaignComplete && campaign_ && !campaign_->finished()) {
             next_level();
             if (auto done = finish_loading_now(); !done) return done;
-            if (auto won = win_at_panel(); !won)
-                return Error("--screen " + screen + ": " + won.error().message, won.error().where,
-                             won.error().hint);
+            if (auto won = win_at_panel(); !won) return screen_error(*screen, won.error());
         }
-        if (screen == "summary") screen_ = Screen::Summary; // also for a campaign of one level
+        if (screen == Screen::Summary) screen_ = Screen::Summary; // also for a campaign of one level
+        break;
+    case Screen::Loading: // stopped before the level loaded (start)
+    case Screen::Playing:
+        break;
     }
     // A menu's buttons take the mouse (a scripted run captured it when the level started).
     if (screen_ != Screen::Playing) input_.release(shell_.window(), events_.state());

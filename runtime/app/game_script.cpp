@@ -50,7 +50,7 @@ void GameApp::run_script(long long frame) {
                                          [&](const ui::ButtonRect& b) { return b.label == e.label; });
             if (it == buttons.end()) {
                 log::error("input script line ", e.line, " (frame ", frame, "): no button '", e.label,
-                           "' on the ", screen_name(screen_), " screen; wait more frames before clicking");
+                           "' on the ", status_name(screen_), " screen; wait more frames before clicking");
                 exit_code_ = 1;
                 quit_ = true;
                 return;

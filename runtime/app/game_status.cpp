@@ -19,7 +19,7 @@ void GameApp::write_status(const shell::FrameInfo& info) {
         s += line;
         s += '\n';
     };
-    add("screen %s", screen_name(screen_));
+    add("screen %s", std::string(status_name(screen_)).c_str());
     add("captured %d", input_.captured() ? 1 : 0);
     // The menu's error (a level or campaign that would not load): its first line, as the menu shows it.
     s += "error " + (error_.empty() ? std::string("-") : error_.substr(0, error_.find('\n'))) + "\n";

@@ -1,7 +1,7 @@
 #pragma once
 // The HUD's hit feedback over the crosshair: the hit marker when a shot hits a robot, and the red arcs on a
 // ring round the crosshair pointing where damage came from (feedback::Feedback::damage_arcs).
-#include "app/feedback.h"
+#include "runtime/model/feedback.h"
 
 #include <span>
 

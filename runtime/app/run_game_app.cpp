@@ -8,7 +8,6 @@
 #include "level/campaign.h"
 #include "level/level_io.h"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -31,10 +30,10 @@ void print_help() {
         "too;\n"
         "                    default levels/campaign.json)\n"
         "  --dojo            go straight to the Dojo (levels/dojo.json)\n"
-        "  --screen NAME     start on one screen: loading menu howto credits options pause death win play "
-        "dojo\n"
-        "                    summary campaign-complete (a campaign's levels won at their control panels)\n"
-        "                    custom-levels (the list of levels/ and the user's levels folder)\n"
+        "  --screen NAME     start on one screen: loading menu howto credits options controls custom-levels\n"
+        "                    campaign-choice play pause death win summary campaign-complete (summary and\n"
+        "                    campaign-complete win the campaign's levels at their control panels) or dojo;\n"
+        "                    the status file's names (paused, dead, won, ...) are taken too\n"
         "  --warp ...        put the player's feet at x,y,z facing yaw,pitch (degrees) before the first "
         "frame\n"
         "  --fire            fire one shot on the first step (after --warp)\n"
@@ -45,7 +44,7 @@ void print_help() {
         "  --audio-out F.wav record the sound mix to a 48 kHz stereo WAV instead of playing it (with\n"
         "                    --screenshot --frames the frames are a fixed 1/60 s: the same run, the same "
         "file)\n"
-        "  --input-script F  timed key/mouse events by frame (see runtime/app/input_script.h); with\n"
+        "  --input-script F  timed key/mouse events by frame (see runtime/model/input_script.h); with\n"
         "                    --screenshot the frames are a fixed 1/60 s, so the run is deterministic\n"
         "  --view MODEL      (renderer) one model on a turntable; --camera x,y,z,yaw,pitch: render-only "
         "view\n"
@@ -64,16 +63,16 @@ int run_game_app(const CommandLine& cl, const shell::ShellConfig& shell_config) 
         return 0;
     }
     GameApp::Automation automation;
-    automation.screen = cl.get_or("screen", "");
-    const auto& screens = game_app_screens();
-    if (!automation.screen.empty() &&
-        std::find(screens.begin(), screens.end(), automation.screen) == screens.end()) {
-        std::string names;
-        for (const std::string& name : screens) names += " " + name;
-        log::error("--screen '", automation.screen, "': not a screen; use one of", names);
-        return 2;
-    }
     automation.dojo = cl.has("dojo");
+    if (auto name = cl.get("screen"); name && !name->empty()) {
+        const auto request = parse_screen_request(*name);
+        if (!request) {
+            log::error("--screen '", *name, "': not a screen; use one of ", screen_request_names());
+            return 2;
+        }
+        automation.screen = request->screen;
+        automation.dojo = automation.dojo || request->dojo;
+    }
     if (auto status = cl.get("status-file")) automation.status_file = paths::resolve_user_path(*status);
     if (auto script = cl.get("input-script")) {
         const auto path = paths::resolve_user_path(*script);

@@ -33,14 +33,6 @@ void two_columns(const char* left, const char* right, float split) {
 }
 } // namespace
 
-std::string format_time(double seconds) {
-    if (!std::isfinite(seconds) || seconds < 0.0) seconds = 0.0;
-    const int minutes = static_cast<int>(seconds / 60.0);
-    char text[32];
-    std::snprintf(text, sizeof(text), "%d:%04.1f", minutes, seconds - minutes * 60.0);
-    return text;
-}
-
 void loading_screen(float fraction, const std::string& step, const shell::Fonts& fonts, float w, float h) {
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h, 1.25f);
     ui::begin_panel("##loading", "Killswitch", 560, 200, w, h, fonts);

@@ -1,8 +1,8 @@
 #pragma once
 // The game's screens as immediate-mode functions: each draws itself centred in the window and returns what
 // the player chose this frame. The app's state machine (game_app.cpp) decides what each choice does.
-#include "campaign_progress.h"
-#include "options.h"
+#include "runtime/model/campaign_progress.h"
+#include "runtime/model/options.h"
 #include "shell/app_shell.h"
 
 #include <string>
@@ -41,8 +41,5 @@ MenuAction how_to_play(const Options& options, const shell::Fonts& fonts, float 
 MenuAction credits(const shell::Fonts& fonts, float w, float h);
 // Edits `options` in place; `changed` is set when a value moved this frame.
 MenuAction options_panel(Options& options, bool& changed, const shell::Fonts& fonts, float w, float h);
-
-// "m:ss.s" for the win screen.
-std::string format_time(double seconds);
 
 } // namespace ks::runtime

@@ -1,6 +1,7 @@
 #include "world_view.h"
 
 #include "app/event_particles.h"
+#include "app/muzzle_lights.h"
 #include "level/entity_shapes.h"
 #include "render/view_model.h"
 
@@ -91,7 +92,7 @@ void WorldView::fill(const game::Game& game, float alpha, float fov_degrees, con
     for (const auto& d : game.doors()) scene_->set_door_open(d.entity_id, d.progress);
     for (const auto& l : game.lights()) scene_->set_light_on(l.entity_id, l.on);
     scene_->emit(instances_, lights_);
-    feedback_.add_lights(lights_, a * step_dt_); // muzzle flashes light their surroundings
+    add_muzzle_lights(feedback_, lights_, a * step_dt_); // muzzle flashes light their surroundings
 
     // Robots: interpolated placement, posed from their animation player.
     const auto robots = game.robots();

@@ -3,18 +3,17 @@
 // the robots posed from their animation poses, pickups floating and spinning, the gas cylinders, the
 // first-person rifle with recoil, and the feedback spawned from the game's events: particles (muzzle
 // flashes, impact sparks, explosions), muzzle-flash lights, camera shake, damage-direction arcs for the HUD
-// and the red flash of a hit robot (event_particles.h, feedback.h). Positions are interpolated between the
-// last two fixed steps.
-// Robots, pickups and cylinders are taken out of the level before the LevelScene is built: they move or
-// disappear, so this view draws them from the game's state instead.
+// and the red flash of a hit robot (event_particles.h, runtime/model/feedback.h). Positions are interpolated
+// between the last two fixed steps. Robots, pickups and cylinders are taken out of the level before the
+// LevelScene is built: they move or disappear, so this view draws them from the game's state instead.
 #include "anim/rig_binding.h"
-#include "app/feedback.h"
 #include "game/game.h"
 #include "level/level.h"
 #include "render/asset_library.h"
 #include "render/level_scene.h"
 #include "render/particles.h"
 #include "render/scene_renderer.h"
+#include "runtime/model/feedback.h"
 
 #include <memory>
 #include <optional>

@@ -1,45 +1,13 @@
-#pragma once
-// `killswitch --input-script FILE`: keyboard and mouse events stamped with the frame they happen in, fed
-// through the same handlers as GLFW's callbacks (input_events.h), so PlayerInput and the ImGui menus see
-// them exactly as real input. With --screenshot the frames are a fixed 1/60 s, so a script is deterministic
-// whatever the machine's frame rate. Header-only so the tests parse scripts without a window.
-//
-//   # comment
-//   <frame> key <name> down|up|tap       keys: a-z, 0-9, space, escape, enter, tab, up, down, left, right
-//   <frame> mouse left|right down|up|click
-//   <frame> move <x> <y>                  the cursor to window pixel (x, y)
-//   <frame> look <dx> <dy>                move the cursor by (dx, dy) pixels (mouse look while captured)
-//   <frame> click <button label>          move onto the menu button with that label (drawn last frame), click
-//   <frame> pad <button> down|up|tap      a gamepad button: a b x y lb rb back start dup ddown dleft dright
-//                                         (tap: down this frame, up the next: the pad is polled once a frame)
-//   <frame> pad <axis> <value>            a gamepad axis: lx ly rx ry (-1..1, up is -1) lt rt (-1..1)
-//   <frame> quit                          end the program (exit 0)
-//
-// Frames count from 0 (the first frame the window draws) and must not decrease down the file.
-#include "core/result.h"
+#include "runtime/model/input_script.h"
 
 #include <cmath>
 #include <cstdlib>
 #include <iterator>
 #include <sstream>
-#include <string>
-#include <vector>
 
 namespace ks::runtime {
 
-struct ScriptEvent {
-    enum class Kind { Key, Mouse, Move, Look, ClickButton, PadButton, PadAxis, Quit };
-    long long frame = 0;
-    Kind kind = Kind::Key;
-    int code = 0;   // GLFW key or mouse button
-    int action = 0; // 1 down, 0 up, 2 tap / click (down then up)
-    double x = 0.0, y = 0.0;
-    std::string label; // ClickButton
-    int line = 0;      // for runtime errors ("input script line 7: no button 'Play' on this screen")
-};
-
-// GLFW key codes for the names above (checked against glfw3.h in input_events.cpp); -1 for unknown names.
-inline int script_key_code(const std::string& name) {
+int script_key_code(const std::string& name) {
     if (name.size() == 1 && name[0] >= 'a' && name[0] <= 'z') return 'A' + (name[0] - 'a');
     if (name.size() == 1 && name[0] >= '0' && name[0] <= '9') return name[0];
     if (name == "space") return 32;
@@ -54,8 +22,7 @@ inline int script_key_code(const std::string& name) {
     return -1;
 }
 
-// shell::GamepadButton / GamepadAxis for the script's pad names; -1 for unknown names.
-inline int script_pad_button(const std::string& name) {
+int script_pad_button(const std::string& name) {
     static const char* const names[] = {"a",      "b",    "x",      "y",     "lb",
                                         "rb",     "back", "start",  "guide", "lthumb",
                                         "rthumb", "dup",  "dright", "ddown", "dleft"};
@@ -63,14 +30,15 @@ inline int script_pad_button(const std::string& name) {
         if (name == names[i]) return i;
     return -1;
 }
-inline int script_pad_axis(const std::string& name) {
+
+int script_pad_axis(const std::string& name) {
     static const char* const names[] = {"lx", "ly", "rx", "ry", "lt", "rt"};
     for (int i = 0; i < static_cast<int>(std::size(names)); ++i)
         if (name == names[i]) return i;
     return -1;
 }
 
-inline Result<std::vector<ScriptEvent>> parse_input_script(const std::string& text, const std::string& file) {
+Result<std::vector<ScriptEvent>> parse_input_script(const std::string& text, const std::string& file) {
     std::vector<ScriptEvent> events;
     std::istringstream lines(text);
     std::string line;

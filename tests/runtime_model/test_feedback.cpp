@@ -1,19 +1,14 @@
-// The game's visual feedback (runtime/app/feedback.h, event_particles.h) without a window: damage arcs point
-// where the damage came from as the player turns and fade in 1 s, explosions shake the view less with
-// distance and not at all after 0.5 s, a hit robot is red and then not, a shot lights its surroundings for a
-// few steps, and each event spawns the right particles. Then the game itself, through its status file and
-// a screenshot: a shot makes a light, then none; a robot hit turns red.
+// The game's hit feedback (runtime/model/feedback.h) without a window: damage arcs point where the damage
+// came from as the player turns and fade in 1 s, explosions shake the view less with distance and not at all
+// after 0.5 s, a hit robot is red and then not, a shot lights its surroundings for a few steps. The particles
+// and the game itself are tests/runtime/test_play_feedback.cpp's.
 #include "game/game_test_levels.h"
-#include "runtime/app/event_particles.h"
-#include "runtime/app/feedback.h"
-#include "runtime/screen_image.h"
-#include "test_support.h"
+#include "runtime/model/feedback.h"
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 using namespace ks;
 using namespace ks::runtime;
@@ -174,28 +169,24 @@ TEST_CASE("a hit robot is tinted red at the hit, less after half a second, and n
     CHECK(hit_tint(g->robots()[0].hit_flash) == Vec3(0.0f));
 }
 
-TEST_CASE("a shot's muzzle light is there for a few steps, then none; it goes first in the light list") {
+TEST_CASE("a shot's muzzle light is there for a few steps, then none; warm, and redder for a robot") {
     Feedback f;
     const Vec3 eye(0.0f, 3.0f, 0.0f), tip(0.3f, 2.75f, -1.0f);
-    std::vector<render::Light> lights(5); // the level's lights
-    lights.reserve(32);
+    std::array<MuzzleLight, Feedback::kMaxLights> live;
     f.update(kStep);
     f.on_event(event_at(game::EventType::ShotFired, tip), eye);
     int steps_lit = 0;
     for (int i = 0; i < 20; ++i) {
-        std::vector<render::Light> frame = lights;
-        f.add_lights(frame);
-        if (frame.size() == 6) {
+        const std::size_t n = f.muzzle_lights(live);
+        CHECK(n <= 1);
+        if (n == 1) {
             ++steps_lit;
-            const render::Light& l = frame[0];
+            const MuzzleLight& l = live[0];
             CHECK(l.position == tip);
-            CHECK(l.dynamic); // lights baked walls on the fast path too
             CHECK(l.color.r > l.color.g);
             CHECK(l.color.g > l.color.b); // warm
             CHECK(l.intensity > 0.0f);
             CHECK(l.range > 3.0f);
-        } else {
-            CHECK(frame.size() == 5);
         }
         f.update(kStep);
     }
@@ -206,94 +197,10 @@ TEST_CASE("a shot's muzzle light is there for a few steps, then none; it goes fi
     CHECK(muzzle_light_intensity(kMuzzleLightSeconds) == 0.0f);
     // A robot's shot lights its hand, redder; many shots at once keep at most kMaxLights.
     for (int i = 0; i < 30; ++i) f.on_event(event_at(game::EventType::RobotShot, Vec3(5, 2, 0)), eye);
-    std::vector<render::Light> frame;
-    f.add_lights(frame);
-    CHECK(frame.size() == Feedback::kMaxLights);
-    CHECK(frame[0].color.g < 0.6f);
-}
-
-TEST_CASE("event particles: sparks out of a wall, a blue crackle on a robot, none on the player") {
-    auto lv = game::test::flat_level();
-    game::test::add_robot(lv, Vec3(0, 0, -20));
-    lv.add(level::EntityType::GasCylinder, Vec3(4, 0, -10), "gas");
-    auto g = game::test::make_game(lv);
-    const int robot_id = g->robots()[0].entity_id, cylinder_id = g->cylinders()[0].entity_id;
-    game::Event hit = event_at(game::EventType::Hit, Vec3(0, 2, -5));
-    hit.end = Vec3(0, 0, 1); // a wall facing the player
-    CHECK(hit_target(*g, hit) == HitTarget::Scenery);
-    EventEmitters out;
-    REQUIRE(event_particles(hit, HitTarget::Scenery, out) == 2);
-    CHECK(out[0].texture == "spark");
-    CHECK(glm::dot(out[0].drift, hit.end) > 1.0f); // sprayed out of the wall ...
-    CHECK(out[0].gravity > 0.0f);                  // ... falling
-    CHECK(out[0].position.z > hit.position.z);     // in front of the surface
-    CHECK(out[0].color_start.r > out[0].color_start.b);
-    CHECK(out[1].texture == "smoke"); // and a puff of dust
-    CHECK(validate(out[0]));
-    CHECK(validate(out[1]));
-
-    game::Event on_robot = hit;
-    on_robot.entity = robot_id;
-    CHECK(hit_target(*g, on_robot) == HitTarget::Robot);
-    REQUIRE(event_particles(on_robot, HitTarget::Robot, out) == 1);
-    CHECK(out[0].color_end.b > out[0].color_end.r); // blue, unlike the wall's orange
-    CHECK(out[0].per_frame > 8);
-
-    game::Event on_cylinder = hit;
-    on_cylinder.entity = cylinder_id;
-    CHECK(hit_target(*g, on_cylinder) == HitTarget::Cylinder);
-
-    game::Event on_player = hit;
-    on_player.amount = 10.0f; // a robot's shot that hit the player: the HUD shows it
-    CHECK(hit_target(*g, on_player) == HitTarget::Player);
-    CHECK(event_particles(on_player, HitTarget::Player, out) == 0);
-
-    CHECK(event_particles(event_at(game::EventType::ShotFired, Vec3(0, 3, -1)), HitTarget::Scenery, out) ==
-          1);
-    CHECK(event_particles(event_at(game::EventType::Explosion, Vec3(0, 1, -9), 7.0f), HitTarget::Scenery,
-                          out) == 2);
-    CHECK(event_particles(event_at(game::EventType::PickupTaken, Vec3(0)), HitTarget::Scenery, out) == 0);
-}
-
-TEST_CASE("the game: a shot lights up for a few frames then not, and the robot it hits turns red") {
-    REQUIRE_MESSAGE(test::have_display(),
-                    "no DISPLAY: GL screen tests cannot run (./run.sh test runs them under xvfb-run)");
-    test::ScratchDir dir;
-    // Robot 42 of the main level stands 7 ahead of this spot; the shot hits its chest.
-    auto run = [&](const std::string& name, const std::string& args, int frames) {
-        const auto png = dir / (name + ".png"), status = dir / (name + ".txt");
-        auto r = test::run_command("env XDG_CONFIG_HOME=" + (dir / "config").string() + " " +
-                                   (test::bin_dir() / "killswitch").string() +
-                                   " --width 480 --height 270 --screen play --warp 35,0,17,0,-11 --frames " +
-                                   std::to_string(frames) + " --screenshot " + png.string() +
-                                   " --status-file " + status.string() + " " + args);
-        INFO(r.output);
-        REQUIRE(r.exit_code == 0);
-        std::ifstream in(status);
-        std::stringstream text;
-        text << in.rdbuf();
-        return std::pair{test::load_png(png), text.str()};
-    };
-    const auto [fired, fired_status] = run("fired", "--fire", 2);
-    const auto [later, later_status] = run("later", "--fire", 12);
-    const auto [calm, calm_status] = run("calm", "", 2);
-    CHECK(fired_status.find("feedback arcs 0 shakes 0 lights 1") != std::string::npos);
-    CHECK(later_status.find("lights 0") != std::string::npos);
-    CHECK(calm_status.find("lights 0") != std::string::npos);
-    // The robot's body (centre of the picture, below the crosshair) is red after the hit.
-    auto redness = [](const test::Image& img) {
-        double sum = 0.0;
-        int n = 0;
-        for (int y = img.height * 55 / 100; y < img.height * 62 / 100; ++y)
-            for (int x = img.width * 47 / 100; x < img.width * 53 / 100; ++x, ++n) {
-                const unsigned char* p = img.at(x, y);
-                sum += p[0] - 0.5 * (p[1] + p[2]);
-            }
-        return sum / n;
-    };
-    REQUIRE(calm.width == 480);
-    MESSAGE("robot redness: calm " << redness(calm) << ", just hit " << redness(fired) << ", 0.2 s later "
-                                   << redness(later));
-    CHECK(redness(fired) > redness(calm) + 40.0);
-    CHECK(redness(later) > redness(calm) + 20.0);
+    CHECK(f.muzzle_lights(live) == Feedback::kMaxLights);
+    CHECK(live[0].color.g < 0.6f);
+    // Later in the frame (the interpolation past the last step) a light is dimmer, and gone past 60 ms.
+    CHECK(f.muzzle_lights(live, 0.03f) == Feedback::kMaxLights);
+    CHECK(live[0].intensity < muzzle_light_intensity(0.0f));
+    CHECK(f.muzzle_lights(live, kMuzzleLightSeconds) == 0);
 }

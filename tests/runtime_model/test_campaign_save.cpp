@@ -1,11 +1,11 @@
-// The campaign save (runtime/app/campaign_save.h is GL-free and header-only, so it is tested directly): the
-// round trip, a run resumed at its next level, corrupt and incomplete files reported with the file and field
-// and ignored but kept, a failed write that leaves the old save whole, and where the save and the player's
-// levels live (XDG_DATA_HOME set, unset, relative).
+// The campaign save (runtime/model/campaign_save.h, tested without a window): the round trip, a run resumed
+// at its next level, corrupt and incomplete files reported with the file and field and ignored but kept, a
+// failed write that leaves the old save whole, and where the save and the player's levels live
+// (XDG_DATA_HOME set, unset, relative).
 #include "core/files.h"
 #include "core/log.h"
 #include "core/paths.h"
-#include "runtime/app/campaign_save.h"
+#include "runtime/model/campaign_save.h"
 #include "test_support.h"
 
 #include <doctest/doctest.h>

@@ -1,36 +1,17 @@
-#pragma once
-// Readable names for the keys and mouse buttons a player can bind ("W", "Space", "Left Shift", "Mouse Left"),
-// as options.json stores them and the Controls screen shows them. Codes are GLFW key codes (physical
-// positions: "W" is the key left of E on any layout); mouse buttons are kMouseBase + GLFW button, so one int
-// names either. GL-free and header-only so the tests use it directly; the values are checked against
-// glfw3.h in player_input.cpp.
+#include "runtime/model/key_names.h"
+
 #include <array>
-#include <cstdio>
-#include <string>
-#include <string_view>
 
 namespace ks::runtime {
 
-inline constexpr int kNoKey = -1;        // an empty binding slot
-inline constexpr int kKeyEscape = 256;   // GLFW_KEY_ESCAPE: reserved (pause, back, cancel a rebind)
-inline constexpr int kMouseBase = 1000;  // kMouseBase + GLFW_MOUSE_BUTTON_n
-inline constexpr int kMouseButtons = 8;  // GLFW_MOUSE_BUTTON_LAST + 1
-inline constexpr int kLastKeyCode = 348; // GLFW_KEY_LAST
-inline constexpr int kKeyUp = 265, kKeyDown = 264, kKeyLeft = 263, kKeyRight = 262;
-inline constexpr int kKeySpace = 32;
-
-inline bool is_mouse_code(int code) {
-    return code >= kMouseBase && code < kMouseBase + kMouseButtons;
-}
-
-namespace detail {
+namespace {
 struct NamedKey {
     int code;
     const char* name;
 };
 // Every named non-printable key GLFW has, plus the punctuation keys by name ("Minus", not "-", which the
 // menus use for an empty slot); letters, digits, F-keys and the keypad digits are generated in key_name().
-inline constexpr std::array<NamedKey, 54> kNamedKeys{{
+constexpr std::array<NamedKey, 54> kNamedKeys{{
     {32, "Space"},
     {39, "Apostrophe"},
     {44, "Comma"},
@@ -86,22 +67,24 @@ inline constexpr std::array<NamedKey, 54> kNamedKeys{{
     {kMouseBase + 5, "Mouse 6"},
     {kMouseBase + 6, "Mouse 7"},
 }};
-} // namespace detail
+} // namespace
 
-// "W", "7", "F5", "Keypad 3", "Space", "Mouse Left"; "" for kNoKey and codes without a name.
-inline std::string key_name(int code) {
+bool is_mouse_code(int code) {
+    return code >= kMouseBase && code < kMouseBase + kMouseButtons;
+}
+
+std::string key_name(int code) {
     if (code >= 'A' && code <= 'Z') return std::string(1, static_cast<char>(code));
     if (code >= '0' && code <= '9') return std::string(1, static_cast<char>(code));
     if (code >= 290 && code <= 314) return "F" + std::to_string(code - 290 + 1); // F1..F25
     if (code >= 320 && code <= 329) return "Keypad " + std::to_string(code - 320);
     if (code == kMouseBase + 7) return "Mouse 8";
-    for (const auto& k : detail::kNamedKeys)
+    for (const auto& k : kNamedKeys)
         if (k.code == code) return k.name;
     return "";
 }
 
-// The code for a name key_name() gives (case-insensitive); kNoKey for "" and for names it does not know.
-inline int key_code(std::string_view name) {
+int key_code(std::string_view name) {
     if (name.empty()) return kNoKey;
     auto lower = [](std::string_view s) {
         std::string out(s);
@@ -115,7 +98,7 @@ inline int key_code(std::string_view name) {
     for (int code = 290; code <= 329; ++code)
         if (!key_name(code).empty() && lower(key_name(code)) == wanted) return code;
     if (wanted == "mouse 8") return kMouseBase + 7;
-    for (const auto& k : detail::kNamedKeys)
+    for (const auto& k : kNamedKeys)
         if (lower(k.name) == wanted) return k.code;
     return kNoKey;
 }

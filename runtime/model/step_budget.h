@@ -3,8 +3,7 @@
 // a hitch (a level loading, a window drag) or below a few frames per second that is a burst of steps with no
 // input between them, and when steps are slow, a spiral (each frame slower than the last, so it asks for
 // more steps still). The budget runs at most `max_steps` per frame and drops the rest: below
-// 1 / (max_steps · step) frames per second the game runs in slow motion instead. Header-only (tested
-// without a window).
+// 1 / (max_steps · step) frames per second the game runs in slow motion instead.
 namespace ks::runtime {
 
 class StepBudget {
@@ -13,14 +12,7 @@ class StepBudget {
     // Call once per frame, before (or after) that frame's steps.
     void new_frame() { used_ = 0; }
     // True when one more step may run this frame; false counts a dropped step.
-    bool take() {
-        if (used_ >= max_) {
-            ++dropped_;
-            return false;
-        }
-        ++used_;
-        return true;
-    }
+    bool take();
     int max_steps() const { return max_; }
     long long dropped() const { return dropped_; }
 

@@ -2,10 +2,10 @@
 // count once), mouse look that sums to the same turn at any frame rate, the per-frame step budget that
 // keeps a slow machine from spiralling, and the --input-script parser with its errors.
 #include "core/fixed_step.h"
-#include "runtime/app/input_events.h"
-#include "runtime/app/input_script.h"
-#include "runtime/app/player_input.h"
-#include "runtime/app/step_budget.h"
+#include "runtime/model/input_script.h"
+#include "runtime/model/input_state.h"
+#include "runtime/model/keyboard_mouse_input.h"
+#include "runtime/model/step_budget.h"
 
 #include <doctest/doctest.h>
 

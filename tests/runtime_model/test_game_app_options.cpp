@@ -1,8 +1,8 @@
-// The runtime's options file (runtime/app/options.h is GL-free and header-only, so it is tested directly):
+// The runtime's options file (runtime/model/options.h, tested without a window):
 // round trip, atomic write into a new folder, and every kind of bad file giving defaults plus a warning.
 #include "core/files.h"
 #include "core/log.h"
-#include "runtime/app/options.h"
+#include "runtime/model/options.h"
 #include "test_support.h"
 
 #include <doctest/doctest.h>

@@ -1,13 +1,12 @@
-// Key bindings (runtime/app/key_bindings.h, key_names.h, controls_screen.h's finish_rebind and
-// player_input.h's keyboard_mouse_input are GL-free and header-only, so they are tested directly): the
-// defaults, names both ways, the options.json round trip, bad entries giving the defaults and a warning,
-// conflicts, the swap on rebind, reset, and the game's Input read through a rebound key from synthetic key
-// state.
+// Key bindings (runtime/model/key_bindings.h, key_names.h, controls_state.h's finish_rebind and
+// keyboard_mouse_input.h, without a window): the defaults, names both ways, the options.json round trip, bad
+// entries giving the defaults and a warning, conflicts, the swap on rebind, reset, and the game's Input read
+// through a rebound key from synthetic key state.
 #include "core/log.h"
-#include "runtime/app/controls_screen.h"
-#include "runtime/app/key_bindings.h"
-#include "runtime/app/options.h"
-#include "runtime/app/player_input.h"
+#include "runtime/model/controls_state.h"
+#include "runtime/model/key_bindings.h"
+#include "runtime/model/keyboard_mouse_input.h"
+#include "runtime/model/options.h"
 #include "test_support.h"
 
 #include <doctest/doctest.h>

@@ -1,9 +1,9 @@
-// The runtime's GL-free campaign and HUD state: CampaignProgress (levels in order, results, totals),
-// accuracy text, the "Objective complete" banner's timer and the objective list's rows.
+// The runtime model's campaign and HUD state: CampaignProgress (levels in order, results, totals),
+// accuracy and time texts, the "Objective complete" banner's timer and the objective list's rows.
 #include "game/game_test_levels.h"
 #include "level/level_io.h"
-#include "runtime/app/campaign_progress.h"
-#include "runtime/app/logic_hud.h"
+#include "runtime/model/campaign_progress.h"
+#include "runtime/model/hud_presentation.h"
 #include "test_support.h"
 
 #include <doctest/doctest.h>
@@ -66,6 +66,18 @@ TEST_CASE("accuracy: hits over shots as a whole percent, a dash without a shot")
     CHECK(accuracy_text(0, 0) == "-");
     CHECK(accuracy_text(9, 4) == "100 %"); // never above 100
     CHECK(accuracy_text(-1, 4) == "0 %");
+}
+
+TEST_CASE("level time: minutes, seconds and tenths; never 60 seconds; nothing that is not a time") {
+    CHECK(format_time(0.0) == "0:00.0");
+    CHECK(format_time(5.2) == "0:05.2");
+    CHECK(format_time(16.43) == "0:16.4");
+    CHECK(format_time(125.36) == "2:05.4");
+    CHECK(format_time(59.96) == "1:00.0"); // rounded before it is split
+    CHECK(format_time(3600.0) == "60:00.0");
+    CHECK(format_time(-3.0) == "0:00.0");
+    CHECK(format_time(NAN) == "0:00.0");
+    CHECK(format_time(INFINITY) == "0:00.0");
 }
 
 TEST_CASE(

@@ -1,13 +1,9 @@
 #pragma once
 // Where a campaign run stands: the campaign, the level being played, and the result of each level won so far
-// (time, robots destroyed, shots and hits), for the summary and campaign-complete screens. GL-free and
-// header-only so the tests use it directly (runtime/ sources are compiled only into the killswitch binary).
+// (time, robots destroyed, shots and hits), for the summary and campaign-complete screens.
 #include "level/campaign.h"
 
-#include <algorithm>
-#include <cmath>
 #include <cstddef>
-#include <cstdio>
 #include <filesystem>
 #include <span>
 #include <string>
@@ -27,13 +23,9 @@ struct LevelResult {
 };
 
 // "75 %" of the shots that hit, or "-" without a shot (nothing to measure).
-inline std::string accuracy_text(int hits, int shots) {
-    if (shots <= 0) return "-";
-    const double percent = 100.0 * static_cast<double>(std::max(0, hits)) / static_cast<double>(shots);
-    char text[32];
-    std::snprintf(text, sizeof(text), "%d %%", static_cast<int>(std::lround(std::min(percent, 100.0))));
-    return text;
-}
+std::string accuracy_text(int hits, int shots);
+// "m:ss.s", the time a level took on the win screens ("0:00.0" for anything not a time).
+std::string format_time(double seconds);
 
 class CampaignProgress {
   public:
@@ -52,43 +44,18 @@ class CampaignProgress {
     bool finished() const { return results_.size() >= count(); }
 
     // The current level was won with `result` (its title is the campaign's).
-    void record_win(LevelResult result) {
-        if (finished()) return;
-        result.title = current().title;
-        if (results_.size() > index_) results_.resize(index_);
-        results_.push_back(std::move(result));
-    }
+    void record_win(LevelResult result);
     // On to the next level after a win; false when there is none (or the current one is not won yet).
-    bool advance() {
-        if (results_.size() <= index_ || on_last_level()) return false;
-        ++index_;
-        return true;
-    }
+    bool advance();
 
     // Resumes a saved run (campaign_save.h): `won` are the first levels' results; play goes on at the next
     // level (the last one when every level was won). Results past the campaign's end are dropped.
-    void restore(std::span<const LevelResult> won) {
-        results_.assign(won.begin(),
-                        won.begin() + static_cast<std::ptrdiff_t>(std::min(won.size(), count())));
-        for (std::size_t i = 0; i < results_.size(); ++i) results_[i].title = campaign_.levels[i].title;
-        index_ = std::min(results_.size(), count() - 1);
-    }
+    void restore(std::span<const LevelResult> won);
 
     std::span<const LevelResult> results() const { return results_; }
     const LevelResult* last_result() const { return results_.empty() ? nullptr : &results_.back(); }
     // The levels won so far, added up (the title is the campaign's name).
-    LevelResult totals() const {
-        LevelResult sum;
-        sum.title = campaign_.name;
-        for (const LevelResult& r : results_) {
-            sum.seconds += r.seconds;
-            sum.robots_killed += r.robots_killed;
-            sum.robots_total += r.robots_total;
-            sum.shots += r.shots;
-            sum.hits += r.hits;
-        }
-        return sum;
-    }
+    LevelResult totals() const;
 
   private:
     level::Campaign campaign_;

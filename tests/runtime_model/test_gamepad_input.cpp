@@ -1,11 +1,11 @@
-// The gamepad without a pad: synthetic GamepadState (shell/gamepad.h mirrors GLFWgamepadstate) through
-// GamepadInput (runtime/app/gamepad_input.h) into the game's Input — movement, look per step, jump, shots on
-// the trigger's pull, interact, the menus' B and Start — the radial dead zone (inside, the edge, diagonals,
-// NaN and out-of-range axes) and the menu navigation the pad feeds to ImGui.
-#include "runtime/app/gamepad_input.h"
-#include "runtime/app/input_script.h"
-#include "runtime/app/player_input.h"
-#include "shell/gamepad.h"
+// The gamepad without a pad: synthetic GamepadState (core/gamepad_state.h mirrors GLFWgamepadstate) through
+// GamepadInput (runtime/model/gamepad_input.h) into the game's Input — movement, look per step, jump, shots
+// on the trigger's pull, interact, the menus' B and Start — and the radial dead zone (inside, the edge,
+// diagonals, NaN and out-of-range axes). The menus' navigation is the shell's (test_gamepad_nav.cpp).
+#include "core/gamepad_state.h"
+#include "runtime/model/gamepad_input.h"
+#include "runtime/model/input_script.h"
+#include "runtime/model/keyboard_mouse_input.h"
 
 #include <doctest/doctest.h>
 
@@ -14,7 +14,6 @@
 
 using namespace ks;
 using namespace ks::runtime;
-using shell::GamepadState;
 
 namespace {
 constexpr float kStep = 1.0f / 120.0f;
@@ -76,12 +75,12 @@ TEST_CASE("dead zone: NaN, infinities and out-of-range values are safe") {
     CHECK(s.x == doctest::Approx(0.5f));
     // The state's own reading: NaN sticks at rest, NaN triggers released, values clamped.
     GamepadState p = pad();
-    p.axes[shell::kPadLeftX] = nan;
-    p.axes[shell::kPadRightTrigger] = nan;
-    p.axes[shell::kPadLeftY] = -3.0f;
-    CHECK(p.axis(shell::kPadLeftX) == 0.0f);
-    CHECK(p.axis(shell::kPadRightTrigger) == -1.0f);
-    CHECK(p.axis(shell::kPadLeftY) == -1.0f);
+    p.axes[kPadLeftX] = nan;
+    p.axes[kPadRightTrigger] = nan;
+    p.axes[kPadLeftY] = -3.0f;
+    CHECK(p.axis(kPadLeftX) == 0.0f);
+    CHECK(p.axis(kPadRightTrigger) == -1.0f);
+    CHECK(p.axis(kPadLeftY) == -1.0f);
     CHECK(p.axis(99) == 0.0f);
     CHECK_FALSE(p.button(-1));
     CHECK_FALSE(p.button(99));
@@ -98,9 +97,9 @@ TEST_CASE("gamepad: left stick moves, right stick looks by rate x step, sensitiv
     o.pad_dead_zone = 0.1f;
     GamepadInput g;
     GamepadState p = pad();
-    p.axes[shell::kPadLeftY] = -1.0f; // pushed up: forward
-    p.axes[shell::kPadLeftX] = 0.0f;
-    p.axes[shell::kPadRightX] = 1.0f; // full right: turn right (yaw negative)
+    p.axes[kPadLeftY] = -1.0f; // pushed up: forward
+    p.axes[kPadLeftX] = 0.0f;
+    p.axes[kPadRightX] = 1.0f; // full right: turn right (yaw negative)
     g.poll(p);
     game::Input in = step(g, o);
     CHECK(in.move_forward == doctest::Approx(1.0f));
@@ -108,13 +107,13 @@ TEST_CASE("gamepad: left stick moves, right stick looks by rate x step, sensitiv
     CHECK(in.look_yaw == doctest::Approx(-GamepadInput::kLookRate * kStep));
     CHECK(in.look_pitch == 0.0f);
     // Half tilt past the dead zone turns a quarter as fast (the curve is tilt squared).
-    p.axes[shell::kPadRightX] = 0.1f + 0.9f * 0.5f;
+    p.axes[kPadRightX] = 0.1f + 0.9f * 0.5f;
     g.poll(p);
     in = step(g, o);
     CHECK(in.look_yaw == doctest::Approx(-GamepadInput::kLookRate * kStep * 0.25f));
     // Right stick up looks up; invert Y flips it; sensitivity scales it.
-    p.axes[shell::kPadRightX] = 0.0f;
-    p.axes[shell::kPadRightY] = -1.0f;
+    p.axes[kPadRightX] = 0.0f;
+    p.axes[kPadRightY] = -1.0f;
     g.poll(p);
     CHECK(step(g, o).look_pitch == doctest::Approx(GamepadInput::kLookRate * kStep));
     o.invert_y = true;
@@ -126,7 +125,7 @@ TEST_CASE("gamepad: left stick moves, right stick looks by rate x step, sensitiv
     in = step(g, o);
     CHECK(in == game::Input{});
     // Keys and pad together stay within -1..1.
-    p.axes[shell::kPadLeftY] = -1.0f;
+    p.axes[kPadLeftY] = -1.0f;
     g.poll(p);
     game::Input both;
     both.move_forward = 1.0f;
@@ -141,8 +140,8 @@ TEST_CASE("gamepad: left stick moves, right stick looks by rate x step, sensitiv
 TEST_CASE("gamepad: A jumps while held, X interacts once, the trigger shoots once per pull") {
     GamepadInput g;
     GamepadState p = pad();
-    p.buttons[shell::kPadA] = true;
-    p.buttons[shell::kPadX] = true;
+    p.buttons[kPadA] = true;
+    p.buttons[kPadX] = true;
     g.poll(p);
     game::Input in = step(g);
     CHECK(in.jump);
@@ -158,7 +157,7 @@ TEST_CASE("gamepad: A jumps while held, X interacts once, the trigger shoots onc
     CHECK_FALSE(step(g).jump);
     // Trigger: past half way fires once; held, nothing more; it must come back under 0.3 before the next.
     auto trigger = [&](float pulled) { // 0..1 → GLFW's -1..1
-        p.axes[shell::kPadRightTrigger] = pulled * 2.0f - 1.0f;
+        p.axes[kPadRightTrigger] = pulled * 2.0f - 1.0f;
         g.poll(p);
     };
     trigger(0.4f);
@@ -176,7 +175,7 @@ TEST_CASE("gamepad: A jumps while held, X interacts once, the trigger shoots onc
     CHECK(step(g).fire);
     // The left trigger does nothing.
     trigger(0.0f);
-    p.axes[shell::kPadLeftTrigger] = 1.0f;
+    p.axes[kPadLeftTrigger] = 1.0f;
     g.poll(p);
     CHECK_FALSE(step(g).fire);
 }
@@ -184,65 +183,38 @@ TEST_CASE("gamepad: A jumps while held, X interacts once, the trigger shoots onc
 TEST_CASE("gamepad: B and Start are edges for the menus; after a clear, held buttons wait for a release") {
     GamepadInput g;
     GamepadState p = pad();
-    p.buttons[shell::kPadStart] = true;
+    p.buttons[kPadStart] = true;
     g.poll(p);
-    CHECK(g.take_press(shell::kPadStart));
-    CHECK_FALSE(g.take_press(shell::kPadStart));
+    CHECK(g.take_press(kPadStart));
+    CHECK_FALSE(g.take_press(kPadStart));
     g.poll(p);
-    CHECK_FALSE(g.take_press(shell::kPadStart)); // held: no new press
-    p.buttons[shell::kPadStart] = false;
+    CHECK_FALSE(g.take_press(kPadStart)); // held: no new press
+    p.buttons[kPadStart] = false;
     g.poll(p);
-    p.buttons[shell::kPadB] = true;
+    p.buttons[kPadB] = true;
     g.poll(p);
-    CHECK(g.take_press(shell::kPadB));
+    CHECK(g.take_press(kPadB));
     CHECK_FALSE(g.take_press(99));
     // The A that pressed Resume is still down when play starts: it must not jump until pressed again.
     p.buttons = {};
-    p.buttons[shell::kPadA] = true;
-    p.axes[shell::kPadRightTrigger] = 1.0f;
+    p.buttons[kPadA] = true;
+    p.axes[kPadRightTrigger] = 1.0f;
     g.poll(p);
     g.clear_latches();
     g.poll(p);
     game::Input in = step(g);
     CHECK_FALSE(in.jump);
     CHECK_FALSE(in.fire);
-    CHECK_FALSE(g.held(shell::kPadA));
-    p.buttons[shell::kPadA] = false;
-    p.axes[shell::kPadRightTrigger] = -1.0f;
+    CHECK_FALSE(g.held(kPadA));
+    p.buttons[kPadA] = false;
+    p.axes[kPadRightTrigger] = -1.0f;
     g.poll(p);
-    p.buttons[shell::kPadA] = true;
-    p.axes[shell::kPadRightTrigger] = 1.0f;
+    p.buttons[kPadA] = true;
+    p.axes[kPadRightTrigger] = 1.0f;
     g.poll(p);
     in = step(g);
     CHECK(in.jump);
     CHECK(in.fire);
-}
-
-TEST_CASE("gamepad: the menus' navigation from the d-pad, the left stick, A, B and the bumpers") {
-    GamepadState p = pad();
-    CHECK(shell::gamepad_nav(p) == shell::GamepadNav{});
-    p.buttons[shell::kPadDpadDown] = true;
-    p.buttons[shell::kPadA] = true;
-    shell::GamepadNav n = shell::gamepad_nav(p);
-    CHECK(n.down);
-    CHECK(n.activate);
-    CHECK_FALSE(n.up);
-    p.buttons = {};
-    p.axes[shell::kPadLeftY] = -0.8f; // stick up
-    p.axes[shell::kPadLeftX] = 0.3f;  // a little right: under the threshold
-    n = shell::gamepad_nav(p);
-    CHECK(n.up);
-    CHECK_FALSE(n.right);
-    p.axes[shell::kPadLeftY] = std::numeric_limits<float>::quiet_NaN();
-    p.buttons[shell::kPadB] = true;
-    p.buttons[shell::kPadRightBumper] = true;
-    n = shell::gamepad_nav(p);
-    CHECK_FALSE(n.up);
-    CHECK_FALSE(n.down);
-    CHECK(n.cancel);
-    CHECK(n.focus_next);
-    p.connected = false;
-    CHECK(shell::gamepad_nav(p) == shell::GamepadNav{});
 }
 
 TEST_CASE("player input: keys and pad together, as PlayerInput::gather adds them") {
@@ -250,7 +222,7 @@ TEST_CASE("player input: keys and pad together, as PlayerInput::gather adds them
     Options o;
     GamepadInput g;
     GamepadState p = pad();
-    p.axes[shell::kPadLeftX] = 1.0f;
+    p.axes[kPadLeftX] = 1.0f;
     g.poll(p);
     keys.key('W', InputState::kPress);
     game::Input in = keyboard_mouse_input(keys, o, true);
@@ -266,16 +238,16 @@ TEST_CASE("input script: pad buttons and axes parse; bad pad lines are refused w
     REQUIRE(events.ok());
     REQUIRE(events->size() == 5);
     CHECK((*events)[0].kind == ScriptEvent::Kind::PadButton);
-    CHECK((*events)[0].code == shell::kPadA);
+    CHECK((*events)[0].code == kPadA);
     CHECK((*events)[0].action == 2);
-    CHECK((*events)[1].code == shell::kPadStart);
+    CHECK((*events)[1].code == kPadStart);
     CHECK((*events)[1].action == 1);
-    CHECK((*events)[2].code == shell::kPadDpadDown);
+    CHECK((*events)[2].code == kPadDpadDown);
     CHECK((*events)[2].action == 0);
     CHECK((*events)[3].kind == ScriptEvent::Kind::PadAxis);
-    CHECK((*events)[3].code == shell::kPadLeftY);
+    CHECK((*events)[3].code == kPadLeftY);
     CHECK((*events)[3].x == -1.0);
-    CHECK((*events)[4].code == shell::kPadRightTrigger);
+    CHECK((*events)[4].code == kPadRightTrigger);
     for (const char* bad : {"1 pad z tap", "1 pad a hold", "1 pad ly", "1 pad ly 2", "1 pad rx nan",
                             "1 pad lx 0.5x", "1 pad a tap extra"}) {
         auto r = parse_input_script(bad, "pad.txt");

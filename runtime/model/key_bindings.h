@@ -4,7 +4,8 @@
 // used elsewhere swaps the two (the other action gets this slot's old key), as most shooters do, so no
 // key ever does two things and no action is left without a key by accident. A hand-edited file can still
 // bind one key twice: conflicts() finds that, the Controls screen shows it in red. Esc is reserved (pause,
-// back, cancel a rebind) and never bound. GL-free and header-only so the tests use it directly.
+// back, cancel a rebind) and never bound. The reader, bindings_from_json, stays inline beside options.h's:
+// both are the options file's reading.
 #include "key_names.h"
 
 #include <nlohmann/json.hpp>
@@ -37,9 +38,7 @@ inline constexpr std::array<ActionInfo, kActionCount> kActionInfo{{
     {"pause", "Pause (Esc always pauses)"},
     {"mute", "Mute / unmute"},
 }};
-inline const ActionInfo& action_info(Action a) {
-    return kActionInfo[static_cast<std::size_t>(a)];
-}
+const ActionInfo& action_info(Action a);
 
 // The defaults, in Action order: WASD and the arrows, Space, either mouse button, E, P, M.
 inline constexpr std::array<std::array<int, kSlots>, kActionCount> kDefaultKeys{{
@@ -64,29 +63,10 @@ struct Bindings {
 };
 
 // "W / Up", "Space", "-" when unbound: an action's keys for How to Play.
-inline std::string keys_text(const Bindings& b, Action a) {
-    std::string text;
-    for (int code : b[a]) {
-        if (code == kNoKey) continue;
-        if (!text.empty()) text += " / ";
-        text += key_name(code);
-    }
-    return text.empty() ? "-" : text;
-}
+std::string keys_text(const Bindings& b, Action a);
 
 // For each action: does one of its keys also belong to another action (or to both of its own slots)?
-inline std::array<bool, kActionCount> conflicts(const Bindings& b) {
-    std::array<bool, kActionCount> out{};
-    for (std::size_t a = 0; a < kActionCount; ++a)
-        for (std::size_t s = 0; s < kSlots; ++s) {
-            const int code = b.keys[a][s];
-            if (code == kNoKey) continue;
-            for (std::size_t a2 = 0; a2 < kActionCount; ++a2)
-                for (std::size_t s2 = 0; s2 < kSlots; ++s2)
-                    if ((a2 != a || s2 != s) && b.keys[a2][s2] == code) out[a] = true;
-        }
-    return out;
-}
+std::array<bool, kActionCount> conflicts(const Bindings& b);
 
 // What a rebind did, for the message under the table.
 struct RebindResult {
@@ -97,47 +77,10 @@ struct RebindResult {
 
 // Puts `code` in `action`'s `slot`. A key another slot holds moves here and that slot gets this slot's old
 // key (a swap); Esc and unknown codes are refused.
-inline RebindResult rebind(Bindings& b, Action action, std::size_t slot, int code) {
-    RebindResult r;
-    if (slot >= kSlots) return r;
-    if (code == kKeyEscape) {
-        r.message = "Esc is reserved for pause and back.";
-        return r;
-    }
-    if (key_name(code).empty()) {
-        r.message = "That key cannot be bound.";
-        return r;
-    }
-    int& target = b[action][slot];
-    const int old = target;
-    r.accepted = true;
-    for (std::size_t a = 0; a < kActionCount; ++a)
-        for (std::size_t s = 0; s < kSlots; ++s) {
-            int& other = b.keys[a][s];
-            if (&other == &target || other != code) continue;
-            other = old;
-            const auto other_action = static_cast<Action>(a);
-            if (other_action != action) {
-                r.swapped_with = other_action;
-                r.message = key_name(code) + " moved from " + action_info(other_action).label +
-                            ", which now has " +
-                            (old == kNoKey ? std::string("no key there") : key_name(old)) + ".";
-            }
-        }
-    target = code;
-    if (r.message.empty()) r.message = action_info(action).label + std::string(": ") + key_name(code) + ".";
-    return r;
-}
+RebindResult rebind(Bindings& b, Action action, std::size_t slot, int code);
 
-inline nlohmann::json bindings_to_json(const Bindings& b) {
-    nlohmann::json j = nlohmann::json::object();
-    for (std::size_t a = 0; a < kActionCount; ++a) {
-        nlohmann::json slots = nlohmann::json::array();
-        for (int code : b.keys[a]) slots.push_back(code == kNoKey ? "" : key_name(code));
-        j[kActionInfo[a].id] = slots;
-    }
-    return j;
-}
+// An object of action id → [name, name] ("" for an empty slot), as options.json keeps them.
+nlohmann::json bindings_to_json(const Bindings& b);
 
 // Reads "bindings" (an object of action → [name, name]); an action missing keeps its defaults, a bad one
 // (unknown name, Esc, wrong shape) gets its defaults and a problem line naming the field.
