@@ -6,6 +6,7 @@
 // case makes an unsaved edit, opens the Dojo, comes back and finds the edit still there. The editor
 // reports its state in --status-file every frame; the test waits on that, never on time.
 #include "runtime/editor_session.h"
+#include "runtime/screen_image.h"
 #include "test_support.h"
 
 #include <doctest/doctest.h>
