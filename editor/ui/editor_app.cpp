@@ -1,6 +1,6 @@
-// The editor window's frame: start-up, layout, shortcuts and the title. The menus are in menus.cpp, the file
-// prompts in file_prompts.cpp, the viewport in viewport.cpp, the panels in panels.cpp and inspector.cpp, the
-// dojo tab in dojo_panel.cpp.
+// The editor window's frame: start-up, layout, shortcuts and the title. The panels are their own objects
+// (inspector.h, outliner.h, prefab_palette.h, place_palette.h, bottom_panels.h, dojo_panel.h); the menus are
+// in menus.cpp, the file prompts in file_prompts.cpp, the viewport in viewport.cpp.
 #include "ui/editor_app.h"
 
 #include "core/files.h"

@@ -1,8 +1,11 @@
 #pragma once
 // The editor window: a fixed ImGui layout (menu bar; outliner left; the inspector's Properties, Links and
 // Objectives tabs and validation right; history and log below; the 3D viewport in the middle, or the dojo
-// tab) around one Editor session.
-// Panels only present the model and dispatch Editor calls; every edit goes through its commands.
+// tab) around one Editor session. The panels are objects of their own (inspector.h, outliner.h,
+// prefab_palette.h, place_palette.h, bottom_panels.h, dojo_panel.h) working through a PanelContext
+// (panel_context.h); EditorApp owns them, arranges them and runs the frame (docs/architecture.md, "The editor
+// window's panels"). Panels only present the model and dispatch Editor calls; every edit goes through its
+// commands.
 #include "model/autosave.h"
 #include "model/editor.h"
 #include "model/nav_preview.h"

@@ -1,8 +1,8 @@
-// The outliner's list: groups as a tree (a prefab instance labelled with its prefab, in its own colour),
-// their members under them, the entities in no group after them; with a type filter or a search, a flat
-// list of the matching entities. Only what is open or on screen is drawn (tree nodes closed by default,
-// ImGuiListClipper over the long lists), so a 2 000-entity level costs a few rows a frame. The Layers tab:
-// each layer's eye, lock, active radio, name (double-click renames), count and delete.
+// The Outliner (outliner.h): the player start's row, groups as a tree (a prefab instance labelled with its
+// prefab, in its own colour), their members under them, the entities in no group after them; with a type
+// filter or a search, a flat list of the matching entities. Only what is open or on screen is drawn (tree
+// nodes closed by default, ImGuiListClipper over the long lists), so a 2 000-entity level costs a few rows a
+// frame. The Layers tab: each layer's eye, lock, active radio, name (double-click renames), count and delete.
 #include "ui/outliner.h"
 #include "ui/panel_style.h"
 #include "ui/structure_actions.h"
