@@ -1,6 +1,6 @@
-// The editor window's frame: start-up, layout, shortcuts and the title. The menus are in menus.cpp, the file
-// prompts in file_prompts.cpp, the viewport in viewport.cpp, the panels in panels.cpp and inspector.cpp, the
-// dojo tab in dojo_panel.cpp.
+// The editor window's frame: start-up, layout, shortcuts and the title. The panels are their own objects
+// (inspector.h, outliner.h, prefab_palette.h, place_palette.h, bottom_panels.h, dojo_panel.h); the menus are
+// in menus.cpp, the file prompts in file_prompts.cpp, the viewport in viewport.cpp.
 #include "ui/editor_app.h"
 
 #include "core/files.h"
@@ -9,6 +9,7 @@
 #include "model/script.h"
 #include "ui/dojo_panel.h"
 #include "ui/layout.h"
+#include "ui/structure_actions.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -43,13 +44,6 @@ Result<std::unique_ptr<EditorApp>> EditorApp::create(shell::AppShell& shell, con
     std::unique_ptr<EditorApp> app(new EditorApp(shell, options));
     if (auto r = app->init(); !r) return r.error();
     return app;
-}
-
-void EditorApp::log_line(std::string line, bool error) {
-    if (error) ++error_lines_, last_error_ = line;
-    log_.emplace_back(std::move(line), error);
-    while (log_.size() > 500) log_.pop_front();
-    scroll_log_ = true;
 }
 
 Result<void> EditorApp::init() {
@@ -99,7 +93,7 @@ Result<void> EditorApp::init() {
         }
     }
     overlays_.navmesh = options_.show_navmesh;
-    select_tab_ = options_.inspector_tab;
+    if (options_.inspector_tab) inspector_.select_tab(*options_.inspector_tab);
     set_view(options_.view.value_or(ViewMode::Perspective)); // perspective: from above one corner
     if (options_.camera) {
         float v[5];
@@ -159,10 +153,10 @@ Result<void> EditorApp::apply_start_ui_options() {
                          "add ,local for the entity's own rotation axes, e.g. --gizmo rotate,local");
     }
     if (options_.texture_browser) {
-        if (!selection_texture())
+        if (!selection_texture(editor_))
             return Error("--textures: the selection has no texture field", {},
                          "select a wall, floor or stair first (--run a script with 'select ID')");
-        texture_browser_.open();
+        inspector_.texture_browser().open();
     }
     return ok();
 }
@@ -175,8 +169,8 @@ int EditorApp::run() {
     return shell_.run(hooks);
 }
 
-void EditorApp::report(const Result<void>& result, const char* what) {
-    if (!result) log_line(std::string(what) + ": " + result.error().str(), true);
+PanelContext EditorApp::context() {
+    return PanelContext{editor_, log_, spots_, assets_, options_.audition, *this};
 }
 
 void EditorApp::update_title() {
@@ -196,7 +190,7 @@ void EditorApp::render_views(const shell::FrameInfo& info) {
     } else {
         rebuild_scene_if_changed();
         pose_preview_robot(info.frame_dt);
-        render_prefab_thumbnails();
+        prefabs_.render_thumbnails(editor_.prefabs(), *renderer_, assets_);
         const int w = static_cast<int>(layout.centre.w), h = static_cast<int>(layout.centre.h - kViewportBar);
         render_level_views(w, std::max(1, h));
     }
@@ -229,7 +223,8 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
     spots_.enabled = options_.status_file.has_value();
     spots_.clear();
     refresh_logic_problems();
-    if (!dojo_tab_) rescan_prefabs();
+    if (!dojo_tab_) prefabs_.rescan(editor_, log_, glfwGetWindowAttrib(shell_.window(), GLFW_FOCUSED) != 0);
+    const PanelContext ctx = context();
     menu_bar();
     if (dojo_tab_) {
         dojo_->panel(layout.bottom.x, layout.centre.y, layout.bottom.w, layout.centre.h);
@@ -237,20 +232,21 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
         outliner_panel(layout.left.x, layout.left.y, layout.left.w, layout.left.h);
         viewport_panel(layout.centre.x, layout.centre.y, layout.centre.w, layout.centre.h);
         // Wiring links and objectives takes more rows than an entity's fields: those tabs get more height.
-        const float split = shown_tab_ == InspectorTab::Properties ? 0.62f : 0.74f;
-        inspector_panel(layout.right.x, layout.right.y, layout.right.w, layout.right.h * split);
-        validation_panel(layout.right.x, layout.right.y + layout.right.h * split, layout.right.w,
-                         layout.right.h * (1.0f - split));
+        const float split = inspector_.shown_tab() == InspectorTab::Properties ? 0.62f : 0.74f;
+        inspector_.draw(ctx, Rect{layout.right.x, layout.right.y, layout.right.w, layout.right.h * split});
+        validation_.draw(ctx, Rect{layout.right.x, layout.right.y + layout.right.h * split, layout.right.w,
+                                   layout.right.h * (1.0f - split)});
         // Over the viewport's right edge, beside the inspector whose texture field opened it.
-        texture_browser_window(
-            Vec2(layout.right.x - TextureBrowser::width() - 8.0f, layout.centre.y + kViewportBar + 8.0f));
+        inspector_.texture_browser_window(ctx, Vec2(layout.right.x - TextureBrowser::width() - 8.0f,
+                                                    layout.centre.y + kViewportBar + 8.0f));
     }
     // Along the bottom: history, the play-test report, the log.
-    history_panel(layout.bottom.x, layout.bottom.y, layout.bottom.w * 0.2f, layout.bottom.h);
+    history_panel_.draw(editor_,
+                        Rect{layout.bottom.x, layout.bottom.y, layout.bottom.w * 0.2f, layout.bottom.h});
     analysis_panel(layout.bottom.x + layout.bottom.w * 0.2f, layout.bottom.y, layout.bottom.w * 0.4f,
                    layout.bottom.h);
-    log_panel(layout.bottom.x + layout.bottom.w * 0.6f, layout.bottom.y, layout.bottom.w * 0.4f,
-              layout.bottom.h);
+    log_panel_.draw(log_, Rect{layout.bottom.x + layout.bottom.w * 0.6f, layout.bottom.y,
+                               layout.bottom.w * 0.4f, layout.bottom.h});
     modal_prompts();
     campaign_prompt();
     about_.draw(spots_);
@@ -312,8 +308,8 @@ void EditorApp::handle_shortcuts() {
     }
     if (pressed(GLFW_KEY_DELETE)) report(editor_.delete_selection(), "delete");
     if (pressed(GLFW_KEY_ESCAPE)) {
-        if (texture_browser_.is_open())
-            texture_browser_.close();
+        if (inspector_.texture_browser().is_open())
+            inspector_.texture_browser().close();
         else if (pick_)
             end_pick();
         else if (gizmo_.dragging())
@@ -321,11 +317,12 @@ void EditorApp::handle_shortcuts() {
         else if (placing_)
             placing_.reset();
         else if (editor_.open_group() != 0)
-            leave_group();
+            leave_group(editor_, log_);
         else
             editor_.clear_selection();
     }
-    if (ctrl && pressed(GLFW_KEY_G)) shift ? ungroup_selection_ui() : group_selection_ui();
+    if (ctrl && pressed(GLFW_KEY_G))
+        shift ? ungroup_selection(editor_, log_) : group_selection(editor_, log_);
     if (flying_ || ctrl) return;
     if (repeat(GLFW_KEY_LEFT)) report(editor_.nudge(0, -1), "nudge");
     if (repeat(GLFW_KEY_RIGHT)) report(editor_.nudge(0, +1), "nudge");

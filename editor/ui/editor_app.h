@@ -1,8 +1,11 @@
 #pragma once
 // The editor window: a fixed ImGui layout (menu bar; outliner left; the inspector's Properties, Links and
 // Objectives tabs and validation right; history and log below; the 3D viewport in the middle, or the dojo
-// tab) around one Editor session.
-// Panels only present the model and dispatch Editor calls; every edit goes through its commands.
+// tab) around one Editor session. The panels are objects of their own (inspector.h, outliner.h,
+// prefab_palette.h, place_palette.h, bottom_panels.h, dojo_panel.h) working through a PanelContext
+// (panel_context.h); EditorApp owns them, arranges them and runs the frame (docs/architecture.md, "The editor
+// window's panels"). Panels only present the model and dispatch Editor calls; every edit goes through its
+// commands.
 #include "model/autosave.h"
 #include "model/editor.h"
 #include "model/nav_preview.h"
@@ -14,11 +17,16 @@
 #include "shell/app_shell.h"
 #include "ui/about_box.h"
 #include "ui/analysis_view.h"
+#include "ui/bottom_panels.h"
 #include "ui/gizmo_draw.h"
+#include "ui/inspector.h"
+#include "ui/outliner.h"
+#include "ui/panel_context.h"
+#include "ui/place_palette.h"
 #include "ui/playtest.h"
+#include "ui/prefab_palette.h"
 #include "ui/render_target.h"
 #include "ui/sound_widgets.h"
-#include "ui/texture_browser.h"
 #include "ui/ui_spots.h"
 #include "view/link_arrows.h"
 #include "view/link_options.h"
@@ -33,7 +41,6 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include <array>
-#include <deque>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -46,14 +53,6 @@ struct GLFWcursor;
 namespace ks::editor::ui {
 
 class DojoPanel;
-
-// The inspector's tabs (inspector.cpp).
-enum class InspectorTab { Properties, Links, Objectives };
-std::optional<InspectorTab> parse_inspector_tab(std::string_view name); // "properties", "links", "objectives"
-
-// The left column's tabs (panels.cpp).
-enum class LeftTab { Outliner, Layers, Prefabs };
-std::optional<LeftTab> parse_left_tab(std::string_view name); // "outliner", "layers", "prefabs"
 
 struct AppOptions {
     std::optional<std::filesystem::path> level;
@@ -80,11 +79,6 @@ struct AppOptions {
     std::optional<std::string> gizmo;
     std::optional<LeftTab> left_tab; // --left-tab: the left column's tab shown first
     bool texture_browser = false;    // --textures: the texture browser open for the selection at start-up
-};
-
-// The texture field the selected entities share (its name) and the primary's texture.
-struct SelectionTexture {
-    std::string field, name;
 };
 
 struct Overlays {
@@ -119,44 +113,18 @@ struct PlaceTool {
     std::string label() const { return type ? std::string(level::type_name(*type)) : "prefab " + prefab; }
 };
 
-// A prefab's thumbnail (prefab_palette.cpp): its entities rendered offscreen from a three-quarter view.
-struct PrefabThumbnail {
-    std::string name;
-    RenderTarget target;
-    bool drawn = false;
-};
-
-// The prefab instance the primary selected entity belongs to, and the fields it keeps as its own there
-// (group_inspector.cpp; looked up once a frame for the inspector's field table).
-struct PrimaryOverrides {
-    int instance = 0, entity = 0;
-    const std::vector<std::string>* fields = nullptr;
-};
-
-// The outliner's tree (outliner_tree.cpp), rebuilt when the level changes: each group's members, the
-// entities in no group, and each entity's issue counts.
-struct OutlinerTree {
-    std::uint64_t revision = ~0ull;
-    size_t issue_count = ~size_t(0);
-    std::vector<int> top_groups; // groups in no group
-    std::vector<int> loose;      // indices into level.entities of the entities in no group
-    std::vector<int> filtered;   // indices of the entities a type filter or search shows (flat list)
-    int filter_type = -2;        // the type filter and search the flat list is for
-    std::string filter_search;
-    std::vector<std::pair<int, int>> issues; // per entity index: errors, warnings
-    std::vector<int> layer_counts;           // entities per layer
-};
-
 // A question the user must answer before an action goes on (unsaved changes, overwrite, recovery).
 enum class PendingAction { None, New, Open, OpenRecent, Quit };
 
-class EditorApp {
+// Owns the panels (each with its own state, working through a PanelContext), arranges them in the fixed
+// layout and runs the frame; it is also the WindowServices the panels may call.
+class EditorApp final : private WindowServices {
   public:
     static Result<std::unique_ptr<EditorApp>> create(shell::AppShell& shell, const AppOptions& options);
     ~EditorApp();
     int run();
 
-    void log_line(std::string line, bool error = false);
+    void log_line(std::string line, bool error = false) { log_.line(std::move(line), error); }
 
   private:
     EditorApp(shell::AppShell& shell, const AppOptions& options);
@@ -174,17 +142,11 @@ class EditorApp {
     void structure_status(nlohmann::json& status) const; // groups, layers, prefabs
 
     // structure_ui.cpp: groups and prefabs from the viewport, the keys and the Edit menu
-    void group_selection_ui();
-    void ungroup_selection_ui();
-    void leave_group(); // Esc inside a group: up one level, the group left selected
-    void select_group(int group_id, SelectMode mode = SelectMode::Replace);
-    bool double_click_enter(int entity_id); // true: a group was entered
-    void structure_menu_items();            // the Edit menu's group, prefab and layer items
+    void structure_menu_items(); // the Edit menu's group, prefab and layer items
     void open_prefab_prompt();
     void prefab_prompt();
     void draw_open_group_box(); // render pass: the entered group's bounds
     void open_group_hint(ImDrawList* draw, Vec2 origin, Vec2 size, bool pane) const; // "Inside group"
-    std::string group_label(const level::Group& group) const;
 
     // editor_app.cpp: menus and files
     void menu_bar();
@@ -195,7 +157,7 @@ class EditorApp {
     void open_campaign_prompt(); // campaign_prompt.cpp: File > Add to Campaign...
     void campaign_prompt();
     void open_file(const std::filesystem::path& path);
-    void report(const Result<void>& result, const char* what);
+    void report(const Result<void>& result, const char* what) { log_.report(result, what); }
 
     // viewport.cpp
     void viewport_panel(float x, float y, float w, float h);
@@ -215,7 +177,8 @@ class EditorApp {
     bool shown(const level::Entity& e) const; // not hidden, and not a ceiling while ceilings are off
     Vec3 place_point(const geometry::Ray& ray) const;
     Vec3 selection_pivot() const;
-    void focus_selection();
+    void focus_selection() override;
+    const ViewCamera& viewport_camera() const override { return view_; }
     void set_view(ViewMode mode);
     void level_box(Vec3& lo, Vec3& hi) const; // every entity's bounds (±20 around 0 for an empty level)
     void play_test(bool from_camera);
@@ -236,53 +199,24 @@ class EditorApp {
     void analysis_status(nlohmann::json& status) const;
     GizmoFrame gizmo_frame() const; // the selection's pivot and the rings' axes in the gizmo's space
 
-    // player_start_ui.cpp: the player start as a viewport object (figure, outliner row, inspector section)
-    void draw_player_start();
-    void player_start_row();
-    void player_start_section();
-
-    // texture_browser.cpp: the inspector's texture field, and the browser window for the selection
-    bool texture_field_widget(FieldValue& value);
-    std::optional<SelectionTexture> selection_texture() const;
-    void texture_browser_window(Vec2 position);
-
     // clip_preview_overlay.cpp: a dojo clip played on the selected level robot
     int preview_robot() const; // the primary selection when it is a robot, else 0
     void pose_preview_robot(double dt);
     void clip_preview_overlay(Vec2 origin, Vec2 size);
 
-    // panels.cpp
+    // player_start_ui.cpp: the player start's figure over the level
+    void draw_player_start();
+
+    // panels.cpp: the left column (palette; Outliner, Layers and Prefabs tabs), the viewport's tool bar
     void outliner_panel(float x, float y, float w, float h);
-    void palette_bar();
-    // outliner_tree.cpp: the outliner's group tree (or flat filtered list) and the Layers tab
-    void outliner_list(); // panels.cpp: the Outliner tab
-    void outliner_tree();
-    void refresh_outliner_tree();
-    void outliner_group_node(const level::Group& group);
-    void outliner_entity_row(int index);
-    void group_context_menu(const level::Group& group);
-    void rename_group_popup();
-    void layers_section(); // the Layers tab
-    // prefab_palette.cpp: the Prefabs tab (thumbnails, placing) and the thumbnails' render pass
-    void prefab_palette();
-    void rescan_prefabs();
-    void render_prefab_thumbnails();
-    // group_inspector.cpp: the inspector of one selected group (a prefab instance's overrides too)
-    bool group_section(); // true when the selection is one group
-    PrimaryOverrides primary_overrides() const;
-    void override_marker(const PrimaryOverrides& primary, const std::string& field);
+    PanelContext context();
     void viewport_toolbar();
-    void inspector_panel(float x, float y, float w, float h); // tabs: Properties, Objectives
-    void selection_inspector(float w);
-    void settings_section();
-    void validation_panel(float x, float y, float w, float h);
-    void history_panel(float x, float y, float w, float h);
-    void log_panel(float x, float y, float w, float h);
-    bool field_widget(const FieldDescriptor& field, FieldValue& value, bool mixed);
-    void links_tab(); // inspector.cpp: the selected entity's links and those acting on it, or the level's
+
+    // link_list.cpp: the inspector's Links tab, the selected entity's links and those acting on it
+    void links_tab() override;
 
     // link_list.cpp: the link-list widget; `spot` names its widgets in the status file ("link0.event")
-    void link_list(const LinkOwner& owner, const std::string& spot);
+    void link_list(const LinkOwner& owner, const std::string& spot) override;
     bool link_row(const LinkOwner& owner, int index, const std::vector<std::string>& events,
                   const std::string& spot); // false: the list changed
     // The link's target (an entity is named first if it needs a name) and an action it takes: one step.
@@ -300,7 +234,7 @@ class EditorApp {
     void pick_hint(ImDrawList* draw, Vec2 origin);
 
     // objectives_panel.cpp
-    void objectives_tab();
+    void objectives_tab() override;
     bool objective_item(int index); // false: the list changed
     bool kill_list(int index, const level::Objective& objective, const std::string& path);
     Result<void> add_kill_name(int objective, int entity_id); // naming the entity if needed: one step
@@ -308,6 +242,7 @@ class EditorApp {
     shell::AppShell& shell_;
     AppOptions options_;
     Editor editor_;
+    EditorLog log_; // the Log panel's lines; the model's log goes here too
     RecentFiles recent_;
     Autosaver autosaver_;
 
@@ -337,7 +272,6 @@ class EditorApp {
     std::optional<geometry::Ray> place_ray_; // the mouse's ray in the active view, while it is hovered
     Overlays overlays_;
     Gizmo gizmo_;
-    TextureBrowser texture_browser_;
     PatrolDrag patrol_drag_;
     Handle hovered_handle_ = Handle::None;
     Vec2 viewport_origin_{0.0f}, viewport_size_{640.0f, 360.0f};
@@ -352,47 +286,35 @@ class EditorApp {
     bool click_pending_ = false;
 
     // panels
-    int type_filter_ = -1;         // -1: all
-    int outliner_scrolled_to_ = 0; // primary selection the outliner last scrolled to
-    char search_[64] = {};
-    OutlinerTree tree_;
-    int rename_group_ = 0;  // the group the rename popup is for
-    int rename_layer_ = -1; // the layer whose name is being edited inline
-    char rename_buffer_[128] = {};
-    bool focus_rename_ = false;
-    LeftTab start_tab_ = LeftTab::Outliner; // Layers, Prefabs: brought to the front on the next frame
-    // prefabs
-    std::vector<std::unique_ptr<PrefabThumbnail>> thumbnails_;
-    std::uint64_t thumbnails_revision_ = ~0ull;
-    double last_rescan_ = -1e9;
-    bool was_focused_ = true;
+    PlacePalette palette_;
+    Outliner outliner_;
+    PrefabPalette prefabs_;
+    Inspector inspector_;
+    ValidationPanel validation_;
+    HistoryPanel history_panel_;
+    LogPanel log_panel_;
+    LeftTab start_tab_ = LeftTab::Outliner;      // Layers, Prefabs: brought to the front on the next frame
+    LeftTab shown_left_tab_ = LeftTab::Outliner; // the status file reports it
     bool ask_prefab_ = false;
     bool prefab_prompt_open_ = false; // status file
     char prefab_name_[80] = {};
     char prefab_title_[128] = {};
     std::string prefab_error_;
-    std::vector<std::string> sound_names_;  // offered by the inspector's sound lists (sound_widgets.h)
     std::vector<MarkerLine> marker_lines_;  // a marker's or an arrow's lines, reused every frame
     std::vector<LinkArrow> link_arrows_;    // cached until the level, the selection or what is shown changes
     std::vector<std::string> arrow_labels_; // each arrow's labels, one per line
     std::uint64_t arrows_key_ = ~0ull;
     std::vector<int> arrows_selection_;
-    std::deque<std::pair<std::string, bool>> log_;
-    bool scroll_log_ = false;
     bool dojo_tab_ = false;
     std::unique_ptr<DojoPanel> dojo_;
     bool dojo_quit_confirmed_ = false; // the dojo's unsaved clip edits were saved or dropped for quitting
     bool clip_preview_ = false;        // "Preview clip" on the selected robot
     int posed_robot_ = 0;              // the robot the level scene draws in the dojo's pose (0: none)
-    Vec2 preview_toggle_{0.0f};
-    std::array<Vec2, 2> menu_spots_{}; // status: the File menu's title and its Quit item (while open) // the
-                                       // "Preview clip" check box's centre (status file; 0 when hidden)
+    Vec2 preview_toggle_{0.0f};        // the "Preview clip" check box's centre (status file; 0 when hidden)
+    std::array<Vec2, 2> menu_spots_{}; // status: the File menu's title and its Quit item (while open)
 
     // level logic
-    std::optional<InspectorTab> select_tab_; // brought to the front on the next frame
-    InspectorTab shown_tab_ = InspectorTab::Properties;
-    LeftTab shown_left_tab_ = LeftTab::Outliner; // the status file reports it
-    float palette_height_ = 1e4f;                // the place palette's height when last drawn in full
+    float palette_height_ = 1e4f; // the place palette's height when last drawn in full
     std::optional<PickRequest> pick_;
     std::string pick_message_; // the hint over the viewport while picking
     GLFWcursor* crosshair_ = nullptr;
@@ -423,12 +345,6 @@ class EditorApp {
     std::optional<int> play_exit_code_;     // the last play-test's exit code, once it ended
 
     // --status-file
-    struct ScreenRect {
-        Vec2 min{0.0f}, max{0.0f};
-    };
-    std::array<ScreenRect, static_cast<size_t>(level::EntityType::Count)> palette_rects_{};
-    int error_lines_ = 0;
-    std::string last_error_;
     std::uint64_t frame_ = 0;
     std::string last_status_;
 };

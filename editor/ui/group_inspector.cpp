@@ -2,8 +2,9 @@
 // count; for a prefab instance its prefab, Apply to prefab, Revert all overrides and Unlink. The fields of a
 // prefab member that the instance keeps as its own are marked in the field table (override_marker), with
 // "Revert to prefab" in the field's context menu.
-#include "ui/editor_app.h"
+#include "ui/inspector_sections.h"
 #include "ui/panel_style.h"
+#include "ui/structure_actions.h"
 
 #include <imgui.h>
 
@@ -22,21 +23,33 @@ const std::vector<std::string>* member_overrides(const level::Group& instance, i
         if (members[i] == id) return &instance.prefab.overrides[i];
     return nullptr;
 }
-} // namespace
 
-bool EditorApp::group_section() {
-    const level::EditorData& data = editor_.level().editor;
-    const auto& selection = editor_.doc().selection;
+class GroupSection final : public InspectorSection {
+  public:
+    bool applies(const InspectorSelection& s) const override { return !s.entities.empty(); }
+    void draw(const PanelContext& ctx, InspectorSelection& s, FieldWidgets&) override {
+        s.group_shown = draw_group(ctx);
+    }
+
+  private:
+    static bool draw_group(const PanelContext& ctx);
+};
+
+// True when the selection is one whole group (or a prefab instance's member) and the section drew.
+bool GroupSection::draw_group(const PanelContext& ctx) {
+    Editor& editor = ctx.editor;
+    const level::EditorData& data = editor.level().editor;
+    const auto& selection = editor.doc().selection;
     // One whole group selected; or one entity of a prefab instance, shown with its instance's buttons.
     const level::Group* group = nullptr;
     bool whole = false;
-    if (const std::vector<int> groups = editor_.selected_groups(); groups.size() == 1) {
+    if (const std::vector<int> groups = editor.selected_groups(); groups.size() == 1) {
         group = data.find_group(groups.front());
         whole = group && group_entities_deep(data, group->id).size() == selection.size();
     }
     if (!whole) {
         group = selection.size() == 1 && selection.front() > 0
-                    ? data.find_group(editor_.prefab_instance_of(selection.front()))
+                    ? data.find_group(editor.prefab_instance_of(selection.front()))
                     : nullptr;
         if (!group) return false;
     }
@@ -48,20 +61,20 @@ bool EditorApp::group_section() {
         std::snprintf(name, sizeof name, "%s", group->name.c_str());
         ImGui::SetNextItemWidth(-50);
         if (ImGui::InputText("name", name, sizeof name, ImGuiInputTextFlags_EnterReturnsTrue))
-            report(editor_.rename_group(id, name), "rename group");
-        spots_.here("group.name");
+            ctx.report(editor.rename_group(id, name), "rename group");
+        ctx.spots.here("group.name");
         ImGui::Text("%zu entities", group_entities_deep(data, id).size());
         if (!group->groups.empty()) {
             ImGui::SameLine();
             ImGui::TextDisabled("(%zu groups inside)", group->groups.size());
         }
         ImGui::SameLine();
-        if (ImGui::SmallButton("Enter")) report(editor_.enter_group(id), "enter group");
+        if (ImGui::SmallButton("Enter")) ctx.report(editor.enter_group(id), "enter group");
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(
                 "Pick its members one by one (or double-click one in the viewport; Esc leaves)");
         ImGui::SameLine();
-        if (ImGui::SmallButton("Ungroup")) ungroup_selection_ui();
+        if (ImGui::SmallButton("Ungroup")) ungroup_selection(editor, ctx.log);
     } else {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.55f, 1.0f, 0.8f, 1));
         ImGui::TextWrapped("Member of prefab instance %s  #%d", group->name.c_str(), id);
@@ -71,59 +84,58 @@ bool EditorApp::group_section() {
         size_t overridden = 0;
         for (const auto& fields : group->prefab.overrides) overridden += fields.size();
         ImGui::Text("Prefab: %s", group->prefab.prefab.c_str());
-        if (const PrefabEntry* entry = editor_.prefabs().find(group->prefab.prefab); entry && entry->prefab)
+        if (const PrefabEntry* entry = editor.prefabs().find(group->prefab.prefab); entry && entry->prefab)
             if (!entry->prefab->title.empty()) ImGui::TextDisabled("%s", entry->prefab->title.c_str());
         if (overridden > 0)
             ImGui::TextColored(kOverride, "* %zu overridden field%s", overridden, overridden == 1 ? "" : "s");
         else
             ImGui::TextDisabled("no overrides: it matches its prefab");
-        if (ImGui::Button("Apply to prefab")) {
-            auto applied = editor_.apply_instance_to_prefab(id);
-            if (applied)
-                log_line("applied to " + applied->string());
-            else
-                log_line("apply to prefab: " + applied.error().str(), true);
-        }
-        spots_.here("group.apply");
+        if (ImGui::Button("Apply to prefab")) apply_to_prefab(editor, ctx.log, id);
+        ctx.spots.here("group.apply");
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("Rewrite the prefab file from this instance; every instance follows");
         ImGui::SameLine();
         ImGui::BeginDisabled(overridden == 0);
-        if (ImGui::Button("Revert all")) report(editor_.revert_prefab_overrides(id), "revert");
+        if (ImGui::Button("Revert all")) ctx.report(editor.revert_prefab_overrides(id), "revert");
         ImGui::EndDisabled();
-        spots_.here("group.revert");
+        ctx.spots.here("group.revert");
         if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
             ImGui::SetTooltip("Drop every override: the members follow the prefab again");
         ImGui::SameLine();
-        if (ImGui::Button("Unlink")) report(editor_.unlink_prefab(id), "unlink");
-        spots_.here("group.unlink");
+        if (ImGui::Button("Unlink")) ctx.report(editor.unlink_prefab(id), "unlink");
+        ctx.spots.here("group.unlink");
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("Make it a plain group that no longer follows the prefab");
     }
     ImGui::Separator();
     return true;
 }
+} // namespace
 
-PrimaryOverrides EditorApp::primary_overrides() const {
+std::unique_ptr<InspectorSection> make_group_section() {
+    return std::make_unique<GroupSection>();
+}
+
+PrimaryOverrides primary_overrides(const Editor& editor) {
     PrimaryOverrides out;
-    const auto& selection = editor_.doc().selection;
+    const auto& selection = editor.doc().selection;
     if (selection.empty() || selection.front() <= 0) return out;
     out.entity = selection.front();
-    out.instance = editor_.prefab_instance_of(out.entity);
-    if (const level::Group* group = editor_.level().editor.find_group(out.instance))
+    out.instance = editor.prefab_instance_of(out.entity);
+    if (const level::Group* group = editor.level().editor.find_group(out.instance))
         out.fields = member_overrides(*group, out.entity);
     return out;
 }
 
 // After a field's name in the inspector table: a mark when the primary selected entity keeps this field as
 // its own in its prefab instance, and the name's context menu to revert it.
-void EditorApp::override_marker(const PrimaryOverrides& primary, const std::string& field) {
+void override_marker(const PanelContext& ctx, const PrimaryOverrides& primary, const std::string& field) {
     if (primary.instance == 0) return;
     const auto* fields = primary.fields;
     const bool overridden = fields && std::find(fields->begin(), fields->end(), field) != fields->end();
     if (ImGui::BeginPopupContextItem("field_menu")) {
         if (ImGui::MenuItem("Revert to prefab", nullptr, false, overridden))
-            report(editor_.revert_prefab_overrides(primary.instance, primary.entity, field), "revert");
+            ctx.report(ctx.editor.revert_prefab_overrides(primary.instance, primary.entity, field), "revert");
         ImGui::EndPopup();
     }
     if (!overridden) return;

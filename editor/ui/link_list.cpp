@@ -6,6 +6,7 @@
 // checks find wrong is framed red with their message under it.
 #include "jsonio/json_path.h"
 #include "ui/editor_app.h"
+#include "ui/panel_style.h"
 #include "ui/problem_lines.h"
 #include "view/link_options.h"
 
@@ -228,6 +229,53 @@ void EditorApp::link_list(const LinkOwner& owner, const std::string& spot) {
         if (!added) log_line("add link: " + added.error().str(), true);
     }
     spots_.here(spot + "_add");
+}
+
+// The Links tab: the selected entity's links (what its events set off) and the links that act on it; with
+// nothing selected, the level's own (on_start).
+void EditorApp::links_tab() {
+    const auto selected = editor_.selected_entities();
+    if (selected.size() > 1) {
+        ImGui::TextWrapped("%zu selected: select one entity to wire its links.", selected.size());
+        return;
+    }
+    if (selected.empty()) {
+        ImGui::TextWrapped("Nothing selected: the level's own links, set off when it starts (on_start). "
+                           "Select an entity to wire its events.");
+        ImGui::PushID("level_links");
+        link_list(LinkOwner::level(), "level_link");
+        ImGui::PopID();
+        return;
+    }
+    const level::Entity& entity = *selected.front();
+    ImGui::TextColored(type_colour(entity.type()), "%s", entity_title(entity).c_str());
+    if (!level::entity_events(entity.type()).empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+        ImGui::TextWrapped("Each link: on the event, do the action to the target (after the delay; once: "
+                           "the first time only).");
+        ImGui::PopStyleColor();
+    }
+    ImGui::PushID("links");
+    link_list(LinkOwner::entity(entity.id), "link");
+    ImGui::PopID();
+    const auto incoming = incoming_links(editor_.level(), entity.id);
+    ImGui::Spacing();
+    if (incoming.empty()) {
+        ImGui::TextDisabled(entity.name.empty() ? "No links act on it (it has no name to be targeted by)"
+                                                : "No links act on it");
+        return;
+    }
+    ImGui::TextDisabled("Acted on by:");
+    for (size_t i = 0; i < incoming.size(); ++i) {
+        ImGui::PushID(static_cast<int>(i));
+        const std::string row = incoming[i].source + ": " + incoming[i].label;
+        if (ImGui::Selectable(row.c_str(), false) && incoming[i].source_entity != 0)
+            report(editor_.select({incoming[i].source_entity}), "select");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip(incoming[i].source_entity != 0 ? "Click to select the source"
+                                                             : "In the Objectives tab or the level settings");
+        ImGui::PopID();
+    }
 }
 
 } // namespace ks::editor::ui

@@ -1,10 +1,11 @@
-// The outliner's list: groups as a tree (a prefab instance labelled with its prefab, in its own colour),
-// their members under them, the entities in no group after them; with a type filter or a search, a flat
-// list of the matching entities. Only what is open or on screen is drawn (tree nodes closed by default,
-// ImGuiListClipper over the long lists), so a 2 000-entity level costs a few rows a frame. The Layers tab:
-// each layer's eye, lock, active radio, name (double-click renames), count and delete.
-#include "ui/editor_app.h"
+// The Outliner (outliner.h): the player start's row, groups as a tree (a prefab instance labelled with its
+// prefab, in its own colour), their members under them, the entities in no group after them; with a type
+// filter or a search, a flat list of the matching entities. Only what is open or on screen is drawn (tree
+// nodes closed by default, ImGuiListClipper over the long lists), so a 2 000-entity level costs a few rows a
+// frame. The Layers tab: each layer's eye, lock, active radio, name (double-click renames), count and delete.
+#include "ui/outliner.h"
 #include "ui/panel_style.h"
+#include "ui/structure_actions.h"
 
 #include <imgui.h>
 
@@ -19,6 +20,7 @@ namespace {
 const ImVec4 kGroupText(0.6f, 0.8f, 1.0f, 1);
 const ImVec4 kPrefabText(0.55f, 1.0f, 0.8f, 1);
 const ImVec4 kDimText(0.45f, 0.45f, 0.5f, 1);
+const ImVec4 kStartText(0.45f, 1.0f, 0.55f, 1.0f); // the player start's green
 
 bool mentions(const std::string& haystack, const char* needle) {
     if (!*needle) return true;
@@ -38,12 +40,12 @@ SelectMode click_mode() {
 }
 } // namespace
 
-void EditorApp::refresh_outliner_tree() {
-    const auto& issues = editor_.issues();
-    const level::Level& level = editor_.level();
-    const bool changed = tree_.revision != editor_.revision() || tree_.issue_count != issues.size();
+void Outliner::refresh(Editor& editor) {
+    const auto& issues = editor.issues();
+    const level::Level& level = editor.level();
+    const bool changed = tree_.revision != editor.revision() || tree_.issue_count != issues.size();
     if (changed) {
-        tree_.revision = editor_.revision();
+        tree_.revision = editor.revision();
         tree_.issue_count = issues.size();
         tree_.filter_type = -2; // the flat list too
         const level::EditorData& data = level.editor;
@@ -87,8 +89,8 @@ void EditorApp::refresh_outliner_tree() {
     }
 }
 
-void EditorApp::outliner_entity_row(int index) {
-    const Document& doc = editor_.doc();
+void Outliner::entity_row(const PanelContext& ctx, int index) {
+    const Document& doc = ctx.editor.doc();
     const level::Entity& e = doc.level.entities[static_cast<size_t>(index)];
     ImGui::PushID(e.id);
     // Greyed when hidden, by its own eye or its layer; the eye and the lock show and toggle its own flag.
@@ -96,7 +98,8 @@ void EditorApp::outliner_entity_row(int index) {
     const bool own_hidden = sorted_has(doc.level.editor.hidden, e.id);
     const bool own_locked = sorted_has(doc.level.editor.locked, e.id);
     ImGui::PushStyleColor(ImGuiCol_Text, own_hidden ? kDimText : ImVec4(0.8f, 0.85f, 0.95f, 1));
-    if (ImGui::SmallButton(own_hidden ? "-" : "o")) report(editor_.set_hidden(e.id, !own_hidden), "Hide");
+    if (ImGui::SmallButton(own_hidden ? "-" : "o"))
+        ctx.report(ctx.editor.set_hidden(e.id, !own_hidden), "Hide");
     ImGui::PopStyleColor();
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(own_hidden ? "Hidden: click to show"
@@ -107,7 +110,7 @@ void EditorApp::outliner_entity_row(int index) {
                                          : locked   ? ImVec4(0.7f, 0.55f, 0.35f, 1)
                                                     : kDimText);
     if (ImGui::SmallButton(own_locked ? "L" : locked ? "l" : "."))
-        report(editor_.set_locked(e.id, !own_locked), "Lock");
+        ctx.report(ctx.editor.set_locked(e.id, !own_locked), "Lock");
     ImGui::PopStyleColor();
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(own_locked ? "Locked: click to unlock"
@@ -125,11 +128,12 @@ void EditorApp::outliner_entity_row(int index) {
                           ImVec2(ImGui::GetContentRegionAvail().x - badge_w, 0))) {
         // A row is the entity itself, wherever its group is: the group it is in is entered.
         const int parent = parent_group_of_entity(doc.level.editor, e.id);
-        if (parent != 0 && parent != editor_.open_group()) report(editor_.enter_group(parent), "enter");
+        if (parent != 0 && parent != ctx.editor.open_group())
+            ctx.report(ctx.editor.enter_group(parent), "enter");
         if (parent == 0)
-            while (editor_.open_group() != 0) editor_.exit_group();
-        report(editor_.select({e.id}, click_mode()), "select");
-        if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) focus_selection();
+            while (ctx.editor.open_group() != 0) ctx.editor.exit_group();
+        ctx.report(ctx.editor.select({e.id}, click_mode()), "select");
+        if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) ctx.window.focus_selection();
     }
     ImGui::PopStyleColor();
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s #%d", type_label(e.type()), e.id);
@@ -139,7 +143,7 @@ void EditorApp::outliner_entity_row(int index) {
                            errors + warnings);
         if (ImGui::IsItemHovered()) {
             std::string tip;
-            for (const auto& issue : editor_.issues())
+            for (const auto& issue : ctx.editor.issues())
                 if (issue.entity_id == e.id) tip += issue.message + "\n";
             ImGui::SetTooltip("%s", tip.c_str());
         }
@@ -147,35 +151,30 @@ void EditorApp::outliner_entity_row(int index) {
     ImGui::PopID();
 }
 
-void EditorApp::group_context_menu(const level::Group& group) {
+void Outliner::group_context_menu(const PanelContext& ctx, const level::Group& group) {
     if (!ImGui::BeginPopupContextItem("group_menu")) return;
     const int id = group.id;
-    if (ImGui::MenuItem("Select")) select_group(id);
-    if (ImGui::MenuItem("Enter group")) report(editor_.enter_group(id), "enter group");
+    if (ImGui::MenuItem("Select")) select_group(ctx.editor, ctx.log, id);
+    if (ImGui::MenuItem("Enter group")) ctx.report(ctx.editor.enter_group(id), "enter group");
     if (ImGui::MenuItem("Rename...")) {
         rename_group_ = id;
         std::snprintf(rename_buffer_, sizeof rename_buffer_, "%s", group.name.c_str());
     }
     if (ImGui::MenuItem("Ungroup")) {
-        select_group(id);
-        ungroup_selection_ui();
+        select_group(ctx.editor, ctx.log, id);
+        ungroup_selection(ctx.editor, ctx.log);
     }
     if (group.has_prefab) {
         ImGui::Separator();
-        if (ImGui::MenuItem("Apply to prefab")) {
-            auto applied = editor_.apply_instance_to_prefab(id);
-            if (applied)
-                log_line("applied to " + applied->string());
-            else
-                log_line("apply to prefab: " + applied.error().str(), true);
-        }
-        if (ImGui::MenuItem("Revert all overrides")) report(editor_.revert_prefab_overrides(id), "revert");
-        if (ImGui::MenuItem("Unlink from prefab")) report(editor_.unlink_prefab(id), "unlink");
+        if (ImGui::MenuItem("Apply to prefab")) apply_to_prefab(ctx.editor, ctx.log, id);
+        if (ImGui::MenuItem("Revert all overrides"))
+            ctx.report(ctx.editor.revert_prefab_overrides(id), "revert");
+        if (ImGui::MenuItem("Unlink from prefab")) ctx.report(ctx.editor.unlink_prefab(id), "unlink");
     }
     ImGui::EndPopup();
 }
 
-void EditorApp::rename_group_popup() {
+void Outliner::rename_group_popup(const PanelContext& ctx) {
     if (rename_group_ != 0 && !ImGui::IsPopupOpen("Rename group")) ImGui::OpenPopup("Rename group");
     if (!ImGui::BeginPopup("Rename group")) {
         rename_group_ = 0;
@@ -185,7 +184,7 @@ void EditorApp::rename_group_popup() {
     ImGui::SetNextItemWidth(200);
     if (ImGui::InputText("##group_name", rename_buffer_, sizeof rename_buffer_,
                          ImGuiInputTextFlags_EnterReturnsTrue)) {
-        report(editor_.rename_group(rename_group_, rename_buffer_), "rename group");
+        ctx.report(ctx.editor.rename_group(rename_group_, rename_buffer_), "rename group");
         rename_group_ = 0;
         ImGui::CloseCurrentPopup();
     }
@@ -193,16 +192,16 @@ void EditorApp::rename_group_popup() {
     ImGui::EndPopup();
 }
 
-void EditorApp::outliner_group_node(const level::Group& group) {
-    const level::EditorData& data = editor_.level().editor;
+void Outliner::group_node(const PanelContext& ctx, const level::Group& group) {
+    const level::EditorData& data = ctx.editor.level().editor;
     ImGui::PushID(-group.id); // entity rows push positive ids
     const std::vector<int>& members = group.entities;
     const bool selected = !members.empty() && std::all_of(members.begin(), members.end(), [&](int id) {
-        return editor_.doc().is_selected(id);
+        return ctx.editor.doc().is_selected(id);
     });
     ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_OpenOnArrow | ImGuiTreeNodeFlags_SpanAvailWidth;
     if (selected) flags |= ImGuiTreeNodeFlags_Selected;
-    if (editor_.open_group() != 0 && group_within(data, editor_.open_group(), group.id))
+    if (ctx.editor.open_group() != 0 && group_within(data, ctx.editor.open_group(), group.id))
         ImGui::SetNextItemOpen(true, ImGuiCond_Always); // the entered group and its parents stay open
     char label[200];
     const size_t count = group.entities.size() + group.groups.size();
@@ -214,13 +213,13 @@ void EditorApp::outliner_group_node(const level::Group& group) {
     ImGui::PushStyleColor(ImGuiCol_Text, group.has_prefab ? kPrefabText : kGroupText);
     const bool open = ImGui::TreeNodeEx("group", flags, "%s", label);
     ImGui::PopStyleColor();
-    spots_.here("outliner.group:" + std::to_string(group.id));
+    ctx.spots.here("outliner.group:" + std::to_string(group.id));
     if (ImGui::IsItemClicked(ImGuiMouseButton_Left) && !ImGui::IsItemToggledOpen()) {
         if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
             rename_group_ = group.id;
             std::snprintf(rename_buffer_, sizeof rename_buffer_, "%s", group.name.c_str());
         } else {
-            select_group(group.id, click_mode());
+            select_group(ctx.editor, ctx.log, group.id, click_mode());
         }
     }
     if (ImGui::IsItemHovered())
@@ -229,40 +228,40 @@ void EditorApp::outliner_group_node(const level::Group& group) {
                                            : "Group%s: click selects it, double-click renames, right-click "
                                              "for Enter / Ungroup",
                           group.has_prefab ? group.prefab.prefab.c_str() : "");
-    group_context_menu(group);
+    group_context_menu(ctx, group);
     if (open) {
         for (int child : group.groups)
-            if (const level::Group* g = data.find_group(child)) outliner_group_node(*g);
+            if (const level::Group* g = data.find_group(child)) group_node(ctx, *g);
         for (int id : group.entities) {
-            const auto& entities = editor_.level().entities;
+            const auto& entities = ctx.editor.level().entities;
             // Members are few; the level's entities are sorted by id, so a binary search finds each.
             auto it = std::lower_bound(entities.begin(), entities.end(), id,
                                        [](const level::Entity& e, int v) { return e.id < v; });
             if (it != entities.end() && it->id == id)
-                outliner_entity_row(static_cast<int>(it - entities.begin()));
-            else if (const level::Entity* e = editor_.level().find(id))
-                outliner_entity_row(static_cast<int>(e - entities.data()));
+                entity_row(ctx, static_cast<int>(it - entities.begin()));
+            else if (const level::Entity* e = ctx.editor.level().find(id))
+                entity_row(ctx, static_cast<int>(e - entities.data()));
         }
         ImGui::TreePop();
     }
     ImGui::PopID();
 }
 
-void EditorApp::outliner_tree() {
-    const Document& doc = editor_.doc();
+void Outliner::tree(const PanelContext& ctx) {
+    const Document& doc = ctx.editor.doc();
     const bool flat = type_filter_ >= 0 || search_[0] != '\0';
     ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(4, 2));
-    player_start_row();
+    player_start_row(ctx);
     if (!flat)
         for (int id : tree_.top_groups)
-            if (const level::Group* g = doc.level.editor.find_group(id)) outliner_group_node(*g);
+            if (const level::Group* g = doc.level.editor.find_group(id)) group_node(ctx, *g);
     const std::vector<int>& rows = flat ? tree_.filtered : tree_.loose;
     // Picked in the viewport: bring the primary selection's row into view (when it is in this list).
     int scroll_to = -1;
-    if (!doc.selection.empty() && doc.selection.front() != outliner_scrolled_to_) {
-        outliner_scrolled_to_ = doc.selection.front();
+    if (!doc.selection.empty() && doc.selection.front() != scrolled_to_) {
+        scrolled_to_ = doc.selection.front();
         for (size_t i = 0; i < rows.size(); ++i)
-            if (doc.level.entities[static_cast<size_t>(rows[i])].id == outliner_scrolled_to_)
+            if (doc.level.entities[static_cast<size_t>(rows[i])].id == scrolled_to_)
                 scroll_to = static_cast<int>(i);
     }
     ImGuiListClipper clipper;
@@ -270,21 +269,22 @@ void EditorApp::outliner_tree() {
     if (scroll_to >= 0) clipper.ForceDisplayRangeByIndices(scroll_to, scroll_to + 1);
     while (clipper.Step())
         for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
-            outliner_entity_row(rows[static_cast<size_t>(i)]);
+            entity_row(ctx, rows[static_cast<size_t>(i)]);
             if (i == scroll_to) ImGui::SetScrollHereY(0.5f);
         }
     ImGui::PopStyleVar();
-    rename_group_popup();
+    rename_group_popup(ctx);
 }
 
-void EditorApp::layers_section() {
-    const auto& layers = editor_.level().editor.layers;
-    const int active = editor_.level().editor.active_layer;
+void Outliner::layers_tab(const PanelContext& ctx) {
+    const auto& layers = ctx.editor.level().editor.layers;
+    const int active = ctx.editor.level().editor.active_layer;
     if (ImGui::SmallButton("+ Layer")) {
         const std::string name = "Layer " + std::to_string(std::max<size_t>(1, layers.size()));
-        if (auto added = editor_.layer_add(name); !added) log_line("layer: " + added.error().str(), true);
+        if (auto added = ctx.editor.layer_add(name); !added)
+            ctx.log.line("layer: " + added.error().str(), true);
     }
-    spots_.here("layers.add");
+    ctx.spots.here("layers.add");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("A new layer (the first one also makes the Default layer)");
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
     ImGui::TextWrapped(layers.empty() ? "No layers yet: every entity is in Default."
@@ -308,20 +308,20 @@ void EditorApp::layers_section() {
         ImGui::TableNextColumn();
         ImGui::PushStyleColor(ImGuiCol_Text, layer.visible ? ImVec4(0.8f, 0.85f, 0.95f, 1) : kDimText);
         if (ImGui::SmallButton(layer.visible ? "o" : "-"))
-            report(editor_.layer_set_visible(i, !layer.visible), "layer");
+            ctx.report(ctx.editor.layer_set_visible(i, !layer.visible), "layer");
         ImGui::PopStyleColor();
-        spots_.here(spot + ".eye");
+        ctx.spots.here(spot + ".eye");
         if (ImGui::IsItemHovered()) ImGui::SetTooltip(layer.visible ? "Shown: click to hide" : "Hidden");
         ImGui::TableNextColumn();
         ImGui::PushStyleColor(ImGuiCol_Text, layer.locked ? ImVec4(1.0f, 0.7f, 0.3f, 1) : kDimText);
         if (ImGui::SmallButton(layer.locked ? "L" : "."))
-            report(editor_.layer_set_locked(i, !layer.locked), "layer");
+            ctx.report(ctx.editor.layer_set_locked(i, !layer.locked), "layer");
         ImGui::PopStyleColor();
-        spots_.here(spot + ".lock");
+        ctx.spots.here(spot + ".lock");
         if (ImGui::IsItemHovered()) ImGui::SetTooltip(layer.locked ? "Locked: click to unlock" : "Lock");
         ImGui::TableNextColumn();
-        if (ImGui::RadioButton("##active", active == i)) report(editor_.layer_set_active(i), "layer");
-        spots_.here(spot + ".active");
+        if (ImGui::RadioButton("##active", active == i)) ctx.report(ctx.editor.layer_set_active(i), "layer");
+        ctx.spots.here(spot + ".active");
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("The active layer: new entities go here");
         ImGui::TableNextColumn();
         if (rename_layer_ == i) {
@@ -329,14 +329,14 @@ void EditorApp::layers_section() {
             if (focus_rename_) ImGui::SetKeyboardFocusHere(), focus_rename_ = false;
             if (ImGui::InputText("##name", rename_buffer_, sizeof rename_buffer_,
                                  ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll)) {
-                report(editor_.layer_rename(i, rename_buffer_), "rename layer");
+                ctx.report(ctx.editor.layer_rename(i, rename_buffer_), "rename layer");
                 rename_layer_ = -1;
             } else if (ImGui::IsItemDeactivated()) {
                 rename_layer_ = -1;
             }
         } else {
             ImGui::Selectable(layer.name.c_str(), false, ImGuiSelectableFlags_AllowDoubleClick);
-            spots_.here(spot + ".name");
+            ctx.spots.here(spot + ".name");
             if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
                 rename_layer_ = i, focus_rename_ = true;
                 std::snprintf(rename_buffer_, sizeof rename_buffer_, "%s", layer.name.c_str());
@@ -344,12 +344,13 @@ void EditorApp::layers_section() {
             if (ImGui::IsItemHovered())
                 ImGui::SetTooltip("Double-click to rename; right-click to move the selection here");
             if (ImGui::BeginPopupContextItem("layer_menu")) {
-                if (ImGui::MenuItem("Move selection here", nullptr, false, !editor_.doc().selection.empty()))
-                    report(editor_.move_selection_to_layer(i), "move to layer");
-                spots_.here("layer_menu.move");
+                if (ImGui::MenuItem("Move selection here", nullptr, false,
+                                    !ctx.editor.doc().selection.empty()))
+                    ctx.report(ctx.editor.move_selection_to_layer(i), "move to layer");
+                ctx.spots.here("layer_menu.move");
                 if (ImGui::MenuItem("Select all in layer")) {
-                    const auto table = layer_table(editor_.level().editor);
-                    editor_.select_where([&](const level::Entity& e) {
+                    const auto table = layer_table(ctx.editor.level().editor);
+                    ctx.editor.select_where([&](const level::Entity& e) {
                         auto it = table.find(e.id);
                         return (it == table.end() ? 0 : it->second) == i;
                     });
@@ -368,7 +369,7 @@ void EditorApp::layers_section() {
         ImGui::TextDisabled("%d", count);
         ImGui::TableNextColumn();
         if (i > 0) {
-            if (ImGui::SmallButton("x")) report(editor_.layer_remove(i), "remove layer");
+            if (ImGui::SmallButton("x")) ctx.report(ctx.editor.layer_remove(i), "remove layer");
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("Remove the layer: its entities go to Default");
         }
         ImGui::PopID();
@@ -381,6 +382,47 @@ std::optional<LeftTab> parse_left_tab(std::string_view name) {
     if (name == "layers") return LeftTab::Layers;
     if (name == "prefabs") return LeftTab::Prefabs;
     return std::nullopt;
+}
+
+const char* left_tab_name(LeftTab tab) {
+    constexpr const char* kNames[] = {"outliner", "layers", "prefabs"};
+    return kNames[static_cast<int>(tab)];
+}
+
+// The Outliner tab: type filter, search and the entity tree.
+void Outliner::outliner_tab(const PanelContext& ctx) {
+    ImGui::SetNextItemWidth(-1);
+    const char* preview =
+        type_filter_ < 0 ? "All types" : type_label(static_cast<level::EntityType>(type_filter_));
+    if (ImGui::BeginCombo("##type", preview)) {
+        if (ImGui::Selectable("All types", type_filter_ < 0)) type_filter_ = -1;
+        for (auto t : level::all_types())
+            if (ImGui::Selectable(type_label(t), type_filter_ == static_cast<int>(t)))
+                type_filter_ = static_cast<int>(t);
+        ImGui::EndCombo();
+    }
+    ImGui::SetNextItemWidth(-1);
+    ImGui::InputTextWithHint("##search", "Search names...", search_, sizeof(search_));
+    if (type_filter_ >= 0 && ImGui::Button("Select all of this type", ImVec2(-1, 0)))
+        ctx.editor.select_all_of_type(static_cast<level::EntityType>(type_filter_));
+    ImGui::BeginChild("entities", ImVec2(0, 0), false);
+    tree(ctx);
+    ImGui::EndChild();
+}
+
+// The player start's row at the top of the tree (player_start_ui.cpp draws its figure).
+void Outliner::player_start_row(const PanelContext& ctx) {
+    if (type_filter_ >= 0 || !mentions("player start", search_)) return;
+    ImGui::PushStyleColor(ImGuiCol_Text, kStartText);
+    const bool clicked = ImGui::Selectable("     Player start", ctx.editor.doc().player_start_selected(),
+                                           ImGuiSelectableFlags_AllowDoubleClick);
+    ImGui::PopStyleColor();
+    ctx.spots.here("outliner.player_start");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Where the player starts: click to select, then move and turn it");
+    if (!clicked) return;
+    ctx.report(ctx.editor.select({kPlayerStartId}, click_mode()), "select");
+    if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) ctx.window.focus_selection();
 }
 
 } // namespace ks::editor::ui

@@ -1,10 +1,14 @@
-// The left column's Prefabs tab: every prefab of the library (editor_.prefabs(): the shipped prefabs/ and
+// The left column's Prefabs tab: every prefab of the library (Editor::prefabs(): the shipped prefabs/ and
 // the designer's own folder) with a rendered thumbnail, its title and entity count; a broken file shows
 // its error in red. Clicking one arms placing it: the next viewport click places a linked instance
 // (Shift keeps placing). The library is rescanned (file times only) every two seconds and when the window
 // regains focus; thumbnails are rendered offscreen in the render pass, again only when the library's
 // revision changes.
-#include "ui/editor_app.h"
+#include "ui/prefab_palette.h"
+
+#include "model/bounds.h"
+#include "render/debug_draw.h"
+#include "render/level_scene.h"
 #include "ui/panel_style.h"
 
 #define GLFW_INCLUDE_NONE
@@ -37,37 +41,35 @@ geometry::Camera thumbnail_camera(Vec3 lo, Vec3 hi) {
 }
 } // namespace
 
-void EditorApp::rescan_prefabs() {
+void PrefabPalette::rescan(Editor& editor, EditorLog& log, bool focused) {
     const double now = glfwGetTime();
-    const bool focused = glfwGetWindowAttrib(shell_.window(), GLFW_FOCUSED) != 0;
     const bool regained = focused && !was_focused_;
     was_focused_ = focused;
     if (!regained && now - last_rescan_ < kRescanSeconds) return;
     last_rescan_ = now;
-    if (!editor_.prefabs().rescan() || editor_.history().in_transaction()) return;
+    if (!editor.prefabs().rescan() || editor.history().in_transaction()) return;
     // A prefab file changed on disk (another editor applied an instance, an edit by hand): the instances in
     // this level follow it at once, as opening the level would, in one step that undo takes back.
-    auto updated = editor_.update_prefab_instances();
+    auto updated = editor.update_prefab_instances();
     if (!updated)
-        log_line("prefab instances not updated: " + updated.error().str(), true);
+        log.line("prefab instances not updated: " + updated.error().str(), true);
     else if (*updated > 0)
-        log_line("a prefab changed on disk: " + std::to_string(*updated) +
-                 " entities of its instances follow it (" + editor_.history().undo_name() +
+        log.line("a prefab changed on disk: " + std::to_string(*updated) +
+                 " entities of its instances follow it (" + editor.history().undo_name() +
                  "; undo keeps the old)");
 }
 
-// Render pass: one small target per prefab, drawn again only when the library changed.
-void EditorApp::render_prefab_thumbnails() {
-    const PrefabLibrary& library = editor_.prefabs();
+void PrefabPalette::render_thumbnails(const PrefabLibrary& library, render::SceneRenderer& renderer,
+                                      render::AssetLibrary& assets) {
     if (thumbnails_revision_ == library.revision()) return;
     thumbnails_revision_ = library.revision();
     std::vector<std::unique_ptr<PrefabThumbnail>> kept;
-    render::LevelSceneOptions options = render::level_scene_options(renderer_->settings());
+    render::LevelSceneOptions options = render::level_scene_options(renderer.settings());
     options.bake_light_map = false; // a thumbnail is lit per vertex: no bake for 96 pixels
     std::vector<render::MeshInstance> instances;
     std::vector<render::Light> lights;
     render::DebugDraw no_debug;
-    renderer_->invalidate_shadows(); // the cached shadow map is the level's
+    renderer.invalidate_shadows(); // the cached shadow map is the level's
     for (const PrefabEntry& entry : library.entries()) {
         if (!entry.prefab || entry.prefab->entities.empty()) continue;
         auto thumbnail = std::make_unique<PrefabThumbnail>();
@@ -81,7 +83,7 @@ void EditorApp::render_prefab_thumbnails() {
             const geometry::Aabb b = entity_obb(e).aabb();
             lo = glm::min(lo, b.min), hi = glm::max(hi, b.max);
         }
-        auto scene = render::LevelScene::build(level, assets_, options);
+        auto scene = render::LevelScene::build(level, assets, options);
         scene->emit(instances, lights);
         // A prefab without lights of its own is lit by a lamp over the camera's shoulder.
         const geometry::Camera camera = thumbnail_camera(lo, hi);
@@ -102,22 +104,23 @@ void EditorApp::render_prefab_thumbnails() {
         frame.width = frame.height = kThumbnailSize;
         if (!thumbnail->target.ensure(kThumbnailSize, kThumbnailSize)) continue;
         thumbnail->target.bind();
-        renderer_->render(frame);
-        renderer_->invalidate_shadows();
+        renderer.render(frame);
+        renderer.invalidate_shadows();
         thumbnail->drawn = true;
         kept.push_back(std::move(thumbnail));
     }
     thumbnails_ = std::move(kept);
 }
 
-void EditorApp::prefab_palette() {
-    const PrefabLibrary& library = editor_.prefabs();
+std::optional<std::string> PrefabPalette::draw(const PanelContext& ctx, const std::string& armed_name) {
+    const PrefabLibrary& library = ctx.editor.prefabs();
+    std::optional<std::string> picked;
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
     ImGui::TextWrapped("Click one, then click in the viewport (Shift: several)");
     ImGui::PopStyleColor();
     if (library.entries().empty()) {
         ImGui::TextWrapped("No prefabs yet. Select some entities and use Edit > Save selection as prefab...");
-        return;
+        return picked;
     }
     ImGui::BeginChild("prefab_cells");
     const float cell = static_cast<float>(kThumbnailSize) + 4.0f;
@@ -131,7 +134,7 @@ void EditorApp::prefab_palette() {
         ImGui::PushID(entry.name.c_str());
         if (column > 0) ImGui::SameLine();
         ImGui::BeginGroup();
-        const bool armed = placing_.prefab == entry.name;
+        const bool armed = armed_name == entry.name;
         const PrefabThumbnail* thumbnail = nullptr;
         for (const auto& t : thumbnails_)
             if (t->name == entry.name && t->drawn) thumbnail = t.get();
@@ -145,12 +148,8 @@ void EditorApp::prefab_palette() {
         else
             clicked = ImGui::Button("...", ImVec2(size.x + 4, size.y + 4));
         if (armed) ImGui::PopStyleColor();
-        spots_.here("prefab:" + entry.name);
-        if (clicked) {
-            if (pick_) end_pick(); // placing takes the viewport's clicks
-            placing_.reset();
-            placing_.prefab = entry.name;
-        }
+        ctx.spots.here("prefab:" + entry.name);
+        if (clicked) picked = entry.name;
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("%s\n%s  (%zu entities)\n%s\nClick, then click in the viewport to place a "
                               "linked instance; Shift+click places several.",
@@ -175,9 +174,10 @@ void EditorApp::prefab_palette() {
         ImGui::TextWrapped("%s: %s", entry.path.filename().string().c_str(),
                            entry.prefab.error().str().c_str());
         ImGui::PopStyleColor();
-        spots_.here("prefab:" + entry.name);
+        ctx.spots.here("prefab:" + entry.name);
     }
     ImGui::EndChild();
+    return picked;
 }
 
 } // namespace ks::editor::ui

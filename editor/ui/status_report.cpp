@@ -112,9 +112,9 @@ void EditorApp::objects_status(nlohmann::json& s) const {
         player_start["screen"] = point(p + viewport_origin_);
     s["player_start"] = player_start;
     s["gizmo_space"] = rotation_space_name(gizmo_.space);
-    s["texture_browser"] = {{"open", texture_browser_.is_open()},
-                            {"query", texture_browser_.query()},
-                            {"shown", texture_browser_.shown()}};
+    const TextureBrowser& browser = inspector_.texture_browser();
+    s["texture_browser"] = {
+        {"open", browser.is_open()}, {"query", browser.query()}, {"shown", browser.shown()}};
 }
 
 // Groups, layers, the entered group and the prefab library, so tests can wait on the structure.
@@ -138,7 +138,7 @@ void EditorApp::structure_status(nlohmann::json& s) const {
         layers.push_back({{"name", l.name},
                           {"visible", l.visible},
                           {"locked", l.locked},
-                          {"count", i < tree_.layer_counts.size() ? tree_.layer_counts[i] : 0}});
+                          {"count", i < outliner_.layer_counts().size() ? outliner_.layer_counts()[i] : 0}});
     }
     s["layers"] = layers;
     s["active_layer"] = data.active_layer;
@@ -153,7 +153,7 @@ void EditorApp::structure_status(nlohmann::json& s) const {
                            {"entities", entry.prefab ? entry.prefab->entities.size() : 0},
                            {"error", entry.prefab ? std::string() : entry.prefab.error().str()}});
     s["prefabs"] = prefabs;
-    s["prefab_thumbnails"] = thumbnails_.size();
+    s["prefab_thumbnails"] = prefabs_.thumbnail_count();
     s["prefab_prompt"] = {{"open", prefab_prompt_open_},
                           {"name", std::string(prefab_name_)},
                           {"problem", prefab_name_[0] ? prefab_name_problem(prefab_name_) : std::string()},
@@ -191,10 +191,8 @@ void EditorApp::write_status() {
                   {"last_build_cpu_ms", scene_stats_.last_build_cpu_ms}};
     s["view"] = view_mode_name(view_.mode);
     s["tab"] = dojo_tab_ ? "dojo" : "level";
-    constexpr const char* kLeftTabs[] = {"outliner", "layers", "prefabs"};
-    constexpr const char* kInspectorTabs[] = {"properties", "links", "objectives"};
-    s["left_tab"] = kLeftTabs[static_cast<int>(shown_left_tab_)];
-    s["inspector_tab"] = kInspectorTabs[static_cast<int>(shown_tab_)];
+    s["left_tab"] = left_tab_name(shown_left_tab_);
+    s["inspector_tab"] = inspector_tab_name(inspector_.shown_tab());
     s["menu"] = {{"file", point(menu_spots_[0])}, {"quit", point(menu_spots_[1])}};
     s["about"] = about_.status();
     s["clip_preview"] = {{"on", clip_preview_}, {"robot", posed_robot_}, {"toggle", point(preview_toggle_)}};
@@ -212,7 +210,7 @@ void EditorApp::write_status() {
     s["viewport"] = {viewport_origin_.x, viewport_origin_.y, viewport_size_.x, viewport_size_.y};
     json palette = json::object();
     for (auto type : level::all_types()) {
-        const ScreenRect& r = palette_rects_[static_cast<size_t>(type)];
+        const PlacePalette::ScreenRect& r = palette_.rect(type);
         if (r.max.x > r.min.x) palette[std::string(level::type_name(type))] = point((r.min + r.max) * 0.5f);
     }
     s["palette"] = palette;
@@ -250,7 +248,7 @@ void EditorApp::write_status() {
                             {"yaw", e->rotation.x},
                             {"rotation", {e->rotation.x, e->rotation.y, e->rotation.z}},
                             {"links", links_json(e->links)}};
-            if (const auto texture = selection_texture()) s["primary"]["texture"] = texture->name;
+            if (const auto texture = selection_texture(editor_)) s["primary"]["texture"] = texture->name;
         }
     objects_status(s);
     structure_status(s);
@@ -262,9 +260,9 @@ void EditorApp::write_status() {
     play["command"] = play_command_;
     play["exit_code"] = play_exit_code_ ? json(*play_exit_code_) : json(nullptr);
     s["playtest"] = play;
-    s["error_lines"] = error_lines_;
-    s["last_error"] = last_error_;
-    s["log_lines"] = log_.size();
+    s["error_lines"] = log_.error_lines();
+    s["last_error"] = log_.last_error();
+    s["log_lines"] = log_.lines().size();
     std::string text = s.dump();
     if (text == last_status_) return;
     const auto& path = *options_.status_file;

@@ -3,6 +3,7 @@
 // selection as prefab..." prompt and the "Move selection to layer" submenu. Every edit is an Editor call
 // (editor_groups.cpp, editor_layers.cpp, editor_prefabs.cpp).
 #include "ui/editor_app.h"
+#include "ui/structure_actions.h"
 
 #include <imgui.h>
 
@@ -10,74 +11,12 @@
 
 namespace ks::editor::ui {
 
-std::string EditorApp::group_label(const level::Group& group) const {
-    std::string label = group.name.empty() ? "group " + std::to_string(group.id) : group.name;
-    if (group.has_prefab) label += "  [" + group.prefab.prefab + "]";
-    return label;
-}
-
-void EditorApp::group_selection_ui() {
-    if (editor_.doc().selection.empty()) return;
-    auto group = editor_.group_selection();
-    if (!group) {
-        log_line("group: " + group.error().str(), true);
-        return;
-    }
-    if (const level::Group* g = editor_.level().editor.find_group(*group))
-        log_line("grouped " + std::to_string(group_entities_deep(editor_.level().editor, *group).size()) +
-                 " entities as " + g->name);
-}
-
-void EditorApp::ungroup_selection_ui() {
-    if (editor_.selected_groups().empty()) {
-        log_line("ungroup: the selection holds no whole group", true);
-        return;
-    }
-    report(editor_.ungroup_selection(), "ungroup");
-}
-
-// Up one level; the group just left stays selected as a whole, so Esc then Ctrl+Shift+G ungroups it.
-void EditorApp::leave_group() {
-    const int left = editor_.open_group();
-    editor_.exit_group();
-    select_group(left);
-}
-
-// The group as a click would pick it: its parent is entered first (or every group left for a top-level
-// one), so a nested group's row in the outliner selects that group and not its outermost ancestor.
-void EditorApp::select_group(int group_id, SelectMode mode) {
-    const level::EditorData& data = editor_.level().editor;
-    if (!data.find_group(group_id)) return;
-    const int parent = parent_group_of_group(data, group_id);
-    if (parent != editor_.open_group()) {
-        if (parent == 0)
-            while (editor_.open_group() != 0) editor_.exit_group();
-        else
-            report(editor_.enter_group(parent), "enter group");
-    }
-    const std::vector<int> members = group_entities_deep(data, group_id);
-    if (members.empty()) return;
-    report(editor_.select_picked(members.front(), mode), "select");
-}
-
-bool EditorApp::double_click_enter(int entity_id) {
-    if (entity_id <= 0) return false;
-    const int unit = pick_unit(editor_.level().editor, editor_.open_group(), entity_id);
-    if (unit == 0) return false;
-    if (auto r = editor_.enter_group(unit); !r) {
-        report(r, "enter group");
-        return false;
-    }
-    report(editor_.select_picked(entity_id), "select");
-    return true;
-}
-
 void EditorApp::structure_menu_items() {
     const bool any = !editor_.doc().selection.empty();
-    if (ImGui::MenuItem("Group", "Ctrl+G", false, any)) group_selection_ui();
+    if (ImGui::MenuItem("Group", "Ctrl+G", false, any)) group_selection(editor_, log_);
     if (ImGui::MenuItem("Ungroup", "Ctrl+Shift+G", false, !editor_.selected_groups().empty()))
-        ungroup_selection_ui();
-    if (ImGui::MenuItem("Leave group", "Esc", false, editor_.open_group() != 0)) leave_group();
+        ungroup_selection(editor_, log_);
+    if (ImGui::MenuItem("Leave group", "Esc", false, editor_.open_group() != 0)) leave_group(editor_, log_);
     if (ImGui::MenuItem("Save selection as prefab...", nullptr, false, any)) open_prefab_prompt();
     spots_.here("menu.save_prefab");
     const auto& layers = editor_.level().editor.layers;

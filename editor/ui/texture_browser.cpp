@@ -106,49 +106,4 @@ std::optional<std::string> TextureBrowser::draw(render::AssetLibrary& assets, co
     return picked;
 }
 
-// ---- EditorApp: the inspector's texture field and the browser window ---------------------------------
-
-bool EditorApp::texture_field_widget(FieldValue& value) {
-    std::string name = std::get<std::string>(value);
-    const ImTextureID thumb = TextureBrowser::thumbnail(assets_, name);
-    const float size = ImGui::GetFrameHeight() - 2.0f;
-    const bool clicked = thumb ? ImGui::ImageButton(thumb, ImVec2(size, size), ImVec2(0, 0), ImVec2(1, 1), 1)
-                               : ImGui::Button("?", ImVec2(size + 2.0f, size + 2.0f));
-    spots_.here("inspector.texture");
-    if (clicked) texture_browser_.open();
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(thumb ? "Browse the textures" : "Not a surface material: browse the textures");
-    ImGui::SameLine(0, 4);
-    ImGui::SetNextItemWidth(-1);
-    char buffer[128];
-    std::snprintf(buffer, sizeof buffer, "%s", name.c_str());
-    if (!ImGui::InputText("##texture", buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue))
-        return false;
-    value = std::string(buffer);
-    return true;
-}
-
-std::optional<SelectionTexture> EditorApp::selection_texture() const {
-    const auto selected = editor_.selected_entities();
-    if (selected.empty()) return std::nullopt;
-    for (const FieldDescriptor& field : common_fields(selected))
-        if (field.kind == FieldKind::Texture)
-            if (auto value = get_entity_field(*selected.front(), field.name))
-                return SelectionTexture{field.name, std::get<std::string>(*value)};
-    return std::nullopt;
-}
-
-void EditorApp::texture_browser_window(Vec2 position) {
-    if (!texture_browser_.is_open()) return;
-    const auto current = selection_texture();
-    if (!current) { // nothing to pick for
-        texture_browser_.close();
-        return;
-    }
-    if (auto picked = texture_browser_.draw(assets_, current->name, position, spots_)) {
-        report(editor_.set_field(current->field, *picked), "texture");
-        editor_.end_merging(); // each pick is its own step
-    }
-}
-
 } // namespace ks::editor::ui

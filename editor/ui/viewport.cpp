@@ -5,6 +5,7 @@
 #include "level/level_io.h"
 #include "ui/editor_app.h"
 #include "ui/layout.h"
+#include "ui/structure_actions.h"
 #include "ui/view_input.h"
 
 #define GLFW_INCLUDE_NONE
@@ -510,7 +511,8 @@ void EditorApp::viewport_input(Vec2 origin, bool hovered) {
         }
         // A double click on a group's member enters the group (before the gizmo: the first click selected
         // the group, and its gizmo may lie under the pointer now).
-        if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && double_click_enter(pick(view_.ray(mouse))))
+        if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) &&
+            double_click_enter(editor_, log_, pick(view_.ray(mouse))))
             return;
         if (auto point = pick_patrol_point(editor_, view_, mouse)) { // a route point beats the gizmo
             patrol_drag_.begin(editor_, view_, *point, mouse);
