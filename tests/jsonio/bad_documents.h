@@ -23,8 +23,8 @@ inline const std::vector<BadDocument>& bad_documents() {
          ":1:12: ", "file is not a text file (byte 0x00"},
         {"syntax error", "{\n  \"name\": \"x\",,\n}", ":2:15: ", "JSON syntax error"},
         {"duplicate key", "{\"name\": \"a\",\n \"name\": \"b\"}",
-         ":2:2: ", "duplicate key (also at line 1:2)"},
-        {"overflowing number", "{\"name\": 1e999}", ":1:10: ", "number 1e999 overflows"},
+         ":2:2: ", "name: duplicate key (also at line 1:2)"},
+        {"overflowing number", "{\"name\": 1e999}", ":1:10: ", "name: number 1e999 overflows"},
         {"too deep", "{\"a\": " + std::string(70, '[') + std::string(70, ']') + "}",
          ":1:70: ", "nested deeper than 64 levels"},
     };
