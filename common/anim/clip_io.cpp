@@ -2,7 +2,8 @@
 
 #include "anim/clip_reader.h"
 #include "core/files.h"
-#include "jsonio/position_map.h"
+#include "core/log.h"
+#include "jsonio/document.h"
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
@@ -11,35 +12,6 @@ namespace ks::anim {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-// The JSON syntax check: the document, or one error at the place the parser stopped.
-Result<Json> parse_document(std::string_view text, const std::string& file_name) {
-    try {
-        return Json::parse(text);
-    } catch (const nlohmann::json::parse_error& e) {
-        // e.byte is 1-based, pointing just past the offending character.
-        const std::size_t offset = e.byte > 0 ? e.byte - 1 : 0;
-        std::string hint = "fix the JSON syntax";
-        const std::string_view near = text.substr(offset >= 8 ? offset - 8 : 0, 16);
-        for (const char* bad : {"NaN", "nan", "Infinity", "inf"})
-            if (near.find(bad) != std::string_view::npos)
-                hint = "JSON has no NaN or Infinity: write a finite number";
-        std::string what = e.what();
-        if (auto p = what.find("parse error"); p != std::string::npos) what = what.substr(p);
-        return Error(what, jsonio::location_at(file_name, jsonio::position_of_offset(text, offset)), hint);
-    } catch (const nlohmann::json::exception& e) {
-        // Number overflow (1e999) is reported without a position: find the quoted token in the text.
-        std::string what = e.what();
-        jsonio::TextPosition pos{};
-        auto open = what.find('\''), close = what.rfind('\'');
-        if (open != std::string::npos && close > open) {
-            auto at = text.find(what.substr(open + 1, close - open - 1));
-            if (at != std::string_view::npos) pos = jsonio::position_of_offset(text, at);
-        }
-        return Error(what.substr(what.find(']') + 2) + ": number is not finite",
-                     jsonio::location_at(file_name, pos), "write a finite number");
-    }
-}
 
 // Whether one path is the other or inside it ("clips[1]" and "clips[1].name").
 bool related(const std::string& a, const std::string& b) {
@@ -57,41 +29,51 @@ void add_semantic_issues(const AnimationFile& file, std::vector<Issue>& issues) 
     for (Issue& semantic : validate(file)) {
         bool repeat = false;
         for (std::size_t i = 0; i < read_issues && !repeat; ++i)
-            repeat = related(issues[i].path.str(), semantic.path.str());
+            repeat = !issues[i].warning && related(issues[i].path.str(), semantic.path.str());
         if (!repeat) issues.push_back(std::move(semantic));
     }
 }
 
-// Every issue pinned to its line:column, in document order, as one error.
-Error located_error(std::string_view text, const std::string& file_name, const std::vector<Issue>& issues) {
-    const jsonio::PositionMap positions = jsonio::PositionMap::scan(text);
+// Every issue pinned to its line:column: errors (with the document's own) into one Error, warnings to the
+// log.
+Result<AnimationFile> located(const jsonio::Document& document, AnimationFile file,
+                              const std::vector<Issue>& issues) {
+    const std::string& file_name = document.file();
     std::vector<Error> errors;
+    for (const jsonio::Problem& p : document.problems()) errors.push_back(p.error);
     for (const Issue& issue : issues) {
         std::string path = issue.path.str();
-        const jsonio::TextPosition pos = positions.find_value(path);
-        errors.emplace_back(issue.message, jsonio::location_at(file_name, pos, std::move(path)), issue.hint);
+        const jsonio::TextPosition pos = document.positions().find_value(path);
+        Error located(issue.message, jsonio::location_at(file_name, pos, std::move(path)), issue.hint);
+        if (issue.warning)
+            log::warn(located.str());
+        else
+            errors.push_back(std::move(located));
     }
-    std::stable_sort(errors.begin(), errors.end(), [](const Error& a, const Error& b) {
-        return std::pair(a.where.line, a.where.column) < std::pair(b.where.line, b.where.column);
-    });
-    return combine_errors(errors);
+    if (errors.empty()) return file;
+    return jsonio::combined_error(std::move(errors), file_name);
 }
 
 } // namespace
 
 Result<AnimationFile> load_animation_string(std::string_view text, const std::string& file_name) {
-    if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
-        return Error("the animation file is empty", Location(file_name, 1, 1),
-                     std::string("expected a JSON object with \"format\": \"") + kAnimationFormat +
-                         "\", \"version\", \"rig\" and \"clips\"");
-    Result<Json> root = parse_document(text, file_name);
-    if (!root) return root.error();
-
+    const jsonio::Document document = jsonio::Document::parse(
+        text, file_name,
+        {"animation", std::string("an animation file is a JSON object with \"format\": \"") +
+                          kAnimationFormat + "\", \"version\", \"rig\" and \"clips\""});
     AnimationFile file;
-    std::vector<Issue> issues = read_animation_json(*root, file);
-    add_semantic_issues(file, issues);
-    if (issues.empty()) return file;
-    return located_error(text, file_name, issues);
+    std::vector<Issue> issues;
+    if (const jsonio::Json* root = document.root()) {
+        issues = read_animation_json(*root, file);
+        add_semantic_issues(file, issues);
+        // A number that overflowed was reported by the document and reads as null: one message is enough.
+        jsonio::Problems reported(file_name, nullptr);
+        document.report_to(reported);
+        issues.erase(std::remove_if(issues.begin(), issues.end(),
+                                    [&](const Issue& i) { return reported.already_reported(i.path.str()); }),
+                     issues.end());
+    }
+    return located(document, std::move(file), issues);
 }
 
 Result<AnimationFile> load_animation_file(const std::filesystem::path& path) {

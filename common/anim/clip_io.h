@@ -21,10 +21,12 @@ inline constexpr int kAnimationVersion = 1;
 // Issue paths are the toolkit's JSON paths ("clips[2].phases[0].duration").
 using JsonPath = jsonio::JsonPath;
 
+// An error, or a warning (an unknown field, ignored: the same rule as in every file the programs read).
 struct Issue {
     JsonPath path;
     std::string message;
     std::string hint;
+    bool warning = false;
 };
 
 // Semantic checks on an in-memory file (what the loader runs after parsing; the editor calls it live):

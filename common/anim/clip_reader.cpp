@@ -2,8 +2,10 @@
 
 #include "anim/clip_issues.h"
 #include "jsonio/describe.h"
+#include "jsonio/object_reader.h"
 #include "jsonio/suggest.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace ks::anim {
@@ -29,15 +31,13 @@ class Reader {
         problem(path, std::string(what) + " must be an array, not " + jsonio::type_name(j));
         return false;
     }
-    void known_keys(const Json& j, const JsonPath& path, std::initializer_list<const char*> allowed) {
+    void known_keys(const Json& j, const JsonPath& path, std::initializer_list<const char*> allowed,
+                    const char* what) {
+        const std::vector<std::string> names(allowed.begin(), allowed.end());
         for (auto it = j.begin(); it != j.end(); ++it) {
-            bool ok = false;
-            for (const char* a : allowed) ok = ok || it.key() == a;
-            if (ok) continue;
-            std::vector<std::string> names;
-            for (const char* a : allowed) names.emplace_back(a);
-            problem(path / it.key(), "unknown key '" + it.key() + "'",
-                    did_you_mean(it.key(), names) + "known keys: " + jsonio::join(names));
+            if (std::find(names.begin(), names.end(), it.key()) != names.end()) continue;
+            issues.push_back({path / it.key(), jsonio::unknown_field_message(it.key()),
+                              jsonio::unknown_field_hint(it.key(), names, what), true});
         }
     }
     bool string(const Json& j, const JsonPath& path, std::string& out) {
@@ -76,7 +76,7 @@ class Reader {
             auto parsed = parse_ease_name(j.get<std::string>());
             if (!parsed) {
                 problem(
-                    path, "unknown easing '" + j.get<std::string>() + "'",
+                    path, "unknown easing " + quoted_name(j.get<std::string>()),
                     did_you_mean(j.get<std::string>(), known_ease_names()) +
                         "known: " + jsonio::join(known_ease_names()) +
                         "; or {\"power\": p, \"mode\": \"In|Out|InOut\"} or {\"bezier\": [x1, y1, x2, y2]}");
@@ -91,7 +91,7 @@ class Reader {
             return false;
         }
         if (j.contains("power")) {
-            known_keys(j, path, {"power", "mode"});
+            known_keys(j, path, {"power", "mode"}, "easing");
             double p = 0;
             if (!number(j["power"], path / "power", p)) return false;
             EaseMode mode = EaseMode::In;
@@ -105,7 +105,7 @@ class Reader {
                 else if (m == "InOut")
                     mode = EaseMode::InOut;
                 else {
-                    problem(path / "mode", "unknown mode '" + m + "'", "one of In, Out, InOut");
+                    problem(path / "mode", "unknown mode " + quoted_name(m), "one of In, Out, InOut");
                     return false;
                 }
             }
@@ -113,7 +113,7 @@ class Reader {
             return true;
         }
         if (j.contains("bezier")) {
-            known_keys(j, path, {"bezier"});
+            known_keys(j, path, {"bezier"}, "easing");
             const Json& b = j["bezier"];
             if (!b.is_array() || b.size() != 4) {
                 problem(path / "bezier", "must be 4 numbers [x1, y1, x2, y2]");
@@ -134,14 +134,15 @@ class Reader {
     void read(const Json& root, AnimationFile& file) {
         const JsonPath top;
         if (!is_object(root, top, "the document")) return;
-        known_keys(root, top,
-                   {"format", "version", "rig", "rest_nodes", "node_ease", "blend", "wrap_captured_angles",
-                    "clips"});
+        known_keys(
+            root, top,
+            {"format", "version", "rig", "rest_nodes", "node_ease", "blend", "wrap_captured_angles", "clips"},
+            "animation file");
         std::string format;
         if (!root.contains("format"))
             problem(top, "missing \"format\"", std::string("\"format\": \"") + kAnimationFormat + "\"");
         else if (string(root["format"], top / "format", format) && format != kAnimationFormat)
-            problem(top / "format", "format is '" + format + "'",
+            problem(top / "format", "format is " + quoted_name(format),
                     std::string("expected '") + kAnimationFormat + "'");
         if (!root.contains("version"))
             problem(top, "missing \"version\"", "\"version\": 1");
@@ -166,14 +167,14 @@ class Reader {
         if (root.contains("blend") && is_object(root["blend"], top / "blend", "blend")) {
             const Json& b = root["blend"];
             const JsonPath bp = top / "blend";
-            known_keys(b, bp, {"default", "pairs"});
+            known_keys(b, bp, {"default", "pairs"}, "blend");
             if (b.contains("default")) number(b["default"], bp / "default", file.default_blend);
             if (b.contains("pairs") && is_array(b["pairs"], bp / "pairs", "blend pairs"))
                 for (std::size_t i = 0; i < b["pairs"].size(); ++i) {
                     const Json& pj = b["pairs"][i];
                     const JsonPath pp = (bp / "pairs")[i];
                     if (!is_object(pj, pp, "a blend pair")) continue;
-                    known_keys(pj, pp, {"from", "to", "time"});
+                    known_keys(pj, pp, {"from", "to", "time"}, "blend pair");
                     BlendPair pair;
                     for (const char* key : {"from", "to", "time"})
                         if (!pj.contains(key)) problem(pp, std::string("missing \"") + key + "\"");
@@ -205,7 +206,7 @@ class Reader {
 
     void read_rig_node(const Json& j, const JsonPath& path, AnimationFile& file) {
         if (!is_object(j, path, "a rig node")) return;
-        known_keys(j, path, {"name", "parent", "position", "rotation"});
+        known_keys(j, path, {"name", "parent", "position", "rotation"}, "rig node");
         RigNodeDef node;
         if (!j.contains("name"))
             problem(path, "rig node has no \"name\"");
@@ -223,7 +224,7 @@ class Reader {
             file.clips.push_back(std::move(clip));
             return;
         }
-        known_keys(j, path, {"name", "loop", "next", "unlisted", "phases", "events"});
+        known_keys(j, path, {"name", "loop", "next", "unlisted", "phases", "events"}, "clip");
         if (!j.contains("name"))
             problem(path, "clip has no \"name\"");
         else
@@ -240,7 +241,7 @@ class Reader {
                 else if (loop == "ping_pong")
                     clip.loop = LoopMode::PingPong;
                 else
-                    problem(path / "loop", "unknown loop mode '" + loop + "'",
+                    problem(path / "loop", "unknown loop mode " + quoted_name(loop),
                             did_you_mean(loop, {"once", "loop", "ping_pong", "next"}) +
                                 "one of once, loop, ping_pong, next");
             }
@@ -254,7 +255,7 @@ class Reader {
                 else if (rule == "hold")
                     clip.unlisted = UnlistedRule::Hold;
                 else
-                    problem(path / "unlisted", "unknown rule '" + rule + "'", "one of rest, hold");
+                    problem(path / "unlisted", "unknown rule " + quoted_name(rule), "one of rest, hold");
             }
         }
         if (!j.contains("phases"))
@@ -271,7 +272,7 @@ class Reader {
     void read_event(const Json& j, const JsonPath& path, ClipDef& clip) {
         ClipEvent event;
         if (!is_object(j, path, "an event")) return;
-        known_keys(j, path, {"time", "name", "sound"});
+        known_keys(j, path, {"time", "name", "sound"}, "event");
         if (!j.contains("time"))
             problem(path, "event has no \"time\"", "seconds from the clip's start, e.g. \"time\": 0.1");
         else
@@ -287,7 +288,7 @@ class Reader {
     PhaseDef read_phase(const Json& j, const JsonPath& path) {
         PhaseDef phase;
         if (!is_object(j, path, "a phase")) return phase;
-        known_keys(j, path, {"duration", "ease", "targets"});
+        known_keys(j, path, {"duration", "ease", "targets"}, "phase");
         if (!j.contains("duration"))
             problem(path, "phase has no \"duration\"", "seconds, e.g. \"duration\": 0.3");
         else if (!number(j["duration"], path / "duration", phase.duration))
@@ -303,7 +304,7 @@ class Reader {
                     continue;
                 }
                 const Json& tj = it.value();
-                known_keys(tj, tp, {"rot", "add_rot", "pos", "add_pos", "ease"});
+                known_keys(tj, tp, {"rot", "add_rot", "pos", "add_pos", "ease"}, "target");
                 DVec3 v;
                 if (tj.contains("rot") && vec3(tj["rot"], tp / "rot", v)) t.rot = v;
                 if (tj.contains("add_rot") && vec3(tj["add_rot"], tp / "add_rot", v)) t.add_rot = v;

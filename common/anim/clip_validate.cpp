@@ -68,10 +68,11 @@ class Validator {
             if (n.name.empty())
                 problem(p / "name", "rig node name is empty");
             else if (!seen.insert(n.name).second)
-                problem(p / "name", "duplicate rig node '" + n.name + "'", "names must be unique");
+                problem(p / "name", "duplicate rig node " + quoted_name(n.name), "names must be unique");
             if (!n.parent.empty() && !is_node(n.parent))
                 problem(p / "parent",
-                        "parent '" + n.parent + "' is not a node listed before '" + n.name + "'",
+                        "parent " + quoted_name(n.parent) + " is not a node listed before " +
+                            quoted_name(n.name),
                         node_names_.empty() ? "the first node is the root and has no parent"
                                             : "earlier nodes: " + jsonio::join(node_names_));
             check_components(n.position, p / "position", kMaxOffset, "position", "");
@@ -84,12 +85,12 @@ class Validator {
     void check_node_references() {
         for (std::size_t i = 0; i < file_.rest_nodes.size(); ++i)
             if (!is_node(file_.rest_nodes[i]))
-                problem((top_ / "rest_nodes")[i], "unknown node '" + file_.rest_nodes[i] + "'",
+                problem((top_ / "rest_nodes")[i], "unknown node " + quoted_name(file_.rest_nodes[i]),
                         did_you_mean(file_.rest_nodes[i], node_names_) + known_nodes_);
         for (const NodeEase& ne : file_.node_ease) {
             const JsonPath p = top_ / "node_ease" / ne.node;
             if (!is_node(ne.node))
-                problem(p, "unknown node '" + ne.node + "'",
+                problem(p, "unknown node " + quoted_name(ne.node),
                         did_you_mean(ne.node, node_names_) + known_nodes_);
             if (std::string why = validate_ease(ne.ease); !why.empty()) problem(p, why);
         }
@@ -105,9 +106,9 @@ class Validator {
             const BlendPair& b = file_.blends[i];
             const JsonPath p = (top_ / "blend" / "pairs")[i];
             if (b.from != "*" && !is_clip(b.from))
-                problem(p / "from", "unknown clip '" + b.from + "'", known_clips_ + ", or * for any");
+                problem(p / "from", "unknown clip " + quoted_name(b.from), known_clips_ + ", or * for any");
             if (b.to != "*" && !is_clip(b.to))
-                problem(p / "to", "unknown clip '" + b.to + "'", known_clips_ + ", or * for any");
+                problem(p / "to", "unknown clip " + quoted_name(b.to), known_clips_ + ", or * for any");
             if (!std::isfinite(b.time) || b.time < 0 || b.time > kMaxBlend)
                 problem(p / "time", "blend time " + jsonio::shortest_text(b.time) + " s is out of range",
                         "seconds in [0, " + jsonio::shortest_text(kMaxBlend) + "]");
@@ -123,14 +124,15 @@ class Validator {
             if (c.name.empty())
                 problem(cp / "name", "clip name is empty");
             else if (!seen.insert(c.name).second)
-                problem(cp / "name", "duplicate clip '" + c.name + "'", "clip names must be unique");
+                problem(cp / "name", "duplicate clip " + quoted_name(c.name), "clip names must be unique");
             check_loop(c, cp);
             if (c.phases.empty())
-                problem(cp / "phases", "clip '" + c.name + "' has no phases", "at least one phase");
+                problem(cp / "phases", "clip " + quoted_name(c.name) + " has no phases",
+                        "at least one phase");
             if ((c.loop == LoopMode::Loop || c.loop == LoopMode::PingPong) && !(c.duration() > 0))
                 problem(cp / "phases",
-                        std::string(c.loop == LoopMode::Loop ? "looping" : "ping-pong") + " clip '" + c.name +
-                            "' has zero length",
+                        std::string(c.loop == LoopMode::Loop ? "looping" : "ping-pong") + " clip " +
+                            quoted_name(c.name) + " has zero length",
                         "give a phase a duration > 0");
             for (std::size_t pi = 0; pi < c.phases.size(); ++pi)
                 check_phase(c.phases[pi], (cp / "phases")[pi]);
@@ -143,12 +145,13 @@ class Validator {
         const double length = c.duration();
         if (!std::isfinite(e.time) || e.time < 0 || e.time > length)
             problem(ep / "time",
-                    "event time " + jsonio::shortest_text(e.time) + " s is outside clip '" + c.name +
-                        "' (0.." + jsonio::shortest_text(length) + " s)",
+                    "event time " + jsonio::shortest_text(e.time) + " s is outside clip " +
+                        quoted_name(c.name) + " (0.." + jsonio::shortest_text(length) + " s)",
                     "put the event inside the clip");
         if (e.name.empty()) problem(ep / "name", "event name is empty", "e.g. \"muzzle_flash\"");
         if (!e.sound.empty() && !is_sound_name(e.sound))
-            problem(ep / "sound", "sound name '" + e.sound + "' has characters other than a-z, 0-9 and _",
+            problem(ep / "sound",
+                    "sound name " + quoted_name(e.sound) + " has characters other than a-z, 0-9 and _",
                     "name a file of assets/sounds/ without its .wav");
     }
 
@@ -163,7 +166,7 @@ class Validator {
             if (c.next.empty())
                 problem(cp, "loop mode 'next' needs a \"next\" clip", known_clips_);
             else if (!is_clip(c.next))
-                problem(cp / "next", "unknown clip '" + c.next + "'",
+                problem(cp / "next", "unknown clip " + quoted_name(c.next),
                         did_you_mean(c.next, clip_names_) + known_clips_);
         } else if (!c.next.empty()) {
             problem(cp / "next", "\"next\" is only used with \"loop\": \"next\"",
@@ -184,7 +187,8 @@ class Validator {
 
     void check_target(const TargetDef& t, const JsonPath& tp) {
         if (!is_node(t.node)) {
-            problem(tp, "unknown node '" + t.node + "'", did_you_mean(t.node, node_names_) + known_nodes_);
+            problem(tp, "unknown node " + quoted_name(t.node),
+                    did_you_mean(t.node, node_names_) + known_nodes_);
             return;
         }
         if (t.rot && t.add_rot)
@@ -220,7 +224,7 @@ class Validator {
                 c = file_.find_clip(c->next);
                 if (c == &file_.clips[ci] && !(total > 0)) {
                     problem((top_ / "clips")[ci] / "next",
-                            "clip '" + c->name + "' returns to itself through 'next' in zero time",
+                            "clip " + quoted_name(c->name) + " returns to itself through 'next' in zero time",
                             "give a clip in the chain a duration > 0");
                     break;
                 }

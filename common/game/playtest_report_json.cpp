@@ -3,10 +3,13 @@
 // every problem located by line:column and JSON path.
 #include "core/files.h"
 #include "game/playtest_report.h"
+#include "jsonio/describe.h"
+#include "jsonio/document.h"
 #include "jsonio/json_path.h"
 #include "jsonio/json_writer.h"
 #include "jsonio/number_text.h"
-#include "jsonio/position_map.h"
+#include "jsonio/object_reader.h"
+#include "jsonio/text.h"
 
 #include <cmath>
 #include <cstdio>
@@ -62,190 +65,181 @@ Json run_json(const RunRecord& run) {
     return j;
 }
 
-// Reads a parsed report, keeping the first problem (later reads return defaults); located on demand.
-class Reader {
-  public:
-    Reader(std::string_view text, std::string file) : text_(text), file_(std::move(file)) {}
+using jsonio::Need;
+using jsonio::ObjectReader;
+using jsonio::Range;
+const Range kAny{};
+const Range kCount{0, 1 << 30};
+const char* const kRerun = "write the report again (killswitch-editor --analyze) or see docs/editor.md";
 
-    void fail(const std::string& path, const std::string& message, const std::string& hint) {
-        if (error_) return;
-        if (!positions_) positions_ = jsonio::PositionMap::scan(text_);
-        error_ = Error(message, jsonio::location_at(file_, positions_->find(path), path), hint);
-    }
-    const std::optional<Error>& error() const { return error_; }
+void error(ObjectReader& in, std::string_view key, std::string message, std::string hint) {
+    in.sink().report(jsonio::Severity::Error, in.path_of(key), std::move(message), std::move(hint));
+}
 
-    const Json* member(const Json& object, const std::string& parent, const char* key) {
-        const std::string path = jsonio::member_path(parent, key);
-        if (!object.is_object() || !object.contains(key)) {
-            fail(path, std::string("missing \"") + key + "\"",
-                 "write the report again (killswitch-editor --analyze) or see docs/editor.md");
-            return nullptr;
-        }
-        return &object[key];
-    }
-    double real(const Json& object, const std::string& parent, const char* key) {
-        const Json* v = member(object, parent, key);
-        if (!v) return 0.0;
-        if (!v->is_number() || !std::isfinite(v->get<double>())) {
-            fail(jsonio::member_path(parent, key), std::string("\"") + key + "\" must be a finite number",
-                 "e.g. 12.5");
-            return 0.0;
-        }
-        return v->get<double>();
-    }
-    int whole(const Json& object, const std::string& parent, const char* key, int min, int max) {
-        const double v = real(object, parent, key);
-        if (!error_ && (v != std::floor(v) || v < min || v > max))
-            fail(jsonio::member_path(parent, key),
-                 std::string("\"") + key + "\" must be a whole number in " + std::to_string(min) + ".." +
-                     std::to_string(max),
-                 "");
-        return error_ ? 0 : static_cast<int>(v);
-    }
-    std::string text(const Json& object, const std::string& parent, const char* key) {
-        const Json* v = member(object, parent, key);
-        if (v && !v->is_string())
-            fail(jsonio::member_path(parent, key), std::string("\"") + key + "\" must be a string", "");
-        return v && v->is_string() ? v->get<std::string>() : std::string();
-    }
-    const Json& array(const Json& object, const std::string& parent, const char* key) {
-        static const Json empty = Json::array();
-        const Json* v = member(object, parent, key);
-        if (v && !v->is_array())
-            fail(jsonio::member_path(parent, key), std::string("\"") + key + "\" must be an array", "");
-        return v && v->is_array() ? *v : empty;
-    }
-    // An array of `n` finite numbers.
-    bool numbers(const Json& value, const std::string& path, std::size_t n, float* out) {
-        if (!value.is_array() || value.size() != n) {
-            fail(path, "expected an array of " + std::to_string(n) + " numbers", "");
-            return false;
-        }
-        for (std::size_t i = 0; i < n; ++i) {
-            if (!value[i].is_number() || !std::isfinite(value[i].get<double>())) {
-                fail(jsonio::element_path(path, i), "expected a finite number", "");
-                return false;
-            }
-            out[i] = value[i].get<float>();
-        }
-        return true;
-    }
-    Vec3 vec3(const Json& object, const std::string& parent, const char* key) {
-        Vec3 v(0.0f);
-        if (const Json* m = member(object, parent, key))
-            numbers(*m, jsonio::member_path(parent, key), 3, &v.x);
-        return v;
-    }
+// An array of `n` finite numbers, as floats.
+bool floats(ObjectReader& in, std::string_view key, std::size_t n, float* out, Need need = Need::Required) {
+    double read[4] = {};
+    if (!in.numbers(key, read, n, kAny, need)) return false;
+    for (std::size_t i = 0; i < n; ++i) out[i] = static_cast<float>(read[i]);
+    return true;
+}
 
-  private:
-    std::string_view text_;
-    std::string file_;
-    std::optional<jsonio::PositionMap> positions_;
-    std::optional<Error> error_;
-};
+// A required array member; an empty one when it is missing or not an array (reported).
+const Json& array(ObjectReader& in, std::string_view key) {
+    static const Json empty = Json::array();
+    const Json* v = in.get(key, Need::Required, kRerun);
+    if (v && !v->is_array()) error(in, key, "expected an array, found " + jsonio::describe_value(*v), kRerun);
+    return v && v->is_array() ? *v : empty;
+}
 
-Spread read_spread(Reader& in, const Json& parent, const std::string& path, const char* key) {
+Spread read_spread(ObjectReader& parent, const char* key) {
     Spread s;
-    const Json* j = in.member(parent, path, key);
+    const Json* j = parent.get(key, Need::Required, kRerun);
     if (!j) return s;
-    const std::string at = jsonio::member_path(path, key);
-    s.count = in.whole(*j, at, "count", 0, 1 << 30);
-    s.mean = in.real(*j, at, "mean");
-    s.median = in.real(*j, at, "median");
-    s.min = in.real(*j, at, "min");
-    s.max = in.real(*j, at, "max");
+    ObjectReader in(*j, parent.path_of(key), parent.sink(), "a spread");
+    in.whole("count", s.count, kCount, Need::Required);
+    in.number("mean", s.mean, kAny, Need::Required);
+    in.number("median", s.median, kAny, Need::Required);
+    in.number("min", s.min, kAny, Need::Required);
+    in.number("max", s.max, kAny, Need::Required);
+    in.finish();
     return s;
 }
 
-HeatGrid read_grid(Reader& in, const Json& heat, const std::string& path, const char* key) {
+HeatGrid read_grid(ObjectReader& heat, const char* key) {
     HeatGrid g;
-    g.cell_size = static_cast<float>(in.real(heat, path, "cell_size"));
+    heat.number("cell_size", g.cell_size, kAny, Need::Required);
     float origin[2] = {0.0f, 0.0f};
-    if (const Json* o = in.member(heat, path, "origin"))
-        in.numbers(*o, jsonio::member_path(path, "origin"), 2, origin);
+    floats(heat, "origin", 2, origin);
     g.origin_x = origin[0];
     g.origin_z = origin[1];
-    g.columns = in.whole(heat, path, "columns", 0, 1 << 20);
-    g.rows = in.whole(heat, path, "rows", 0, 1 << 20);
-    const Json& cells = in.array(heat, path, key);
-    const std::string cells_path = jsonio::member_path(path, key);
-    for (std::size_t i = 0; i < cells.size() && !in.error(); ++i) {
-        float v[4];
+    heat.whole("columns", g.columns, {0, 1 << 20}, Need::Required);
+    heat.whole("rows", g.rows, {0, 1 << 20}, Need::Required);
+    const Json& cells = array(heat, key);
+    const std::string cells_path = heat.path_of(key);
+    for (std::size_t i = 0; i < cells.size(); ++i) {
         const std::string at = jsonio::element_path(cells_path, i);
-        if (!in.numbers(cells[i], at, 4, v)) break;
+        const Json& cell = cells[i];
+        if (!cell.is_array() || cell.size() != 4) {
+            heat.sink().report(
+                jsonio::Severity::Error, at,
+                "expected a cell [column, row, value, y], found " + jsonio::describe_value(cell), kRerun);
+            continue;
+        }
+        double v[4] = {};
+        bool ok = true;
+        for (std::size_t k = 0; k < 4; ++k)
+            ok &= jsonio::read_number(cell[k], jsonio::element_path(at, k), heat.sink(), v[k], kAny);
+        if (!ok) continue;
         if (v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]) || v[0] < 0 || v[1] < 0 ||
-            v[0] >= static_cast<float>(g.columns) || v[1] >= static_cast<float>(g.rows))
-            in.fail(at, "cell column and row must be whole numbers inside the grid",
-                    "[column, row, value, y] with 0 <= column < columns, 0 <= row < rows");
-        g.cells.push_back({static_cast<int>(v[0]), static_cast<int>(v[1]), v[2], v[3]});
+            v[0] >= g.columns || v[1] >= g.rows)
+            heat.sink().report(jsonio::Severity::Error, at,
+                               "cell column and row must be whole numbers inside the grid",
+                               "[column, row, value, y] with 0 <= column < columns, 0 <= row < rows");
+        g.cells.push_back({static_cast<int>(v[0]), static_cast<int>(v[1]), static_cast<float>(v[2]),
+                           static_cast<float>(v[3])});
     }
     return g;
 }
 
-RunRecord read_run(Reader& in, const Json& j, const std::string& path) {
+Vec3 point(ObjectReader& in, std::string_view key) {
+    Vec3 v(0.0f);
+    floats(in, key, 3, &v.x);
+    return v;
+}
+
+RunRecord read_run(const Json& j, const std::string& path, jsonio::ProblemSink& sink) {
     RunRecord run;
-    run.seed = static_cast<std::uint64_t>(in.whole(j, path, "seed", 0, 1 << 30));
-    const std::string outcome = in.text(j, path, "outcome");
-    if (outcome == "win")
-        run.outcome = RunOutcome::Win;
-    else if (outcome == "death")
-        run.outcome = RunOutcome::Death;
-    else if (outcome == "timeout")
-        run.outcome = RunOutcome::Timeout;
-    else
-        in.fail(jsonio::member_path(path, "outcome"), "unknown outcome \"" + outcome + "\"",
-                "one of win, death, timeout");
-    run.time = in.real(j, path, "time");
-    run.damage_taken = static_cast<float>(in.real(j, path, "damage_taken"));
-    run.robots_killed = in.whole(j, path, "robots_killed", 0, 1 << 30);
-    run.shots = in.whole(j, path, "shots", 0, 1 << 30);
-    const std::string hash = in.text(j, path, "state_hash");
-    char* end = nullptr;
-    run.state_hash = std::strtoull(hash.c_str(), &end, 16);
-    if (!in.error() && (hash.size() != 16 || *end != '\0'))
-        in.fail(jsonio::member_path(path, "state_hash"), "\"state_hash\" must be 16 hex digits", "");
-    if (const Json* death = in.member(j, path, "death"); death && !death->is_null())
-        run.death = in.vec3(j, path, "death");
-    const Json& damage = in.array(j, path, "damage");
-    for (std::size_t i = 0; i < damage.size() && !in.error(); ++i) {
-        const std::string at = jsonio::element_path(jsonio::member_path(path, "damage"), i);
-        DamageSample d;
-        d.time = in.real(damage[i], at, "time");
-        d.at = in.vec3(damage[i], at, "at");
-        d.from = in.vec3(damage[i], at, "from");
-        d.amount = static_cast<float>(in.real(damage[i], at, "amount"));
-        run.damage.push_back(d);
+    ObjectReader in(j, path, sink, "a run");
+    int seed = 1;
+    if (in.whole("seed", seed, kCount, Need::Required)) run.seed = static_cast<std::uint64_t>(seed);
+    std::string outcome;
+    if (in.choice("outcome", outcome, {"win", "death", "timeout"}, Need::Required))
+        run.outcome = outcome == "win"     ? RunOutcome::Win
+                      : outcome == "death" ? RunOutcome::Death
+                                           : RunOutcome::Timeout;
+    in.number("time", run.time, kAny, Need::Required);
+    in.number("damage_taken", run.damage_taken, kAny, Need::Required);
+    in.whole("robots_killed", run.robots_killed, kCount, Need::Required);
+    in.whole("shots", run.shots, kCount, Need::Required);
+    std::string hash;
+    if (in.text("state_hash", hash, Need::Required)) {
+        char* end = nullptr;
+        run.state_hash = std::strtoull(hash.c_str(), &end, 16);
+        if (hash.size() != 16 || *end != '\0')
+            error(in, "state_hash", "\"state_hash\" must be 16 hex digits, found " + jsonio::quote_text(hash),
+                  kRerun);
     }
-    const Json& flat = in.array(j, path, "path");
+    if (const Json* death = in.get("death", Need::Required, kRerun); death && !death->is_null())
+        run.death = point(in, "death");
+    const Json& damage = array(in, "damage");
+    for (std::size_t i = 0; i < damage.size(); ++i) {
+        ObjectReader d(damage[i], jsonio::element_path(in.path_of("damage"), i), sink, "a damage sample");
+        DamageSample sample;
+        d.number("time", sample.time, kAny, Need::Required);
+        sample.at = point(d, "at");
+        sample.from = point(d, "from");
+        d.number("amount", sample.amount, kAny, Need::Required);
+        d.finish();
+        run.damage.push_back(sample);
+    }
+    const Json& flat = array(in, "path");
+    const std::string path_at = in.path_of("path");
     if (flat.size() % 3 != 0)
-        in.fail(jsonio::member_path(path, "path"), "the path must hold x, y, z triples",
-                "a multiple of three numbers");
-    const std::string path_at = jsonio::member_path(path, "path");
-    for (std::size_t i = 0; i + 2 < flat.size() && !in.error(); i += 3) {
-        Vec3 p;
+        error(in, "path", "the path must hold x, y, z triples", "a multiple of three numbers");
+    for (std::size_t i = 0; i + 2 < flat.size(); i += 3) {
+        Vec3 p(0.0f);
         for (std::size_t k = 0; k < 3; ++k) {
-            if (!flat[i + k].is_number() || !std::isfinite(flat[i + k].get<double>()))
-                in.fail(jsonio::element_path(path_at, i + k), "expected a finite number", "");
-            else
-                p[static_cast<int>(k)] = flat[i + k].get<float>();
+            double v = 0.0;
+            if (jsonio::read_number(flat[i + k], jsonio::element_path(path_at, i + k), sink, v, kAny))
+                p[static_cast<int>(k)] = static_cast<float>(v);
         }
         run.path.push_back(p);
     }
+    in.finish();
     return run;
 }
 
-Result<Json> parse_json(std::string_view text, const std::string& file_name) {
-    try {
-        return Json::parse(text);
-    } catch (const nlohmann::json::exception& e) {
-        std::string what = e.what();
-        if (auto p = what.find("parse error"); p != std::string::npos) what = what.substr(p);
-        std::size_t offset = 0;
-        if (const auto* pe = dynamic_cast<const nlohmann::json::parse_error*>(&e))
-            offset = pe->byte > 0 ? pe->byte - 1 : 0;
-        return Error(what, jsonio::location_at(file_name, jsonio::position_of_offset(text, offset)),
-                     "the report is not valid JSON: run the analysis again");
+void read_report(const Json& root, jsonio::ProblemSink& sink, PlaytestReport& r) {
+    ObjectReader in(root, "", sink, "play-test report");
+    int version = kVersion;
+    if (in.whole("version", version, {0, 1 << 20}, Need::Required) && version != kVersion)
+        error(in, "version", "report version " + std::to_string(version) + " is not known",
+              "this editor reads version " + std::to_string(kVersion) + ": run the analysis again");
+    in.claim("format");
+    in.text("level", r.level, Need::Required);
+    in.text("level_hash", r.level_hash, Need::Required);
+    in.whole("requested", r.requested, {0, 1 << 20}, Need::Required);
+    int completed = 0;
+    const bool has_completed = in.whole("completed", completed, {0, 1 << 20}, Need::Required);
+    in.flag("cancelled", r.cancelled, Need::Required);
+    in.number("seconds_limit", r.seconds_limit, kAny, Need::Required);
+    in.number("path_interval", r.path_interval, kAny, Need::Required);
+    if (const Json* s = in.get("summary", Need::Required, kRerun)) {
+        ObjectReader summary(*s, "summary", sink, "the summary");
+        summary.whole("wins", r.wins, {0, 1 << 20}, Need::Required);
+        summary.whole("deaths", r.deaths, {0, 1 << 20}, Need::Required);
+        summary.whole("timeouts", r.timeouts, {0, 1 << 20}, Need::Required);
+        summary.number("win_rate", r.win_rate, kAny, Need::Required);
+        r.time_to_win = read_spread(summary, "time_to_win");
+        r.damage_taken = read_spread(summary, "damage_taken");
+        summary.finish();
     }
+    if (const Json* h = in.get("heat", Need::Required, kRerun)) {
+        ObjectReader heat(*h, "heat", sink, "the heat maps");
+        r.damage_heat = read_grid(heat, "damage");
+        r.death_heat = read_grid(heat, "deaths");
+        heat.finish();
+    }
+    const Json& runs = array(in, "runs");
+    for (std::size_t i = 0; i < runs.size(); ++i)
+        r.runs.push_back(read_run(runs[i], jsonio::element_path("runs", i), sink));
+    in.finish();
+    if (has_completed && completed != static_cast<int>(r.runs.size()))
+        error(in, "completed",
+              "\"completed\" says " + std::to_string(completed) + " runs but the file lists " +
+                  std::to_string(r.runs.size()),
+              "the file was cut short or edited: run the analysis again");
 }
 } // namespace
 
@@ -280,49 +274,21 @@ std::string playtest_report_json(const PlaytestReport& r) {
 }
 
 Result<PlaytestReport> parse_playtest_report(std::string_view text, const std::string& file_name) {
-    auto parsed = parse_json(text, file_name);
-    if (!parsed) return parsed.error();
-    const Json& j = *parsed;
-    Reader in(text, file_name);
-    if (!j.is_object() || !j.contains("format") || j["format"] != kFormat)
-        return Error("not a Killswitch play-test report", Location(file_name, 1, 1),
-                     std::string("a report starts with \"format\": \"") + kFormat +
-                         "\" (killswitch-editor --analyze writes one)");
-    if (const int version = in.whole(j, "", "version", 0, 1 << 20); !in.error() && version != kVersion)
-        in.fail("version", "report version " + std::to_string(version) + " is not known",
-                "this editor reads version " + std::to_string(kVersion) + ": run the analysis again");
+    const std::string example = std::string("a report starts with \"format\": \"") + kFormat +
+                                "\" (killswitch-editor --analyze writes one)";
+    const jsonio::Document document = jsonio::Document::parse(text, file_name, {"play-test report", example});
+    jsonio::Problems problems(file_name, &document.positions());
+    document.report_to(problems);
     PlaytestReport r;
-    r.level = in.text(j, "", "level");
-    r.level_hash = in.text(j, "", "level_hash");
-    r.requested = in.whole(j, "", "requested", 0, 1 << 20);
-    const int completed = in.whole(j, "", "completed", 0, 1 << 20);
-    if (const Json* c = in.member(j, "", "cancelled"); c && !c->is_boolean())
-        in.fail("cancelled", "\"cancelled\" must be true or false", "");
-    else if (c)
-        r.cancelled = c->get<bool>();
-    r.seconds_limit = in.real(j, "", "seconds_limit");
-    r.path_interval = in.real(j, "", "path_interval");
-    if (const Json* s = in.member(j, "", "summary")) {
-        r.wins = in.whole(*s, "summary", "wins", 0, 1 << 20);
-        r.deaths = in.whole(*s, "summary", "deaths", 0, 1 << 20);
-        r.timeouts = in.whole(*s, "summary", "timeouts", 0, 1 << 20);
-        r.win_rate = in.real(*s, "summary", "win_rate");
-        r.time_to_win = read_spread(in, *s, "summary", "time_to_win");
-        r.damage_taken = read_spread(in, *s, "summary", "damage_taken");
+    if (const Json* root = document.root()) {
+        const auto format = root->find("format");
+        if (format == root->end() || *format != kFormat)
+            problems.report(jsonio::Severity::Error, "", "not a Killswitch play-test report", example);
+        else
+            read_report(*root, problems, r);
     }
-    if (const Json* heat = in.member(j, "", "heat")) {
-        r.damage_heat = read_grid(in, *heat, "heat", "damage");
-        r.death_heat = read_grid(in, *heat, "heat", "deaths");
-    }
-    const Json& runs = in.array(j, "", "runs");
-    for (std::size_t i = 0; i < runs.size() && !in.error(); ++i)
-        r.runs.push_back(read_run(in, runs[i], jsonio::element_path("runs", i)));
-    if (!in.error() && completed != static_cast<int>(r.runs.size()))
-        in.fail("completed",
-                "\"completed\" says " + std::to_string(completed) + " runs but the file lists " +
-                    std::to_string(r.runs.size()),
-                "the file was cut short or edited: run the analysis again");
-    if (in.error()) return *in.error();
+    problems.pass_warnings(nullptr);
+    if (problems.has_errors()) return problems.combined();
     return r;
 }
 

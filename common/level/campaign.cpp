@@ -1,12 +1,14 @@
 #include "level/campaign.h"
 
 #include "core/files.h"
+#include "core/log.h"
 #include "jsonio/describe.h"
+#include "jsonio/document.h"
 #include "jsonio/json_path.h"
 #include "jsonio/json_writer.h"
-#include "jsonio/parse_failure.h"
-#include "jsonio/position_map.h"
+#include "jsonio/object_reader.h"
 #include "jsonio/suggest.h"
+#include "jsonio/text.h"
 #include "level/diagnostics.h"
 
 #include <nlohmann/json.hpp>
@@ -23,12 +25,9 @@ using Json = nlohmann::ordered_json;
 using jsonio::element_path;
 using jsonio::member_path;
 
-constexpr size_t kMaxErrorsInMessage = 50;
 const char* const kExample =
     "a campaign file is {\"name\": \"Killswitch\", \"levels\": [{\"file\": \"main.json\", \"title\": \"The "
     "Simulation\"}]}";
-const std::vector<std::string> kCampaignFields = {"name", "levels"};
-const std::vector<std::string> kLevelFields = {"file", "title"};
 
 // A level as read, with its index in the file's "levels" array (levels too broken to read are left out).
 struct ListedLevel {
@@ -41,45 +40,15 @@ bool is_blank(std::string_view text) {
                        [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; });
 }
 
-void reject_unknown_fields(const Json& object, const std::string& path, const std::vector<std::string>& known,
-                           DiagnosticSink& sink) {
-    for (auto it = object.begin(); it != object.end(); ++it) {
-        if (std::find(known.begin(), known.end(), it.key()) != known.end()) continue;
-        std::string hint = "known fields: " + jsonio::join(known);
-        if (std::string near = jsonio::closest_match(it.key(), known); !near.empty())
-            hint = "did you mean \"" + near + "\"? " + hint;
-        sink.error(member_path(path, it.key()), "unknown field \"" + it.key() + "\"", hint);
-    }
-}
-
-bool read_string_field(const Json& object, const std::string& path, const char* key, const std::string& hint,
-                       DiagnosticSink& sink, std::string& out) {
-    auto it = object.find(key);
-    if (it == object.end()) {
-        sink.error(member_path(path, key), "missing required field \"" + std::string(key) + "\"", hint);
-        return false;
-    }
-    if (!it->is_string()) {
-        sink.error(member_path(path, key), "expected a string, found " + jsonio::describe_value(*it), hint);
-        return false;
-    }
-    out = it->get<std::string>();
-    return true;
-}
-
 std::optional<ListedLevel> read_listed_level(const Json& value, size_t index, DiagnosticSink& sink) {
-    const std::string path = element_path("levels", index);
-    if (!value.is_object()) {
-        sink.error(path, "expected a level as an object {...}, found " + jsonio::describe_value(value),
-                   "write it as {\"file\": \"main.json\", \"title\": \"The Simulation\"}");
-        return std::nullopt;
-    }
-    reject_unknown_fields(value, path, kLevelFields, sink);
+    jsonio::ObjectReader reader(value, element_path("levels", index), sink, "a level");
+    if (!reader.is_object()) return std::nullopt;
     ListedLevel listed{{}, index};
-    bool ok = read_string_field(value, path, "file", "the level file, relative to the campaign file's folder",
-                                sink, listed.level.file);
-    ok &= read_string_field(value, path, "title", "the title the summary screen shows", sink,
-                            listed.level.title);
+    bool ok = reader.text("file", listed.level.file, jsonio::Need::Required, 0,
+                          "the level file, relative to the campaign file's folder");
+    ok &= reader.text("title", listed.level.title, jsonio::Need::Required, 0,
+                      "the title the summary screen shows");
+    reader.finish();
     if (!ok) return std::nullopt;
     return listed;
 }
@@ -105,7 +74,8 @@ void check_content(const std::optional<std::string>& name, const std::vector<Lis
             continue;
         }
         if (fs::path(file).is_absolute()) {
-            sink.error(member_path(path, "file"), "level file \"" + file + "\" is an absolute path",
+            sink.error(member_path(path, "file"),
+                       "level file " + jsonio::quote_text(file) + " is an absolute path",
                        "write it relative to the campaign file's folder, so the campaign can move");
             continue;
         }
@@ -113,7 +83,7 @@ void check_content(const std::optional<std::string>& name, const std::vector<Lis
         auto [first, inserted] = first_listing.emplace(key, listed.index);
         if (!inserted)
             sink.error(member_path(path, "file"),
-                       "level \"" + file + "\" is listed twice (also " +
+                       "level " + jsonio::quote_text(file) + " is listed twice (also " +
                            element_path("levels", first->second) + ")",
                        "a campaign plays each level once: remove one of them");
     }
@@ -141,59 +111,33 @@ void check_level_files_exist(const std::vector<ListedLevel>& levels, const fs::p
         const std::vector<std::string> beside =
             level_files_in(full.parent_path().empty() ? fs::path(".") : full.parent_path());
         if (std::string near = jsonio::closest_match(relative.filename().string(), beside); !near.empty())
-            hint = "did you mean \"" + (relative.parent_path() / near).generic_string() + "\"? " + hint;
+            hint = "did you mean " + jsonio::quote_text((relative.parent_path() / near).generic_string()) + "? " +
+                   hint;
         const std::string what = fs::is_directory(full, ec) ? "is a folder, not a level file" : "not found";
         sink.error(member_path(element_path("levels", listed.index), "file"),
-                   "level file \"" + listed.level.file + "\" " + what + " (looked for " + full.string() + ")",
+                   "level file " + jsonio::quote_text(listed.level.file) + " " + what + " (looked for " +
+                       full.string() + ")",
                    hint);
     }
-}
-
-std::optional<Json> parse_document(std::string_view text, jsonio::PositionMap& positions,
-                                   DiagnosticSink& sink) {
-    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
-    if (is_blank(text)) {
-        sink.error_at({}, "", "file is empty", kExample);
-        return std::nullopt;
-    }
-    positions = jsonio::PositionMap::scan(text);
-    try {
-        Json document = Json::parse(text);
-        for (const jsonio::DuplicateKey& d : positions.duplicate_keys())
-            sink.error_at(d.second, d.path,
-                          "duplicate key (also at line " + std::to_string(d.first.line) + ":" +
-                              std::to_string(d.first.column) + "); only one would be kept",
-                          "remove one of them");
-        return document;
-    } catch (const nlohmann::json::parse_error& e) {
-        const jsonio::ParseFailure failure = jsonio::describe_parse_error(text, e);
-        sink.error_at(failure.position, "",
-                      (failure.at_end ? "file ends early (truncated?): " : "") + failure.message,
-                      failure.at_end ? "complete the file" : "fix the JSON syntax at this place");
-    } catch (const nlohmann::json::exception& e) {
-        sink.error_at({}, "", std::string("JSON could not be read: ") + e.what(), "fix the JSON syntax");
-    }
-    return std::nullopt;
 }
 
 // Reads the campaign's fields; what cannot be read is reported and left out.
 Campaign read_campaign(const Json& document, const fs::path& folder, DiagnosticSink& sink) {
     Campaign campaign;
-    reject_unknown_fields(document, "", kCampaignFields, sink);
+    jsonio::ObjectReader reader(document, "", sink, "campaign");
     std::optional<std::string> name;
     if (std::string text;
-        read_string_field(document, "", "name", "the campaign's name, e.g. \"Killswitch\"", sink, text))
+        reader.text("name", text, jsonio::Need::Required, 0, "the campaign's name, e.g. \"Killswitch\""))
         name = campaign.name = text;
     std::vector<ListedLevel> listed;
     bool list_empty = false;
-    auto levels = document.find("levels");
-    if (levels == document.end()) {
-        sink.error("levels", "missing required field \"levels\"", kExample);
-    } else if (!levels->is_array()) {
+    const Json* levels = reader.get("levels", jsonio::Need::Required, kExample);
+    reader.finish();
+    if (levels && !levels->is_array()) {
         sink.error("levels",
                    "expected the levels as an array [...], found " + jsonio::describe_value(*levels),
                    kExample);
-    } else {
+    } else if (levels) {
         list_empty = levels->empty();
         for (size_t i = 0; i < levels->size(); ++i)
             if (std::optional<ListedLevel> level = read_listed_level((*levels)[i], i, sink)) {
@@ -209,32 +153,25 @@ Campaign read_campaign(const Json& document, const fs::path& folder, DiagnosticS
 Error combined_error(std::vector<Diagnostic> diagnostics, const std::string& file) {
     std::vector<Error> errors;
     for (Diagnostic& d : diagnostics)
-        if (errors.size() < kMaxErrorsInMessage) errors.push_back(std::move(d.error));
-    if (diagnostics.size() > kMaxErrorsInMessage)
-        errors.emplace_back("... and " + std::to_string(diagnostics.size() - kMaxErrorsInMessage) +
-                                " more errors",
-                            Location(file));
-    Error combined = combine_errors(errors);
-    if (combined.where.file.empty()) combined.where.file = file;
-    return combined;
+        if (d.severity == Diagnostic::Severity::Error) errors.push_back(std::move(d.error));
+    return jsonio::combined_error(std::move(errors), file);
 }
 
 } // namespace
 
 Result<Campaign> load_campaign_string(std::string_view text, const std::string& file_name,
                                       const fs::path& folder) {
-    jsonio::PositionMap positions;
-    DiagnosticSink sink(file_name, &positions);
-    std::optional<Json> document = parse_document(text, positions, sink);
+    const jsonio::Document document = jsonio::Document::parse(text, file_name, {"campaign", kExample});
+    DiagnosticSink sink(file_name, &document.positions());
+    document.report_to(sink);
     Campaign campaign;
-    if (document && !document->is_object())
-        sink.error_at(positions.find(""), "",
-                      "expected the campaign as a JSON object {...}, found " +
-                          jsonio::describe_value(*document),
-                      kExample);
-    else if (document)
-        campaign = read_campaign(*document, folder, sink);
-    if (sink.has_errors()) return combined_error(sink.take_sorted(), file_name);
+    if (document.root()) campaign = read_campaign(*document.root(), folder, sink);
+    const bool failed = sink.has_errors();
+    std::vector<Diagnostic> diagnostics = sink.take_sorted();
+    // Warnings (an unknown field) do not stop a campaign; they go to the log.
+    for (const Diagnostic& d : diagnostics)
+        if (d.severity == Diagnostic::Severity::Warning) log::warn(d.error.str());
+    if (failed) return combined_error(std::move(diagnostics), file_name);
     return campaign;
 }
 

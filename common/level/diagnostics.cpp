@@ -1,6 +1,7 @@
 #include "level/diagnostics.h"
 
 #include "jsonio/number_text.h"
+#include "jsonio/text.h"
 
 #include <algorithm>
 #include <climits>
@@ -31,6 +32,20 @@ void DiagnosticSink::error_at(jsonio::TextPosition pos, const std::string& path,
     add(Diagnostic::Severity::Error, pos, path, std::move(message), std::move(hint));
 }
 
+void DiagnosticSink::report(jsonio::Severity severity, const std::string& path, std::string message,
+                            std::string hint) {
+    if (severity == jsonio::Severity::Error)
+        error(path, std::move(message), std::move(hint));
+    else
+        warning(path, std::move(message), std::move(hint));
+}
+
+void DiagnosticSink::report_at(jsonio::Severity severity, jsonio::TextPosition pos, const std::string& path,
+                               std::string message, std::string hint) {
+    add(severity == jsonio::Severity::Error ? Diagnostic::Severity::Error : Diagnostic::Severity::Warning,
+        pos, path, std::move(message), std::move(hint));
+}
+
 void DiagnosticSink::tag_last(Diagnostic::Kind kind, std::string suggestion) {
     if (list_.empty()) return;
     list_.back().kind = kind;
@@ -54,7 +69,7 @@ std::vector<Diagnostic> DiagnosticSink::take_sorted() {
 
 std::string entity_subject(const Entity& entity) {
     std::string out = std::string(type_name(entity.type())) + " " + std::to_string(entity.id);
-    if (!entity.name.empty()) out += " (\"" + entity.name + "\")";
+    if (!entity.name.empty()) out += " (" + jsonio::quote_text(entity.name) + ")";
     return out;
 }
 

@@ -2,6 +2,7 @@
 // Collects the problems found while reading or validating a level, each pinned to a JSON path and -- when
 // the text is at hand -- to its line:column, so that loading can report every problem at once.
 #include "jsonio/position_map.h"
+#include "jsonio/problems.h"
 #include "level/level_io.h"
 
 #include <set>
@@ -10,7 +11,9 @@
 
 namespace ks::level {
 
-class DiagnosticSink {
+// A jsonio::ProblemSink, so the shared readers (jsonio/object_reader.h) and the document checks
+// (jsonio/document.h) report into a level's LoadReport like everything else.
+class DiagnosticSink : public jsonio::ProblemSink {
   public:
     explicit DiagnosticSink(std::string file, const jsonio::PositionMap* positions = nullptr)
         : file_(std::move(file)), positions_(positions) {}
@@ -24,10 +27,10 @@ class DiagnosticSink {
     // Marks the diagnostic added last as a finding of `kind` (see Diagnostic::Kind).
     void tag_last(Diagnostic::Kind kind, std::string suggestion = {});
 
-    // A path whose value was already reported (e.g. a number that overflowed before parsing); readers skip it
-    // so one mistake gives one message.
-    void mark_reported(const std::string& path) { reported_.insert(path); }
-    bool already_reported(const std::string& path) const { return reported_.count(path) > 0; }
+    void report(jsonio::Severity severity, const std::string& path, std::string message,
+                std::string hint) override;
+    void report_at(jsonio::Severity severity, jsonio::TextPosition pos, const std::string& path,
+                   std::string message, std::string hint) override;
 
     // While set, every message starts with it ("robot 12 (\"Guard\"): ..."), for problems deep inside one
     // entity whose JSON path alone does not say which robot it is.
@@ -45,7 +48,6 @@ class DiagnosticSink {
     std::string file_;
     const jsonio::PositionMap* positions_;
     std::vector<Diagnostic> list_;
-    std::set<std::string> reported_;
     std::string subject_;
 };
 

@@ -3,6 +3,7 @@
 #include "jsonio/describe.h"
 #include "jsonio/json_path.h"
 #include "jsonio/number_text.h"
+#include "jsonio/object_reader.h"
 
 #include <algorithm>
 #include <climits>
@@ -43,68 +44,50 @@ Json group_json(const Group& group) {
     return json;
 }
 
-// Reads the fields of one JSON object, warning about wrong types and unknown keys; a field that cannot be
-// read keeps its default.
+// The editor section is advisory (the game never reads it, and a designer's layers are worth keeping when
+// one entry is broken): the shared reader's problems in it all arrive as warnings, and that part keeps its
+// default or is left out.
+class AdvisorySink : public jsonio::ProblemSink {
+  public:
+    explicit AdvisorySink(DiagnosticSink& sink) : sink_(sink) {}
+    void report(jsonio::Severity, const std::string& path, std::string message, std::string hint) override {
+        sink_.warning(path, std::move(message), with_consequence(std::move(hint)));
+    }
+    void report_at(jsonio::Severity, jsonio::TextPosition pos, const std::string& path, std::string message,
+                   std::string hint) override {
+        sink_.report_at(jsonio::Severity::Warning, pos, path, std::move(message),
+                        with_consequence(std::move(hint)));
+    }
+    void mark_reported(const std::string& path) override { sink_.mark_reported(path); }
+    bool already_reported(const std::string& path) const override { return sink_.already_reported(path); }
+
+  private:
+    static std::string with_consequence(std::string hint) {
+        return hint.empty() ? "the default is used" : hint + "; the default is used";
+    }
+    DiagnosticSink& sink_;
+};
+
+// One object of the editor section, read with jsonio::ObjectReader through an AdvisorySink.
 class SectionReader {
   public:
-    SectionReader(const Json& json, std::string path, DiagnosticSink& sink)
-        : json_(json), path_(std::move(path)), sink_(sink) {}
+    SectionReader(const Json& json, std::string path, DiagnosticSink& sink, std::string what)
+        : json_(json), advisory_(sink), reader_(json, std::move(path), advisory_, std::move(what)) {}
 
-    bool is_object() {
-        if (json_.is_object()) return true;
-        sink_.warning(path_, "expected an object {...}, found " + jsonio::describe_value(json_),
-                      "the editor section is ignored here; save the level from the editor to rewrite it");
-        return false;
+    bool is_object() const { return reader_.is_object(); }
+    const Json* get(const char* key) { return reader_.get(key); }
+    void text(const char* key, std::string& out, size_t max_characters = 256) {
+        reader_.text(key, out, jsonio::Need::Optional, max_characters);
     }
-    const Json* get(const char* key) {
-        seen_.insert(key);
-        auto it = json_.find(key);
-        return it == json_.end() ? nullptr : &*it;
-    }
-    void text(const char* key, std::string& out, size_t max_length = 256) {
-        if (const Json* v = get(key)) {
-            if (v->is_string() && v->get_ref<const std::string&>().size() <= max_length)
-                out = v->get<std::string>();
-            else
-                warn(key, "expected a string of at most " + std::to_string(max_length) + " characters");
-        }
-    }
-    void flag(const char* key, bool& out) {
-        if (const Json* v = get(key)) {
-            if (v->is_boolean())
-                out = v->get<bool>();
-            else
-                warn(key, "expected true or false");
-        }
-    }
+    void flag(const char* key, bool& out) { reader_.flag(key, out); }
     void integer(const char* key, int& out, int min, int max) {
-        if (const Json* v = get(key)) {
-            if (v->is_number_integer() && v->get<long long>() >= min && v->get<long long>() <= max)
-                out = v->get<int>();
-            else
-                warn(key,
-                     "expected a whole number from " + std::to_string(min) + " to " + std::to_string(max));
-        }
+        reader_.whole(key, out, {double(min), double(max)});
     }
-    void number(const char* key, float& out) {
-        if (const Json* v = get(key)) {
-            if (v->is_number() && std::isfinite(v->get<double>()) && std::abs(v->get<double>()) < 1e6)
-                out = v->get<float>();
-            else
-                warn(key, "expected a finite number");
-        }
-    }
+    void number(const char* key, float& out) { reader_.number(key, out, {-1e6, 1e6}); }
     void vec3(const char* key, Vec3& out) {
-        if (const Json* v = get(key)) {
-            bool ok = v->is_array() && v->size() == 3;
-            for (size_t i = 0; ok && i < 3; ++i)
-                ok = (*v)[i].is_number() && std::isfinite((*v)[i].get<double>()) &&
-                     std::abs((*v)[i].get<double>()) < 1e6;
-            if (ok)
-                out = Vec3((*v)[0].get<float>(), (*v)[1].get<float>(), (*v)[2].get<float>());
-            else
-                warn(key, "expected [x, y, z] with finite numbers");
-        }
+        double v[3] = {};
+        if (reader_.numbers(key, v, 3, {-1e6, 1e6}))
+            out = Vec3(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
     }
     // Whole numbers; `allow_zero` keeps 0 (a prefab member the designer deleted).
     void ids(const char* key, std::vector<int>& out, bool allow_zero = false) {
@@ -117,40 +100,34 @@ class SectionReader {
                 id.get<long long>() <= INT_MAX)
                 out.push_back(id.get<int>());
             else
-                sink_.warning(element_path(member_path(path_, key), i),
-                              "expected an id (a whole number of at least 1), found " +
-                                  jsonio::describe_value(id),
-                              "this entry is left out");
+                advisory_.report(jsonio::Severity::Warning, element_path(reader_.path_of(key), i),
+                                 "expected an id (a whole number of at least 1), found " +
+                                     jsonio::describe_value(id),
+                                 "this entry is left out");
         }
     }
-    void finish(std::string_view what) {
-        for (auto it = json_.begin(); it != json_.end(); ++it)
-            if (!seen_.count(it.key()))
-                sink_.warning(member_path(path_, it.key()), "unknown field \"" + it.key() + "\" in the " +
-                                                                std::string(what) + " is ignored");
-    }
+    void finish() { reader_.finish(); }
     void warn(const char* key, const std::string& expected) {
-        sink_.warning(member_path(path_, key), expected + ", found " + jsonio::describe_value(json_[key]),
-                      "the default is used");
+        advisory_.report(jsonio::Severity::Warning, reader_.path_of(key),
+                         expected + ", found " + jsonio::describe_value(json_[key]), {});
     }
-    const std::string& path() const { return path_; }
+    const std::string& path() const { return reader_.path(); }
 
   private:
     const Json& json_;
-    std::string path_;
-    DiagnosticSink& sink_;
-    std::set<std::string> seen_;
+    AdvisorySink advisory_;
+    jsonio::ObjectReader reader_;
 };
 
 std::optional<Layer> read_layer(const Json& json, const std::string& path, DiagnosticSink& sink) {
-    SectionReader reader(json, path, sink);
+    SectionReader reader(json, path, sink, "a layer");
     if (!reader.is_object()) return std::nullopt;
     Layer layer;
     reader.text("name", layer.name, kMaxLayerNameLength);
     reader.flag("visible", layer.visible);
     reader.flag("locked", layer.locked);
     reader.ids("entities", layer.entities);
-    reader.finish("layer");
+    reader.finish();
     if (layer.name.empty()) {
         sink.warning(member_path(path, "name"), "a layer needs a name", "the layer is left out");
         return std::nullopt;
@@ -159,7 +136,7 @@ std::optional<Layer> read_layer(const Json& json, const std::string& path, Diagn
 }
 
 void read_prefab(const Json& json, const std::string& path, DiagnosticSink& sink, Group& group) {
-    SectionReader reader(json, path, sink);
+    SectionReader reader(json, path, sink, "a prefab link");
     if (!reader.is_object()) return;
     PrefabLink link;
     reader.text("name", link.prefab, 128);
@@ -182,7 +159,7 @@ void read_prefab(const Json& json, const std::string& path, DiagnosticSink& sink
         }
     }
     link.overrides.resize(link.members.size());
-    reader.finish("prefab link");
+    reader.finish();
     if (link.prefab.empty()) {
         sink.warning(member_path(path, "name"), "a prefab instance needs its prefab's name",
                      "the group is kept as a plain group");
@@ -193,7 +170,7 @@ void read_prefab(const Json& json, const std::string& path, DiagnosticSink& sink
 }
 
 std::optional<Group> read_group(const Json& json, const std::string& path, DiagnosticSink& sink) {
-    SectionReader reader(json, path, sink);
+    SectionReader reader(json, path, sink, "a group");
     if (!reader.is_object()) return std::nullopt;
     Group group;
     reader.integer("id", group.id, 1, INT_MAX);
@@ -204,7 +181,7 @@ std::optional<Group> read_group(const Json& json, const std::string& path, Diagn
     reader.ids("groups", group.groups);
     if (const Json* prefab = reader.get("prefab"))
         read_prefab(*prefab, member_path(path, "prefab"), sink, group);
-    reader.finish("group");
+    reader.finish();
     if (group.id == 0) {
         sink.warning(member_path(path, "id"), "a group needs an id of at least 1", "the group is left out");
         return std::nullopt;
@@ -271,7 +248,7 @@ Json write_editor_data(const EditorData& data) {
 
 EditorData read_editor_data(const Json& json, const std::string& path, DiagnosticSink& sink) {
     EditorData data;
-    SectionReader reader(json, path, sink);
+    SectionReader reader(json, path, sink, "the editor section");
     if (!reader.is_object()) return data;
     read_list(reader, "layers", data.layers, sink, read_layer);
     if (data.layers.size() > static_cast<size_t>(kMaxLayers)) {
@@ -288,7 +265,7 @@ EditorData read_editor_data(const Json& json, const std::string& path, Diagnosti
     reader.integer("next_group_id", data.next_group_id, 1, INT_MAX);
     reader.ids("hidden", data.hidden);
     reader.ids("locked", data.locked);
-    reader.finish("editor section");
+    reader.finish();
     return data;
 }
 

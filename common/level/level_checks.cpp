@@ -2,6 +2,7 @@
 
 #include "jsonio/number_text.h"
 #include "jsonio/suggest.h"
+#include "jsonio/text.h"
 #include "level/logic_checks.h"
 #include "level/patrol_checks.h"
 #include "level/sound_name.h"
@@ -69,11 +70,11 @@ class FieldChecker {
         if (is_texture_field(info.name) && v.empty())
             sink_.error(path_of(info), "texture name is empty",
                         "name a material from assets/textures, e.g. \"concrete\"");
-        if (info.min >= 0 &&
-            (static_cast<double>(v.size()) < info.min || static_cast<double>(v.size()) > info.max))
+        const auto length = static_cast<double>(jsonio::character_count(v));
+        if (info.min >= 0 && (length < info.min || length > info.max))
             sink_.error(path_of(info),
                         v.empty() ? std::string(info.name) + " is empty"
-                                  : std::string(info.name) + " of " + std::to_string(v.size()) +
+                                  : std::string(info.name) + " of " + jsonio::format_readable(length) +
                                         " characters is too long",
                         "valid: " + jsonio::format_readable(info.min) + " .. " +
                             jsonio::format_readable(info.max) + " characters; " + info.tooltip);
@@ -95,7 +96,7 @@ class FieldChecker {
     }
     void field(Choice& v, const FieldInfo& info) {
         if (std::find(v.options.begin(), v.options.end(), v.value) == v.options.end())
-            sink_.error(path_of(info), "unknown " + std::string(info.name) + " \"" + v.value + "\"",
+            sink_.error(path_of(info), "unknown " + std::string(info.name) + " " + jsonio::quote_text(v.value),
                         "valid: " + join(v.options));
     }
     // min and max of a sound name's FieldInfo bound its length (level.h).
@@ -190,7 +191,7 @@ void check_level(const Level& level, DiagnosticSink& sink, const std::vector<siz
                 it->second < source_index.size() ? source_index[it->second] : it->second;
             sink.error(member_path(path, "id"),
                        "duplicate id " + std::to_string(entity.id) + " (also used by entities[" +
-                           std::to_string(first_shown) + "] \"" + first.name + "\")",
+                           std::to_string(first_shown) + "] " + jsonio::quote_text(first.name) + ")",
                        "ids must be unique; give this entity an unused id such as " +
                            std::to_string(std::max(level.next_id, largest_id + 1)));
         }

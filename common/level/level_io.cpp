@@ -3,9 +3,9 @@
 #include "core/files.h"
 #include "core/log.h"
 #include "jsonio/describe.h"
+#include "jsonio/document.h"
 #include "jsonio/json_writer.h"
 #include "jsonio/number_text.h"
-#include "jsonio/parse_failure.h"
 #include "jsonio/position_map.h"
 #include "level/diagnostics.h"
 #include "level/level_checks.h"
@@ -17,51 +17,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 namespace ks::level {
-
-using jsonio::PositionMap;
 
 namespace {
 
 using Json = nlohmann::ordered_json;
 
-constexpr size_t kMaxErrorsInMessage = 50;
 std::string format_hint() {
     return "a level file starts with {\"format\": \"killswitch-level\", \"version\": " +
            std::to_string(kFormatVersion) + ", ...}";
-}
-
-bool is_blank(std::string_view text) {
-    return std::all_of(text.begin(), text.end(),
-                       [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; });
-}
-
-// Offset of the first byte that cannot be in a UTF-8 text file (NUL, other control bytes, broken UTF-8),
-// or npos. Files that fail this are binary or corrupt: one clear message beats a cryptic parse error.
-size_t first_binary_byte(std::string_view text) {
-    size_t i = 0;
-    while (i < text.size()) {
-        const auto c = static_cast<unsigned char>(text[i]);
-        if (c < 0x80) {
-            if (c < 0x20 && c != '\n' && c != '\r' && c != '\t') return i;
-            ++i;
-            continue;
-        }
-        const int continuation = c >= 0xF0 && c <= 0xF4   ? 3
-                                 : c >= 0xE0 && c <= 0xEF ? 2
-                                 : c >= 0xC2 && c <= 0xDF ? 1
-                                                          : -1;
-        if (continuation < 0) return i;
-        for (int k = 1; k <= continuation; ++k) {
-            if (i + static_cast<size_t>(k) >= text.size() ||
-                (static_cast<unsigned char>(text[i + static_cast<size_t>(k)]) & 0xC0) != 0x80)
-                return i;
-        }
-        i += static_cast<size_t>(continuation) + 1;
-    }
-    return std::string_view::npos;
 }
 
 int read_version(const Json& document, DiagnosticSink& sink) {
@@ -96,82 +61,17 @@ int read_version(const Json& document, DiagnosticSink& sink) {
 
 Error combined_error(const std::vector<Diagnostic>& diagnostics, const std::string& file) {
     std::vector<Error> errors;
-    size_t total = 0;
-    for (const Diagnostic& d : diagnostics) {
-        if (d.severity != Diagnostic::Severity::Error) continue;
-        if (++total <= kMaxErrorsInMessage) errors.push_back(d.error);
-    }
-    if (total > kMaxErrorsInMessage)
-        errors.emplace_back("... and " + std::to_string(total - kMaxErrorsInMessage) + " more errors",
-                            Location(file));
-    Error combined = combine_errors(errors);
-    if (combined.where.file.empty()) combined.where.file = file;
-    return combined;
+    for (const Diagnostic& d : diagnostics)
+        if (d.severity == Diagnostic::Severity::Error) errors.push_back(d.error);
+    return jsonio::combined_error(std::move(errors), file);
 }
 
 // Parses, migrates, reads and checks; every problem goes to the sink.
-std::optional<Level> parse_level(std::string_view text, DiagnosticSink& sink, PositionMap& positions) {
-    // Some Windows editors start UTF-8 files with a byte-order mark; it is not JSON, but it is not an error.
-    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
-    if (is_blank(text)) {
-        sink.error_at({}, "", "file is empty", format_hint());
-        return std::nullopt;
-    }
-    if (size_t bad = first_binary_byte(text); bad != std::string_view::npos) {
-        char byte[8];
-        std::snprintf(byte, sizeof(byte), "0x%02x",
-                      static_cast<unsigned>(static_cast<unsigned char>(text[bad])));
-        sink.error_at(jsonio::position_of_offset(text, bad), "",
-                      std::string("file is not a text file (byte ") + byte + " at offset " +
-                          std::to_string(bad) + ")",
-                      "this does not look like a level file; " + format_hint());
-        return std::nullopt;
-    }
-
-    positions = PositionMap::scan(text);
-    std::string patched;
-    std::string_view to_parse = text;
-    if (!positions.overflowing_numbers().empty()) {
-        patched = std::string(text);
-        for (const jsonio::OverflowingNumber& n : positions.overflowing_numbers()) {
-            sink.error_at(n.position, n.path, "number " + n.token + " overflows to infinity",
-                          "write a finite number within the field's range");
-            sink.mark_reported(n.path);
-            patched.replace(n.offset, n.length,
-                            "null" + std::string(n.length - 4, ' ')); // same length: positions hold
-        }
-        to_parse = patched;
-    }
-
-    Json document;
-    try {
-        document = Json::parse(to_parse);
-    } catch (const nlohmann::json::parse_error& e) {
-        const jsonio::ParseFailure failure = jsonio::describe_parse_error(text, e);
-        if (failure.at_end)
-            sink.error_at(failure.position, "", "file ends early (truncated?): " + failure.message,
-                          "complete the file or restore it from a backup");
-        else
-            sink.error_at(failure.position, "", failure.message, "fix the JSON syntax at this place");
-        return std::nullopt;
-    } catch (const nlohmann::json::exception& e) {
-        sink.error_at({}, "", std::string("JSON could not be read: ") + e.what(), "fix the JSON syntax");
-        return std::nullopt;
-    }
-
-    for (const jsonio::DuplicateKey& d : positions.duplicate_keys())
-        sink.error_at(d.second, d.path,
-                      "duplicate key (also at line " + std::to_string(d.first.line) + ":" +
-                          std::to_string(d.first.column) + "); only one would be kept",
-                      "remove one of them");
-
-    if (!document.is_object()) {
-        sink.error_at(positions.find(""), "",
-                      "expected the level as a JSON object {...}, found " +
-                          std::string(document.is_array() ? "an array" : document.type_name()),
-                      format_hint());
-        return std::nullopt;
-    }
+std::optional<Level> parse_level(std::string_view text, DiagnosticSink& sink, jsonio::Document& parsed) {
+    parsed = jsonio::Document::parse(text, sink.file(), {"level", format_hint()});
+    parsed.report_to(sink);
+    if (!parsed.root()) return std::nullopt;
+    Json& document = *parsed.root();
     auto format = document.find("format");
     if (format == document.end()) {
         sink.error("format", "missing required field \"format\"", "add \"format\": \"killswitch-level\"");
@@ -239,9 +139,9 @@ std::string LoadReport::str() const {
 }
 
 Result<Level> load_level_string(std::string_view text, const std::string& file_name, LoadReport* report) {
-    PositionMap positions;
-    DiagnosticSink sink(file_name, &positions);
-    std::optional<Level> level = parse_level(text, sink, positions);
+    jsonio::Document document;
+    DiagnosticSink sink(file_name, &document.positions());
+    std::optional<Level> level = parse_level(text, sink, document);
     return finish(std::move(level), sink, file_name, report);
 }
 

@@ -4,15 +4,15 @@
 
 #include "jsonio/describe.h"
 #include "jsonio/number_text.h"
+#include "jsonio/object_reader.h"
 #include "jsonio/suggest.h"
+#include "jsonio/text.h"
 #include "level/patrol_checks.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cfloat>
 #include <climits>
 #include <cmath>
-#include <cstdlib>
 
 namespace ks::level {
 namespace {
@@ -25,46 +25,10 @@ using jsonio::member_path;
 
 using Json = nlohmann::ordered_json;
 
-std::string lower(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-}
-
-// A JSON number as a double. Strings such as "nan" or "inf" get their own message: JSON has no NaN, and a
-// designer who typed one needs to know the file cannot hold it, not just that a string is the wrong type.
+// A JSON number as a double: the shared read (jsonio/object_reader.h) with the level's own range text.
 bool read_double(const Json& value, const std::string& path, const std::string& valid, DiagnosticSink& sink,
                  double& out) {
-    if (sink.already_reported(path)) return false;
-    if (value.is_number()) {
-        out = value.get<double>();
-        if (!std::isfinite(out)) {
-            sink.error(path, "number is not finite", "write a finite number; valid: " + valid);
-            return false;
-        }
-        return true;
-    }
-    if (value.is_string()) {
-        const std::string text = lower(value.get<std::string>());
-        static const char* const kNonFinite[] = {"nan",  "-nan",     "+nan",      "inf",      "-inf",
-                                                 "+inf", "infinity", "-infinity", "+infinity"};
-        if (std::find(std::begin(kNonFinite), std::end(kNonFinite), text) != std::end(kNonFinite)) {
-            sink.error(path,
-                       "\"" + value.get<std::string>() +
-                           "\" is not a finite number (NaN and infinity are not allowed)",
-                       "write a finite number; valid: " + valid);
-            return false;
-        }
-        char* end = nullptr;
-        const std::string& raw = value.get_ref<const std::string&>();
-        std::strtod(raw.c_str(), &end);
-        if (!raw.empty() && end == raw.c_str() + raw.size()) {
-            sink.error(path, "number written as a string " + jsonio::quote(value),
-                       "remove the quotes; valid: " + valid);
-            return false;
-        }
-    }
-    sink.error(path, "expected a number, found " + describe_value(value), "valid: " + valid);
-    return false;
+    return jsonio::read_finite(value, path, sink, out, valid);
 }
 
 bool read_float(const Json& value, const std::string& path, const FieldInfo& info, DiagnosticSink& sink,
@@ -140,22 +104,11 @@ bool read_color(const Json& value, const std::string& path, DiagnosticSink& sink
 }
 
 bool read_string(const Json& value, const std::string& path, DiagnosticSink& sink, std::string& out) {
-    if (!value.is_string()) {
-        sink.error(path, "expected a string, found " + describe_value(value),
-                   "put the text in double quotes");
-        return false;
-    }
-    out = value.get<std::string>();
-    return true;
+    return jsonio::read_text(value, path, sink, out);
 }
 
 bool read_bool(const Json& value, const std::string& path, DiagnosticSink& sink, bool& out) {
-    if (!value.is_boolean()) {
-        sink.error(path, "expected true or false, found " + describe_value(value), "valid: true, false");
-        return false;
-    }
-    out = value.get<bool>();
-    return true;
+    return jsonio::read_flag(value, path, sink, out);
 }
 
 bool expect_object(const Json& value, const std::string& path, std::string_view what, DiagnosticSink& sink) {
@@ -233,13 +186,7 @@ class FieldReader {
     void claim(std::string name) { known_.push_back(std::move(name)); }
 
     void warn_unknown(std::string_view what) {
-        for (const auto& [key, value] : object_.items()) {
-            if (std::find(known_.begin(), known_.end(), key) != known_.end()) continue;
-            std::string hint = "known " + std::string(what) + " fields: " + join(known_);
-            if (std::string near = closest_match(key, known_); !near.empty())
-                hint = "did you mean \"" + near + "\"? " + hint;
-            sink_.warning(member_path(path_, key), "unknown field \"" + key + "\" is ignored", hint);
-        }
+        jsonio::report_unknown_members(object_, path_, known_, what, sink_);
     }
 
   private:
@@ -374,7 +321,7 @@ std::vector<Objective> read_objectives(const Json& value, const std::string& pat
         Objective objective;
         FieldReader reader(value[i], objective_path, sink);
         if (auto id = value[i].find("id"); id != value[i].end() && id->is_string())
-            reader.set_subject("objective \"" + id->get<std::string>() + "\"");
+            reader.set_subject("objective " + jsonio::quote_text(id->get<std::string>()));
         objective.visit(reader);
         reader.warn_unknown("objective");
         objectives.push_back(std::move(objective));

@@ -3,6 +3,7 @@
 #include "jsonio/json_path.h"
 #include "jsonio/number_text.h"
 #include "jsonio/suggest.h"
+#include "jsonio/text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,7 +25,7 @@ std::string entity_path(size_t i, const std::vector<size_t>& source_index) {
 }
 
 std::string in_quotes(std::string_view s) {
-    return "\"" + std::string(s) + "\"";
+    return jsonio::quote_text(s);
 }
 
 std::string number_text(float v) {
@@ -184,11 +185,11 @@ void check_objectives(const Level& level, TargetChecker& targets, DiagnosticSink
         else if (!seen.insert(o.id).second)
             sink.error(member_path(path, "id"), "duplicate objective id " + in_quotes(o.id),
                        "objective ids must be unique");
-        if (o.text.empty() || o.text.size() > static_cast<size_t>(kMaxMessageLength))
+        const size_t length = jsonio::character_count(o.text);
+        if (o.text.empty() || length > static_cast<size_t>(kMaxMessageLength))
             sink.error(member_path(path, "text"),
-                       o.text.empty()
-                           ? "the objective has no text"
-                           : "text of " + std::to_string(o.text.size()) + " characters is too long",
+                       o.text.empty() ? "the objective has no text"
+                                      : "text of " + std::to_string(length) + " characters is too long",
                        "write what the player must do, in at most " + std::to_string(kMaxMessageLength) +
                            " characters");
         if (o.kill.size() > static_cast<size_t>(kMaxKillNames))

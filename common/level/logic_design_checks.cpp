@@ -3,6 +3,7 @@
 // locked door nothing frees. Links whose targets do not resolve are left to the errors (logic_checks.cpp).
 #include "jsonio/json_path.h"
 #include "jsonio/suggest.h"
+#include "jsonio/text.h"
 #include "level/logic_checks.h"
 
 #include <algorithm>
@@ -25,7 +26,7 @@ struct LinkRef {
 };
 
 std::string in_quotes(std::string_view s) {
-    return "\"" + std::string(s) + "\"";
+    return jsonio::quote_text(s);
 }
 
 std::string entity_path(size_t i, const std::vector<size_t>& source_index) {

@@ -5,6 +5,7 @@
 #include "jsonio/json_path.h"
 #include "jsonio/number_text.h"
 #include "jsonio/suggest.h"
+#include "jsonio/text.h"
 #include "level/entity_shapes.h"
 #include "level/level_checks.h"
 
@@ -94,7 +95,8 @@ void check_patrol_mode_and_wait(const Patrol& patrol, const std::string& path, D
         std::string hint = "valid: " + jsonio::join(options);
         if (std::string near = jsonio::closest_match(patrol.mode.value, options); !near.empty())
             hint = "did you mean \"" + near + "\"? " + hint;
-        sink.error(member_path(path, "mode"), "unknown patrol mode \"" + patrol.mode.value + "\"", hint);
+        sink.error(member_path(path, "mode"), "unknown patrol mode " + jsonio::quote_text(patrol.mode.value),
+                   hint);
     }
     if (!std::isfinite(patrol.wait) || patrol.wait < 0.0f || patrol.wait > static_cast<float>(kMaxPatrolWait))
         sink.error(member_path(path, "wait"), "patrol wait " + number_text(patrol.wait) + " is out of range",

@@ -1,5 +1,7 @@
 #include "level/sound_name.h"
 
+#include "jsonio/text.h"
+
 #include <algorithm>
 #include <cctype>
 
@@ -35,7 +37,7 @@ SoundNameProblem sound_name_problem(std::string_view name, int min_length, int m
     std::string hint = "sound names hold only a-z, 0-9 and _";
     if (const std::string fix = respelled_sound_name(name); !fix.empty())
         hint = "write \"" + fix + "\" (the file assets/sounds/" + fix + ".wav); " + hint;
-    return {"sound name \"" + std::string(name) + "\" has characters other than a-z, 0-9 and _", hint};
+    return {"sound name " + jsonio::quote_text(name) + " has characters other than a-z, 0-9 and _", hint};
 }
 
 std::string respelled_sound_name(std::string_view name) {

@@ -3,6 +3,7 @@
 #include "core/paths.h"
 #include "jsonio/json_path.h"
 #include "jsonio/suggest.h"
+#include "jsonio/text.h"
 
 #include <algorithm>
 #include <system_error>
@@ -72,8 +73,8 @@ void check_texture_names(const Level& level, const std::vector<std::string>& kno
             const std::string path = jsonio::member_path(
                 jsonio::member_path(jsonio::element_path("entities", shown), "props"), texture.field);
             std::string suggestion = jsonio::closest_match(name, known);
-            std::string message = entity_subject(entity) + ": texture \"" + name +
-                                  "\" is not a surface material in assets/textures";
+            std::string message = entity_subject(entity) + ": texture " + jsonio::quote_text(name) +
+                                  " is not a surface material in assets/textures";
             if (!suggestion.empty()) message += "; did you mean \"" + suggestion + "\"?";
             sink.warning(path, std::move(message),
                          "surface materials: " + jsonio::join(known) +

@@ -17,7 +17,7 @@ Result<std::unique_ptr<MixRecorder>> MixRecorder::open(const std::filesystem::pa
     if (!recording) return recording.error();
     std::unique_ptr<MixRecorder> r(new MixRecorder());
     r->engine_ = std::make_unique<audio::AudioEngine>(std::move(*engine));
-    // The options menu's defaults (runtime/app/options.h), so a recording sounds like a fresh install.
+    // The options menu's defaults (runtime/model/options.h), so a recording sounds like a fresh install.
     audio::Volumes volumes;
     volumes.master = 0.8f;
     volumes.effects = 1.0f;

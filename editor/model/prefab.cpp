@@ -1,8 +1,16 @@
 #include "model/prefab.h"
 
-#include "jsonio/parse_failure.h"
+#include "core/log.h"
+#include "jsonio/describe.h"
+#include "jsonio/document.h"
+#include "jsonio/json_path.h"
+#include "jsonio/object_reader.h"
+#include "jsonio/text.h"
+#include "level/diagnostics.h"
 #include "level/entity_shapes.h"
+#include "level/level_checks.h"
 #include "level/level_io.h"
+#include "level/level_reader.h"
 #include "model/field_access.h"
 #include "model/rotation.h"
 
@@ -10,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace ks::editor {
 namespace {
@@ -17,10 +26,6 @@ namespace {
 constexpr const char* kFormat = "killswitch-prefab";
 constexpr int kVersion = 1;
 constexpr double kSameNumber = 1e-3;
-
-Error prefab_error(const std::string& file, const std::string& where, std::string message, std::string hint) {
-    return Error(std::move(message), Location{file + (where.empty() ? "" : ": " + where)}, std::move(hint));
-}
 
 Vec3 into_frame(const Vec3& p, const Frame& frame) {
     return Vec3(turned_offset(DVec3(p) - DVec3(frame.position), 1, -frame.yaw));
@@ -61,49 +66,84 @@ bool same_angles(const Vec3& a, const Vec3& b) {
 
 std::string prefab_name_problem(std::string_view name) {
     if (name.empty()) return "a prefab needs a name";
-    if (name.size() > kMaxPrefabNameLength)
+    if (jsonio::character_count(name) > kMaxPrefabNameLength)
         return "a prefab name has at most " + std::to_string(kMaxPrefabNameLength) + " characters";
-    for (char c : name)
-        if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-'))
-            return "'" + std::string(name) + "' holds '" + std::string(1, c) +
-                   "': a prefab name uses a-z, 0-9, _ and - (it names the file prefabs/NAME.json)";
+    for (size_t i = 0; i < name.size(); ++i) {
+        const char c = name[i];
+        if ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-') continue;
+        size_t end = i + 1; // the whole character, not one byte of it
+        while (end < name.size() && (static_cast<unsigned char>(name[end]) & 0xC0) == 0x80) ++end;
+        return jsonio::quote_text(name) + " holds " + jsonio::quote_text(name.substr(i, end - i)) +
+               ": a prefab name uses a-z, 0-9, _ and - (it names the file prefabs/NAME.json)";
+    }
     return {};
 }
 
-Result<Prefab> prefab_from_text(std::string_view text, const std::string& file) {
-    nlohmann::json json;
-    try {
-        json = nlohmann::json::parse(text);
-    } catch (const nlohmann::json::parse_error& e) {
-        const auto failure = jsonio::describe_parse_error(text, e);
-        return Error(failure.message, Location{file, failure.position.line, failure.position.column},
-                     "fix the JSON syntax, or save the prefab again from the editor");
+namespace {
+
+const char* const kPrefabExample = "a prefab file is {\"format\": \"killswitch-prefab\", \"version\": 1, "
+                                   "\"name\": ..., \"entities\": [...]}; "
+                                   "save it again from the editor";
+
+// The prefab's fields, read as a level's are: every problem reported at its line:column, unknown fields (an
+// "objectives" or "settings" copied from a level) warned about, each entity through the level's reader and
+// checks.
+void read_prefab(const jsonio::Json& root, level::DiagnosticSink& sink, Prefab& prefab) {
+    jsonio::ObjectReader reader(root, "", sink, "prefab");
+    std::string format;
+    if (reader.text("format", format, jsonio::Need::Required, 0, kPrefabExample) && format != kFormat)
+        sink.error("format", "not a prefab file: format is " + jsonio::quote_text(format), kPrefabExample);
+    int version = kVersion;
+    if (reader.whole("version", version, {0, 1e6}, jsonio::Need::Required) && version != kVersion)
+        sink.error("version", "prefab version " + std::to_string(version) + " is not known",
+                   "this editor reads version " + std::to_string(kVersion) +
+                       "; save the prefab again from it");
+    if (reader.text("name", prefab.name, jsonio::Need::Required, 0, kPrefabExample))
+        if (std::string problem = prefab_name_problem(prefab.name); !problem.empty())
+            sink.error("name", problem, "rename it in the file");
+    prefab.title = prefab.name;
+    reader.text("title", prefab.title);
+    const jsonio::Json* list = reader.get("entities", jsonio::Need::Required, kPrefabExample);
+    reader.finish();
+    if (!list) return;
+    if (!list->is_array() || list->empty() || list->size() > kMaxPrefabEntities) {
+        sink.error("entities",
+                   "a prefab needs a list of 1 to " + std::to_string(kMaxPrefabEntities) +
+                       " entities, found " + jsonio::describe_value(*list) +
+                       (list->is_array() ? " of " + std::to_string(list->size()) : ""),
+                   kPrefabExample);
+        return;
     }
-    const std::string fix = "a prefab file is {\"format\": \"killswitch-prefab\", \"version\": 1, \"name\": "
-                            "..., \"entities\": [...]}; save it again from the editor";
-    if (!json.is_object() || json.value("format", "") != kFormat)
-        return prefab_error(file, "format", "not a prefab file", fix);
-    if (!json.contains("version") || !json["version"].is_number_integer() || json["version"] != kVersion)
-        return prefab_error(file, "version", "unsupported prefab version (this editor reads version 1)", fix);
-    Prefab prefab;
-    if (!json.contains("name") || !json["name"].is_string())
-        return prefab_error(file, "name", "a prefab needs a \"name\" string", fix);
-    prefab.name = json["name"].get<std::string>();
-    if (std::string problem = prefab_name_problem(prefab.name); !problem.empty())
-        return prefab_error(file, "name", problem, "rename it in the file");
-    prefab.title =
-        json.contains("title") && json["title"].is_string() ? json["title"].get<std::string>() : prefab.name;
-    const auto& list = json.contains("entities") ? json["entities"] : nlohmann::json();
-    if (!list.is_array() || list.empty() || list.size() > kMaxPrefabEntities)
-        return prefab_error(
-            file, "entities",
-            "a prefab needs a list of 1 to " + std::to_string(kMaxPrefabEntities) + " entities", fix);
-    for (size_t i = 0; i < list.size(); ++i) {
-        auto entity = level::entity_from_json(list[i], file + ": entities[" + std::to_string(i) + "]");
-        if (!entity) return entity.error();
+    for (size_t i = 0; i < list->size(); ++i) {
+        const std::string path = jsonio::element_path("entities", i);
+        std::optional<level::Entity> entity = level::read_entity((*list)[i], path, sink);
+        if (!entity) continue;
+        level::check_entity(*entity, path, sink);
         entity->id = static_cast<int>(i) + 1;
         prefab.entities.push_back(std::move(*entity));
     }
+}
+
+} // namespace
+
+Result<Prefab> prefab_from_text(std::string_view text, const std::string& file,
+                                std::vector<Error>* warnings) {
+    const jsonio::Document document = jsonio::Document::parse(text, file, {"prefab", kPrefabExample});
+    level::DiagnosticSink sink(file, &document.positions());
+    document.report_to(sink);
+    Prefab prefab;
+    if (const jsonio::Json* root = document.root()) read_prefab(*root, sink, prefab);
+    const bool failed = sink.has_errors();
+    std::vector<Error> errors;
+    for (level::Diagnostic& d : sink.take_sorted()) {
+        if (d.severity == level::Diagnostic::Severity::Error)
+            errors.push_back(std::move(d.error));
+        else if (warnings)
+            warnings->push_back(std::move(d.error));
+        else
+            log::warn(d.error.str());
+    }
+    if (failed) return jsonio::combined_error(std::move(errors), file);
     return prefab;
 }
 

@@ -29,8 +29,11 @@ inline constexpr size_t kMaxPrefabNameLength = 64;
 std::string prefab_name_problem(std::string_view name);
 
 // {"format": "killswitch-prefab", "version": 1, "name": ..., "title": ..., "entities": [...]}: each entity
-// exactly as a level file writes it. Errors name the file, the JSON path and the fix.
-Result<Prefab> prefab_from_text(std::string_view text, const std::string& file_name);
+// exactly as a level file writes it, read by the level's reader (jsonio::Document, jsonio::ObjectReader):
+// errors name the file, line:column, the JSON path and the fix; warnings (an unknown field) go to
+// `warnings`, or to the log when it is null.
+Result<Prefab> prefab_from_text(std::string_view text, const std::string& file_name,
+                                std::vector<Error>* warnings = nullptr);
 std::string prefab_to_text(const Prefab& prefab);
 
 // A group's frame: the prefab origin's place and the turn about y (degrees).

@@ -10,6 +10,10 @@
 #include "core/log.h"
 #include "core/paths.h"
 #include "core/result.h"
+#include "jsonio/describe.h"
+#include "jsonio/document.h"
+#include "jsonio/json_path.h"
+#include "jsonio/object_reader.h"
 
 #include <nlohmann/json.hpp>
 
@@ -65,74 +69,65 @@ inline std::string campaign_save_to_json(const CampaignSave& s) {
     return j.dump(2) + "\n";
 }
 
-// Parses a save; nullopt with the problem in `problem` ("levels[1].seconds: ...") when it cannot be used.
-inline std::optional<CampaignSave> campaign_save_from_json(const std::string& text, std::string& problem) {
-    auto j = nlohmann::json::parse(text, nullptr, false);
-    if (j.is_discarded() || !j.is_object()) {
-        problem = "not a JSON object";
-        return std::nullopt;
-    }
-    if (!j.contains("format") || j["format"] != "killswitch-campaign-save") {
-        problem = "format: expected \"killswitch-campaign-save\"";
-        return std::nullopt;
-    }
+// Parses a save with the reader every file shares (jsonio/object_reader.h): nullopt when it has an error.
+// Every problem, errors and warnings (an unknown field), is appended to `problems`, each naming the file,
+// line:column and field ("campaign_save.json:6:20: levels[1].seconds: -5 is out of range (valid: 0 ..
+// 10000000)").
+inline std::optional<CampaignSave>
+campaign_save_from_json(const std::string& text, std::vector<std::string>& problems,
+                        const std::string& file_name = "campaign_save.json") {
+    using jsonio::Need;
+    using jsonio::Range;
+    const jsonio::Document document = jsonio::Document::parse(
+        text, file_name,
+        {"campaign save",
+         "a save is {\"format\": \"killswitch-campaign-save\", \"version\": 1, \"campaign\": ..., "
+         "\"level_count\": ..., \"levels\": [...]}; a new campaign replaces it"});
+    jsonio::Problems found(file_name, &document.positions());
+    document.report_to(found);
     CampaignSave s;
-    if (!j.contains("campaign") || !j["campaign"].is_string() || j["campaign"].get<std::string>().empty()) {
-        problem = "campaign: expected the campaign file's path";
-        return std::nullopt;
-    }
-    s.campaign = j["campaign"].get<std::string>();
-    if (j.contains("name") && j["name"].is_string()) s.name = j["name"].get<std::string>();
-    constexpr double kMaxCount = 10000.0;
-    auto count = [&](const nlohmann::json& v, double hi, double& out) {
-        if (!v.is_number()) return false;
-        out = v.get<double>();
-        return std::isfinite(out) && out >= 0.0 && out <= hi;
-    };
-    double n = 0.0;
-    if (!j.contains("level_count") || !count(j["level_count"], kMaxCount, n) || n < 1.0) {
-        problem =
-            "level_count: expected a number of levels in 1.." + std::to_string(static_cast<int>(kMaxCount));
-        return std::nullopt;
-    }
-    s.level_count = static_cast<std::size_t>(n);
-    if (!j.contains("levels") || !j["levels"].is_array() || j["levels"].size() > s.level_count) {
-        problem = "levels: expected a list of at most level_count won levels";
-        return std::nullopt;
-    }
-    for (std::size_t i = 0; i < j["levels"].size(); ++i) {
-        const auto& l = j["levels"][i];
-        const std::string where = "levels[" + std::to_string(i) + "]";
-        if (!l.is_object()) {
-            problem = where + ": expected an object";
-            return std::nullopt;
+    if (const jsonio::Json* root = document.root()) {
+        jsonio::ObjectReader in(*root, "", found, "campaign save");
+        std::string format;
+        in.choice("format", format, {"killswitch-campaign-save"}, Need::Required);
+        in.claim("version");
+        std::string campaign;
+        if (in.text("campaign", campaign, Need::Required, 0, "the campaign file's path")) {
+            if (campaign.empty())
+                found.report(jsonio::Severity::Error, "campaign", "the campaign file's path is empty",
+                             "start the campaign again from the menu");
+            s.campaign = campaign;
         }
-        LevelResult r;
-        if (l.contains("title") && l["title"].is_string()) r.title = l["title"].get<std::string>();
-        double seconds = 0.0, killed = 0.0, total = 0.0, shots = 0.0, hits = 0.0;
-        const struct {
-            const char* key;
-            double hi;
-            double* out;
-        } fields[] = {{"seconds", 1.0e7, &seconds},
-                      {"robots_killed", 1.0e6, &killed},
-                      {"robots_total", 1.0e6, &total},
-                      {"shots", 1.0e9, &shots},
-                      {"hits", 1.0e9, &hits}};
-        for (const auto& f : fields)
-            if (!l.contains(f.key) || !count(l[f.key], f.hi, *f.out)) {
-                problem = where + "." + f.key + ": expected a number in 0.." +
-                          std::to_string(static_cast<long long>(f.hi)) +
-                          (l.contains(f.key) ? ", got " + l[f.key].dump() : ", missing");
-                return std::nullopt;
+        in.text("name", s.name);
+        int count = 0;
+        const bool counted = in.whole("level_count", count, Range{1, 10000}, Need::Required);
+        s.level_count = static_cast<std::size_t>(count);
+        const jsonio::Json* levels = in.get("levels", Need::Required, "the levels won, in order");
+        in.finish();
+        if (levels && (!levels->is_array() || (counted && levels->size() > s.level_count)))
+            found.report(jsonio::Severity::Error, "levels",
+                         "expected a list of at most level_count (" + std::to_string(s.level_count) +
+                             ") won levels, found " + jsonio::describe_value(*levels) +
+                             (levels->is_array() ? " of " + std::to_string(levels->size()) : ""),
+                         "start the campaign again from the menu");
+        else if (levels)
+            for (std::size_t i = 0; i < levels->size(); ++i) {
+                jsonio::ObjectReader level((*levels)[i], jsonio::element_path("levels", i), found,
+                                           "a won level");
+                LevelResult r;
+                level.text("title", r.title);
+                level.number("seconds", r.seconds, Range{0, 1.0e7, "s"}, Need::Required);
+                level.whole("robots_killed", r.robots_killed, Range{0, 1.0e6}, Need::Required);
+                level.whole("robots_total", r.robots_total, Range{0, 1.0e6}, Need::Required);
+                level.whole("shots", r.shots, Range{0, 1.0e9}, Need::Required);
+                level.whole("hits", r.hits, Range{0, 1.0e9}, Need::Required);
+                level.finish();
+                s.won.push_back(std::move(r));
             }
-        r.seconds = seconds;
-        r.robots_killed = static_cast<int>(killed);
-        r.robots_total = static_cast<int>(total);
-        r.shots = static_cast<int>(shots);
-        r.hits = static_cast<int>(hits);
-        s.won.push_back(std::move(r));
     }
+    for (const Error& e : found.errors()) problems.push_back(e.str());
+    for (const Error& e : found.warnings()) problems.push_back(e.str());
+    if (found.has_errors()) return std::nullopt;
     return s;
 }
 
@@ -146,12 +141,13 @@ inline std::optional<CampaignSave> load_campaign_save(const std::filesystem::pat
         log::warn(text.error().str(), " (campaign progress not loaded)");
         return std::nullopt;
     }
-    std::string problem;
-    auto save = campaign_save_from_json(*text, problem);
-    if (!save)
-        log::warn(path.string(), ": ", problem,
-                  " - the saved campaign progress is ignored (the file is kept; fix it, or a new campaign "
-                  "replaces it)");
+    std::vector<std::string> problems;
+    auto save = campaign_save_from_json(*text, problems, path.string());
+    for (const std::string& problem : problems)
+        log::warn(problem,
+                  save ? ""
+                       : " - the saved campaign progress is ignored (the file is kept; fix it, or a new "
+                         "campaign replaces it)");
     return save;
 }
 

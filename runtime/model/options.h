@@ -2,12 +2,16 @@
 // The player's options (mouse sensitivity, invert Y, field of view, sound, key bindings, gamepad) and their
 // file, $XDG_CONFIG_HOME/killswitch/options.json (or ~/.config/killswitch/options.json). GL-free and
 // header-only so the tests use it directly (runtime/ sources are compiled only into the killswitch
-// executable). A missing file means defaults; a bad file (not JSON, wrong types, NaN, out of range) gives one
-// warning naming the file and the field, and the defaults for what could not be read — never a failure.
+// executable). A missing file means defaults; a bad file (not JSON, wrong types, NaN, out of range, an
+// unknown field) gives one warning per problem naming the file, line:column and field, and the defaults for
+// what could not be read — never a failure.
 #include "core/files.h"
 #include "core/log.h"
 #include "core/math.h"
 #include "core/result.h"
+#include "jsonio/document.h"
+#include "jsonio/number_text.h"
+#include "jsonio/object_reader.h"
 #include "key_bindings.h"
 
 #include <nlohmann/json.hpp>
@@ -83,66 +87,64 @@ inline std::string options_to_json(const Options& o) {
     return j.dump(2) + "\n";
 }
 
-// Parses options text; every problem is appended to `problems` ("field: what, using default X").
-inline Options options_from_json(const std::string& text, std::vector<std::string>& problems) {
+// Problems with the bindings come from key_bindings.h as "bindings.jump: ..."; they get the place of their
+// path in the file like every other problem.
+inline std::string located_binding_problem(const std::string& problem, const jsonio::Document& document) {
+    const std::string path = problem.substr(0, problem.find(':'));
+    const jsonio::TextPosition at = document.positions().find(path);
+    return document.file() + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) + ": " + problem;
+}
+
+// Parses options text with the reader every file shares (jsonio/object_reader.h); every problem is appended
+// to `problems` ("options.json:3:5: fov_degrees: 1000 is out of range (valid: 50 .. 110); the default is
+// kept"), and the field keeps its default.
+inline Options options_from_json(const std::string& text, std::vector<std::string>& problems,
+                                 const std::string& file_name = "options.json") {
+    using jsonio::Range;
     Options o;
-    auto j = nlohmann::json::parse(text, nullptr, false);
-    if (j.is_discarded() || !j.is_object()) {
-        problems.push_back("not a JSON object");
-        return o;
-    }
-    auto read_number = [&](const char* key, float& value, float lo, float hi) {
-        if (!j.contains(key)) return;
-        const auto& v = j[key];
-        // nlohmann reads NaN/inf as null or rejects them; anything not a finite number in range is refused.
-        if (!v.is_number() || !is_finite(v.get<float>()) || v.get<float>() < lo || v.get<float>() > hi) {
-            problems.push_back(std::string(key) + ": expected a number in " + std::to_string(lo) + ".." +
-                               std::to_string(hi) + ", got " + v.dump() + "; using the default " +
-                               std::to_string(value));
-            return;
+    const jsonio::Document document = jsonio::Document::parse(
+        text, file_name,
+        {"options", "an options file is {\"format\": \"killswitch-options\", \"version\": 1, ...}; "
+                    "Options in the menu rewrites it"});
+    jsonio::Problems found(file_name, &document.positions());
+    document.report_to(found);
+    if (const jsonio::Json* root = document.root()) {
+        jsonio::ObjectReader in(*root, "", found, "options");
+        in.claim("format");
+        in.claim("version");
+        in.number("mouse_sensitivity", o.mouse_sensitivity,
+                  Range{Options::kMinSensitivity, Options::kMaxSensitivity});
+        in.number("fov_degrees", o.fov_degrees, Range{Options::kMinFov, Options::kMaxFov, "deg"});
+        in.number("master_volume", o.master_volume, Range{0, 1});
+        in.number("effects_volume", o.effects_volume, Range{0, 1});
+        in.number("ambience_volume", o.ambience_volume, Range{0, 1});
+        in.number("pad_look_sensitivity", o.pad_look_sensitivity,
+                  Range{Options::kMinSensitivity, Options::kMaxSensitivity});
+        in.number("pad_dead_zone", o.pad_dead_zone, Range{Options::kMinDeadZone, Options::kMaxDeadZone});
+        if (float scale = 0.0f; in.number("render_scale", scale, Range{0, Options::kMaxRenderScale})) {
+            if (scale == 0.0f || scale >= Options::kMinRenderScale)
+                o.render_scale = scale;
+            else
+                found.report(jsonio::Severity::Error, "render_scale",
+                             jsonio::format_readable(scale) + " is out of range",
+                             "valid: 0 (automatic) or 0.25 .. 1");
         }
-        value = v.get<float>();
-    };
-    read_number("mouse_sensitivity", o.mouse_sensitivity, Options::kMinSensitivity, Options::kMaxSensitivity);
-    read_number("fov_degrees", o.fov_degrees, Options::kMinFov, Options::kMaxFov);
-    read_number("master_volume", o.master_volume, 0.0f, 1.0f);
-    read_number("effects_volume", o.effects_volume, 0.0f, 1.0f);
-    read_number("ambience_volume", o.ambience_volume, 0.0f, 1.0f);
-    read_number("pad_look_sensitivity", o.pad_look_sensitivity, Options::kMinSensitivity,
-                Options::kMaxSensitivity);
-    read_number("pad_dead_zone", o.pad_dead_zone, Options::kMinDeadZone, Options::kMaxDeadZone);
-    if (j.contains("bindings")) o.bindings = bindings_from_json(j["bindings"], problems);
-    if (j.contains("render_scale")) {
-        const auto& v = j["render_scale"];
-        const bool number = v.is_number() && is_finite(v.get<float>());
-        const float f = number ? v.get<float>() : -1.0f;
-        if (number && (f == 0.0f || (f >= Options::kMinRenderScale && f <= Options::kMaxRenderScale)))
-            o.render_scale = f;
-        else
-            problems.push_back("render_scale: expected 0 (automatic) or a number in 0.25..1, got " +
-                               v.dump() + "; using the default 0 (automatic)");
+        if (std::string quality; in.choice("quality", quality, {"auto", "full", "fast"}))
+            o.quality = quality == "full"   ? QualityOption::Full
+                        : quality == "fast" ? QualityOption::Fast
+                                            : QualityOption::Auto;
+        in.flag("invert_y", o.invert_y);
+        in.flag("muted", o.muted);
+        if (const jsonio::Json* bindings = in.get("bindings")) {
+            std::vector<std::string> binding_problems;
+            o.bindings = bindings_from_json(nlohmann::json(*bindings), binding_problems);
+            for (const std::string& p : binding_problems)
+                problems.push_back(located_binding_problem(p, document));
+        }
+        in.finish();
     }
-    if (j.contains("quality")) {
-        const auto& v = j["quality"];
-        const std::string q = v.is_string() ? v.get<std::string>() : "";
-        if (q == "auto" || q == "full" || q == "fast")
-            o.quality = q == "full"   ? QualityOption::Full
-                        : q == "fast" ? QualityOption::Fast
-                                      : QualityOption::Auto;
-        else
-            problems.push_back("quality: expected \"auto\", \"full\" or \"fast\", got " + v.dump() +
-                               "; using the default \"auto\"");
-    }
-    auto read_flag = [&](const char* key, bool& value) {
-        if (!j.contains(key)) return;
-        if (j[key].is_boolean())
-            value = j[key].get<bool>();
-        else
-            problems.push_back(std::string(key) + ": expected true or false, got " + j[key].dump() +
-                               "; using the default " + (value ? "true" : "false"));
-    };
-    read_flag("invert_y", o.invert_y);
-    read_flag("muted", o.muted);
+    for (const Error& e : found.errors()) problems.push_back(e.str() + "; the default is kept");
+    for (const Error& e : found.warnings()) problems.push_back(e.str());
     return o;
 }
 
@@ -156,9 +158,8 @@ inline Options load_options(const std::filesystem::path& path) {
         return Options{};
     }
     std::vector<std::string> problems;
-    Options o = options_from_json(*text, problems);
-    for (const auto& p : problems)
-        log::warn(path.string(), ": ", p, " (fix or delete the file; Options in the menu rewrites it)");
+    Options o = options_from_json(*text, problems, path.string());
+    for (const auto& p : problems) log::warn(p, " (fix or delete the file; Options in the menu rewrites it)");
     return o;
 }
 

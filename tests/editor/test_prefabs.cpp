@@ -6,6 +6,7 @@
 #include "model/script.h"
 
 #include "core/files.h"
+#include "jsonio/bad_documents.h"
 
 using namespace ks;
 using namespace ks::editor;
@@ -61,6 +62,49 @@ TEST_CASE("a prefab file round-trips; a broken one names the file, the place and
     CHECK(entity.error().str().find("wall") != std::string::npos); // did you mean
     CHECK(!prefab_name_problem("Door Way").empty());
     CHECK(prefab_name_problem("door-way_2").empty());
+}
+
+TEST_CASE("a prefab file is read like a level: the bad cases get the level's treatment, each at its place") {
+    const std::string head = "{\"format\": \"killswitch-prefab\", \"version\": 1, \"name\": \"p\",\n";
+    const std::string wall = "\"entities\": [{\"id\": 1, \"type\": \"wall\", \"position\": [0, 0, 0]}]}";
+    SUBCASE("a duplicate key is an error") {
+        auto r = prefab_from_text(head + "\"title\": \"A\", \"title\": \"B\",\n" + wall, "p.json");
+        REQUIRE_FALSE(r.ok());
+        CHECK(r.error().str().find("p.json:2:15: title: duplicate key (also at line 2:1)") !=
+              std::string::npos);
+    }
+    SUBCASE("a numeric title is an error") {
+        auto r = prefab_from_text(head + "\"title\": 7,\n" + wall, "p.json");
+        REQUIRE_FALSE(r.ok());
+        CHECK(r.error().str().find("p.json:2:1: title: expected a string, found the number 7") !=
+              std::string::npos);
+    }
+    SUBCASE("unknown keys and an objectives key are warnings with a did-you-mean; the prefab reads") {
+        std::vector<Error> warnings;
+        auto r =
+            prefab_from_text(head + "\"titel\": \"A\", \"objectives\": [],\n" + wall, "p.json", &warnings);
+        REQUIRE_MESSAGE(r.ok(), (r.ok() ? "" : r.error().str()));
+        REQUIRE(warnings.size() == 2);
+        CHECK(warnings[0].str().find("p.json:2:1: titel: unknown field \"titel\" is ignored (did you mean "
+                                     "\"title\"?") != std::string::npos);
+        CHECK(warnings[1].str().find("p.json:2:15: objectives: unknown field \"objectives\" is ignored") !=
+              std::string::npos);
+    }
+    SUBCASE("an entity's problems are located in the prefab file") {
+        auto r = prefab_from_text(
+            head + "\"entities\": [{\"id\": 1, \"type\": \"wall\", \"position\": [0, \"x\", 0]}]}", "p.json");
+        REQUIRE_FALSE(r.ok());
+        CHECK(r.error().str().find("p.json:2:56: entities[0].position[1]: expected a number") !=
+              std::string::npos);
+    }
+    SUBCASE("every bad document, at its line:column") {
+        for (const ks::test::BadDocument& bad : ks::test::bad_documents()) {
+            CAPTURE(bad.name);
+            auto r = prefab_from_text(bad.text, "p.json");
+            REQUIRE_FALSE(r.ok());
+            CHECK(r.error().str().find("p.json" + bad.place + bad.message) != std::string::npos);
+        }
+    }
 }
 
 TEST_CASE("frames: into and out of a turned frame is exact at quarter turns, patrols turn along") {

@@ -1,7 +1,9 @@
 // The play-test report (game/playtest_report.h) without running the game: heat-map binning (cells, edges,
 // points outside, the mean height), the aggregate numbers, the JSON file's round trip and its errors
 // (located by line and JSON path), the file beside the level, and the level fingerprint.
+#include "core/log.h"
 #include "game/playtest_report.h"
+#include "jsonio/bad_documents.h"
 #include "level/level_io.h"
 #include "test_support.h"
 
@@ -158,19 +160,35 @@ TEST_CASE("a broken report file is refused with its place and a fix") {
         CHECK(r.error().where.path == path);
         if (!path.empty()) CHECK(r.error().where.line > 1);
     };
-    check_error("{\"format\": ", "parse error", "");
+    check_error("{\"format\": ", "file ends early", "");
     check_error("{\"format\": \"killswitch-level\"}", "not a Killswitch play-test report", "");
     check_error(replaced(text, "\"version\": 1", "\"version\": 7"), "version 7", "version");
-    check_error(replaced(text, "\"outcome\": \"death\"", "\"outcome\": \"won\""), "unknown outcome",
+    check_error(replaced(text, "\"outcome\": \"death\"", "\"outcome\": \"won\""), "unknown value \"won\"",
                 "runs[1].outcome");
-    check_error(replaced(text, "\"wins\": 1,", ""), "missing \"wins\"", "summary.wins");
+    check_error(replaced(text, "\"wins\": 1,", ""), "missing required field \"wins\"", "summary.wins");
     check_error(replaced(text, "\"completed\": 3", "\"completed\": 4"), "says 4 runs", "completed");
     check_error(replaced(text, "\"path\": [0, 0, 10,", "\"path\": [0, 0,"), "x, y, z triples",
                 "runs[0].path");
-    check_error(replaced(text, "\"time\": 20.5", "\"time\": \"late\""), "finite number", "runs[0].time");
+    check_error(replaced(text, "\"time\": 20.5", "\"time\": \"late\""),
+                "expected a number, found the string \"late\"", "runs[0].time");
     auto missing = load_playtest_report("/nonexistent/none.playtest.json");
     REQUIRE_FALSE(missing);
     CHECK(missing.error().str().find("none.playtest.json") != std::string::npos);
+}
+
+TEST_CASE("a report read like every file: bad documents at their line:column, unknown fields warned") {
+    for (const ks::test::BadDocument& bad : ks::test::bad_documents()) {
+        CAPTURE(bad.name);
+        auto r = parse_playtest_report(bad.text, "bad.playtest.json");
+        REQUIRE_FALSE(r);
+        CHECK(r.error().str().find("bad.playtest.json" + bad.place + bad.message) != std::string::npos);
+    }
+    const std::string text = playtest_report_json(summarize_runs(three_runs(), setup()));
+    ks::log::Capture capture;
+    auto extra = parse_playtest_report(replaced(text, "\"wins\": 1,", "\"wins\": 1, \"winz\": 2,"), "r.json");
+    REQUIRE(extra);
+    CHECK(capture.text().find("summary.winz: unknown field \"winz\" is ignored (did you mean \"wins\"?") !=
+          std::string::npos);
 }
 
 TEST_CASE("the level fingerprint follows the level's content") {

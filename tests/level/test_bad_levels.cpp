@@ -1,6 +1,7 @@
 // The malformed-file corpus (tests/data/levels/bad/): each file must give one clear report naming file,
 // place and fix -- never a crash, never a silent success. Table: file -> expected error count and text.
 #include "core/log.h"
+#include "jsonio/bad_documents.h"
 #include "level/level_io.h"
 #include "test_support.h"
 
@@ -21,7 +22,7 @@ struct BadFile {
 
 const std::vector<BadFile>& corpus() {
     static const std::vector<BadFile> table = {
-        {"empty.json", 1, 0, {"empty.json: file is empty", "killswitch-level"}},
+        {"empty.json", 1, 0, {"empty.json:1:1: file is empty", "killswitch-level"}},
         {"whitespace_only.json", 1, 0, {"file is empty"}},
         {"truncated.json",
          1,
@@ -38,7 +39,7 @@ const std::vector<BadFile>& corpus() {
          1,
          0,
          {"not_an_object.json:1:1: expected the level as a JSON object", "found an array"}},
-        {"deep_nesting.json", 1, 0, {"deep_nesting.json:1:59: entities[0]: expected an entity as an object"}},
+        {"deep_nesting.json", 1, 0, {"deep_nesting.json:1:121: nested deeper than 64 levels"}},
         {"wrong_format.json", 1, 0, {":2:3: format: not a Killswitch level", "\"unity-scene\""}},
         {"missing_format.json", 1, 0, {"format: missing required field \"format\""}},
         {"missing_version.json", 1, 0, {"version: missing required field \"version\""}},
@@ -136,10 +137,12 @@ const std::vector<BadFile>& corpus() {
         {"robot_patrol.json",
          3,
          0,
-         {":14:56: entities[1].props.patrol.points[3][0]: robot 12 (\"guard\"): \"nan\" is not a finite number",
+         {":14:56: entities[1].props.patrol.points[3][0]: robot 12 (\"guard\"): \"nan\" is not a finite "
+          "number",
           ":15:11: entities[1].props.patrol.mode: robot 12 (\"guard\"): unknown patrol mode \"pingpong\" "
           "(did you mean \"ping_pong\"? valid: loop, ping_pong)",
-          ":16:11: entities[1].props.patrol.wait: robot 12 (\"guard\"): patrol wait -1 is out of range (valid: 0 .. 600 s"}},
+          ":16:11: entities[1].props.patrol.wait: robot 12 (\"guard\"): patrol wait -1 is out of range "
+          "(valid: 0 .. 600 s"}},
         {"zero_sun_direction.json", 1, 0, {":6:5: settings.sun_direction: sun_direction is zero"}},
         {"entity_not_object.json",
          2,
@@ -223,4 +226,34 @@ TEST_CASE("warnings go to the log when no report is asked for") {
     CHECK(level.ok());
     CHECK(capture.count(ks::log::Level::Warn) == 3);
     CHECK(capture.text().find("unknown field \"author\"") != std::string::npos);
+}
+
+TEST_CASE("every bad document is refused with its line:column, as in every file kind") {
+    for (const ks::test::BadDocument& bad : ks::test::bad_documents()) {
+        CAPTURE(bad.name);
+        LoadReport report;
+        auto level = load_level_string(bad.text, "bad.json", &report);
+        REQUIRE_FALSE(level.ok());
+        const std::string text = report.str();
+        CAPTURE(text);
+        CHECK(text.find("bad.json" + bad.place + bad.message) != std::string::npos);
+    }
+}
+
+TEST_CASE("a 300-character text in \"\u00e9\" is within a 500-character limit; 501 characters are not") {
+    std::string text;
+    for (int i = 0; i < 300; ++i) text += "\xc3\xa9";
+    auto level_with = [](const std::string& message) {
+        return "{\"format\": \"killswitch-level\", \"version\": 2, \"entities\": [{\"id\": 1, \"type\": "
+               "\"message\", \"position\": [0, 0, 0], \"props\": {\"text\": \"" +
+               message + "\"}}]}";
+    };
+    LoadReport report;
+    auto ok = load_level_string(level_with(text), "accents.json", &report);
+    CHECK_MESSAGE(ok.ok(), report.str());
+    std::string long_text;
+    for (int i = 0; i < 501; ++i) long_text += "\xc3\xa9";
+    auto too_long = load_level_string(level_with(long_text), "accents.json", &report);
+    REQUIRE_FALSE(too_long.ok());
+    CHECK(report.str().find("text of 501 characters is too long") != std::string::npos);
 }

@@ -1,7 +1,9 @@
 // Campaign files (level/campaign.h): the shipped campaign, save -> load round trips, and every malformed
 // case giving one clear report naming file, line:column, JSON path and fix.
 #include "core/files.h"
+#include "core/log.h"
 #include "core/paths.h"
+#include "jsonio/bad_documents.h"
 #include "level/campaign.h"
 #include "level/level_io.h"
 #include "test_support.h"
@@ -48,6 +50,15 @@ void check_contains(const std::string& report, const std::vector<std::string>& e
 }
 
 } // namespace
+
+TEST_CASE("campaign: every bad document is refused with its line:column, as in every file kind") {
+    CampaignFolder folder;
+    for (const test::BadDocument& bad : test::bad_documents()) {
+        CAPTURE(bad.name);
+        const std::string report = failure_of(folder, bad.text);
+        check_contains(report, {"campaign.json" + bad.place + bad.message});
+    }
+}
 
 TEST_CASE("campaign: the shipped campaign loads, starts with the main level, and every level loads cleanly") {
     const fs::path file = test::source_dir() / "levels" / "campaign.json";
@@ -123,7 +134,7 @@ TEST_CASE("campaign: malformed files give every problem with file, line:column, 
     const std::string file = (folder.dir / "campaign.json").string();
 
     SUBCASE("empty") {
-        check_contains(failure_of(folder, " \n"), {file + ": file is empty", "\"levels\""});
+        check_contains(failure_of(folder, " \n"), {file + ":1:1: file is empty", "\"levels\""});
     }
     SUBCASE("bad JSON syntax") {
         check_contains(failure_of(folder, "{\n  \"name\": \"C\",\n  \"levels\": [}\n"),
@@ -160,12 +171,16 @@ TEST_CASE("campaign: malformed files give every problem with file, line:column, 
                        "{\"name\": \"C\", \"levels\": [{\"file\": \"first.json\", \"title\": \"\"}]}"),
             {"levels[0].title: the level has no title"});
     }
-    SUBCASE("unknown fields, with did-you-mean") {
-        check_contains(
-            failure_of(folder, "{\"name\": \"C\", \"level\": [],\n \"levels\": [{\"file\": \"first.json\", "
-                               "\"titel\": \"T\", \"title\": \"T\"}]}"),
-            {":1:15: level: unknown field \"level\"", "did you mean \"levels\"?",
-             "levels[0].titel: unknown field \"titel\"", "did you mean \"title\"?"});
+    SUBCASE("unknown fields are warnings, with did-you-mean, as in every file") {
+        const fs::path path = folder.write("{\"name\": \"C\", \"level\": [],\n \"levels\": [{\"file\": "
+                                           "\"first.json\", \"titel\": \"T\", \"title\": \"T\"}]}");
+        log::Capture capture;
+        Result<Campaign> campaign = load_campaign(path);
+        REQUIRE(campaign.ok());
+        CHECK(campaign->levels.size() == 1);
+        check_contains(capture.text(),
+                       {file + ":1:15: level: unknown field \"level\" is ignored", "did you mean \"levels\"?",
+                        "levels[0].titel: unknown field \"titel\"", "did you mean \"title\"?"});
     }
     SUBCASE("a duplicate key") {
         check_contains(failure_of(folder, "{\"name\": \"C\", \"name\": \"D\", \"levels\": [{\"file\": "
@@ -195,7 +210,8 @@ TEST_CASE("campaign: malformed files give every problem with file, line:column, 
                        {"is an absolute path", "relative to the campaign file's folder"});
     }
     SUBCASE("binary garbage never crashes") {
-        check_contains(failure_of(folder, std::string("\x89PNG\r\n\x1a\n\0\0", 10)), {"JSON"});
+        check_contains(failure_of(folder, std::string("\x89PNG\r\n\x1a\n\0\0", 10)),
+                       {":1:1: file is not a text file"});
     }
 }
 

@@ -91,12 +91,12 @@ TEST_CASE("mistakes in the editor section are warnings naming the path; the leve
     CHECK(mentions(report, "editor.layers[1].entities", "entity 2 is already in an earlier layer"));
     CHECK(mentions(report, "editor.layers[1].colour", "unknown field"));
     CHECK(mentions(report, "editor.layers[2].name", "needs a name"));
-    CHECK(mentions(report, "editor.layers[3]", "expected an object"));
+    CHECK(mentions(report, "editor.layers[3]", "expected a layer as an object"));
     CHECK(mentions(report, "editor.active_layer", "expected"));
     CHECK(mentions(report, "editor.groups[1].entities", "entity 4 is already in another group"));
     CHECK(mentions(report, "editor.groups[2].id", "used twice"));
     CHECK(mentions(report, "editor.groups[3].id", "needs an id"));
-    CHECK(mentions(report, "editor.groups[4].position", "finite numbers"));
+    CHECK(mentions(report, "editor.groups[4].position[1]", "expected a number, found the string \"x\""));
     CHECK(mentions(report, "editor.groups[4].prefab.overrides", "one list of field names per member"));
     CHECK(mentions(report, "editor.hidden[1]", "expected an id"));
     CHECK(mentions(report, "editor.hidden[2]", "expected an id"));
@@ -125,6 +125,6 @@ TEST_CASE("an editor section that is not an object is one warning") {
     LoadReport report;
     const Level level = load_ok(level_text("[1, 2]"), &report);
     CHECK(report.warning_count() == 1);
-    CHECK(mentions(report, "editor", "expected an object"));
+    CHECK(mentions(report, "editor", "expected the editor section as an object"));
     CHECK(level.editor.empty());
 }

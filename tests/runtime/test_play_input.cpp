@@ -49,7 +49,7 @@ Status wait_for(test::GameProcess& game, const std::filesystem::path& status_fil
     return s;
 }
 
-// 0.0022 rad per pixel at sensitivity 1 (runtime/app/options.h), in degrees.
+// 0.0022 rad per pixel at sensitivity 1 (runtime/model/options.h), in degrees.
 constexpr double kDegreesPerPixel = 0.0022 * 180.0 / 3.14159265358979;
 
 } // namespace

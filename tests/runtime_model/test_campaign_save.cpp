@@ -5,6 +5,7 @@
 #include "core/files.h"
 #include "core/log.h"
 #include "core/paths.h"
+#include "jsonio/bad_documents.h"
 #include "runtime/model/campaign_save.h"
 #include "test_support.h"
 
@@ -123,21 +124,22 @@ TEST_CASE("campaign save: a corrupt or incomplete save is reported with the fiel
         const char* expect;
     };
     const Case cases[] = {
-        {"{ not json", "not a JSON object"},
-        {"", "not a JSON object"},
-        {R"({"format": "killswitch-options"})", "format: expected"},
-        {R"({"format": "killswitch-campaign-save", "level_count": 3, "levels": []})", "campaign: expected"},
+        {"{ not json", "JSON syntax error"},
+        {"", "file is empty"},
+        {R"({"format": "killswitch-options"})", "format: unknown value \"killswitch-options\""},
+        {R"({"format": "killswitch-campaign-save", "level_count": 3, "levels": []})",
+         "campaign: missing required field"},
         {R"({"format": "killswitch-campaign-save", "campaign": 7, "level_count": 3, "levels": []})",
-         "campaign: expected"},
+         "campaign: expected a string, found the number 7"},
         {R"({"format": "killswitch-campaign-save", "campaign": "/x.json", "levels": []})", "level_count"},
         {R"({"format": "killswitch-campaign-save", "campaign": "/x.json", "level_count": -2, "levels": []})",
          "level_count"},
         {R"({"format": "killswitch-campaign-save", "campaign": "/x.json", "level_count": 3})", "levels:"},
         {save_text("[" + good_level + "," + good_level + "," + good_level + "," + good_level + "]"),
          "levels:"},
-        {save_text("[7]"), "levels[0]: expected an object"},
+        {save_text("[7]"), "levels[0]: expected a won level as an object"},
         {save_text(R"([{"title": "A", "seconds": 1, "robots_killed": 1, "robots_total": 2, "shots": 3}])"),
-         "levels[0].hits: expected a number in 0..1000000000, missing"},
+         "levels[0].hits: missing required field \"hits\""},
         {save_text("[" + good_level + R"(, {"seconds": -5, "robots_killed": 1, "robots_total": 2, "shots": 3,
                    "hits": 1}])"),
          "levels[1].seconds"},
@@ -157,9 +159,24 @@ TEST_CASE("campaign save: a corrupt or incomplete save is reported with the fiel
         CHECK(fs::exists(path)); // never deleted
         CHECK(*files::read_text(path) == c.text);
     }
-    // A good one with unknown extra fields and no titles reads.
+    // A good one with unknown extra fields and no titles reads; the unknown field is a warning, as in every
+    // file.
     REQUIRE(files::write_atomic(path, save_text("[" + good_level + "]", R"(, "future": true)")).ok());
-    CHECK(load_campaign_save(path).has_value());
+    {
+        log::Capture warned;
+        CHECK(load_campaign_save(path).has_value());
+        CHECK(warned.text().find("future: unknown field \"future\" is ignored") != std::string::npos);
+    }
+    // Every bad document: refused with its line:column.
+    for (const test::BadDocument& bad : test::bad_documents()) {
+        CAPTURE(bad.name);
+        std::vector<std::string> problems;
+        CHECK_FALSE(campaign_save_from_json(bad.text, problems, "save.json").has_value());
+        std::string all;
+        for (const std::string& problem : problems) all += problem + "\n";
+        CAPTURE(all);
+        CHECK(all.find("save.json" + bad.place + bad.message) != std::string::npos);
+    }
     // No file: nothing, silently.
     log::Capture capture;
     CHECK_FALSE(load_campaign_save(dir / "none.json").has_value());

@@ -2,6 +2,7 @@
 // round trip, atomic write into a new folder, and every kind of bad file giving defaults plus a warning.
 #include "core/files.h"
 #include "core/log.h"
+#include "jsonio/bad_documents.h"
 #include "runtime/model/options.h"
 #include "test_support.h"
 
@@ -55,9 +56,9 @@ TEST_CASE("options: bad files give defaults (per field) and a warning naming the
         const char* expect_in_warning;
     };
     const Case cases[] = {
-        {"{ this is not json", "not a JSON object"},
-        {"[1, 2, 3]", "not a JSON object"},
-        {"", "not a JSON object"},
+        {"{ this is not json", "JSON syntax error"},
+        {"[1, 2, 3]", "expected the options as a JSON object"},
+        {"", "file is empty"},
         {R"({"mouse_sensitivity": "fast"})", "mouse_sensitivity"},
         {R"({"mouse_sensitivity": 1e30})", "mouse_sensitivity"},
         {R"({"mouse_sensitivity": -2})", "mouse_sensitivity"},
@@ -83,6 +84,27 @@ TEST_CASE("options: bad files give defaults (per field) and a warning naming the
         CHECK(capture.text().find(c.expect_in_warning) != std::string::npos);
         CHECK(capture.text().find(path.string()) != std::string::npos);
     }
+}
+
+TEST_CASE("options: every bad document is reported at its line:column, as in every file kind") {
+    for (const test::BadDocument& bad : test::bad_documents()) {
+        CAPTURE(bad.name);
+        std::vector<std::string> problems;
+        const Options o = runtime::options_from_json(bad.text, problems, "options.json");
+        CHECK(o == Options{});
+        std::string all;
+        for (const std::string& problem : problems) all += problem + "\n";
+        CAPTURE(all);
+        CHECK(all.find("options.json" + bad.place + bad.message) != std::string::npos);
+    }
+    // An unknown field is a warning with a did-you-mean, and the rest is read.
+    std::vector<std::string> problems;
+    const Options o = runtime::options_from_json("{\"fov_degres\": 90,\n \"muted\": true}", problems);
+    CHECK(o.muted);
+    REQUIRE(problems.size() == 1);
+    CHECK(problems[0].find(
+              "options.json:1:2: fov_degres: unknown field \"fov_degres\" is ignored (did you mean "
+              "\"fov_degrees\"?") != std::string::npos);
 }
 
 TEST_CASE("options: a bad field does not throw away the good ones") {
