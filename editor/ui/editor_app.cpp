@@ -24,7 +24,7 @@ namespace {
 EditorApp* g_app = nullptr; // the window-close callback has no user pointer to spare (ImGui's backend)
 
 fs::path recent_files_path() {
-    fs::path dir = default_config_dir();
+    fs::path dir = paths::user_config_dir();
     if (dir.empty()) dir = fs::temp_directory_path() / "killswitch";
     return dir / "editor_recent.json";
 }
