@@ -1,8 +1,6 @@
 // The game app's command-line vocabulary (options, flags, --screen names), the screens' names in the status
-// file, and --warp's number list.
+// file.
 #include "game_app_internal.h"
-
-#include <sstream>
 
 namespace ks::runtime {
 
@@ -56,20 +54,6 @@ const char* screen_name(Screen s) {
         return "campaign_choice";
     }
     return "?";
-}
-
-bool parse_floats(const std::string& text, float* out, int count) {
-    std::stringstream ss(text);
-    std::string item;
-    int n = 0;
-    while (std::getline(ss, item, ',')) {
-        if (n >= count) return false;
-        char* end = nullptr;
-        out[n] = std::strtof(item.c_str(), &end);
-        if (end == item.c_str() || *end != '\0' || !is_finite(out[n])) return false;
-        ++n;
-    }
-    return n == count;
 }
 
 } // namespace ks::runtime
