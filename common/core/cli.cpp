@@ -80,9 +80,8 @@ std::string_view trim_spaces(std::string_view text) {
 
 Result<PoseArgument> parse_pose(std::string_view text) {
     static constexpr const char* kNames[] = {"x", "y", "z", "yaw", "pitch"};
-    const char* hint =
-        "five finite numbers separated by commas: x,y,z in metres, then yaw,pitch in degrees (yaw 0 "
-        "looks along -z), e.g. 0,3,25,0,-10";
+    const char* hint = "five finite numbers separated by commas: x,y,z in metres, then yaw and pitch in "
+                       "degrees, yaw 0 looking along -z; e.g. 0,3,25,0,-10";
     float values[5] = {};
     size_t count = 0;
     for (size_t start = 0;; ++count) {
