@@ -5,9 +5,32 @@
 # The build enforces the module graph: common/ itself is on no include path. Each module gets a folder of
 # its own (build/module_includes/<name>/) holding links to itself and to the modules of its closure only, so
 # `#include "render/..."` from physics fails to compile ("No such file") instead of linking by accident.
+#
+# It enforces each module's own border too: headers listed as INTERNAL in ks_module(...) are seen by the
+# module's sources and its tests (tests/<name>/) only. In every include folder a module with internal headers
+# appears as a folder of links to its other headers, one per file; its own sources and tests also get
+# build/module_includes/<name>.internal/, which links the whole module.
 set_property(GLOBAL PROPERTY KS_MODULES "")
 
-# A folder that shows only `modules` (ks_<name> targets and their closures), as links to common/<name>.
+# Links the public headers of module `name` into `dir`/<name>: the whole folder when it has no internal
+# headers, else one link per header that is not internal.
+function(ks_link_public_headers dir name)
+    get_property(internal GLOBAL PROPERTY KS_INTERNAL_ks_${name})
+    if(NOT internal)
+        file(CREATE_LINK ${CMAKE_SOURCE_DIR}/common/${name} ${dir}/${name} SYMBOLIC)
+        return()
+    endif()
+    file(MAKE_DIRECTORY ${dir}/${name})
+    file(GLOB headers CONFIGURE_DEPENDS LIST_DIRECTORIES false RELATIVE ${CMAKE_SOURCE_DIR}/common/${name}
+         ${CMAKE_SOURCE_DIR}/common/${name}/*)
+    foreach(header IN LISTS headers)
+        if(NOT header MATCHES "\\.cpp$" AND NOT header IN_LIST internal)
+            file(CREATE_LINK ${CMAKE_SOURCE_DIR}/common/${name}/${header} ${dir}/${name}/${header} SYMBOLIC)
+        endif()
+    endforeach()
+endfunction()
+
+# A folder that shows only `modules` (ks_<name> targets and their closures), each by its public headers.
 function(ks_module_include_folder out_dir folder_name)
     set(dir ${CMAKE_BINARY_DIR}/module_includes/${folder_name})
     file(REMOVE_RECURSE ${dir})
@@ -20,7 +43,7 @@ function(ks_module_include_folder out_dir folder_name)
     list(REMOVE_DUPLICATES visible)
     foreach(target IN LISTS visible)
         string(REGEX REPLACE "^ks_" "" name ${target})
-        file(CREATE_LINK ${CMAKE_SOURCE_DIR}/common/${name} ${dir}/${name} SYMBOLIC)
+        ks_link_public_headers(${dir} ${name})
     endforeach()
     set(${out_dir} ${dir} PARENT_SCOPE)
 endfunction()
@@ -31,8 +54,46 @@ function(ks_target_sees_modules target)
     target_include_directories(${target} PRIVATE ${dir})
 endfunction()
 
+# The folder that shows module `name` whole, internal headers included (empty when it has none): for the
+# module's own sources and its tests.
+function(ks_module_internal_folder out_dir name)
+    get_property(internal GLOBAL PROPERTY KS_INTERNAL_ks_${name})
+    if(internal)
+        set(${out_dir} ${CMAKE_BINARY_DIR}/module_includes/${name}.internal PARENT_SCOPE)
+    else()
+        set(${out_dir} "" PARENT_SCOPE)
+    endif()
+endfunction()
+
+# Every INTERNAL header exists, and no public header includes one (a user of the public header could not
+# compile it).
+function(ks_check_internal_headers name)
+    get_property(internal GLOBAL PROPERTY KS_INTERNAL_ks_${name})
+    set(folder ${CMAKE_SOURCE_DIR}/common/${name})
+    foreach(header IN LISTS internal)
+        if(NOT EXISTS ${folder}/${header})
+            message(FATAL_ERROR "ks_module(${name} INTERNAL ${header}): common/${name}/${header} does not exist")
+        endif()
+    endforeach()
+    file(GLOB headers CONFIGURE_DEPENDS RELATIVE ${folder} ${folder}/*.h)
+    foreach(header IN LISTS headers)
+        if(header IN_LIST internal)
+            continue()
+        endif()
+        file(STRINGS ${folder}/${header} includes REGEX "^#include \"${name}/")
+        foreach(line IN LISTS includes)
+            string(REGEX REPLACE "^#include \"${name}/([^\"]+)\".*" "\\1" included "${line}")
+            if(included IN_LIST internal)
+                message(FATAL_ERROR "common/${name}/${header} is public but includes the internal header "
+                                    "${name}/${included}: include it from the .cpp instead, or list "
+                                    "${header} as INTERNAL too")
+            endif()
+        endforeach()
+    endforeach()
+endfunction()
+
 function(ks_module name)
-    cmake_parse_arguments(ARG "" "" "DEPS" ${ARGN})
+    cmake_parse_arguments(ARG "" "" "DEPS;INTERNAL" ${ARGN})
     # Transitive closure of module dependencies (third-party interface targets are left to CMake).
     set(closure ks_${name})
     foreach(dep IN LISTS ARG_DEPS)
@@ -41,12 +102,24 @@ function(ks_module name)
     endforeach()
     list(REMOVE_DUPLICATES closure)
     set_property(GLOBAL PROPERTY KS_CLOSURE_ks_${name} "${closure}")
-    # A user of the module sees what the module sees: its public headers include its dependencies'.
+    set_property(GLOBAL PROPERTY KS_INTERNAL_ks_${name} "${ARG_INTERNAL}")
+    ks_check_internal_headers(${name})
+    # A user of the module sees what the module sees, less its internal headers: its public headers include
+    # its dependencies' public headers and nothing internal.
     ks_module_include_folder(include_dir ${name} ks_${name})
+    ks_module_internal_folder(internal_dir ${name})
+    if(internal_dir)
+        file(REMOVE_RECURSE ${internal_dir})
+        file(MAKE_DIRECTORY ${internal_dir})
+        file(CREATE_LINK ${CMAKE_SOURCE_DIR}/common/${name} ${internal_dir}/${name} SYMBOLIC)
+    endif()
     file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/common/${name}/*.cpp)
     if(sources)
         add_library(ks_${name} OBJECT ${sources})
         target_include_directories(ks_${name} PUBLIC ${include_dir})
+        if(internal_dir)
+            target_include_directories(ks_${name} PRIVATE ${internal_dir})
+        endif()
         target_compile_options(ks_${name} PRIVATE ${KS_WARNINGS})
         target_link_libraries(ks_${name} PUBLIC ${ARG_DEPS})
     else() # a module with headers only (or none yet)

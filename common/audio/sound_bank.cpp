@@ -1,4 +1,5 @@
 #include "audio/sound_bank.h"
+#include "core/files.h"
 #include "core/paths.h"
 
 #include <algorithm>
@@ -13,14 +14,12 @@ SoundBank SoundBank::load_folder(const std::filesystem::path& folder, std::vecto
                               "put the game's <name>.wav files there; the game runs without sound meanwhile");
         return bank;
     }
-    std::vector<std::filesystem::path> files;
-    for (const auto& entry : std::filesystem::directory_iterator(folder, ec))
-        if (entry.path().extension() == ".wav" && !entry.is_directory()) files.push_back(entry.path());
-    if (ec)
-        problems.emplace_back("cannot list the sound folder: " + ec.message(), Location{folder.string()},
-                              "check the folder's permissions");
-    std::sort(files.begin(), files.end()); // the same problems in the same order on every machine
-    for (const auto& file : files) {
+    auto listed = files::list(folder, ".wav"); // sorted: the same problems in the same order on every machine
+    if (!listed) {
+        problems.push_back(listed.error());
+        return bank;
+    }
+    for (const auto& file : *listed) {
         auto sound = read_wav(file);
         if (!sound) {
             problems.push_back(sound.error());

@@ -7,7 +7,8 @@
 
 namespace ks {
 
-Result<CommandLine> CommandLine::parse(int argc, const char* const* argv, const std::vector<std::string>& flags) {
+Result<CommandLine> CommandLine::parse(int argc, const char* const* argv,
+                                       const std::vector<std::string>& flags) {
     CommandLine cl;
     for (int i = 1; i < argc; ++i) {
         std::string arg = argv[i];
@@ -67,6 +68,41 @@ std::vector<std::string> CommandLine::unknown(const std::vector<std::string>& kn
     for (auto& [name, value] : values_)
         if (std::find(known.begin(), known.end(), name) == known.end()) out.push_back("--" + name);
     return out;
+}
+
+namespace {
+std::string_view trim_spaces(std::string_view text) {
+    while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
+    while (!text.empty() && text.back() == ' ') text.remove_suffix(1);
+    return text;
+}
+} // namespace
+
+Result<PoseArgument> parse_pose(std::string_view text) {
+    static constexpr const char* kNames[] = {"x", "y", "z", "yaw", "pitch"};
+    const char* hint = "five finite numbers separated by commas: x,y,z in metres, then yaw and pitch in "
+                       "degrees, yaw 0 looking along -z; e.g. 0,3,25,0,-10";
+    float values[5] = {};
+    size_t count = 0;
+    for (size_t start = 0;; ++count) {
+        const size_t comma = text.find(',', start);
+        const std::string_view field =
+            trim_spaces(text.substr(start, comma == std::string_view::npos ? comma : comma - start));
+        if (count == 5) return Error("expected x,y,z,yaw,pitch: more than five values", {}, hint);
+        const std::string quoted = std::string(kNames[count]) + " '" + std::string(field) + "'";
+        const char* end = field.data() + field.size();
+        auto [stop, ec] = std::from_chars(field.data(), end, values[count]);
+        if (field.empty() || stop != end || ec == std::errc::invalid_argument)
+            return Error("expected x,y,z,yaw,pitch: " + quoted + " is not a number", {}, hint);
+        if (ec == std::errc::result_out_of_range || !std::isfinite(values[count]))
+            return Error("expected x,y,z,yaw,pitch: " + quoted + " is not a finite number", {}, hint);
+        if (comma == std::string_view::npos) break;
+        start = comma + 1;
+    }
+    if (count + 1 < 5)
+        return Error("expected x,y,z,yaw,pitch: only " + std::to_string(count + 1) + " of the five values",
+                     {}, hint);
+    return PoseArgument{Vec3(values[0], values[1], values[2]), values[3], values[4]};
 }
 
 } // namespace ks

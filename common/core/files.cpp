@@ -1,5 +1,6 @@
 #include "core/files.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
@@ -32,6 +33,24 @@ bool write_all(int fd, const char* data, size_t size) {
 
 void inject_fault(Fault fault) {
     g_fault = fault;
+}
+
+Result<std::vector<std::filesystem::path>> list(const std::filesystem::path& folder,
+                                                std::string_view ending) {
+    namespace fs = std::filesystem;
+    std::vector<fs::path> found;
+    std::error_code ec;
+    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        std::error_code type_ec;
+        if (name.size() > ending.size() && name.ends_with(ending) && it->is_regular_file(type_ec))
+            found.push_back(it->path());
+    }
+    if (ec)
+        return Error("cannot list the folder: " + ec.message(), Location{folder.string()},
+                     "check that the folder exists and that it can be read");
+    std::sort(found.begin(), found.end()); // the same order on every file system
+    return found;
 }
 
 Result<std::string> read_text(const std::filesystem::path& path) {

@@ -8,10 +8,17 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace ks::files {
 
 Result<std::string> read_text(const std::filesystem::path& path);
+
+// The regular files in `folder` (links to them included) whose names end with `ending` (".json",
+// "_basecolor.png") after at least one more character, sorted by path. Never throws: a folder that is
+// missing, is not a folder or cannot be read is an error naming it (callers that treat that as "no files" say
+// so with value_or).
+Result<std::vector<std::filesystem::path>> list(const std::filesystem::path& folder, std::string_view ending);
 Result<void> write_atomic(const std::filesystem::path& path, std::string_view data);
 
 // A new, empty temporary file beside `path` (same folder, so a rename over `path` is atomic), open for

@@ -59,12 +59,24 @@ fs::path resolve_user_path(const fs::path& given) {
     return given;
 }
 
-fs::path user_data_dir() {
-    if (const char* xdg = std::getenv("XDG_DATA_HOME"); xdg && *xdg && fs::path(xdg).is_absolute())
+namespace {
+// The XDG base directory rule: $<variable>/killswitch when it is an absolute path, else
+// $HOME/<home_relative>/killswitch, else empty.
+fs::path xdg_dir(const char* variable, const fs::path& home_relative) {
+    if (const char* xdg = std::getenv(variable); xdg && *xdg && fs::path(xdg).is_absolute())
         return fs::path(xdg) / "killswitch";
     if (const char* home = std::getenv("HOME"); home && *home)
-        return fs::path(home) / ".local" / "share" / "killswitch";
+        return fs::path(home) / home_relative / "killswitch";
     return {};
+}
+} // namespace
+
+fs::path user_data_dir() {
+    return xdg_dir("XDG_DATA_HOME", fs::path(".local") / "share");
+}
+
+fs::path user_config_dir() {
+    return xdg_dir("XDG_CONFIG_HOME", ".config");
 }
 
 fs::path user_levels_dir() {

@@ -21,6 +21,10 @@ std::filesystem::path resolve_user_path(const std::filesystem::path& given);
 // XDG base directory rule; a relative XDG_DATA_HOME is ignored, as the rule says). Empty when neither
 // variable gives a folder. Read from the environment on every call.
 std::filesystem::path user_data_dir();
+// The player's settings (options, key bindings, the editor's recent files and untitled autosaves):
+// $XDG_CONFIG_HOME/killswitch, else ~/.config/killswitch, by the same rule as user_data_dir() (a relative
+// XDG_CONFIG_HOME is ignored). Empty when neither variable gives a folder. Read on every call.
+std::filesystem::path user_config_dir();
 // Where the player's own levels live: user_data_dir()/levels (empty when user_data_dir() is).
 std::filesystem::path user_levels_dir();
 // user_levels_dir(), created when missing (the editor's folder for a new level); empty when there is no such

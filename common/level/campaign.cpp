@@ -92,10 +92,8 @@ void check_content(const std::optional<std::string>& name, const std::vector<Lis
 // The .json files beside a missing one, for "did you mean".
 std::vector<std::string> level_files_in(const fs::path& folder) {
     std::vector<std::string> names;
-    std::error_code ec;
-    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec))
-        if (it->path().extension() == ".json") names.push_back(it->path().filename().string());
-    std::sort(names.begin(), names.end());
+    for (const fs::path& file : files::list(folder, ".json").value_or(std::vector<fs::path>{}))
+        names.push_back(file.filename().string());
     return names;
 }
 

@@ -1,5 +1,6 @@
 #include "level/level_catalog.h"
 
+#include "core/files.h"
 #include "level/level_io.h"
 
 #include <algorithm>
@@ -14,20 +15,15 @@ LevelFolder list_level_files(const fs::path& folder, const std::vector<std::stri
     std::error_code ec;
     out.exists = !folder.empty() && fs::is_directory(folder, ec);
     if (!out.exists) return out;
-    std::vector<fs::path> files;
-    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
-        const fs::path& path = it->path();
-        const std::string name = path.filename().string();
-        if (path.extension() != ".json" || std::find(skip.begin(), skip.end(), name) != skip.end()) continue;
-        if (std::error_code type_ec; !it->is_regular_file(type_ec)) continue;
-        files.push_back(path);
+    std::vector<fs::path> listed = files::list(folder, ".json").value_or(std::vector<fs::path>{});
+    std::erase_if(listed, [&](const fs::path& file) {
+        return std::find(skip.begin(), skip.end(), file.filename().string()) != skip.end();
+    });
+    if (listed.size() > max_files) {
+        out.left_out = listed.size() - max_files;
+        listed.resize(max_files);
     }
-    std::sort(files.begin(), files.end());
-    if (files.size() > max_files) {
-        out.left_out = files.size() - max_files;
-        files.resize(max_files);
-    }
-    for (const fs::path& file : files) {
+    for (const fs::path& file : listed) {
         LevelFileEntry entry;
         entry.file = file;
         entry.name = file.stem().string();

@@ -1,5 +1,6 @@
 #include "level/texture_names.h"
 
+#include "core/files.h"
 #include "core/paths.h"
 #include "jsonio/json_path.h"
 #include "jsonio/suggest.h"
@@ -34,16 +35,15 @@ bool is_texture_field(std::string_view field_name) {
 
 std::vector<std::string> surface_texture_names_in(const std::filesystem::path& folder) {
     std::vector<std::string> names;
-    std::error_code ec;
-    for (std::filesystem::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
-        const std::string file = it->path().filename().string();
-        if (file.size() <= kBaseColour.size() || !file.ends_with(kBaseColour)) continue;
+    for (const std::filesystem::path& base :
+         files::list(folder, kBaseColour).value_or(std::vector<std::filesystem::path>{})) {
+        const std::string file = base.filename().string();
         const std::string name = file.substr(0, file.size() - kBaseColour.size());
         std::error_code file_ec;
         if (std::filesystem::is_regular_file(folder / (name + std::string(kHeight)), file_ec))
             names.push_back(name);
     }
-    std::sort(names.begin(), names.end());
+    std::sort(names.begin(), names.end()); // by name: "wall" before "wall2" (their files sort the other way)
     return names;
 }
 

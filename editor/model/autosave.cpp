@@ -1,8 +1,8 @@
 #include "model/autosave.h"
 
 #include "core/files.h"
+#include "core/paths.h"
 #include "level/level_io.h"
-#include "model/recent_files.h"
 
 #include <algorithm>
 #include <charconv>
@@ -69,7 +69,7 @@ std::optional<RecoveryOffer> find_recovery(const fs::path& level_file) {
 
 fs::path untitled_autosave_dir(const AutosaveConfig& config) {
     if (!config.untitled_dir.empty()) return config.untitled_dir;
-    fs::path base = default_config_dir();
+    fs::path base = paths::user_config_dir();
     return base.empty() ? fs::temp_directory_path() / "killswitch-autosave" : base / "autosave";
 }
 

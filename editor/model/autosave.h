@@ -17,7 +17,7 @@ struct AutosaveConfig {
     double idle_seconds = 5.0;          // save once the user has paused this long after a change...
     double max_delay_seconds = 60.0;    // ...or once a change has waited this long, even mid-work
     int keep = 5;                       // newest autosaves kept per level
-    std::filesystem::path untitled_dir; // where untitled levels go (empty: default_config_dir()/autosave)
+    std::filesystem::path untitled_dir; // where untitled levels go (empty: paths::user_config_dir()/autosave)
 };
 
 // Seconds on a monotonic clock; tests inject their own.

@@ -19,6 +19,18 @@ geometry::Obb entity_obb(const Entity& e) {
     return box;
 }
 
+geometry::Aabb selection_bounds(const std::vector<const Entity*>& entities) {
+    geometry::Aabb box = geometry::Aabb::empty();
+    for (const Entity* e : entities) box.grow(entity_obb(*e).aabb());
+    return box;
+}
+
+geometry::Aabb selection_bounds(const std::vector<Entity>& entities) {
+    geometry::Aabb box = geometry::Aabb::empty();
+    for (const Entity& e : entities) box.grow(entity_obb(e).aabb());
+    return box;
+}
+
 geometry::Obb player_obb(const level::PlayerStart& start) {
     geometry::Obb box;
     box.axes = glm::mat3_cast(quat_from_ypr(radians(start.yaw), 0, 0));

@@ -9,11 +9,16 @@
 #include "physics/character.h"
 
 #include <optional>
+#include <vector>
 
 namespace ks::editor {
 
 // The entity's box in world space. Positions are bottom centres (floors: the walking surface).
 geometry::Obb entity_obb(const level::Entity& entity);
+// The world box around the entities' boxes: what F frames, a prefab thumbnail's camera, an entered group's
+// outline. geometry::Aabb::empty() (not valid()) when there are none.
+geometry::Aabb selection_bounds(const std::vector<const level::Entity*>& entities);
+geometry::Aabb selection_bounds(const std::vector<level::Entity>& entities);
 // The player's standing body at the start: radius 1, height 3 (seed facts §5.1), as a box.
 geometry::Obb player_obb(const level::PlayerStart& start);
 

@@ -31,11 +31,9 @@ void PrefabLibrary::set_folders(std::vector<fs::path> folders) {
 bool PrefabLibrary::rescan() {
     std::map<std::string, std::pair<fs::path, fs::file_time_type>> found; // sorted by name
     for (const fs::path& folder : folders_) {
-        std::error_code ec;
-        for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
-            const fs::path& path = it->path();
-            if (path.extension() != ".json" || !it->is_regular_file(ec)) continue;
+        for (const fs::path& path : files::list(folder, ".json").value_or(std::vector<fs::path>{})) {
             const std::string name = path.stem().string();
+            std::error_code ec;
             if (!found.contains(name)) found[name] = {path, fs::last_write_time(path, ec)};
         }
     }

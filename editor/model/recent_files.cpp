@@ -2,18 +2,10 @@
 
 #include "core/files.h"
 
-#include <cstdlib>
 #include <nlohmann/json.hpp>
 
 namespace ks::editor {
 namespace fs = std::filesystem;
-
-fs::path default_config_dir() {
-    if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg) return fs::path(xdg) / "killswitch";
-    if (const char* home = std::getenv("HOME"); home && *home)
-        return fs::path(home) / ".config" / "killswitch";
-    return {};
-}
 
 RecentFiles::RecentFiles(fs::path config_file, size_t capacity)
     : config_file_(std::move(config_file)), capacity_(capacity) {}

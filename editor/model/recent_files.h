@@ -1,15 +1,13 @@
 #pragma once
 // The File > Open Recent list, kept in a small JSON file under the user's config folder
-// ($XDG_CONFIG_HOME/killswitch/, else ~/.config/killswitch/); tests pass their own path.
+// (paths::user_config_dir(): $XDG_CONFIG_HOME/killswitch/, else ~/.config/killswitch/); tests pass their own
+// path.
 #include "core/result.h"
 
 #include <filesystem>
 #include <vector>
 
 namespace ks::editor {
-
-// $XDG_CONFIG_HOME/killswitch, else $HOME/.config/killswitch (empty when neither is set).
-std::filesystem::path default_config_dir();
 
 class RecentFiles {
   public:

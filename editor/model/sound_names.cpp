@@ -1,5 +1,6 @@
 #include "model/sound_names.h"
 
+#include "core/files.h"
 #include "core/paths.h"
 
 #include <algorithm>
@@ -9,13 +10,10 @@ namespace ks::editor {
 
 std::vector<std::string> sound_names_in(const std::filesystem::path& folder) {
     std::vector<std::string> names;
-    std::error_code ec;
-    for (std::filesystem::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
-        const std::filesystem::path& path = it->path();
-        std::error_code file_ec;
-        if (path.extension() == ".wav" && it->is_regular_file(file_ec)) names.push_back(path.stem().string());
-    }
-    std::sort(names.begin(), names.end());
+    for (const std::filesystem::path& file :
+         files::list(folder, ".wav").value_or(std::vector<std::filesystem::path>{}))
+        names.push_back(file.stem().string());
+    std::sort(names.begin(), names.end()); // by name: "a" before "a-b" (their files sort the other way)
     return names;
 }
 

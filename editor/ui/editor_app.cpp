@@ -3,6 +3,7 @@
 // in menus.cpp, the file prompts in file_prompts.cpp, the viewport in viewport.cpp.
 #include "ui/editor_app.h"
 
+#include "core/cli.h"
 #include "core/files.h"
 #include "core/log.h"
 #include "core/paths.h"
@@ -25,7 +26,7 @@ namespace {
 EditorApp* g_app = nullptr; // the window-close callback has no user pointer to spare (ImGui's backend)
 
 fs::path recent_files_path() {
-    fs::path dir = default_config_dir();
+    fs::path dir = paths::user_config_dir();
     if (dir.empty()) dir = fs::temp_directory_path() / "killswitch";
     return dir / "editor_recent.json";
 }
@@ -96,13 +97,13 @@ Result<void> EditorApp::init() {
     if (options_.inspector_tab) inspector_.select_tab(*options_.inspector_tab);
     set_view(options_.view.value_or(ViewMode::Perspective)); // perspective: from above one corner
     if (options_.camera) {
-        float v[5];
-        if (std::sscanf(options_.camera->c_str(), "%f,%f,%f,%f,%f", &v[0], &v[1], &v[2], &v[3], &v[4]) != 5)
-            return Error("--camera '" + *options_.camera + "': expected x,y,z,yaw,pitch", {},
-                         "e.g. --camera 0,30,40,0,-40 (degrees; yaw 0 looks along -z)");
-        view_.camera.position = Vec3(v[0], v[1], v[2]);
-        view_.camera.yaw = radians(v[3]);
-        view_.camera.pitch = radians(v[4]);
+        const Result<PoseArgument> pose = parse_pose(*options_.camera);
+        if (!pose)
+            return Error("--camera '" + *options_.camera + "': " + pose.error().message, {},
+                         pose.error().hint);
+        view_.camera.position = pose->position;
+        view_.camera.yaw = radians(pose->yaw_degrees);
+        view_.camera.pitch = radians(pose->pitch_degrees);
     }
     if (options_.quad_view) toggle_quad();
     analysis_.runs = options_.analysis_runs;

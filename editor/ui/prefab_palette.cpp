@@ -78,11 +78,8 @@ void PrefabPalette::render_thumbnails(const PrefabLibrary& library, render::Scen
         thumbnail->name = entry.name;
         level::Level level;
         level.entities = entry.prefab->entities;
-        Vec3 lo(1e30f), hi(-1e30f);
-        for (const level::Entity& e : level.entities) {
-            const geometry::Aabb b = entity_obb(e).aabb();
-            lo = glm::min(lo, b.min), hi = glm::max(hi, b.max);
-        }
+        const geometry::Aabb box = selection_bounds(level.entities);
+        const Vec3 lo = box.min, hi = box.max;
         auto scene = render::LevelScene::build(level, assets, options);
         scene->emit(instances, lights);
         // A prefab without lights of its own is lit by a lamp over the camera's shoulder.

@@ -96,15 +96,12 @@ void EditorApp::prefab_prompt() {
 void EditorApp::draw_open_group_box() {
     const int open = editor_.open_group();
     if (open == 0) return;
-    Vec3 lo(1e30f), hi(-1e30f);
+    std::vector<const level::Entity*> members;
     for (int id : group_entities_deep(editor_.level().editor, open))
-        if (const level::Entity* e = editor_.level().find(id)) {
-            const geometry::Aabb b = entity_obb(*e).aabb();
-            lo = glm::min(lo, b.min), hi = glm::max(hi, b.max);
-        }
-    if (lo.x > hi.x) return;
-    const Vec3 pad(0.25f);
-    lo -= pad, hi += pad;
+        if (const level::Entity* e = editor_.level().find(id)) members.push_back(e);
+    const geometry::Aabb box = selection_bounds(members);
+    if (!box.valid()) return;
+    const Vec3 lo = box.min - Vec3(0.25f), hi = box.max + Vec3(0.25f);
     Mat4 m(1.0f);
     m[3] = Vec4((lo + hi) * 0.5f, 1.0f);
     debug_.box(m, (hi - lo) * 0.5f, Vec4(0.55f, 0.75f, 1.0f, 0.9f));

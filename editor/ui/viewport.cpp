@@ -287,22 +287,14 @@ GizmoFrame EditorApp::gizmo_frame() const {
 
 void EditorApp::focus_selection() {
     const auto selected = editor_.selected_entities();
-    Vec3 lo(1e30f), hi(-1e30f);
-    if (editor_.doc().player_start_selected()) {
-        const geometry::Aabb b = player_obb(editor_.level().player_start).aabb();
-        lo = b.min, hi = b.max;
-    } else if (selected.empty()) {
-        for (const auto& e : editor_.level().entities) {
-            const geometry::Aabb b = entity_obb(e).aabb();
-            lo = glm::min(lo, b.min), hi = glm::max(hi, b.max);
-        }
-        if (editor_.level().entities.empty()) lo = Vec3(-10.0f), hi = Vec3(10.0f);
-    } else {
-        for (const level::Entity* e : selected) {
-            const geometry::Aabb b = entity_obb(*e).aabb();
-            lo = glm::min(lo, b.min), hi = glm::max(hi, b.max);
-        }
-    }
+    geometry::Aabb box{Vec3(-10.0f), Vec3(10.0f)}; // an empty level
+    if (editor_.doc().player_start_selected())
+        box = player_obb(editor_.level().player_start).aabb();
+    else if (!selected.empty())
+        box = selection_bounds(selected);
+    else if (!editor_.level().entities.empty())
+        box = selection_bounds(editor_.level().entities);
+    const Vec3 lo = box.min, hi = box.max;
     if (!quad_.on) {
         view_.focus(lo, hi);
         return;
@@ -315,11 +307,8 @@ void EditorApp::focus_selection() {
 void EditorApp::level_box(Vec3& lo, Vec3& hi) const {
     lo = Vec3(-20.0f), hi = Vec3(20.0f);
     if (editor_.level().entities.empty()) return;
-    lo = Vec3(1e30f), hi = Vec3(-1e30f);
-    for (const auto& e : editor_.level().entities) {
-        const geometry::Aabb b = entity_obb(e).aabb();
-        lo = glm::min(lo, b.min), hi = glm::max(hi, b.max);
-    }
+    const geometry::Aabb box = selection_bounds(editor_.level().entities);
+    lo = box.min, hi = box.max;
 }
 
 void EditorApp::set_view(ViewMode mode) { // in the 4-up view: the active pane's

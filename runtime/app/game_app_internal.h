@@ -80,9 +80,6 @@ struct Loader {
     std::string label() const { return done() ? "Ready" : steps[next].label; }
 };
 
-// Reads `count` comma-separated finite numbers (--warp).
-bool parse_floats(const std::string& text, float* out, int count);
-
 class GameApp {
   public:
     GameApp(shell::AppShell& shell, render::SceneRenderer& renderer, render::AssetLibrary& assets,

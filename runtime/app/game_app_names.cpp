@@ -1,8 +1,6 @@
 // The game app's command-line vocabulary (options, flags; the --screen names are
-// runtime/model/screen_table.h's), and --warp's number list.
+// runtime/model/screen_table.h's).
 #include "game_app_internal.h"
-
-#include <sstream>
 
 namespace ks::runtime {
 
@@ -15,19 +13,6 @@ const std::vector<std::string>& game_app_options() {
 const std::vector<std::string>& game_app_flags() {
     static const std::vector<std::string> flags = {"dojo", "help", "fire"};
     return flags;
-}
-bool parse_floats(const std::string& text, float* out, int count) {
-    std::stringstream ss(text);
-    std::string item;
-    int n = 0;
-    while (std::getline(ss, item, ',')) {
-        if (n >= count) return false;
-        char* end = nullptr;
-        out[n] = std::strtof(item.c_str(), &end);
-        if (end == item.c_str() || *end != '\0' || !is_finite(out[n])) return false;
-        ++n;
-    }
-    return n == count;
 }
 
 } // namespace ks::runtime

@@ -2,6 +2,7 @@
 // renderer and GameApp.
 #include "game_app_internal.h"
 
+#include "core/cli.h"
 #include "core/files.h"
 #include "core/log.h"
 #include "core/paths.h"
@@ -98,13 +99,13 @@ int run_game_app(const CommandLine& cl, const shell::ShellConfig& shell_config) 
         automation.audio_out = paths::resolve_user_path(*out);
     }
     if (auto warp = cl.get("warp")) {
-        std::array<float, 5> v{};
-        if (!parse_floats(*warp, v.data(), 5)) {
-            log::error("--warp '", *warp,
-                       "': expected x,y,z,yaw,pitch with finite numbers, e.g. --warp 0,0,20,0,0");
+        const Result<PoseArgument> pose = parse_pose(*warp);
+        if (!pose) {
+            log::error("--warp '", *warp, "': ", pose.error().message, " (", pose.error().hint, ")");
             return 2;
         }
-        automation.warp = v;
+        automation.warp = {pose->position.x, pose->position.y, pose->position.z, pose->yaw_degrees,
+                           pose->pitch_degrees};
     }
     if (auto key = cl.get("dojo-key")) {
         if (key->size() != 1 || (*key)[0] < '0' || (*key)[0] > '9') {

@@ -8,6 +8,7 @@
 #include "core/files.h"
 #include "core/log.h"
 #include "core/math.h"
+#include "core/paths.h"
 #include "core/result.h"
 #include "jsonio/document.h"
 #include "jsonio/number_text.h"
@@ -58,14 +59,11 @@ struct Options {
     static constexpr float kMinDeadZone = 0.0f, kMaxDeadZone = 0.5f;
 };
 
-// Where the options live: $XDG_CONFIG_HOME/killswitch, else $HOME/.config/killswitch, else ./.killswitch.
+// Where the options live: paths::user_config_dir() ($XDG_CONFIG_HOME/killswitch, else ~/.config/killswitch),
+// else ./.killswitch.
 inline std::filesystem::path options_path() {
-    namespace fs = std::filesystem;
-    if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg)
-        return fs::path(xdg) / "killswitch" / "options.json";
-    if (const char* home = std::getenv("HOME"); home && *home)
-        return fs::path(home) / ".config" / "killswitch" / "options.json";
-    return fs::path(".killswitch") / "options.json";
+    const std::filesystem::path dir = paths::user_config_dir();
+    return (dir.empty() ? std::filesystem::path(".killswitch") : dir) / "options.json";
 }
 
 inline std::string options_to_json(const Options& o) {

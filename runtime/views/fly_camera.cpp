@@ -4,7 +4,6 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
-#include <cstdio>
 
 namespace ks::runtime {
 
@@ -29,19 +28,6 @@ void FlyCamera::update(GLFWwindow* window, double dt, geometry::Camera& camera) 
     dragging_ = drag;
     last_x_ = x;
     last_y_ = y;
-}
-
-bool parse_camera(const std::string& text, geometry::Camera& camera) {
-    float v[5];
-    char tail = 0;
-    if (std::sscanf(text.c_str(), "%f,%f,%f,%f,%f%c", &v[0], &v[1], &v[2], &v[3], &v[4], &tail) != 5)
-        return false;
-    for (float f : v)
-        if (!is_finite(f)) return false;
-    camera.position = Vec3(v[0], v[1], v[2]);
-    camera.yaw = radians(v[3]);
-    camera.pitch = radians(std::clamp(v[4], -89.0f, 89.0f));
-    return true;
 }
 
 } // namespace ks::runtime

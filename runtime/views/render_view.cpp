@@ -1,5 +1,6 @@
 #include "views/render_view.h"
 
+#include "core/cli.h"
 #include "core/log.h"
 #include "core/paths.h"
 #include "level/level_io.h"
@@ -78,10 +79,12 @@ Result<ViewOptions> parse_view_options(const CommandLine& cl) {
         options.level = std::move(*loaded);
     }
     if (auto c = cl.get("camera")) {
+        const Result<PoseArgument> pose = parse_pose(*c);
+        if (!pose) return Error("--camera '" + *c + "': " + pose.error().message, {}, pose.error().hint);
         geometry::Camera camera;
-        if (!parse_camera(*c, camera))
-            return Error("--camera '" + *c +
-                         "': expected x,y,z,yaw,pitch with finite numbers, e.g. --camera 0,3,25,0,0");
+        camera.position = pose->position;
+        camera.yaw = radians(pose->yaw_degrees);
+        camera.pitch = radians(std::clamp(pose->pitch_degrees, -89.0f, 89.0f));
         options.camera = camera;
     }
     options.hud = !options.model && !cl.has("no-hud");

@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 #include <filesystem>
 #include <unistd.h>
+#include <vector>
 
 using namespace ks;
 namespace fs = std::filesystem;
@@ -40,7 +41,8 @@ TEST_CASE("atomic write keeps the previous file intact when a save fails at any 
     fs::path target = dir / "level.json";
     REQUIRE(files::write_atomic(target, "precious original").ok());
 
-    for (files::Fault fault : {files::Fault::OpenTemp, files::Fault::ShortWrite, files::Fault::BeforeRename}) {
+    for (files::Fault fault :
+         {files::Fault::OpenTemp, files::Fault::ShortWrite, files::Fault::BeforeRename}) {
         CAPTURE(static_cast<int>(fault));
         FaultGuard guard(fault);
         auto result = files::write_atomic(target, "replacement that must not appear half-written");
@@ -82,4 +84,52 @@ TEST_CASE("atomic write into a read-only folder fails cleanly") {
     fs::permissions(dir.path(), fs::perms::owner_all);
     CHECK_FALSE(result.ok());
     CHECK(test::read_file(target) == "original");
+}
+
+TEST_CASE("files::list: the regular files with a name ending, sorted; links followed; never throws") {
+    test::ScratchDir dir;
+    for (const char* name : {"b.json", "a.json", ".json", "notes.txt", "a.json.txt", "wall_basecolor.png"})
+        REQUIRE(files::write_atomic(dir / name, "{}").ok());
+    fs::create_directory(dir / "folder.json");             // a folder, not a file
+    fs::create_symlink(dir / "a.json", dir / "link.json"); // a link to a file counts
+    fs::create_symlink(dir / "gone", dir / "dangling.json");
+
+    auto json = files::list(dir.path(), ".json");
+    REQUIRE(json.ok());
+    CHECK(*json == std::vector<fs::path>{dir / "a.json", dir / "b.json", dir / "link.json"});
+    auto textures = files::list(dir.path(), "_basecolor.png");
+    REQUIRE(textures.ok());
+    CHECK(*textures == std::vector<fs::path>{dir / "wall_basecolor.png"});
+    auto none = files::list(dir.path(), ".wav");
+    REQUIRE(none.ok());
+    CHECK(none->empty());
+
+    for (const fs::path& not_a_folder : {dir / "missing", dir / "a.json", fs::path()}) {
+        CAPTURE(not_a_folder);
+        Result<std::vector<fs::path>> listed = Error("not called");
+        CHECK_NOTHROW(listed = files::list(not_a_folder, ".json"));
+        REQUIRE_FALSE(listed.ok());
+        CHECK(listed.error().message.starts_with("cannot list the folder: "));
+        CHECK(listed.error().where.file == not_a_folder.string());
+        CHECK(listed.value_or(std::vector<fs::path>{}).empty());
+    }
+}
+
+TEST_CASE("files::list skips entries it cannot examine instead of throwing") {
+    if (::geteuid() == 0) {
+        MESSAGE("running as root: folder permissions do not apply");
+        return;
+    }
+    test::ScratchDir dir;
+    REQUIRE(fs::create_directory(dir / "sealed"));
+    REQUIRE(files::write_atomic(dir / "sealed" / "a.wav", "RIFF").ok());
+    fs::create_symlink("a.wav", dir / "sealed" / "link.wav");
+    // Readable but not searchable: the names and their types can be read, but what a link points to cannot
+    // be examined (std::filesystem's throwing overloads throw there).
+    fs::permissions(dir / "sealed", fs::perms::owner_read);
+    Result<std::vector<fs::path>> listed = Error("not called");
+    CHECK_NOTHROW(listed = files::list(dir / "sealed", ".wav"));
+    fs::permissions(dir / "sealed", fs::perms::owner_all);
+    REQUIRE(listed.ok());
+    CHECK(*listed == std::vector<fs::path>{dir / "sealed" / "a.wav"});
 }

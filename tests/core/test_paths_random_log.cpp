@@ -3,8 +3,11 @@
 #include "core/paths.h"
 #include "core/random.h"
 
+#include <cstdlib>
 #include <doctest/doctest.h>
 #include <filesystem>
+#include <optional>
+#include <string>
 
 using namespace ks;
 namespace fs = std::filesystem;
@@ -16,6 +19,46 @@ TEST_CASE("data root holds assets/ and levels/") {
     CHECK(paths::level("main.json") == root / "levels" / "main.json");
     CHECK(paths::asset("fonts") == root / "assets" / "fonts");
     CHECK(fs::exists(paths::executable_dir()));
+}
+
+namespace {
+// Sets an environment variable (or unsets it: nullptr) for one scope, then puts the old value back.
+class ScopedEnv {
+  public:
+    ScopedEnv(const char* name, const char* value) : name_(name) {
+        if (const char* old = std::getenv(name)) old_ = old;
+        value ? ::setenv(name, value, 1) : ::unsetenv(name);
+    }
+    ~ScopedEnv() { old_ ? ::setenv(name_, old_->c_str(), 1) : ::unsetenv(name_); }
+    ScopedEnv(const ScopedEnv&) = delete;
+    ScopedEnv& operator=(const ScopedEnv&) = delete;
+
+  private:
+    const char* name_;
+    std::optional<std::string> old_;
+};
+} // namespace
+
+TEST_CASE("the player's config and data folders follow the XDG rule: absolute variable, else HOME") {
+    const ScopedEnv home("HOME", "/home/ks-test");
+    {
+        const ScopedEnv config("XDG_CONFIG_HOME", "/tmp/ks-xdg-config");
+        const ScopedEnv data("XDG_DATA_HOME", "/tmp/ks-xdg-data");
+        CHECK(paths::user_config_dir() == fs::path("/tmp/ks-xdg-config/killswitch"));
+        CHECK(paths::user_data_dir() == fs::path("/tmp/ks-xdg-data/killswitch"));
+    }
+    for (const char* ignored : {"relative/config", "", static_cast<const char*>(nullptr)}) {
+        CAPTURE(ignored ? ignored : "(unset)");
+        const ScopedEnv config("XDG_CONFIG_HOME", ignored);
+        const ScopedEnv data("XDG_DATA_HOME", ignored);
+        CHECK(paths::user_config_dir() == fs::path("/home/ks-test/.config/killswitch"));
+        CHECK(paths::user_data_dir() == fs::path("/home/ks-test/.local/share/killswitch"));
+    }
+    const ScopedEnv no_home("HOME", nullptr);
+    const ScopedEnv relative("XDG_CONFIG_HOME", "relative/config");
+    CHECK(paths::user_config_dir().empty());
+    const ScopedEnv absolute("XDG_CONFIG_HOME", "/tmp/ks-xdg-config");
+    CHECK(paths::user_config_dir() == fs::path("/tmp/ks-xdg-config/killswitch"));
 }
 
 TEST_CASE("Rng is deterministic and in range") {

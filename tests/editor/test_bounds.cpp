@@ -35,3 +35,31 @@ TEST_CASE("entity boxes follow the level conventions (bottom-centre positions, f
     CHECK(*surface_height_at(stair, -4, -66.5f) == doctest::Approx(0.6));
     CHECK(*surface_height_at(stair, -4, -77.5f) == doctest::Approx(6.0));
 }
+
+TEST_CASE("selection bounds: the box around every entity's box, empty (not valid) for none") {
+    level::Entity floor;
+    floor.props = level::FloorProps{};
+    floor.position = {0, 6, 0};
+    level::Entity wall;
+    wall.props = level::WallProps{};
+    wall.position = {0, 0, -30};
+    wall.rotation = {90, 0, 0};
+    const geometry::Aabb f = entity_obb(floor).aabb(), w = entity_obb(wall).aabb();
+
+    const geometry::Aabb both = selection_bounds(std::vector<level::Entity>{floor, wall});
+    CHECK(both.min.x == doctest::Approx(std::min(f.min.x, w.min.x)));
+    CHECK(both.min.y == doctest::Approx(0));  // the wall's foot
+    CHECK(both.max.y == doctest::Approx(16)); // the wall's top
+    CHECK(both.min.z == doctest::Approx(-35));
+    CHECK(both.max.z == doctest::Approx(f.max.z));
+    const geometry::Aabb by_pointer = selection_bounds(std::vector<const level::Entity*>{&floor, &wall});
+    CHECK(by_pointer.min == both.min);
+    CHECK(by_pointer.max == both.max);
+    const geometry::Aabb one = selection_bounds(std::vector<const level::Entity*>{&floor});
+    CHECK(one.min == f.min);
+    CHECK(one.max == f.max);
+
+    CHECK_FALSE(selection_bounds(std::vector<level::Entity>{}).valid());
+    CHECK_FALSE(selection_bounds(std::vector<const level::Entity*>{}).valid());
+    CHECK(is_finite(selection_bounds(std::vector<level::Entity>{}).center()));
+}

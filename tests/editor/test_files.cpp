@@ -170,14 +170,3 @@ TEST_CASE("recent files: most recent first, capped, persisted; a malformed list 
     CHECK(r.error().where.file == config.string());
     CHECK(broken.entries().empty());
 }
-
-TEST_CASE("recent files: the default config folder follows XDG_CONFIG_HOME, else HOME") {
-    const char* old_xdg = std::getenv("XDG_CONFIG_HOME");
-    const std::string saved_xdg = old_xdg ? old_xdg : "";
-    setenv("XDG_CONFIG_HOME", "/tmp/xdg-test", 1);
-    CHECK(default_config_dir() == fs::path("/tmp/xdg-test/killswitch"));
-    unsetenv("XDG_CONFIG_HOME");
-    if (const char* home = std::getenv("HOME"))
-        CHECK(default_config_dir() == fs::path(home) / ".config" / "killswitch");
-    if (old_xdg) setenv("XDG_CONFIG_HOME", saved_xdg.c_str(), 1);
-}

@@ -1,7 +1,8 @@
 # ctest -P script: the module graph is enforced by the compiler, not by convention. A source that sees only
 # physics compiles when it includes physics' declared dependency (core) and fails with "No such file" when it
 # includes a module physics does not declare (level). The runtime model likewise: it compiles with the game's
-# headers and does not find the shell's.
+# headers and does not find the shell's. And a source that sees game compiles with a public header of level
+# and fails with "No such file" on one of level's internal headers.
 foreach(var BUILD_DIR)
     if(NOT DEFINED ${var})
         message(FATAL_ERROR "pass -D${var}=...")
@@ -27,4 +28,6 @@ endfunction()
 expect_boundary(ks_boundary_probe_declared ks_boundary_probe_undeclared "level/level.h")
 expect_boundary(ks_boundary_probe_runtime_model_declared ks_boundary_probe_runtime_model_undeclared
                 "shell/app_shell.h")
-message(STATUS "module boundaries enforced: declared includes compile, undeclared includes are not found")
+expect_boundary(ks_boundary_probe_public ks_boundary_probe_internal "level/level_migrate.h")
+message(STATUS "module boundaries enforced: declared includes compile, undeclared includes are not found, "
+               "public headers compile, internal headers are not found")
