@@ -47,6 +47,7 @@ Result<std::unique_ptr<EditorApp>> EditorApp::create(shell::AppShell& shell, con
 
 void EditorApp::log_line(std::string line, bool error) {
     if (error) ++error_lines_, last_error_ = line;
+    ++lines_logged_;
     log_.emplace_back(std::move(line), error);
     while (log_.size() > 500) log_.pop_front();
     scroll_log_ = true;
@@ -172,7 +173,44 @@ int EditorApp::run() {
     hooks.render = [this](const shell::FrameInfo& info) { render_views(info); };
     hooks.imgui = [this](const shell::FrameInfo& info) { build_ui(info); };
     hooks.wants_close = [this]() { return quit_; };
+    hooks.animating = [this]() { return animating(); };
+    hooks.idle_poll = [this]() { return poll_background(); };
     return shell_.run(hooks);
+}
+
+// What changes on screen with no input: a playing clip, a background job whose result is awaited.
+bool EditorApp::animating() const {
+    const bool clip_playing = dojo_->playing() && (dojo_tab_ || (clip_preview_ && preview_robot() != 0));
+    return clip_playing || analysis_.running() || editor_.reachability_pending() || nav_preview_.building();
+}
+
+// Every frame, and while the window waits for input: the play-test's output, autosave, prefab files changed
+// on disk. True when any of it changed what the window shows.
+bool EditorApp::poll_background() {
+    const std::uint64_t logged = lines_logged_, prefabs = editor_.prefabs().revision();
+    const std::uint64_t revision = editor_.revision();
+    const bool playing = play_.running();
+    std::vector<std::string> lines;
+    play_.poll(lines);
+    for (auto& l : lines) log_line("[game] " + l, l.find("error") != std::string::npos);
+    if (!play_.running() && play_.last_exit_code() && !play_file_.empty()) {
+        const int code = *play_.last_exit_code();
+        log_line(code == 0 ? "play-test ended"
+                           : "play-test FAILED with exit code " + std::to_string(code) +
+                                 " (its messages are above)",
+                 code != 0);
+        play_exit_code_ = code;
+        play_file_.clear();
+    }
+    if (!shell_.screenshot_mode()) {
+        if (auto r = autosaver_.update(editor_); !r)
+            log_line("autosave: " + r.error().str(), true);
+        else if (*r)
+            log_line("autosaved to " + (*r)->string());
+    }
+    if (!dojo_tab_) rescan_prefabs();
+    return lines_logged_ != logged || editor_.prefabs().revision() != prefabs ||
+           editor_.revision() != revision || play_.running() != playing;
 }
 
 void EditorApp::report(const Result<void>& result, const char* what) {
@@ -204,24 +242,7 @@ void EditorApp::render_views(const shell::FrameInfo& info) {
 }
 
 void EditorApp::build_ui(const shell::FrameInfo& info) {
-    std::vector<std::string> lines;
-    play_.poll(lines);
-    for (auto& l : lines) log_line("[game] " + l, l.find("error") != std::string::npos);
-    if (!play_.running() && play_.last_exit_code() && !play_file_.empty()) {
-        const int code = *play_.last_exit_code();
-        log_line(code == 0 ? "play-test ended"
-                           : "play-test FAILED with exit code " + std::to_string(code) +
-                                 " (its messages are above)",
-                 code != 0);
-        play_exit_code_ = code;
-        play_file_.clear();
-    }
-    if (!shell_.screenshot_mode()) {
-        if (auto r = autosaver_.update(editor_); !r)
-            log_line("autosave: " + r.error().str(), true);
-        else if (*r)
-            log_line("autosaved to " + (*r)->string());
-    }
+    poll_background();
     wheel_ = ImGui::GetIO().MouseWheel;
     const Layout layout = compute_layout(static_cast<float>(info.width), static_cast<float>(info.height),
                                          ImGui::GetFrameHeight());
@@ -229,7 +250,6 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
     spots_.enabled = options_.status_file.has_value();
     spots_.clear();
     refresh_logic_problems();
-    if (!dojo_tab_) rescan_prefabs();
     menu_bar();
     if (dojo_tab_) {
         dojo_->panel(layout.bottom.x, layout.centre.y, layout.bottom.w, layout.centre.h);

@@ -166,6 +166,8 @@ class EditorApp {
     // frame
     void render_views(const shell::FrameInfo& info);
     void build_ui(const shell::FrameInfo& info);
+    bool animating() const; // the shell draws frame after frame while true
+    bool poll_background(); // the shell's idle poll; true: something to show
     void handle_shortcuts();
     void update_title();
     void write_status(); // status_report.cpp
@@ -378,6 +380,7 @@ class EditorApp {
     std::uint64_t arrows_key_ = ~0ull;
     std::vector<int> arrows_selection_;
     std::deque<std::pair<std::string, bool>> log_;
+    std::uint64_t lines_logged_ = 0; // ever (log_ keeps the last 500)
     bool scroll_log_ = false;
     bool dojo_tab_ = false;
     std::unique_ptr<DojoPanel> dojo_;
