@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Killswitch: one entry point for players, designers and CI.
-#   ./run.sh play     build (Release) and start the game
+#   ./run.sh play     build (Release) the game only and start it
 #   ./run.sh test     build and run every test (under xvfb-run when there is no display), first in the
 #                     Release build, then again in an ASan+UBSan build (build-asan/, -O1; what CI runs)
 #                     (./run.sh test --release: Release only; ./run.sh test --sanitize: ASan+UBSan only)
-#   ./run.sh editor   build and start the level editor
+#   ./run.sh editor   build the level editor (and the game, which its play-test starts) and start it
 #   ./run.sh bench    build and run the benchmarks (tables on stdout, plots in docs/bench/)
 #                     (./run.sh bench fuzz [SECONDS]: each libFuzzer target for SECONDS, default 60)
 #   ./run.sh package  build (Release) and make the Debian package build/package/killswitch_<version>_amd64.deb,
@@ -18,7 +18,7 @@ cd "$(dirname "$(readlink -f "$0")")"
 PACKAGES=(
     build-essential cmake pkg-config git
     libglfw3-dev libepoxy-dev libgl-dev libimgui-dev libglm-dev libassimp-dev nlohmann-json3-dev
-    libstb-dev doctest-dev zlib1g-dev librecast-dev libopenal-dev
+    libstb-dev doctest-dev zlib1g-dev librecast-dev libopenal-dev libqhull-dev libmeshoptimizer-dev
     xvfb xauth libgl1-mesa-dri mesa-utils xdotool
     gnuplot-nox
     desktop-file-utils appstream groff-base
@@ -82,13 +82,14 @@ cmd="${1:-}"
 case "$cmd" in
     play)
         install_missing_packages
-        build release
+        # Only what it runs: not the tests, benchmarks or the editor (docs/building.md, "Build times").
+        build release killswitch
         # Without a display, killswitch explains how to use xvfb-run and exits non-zero.
         exec ./build/bin/killswitch "$@"
         ;;
     editor)
         install_missing_packages
-        build release
+        build release killswitch-editor killswitch
         exec ./build/bin/killswitch-editor "$@"
         ;;
     test)

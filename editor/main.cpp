@@ -166,7 +166,11 @@ int main(int argc, char** argv) {
     } else {
         options.analysis_runs = *runs;
     }
-    if (auto status = cl->get("status-file")) options.status_file = paths::resolve_user_path(*status);
+    if (auto status = cl->get("status-file")) {
+        options.status_file = paths::resolve_user_path(*status);
+        config->heartbeat_seconds =
+            shell::kStatusHeartbeatSeconds; // tests count frames to know input was seen
+    }
     options.executable_dir = std::filesystem::absolute(argv[0]).parent_path();
     options.audition = editor::ui::make_sound_audition();
     auto shell = shell::AppShell::create(*config);

@@ -6,6 +6,7 @@
 #include "core/paths.h"
 #include "render/imgui_renderer.h"
 #include "render/window_target.h"
+#include "shell/frame_pacing.h"
 #include "shell/gl_window.h"
 
 #define GLFW_INCLUDE_NONE
@@ -14,7 +15,9 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
+#include <thread>
 #include <vector>
 
 namespace ks::shell {
@@ -113,15 +116,81 @@ std::string AppShell::gl_renderer() const {
     return render::gl_renderer_name();
 }
 
+void AppShell::wake() {
+    glfwPostEmptyEvent();
+}
+
+bool AppShell::input_held() const {
+    for (int b = GLFW_MOUSE_BUTTON_1; b <= GLFW_MOUSE_BUTTON_LAST; ++b)
+        if (glfwGetMouseButton(window_, b) == GLFW_PRESS) return true;
+    for (int k = GLFW_KEY_SPACE; k <= GLFW_KEY_LAST; ++k)
+        if (glfwGetKey(window_, k) == GLFW_PRESS) return true;
+    return false;
+}
+
+// The display's refresh rate with vsync (swaps wait for it anyway where the driver honours the interval;
+// under Xvfb or with llvmpipe they do not), 60 without.
+double AppShell::max_fps() const {
+    if (!config_.vsync) return 60.0;
+    const GLFWvidmode* mode = glfwGetVideoMode(glfwGetPrimaryMonitor());
+    return mode && mode->refreshRate >= 24 && mode->refreshRate <= 1000 ? mode->refreshRate : 60.0;
+}
+
+bool AppShell::wait_for_frame(const ShellHooks& hooks, FramePacer& pacer) {
+    bool waited = false;
+    for (;;) {
+        double now = glfwGetTime();
+        const bool animating = !hooks.animating || hooks.animating() || input_held();
+        if (pacer.frame_due(animating, now)) {
+            if (animating)
+                if (double cap = pacer.cap_wait(now); cap > 0.0)
+                    std::this_thread::sleep_for(std::chrono::duration<double>(cap));
+            return waited;
+        }
+        if (pacer.take_idle_poll(now)) {
+            // A pad sends no events: it is polled here (a change is input). ImGui's text cursor blinks.
+            const GamepadState before = gamepad_;
+            if (!gamepad_injected_) poll_gamepad(gamepad_);
+            if (!(gamepad_ == before)) pacer.on_event();
+            if ((hooks.idle_poll && hooks.idle_poll()) || ImGui::GetIO().WantTextInput) pacer.request_frame();
+            continue;
+        }
+        double timeout = pacer.wait_seconds(now);
+        if (gamepad_.connected && !gamepad_injected_) timeout = std::min(timeout, 1.0 / 30.0);
+        if (!(timeout > 0.0)) continue;
+        glfwWaitEventsTimeout(timeout);
+        waited = true;
+        const double started = now;
+        now = glfwGetTime();
+        // Back before the timeout: an event came (or a wake()). Either way the next frame shows it.
+        if (now < started + timeout - 1e-3 || glfwWindowShouldClose(window_)) pacer.on_event();
+        if (gamepad_.connected && !gamepad_injected_) {
+            const GamepadState before = gamepad_;
+            poll_gamepad(gamepad_);
+            if (!(gamepad_ == before)) pacer.on_event();
+        }
+    }
+}
+
 int AppShell::run(const ShellHooks& hooks) {
     FixedStepClock clock(config_.fixed_step);
+    PacingSettings pacing;
+    pacing.max_fps = max_fps();
+    pacing.heartbeat_seconds = config_.heartbeat_seconds;
+    FramePacer pacer(pacing);
     double last = glfwGetTime();
     FrameInfo info;
     int exit_code = 0;
     while (!glfwWindowShouldClose(window_)) {
+        // Screenshot runs draw their frames back to back, as fast as they go.
+        const bool waited = !screenshot_mode() && wait_for_frame(hooks, pacer);
+        if (glfwWindowShouldClose(window_)) break;
         glfwPollEvents();
         if (!gamepad_injected_) poll_gamepad(gamepad_);
         double now = glfwGetTime();
+        pacer.drew(now);
+        // After a wait the time spent idle is no frame time: a clip or the world resumes where it stood.
+        if (waited) last = std::max(last, now - pacer.frame_interval());
         // Screenshot runs use a fixed 1/60 s per frame so the picture is the same on every machine.
         info.frame_dt = screenshot_mode() ? 1.0 / 60.0 : now - last;
         last = now;

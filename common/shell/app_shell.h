@@ -2,6 +2,8 @@
 // The window shell shared by the runtime and the editor: a GLFW window with an OpenGL 3.3+ core context,
 // Dear ImGui's context, fonts and GLFW platform backend, a fixed-step loop, and the --screenshot/--frames
 // mode that renders N frames, writes a PNG and exits (used by tests and for looking at what we build).
+// The loop draws only when something changes (frame_pacing.h): input, or the app saying it animates; an idle
+// window waits for events and costs next to nothing.
 // The split with common/render/: the shell owns the window, events, time and ImGui's platform side and
 // issues no OpenGL call; every GL call (clearing, ImGui's OpenGL3 renderer backend, read-backs) goes
 // through render/ (window_target.h, imgui_renderer.h).
@@ -22,6 +24,11 @@ class CommandLine;
 
 namespace ks::shell {
 
+class FramePacer;
+
+// The heartbeat of the --status-file modes (ShellConfig::heartbeat_seconds).
+inline constexpr double kStatusHeartbeatSeconds = 0.1;
+
 struct ShellConfig {
     std::string title = "Killswitch";
     int width = 1280;
@@ -31,6 +38,9 @@ struct ShellConfig {
     double fixed_step = 1.0 / 120.0;
     std::string screenshot_path; // when set: render `frames` frames, save, exit
     int frames = 3;
+    // > 0: a frame at least this often even when idle (--status-file: tests count frames to know that the
+    // input they sent has been seen).
+    double heartbeat_seconds = 0.0;
 };
 
 // Reads --width, --height, --screenshot, --frames, --no-vsync into a config.
@@ -58,6 +68,13 @@ struct ShellHooks {
     std::function<void(const FrameInfo&)> render;  // draw the scene (GL)
     std::function<void(const FrameInfo&)> imgui;   // build ImGui windows for this frame
     std::function<bool()> wants_close;             // return true to end the loop
+    // True while the app needs frame after frame (play, an animation, a running job whose progress shows).
+    // Unset: always (a view that never rests). Otherwise the loop waits for input between frames; a held
+    // key or mouse button counts as animating (key repeat, drags, flying).
+    std::function<bool()> animating;
+    // While the loop waits: the app's cheap checks (files changed on disk, a child process's output,
+    // timers), about twice a second; true when the window should be drawn again.
+    std::function<bool()> idle_poll;
 };
 
 class AppShell {
@@ -67,6 +84,8 @@ class AppShell {
 
     // Runs until the window closes or hooks.wants_close() says so; returns the process exit code.
     int run(const ShellHooks& hooks);
+    // From any thread (a background job that finished): wakes the waiting loop for one frame.
+    static void wake();
 
     GLFWwindow* window() const { return window_; }
     const Fonts& fonts() const { return fonts_; }
@@ -85,6 +104,10 @@ class AppShell {
     AppShell() = default;
     ~AppShell();
     Result<void> init(const ShellConfig& config);
+    // Waits until the next frame is due (frame_pacing.h); true when it waited for events.
+    bool wait_for_frame(const ShellHooks& hooks, FramePacer& pacer);
+    bool input_held() const;
+    double max_fps() const;
 
     ShellConfig config_;
     GLFWwindow* window_ = nullptr;

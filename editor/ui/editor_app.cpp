@@ -167,11 +167,48 @@ int EditorApp::run() {
     hooks.render = [this](const shell::FrameInfo& info) { render_views(info); };
     hooks.imgui = [this](const shell::FrameInfo& info) { build_ui(info); };
     hooks.wants_close = [this]() { return quit_; };
+    hooks.animating = [this]() { return animating(); };
+    hooks.idle_poll = [this]() { return poll_background(); };
     return shell_.run(hooks);
 }
 
 PanelContext EditorApp::context() {
     return PanelContext{editor_, log_, spots_, assets_, options_.audition, *this};
+}
+
+// What changes on screen with no input: a playing clip, a background job whose result is awaited.
+bool EditorApp::animating() const {
+    const bool clip_playing = dojo_->playing() && (dojo_tab_ || (clip_preview_ && preview_robot() != 0));
+    return clip_playing || analysis_.running() || editor_.reachability_pending() || nav_preview_.building();
+}
+
+// Every frame, and while the window waits for input: the play-test's output, autosave, prefab files changed
+// on disk. True when any of it changed what the window shows.
+bool EditorApp::poll_background() {
+    const std::uint64_t logged = log_.revision(), prefabs = editor_.prefabs().revision();
+    const std::uint64_t revision = editor_.revision();
+    const bool playing = play_.running();
+    std::vector<std::string> lines;
+    play_.poll(lines);
+    for (auto& l : lines) log_line("[game] " + l, l.find("error") != std::string::npos);
+    if (!play_.running() && play_.last_exit_code() && !play_file_.empty()) {
+        const int code = *play_.last_exit_code();
+        log_line(code == 0 ? "play-test ended"
+                           : "play-test FAILED with exit code " + std::to_string(code) +
+                                 " (its messages are above)",
+                 code != 0);
+        play_exit_code_ = code;
+        play_file_.clear();
+    }
+    if (!shell_.screenshot_mode()) {
+        if (auto r = autosaver_.update(editor_); !r)
+            log_line("autosave: " + r.error().str(), true);
+        else if (*r)
+            log_line("autosaved to " + (*r)->string());
+    }
+    if (!dojo_tab_) prefabs_.rescan(editor_, log_, glfwGetWindowAttrib(shell_.window(), GLFW_FOCUSED) != 0);
+    return log_.revision() != logged || editor_.prefabs().revision() != prefabs ||
+           editor_.revision() != revision || play_.running() != playing;
 }
 
 void EditorApp::update_title() {
@@ -199,24 +236,7 @@ void EditorApp::render_views(const shell::FrameInfo& info) {
 }
 
 void EditorApp::build_ui(const shell::FrameInfo& info) {
-    std::vector<std::string> lines;
-    play_.poll(lines);
-    for (auto& l : lines) log_line("[game] " + l, l.find("error") != std::string::npos);
-    if (!play_.running() && play_.last_exit_code() && !play_file_.empty()) {
-        const int code = *play_.last_exit_code();
-        log_line(code == 0 ? "play-test ended"
-                           : "play-test FAILED with exit code " + std::to_string(code) +
-                                 " (its messages are above)",
-                 code != 0);
-        play_exit_code_ = code;
-        play_file_.clear();
-    }
-    if (!shell_.screenshot_mode()) {
-        if (auto r = autosaver_.update(editor_); !r)
-            log_line("autosave: " + r.error().str(), true);
-        else if (*r)
-            log_line("autosaved to " + (*r)->string());
-    }
+    poll_background();
     wheel_ = ImGui::GetIO().MouseWheel;
     const Layout layout = compute_layout(static_cast<float>(info.width), static_cast<float>(info.height),
                                          ImGui::GetFrameHeight());
@@ -224,7 +244,6 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
     spots_.enabled = options_.status_file.has_value();
     spots_.clear();
     refresh_logic_problems();
-    if (!dojo_tab_) prefabs_.rescan(editor_, log_, glfwGetWindowAttrib(shell_.window(), GLFW_FOCUSED) != 0);
     const PanelContext ctx = context();
     menu_bar();
     if (dojo_tab_) {

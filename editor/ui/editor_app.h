@@ -134,6 +134,8 @@ class EditorApp final : private WindowServices {
     // frame
     void render_views(const shell::FrameInfo& info);
     void build_ui(const shell::FrameInfo& info);
+    bool animating() const; // the shell draws frame after frame while true
+    bool poll_background(); // the shell's idle poll; true: something to show
     void handle_shortcuts();
     void update_title();
     void write_status(); // status_report.cpp

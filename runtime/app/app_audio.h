@@ -29,6 +29,7 @@ class AppAudio {
     // End of a frame: `engine_updated` when a Soundscape already ran the engine's update this frame. When
     // recording, mixes `seconds` of sound into the file.
     void end_frame(double seconds, bool engine_updated);
+    bool recording() const { return recording_ != nullptr; }
     // Closes the recording (the WAV's header sizes); nothing to do when playing to the sound card.
     Result<void> finish();
 

@@ -210,12 +210,20 @@ void GameApp::advance(const game::Input& in, float dt) {
     if (session_->sounds) session_->sounds->after_step(g);
 }
 
+// What moves with no input: the world (play, the death camera), the loader's steps, a script's frames, a
+// recording's time. The menus and the pause screen wait for input.
+bool GameApp::animating() const {
+    return (screen_ == Screen::Loading && !freeze_loader_) || screen_ == Screen::Playing ||
+           (screen_ == Screen::Dead && interactive()) || scripted_ || (audio_ && audio_->recording());
+}
+
 int GameApp::run() {
     shell::ShellHooks hooks;
     hooks.fixed_update = [this](double dt) { fixed_update(dt); };
     hooks.render = [this](const shell::FrameInfo& info) { render(info); };
     hooks.imgui = [this](const shell::FrameInfo& info) { imgui(info); };
     hooks.wants_close = [this]() { return quit_; };
+    hooks.animating = [this]() { return animating(); };
     int code = shell_.run(hooks);
     if (code == 0) code = exit_code_;
     events_.uninstall();

@@ -118,6 +118,7 @@ class GameApp {
     Result<void> finish_loading_now();
     void step_loader();
     void fixed_update(double dt);
+    bool animating() const; // the shell draws frame after frame while true
     // One game step with its view and sounds (every caller: play, warp, pause, the automation).
     void advance(const game::Input& in, float dt);
     void update_audio(const shell::FrameInfo& info);

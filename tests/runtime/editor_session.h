@@ -24,6 +24,7 @@ class EditorProcess {
     EditorProcess(const EditorProcess&) = delete;
     EditorProcess& operator=(const EditorProcess&) = delete;
     bool alive() const;
+    pid_t pid() const { return pid_; }
     // Waits up to `seconds` for the editor to exit by itself; its exit code, or -1 if it did not.
     int wait_exit(double seconds);
 
