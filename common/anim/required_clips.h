@@ -1,7 +1,7 @@
 #pragma once
 // The clips the robot's clip file must have, in one place: the game looks up six of them by name
-// (game_build.cpp, Game::find_clips) and the Dojo's key 0 plays `reset`. The editor refuses to delete or
-// rename them, giving the reason, and check_required_clips lists the missing ones.
+// (robot_build.cpp, RobotSystem::find_clips) and the Dojo's key 0 plays `reset`. The editor refuses to delete
+// or rename them, giving the reason, and check_required_clips lists the missing ones.
 //
 // A separate check, not part of anim::validate: validate() judges any animation file, and these names are
 // the robot's (what assets/animations/robot.json must hold), so the editor's save and live check and the

@@ -1,3 +1,5 @@
+// The level logic's bookkeeping: the objectives' progress, the link queue (zero-delay links ready in this
+// step, delayed ones in a heap on their due step), the per-step budget and the problems said once.
 #include "game/level_logic.h"
 
 #include "core/log.h"
@@ -15,6 +17,10 @@ bool later(const LevelLogic::Pending& a, const LevelLogic::Pending& b) {
 
 } // namespace
 
+LevelLogic::LevelLogic(GameCore& core, PlayerSystem& player, RobotSystem& robots,
+                       Interactables& interactables, Spawners& spawners)
+    : core_(core), player_(player), robots_(robots), interactables_(interactables), spawners_(spawners) {}
+
 int LevelLogic::current_objective() const {
     for (std::size_t i = 0; i < objectives_.size(); ++i)
         if (!objectives_[i].completed) return static_cast<int>(i);
@@ -25,7 +31,7 @@ bool LevelLogic::all_objectives_complete() const {
     return !objectives_.empty() && current_objective() < 0;
 }
 
-void LevelLogic::fire(LinkRange range, level::LinkEvent event, std::int64_t step) {
+void LevelLogic::fire(LinkRange range, level::LinkEvent event) {
     for (std::uint32_t k = range.first; k < range.first + range.count; ++k) {
         LogicLink& link = links_[k];
         if (link.event != event || (link.once && link.fired)) continue;
@@ -42,15 +48,15 @@ void LevelLogic::fire(LinkRange range, level::LinkEvent event, std::int64_t step
                 report("more than " + std::to_string(kMaxPending) +
                        " delayed actions wait at once; the newest are dropped");
         } else {
-            pending_.push_back({step + link.delay_steps, sequence_++, k});
+            pending_.push_back({core_.steps + link.delay_steps, sequence_++, k});
             std::push_heap(pending_.begin(), pending_.end(), later);
         }
     }
 }
 
-void LevelLogic::fire_entity(int entity_id, level::LinkEvent event, std::int64_t step) {
+void LevelLogic::fire_entity(int entity_id, level::LinkEvent event) {
     if (entity_links_.empty()) return;
-    if (auto it = entity_links_.find(entity_id); it != entity_links_.end()) fire(it->second, event, step);
+    if (auto it = entity_links_.find(entity_id); it != entity_links_.end()) fire(it->second, event);
 }
 
 void LevelLogic::reset_budget() {
@@ -59,10 +65,10 @@ void LevelLogic::reset_budget() {
     ready_head_ = 0;
 }
 
-void LevelLogic::begin_step(std::int64_t step) {
+void LevelLogic::begin_step() {
     reset_budget();
     // More due than one step may run wait for the next step rather than being dropped.
-    while (!pending_.empty() && pending_.front().due <= step &&
+    while (!pending_.empty() && pending_.front().due <= core_.steps &&
            ready_.size() < static_cast<std::size_t>(kMaxActionsPerStep)) {
         std::pop_heap(pending_.begin(), pending_.end(), later);
         ready_.push_back(pending_.back().link);

@@ -1,11 +1,14 @@
 #pragma once
 // The level's logic at run time (docs/game.md, "Level logic"): the link table resolved at Game::create, the
 // queue of actions waiting out their delay (in whole fixed steps), "once" links, the objectives, the
-// triggers', spawners' and message's state. This class is the bookkeeping and the state the HUD and the
-// tests read; the Game applies the actions within its step (logic_step.cpp, spawners.cpp), so the logic is
-// as deterministic as the rest of the game. Work per step is bounded: at most kMaxActionsPerStep actions
-// run in one step (a zero-delay loop is cut off there and reported), at most kMaxPending wait.
+// triggers' and message's state. Within the game's step (after everything else has moved) it turns the
+// step's events into link events and applies the actions through the other systems' interfaces (doors and
+// lights, robots, spawners), so the logic is as deterministic as the rest of the game (logic_build.cpp,
+// logic_step.cpp). Work per step is bounded: at most kMaxActionsPerStep actions run in one step (a
+// zero-delay loop is cut off there and reported), at most kMaxPending wait.
 #include "core/math.h"
+#include "game/game_core.h"
+#include "game/spawners.h"
 #include "geometry/transform.h"
 #include "level/level.h"
 #include "level/logic_names.h"
@@ -19,8 +22,12 @@
 
 namespace ks::game {
 
+class Interactables;
+class PlayerSystem;
+class RobotSystem;
+
 // What a resolved link acts on; its index is into the game's array of that kind (doors(), lights(),
-// robots()) or the logic's (triggers(), spawners(), messages, sounds, objectives()).
+// robots(), spawners()) or the logic's (triggers(), messages, sounds, objectives()).
 enum class LogicTarget : std::uint8_t {
     Door,
     Light,
@@ -67,21 +74,6 @@ struct TriggerState {
     bool occupied = false; // someone it notices was inside at the last test
 };
 
-struct SpawnerState {
-    int entity_id = 0;
-    std::string name;
-    level::RobotProps robot;
-    Vec3 position{0.0f};
-    float yaw_degrees = 0.0f;
-    int count = 1, max_alive = 1;
-    std::int64_t interval_steps = 0; // the interval rounded to whole steps
-    int left = 0;                    // robots still to make in the current wave
-    std::int64_t next_step = 0;      // the step from which the next may be made
-    bool started = false;
-    bool stuck = false; // no navigation mesh, or no walkable ground near it: it can never make a robot
-    std::vector<std::uint32_t> robots; // indices into Game::robots() of those it made
-};
-
 struct MessageEntity {
     int entity_id = 0;
     std::string text;
@@ -109,14 +101,30 @@ class LevelLogic {
     static constexpr int kMaxActionsPerStep = 1024;
     static constexpr std::size_t kMaxPending = 4096;
     static constexpr std::size_t kMaxProblems = 32;
-    static constexpr std::size_t kMaxRobots = 1024; // spawners stop making robots past this many in the game
+
+    // Actions reach the player, robots, doors and lights, and spawners through their systems.
+    LevelLogic(GameCore& core, PlayerSystem& player, RobotSystem& robots, Interactables& interactables,
+               Spawners& spawners);
+    // Resolves the level's links, objectives, triggers, messages and sounds (after the other systems are
+    // built: links name their records).
+    void build(const level::Level& level);
+    // The logic's part of a playing step: due actions, the level's on_start, the message's clock, trigger
+    // volumes, then the cascade (this step's events become link events, ready actions run and set off more).
+    void step(float dt);
+    // Won when every objective is complete (after the spawners had their turn).
+    void check_won();
+    // Runs a link action now, as a link would (Game::run_action); false when the entity does not take it.
+    bool run_action(level::LinkAction action, int target);
+    bool complete_objective(std::string_view id);
+    // Says a run-time problem once (logged, and kept in problems()).
+    void report(std::string problem);
 
     std::span<const ObjectiveState> objectives() const { return objectives_; }
     // The first objective not yet complete (the one the HUD shows), or -1.
     int current_objective() const;
     bool all_objectives_complete() const;
     std::span<const TriggerState> triggers() const { return triggers_; }
-    std::span<const SpawnerState> spawners() const { return spawners_; }
+    std::span<const SpawnerState> spawners() const { return spawners_.spawners(); }
     const ShownMessage& message() const { return message_; }
     std::span<const LogicLink> links() const { return links_; }
     // The links an entity's events fire (empty when it has none) and the level's own (on_start); an
@@ -142,26 +150,37 @@ class LevelLogic {
     bool uses_locks() const { return uses_locks_; }
 
   private:
-    friend class Game;
-
     // Schedules every link in `range` whose event is `event`: a zero-delay link runs in this step, the
     // others wait in the queue. A fired once link is skipped.
-    void fire(LinkRange range, level::LinkEvent event, std::int64_t step);
-    void fire_entity(int entity_id, level::LinkEvent event, std::int64_t step);
-    // Starts a step: the budget is refilled and the actions due by `step` are ready, in due order.
-    void begin_step(std::int64_t step);
+    void fire(LinkRange range, level::LinkEvent event);
+    void fire_entity(int entity_id, level::LinkEvent event);
+    // Starts a step: the budget is refilled and the actions due now are ready, in due order.
+    void begin_step();
     // Refills the budget with nothing ready (an action run between steps).
     void reset_budget();
     // The next action to run in this step, or false when none is ready or the budget is spent.
     bool next_ready(std::uint32_t& link);
-    void report(std::string problem);
+    // Runs ready actions and what they set off until nothing is left (or the step's budget is spent); the
+    // game's events from `cursor` on are new to the logic.
+    void run_cascade(std::size_t cursor);
+    void translate_events(std::size_t& cursor);
+    void note_deaths();
+    void test_triggers();
+    bool trigger_holds(const TriggerState& t) const;
+    void apply_action(const LogicLink& link);
+    void complete_objective_at(std::size_t index);
+    void check_kill_objectives();
 
+    GameCore& core_;
+    PlayerSystem& player_;
+    RobotSystem& robots_;
+    Interactables& interactables_;
+    Spawners& spawners_;
     std::vector<LogicLink> links_;
     std::unordered_map<int, LinkRange> entity_links_; // by source entity id
     LinkRange level_links_;
     std::vector<ObjectiveState> objectives_;
     std::vector<TriggerState> triggers_;
-    std::vector<SpawnerState> spawners_;
     std::vector<MessageEntity> messages_;
     std::vector<SoundEntity> sounds_;
     ShownMessage message_;
@@ -172,12 +191,11 @@ class LevelLogic {
     std::uint32_t sequence_ = 0;
     std::int64_t dropped_ = 0;
     std::vector<std::string> problems_;
-    std::vector<bool> robot_dead_; // by robot index: its on_death has been seen
+    std::vector<bool> robot_dead_; // by robot index: its on_death has been seen (grows with the robots)
     bool started_ = false;
     bool overflow_reported_ = false, pending_full_reported_ = false; // said once, not every step
     bool objectives_dirty_ = false; // a robot died: kill conditions may hold now
     bool uses_locks_ = false;       // a door starts locked or a link locks one: door locks are state
-    int next_robot_id_ = 1;         // entity ids of spawned robots, after the level's
 };
 
 } // namespace ks::game

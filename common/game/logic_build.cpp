@@ -1,8 +1,10 @@
 // The level logic's tables, built once at Game::create: every link resolved to the game record it acts on,
-// objectives with their kill lists, triggers, spawners, messages and sound emitters. A level that was
-// validated resolves completely; one that was not (an editor draft) loses only the links that do not
-// resolve, each reported in logic().problems().
-#include "game/game.h"
+// objectives with their kill lists, triggers, messages and sound emitters (the spawners build their own). A
+// level that was validated resolves completely; one that was not (an editor draft) loses only the links that
+// do not resolve, each reported in logic().problems().
+#include "game/interactables.h"
+#include "game/level_logic.h"
+#include "game/robot_system.h"
 
 #include "level/logic_checks.h"
 
@@ -27,23 +29,6 @@ TriggerState make_trigger(const level::Entity& e, const level::TriggerProps& t) 
                            : t.who.value == "both" ? TriggerWho::Both
                                                    : TriggerWho::Player;
     return {e.id, level::upright_frame(e), t.size, who, t.enabled, false};
-}
-
-SpawnerState make_spawner(const level::Entity& e, const level::SpawnerProps& s, double step) {
-    SpawnerState state;
-    state.entity_id = e.id;
-    state.name = e.name;
-    state.robot = s.robot;
-    state.robot.dummy = false; // a spawner makes fighting robots (the checks report a dummy)
-    state.position = e.position;
-    state.yaw_degrees = e.rotation.x;
-    state.count = std::max(1, s.count);
-    state.max_alive = std::max(1, s.max_alive);
-    const double interval =
-        std::isfinite(s.interval) ? std::clamp(static_cast<double>(s.interval), 0.0, 600.0) : 0.0;
-    state.interval_steps = std::llround(interval / step);
-    state.robots.reserve(static_cast<std::size_t>(state.count));
-    return state;
 }
 
 // The game's records a link may act on, by kind.
@@ -124,47 +109,47 @@ bool resolve_link(const level::Link& link, const level::Level& level, const leve
 
 } // namespace
 
-void Game::build_logic(const level::Level& level) {
-    LevelLogic& logic = logic_;
-    int largest_id = 0;
+void LevelLogic::build(const level::Level& level) {
+    const double step = core_.settings.step;
     for (const level::Entity& e : level.entities) {
-        largest_id = std::max(largest_id, e.id);
         if (const auto* t = e.try_as<level::TriggerProps>())
-            logic.triggers_.push_back(make_trigger(e, *t));
-        else if (const auto* s = e.try_as<level::SpawnerProps>())
-            logic.spawners_.push_back(make_spawner(e, *s, settings_.step));
+            triggers_.push_back(make_trigger(e, *t));
         else if (const auto* m = e.try_as<level::MessageProps>())
-            logic.messages_.push_back({e.id, m->text, m->duration});
+            messages_.push_back({e.id, m->text, m->duration});
         else if (const auto* sound = e.try_as<level::SoundProps>())
-            logic.sounds_.push_back({e.id, sound->sound.value, e.position, sound->volume, sound->radius});
+            sounds_.push_back({e.id, sound->sound.value, e.position, sound->volume, sound->radius});
         else if (const auto* door = e.try_as<level::DoorProps>(); door && door->locked)
-            logic.uses_locks_ = true;
+            uses_locks_ = true;
     }
-    logic.next_robot_id_ = std::max(level.next_id, largest_id + 1);
-    logic.robot_dead_.assign(robots_.size(), false);
+    robot_dead_.assign(robots_.robots().size(), false);
 
     const level::NameIndex names(level);
-    const Records records{doors_,          lights_,         robots_,      logic.triggers_,
-                          logic.spawners_, logic.messages_, logic.sounds_};
+    const Records records{interactables_.doors(),
+                          interactables_.lights(),
+                          robots_.robots(),
+                          triggers_,
+                          spawners_.spawners(),
+                          messages_,
+                          sounds_};
     auto add_links = [&](const std::vector<level::Link>& links, std::span<const level::LinkEvent> emitted,
                          std::string_view owner) {
-        LinkRange range{static_cast<std::uint32_t>(logic.links_.size()), 0};
+        LinkRange range{static_cast<std::uint32_t>(links_.size()), 0};
         for (const level::Link& link : links) {
             if (range.count >= static_cast<std::uint32_t>(level::kMaxLinks)) break;
             LogicLink resolved;
             std::string problem;
-            if (!resolve_link(link, level, names, records, settings_.step, resolved, problem)) {
-                logic.report(std::string(owner) + ": link " + link.event + " -> " + link.action + " " +
-                             link.target + ": " + problem + " (the link is ignored)");
+            if (!resolve_link(link, level, names, records, step, resolved, problem)) {
+                report(std::string(owner) + ": link " + link.event + " -> " + link.action + " " +
+                       link.target + ": " + problem + " (the link is ignored)");
                 continue;
             }
             if (std::find(emitted.begin(), emitted.end(), resolved.event) == emitted.end()) {
-                logic.report(std::string(owner) + " does not emit " + link.event + " (the link is ignored)");
+                report(std::string(owner) + " does not emit " + link.event + " (the link is ignored)");
                 continue;
             }
             if (resolved.action == LinkAction::Lock || resolved.action == LinkAction::Unlock)
-                logic.uses_locks_ = true;
-            logic.links_.push_back(resolved);
+                uses_locks_ = true;
+            links_.push_back(resolved);
             ++range.count;
         }
         return range;
@@ -178,32 +163,32 @@ void Game::build_logic(const level::Level& level) {
         for (const std::string& name : o.kill) {
             const auto found = names.find(name);
             const int id = found.size() == 1 ? level.entities[found.front()].id : 0;
-            if (const auto robot = index_of(robots_, id)) {
+            if (const auto robot = index_of(records.robots, id)) {
                 state.kill_robots.push_back(*robot);
-            } else if (const auto spawner = index_of(logic.spawners_, id)) {
+            } else if (const auto spawner = index_of(records.spawners, id)) {
                 state.kill_spawners.push_back(*spawner);
             } else {
                 state.kill_condition = false;
-                logic.report("objective \"" + o.id + "\": nothing to kill is called \"" + name +
-                             "\", so killing cannot complete it");
+                report("objective \"" + o.id + "\": nothing to kill is called \"" + name +
+                       "\", so killing cannot complete it");
             }
         }
-        logic.objectives_.push_back(std::move(state));
+        objectives_.push_back(std::move(state));
     }
     for (std::size_t i = 0; i < level.objectives.size(); ++i) {
         const std::array events{level::kObjectiveEvent};
-        logic.objectives_[i].links =
+        objectives_[i].links =
             add_links(level.objectives[i].links, events, "objective \"" + level.objectives[i].id + "\"");
     }
     const std::array level_events{level::kLevelEvent};
-    logic.level_links_ = add_links(level.links, level_events, "the level");
+    level_links_ = add_links(level.links, level_events, "the level");
     for (const level::Entity& e : level.entities) {
         if (e.links.empty()) continue;
         const LinkRange range = add_links(e.links, level::entity_events(e.type()), level::entity_subject(e));
-        if (range.count > 0) logic.entity_links_[e.id] = range;
+        if (range.count > 0) entity_links_[e.id] = range;
     }
-    logic.ready_.reserve(2 * static_cast<std::size_t>(LevelLogic::kMaxActionsPerStep));
-    logic.pending_.reserve(LevelLogic::kMaxPending);
+    ready_.reserve(2 * static_cast<std::size_t>(LevelLogic::kMaxActionsPerStep));
+    pending_.reserve(LevelLogic::kMaxPending);
 }
 
 } // namespace ks::game

@@ -1,7 +1,9 @@
-// The robots' use of the navigation mesh: built once at level load, doors' polygons opened and closed as the
-// doors move, path following toward a goal, and sounds that travel along the mesh to robots' ears.
+// The robots' use of the navigation mesh: built once at level load (the doors keep its door polygons as they
+// stand, interactables.cpp), path following toward a goal, and sounds that travel along the mesh to robots'
+// ears.
 #include "core/log.h"
-#include "game/game.h"
+#include "game/interactables.h"
+#include "game/robot_system.h"
 #include "geometry/ground_plane.h"
 #include "physics/character.h"
 
@@ -26,9 +28,9 @@ Result<std::unique_ptr<nav::NavMesh>> build_robot_navigation(const level::Level&
                                nav::robot_nav_settings(character.step_height, character.max_slope_degrees));
 }
 
-void Game::build_navigation(const level::Level& level) {
-    auto mesh = navigation_source_ ? navigation_source_->clone() : build_robot_navigation(level);
-    navigation_source_.reset();
+void RobotSystem::build_navigation(const level::Level& level, std::shared_ptr<const nav::NavMesh> source,
+                                   std::span<const Door> doors) {
+    auto mesh = source ? source->clone() : build_robot_navigation(level);
     if (!mesh) {
         // One clear message; robots without a mesh stand guard (turn, aim and shoot, never walk).
         navigation_error_ = mesh.error().str();
@@ -36,22 +38,15 @@ void Game::build_navigation(const level::Level& level) {
         return;
     }
     navigation_ = std::move(*mesh);
-    for (const Door& d : doors_) navigation_->set_door_open(d.entity_id, d.progress > 0.0f);
+    for (const Door& d : doors) navigation_->set_door_open(d.entity_id, d.progress > 0.0f);
     for (Robot& r : robots_) r.path.reserve(kMaxPathCorners);
 }
 
-void Game::update_door_navigation(const Door& d, float previous_progress) {
-    if (!navigation_) return;
-    // Passable from the moment the door starts to open until it is shut again.
-    const bool was_open = previous_progress > 0.0f, is_open = d.progress > 0.0f;
-    if (was_open != is_open) navigation_->set_door_open(d.entity_id, is_open);
-}
-
-Vec3 Game::follow_path(Robot& r, const Vec3& goal, float speed, float dt) {
+Vec3 RobotSystem::follow_path(Robot& r, const Vec3& goal, float speed, float dt) {
     if (!navigation_ || !(speed > 0.0f)) return Vec3(0.0f);
     r.replan_in -= dt;
     if (r.replan_in <= 0.0f || geometry::ground_distance(goal, r.path_goal) > kGoalMoved || r.path.empty()) {
-        r.replan_in = settings_.robot_replan_interval;
+        r.replan_in = core_.settings.robot_replan_interval;
         r.path_goal = goal;
         r.path_next = 0;
         const nav::PathStatus status = navigation_->find_path(r.feet, goal, r.path);
@@ -66,7 +61,7 @@ Vec3 Game::follow_path(Robot& r, const Vec3& goal, float speed, float dt) {
     const Vec3 d(corner.x - r.feet.x, 0.0f, corner.z - r.feet.z);
     const float len = glm::length(d);
     if (!(len > 1e-4f)) return Vec3(0.0f);
-    const Vec3 steer = d / len + robot_separation(r);
+    const Vec3 steer = d / len + separation(r);
     const float steer_len = glm::length(steer);
     return steer_len > 1e-4f ? steer / steer_len * speed : Vec3(0.0f);
 }
@@ -74,8 +69,8 @@ Vec3 Game::follow_path(Robot& r, const Vec3& goal, float speed, float dt) {
 // Robots walking the mesh keep clear of each other: a push away from every living robot closer than
 // kSeparation (stronger the closer), so robots meeting in a doorway file through instead of pressing into
 // each other; their capsules still collide.
-Vec3 Game::robot_separation(const Robot& r) const {
-    const float reach = settings_.robot_radius * kSeparationRadii;
+Vec3 RobotSystem::separation(const Robot& r) const {
+    const float reach = core_.settings.robot_radius * kSeparationRadii;
     Vec3 push(0.0f);
     for (const Robot& other : robots_) {
         if (&other == &r || !other.alive()) continue;
@@ -88,12 +83,12 @@ Vec3 Game::robot_separation(const Robot& r) const {
     return push;
 }
 
-bool Game::path_finished(const Robot& r) const {
+bool RobotSystem::path_finished(const Robot& r) const {
     return r.path_next >= r.path.size();
 }
 
-void Game::hear_sound(const Vec3& source) {
-    if (!navigation_ || phase_ != Phase::Playing) return;
+void RobotSystem::hear_sound(const Vec3& source) {
+    if (!navigation_ || !core_.playing()) return;
     for (Robot& r : robots_) {
         if (!r.alive() || (r.mode != RobotMode::Idle && r.mode != RobotMode::Search)) continue;
         const float radius = r.props.hearing_radius;

@@ -1,5 +1,8 @@
 // FNV-1a over every piece of simulation state, so two runs (or a run and its replay) can be compared with
-// one number. Floats are hashed by their bits: equal hashes mean bit-identical states.
+// one number. Floats are hashed by their bits: equal hashes mean bit-identical states. Each system's state
+// is read through its read-only interface, in the order the recorded hashes were made with; a new system
+// appends its state at the end (docs/architecture.md, "Game systems"), only where it holds any, so levels
+// without it hash as before.
 #include "game/game.h"
 
 #include <algorithm>
@@ -32,13 +35,14 @@ class Hasher {
 
 std::uint64_t Game::state_hash() const {
     Hasher h;
-    h.add(steps_);
-    h.add(static_cast<int>(phase_));
-    h.add(paused_);
-    h.add(rng_.state());
-    const PlayerState& p = player_;
-    h.add(world_.transform(p.body).position);
-    h.add(world_.character(p.body).movement.velocity);
+    h.add(core_.steps);
+    h.add(static_cast<int>(core_.phase));
+    h.add(core_.paused);
+    h.add(core_.rng.state());
+    const PlayerState& p = player_.state();
+    const physics::World& world = core_.world;
+    h.add(world.transform(p.body).position);
+    h.add(world.character(p.body).movement.velocity);
     h.add(p.knockback);
     h.add(p.yaw);
     h.add(p.pitch);
@@ -47,10 +51,11 @@ std::uint64_t Game::state_hash() const {
     h.add(p.ammo);
     h.add(p.shots);
     h.add(p.damage_taken);
-    for (std::size_t i = 0; i < robots_.size(); ++i) {
-        const Robot& r = robots_[i];
-        h.add(world_.transform(r.body).position);
-        h.add(world_.character(r.body).movement.velocity);
+    const auto robots = robots_.robots();
+    for (std::size_t i = 0; i < robots.size(); ++i) {
+        const Robot& r = robots[i];
+        h.add(world.transform(r.body).position);
+        h.add(world.character(r.body).movement.velocity);
         h.add(r.yaw);
         h.add(r.health);
         h.add(static_cast<int>(r.mode));
@@ -72,21 +77,21 @@ std::uint64_t Game::state_hash() const {
             h.add(r.patrol.waiting);
         }
         if (r.props.dormant) h.add(r.dormant); // as patrols: robots that never slept hash as before
-        h.add(robot_anims_[i].ticks());
-        h.add(robot_anims_[i].current_clip());
+        h.add(robots_.animation(i).ticks());
+        h.add(robots_.animation(i).current_clip());
     }
-    for (const Door& d : doors_) {
+    for (const Door& d : interactables_.doors()) {
         h.add(d.progress);
         h.add(d.opening);
     }
-    for (const Light& l : lights_) h.add(l.on);
-    for (const Pickup& k : pickups_) h.add(k.taken);
-    for (const Cylinder& c : cylinders_) {
+    for (const Light& l : interactables_.lights()) h.add(l.on);
+    for (const Pickup& k : interactables_.pickups()) h.add(k.taken);
+    for (const Cylinder& c : explosives_.cylinders()) {
         h.add(c.exploded);
         h.add(c.fuse);
     }
-    h.add(caption_.visible());
-    h.add(caption_.owner());
+    h.add(interactables_.caption().visible());
+    h.add(interactables_.caption().owner());
     // The level logic, only where it holds state: a level without any (the main level, whose one objective
     // completes in the step it is won, which the phase already says) hashes as before the logic existed.
     const auto objectives = logic_.objectives();
@@ -116,7 +121,7 @@ std::uint64_t Game::state_hash() const {
         h.add(logic_.message().time_left);
     }
     if (logic_.uses_locks())
-        for (const Door& d : doors_) h.add(d.locked);
+        for (const Door& d : interactables_.doors()) h.add(d.locked);
     return h.value();
 }
 
