@@ -12,6 +12,18 @@
 # build/module_includes/<name>.internal/, which links the whole module.
 set_property(GLOBAL PROPERTY KS_MODULES "")
 
+# Unity builds (CMake's UNITY_BUILD): a target's sources compile in batches of eight, one translation unit a
+# batch, because most of a source's compile time is the headers it shares with its neighbours (the numbers:
+# docs/building.md, "Build times"). Two files of one target that define the same name in anonymous
+# namespaces clash in a batch: give the helper a name of its own or share it. -DKS_UNITY=OFF compiles file by
+# file (what include checks want).
+option(KS_UNITY "Compile each target's sources in batches (unity build)" ON)
+function(ks_unity target)
+    if(KS_UNITY)
+        set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 8)
+    endif()
+endfunction()
+
 # Links the public headers of module `name` into `dir`/<name>: the whole folder when it has no internal
 # headers, else one link per header that is not internal.
 function(ks_link_public_headers dir name)
@@ -116,6 +128,7 @@ function(ks_module name)
     file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/common/${name}/*.cpp)
     if(sources)
         add_library(ks_${name} OBJECT ${sources})
+        ks_unity(ks_${name})
         target_include_directories(ks_${name} PUBLIC ${include_dir})
         if(internal_dir)
             target_include_directories(ks_${name} PRIVATE ${internal_dir})

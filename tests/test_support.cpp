@@ -10,15 +10,34 @@
 namespace ks::test {
 namespace fs = std::filesystem;
 
-fs::path source_dir() { return fs::path(KS_SOURCE_DIR); }
-fs::path data_dir() { return source_dir() / "tests" / "data"; }
-fs::path bin_dir() { return fs::path(KS_BIN_DIR); }
+fs::path source_dir() {
+    return fs::path(KS_SOURCE_DIR);
+}
+fs::path data_dir() {
+    return source_dir() / "tests" / "data";
+}
+fs::path bin_dir() {
+    return fs::path(KS_BIN_DIR);
+}
 
 std::string read_file(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
     std::ostringstream out;
     out << in.rdbuf();
     return out.str();
+}
+
+bool contains_text(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
+
+std::string editor_binary() {
+    return (bin_dir() / "killswitch-editor").string();
+}
+
+fs::path write_file(const fs::path& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
 }
 
 ScratchDir::ScratchDir() {

@@ -5,14 +5,19 @@
 
 namespace ks::test {
 
-std::filesystem::path source_dir();            // the repository root
-std::filesystem::path data_dir();              // tests/data
-std::filesystem::path bin_dir();               // where killswitch, killswitch-editor live
+std::filesystem::path source_dir(); // the repository root
+std::filesystem::path data_dir();   // tests/data
+std::filesystem::path bin_dir();    // where killswitch, killswitch-editor live
+std::string editor_binary();        // bin_dir() / killswitch-editor
 std::string read_file(const std::filesystem::path& path);
+// `text` contains `part` (a report line, a message).
+bool contains_text(const std::string& text, const std::string& part);
+// Writes `text` to `path` (replacing it); the path back.
+std::filesystem::path write_file(const std::filesystem::path& path, const std::string& text);
 
 // A fresh empty folder removed when the object dies.
 class ScratchDir {
-public:
+  public:
     ScratchDir();
     ~ScratchDir();
     ScratchDir(const ScratchDir&) = delete;
@@ -20,7 +25,7 @@ public:
     const std::filesystem::path& path() const { return path_; }
     std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
 
-private:
+  private:
     std::filesystem::path path_;
 };
 

@@ -11,7 +11,7 @@
 
 namespace ks::assetgen {
 namespace {
-constexpr float kHalfX = 1.47f, kHalfZ = 2.67f, kHeight = 4.0f;
+constexpr float kHalfX = 1.47f, kHalfZ = 2.67f, kPanelHeight = 4.0f;
 
 // Console housing: blue-grey enamel over steel, panel seams with screws, louvred vents, wear and dirt.
 MaterialMaps console_paint() {
@@ -86,12 +86,13 @@ Result<void> make_control_panel(Output& out) {
     const float uv = 0.5f;
     const float tower_front = 0.25f; // x of the tower's screen face
     // Tower at the back holding the screen, with a cap that overhangs a little.
-    n.part(body).append(rounded_box(vec3(kHalfX - tower_front, kHeight - 0.12f, 2 * kHalfZ), 0.06f, 1, uv),
-                        at(vec3((kHalfX + tower_front) * 0.5f, (kHeight - 0.12f) * 0.5f, 0)));
+    n.part(body).append(
+        rounded_box(vec3(kHalfX - tower_front, kPanelHeight - 0.12f, 2 * kHalfZ), 0.06f, 1, uv),
+        at(vec3((kHalfX + tower_front) * 0.5f, (kPanelHeight - 0.12f) * 0.5f, 0)));
     n.part(trim).append(rounded_box(vec3(kHalfX - tower_front + 0.04f, 0.12f, 2 * kHalfZ), 0.04f, 1, uv),
-                        at(vec3((kHalfX + tower_front) * 0.5f - 0.02f, kHeight - 0.06f, 0)));
+                        at(vec3((kHalfX + tower_front) * 0.5f - 0.02f, kPanelHeight - 0.06f, 0)));
     n.part(lamp).append(rounded_box(vec3(0.03f, 0.05f, 2 * kHalfZ - 0.4f), 0.01f, 1),
-                        at(vec3(tower_front - 0.005f, kHeight - 0.2f, 0)));
+                        at(vec3(tower_front - 0.005f, kPanelHeight - 0.2f, 0)));
     // Screen bezel and the screen, 4.4 x 2.1, facing -X.
     n.part(trim).append(rounded_box(vec3(0.08f, 2.3f, 4.6f), 0.05f, 2, uv),
                         at(vec3(tower_front - 0.02f, 2.65f, 0)));

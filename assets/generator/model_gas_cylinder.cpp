@@ -11,12 +11,12 @@
 
 namespace ks::assetgen {
 namespace {
-constexpr int kSize = 512;
-constexpr float kHeight = 2.0f, kRadius = 0.5f;
+constexpr int kCylinderSize = 512;
+constexpr float kCylinderHeight = 2.0f, kRadius = 0.5f;
 
 // Image row for a height on the cylinder (the map spans y = 0..2 from the bottom row to the top row).
 float row_at(float y) {
-    return (1.0f - y / kHeight) * kSize;
+    return (1.0f - y / kCylinderHeight) * kCylinderSize;
 }
 
 // The GHS "flammable" pictogram's flame: a tongue of fire above a base bar, drawn in `size` pixels.
@@ -37,21 +37,23 @@ void draw_flame(Field& f, Vec2f centre, float size) {
 }
 
 MaterialMaps cylinder_paint(const Font& font) {
-    MaterialFields m = blank_material(kSize, srgb(176, 26, 22), 0.35f, 0.0f);
-    const Field broad = fractal_noise(kSize, kSize, NoiseKind::Perlin, 4, 5, 601);
-    const Field fine = fractal_noise(kSize, kSize, NoiseKind::Value, 128, 2, 602);
-    Field band(kSize, kSize), stripes(kSize, kSize), label(kSize, kSize), ink(kSize, kSize),
-        flame(kSize, kSize), scratches(kSize, kSize), weld(kSize, kSize);
+    MaterialFields m = blank_material(kCylinderSize, srgb(176, 26, 22), 0.35f, 0.0f);
+    const Field broad = fractal_noise(kCylinderSize, kCylinderSize, NoiseKind::Perlin, 4, 5, 601);
+    const Field fine = fractal_noise(kCylinderSize, kCylinderSize, NoiseKind::Value, 128, 2, 602);
+    Field band(kCylinderSize, kCylinderSize), stripes(kCylinderSize, kCylinderSize),
+        label(kCylinderSize, kCylinderSize), ink(kCylinderSize, kCylinderSize),
+        flame(kCylinderSize, kCylinderSize), scratches(kCylinderSize, kCylinderSize),
+        weld(kCylinderSize, kCylinderSize);
     // Hazard band between heights 1.3 and 1.45 all the way round.
-    fill_rounded_rect(band, Vec2f(-10, row_at(1.45f)), Vec2f(kSize + 10, row_at(1.3f)), 0.0f);
-    hazard_stripes(stripes, Vec2f(-10, row_at(1.45f)), Vec2f(kSize + 10, row_at(1.3f)), 32.0f);
+    fill_rounded_rect(band, Vec2f(-10, row_at(1.45f)), Vec2f(kCylinderSize + 10, row_at(1.3f)), 0.0f);
+    hazard_stripes(stripes, Vec2f(-10, row_at(1.45f)), Vec2f(kCylinderSize + 10, row_at(1.3f)), 32.0f);
     // Weld seams where the shoulder and foot meet the body.
     for (float y : {1.55f, 0.12f})
         paint_sdf(
-            weld, Vec2f(-4, row_at(y) - 4), Vec2f(kSize + 4, row_at(y) + 4),
+            weld, Vec2f(-4, row_at(y) - 4), Vec2f(kCylinderSize + 4, row_at(y) + 4),
             [&](Vec2f p) { return std::abs(p.y - row_at(y)) - 2.0f; }, Stroke{1.0f, Paint::Max, 2.0f});
     // Label on the front (u 0.36..0.64 faces the +Z side at u = 0.5... see lathe uvs), heights 0.55..1.15.
-    const Vec2f lo(kSize * 0.34f, row_at(1.17f)), hi(kSize * 0.66f, row_at(0.5f));
+    const Vec2f lo(kCylinderSize * 0.34f, row_at(1.17f)), hi(kCylinderSize * 0.66f, row_at(0.5f));
     fill_rounded_rect(label, lo, hi, 6.0f);
     const Vec2f diamond_c((lo.x + hi.x) * 0.5f, lo.y + 62.0f);
     const float d = 44.0f;
@@ -67,11 +69,12 @@ MaterialMaps cylinder_paint(const Font& font) {
     font.draw_centred(ink, "GAS", Vec2f(diamond_c.x, hi.y - 14.0f), 22.0f);
     Rng rng(0x6A5u);
     add_scratches(scratches, rng, 110, 6.0f, 40.0f, 1.6f);
-    const Field dirt = grime(kSize, kSize, constant_like(broad, 1.0f), 603, 0.7f);
-    for (int y = 0; y < kSize; ++y)
-        for (int x = 0; x < kSize; ++x) {
-            const size_t i = static_cast<size_t>(y) * kSize + x;
-            const float low = std::clamp((static_cast<float>(y) - kSize * 0.7f) / (kSize * 0.3f), 0.0f, 1.0f);
+    const Field dirt = grime(kCylinderSize, kCylinderSize, constant_like(broad, 1.0f), 603, 0.7f);
+    for (int y = 0; y < kCylinderSize; ++y)
+        for (int x = 0; x < kCylinderSize; ++x) {
+            const size_t i = static_cast<size_t>(y) * kCylinderSize + x;
+            const float low = std::clamp(
+                (static_cast<float>(y) - kCylinderSize * 0.7f) / (kCylinderSize * 0.3f), 0.0f, 1.0f);
             Color c =
                 mix(srgb(150, 20, 18), srgb(196, 34, 28), broad.values[i] * 0.7f + fine.values[i] * 0.3f);
             c = mix(c, mix(srgb(240, 184, 20), srgb(22, 20, 18), stripes.values[i]), band.values[i]);
@@ -107,7 +110,7 @@ Result<void> make_gas_cylinder(Output& out) {
     LatheOptions body;
     body.segments = 32;
     body.v_by_height = true;
-    body.v_scale = 1.0f / kHeight;
+    body.v_scale = 1.0f / kCylinderHeight;
     body.crease_degrees = 30.0f;
     // Foot ring, body, domed shoulder, neck; uv u starts at +Z so the label (u 0.34..0.66) faces -Z... the
     // lathe's u = 0.5 is at angle pi, i.e. the -Z side: rotate by pi so the label faces +Z (the model front).

@@ -12,7 +12,7 @@
 
 namespace ks::assetgen {
 namespace {
-constexpr int kSize = 256;
+constexpr int kPickupSize = 256;
 
 struct PickupStyle {
     std::string name;
@@ -59,19 +59,21 @@ void shield_icon(Field& f) {
 }
 
 MaterialMaps pickup_maps(const PickupStyle& s) {
-    MaterialFields m = blank_material(kSize, s.body, 0.35f, 0.0f);
-    const Field noise = fractal_noise(kSize, kSize, NoiseKind::Perlin, 4, 4, s.seed);
-    Field frame(kSize, kSize), trim(kSize, kSize), icon(kSize, kSize), scratches(kSize, kSize);
+    MaterialFields m = blank_material(kPickupSize, s.body, 0.35f, 0.0f);
+    const Field noise = fractal_noise(kPickupSize, kPickupSize, NoiseKind::Perlin, 4, 4, s.seed);
+    Field frame(kPickupSize, kPickupSize), trim(kPickupSize, kPickupSize), icon(kPickupSize, kPickupSize),
+        scratches(kPickupSize, kPickupSize);
     // Raised outer frame (the bevel band and a little more), with a glowing groove inside it.
-    fill_rounded_rect(frame, Vec2f(0, 0), Vec2f(kSize, kSize), 0.0f);
-    fill_rounded_rect(frame, Vec2f(30, 30), Vec2f(kSize - 30, kSize - 30), 10.0f,
+    fill_rounded_rect(frame, Vec2f(0, 0), Vec2f(kPickupSize, kPickupSize), 0.0f);
+    fill_rounded_rect(frame, Vec2f(30, 30), Vec2f(kPickupSize - 30, kPickupSize - 30), 10.0f,
                       Stroke{0.0f, Paint::Set, 4.0f});
-    fill_rounded_rect(trim, Vec2f(34, 34), Vec2f(kSize - 34, kSize - 34), 12.0f);
-    fill_rounded_rect(trim, Vec2f(41, 41), Vec2f(kSize - 41, kSize - 41), 8.0f, Stroke{0.0f, Paint::Set});
+    fill_rounded_rect(trim, Vec2f(34, 34), Vec2f(kPickupSize - 34, kPickupSize - 34), 12.0f);
+    fill_rounded_rect(trim, Vec2f(41, 41), Vec2f(kPickupSize - 41, kPickupSize - 41), 8.0f,
+                      Stroke{0.0f, Paint::Set});
     s.draw_icon(icon);
     Rng rng(s.seed);
     add_scratches(scratches, rng, 30, 5.0f, 25.0f, 1.0f);
-    Image emissive(kSize, kSize, Color(0, 0, 0, 1));
+    Image emissive(kPickupSize, kPickupSize, Color(0, 0, 0, 1));
     for (size_t i = 0; i < m.color.pixels.size(); ++i) {
         Color c = mix(s.body * 0.9f, s.body, noise.values[i]);
         c = mix(c, s.body * 0.55f, frame.values[i]);

@@ -10,14 +10,14 @@
 
 namespace ks::assetgen {
 namespace {
-constexpr int kSize = 128;
+constexpr int kParticleSize = 128;
 
 Image sprite(const std::function<Color(float r, float angle, int x, int y)>& shade) {
-    Image image(kSize, kSize, Color(0.0f));
-    for (int y = 0; y < kSize; ++y)
-        for (int x = 0; x < kSize; ++x) {
-            const float dx = (static_cast<float>(x) + 0.5f) / kSize * 2.0f - 1.0f;
-            const float dy = (static_cast<float>(y) + 0.5f) / kSize * 2.0f - 1.0f;
+    Image image(kParticleSize, kParticleSize, Color(0.0f));
+    for (int y = 0; y < kParticleSize; ++y)
+        for (int x = 0; x < kParticleSize; ++x) {
+            const float dx = (static_cast<float>(x) + 0.5f) / kParticleSize * 2.0f - 1.0f;
+            const float dy = (static_cast<float>(y) + 0.5f) / kParticleSize * 2.0f - 1.0f;
             const float r = std::sqrt(dx * dx + dy * dy);
             Color c = shade(r, std::atan2(dy, dx), x, y);
             c.a = std::clamp(c.a, 0.0f, 1.0f);
@@ -28,7 +28,7 @@ Image sprite(const std::function<Color(float r, float angle, int x, int y)>& sha
 } // namespace
 
 Result<void> make_particles(Output& out) {
-    const Field fire_noise = fractal_noise(kSize, kSize, NoiseKind::Perlin, 4, 5, 71);
+    const Field fire_noise = fractal_noise(kParticleSize, kParticleSize, NoiseKind::Perlin, 4, 5, 71);
     const Image fire = sprite([&](float r, float, int x, int y) {
         const float n = fire_noise.at(x, y);
         const float body = std::clamp(1.0f - (r + (n - 0.5f) * 0.6f) * 1.15f, 0.0f, 1.0f);
@@ -37,7 +37,7 @@ Result<void> make_particles(Output& out) {
             glm::mix(glm::vec3(0.9f, 0.18f, 0.02f), glm::vec3(1.0f, 0.85f, 0.45f), heat * heat);
         return Color(colour, std::pow(body, 0.8f));
     });
-    const Field smoke_noise = fractal_noise(kSize, kSize, NoiseKind::Perlin, 3, 6, 72);
+    const Field smoke_noise = fractal_noise(kParticleSize, kParticleSize, NoiseKind::Perlin, 3, 6, 72);
     const Image smoke = sprite([&](float r, float, int x, int y) {
         const float n = smoke_noise.at(x, y);
         const float puff = std::clamp(1.0f - r * 1.05f, 0.0f, 1.0f);

@@ -9,7 +9,7 @@ namespace ks::assetgen {
 namespace {
 constexpr double kRate = 48000.0;
 constexpr int kFrame = 2048;
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kAnalysisPi = 3.14159265358979323846;
 
 double to_db(double v) {
     return v > 0.0 ? 20.0 * std::log10(v) : -200.0;
@@ -25,7 +25,7 @@ void fft(std::vector<std::complex<double>>& a) {
         if (i < j) std::swap(a[i], a[j]);
     }
     for (std::size_t len = 2; len <= n; len <<= 1) {
-        const std::complex<double> step = std::polar(1.0, -2.0 * kPi / static_cast<double>(len));
+        const std::complex<double> step = std::polar(1.0, -2.0 * kAnalysisPi / static_cast<double>(len));
         for (std::size_t i = 0; i < n; i += len) {
             std::complex<double> w(1.0, 0.0);
             for (std::size_t k = 0; k < len / 2; ++k) {
@@ -46,7 +46,7 @@ std::vector<double> spectrum(const std::vector<std::int16_t>& samples, std::ptrd
         const double v = at >= 0 && at < static_cast<std::ptrdiff_t>(samples.size())
                              ? samples[static_cast<std::size_t>(at)] / 32767.0
                              : 0.0;
-        a[static_cast<std::size_t>(i)] = v * (0.5 - 0.5 * std::cos(2.0 * kPi * i / kFrame));
+        a[static_cast<std::size_t>(i)] = v * (0.5 - 0.5 * std::cos(2.0 * kAnalysisPi * i / kFrame));
     }
     fft(a);
     std::vector<double> mag(kFrame / 2 + 1);

@@ -8,24 +8,24 @@
 
 namespace ks::assetgen {
 namespace {
-constexpr int kSize = 512;
+constexpr int kFloorSize = 512;
 }
 
 Result<void> make_surface_tiles(Output& out) {
-    MaterialFields m = blank_material(kSize, srgb(180, 180, 176), 0.4f, 0.0f);
+    MaterialFields m = blank_material(kFloorSize, srgb(180, 180, 176), 0.4f, 0.0f);
     m.keep_height = true;
     constexpr int kTiles = 4; // 0.5-unit tiles on a 2-unit repeat
-    const float tile = static_cast<float>(kSize) / kTiles, grout = 5.0f;
-    const Field speckle = fractal_noise(kSize, kSize, NoiseKind::Value, 128, 2, 31);
-    const Field cloud = fractal_noise(kSize, kSize, NoiseKind::Perlin, 8, 4, 32);
-    Field face(kSize, kSize);
+    const float tile = static_cast<float>(kFloorSize) / kTiles, grout = 5.0f;
+    const Field speckle = fractal_noise(kFloorSize, kFloorSize, NoiseKind::Value, 128, 2, 31);
+    const Field cloud = fractal_noise(kFloorSize, kFloorSize, NoiseKind::Perlin, 8, 4, 32);
+    Field face(kFloorSize, kFloorSize);
     for (int ty = 0; ty < kTiles; ++ty)
         for (int tx = 0; tx < kTiles; ++tx) {
             const Vec2f lo(static_cast<float>(tx) * tile + grout, static_cast<float>(ty) * tile + grout);
             fill_rounded_rect(face, lo, lo + Vec2f(tile - 2 * grout), 4.0f, Stroke{1.0f, Paint::Max, 3.0f});
         }
     Rng rng(0x711E5u);
-    Field chips(kSize, kSize), scuffs(kSize, kSize);
+    Field chips(kFloorSize, kFloorSize), scuffs(kFloorSize, kFloorSize);
     for (int i = 0; i < 10; ++i) {
         // Chipped tile corners.
         const Vec2f c(std::floor(rng.uniform(0, kTiles)) * tile + (rng.chance(0.5f) ? grout : tile - grout),
@@ -33,9 +33,9 @@ Result<void> make_surface_tiles(Output& out) {
         fill_circle(chips, c, rng.uniform(3.0f, 7.0f), Stroke{1.0f, Paint::Max, 1.0f});
     }
     add_scratches(scuffs, rng, 60, 10.0f, 60.0f, 1.5f);
-    const Field dirt = grime(kSize, kSize, cavity_occlusion(face, 4, 1.0f), 33, 0.5f);
-    for (int y = 0; y < kSize; ++y)
-        for (int x = 0; x < kSize; ++x) {
+    const Field dirt = grime(kFloorSize, kFloorSize, cavity_occlusion(face, 4, 1.0f), 33, 0.5f);
+    for (int y = 0; y < kFloorSize; ++y)
+        for (int x = 0; x < kFloorSize; ++x) {
             const int tx = static_cast<int>(static_cast<float>(x) / tile),
                       ty = static_cast<int>(static_cast<float>(y) / tile);
             const float tint = hash01(tx, ty, 34);
@@ -55,19 +55,19 @@ Result<void> make_surface_tiles(Output& out) {
 }
 
 Result<void> make_surface_ceiling(Output& out) {
-    MaterialFields m = blank_material(kSize, srgb(210, 210, 204), 0.9f, 0.0f);
+    MaterialFields m = blank_material(kFloorSize, srgb(210, 210, 204), 0.9f, 0.0f);
     m.keep_height = true;
     constexpr int kPanels = 2;
-    const float panel = static_cast<float>(kSize) / kPanels, frame = 8.0f;
-    const Field cloud = fractal_noise(kSize, kSize, NoiseKind::Perlin, 8, 4, 41);
-    Field bar(kSize, kSize), holes(kSize, kSize), vent(kSize, kSize);
+    const float panel = static_cast<float>(kFloorSize) / kPanels, frame = 8.0f;
+    const Field cloud = fractal_noise(kFloorSize, kFloorSize, NoiseKind::Perlin, 8, 4, 41);
+    Field bar(kFloorSize, kFloorSize), holes(kFloorSize, kFloorSize), vent(kFloorSize, kFloorSize);
     for (int p = 0; p < kPanels; ++p) {
         const float at = static_cast<float>(p) * panel;
         paint_sdf(
-            bar, Vec2f(at - frame, 0), Vec2f(at + frame, kSize),
+            bar, Vec2f(at - frame, 0), Vec2f(at + frame, kFloorSize),
             [&](Vec2f q) { return std::abs(q.x - at) - frame * 0.5f; }, Stroke{});
         paint_sdf(
-            bar, Vec2f(0, at - frame), Vec2f(kSize, at + frame),
+            bar, Vec2f(0, at - frame), Vec2f(kFloorSize, at + frame),
             [&](Vec2f q) { return std::abs(q.y - at) - frame * 0.5f; }, Stroke{});
     }
     // Acoustic panels perforated on a grid; the panel at (1,1) is a ventilation grille with slats.
@@ -89,7 +89,7 @@ Result<void> make_surface_ceiling(Output& out) {
                                           24.0f + static_cast<float>(j) * 15.0f),
                                 2.2f);
         }
-    const Field dirt = grime(kSize, kSize, cavity_occlusion(bar, 6, 1.0f), 42, 0.35f);
+    const Field dirt = grime(kFloorSize, kFloorSize, cavity_occlusion(bar, 6, 1.0f), 42, 0.35f);
     for (size_t i = 0; i < m.color.pixels.size(); ++i) {
         Color c = mix(srgb(214, 212, 204), srgb(190, 188, 180), cloud.values[i]);
         c = mix(c, srgb(150, 140, 120), dirt.values[i] * 0.5f);
@@ -107,21 +107,21 @@ Result<void> make_surface_ceiling(Output& out) {
 }
 
 Result<void> make_surface_metal(Output& out) {
-    MaterialFields m = blank_material(kSize, srgb(150, 152, 156), 0.45f, 1.0f);
+    MaterialFields m = blank_material(kFloorSize, srgb(150, 152, 156), 0.45f, 1.0f);
     m.keep_height = true;
     // Brushed steel: noise stretched 40:1 along x.
-    Field brushed(kSize, kSize);
-    for (int y = 0; y < kSize; ++y)
-        for (int x = 0; x < kSize; ++x) {
-            const float u = (static_cast<float>(x) + 0.5f) * 4.0f / kSize,
-                        v = (static_cast<float>(y) + 0.5f) * 160.0f / kSize;
+    Field brushed(kFloorSize, kFloorSize);
+    for (int y = 0; y < kFloorSize; ++y)
+        for (int x = 0; x < kFloorSize; ++x) {
+            const float u = (static_cast<float>(x) + 0.5f) * 4.0f / kFloorSize,
+                        v = (static_cast<float>(y) + 0.5f) * 160.0f / kFloorSize;
             brushed.at(x, y) =
                 value_noise(u, v, 4, 160, 51) * 0.6f + value_noise(u * 4, v * 2, 16, 320, 52) * 0.4f;
         }
     // Diamond plate: raised elongated lozenges in a staggered grid, alternating direction.
-    Field plate(kSize, kSize);
+    Field plate(kFloorSize, kFloorSize);
     constexpr int kCells = 8;
-    const float cell = static_cast<float>(kSize) / kCells;
+    const float cell = static_cast<float>(kFloorSize) / kCells;
     for (int j = 0; j < kCells; ++j)
         for (int i = 0; i < kCells; ++i) {
             const Vec2f c((static_cast<float>(i) + 0.5f) * cell, (static_cast<float>(j) + 0.5f) * cell);
@@ -134,9 +134,9 @@ Result<void> make_surface_metal(Output& out) {
             fill_polygon(plate, diamond, Stroke{1.0f, Paint::Max, 5.0f});
         }
     Rng rng(0x5EE1u);
-    Field scratches(kSize, kSize);
+    Field scratches(kFloorSize, kFloorSize);
     add_scratches(scratches, rng, 120, 10.0f, 80.0f, 1.2f);
-    const Field stain = fractal_noise(kSize, kSize, NoiseKind::Perlin, 4, 5, 53);
+    const Field stain = fractal_noise(kFloorSize, kFloorSize, NoiseKind::Perlin, 4, 5, 53);
     const Field cavity = cavity_occlusion(plate, 6, 1.5f);
     for (size_t i = 0; i < m.color.pixels.size(); ++i) {
         const float s = scratches.values[i], b = brushed.values[i];
@@ -156,14 +156,14 @@ Result<void> make_surface_metal(Output& out) {
 }
 
 Result<void> make_surface_dojo_floor(Output& out) {
-    MaterialFields m = blank_material(kSize, srgb(196, 186, 128), 0.75f, 0.0f);
+    MaterialFields m = blank_material(kFloorSize, srgb(196, 186, 128), 0.75f, 0.0f);
     m.keep_height = true;
     // Two tatami mats side by side (1 x 2 units each), woven across their width, with cloth borders.
-    const float mat_w = kSize / 2.0f, border = 22.0f;
-    const Field fibre = fractal_noise(kSize, kSize, NoiseKind::Value, 256, 2, 61);
-    const Field fade = fractal_noise(kSize, kSize, NoiseKind::Perlin, 4, 4, 62);
-    for (int y = 0; y < kSize; ++y)
-        for (int x = 0; x < kSize; ++x) {
+    const float mat_w = kFloorSize / 2.0f, border = 22.0f;
+    const Field fibre = fractal_noise(kFloorSize, kFloorSize, NoiseKind::Value, 256, 2, 61);
+    const Field fade = fractal_noise(kFloorSize, kFloorSize, NoiseKind::Perlin, 4, 4, 62);
+    for (int y = 0; y < kFloorSize; ++y)
+        for (int x = 0; x < kFloorSize; ++x) {
             const float lx = std::fmod(static_cast<float>(x), mat_w);
             // Weave: rows of rush 4 px high, each a bundle whose shading rises and falls; warp threads every
             // 16 px.

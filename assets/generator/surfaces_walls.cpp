@@ -9,22 +9,22 @@
 
 namespace ks::assetgen {
 namespace {
-constexpr int kSize = 512;
+constexpr int kWallSize = 512;
 }
 
 Result<void> make_surface_concrete(Output& out) {
-    MaterialFields m = blank_material(kSize, srgb(150, 148, 142), 0.85f, 0.0f);
+    MaterialFields m = blank_material(kWallSize, srgb(150, 148, 142), 0.85f, 0.0f);
     m.keep_height = true;
     Rng rng(0xC0C2E7Eu);
-    const Field broad = fractal_noise(kSize, kSize, NoiseKind::Perlin, 4, 6, 11);
-    const Field fine = fractal_noise(kSize, kSize, NoiseKind::Value, 64, 2, 12);
-    const Field pores = cellular_noise(kSize, kSize, 96, 13);
+    const Field broad = fractal_noise(kWallSize, kWallSize, NoiseKind::Perlin, 4, 6, 11);
+    const Field fine = fractal_noise(kWallSize, kWallSize, NoiseKind::Value, 64, 2, 12);
+    const Field pores = cellular_noise(kWallSize, kWallSize, 96, 13);
     // Two by two cast panels per repeat (2 units each), separated by grooves.
     const std::vector<float> seams_at = {0.0f, 256.0f};
-    const Field seams = panel_seams(kSize, kSize, seams_at, seams_at, 5.0f);
-    Field panel_tint(kSize, kSize);
-    for (int y = 0; y < kSize; ++y)
-        for (int x = 0; x < kSize; ++x) panel_tint.at(x, y) = hash01(x / 256, y / 256, 14) - 0.5f;
+    const Field seams = panel_seams(kWallSize, kWallSize, seams_at, seams_at, 5.0f);
+    Field panel_tint(kWallSize, kWallSize);
+    for (int y = 0; y < kWallSize; ++y)
+        for (int x = 0; x < kWallSize; ++x) panel_tint.at(x, y) = hash01(x / 256, y / 256, 14) - 0.5f;
 
     for (size_t i = 0; i < m.height.values.size(); ++i) {
         const float pore = pores.values[i] < 0.12f ? (0.12f - pores.values[i]) * 2.0f : 0.0f;
@@ -32,7 +32,7 @@ Result<void> make_surface_concrete(Output& out) {
             0.55f + broad.values[i] * 0.06f + fine.values[i] * 0.04f - pore - seams.values[i] * 0.35f;
     }
     // Form-tie holes: the round plugs left by the moulds, four per panel, plus steel bolts at panel corners.
-    Field steel(kSize, kSize);
+    Field steel(kWallSize, kWallSize);
     for (int py = 0; py < 2; ++py)
         for (int px = 0; px < 2; ++px) {
             const Vec2f o(static_cast<float>(px * 256), static_cast<float>(py * 256));
@@ -41,12 +41,12 @@ Result<void> make_surface_concrete(Output& out) {
             for (Vec2f bolt : {Vec2f(14, 14), Vec2f(242, 14), Vec2f(14, 242), Vec2f(242, 242)})
                 add_bolt(m.height, o + bolt, 6.5f, 0.12f, &steel, true);
         }
-    Field chips(kSize, kSize);
+    Field chips(kWallSize, kWallSize);
     add_scratches(chips, rng, 40, 6.0f, 40.0f, 2.0f);
     add_scaled(m.height, chips, -0.05f);
 
     const Field cavity = cavity_occlusion(m.height, 6, 2.5f);
-    const Field dirt = grime(kSize, kSize, cavity, 15, 0.8f);
+    const Field dirt = grime(kWallSize, kWallSize, cavity, 15, 0.8f);
     const Color light = srgb(168, 166, 160), dark = srgb(118, 116, 110), stain = srgb(82, 74, 62);
     const Color bolt = srgb(120, 122, 126);
     for (size_t i = 0; i < m.color.pixels.size(); ++i) {
@@ -67,22 +67,22 @@ Result<void> make_surface_concrete(Output& out) {
 }
 
 Result<void> make_surface_wood(Output& out) {
-    MaterialFields m = blank_material(kSize, srgb(140, 96, 60), 0.6f, 0.0f);
+    MaterialFields m = blank_material(kWallSize, srgb(140, 96, 60), 0.6f, 0.0f);
     m.keep_height = true;
     constexpr int kPlanks = 8; // vertical planks of 0.5 units
-    const float plank_w = static_cast<float>(kSize) / kPlanks;
-    const Field warp = fractal_noise(kSize, kSize, NoiseKind::Perlin, 4, 4, 21);
-    const Field fibre = fractal_noise(kSize, kSize, NoiseKind::Value, 128, 2, 22);
-    Field gaps(kSize, kSize);
+    const float plank_w = static_cast<float>(kWallSize) / kPlanks;
+    const Field warp = fractal_noise(kWallSize, kWallSize, NoiseKind::Perlin, 4, 4, 21);
+    const Field fibre = fractal_noise(kWallSize, kWallSize, NoiseKind::Value, 128, 2, 22);
+    Field gaps(kWallSize, kWallSize);
     for (int p = 0; p < kPlanks; ++p) {
         const float x = static_cast<float>(p) * plank_w;
         paint_sdf(
-            gaps, Vec2f(x - 3, 0), Vec2f(x + 3, kSize), [&](Vec2f q) { return std::abs(q.x - x) - 1.2f; },
+            gaps, Vec2f(x - 3, 0), Vec2f(x + 3, kWallSize), [&](Vec2f q) { return std::abs(q.x - x) - 1.2f; },
             Stroke{});
     }
     const Color a = srgb(164, 112, 66), b = srgb(112, 70, 38), knot = srgb(74, 44, 24);
-    for (int y = 0; y < kSize; ++y)
-        for (int x = 0; x < kSize; ++x) {
+    for (int y = 0; y < kWallSize; ++y)
+        for (int x = 0; x < kWallSize; ++x) {
             const int plank = static_cast<int>(static_cast<float>(x) / plank_w);
             // Each plank is a board cut at a different place from a log: rings vary by offset and frequency;
             // the end joint height differs per plank so the joints do not line up.
@@ -107,8 +107,8 @@ Result<void> make_surface_wood(Output& out) {
     // A few knots: dark elliptical swirls.
     Rng rng(0x600Du);
     for (int k = 0; k < 6; ++k) {
-        const Vec2f c(rng.uniform(0.0f, kSize), rng.uniform(0.0f, kSize));
-        Field knot_mask(kSize, kSize);
+        const Vec2f c(rng.uniform(0.0f, kWallSize), rng.uniform(0.0f, kWallSize));
+        Field knot_mask(kWallSize, kWallSize);
         fill_circle(knot_mask, c, rng.uniform(4.0f, 8.0f), Stroke{1.0f, Paint::Max, 4.0f});
         blend(m.color, knot_mask, knot, 0.8f);
         add_scaled(m.height, knot_mask, -0.03f);

@@ -17,6 +17,7 @@ using Quat = glm::quat;
 using DVec3 = glm::dvec3;
 
 inline constexpr float kPi = std::numbers::pi_v<float>;
+inline constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
 
 constexpr float radians(float degrees) {
     return degrees * (kPi / 180.0f);

@@ -43,4 +43,10 @@ std::string format_readable(double value) {
     return format_number(value);
 }
 
+std::string readable_float(float value) {
+    if (std::isnan(value)) return "NaN";
+    if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+    return format_readable(float_to_double(value));
+}
+
 } // namespace ks::jsonio

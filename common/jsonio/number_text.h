@@ -20,5 +20,7 @@ double float_to_double(float value);
 
 // For messages: whole numbers below 1e15 in plain digits (100000, not 1e+05), others as format_number.
 std::string format_readable(double value);
+// For messages about a float field: format_readable of its shortest form; NaN and the infinities by name.
+std::string readable_float(float value);
 
 } // namespace ks::jsonio

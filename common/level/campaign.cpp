@@ -109,8 +109,8 @@ void check_level_files_exist(const std::vector<ListedLevel>& levels, const fs::p
         const std::vector<std::string> beside =
             level_files_in(full.parent_path().empty() ? fs::path(".") : full.parent_path());
         if (std::string near = jsonio::closest_match(relative.filename().string(), beside); !near.empty())
-            hint = "did you mean " + jsonio::quote_text((relative.parent_path() / near).generic_string()) + "? " +
-                   hint;
+            hint = "did you mean " + jsonio::quote_text((relative.parent_path() / near).generic_string()) +
+                   "? " + hint;
         const std::string what = fs::is_directory(full, ec) ? "is a folder, not a level file" : "not found";
         sink.error(member_path(element_path("levels", listed.index), "file"),
                    "level file " + jsonio::quote_text(listed.level.file) + " " + what + " (looked for " +
@@ -148,13 +148,6 @@ Campaign read_campaign(const Json& document, const fs::path& folder, DiagnosticS
     return campaign;
 }
 
-Error combined_error(std::vector<Diagnostic> diagnostics, const std::string& file) {
-    std::vector<Error> errors;
-    for (Diagnostic& d : diagnostics)
-        if (d.severity == Diagnostic::Severity::Error) errors.push_back(std::move(d.error));
-    return jsonio::combined_error(std::move(errors), file);
-}
-
 } // namespace
 
 Result<Campaign> load_campaign_string(std::string_view text, const std::string& file_name,
@@ -169,7 +162,7 @@ Result<Campaign> load_campaign_string(std::string_view text, const std::string& 
     // Warnings (an unknown field) do not stop a campaign; they go to the log.
     for (const Diagnostic& d : diagnostics)
         if (d.severity == Diagnostic::Severity::Warning) log::warn(d.error.str());
-    if (failed) return combined_error(std::move(diagnostics), file_name);
+    if (failed) return errors_of(std::move(diagnostics), file_name);
     return campaign;
 }
 
@@ -194,7 +187,7 @@ Result<void> save_campaign(const Campaign& campaign, const fs::path& file) {
     std::vector<ListedLevel> listed;
     for (size_t i = 0; i < campaign.levels.size(); ++i) listed.push_back({campaign.levels[i], i});
     check_content(campaign.name, listed, campaign.levels.empty(), sink);
-    if (sink.has_errors()) return combined_error(sink.take_sorted(), file.string());
+    if (sink.has_errors()) return errors_of(sink.take_sorted(), file.string());
     return files::write_atomic(file, save_campaign_string(campaign));
 }
 

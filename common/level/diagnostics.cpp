@@ -1,5 +1,6 @@
 #include "level/diagnostics.h"
 
+#include "jsonio/json_path.h"
 #include "jsonio/number_text.h"
 #include "jsonio/text.h"
 
@@ -71,6 +72,17 @@ std::string entity_subject(const Entity& entity) {
     std::string out = std::string(type_name(entity.type())) + " " + std::to_string(entity.id);
     if (!entity.name.empty()) out += " (" + jsonio::quote_text(entity.name) + ")";
     return out;
+}
+
+std::string entity_path(size_t i, const std::vector<size_t>& source_index) {
+    return jsonio::element_path("entities", i < source_index.size() ? source_index[i] : i);
+}
+
+Error errors_of(const std::vector<Diagnostic>& diagnostics, const std::string& file) {
+    std::vector<Error> errors;
+    for (const Diagnostic& d : diagnostics)
+        if (d.severity == Diagnostic::Severity::Error) errors.push_back(d.error);
+    return jsonio::combined_error(std::move(errors), file);
 }
 
 std::string range_text(const FieldInfo& info) {

@@ -69,6 +69,12 @@ class SubjectScope {
 // "robot 12 (\"Guard\")", or "robot 12" for an unnamed one: how messages name an entity.
 std::string entity_subject(const Entity& entity);
 
+// "entities[K]", K being the entity's index in the file (`source_index`, from the reader) where known.
+std::string entity_path(size_t i, const std::vector<size_t>& source_index);
+
+// One error holding every error-severity diagnostic of `file` (warnings are left out).
+Error errors_of(const std::vector<Diagnostic>& diagnostics, const std::string& file);
+
 // "0.01 .. 10000 units": a field's valid range as messages show it.
 std::string range_text(const FieldInfo& info);
 

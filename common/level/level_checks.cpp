@@ -19,12 +19,6 @@ using jsonio::element_path;
 using jsonio::join;
 using jsonio::member_path;
 
-std::string number_text(float v) {
-    if (std::isnan(v)) return "NaN";
-    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-    return jsonio::format_readable(jsonio::float_to_double(v));
-}
-
 void report_not_finite(const std::string& shown, const std::string& path, const FieldInfo& info,
                        DiagnosticSink& sink) {
     sink.error(path, "value is " + shown + " (not a finite number)", "valid: " + range_text(info));
@@ -61,7 +55,7 @@ class FieldChecker {
         : path_(std::move(path)), sink_(sink), subject_(std::move(subject)) {}
 
     void field(float& v, const FieldInfo& info) {
-        check_float(v, number_text(v), path_of(info), info, sink_);
+        check_float(v, jsonio::readable_float(v), path_of(info), info, sink_);
     }
     void field(int& v, const FieldInfo& info) { check_int(v, path_of(info), info, sink_); }
     void field(bool&, const FieldInfo&) {}
@@ -82,7 +76,7 @@ class FieldChecker {
     template <int N>
     void field(glm::vec<N, float>& v, const FieldInfo& info) {
         for (int i = 0; i < N; ++i)
-            check_float(v[i], number_text(v[i]), element_path(path_of(info), i), info, sink_);
+            check_float(v[i], jsonio::readable_float(v[i]), element_path(path_of(info), i), info, sink_);
     }
     void field(Color& c, const FieldInfo& info) {
         const FieldInfo unit_range{info.name, info.tooltip, 0, 1, ""};
@@ -90,13 +84,15 @@ class FieldChecker {
         static const char* const kNames[3] = {"red", "green", "blue"};
         for (int i = 0; i < 3; ++i) {
             if (!std::isfinite(components[i]) || components[i] < 0 || components[i] > 1)
-                check_float(components[i], std::string(kNames[i]) + " " + number_text(components[i]),
+                check_float(components[i],
+                            std::string(kNames[i]) + " " + jsonio::readable_float(components[i]),
                             path_of(info), unit_range, sink_);
         }
     }
     void field(Choice& v, const FieldInfo& info) {
         if (std::find(v.options.begin(), v.options.end(), v.value) == v.options.end())
-            sink_.error(path_of(info), "unknown " + std::string(info.name) + " " + jsonio::quote_text(v.value),
+            sink_.error(path_of(info),
+                        "unknown " + std::string(info.name) + " " + jsonio::quote_text(v.value),
                         "valid: " + join(v.options));
     }
     // min and max of a sound name's FieldInfo bound its length (level.h).
@@ -148,8 +144,8 @@ void check_entity(const Entity& entity, const std::string& path, DiagnosticSink&
     const RobotProps* robot = spawner ? &spawner->robot : entity.try_as<RobotProps>();
     if (robot && robot->eye_radius_min > robot->eye_radius_max)
         sink.error(member_path(props_path, "eye_radius_min"),
-                   "eye_radius_min " + number_text(robot->eye_radius_min) +
-                       " is larger than eye_radius_max " + number_text(robot->eye_radius_max),
+                   "eye_radius_min " + jsonio::readable_float(robot->eye_radius_min) +
+                       " is larger than eye_radius_max " + jsonio::readable_float(robot->eye_radius_max),
                    "the robot starts following inside eye_radius_min and keeps following inside "
                    "eye_radius_max, so min <= max");
     if (spawner && spawner->robot.dummy)

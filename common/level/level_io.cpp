@@ -59,13 +59,6 @@ int read_version(const Json& document, DiagnosticSink& sink) {
     return static_cast<int>(number);
 }
 
-Error combined_error(const std::vector<Diagnostic>& diagnostics, const std::string& file) {
-    std::vector<Error> errors;
-    for (const Diagnostic& d : diagnostics)
-        if (d.severity == Diagnostic::Severity::Error) errors.push_back(d.error);
-    return jsonio::combined_error(std::move(errors), file);
-}
-
 // Parses, migrates, reads and checks; every problem goes to the sink.
 std::optional<Level> parse_level(std::string_view text, DiagnosticSink& sink, jsonio::Document& parsed) {
     parsed = jsonio::Document::parse(text, sink.file(), {"level", format_hint()});
@@ -105,9 +98,8 @@ Result<Level> finish(std::optional<Level> level, DiagnosticSink& sink, const std
         for (const Diagnostic& d : local.diagnostics)
             if (d.severity == Diagnostic::Severity::Warning) log::warn(d.error.str());
     }
-    Result<Level> result = local.has_errors() || !level
-                               ? Result<Level>(combined_error(local.diagnostics, file))
-                               : Result<Level>(std::move(*level));
+    Result<Level> result = local.has_errors() || !level ? Result<Level>(errors_of(local.diagnostics, file))
+                                                        : Result<Level>(std::move(*level));
     if (report) *report = std::move(local);
     return result;
 }
@@ -177,7 +169,7 @@ Result<Entity> entity_from_json(const nlohmann::json& json, const std::string& c
     LoadReport local;
     local.diagnostics = sink.take_sorted();
     Result<Entity> result = local.has_errors() || !entity
-                                ? Result<Entity>(combined_error(local.diagnostics, context))
+                                ? Result<Entity>(errors_of(local.diagnostics, context))
                                 : Result<Entity>(std::move(*entity));
     if (report) *report = std::move(local);
     return result;

@@ -1,4 +1,5 @@
 #include "level/logic_checks.h"
+#include "level/diagnostics.h"
 
 #include "jsonio/json_path.h"
 #include "jsonio/number_text.h"
@@ -20,20 +21,6 @@ using jsonio::member_path;
 // without it, so a generated file with a million dangling targets still loads in bounded time.
 constexpr int kMaxSuggestions = 64;
 
-std::string entity_path(size_t i, const std::vector<size_t>& source_index) {
-    return element_path("entities", i < source_index.size() ? source_index[i] : i);
-}
-
-std::string in_quotes(std::string_view s) {
-    return jsonio::quote_text(s);
-}
-
-std::string number_text(float v) {
-    if (std::isnan(v)) return "NaN";
-    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-    return jsonio::format_readable(jsonio::float_to_double(v));
-}
-
 // The candidate closest to `word`, while the budget lasts.
 std::string closest(std::string_view word, const std::vector<std::string>& candidates, int& budget) {
     if (budget <= 0 || candidates.empty()) return {};
@@ -42,7 +29,7 @@ std::string closest(std::string_view word, const std::vector<std::string>& candi
 }
 
 std::string did_you_mean(const std::string& near) {
-    return near.empty() ? std::string() : "did you mean " + in_quotes(near) + "? ";
+    return near.empty() ? std::string() : "did you mean " + jsonio::quote_text(near) + "? ";
 }
 
 std::string did_you_mean(std::string_view word, const std::vector<std::string>& candidates, int& budget) {
@@ -72,7 +59,8 @@ class TargetChecker {
         case TargetKind::Level:
             if (link.target != kLevelTarget) {
                 sink_.error(target_path,
-                            in_quotes(link.action) + " acts on the level, not on " + in_quotes(link.target),
+                            jsonio::quote_text(link.action) + " acts on the level, not on " +
+                                jsonio::quote_text(link.target),
                             "write \"target\": \"level\"");
                 sink_.tag_last(Diagnostic::Kind::DanglingTarget, std::string(kLevelTarget));
             }
@@ -95,7 +83,7 @@ class TargetChecker {
         };
         if (found.empty()) {
             const std::string near = closest(name, names_.names_where(level_, killable), budget_);
-            sink_.error(path, "no robot or spawner named " + in_quotes(name),
+            sink_.error(path, "no robot or spawner named " + jsonio::quote_text(name),
                         did_you_mean(near) + "name robots and spawners by their \"name\"");
             sink_.tag_last(Diagnostic::Kind::DanglingTarget, near);
         } else if (found.size() > 1) {
@@ -116,7 +104,7 @@ class TargetChecker {
         std::string hint = did_you_mean(near);
         hint += objective_ids_.empty() ? "the level has no objectives; add one under \"objectives\""
                                        : "objectives: " + join(objective_ids_);
-        sink_.error(path, "no objective " + in_quotes(link.target), hint);
+        sink_.error(path, "no objective " + jsonio::quote_text(link.target), hint);
         sink_.tag_last(Diagnostic::Kind::DanglingTarget, near);
     }
 
@@ -132,9 +120,9 @@ class TargetChecker {
             std::vector<std::string> candidates = names_.names_where(level_, takes);
             const std::string near = closest(link.target, candidates, budget_);
             std::string hint = did_you_mean(near);
-            hint += candidates.empty() ? "no entity in the level takes " + in_quotes(link.action)
+            hint += candidates.empty() ? "no entity in the level takes " + jsonio::quote_text(link.action)
                                        : "name the target by its \"name\"";
-            sink_.error(path, "no entity named " + in_quotes(link.target), hint);
+            sink_.error(path, "no entity named " + jsonio::quote_text(link.target), hint);
             sink_.tag_last(Diagnostic::Kind::DanglingTarget, near);
             return;
         }
@@ -145,7 +133,7 @@ class TargetChecker {
         const Entity& target = level_.entities[found.front()];
         if (!entity_takes(target.type(), action)) {
             const auto actions = entity_actions(target.type());
-            sink_.error(path, entity_subject(target) + " cannot " + in_quotes(link.action),
+            sink_.error(path, entity_subject(target) + " cannot " + jsonio::quote_text(link.action),
                         actions.empty() ? with_article(type_name(target.type())) + " takes no actions"
                                         : with_article(type_name(target.type())) +
                                               " takes: " + join(action_names(actions)));
@@ -161,7 +149,7 @@ class TargetChecker {
             holders.push_back(entity_subject(level_.entities[found[i]]));
         if (found.size() > 4) holders.push_back("...");
         sink_.error(path,
-                    in_quotes(name) + " names " + std::to_string(found.size()) + " entities (" +
+                    jsonio::quote_text(name) + " names " + std::to_string(found.size()) + " entities (" +
                         join(holders) + ")",
                     "a name that links or objectives use must be unique; rename the others");
     }
@@ -178,12 +166,12 @@ void check_objectives(const Level& level, TargetChecker& targets, DiagnosticSink
     for (size_t i = 0; i < level.objectives.size(); ++i) {
         const Objective& o = level.objectives[i];
         const std::string path = element_path("objectives", i);
-        SubjectScope scope(sink, "objective " + in_quotes(o.id));
+        SubjectScope scope(sink, "objective " + jsonio::quote_text(o.id));
         if (o.id.empty())
             sink.error(member_path(path, "id"), "the objective has no id",
                        "give it a short unique id, e.g. \"clear_hall\"");
         else if (!seen.insert(o.id).second)
-            sink.error(member_path(path, "id"), "duplicate objective id " + in_quotes(o.id),
+            sink.error(member_path(path, "id"), "duplicate objective id " + jsonio::quote_text(o.id),
                        "objective ids must be unique");
         const size_t length = jsonio::character_count(o.text);
         if (o.text.empty() || length > static_cast<size_t>(kMaxMessageLength))
@@ -256,19 +244,19 @@ void check_links(const std::vector<Link>& links, std::span<const LinkEvent> emit
         const auto event = event_from_name(link.event);
         const bool emits = event && std::find(emitted.begin(), emitted.end(), *event) != emitted.end();
         if (!emits) {
-            const std::string message = event
-                                            ? std::string(source) + " does not emit " + in_quotes(link.event)
-                                            : "unknown event " + in_quotes(link.event);
+            const std::string message =
+                event ? std::string(source) + " does not emit " + jsonio::quote_text(link.event)
+                      : "unknown event " + jsonio::quote_text(link.event);
             sink.error(member_path(link_path, "event"), message,
                        did_you_mean(link.event, emitted_names, budget) + std::string(source) +
                            " emits: " + join(emitted_names));
         }
         if (!action_from_name(link.action))
-            sink.error(member_path(link_path, "action"), "unknown action " + in_quotes(link.action),
+            sink.error(member_path(link_path, "action"), "unknown action " + jsonio::quote_text(link.action),
                        did_you_mean(link.action, every_action, budget) + "valid: " + join(every_action));
         if (!std::isfinite(link.delay) || link.delay < 0.0f || link.delay > static_cast<float>(kMaxLinkDelay))
             sink.error(member_path(link_path, "delay"),
-                       "delay " + number_text(link.delay) +
+                       "delay " + jsonio::readable_float(link.delay) +
                            (std::isfinite(link.delay) ? " is out of range" : " is not a finite number"),
                        "valid: 0 .. " + jsonio::format_readable(kMaxLinkDelay) +
                            " s, the seconds between the event and the action");

@@ -4,6 +4,7 @@
 #include "jsonio/json_path.h"
 #include "jsonio/suggest.h"
 #include "jsonio/text.h"
+#include "level/diagnostics.h"
 #include "level/logic_checks.h"
 
 #include <algorithm>
@@ -24,14 +25,6 @@ struct LinkRef {
     size_t target = kNone; // entity index of a resolved, unique entity target
     std::string path;
 };
-
-std::string in_quotes(std::string_view s) {
-    return jsonio::quote_text(s);
-}
-
-std::string entity_path(size_t i, const std::vector<size_t>& source_index) {
-    return element_path("entities", i < source_index.size() ? source_index[i] : i);
-}
 
 std::vector<LinkRef> gather_links(const Level& level, const NameIndex& names,
                                   const std::vector<size_t>& source_index) {
@@ -146,8 +139,8 @@ void check_door_loops(const Level& level, const std::vector<LinkRef>& refs, Diag
             const LinkRef& r = refs[nodes[component[k]]];
             turns.emplace_back(r.target, *action_from_name(r.link->action));
             if (k < kMaxLoopLinksShown)
-                chain += (k ? "; " : "") + in_quotes(level.entities[r.source].name) + " " + r.link->event +
-                         " -> " + r.link->action + " " + in_quotes(r.link->target);
+                chain += (k ? "; " : "") + jsonio::quote_text(level.entities[r.source].name) + " " +
+                         r.link->event + " -> " + r.link->action + " " + jsonio::quote_text(r.link->target);
         }
         if (component.size() > kMaxLoopLinksShown) chain += "; ...";
         bool both_ways = false;
@@ -187,21 +180,21 @@ void check_reachability(const Level& level, const NameIndex& names, const std::v
             sink.warning(member_path(member_path(path, "props"), "locked"),
                          "the door is locked and no link unlocks or opens it: the player can never pass",
                          "add a link with \"action\": \"unlock\" (or \"open\") and \"target\": " +
-                             in_quotes(e.name));
+                             jsonio::quote_text(e.name));
             sink.tag_last(Diagnostic::Kind::LockedDoor);
         }
     }
     for (size_t i = 0; i < level.objectives.size(); ++i) {
         const Objective& o = level.objectives[i];
         const std::string path = element_path("objectives", i);
-        SubjectScope scope(sink, "objective " + in_quotes(o.id));
+        SubjectScope scope(sink, "objective " + jsonio::quote_text(o.id));
         const bool by_link = std::find(completed.begin(), completed.end(), o.id) != completed.end();
         if (o.kill.empty() && !by_link) {
             sink.warning(path,
                          "nothing completes the objective (no link completes it and it lists nothing to "
                          "kill), so the level can never be won",
-                         "add a link with \"action\": \"complete\" and \"target\": " + in_quotes(o.id) +
-                             ", or list robots or spawners under \"kill\"");
+                         "add a link with \"action\": \"complete\" and \"target\": " +
+                             jsonio::quote_text(o.id) + ", or list robots or spawners under \"kill\"");
             sink.tag_last(Diagnostic::Kind::ObjectiveNeverCompletes);
             continue;
         }
@@ -211,7 +204,7 @@ void check_reachability(const Level& level, const NameIndex& names, const std::v
             if (found.size() == 1 && level.entities[found.front()].type() == EntityType::Spawner &&
                 !spawned[found.front()]) {
                 sink.warning(element_path(member_path(path, "kill"), k),
-                             "spawner " + in_quotes(o.kill[k]) +
+                             "spawner " + jsonio::quote_text(o.kill[k]) +
                                  " never spawns, so the objective can never complete",
                              "add a link that spawns it, or remove it from \"kill\"");
                 sink.tag_last(Diagnostic::Kind::ObjectiveNeverCompletes);

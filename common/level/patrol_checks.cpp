@@ -19,14 +19,9 @@ namespace {
 using jsonio::element_path;
 using jsonio::member_path;
 
-std::string number_text(float v) {
-    if (std::isnan(v)) return "NaN";
-    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-    return jsonio::format_readable(jsonio::float_to_double(v));
-}
-
 std::string point_text(const Vec3& p) {
-    return "(" + number_text(p.x) + ", " + number_text(p.y) + ", " + number_text(p.z) + ")";
+    return "(" + jsonio::readable_float(p.x) + ", " + jsonio::readable_float(p.y) + ", " +
+           jsonio::readable_float(p.z) + ")";
 }
 
 void check_point(const Vec3& point, const std::string& path, DiagnosticSink& sink) {
@@ -67,9 +62,9 @@ float distance_outside(const geometry::Aabb& box, const Vec3& p) {
 }
 
 std::string extent_text(const geometry::Aabb& box) {
-    return "x " + number_text(box.min.x) + " .. " + number_text(box.max.x) + ", y " + number_text(box.min.y) +
-           " .. " + number_text(box.max.y) + ", z " + number_text(box.min.z) + " .. " +
-           number_text(box.max.z);
+    return "x " + jsonio::readable_float(box.min.x) + " .. " + jsonio::readable_float(box.max.x) + ", y " +
+           jsonio::readable_float(box.min.y) + " .. " + jsonio::readable_float(box.max.y) + ", z " +
+           jsonio::readable_float(box.min.z) + " .. " + jsonio::readable_float(box.max.z);
 }
 
 } // namespace
@@ -99,7 +94,8 @@ void check_patrol_mode_and_wait(const Patrol& patrol, const std::string& path, D
                    hint);
     }
     if (!std::isfinite(patrol.wait) || patrol.wait < 0.0f || patrol.wait > static_cast<float>(kMaxPatrolWait))
-        sink.error(member_path(path, "wait"), "patrol wait " + number_text(patrol.wait) + " is out of range",
+        sink.error(member_path(path, "wait"),
+                   "patrol wait " + jsonio::readable_float(patrol.wait) + " is out of range",
                    "valid: 0 .. " + jsonio::format_readable(kMaxPatrolWait) + " s, the same at every point");
 }
 
@@ -122,8 +118,9 @@ void check_patrol_reach(const Level& level, DiagnosticSink& sink, const std::vec
             const float outside = distance_outside(*extent, point);
             if (outside <= static_cast<float>(kPatrolReach)) continue;
             sink.error(element_path(points_path, k),
-                       "patrol point " + point_text(point) + " is " + number_text(std::round(outside)) +
-                           " units outside the level (" + extent_text(*extent) + ")",
+                       "patrol point " + point_text(point) + " is " +
+                           jsonio::readable_float(std::round(outside)) + " units outside the level (" +
+                           extent_text(*extent) + ")",
                        "move it to where the robot can walk; at most " +
                            jsonio::format_readable(kPatrolReach) + " units outside the level's entities");
         }

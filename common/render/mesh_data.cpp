@@ -11,10 +11,10 @@ geometry::Aabb MeshData::bounds() const {
 }
 
 namespace {
-struct Face {
+struct BoxFaceAxes {
     Vec3 normal, u, v; // outward normal and the two in-plane axes (u x v = normal)
 };
-constexpr Face kFaces[6] = {
+constexpr BoxFaceAxes kFaces[6] = {
     {{1, 0, 0}, {0, 0, -1}, {0, 1, 0}}, {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},
     {{0, 1, 0}, {1, 0, 0}, {0, 0, -1}}, {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},
     {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},  {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}},
@@ -41,7 +41,7 @@ void append_box(MeshData& mesh, const Vec3& center, const Vec3& size, const Mat4
     const float inv_repeat = 1.0f / std::max(world_per_repeat, 1e-4f);
     const Mat3 normal_m = glm::transpose(glm::inverse(Mat3(to_world)));
     const Vec3 half = size * 0.5f;
-    for (const Face& f : kFaces) {
+    for (const BoxFaceAxes& f : kFaces) {
         auto base = static_cast<std::uint32_t>(mesh.vertices.size());
         Vec3 wn = glm::normalize(normal_m * f.normal);
         Vec3 u_axis, v_axis;

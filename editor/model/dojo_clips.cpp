@@ -14,8 +14,6 @@ namespace {
 using dojo_support::clip_at;
 using dojo_support::clip_list;
 
-constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
-
 std::vector<std::string> clip_names(const anim::AnimationFile& file) {
     std::vector<std::string> names;
     for (const anim::ClipDef& c : file.clips) names.push_back(c.name);

@@ -14,7 +14,6 @@ using dojo_support::clip_at;
 using dojo_support::seconds_text;
 
 constexpr const char* kChannelNames[] = {"rot.x", "rot.y", "rot.z", "pos.x", "pos.y", "pos.z"};
-constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
 
 Result<anim::PhaseDef*> phase_at(anim::AnimationFile& file, std::size_t clip, std::size_t phase) {
     auto found = clip_at(file, clip);

@@ -3,6 +3,7 @@
 // clip. Each is one undo step through model/dojo_clips.h; a refusal (a required clip, a taken name) shows
 // the model's message under the list.
 #include "ui/dojo_panel.h"
+#include "ui/panel_style.h"
 
 #include <imgui.h>
 
@@ -12,7 +13,6 @@
 namespace ks::editor::ui {
 
 namespace {
-const ImVec4 kErrorColour(1.0f, 0.4f, 0.35f, 1.0f);
 
 // A small padlock in the text colour, `size` pixels high, at the cursor (a Dummy reserves its place).
 void draw_lock(float size) {

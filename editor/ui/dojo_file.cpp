@@ -3,6 +3,7 @@
 // moved), a notice offers to reload it, and reloading over unsaved edits or saving over outside changes
 // asks first.
 #include "ui/dojo_panel.h"
+#include "ui/panel_style.h"
 
 #include <imgui.h>
 
@@ -12,7 +13,6 @@ namespace ks::editor::ui {
 
 namespace {
 constexpr double kDiskCheckSeconds = 1.0;
-const ImVec4 kErrorColour(1.0f, 0.4f, 0.35f, 1.0f);
 const ImVec4 kNoticeColour(1.0f, 0.78f, 0.35f, 1.0f);
 } // namespace
 

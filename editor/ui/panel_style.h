@@ -13,6 +13,10 @@ inline constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoMove | ImGuiW
                                                 ImGuiWindowFlags_NoCollapse |
                                                 ImGuiWindowFlags_NoBringToFrontOnFocus;
 
+// Text of an error (a clip that failed to load, a refused edit); warnings use kWarningColour.
+inline const ImVec4 kErrorColour(1.0f, 0.4f, 0.35f, 1.0f);
+inline const ImVec4 kWarningColour(1.0f, 0.8f, 0.3f, 1.0f);
+
 inline void place_panel(float x, float y, float w, float h) {
     ImGui::SetNextWindowPos(ImVec2(x, y));
     ImGui::SetNextWindowSize(ImVec2(w, h));

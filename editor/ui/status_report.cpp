@@ -202,7 +202,13 @@ void EditorApp::write_status() {
     s["window"] = {wx, wy};
     // What input the editor sees, so that a test driving it with X events can say why a key did nothing.
     const ImGuiIO& io = ImGui::GetIO();
+    // Keys other than the modifiers held in this frame: a test releases a key once the editor has seen it
+    // pressed, before ImGui's key repeat could fire a second time on a slow frame.
+    int keys_down = 0;
+    for (int k = 0; k < IM_ARRAYSIZE(io.KeysDown); ++k)
+        if (io.KeysDown[k] && (k < GLFW_KEY_LEFT_SHIFT || k > GLFW_KEY_RIGHT_SUPER)) ++keys_down;
     s["input"] = {{"focused", glfwGetWindowAttrib(shell_.window(), GLFW_FOCUSED) != 0},
+                  {"keys_down", keys_down},
                   {"ctrl", io.KeyCtrl},
                   {"shift", io.KeyShift},
                   {"text_input", io.WantTextInput},

@@ -12,7 +12,7 @@ using namespace ks::audio;
 
 namespace {
 
-constexpr float kFrame = 1.0f / 60.0f;
+constexpr float kVoiceFrame = 1.0f / 60.0f;
 
 SoundBank test_bank() {
     SoundBank bank;
@@ -23,7 +23,7 @@ SoundBank test_bank() {
     return bank;
 }
 
-AudioEngine loopback(EngineSettings settings = {}) {
+AudioEngine voice_engine(EngineSettings settings = {}) {
     auto engine = AudioEngine::open_loopback(test_bank(), 48000, settings);
     REQUIRE_MESSAGE(engine.ok(), engine.error().str());
     return std::move(*engine);
@@ -39,11 +39,11 @@ PlayParams params(const char* sound, Vec3 position, int priority = 0) {
 
 // A scripted minute of game: sounds start, move, stop, go behind walls, the listener turns.
 std::vector<std::int16_t> scripted_render() {
-    AudioEngine engine = loopback();
+    AudioEngine engine = voice_engine();
     std::vector<std::int16_t> out;
     VoiceHandle motor;
     for (int frame = 0; frame < 90; ++frame) {
-        const float t = static_cast<float>(frame) * kFrame;
+        const float t = static_cast<float>(frame) * kVoiceFrame;
         engine.set_listener(Vec3(t, 1.5f, 0.0f), Vec3(std::sin(t), 0.0f, -std::cos(t)),
                             Vec3(0.0f, 1.0f, 0.0f));
         if (frame == 0) {
@@ -56,7 +56,7 @@ std::vector<std::int16_t> scripted_render() {
             engine.play(params("blip", Vec3(static_cast<float>(frame % 11) - 5.0f, 0.0f, -3.0f)));
         engine.set_position(motor, Vec3(-5.0f + t * 4.0f, 1.0f, -5.0f));
         if (frame == 60) engine.stop(motor);
-        engine.update(kFrame, [&](Vec3, Vec3 source) { return source.x > 0.0f && frame > 30; });
+        engine.update(kVoiceFrame, [&](Vec3, Vec3 source) { return source.x > 0.0f && frame > 30; });
         const auto block = test::render(engine, 800);
         out.insert(out.end(), block.begin(), block.end());
     }
@@ -74,7 +74,7 @@ TEST_CASE("loopback: the same calls in the same order render byte-identical samp
 }
 
 TEST_CASE("loopback: a sound that does not exist plays nothing, returns an invalid handle, warns once") {
-    AudioEngine engine = loopback();
+    AudioEngine engine = voice_engine();
     log::Capture capture;
     const VoiceHandle voice = engine.play(params("no_such_sound", Vec3(0.0f)));
     CHECK_FALSE(voice.valid());
@@ -83,7 +83,7 @@ TEST_CASE("loopback: a sound that does not exist plays nothing, returns an inval
     engine.set_volume(voice, 0.5f);
     engine.stop(voice);
     engine.play(params("no_such_sound", Vec3(0.0f)));
-    engine.update(kFrame);
+    engine.update(kVoiceFrame);
     CHECK(test::rms_both(test::render(engine, 4800)) < 2.0);
     CHECK(engine.stats().active_voices == 0);
     CHECK(capture.count(log::Level::Warn) == 1);
@@ -94,13 +94,13 @@ TEST_CASE("loopback: a sound that does not exist plays nothing, returns an inval
 }
 
 TEST_CASE("loopback: a one-shot ends by itself and its handle goes stale") {
-    AudioEngine engine = loopback();
+    AudioEngine engine = voice_engine();
     const VoiceHandle blip = engine.play(params("blip", Vec3(0.0f, 0.0f, -2.0f)));
     CHECK(engine.is_playing(blip));
-    engine.update(kFrame);
+    engine.update(kVoiceFrame);
     CHECK(test::rms_both(test::render(engine, 2400)) > 1000.0);
     test::render(engine, 4800); // past its 0.1 s
-    engine.update(kFrame);
+    engine.update(kVoiceFrame);
     CHECK_FALSE(engine.is_playing(blip));
     CHECK(engine.stats().active_voices == 0);
 
@@ -116,7 +116,7 @@ TEST_CASE("loopback: a one-shot ends by itself and its handle goes stale") {
 TEST_CASE("loopback: the voice limit steals the least important voice and drops the less important sound") {
     EngineSettings settings;
     settings.voices = 4;
-    AudioEngine engine = loopback(settings);
+    AudioEngine engine = voice_engine(settings);
     engine.set_listener(Vec3(0.0f), Vec3(0.0f, 0.0f, -1.0f), Vec3(0.0f, 1.0f, 0.0f));
     std::vector<VoiceHandle> voices;
     for (int i = 0; i < 4; ++i) {
@@ -124,7 +124,7 @@ TEST_CASE("loopback: the voice limit steals the least important voice and drops 
         p.loop = true;
         voices.push_back(engine.play(p));
     }
-    engine.update(kFrame);
+    engine.update(kVoiceFrame);
     CHECK(engine.stats().active_voices == 4);
     // Same priority, louder than the farthest (quietest) voice: it takes that one's slot.
     const VoiceHandle near = engine.play(params("blip", Vec3(0.0f, 0.0f, -2.0f), 1));
@@ -149,7 +149,7 @@ TEST_CASE("audio: without an output device the engine runs silently after one no
     silent.set_listener(Vec3(0.0f), Vec3(0.0f, 0.0f, -1.0f), Vec3(0.0f, 1.0f, 0.0f));
     silent.set_volumes({});
     silent.set_game_paused(true);
-    silent.update(kFrame, [](Vec3, Vec3) { return true; });
+    silent.update(kVoiceFrame, [](Vec3, Vec3) { return true; });
     std::vector<std::int16_t> out(200, 123);
     silent.render(out.data(), 100);
     CHECK(std::all_of(out.begin(), out.end(), [](std::int16_t s) { return s == 0; }));
@@ -165,5 +165,5 @@ TEST_CASE("audio: without an output device the engine runs silently after one no
         CHECK(capture.text().find("audio: no output device (") != std::string::npos);
         CHECK(capture.text().find("); running silently") != std::string::npos);
     }
-    device.update(kFrame);
+    device.update(kVoiceFrame);
 }

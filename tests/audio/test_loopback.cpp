@@ -10,7 +10,7 @@ using namespace ks::audio;
 
 namespace {
 
-constexpr float kFrame = 1.0f / 60.0f;
+constexpr float kLoopbackFrame = 1.0f / 60.0f;
 constexpr int kHalfSecond = 24000;
 
 SoundBank noise_bank() {
@@ -39,7 +39,7 @@ double left_over_right_db(Vec3 position, Vec3 forward = Vec3(0.0f, 0.0f, -1.0f))
     AudioEngine engine = loopback();
     engine.set_listener(Vec3(0.0f), forward, Vec3(0.0f, 1.0f, 0.0f));
     engine.play(noise_at(position));
-    engine.update(kFrame);
+    engine.update(kLoopbackFrame);
     const auto out = test::render(engine, kHalfSecond);
     return test::db(test::rms(out, 0) / std::max(test::rms(out, 1), 1.0));
 }
@@ -65,7 +65,7 @@ TEST_CASE("loopback: a source behind the listener is duller than the same source
     auto render_at = [](Vec3 position) {
         AudioEngine engine = loopback();
         engine.play(noise_at(position));
-        engine.update(kFrame);
+        engine.update(kLoopbackFrame);
         return test::render(engine, kHalfSecond);
     };
     const auto front = render_at(Vec3(0.0f, 0.0f, -6.0f)), behind = render_at(Vec3(0.0f, 0.0f, 6.0f));
@@ -90,7 +90,7 @@ TEST_CASE("loopback: distance attenuation follows attenuation.h, silent past the
         p.ref_distance = 4.0f;
         p.max_distance = 64.0f;
         engine.play(p);
-        engine.update(kFrame);
+        engine.update(kLoopbackFrame);
         return test::rms_both(test::render(engine, kHalfSecond));
     };
     const double at_4 = level_at(4.0f), at_8 = level_at(8.0f), at_16 = level_at(16.0f),
@@ -112,7 +112,7 @@ TEST_CASE("loopback: a blocked source is quieter and loses its highs") {
     auto render_with = [](bool wall) {
         AudioEngine engine = loopback();
         engine.play(noise_at(Vec3(0.0f, 0.0f, -3.0f)));
-        engine.update(kFrame, [&](Vec3, Vec3) { return wall; });
+        engine.update(kLoopbackFrame, [&](Vec3, Vec3) { return wall; });
         CHECK(engine.stats().rays_this_update == 1);
         return test::render(engine, kHalfSecond);
     };
@@ -133,12 +133,12 @@ TEST_CASE("loopback: occlusion fades in and out without a jump") {
     engine.play(noise_at(Vec3(0.0f, 0.0f, -3.0f)));
     bool wall = false;
     auto blocked = [&](Vec3, Vec3) { return wall; };
-    engine.update(kFrame, blocked);
+    engine.update(kLoopbackFrame, blocked);
     const double clear = test::rms_both(test::render(engine, 800));
     wall = true;
     std::vector<double> levels;
     for (int frame = 0; frame < 30; ++frame) {
-        engine.update(kFrame, blocked);
+        engine.update(kLoopbackFrame, blocked);
         levels.push_back(test::rms_both(test::render(engine, 800)));
     }
     // Each 60 Hz frame moves at most 19% of the way: no frame drops by more than 3 dB.
@@ -158,15 +158,15 @@ TEST_CASE("loopback: pausing the game pauses game voices, not menu voices") {
         p.game = game_voice;
         p.bus = game_voice ? Bus::Effects : Bus::Ui;
         const VoiceHandle voice = engine.play(p);
-        engine.update(kFrame);
+        engine.update(kLoopbackFrame);
         test::render(engine, 4800);
         engine.set_game_paused(paused);
-        engine.update(kFrame);
+        engine.update(kLoopbackFrame);
         test::render(engine, 1024); // OpenAL Soft fades a pausing voice out over its next mix
         const double during = test::rms_both(test::render(engine, 4800));
         CHECK(engine.is_playing(voice)); // paused, not ended
         engine.set_game_paused(false);
-        engine.update(kFrame);
+        engine.update(kLoopbackFrame);
         const double after = test::rms_both(test::render(engine, 4800));
         CHECK(after > 1000.0);
         return during;
@@ -181,10 +181,10 @@ TEST_CASE("loopback: pausing the game pauses game voices, not menu voices") {
     PlayParams p = noise_at(Vec3(0.0f));
     p.positional = false;
     engine.play(p);
-    engine.update(kFrame);
+    engine.update(kLoopbackFrame);
     CHECK(test::rms_both(test::render(engine, 4800)) < 2.0);
     engine.set_game_paused(false);
-    engine.update(kFrame);
+    engine.update(kLoopbackFrame);
     CHECK(test::rms_both(test::render(engine, 4800)) > 1000.0);
 }
 
@@ -196,7 +196,7 @@ TEST_CASE("loopback: master, bus volumes and mute scale the output") {
         p.positional = false;
         p.bus = bus;
         engine.play(p);
-        engine.update(kFrame);
+        engine.update(kLoopbackFrame);
         return test::rms_both(test::render(engine, 9600));
     };
     const double full = level({}, Bus::Effects);

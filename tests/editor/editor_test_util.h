@@ -3,6 +3,7 @@
 #include "level/level_io.h"
 #include "model/autosave.h"
 #include "model/editor.h"
+#include "model/script.h"
 #include "test_support.h"
 
 #include <doctest/doctest.h>
@@ -53,6 +54,25 @@ player_start 0,0,15
 objective add shutdown Shut down the simulation at the control panel
 link 13 add on_use shutdown complete
 )";
+
+// Ids of kTwoRoomScript's door, robot and control panel.
+constexpr int kDoor = 9, kRobot = 10, kPanel = 13;
+
+// The editor after kTwoRoomScript (the test stops if the script fails).
+inline editor::Editor two_rooms() {
+    editor::Editor ed;
+    auto r = editor::run_script_text(kTwoRoomScript, "two_rooms.kss", {}, ed);
+    REQUIRE_MESSAGE(r.ok(), (r.ok() ? std::string() : r.error().str()));
+    return ed;
+}
+
+// The viewport size the view and picking tests use.
+inline const Vec2 kViewport(960.0f, 540.0f);
+
+// A visibility filter that shows every entity.
+inline bool all_shown(const level::Entity&) {
+    return true;
+}
 
 // A clock the test moves by hand, for the autosaver's idle timing.
 struct FakeClock {

@@ -31,7 +31,7 @@ void grid_matches_compiled(const anim::AnimationFile& file) {
 }
 
 template <class Edit>
-void refused(anim::AnimationFile& file, Edit&& edit, const std::string& expected) {
+void refused_blend(anim::AnimationFile& file, Edit&& edit, const std::string& expected) {
     const std::string before = text(file);
     auto result = edit();
     REQUIRE_FALSE(result.ok());
@@ -80,11 +80,11 @@ TEST_CASE("dojo blends: set, update and clear cells and the default; a cleared c
     REQUIRE(clear_blend(file, "alert", "idle"));
     CHECK(blend_grid(file).at(alert, idle).seconds == 0.7); // the wildcard now
     CHECK(blend_grid(file).at(alert, idle).source == BlendCell::Source::Wildcard);
-    refused(
+    refused_blend(
         file, [&] { return clear_blend(file, "alert", "idle"); }, "comes from a pair with *");
     REQUIRE(clear_blend(file, "*", "idle"));
     CHECK(blend_grid(file).at(alert, idle).source == BlendCell::Source::Default);
-    refused(
+    refused_blend(
         file, [&] { return clear_blend(file, "alert", "idle"); }, "uses the default blend (0.2 s)");
 
     // Duplicate pairs (a hand-edited file) collapse to one when the cell is set.
@@ -96,15 +96,15 @@ TEST_CASE("dojo blends: set, update and clear cells and the default; a cleared c
     CHECK(dojo_file_issues(file).empty());
     grid_matches_compiled(file);
 
-    refused(
+    refused_blend(
         file, [&] { return set_blend(file, "alert", "idle", -0.1); }, "blend time -0.1 s is out of range");
-    refused(
+    refused_blend(
         file, [&] { return set_blend(file, "alert", "idle", std::nan("")); }, "out of range");
-    refused(
+    refused_blend(
         file, [&] { return set_blend(file, "alert", "idle", 10.5); }, "seconds in [0, 10 s]");
-    refused(
+    refused_blend(
         file, [&] { return set_blend(file, "alrt", "idle", 0.1); }, "did you mean 'alert'?");
-    refused(
+    refused_blend(
         file, [&] { return set_default_blend(file, INFINITY); }, "out of range");
     CHECK(set_blend(file, "alert", "idle", 0).ok()); // a cut is allowed
     CHECK(set_blend(file, "alert", "idle", kMaxBlendSeconds).ok());
@@ -152,23 +152,23 @@ TEST_CASE("dojo events: added, moved, renamed, re-sounded and removed; always so
     CHECK(names() == "flashc");
     CHECK(dojo_file_issues(file).empty());
 
-    refused(
+    refused_blend(
         file, [&] { return add_event(file, pose, 0.31, "late"); }, "event time 0.31 s is outside clip");
-    refused(
+    refused_blend(
         file, [&] { return add_event(file, pose, -0.1, "early"); }, "a time in [0, 0.3 s]");
-    refused(
+    refused_blend(
         file, [&] { return add_event(file, pose, 0.1, ""); }, "an event needs a name");
-    refused(
+    refused_blend(
         file, [&] { return add_event(file, pose, 0.1, "x", "Robot Shot"); }, "other than a-z, 0-9 and _");
-    refused(
+    refused_blend(
         file, [&] { return rename_event(file, pose, 0, ""); }, "an event needs a name");
-    refused(
+    refused_blend(
         file, [&] { return set_event_sound(file, pose, 0, "shot.wav"); }, "without its .wav");
-    refused(
+    refused_blend(
         file, [&] { return remove_event(file, pose, 2); }, "has no event 3");
-    refused(
+    refused_blend(
         file, [&] { return move_event(file, pose, 0, std::nan("")); }, "not a number");
-    refused(
+    refused_blend(
         file, [&] { return add_event(file, 99, 0.1, "x"); }, "clip 99 does not exist");
 }
 

@@ -39,7 +39,7 @@ float largest_angle(const anim::Pose& a, const anim::Pose& b) {
 
 // Runs an edit that must fail: the error's text contains `expected`, and the file and history are unchanged.
 template <class Edit>
-void refused(anim::AnimationFile& file, DojoHistory& history, Edit&& edit, const std::string& expected) {
+void refused_clip(anim::AnimationFile& file, DojoHistory& history, Edit&& edit, const std::string& expected) {
     const std::string before = text(file);
     const std::size_t steps = history.undo_count();
     auto result = apply_dojo_edit(file, history, "refused", [&] { return edit(); });
@@ -69,15 +69,15 @@ TEST_CASE("dojo clips: a new empty clip is one 0.5 s key with no targets, one un
     CHECK(history.undo_count() == 1);
     CHECK(history.undo_name() == "new clip wave");
 
-    refused(
+    refused_clip(
         file, history, [&] { return new_clip(file, "wave"); }, "a clip named 'wave' already exists");
-    refused(
+    refused_clip(
         file, history, [&] { return new_clip(file, "wave"); }, "e.g. 'wave_copy'");
-    refused(
+    refused_clip(
         file, history, [&] { return new_clip(file, ""); }, "a clip needs a name");
-    refused(
+    refused_clip(
         file, history, [&] { return new_clip(file, "big wave"); }, "other than letters, digits, _ and -");
-    refused(
+    refused_clip(
         file, history, [&] { return new_clip(file, "*"); }, "other than letters");
 
     REQUIRE(history.undo(file));
@@ -119,13 +119,13 @@ TEST_CASE("dojo clips: a new clip from a pose reaches that pose; pose values are
     // A pose the file cannot hold is refused whole.
     DojoHistory history;
     std::vector<NodePoseValue> bad = {{"tail", DVec3(0), DVec3(0)}};
-    refused(
+    refused_clip(
         file, history, [&] { return new_clip(file, "wag", bad); }, "unknown node 'tail'");
     bad = {{"chest", DVec3(0), DVec3(0)}, {"chest", DVec3(1), DVec3(0)}};
-    refused(
+    refused_clip(
         file, history, [&] { return new_clip(file, "wag", bad); }, "lists node 'chest' twice");
     bad = {{"chest", DVec3(0, 1e9, 0), DVec3(0)}};
-    refused(
+    refused_clip(
         file, history, [&] { return new_clip(file, "wag", bad); }, "out of range");
     CHECK_FALSE(clip_pose_values(file, death, -1.0).ok());
     CHECK_FALSE(clip_pose_values(file, 99, 0.0).ok());
@@ -160,9 +160,9 @@ TEST_CASE("dojo clips: duplicate names copies, rename follows blends and next, d
 
     // Deleting a clip another plays next is refused, naming who; once that is undone, it goes with its pairs.
     const std::size_t stroll = index_of(file, "stroll");
-    refused(
+    refused_clip(
         file, history, [&] { return delete_clip(file, stroll); }, "'idle_copy_2' plays it next");
-    refused(
+    refused_clip(
         file, history, [&] { return rename_clip(file, stroll, "idle"); }, "already exists");
     REQUIRE(set_loop_mode(file, index_of(file, "idle_copy_2"), anim::LoopMode::Once));
     CHECK(file.clips[index_of(file, "idle_copy_2")].next.empty());
@@ -184,21 +184,21 @@ TEST_CASE("dojo clips: required clips cannot be deleted or renamed, and the refu
         const std::size_t c = index_of(file, required.name);
         INFO(required.name);
         CHECK(clip_protection(file, c) == required.reason);
-        refused(
+        refused_clip(
             file, history, [&] { return delete_clip(file, c); },
             std::string("cannot delete '") + required.name + "': " + required.reason);
-        refused(
+        refused_clip(
             file, history, [&] { return rename_clip(file, c, "renamed"); },
             std::string("cannot rename '") + required.name + "': " + required.reason);
     }
-    refused(
+    refused_clip(
         file, history, [&] { return delete_clip(file, index_of(file, "death")); },
         "the game plays 'death' when a robot dies");
     REQUIRE(new_clip(file, "wave"));
     CHECK(clip_protection(file, index_of(file, "wave")).empty());
     // The last clip of a file that is not the robot's cannot go either.
     anim::AnimationFile single = dojo_test::nod_file();
-    refused(
+    refused_clip(
         single, history, [&] { return delete_clip(single, 0); }, "the file's only clip");
     // Renaming to its own name is no change and no error.
     CHECK(rename_clip(single, 0, "nod").ok());
@@ -217,21 +217,21 @@ TEST_CASE("dojo clips: loop modes once, loop, ping_pong and next; zero length an
     CHECK(file.clips[pose].next == "shooting");
     CHECK(dojo_file_issues(file).empty());
 
-    refused(
+    refused_clip(
         file, history, [&] { return set_loop_mode(file, reset, anim::LoopMode::PingPong); },
         "clip 'reset' has zero length, so it cannot ping-pong");
-    refused(
+    refused_clip(
         file, history, [&] { return set_loop_mode(file, reset, anim::LoopMode::Loop); }, "cannot loop");
-    refused(
+    refused_clip(
         file, history, [&] { return set_loop_mode(file, pose, anim::LoopMode::Next); },
         "needs the clip to play next");
-    refused(
+    refused_clip(
         file, history, [&] { return set_loop_mode(file, pose, anim::LoopMode::Next, "shootin"); },
         "did you mean 'shooting'?");
-    refused(
+    refused_clip(
         file, history, [&] { return set_loop_mode(file, pose, anim::LoopMode::Once, "death"); },
         "only loop mode 'next'");
-    refused(
+    refused_clip(
         file, history, [&] { return set_loop_mode(file, reset, anim::LoopMode::Next, "reset"); },
         "returns to itself");
 

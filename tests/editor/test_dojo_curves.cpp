@@ -21,7 +21,7 @@ ClipCurve curve(const anim::AnimationFile& file, const std::string& node, CurveC
 }
 
 template <class Edit>
-void refused(anim::AnimationFile& file, Edit&& edit, const std::string& expected) {
+void refused_curve(anim::AnimationFile& file, Edit&& edit, const std::string& expected) {
     const std::string before = text(file);
     DojoHistory history;
     auto result = apply_dojo_edit(file, history, "refused", [&] { return edit(); });
@@ -106,15 +106,15 @@ TEST_CASE("dojo curves: moving a key in time keeps the others in place; crossing
     // Meeting a neighbour is allowed (a zero-length phase sets its keys at once); passing it is not.
     REQUIRE(move_key_time(file, 0, 0, 1.0));
     CHECK(file.clips[0].phases[1].duration == 0);
-    refused(
+    refused_curve(
         file, [&] { return move_key_time(file, 0, 0, 1.2); }, "it would pass key 2 at 1 s");
-    refused(
+    refused_curve(
         file, [&] { return move_key_time(file, 0, 0, -0.1); }, "before the clip's start");
-    refused(
+    refused_curve(
         file, [&] { return move_key_time(file, 0, 1, 0.9); }, "it would pass key 1 at 1 s");
-    refused(
+    refused_curve(
         file, [&] { return move_key_time(file, 0, 0, std::nan("")); }, "not a number");
-    refused(
+    refused_curve(
         file, [&] { return move_key_time(file, 0, 2, 0.5); }, "clip 'nod' has no key 3");
     REQUIRE(history.undo(file));
     CHECK(text(file) == original); // the direct edit after it went with the snapshot
@@ -124,13 +124,13 @@ TEST_CASE("dojo curves: moving a key in time keeps the others in place; crossing
     file = nod_file();
     REQUIRE(move_key_time(file, 0, 1, 1.5));
     CHECK(file.clips[0].duration() == doctest::Approx(1.5));
-    refused(
+    refused_curve(
         file, [&] { return move_key_time(file, 0, 1, 0.6); }, "event time 0.9 s is outside clip 'nod'");
     file.clips[0].events.clear();
     REQUIRE(move_key_time(file, 0, 1, 0.6));
     REQUIRE(move_key_time(file, 0, 0, 0));
     REQUIRE(set_loop_mode(file, 0, anim::LoopMode::Loop));
-    refused(
+    refused_curve(
         file, [&] { return move_key_time(file, 0, 1, 0); }, "looping clip 'nod' has zero length");
 }
 
@@ -150,13 +150,13 @@ TEST_CASE("dojo curves: a key's value sets the target's component, a relative ke
     CHECK(curve(file, "head", CurveChannel::PosX).keys[1].value == doctest::Approx(0.25).epsilon(1e-5));
     CHECK(anim::validate(file).empty()); // (not the robot's file: it has no required clips)
 
-    refused(
+    refused_curve(
         file, [&] { return set_key_value(file, 0, 0, "head", CurveChannel::RotY, 1); },
         "node 'head' has no key in key 1 of 'nod'");
-    refused(
+    refused_curve(
         file, [&] { return set_key_value(file, 0, 0, "chest", CurveChannel::RotX, std::nan("")); },
         "not a number");
-    refused(
+    refused_curve(
         file, [&] { return set_key_value(file, 0, 0, "chest", CurveChannel::RotX, 1e9); }, "out of range");
     REQUIRE(history.undo(file));
     CHECK(*file.clips[0].phases[0].targets[0].rot == DVec3(0, 0, 30));

@@ -20,7 +20,7 @@ struct ScratchClips {
     }
 };
 
-Result<ScriptReport> run(const std::string& text, const std::filesystem::path& base) {
+Result<ScriptReport> run_dojo(const std::string& text, const std::filesystem::path& base) {
     Editor editor;
     return run_script_text(text, "dojo.kss", base, editor);
 }
@@ -85,7 +85,7 @@ expect dojo valid
 dojo save saved.json
 expect dojo clean
 )";
-    auto r = run(script, scratch.dir.path());
+    auto r = run_dojo(script, scratch.dir.path());
     REQUIRE_MESSAGE(r.ok(), (r.ok() ? std::string() : r.error().str()));
     CHECK(r->expectations_checked == 27);
     REQUIRE(r->saved.size() == 1);
@@ -111,17 +111,17 @@ expect dojo clean
 
 TEST_CASE("dojo script: each edit is one undo step; undo all returns to the file as opened") {
     ScratchClips scratch;
-    auto r =
-        run("dojo open robot.json\nblend default 0.5\nclip new a\nclip new b\nblend a b 1\n"
-            "event add a 0.1 x\ndojo undo 2\nexpect clip b exists\nexpect events a 0\nexpect blend a b 0.5\n"
-            "dojo undo all\nexpect clip a missing\ndojo redo all\nexpect events a 1\n"
-            "dojo undo all\ndojo save\nexpect dojo clean\n",
-            scratch.dir.path());
+    auto r = run_dojo(
+        "dojo open robot.json\nblend default 0.5\nclip new a\nclip new b\nblend a b 1\n"
+        "event add a 0.1 x\ndojo undo 2\nexpect clip b exists\nexpect events a 0\nexpect blend a b 0.5\n"
+        "dojo undo all\nexpect clip a missing\ndojo redo all\nexpect events a 1\n"
+        "dojo undo all\ndojo save\nexpect dojo clean\n",
+        scratch.dir.path());
     REQUIRE_MESSAGE(r.ok(), (r.ok() ? std::string() : r.error().str()));
     // Saved back where it came from, byte for byte as it was (the shipped file is canonical).
     CHECK(*files::read_text(scratch.dir / "robot.json") ==
           *files::read_text(ks::test::source_dir() / "assets" / "animations" / "robot.json"));
-    CHECK(error_of(run("dojo open robot.json\nclip new a\ndojo undo 2\n", scratch.dir.path()))
+    CHECK(error_of(run_dojo("dojo open robot.json\nclip new a\ndojo undo 2\n", scratch.dir.path()))
               .find("dojo.kss:3: nothing to undo in the dojo (step 2 of 2)") != std::string::npos);
 }
 
@@ -151,15 +151,16 @@ TEST_CASE("dojo script: refused edits stop at their line with the reason and the
     };
     for (const Case& c : cases) {
         INFO(c.lines);
-        const std::string text = error_of(run(std::string("dojo open robot.json\n") + c.lines + "\n", base));
+        const std::string text =
+            error_of(run_dojo(std::string("dojo open robot.json\n") + c.lines + "\n", base));
         INFO(text);
         CHECK(text.find(c.expected) != std::string::npos);
         CHECK(text.find("dojo.kss:2") != std::string::npos);
     }
-    const std::string unopened = error_of(run("clip new wave\n", base));
+    const std::string unopened = error_of(run_dojo("clip new wave\n", base));
     CHECK(unopened.find("dojo.kss:1: no clip file is open") != std::string::npos);
     CHECK(unopened.find("dojo open") != std::string::npos);
-    CHECK(error_of(run("dojo open missing.json\n", base)).find("missing.json") != std::string::npos);
+    CHECK(error_of(run_dojo("dojo open missing.json\n", base)).find("missing.json") != std::string::npos);
 }
 
 TEST_CASE("dojo script: parse errors name the line and column, all at once, before anything runs") {
@@ -189,7 +190,7 @@ TEST_CASE("dojo script: parse errors name the line and column, all at once, befo
     CHECK(all.find("dojo.kss:8:6: unknown dojo action 'reopen'") != std::string::npos);
     CHECK(all.find("dojo.kss:9:20: loop mode next needs the clip to play next") != std::string::npos);
     CHECK(all.find("dojo.kss:10:20: expected a count of events") != std::string::npos);
-    CHECK(run(text, scratch.dir.path()).ok() == false);
+    CHECK(run_dojo(text, scratch.dir.path()).ok() == false);
     CHECK_FALSE(std::filesystem::exists(scratch.dir / "broken.json")); // line 11 never ran
     // The level parser's hint lists the dojo words too.
     CHECK(parse_script("clop new x\n", "a.kss").error().str().find("dojo clip blend event key") !=
@@ -199,7 +200,8 @@ TEST_CASE("dojo script: parse errors name the line and column, all at once, befo
 TEST_CASE("dojo script: save refuses a file missing required clips and writes nothing") {
     ks::test::ScratchDir dir;
     REQUIRE(anim::save_animation_file(dir / "nod.json", dojo_test::nod_file()).ok());
-    auto r = run("dojo open nod.json\nexpect dojo issue required clips\nclip new wave\ndojo save out.json\n",
+    auto r =
+        run_dojo("dojo open nod.json\nexpect dojo issue required clips\nclip new wave\ndojo save out.json\n",
                  dir.path());
     const std::string text = error_of(r);
     INFO(text);
@@ -209,7 +211,7 @@ TEST_CASE("dojo script: save refuses a file missing required clips and writes no
 }
 
 TEST_CASE("dojo script: 'dojo open' without a file opens the robot's clips") {
-    auto r = run("dojo open\nexpect clip death exists\nexpect dojo valid\nexpect dojo clean\n", {});
+    auto r = run_dojo("dojo open\nexpect clip death exists\nexpect dojo valid\nexpect dojo clean\n", {});
     REQUIRE_MESSAGE(r.ok(), (r.ok() ? std::string() : r.error().str()));
     CHECK(r->expectations_checked == 3);
 }

@@ -7,8 +7,9 @@
 using namespace ks;
 using namespace ks::editor;
 
+using editor_test::kViewport;
+
 namespace {
-const Vec2 kViewport(960.0f, 540.0f);
 
 ViewCamera axis_view(ViewMode mode, Vec3 centre = Vec3(0.0f), float extent = 60.0f) {
     ViewCamera v;

@@ -13,15 +13,13 @@
 using namespace ks;
 using namespace ks::editor;
 
+using editor_test::all_shown;
+
 namespace {
 level::Level logic_hall() {
     auto loaded = level::load_level_file(test::source_dir() / "tests/data/levels/logic_hall.json");
     REQUIRE_MESSAGE(loaded.ok(), (loaded.ok() ? std::string() : loaded.error().str()));
     return *loaded;
-}
-
-bool all_shown(const level::Entity&) {
-    return true;
 }
 
 const level::Entity& named(const level::Level& level, const std::string& name) {

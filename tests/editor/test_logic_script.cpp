@@ -12,17 +12,10 @@ using namespace ks::editor_test;
 namespace {
 
 // kTwoRoomScript's door, robot and panel ids; the script below places the trigger and the message after them.
-constexpr int kDoor = 9, kRobot = 10, kPanel = 13, kTrigger = 14, kMessage = 15;
+constexpr int kTrigger = 14, kMessage = 15; // added to kTwoRoomScript by the tests
 
-Result<ScriptReport> run(Editor& ed, const std::string& text) {
+Result<ScriptReport> run_logic(Editor& ed, const std::string& text) {
     return run_script_text(text, "logic.kss", {}, ed);
-}
-
-Editor two_rooms() {
-    Editor ed;
-    auto r = run(ed, kTwoRoomScript);
-    REQUIRE_MESSAGE(r.ok(), (r.ok() ? std::string() : r.error().str()));
-    return ed;
 }
 
 std::string parse_errors(const std::string& text) {
@@ -59,7 +52,7 @@ expect objectives 2
 TEST_CASE("logic script: builds a level's links and objectives, every line one undo step") {
     Editor ed = two_rooms();
     const size_t steps = ed.history().undo_count();
-    auto r = run(ed, kLogicScript);
+    auto r = run_logic(ed, kLogicScript);
     REQUIRE_MESSAGE(r.ok(), (r.ok() ? std::string() : r.error().str()));
     CHECK(r->expectations_checked == 5);
     // 2 places, 1 set text, 1 name, 2 selects (no step), 2 sets, 5 links, 1 objective add, 1 kill list
@@ -87,9 +80,9 @@ TEST_CASE("logic script: builds a level's links and objectives, every line one u
 
 TEST_CASE("logic script: set, remove, text, kill, move and remove objectives; undo and redo") {
     Editor ed = two_rooms();
-    REQUIRE(run(ed, kLogicScript).ok());
+    REQUIRE(run_logic(ed, kLogicScript).ok());
     const std::string built = text_of(ed);
-    auto r = run(ed, R"(link 14 set 2 delay 2.5
+    auto r = run_logic(ed, R"(link 14 set 2 delay 2.5
 link 14 set 2 once false
 link 14 set 1 event on_exit
 link 14 set 1 action show
@@ -112,11 +105,12 @@ expect link 10 1 on_death Vault_door unlock
     CHECK(ed.level().objectives.size() == 1);
     CHECK(ed.level().objectives[0].id == "shutdown");
     CHECK(ed.level().find(kRobot)->links[0].target == "Vault_door");
-    auto back = run(ed, "undo 11\nexpect objectives 2\nexpect link objective:clear 1 on_complete Door open "
-                        "delay 1\nexpect links 14 2\n");
+    auto back =
+        run_logic(ed, "undo 11\nexpect objectives 2\nexpect link objective:clear 1 on_complete Door open "
+                      "delay 1\nexpect links 14 2\n");
     REQUIRE_MESSAGE(back.ok(), (back.ok() ? std::string() : back.error().str()));
     CHECK(text_of(ed) == built);
-    REQUIRE(run(ed, "redo all\nexpect objectives 1\n").ok());
+    REQUIRE(run_logic(ed, "redo all\nexpect objectives 1\n").ok());
 }
 
 TEST_CASE("logic script: parse errors name file:line:column, with did-you-mean for events and actions") {
@@ -158,10 +152,10 @@ TEST_CASE("logic script: parse errors name file:line:column, with did-you-mean f
 
 TEST_CASE("logic script: run-time refusals stop at their line and change nothing") {
     Editor ed = two_rooms();
-    REQUIRE(run(ed, kLogicScript).ok());
+    REQUIRE(run_logic(ed, kLogicScript).ok());
     const std::string before = text_of(ed);
     auto fails = [&](const std::string& line, const char* part) {
-        auto r = run(ed, line);
+        auto r = run_logic(ed, line);
         REQUIRE_FALSE(r.ok());
         INFO(r.error().str());
         CHECK(r.error().str().find("logic.kss:1") != std::string::npos);
@@ -194,7 +188,7 @@ TEST_CASE("logic script: the logic example in docs/editor.md runs on the two-roo
     const size_t end = doc.find("```", begin);
     REQUIRE(end != std::string::npos);
     Editor ed = two_rooms();
-    auto r = run(ed, doc.substr(begin, end - begin));
+    auto r = run_logic(ed, doc.substr(begin, end - begin));
     REQUIRE_MESSAGE(r.ok(), (r.ok() ? std::string() : r.error().str()));
     CHECK(r->expectations_checked == 2);
     for (const Issue& issue : ed.issues()) {

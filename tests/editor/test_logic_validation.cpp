@@ -14,21 +14,13 @@ namespace {
 
 // kTwoRoomScript: the door between the rooms, the robot in the far room, the control panel (completing the
 // objective "shutdown"). The player starts in the near room (z > 0), the robot stands in the far one (z < 0).
-constexpr int kDoor = 9, kRobot = 10, kPanel = 13;
 
-Editor two_rooms() {
-    Editor ed;
-    auto r = run_script_text(kTwoRoomScript, "two_rooms.kss", {}, ed);
-    REQUIRE_MESSAGE(r.ok(), (r.ok() ? std::string() : r.error().str()));
-    return ed;
-}
-
-Result<ScriptReport> run(Editor& ed, const std::string& text) {
+Result<ScriptReport> run_rules(Editor& ed, const std::string& text) {
     return run_script_text(text, "logic_rules.kss", {}, ed);
 }
 
 void run_ok(Editor& ed, const std::string& text) {
-    auto r = run(ed, text);
+    auto r = run_rules(ed, text);
     REQUIRE_MESSAGE(r.ok(), (r.ok() ? std::string() : r.error().str()));
 }
 
@@ -39,7 +31,7 @@ std::vector<Issue> issues_of(Editor& ed, Rule rule) {
     return out;
 }
 
-level::Link link(std::string event, std::string target, std::string action, float delay = 0) {
+level::Link rule_link(std::string event, std::string target, std::string action, float delay = 0) {
     return {std::move(event), std::move(target), std::move(action), delay, false};
 }
 
@@ -64,10 +56,10 @@ void fix_in_one_step(Editor& ed, Rule rule) {
 TEST_CASE("link_target: a link naming nothing is retargeted to the did-you-mean name, else removed") {
     Editor ed = two_rooms();
     const int trigger = *ed.place(EntityType::Trigger, {0, 0, 10}, 0, "Entry");
-    REQUIRE(ed.link_add(LinkOwner::entity(trigger), link("on_enter", "Door", "open")).ok());
+    REQUIRE(ed.link_add(LinkOwner::entity(trigger), rule_link("on_enter", "Door", "open")).ok());
     CHECK(issues_of(ed, Rule::LinkTarget).empty()); // the good case
 
-    REQUIRE(ed.link_set(LinkOwner::entity(trigger), 0, link("on_enter", "Dor", "open")).ok());
+    REQUIRE(ed.link_set(LinkOwner::entity(trigger), 0, rule_link("on_enter", "Dor", "open")).ok());
     auto issues = issues_of(ed, Rule::LinkTarget);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].severity == IssueSeverity::Error);
@@ -81,10 +73,10 @@ TEST_CASE("link_target: a link naming nothing is retargeted to the did-you-mean 
     REQUIRE(ed.select_issue(issues[0]).ok());
     CHECK(ed.doc().selection == std::vector<int>{trigger});
     fix_in_one_step(ed, Rule::LinkTarget);
-    CHECK(ed.links_of(LinkOwner::entity(trigger))->at(0) == link("on_enter", "Door", "open"));
+    CHECK(ed.links_of(LinkOwner::entity(trigger))->at(0) == rule_link("on_enter", "Door", "open"));
 
     // Nothing close: the fix removes the link. On the level's own links: no entity to select.
-    REQUIRE(ed.link_add(LinkOwner::level(), link("on_start", "Zebra", "open")).ok());
+    REQUIRE(ed.link_add(LinkOwner::level(), rule_link("on_start", "Zebra", "open")).ok());
     issues = issues_of(ed, Rule::LinkTarget);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].entity_id == 0);
@@ -94,7 +86,7 @@ TEST_CASE("link_target: a link naming nothing is retargeted to the did-you-mean 
     CHECK(ed.level().links.empty());
 
     // A win link must name the level.
-    REQUIRE(ed.link_add(LinkOwner::entity(trigger), link("on_exit", "Door", "win")).ok());
+    REQUIRE(ed.link_add(LinkOwner::entity(trigger), rule_link("on_exit", "Door", "win")).ok());
     issues = issues_of(ed, Rule::LinkTarget);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].fix.label == "Retarget to \"level\"");
@@ -113,7 +105,7 @@ TEST_CASE("link_target: kill-list names and links to a deleted entity") {
     CHECK(ed.level().objectives[1].kill == std::vector<std::string>{"Guard"});
 
     // Deleting the door leaves the panel's link naming nothing, and nothing else takes "open": removed.
-    REQUIRE(ed.link_add(LinkOwner::entity(kPanel), link("on_use", "Door", "open")).ok());
+    REQUIRE(ed.link_add(LinkOwner::entity(kPanel), rule_link("on_use", "Door", "open")).ok());
     REQUIRE(ed.delete_entities({kDoor}).ok());
     issues = issues_of(ed, Rule::LinkTarget);
     REQUIRE(issues.size() == 1);
@@ -122,18 +114,18 @@ TEST_CASE("link_target: kill-list names and links to a deleted entity") {
     // Deleting the guard too: its kill-list name goes.
     REQUIRE(ed.delete_entities({kRobot}).ok());
     run_ok(ed, "fix link_target\nexpect no_issue link_target\n");
-    CHECK(ed.level().find(kPanel)->links == std::vector{link("on_use", "shutdown", "complete")});
+    CHECK(ed.level().find(kPanel)->links == std::vector{rule_link("on_use", "shutdown", "complete")});
     CHECK(ed.level().objectives[1].kill.empty());
 }
 
 TEST_CASE("logic_loop: two doors toggling each other with no delay; the fix delays the first link") {
     Editor ed = two_rooms();
     const int other = *ed.place(EntityType::Door, {0, 0, 30}, 0, "Other");
-    REQUIRE(ed.link_add(LinkOwner::entity(kDoor), link("on_open", "Other", "toggle", 0.5f)).ok());
-    REQUIRE(ed.link_add(LinkOwner::entity(other), link("on_open", "Door", "toggle")).ok());
+    REQUIRE(ed.link_add(LinkOwner::entity(kDoor), rule_link("on_open", "Other", "toggle", 0.5f)).ok());
+    REQUIRE(ed.link_add(LinkOwner::entity(other), rule_link("on_open", "Door", "toggle")).ok());
     CHECK(issues_of(ed, Rule::LogicLoop).empty()); // a delay breaks the loop
 
-    REQUIRE(ed.link_set(LinkOwner::entity(kDoor), 0, link("on_open", "Other", "toggle")).ok());
+    REQUIRE(ed.link_set(LinkOwner::entity(kDoor), 0, rule_link("on_open", "Other", "toggle")).ok());
     auto issues = issues_of(ed, Rule::LogicLoop);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].severity == IssueSeverity::Warning);
@@ -163,8 +155,8 @@ TEST_CASE("objective: one nothing can complete gets an on_use -> complete link o
     CHECK(issues[0].message.find("can never be won") != std::string::npos);
     CHECK(issues[0].fix.is<fixes::AddLink>());
     fix_in_one_step(ed, Rule::Objective);
-    CHECK(ed.level().find(kPanel)->links ==
-          std::vector{link("on_use", "shutdown", "complete"), link("on_use", "escape", "complete")});
+    CHECK(ed.level().find(kPanel)->links == std::vector{rule_link("on_use", "shutdown", "complete"),
+                                                        rule_link("on_use", "escape", "complete")});
 
     // Without a control panel there is nothing to add the link to: no fix, and `fix objective` leaves them.
     REQUIRE(ed.delete_entities({kPanel}).ok());
@@ -182,7 +174,7 @@ TEST_CASE("objective: one nothing can complete gets an on_use -> complete link o
     CHECK(issues[0].message.find("never spawns") != std::string::npos);
     CHECK(!issues[0].fix.available());
     const int trigger = *ed.place(EntityType::Trigger, {0, 0, 10}, 0, "Entry");
-    REQUIRE(ed.link_add(LinkOwner::entity(trigger), link("on_enter", "Wave", "spawn")).ok());
+    REQUIRE(ed.link_add(LinkOwner::entity(trigger), rule_link("on_enter", "Wave", "spawn")).ok());
     CHECK(issues_of(ed, Rule::Objective).empty());
     CHECK(ed.level().find(spawner) != nullptr);
 }
@@ -198,12 +190,12 @@ TEST_CASE("objective: a level with no objectives and no win link can never be wo
     fix_in_one_step(ed, Rule::Objective);
     REQUIRE(ed.level().objectives.size() == 1);
     CHECK(ed.level().objectives[0].id == "shutdown");
-    CHECK(ed.level().find(kPanel)->links == std::vector{link("on_use", "shutdown", "complete")});
+    CHECK(ed.level().find(kPanel)->links == std::vector{rule_link("on_use", "shutdown", "complete")});
 
     // A win link is enough; without a panel there is nothing to fix with, and the panel is missed again.
     REQUIRE(ed.undo());
     const int trigger = *ed.place(EntityType::Trigger, {0, 0, -10}, 0, "Exit");
-    REQUIRE(ed.link_add(LinkOwner::entity(trigger), link("on_enter", "level", "win")).ok());
+    REQUIRE(ed.link_add(LinkOwner::entity(trigger), rule_link("on_enter", "level", "win")).ok());
     CHECK(issues_of(ed, Rule::Objective).empty());
     REQUIRE(ed.link_remove(LinkOwner::entity(trigger), 0).ok());
     REQUIRE(ed.delete_entities({kPanel}).ok());
@@ -227,7 +219,7 @@ TEST_CASE("locked_door: a locked door nothing frees is unlocked by the fix") {
 
     // Locked, but the robot's death unlocks it: the good case.
     REQUIRE(ed.undo());
-    REQUIRE(ed.link_add(LinkOwner::entity(kRobot), link("on_death", "Door", "unlock")).ok());
+    REQUIRE(ed.link_add(LinkOwner::entity(kRobot), rule_link("on_death", "Door", "unlock")).ok());
     CHECK(issues_of(ed, Rule::LockedDoor).empty());
     run_ok(ed, "link 10 remove 1\nexpect issue locked_door 9\nfix locked_door\nexpect no_issue locked_door\n"
                "expect field 9 locked false\n");

@@ -12,21 +12,13 @@ using namespace ks::editor_test;
 
 namespace {
 
-constexpr int kRobot = 10; // the robot of kTwoRoomScript, at (3, 0, -10) on the 20 x 40 floor
-
-Editor two_rooms() {
-    Editor ed;
-    auto r = run_script_text(kTwoRoomScript, "two_rooms.kss", {}, ed);
-    REQUIRE_MESSAGE(r.ok(), (r.ok() ? std::string() : r.error().str()));
-    REQUIRE(ed.level().find(kRobot)->try_as<level::RobotProps>());
-    return ed;
-}
-
 const level::Patrol& patrol_of(const Editor& ed, int id = kRobot) {
+    REQUIRE(ed.level().find(id));
+    REQUIRE(ed.level().find(id)->try_as<level::RobotProps>());
     return ed.level().find(id)->as<level::RobotProps>().patrol;
 }
 
-Result<ScriptReport> run(Editor& ed, const std::string& text) {
+Result<ScriptReport> run_patrol(Editor& ed, const std::string& text) {
     return run_script_text(text, "patrol.kss", {}, ed);
 }
 
@@ -112,7 +104,7 @@ TEST_CASE("bad patrol edits are errors that change nothing") {
 TEST_CASE("script: patrol commands edit, expect and undo a route, and it survives save and open") {
     ks::test::ScratchDir dir;
     Editor ed = two_rooms();
-    auto r = run(ed, R"(patrol 10 add 3,0,-10
+    auto r = run_patrol(ed, R"(patrol 10 add 3,0,-10
 patrol 10 add -5,0,-10
 patrol 10 add 0,0,-15 after 0
 patrol 10 move 2 -6,0,-12
@@ -138,7 +130,7 @@ expect valid
     CHECK(patrol.ping_pong());
     CHECK(patrol.wait == 2.0f);
 
-    auto failed = run(ed, "expect patrol 10 5\n");
+    auto failed = run_patrol(ed, "expect patrol 10 5\n");
     REQUIRE_FALSE(failed.ok());
     CHECK(failed.error().str().find("robot 10 has 2 patrol points, expected 5") != std::string::npos);
 }
@@ -163,7 +155,7 @@ TEST_CASE("script: patrol syntax errors point at the word") {
     CHECK(error_of("expect patrol 10").find("bad.kss:1:") != std::string::npos);
     // A failing edit names the script line.
     Editor ed = two_rooms();
-    auto r = run(ed, "patrol 10 add 0,0,0\npatrol 10 remove 4\n");
+    auto r = run_patrol(ed, "patrol 10 add 0,0,0\npatrol 10 remove 4\n");
     REQUIRE_FALSE(r.ok());
     CHECK(r.error().str().find("patrol.kss:2: Remove patrol point: robot 10: no patrol point 4") !=
           std::string::npos);
@@ -194,7 +186,8 @@ TEST_CASE(
     REQUIRE(ed.undo());
     CHECK(patrol_of(ed).points[1] == Vec3(-4, 2.5f, -8));
 
-    auto r = run(ed, "fix patrol\nexpect issue patrol 10\npatrol 10 remove 3\nexpect no_issue patrol\n");
+    auto r =
+        run_patrol(ed, "fix patrol\nexpect issue patrol 10\npatrol 10 remove 3\nexpect no_issue patrol\n");
     REQUIRE_MESSAGE(r.ok(), (r.ok() ? std::string() : r.error().str()));
     CHECK(patrol_of(ed).points[2] == Vec3(-4, 0, -4));
 }

@@ -7,16 +7,16 @@
 using namespace ks;
 using namespace ks::editor;
 
+using editor_test::all_shown;
+
+using editor_test::kViewport;
+
 namespace {
-const Vec2 kViewport(960.0f, 540.0f);
 ViewCamera axis_view(ViewMode mode, Vec3 centre = Vec3(0.0f), float extent = 60.0f) {
     ViewCamera v;
     v.set_viewport(kViewport);
     v.set_view(mode, centre, extent);
     return v;
-}
-bool all_shown(const level::Entity&) {
-    return true;
 }
 } // namespace
 

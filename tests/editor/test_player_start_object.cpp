@@ -13,18 +13,17 @@
 using namespace ks;
 using namespace ks::editor;
 
+using editor_test::all_shown;
+
+using editor_test::kViewport;
+
 namespace {
-const Vec2 kViewport(960.0f, 540.0f);
 
 ViewCamera top_view(Vec3 centre = Vec3(0.0f)) {
     ViewCamera v;
     v.set_viewport(kViewport);
     v.set_view(ViewMode::Top, centre, 60.0f);
     return v;
-}
-
-bool all_shown(const level::Entity&) {
-    return true;
 }
 
 // A floor, a robot at (-6, 0, 0) and the player start at (4, 0, 6) facing -z, on a 1-unit grid.

@@ -9,11 +9,9 @@
 using namespace ks;
 using namespace ks::editor;
 
-namespace {
-bool all_shown(const level::Entity&) {
-    return true;
-}
+using editor_test::all_shown;
 
+namespace {
 // Sets each pane's viewport to its rectangle's size, as the window does every frame.
 void lay_out(QuadView& quad, const std::array<PaneRect, kQuadPanes>& panes) {
     for (int i = 0; i < kQuadPanes; ++i)

@@ -9,8 +9,9 @@
 using namespace ks;
 using namespace ks::editor;
 
+using editor_test::kViewport;
+
 namespace {
-const Vec2 kViewport(960.0f, 540.0f);
 
 // Two orientations are the same when they turn every axis the same way.
 float orientation_difference(const Vec3& ypr_a, const Vec3& ypr_b) {

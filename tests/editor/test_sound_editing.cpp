@@ -13,16 +13,14 @@
 using namespace ks;
 using namespace ks::editor;
 
+using editor_test::all_shown;
+
 namespace {
 
 // The sound names of the audio plan (AUDIO_PLAN.md), as assets/sounds will hold them.
 const std::vector<std::string> kPlanSounds = {"ambient_dojo",   "ambient_facility", "alarm_loop",
                                               "computer_beeps", "machine_hum",      "robot_motor",
                                               "vent_loop",      "rifle_shot"};
-
-bool all_shown(const level::Entity&) {
-    return true;
-}
 
 std::vector<Issue> sound_issues(Editor& editor) {
     std::vector<Issue> out;

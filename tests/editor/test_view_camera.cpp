@@ -1,6 +1,7 @@
 // The viewport camera's maths without a window: orthographic axis views (parallel rays, orientation, zoom
 // about the cursor, pan, grid), perspective, and agreement of the closed-form rays and projection with the
 // renderer's view-projection matrix (the picture) on ordinary and hard (far, tiny, grazing) cases.
+#include "editor_test_util.h"
 #include "view/view_camera.h"
 
 #include <doctest/doctest.h>
@@ -10,8 +11,9 @@
 using namespace ks;
 using namespace ks::editor;
 
+using editor_test::kViewport;
+
 namespace {
-const Vec2 kViewport(960.0f, 540.0f);
 
 ViewCamera axis_view(ViewMode mode, Vec3 centre = Vec3(0.0f), float extent = 100.0f) {
     ViewCamera v;

@@ -10,7 +10,8 @@
 #include <filesystem>
 #include <memory>
 
-namespace ks::game::test {
+namespace ks::game_test {
+using namespace ks::game;
 
 // A 200 x 200 ground floor at y 0, player at the origin facing -z, no robots.
 inline level::Level flat_level() {
@@ -105,4 +106,20 @@ inline int shown(const Game& g, std::string_view text) {
     return n;
 }
 
-} // namespace ks::game::test
+// A trigger box `size` at `at`, set off by `who` ("player", "robots", "both").
+inline level::Entity& add_trigger(level::Level& lv, const char* name, Vec3 at, Vec3 size,
+                                  const char* who = "player") {
+    auto& t = lv.add(level::EntityType::Trigger, at, name);
+    t.as<level::TriggerProps>().size = size;
+    t.as<level::TriggerProps>().who.value = who;
+    return t;
+}
+
+// One frame's input with E (interact) pressed.
+inline Input press_e() {
+    Input in;
+    in.interact = true;
+    return in;
+}
+
+} // namespace ks::game_test

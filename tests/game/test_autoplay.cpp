@@ -18,7 +18,7 @@ namespace {
 // The headless bot on a shipped or test level (relative to the source tree), 60 s simulated.
 HeadlessStats autoplay_run(const char* level, std::uint64_t seed) {
     HeadlessOptions o;
-    o.level = test::source_dir() / level;
+    o.level = ks::test::source_dir() / level;
     o.seconds = 60.0;
     o.seed = seed;
     o.autoplay = true;
@@ -78,7 +78,7 @@ TEST_CASE("autoplay without ammo ignores the robots it sees and walks to the pan
 }
 
 TEST_CASE("the bot's mesh: doors open, paths through them keep the player's body off every gas cylinder") {
-    auto lv = level::load_level_file(test::source_dir() / "levels/main.json");
+    auto lv = level::load_level_file(ks::test::source_dir() / "levels/main.json");
     REQUIRE_MESSAGE(lv.ok(), (lv.ok() ? "" : lv.error().str()));
     const float keep_out = AutoplaySettings{}.cylinder_keep_out;
     auto mesh = build_autoplay_mesh(*lv, keep_out);

@@ -7,7 +7,7 @@
 
 using namespace ks;
 using namespace ks::game;
-using namespace ks::game::test;
+using namespace ks::game_test;
 
 namespace {
 
@@ -19,12 +19,6 @@ level::Level arena() {
     floor.as<level::FloorProps>().size = Vec2(96.0f, 88.0f);
     lv.player_start.position = Vec3(0.0f, 0.0f, 20.0f);
     return lv;
-}
-
-level::Entity& add_trigger(level::Level& lv, const char* name, Vec3 at, Vec3 size) {
-    auto& t = lv.add(level::EntityType::Trigger, at, name);
-    t.as<level::TriggerProps>().size = size;
-    return t;
 }
 
 level::Objective objective(const char* id, std::vector<std::string> kill = {}) {

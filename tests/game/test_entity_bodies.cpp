@@ -7,7 +7,7 @@
 
 using namespace ks;
 using namespace ks::game;
-using namespace ks::game::test;
+using namespace ks::game_test;
 
 TEST_CASE("every static body of levels/main.json is its entity's static solid shape") {
     auto level = level::load_level_file(ks::test::source_dir() / "levels/main.json");

@@ -8,7 +8,7 @@
 
 using namespace ks;
 using namespace ks::game;
-using namespace ks::game::test;
+using namespace ks::game_test;
 
 namespace {
 std::optional<Event> first_event(const Game& g, EventType type) {

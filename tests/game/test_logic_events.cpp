@@ -6,23 +6,9 @@
 
 using namespace ks;
 using namespace ks::game;
-using namespace ks::game::test;
+using namespace ks::game_test;
 
 namespace {
-
-Input press_e() {
-    Input in;
-    in.interact = true;
-    return in;
-}
-
-level::Entity& add_trigger(level::Level& lv, const char* name, Vec3 at, Vec3 size,
-                           const char* who = "player") {
-    auto& t = lv.add(level::EntityType::Trigger, at, name);
-    t.as<level::TriggerProps>().size = size;
-    t.as<level::TriggerProps>().who.value = who;
-    return t;
-}
 
 // A robot that never notices the player (for tests where it only has to stand there).
 level::Entity& add_blind_robot(level::Level& lv, const char* name, Vec3 feet) {

@@ -6,7 +6,7 @@
 
 using namespace ks;
 using namespace ks::game;
-using namespace ks::game::test;
+using namespace ks::game_test;
 
 namespace {
 
@@ -20,12 +20,6 @@ level::Level hall_level() {
 
 Input forward() {
     return Input{1.0f};
-}
-
-Input press_e() {
-    Input in;
-    in.interact = true;
-    return in;
 }
 
 struct Run {

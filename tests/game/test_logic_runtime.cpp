@@ -11,7 +11,7 @@
 
 using namespace ks;
 using namespace ks::game;
-using namespace ks::game::test;
+using namespace ks::game_test;
 
 TEST_CASE("a delay is counted in whole steps from the event") {
     auto lv = flat_level();

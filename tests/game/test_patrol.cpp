@@ -3,13 +3,14 @@
 #include "game/headless.h"
 #include "game/patrol.h"
 #include "game_test_levels.h"
+#include "geometry/ground_plane.h"
 #include "level/level_io.h"
 
 #include <vector>
 
 using namespace ks;
 using namespace ks::game;
-using namespace ks::game::test;
+using namespace ks::game_test;
 
 namespace {
 
@@ -37,10 +38,6 @@ std::vector<int> targets_over(Game& g, double seconds) {
         if (g.robots()[0].patrol.target != targets.back()) targets.push_back(g.robots()[0].patrol.target);
     }
     return targets;
-}
-
-float flat_distance(Vec3 a, Vec3 b) {
-    return glm::length(Vec2(a.x - b.x, a.z - b.z));
 }
 
 } // namespace
@@ -83,7 +80,8 @@ TEST_CASE("a ping-pong patrol goes back and forth, and the robot reaches every p
         const Robot& r = g->robots()[0];
         if (r.patrol.target == before) continue;
         // It left `before` only once it stood there.
-        CHECK(flat_distance(r.feet, points[static_cast<size_t>(before)]) <= kPatrolArriveDistance + 0.05f);
+        CHECK(geometry::ground_distance(r.feet, points[static_cast<size_t>(before)]) <=
+              kPatrolArriveDistance + 0.05f);
         targets.push_back(r.patrol.target);
     }
     REQUIRE(targets.size() >= 6);
@@ -97,12 +95,12 @@ TEST_CASE("a robot waits `wait` seconds at each point, standing still") {
     CHECK(g->robots()[0].patrol.waiting > 1.9f);
     const Vec3 start = g->robots()[0].feet;
     run_for(*g, 1.9);
-    CHECK(flat_distance(g->robots()[0].feet, start) < 0.05f);
+    CHECK(geometry::ground_distance(g->robots()[0].feet, start) < 0.05f);
     CHECK(g->robots()[0].patrol.target == 0);
     run_for(*g, 0.2);
     CHECK(g->robots()[0].patrol.target == 1);
     run_for(*g, 4.0);
-    CHECK(flat_distance(g->robots()[0].feet, start) > 3.0f); // on its way to (36, 0, -60)
+    CHECK(geometry::ground_distance(g->robots()[0].feet, start) > 3.0f); // on its way to (36, 0, -60)
 }
 
 TEST_CASE("without a wait the robot walks straight on through each point") {
@@ -125,7 +123,7 @@ TEST_CASE("an alerted robot on patrol still chases, and goes back to its route w
     for (int i = 0; i < 20 * 120; ++i) {
         g->step({});
         alerted |= count_events(*g, EventType::RobotAlerted) > 0;
-        closest = std::min(closest, flat_distance(g->robots()[0].feet, g->player().feet));
+        closest = std::min(closest, geometry::ground_distance(g->robots()[0].feet, g->player().feet));
     }
     CHECK(alerted);
     CHECK(g->robots()[0].mode != RobotMode::Idle);
@@ -138,7 +136,8 @@ TEST_CASE("an alerted robot on patrol still chases, and goes back to its route w
     float nearest_to_start = 1e9f;
     for (int i = 0; i < 30 * 120; ++i) {
         g->step({});
-        nearest_to_start = std::min(nearest_to_start, flat_distance(g->robots()[0].feet, Vec3(0, 0, -40)));
+        nearest_to_start =
+            std::min(nearest_to_start, geometry::ground_distance(g->robots()[0].feet, Vec3(0, 0, -40)));
     }
     CHECK(nearest_to_start <= kPatrolArriveDistance + 0.05f);
     CHECK(g->robots()[0].mode == RobotMode::Idle);

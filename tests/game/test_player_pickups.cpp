@@ -6,7 +6,7 @@
 
 using namespace ks;
 using namespace ks::game;
-using namespace ks::game::test;
+using namespace ks::game_test;
 
 TEST_CASE("the shield absorbs damage first, the overflow reduces health, health stops at 0") {
     auto g = make_game(flat_level());

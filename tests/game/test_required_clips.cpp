@@ -30,8 +30,8 @@ std::shared_ptr<const anim::AnimationLibrary> library_without(const std::string&
 TEST_CASE("the game needs exactly the required robot clips (but reset, the Dojo's)") {
     auto loaded = anim::load_animation_library(ks::test::source_dir() / "assets/animations/robot.json");
     REQUIRE(loaded.ok());
-    level::Level lv = game::test::flat_level();
-    game::test::add_robot(lv, Vec3(0, 0, -10));
+    level::Level lv = game_test::flat_level();
+    game_test::add_robot(lv, Vec3(0, 0, -10));
     for (const anim::ClipDef& clip : loaded->file.clips) {
         game::GameOptions options;
         options.animations = library_without(clip.name);

@@ -9,7 +9,7 @@
 
 using namespace ks;
 using namespace ks::game;
-using namespace ks::game::test;
+using namespace ks::game_test;
 
 TEST_CASE("robot facing: the model's +X turns onto the level's forward for every yaw") {
     for (float degrees_yaw : {0.0f, 90.0f, 180.0f, -90.0f, 135.0f, -45.0f, 721.0f}) {

@@ -2,6 +2,7 @@
 // hunt a lost player for their search time, come to a shot they hear, and stand guard on a level without a
 // mesh.
 #include "game_test_levels.h"
+#include "geometry/ground_plane.h"
 #include "level/level_io.h"
 
 #include <algorithm>
@@ -10,13 +11,9 @@
 
 using namespace ks;
 using namespace ks::game;
-using namespace ks::game::test;
+using namespace ks::game_test;
 
 namespace {
-
-float flat_distance(const Vec3& a, const Vec3& b) {
-    return glm::length(Vec2(a.x - b.x, a.z - b.z));
-}
 
 // A wall across the whole 200-wide test floor at z = -10, with a 6-wide doorway centred at x = `door_x`.
 void add_wall_with_doorway(level::Level& lv, float door_x, float height = 16.0f) {
@@ -74,7 +71,7 @@ TEST_CASE("an angry robot climbs the stairs to the player on a platform") {
         highest = std::max(highest, g->robots()[0].feet.y);
     }
     CHECK(highest > 5.5f);
-    CHECK(flat_distance(g->robots()[0].feet, g->player().feet) < 8.0f);
+    CHECK(geometry::ground_distance(g->robots()[0].feet, g->player().feet) < 8.0f);
 }
 
 TEST_CASE("a closed door stops a hunting robot; an open one lets it through") {
@@ -110,11 +107,11 @@ TEST_CASE("a shot heard behind a wall brings an idle robot round to look") {
     g->step(fire);
     g->step({});
     CHECK(g->robots()[0].mode == RobotMode::Hunt);
-    CHECK(flat_distance(g->robots()[0].last_known, g->player().feet) < 0.5f);
+    CHECK(geometry::ground_distance(g->robots()[0].last_known, g->player().feet) < 0.5f);
     float nearest = 1e9f;
     for (int i = 0; i < 10 * 120; ++i) {
         g->step({});
-        nearest = std::min(nearest, flat_distance(g->robots()[0].feet, Vec3(0, 0, 0)));
+        nearest = std::min(nearest, geometry::ground_distance(g->robots()[0].feet, Vec3(0, 0, 0)));
     }
     CHECK(nearest < 12.0f); // it came round the wall toward the shot
 }
@@ -145,14 +142,14 @@ TEST_CASE("a robot that lost the player hunts to where it was, searches, then go
     g->teleport_player(Vec3(0, 0, 90), 0.0f); // far beyond the eye radii
     run_for(*g, 0.2);
     CHECK(g->robots()[0].mode == RobotMode::Hunt);
-    CHECK(flat_distance(g->robots()[0].last_known, seen_at) < 0.5f);
+    CHECK(geometry::ground_distance(g->robots()[0].last_known, seen_at) < 0.5f);
     bool searched = false;
     for (int i = 0; i < 3 * 120; ++i) {
         g->step({});
         searched |= g->robots()[0].mode == RobotMode::Search;
     }
     CHECK(searched);
-    CHECK(flat_distance(g->robots()[0].feet, seen_at) < 8.0f); // it went to look
+    CHECK(geometry::ground_distance(g->robots()[0].feet, seen_at) < 8.0f); // it went to look
     run_for(*g, 2.0);
     CHECK(g->robots()[0].mode == RobotMode::Idle);
 }
@@ -168,7 +165,7 @@ TEST_CASE("a level with no floor still starts: one clear message, robots stand g
     g->damage_robot(0, 1.0f, true); // angry, but nothing to walk on
     const Vec3 before = g->robots()[0].feet;
     run_for(*g, 2.0);
-    CHECK(flat_distance(g->robots()[0].feet, before) < 0.5f);
+    CHECK(geometry::ground_distance(g->robots()[0].feet, before) < 0.5f);
 }
 
 TEST_CASE("three robots meeting in one doorway all get through, none stuck for long") {
@@ -190,7 +187,7 @@ TEST_CASE("three robots meeting in one doorway all get through, none stuck for l
         for (std::size_t i = 0; i < 3; ++i) {
             const Vec3 now = g->robots()[i].feet;
             const bool done = now.z > -6.0f; // through the doorway
-            const float moved = flat_distance(now, last[i]);
+            const float moved = geometry::ground_distance(now, last[i]);
             last[i] = now;
             stuck_for[i] =
                 done || moved > 0.02f ? 0.0f : stuck_for[i] + static_cast<float>(g->settings().step);
@@ -216,12 +213,12 @@ TEST_CASE("a thousand angry robots plan and walk without trouble") {
     REQUIRE(g->robots().size() == 1000);
     for (std::size_t i = 0; i < 1000; ++i) g->damage_robot(i, 1.0f, true);
     float before = 0.0f;
-    for (const Robot& r : g->robots()) before += flat_distance(r.feet, g->player().feet);
+    for (const Robot& r : g->robots()) before += geometry::ground_distance(r.feet, g->player().feet);
     run_for(*g, 1.0);
     float after = 0.0f;
     for (const Robot& r : g->robots()) {
         CHECK(is_finite(r.feet));
-        after += flat_distance(r.feet, g->player().feet);
+        after += geometry::ground_distance(r.feet, g->player().feet);
     }
     CHECK(after < before - 1000.0f); // on average each came at least a unit closer
 }
@@ -237,7 +234,8 @@ TEST_CASE("a patrol between two points with a wall between them walks round thro
     float nearest_far_point = 1e9f, widest_x = 0.0f;
     for (int i = 0; i < 30 * 120; ++i) {
         g->step({});
-        nearest_far_point = std::min(nearest_far_point, flat_distance(g->robots()[0].feet, Vec3(0, 0, 0)));
+        nearest_far_point =
+            std::min(nearest_far_point, geometry::ground_distance(g->robots()[0].feet, Vec3(0, 0, 0)));
         widest_x = std::max(widest_x, g->robots()[0].feet.x);
     }
     CHECK(nearest_far_point < 1.0f); // it reached the point behind the wall
@@ -255,7 +253,7 @@ TEST_CASE("robots walking the mesh side by side spread apart instead of marching
     g->damage_robot(0, 1.0f, true);
     g->damage_robot(1, 1.0f, true);
     run_for(*g, 3.0);
-    const float apart = flat_distance(g->robots()[0].feet, g->robots()[1].feet);
+    const float apart = geometry::ground_distance(g->robots()[0].feet, g->robots()[1].feet);
     CHECK(apart > 2.2f);                   // pushed out to about three robot radii
     CHECK(g->robots()[0].feet.z > -35.0f); // and still on their way
     CHECK(g->robots()[1].feet.z > -35.0f);

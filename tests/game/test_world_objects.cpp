@@ -5,7 +5,7 @@
 
 using namespace ks;
 using namespace ks::game;
-using namespace ks::game::test;
+using namespace ks::game_test;
 
 namespace {
 
@@ -18,12 +18,6 @@ level::Level door_level(bool open) {
     auto& d = lv.add(level::EntityType::Door, Vec3(0, 0, -10), "door");
     d.as<level::DoorProps>().open = open;
     return lv;
-}
-
-Input press_e() {
-    Input in;
-    in.interact = true;
-    return in;
 }
 
 } // namespace

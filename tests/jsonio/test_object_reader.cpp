@@ -10,7 +10,7 @@
 using namespace ks::jsonio;
 
 namespace {
-const DocumentKind kKind{"thing", "a thing file is {\"name\": ...}"};
+const DocumentKind kThingKind{"thing", "a thing file is {\"name\": ...}"};
 
 std::string joined(const std::vector<ks::Error>& errors) {
     std::string out;
@@ -30,7 +30,7 @@ TEST_CASE("typed members: good values are read, bad ones reported at their place
                              "  \"weight\": \"3\",\n"
                              "  \"nmae\": 1\n"
                              "}";
-    const Document doc = Document::parse(text, "t.json", kKind);
+    const Document doc = Document::parse(text, "t.json", kThingKind);
     REQUIRE(doc.root());
     Problems sink("t.json", &doc.positions());
     ObjectReader reader(*doc.root(), "", sink, "thing");
@@ -75,8 +75,8 @@ TEST_CASE("typed members: good values are read, bad ones reported at their place
 }
 
 TEST_CASE("good members are read, and a claimed member is not unknown") {
-    const Document doc =
-        Document::parse("{\"name\": \"x\", \"speed\": 2, \"at\": [1, 2, 3], \"other\": {}}", "t.json", kKind);
+    const Document doc = Document::parse("{\"name\": \"x\", \"speed\": 2, \"at\": [1, 2, 3], \"other\": {}}",
+                                         "t.json", kThingKind);
     Problems sink("t.json", &doc.positions());
     ObjectReader reader(*doc.root(), "", sink, "thing");
     std::string name;
@@ -95,7 +95,7 @@ TEST_CASE("good members are read, and a claimed member is not unknown") {
 }
 
 TEST_CASE("an object that is not one is reported once; its reads find nothing") {
-    const Document doc = Document::parse("{\"inner\": [1]}", "t.json", kKind);
+    const Document doc = Document::parse("{\"inner\": [1]}", "t.json", kThingKind);
     Problems sink("t.json", &doc.positions());
     ObjectReader reader((*doc.root())["inner"], "inner", sink, "the inner part");
     std::string name;
@@ -113,7 +113,7 @@ TEST_CASE("text limits count characters, not bytes") {
     std::string three_hundred;
     for (int i = 0; i < 300; ++i) three_hundred += e_acute;
     CHECK(character_count(three_hundred) == 300);
-    const Document doc = Document::parse("{\"text\": \"" + three_hundred + "\"}", "t.json", kKind);
+    const Document doc = Document::parse("{\"text\": \"" + three_hundred + "\"}", "t.json", kThingKind);
     Problems sink("t.json", &doc.positions());
     ObjectReader reader(*doc.root(), "", sink, "thing");
     std::string out;
@@ -135,7 +135,7 @@ TEST_CASE("quoted escapes control characters, so a NUL or a newline cannot cut a
     CHECK(character_count(cut) == 12); // two quotes, 7 characters, "..."
     CHECK(cut.substr(cut.size() - 4) == "...\"");
     // An unknown key holding a NUL is named whole, escaped.
-    const Document doc = Document::parse("{\"a\\u0000b\": 1}", "t.json", kKind);
+    const Document doc = Document::parse("{\"a\\u0000b\": 1}", "t.json", kThingKind);
     Problems sink("t.json", &doc.positions());
     ObjectReader reader(*doc.root(), "", sink, "thing");
     reader.finish();

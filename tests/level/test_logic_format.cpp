@@ -54,10 +54,6 @@ std::string only_error(const std::string& text) {
     return report.str();
 }
 
-bool has(const std::string& report, const std::string& part) {
-    return report.find(part) != std::string::npos;
-}
-
 } // namespace
 
 TEST_CASE("links, objectives and the logic entities load, save and load back byte for byte") {
@@ -87,8 +83,8 @@ TEST_CASE("links, objectives and the logic entities load, save and load back byt
     CHECK(level->links.size() == 1);
 
     const std::string saved = save_level_string(*level);
-    CHECK(has(saved, R"("objectives": [)"));
-    CHECK(has(saved, "\"delay\": 0.5,\n          \"once\": true"));
+    CHECK(ks::test::contains_text(saved, R"("objectives": [)"));
+    CHECK(ks::test::contains_text(saved, "\"delay\": 0.5,\n          \"once\": true"));
     auto back = load_level_string(saved, "saved.json");
     REQUIRE(back.ok());
     CHECK(*back == *level);
@@ -99,46 +95,57 @@ TEST_CASE("a level without logic saves no logic keys") {
     Level level;
     level.add(EntityType::Wall);
     const std::string saved = save_level_string(level);
-    CHECK_FALSE(has(saved, "objectives"));
-    CHECK_FALSE(has(saved, "links"));
-    CHECK(has(saved, "\"version\": 2,"));
+    CHECK_FALSE(ks::test::contains_text(saved, "objectives"));
+    CHECK_FALSE(ks::test::contains_text(saved, "links"));
+    CHECK(ks::test::contains_text(saved, "\"version\": 2,"));
 }
 
 TEST_CASE(
     "a mistyped event or action gets a did-you-mean; an event the source does not emit says which it does") {
     std::string r = only_error(logic_level("[" + link("on_entre", "Door 2", "open") + "]"));
-    CHECK_MESSAGE(has(r, "logic.json:4:"), r);
-    CHECK_MESSAGE(has(r,
+    CHECK_MESSAGE(ks::test::contains_text(r, "logic.json:4:"), r);
+    CHECK_MESSAGE(ks::test::contains_text(
+                      r,
                       "entities[2].links[0].event: trigger 3 (\"Hall trigger\"): unknown event \"on_entre\" "
                       "(did you mean \"on_enter\"? a trigger emits: on_enter, on_exit)"),
                   r);
     r = only_error(logic_level("[" + link("on_open", "Door 2", "open") + "]"));
-    CHECK_MESSAGE(has(r, "trigger 3 (\"Hall trigger\"): a trigger does not emit \"on_open\""), r);
+    CHECK_MESSAGE(
+        ks::test::contains_text(r, "trigger 3 (\"Hall trigger\"): a trigger does not emit \"on_open\""), r);
     r = only_error(logic_level("[" + link("on_enter", "Door 2", "opne") + "]"));
-    CHECK_MESSAGE(has(r, "entities[2].links[0].action: trigger 3 (\"Hall trigger\"): unknown action \"opne\" "
+    CHECK_MESSAGE(ks::test::contains_text(
+                      r, "entities[2].links[0].action: trigger 3 (\"Hall trigger\"): unknown action \"opne\" "
                          "(did you mean \"open\"?"),
                   r);
 }
 
 TEST_CASE("a link target that names nothing, two things or the wrong kind of thing is an error") {
     std::string r = only_error(logic_level("[" + link("on_enter", "Door 3", "open") + "]"));
-    CHECK_MESSAGE(has(r,
+    CHECK_MESSAGE(ks::test::contains_text(
+                      r,
                       "entities[2].links[0].target: trigger 3 (\"Hall trigger\"): no entity named \"Door 3\" "
                       "(did you mean \"Door 2\"?"),
                   r);
     r = only_error(logic_level("[" + link("on_enter", "Lamp", "open") + "]"));
-    CHECK_MESSAGE(has(r, "top_light 7 (\"Lamp\") cannot \"open\" (a top light takes: on, off, toggle)"), r);
+    CHECK_MESSAGE(ks::test::contains_text(
+                      r, "top_light 7 (\"Lamp\") cannot \"open\" (a top light takes: on, off, toggle)"),
+                  r);
     r = only_error(logic_level("[" + link("on_enter", "Door 2", "open") + "]", "[]", "[]",
                                R"(, {"id": 11, "type": "door", "name": "Door 2", "position": [9, 0, -5]})"));
-    CHECK_MESSAGE(has(r, "\"Door 2\" names 2 entities (door 2 (\"Door 2\"), door 11 (\"Door 2\"))"), r);
-    CHECK_MESSAGE(has(r, "must be unique"), r);
+    CHECK_MESSAGE(
+        ks::test::contains_text(r, "\"Door 2\" names 2 entities (door 2 (\"Door 2\"), door 11 (\"Door 2\"))"),
+        r);
+    CHECK_MESSAGE(ks::test::contains_text(r, "must be unique"), r);
     r = only_error(logic_level("[" + link("on_enter", "Dummy", "kill") + "]"));
-    CHECK_MESSAGE(has(r, "robot 9 (\"Dummy\") is an animation dummy"), r);
+    CHECK_MESSAGE(ks::test::contains_text(r, "robot 9 (\"Dummy\") is an animation dummy"), r);
     r = only_error(logic_level("[" + link("on_enter", "Door 2", "win") + "]"));
-    CHECK_MESSAGE(has(r, "\"win\" acts on the level, not on \"Door 2\" (write \"target\": \"level\")"), r);
+    CHECK_MESSAGE(ks::test::contains_text(
+                      r, "\"win\" acts on the level, not on \"Door 2\" (write \"target\": \"level\")"),
+                  r);
     r = only_error(logic_level("[" + link("on_enter", "clera", "complete") + "]", "[]",
                                R"([{"id": "clear", "text": "Clear", "kill": ["Guard"]}])"));
-    CHECK_MESSAGE(has(r, "no objective \"clera\" (did you mean \"clear\"? objectives: clear)"), r);
+    CHECK_MESSAGE(
+        ks::test::contains_text(r, "no objective \"clera\" (did you mean \"clear\"? objectives: clear)"), r);
     // Names that are not targets may repeat (two walls called "Wall" are fine).
     load_report(logic_level("[]", "[]", "[]",
                             R"(, {"id": 11, "type": "wall", "name": "Wall", "position": [9, 0, -19]})"),
@@ -175,30 +182,36 @@ TEST_CASE("findings a tool can fix are tagged with their kind and the did-you-me
 TEST_CASE("negative, NaN and absurd delays, and a link missing a key, are errors naming the entity") {
     std::string r =
         only_error(logic_level("[" + link("on_enter", "Door 2", "open", R"(, "delay": -1)") + "]"));
-    CHECK_MESSAGE(has(r, "entities[2].links[0].delay: trigger 3 (\"Hall trigger\"): delay -1 is out of range "
+    CHECK_MESSAGE(ks::test::contains_text(
+                      r, "entities[2].links[0].delay: trigger 3 (\"Hall trigger\"): delay -1 is out of range "
                          "(valid: 0 .. 3600 s"),
                   r);
     r = only_error(logic_level("[" + link("on_enter", "Door 2", "open", R"(, "delay": "nan")") + "]"));
     CHECK_MESSAGE(
-        has(r, "entities[2].links[0].delay: trigger 3 (\"Hall trigger\"): \"nan\" is not a finite number"),
+        ks::test::contains_text(
+            r, "entities[2].links[0].delay: trigger 3 (\"Hall trigger\"): \"nan\" is not a finite number"),
         r);
     r = only_error(logic_level("[" + link("on_enter", "Door 2", "open", R"(, "delay": 1e9)") + "]"));
-    CHECK_MESSAGE(has(r, "delay 1000000000 is out of range"), r);
+    CHECK_MESSAGE(ks::test::contains_text(r, "delay 1000000000 is out of range"), r);
     r = only_error(logic_level(R"([{"event": "on_enter", "action": "open"}])"));
     CHECK_MESSAGE(
-        has(r,
+        ks::test::contains_text(
+            r,
             "entities[2].links[0].target: trigger 3 (\"Hall trigger\"): missing required field \"target\""),
         r);
     r = only_error(logic_level(R"({"event": "on_enter"})"));
-    CHECK_MESSAGE(has(r, "entities[2].links: trigger 3 (\"Hall trigger\"): expected an array of links"), r);
+    CHECK_MESSAGE(ks::test::contains_text(
+                      r, "entities[2].links: trigger 3 (\"Hall trigger\"): expected an array of links"),
+                  r);
 
     // In memory (the editor's drafts): NaN and a negative delay.
     Level level = *load_level_string(logic_level("[" + link("on_enter", "Door 2", "open") + "]"), "ok.json");
     level.entities[2].links[0].delay = std::numeric_limits<float>::quiet_NaN();
-    CHECK(has(validate(level).str(),
-              "entities[2].links[0].delay: trigger 3 (\"Hall trigger\"): delay NaN is not a finite number"));
+    CHECK(ks::test::contains_text(
+        validate(level).str(),
+        "entities[2].links[0].delay: trigger 3 (\"Hall trigger\"): delay NaN is not a finite number"));
     level.entities[2].links[0].delay = -0.5f;
-    CHECK(has(validate(level).str(), "delay -0.5 is out of range"));
+    CHECK(ks::test::contains_text(validate(level).str(), "delay -0.5 is out of range"));
 }
 
 TEST_CASE("links on an entity that emits no events, and events of the level and objectives") {
@@ -207,18 +220,22 @@ TEST_CASE("links on an entity that emits no events, and events of the level and 
         link("on_use", "Door 2", "open") + "]}";
     std::string r = only_error(logic_level("[]", "[]", "[]", wall));
     CHECK_MESSAGE(
-        has(r,
+        ks::test::contains_text(
+            r,
             "entities[9].links: wall 12 (\"Talking wall\"): a wall emits no events, so its links never fire"),
         r);
     r = only_error(logic_level("[]", "[" + link("on_enter", "Door 2", "open") + "]"));
     CHECK_MESSAGE(
-        has(r, "links[0].event: the level: the level does not emit \"on_enter\" (the level emits: on_start)"),
+        ks::test::contains_text(
+            r, "links[0].event: the level: the level does not emit \"on_enter\" (the level emits: on_start)"),
         r);
     r = only_error(logic_level("[]", "[]",
                                R"([{"id": "a", "text": "A", "kill": ["Guard"], "links": [)" +
                                    link("on_start", "Door 2", "open") + "]}]"));
     CHECK_MESSAGE(
-        has(r, "objectives[0].links[0].event: objective \"a\": an objective does not emit \"on_start\""), r);
+        ks::test::contains_text(
+            r, "objectives[0].links[0].event: objective \"a\": an objective does not emit \"on_start\""),
+        r);
 }
 
 TEST_CASE("a million links are refused at once, naming the entity and the field") {
@@ -230,19 +247,23 @@ TEST_CASE("a million links are refused at once, naming the entity and the field"
     const auto start = std::chrono::steady_clock::now();
     const std::string r = only_error(logic_level(many));
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    CHECK_MESSAGE(has(r, "entities[2].links: trigger 3 (\"Hall trigger\"): 1000000 links; at most 64"), r);
+    CHECK_MESSAGE(ks::test::contains_text(
+                      r, "entities[2].links: trigger 3 (\"Hall trigger\"): 1000000 links; at most 64"),
+                  r);
     CHECK_MESSAGE(seconds < 20.0, seconds);
     // The same for the level's and an objective's lists, and an objective's kill list.
-    CHECK(has(only_error(logic_level("[]", many)), "links: the level: 1000000 links; at most 64"));
+    CHECK(ks::test::contains_text(only_error(logic_level("[]", many)),
+                                  "links: the level: 1000000 links; at most 64"));
     std::string names = "[";
     for (int i = 0; i < 300; ++i) names += i ? ",\"Guard\"" : "\"Guard\"";
     names += "]";
-    CHECK(has(only_error(logic_level("[]", "[]", R"([{"id": "a", "text": "A", "kill": )" + names + "}]")),
-              "objectives[0].kill: objective \"a\": 300 names; at most 256"));
+    CHECK(ks::test::contains_text(
+        only_error(logic_level("[]", "[]", R"([{"id": "a", "text": "A", "kill": )" + names + "}]")),
+        "objectives[0].kill: objective \"a\": 300 names; at most 256"));
     std::string sixty_five = "[";
     for (int i = 0; i < 65; ++i) sixty_five += (i ? "," : "") + link("on_enter", "Door 2", "open");
     sixty_five += "]";
-    CHECK(has(only_error(logic_level(sixty_five)), "65 links; at most 64"));
+    CHECK(ks::test::contains_text(only_error(logic_level(sixty_five)), "65 links; at most 64"));
 }
 
 TEST_CASE("many dangling targets load in bounded time, every one reported") {
@@ -264,25 +285,29 @@ TEST_CASE("many dangling targets load in bounded time, every one reported") {
 TEST_CASE("objectives: ids unique and present, text present, kill names robots and spawners") {
     std::string r = only_error(logic_level("[]", "[]", R"([{"id": "a", "text": "A", "kill": ["Guard"]},
                                                            {"id": "a", "text": "B", "kill": ["Guard"]}])"));
-    CHECK_MESSAGE(has(r, "objectives[1].id: objective \"a\": duplicate objective id \"a\""), r);
+    CHECK_MESSAGE(
+        ks::test::contains_text(r, "objectives[1].id: objective \"a\": duplicate objective id \"a\""), r);
     r = only_error(logic_level("[]", "[]", R"([{"text": "A", "kill": ["Guard"]}])"));
-    CHECK_MESSAGE(has(r, "objectives[0].id: objective \"\": the objective has no id"), r);
+    CHECK_MESSAGE(ks::test::contains_text(r, "objectives[0].id: objective \"\": the objective has no id"), r);
     r = only_error(logic_level("[]", "[]", R"([{"id": "a", "text": "", "kill": ["Guard"]}])"));
-    CHECK_MESSAGE(has(r, "objectives[0].text: objective \"a\": the objective has no text"), r);
+    CHECK_MESSAGE(
+        ks::test::contains_text(r, "objectives[0].text: objective \"a\": the objective has no text"), r);
     r = only_error(logic_level("[]", "[]", R"([{"id": "a", "text": "A", "kill": ["Gaurd"]}])"));
-    CHECK_MESSAGE(has(r, "objectives[0].kill[0]: objective \"a\": no robot or spawner named \"Gaurd\" (did "
+    CHECK_MESSAGE(ks::test::contains_text(
+                      r, "objectives[0].kill[0]: objective \"a\": no robot or spawner named \"Gaurd\" (did "
                          "you mean \"Guard\"?"),
                   r);
     r = only_error(logic_level("[]", "[]", R"([{"id": "a", "text": "A", "kill": ["Door 2"]}])"));
-    CHECK_MESSAGE(has(r, "door 2 (\"Door 2\") cannot be killed"), r);
+    CHECK_MESSAGE(ks::test::contains_text(r, "door 2 (\"Door 2\") cannot be killed"), r);
     r = only_error(logic_level("[]", "[]", R"([{"id": "a", "text": "A", "kill": ["Dummy"]}])"));
-    CHECK_MESSAGE(has(r, "an animation dummy never dies"), r);
+    CHECK_MESSAGE(ks::test::contains_text(r, "an animation dummy never dies"), r);
     std::string lots = "[";
     for (int i = 0; i < 33; ++i)
         lots += (i ? "," : "") + std::string(R"({"id": "o)") + std::to_string(i) +
                 R"(", "text": "T", "kill": ["Guard"]})";
     lots += "]";
-    CHECK(has(only_error(logic_level("[]", "[]", lots)), "objectives: 33 objectives; at most 32"));
+    CHECK(ks::test::contains_text(only_error(logic_level("[]", "[]", lots)),
+                                  "objectives: 33 objectives; at most 32"));
 }
 
 TEST_CASE(
@@ -296,7 +321,8 @@ TEST_CASE(
     LoadReport report = validate(level);
     CHECK(report.error_count() == 0);
     REQUIRE_MESSAGE(report.warning_count() == 1, report.str());
-    CHECK_MESSAGE(has(report.str(),
+    CHECK_MESSAGE(ks::test::contains_text(
+                      report.str(),
                       "entities[1].links[0]: zero-delay loop of door links (\"A\" on_open -> toggle \"B\"; "
                       "\"B\" on_open -> toggle \"A\"; \"B\" on_close -> toggle \"A\")"),
                   report.str());
@@ -310,25 +336,28 @@ TEST_CASE(
     CHECK(validate(level).diagnostics.empty());
     level.entities[1].links = {{"on_open", "A", "close"},
                                {"on_close", "A", "open"}}; // a door slamming itself
-    CHECK(has(validate(level).str(),
-              "zero-delay loop of door links (\"A\" on_open -> close \"A\"; \"A\" on_close -> open \"A\")"));
+    CHECK(ks::test::contains_text(
+        validate(level).str(),
+        "zero-delay loop of door links (\"A\" on_open -> close \"A\"; \"A\" on_close -> open \"A\")"));
     level.entities[1].links.clear();
     level.entities[2].links.clear();
 
     level.objectives = {{"never", "Never", {}, {}}};
-    CHECK(has(validate(level).str(),
-              "warning: objectives[0]: objective \"never\": nothing completes the objective"));
+    CHECK(ks::test::contains_text(
+        validate(level).str(),
+        "warning: objectives[0]: objective \"never\": nothing completes the objective"));
     level.add(EntityType::Spawner, {0, 0, -9}, "Sleeper");
     level.objectives = {{"wait", "Wait", {"Sleeper"}, {}}};
-    CHECK(has(validate(level).str(),
-              "objectives[0].kill[0]: objective \"wait\": spawner \"Sleeper\" never spawns"));
+    CHECK(ks::test::contains_text(
+        validate(level).str(),
+        "objectives[0].kill[0]: objective \"wait\": spawner \"Sleeper\" never spawns"));
     level.links = {{"on_start", "Sleeper", "spawn"}};
     CHECK(validate(level).diagnostics.empty());
 
     level.entities[1].as<DoorProps>().locked = true;
-    CHECK(
-        has(validate(level).str(),
-            "entities[1].props.locked: door 2 (\"A\"): the door is locked and no link unlocks or opens it"));
+    CHECK(ks::test::contains_text(
+        validate(level).str(),
+        "entities[1].props.locked: door 2 (\"A\"): the door is locked and no link unlocks or opens it"));
     level.links.push_back({"on_start", "A", "unlock", 5});
     CHECK(validate(level).diagnostics.empty());
 }
@@ -341,7 +370,7 @@ TEST_CASE(
     REQUIRE_MESSAGE(level.ok(), report.str());
     CHECK(report.error_count() == 0);
     REQUIRE_MESSAGE(report.warning_count() == 1, report.str());
-    CHECK(has(report.str(), "version 1 -> 2"));
+    CHECK(ks::test::contains_text(report.str(), "version 1 -> 2"));
     REQUIRE(level->objectives.size() == 1);
     CHECK(level->objectives[0].id == kShutdownObjective);
     CHECK(level->objectives[0].text == kShutdownObjectiveText);
@@ -382,7 +411,9 @@ TEST_CASE("a pasted entity with a bad link is refused like a file") {
     json["links"] = nlohmann::json::array({{{"event", "on_entre"}, {"target", "x"}, {"action", "open"}}});
     LoadReport report;
     CHECK_FALSE(entity_from_json(json, "clipboard", &report).ok());
-    CHECK_MESSAGE(has(report.str(), "unknown event \"on_entre\" (did you mean \"on_enter\"?"), report.str());
+    CHECK_MESSAGE(
+        ks::test::contains_text(report.str(), "unknown event \"on_entre\" (did you mean \"on_enter\"?"),
+        report.str());
 }
 
 TEST_CASE(

@@ -14,7 +14,7 @@ using namespace ks::level;
 namespace {
 
 // A level whose second entity is a sound emitter with `props` (JSON text), on line 3 of the file.
-std::string level_text(const std::string& props, const std::string& settings = "{}") {
+std::string sound_level_text(const std::string& props, const std::string& settings = "{}") {
     return R"({"format": "killswitch-level", "version": 2, "settings": )" + settings + R"(, "entities": [
   {"id": 1, "type": "floor", "position": [0, 0, 0], "props": {"size": [40, 40]}},
   {"id": 7, "type": "sound", "name": "hum", "position": [0, 2, 0], "props": )" +
@@ -30,10 +30,6 @@ std::string only_error(const std::string& text) {
     return report.str();
 }
 
-bool has(const std::string& report, const std::string& part) {
-    return report.find(part) != std::string::npos;
-}
-
 } // namespace
 
 TEST_CASE("a sound emitter saves its four fields and loads back exactly") {
@@ -44,7 +40,7 @@ TEST_CASE("a sound emitter saves its four fields and loads back exactly") {
     emitter.radius = 25;
     emitter.loop = false;
     const std::string text = save_level_string(level);
-    CHECK_MESSAGE(has(text, R"("type": "sound",
+    CHECK_MESSAGE(ks::test::contains_text(text, R"("type": "sound",
       "name": "beeps",
       "position": [90, 5, 50],
       "rotation": [0, 0, 0],
@@ -93,14 +89,14 @@ TEST_CASE("ambient_sound: left out at its default, written otherwise, empty for 
 
     level.settings.ambient_sound.value = "ambient_dojo";
     const std::string dojo = save_level_string(level);
-    CHECK(has(dojo, "\"gravity\": -25,\n    \"ambient_sound\": \"ambient_dojo\"\n  }"));
+    CHECK(ks::test::contains_text(dojo, "\"gravity\": -25,\n    \"ambient_sound\": \"ambient_dojo\"\n  }"));
     auto back = load_level_string(dojo, "dojo.json");
     REQUIRE(back.ok());
     CHECK(back->settings.ambient_sound.value == "ambient_dojo");
 
     level.settings.ambient_sound.value = "";
     const std::string silent = save_level_string(level);
-    CHECK(has(silent, "\"ambient_sound\": \"\""));
+    CHECK(ks::test::contains_text(silent, "\"ambient_sound\": \"\""));
     LoadReport report;
     back = load_level_string(silent, "silent.json", &report);
     REQUIRE_MESSAGE(back.ok(), report.str());
@@ -110,72 +106,87 @@ TEST_CASE("ambient_sound: left out at its default, written otherwise, empty for 
 }
 
 TEST_CASE("every bad sound field is an error naming the file, line, column, field and fix") {
-    std::string r = only_error(level_text(R"({"volume": 1.5})"));
-    CHECK_MESSAGE(has(r, "bad.json:3:78: entities[1].props.volume: 1.5 is out of range (valid: 0 .. 1; "
+    std::string r = only_error(sound_level_text(R"({"volume": 1.5})"));
+    CHECK_MESSAGE(ks::test::contains_text(
+                      r, "bad.json:3:78: entities[1].props.volume: 1.5 is out of range (valid: 0 .. 1; "
                          "Loudness at the emitter"),
                   r);
-    r = only_error(level_text(R"({"volume": -0.1})"));
-    CHECK_MESSAGE(has(r, "entities[1].props.volume: -0.1 is out of range (valid: 0 .. 1"), r);
-    r = only_error(level_text(R"({"volume": "nan"})"));
-    CHECK_MESSAGE(has(r, "bad.json:3:78: entities[1].props.volume: \"nan\" is not a finite number (NaN and "
+    r = only_error(sound_level_text(R"({"volume": -0.1})"));
+    CHECK_MESSAGE(ks::test::contains_text(r, "entities[1].props.volume: -0.1 is out of range (valid: 0 .. 1"),
+                  r);
+    r = only_error(sound_level_text(R"({"volume": "nan"})"));
+    CHECK_MESSAGE(ks::test::contains_text(
+                      r, "bad.json:3:78: entities[1].props.volume: \"nan\" is not a finite number (NaN and "
                          "infinity are not allowed) (write a finite number; valid: 0 .. 1)"),
                   r);
-    r = only_error(level_text(R"({"radius": -5})"));
+    r = only_error(sound_level_text(R"({"radius": -5})"));
     CHECK_MESSAGE(
-        has(r, "bad.json:3:78: entities[1].props.radius: -5 is out of range (valid: 0.5 .. 500 units"), r);
-    r = only_error(level_text(R"({"radius": 0})"));
-    CHECK_MESSAGE(has(r, "entities[1].props.radius: 0 is out of range (valid: 0.5 .. 500 units"), r);
-    r = only_error(level_text(R"({"radius": 1e6})"));
-    CHECK_MESSAGE(has(r, "entities[1].props.radius: 1000000 is out of range"), r);
-    r = only_error(level_text(R"({"radius": "inf"})"));
-    CHECK_MESSAGE(has(r, "entities[1].props.radius: \"inf\" is not a finite number"), r);
+        ks::test::contains_text(
+            r, "bad.json:3:78: entities[1].props.radius: -5 is out of range (valid: 0.5 .. 500 units"),
+        r);
+    r = only_error(sound_level_text(R"({"radius": 0})"));
+    CHECK_MESSAGE(
+        ks::test::contains_text(r, "entities[1].props.radius: 0 is out of range (valid: 0.5 .. 500 units"),
+        r);
+    r = only_error(sound_level_text(R"({"radius": 1e6})"));
+    CHECK_MESSAGE(ks::test::contains_text(r, "entities[1].props.radius: 1000000 is out of range"), r);
+    r = only_error(sound_level_text(R"({"radius": "inf"})"));
+    CHECK_MESSAGE(ks::test::contains_text(r, "entities[1].props.radius: \"inf\" is not a finite number"), r);
 
-    r = only_error(level_text(R"({"sound": ""})"));
-    CHECK_MESSAGE(has(r, "bad.json:3:78: entities[1].props.sound: sound name is empty (name a file in "
+    r = only_error(sound_level_text(R"({"sound": ""})"));
+    CHECK_MESSAGE(ks::test::contains_text(
+                      r, "bad.json:3:78: entities[1].props.sound: sound name is empty (name a file in "
                          "assets/sounds without its .wav, e.g. \"machine_hum\")"),
                   r);
-    r = only_error(level_text(R"({"sound": "Machine Hum.wav"})"));
-    CHECK_MESSAGE(has(r,
+    r = only_error(sound_level_text(R"({"sound": "Machine Hum.wav"})"));
+    CHECK_MESSAGE(ks::test::contains_text(
+                      r,
                       "bad.json:3:78: entities[1].props.sound: sound name \"Machine Hum.wav\" has characters "
                       "other than a-z, 0-9 and _ (write \"machine_hum\" (the file "
                       "assets/sounds/machine_hum.wav); sound names hold only a-z, 0-9 and _)"),
                   r);
-    r = only_error(level_text(R"({"sound": "vent-loop"})"));
-    CHECK_MESSAGE(has(r, "write \"vent_loop\""), r);
-    r = only_error(level_text(R"({"sound": ")" + std::string(65, 'a') + R"("})"));
-    CHECK_MESSAGE(has(r, "entities[1].props.sound: sound name is 65 characters long; at most 64"), r);
-    r = only_error(level_text(R"({"sound": 5})"));
+    r = only_error(sound_level_text(R"({"sound": "vent-loop"})"));
+    CHECK_MESSAGE(ks::test::contains_text(r, "write \"vent_loop\""), r);
+    r = only_error(sound_level_text(R"({"sound": ")" + std::string(65, 'a') + R"("})"));
     CHECK_MESSAGE(
-        has(r,
+        ks::test::contains_text(r, "entities[1].props.sound: sound name is 65 characters long; at most 64"),
+        r);
+    r = only_error(sound_level_text(R"({"sound": 5})"));
+    CHECK_MESSAGE(
+        ks::test::contains_text(
+            r,
             "entities[1].props.sound: expected a string, found the number 5 (put the text in double quotes)"),
         r);
-    r = only_error(level_text(R"({"loop": "yes"})"));
+    r = only_error(sound_level_text(R"({"loop": "yes"})"));
     CHECK_MESSAGE(
-        has(r,
+        ks::test::contains_text(
+            r,
             "entities[1].props.loop: expected true or false, found the string \"yes\" (valid: true, false)"),
         r);
 
-    r = only_error(level_text("{}", R"({"ambient_sound": "Ambient Dojo"})"));
+    r = only_error(sound_level_text("{}", R"({"ambient_sound": "Ambient Dojo"})"));
     CHECK_MESSAGE(
-        has(r, "bad.json:1:59: settings.ambient_sound: sound name \"Ambient Dojo\" has characters other "
+        ks::test::contains_text(
+            r, "bad.json:1:59: settings.ambient_sound: sound name \"Ambient Dojo\" has characters other "
                "than a-z, 0-9 and _ (write \"ambient_dojo\""),
         r);
-    r = only_error(level_text("{}", R"({"ambient_sound": null})"));
-    CHECK_MESSAGE(has(r, "settings.ambient_sound: expected a string, found null"), r);
+    r = only_error(sound_level_text("{}", R"({"ambient_sound": null})"));
+    CHECK_MESSAGE(ks::test::contains_text(r, "settings.ambient_sound: expected a string, found null"), r);
 }
 
 TEST_CASE("a misspelt sound field name is a warning with a did-you-mean, and loading goes on") {
     LoadReport report;
-    auto level = load_level_string(level_text(R"({"volum": 0.5, "raduis": 12})"), "typo.json", &report);
+    auto level = load_level_string(sound_level_text(R"({"volum": 0.5, "raduis": 12})"), "typo.json", &report);
     REQUIRE_MESSAGE(level.ok(), report.str());
     CHECK(report.warning_count() == 2);
-    CHECK_MESSAGE(has(report.str(),
-                      "typo.json:3:78: entities[1].props.volum: unknown field \"volum\" is ignored "
-                      "(did you mean \"volume\"? known sound fields: sound, volume, radius, loop)"),
-                  report.str());
-    CHECK(has(report.str(),
-              "typo.json:3:92: entities[1].props.raduis: unknown field \"raduis\" is ignored (did "
-              "you mean \"radius\"?"));
+    CHECK_MESSAGE(
+        ks::test::contains_text(report.str(),
+                                "typo.json:3:78: entities[1].props.volum: unknown field \"volum\" is ignored "
+                                "(did you mean \"volume\"? known sound fields: sound, volume, radius, loop)"),
+        report.str());
+    CHECK(ks::test::contains_text(
+        report.str(), "typo.json:3:92: entities[1].props.raduis: unknown field \"raduis\" is ignored (did "
+                      "you mean \"radius\"?"));
     CHECK(level->entities[1].as<SoundProps>() == SoundProps{});
 }
 
@@ -187,12 +198,17 @@ TEST_CASE("validate finds a sound emitter's NaN, negative radius and bad name in
     emitter.sound.value = "hum!";
     level.settings.ambient_sound.value = "UPPER";
     const std::string report = validate(level, "draft.json").str();
-    CHECK_MESSAGE(has(report, "entities[0].props.volume: value is NaN (not a finite number)"), report);
-    CHECK_MESSAGE(has(report, "entities[0].props.radius: -3 is out of range (valid: 0.5 .. 500 units"),
+    CHECK_MESSAGE(
+        ks::test::contains_text(report, "entities[0].props.volume: value is NaN (not a finite number)"),
+        report);
+    CHECK_MESSAGE(ks::test::contains_text(
+                      report, "entities[0].props.radius: -3 is out of range (valid: 0.5 .. 500 units"),
                   report);
-    CHECK_MESSAGE(has(report, "entities[0].props.sound: sound name \"hum!\" has characters other than"),
+    CHECK_MESSAGE(ks::test::contains_text(
+                      report, "entities[0].props.sound: sound name \"hum!\" has characters other than"),
                   report);
-    CHECK_MESSAGE(has(report, "settings.ambient_sound: sound name \"UPPER\" has characters other than"),
+    CHECK_MESSAGE(ks::test::contains_text(
+                      report, "settings.ambient_sound: sound name \"UPPER\" has characters other than"),
                   report);
     CHECK(validate(level).error_count() == 4);
 }

@@ -4,7 +4,8 @@
 
 #include <doctest/doctest.h>
 
-namespace ks::physics::test {
+namespace ks::physics_test {
+using namespace ks::physics;
 
 inline constexpr float kPlayerRadius = 1.0f, kPlayerHalfSegment = 0.5f; // radius 1, height 3
 inline constexpr int kRates[] = {30, 60, 120, 240};
@@ -54,4 +55,9 @@ inline WorldSettings at_rate(int hz) {
     return s;
 }
 
-} // namespace ks::physics::test
+// A rotation by `radians` about +y.
+inline Quat yaw(float radians) {
+    return glm::angleAxis(radians, Vec3(0, 1, 0));
+}
+
+} // namespace ks::physics_test

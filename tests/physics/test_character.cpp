@@ -9,7 +9,7 @@
 
 using namespace ks;
 using namespace ks::physics;
-using namespace ks::physics::test;
+using namespace ks::physics_test;
 
 namespace {
 void walk(World& w, BodyId p, Vec3 velocity) {

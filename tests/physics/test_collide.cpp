@@ -1,6 +1,7 @@
 // Narrowphase: full SAT (faces + edge×edge) against face-only SAT, touching/contained/coincident boxes,
 // nearly parallel edges, far from the origin; capsule closest features against every shape.
 #include "physics/collide.h"
+#include "physics/physics_scene.h"
 
 #include "core/random.h"
 
@@ -10,12 +11,11 @@
 using namespace ks;
 using namespace ks::physics;
 
+using physics_test::yaw;
+
 namespace {
 geometry::Transform at(Vec3 p, Quat q = Quat(1, 0, 0, 0)) {
     return {p, q};
-}
-Quat yaw(float a) {
-    return glm::angleAxis(a, Vec3(0, 1, 0));
 }
 bool finite(const Contact& c) {
     return is_finite(c.normal) && std::isfinite(c.penetration) && is_finite(c.point);

@@ -1,6 +1,7 @@
 // Ray casts: exact single-shape tests against the double reference, and the hard cases — shared edges and
 // vertices (exactly one hit, never zero), rays parallel to and lying in faces, starting inside or on the
 // surface, grazing at 1e-6 rad, geometry 10 km away.
+#include "physics/physics_scene.h"
 #include "physics/ray.h"
 
 #include "bench/physics/ray_reference.h"
@@ -12,12 +13,11 @@
 using namespace ks;
 using namespace ks::physics;
 
+using physics_test::yaw;
+
 namespace {
 geometry::Ray ray(Vec3 o, Vec3 d, float max = 1e6f) {
     return {o, glm::normalize(d), max};
-}
-Quat yaw(float a) {
-    return glm::angleAxis(a, Vec3(0, 1, 0));
 }
 double ref_box(const geometry::Ray& r, Vec3 half, const geometry::Transform& xf) {
     return reference::ray_box(DVec3(r.origin), DVec3(r.direction),
@@ -49,8 +49,8 @@ TEST_CASE(
     for (int i = 0; i < 20000; ++i) {
         const Vec3 half(rng.uniform(0.1f, 3), rng.uniform(0.1f, 3), rng.uniform(0.1f, 3));
         const geometry::Transform xf{{rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-2, 2)},
-                           glm::normalize(Quat(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1),
-                                               rng.uniform(-1, 1)))};
+                                     glm::normalize(Quat(rng.uniform(-1, 1), rng.uniform(-1, 1),
+                                                         rng.uniform(-1, 1), rng.uniform(-1, 1)))};
         Vec3 d(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
         if (glm::length(d) < 1e-3f) continue;
         const geometry::Ray r = ray({rng.uniform(-8, 8), rng.uniform(-8, 8), rng.uniform(-8, 8)}, d, 20.0f);
@@ -145,7 +145,8 @@ TEST_CASE("grazing rays at 1e-6 rad and geometry 10 km from the origin keep mill
     Rng rng(3);
     for (int i = 0; i < 2000; ++i) {
         const Vec3 far(10000.0f, 20.0f, -10000.0f);
-        const geometry::Transform xf{far + Vec3(rng.uniform(-5, 5), 0, rng.uniform(-5, 5)), yaw(rng.uniform(0, 3))};
+        const geometry::Transform xf{far + Vec3(rng.uniform(-5, 5), 0, rng.uniform(-5, 5)),
+                                     yaw(rng.uniform(0, 3))};
         const geometry::Ray r =
             ray(far + Vec3(rng.uniform(-20, 20), rng.uniform(-20, 20), rng.uniform(-20, 20)),
                 Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)) + Vec3(1e-3f), 100.0f);

@@ -8,7 +8,7 @@
 
 using namespace ks;
 using namespace ks::physics;
-using namespace ks::physics::test;
+using namespace ks::physics_test;
 
 namespace {
 constexpr std::uint64_t kRobotTag = 7;

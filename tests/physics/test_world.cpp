@@ -12,7 +12,7 @@
 
 using namespace ks;
 using namespace ks::physics;
-using namespace ks::physics::test;
+using namespace ks::physics_test;
 
 TEST_CASE("handles: removed bodies stop resolving, slots are reused with a new generation") {
     World w;

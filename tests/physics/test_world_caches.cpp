@@ -12,7 +12,7 @@
 
 using namespace ks;
 using namespace ks::physics;
-using namespace ks::physics::test;
+using namespace ks::physics_test;
 
 TEST_CASE("BVH box queries visit leaf slots in ascending order and find exactly the overlapping items") {
     Rng rng(31);

@@ -97,7 +97,7 @@ TEST_CASE("light bake: the wall's sun shadow falls on the floor, on the side awa
 
 TEST_CASE("light bake: point light falloff like the shader, blocked by walls, re-combined when switched") {
     Room room;
-    Light light;
+    render::Light light;
     light.position = Vec3(-5, 4, 0);
     light.range = 10.0f;
     light.color = Vec3(1.0f, 0.5f, 0.25f);
@@ -129,7 +129,7 @@ TEST_CASE("light bake: point light falloff like the shader, blocked by walls, re
 
 TEST_CASE("light bake: a spot light lights its cone only") {
     Room room;
-    Light spot;
+    render::Light spot;
     spot.type = Light::Type::Spot;
     spot.position = Vec3(-5, 6, 0);
     spot.direction = Vec3(0, -1, 0);
@@ -146,9 +146,9 @@ TEST_CASE("light bake: a spot light lights its cone only") {
 
 TEST_CASE("light bake: bad input gives finite texels, never a crash") {
     Room room;
-    Light nan_light;
+    render::Light nan_light;
     nan_light.position = Vec3(std::nanf(""), 0, 0);
-    Light huge;
+    render::Light huge;
     huge.position = Vec3(0, 4, 0);
     huge.range = 1e30f;
     Environment env = dark_with_sun(Vec3(0, -1, 0));

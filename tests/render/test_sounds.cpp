@@ -25,7 +25,7 @@ namespace fs = std::filesystem;
 
 namespace {
 constexpr double kRate = 48000.0;
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPiDouble = 3.14159265358979323846;
 
 fs::path sound_file(const std::string& name) {
     return ks::test::source_dir() / "assets" / "sounds" / (name + ".wav");
@@ -91,7 +91,7 @@ void fft(std::vector<std::complex<double>>& a) {
         if (i < j) std::swap(a[i], a[j]);
     }
     for (std::size_t len = 2; len <= n; len <<= 1) {
-        const auto step = std::polar(1.0, -2.0 * kPi / static_cast<double>(len));
+        const auto step = std::polar(1.0, -2.0 * kPiDouble / static_cast<double>(len));
         for (std::size_t i = 0; i < n; i += len) {
             std::complex<double> w(1.0);
             for (std::size_t k = 0; k < len / 2; ++k, w *= step) {
@@ -112,7 +112,8 @@ std::vector<double> power_spectrum(const std::vector<double>& x, std::size_t fro
     for (std::size_t start = from; start < to; start += kFrame / 2) {
         std::vector<std::complex<double>> a(kFrame);
         for (std::size_t i = 0; i < kFrame; ++i)
-            a[i] = (start + i < to ? x[start + i] : 0.0) * (0.5 - 0.5 * std::cos(2.0 * kPi * i / kFrame));
+            a[i] =
+                (start + i < to ? x[start + i] : 0.0) * (0.5 - 0.5 * std::cos(2.0 * kPiDouble * i / kFrame));
         fft(a);
         for (std::size_t k = 0; k < power.size(); ++k) power[k] += std::norm(a[k]);
     }
@@ -293,11 +294,11 @@ TEST_CASE("loops are seamless, of their planned lengths and levels") {
     // The seam check catches a click: 100.25 cycles of a sine end at its crest and jump back to zero.
     std::vector<double> broken(96000);
     for (std::size_t i = 0; i < broken.size(); ++i)
-        broken[i] = 0.5 * std::sin(2.0 * kPi * 100.25 * static_cast<double>(i) / 96000.0);
+        broken[i] = 0.5 * std::sin(2.0 * kPiDouble * 100.25 * static_cast<double>(i) / 96000.0);
     CHECK(seam_ratio(broken) > 5.0);
     // While a whole number of cycles is seamless.
     for (std::size_t i = 0; i < broken.size(); ++i)
-        broken[i] = 0.5 * std::sin(2.0 * kPi * 100.0 * static_cast<double>(i) / 96000.0);
+        broken[i] = 0.5 * std::sin(2.0 * kPiDouble * 100.0 * static_cast<double>(i) / 96000.0);
     CHECK(seam_ratio(broken) < 1.5);
 }
 

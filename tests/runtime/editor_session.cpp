@@ -1,5 +1,6 @@
 // killswitch-editor driven by real X input in tests: see editor_session.h.
 #include "runtime/editor_session.h"
+#include "runtime/screen_image.h"
 
 #include <doctest/doctest.h>
 
@@ -87,14 +88,17 @@ std::string EditorSession::at(const json& point) const {
 
 void EditorSession::key(const std::string& keys, std::chrono::milliseconds hold) {
     focus();
+    auto keys_down = [](const json& j) { return j["input"].value("keys_down", 0); };
     xdo("keydown " + keys);
-    frames(2);
+    // Released as soon as a frame has seen it: counting frames instead held it past ImGui's key-repeat
+    // delay whenever frames were slow (a sanitizer build in CI), and Ctrl+Z undid twice.
+    wait("the key seen pressed", [&](const json& j) { return keys_down(j) > 0; });
     if (hold.count() > 0) { // past ImGui's key-repeat delay (0.275 s), then two more frames see it
         std::this_thread::sleep_for(hold);
         frames(2);
     }
     xdo("keyup " + keys);
-    frames(2); // the release is seen before the next press of the same key
+    wait("the key seen released", [&](const json& j) { return keys_down(j) == 0; });
 }
 
 void EditorSession::type(const std::string& text) {
@@ -140,6 +144,29 @@ std::string EditorSession::xdo(const std::string& args, int timeout_s) const {
     INFO("xdotool " << args << ": " << output);
     REQUIRE(ok);
     return output;
+}
+
+void require_window_test_tools() {
+    REQUIRE_MESSAGE(have_display(), "needs a display: ./run.sh test runs this under xvfb-run");
+    REQUIRE_MESSAGE(have_xdotool(), "needs xdotool (./run.sh installs it)");
+}
+
+bool has_spot(const nlohmann::json& status, const std::string& name) {
+    return status.contains("spots") && status["spots"].contains(name);
+}
+
+EditorWindow::EditorWindow(const std::string& level_json, const std::vector<std::string>& args) {
+    require_window_test_tools();
+    level_file_ = write_file(dir_ / "level.json", level_json);
+    const auto status = dir_ / "status.json";
+    std::vector<std::string> all{"--level", level_file_.string(), "--status-file", status.string()};
+    all.insert(all.end(), args.begin(), args.end());
+    process_ = std::make_unique<EditorProcess>(
+        all,
+        std::vector<std::string>{"XDG_CONFIG_HOME=" + (dir_ / "config").string(),
+                                 "XDG_DATA_HOME=" + (dir_ / "data").string()},
+        display_);
+    session_ = std::make_unique<EditorSession>(status, *process_, display_);
 }
 
 } // namespace ks::test

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <string>
 #include <sys/types.h>
 #include <vector>
@@ -48,7 +49,8 @@ class EditorSession {
     // Window coordinates from the status to screen coordinates for xdotool.
     std::string at(const json& point) const;
     // Keys go to the focused window; with no window manager under Xvfb, focus the editor's first. ImGui
-    // 1.86 samples key state once per frame (no input queue), so the key is held for two frames.
+    // 1.86 samples key state once per frame (no input queue), so the key is held until a frame has seen it
+    // (the status's input.keys_down) and released before the key repeat starts.
     void key(const std::string& keys, std::chrono::milliseconds hold = std::chrono::milliseconds(0));
     // Types text into the focused text field, then waits two frames.
     void type(const std::string& text);
@@ -68,6 +70,32 @@ class EditorSession {
     std::string display_;
     std::string window_;
     json last_;
+};
+
+// Fails the test unless there is a display and xdotool (./run.sh test provides both: their absence is a
+// failure, not a skip).
+void require_window_test_tools();
+// The status names the widget spot `name` (its "spots" object).
+bool has_spot(const nlohmann::json& status, const std::string& name);
+
+// The editor opened on a level of the test's own, in a window on a display of its own: the level is written
+// to `level_file` in a scratch folder that also holds the status file and the editor's config and data
+// folders (so no test sees another's recent files or prefabs). `args` follow "--level FILE --status-file
+// FILE".
+class EditorWindow {
+  public:
+    EditorWindow(const std::string& level_json, const std::vector<std::string>& args);
+    EditorSession& session() { return *session_; }
+    const ScratchDir& dir() const { return dir_; }
+    const std::filesystem::path& level_file() const { return level_file_; }
+    const EditorProcess& process() const { return *process_; }
+
+  private:
+    ScratchDir dir_;
+    std::filesystem::path level_file_;
+    PrivateDisplay display_;
+    std::unique_ptr<EditorProcess> process_;
+    std::unique_ptr<EditorSession> session_;
 };
 
 } // namespace ks::test

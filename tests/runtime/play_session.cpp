@@ -170,6 +170,12 @@ std::string GameProcess::log() const {
     return std::filesystem::exists(log_, ec) ? read_file(log_) : std::string();
 }
 
+std::string scripted_env(const ScratchDir& dir) {
+    static const PrivateDisplay display;
+    return "env DISPLAY=" + display.name() + " XDG_CONFIG_HOME=" + (dir / "config").string() +
+           " XDG_DATA_HOME=" + (dir / "data").string() + " ";
+}
+
 bool have_xdotool() {
     return run_command("command -v xdotool").exit_code == 0;
 }

@@ -76,6 +76,10 @@ class PrivateDisplay {
 };
 
 bool have_xdotool();
+// "env DISPLAY=… XDG_CONFIG_HOME=… XDG_DATA_HOME=… ": a scripted run gets an X server of its own (one per
+// test process), so that a window of a test running in parallel cannot sit over it and take the pointer or
+// the focus, and config and data folders inside `dir`.
+std::string scripted_env(const ScratchDir& dir);
 // Runs "xdotool ARGS" on `display` (empty: $DISPLAY), killed after `timeout_s` (a `--sync` waits forever
 // otherwise); returns its output (trimmed). `ok` is set from the exit code.
 std::string xdotool(const std::string& args, bool* ok = nullptr, const std::string& display = "",

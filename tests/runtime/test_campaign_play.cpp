@@ -19,10 +19,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void write(const fs::path& path, const std::string& text) {
-    std::ofstream(path) << text;
-}
-
 // The lines of a status file starting with `key` and a space, without the key.
 std::vector<std::string> lines(const std::string& text, const std::string& key) {
     std::vector<std::string> found;
@@ -73,7 +69,7 @@ struct Run {
 
 Run run_script(const std::string& command, const test::ScratchDir& dir, const std::string& name,
                const std::string& script, int frames) {
-    write(dir / (name + ".txt"), script);
+    test::write_file(dir / (name + ".txt"), script);
     const fs::path status = dir / (name + ".status"), shot = dir / (name + ".png");
     Run r;
     r.command = test::run_command(command + "--input-script " + (dir / (name + ".txt")).string() +
@@ -170,8 +166,8 @@ TEST_CASE(
 TEST_CASE("campaign by script: a campaign file that does not load leaves the menu up with its error") {
     REQUIRE_MESSAGE(test::have_display(), "no DISPLAY: run the GL tests under xvfb-run (./run.sh test does)");
     TestDataRoot data;
-    write(data.root() / "levels" / "campaign.json",
-          "{\"name\": \"Broken\", \"levels\": [{\"file\": \"onee.json\", \"title\": \"Typo\"}]}");
+    test::write_file(data.root() / "levels" / "campaign.json",
+                     "{\"name\": \"Broken\", \"levels\": [{\"file\": \"onee.json\", \"title\": \"Typo\"}]}");
     const std::string command = killswitch(data.dir, data.dir / "xdg-data", data.root().string()) +
                                 "--level " + (data.root() / "levels" / "two.json").string() + " ";
     const Run run = run_script(command, data.dir, "broken", "20 click Campaign\n", 30);
@@ -212,9 +208,9 @@ TEST_CASE(
     fs::create_directories(user);
     std::string mine = test::read_file(test::data_dir() / "campaign" / "two.json");
     mine.replace(mine.find("Test level two"), 14, "My own level");
-    write(user / "mine.json", mine);
-    write(user / "broken.json",
-          "{\"format\": \"killswitch-level\", \"version\": 2, \"entities\": [\n  {\"id\": 1,}]}");
+    test::write_file(user / "mine.json", mine);
+    test::write_file(user / "broken.json",
+                     "{\"format\": \"killswitch-level\", \"version\": 2, \"entities\": [\n  {\"id\": 1,}]}");
     const std::string command = killswitch(dir, dir / "xdg-data", data.root().string()) + "--level " +
                                 (data.root() / "levels" / "one.json").string() + " ";
 

@@ -39,7 +39,7 @@ const anim::BlendPair* find_pair(const anim::AnimationFile& file, const std::str
     return nullptr;
 }
 
-bool has_spot(const json& j, const char* spot) {
+bool has_dojo_spot(const json& j, const char* spot) {
     return j.contains("dojo") && j["dojo"]["spots"].contains(spot);
 }
 } // namespace
@@ -57,15 +57,15 @@ TEST_CASE("dojo input: New clip typed into its dialog, a blend cell from idle ty
                           "--status-file", status.string()},
                          {"XDG_CONFIG_HOME=" + (dir / "config").string()}, display);
     Session s(status, editor, display);
-    json st =
-        s.wait("the dojo with its New clip button", [](const json& j) { return has_spot(j, "new_clip"); });
+    json st = s.wait("the dojo with its New clip button",
+                     [](const json& j) { return has_dojo_spot(j, "new_clip"); });
     CHECK(st["dojo"]["file"] == clips.string());
     const size_t clip_count = st["dojo"]["clips"];
 
     // New clip: the dialog's name field has the keyboard; the typed name replaces the suggestion.
     s.click(st["dojo"]["spots"]["new_clip"]);
     s.wait("the New clip dialog",
-           [](const json& j) { return has_spot(j, "clip_name") && j["input"]["text_input"]; });
+           [](const json& j) { return has_dojo_spot(j, "clip_name") && j["input"]["text_input"]; });
     s.type("wave");
     s.key("Return");
     st = s.wait("the clip created", [&](const json& j) { return j["dojo"]["clips"] == clip_count + 1; });
@@ -117,10 +117,11 @@ TEST_CASE("dojo input: New clip typed into its dialog, a blend cell from idle ty
         s.click(st["menu"]["file"]);
         st = s.wait("the File menu", [](const json& j) { return j["menu"]["quit"][0].get<float>() > 0.0f; });
         s.click(st["menu"]["quit"]);
-        st = s.wait("the unsaved clip edits question", [&](const json& j) { return has_spot(j, answer); });
+        st = s.wait("the unsaved clip edits question",
+                    [&](const json& j) { return has_dojo_spot(j, answer); });
         s.click(st["dojo"]["spots"][answer]);
         if (std::string(answer) == "quit_cancel") {
-            st = s.wait("the question answered", [&](const json& j) { return !has_spot(j, answer); });
+            st = s.wait("the question answered", [&](const json& j) { return !has_dojo_spot(j, answer); });
             CHECK(st["dojo"]["dirty"] == true); // still running, the edits kept
         }
     }
@@ -144,7 +145,7 @@ TEST_CASE("dojo input: an event added at the playhead, a curve key dragged (one 
                           "--height", "720", "--status-file", status.string()},
                          {"XDG_CONFIG_HOME=" + (dir / "config").string()}, display);
     Session s(status, editor, display);
-    json st = s.wait("the Events page", [](const json& j) { return has_spot(j, "add_event"); });
+    json st = s.wait("the Events page", [](const json& j) { return has_dojo_spot(j, "add_event"); });
     CHECK(st["dojo"]["clip"] == "shoot_pose");
     CHECK(st["dojo"]["events"] == 0);
 
@@ -204,7 +205,7 @@ TEST_CASE("dojo input: an event added at the playhead, a curve key dragged (one 
     const size_t before = st["dojo"]["clips"];
     st = s.wait("the outside change noticed",
                 [](const json& j) { return j["dojo"]["changed_on_disk"] == true; });
-    REQUIRE(has_spot(st, "reload_notice"));
+    REQUIRE(has_dojo_spot(st, "reload_notice"));
     s.click(st["dojo"]["spots"]["reload_notice"]);
     st = s.wait("reloaded", [&](const json& j) { return j["dojo"]["clips"] == before + 1; });
     CHECK(st["dojo"]["changed_on_disk"] == false);

@@ -33,17 +33,6 @@ Shot editor_shot(const test::ScratchDir& dir, const std::string& name, const std
     return {test::load_png(png), json::parse(in, nullptr, false), run.output};
 }
 
-template <class F>
-int count_pixels(const test::Image& img, int x0, int y0, int x1, int y1, F accept) {
-    int n = 0;
-    for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x) {
-            const unsigned char* p = img.at(x, y);
-            if (accept(p[0], p[1], p[2])) ++n;
-        }
-    return n;
-}
-
 // The next key's ghost: the robot washed magenta (far from its own yellow and from the floor's grey).
 bool magenta(int r, int g, int b) {
     return r > 150 && b > 110 && r - g > 70 && b - g > 40;

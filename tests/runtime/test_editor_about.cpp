@@ -13,12 +13,6 @@
 using namespace ks;
 using nlohmann::json;
 
-namespace {
-bool has_spot(const json& j, const char* spot) {
-    return j.contains("spots") && j["spots"].contains(spot);
-}
-} // namespace
-
 TEST_CASE("editor about: Help > About shows the version and licence, Close shuts it") {
     REQUIRE_MESSAGE((test::have_display() && test::have_xdotool()),
                     "no DISPLAY or xdotool: editor input test cannot run");
@@ -28,12 +22,12 @@ TEST_CASE("editor about: Help > About shows the version and licence, Close shuts
     test::EditorProcess editor({"--width", "1280", "--height", "720", "--status-file", status.string()},
                                {"XDG_CONFIG_HOME=" + (dir / "config").string()}, display);
     test::EditorSession s(status, editor, display);
-    json st = s.wait("the Help menu", [](const json& j) { return has_spot(j, "menu.help"); });
+    json st = s.wait("the Help menu", [](const json& j) { return test::has_spot(j, "menu.help"); });
     CHECK(st["about"]["open"] == false);
     s.click(st["spots"]["menu.help"]);
-    st = s.wait("the About item", [](const json& j) { return has_spot(j, "menu.about"); });
+    st = s.wait("the About item", [](const json& j) { return test::has_spot(j, "menu.about"); });
     s.click(st["spots"]["menu.about"]);
-    st = s.wait("the About box", [](const json& j) { return has_spot(j, "about.close"); });
+    st = s.wait("the About box", [](const json& j) { return test::has_spot(j, "about.close"); });
     CHECK(st["about"]["open"] == true);
     const auto lines = st["about"]["lines"].get<std::vector<std::string>>();
     REQUIRE(lines.size() >= 3);
@@ -44,5 +38,5 @@ TEST_CASE("editor about: Help > About shows the version and licence, Close shuts
     CHECK(licence);
     s.click(st["spots"]["about.close"]);
     st = s.wait("the box closed", [](const json& j) { return j["about"]["open"] == false; });
-    CHECK_FALSE(has_spot(st, "about.close"));
+    CHECK_FALSE(test::has_spot(st, "about.close"));
 }

@@ -14,10 +14,6 @@
 using namespace ks;
 
 namespace {
-std::string editor_binary() {
-    return (test::bin_dir() / "killswitch-editor").string();
-}
-
 // A 40 x 80 hall with the control panel 60 units ahead of the player start, and one robot to the side.
 std::filesystem::path write_hall(const test::ScratchDir& dir) {
     level::Level lv;
@@ -45,9 +41,9 @@ TEST_CASE("killswitch-editor --analyze writes the report, prints a summary, the 
     const auto level_file = write_hall(dir);
     const std::string level_text = read(level_file);
     const auto one = dir / "one.json", two = dir / "two.json";
-    auto a = test::run_command(editor_binary() + " --analyze " + level_file.string() +
+    auto a = test::run_command(test::editor_binary() + " --analyze " + level_file.string() +
                                " --runs 3 --threads 1 --seconds 60 --report " + one.string());
-    auto b = test::run_command(editor_binary() + " --analyze " + level_file.string() +
+    auto b = test::run_command(test::editor_binary() + " --analyze " + level_file.string() +
                                " --runs 3 --threads 2 --seconds 60 --report " + two.string());
     INFO(a.output);
     INFO(b.output);
@@ -69,7 +65,8 @@ TEST_CASE("killswitch-editor --analyze writes the report, prints a summary, the 
     CHECK(read(level_file) == level_text); // the level itself is untouched
 
     // Without --report the report goes beside the level.
-    auto beside = test::run_command(editor_binary() + " --analyze " + level_file.string() + " --runs 2");
+    auto beside =
+        test::run_command(test::editor_binary() + " --analyze " + level_file.string() + " --runs 2");
     INFO(beside.output);
     REQUIRE(beside.exit_code == 0);
     CHECK(std::filesystem::exists(dir / "hall.playtest.json"));
@@ -96,7 +93,7 @@ TEST_CASE("killswitch-editor --analyze refuses a bad level or option with a mess
         {"--threads 2", 2, "goes with --analyze"},
     };
     for (const Case& c : cases) {
-        auto run = test::run_command(editor_binary() + " " + c.args);
+        auto run = test::run_command(test::editor_binary() + " " + c.args);
         CAPTURE(c.args);
         INFO(run.output);
         CHECK(run.exit_code == c.exit_code);
@@ -106,7 +103,7 @@ TEST_CASE("killswitch-editor --analyze refuses a bad level or option with a mess
     {
         std::ofstream(dir / "broken.json")
             << "{\"format\": \"killswitch-level\", \"version\": 2, \"entities\": [";
-        auto run = test::run_command(editor_binary() + " --analyze " + (dir / "broken.json").string());
+        auto run = test::run_command(test::editor_binary() + " --analyze " + (dir / "broken.json").string());
         INFO(run.output);
         CHECK(run.exit_code == 1);
         CHECK(run.output.find("broken.json:1:") != std::string::npos);

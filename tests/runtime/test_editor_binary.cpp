@@ -21,27 +21,6 @@ using ks::test::distinct_colours;
 using ks::test::have_display;
 using ks::test::Image;
 using ks::test::load_png;
-std::string editor_binary() {
-    return (test::bin_dir() / "killswitch-editor").string();
-}
-
-// Pixels in [x0, x1) x [y0, y1) that `accept` (r, g, b).
-template <class F>
-int count_pixels(const Image& img, int x0, int y0, int x1, int y1, F accept) {
-    int n = 0;
-    for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x) {
-            const unsigned char* p = img.at(x, y);
-            if (accept(p[0], p[1], p[2])) ++n;
-        }
-    return n;
-}
-
-void write(const std::filesystem::path& path, const std::string& text) {
-    std::ofstream out(path);
-    out << text;
-}
-
 // Two rooms (20 x 20 each) joined by a door in the wall between them; a robot and the control panel in the
 // far room, pickups and a gas cylinder in the near one; the player starts in the near room facing the door.
 const char* kTwoRoomScript = R"(# two rooms joined by a door
@@ -81,15 +60,17 @@ save two_rooms.json
 )";
 // Builds two_rooms.json in `dir` with the editor's scripted mode.
 void build_two_rooms(const std::filesystem::path& dir) {
-    write(dir / "build.kss", kTwoRoomScript);
-    REQUIRE(test::run_command(editor_binary() + " --script " + (dir / "build.kss").string()).exit_code == 0);
+    test::write_file(dir / "build.kss", kTwoRoomScript);
+    REQUIRE(
+        test::run_command(test::editor_binary() + " --script " + (dir / "build.kss").string()).exit_code ==
+        0);
 }
 } // namespace
 
 TEST_CASE("killswitch-editor --script builds, validates and saves a two-room level") {
     test::ScratchDir dir;
-    write(dir / "build.kss", kTwoRoomScript);
-    auto run = test::run_command(editor_binary() + " --script " + (dir / "build.kss").string());
+    test::write_file(dir / "build.kss", kTwoRoomScript);
+    auto run = test::run_command(test::editor_binary() + " --script " + (dir / "build.kss").string());
     INFO(run.output);
     REQUIRE(run.exit_code == 0);
     const auto saved = dir / "two_rooms.json";
@@ -129,34 +110,35 @@ TEST_CASE("killswitch-editor --script builds, validates and saves a two-room lev
 
 TEST_CASE("killswitch-editor --script reports a bad line as file:line and exits non-zero") {
     test::ScratchDir dir;
-    write(dir / "bad.kss", "new\nplace robot at 0,0,0\nplace teapot at 1,2,3\n");
-    auto run = test::run_command(editor_binary() + " --script " + (dir / "bad.kss").string());
+    test::write_file(dir / "bad.kss", "new\nplace robot at 0,0,0\nplace teapot at 1,2,3\n");
+    auto run = test::run_command(test::editor_binary() + " --script " + (dir / "bad.kss").string());
     INFO(run.output);
     CHECK(run.exit_code != 0);
     CHECK(run.output.find("bad.kss:3") != std::string::npos);
 
     // A line that parses but fails when run (an expectation) names its line too, and saves nothing after it.
-    write(dir / "fails.kss", "new\nplace robot at 0,0,0\nexpect count robot 2\nsave never.json\n");
-    auto fails = test::run_command(editor_binary() + " --script " + (dir / "fails.kss").string());
+    test::write_file(dir / "fails.kss", "new\nplace robot at 0,0,0\nexpect count robot 2\nsave never.json\n");
+    auto fails = test::run_command(test::editor_binary() + " --script " + (dir / "fails.kss").string());
     INFO(fails.output);
     CHECK(fails.exit_code != 0);
     CHECK(fails.output.find("fails.kss:3") != std::string::npos);
     CHECK_FALSE(std::filesystem::exists(dir / "never.json"));
 
-    auto missing = test::run_command(editor_binary() + " --script " + (dir / "nope.kss").string());
+    auto missing = test::run_command(test::editor_binary() + " --script " + (dir / "nope.kss").string());
     CHECK(missing.exit_code != 0);
     CHECK(missing.output.find("nope.kss") != std::string::npos);
 }
 
 TEST_CASE("killswitch-editor --help-script lists the script commands from the registry, without a display") {
-    auto help = test::run_command("env -u DISPLAY -u WAYLAND_DISPLAY " + editor_binary() + " --help-script");
+    auto help =
+        test::run_command("env -u DISPLAY -u WAYLAND_DISPLAY " + test::editor_binary() + " --help-script");
     INFO(help.output);
     CHECK(help.exit_code == 0);
     for (const char* form : {"place TYPE at X,Y,Z [yaw D] [name TEXT]", "expect valid", "prefab update",
                              "link SOURCE remove INDEX", "expect curve CLIP NODE CHANNEL TIME V"})
         CHECK(help.output.find(form) != std::string::npos);
-    CHECK(test::run_command("env -u DISPLAY " + editor_binary() + " --help").output.find("--help-script") !=
-          std::string::npos);
+    CHECK(test::run_command("env -u DISPLAY " + test::editor_binary() + " --help")
+              .output.find("--help-script") != std::string::npos);
 }
 
 TEST_CASE("killswitch-editor --screenshot shows the level in its viewport between the panels") {
@@ -165,7 +147,7 @@ TEST_CASE("killswitch-editor --screenshot shows the level in its viewport betwee
     test::ScratchDir dir;
     build_two_rooms(dir.path());
     auto shot = dir / "editor.png";
-    auto run = test::run_command(editor_binary() + " --level " + (dir / "two_rooms.json").string() +
+    auto run = test::run_command(test::editor_binary() + " --level " + (dir / "two_rooms.json").string() +
                                  " --width 1280 --height 720 --frames 4 --screenshot " + shot.string());
     INFO(run.output);
     REQUIRE(run.exit_code == 0);
@@ -199,9 +181,9 @@ TEST_CASE("killswitch-editor draws the selection outline and the gizmo for a sel
                     "no DISPLAY: editor window test cannot run (./run.sh test runs it under xvfb-run)");
     test::ScratchDir dir;
     build_two_rooms(dir.path());
-    write(dir / "select.kss", "select all robot\n");
-    write(dir / "none.kss", "select none\n");
-    const std::string common = editor_binary() + " --level " + (dir / "two_rooms.json").string() +
+    test::write_file(dir / "select.kss", "select all robot\n");
+    test::write_file(dir / "none.kss", "select none\n");
+    const std::string common = test::editor_binary() + " --level " + (dir / "two_rooms.json").string() +
                                " --camera 3,4,-2,0,-10 --width 1280 --height 720 --frames 3";
     auto a = test::run_command(common + " --run " + (dir / "none.kss").string() + " --screenshot " +
                                (dir / "none.png").string());
@@ -241,7 +223,7 @@ TEST_CASE("killswitch-editor's top view outlines the walls, so the floor plan re
     auto top = [&](const char* name) {
         const auto shot = dir / (std::string(name) + ".png");
         auto run = test::run_command(
-            editor_binary() + " --level " + (dir / (std::string(name) + ".json")).string() +
+            test::editor_binary() + " --level " + (dir / (std::string(name) + ".json")).string() +
             " --view top --width 1280 --height 720 --frames 4 --screenshot " + shot.string());
         INFO(run.output);
         REQUIRE(run.exit_code == 0);
@@ -264,8 +246,9 @@ TEST_CASE("killswitch-editor --dojo shows the posed robot in its preview") {
                     "no DISPLAY: dojo window test cannot run (./run.sh test runs it under xvfb-run)");
     test::ScratchDir dir;
     auto shot = dir / "dojo.png";
-    auto run = test::run_command(
-        editor_binary() + " --dojo --width 1280 --height 720 --frames 10 --screenshot " + shot.string());
+    auto run =
+        test::run_command(test::editor_binary() +
+                          " --dojo --width 1280 --height 720 --frames 10 --screenshot " + shot.string());
     INFO(run.output);
     REQUIRE(run.exit_code == 0);
     const Image img = load_png(shot);
@@ -287,12 +270,12 @@ TEST_CASE("killswitch-editor draws a sound emitter's speaker, and its radius sph
     const int id = level->add(level::EntityType::Sound, Vec3(0, 3, -10), "hum").id;
     level->find(id)->as<level::SoundProps>().radius = 6;
     REQUIRE(level::save_level_file(dir / "hum.json", *level));
-    write(dir / "none.kss", "select none\n");
-    write(dir / "select.kss", "select " + std::to_string(id) + "\n");
+    test::write_file(dir / "none.kss", "select none\n");
+    test::write_file(dir / "select.kss", "select " + std::to_string(id) + "\n");
     auto shot = [&](const char* level_name, const char* script) {
         const auto png = dir / (std::string(level_name) + "_" + script + ".png");
         auto run = test::run_command(
-            editor_binary() + " --level " + (dir / level_name).string() + " --run " +
+            test::editor_binary() + " --level " + (dir / level_name).string() + " --run " +
             (dir / script).string() +
             " --camera 3,4,-2,0,-10 --width 1280 --height 720 --frames 3 --screenshot " + png.string());
         INFO(run.output);

@@ -38,14 +38,9 @@ player_start 0,0,15
 save input.json
 )";
 
-void write(const std::filesystem::path& path, const std::string& text) {
-    std::ofstream out(path);
-    out << text;
-}
-
 // Builds input.json in `dir` with the editor's scripted mode.
 void build_input_level(const std::filesystem::path& dir) {
-    write(dir / "build.kss", kLevelScript);
+    test::write_file(dir / "build.kss", kLevelScript);
     REQUIRE(test::run_command((test::bin_dir() / "killswitch-editor").string() + " --script " +
                               (dir / "build.kss").string())
                 .exit_code == 0);
@@ -173,19 +168,20 @@ TEST_CASE("editor input: F5 plays the current document in the runtime, Shift+F5 
     // The substitute runtime: answers --help like killswitch, records its arguments and the level it was
     // given, and fails with a message when asked to.
     const auto fake = dir / "fake_runtime.sh";
-    write(fake, "#!/bin/sh\n"
-                "if [ \"$1\" = --help ]; then echo 'usage: killswitch --level FILE --screen play --warp "
-                "x,y,z,yaw,pitch'; exit 0; fi\n"
-                "echo \"$@\" > '" +
-                    (dir / "args.txt").string() +
-                    "'\n"
-                    "cp \"$2\" '" +
-                    (dir / "played.json").string() +
-                    "'\n"
-                    "if [ -e '" +
-                    (dir / "fail").string() +
-                    "' ]; then echo 'error: the level broke the game' >&2; exit 3; fi\n"
-                    "echo 'game over, bye'\n");
+    test::write_file(fake,
+                     "#!/bin/sh\n"
+                     "if [ \"$1\" = --help ]; then echo 'usage: killswitch --level FILE --screen play --warp "
+                     "x,y,z,yaw,pitch'; exit 0; fi\n"
+                     "echo \"$@\" > '" +
+                         (dir / "args.txt").string() +
+                         "'\n"
+                         "cp \"$2\" '" +
+                         (dir / "played.json").string() +
+                         "'\n"
+                         "if [ -e '" +
+                         (dir / "fail").string() +
+                         "' ]; then echo 'error: the level broke the game' >&2; exit 3; fi\n"
+                         "echo 'game over, bye'\n");
     std::filesystem::permissions(fake, std::filesystem::perms::owner_all);
     const auto status = dir / "status.json";
     const test::PrivateDisplay display;
@@ -232,7 +228,7 @@ TEST_CASE("editor input: F5 plays the current document in the runtime, Shift+F5 
     });
     CHECK(test::read_file(dir / "args.txt").find("--warp ") != std::string::npos);
 
-    write(dir / "fail", "");
+    test::write_file(dir / "fail", "");
     const int errors = st["error_lines"];
     s.key("F5");
     st = s.wait("failing play-test", [](const json& j) { return j["playtest"]["exit_code"] == 3; });

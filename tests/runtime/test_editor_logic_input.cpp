@@ -22,7 +22,7 @@ using Session = test::EditorSession;
 
 namespace {
 // A floor, a trigger, an unnamed door, a wall (takes no action) and an unnamed robot.
-const char* kLevel = R"({
+const char* kLogicLevel = R"({
   "format": "killswitch-level",
   "version": 2,
   "name": "Logic input test",
@@ -38,18 +38,8 @@ const char* kLevel = R"({
 })";
 constexpr int kTrigger = 2, kDoor = 3, kWall = 4, kRobot = 5;
 
-std::filesystem::path write_level(const std::filesystem::path& dir) {
-    const auto file = dir / "logic_input.json";
-    std::ofstream(file) << kLevel;
-    return file;
-}
-
 json links(const json& status) {
     return status.contains("primary") ? status["primary"]["links"] : json::array();
-}
-
-bool has_spot(const json& status, const std::string& name) {
-    return status["spots"].contains(name);
 }
 
 // Clicks the widget at spot `name`. An edit made by the viewport (a pick) moves the inspector's widgets
@@ -57,7 +47,7 @@ bool has_spot(const json& status, const std::string& name) {
 // the spot is where the widget is now.
 void click_spot(Session& s, const std::string& name) {
     s.frames(2);
-    const json st = s.wait(name.c_str(), [&](const json& j) { return has_spot(j, name); });
+    const json st = s.wait(name.c_str(), [&](const json& j) { return test::has_spot(j, name); });
     s.click(st["spots"][name]);
 }
 
@@ -79,22 +69,17 @@ json undo_one(Session& s) {
 void choose(Session& s, const std::string& combo, const std::string& item) {
     click_spot(s, combo);
     const json st = s.wait(("the entry " + item + " of " + combo).c_str(),
-                           [&](const json& j) { return has_spot(j, "combo:" + item); });
+                           [&](const json& j) { return test::has_spot(j, "combo:" + item); });
     s.click(st["spots"]["combo:" + item]);
 }
 
-void require_window_test_tools() {
-    // Under ./run.sh test there is always a display (xvfb-run) and xdotool: their absence is a failure.
-    REQUIRE_MESSAGE(test::have_display(), "needs a display: ./run.sh test runs this under xvfb-run");
-    REQUIRE_MESSAGE(test::have_xdotool(), "needs xdotool (./run.sh installs it)");
-}
 } // namespace
 
 TEST_CASE("editor logic input: add a link, choose its event, pick its target in the viewport, choose the "
           "action, save and undo with real X events") {
-    require_window_test_tools();
+    test::require_window_test_tools();
     test::ScratchDir dir;
-    const auto level_file = write_level(dir.path());
+    const auto level_file = test::write_file(dir / "logic_input.json", kLogicLevel);
     const auto status = dir / "status.json";
     const test::PrivateDisplay display;
     EditorProcess editor({"--level", level_file.string(), "--view", "top", "--inspector", "links", "--width",
@@ -106,7 +91,7 @@ TEST_CASE("editor logic input: add a link, choose its event, pick its target in 
     // Select the trigger with a click; its Links tab offers "+ Add link".
     s.click(st["screen"][std::to_string(kTrigger)]);
     st = s.wait("the trigger selected and its Add link button", [](const json& j) {
-        return j["selection"] == json::array({kTrigger}) && has_spot(j, "link_add");
+        return j["selection"] == json::array({kTrigger}) && test::has_spot(j, "link_add");
     });
     const size_t undo0 = st["undo"];
     click_spot(s, "link_add");
@@ -117,8 +102,8 @@ TEST_CASE("editor logic input: add a link, choose its event, pick its target in 
 
     // The event combo offers the trigger's events only.
     click_spot(s, "link0.event");
-    st = s.wait("the event list", [](const json& j) { return has_spot(j, "combo:on_exit"); });
-    CHECK_FALSE(has_spot(st, "combo:on_death")); // a robot's event, not a trigger's
+    st = s.wait("the event list", [](const json& j) { return test::has_spot(j, "combo:on_exit"); });
+    CHECK_FALSE(test::has_spot(st, "combo:on_death")); // a robot's event, not a trigger's
     s.click(st["spots"]["combo:on_exit"]);
     st = s.wait("the event chosen", [](const json& j) { return links(j)[0]["event"] == "on_exit"; });
     CHECK(st["undo"] == undo0 + 2);
@@ -200,16 +185,16 @@ TEST_CASE("editor logic input: add a link, choose its event, pick its target in 
 
 TEST_CASE("editor logic input: add an objective, pick a robot for its kill list, give it a link that wins "
           "the level, save and undo with real X events") {
-    require_window_test_tools();
+    test::require_window_test_tools();
     test::ScratchDir dir;
-    const auto level_file = write_level(dir.path());
+    const auto level_file = test::write_file(dir / "logic_input.json", kLogicLevel);
     const auto status = dir / "status.json";
     const test::PrivateDisplay display;
     EditorProcess editor({"--level", level_file.string(), "--view", "top", "--inspector", "objectives",
                           "--width", "1280", "--height", "720", "--status-file", status.string()},
                          {"XDG_CONFIG_HOME=" + (dir / "config").string()}, display);
     Session s(status, editor, display);
-    json st = s.wait("the Objectives tab", [](const json& j) { return has_spot(j, "objective_add"); });
+    json st = s.wait("the Objectives tab", [](const json& j) { return test::has_spot(j, "objective_add"); });
     CHECK(st["objectives"].empty());
     click_spot(s, "objective_add");
     st = s.wait("an objective added", [](const json& j) { return j["objectives"].size() == 1; });
@@ -265,7 +250,7 @@ TEST_CASE("editor logic input: add an objective, pick a robot for its kill list,
 TEST_CASE(
     "killswitch-editor draws the selected trigger's outgoing links as bright arrows, and none without a "
     "selection; --inspector takes only its three tabs") {
-    require_window_test_tools();
+    test::require_window_test_tools();
     test::ScratchDir dir;
     const std::string editor = (test::bin_dir() / "killswitch-editor").string();
     const auto level = test::source_dir() / "tests/data/levels/logic_hall.json";

@@ -22,7 +22,7 @@ using Session = test::EditorSession;
 
 namespace {
 // A floor, a wall of concrete to the north, the control panel; the player start in the open, facing -z.
-const char* kLevel = R"({
+const char* kObjectsLevel = R"({
   "format": "killswitch-level",
   "version": 2,
   "name": "Objects input test",
@@ -34,19 +34,7 @@ const char* kLevel = R"({
     {"id": 3, "type": "control_panel", "position": [-10, 0, -6]}
   ]
 })";
-constexpr int kWall = 2;
-
-std::filesystem::path write_level(const std::filesystem::path& dir) {
-    const auto file = dir / "objects_input.json";
-    std::ofstream(file) << kLevel;
-    return file;
-}
-
-void require_window_test_tools() {
-    // Under ./run.sh test there is always a display (xvfb-run) and xdotool: their absence is a failure.
-    REQUIRE_MESSAGE(test::have_display(), "needs a display: ./run.sh test runs this under xvfb-run");
-    REQUIRE_MESSAGE(test::have_xdotool(), "needs xdotool (./run.sh installs it)");
-}
+constexpr int kObjectsWall = 2;
 
 Vec3 start_position(const json& status) {
     const json& p = status["player_start"]["position"];
@@ -56,9 +44,9 @@ Vec3 start_position(const json& status) {
 
 TEST_CASE("editor objects input: click the player start in the top view, drag it and turn it with the gizmo, "
           "undo with real X events") {
-    require_window_test_tools();
+    test::require_window_test_tools();
     test::ScratchDir dir;
-    const auto level_file = write_level(dir.path());
+    const auto level_file = test::write_file(dir / "objects_input.json", kObjectsLevel);
     const auto status = dir / "status.json";
     const test::PrivateDisplay display;
     EditorProcess editor({"--level", level_file.string(), "--view", "top", "--width", "1280", "--height",
@@ -121,10 +109,10 @@ TEST_CASE("editor objects input: click the player start in the top view, drag it
 
 TEST_CASE("editor objects input: open the texture browser from the wall's texture field, search, click a "
           "thumbnail, close, undo with real X events") {
-    require_window_test_tools();
+    test::require_window_test_tools();
     test::ScratchDir dir;
-    const auto level_file = write_level(dir.path());
-    std::ofstream(dir / "select.kss") << "select " << kWall << "\n";
+    const auto level_file = test::write_file(dir / "objects_input.json", kObjectsLevel);
+    std::ofstream(dir / "select.kss") << "select " << kObjectsWall << "\n";
     const auto status = dir / "status.json";
     const test::PrivateDisplay display;
     EditorProcess editor({"--level", level_file.string(), "--run", (dir / "select.kss").string(), "--width",
@@ -170,5 +158,5 @@ TEST_CASE("editor objects input: open the texture browser from the wall's textur
     s.wait("saved", [](const json& j) { return j["dirty"] == false; });
     auto saved = level::load_level_file(level_file);
     REQUIRE(saved);
-    CHECK(saved->find(kWall)->as<level::WallProps>().texture == "wood");
+    CHECK(saved->find(kObjectsWall)->as<level::WallProps>().texture == "wood");
 }

@@ -22,7 +22,7 @@ using Session = test::EditorSession;
 
 namespace {
 // A floor, a wall to the north, the control panel and a robot to the west of the player start.
-const char* kLevel = R"({
+const char* kQuadLevel = R"({
   "format": "killswitch-level",
   "version": 2,
   "name": "Quad input test",
@@ -35,23 +35,11 @@ const char* kLevel = R"({
     {"id": 4, "type": "robot", "name": "Guard", "position": [-10, 0, 5]}
   ]
 })";
-constexpr int kRobot = 4;
-
-std::filesystem::path write_level(const std::filesystem::path& dir) {
-    const auto file = dir / "quad_input.json";
-    std::ofstream(file) << kLevel;
-    return file;
-}
-
-void require_window_test_tools() {
-    // Under ./run.sh test there is always a display (xvfb-run) and xdotool: their absence is a failure.
-    REQUIRE_MESSAGE(test::have_display(), "needs a display: ./run.sh test runs this under xvfb-run");
-    REQUIRE_MESSAGE(test::have_xdotool(), "needs xdotool (./run.sh installs it)");
-}
+constexpr int kQuadRobot = 4;
 
 // The robot's centre on screen in pane `pane` (window pixels).
 json in_pane(const json& status, int pane) {
-    return status["panes"][pane]["screen"][std::to_string(kRobot)];
+    return status["panes"][pane]["screen"][std::to_string(kQuadRobot)];
 }
 
 // The four panes are the same size and tile the viewport without overlapping.
@@ -74,9 +62,9 @@ void check_tiling(const json& st) {
 
 TEST_CASE("editor 4-up view: select, drag the gizmo and box select in different panes, resize, with real "
           "X events") {
-    require_window_test_tools();
+    test::require_window_test_tools();
     test::ScratchDir dir;
-    const auto level_file = write_level(dir.path());
+    const auto level_file = test::write_file(dir / "quad_input.json", kQuadLevel);
     const auto status = dir / "status.json";
     const test::PrivateDisplay display;
     EditorProcess editor({"--level", level_file.string(), "--width", "1280", "--height", "720",
@@ -93,7 +81,8 @@ TEST_CASE("editor 4-up view: select, drag the gizmo and box select in different 
     CHECK(st["panes"][2]["view"] == "Side");
     CHECK(st["panes"][3]["view"] == "Perspective");
     check_tiling(st);
-    for (int pane = 0; pane < 4; ++pane) CHECK(st["panes"][pane]["screen"].contains(std::to_string(kRobot)));
+    for (int pane = 0; pane < 4; ++pane)
+        CHECK(st["panes"][pane]["screen"].contains(std::to_string(kQuadRobot)));
     // Idle panes keep their pictures: nothing is drawn again while nothing changes.
     const json idle = s.frames(3)["panes"];
     st = s.frames(3);
@@ -102,7 +91,7 @@ TEST_CASE("editor 4-up view: select, drag the gizmo and box select in different 
     // A click on the robot in the top pane selects it, and makes the top pane the active one.
     s.click(in_pane(st, 0));
     st = s.wait("the robot selected in the top pane", [](const json& j) {
-        return j["selection"] == json::array({kRobot}) && j["active_pane"] == 0;
+        return j["selection"] == json::array({kQuadRobot}) && j["active_pane"] == 0;
     });
     CHECK(st["view"] == "Top");
 
@@ -111,7 +100,7 @@ TEST_CASE("editor 4-up view: select, drag the gizmo and box select in different 
     st = s.wait("selection cleared", [](const json& j) { return j["selection"].empty(); });
     s.click(in_pane(st, 1));
     st = s.wait("the robot selected in the front pane", [](const json& j) {
-        return j["selection"] == json::array({kRobot}) && j["active_pane"] == 1 &&
+        return j["selection"] == json::array({kQuadRobot}) && j["active_pane"] == 1 &&
                j.contains("gizmo_handles");
     });
     CHECK(st["view"] == "Front");
@@ -134,7 +123,7 @@ TEST_CASE("editor 4-up view: select, drag the gizmo and box select in different 
     const json robot_side = in_pane(st, 2);
     s.drag(json{robot_side[0].get<float>() - 25.0f, robot_side[1].get<float>() - 25.0f}, 50.0f, 50.0f);
     st = s.wait("the robot box-selected in the side pane", [](const json& j) {
-        return j["selection"] == json::array({kRobot}) && j["active_pane"] == 2;
+        return j["selection"] == json::array({kQuadRobot}) && j["active_pane"] == 2;
     });
 
     // The panes follow the window when it is resized, and still pick.
@@ -150,7 +139,7 @@ TEST_CASE("editor 4-up view: select, drag the gizmo and box select in different 
     st = s.wait("selection cleared after the resize", [](const json& j) { return j["selection"].empty(); });
     s.click(in_pane(st, 0));
     st = s.wait("the robot selected in the resized top pane", [](const json& j) {
-        return j["selection"] == json::array({kRobot}) && j["active_pane"] == 0;
+        return j["selection"] == json::array({kQuadRobot}) && j["active_pane"] == 0;
     });
 
     // Numpad 0 again: one view, the active pane's.
@@ -162,9 +151,9 @@ TEST_CASE("editor 4-up view: select, drag the gizmo and box select in different 
 
 TEST_CASE("editor Analyze: the bot's runs in the background, the report beside the level, stale after an "
           "edit, with real X events") {
-    require_window_test_tools();
+    test::require_window_test_tools();
     test::ScratchDir dir;
-    const auto level_file = write_level(dir.path());
+    const auto level_file = test::write_file(dir / "quad_input.json", kQuadLevel);
     const auto status = dir / "status.json";
     const test::PrivateDisplay display;
     EditorProcess editor({"--level", level_file.string(), "--runs", "3", "--view", "top", "--width", "1280",
@@ -190,8 +179,8 @@ TEST_CASE("editor Analyze: the bot's runs in the background, the report beside t
     CHECK(report->level_hash == st["analysis"]["report"]["level_hash"]);
 
     // An edit makes the report stale; undoing it makes it current again.
-    s.click(st["screen"][std::to_string(kRobot)]);
-    s.wait("the robot selected", [](const json& j) { return j["selection"] == json::array({kRobot}); });
+    s.click(st["screen"][std::to_string(kQuadRobot)]);
+    s.wait("the robot selected", [](const json& j) { return j["selection"] == json::array({kQuadRobot}); });
     s.key("Right");
     st = s.wait("the report stale after a nudge",
                 [](const json& j) { return j["analysis"]["stale"] == true; });

@@ -22,7 +22,7 @@ using Session = test::EditorSession;
 
 namespace {
 // A floor, two walls to the north-west and north-east, the control panel to the south.
-const char* kLevel = R"({
+const char* kStructureLevel = R"({
   "format": "killswitch-level",
   "version": 2,
   "name": "Structure input test",
@@ -35,32 +35,6 @@ const char* kLevel = R"({
     {"id": 4, "type": "control_panel", "position": [0, 0, 22]}
   ]
 })";
-
-void require_window_test_tools() {
-    // Under ./run.sh test there is always a display (xvfb-run) and xdotool: their absence is a failure.
-    REQUIRE_MESSAGE(test::have_display(), "needs a display: ./run.sh test runs this under xvfb-run");
-    REQUIRE_MESSAGE(test::have_xdotool(), "needs xdotool (./run.sh installs it)");
-}
-
-struct EditorWindow {
-    test::ScratchDir dir;
-    std::filesystem::path status = dir / "status.json";
-    test::PrivateDisplay display;
-    std::unique_ptr<EditorProcess> process;
-    std::unique_ptr<Session> session;
-
-    EditorWindow() {
-        const auto level_file = dir / "structure_input.json";
-        std::ofstream(level_file) << kLevel;
-        process = std::make_unique<EditorProcess>(
-            std::vector<std::string>{"--level", level_file.string(), "--view", "top", "--width", "1280",
-                                     "--height", "720", "--status-file", status.string()},
-            std::vector<std::string>{"XDG_CONFIG_HOME=" + (dir / "config").string(),
-                                     "XDG_DATA_HOME=" + (dir / "data").string()},
-            display);
-        session = std::make_unique<Session>(status, *process, display);
-    }
-};
 
 json ids(std::initializer_list<int> list) {
     return json(std::vector<int>(list));
@@ -95,9 +69,8 @@ bool double_click_enters(Session& s, const json& point) {
 
 TEST_CASE("editor structure input: Ctrl+G groups two walls, a click picks the group, a double click enters "
           "it, Esc leaves, Ctrl+Shift+G ungroups, with real X events") {
-    require_window_test_tools();
-    EditorWindow editor;
-    Session& s = *editor.session;
+    test::EditorWindow editor(kStructureLevel, {"--view", "top", "--width", "1280", "--height", "720"});
+    Session& s = editor.session();
     json st = s.wait("the walls on screen", [](const json& j) {
         return j["frame"] >= 2 && j["view"] == "Top" && j["screen"].contains("2") &&
                j["screen"].contains("3");
@@ -144,9 +117,8 @@ TEST_CASE("editor structure input: Ctrl+G groups two walls, a click picks the gr
 
 TEST_CASE("editor structure input: add a layer, move the selection to it from its context menu, hide it "
           "with its eye, with real X events") {
-    require_window_test_tools();
-    EditorWindow editor;
-    Session& s = *editor.session;
+    test::EditorWindow editor(kStructureLevel, {"--view", "top", "--width", "1280", "--height", "720"});
+    Session& s = editor.session();
     json st = s.wait("the Layers tab", [](const json& j) {
         return j["frame"] >= 2 && j["screen"].contains("2") && j["spots"].contains("tab.layers");
     });
@@ -186,9 +158,8 @@ TEST_CASE("editor structure input: add a layer, move the selection to it from it
 
 TEST_CASE("editor structure input: click a prefab's thumbnail, then the viewport: a linked instance, with "
           "real X events") {
-    require_window_test_tools();
-    EditorWindow editor;
-    Session& s = *editor.session;
+    test::EditorWindow editor(kStructureLevel, {"--view", "top", "--width", "1280", "--height", "720"});
+    Session& s = editor.session();
     json st = s.wait("the Prefabs tab and the floor", [](const json& j) {
         return j["frame"] >= 2 && j["screen"].contains("1") && j["spots"].contains("tab.prefabs");
     });
@@ -226,10 +197,10 @@ TEST_CASE("editor structure input: click a prefab's thumbnail, then the viewport
 
 TEST_CASE("editor structure input: Edit > Save selection as prefab... refuses a bad name, saves, offers "
           "Replace for a name in use, with real X events") {
-    require_window_test_tools();
+    test::require_window_test_tools();
     test::ScratchDir dir;
     const auto level_file = dir / "structure_input.json";
-    std::ofstream(level_file) << kLevel;
+    std::ofstream(level_file) << kStructureLevel;
     const auto prefabs = dir / "my_prefabs";
     std::filesystem::create_directories(prefabs);
     std::ofstream(prefabs / "broken.json") << "{\"format\": \"killswitch-prefab\", \"version\": 1,";

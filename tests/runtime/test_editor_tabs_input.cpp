@@ -20,7 +20,7 @@ using test::EditorProcess;
 using Session = test::EditorSession;
 
 namespace {
-const char* kLevel = R"({
+const char* kTabsLevel = R"({
   "format": "killswitch-level",
   "version": 2,
   "name": "Tabs input test",
@@ -34,31 +34,13 @@ const char* kLevel = R"({
   ]
 })";
 
-struct EditorWindow {
-    test::ScratchDir dir;
-    std::filesystem::path status = dir / "status.json";
-    test::PrivateDisplay display;
-    std::unique_ptr<EditorProcess> process;
-    std::unique_ptr<Session> session;
-
-    EditorWindow(int width, int height, bool start_in_dojo = false) {
-        REQUIRE_MESSAGE(test::have_display(), "needs a display: ./run.sh test runs this under xvfb-run");
-        REQUIRE_MESSAGE(test::have_xdotool(), "needs xdotool (./run.sh installs it)");
-        const auto level_file = dir / "tabs_input.json";
-        std::ofstream(level_file) << kLevel;
-        std::vector<std::string> args{
-            "--level",       level_file.string(),   "--view",   "top",
-            "--width",       std::to_string(width), "--height", std::to_string(height),
-            "--status-file", status.string()};
-        if (start_in_dojo) args.push_back("--dojo");
-        process = std::make_unique<EditorProcess>(
-            args,
-            std::vector<std::string>{"XDG_CONFIG_HOME=" + (dir / "config").string(),
-                                     "XDG_DATA_HOME=" + (dir / "data").string()},
-            display);
-        session = std::make_unique<Session>(status, *process, display);
-    }
-};
+// The editor on kTabsLevel at width x height, in the Level tab or (start_in_dojo) the Dojo tab.
+test::EditorWindow open_editor(int width, int height, bool start_in_dojo = false) {
+    std::vector<std::string> args{
+        "--view", "top", "--width", std::to_string(width), "--height", std::to_string(height)};
+    if (start_in_dojo) args.push_back("--dojo");
+    return test::EditorWindow(kTabsLevel, args);
+}
 
 // Where the tab `name` of a bar is drawn: "tab.NAME" in the level's spots, "page_NAME" in the dojo's.
 json tab_spot(const json& st, const std::string& bar, const std::string& name) {
@@ -98,8 +80,8 @@ std::vector<std::string> every_pair(const std::vector<std::string>& tabs) {
 }
 
 void every_tab_from_every_other(int width, int height) {
-    EditorWindow editor(width, height);
-    Session& s = *editor.session;
+    test::EditorWindow editor = open_editor(width, height);
+    Session& s = editor.session();
     json st = s.wait("the walls on screen", [](const json& j) {
         return j["frame"] >= 2 && j["tab"] == "level" && j["screen"].contains("2");
     });
@@ -113,13 +95,13 @@ void every_tab_from_every_other(int width, int height) {
     visit(s, "tab", {"level", "dojo", "level"});
     st = s.frames(2);
     CHECK(st["selection"] == json::array({2})); // the level's state came through the trips
-    CHECK(editor.process->alive());
+    CHECK(editor.process().alive());
 }
 } // namespace
 
 TEST_CASE("editor tabs input: the Dojo opened from the Level tab keeps the editor and the unsaved edit") {
-    EditorWindow editor(1280, 720);
-    Session& s = *editor.session;
+    test::EditorWindow editor = open_editor(1280, 720);
+    Session& s = editor.session();
     json st = s.wait("the walls on screen", [](const json& j) {
         return j["frame"] >= 2 && j["tab"] == "level" && j["screen"].contains("3");
     });
@@ -136,7 +118,7 @@ TEST_CASE("editor tabs input: the Dojo opened from the Level tab keeps the edito
         return j["tab"] == "dojo" && j.contains("dojo") && j["dojo"]["spots"].contains("page_keys");
     });
     s.frames(5); // the preview renders, the timeline is drawn over it
-    REQUIRE(editor.process->alive());
+    REQUIRE(editor.process().alive());
 
     st = s.wait("the Level tab's spot", [](const json& j) { return j["spots"].contains("tab.level"); });
     s.click(st["spots"]["tab.level"]);
@@ -156,11 +138,11 @@ TEST_CASE("editor tabs input: every tab from every other at 640x360") {
 }
 
 TEST_CASE("editor tabs input: the Level tab opened from a fresh start in the Dojo, and back") {
-    EditorWindow editor(1280, 720, true);
-    Session& s = *editor.session;
+    test::EditorWindow editor = open_editor(1280, 720, true);
+    Session& s = editor.session();
     s.wait("the Dojo on a fresh start", [](const json& j) {
         return j["frame"] >= 2 && j["tab"] == "dojo" && j["dojo"]["spots"].contains("page_keys");
     });
     visit(s, "tab", {"level", "dojo"});
-    CHECK(editor.process->alive());
+    CHECK(editor.process().alive());
 }

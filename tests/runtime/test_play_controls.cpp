@@ -14,27 +14,17 @@ using namespace ks;
 using ks::test::Status;
 
 namespace {
-void write(const std::filesystem::path& path, const std::string& text) {
-    std::ofstream(path) << text;
-}
-
-std::string scripted_env(const test::ScratchDir& dir) {
-    static const test::PrivateDisplay display;
-    return "env DISPLAY=" + display.name() + " XDG_CONFIG_HOME=" + (dir / "config").string() +
-           " XDG_DATA_HOME=" + (dir / "data").string() + " ";
-}
-
 struct Run {
     test::CommandResult result;
     Status status;
 };
 
 Run play(const test::ScratchDir& dir, const std::string& script, int frames, const std::string& extra = "") {
-    write(dir / "script.txt", script);
+    test::write_file(dir / "script.txt", script);
     const auto status_file = dir / "status.txt";
     std::filesystem::remove(status_file);
     Run r;
-    r.result = test::run_command(scripted_env(dir) + (test::bin_dir() / "killswitch").string() +
+    r.result = test::run_command(test::scripted_env(dir) + (test::bin_dir() / "killswitch").string() +
                                  " --width 480 --height 270 --level " + (dir / "level.json").string() +
                                  extra + " --input-script " + (dir / "script.txt").string() +
                                  " --status-file " + status_file.string() + " --screenshot " +
@@ -52,7 +42,7 @@ TEST_CASE("controls: the main menu by gamepad and by keyboard; B and Esc go back
     REQUIRE_MESSAGE(test::have_display(),
                     "no DISPLAY: run the window tests under xvfb-run (./run.sh test does)");
     test::ScratchDir dir;
-    write(dir / "level.json", test::corridor_level_json());
+    test::write_file(dir / "level.json", test::corridor_level_json());
     // The d-pad highlights the first button, then moves down the menu; A opens what is highlighted.
     Run r = play(dir, "20 pad ddown tap\n24 pad ddown tap\n28 pad ddown tap\n", 32);
     INFO(r.result.output);
@@ -82,7 +72,7 @@ TEST_CASE("controls: play with a gamepad — stick walk, trigger shot, Start pau
     REQUIRE_MESSAGE(test::have_display(),
                     "no DISPLAY: run the window tests under xvfb-run (./run.sh test does)");
     test::ScratchDir dir;
-    write(dir / "level.json", test::corridor_level_json());
+    test::write_file(dir / "level.json", test::corridor_level_json());
     Run r = play(dir, R"(20 click Play
 24 pad ly -1     # full forward for 20 frames: as W
 44 pad ly 0
@@ -109,7 +99,7 @@ TEST_CASE("controls: Jump rebound on Options > Controls, saved, swapped on confl
     REQUIRE_MESSAGE(test::have_display(),
                     "no DISPLAY: run the window tests under xvfb-run (./run.sh test does)");
     test::ScratchDir dir;
-    write(dir / "level.json", test::corridor_level_json());
+    test::write_file(dir / "level.json", test::corridor_level_json());
     Run r = play(dir, R"(20 click Options
 24 click Controls…
 28 click bind jump 1
@@ -151,14 +141,14 @@ TEST_CASE("controls: Campaign > Continue resumes a saved run at its next level; 
     REQUIRE_MESSAGE(test::have_display(),
                     "no DISPLAY: run the window tests under xvfb-run (./run.sh test does)");
     test::ScratchDir dir;
-    write(dir / "level.json", test::corridor_level_json());
-    write(dir / "level2.json", test::corridor_level_json());
-    write(dir / "campaign.json", R"({"name": "Two rooms", "levels": [
+    test::write_file(dir / "level.json", test::corridor_level_json());
+    test::write_file(dir / "level2.json", test::corridor_level_json());
+    test::write_file(dir / "campaign.json", R"({"name": "Two rooms", "levels": [
         {"file": "level.json", "title": "First"}, {"file": "level2.json", "title": "Second"}]})");
     const auto save = dir / "data" / "killswitch" / "campaign_save.json";
     std::filesystem::create_directories(save.parent_path());
-    write(save, R"({"format": "killswitch-campaign-save", "version": 1, "campaign": ")" +
-                    (dir / "campaign.json").string() + R"(", "name": "Two rooms", "level_count": 2,
+    test::write_file(save, R"({"format": "killswitch-campaign-save", "version": 1, "campaign": ")" +
+                               (dir / "campaign.json").string() + R"(", "name": "Two rooms", "level_count": 2,
         "levels": [{"title": "First", "seconds": 12.5, "robots_killed": 0, "robots_total": 0, "shots": 2,
                     "hits": 0}]})");
     const std::string campaign = " --campaign " + (dir / "campaign.json").string() + " --screen menu";
@@ -176,7 +166,7 @@ TEST_CASE("controls: Campaign > Continue resumes a saved run at its next level; 
     CHECK(r.status.text.find("campaign 1 2 level.json First") != std::string::npos);
     CHECK(r.status.text.find("campaign_save 0 2") != std::string::npos);
     // A corrupt save: one warning naming the file; Campaign starts a new run; the bad file is kept aside.
-    write(save, "{ \"format\": \"killswitch-campaign-save\", \"levels\": [");
+    test::write_file(save, "{ \"format\": \"killswitch-campaign-save\", \"levels\": [");
     r = play(dir, "20 click Campaign\n", 60, campaign);
     CHECK(r.result.output.find(save.string() + ":1:") != std::string::npos);
     CHECK(r.result.output.find("file ends early (truncated?)") != std::string::npos);

@@ -51,10 +51,10 @@ TEST_CASE("muzzle lights go first in the frame's light list, as dynamic point li
 }
 
 TEST_CASE("event particles: sparks out of a wall, a blue crackle on a robot, none on the player") {
-    auto lv = game::test::flat_level();
-    game::test::add_robot(lv, Vec3(0, 0, -20));
+    auto lv = game_test::flat_level();
+    game_test::add_robot(lv, Vec3(0, 0, -20));
     lv.add(level::EntityType::GasCylinder, Vec3(4, 0, -10), "gas");
-    auto g = game::test::make_game(lv);
+    auto g = game_test::make_game(lv);
     const int robot_id = g->robots()[0].entity_id, cylinder_id = g->cylinders()[0].entity_id;
     game::Event hit = event_at(game::EventType::Hit, Vec3(0, 2, -5));
     hit.end = Vec3(0, 0, 1); // a wall facing the player

@@ -23,17 +23,6 @@ using ks::test::xdotool;
 
 namespace {
 
-void write(const std::filesystem::path& path, const std::string& text) {
-    std::ofstream(path) << text;
-}
-
-// "env DISPLAY=… XDG_CONFIG_HOME=… ": scripted runs get an X server of their own (one per test process), so
-// that a window of a test running in parallel cannot sit over theirs and take the pointer or the focus.
-std::string scripted_env(const test::ScratchDir& dir) {
-    static const test::PrivateDisplay display;
-    return "env DISPLAY=" + display.name() + " XDG_CONFIG_HOME=" + (dir / "config").string() + " ";
-}
-
 // Polls the status file until `done` holds (or the process ends / `seconds` pass).
 Status wait_for(test::GameProcess& game, const std::filesystem::path& status_file,
                 const std::function<bool(const Status&)>& done, double seconds = 60.0) {
@@ -60,9 +49,9 @@ TEST_CASE("play by script: menu click, walk, pickup, light, door, aim, shoot, pa
     test::ScratchDir dir;
     // The start faces 100 px of mouse look to the left of the corridor; the script's look turns it straight.
     const double start_yaw = 100.0 * kDegreesPerPixel;
-    write(dir / "level.json", test::corridor_level_json(start_yaw));
+    test::write_file(dir / "level.json", test::corridor_level_json(start_yaw));
     // Frames are 1/60 s (screenshot mode): 2 game steps each; walking covers 0.25 units per frame.
-    write(dir / "play.txt", R"(# loading takes ~13 frames, then the main menu
+    test::write_file(dir / "play.txt", R"(# loading takes ~13 frames, then the main menu
 20 click Play
 23 look 100 0            # aim straight down the corridor (Play acts on frame 22)
 24 key w down            # from z = 20: over the ammo at z = 16 ...
@@ -80,7 +69,7 @@ TEST_CASE("play by script: menu click, walk, pickup, light, door, aim, shoot, pa
 )");
     const auto status_file = dir / "status.txt";
     const auto shot = dir / "end.png";
-    auto run = test::run_command(scripted_env(dir) + (test::bin_dir() / "killswitch").string() +
+    auto run = test::run_command(test::scripted_env(dir) + (test::bin_dir() / "killswitch").string() +
                                  " --width 480 --height 270 --level " + (dir / "level.json").string() +
                                  " --input-script " + (dir / "play.txt").string() + " --status-file " +
                                  status_file.string() + " --screenshot " + shot.string() + " --frames 262");
@@ -117,7 +106,7 @@ TEST_CASE("play by script: menu click, walk, pickup, light, door, aim, shoot, pa
     // pickup (frame 60), measured on the same script's screenshots.
     auto orange_extent = [&](int frames) {
         const auto png = dir / ("hud" + std::to_string(frames) + ".png");
-        auto r = test::run_command(scripted_env(dir) + (test::bin_dir() / "killswitch").string() +
+        auto r = test::run_command(test::scripted_env(dir) + (test::bin_dir() / "killswitch").string() +
                                    " --width 480 --height 270 --level " + (dir / "level.json").string() +
                                    " --input-script " + (dir / "play.txt").string() + " --screenshot " +
                                    png.string() + " --frames " + std::to_string(frames));
@@ -144,10 +133,11 @@ TEST_CASE("play by script: menu click, walk, pickup, light, door, aim, shoot, pa
 
     // Deterministic: the same script gives the same game, step for step.
     const auto status_again = dir / "status2.txt";
-    auto again = test::run_command(
-        scripted_env(dir) + (test::bin_dir() / "killswitch").string() + " --width 480 --height 270 --level " +
-        (dir / "level.json").string() + " --input-script " + (dir / "play.txt").string() + " --status-file " +
-        status_again.string() + " --screenshot " + (dir / "end2.png").string() + " --frames 262");
+    auto again = test::run_command(test::scripted_env(dir) + (test::bin_dir() / "killswitch").string() +
+                                   " --width 480 --height 270 --level " + (dir / "level.json").string() +
+                                   " --input-script " + (dir / "play.txt").string() + " --status-file " +
+                                   status_again.string() + " --screenshot " + (dir / "end2.png").string() +
+                                   " --frames 262");
     REQUIRE(again.exit_code == 0);
     CHECK(test::read_status(status_again).text == s.text);
 }
@@ -157,7 +147,7 @@ TEST_CASE("play by script on levels/main.json: Play, walk to the first door, E o
                     "no DISPLAY: run the window tests under xvfb-run (./run.sh test does)");
     test::ScratchDir dir;
     // --warp without --screen puts the player in room 1, 8 units before door 1, once the level has loaded.
-    write(dir / "main.txt", R"(20 click Play
+    test::write_file(dir / "main.txt", R"(20 click Play
 24 key w down
 36 key w up
 38 key e tap
@@ -166,10 +156,10 @@ TEST_CASE("play by script on levels/main.json: Play, walk to the first door, E o
 )");
     const auto status_file = dir / "status.txt";
     auto run = test::run_command(
-        scripted_env(dir) + (test::bin_dir() / "killswitch").string() + " --width 320 --height 180 --level " +
-        (test::source_dir() / "levels" / "main.json").string() + " --warp 0,0,-22,0,0 --input-script " +
-        (dir / "main.txt").string() + " --status-file " + status_file.string() + " --screenshot " +
-        (dir / "main.png").string() + " --frames 90");
+        test::scripted_env(dir) + (test::bin_dir() / "killswitch").string() +
+        " --width 320 --height 180 --level " + (test::source_dir() / "levels" / "main.json").string() +
+        " --warp 0,0,-22,0,0 --input-script " + (dir / "main.txt").string() + " --status-file " +
+        status_file.string() + " --screenshot " + (dir / "main.png").string() + " --frames 90");
     INFO(run.output);
     REQUIRE(run.exit_code == 0);
     const Status s = test::read_status(status_file);
@@ -189,9 +179,9 @@ TEST_CASE("play by script: a click on a button that is not there fails with the 
     REQUIRE_MESSAGE(test::have_display(),
                     "no DISPLAY: run the window tests under xvfb-run (./run.sh test does)");
     test::ScratchDir dir;
-    write(dir / "level.json", test::corridor_level_json());
-    write(dir / "bad.txt", "2 click Play\n");
-    auto run = test::run_command(scripted_env(dir) + (test::bin_dir() / "killswitch").string() +
+    test::write_file(dir / "level.json", test::corridor_level_json());
+    test::write_file(dir / "bad.txt", "2 click Play\n");
+    auto run = test::run_command(test::scripted_env(dir) + (test::bin_dir() / "killswitch").string() +
                                  " --width 320 --height 180 --level " + (dir / "level.json").string() +
                                  " --input-script " + (dir / "bad.txt").string() + " --screenshot " +
                                  (dir / "x.png").string() + " --frames 40");
@@ -199,7 +189,7 @@ TEST_CASE("play by script: a click on a button that is not there fails with the 
     CHECK(run.output.find("input script line 1") != std::string::npos);
     CHECK(run.output.find("no button 'Play' on the loading screen") != std::string::npos);
     // A malformed script is refused before the window opens.
-    write(dir / "worse.txt", "10 key hyper down\n");
+    test::write_file(dir / "worse.txt", "10 key hyper down\n");
     auto bad =
         test::run_command((test::bin_dir() / "killswitch").string() + " --level " +
                           (dir / "level.json").string() + " --input-script " + (dir / "worse.txt").string());
@@ -213,7 +203,7 @@ TEST_CASE("play with real X input (xdotool): the same play-through, waiting on t
     REQUIRE_MESSAGE(test::have_xdotool(),
                     "xdotool not installed: real-input play test cannot run (run.sh installs it)");
     test::ScratchDir dir;
-    write(dir / "level.json", test::corridor_level_json());
+    test::write_file(dir / "level.json", test::corridor_level_json());
     const auto status_file = dir / "status.txt";
     // A display of its own: no other test's window can take the keyboard focus mid-walk.
     const test::PrivateDisplay display;
@@ -354,7 +344,7 @@ TEST_CASE("play with real X input (xdotool): shot dead by a robot, the fall, the
     REQUIRE_MESSAGE((test::have_display() && test::have_xdotool()), "no DISPLAY or no xdotool: cannot run");
     test::ScratchDir dir;
     // One robot 10 units ahead, facing the player, that always hits and kills with one shot.
-    write(dir / "duel.json", R"({
+    test::write_file(dir / "duel.json", R"({
   "format": "killswitch-level", "version": 2, "name": "Duel",
   "player_start": {"position": [0, 0, 20], "yaw": 0},
   "entities": [

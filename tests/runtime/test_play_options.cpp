@@ -11,27 +11,14 @@
 using namespace ks;
 using ks::test::Status;
 
-namespace {
-void write(const std::filesystem::path& path, const std::string& text) {
-    std::ofstream(path) << text;
-}
-
-// "env DISPLAY=… XDG_CONFIG_HOME=… ": scripted runs get an X server of their own (one per test process), so
-// that a window of a test running in parallel cannot sit over theirs and take the pointer or the focus.
-std::string scripted_env(const test::ScratchDir& dir) {
-    static const test::PrivateDisplay display;
-    return "env DISPLAY=" + display.name() + " XDG_CONFIG_HOME=" + (dir / "config").string() + " ";
-}
-} // namespace
-
 TEST_CASE("options through the menu: Fast quality clicked, saved, and handed to the renderer") {
     REQUIRE_MESSAGE(test::have_display(),
                     "no DISPLAY: run the window tests under xvfb-run (./run.sh test does)");
     test::ScratchDir dir;
-    write(dir / "level.json", test::corridor_level_json());
-    write(dir / "options.txt", "20 click Options\n26 click Full\n30 click Fast\n34 click Back\n");
+    test::write_file(dir / "level.json", test::corridor_level_json());
+    test::write_file(dir / "options.txt", "20 click Options\n26 click Full\n30 click Fast\n34 click Back\n");
     const auto status_file = dir / "status.txt";
-    const std::string killswitch = scripted_env(dir) + (test::bin_dir() / "killswitch").string() +
+    const std::string killswitch = test::scripted_env(dir) + (test::bin_dir() / "killswitch").string() +
                                    " --width 480 --height 270 --level " + (dir / "level.json").string() +
                                    " --status-file " + status_file.string();
     auto run = test::run_command(killswitch + " --input-script " + (dir / "options.txt").string() +
@@ -52,8 +39,9 @@ TEST_CASE("options through the menu: Fast quality clicked, saved, and handed to 
     const std::string saved = test::read_file(dir / "config" / "killswitch" / "options.json");
     CHECK(saved.find("\"quality\": \"fast\"") != std::string::npos);
     // A render scale from the file reaches the renderer (0.25: a quarter of the pixels each way).
-    write(dir / "config" / "killswitch" / "options.json",
-          R"({"format": "killswitch-options", "version": 1, "render_scale": 0.25, "quality": "full"})");
+    test::write_file(
+        dir / "config" / "killswitch" / "options.json",
+        R"({"format": "killswitch-options", "version": 1, "render_scale": 0.25, "quality": "full"})");
     run = test::run_command(killswitch + " --screen menu --screenshot " + (dir / "m.png").string() +
                             " --frames 2");
     REQUIRE(run.exit_code == 0);

@@ -14,10 +14,6 @@ using namespace ks;
 
 namespace {
 
-void write(const std::filesystem::path& path, const std::string& text) {
-    std::ofstream(path) << text;
-}
-
 test::Image shoot(const test::ScratchDir& dir, const std::string& name, const std::string& args,
                   std::string* output = nullptr) {
     const auto file = dir / (name + ".png");
@@ -71,7 +67,7 @@ const char* kOpenFloor = R"({
 TEST_CASE("death camera: the fall rolls the view onto the left side (ground on the left of the picture)") {
     REQUIRE_MESSAGE(test::have_display(), "no DISPLAY: view tests cannot run");
     test::ScratchDir dir;
-    write(dir / "open.json", kOpenFloor);
+    test::write_file(dir / "open.json", kOpenFloor);
     const auto status = dir / "status.txt";
     // Standing, looking 45° up (where the fall's pitch ends): only sky on both sides.
     const auto standing = shoot(
@@ -106,18 +102,18 @@ TEST_CASE("robot facing: the game view and the render-only view draw a level's r
     // Both views at 60° field of view (the render-only view's), eye at (0, 3, 7), looking 12° down at a
     // robot that faces the camera (yaw 180 faces +z). It does not notice the player (eye radii 0).
     std::filesystem::create_directories(dir / "config" / "killswitch");
-    write(dir / "config" / "killswitch" / "options.json",
-          R"({"format": "killswitch-options", "version": 1, "fov_degrees": 60})");
+    test::write_file(dir / "config" / "killswitch" / "options.json",
+                     R"({"format": "killswitch-options", "version": 1, "fov_degrees": 60})");
     auto level = [&](const char* name, int yaw) {
         const auto path = dir / name;
-        write(path, std::string(R"({
+        test::write_file(path, std::string(R"({
   "format": "killswitch-level", "version": 2, "name": "One robot",
   "player_start": {"position": [0, 0, 7], "yaw": 0},
   "entities": [
     {"id": 1, "type": "floor", "name": "Ground", "position": [0, 0, 0], "props": {"size": [60, 60]}},
     {"id": 2, "type": "top_light", "name": "Lamp", "position": [0, 10, 4], "props": {"range": 40}},
     {"id": 3, "type": "robot", "name": "Robot", "position": [0, 0, 0], "rotation": [)") +
-                        std::to_string(yaw) + R"(, 0, 0],
+                                   std::to_string(yaw) + R"(, 0, 0],
      "props": {"eye_radius_min": 0, "eye_radius_max": 0}}
   ]
 })");

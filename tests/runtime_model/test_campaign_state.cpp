@@ -85,7 +85,7 @@ TEST_CASE(
     level::LoadReport report;
     auto lv = level::load_level_file(test::data_dir() / "levels" / "logic_hall.json", &report);
     REQUIRE_MESSAGE(lv.ok(), report.str());
-    auto g = game::test::make_game(*lv);
+    auto g = game_test::make_game(*lv);
     ObjectiveFlash flash;
     const float dt = static_cast<float>(g->settings().step);
     g->step({});

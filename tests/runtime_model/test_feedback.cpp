@@ -157,15 +157,15 @@ TEST_CASE("a hit robot is tinted red at the hit, less after half a second, and n
     CHECK(hit_tint(0.0f) == Vec3(0.0f));
     CHECK(hit_tint(NAN) == Vec3(0.0f));
     // Through the game: the robot's own hit flash drives it.
-    auto lv = game::test::flat_level();
-    game::test::add_robot(lv, Vec3(0, 0, -60));
-    auto g = game::test::make_game(lv);
+    auto lv = game_test::flat_level();
+    game_test::add_robot(lv, Vec3(0, 0, -60));
+    auto g = game_test::make_game(lv);
     g->step({});
     g->damage_robot(0, 20.0f, true);
     CHECK(hit_tint(g->robots()[0].hit_flash).r > 0.8f);
-    game::test::run_for(*g, 0.5);
+    game_test::run_for(*g, 0.5);
     CHECK(hit_tint(g->robots()[0].hit_flash).r > 0.1f);
-    game::test::run_for(*g, 0.5 + kStep);
+    game_test::run_for(*g, 0.5 + kStep);
     CHECK(hit_tint(g->robots()[0].hit_flash) == Vec3(0.0f));
 }
 

@@ -16,7 +16,7 @@ using namespace ks;
 using namespace ks::runtime;
 
 namespace {
-constexpr float kStep = 1.0f / 120.0f;
+constexpr float kPadStep = 1.0f / 120.0f;
 
 GamepadState pad() {
     GamepadState s;
@@ -26,7 +26,7 @@ GamepadState pad() {
 
 game::Input step(GamepadInput& g, const Options& o = Options{}) {
     game::Input in;
-    g.add_to(in, kStep, o);
+    g.add_to(in, kPadStep, o);
     return in;
 }
 } // namespace
@@ -104,21 +104,21 @@ TEST_CASE("gamepad: left stick moves, right stick looks by rate x step, sensitiv
     game::Input in = step(g, o);
     CHECK(in.move_forward == doctest::Approx(1.0f));
     CHECK(in.move_right == 0.0f);
-    CHECK(in.look_yaw == doctest::Approx(-GamepadInput::kLookRate * kStep));
+    CHECK(in.look_yaw == doctest::Approx(-GamepadInput::kLookRate * kPadStep));
     CHECK(in.look_pitch == 0.0f);
     // Half tilt past the dead zone turns a quarter as fast (the curve is tilt squared).
     p.axes[kPadRightX] = 0.1f + 0.9f * 0.5f;
     g.poll(p);
     in = step(g, o);
-    CHECK(in.look_yaw == doctest::Approx(-GamepadInput::kLookRate * kStep * 0.25f));
+    CHECK(in.look_yaw == doctest::Approx(-GamepadInput::kLookRate * kPadStep * 0.25f));
     // Right stick up looks up; invert Y flips it; sensitivity scales it.
     p.axes[kPadRightX] = 0.0f;
     p.axes[kPadRightY] = -1.0f;
     g.poll(p);
-    CHECK(step(g, o).look_pitch == doctest::Approx(GamepadInput::kLookRate * kStep));
+    CHECK(step(g, o).look_pitch == doctest::Approx(GamepadInput::kLookRate * kPadStep));
     o.invert_y = true;
     o.pad_look_sensitivity = 2.0f;
-    CHECK(step(g, o).look_pitch == doctest::Approx(-2.0f * GamepadInput::kLookRate * kStep));
+    CHECK(step(g, o).look_pitch == doctest::Approx(-2.0f * GamepadInput::kLookRate * kPadStep));
     // Sticks inside the dead zone: nothing at all.
     p.axes = {0.05f, -0.05f, 0.05f, 0.05f, -1.0f, -1.0f};
     g.poll(p);
@@ -129,7 +129,7 @@ TEST_CASE("gamepad: left stick moves, right stick looks by rate x step, sensitiv
     g.poll(p);
     game::Input both;
     both.move_forward = 1.0f;
-    g.add_to(both, kStep, o);
+    g.add_to(both, kPadStep, o);
     CHECK(both.move_forward == 1.0f);
     // A disconnected pad adds nothing.
     GamepadInput none;
@@ -226,7 +226,7 @@ TEST_CASE("player input: keys and pad together, as PlayerInput::gather adds them
     g.poll(p);
     keys.key('W', InputState::kPress);
     game::Input in = keyboard_mouse_input(keys, o, true);
-    g.add_to(in, kStep, o);
+    g.add_to(in, kPadStep, o);
     CHECK(in.move_forward == 1.0f);
     CHECK(in.move_right == doctest::Approx(1.0f));
 }

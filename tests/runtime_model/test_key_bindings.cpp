@@ -15,7 +15,7 @@ using namespace ks;
 using namespace ks::runtime;
 
 namespace {
-constexpr int kPress = InputState::kPress, kRelease = InputState::kRelease;
+constexpr int kBindPress = InputState::kPress, kBindRelease = InputState::kRelease;
 
 bool has(const std::vector<std::string>& problems, const std::string& part) {
     for (const auto& p : problems)
@@ -206,38 +206,38 @@ TEST_CASE("key bindings: the game's Input follows a rebound key, and the old key
     REQUIRE(rebind(o.bindings, Action::Fire, 0, 'F').accepted);
     o.bindings[Action::Fire][1] = kNoKey;
     InputState s;
-    s.key('I', kPress);
+    s.key('I', kBindPress);
     game::Input in = keyboard_mouse_input(s, o, true);
     CHECK(in.move_forward == 1.0f);
-    s.key('I', kRelease);
-    s.key('W', kPress);
+    s.key('I', kBindRelease);
+    s.key('W', kBindPress);
     in = keyboard_mouse_input(s, o, true);
     CHECK(in.move_forward == 0.0f);
-    s.key('W', kRelease);
+    s.key('W', kBindRelease);
     // A tap of the new fire key shoots once; the right mouse button, unbound now, does not.
-    s.key('F', kPress);
-    s.key('F', kRelease);
-    s.button(1, kPress);
-    s.button(1, kRelease);
+    s.key('F', kBindPress);
+    s.key('F', kBindRelease);
+    s.button(1, kBindPress);
+    s.button(1, kBindRelease);
     in = keyboard_mouse_input(s, o, true);
     CHECK(in.fire);
     CHECK_FALSE(keyboard_mouse_input(s, o, true).fire);
     // Not captured (a menu): no shot, but the latch is still spent.
-    s.key('F', kPress);
+    s.key('F', kBindPress);
     CHECK_FALSE(keyboard_mouse_input(s, o, false).fire);
     CHECK_FALSE(keyboard_mouse_input(s, o, true).fire);
     // Jump on a mouse button: held counts every step, like Space.
     REQUIRE(rebind(o.bindings, Action::Jump, 0, kMouseBase + 2).accepted);
-    s.button(2, kPress);
+    s.button(2, kBindPress);
     CHECK(keyboard_mouse_input(s, o, true).jump);
     CHECK(keyboard_mouse_input(s, o, true).jump);
-    s.button(2, kRelease);
+    s.button(2, kBindRelease);
     CHECK_FALSE(keyboard_mouse_input(s, o, true).jump);
     // The arrows still move (the alternative slot), strafing included.
-    s.key(kKeyLeft, kPress);
+    s.key(kKeyLeft, kBindPress);
     CHECK(keyboard_mouse_input(s, o, true).move_right == -1.0f);
     // Pause and Mute by their keys.
-    s.key('P', kPress);
+    s.key('P', kBindPress);
     CHECK(action_pressed(s, o.bindings, Action::Pause));
     CHECK_FALSE(action_pressed(s, o.bindings, Action::Pause));
 }

@@ -14,7 +14,7 @@
 #include <iterator>
 
 using namespace ks;
-using namespace ks::game::test;
+using namespace ks::game_test;
 
 namespace {
 
