@@ -1,0 +1,99 @@
+#include "brush/brush_build.h"
+
+#include "brush/convex_hull.h"
+
+#include <cmath>
+
+namespace ks::brush {
+namespace {
+
+Location point_location(std::size_t i) {
+    return Location({}, 0, 0, "polygon[" + std::to_string(i) + "]");
+}
+
+// The polygon's unit normal (Newell's method, either winding), after checking it is planar and convex.
+Result<DVec3> convex_polygon_normal(std::span<const DVec3> polygon) {
+    if (polygon.size() < 3)
+        return Error("a polygon needs at least 3 points, got " + std::to_string(polygon.size()),
+                     Location({}, 0, 0, "polygon"), "give the corners of a convex polygon");
+    if (polygon.size() > kMaxFaces - 2)
+        return Error("the polygon has more corners than a brush may have faces", Location({}, 0, 0, "polygon"),
+                     "give fewer corners");
+    DVec3 newell(0.0);
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+        if (!is_finite(polygon[k]))
+            return Error("the point is not finite", point_location(k), "give three finite numbers");
+        const DVec3& a = polygon[k];
+        const DVec3& b = polygon[(k + 1) % polygon.size()];
+        newell += DVec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+    }
+    if (!(glm::length(newell) > 0.0))
+        return Error("the polygon has no area", Location({}, 0, 0, "polygon"), "give a polygon that is not flat");
+    const DVec3 n = glm::normalize(newell);
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+        if (std::abs(glm::dot(n, polygon[k] - polygon[0])) > 1e-7)
+            return Error("the point is off the polygon's plane", point_location(k), "put every corner in one plane");
+        const DVec3& prev = polygon[(k + polygon.size() - 1) % polygon.size()];
+        const DVec3& next = polygon[(k + 1) % polygon.size()];
+        const DVec3 turn = glm::cross(polygon[k] - prev, next - polygon[k]);
+        const double edges = glm::length(polygon[k] - prev) * glm::length(next - polygon[k]);
+        if (!(glm::dot(turn, n) > 1e-12 * edges))
+            return Error("the polygon turns the wrong way or goes straight at this corner (not strictly convex)",
+                         point_location(k), "remove the corner or move it out to make the polygon convex");
+    }
+    return n;
+}
+
+} // namespace
+
+Result<Brush> make_box(const DVec3& min, const DVec3& max, const FaceAttributes& attributes) {
+    for (int a = 0; a < 3; ++a)
+        if (!(min[a] < max[a]))
+            return Error("the box's minimum is not below its maximum along axis " + std::string(1, "xyz"[a]),
+                         Location({}, 0, 0, a == 0 ? "min.x" : a == 1 ? "min.y" : "min.z"),
+                         "give min < max on every axis");
+    std::vector<Face> faces;
+    for (int a = 0; a < 3; ++a) {
+        DVec3 n(0.0);
+        n[a] = -1.0;
+        faces.push_back({{n, -min[a]}, attributes});
+        n[a] = 1.0;
+        faces.push_back({{n, max[a]}, attributes});
+    }
+    return Brush::from_faces(std::move(faces));
+}
+
+Result<Brush> make_extrusion(std::span<const DVec3> polygon, const DVec3& direction,
+                             const FaceAttributes& attributes) {
+    auto normal = convex_polygon_normal(polygon);
+    if (!normal) return normal.error();
+    if (!is_finite(direction) || !(std::abs(glm::dot(*normal, direction)) > 1e-9 * glm::length(direction)))
+        return Error("the direction is not finite or lies in the polygon's plane", Location({}, 0, 0, "direction"),
+                     "give a direction leaving the polygon's plane");
+    // The polygon's face looks away from the sweep; the swept copy looks along it.
+    const DVec3 n = glm::dot(*normal, direction) > 0 ? *normal : -*normal;
+    std::vector<Face> faces;
+    faces.push_back({{-n, -glm::dot(n, polygon[0])}, attributes});
+    faces.push_back({{n, glm::dot(n, polygon[0] + direction)}, attributes});
+    DVec3 centre(0.0);
+    for (const DVec3& p : polygon) centre += p;
+    centre /= double(polygon.size());
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+        const DVec3& a = polygon[k];
+        const DVec3& b = polygon[(k + 1) % polygon.size()];
+        DVec3 side = glm::normalize(glm::cross(b - a, direction));
+        if (glm::dot(side, a - centre) < 0) side = -side;
+        faces.push_back({{side, glm::dot(side, a)}, attributes});
+    }
+    return Brush::from_faces(std::move(faces));
+}
+
+Result<Brush> make_from_points(std::span<const DVec3> points, const FaceAttributes& attributes) {
+    auto hull = convex_hull(points);
+    if (!hull) return hull.error();
+    std::vector<Face> faces;
+    for (const HullFace& f : hull->faces) faces.push_back({f.plane, attributes});
+    return Brush::from_faces(std::move(faces), RedundantPlanes::drop);
+}
+
+} // namespace ks::brush
