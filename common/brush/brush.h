@@ -19,14 +19,15 @@ inline constexpr std::size_t kMaxFaces = 1024;
 enum class RedundantPlanes { refuse, drop };
 
 struct Edge {
-    int v0 = 0, v1 = 0;       // vertex indices
+    int v0 = 0, v1 = 0;         // vertex indices
     int face_a = 0, face_b = 0; // the two faces meeting at the edge
 };
 
 class Brush {
-public:
+  public:
     // Validates and derives. Errors name the face (faces[i] and the field) and say how to fix it.
-    static Result<Brush> from_faces(std::vector<Face> faces, RedundantPlanes redundant = RedundantPlanes::refuse);
+    static Result<Brush> from_faces(std::vector<Face> faces,
+                                    RedundantPlanes redundant = RedundantPlanes::refuse);
 
     const std::vector<Face>& faces() const { return faces_; }
     const std::vector<DVec3>& vertices() const { return vertices_; }
@@ -44,7 +45,7 @@ public:
     // distance within kOnPlaneEpsilon), or -1.
     int find_face(const Plane& plane) const;
 
-private:
+  private:
     Brush() = default;
 
     std::vector<Face> faces_;

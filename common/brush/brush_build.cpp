@@ -17,8 +17,8 @@ Result<DVec3> convex_polygon_normal(std::span<const DVec3> polygon) {
         return Error("a polygon needs at least 3 points, got " + std::to_string(polygon.size()),
                      Location({}, 0, 0, "polygon"), "give the corners of a convex polygon");
     if (polygon.size() > kMaxFaces - 2)
-        return Error("the polygon has more corners than a brush may have faces", Location({}, 0, 0, "polygon"),
-                     "give fewer corners");
+        return Error("the polygon has more corners than a brush may have faces",
+                     Location({}, 0, 0, "polygon"), "give fewer corners");
     DVec3 newell(0.0);
     for (std::size_t k = 0; k < polygon.size(); ++k) {
         if (!is_finite(polygon[k]))
@@ -28,18 +28,21 @@ Result<DVec3> convex_polygon_normal(std::span<const DVec3> polygon) {
         newell += DVec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
     }
     if (!(glm::length(newell) > 0.0))
-        return Error("the polygon has no area", Location({}, 0, 0, "polygon"), "give a polygon that is not flat");
+        return Error("the polygon has no area", Location({}, 0, 0, "polygon"),
+                     "give a polygon that is not flat");
     const DVec3 n = glm::normalize(newell);
     for (std::size_t k = 0; k < polygon.size(); ++k) {
         if (std::abs(glm::dot(n, polygon[k] - polygon[0])) > 1e-7)
-            return Error("the point is off the polygon's plane", point_location(k), "put every corner in one plane");
+            return Error("the point is off the polygon's plane", point_location(k),
+                         "put every corner in one plane");
         const DVec3& prev = polygon[(k + polygon.size() - 1) % polygon.size()];
         const DVec3& next = polygon[(k + 1) % polygon.size()];
         const DVec3 turn = glm::cross(polygon[k] - prev, next - polygon[k]);
         const double edges = glm::length(polygon[k] - prev) * glm::length(next - polygon[k]);
         if (!(glm::dot(turn, n) > 1e-12 * edges))
-            return Error("the polygon turns the wrong way or goes straight at this corner (not strictly convex)",
-                         point_location(k), "remove the corner or move it out to make the polygon convex");
+            return Error(
+                "the polygon turns the wrong way or goes straight at this corner (not strictly convex)",
+                point_location(k), "remove the corner or move it out to make the polygon convex");
     }
     return n;
 }
@@ -50,7 +53,10 @@ Result<Brush> make_box(const DVec3& min, const DVec3& max, const FaceAttributes&
     for (int a = 0; a < 3; ++a)
         if (!(min[a] < max[a]))
             return Error("the box's minimum is not below its maximum along axis " + std::string(1, "xyz"[a]),
-                         Location({}, 0, 0, a == 0 ? "min.x" : a == 1 ? "min.y" : "min.z"),
+                         Location({}, 0, 0,
+                                  a == 0   ? "min.x"
+                                  : a == 1 ? "min.y"
+                                           : "min.z"),
                          "give min < max on every axis");
     std::vector<Face> faces;
     for (int a = 0; a < 3; ++a) {
@@ -68,8 +74,8 @@ Result<Brush> make_extrusion(std::span<const DVec3> polygon, const DVec3& direct
     auto normal = convex_polygon_normal(polygon);
     if (!normal) return normal.error();
     if (!is_finite(direction) || !(std::abs(glm::dot(*normal, direction)) > 1e-9 * glm::length(direction)))
-        return Error("the direction is not finite or lies in the polygon's plane", Location({}, 0, 0, "direction"),
-                     "give a direction leaving the polygon's plane");
+        return Error("the direction is not finite or lies in the polygon's plane",
+                     Location({}, 0, 0, "direction"), "give a direction leaving the polygon's plane");
     // The polygon's face looks away from the sweep; the swept copy looks along it.
     const DVec3 n = glm::dot(*normal, direction) > 0 ? *normal : -*normal;
     std::vector<Face> faces;
@@ -93,6 +99,39 @@ Result<Brush> make_from_points(std::span<const DVec3> points, const FaceAttribut
     if (!hull) return hull.error();
     std::vector<Face> faces;
     for (const HullFace& f : hull->faces) faces.push_back({f.plane, attributes});
+    return Brush::from_faces(std::move(faces), RedundantPlanes::drop);
+}
+
+Result<Brush> make_hull_of(std::span<const DVec3> points, std::span<const Brush* const> sources,
+                           bool require_all_corners) {
+    auto hull = convex_hull(points);
+    if (!hull) return hull.error();
+    if (require_all_corners && hull->corners.size() != points.size()) {
+        std::size_t missing = 0;
+        while (missing < hull->corners.size() && hull->corners[missing] == static_cast<int>(missing))
+            ++missing;
+        return Error(
+            "vertex " + std::to_string(missing) +
+                " would no longer be a corner (it would lie inside the brush, on a face or on another "
+                "vertex)",
+            Location({}, 0, 0, "vertices[" + std::to_string(missing) + "]"),
+            "move it less far, or move the vertices it would meet along with it");
+    }
+    std::vector<Face> faces;
+    for (const HullFace& f : hull->faces) {
+        const Face* best = nullptr;
+        double best_score = -1e300;
+        for (const Brush* source : sources)
+            for (const Face& candidate : source->faces()) {
+                // Same plane first (a large bonus), then the most parallel, then the nearest.
+                const double dot = glm::dot(candidate.plane.normal, f.plane.normal);
+                const double gap = std::abs(candidate.plane.distance - f.plane.distance);
+                const bool same = dot > 1.0 - kSameNormal && gap <= kOnPlaneEpsilon;
+                const double score = (same ? 10.0 : 0.0) + dot - 1e-9 * gap;
+                if (score > best_score) best_score = score, best = &candidate;
+            }
+        faces.push_back({f.plane, best ? best->attributes : FaceAttributes{}});
+    }
     return Brush::from_faces(std::move(faces), RedundantPlanes::drop);
 }
 

@@ -19,4 +19,10 @@ Result<Brush> make_extrusion(std::span<const DVec3> polygon, const DVec3& direct
 // The convex hull of `points`; points inside it are ignored.
 Result<Brush> make_from_points(std::span<const DVec3> points, const FaceAttributes& attributes = {});
 
+// The convex hull of `points`, each face taking the attributes of the face of `sources` that matches it
+// best: the same plane if one has it, else the most nearly parallel one (the vertex edits and merge use it).
+// With `require_all_corners`, refused when some point is not a corner of the hull.
+Result<Brush> make_hull_of(std::span<const DVec3> points, std::span<const Brush* const> sources,
+                           bool require_all_corners = false);
+
 } // namespace ks::brush

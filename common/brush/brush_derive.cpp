@@ -20,8 +20,9 @@ using Winding = std::vector<WindingPoint>;
 
 Winding base_winding(const Plane& plane) {
     const DVec3 n = plane.normal;
-    const DVec3 a = std::abs(n.x) < std::abs(n.y) ? (std::abs(n.x) < std::abs(n.z) ? DVec3(1, 0, 0) : DVec3(0, 0, 1))
-                                                  : (std::abs(n.y) < std::abs(n.z) ? DVec3(0, 1, 0) : DVec3(0, 0, 1));
+    const DVec3 a = std::abs(n.x) < std::abs(n.y)
+                        ? (std::abs(n.x) < std::abs(n.z) ? DVec3(1, 0, 0) : DVec3(0, 0, 1))
+                        : (std::abs(n.y) < std::abs(n.z) ? DVec3(0, 1, 0) : DVec3(0, 0, 1));
     const DVec3 u = glm::normalize(glm::cross(a, n)) * kBaseHalfSize;
     const DVec3 v = glm::cross(n, u); // u x v points along n: the corners below run counter-clockwise
     const DVec3 c = n * plane.distance;
@@ -95,7 +96,8 @@ std::optional<DVec3> best_intersection(const std::vector<Plane>& planes, std::ve
     int a = -1, b = -1;
     for (std::size_t i = 0; i < candidates.size(); ++i)
         for (std::size_t k = i + 1; k < candidates.size(); ++k) {
-            const double s = glm::length(glm::cross(planes[candidates[i]].normal, planes[candidates[k]].normal));
+            const double s =
+                glm::length(glm::cross(planes[candidates[i]].normal, planes[candidates[k]].normal));
             if (s > best) best = s, a = candidates[i], b = candidates[k];
         }
     if (a < 0) return std::nullopt;
@@ -161,15 +163,15 @@ Result<DerivedGeometry> derive_geometry(const std::vector<Plane>& planes) {
         if (w.size() < 3) continue;
         for (std::size_t k = 0; k < w.size(); ++k)
             if (w[k].edge_plane == kBaseEdge)
-                return Error("the brush is unbounded or reaches beyond +-" + std::to_string(int(kMaxCoordinate)) +
-                                 " units: this face does not close",
+                return Error("the brush is unbounded or reaches beyond +-" +
+                                 std::to_string(int(kMaxCoordinate)) + " units: this face does not close",
                              Location({}, 0, 0, "faces[" + std::to_string(i) + "]"),
                              "add planes that close the brush, or keep it within the world");
         for (std::size_t k = 0; k < w.size(); ++k) {
             const int before = w[(k + w.size() - 1) % w.size()].edge_plane;
             face_corners[i].push_back(static_cast<int>(corners.size()));
-            corners.push_back({polish_corner(planes, w[k].p, i, before, w[k].edge_plane), i, before,
-                               w[k].edge_plane});
+            corners.push_back(
+                {polish_corner(planes, w[k].p, i, before, w[k].edge_plane), i, before, w[k].edge_plane});
         }
     }
     int groups = 0;

@@ -26,7 +26,8 @@ Result<void> check_numbers(const Face& face, std::size_t i) {
                      face_location(i, ".plane.distance"), "give a finite number");
     const FaceAttributes& a = face.attributes;
     if (!std::isfinite(a.offset.x) || !std::isfinite(a.offset.y))
-        return Error("the texture offset is not finite", face_location(i, ".offset"), "give two finite numbers");
+        return Error("the texture offset is not finite", face_location(i, ".offset"),
+                     "give two finite numbers");
     if (!std::isfinite(a.rotation_degrees))
         return Error("the texture rotation is not finite", face_location(i, ".rotation"),
                      "give a finite angle in degrees");
@@ -46,7 +47,8 @@ Result<void> normalize(Face& face, std::size_t i) {
     face.plane.normal /= len;
     face.plane.distance /= len;
     if (!std::isfinite(face.plane.distance) || std::abs(face.plane.distance) > 4.0 * kMaxCoordinate)
-        return Error("the plane lies " + number_text(face.plane.distance) + " units from the origin, beyond the world",
+        return Error("the plane lies " + number_text(face.plane.distance) +
+                         " units from the origin, beyond the world",
                      face_location(i, ".plane.distance"),
                      "keep brushes within +-" + number_text(kMaxCoordinate) + " units of the origin");
     return ok();
@@ -65,18 +67,20 @@ Result<void> check_pairs(std::vector<Face>& faces, RedundantPlanes redundant) {
                     faces.erase(faces.begin() + static_cast<std::ptrdiff_t>(j--));
                     continue;
                 }
-                return Error("duplicates faces[" + std::to_string(i) + "] (the same plane)",
-                             face_location(j), "remove one of the two faces");
+                return Error("duplicates faces[" + std::to_string(i) + "] (the same plane)", face_location(j),
+                             "remove one of the two faces");
             }
             if (dot < -1.0 + kSameNormal) {
                 const double gap = a.distance + b.distance; // the slab -b.distance <= n.x <= a.distance
                 if (std::abs(gap) <= kOnPlaneEpsilon)
-                    return Error("is faces[" + std::to_string(i) + "] turned around: the brush would have zero "
-                                 "thickness",
+                    return Error("is faces[" + std::to_string(i) +
+                                     "] turned around: the brush would have zero "
+                                     "thickness",
                                  face_location(j), "move one of the two planes apart or remove one");
                 if (gap < 0)
-                    return Error("faces away from faces[" + std::to_string(i) + "] with no room between them: "
-                                 "the brush is empty",
+                    return Error("faces away from faces[" + std::to_string(i) +
+                                     "] with no room between them: "
+                                     "the brush is empty",
                                  face_location(j), "flip the normal of one of them or move them apart");
             }
         }
@@ -98,7 +102,8 @@ Result<void> check_spread(const std::vector<Face>& faces) {
     const DVec3 axis = glm::normalize(glm::cross(n0, faces[second].plane.normal));
     for (const Face& f : faces)
         if (std::abs(glm::dot(f.plane.normal, axis)) > 1e-9) return ok();
-    return Error("the brush is unbounded along " + vector_text(axis) + ": every plane contains that direction",
+    return Error("the brush is unbounded along " + vector_text(axis) +
+                     ": every plane contains that direction",
                  face_location(0), "add two planes closing it along that direction");
 }
 
@@ -122,8 +127,8 @@ Result<std::vector<Face>> validate_faces(std::vector<Face> faces, RedundantPlane
     }
     if (auto r = check_pairs(faces, redundant); !r) return r.error();
     if (faces.size() < 4)
-        return Error("only " + std::to_string(faces.size()) + " distinct planes remain", Location({}, 0, 0, "faces"),
-                     "add planes until they enclose a volume");
+        return Error("only " + std::to_string(faces.size()) + " distinct planes remain",
+                     Location({}, 0, 0, "faces"), "add planes until they enclose a volume");
     if (auto r = check_spread(faces); !r) return r.error();
     return faces;
 }

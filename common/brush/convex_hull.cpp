@@ -80,8 +80,8 @@ Result<Hull> convex_hull(std::span<const DVec3> points) {
     if (run.exit_code != 0) {
         std::fflush(run.err);
         const std::string text = run.messages ? std::string(run.messages, run.message_size) : std::string();
-        const bool flat = text.find("QH6154") != std::string::npos || text.find("flat") != std::string::npos ||
-                          text.find("QH6214") != std::string::npos;
+        const bool flat = text.find("QH6154") != std::string::npos ||
+                          text.find("flat") != std::string::npos || text.find("QH6214") != std::string::npos;
         return Error(flat ? "the points span no volume (they are coplanar, collinear or equal)"
                           : "Qhull failed: " + text.substr(0, text.find('\n')),
                      Location({}, 0, 0, "points"), "give at least 4 points that are not in one plane");

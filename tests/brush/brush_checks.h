@@ -23,7 +23,8 @@ inline std::string audit(const Brush& b, double tolerance = 1e-7) {
         for (std::size_t k = 0; k < polys[f].size(); ++k) {
             const int a = polys[f][k], c = polys[f][(k + 1) % polys[f].size()];
             if (std::abs(b.faces()[f].plane.signed_distance(v[a])) > tolerance)
-                return "vertex off its face's plane by " + std::to_string(b.faces()[f].plane.signed_distance(v[a]));
+                return "vertex off its face's plane by " +
+                       std::to_string(b.faces()[f].plane.signed_distance(v[a]));
             ++directed[{a, c}];
         }
     }
@@ -34,7 +35,8 @@ inline std::string audit(const Brush& b, double tolerance = 1e-7) {
     if (euler != 2) return "Euler characteristic " + std::to_string(euler);
     for (const DVec3& p : v)
         for (const Face& f : b.faces())
-            if (f.plane.signed_distance(p) > tolerance) return "a vertex is outside a face plane (not convex)";
+            if (f.plane.signed_distance(p) > tolerance)
+                return "a vertex is outside a face plane (not convex)";
     for (const DVec3& p : v)
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return "non-finite vertex";
     if (!(polyhedron_volume(v, polys) > 0)) return "no volume";

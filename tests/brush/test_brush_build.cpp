@@ -115,7 +115,8 @@ TEST_CASE("from points: an octahedron and a random cloud") {
     REQUIRE_MESSAGE(s.ok(), (s.ok() ? "" : s.error().str()));
     CHECK(audit(*s).empty());
     CHECK(s->vertices().size() == 200);
-    CHECK(s->volume() == doctest::Approx(4.0 / 3.0 * 3.14159265 * 1000).epsilon(0.02));
+    CHECK(s->volume() < 4.0 / 3.0 * 3.14159265 * 1000);
+    CHECK(s->volume() == doctest::Approx(4.0 / 3.0 * 3.14159265 * 1000).epsilon(0.05));
 }
 
 TEST_CASE("from points refuses too few, coplanar, non-finite and too many points") {

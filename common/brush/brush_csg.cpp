@@ -1,0 +1,101 @@
+#include "brush/brush_csg.h"
+
+#include "brush/brush_build.h"
+#include "brush/brush_clip.h"
+
+#include <cmath>
+
+namespace ks::brush {
+namespace {
+
+bool apart(const Brush& a, const Brush& b) {
+    for (int k = 0; k < 3; ++k)
+        if (a.bounds_min()[k] >= b.bounds_max()[k] - kOnPlaneEpsilon ||
+            b.bounds_min()[k] >= a.bounds_max()[k] - kOnPlaneEpsilon)
+            return true;
+    return false;
+}
+
+} // namespace
+
+Result<Subtraction> subtract(const Brush& a, const Brush& b) {
+    Subtraction out;
+    if (apart(a, b)) {
+        out.fragments.push_back(a);
+        return out;
+    }
+    Brush rest = a;
+    std::vector<bool> used(b.faces().size(), false);
+    for (;;) {
+        // Greedy: the plane of B cutting the largest piece off what is left of A.
+        int best = -1;
+        std::optional<Split> best_split;
+        for (std::size_t i = 0; i < b.faces().size(); ++i) {
+            if (used[i]) continue;
+            const Face& f = b.faces()[i];
+            auto parts = split(rest, f.plane, f.attributes);
+            if (!parts) return parts.error();
+            if (!parts->back) { // all of what is left lies outside B: it is a fragment, nothing is removed
+                out.fragments.push_back(std::move(rest));
+                return out;
+            }
+            if (!parts->front) {
+                used[i] = true; // cuts nothing now, and cuts nothing of any smaller piece later
+                continue;
+            }
+            if (!best_split || parts->front->volume() > best_split->front->volume())
+                best = static_cast<int>(i), best_split = std::move(*parts);
+        }
+        if (best < 0) break;
+        used[static_cast<std::size_t>(best)] = true;
+        out.fragments.push_back(std::move(*best_split->front));
+        rest = std::move(*best_split->back);
+    }
+    out.removed = std::move(rest);
+    return out;
+}
+
+Result<Brush> intersect(const Brush& a, const Brush& b) {
+    if (apart(a, b))
+        return Error("the brushes do not overlap", Location({}, 0, 0, "b"), "move them so that they overlap");
+    std::vector<Face> faces = a.faces();
+    faces.insert(faces.end(), b.faces().begin(), b.faces().end());
+    auto both = Brush::from_faces(std::move(faces), RedundantPlanes::drop);
+    if (!both)
+        return Error("the brushes do not overlap in a volume (" + both.error().message + ")",
+                     Location({}, 0, 0, "b"), "move them so that they overlap");
+    return both;
+}
+
+Result<Brush> merge(const Brush& a, const Brush& b) {
+    std::vector<DVec3> points = a.vertices();
+    points.insert(points.end(), b.vertices().begin(), b.vertices().end());
+    const Brush* sources[] = {&a, &b};
+    auto hull = make_hull_of(points, sources);
+    if (!hull) return hull.error();
+    auto common = intersect(a, b);
+    const double union_volume = a.volume() + b.volume() - (common ? common->volume() : 0.0);
+    if (hull->volume() > union_volume * (1.0 + 1e-9) + 1e-12)
+        return Error("the union is not convex (its hull is " + std::to_string(hull->volume() - union_volume) +
+                         " cubic units larger)",
+                     Location({}, 0, 0, "b"),
+                     "merge brushes whose union is convex, such as two halves of a box");
+    return hull;
+}
+
+Result<std::vector<Brush>> hollow(const Brush& brush, double thickness) {
+    if (!(thickness > 0.0) || !std::isfinite(thickness))
+        return Error("the wall thickness must be a positive number", Location({}, 0, 0, "thickness"),
+                     "give a thickness above 0");
+    std::vector<Face> inner = brush.faces();
+    for (Face& f : inner) f.plane.distance -= thickness;
+    auto inside = Brush::from_faces(std::move(inner), RedundantPlanes::drop);
+    if (!inside)
+        return Error("walls " + std::to_string(thickness) + " thick leave no inside",
+                     Location({}, 0, 0, "thickness"), "give a thinner wall");
+    auto walls = subtract(brush, *inside);
+    if (!walls) return walls.error();
+    return std::move(walls->fragments);
+}
+
+} // namespace ks::brush
