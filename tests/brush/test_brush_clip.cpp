@@ -30,8 +30,8 @@ Brush mapped_box() {
     REQUIRE(b.ok());
     std::vector<Face> faces = b->faces();
     for (std::size_t i = 0; i < faces.size(); ++i)
-        faces[i].attributes = mapping(i % 2 ? "metal" : "concrete", 0.25 * i, -0.5 * i, 0.5 + 0.25 * i, 2.0 - 0.2 * i,
-                                      17.0 * i);
+        faces[i].attributes = mapping(i % 2 ? "metal" : "concrete", 0.25 * i, -0.5 * i, 0.5 + 0.25 * i,
+                                      2.0 - 0.2 * i, 17.0 * i);
     auto mapped = Brush::from_faces(faces);
     REQUIRE(mapped.ok());
     return *mapped;
@@ -124,13 +124,15 @@ TEST_CASE("texture coordinates: walls map u horizontally and v up; floors map u 
     CHECK(t.y == doctest::Approx(-1.0));
     // A sloped face is not stretched: one unit along the slope is one texture unit.
     const Face slope{{glm::normalize(DVec3(0, 1, 1)), 0.0}, mapping("s", 0, 0, 1, 1, 0)};
-    const auto a = texture_coordinates(slope, {0, 0, 0}), b = texture_coordinates(slope, DVec3(0, 1, -1) / std::sqrt(2.0));
+    const auto a = texture_coordinates(slope, {0, 0, 0}),
+               b = texture_coordinates(slope, DVec3(0, 1, -1) / std::sqrt(2.0));
     CHECK(glm::length(a - b) == doctest::Approx(1.0));
 }
 
 TEST_CASE("texture lock: moving and turning a brush keeps every face's world mapping") {
     const Brush box = mapped_box();
-    const glm::dmat3 turns[] = {glm::dmat3(1.0), glm::mat3_cast(glm::angleAxis(0.7, glm::normalize(DVec3(1, 2, 3)))),
+    const glm::dmat3 turns[] = {glm::dmat3(1.0),
+                                glm::mat3_cast(glm::angleAxis(0.7, glm::normalize(DVec3(1, 2, 3)))),
                                 glm::mat3_cast(glm::angleAxis(3.14159265358979 / 2, DVec3(0, 1, 0))),
                                 glm::mat3_cast(glm::angleAxis(2.5, DVec3(1, 0, 0)))};
     for (const glm::dmat3& r : turns) {
@@ -140,10 +142,12 @@ TEST_CASE("texture lock: moving and turning a brush keeps every face's world map
         CHECK(audit(*moved).empty());
         CHECK(moved->volume() == doctest::Approx(box.volume()).epsilon(1e-12));
         for (std::size_t f = 0; f < box.faces().size(); ++f) {
-            const DVec3 p = face_point(box, f) + DVec3(0.1, 0.05, -0.07) * (DVec3(1.0) - glm::abs(box.faces()[f].plane.normal));
-            const int g = moved->find_face({glm::normalize(r * box.faces()[f].plane.normal),
-                                            box.faces()[f].plane.distance +
-                                                glm::dot(glm::normalize(r * box.faces()[f].plane.normal), t)});
+            const DVec3 p = face_point(box, f) +
+                            DVec3(0.1, 0.05, -0.07) * (DVec3(1.0) - glm::abs(box.faces()[f].plane.normal));
+            const int g =
+                moved->find_face({glm::normalize(r * box.faces()[f].plane.normal),
+                                  box.faces()[f].plane.distance +
+                                      glm::dot(glm::normalize(r * box.faces()[f].plane.normal), t)});
             REQUIRE(g >= 0);
             const auto before = texture_coordinates(box.faces()[f], p);
             const auto after = texture_coordinates(moved->faces()[g], r * p + t);
@@ -162,7 +166,8 @@ TEST_CASE("texture lock: moving and turning a brush keeps every face's world map
 
 TEST_CASE("texture lock: a clip keeps the mapping of every kept face") {
     const Brush box = mapped_box();
-    auto cut = clip(box, {glm::normalize(DVec3(1, 1, 1)), 1.0}, ClipSide::keep_back, mapping("cap", 0, 0, 1, 1, 0));
+    auto cut =
+        clip(box, {glm::normalize(DVec3(1, 1, 1)), 1.0}, ClipSide::keep_back, mapping("cap", 0, 0, 1, 1, 0));
     REQUIRE(cut.ok());
     for (std::size_t f = 0; f < cut->faces().size(); ++f) {
         const int original = box.find_face(cut->faces()[f].plane);
