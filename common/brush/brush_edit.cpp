@@ -77,6 +77,16 @@ Result<Brush> move_vertices(const Brush& brush, std::span<const int> vertex_indi
     if (result->vertices().size() != points.size())
         return Error("the moved brush is degenerate (vertices closer than 1e-8 units)",
                      Location({}, 0, 0, "delta"), "move the vertices less far");
+    for (std::size_t f = 0; f < brush.faces().size(); ++f) {
+        const auto& poly = brush.polygons()[f];
+        const bool still =
+            std::none_of(poly.begin(), poly.end(), [&](int v) { return moved[static_cast<std::size_t>(v)]; });
+        if (still && result->find_face(brush.faces()[f].plane) < 0)
+            return Error("the move would push vertices through face " + std::to_string(f) +
+                             ", turning the brush over",
+                         Location({}, 0, 0, "faces[" + std::to_string(f) + "]"),
+                         "move the vertices the other way, or less far");
+    }
     std::vector<Face> faces = result->faces();
     lock_moved_faces(brush, moved, delta, *result, faces);
     return Brush::from_faces(std::move(faces));

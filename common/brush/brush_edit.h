@@ -7,7 +7,9 @@
 // when (1) every vertex, moved or not, is still a distinct corner of the hull: none goes inside the brush,
 // onto a face or onto another vertex; and (2) every old edge still joins two vertices of one face: the
 // hull's topology may change only by faces splitting (a quad bent into two triangles) or neighbours becoming
-// coplanar and merging, never by a vertex passing over to the other side of the brush and reconnecting.
+// coplanar and merging, never by a vertex passing over to the other side of the brush and reconnecting;
+// and (3) every face none of whose vertices moved keeps its plane, facing the same way: a vertex pushed
+// through the opposite face would leave the same topology, mirrored, and is refused.
 // Faces keep the attributes of the old face they match (same plane, else most nearly parallel); a face
 // whose every vertex moved by the delta keeps its world mapping (texture lock).
 #include "brush/brush.h"
