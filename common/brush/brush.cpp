@@ -41,22 +41,34 @@ double polyhedron_volume(const std::vector<DVec3>& vertices, const std::vector<s
 }
 
 Result<Brush> Brush::from_faces(std::vector<Face> faces, RedundantPlanes redundant) {
-    auto valid = validate_faces(std::move(faces), redundant);
+    return from_anchored_faces(DVec3(0.0), std::move(faces), redundant);
+}
+
+Result<Brush> Brush::from_anchored_faces(const DVec3& anchor, std::vector<Face> local_faces,
+                                         RedundantPlanes redundant) {
+    if (!is_finite(anchor) || glm::any(glm::greaterThan(glm::abs(anchor), DVec3(kMaxCoordinate))))
+        return Error("the anchor is not finite or lies beyond the world", Location({}, 0, 0, "anchor"),
+                     "give a point near the brush");
+    auto valid = validate_faces(std::move(local_faces), redundant);
     if (!valid) return valid.error();
     std::vector<Plane> planes;
     for (const Face& f : *valid) planes.push_back(f.plane);
     auto derived = derive_geometry(planes);
     if (!derived) return derived.error();
     Brush brush;
+    brush.anchor_ = anchor;
     for (std::size_t i = 0; i < valid->size(); ++i) {
         if (!derived->polygons[i].empty()) {
+            brush.local_planes_.push_back(planes[i]);
             brush.faces_.push_back(std::move((*valid)[i]));
+            brush.faces_.back().plane = planes[i].translated(anchor);
             brush.polygons_.push_back(std::move(derived->polygons[i]));
         } else if (redundant == RedundantPlanes::refuse && !derived->vertices.empty()) {
             return Error("the plane contributes no face (it lies outside the brush or only touches it)",
                          face_location(i), "remove this face");
         }
     }
+    for (DVec3& v : derived->vertices) v += anchor;
     brush.vertices_ = std::move(derived->vertices);
     brush.volume_ = polyhedron_volume(brush.vertices_, brush.polygons_);
     if (brush.faces_.size() < 4 || !(brush.volume_ > kMinVolume))
@@ -80,6 +92,12 @@ DVec3 Brush::vertex_centre() const {
     DVec3 c(0.0);
     for (const DVec3& v : vertices_) c += v;
     return c / double(vertices_.size());
+}
+
+std::vector<Face> Brush::anchored_faces() const {
+    std::vector<Face> out = faces_;
+    for (std::size_t i = 0; i < out.size(); ++i) out[i].plane = local_planes_[i];
+    return out;
 }
 
 std::vector<Plane> Brush::planes() const {

@@ -94,17 +94,36 @@ Result<Brush> make_extrusion(std::span<const DVec3> polygon, const DVec3& direct
     return Brush::from_faces(std::move(faces));
 }
 
+namespace {
+
+// The hull of `points` measured from a whole-number point near their mean (the brush's anchor): grid points
+// minus a whole number are exact, and so are the planes through them.
+Result<Hull> anchored_hull(std::span<const DVec3> points, DVec3& anchor) {
+    DVec3 mean(0.0);
+    for (const DVec3& p : points) mean += p / double(points.size());
+    anchor = is_finite(mean) ? glm::round(mean) : DVec3(0.0);
+    std::vector<DVec3> local(points.begin(), points.end());
+    for (DVec3& p : local) p -= anchor;
+    auto hull = convex_hull(local);
+    if (!hull) return hull.error();
+    return hull;
+}
+
+} // namespace
+
 Result<Brush> make_from_points(std::span<const DVec3> points, const FaceAttributes& attributes) {
-    auto hull = convex_hull(points);
+    DVec3 anchor;
+    auto hull = anchored_hull(points, anchor);
     if (!hull) return hull.error();
     std::vector<Face> faces;
     for (const HullFace& f : hull->faces) faces.push_back({f.plane, attributes});
-    return Brush::from_faces(std::move(faces), RedundantPlanes::drop);
+    return Brush::from_anchored_faces(anchor, std::move(faces), RedundantPlanes::drop);
 }
 
 Result<Brush> make_hull_of(std::span<const DVec3> points, std::span<const Brush* const> sources,
                            bool require_all_corners) {
-    auto hull = convex_hull(points);
+    DVec3 anchor;
+    auto hull = anchored_hull(points, anchor);
     if (!hull) return hull.error();
     if (require_all_corners && hull->corners.size() != points.size()) {
         std::size_t missing = 0;
@@ -119,20 +138,21 @@ Result<Brush> make_hull_of(std::span<const DVec3> points, std::span<const Brush*
     }
     std::vector<Face> faces;
     for (const HullFace& f : hull->faces) {
+        const Plane world = f.plane.translated(anchor);
         const Face* best = nullptr;
         double best_score = -1e300;
         for (const Brush* source : sources)
             for (const Face& candidate : source->faces()) {
                 // Same plane first (a large bonus), then the most parallel, then the nearest.
-                const double dot = glm::dot(candidate.plane.normal, f.plane.normal);
-                const double gap = std::abs(candidate.plane.distance - f.plane.distance);
+                const double dot = glm::dot(candidate.plane.normal, world.normal);
+                const double gap = std::abs(candidate.plane.distance - world.distance);
                 const bool same = dot > 1.0 - kSameNormal && gap <= kOnPlaneEpsilon;
                 const double score = (same ? 10.0 : 0.0) + dot - 1e-9 * gap;
                 if (score > best_score) best_score = score, best = &candidate;
             }
         faces.push_back({f.plane, best ? best->attributes : FaceAttributes{}});
     }
-    return Brush::from_faces(std::move(faces), RedundantPlanes::drop);
+    return Brush::from_anchored_faces(anchor, std::move(faces), RedundantPlanes::drop);
 }
 
 } // namespace ks::brush

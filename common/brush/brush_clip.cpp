@@ -6,10 +6,10 @@ namespace ks::brush {
 namespace {
 
 Result<Brush> piece(const Brush& brush, const Plane& keep_behind, const FaceAttributes& cap) {
-    std::vector<Face> faces = brush.faces();
-    faces.push_back({keep_behind, cap});
+    std::vector<Face> faces = brush.anchored_faces();
+    faces.push_back({keep_behind.translated(-brush.anchor()), cap});
     // The cut may make faces of the brush redundant (wholly cut away): they are dropped.
-    return Brush::from_faces(std::move(faces), RedundantPlanes::drop);
+    return Brush::from_anchored_faces(brush.anchor(), std::move(faces), RedundantPlanes::drop);
 }
 
 } // namespace

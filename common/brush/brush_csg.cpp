@@ -58,9 +58,12 @@ Result<Subtraction> subtract(const Brush& a, const Brush& b) {
 Result<Brush> intersect(const Brush& a, const Brush& b) {
     if (apart(a, b))
         return Error("the brushes do not overlap", Location({}, 0, 0, "b"), "move them so that they overlap");
-    std::vector<Face> faces = a.faces();
-    faces.insert(faces.end(), b.faces().begin(), b.faces().end());
-    auto both = Brush::from_faces(std::move(faces), RedundantPlanes::drop);
+    std::vector<Face> faces = a.anchored_faces();
+    for (Face f : b.faces()) {
+        f.plane = f.plane.translated(-a.anchor());
+        faces.push_back(std::move(f));
+    }
+    auto both = Brush::from_anchored_faces(a.anchor(), std::move(faces), RedundantPlanes::drop);
     if (!both)
         return Error("the brushes do not overlap in a volume (" + both.error().message + ")",
                      Location({}, 0, 0, "b"), "move them so that they overlap");
@@ -87,9 +90,9 @@ Result<std::vector<Brush>> hollow(const Brush& brush, double thickness) {
     if (!(thickness > 0.0) || !std::isfinite(thickness))
         return Error("the wall thickness must be a positive number", Location({}, 0, 0, "thickness"),
                      "give a thickness above 0");
-    std::vector<Face> inner = brush.faces();
+    std::vector<Face> inner = brush.anchored_faces();
     for (Face& f : inner) f.plane.distance -= thickness;
-    auto inside = Brush::from_faces(std::move(inner), RedundantPlanes::drop);
+    auto inside = Brush::from_anchored_faces(brush.anchor(), std::move(inner), RedundantPlanes::drop);
     if (!inside)
         return Error("walls " + std::to_string(thickness) + " thick leave no inside",
                      Location({}, 0, 0, "thickness"), "give a thinner wall");

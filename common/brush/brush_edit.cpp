@@ -87,9 +87,9 @@ Result<Brush> move_vertices(const Brush& brush, std::span<const int> vertex_indi
                          Location({}, 0, 0, "faces[" + std::to_string(f) + "]"),
                          "move the vertices the other way, or less far");
     }
-    std::vector<Face> faces = result->faces();
+    std::vector<Face> faces = result->anchored_faces();
     lock_moved_faces(brush, moved, delta, *result, faces);
-    return Brush::from_faces(std::move(faces));
+    return Brush::from_anchored_faces(result->anchor(), std::move(faces));
 }
 
 Result<Brush> move_edge(const Brush& brush, int edge_index, const DVec3& delta) {

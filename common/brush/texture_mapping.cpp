@@ -55,16 +55,19 @@ Result<Brush> transformed(const Brush& brush, const glm::dmat3& rotation, const 
     if (!(off < 1e-9) || !is_finite(translation))
         return Error("the motion is not a rotation and a finite translation", Location({}, 0, 0, "rotation"),
                      "give an orthonormal rotation matrix with determinant 1");
-    std::vector<Face> faces;
-    faces.reserve(brush.faces().size());
-    for (const Face& f : brush.faces()) {
-        Face moved = f;
-        moved.plane.normal = glm::normalize(rotation * f.plane.normal);
-        moved.plane.distance = f.plane.distance + glm::dot(moved.plane.normal, translation);
-        if (lock == TextureLock::on) moved.attributes = locked_attributes(f, rotation, translation);
-        faces.push_back(std::move(moved));
+    // The anchor moves with the brush, rounded to whole units; the anchored planes absorb the remainder, a
+    // small number, so a brush moved by grid steps keeps its planes' precision.
+    const DVec3 moved_anchor = rotation * brush.anchor() + translation;
+    const DVec3 anchor = glm::round(moved_anchor);
+    std::vector<Face> faces = brush.anchored_faces();
+    for (std::size_t i = 0; i < faces.size(); ++i) {
+        Face& f = faces[i];
+        f.plane.normal = glm::normalize(rotation * f.plane.normal);
+        f.plane.distance += glm::dot(f.plane.normal, moved_anchor - anchor);
+        if (lock == TextureLock::on)
+            f.attributes = locked_attributes(brush.faces()[i], rotation, translation);
     }
-    return Brush::from_faces(std::move(faces));
+    return Brush::from_anchored_faces(anchor, std::move(faces));
 }
 
 Result<Brush> translated(const Brush& brush, const DVec3& delta, TextureLock lock) {
