@@ -109,9 +109,7 @@ std::vector<Plane> Brush::planes() const {
 
 int Brush::find_face(const Plane& plane) const {
     for (std::size_t i = 0; i < faces_.size(); ++i)
-        if (glm::dot(faces_[i].plane.normal, plane.normal) > 1.0 - kSameNormal &&
-            std::abs(faces_[i].plane.distance - plane.distance) <= kOnPlaneEpsilon)
-            return static_cast<int>(i);
+        if (same_plane(faces_[i].plane, plane)) return static_cast<int>(i);
     return -1;
 }
 

@@ -55,8 +55,8 @@ class Brush {
     DVec3 vertex_centre() const;
     // Faces as plain planes, in order.
     std::vector<Plane> planes() const;
-    // The face whose plane is closest to `plane` (same normal direction within kSameNormal and the same
-    // distance within kOnPlaneEpsilon), or -1.
+    // The face with the same plane as `plane` (same_plane: parallel within kSameNormal, distances within
+    // kOnPlaneEpsilon), or -1.
     int find_face(const Plane& plane) const;
 
   private:

@@ -146,7 +146,7 @@ Result<Brush> make_hull_of(std::span<const DVec3> points, std::span<const Brush*
                 // Same plane first (a large bonus), then the most parallel, then the nearest.
                 const double dot = glm::dot(candidate.plane.normal, world.normal);
                 const double gap = std::abs(candidate.plane.distance - world.distance);
-                const bool same = dot > 1.0 - kSameNormal && gap <= kOnPlaneEpsilon;
+                const bool same = same_plane(candidate.plane, world);
                 const double score = (same ? 10.0 : 0.0) + dot - 1e-9 * gap;
                 if (score > best_score) best_score = score, best = &candidate;
             }

@@ -61,8 +61,7 @@ Result<void> check_pairs(std::vector<Face>& faces, RedundantPlanes redundant) {
         for (std::size_t j = i + 1; j < faces.size(); ++j) {
             const Plane& a = faces[i].plane;
             const Plane& b = faces[j].plane;
-            const double dot = glm::dot(a.normal, b.normal);
-            if (dot > 1.0 - kSameNormal && std::abs(a.distance - b.distance) <= kOnPlaneEpsilon) {
+            if (same_plane(a, b)) {
                 if (redundant == RedundantPlanes::drop) {
                     faces.erase(faces.begin() + static_cast<std::ptrdiff_t>(j--));
                     continue;
@@ -70,7 +69,7 @@ Result<void> check_pairs(std::vector<Face>& faces, RedundantPlanes redundant) {
                 return Error("duplicates faces[" + std::to_string(i) + "] (the same plane)", face_location(j),
                              "remove one of the two faces");
             }
-            if (dot < -1.0 + kSameNormal) {
+            if (same_direction(a.normal, -b.normal)) {
                 const double gap = a.distance + b.distance; // the slab -b.distance <= n.x <= a.distance
                 if (std::abs(gap) <= kOnPlaneEpsilon)
                     return Error("is faces[" + std::to_string(i) +

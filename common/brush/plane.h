@@ -16,7 +16,8 @@ inline constexpr double kMaxCoordinate = 65536.0;
 inline constexpr double kOnPlaneEpsilon = 1e-8;
 // Derived vertices closer than this are one vertex.
 inline constexpr double kWeldDistance = 1e-8;
-// Two unit normals closer than this (component-wise distance) are the same direction.
+// Two unit normals whose cross product is shorter than this (their angle in radians, about) are parallel:
+// planes derived from the same points differ by about 1e-16, and a plane 1e-6 rad off another is not one.
 inline constexpr double kSameNormal = 1e-12;
 
 struct Plane {
@@ -37,5 +38,14 @@ std::optional<Plane> plane_from_points(const DVec3& a, const DVec3& b, const DVe
 std::optional<DVec3> intersect_planes(const Plane& a, const Plane& b, const Plane& c, double min_det = 1e-12);
 
 bool is_finite(const DVec3& v);
+
+// Unit normals pointing the same way (within kSameNormal).
+inline bool same_direction(const DVec3& a, const DVec3& b) {
+    return glm::dot(a, b) > 0.0 && glm::length(glm::cross(a, b)) <= kSameNormal;
+}
+// The same plane: same direction and distances within kOnPlaneEpsilon.
+inline bool same_plane(const Plane& a, const Plane& b) {
+    return same_direction(a.normal, b.normal) && std::abs(a.distance - b.distance) <= kOnPlaneEpsilon;
+}
 
 } // namespace ks::brush
