@@ -2,6 +2,7 @@
 
 #include "brush/convex_hull.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace ks::brush {
@@ -96,6 +97,33 @@ Result<Brush> make_extrusion(std::span<const DVec3> polygon, const DVec3& direct
 
 namespace {
 
+// The points without near-duplicates (closer than kWeldDistance): two derivations of one vertex, e.g. the
+// cut vertices of both halves of a split, would give Qhull a sliver facet with a meaningless plane.
+std::vector<DVec3> welded_points(std::span<const DVec3> points) {
+    std::vector<DVec3> sorted(points.begin(), points.end());
+    std::sort(sorted.begin(), sorted.end(), [](const DVec3& a, const DVec3& b) { return a.x < b.x; });
+    std::vector<DVec3> kept;
+    for (const DVec3& p : sorted) {
+        bool duplicate = false;
+        for (auto it = kept.rbegin(); it != kept.rend() && p.x - it->x <= kWeldDistance && !duplicate; ++it)
+            duplicate = glm::length(p - *it) <= kWeldDistance;
+        if (!duplicate) kept.push_back(p);
+    }
+    return kept;
+}
+
+Result<void> check_points(std::span<const DVec3> points) {
+    if (points.size() > kMaxHullPoints)
+        return Error(std::to_string(points.size()) + " points are beyond the limit of " +
+                         std::to_string(kMaxHullPoints),
+                     Location({}, 0, 0, "points"), "give fewer points");
+    for (std::size_t i = 0; i < points.size(); ++i)
+        if (!is_finite(points[i]) || glm::any(glm::greaterThan(glm::abs(points[i]), DVec3(kMaxCoordinate))))
+            return Error("the point is not finite or lies beyond +-65536",
+                         Location({}, 0, 0, "points[" + std::to_string(i) + "]"), "give finite coordinates");
+    return ok();
+}
+
 // The hull of `points` measured from a whole-number point near their mean (the brush's anchor): grid points
 // minus a whole number are exact, and so are the planes through them.
 Result<Hull> anchored_hull(std::span<const DVec3> points, DVec3& anchor) {
@@ -112,8 +140,9 @@ Result<Hull> anchored_hull(std::span<const DVec3> points, DVec3& anchor) {
 } // namespace
 
 Result<Brush> make_from_points(std::span<const DVec3> points, const FaceAttributes& attributes) {
+    if (auto checked = check_points(points); !checked) return checked.error();
     DVec3 anchor;
-    auto hull = anchored_hull(points, anchor);
+    auto hull = anchored_hull(welded_points(points), anchor);
     if (!hull) return hull.error();
     std::vector<Face> faces;
     for (const HullFace& f : hull->faces) faces.push_back({f.plane, attributes});
@@ -122,10 +151,12 @@ Result<Brush> make_from_points(std::span<const DVec3> points, const FaceAttribut
 
 Result<Brush> make_hull_of(std::span<const DVec3> points, std::span<const Brush* const> sources,
                            bool require_all_corners) {
+    if (auto checked = check_points(points); !checked) return checked.error();
+    const std::vector<DVec3> distinct = welded_points(points);
     DVec3 anchor;
-    auto hull = anchored_hull(points, anchor);
+    auto hull = anchored_hull(distinct, anchor);
     if (!hull) return hull.error();
-    if (require_all_corners && hull->corners.size() != points.size()) {
+    if (require_all_corners && (hull->corners.size() != points.size() || distinct.size() != points.size())) {
         std::size_t missing = 0;
         while (missing < hull->corners.size() && hull->corners[missing] == static_cast<int>(missing))
             ++missing;

@@ -43,7 +43,9 @@ struct QhullRun {
     explicit QhullRun(std::vector<coordT>& coords) {
         err = open_memstream(&messages, &message_size);
         qh_zero(qh, err);
-        char options[] = "qhull";
+        // Pre-merge facets whose centrums lie within 1e-9 of their neighbours' planes: points that are one
+        // face to brush precision (kOnPlaneEpsilon is 1e-8) make one face, not slivers of meaningless planes.
+        char options[] = "qhull C-1e-9";
         exit_code = qh_new_qhull(qh, 3, static_cast<int>(coords.size() / 3), coords.data(), False, options,
                                  nullptr, err);
     }

@@ -1,6 +1,6 @@
 #pragma once
-// The convex hull of points in double precision, through Qhull (libqhull_r; its default merging of coplanar
-// facets). Qhull decides the topology; each face's plane is then recomputed from three of its own input
+// The convex hull of points in double precision, through Qhull (libqhull_r), facets within 1e-9 of coplanar
+// merged. Qhull decides the topology; each face's plane is then recomputed from three of its own input
 // points (see hull_face_plane), so hull planes through grid points are as exact as double allows.
 #include "brush/plane.h"
 #include "core/result.h"
