@@ -35,6 +35,7 @@ struct Row {
     double us = 0;
     double off_plane = 0, volume = 0, grid = 0, texture = 0;
     int done = 0, refused = 0;
+    long pieces = 0; // subtract and hollow: the fragments made
 };
 
 DVec3 random_unit(Rng& rng) {
@@ -151,17 +152,20 @@ std::vector<Row> run_set(const std::string& where, const DVec3& centre, int coun
                                    row->grid = std::max(row->grid, grid_distance(*m));
                                return m.ok();
                            }));
-    rows.push_back(
-        measure(where, "subtract A - B", brushes, reps, [&](const Brush& b, std::size_t i, Row* row) {
-            auto r = subtract(b, cutters[i]);
-            if (r && row) {
-                double v = r->removed ? r->removed->volume() : 0.0;
-                for (const Brush& f : r->fragments)
-                    v += f.volume(), row->off_plane = std::max(row->off_plane, off_plane(f));
-                row->volume = std::max(row->volume, std::abs(v - b.volume()) / b.volume());
-            }
-            return r.ok();
-        }));
+    for (auto [name, order] : {std::pair{"subtract A - B (largest cut first)", CutOrder::largest_first},
+                               std::pair{"baseline: subtract, planes in order", CutOrder::in_order}})
+        rows.push_back(
+            measure(where, name, brushes, reps, [&, order](const Brush& b, std::size_t i, Row* row) {
+                auto r = subtract(b, cutters[i], order);
+                if (r && row) {
+                    double v = r->removed ? r->removed->volume() : 0.0;
+                    for (const Brush& f : r->fragments)
+                        v += f.volume(), row->off_plane = std::max(row->off_plane, off_plane(f));
+                    row->volume = std::max(row->volume, std::abs(v - b.volume()) / b.volume());
+                    row->pieces += static_cast<long>(r->fragments.size());
+                }
+                return r.ok();
+            }));
     rows.push_back(
         measure(where, "intersect A n B", brushes, reps, [&](const Brush& b, std::size_t i, Row* row) {
             auto r = intersect(b, cutters[i]);
@@ -173,7 +177,6 @@ std::vector<Row> run_set(const std::string& where, const DVec3& centre, int coun
             auto s = split(b, cuts[i]);
             if (!s || !s->back || !s->front) return false;
             auto m = merge(*s->back, *s->front);
-            if (!m && row && getenv("KS_DEBUG")) std::printf("merge: %s\n", m.error().str().c_str());
             if (m && row)
                 row->off_plane = std::max(row->off_plane, off_plane(*m)),
                 row->volume = std::max(row->volume, std::abs(m->volume() - b.volume()) / b.volume()),
@@ -191,6 +194,7 @@ std::vector<Row> run_set(const std::string& where, const DVec3& centre, int coun
                 for (const Brush& w : *walls)
                     v += w.volume(), row->off_plane = std::max(row->off_plane, off_plane(w));
                 row->volume = std::max(row->volume, std::abs(v - b.volume()) / b.volume());
+                row->pieces += static_cast<long>(walls->size());
             }
             return walls.ok();
         }));
@@ -235,19 +239,19 @@ int run(int argc, const char* const* argv) {
     const int count = quick ? 100 : 1000, reps = quick ? 1 : 3;
     std::printf("load average %s; %d random snapped brushes (grid %g) per place, best of %d passes\n\n",
                 physics::bench::load_average().c_str(), count, kGrid, reps);
-    std::printf("%-8s %-32s %10s %12s %12s %12s %12s %9s\n", "where", "operation", "µs/brush", "off-plane",
-                "rel. volume", "off-grid", "texture", "refused");
+    std::printf("%-6s %-36s %9s %10s %10s %10s %10s %9s %7s\n", "where", "operation", "µs/brush", "off-plane",
+                "rel. vol.", "off-grid", "texture", "refused", "pieces");
     std::vector<std::string> csv;
     for (auto [where, centre] :
          {std::pair{"origin", DVec3(0.0)}, std::pair{"far", DVec3(9000, -9000, 5000)}}) {
         for (const Row& r : run_set(where, centre, count, reps)) {
-            std::printf("%-8s %-32s %10.2f %12.3g %12.3g %12.3g %12.3g %5d/%-4d\n", r.where.c_str(),
+            std::printf("%-6s %-36s %9.2f %10.3g %10.3g %10.3g %10.3g %4d/%-4d %7ld\n", r.where.c_str(),
                         r.operation.c_str(), r.us, r.off_plane, r.volume, r.grid, r.texture, r.refused,
-                        r.refused + r.done);
+                        r.refused + r.done, r.pieces);
             csv.push_back(r.where + "," + r.operation + "," + fmt("%.3f", r.us) + "," +
                           fmt("%.3g", r.off_plane) + "," + fmt("%.3g", r.volume) + "," + fmt("%.3g", r.grid) +
                           "," + fmt("%.3g", r.texture) + "," + std::to_string(r.refused) + "," +
-                          std::to_string(r.refused + r.done));
+                          std::to_string(r.refused + r.done) + "," + std::to_string(r.pieces));
         }
     }
     if (quick) {
@@ -256,7 +260,7 @@ int run(int argc, const char* const* argv) {
     }
     physics::bench::write_csv("brush_ops",
                               "where,operation,us_per_brush,max_off_plane,max_rel_volume_error,max_off_grid,"
-                              "max_texture_drift,refused,brushes",
+                              "max_texture_drift,refused,brushes,pieces",
                               csv);
     return 0;
 }

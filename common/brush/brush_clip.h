@@ -19,6 +19,10 @@ Result<Split> split(const Brush& brush, const Plane& plane, const FaceAttributes
 
 enum class ClipSide { keep_back, keep_front };
 
+// Where the brush lies against a unit plane: vertices within kOnPlaneEpsilon of it count as on it.
+enum class PlaneReach { all_behind, all_in_front, both_sides };
+PlaneReach reach(const Brush& brush, const Plane& unit_plane);
+
 // One side; refused when nothing of the brush is on that side.
 Result<Brush> clip(const Brush& brush, const Plane& plane, ClipSide side = ClipSide::keep_back,
                    const FaceAttributes& cap = {});

@@ -18,7 +18,7 @@ bool apart(const Brush& a, const Brush& b) {
 
 } // namespace
 
-Result<Subtraction> subtract(const Brush& a, const Brush& b) {
+Result<Subtraction> subtract(const Brush& a, const Brush& b, CutOrder order) {
     Subtraction out;
     if (apart(a, b)) {
         out.fragments.push_back(a);
@@ -27,29 +27,36 @@ Result<Subtraction> subtract(const Brush& a, const Brush& b) {
     Brush rest = a;
     std::vector<bool> used(b.faces().size(), false);
     for (;;) {
-        // Greedy: the plane of B cutting the largest piece off what is left of A.
+        // The plane of B cutting the largest piece off what is left of A (or the first that cuts).
         int best = -1;
-        std::optional<Split> best_split;
+        std::optional<Brush> best_front;
         for (std::size_t i = 0; i < b.faces().size(); ++i) {
             if (used[i]) continue;
             const Face& f = b.faces()[i];
-            auto parts = split(rest, f.plane, f.attributes);
-            if (!parts) return parts.error();
-            if (!parts->back) { // all of what is left lies outside B: it is a fragment, nothing is removed
-                out.fragments.push_back(std::move(rest));
+            const PlaneReach where = reach(rest, f.plane);
+            if (where == PlaneReach::all_in_front) {
+                // What is left lies outside B, and A n B lies in what is left: they do not overlap, and the
+                // answer is A whole, not the pieces cut so far.
+                out.fragments.assign(1, a);
                 return out;
             }
-            if (!parts->front) {
-                used[i] = true; // cuts nothing now, and cuts nothing of any smaller piece later
+            if (where == PlaneReach::all_behind) {
+                used[i] = true; // cuts nothing now, nor any smaller piece later
                 continue;
             }
-            if (!best_split || parts->front->volume() > best_split->front->volume())
-                best = static_cast<int>(i), best_split = std::move(*parts);
+            auto front = clip(rest, f.plane, ClipSide::keep_front, f.attributes);
+            if (!front) return front.error();
+            if (!best_front || front->volume() > best_front->volume())
+                best = static_cast<int>(i), best_front = std::move(*front);
+            if (order == CutOrder::in_order) break;
         }
         if (best < 0) break;
+        const Face& cut = b.faces()[static_cast<std::size_t>(best)];
+        auto back = clip(rest, cut.plane, ClipSide::keep_back, cut.attributes);
+        if (!back) return back.error();
         used[static_cast<std::size_t>(best)] = true;
-        out.fragments.push_back(std::move(*best_split->front));
-        rest = std::move(*best_split->back);
+        out.fragments.push_back(std::move(*best_front));
+        rest = std::move(*back);
     }
     out.removed = std::move(rest);
     return out;

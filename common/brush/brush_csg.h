@@ -20,9 +20,13 @@ struct Subtraction {
     std::optional<Brush> removed; // A n B; empty when they do not overlap
 };
 
+// The order in which B's planes cut: largest_first is the greedy order above; in_order takes B's faces as
+// listed (the plain method, the benchmark's baseline).
+enum class CutOrder { largest_first, in_order };
+
 // Fragments keep A's faces and attributes; each cut face takes the cutting face of B's material and
 // mapping parameters.
-Result<Subtraction> subtract(const Brush& a, const Brush& b);
+Result<Subtraction> subtract(const Brush& a, const Brush& b, CutOrder order = CutOrder::largest_first);
 
 // A n B (faces of both; planes that contribute nothing are dropped). Refused when they do not overlap.
 Result<Brush> intersect(const Brush& a, const Brush& b);

@@ -1,6 +1,7 @@
 // CSG: subtract (fragment counts of the standard cases, volume conserved, coplanar faces), intersect, merge,
 // hollow; fragments keep their faces' materials.
 #include "brush/brush_build.h"
+#include "brush/brush_clip.h"
 #include "brush/brush_csg.h"
 #include "brush_checks.h"
 
@@ -100,6 +101,26 @@ TEST_CASE("subtract: the greedy order takes the biggest cut first and saves a fr
     REQUIRE(r.ok());
     CHECK(r->fragments.size() == 1);
     CHECK(audit(r->fragments[0]).empty());
+    auto plain = subtract(block, *cutter, CutOrder::in_order);
+    REQUIRE(plain.ok());
+    CHECK(plain->fragments.size() == 2);
+    CHECK(plain->removed->volume() == doctest::Approx(r->removed->volume()).epsilon(1e-13));
+}
+
+TEST_CASE("subtract: B near A with overlapping bounds but no common volume leaves A whole") {
+    const Brush block = box({0, 0, 0}, {4, 4, 4}, "wall");
+    // A corner of a box beyond x + y + z = 13, over A's corner (4, 4, 4) where x + y + z = 12.
+    auto corner =
+        clip(box({3, 3, 3}, {6, 6, 6}, "cut"), {glm::normalize(DVec3(-1, -1, -1)), -13 / std::sqrt(3.0)});
+    REQUIRE(corner.ok());
+    for (CutOrder order : {CutOrder::largest_first, CutOrder::in_order}) {
+        auto r = subtract(block, *corner, order);
+        REQUIRE(r.ok());
+        REQUIRE(r->fragments.size() == 1);
+        CHECK(!r->removed);
+        CHECK(r->fragments[0].faces().size() == 6);
+        CHECK(r->fragments[0].volume() == doctest::Approx(64.0));
+    }
 }
 
 TEST_CASE("intersect: the common part, refused when apart or only touching") {
