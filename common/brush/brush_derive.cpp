@@ -11,6 +11,7 @@ namespace {
 
 constexpr double kBaseHalfSize = 262144.0; // 2^18: every valid brush fits inside each base square
 constexpr int kBaseEdge = -1;              // a winding edge still on the base square
+constexpr double kMinPolishDeterminant = 1e-6;
 
 struct WindingPoint {
     DVec3 p;
@@ -67,7 +68,7 @@ struct RawCorner {
 };
 
 // Groups corners closer than kWeldDistance: sorted along x, then a sweep; returns each corner's group.
-std::vector<int> weld(const std::vector<RawCorner>& corners, int& groups) {
+std::vector<int> weld(const std::vector<RawCorner>& corners, double distance, int& groups) {
     std::vector<int> order(corners.size());
     std::iota(order.begin(), order.end(), 0);
     std::sort(order.begin(), order.end(), [&](int a, int b) { return corners[a].p.x < corners[b].p.x; });
@@ -79,8 +80,8 @@ std::vector<int> weld(const std::vector<RawCorner>& corners, int& groups) {
         group[a] = groups;
         for (std::size_t k = i + 1; k < order.size(); ++k) {
             const int b = order[k];
-            if (corners[b].p.x - corners[a].p.x > kWeldDistance) break;
-            if (group[b] < 0 && glm::length(corners[b].p - corners[a].p) <= kWeldDistance) group[b] = groups;
+            if (corners[b].p.x - corners[a].p.x > distance) break;
+            if (group[b] < 0 && glm::length(corners[b].p - corners[a].p) <= distance) group[b] = groups;
         }
         ++groups;
     }
@@ -113,13 +114,14 @@ std::optional<DVec3> best_intersection(const std::vector<Plane>& planes, std::ve
 }
 
 // A corner recomputed from its three planes, taken in index order: the faces sharing a vertex of three
-// planes compute it bit for bit alike, however thin the angle between them, so welding it is exact. The
-// clipped point is kept where the planes are too near parallel to intersect.
+// planes compute it bit for bit alike, so welding it is exact. Where the three are so near parallel that
+// their intersection is less precise than the clipped point (|det| below kMinPolishDeterminant: the
+// intersection's rounding grows as 1/|det|), the clipped point is kept.
 DVec3 polish_corner(const std::vector<Plane>& planes, const DVec3& clipped, int face, int before, int after) {
     int t[3] = {face, before, after};
     std::sort(t, t + 3);
     if (t[0] == t[1] || t[1] == t[2]) return clipped;
-    const auto x = intersect_planes(planes[t[0]], planes[t[1]], planes[t[2]]);
+    const auto x = intersect_planes(planes[t[0]], planes[t[1]], planes[t[2]], kMinPolishDeterminant);
     return x ? *x : clipped;
 }
 
@@ -149,6 +151,49 @@ Result<void> check_closed(const std::vector<std::vector<int>>& polygons) {
     return ok();
 }
 
+// Welds the corners closer than `weld_distance`, places each vertex, and builds the polygons; refused when
+// they do not close.
+Result<DerivedGeometry> assemble(const std::vector<Plane>& planes, const std::vector<RawCorner>& corners,
+                                 const std::vector<std::vector<int>>& face_corners, double weld_distance) {
+    int groups = 0;
+    const std::vector<int> group = weld(corners, weld_distance, groups);
+    std::vector<std::vector<int>> group_planes(groups);
+    std::vector<DVec3> group_sum(groups, DVec3(0.0));
+    std::vector<int> group_count(groups, 0);
+    for (std::size_t c = 0; c < corners.size(); ++c) {
+        auto& gp = group_planes[group[c]];
+        gp.insert(gp.end(), {corners[c].face, corners[c].before, corners[c].after});
+        group_sum[group[c]] += corners[c].p;
+        ++group_count[group[c]];
+    }
+    DerivedGeometry out;
+    out.vertices.resize(groups);
+    for (int g = 0; g < groups; ++g) {
+        const auto polished = best_intersection(planes, group_planes[g]);
+        out.vertices[g] = polished ? *polished : group_sum[g] / double(group_count[g]);
+    }
+    // Polygons over welded vertices, without repeats; a polygon of no area contributes no face.
+    out.polygons.resize(planes.size());
+    for (std::size_t i = 0; i < planes.size(); ++i) {
+        std::vector<int>& poly = out.polygons[i];
+        for (int c : face_corners[i])
+            if (poly.empty() || poly.back() != group[c]) poly.push_back(group[c]);
+        while (poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();
+        if (poly.size() < 3 || polygon_area(out.vertices, poly) <= 1e-14) poly.clear();
+    }
+    // Keep only the vertices some face uses, in first-use order.
+    std::vector<int> remap(groups, -1);
+    std::vector<DVec3> used;
+    for (auto& poly : out.polygons)
+        for (int& v : poly) {
+            if (remap[v] < 0) remap[v] = static_cast<int>(used.size()), used.push_back(out.vertices[v]);
+            v = remap[v];
+        }
+    out.vertices = std::move(used);
+    if (auto closed = check_closed(out.polygons); !closed) return closed.error();
+    return out;
+}
+
 } // namespace
 
 Result<DerivedGeometry> derive_geometry(const std::vector<Plane>& planes) {
@@ -174,42 +219,12 @@ Result<DerivedGeometry> derive_geometry(const std::vector<Plane>& planes) {
                 {polish_corner(planes, w[k].p, i, before, w[k].edge_plane), i, before, w[k].edge_plane});
         }
     }
-    int groups = 0;
-    const std::vector<int> group = weld(corners, groups);
-    std::vector<std::vector<int>> group_planes(groups);
-    std::vector<DVec3> group_sum(groups, DVec3(0.0));
-    std::vector<int> group_count(groups, 0);
-    for (std::size_t c = 0; c < corners.size(); ++c) {
-        auto& gp = group_planes[group[c]];
-        gp.insert(gp.end(), {corners[c].face, corners[c].before, corners[c].after});
-        group_sum[group[c]] += corners[c].p;
-        ++group_count[group[c]];
-    }
-    DerivedGeometry out;
-    out.vertices.resize(groups);
-    for (int g = 0; g < groups; ++g) {
-        const auto polished = best_intersection(planes, group_planes[g]);
-        out.vertices[g] = polished ? *polished : group_sum[g] / double(group_count[g]);
-    }
-    // Polygons over welded vertices, without repeats; a polygon of no area contributes no face.
-    out.polygons.resize(planes.size());
-    for (int i = 0; i < n; ++i) {
-        std::vector<int>& poly = out.polygons[i];
-        for (int c : face_corners[i])
-            if (poly.empty() || poly.back() != group[c]) poly.push_back(group[c]);
-        while (poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();
-        if (poly.size() < 3 || polygon_area(out.vertices, poly) <= 1e-14) poly.clear();
-    }
-    // Keep only the vertices some face uses, in first-use order.
-    std::vector<int> remap(groups, -1);
-    std::vector<DVec3> used;
-    for (auto& poly : out.polygons)
-        for (int& v : poly) {
-            if (remap[v] < 0) remap[v] = static_cast<int>(used.size()), used.push_back(out.vertices[v]);
-            v = remap[v];
-        }
-    out.vertices = std::move(used);
-    if (auto closed = check_closed(out.polygons); !closed) return closed.error();
+    // Where planes meet in a near-degenerate way (four nearly through one point, one of them nearly parallel
+    // to another) the corners of one vertex can spread past the weld distance and leave the faces open:
+    // welding again a little wider closes them, collapsing a feature below 1e-6 units.
+    Result<DerivedGeometry> out = assemble(planes, corners, face_corners, kWeldDistance);
+    for (double wider : {10 * kWeldDistance, 100 * kWeldDistance})
+        if (!out) out = assemble(planes, corners, face_corners, wider);
     return out;
 }
 

@@ -28,8 +28,9 @@ constexpr double kGrid = 0.125;
 const DVec3 kCentres[] = {{0, 0, 0}, {9000, -9000, 5000}};
 
 struct Tally {
-    int edits = 0, accepted = 0, refused = 0, invalid = 0, off_grid = 0, volume_errors = 0;
-    double worst_grid = 0, worst_volume = 0;
+    int edits = 0, accepted = 0, refused = 0, invalid = 0, off_grid = 0, volume_errors = 0,
+        world_round_trip = 0;
+    double worst_grid = 0, worst_volume = 0, worst_round_trip = 0;
     std::array<int, 3> accepted_by_kind{};
 };
 
@@ -60,11 +61,33 @@ Result<Brush> random_brush(Rng& rng, const DVec3& centre) {
     return snap_to_grid(*turned, kGrid);
 }
 
+// The farthest a vertex of `a` lies from every vertex of `b`.
+double vertex_set_distance(const Brush& a, const Brush& b) {
+    double worst = 0;
+    for (const DVec3& p : a.vertices()) {
+        double nearest = 1e300;
+        for (const DVec3& q : b.vertices()) nearest = std::min(nearest, glm::length(p - q));
+        worst = std::max(worst, nearest);
+    }
+    return worst;
+}
+
 void check_valid(const Brush& b, Tally& t) {
     const std::string problem = audit(b);
     if (!problem.empty()) {
         ++t.invalid;
         MESSAGE("invalid brush: " << problem);
+    }
+    // What a file would hold: the world planes, each rounded once. They must make the same brush again.
+    // (Near a vertex where four planes nearly meet, rounding may split or join a corner below 1e-6 units.)
+    auto again = Brush::from_faces(b.faces(), RedundantPlanes::drop);
+    const double apart =
+        again ? std::max(vertex_set_distance(b, *again), vertex_set_distance(*again, b)) : 1e300;
+    t.worst_round_trip = std::max(t.worst_round_trip, apart);
+    if (!again || apart > 1e-6) {
+        ++t.world_round_trip;
+        MESSAGE("world planes do not make the brush again: " << (again ? std::to_string(apart)
+                                                                       : again.error().str()));
     }
 }
 
@@ -163,8 +186,10 @@ TEST_CASE("property: 10 000 random clip, vertex-move and subtract edits") {
     MESSAGE("edits " << t.edits << ": accepted " << t.accepted << " (clip " << t.accepted_by_kind[0]
                      << ", move " << t.accepted_by_kind[1] << ", subtract " << t.accepted_by_kind[2]
                      << "), refused " << t.refused << "; worst grid distance " << t.worst_grid
-                     << ", worst relative volume error " << t.worst_volume);
+                     << ", worst relative volume error " << t.worst_volume
+                     << ", world planes remake the brush to " << t.worst_round_trip);
     CHECK(t.invalid == 0);
+    CHECK(t.world_round_trip == 0);
     CHECK(t.off_grid == 0);
     CHECK(t.volume_errors == 0);
     CHECK(t.worst_grid <= 1e-9);
