@@ -121,16 +121,17 @@ std::vector<Row> run_set(const std::string& where, const DVec3& centre, int coun
                 row->grid = std::max(row->grid, grid_distance(*again));
             return again.ok();
         }));
-    rows.push_back(measure(
-        where, "baseline: Qhull, same vertices", brushes, reps, [](const Brush& b, std::size_t, Row* row) {
-            auto hull = convex_hull(b.vertices());
-            if (hull && row)
-                for (const HullFace& f : hull->faces)
-                    for (int p : f.points)
-                        row->off_plane =
-                            std::max(row->off_plane, std::abs(f.plane.signed_distance(b.vertices()[p])));
-            return hull.ok();
-        }));
+    rows.push_back(measure(where, "baseline: Qhull on the same vertices", brushes, reps,
+                           [](const Brush& b, std::size_t, Row* row) {
+                               auto hull = convex_hull(b.vertices());
+                               if (hull && row)
+                                   for (const HullFace& f : hull->faces)
+                                       for (int p : f.points)
+                                           row->off_plane =
+                                               std::max(row->off_plane,
+                                                        std::abs(f.plane.signed_distance(b.vertices()[p])));
+                               return hull.ok();
+                           }));
     rows.push_back(measure(
         where, "split by a plane (both sides)", brushes, reps, [&](const Brush& b, std::size_t i, Row* row) {
             auto s = split(b, cuts[i]);
@@ -153,7 +154,7 @@ std::vector<Row> run_set(const std::string& where, const DVec3& centre, int coun
                                return m.ok();
                            }));
     for (auto [name, order] : {std::pair{"subtract A - B (largest cut first)", CutOrder::largest_first},
-                               std::pair{"baseline: subtract, planes in order", CutOrder::in_order}})
+                               std::pair{"baseline: subtract, planes as listed", CutOrder::in_order}})
         rows.push_back(
             measure(where, name, brushes, reps, [&, order](const Brush& b, std::size_t i, Row* row) {
                 auto r = subtract(b, cutters[i], order);
