@@ -100,13 +100,6 @@ std::vector<Face> Brush::anchored_faces() const {
     return out;
 }
 
-std::vector<Plane> Brush::planes() const {
-    std::vector<Plane> out;
-    out.reserve(faces_.size());
-    for (const Face& f : faces_) out.push_back(f.plane);
-    return out;
-}
-
 int Brush::find_face(const Plane& plane) const {
     for (std::size_t i = 0; i < faces_.size(); ++i)
         if (same_plane(faces_[i].plane, plane)) return static_cast<int>(i);

@@ -53,8 +53,6 @@ class Brush {
     DVec3 bounds_max() const { return bounds_max_; }
     // The mean of the vertices (inside the brush, since it is convex).
     DVec3 vertex_centre() const;
-    // Faces as plain planes, in order.
-    std::vector<Plane> planes() const;
     // The face with the same plane as `plane` (same_plane: parallel within kSameNormal, distances within
     // kOnPlaneEpsilon), or -1.
     int find_face(const Plane& plane) const;
