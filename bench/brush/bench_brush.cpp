@@ -97,22 +97,34 @@ Row measure(const std::string& where, const std::string& name, const std::vector
     return row;
 }
 
-std::vector<Row> run_set(const std::string& where, const DVec3& centre, int count, int reps) {
-    Rng rng(7);
+// The brushes and, per brush, a plane through it, a cutter over it and a grid step.
+struct Inputs {
     std::vector<Brush> brushes;
-    while (static_cast<int>(brushes.size()) < count)
-        if (auto b = random_brush(rng, centre)) brushes.push_back(std::move(*b));
     std::vector<Plane> cuts;
     std::vector<Brush> cutters;
     std::vector<DVec3> steps;
-    for (const Brush& b : brushes) {
+};
+
+Inputs make_inputs(const DVec3& centre, int count) {
+    Rng rng(7);
+    Inputs in;
+    while (static_cast<int>(in.brushes.size()) < count)
+        if (auto b = random_brush(rng, centre)) in.brushes.push_back(std::move(*b));
+    for (const Brush& b : in.brushes) {
         const DVec3 n = random_unit(rng);
-        cuts.push_back({n, glm::dot(n, b.vertex_centre() + random_unit(rng) * 0.5)});
+        in.cuts.push_back({n, glm::dot(n, b.vertex_centre() + random_unit(rng) * 0.5)});
         auto c = random_brush(rng, b.vertex_centre() + random_unit(rng) * 2.0);
-        cutters.push_back(c ? *c : b);
-        steps.push_back(DVec3(kGrid * (int(rng.below(9)) - 4), kGrid * (int(rng.below(9)) - 4), kGrid));
+        in.cutters.push_back(c ? *c : b);
+        in.steps.push_back(DVec3(kGrid * (int(rng.below(9)) - 4), kGrid * (int(rng.below(9)) - 4), kGrid));
     }
-    std::vector<Row> rows;
+    return in;
+}
+
+// Deriving (against Qhull), splitting and moving a vertex.
+void measure_edits(const std::string& where, const Inputs& in, int reps, std::vector<Row>& rows) {
+    const auto& brushes = in.brushes;
+    const auto& cuts = in.cuts;
+    const auto& steps = in.steps;
     rows.push_back(
         measure(where, "derive from planes", brushes, reps, [](const Brush& b, std::size_t, Row* row) {
             auto again = Brush::from_anchored_faces(b.anchor(), b.anchored_faces());
@@ -153,6 +165,13 @@ std::vector<Row> run_set(const std::string& where, const DVec3& centre, int coun
                                    row->grid = std::max(row->grid, grid_distance(*m));
                                return m.ok();
                            }));
+}
+
+// Subtract (greedy against listed order), intersect, merge, hollow, snapping and texture lock.
+void measure_csg_and_turns(const std::string& where, const Inputs& in, int reps, std::vector<Row>& rows) {
+    const auto& brushes = in.brushes;
+    const auto& cuts = in.cuts;
+    const auto& cutters = in.cutters;
     for (auto [name, order] : {std::pair{"subtract A - B (largest cut first)", CutOrder::largest_first},
                                std::pair{"baseline: subtract, planes as listed", CutOrder::in_order}})
         rows.push_back(
@@ -224,6 +243,13 @@ std::vector<Row> run_set(const std::string& where, const DVec3& centre, int coun
                 }
             return moved.ok();
         }));
+}
+
+std::vector<Row> run_set(const std::string& where, const DVec3& centre, int count, int reps) {
+    const Inputs in = make_inputs(centre, count);
+    std::vector<Row> rows;
+    measure_edits(where, in, reps, rows);
+    measure_csg_and_turns(where, in, reps, rows);
     return rows;
 }
 
