@@ -56,3 +56,9 @@ target_link_libraries(ks_recast INTERFACE ${RECAST_LIBRARY} ${DETOUR_LIBRARY})
 pkg_check_modules(OPENAL REQUIRED IMPORTED_TARGET openal)
 add_library(ks_openal INTERFACE)
 target_link_libraries(ks_openal INTERFACE PkgConfig::OPENAL)
+
+# Qhull from libqhull-dev (reentrant libqhull_r, CMake config Qhull::qhull_r): only the brush module links it,
+# for the convex hull of a point cloud (an imported target's headers are SYSTEM includes already).
+find_package(Qhull REQUIRED CONFIG)
+add_library(ks_qhull INTERFACE)
+target_link_libraries(ks_qhull INTERFACE Qhull::qhull_r)
