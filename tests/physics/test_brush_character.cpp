@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <functional>
+#include <string>
 #include <vector>
 
 using namespace ks;
@@ -59,7 +60,7 @@ void add_brush_stairs(World& w) {
 
 } // namespace
 
-TEST_CASE("brush ramp: the 26.565° slope is walked up and down exactly as the stair wedge") {
+TEST_CASE("brush ramp: the 26.565° slope is walked up and down as on the stair wedge") {
     auto ramp = brush::make_extrusion(std::vector<DVec3>{{-10, 0, -66}, {-10, 0, -78}, {-10, 6, -78}},
                                       DVec3(12, 0, 0));
     REQUIRE(ramp.ok());
@@ -77,7 +78,8 @@ TEST_CASE("brush ramp: the 26.565° slope is walked up and down exactly as the s
             const Trajectory on_brush = walk_through(hz, add_brush_stairs, feet, {0, 0, 15 * dir}, 2.5f);
             const Trajectory on_wedge = walk_through(hz, add_main_stairs, feet, {0, 0, 15 * dir}, 2.5f);
             const float diff = largest_difference(on_brush, on_wedge);
-            MESSAGE("ramp at " << hz << " Hz, " << (dir < 0 ? "up" : "down") << ": brush vs wedge " << diff);
+            MESSAGE("ramp at " << hz << " Hz, " << std::string(dir < 0 ? "up" : "down") << ": brush vs wedge "
+                               << diff);
             CHECK(diff < 1e-3f);
             float prev = on_brush.positions.front().y;
             for (std::size_t i = 0; i < on_brush.positions.size(); ++i) {
