@@ -1,5 +1,8 @@
 #include "physics/shapes.h"
 
+#include "brush/brush_build.h"
+#include "physics/brush_shape.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -12,8 +15,6 @@ namespace {
 void finalize(Polyhedron& p) {
     p.bounds = geometry::Aabb::empty();
     for (const Vec3& v : p.vertices) p.bounds.grow(v);
-    p.edges.clear();
-    p.edge_directions.clear();
     for (auto& f : p.faces) {
         auto idx = p.face_indices(f);
         Vec3 n(0.0f), c(0.0f);
@@ -26,19 +27,8 @@ void finalize(Polyhedron& p) {
         f.normal = glm::normalize(n);
         f.centre = c / static_cast<float>(idx.size());
         f.offset = glm::dot(f.normal, f.centre);
-        for (std::size_t i = 0; i < idx.size(); ++i) {
-            std::uint16_t a = idx[i], b = idx[(i + 1) % idx.size()];
-            std::array<std::uint16_t, 2> e{std::min(a, b), std::max(a, b)};
-            if (std::find(p.edges.begin(), p.edges.end(), e) == p.edges.end()) p.edges.push_back(e);
-        }
     }
-    for (auto& e : p.edges) {
-        Vec3 d = glm::normalize(p.vertices[e[1]] - p.vertices[e[0]]);
-        bool seen = false;
-        for (const Vec3& o : p.edge_directions)
-            if (std::abs(glm::dot(o, d)) > 1.0f - 1e-6f) seen = true;
-        if (!seen) p.edge_directions.push_back(d);
-    }
+    derive_edges(p);
 }
 
 void add_face(Polyhedron& p, std::initializer_list<std::uint16_t> idx) {
@@ -54,6 +44,26 @@ bool finite_positive(float v) {
 }
 
 } // namespace
+
+void derive_edges(Polyhedron& p) {
+    p.edges.clear();
+    p.edge_directions.clear();
+    for (const auto& f : p.faces) {
+        auto idx = p.face_indices(f);
+        for (std::size_t i = 0; i < idx.size(); ++i) {
+            std::uint16_t a = idx[i], b = idx[(i + 1) % idx.size()];
+            std::array<std::uint16_t, 2> e{std::min(a, b), std::max(a, b)};
+            if (std::find(p.edges.begin(), p.edges.end(), e) == p.edges.end()) p.edges.push_back(e);
+        }
+    }
+    for (auto& e : p.edges) {
+        Vec3 d = glm::normalize(p.vertices[e[1]] - p.vertices[e[0]]);
+        bool seen = false;
+        for (const Vec3& o : p.edge_directions)
+            if (std::abs(glm::dot(o, d)) > 1.0f - 1e-6f) seen = true;
+        if (!seen) p.edge_directions.push_back(d);
+    }
+}
 
 Polyhedron make_box_polyhedron(const Vec3& h) {
     Polyhedron p;
@@ -86,13 +96,6 @@ Polyhedron make_wedge_polyhedron(const Vec3& h) {
 
 namespace {
 
-struct HullTriangle {
-    std::uint32_t v[3];
-    Vec3 n;
-    float d;
-    bool alive;
-};
-
 // The distinct input points (near-duplicates closer than `eps` welded), after checking count and range.
 Result<std::vector<Vec3>> weld_hull_points(std::span<const Vec3> points, const std::string& source,
                                            float& eps) {
@@ -103,9 +106,10 @@ Result<std::vector<Vec3>> weld_hull_points(std::span<const Vec3> points, const s
     geometry::Aabb box = geometry::Aabb::empty();
     for (std::size_t i = 0; i < points.size(); ++i) {
         const Vec3& v = points[i];
-        if (!is_finite(v) || std::abs(v.x) > 1e6f || std::abs(v.y) > 1e6f || std::abs(v.z) > 1e6f)
-            return Error("vertex " + std::to_string(i) + " is not finite or beyond 1e6", Location(source),
-                         "collision meshes need finite coordinates within +-1e6 units");
+        constexpr float kLimit = static_cast<float>(brush::kMaxCoordinate);
+        if (!is_finite(v) || std::abs(v.x) > kLimit || std::abs(v.y) > kLimit || std::abs(v.z) > kLimit)
+            return Error("vertex " + std::to_string(i) + " is not finite or beyond 65536", Location(source),
+                         "collision meshes need finite coordinates within +-65536 units");
         box.grow(v);
     }
     const float scale = points.empty() ? 0.0f : glm::length(box.max - box.min);
@@ -124,10 +128,10 @@ Result<std::vector<Vec3>> weld_hull_points(std::span<const Vec3> points, const s
     return pts;
 }
 
-// Four extreme points spanning a volume: the start of the incremental hull.
-Result<std::array<std::uint32_t, 4>> initial_tetrahedron(const std::vector<Vec3>& pts, float eps,
-                                                         const std::string& source) {
-    std::size_t i0 = 0, i1 = 0, i2 = 0, i3 = 0;
+// Refuses points with no four spanning a volume (within `eps`), naming what they are instead: the checks the
+// hull itself would make, with the prop's words.
+Result<void> check_spans_volume(const std::vector<Vec3>& pts, float eps, const std::string& source) {
+    std::size_t i0 = 0, i1 = 0, i2 = 0;
     for (std::size_t i = 0; i < pts.size(); ++i)
         if (pts[i].x < pts[i0].x) i0 = i;
     float best = -1;
@@ -143,107 +147,12 @@ Result<std::array<std::uint32_t, 4>> initial_tetrahedron(const std::vector<Vec3>
     const Vec3 n0 = glm::normalize(glm::cross(pts[i1] - pts[i0], pts[i2] - pts[i0]));
     best = -1;
     for (std::size_t i = 0; i < pts.size(); ++i)
-        if (float d = std::abs(glm::dot(pts[i] - pts[i0], n0)); d > best) best = d, i3 = i;
+        best = std::max(best, std::abs(glm::dot(pts[i] - pts[i0], n0)));
     if (best <= eps)
         return Error("collision mesh vertices are coplanar (zero volume)", Location(source),
                      "a flat object needs a thickness; use a box for walls and floors");
 
-    return std::array<std::uint32_t, 4>{static_cast<std::uint32_t>(i0), static_cast<std::uint32_t>(i1),
-                                        static_cast<std::uint32_t>(i2), static_cast<std::uint32_t>(i3)};
-}
-
-// The incremental hull: each point outside the current triangles replaces those it sees with a fan from
-// their horizon. Dead triangles stay in the list (alive = false).
-std::vector<HullTriangle> grow_hull(const std::vector<Vec3>& pts, const std::array<std::uint32_t, 4>& s,
-                                    float eps) {
-    std::vector<HullTriangle> tris;
-    const Vec3 inside = (pts[s[0]] + pts[s[1]] + pts[s[2]] + pts[s[3]]) * 0.25f;
-    auto make = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-        Vec3 n = glm::normalize(glm::cross(pts[b] - pts[a], pts[c] - pts[a]));
-        if (glm::dot(n, pts[a] - inside) < 0) {
-            std::swap(b, c);
-            n = -n;
-        }
-        tris.push_back({{a, b, c}, n, glm::dot(n, pts[a]), true});
-    };
-    make(s[0], s[1], s[2]);
-    make(s[0], s[1], s[3]);
-    make(s[0], s[2], s[3]);
-    make(s[1], s[2], s[3]);
-    std::vector<std::array<std::uint32_t, 2>> edges, horizon;
-    for (std::uint32_t pi = 0; pi < pts.size(); ++pi) {
-        if (pi == s[0] || pi == s[1] || pi == s[2] || pi == s[3]) continue;
-        edges.clear();
-        for (auto& t : tris)
-            if (t.alive && glm::dot(t.n, pts[pi]) - t.d > eps) {
-                t.alive = false;
-                for (int k = 0; k < 3; ++k) edges.push_back({t.v[k], t.v[(k + 1) % 3]});
-            }
-        if (edges.empty()) continue;
-        horizon.clear();
-        for (auto& e : edges)
-            if (std::find(edges.begin(), edges.end(), std::array<std::uint32_t, 2>{e[1], e[0]}) ==
-                edges.end())
-                horizon.push_back(e);
-        for (auto& e : horizon) {
-            Vec3 n = glm::cross(pts[e[1]] - pts[e[0]], pts[pi] - pts[e[0]]);
-            float len = glm::length(n);
-            if (len <= 1e-12f) continue; // degenerate sliver: the neighbours cover it
-            n /= len;
-            tris.push_back({{e[0], e[1], pi}, n, glm::dot(n, pts[pi]), true});
-        }
-    }
-    return tris;
-}
-
-// Coplanar triangles merged into polygons, keeping only the vertices the hull uses.
-Polyhedron hull_polyhedron(const std::vector<Vec3>& pts, const std::vector<HullTriangle>& tris, float eps) {
-    Polyhedron p;
-    std::vector<int> remap(pts.size(), -1);
-    std::vector<bool> used(tris.size(), false);
-    std::vector<std::uint32_t> group;
-    for (std::size_t t = 0; t < tris.size(); ++t) {
-        if (!tris[t].alive || used[t]) continue;
-        group.clear();
-        Vec3 n = tris[t].n;
-        for (std::size_t u = t; u < tris.size(); ++u) {
-            if (!tris[u].alive || used[u]) continue;
-            if (glm::dot(tris[u].n, n) > 1.0f - 1e-5f && std::abs(tris[u].d - tris[t].d) <= eps) {
-                used[u] = true;
-                for (auto v : tris[u].v)
-                    if (std::find(group.begin(), group.end(), v) == group.end()) group.push_back(v);
-            }
-        }
-        Vec3 c(0.0f);
-        for (auto v : group) c += pts[v];
-        c /= static_cast<float>(group.size());
-        const Vec3 u_axis = glm::normalize(pts[group[0]] - c);
-        const Vec3 v_axis = glm::cross(n, u_axis);
-        std::sort(group.begin(), group.end(), [&](std::uint32_t a, std::uint32_t b) {
-            return std::atan2(glm::dot(pts[a] - c, v_axis), glm::dot(pts[a] - c, u_axis)) <
-                   std::atan2(glm::dot(pts[b] - c, v_axis), glm::dot(pts[b] - c, u_axis));
-        });
-        // Drop vertices lying on a polygon edge (collinear): they would make zero-length edges.
-        Polyhedron::Face f;
-        f.first = static_cast<std::uint16_t>(p.face_vertices.size());
-        for (std::size_t k = 0; k < group.size(); ++k) {
-            const Vec3& a = pts[group[(k + group.size() - 1) % group.size()]];
-            const Vec3& b = pts[group[k]];
-            const Vec3& d = pts[group[(k + 1) % group.size()]];
-            if (glm::length(glm::cross(b - a, d - b)) <= eps * eps) continue;
-            if (remap[group[k]] < 0) {
-                remap[group[k]] = static_cast<int>(p.vertices.size());
-                p.vertices.push_back(pts[group[k]]);
-            }
-            p.face_vertices.push_back(static_cast<std::uint16_t>(remap[group[k]]));
-        }
-        f.count = static_cast<std::uint16_t>(p.face_vertices.size() - f.first);
-        if (f.count >= 3)
-            p.faces.push_back(f);
-        else
-            p.face_vertices.resize(f.first);
-    }
-    return p;
+    return ok();
 }
 
 } // namespace
@@ -252,14 +161,13 @@ Result<Polyhedron> build_convex_hull(std::span<const Vec3> points, const std::st
     float eps = 0.0f;
     auto pts = weld_hull_points(points, source, eps);
     if (!pts) return pts.error();
-    auto start = initial_tetrahedron(*pts, eps, source);
-    if (!start) return start.error();
-    Polyhedron p = hull_polyhedron(*pts, grow_hull(*pts, *start, eps), eps);
-    if (p.faces.size() < 4 || p.vertices.size() > 65535)
-        return Error("convex hull of the collision mesh is degenerate", Location(source),
+    if (auto spans = check_spans_volume(*pts, eps, source); !spans) return spans.error();
+    std::vector<DVec3> exact(pts->begin(), pts->end());
+    auto hull = brush::make_from_points(exact);
+    if (!hull)
+        return Error("convex hull of the collision mesh: " + hull.error().message, Location(source),
                      "check the mesh for zero-area faces and near-duplicate vertices");
-    finalize(p);
-    return p;
+    return brush_polyhedron(*hull, DVec3(0.0));
 }
 
 Shape Shape::box(const Vec3& half) {

@@ -48,9 +48,14 @@ struct Polyhedron {
 Polyhedron make_box_polyhedron(const Vec3& half);
 Polyhedron make_wedge_polyhedron(const Vec3& half);
 
-// Builds the convex hull of a mesh's vertices (a prop's collision mesh). Duplicate vertices are welded,
-// coplanar triangles merged into polygons. Errors (as values, naming `source`): fewer than 4 distinct
-// points, all points coplanar (zero volume), non-finite or absurd (> 1e6) coordinates, too many points.
+// Fills `edges` (unique) and `edge_directions` (unit, distinct up to sign) from the faces' vertex lists.
+void derive_edges(Polyhedron& p);
+
+// Builds the convex hull of a mesh's vertices (a prop's collision mesh) through brush's convex hull (Qhull,
+// in double; brush/convex_hull.h), as a brush's polyhedron. Duplicate vertices are welded, coplanar facets
+// merged into polygons. Errors (as values, naming `source`): fewer than 4 distinct
+// points, all points coplanar (zero volume), non-finite coordinates or beyond +-65 536
+// (brush::kMaxCoordinate), too many points.
 Result<Polyhedron> build_convex_hull(std::span<const Vec3> points, const std::string& source);
 
 enum class ShapeKind : std::uint8_t { Box, Wedge, Capsule, Cylinder, Hull };

@@ -1,5 +1,7 @@
 #pragma once
-// Small scene builders for the physics tests: boxes, the main level's stairs, the player capsule.
+// Small scene builders for the physics tests: boxes, brushes, the main level's stairs, the player capsule.
+#include "brush/brush_build.h"
+#include "physics/brush_shape.h"
 #include "physics/world.h"
 
 #include <doctest/doctest.h>
@@ -17,6 +19,24 @@ inline BodyId add_box(World& w, Vec3 centre, Vec3 half, float yaw = 0.0f) {
     auto id = w.add(d, "test box");
     REQUIRE(id.ok());
     return *id;
+}
+
+// A static brush body (physics/brush_shape.h).
+inline BodyId add_brush(World& w, const brush::Brush& b) {
+    const BrushBody body = brush_body(b);
+    BodyDesc d;
+    d.shape = body.shape;
+    d.transform = body.transform;
+    auto id = w.add(d, "test brush");
+    REQUIRE(id.ok());
+    return *id;
+}
+
+// The box brush of centre and half extents (what add_box places, as planes).
+inline brush::Brush box_brush(Vec3 centre, Vec3 half) {
+    auto b = brush::make_box(DVec3(centre) - DVec3(half), DVec3(centre) + DVec3(half));
+    REQUIRE(b.ok());
+    return std::move(*b);
 }
 
 inline BodyId add_floor(World& w, float top = 0.0f, float half_size = 200.0f) {
