@@ -9,7 +9,8 @@
 #include <map>
 #include <string>
 
-namespace ks::brush::test {
+namespace ks::brush_test {
+using namespace ks::brush;
 
 // Empty when the brush is valid; else what is wrong.
 inline std::string audit(const Brush& b, double tolerance = 1e-7) {
@@ -56,4 +57,4 @@ inline bool has_vertex(const Brush& b, const DVec3& p, double tolerance = 1e-9) 
     return false;
 }
 
-} // namespace ks::brush::test
+} // namespace ks::brush_test

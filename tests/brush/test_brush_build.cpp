@@ -9,8 +9,8 @@
 
 using namespace ks;
 using namespace ks::brush;
-using ks::brush::test::audit;
-using ks::brush::test::has_vertex;
+using ks::brush_test::audit;
+using ks::brush_test::has_vertex;
 
 TEST_CASE("a box derives 8 vertices, 12 edges and 6 quads from its 6 planes") {
     auto b = make_box({-1, -2, -3}, {1, 2, 3});

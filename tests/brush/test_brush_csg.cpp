@@ -11,7 +11,7 @@
 
 using namespace ks;
 using namespace ks::brush;
-using ks::brush::test::audit;
+using ks::brush_test::audit;
 
 namespace {
 

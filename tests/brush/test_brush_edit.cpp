@@ -11,9 +11,9 @@
 
 using namespace ks;
 using namespace ks::brush;
-using ks::brush::test::audit;
-using ks::brush::test::grid_distance;
-using ks::brush::test::has_vertex;
+using ks::brush_test::audit;
+using ks::brush_test::grid_distance;
+using ks::brush_test::has_vertex;
 
 namespace {
 

@@ -19,8 +19,8 @@
 
 using namespace ks;
 using namespace ks::brush;
-using ks::brush::test::audit;
-using ks::brush::test::grid_distance;
+using ks::brush_test::audit;
+using ks::brush_test::grid_distance;
 
 namespace {
 
