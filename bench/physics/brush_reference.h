@@ -4,6 +4,7 @@
 // independently of physics' float polyhedron paths, for the brush tests' and the benchmark's error columns.
 // Conventions match ray_reference.h: a ray starting inside hits at 0; touching counts.
 #include "brush/brush.h"
+#include "ray_reference.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,16 +18,8 @@ inline double ray_brush(const DVec3& origin, const DVec3& dir, const brush::Brus
                         double grow = 0.0) {
     double tmin = -std::numeric_limits<double>::infinity(), tmax = std::numeric_limits<double>::infinity();
     for (const brush::Face& f : b.faces()) {
-        const double dist = f.plane.signed_distance(origin) - grow, dn = glm::dot(f.plane.normal, dir);
-        if (dn == 0.0) {
-            if (dist > 0.0) return -1.0;
-            continue;
-        }
-        const double t = -dist / dn;
-        if (dn < 0.0)
-            tmin = std::max(tmin, t);
-        else
-            tmax = std::min(tmax, t);
+        if (!clip_by_plane(f.plane.signed_distance(origin) - grow, glm::dot(f.plane.normal, dir), tmin, tmax))
+            return -1.0;
     }
     if (tmin > tmax || tmax <= 0.0 || tmin > max_distance) return -1.0;
     return std::max(tmin, 0.0);

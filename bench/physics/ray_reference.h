@@ -40,6 +40,19 @@ inline double ray_box(const DVec3& origin, const DVec3& dir, const RefBox& b, do
     return std::max(tmin, 0.0);
 }
 
+// Clips the ray's parameter range [tmin, tmax] by one face plane of a convex solid, given the origin's signed
+// distance to it and the plane normal's dot product with the direction. False when the ray runs parallel to
+// the plane outside it (it misses the solid).
+inline bool clip_by_plane(double distance, double normal_dot_dir, double& tmin, double& tmax) {
+    if (normal_dot_dir == 0.0) return distance <= 0.0;
+    const double t = -distance / normal_dot_dir;
+    if (normal_dot_dir < 0.0)
+        tmin = std::max(tmin, t);
+    else
+        tmax = std::min(tmax, t);
+    return true;
+}
+
 // Convex polyhedron given by its float vertices and faces; planes recomputed here in double.
 inline double ray_polyhedron(const DVec3& origin, const DVec3& dir, const Polyhedron& p, const DVec3& centre,
                              const DQuat& rotation, double max_distance) {
@@ -56,16 +69,7 @@ inline double ray_polyhedron(const DVec3& origin, const DVec3& dir, const Polyhe
         }
         n = glm::normalize(n);
         c /= static_cast<double>(idx.size());
-        const double dist = glm::dot(n, o - c), dn = glm::dot(n, d);
-        if (dn == 0.0) {
-            if (dist > 0.0) return -1.0;
-            continue;
-        }
-        const double t = -dist / dn;
-        if (dn < 0.0)
-            tmin = std::max(tmin, t);
-        else
-            tmax = std::min(tmax, t);
+        if (!clip_by_plane(glm::dot(n, o - c), glm::dot(n, d), tmin, tmax)) return -1.0;
     }
     if (tmin > tmax || tmax <= 0.0 || tmin > max_distance) return -1.0;
     return std::max(tmin, 0.0);
