@@ -52,7 +52,11 @@ bool resolve_link(const level::Link& link, const level::Level& level, const leve
     out.event = *event;
     out.action = *action;
     out.once = link.once;
+    // Rounded to whole steps, but a positive delay is never rounded to none: a designer who wrote 0.004 s
+    // meant "later", and a zero-step chain of door links would loop within one step (the loop check, which
+    // reads the file, only warns about delays of exactly 0).
     out.delay_steps = std::llround(std::min(static_cast<double>(link.delay), level::kMaxLinkDelay) / step);
+    if (link.delay > 0.0f) out.delay_steps = std::max<long long>(out.delay_steps, 1);
     switch (level::target_kind(*action)) {
     case level::TargetKind::Level:
         out.target = LogicTarget::Level;

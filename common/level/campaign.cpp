@@ -73,6 +73,13 @@ void check_content(const std::optional<std::string>& name, const std::vector<Lis
                        "write the level file's name, relative to the campaign file's folder");
             continue;
         }
+        if (std::any_of(file.begin(), file.end(),
+                        [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; })) {
+            sink.error(member_path(path, "file"),
+                       "level file " + jsonio::quote_text(file) + " has a control character in its name",
+                       "write the file's name as it is on disk; names with line breaks or tabs are refused");
+            continue;
+        }
         if (fs::path(file).is_absolute()) {
             sink.error(member_path(path, "file"),
                        "level file " + jsonio::quote_text(file) + " is an absolute path",
@@ -99,12 +106,27 @@ std::vector<std::string> level_files_in(const fs::path& folder) {
 
 void check_level_files_exist(const std::vector<ListedLevel>& levels, const fs::path& folder,
                              DiagnosticSink& sink) {
+    // The same file by two spellings ("lvl.json" and "../dir/lvl.json" from dir/): the lexical check in
+    // check_content cannot see it, the file system can.
+    std::map<std::string, size_t> first_file;
     for (const ListedLevel& listed : levels) {
         const fs::path relative(listed.level.file);
         if (is_blank(listed.level.file) || relative.is_absolute()) continue; // already reported
         const fs::path full = folder / relative;
         std::error_code ec;
-        if (fs::is_regular_file(full, ec)) continue;
+        if (fs::is_regular_file(full, ec)) {
+            const fs::path real = fs::canonical(full, ec);
+            if (ec) continue;
+            auto [first, inserted] = first_file.emplace(real.string(), listed.index);
+            const std::string& first_spelling = levels[first->second].level.file;
+            if (!inserted && fs::path(first_spelling).lexically_normal() != relative.lexically_normal())
+                sink.error(member_path(element_path("levels", listed.index), "file"),
+                           "level " + jsonio::quote_text(listed.level.file) + " is the same file as " +
+                               element_path("levels", first->second) + " (" +
+                               jsonio::quote_text(first_spelling) + ")",
+                           "a campaign plays each level once: remove one of them");
+            continue;
+        }
         std::string hint = "level files are relative to the campaign file's folder";
         const std::vector<std::string> beside =
             level_files_in(full.parent_path().empty() ? fs::path(".") : full.parent_path());

@@ -104,16 +104,21 @@ void check_patrol_reach(const Level& level, DiagnosticSink& sink, const std::vec
     bool measured = false;
     for (size_t i = 0; i < level.entities.size(); ++i) {
         const Entity& entity = level.entities[i];
-        const auto* robot = entity.try_as<RobotProps>();
-        if (!robot || !robot->patrol.active() || robot->patrol.points.size() > kMaxPatrolPoints) continue;
+        // A spawner's robots walk its patrol (its robot fields are the spawner's own, props.patrol).
+        const Patrol* patrol = nullptr;
+        if (const auto* robot = entity.try_as<RobotProps>())
+            patrol = &robot->patrol;
+        else if (const auto* spawner = entity.try_as<SpawnerProps>())
+            patrol = &spawner->robot.patrol;
+        if (!patrol || !patrol->active() || patrol->points.size() > kMaxPatrolPoints) continue;
         if (!measured) extent = level_extent(level), measured = true;
         if (!extent) return;
         const size_t shown = i < source_index.size() ? source_index[i] : i;
         const std::string points_path = member_path(
             member_path(member_path(element_path("entities", shown), "props"), "patrol"), "points");
         SubjectScope scope(sink, entity_subject(entity));
-        for (size_t k = 0; k < robot->patrol.points.size(); ++k) {
-            const Vec3& point = robot->patrol.points[k];
+        for (size_t k = 0; k < patrol->points.size(); ++k) {
+            const Vec3& point = patrol->points[k];
             if (!is_finite(point)) continue; // reported by check_patrol
             const float outside = distance_outside(*extent, point);
             if (outside <= static_cast<float>(kPatrolReach)) continue;
@@ -121,8 +126,10 @@ void check_patrol_reach(const Level& level, DiagnosticSink& sink, const std::vec
                        "patrol point " + point_text(point) + " is " +
                            jsonio::readable_float(std::round(outside)) + " units outside the level (" +
                            extent_text(*extent) + ")",
-                       "move it to where the robot can walk; at most " +
-                           jsonio::format_readable(kPatrolReach) + " units outside the level's entities");
+                       std::string("move it to where ") +
+                           (entity.type() == EntityType::Spawner ? "the spawned robots" : "the robot") +
+                           " can walk; at most " + jsonio::format_readable(kPatrolReach) +
+                           " units outside the level's entities");
         }
     }
 }

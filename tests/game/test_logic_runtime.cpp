@@ -128,6 +128,25 @@ TEST_CASE("a loop with a delay is a timer: it keeps going, one action per delay"
     CHECK(g->logic().dropped_actions() == 0);
 }
 
+TEST_CASE("a positive delay shorter than half a step still waits one step: a door loop with it is a timer") {
+    // 0.004 s is under half of a 1/120 s step; rounded to nearest it would be no delay, and the pair below
+    // would be a zero-delay loop that the loop check (it reads the file: delay 0.004 is not 0) never warns
+    // of.
+    auto lv = flat_level();
+    auto& door = lv.add(level::EntityType::Door, Vec3(0, 0, -30), "Door");
+    door.links = {link("on_open", "Door", "close", 0.004f), link("on_close", "Door", "open", 0.004f)};
+    lv.links = {link("on_start", "Door", "open")};
+    auto g = make_game(lv);
+    int turns = 0;
+    for (int i = 0; i < 10; ++i) {
+        g->step({});
+        turns += count_events(*g, EventType::DoorToggled);
+    }
+    CHECK(g->logic().dropped_actions() == 0);
+    CHECK(g->logic().problems().empty());
+    CHECK(turns <= 10); // one turn a step at most, never the 1 024-action cut-off
+}
+
 TEST_CASE("links an unvalidated level cannot resolve are ignored and reported, the rest work") {
     auto lv = flat_level();
     add_message(lv, "Hello", "hello");

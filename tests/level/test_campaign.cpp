@@ -194,6 +194,21 @@ TEST_CASE("campaign: malformed files give every problem with file, line:column, 
                        {":3:4: levels[1].file: level \"more/../first.json\" is listed twice (also levels[0])",
                         "remove one"});
     }
+    SUBCASE("the same level by two spellings that only the file system can match") {
+        const std::string again = "../" + folder.dir.path().filename().string() + "/first.json";
+        check_contains(
+            failure_of(folder, "{\"name\": \"C\", \"levels\": [\n  {\"file\": \"first.json\", "
+                               "\"title\": \"A\"},\n  {\"file\": \"" +
+                                   again + "\", \"title\": \"B\"}]}"),
+            {":3:4: levels[1].file: level \"" + again + "\" is the same file as levels[0] (\"first.json\")",
+             "plays each level once"});
+    }
+    SUBCASE("a control character in a level's file name") {
+        check_contains(
+            failure_of(folder, "{\"name\": \"C\", \"levels\": [{\"file\": \"first\\u0007.json\", "
+                               "\"title\": \"A\"}]}"),
+            {"levels[0].file: level file \"first\\u0007.json\" has a control character in its name"});
+    }
     SUBCASE("a missing level file, with did-you-mean among the files beside it") {
         check_contains(failure_of(folder,
                                   "{\"name\": \"C\", \"levels\": [\n  {\"file\": \"frist.json\", \"title\": "

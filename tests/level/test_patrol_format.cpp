@@ -102,6 +102,31 @@ TEST_CASE("a patrol point far outside the level is an error naming the robot, th
     CHECK(near.ok());
 }
 
+TEST_CASE("a spawner's patrol point far outside the level is the same error as a robot's") {
+    // The spawned robots walk the spawner's patrol: a point they cannot reach strands every one of them.
+    const std::string text = R"({"format": "killswitch-level", "version": 2, "entities": [
+  {"id": 1, "type": "floor", "position": [0, 0, 0], "props": {"size": [40, 40]}},
+  {"id": 14, "type": "spawner", "name": "hatch", "position": [0, 0, 0], "props": {"patrol": {"points": [[5, 0, 5], [0, 0, -900]]}}}
+]}
+)";
+    LoadReport report;
+    CHECK_FALSE(load_level_string(text, "spawn.json", &report).ok());
+    CHECK(report.error_count() == 1);
+    CHECK_MESSAGE(
+        report.str().find("entities[1].props.patrol.points[1]: spawner 14 (\"hatch\"): patrol point "
+                          "(0, 0, -900) is 880 units outside the level") != std::string::npos,
+        report.str());
+    CHECK_MESSAGE(report.str().find("move it to where the spawned robots can walk") != std::string::npos,
+                  report.str());
+
+    Level level = guarded_level();
+    auto& spawner = level.add(EntityType::Spawner, {0, 0, 0}, "hatch").as<SpawnerProps>();
+    spawner.robot.patrol.points = {{5, 0, 5}};
+    CHECK(validate(level).error_count() == 0);
+    spawner.robot.patrol.points.push_back({0, 0, -900});
+    CHECK(validate(level).error_count() == 1);
+}
+
 TEST_CASE("patrol shape errors and an empty route") {
     LoadReport report;
     CHECK_FALSE(load_level_string(level_text(R"({"patrol": {"mode": "loop"}})"), "a.json", &report).ok());
