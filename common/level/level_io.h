@@ -19,7 +19,8 @@ struct Diagnostic {
     // The logic findings a tool can offer a fix for (the editor's quick fixes); Other for everything else.
     // DanglingTarget: a link target or kill-list name that names nothing; LogicLoop: a zero-delay loop (the
     // path is one link of it); ObjectiveNeverCompletes: the path is the objective (nothing completes it) or
-    // a kill-list name (a spawner nothing starts); LockedDoor: a locked door nothing frees. UnknownTexture: a
+    // a kill-list name (a spawner nothing starts); LockedDoor: a locked door nothing frees; DisabledTrigger: a
+    // trigger with links that starts disabled and that no link enables. UnknownTexture: a
     // texture field naming no surface material in assets/textures (level/texture_names.h).
     enum class Kind {
         Other,
@@ -27,6 +28,7 @@ struct Diagnostic {
         LogicLoop,
         ObjectiveNeverCompletes,
         LockedDoor,
+        DisabledTrigger,
         UnknownTexture
     } kind = Kind::Other;
     // DanglingTarget, UnknownTexture: the name that would resolve ("did you mean"), or ""

@@ -164,13 +164,15 @@ void check_door_loops(const Level& level, const std::vector<LinkRef>& refs, Diag
 
 void check_reachability(const Level& level, const NameIndex& names, const std::vector<LinkRef>& refs,
                         DiagnosticSink& sink, const std::vector<size_t>& source_index) {
-    std::vector<bool> spawned(level.entities.size()), freed(level.entities.size());
+    std::vector<bool> spawned(level.entities.size()), freed(level.entities.size()),
+        enabled(level.entities.size());
     std::vector<std::string> completed;
     for (const LinkRef& r : refs) {
         if (is_action(r, {LinkAction::Complete})) completed.push_back(r.link->target);
         if (r.target == kNone) continue;
         if (is_action(r, {LinkAction::Spawn})) spawned[r.target] = true;
         if (is_action(r, {LinkAction::Unlock, LinkAction::Open, LinkAction::Toggle})) freed[r.target] = true;
+        if (is_action(r, {LinkAction::Enable})) enabled[r.target] = true;
     }
     for (size_t i = 0; i < level.entities.size(); ++i) {
         const Entity& e = level.entities[i];
@@ -182,6 +184,14 @@ void check_reachability(const Level& level, const NameIndex& names, const std::v
                          "add a link with \"action\": \"unlock\" (or \"open\") and \"target\": " +
                              jsonio::quote_text(e.name));
             sink.tag_last(Diagnostic::Kind::LockedDoor);
+        }
+        if (const auto* trigger = e.try_as<TriggerProps>();
+            trigger && !trigger->enabled && !enabled[i] && !e.links.empty()) {
+            sink.warning(member_path(member_path(path, "props"), "enabled"),
+                         "the trigger starts disabled and no link enables it: its links never fire",
+                         "set \"enabled\": true, or add a link with \"action\": \"enable\" and \"target\": " +
+                             jsonio::quote_text(e.name));
+            sink.tag_last(Diagnostic::Kind::DisabledTrigger);
         }
     }
     for (size_t i = 0; i < level.objectives.size(); ++i) {

@@ -128,6 +128,8 @@ Rule rule_of(Kind kind) {
         return Rule::Objective;
     case Kind::LockedDoor:
         return Rule::LockedDoor;
+    case Kind::DisabledTrigger: // a trigger that can never fire, like one no one can walk into
+        return Rule::TriggerReach;
     case Kind::UnknownTexture: // not a logic finding: validation.cpp makes it a texture issue
     case Kind::Other:
         break;
@@ -185,6 +187,10 @@ Issue logic_issue(const level::Level& level, const level::Diagnostic& d) {
         break;
     case Kind::LockedDoor:
         if (c.entity) issue.fix = {"Unlock the door", fixes::SetField{"locked", FieldValue(false)}};
+        break;
+    case Kind::DisabledTrigger:
+        if (c.entity)
+            issue.fix = {"Enable the trigger at start", fixes::SetField{"enabled", FieldValue(true)}};
         break;
     case Kind::UnknownTexture:
     case Kind::Other:

@@ -235,16 +235,19 @@ Level random_level(Rng& rng, int entity_count) {
         e.props =
             default_props(static_cast<EntityType>(rng.below(static_cast<std::uint32_t>(EntityType::Count))));
         std::visit([&](auto& props) { props.visit(filler); }, e.props);
-        if (auto* robot = e.try_as<RobotProps>())
-            for (Vec3& p : robot->patrol.points) p += e.position;
         auto* spawner = e.try_as<SpawnerProps>();
         if (spawner) spawner->robot.dummy = false; // a spawner makes fighting robots
         RobotProps* robot = spawner ? &spawner->robot : e.try_as<RobotProps>();
+        if (robot) // near the robot (or the spawner's robots): a patrol far outside the level is an error
+            for (Vec3& p : robot->patrol.points) p += e.position;
         if (robot && robot->eye_radius_min > robot->eye_radius_max)
             std::swap(robot->eye_radius_min, robot->eye_radius_max);
         level.entities.push_back(std::move(e));
     }
     add_random_links(rng, level);
+    // A disabled trigger with links that nothing enables is a warning (its links never fire).
+    for (Entity& e : level.entities)
+        if (auto* trigger = e.try_as<TriggerProps>(); trigger && !e.links.empty()) trigger->enabled = true;
     level.next_id = entity_count * 3 + 1 + static_cast<int>(rng.below(5));
     return level;
 }

@@ -177,6 +177,23 @@ TEST_CASE("findings a tool can fix are tagged with their kind and the did-you-me
     CHECK(kinds(logic_level("[]", "[]", "[]",
                             R"(, {"id": 11, "type": "door", "name": "Vault", "position": [9, 0, -5], )"
                             R"("props": {"locked": true}})")) == Tags{{Kind::LockedDoor, ""}});
+    // A trigger with links that starts disabled, and nothing enables it: its links never fire.
+    const std::string disabled_trigger =
+        R"(, {"id": 12, "type": "trigger", "name": "Latch", "position": [9, 0, 5], "props": {"enabled": false}, )"
+        R"("links": [{"event": "on_enter", "target": "Alarm", "action": "show"}]})";
+    CHECK(kinds(logic_level("[]", "[]", "[]", disabled_trigger)) == Tags{{Kind::DisabledTrigger, ""}});
+    const std::string report = load_report(logic_level("[]", "[]", "[]", disabled_trigger), true).str();
+    CHECK_MESSAGE(ks::test::contains_text(report,
+                                          "entities[9].props.enabled: trigger 12 (\"Latch\"): the trigger "
+                                          "starts disabled and no link enables it: its links never fire"),
+                  report);
+    // Enabled by a link (the hall trigger's), or without links of its own: nothing to say.
+    CHECK(kinds(logic_level("[" + link("on_enter", "Latch", "enable") + "]", "[]", "[]", disabled_trigger))
+              .empty());
+    CHECK(kinds(logic_level("[]", "[]", "[]",
+                            R"(, {"id": 12, "type": "trigger", "name": "Latch", "position": [9, 0, 5], )"
+                            R"("props": {"enabled": false}})"))
+              .empty());
 }
 
 TEST_CASE("negative, NaN and absurd delays, and a link missing a key, are errors naming the entity") {
