@@ -97,7 +97,7 @@ Result<AnimationLibrary> load_animation_library(const std::filesystem::path& pat
     if (!rig) return Error(rig.error().message, Location(path.string()), rig.error().hint);
     auto clips = compile(*file, *rig);
     if (!clips) return Error(clips.error().message, Location(path.string()), clips.error().hint);
-    return AnimationLibrary{std::move(*file), std::move(*rig), std::move(*clips)};
+    return AnimationLibrary{std::move(*file), std::move(*rig), std::move(*clips), path};
 }
 
 } // namespace ks::anim

@@ -45,6 +45,7 @@ struct AnimationLibrary {
     AnimationFile file;
     Rig rig;
     ClipSet clips;
+    std::filesystem::path source; // the file it was read from: what problems found later are reported against
 };
 Result<AnimationLibrary> load_animation_library(const std::filesystem::path& path);
 

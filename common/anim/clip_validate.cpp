@@ -16,6 +16,9 @@ constexpr double kMaxDuration = 600.0; // seconds per phase
 constexpr double kMaxBlend = 10.0;     // seconds
 constexpr double kMaxAngle = 36000.0;  // degrees: 100 turns
 constexpr double kMaxOffset = 10000.0; // world units
+// Events per clip: a walk cycle's footsteps, a burst's shots. Each event acts (a muzzle_flash is a shot), so
+// thousands are a mistake, not a clip.
+constexpr std::size_t kMaxClipEvents = 64;
 
 // The semantic checks of validate(), in the order their issues are listed: rig, node references, blends,
 // clips, then chains of 'next' clips.
@@ -136,8 +139,18 @@ class Validator {
                         "give a phase a duration > 0");
             for (std::size_t pi = 0; pi < c.phases.size(); ++pi)
                 check_phase(c.phases[pi], (cp / "phases")[pi]);
-            for (std::size_t ei = 0; ei < c.events.size(); ++ei)
+            if (c.events.size() > kMaxClipEvents) {
+                problem(cp / "events",
+                        "clip " + quoted_name(c.name) + " has " + std::to_string(c.events.size()) +
+                            " events; at most " + std::to_string(kMaxClipEvents),
+                        "each event acts when the clip passes it (a muzzle_flash is a shot): keep the ones "
+                        "that mean something");
+                continue;
+            }
+            for (std::size_t ei = 0; ei < c.events.size(); ++ei) {
                 check_event(c, c.events[ei], (cp / "events")[ei]);
+                check_event_repeated(c, ei, cp / "events");
+            }
         }
     }
 
@@ -154,6 +167,22 @@ class Validator {
                     "sound name " + quoted_name(e.sound) + " has characters other than a-z, 0-9 and _",
                     "name a file of assets/sounds/ without its .wav");
     }
+
+    // The same event twice at the same moment acts twice (two muzzle_flash events are two shots, double
+    // damage): refused, naming the first.
+    void check_event_repeated(const ClipDef& c, std::size_t index, const JsonPath& events) {
+        const ClipEvent& e = c.events[index];
+        for (std::size_t k = 0; k < index; ++k) {
+            const ClipEvent& first = c.events[k];
+            if (first.name != e.name || !(std::fabs(first.time - e.time) <= kSameEventTime)) continue;
+            problem(events[index],
+                    "event " + quoted_name(e.name) + " is listed twice at " + jsonio::shortest_text(e.time) +
+                        " s in clip " + quoted_name(c.name) + " (also events[" + std::to_string(k) + "])",
+                    "remove one: each acts when the clip passes it (two muzzle_flash events are two shots)");
+            return;
+        }
+    }
+    static constexpr double kSameEventTime = 1e-6; // seconds: closer than any frame
 
     static bool is_sound_name(const std::string& s) {
         for (char ch : s)

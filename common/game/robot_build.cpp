@@ -15,11 +15,13 @@ RobotSystem::RobotSystem(GameCore& core, PlayerSystem& player, Explosives& explo
 
 Result<void> RobotSystem::find_clips() {
     const anim::ClipSet& clips = animations_->clips;
+    // Problems are the file's that was read (a --clips file, a designer's copy), not the shipped one's.
+    const std::string source = animations_->source.empty() ? paths::asset("animations/robot.json").string()
+                                                           : animations_->source.string();
     auto need = [&](const char* name, int& out) -> Result<void> {
         out = clips.find(name);
         if (out < 0)
-            return Error(std::string("robot animations lack the clip \"") + name + "\"",
-                         Location("assets/animations/robot.json"),
+            return Error(std::string("robot animations lack the clip \"") + name + "\"", Location(source),
                          "the game needs idle, alert, shoot_pose, shooting, shoot_pose_reverse and death");
         return ok();
     };
@@ -34,20 +36,41 @@ Result<void> RobotSystem::find_clips() {
     shot_on_event_ = std::any_of(shooting_events.begin(), shooting_events.end(),
                                  [](const anim::ClipEvent& e) { return e.name == kMuzzleFlashEvent; });
     if (!shot_on_event_) // the robots still shoot, but the animator should know why the timing is off
-        log::warn(paths::asset("animations/robot.json").string(),
+        log::warn(source,
                   ": the \"shooting\" clip has no \"muzzle_flash\" event, so robots fire as the clip starts; "
                   "add one where the shot should leave the hand, e.g. \"events\": [{\"time\": 0, \"name\": "
                   "\"muzzle_flash\", \"sound\": \"robot_shot\"}] (the editor's dojo panel adds events on its "
                   "timeline)");
+    warn_missing_event_sounds(source);
     alert_length_ = static_cast<float>(clips.clips[clips_.alert].duration);
     aim_length_ = static_cast<float>(clips.clips[clips_.shoot_pose].duration);
     death_length_ = static_cast<float>(clips.clips[clips_.death].duration);
     hand_tip_node_ = animations_->rig.find("hand_r_tip");
-    if (hand_tip_node_ < 0) hand_tip_node_ = animations_->rig.find("hand_r");
+    if (hand_tip_node_ < 0) {
+        hand_tip_node_ = animations_->rig.find("hand_r");
+        if (hand_tip_node_ >= 0)
+            log::warn(source, ": the rig has no \"hand_r_tip\" node, so robot shots start at \"hand_r\" "
+                              "(the wrist) instead of the hand's tip; add the node (a child of hand_r at the "
+                              "fingertips) to the rig");
+    }
     if (hand_tip_node_ < 0)
-        return Error("the robot rig has no hand_r_tip node", Location("assets/animations/robot.json"),
-                     "robot shots start at the right hand's tip");
+        return Error("the robot rig has no hand_r_tip node (nor hand_r)", Location(source),
+                     "robot shots start at the right hand's tip: add hand_r and hand_r_tip to the rig");
     return ok();
+}
+
+// A clip event's sound that is not a file of assets/sounds plays nothing: said once, at load.
+void RobotSystem::warn_missing_event_sounds(const std::string& source) const {
+    const anim::ClipSet& clips = animations_->clips;
+    for (const auto& clip : clips.clips)
+        for (const anim::ClipEvent& e : clip.events) {
+            if (e.sound.empty()) continue;
+            std::error_code ec;
+            if (std::filesystem::is_regular_file(paths::asset("sounds/" + e.sound + ".wav"), ec)) continue;
+            log::warn(source, ": clip \"", clip.name, "\", event \"", e.name, "\" plays sound \"", e.sound,
+                      "\", which is not in assets/sounds (no ", e.sound,
+                      ".wav there); name a file of that folder without .wav, or leave \"sound\" out");
+        }
 }
 
 void RobotSystem::prepare(std::size_t count, float gravity) {
