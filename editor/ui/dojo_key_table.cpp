@@ -9,6 +9,15 @@
 namespace ks::editor::ui {
 
 namespace {
+// A dragged vector field: the components the drag changed, snapped to the field's grid (no float noise in
+// the file); the others keep their exact values.
+DVec3 dragged(const DVec3& before, const float (&v)[3], double steps) {
+    DVec3 out = before;
+    for (int i = 0; i < 3; ++i)
+        if (v[i] != static_cast<float>(before[i])) out[i] = snap(static_cast<double>(v[i]), steps);
+    return out;
+}
+
 // The easing's shape, 0..1 over 0..1, in a small box.
 void ease_thumbnail(const anim::Ease& ease, float size) {
     ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -109,7 +118,7 @@ bool DojoKeyTable::phase_timing(const DojoContext& dojo, anim::PhaseDef& phase) 
     float duration = static_cast<float>(phase.duration);
     ImGui::SetNextItemWidth(120);
     if (ImGui::DragFloat("duration", &duration, 0.005f, 0.0f, 30.0f, "%.3f s", ImGuiSliderFlags_AlwaysClamp))
-        dojo.edits.begin_drag("key duration"), phase.duration = duration, edited = true;
+        dojo.edits.begin_drag("key duration"), phase.duration = snap(duration, kTimeSteps), edited = true;
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Seconds to reach this key's targets; a key with no targets is a delay.");
     ImGui::SetNextItemWidth(170);
@@ -154,8 +163,8 @@ bool DojoKeyTable::target_rows(const DojoContext& dojo, anim::PhaseDef& phase, s
                               static_cast<float>(rot->z)};
                 ImGui::SetNextItemWidth(-1);
                 if (ImGui::DragFloat3("##rot", v, 0.5f, -3600.0f, 3600.0f, "%.1f"))
-                    dojo.edits.begin_drag("rotate " + target.node), *rot = DVec3(v[0], v[1], v[2]),
-                                                                    edited = true;
+                    dojo.edits.begin_drag("rotate " + target.node),
+                        *rot = dragged(*rot, v, kDegreeFieldSteps), edited = true;
             } else if (ImGui::SmallButton("+ rot")) {
                 dojo.edits.begin_drag("rotate " + target.node), target.rot = DVec3(0.0), edited = true;
             }
@@ -166,13 +175,17 @@ bool DojoKeyTable::target_rows(const DojoContext& dojo, anim::PhaseDef& phase, s
                               static_cast<float>(pos->z)};
                 ImGui::SetNextItemWidth(-1);
                 if (ImGui::DragFloat3("##pos", v, 0.01f, -100.0f, 100.0f, "%.2f"))
-                    dojo.edits.begin_drag("move " + target.node), *pos = DVec3(v[0], v[1], v[2]),
+                    dojo.edits.begin_drag("move " + target.node), *pos = dragged(*pos, v, kUnitFieldSteps),
                                                                   edited = true;
             } else if (ImGui::SmallButton("+ pos")) {
                 dojo.edits.begin_drag("move " + target.node), target.pos = DVec3(0.0), edited = true;
             }
             ImGui::TableNextColumn();
             ImGui::TextDisabled("%s", target.add_rot || target.add_pos ? "relative" : "absolute");
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip(
+                    "absolute: the key holds these values; relative (the root's offsets, a looping "
+                    "motion): added to where the node is when the key starts");
             ImGui::TableNextColumn();
             if (ImGui::SmallButton("x")) remove_node = target.node;
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("Remove this node's key from this phase");

@@ -145,6 +145,10 @@ void DojoPanel::load() {
         edits_.set_load_error("robot model: " + rig.error().str());
         return;
     }
+    if (const std::size_t made = make_keys_absolute(*file))
+        log_("dojo: " + std::to_string(made) + " relative keys of " + file_.path().filename().string() +
+                 " made absolute (the same poses; Save writes them)",
+             false);
     playback_.set_rig(std::move(*rig));
     preview_.bind(playback_.rig());
     selection_.event = -1;
