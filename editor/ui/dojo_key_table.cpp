@@ -18,6 +18,14 @@ DVec3 dragged(const DVec3& before, const float (&v)[3], double steps) {
     return out;
 }
 
+// Where `node` is at the shown key now (rotation or position offset): a channel added to a key starts
+// there, so nothing moves until it is edited.
+DVec3 where(const DojoContext& dojo, const std::string& node, bool position) {
+    const auto values = key_values(dojo.edits.file(), dojo.clip_index(), node, position);
+    const auto key = static_cast<std::size_t>(dojo.selection.phase);
+    return key < values.size() ? snap(values[key], kValueSteps) : DVec3(0.0);
+}
+
 // The easing's shape, 0..1 over 0..1, in a small box.
 void ease_thumbnail(const anim::Ease& ease, float size) {
     ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -166,7 +174,8 @@ bool DojoKeyTable::target_rows(const DojoContext& dojo, anim::PhaseDef& phase, s
                     dojo.edits.begin_drag("rotate " + target.node),
                         *rot = dragged(*rot, v, kDegreeFieldSteps), edited = true;
             } else if (ImGui::SmallButton("+ rot")) {
-                dojo.edits.begin_drag("rotate " + target.node), target.rot = DVec3(0.0), edited = true;
+                const DVec3 here = where(dojo, target.node, false);
+                dojo.edits.begin_drag("rotate " + target.node), target.rot = here, edited = true;
             }
             ImGui::TableNextColumn();
             auto& pos = target.pos ? target.pos : target.add_pos;
@@ -178,7 +187,8 @@ bool DojoKeyTable::target_rows(const DojoContext& dojo, anim::PhaseDef& phase, s
                     dojo.edits.begin_drag("move " + target.node), *pos = dragged(*pos, v, kUnitFieldSteps),
                                                                   edited = true;
             } else if (ImGui::SmallButton("+ pos")) {
-                dojo.edits.begin_drag("move " + target.node), target.pos = DVec3(0.0), edited = true;
+                const DVec3 here = where(dojo, target.node, true);
+                dojo.edits.begin_drag("move " + target.node), target.pos = here, edited = true;
             }
             ImGui::TableNextColumn();
             ImGui::TextDisabled("%s", target.add_rot || target.add_pos ? "relative" : "absolute");
