@@ -3,6 +3,7 @@
 #include "anim/player.h"
 #include "jsonio/number_text.h"
 #include "model/dojo_edit_support.h"
+#include "model/dojo_keys.h"
 
 #include <algorithm>
 #include <cmath>
@@ -120,6 +121,31 @@ Result<CompiledClips> compile_for(const anim::AnimationFile& file, std::size_t c
     return out;
 }
 
+// A relative key's offset changed by `delta`: the node's next relative key on the channel takes it back,
+// unless an absolute key or the rest rule comes first, so every later key reaches what it did.
+void keep_later_keys(anim::AnimationFile& file, std::size_t clip, std::size_t phase, const std::string& node,
+                     CurveChannel channel, double delta) {
+    anim::ClipDef& def = file.clips[clip];
+    const bool rest_rule =
+        def.unlisted == anim::UnlistedRule::Rest &&
+        std::find(file.rest_nodes.begin(), file.rest_nodes.end(), node) != file.rest_nodes.end();
+    const bool position = is_position(channel);
+    for (std::size_t p = phase + 1; p < def.phases.size(); ++p) {
+        anim::TargetDef* t = nullptr;
+        for (anim::TargetDef& candidate : def.phases[p].targets)
+            if (candidate.node == node) t = &candidate;
+        if (!t) {
+            if (rest_rule) return; // home again: what follows does not depend on the edited key
+            continue;              // held
+        }
+        if (position ? t->pos : t->rot) return;
+        auto& offset = position ? t->add_pos : t->add_rot;
+        if (!offset) continue; // keyed for the other kind only: this channel holds
+        (*offset)[component(channel)] -= delta;
+        return;
+    }
+}
+
 } // namespace
 
 const char* curve_channel_name(CurveChannel c) {
@@ -187,8 +213,9 @@ Result<void> move_key_time(anim::AnimationFile& file, std::size_t clip, std::siz
                      {}, "a time in [" + seconds_text(previous_end) + ", " + seconds_text(next_end) + "]");
     anim::AnimationFile edited = file;
     auto& edited_phases = edited.clips[clip].phases;
-    edited_phases[phase].duration = seconds - previous_end;
-    if (has_next) edited_phases[phase + 1].duration = next_end - seconds;
+    // On the time grid, so the file holds 0.2 where 0.75 - 0.55 gives 0.19999999999999996.
+    edited_phases[phase].duration = snap(seconds - previous_end, kTimeSteps);
+    if (has_next) edited_phases[phase + 1].duration = snap(next_end - seconds, kTimeSteps);
     if (auto valid = dojo_support::no_new_clip_issues(file, edited, clip); !valid)
         return Error(key + " cannot move to " + seconds_text(seconds) + ": " + valid.error().message, {},
                      valid.error().hint);
@@ -209,11 +236,15 @@ Result<void> set_key_value(anim::AnimationFile& file, std::size_t clip, std::siz
     anim::TargetDef* target = nullptr;
     for (anim::TargetDef& t : edited.clips[clip].phases[phase].targets)
         if (t.node == node) target = &t;
-    auto& absolute = is_position(channel) ? target->pos : target->rot;
-    auto& relative = is_position(channel) ? target->add_pos : target->add_rot;
+    const bool position = is_position(channel);
+    auto& absolute = position ? target->pos : target->rot;
+    auto& relative = position ? target->add_pos : target->add_rot;
+    if (!absolute && !relative) // keyed for the other kind only: an absolute key where the node is now
+        absolute = snap(key_values(file, clip, node, position)[phase], kValueSteps);
     auto& edited_value = absolute ? absolute : relative;
-    if (!edited_value) edited_value = DVec3(0); // keyed for the other kind only: a relative key, no motion
+    const double delta = value - (*edited_value)[component(channel)];
     (*edited_value)[component(channel)] = value;
+    if (!absolute) keep_later_keys(edited, clip, phase, node, channel, delta);
     if (auto valid = dojo_support::no_new_clip_issues(file, edited, clip); !valid)
         return Error("cannot set " + node + " " + curve_channel_name(channel) + " to " +
                          jsonio::shortest_text(value) + ": " + valid.error().message,

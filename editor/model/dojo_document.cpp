@@ -8,6 +8,7 @@ Result<void> DojoDocument::open(const std::filesystem::path& path) {
     auto loaded = anim::load_animation_file(path);
     if (!loaded) return loaded.error();
     file_ = std::move(loaded).value();
+    make_keys_absolute(file_); // independent keys (dojo_keys.h); the next save writes them
     path_ = path;
     history_.clear();
     open_ = true;

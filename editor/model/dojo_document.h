@@ -16,7 +16,8 @@ namespace ks::editor {
 
 class DojoDocument {
   public:
-    // Loads a clip file (anim::load_animation_file: every problem located); the history starts empty.
+    // Loads a clip file (anim::load_animation_file: every problem located) with its relative keys made
+    // absolute (make_keys_absolute: the same poses); the history starts empty.
     Result<void> open(const std::filesystem::path& path);
     // Checks (dojo_file_issues) and writes atomically to `path`, or to the opened file when empty; the
     // document then belongs to the path written and is clean.

@@ -4,6 +4,7 @@
 #include "anim/required_clips.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace ks::editor {
 namespace {
@@ -23,7 +24,103 @@ auto keyed(const std::string& node) {
     return [&node](const anim::TargetDef& t) { return t.node == node; };
 }
 
+const anim::TargetDef* target_of(const anim::PhaseDef& phase, const std::string& node) {
+    const auto it = std::find_if(phase.targets.begin(), phase.targets.end(), keyed(node));
+    return it == phase.targets.end() ? nullptr : &*it;
+}
+
+const anim::RigNodeDef* rig_node(const anim::AnimationFile& file, const std::string& node) {
+    const auto it = std::find_if(file.rig.begin(), file.rig.end(),
+                                 [&](const anim::RigNodeDef& n) { return n.name == node; });
+    return it == file.rig.end() ? nullptr : &*it;
+}
+
+// The clip moves the node's position somewhere (so its position is a channel of the clip).
+bool moves_position(const anim::ClipDef& clip, const std::string& node) {
+    for (const anim::PhaseDef& phase : clip.phases)
+        if (const anim::TargetDef* t = target_of(phase, node); t && (t->pos || t->add_pos)) return true;
+    return false;
+}
+
+// The start of a channel played from rest: the rest rotation, or no offset.
+DVec3 rest_value(const anim::RigNodeDef& node, bool position) {
+    return position ? DVec3(0.0) : node.rotation;
+}
+
+// One channel made absolute in one clip; how many targets changed.
+std::size_t absolute_channel(anim::AnimationFile& file, std::size_t clip, const anim::RigNodeDef& node,
+                             bool position) {
+    anim::ClipDef& def = file.clips[clip];
+    bool relative = false;
+    for (const anim::PhaseDef& phase : def.phases)
+        if (const anim::TargetDef* t = target_of(phase, node.name))
+            relative = relative || (position ? t->add_pos : t->add_rot).has_value();
+    if (!relative) return 0;
+    const std::vector<DVec3> reached = key_values(file, clip, node.name, position);
+    if (def.loop == anim::LoopMode::Loop && !reached.empty() &&
+        glm::length(reached.back() - rest_value(node, position)) > 1.0 / kValueSteps)
+        return 0; // each pass carries on from the last: the offsets are the motion
+    std::size_t changed = 0;
+    for (std::size_t p = 0; p < def.phases.size(); ++p)
+        for (anim::TargetDef& t : def.phases[p].targets) {
+            if (t.node != node.name) continue;
+            auto& absolute = position ? t.pos : t.rot;
+            auto& offset = position ? t.add_pos : t.add_rot;
+            if (!offset) continue;
+            absolute = snap(reached[p], kValueSteps);
+            offset.reset();
+            ++changed;
+        }
+    return changed;
+}
+
 } // namespace
+
+double snap(double value, double steps) {
+    const double scaled = value * steps;
+    if (!std::isfinite(scaled) || std::abs(scaled) > 0x1p52) return value; // no finer grid to snap to
+    return std::round(scaled) / steps;
+}
+
+DVec3 snap(const DVec3& value, double steps) {
+    return DVec3(snap(value.x, steps), snap(value.y, steps), snap(value.z, steps));
+}
+
+std::vector<DVec3> key_values(const anim::AnimationFile& file, std::size_t clip, const std::string& node,
+                              bool position) {
+    std::vector<DVec3> out;
+    const anim::RigNodeDef* def = rig_node(file, node);
+    if (clip >= file.clips.size() || !def) return out;
+    const anim::ClipDef& c = file.clips[clip];
+    const bool rest_rule =
+        c.unlisted == anim::UnlistedRule::Rest &&
+        std::find(file.rest_nodes.begin(), file.rest_nodes.end(), node) != file.rest_nodes.end();
+    const DVec3 rest = rest_value(*def, position);
+    DVec3 value = rest;
+    for (const anim::PhaseDef& phase : c.phases) {
+        const anim::TargetDef* t = target_of(phase, node);
+        const auto& absolute = position ? (t ? t->pos : std::nullopt) : (t ? t->rot : std::nullopt);
+        const auto& offset = position ? (t ? t->add_pos : std::nullopt) : (t ? t->add_rot : std::nullopt);
+        if (absolute)
+            value = *absolute;
+        else if (offset)
+            value += *offset;
+        else if (!t && rest_rule)
+            value = rest;
+        out.push_back(value);
+    }
+    return out;
+}
+
+std::size_t make_keys_absolute(anim::AnimationFile& file) {
+    std::size_t changed = 0;
+    for (std::size_t clip = 0; clip < file.clips.size(); ++clip)
+        for (const anim::RigNodeDef& node : file.rig) {
+            if (node.parent.empty()) continue; // the root: its offsets are its meaning
+            changed += absolute_channel(file, clip, node, false) + absolute_channel(file, clip, node, true);
+        }
+    return changed;
+}
 
 Result<void> add_node_key(anim::AnimationFile& file, std::size_t clip, std::size_t phase,
                           const std::string& node) {
@@ -37,7 +134,9 @@ Result<void> add_node_key(anim::AnimationFile& file, std::size_t clip, std::size
         return Error("node '" + node + "' already has a key here", {}, "edit or remove the existing key");
     anim::TargetDef target;
     target.node = node;
-    target.add_rot = DVec3(0.0);
+    target.rot = snap(key_values(file, clip, node, false)[phase], kValueSteps);
+    if (moves_position(file.clips[clip], node))
+        target.pos = snap(key_values(file, clip, node, true)[phase], kValueSteps);
     p.targets.push_back(std::move(target));
     return {};
 }
@@ -67,6 +166,10 @@ Result<std::size_t> duplicate_phase(anim::AnimationFile& file, std::size_t clip,
     if (!found) return found.error();
     auto& phases = file.clips[clip].phases;
     anim::PhaseDef copy = **found;
+    for (anim::TargetDef& t : copy.targets) { // a pause: relative keys hold where the phase ended
+        if (t.add_rot) t.add_rot = DVec3(0.0);
+        if (t.add_pos) t.add_pos = DVec3(0.0);
+    }
     phases.insert(phases.begin() + static_cast<std::ptrdiff_t>(phase) + 1, std::move(copy));
     return phase + 1;
 }

@@ -15,7 +15,7 @@ constexpr double kFileTolerance = 1e-9;  // a file's doubles, and sums of its du
 constexpr double kCurveTolerance = 1e-3; // sampled in float: degrees or units
 
 template <class T>
-Result<void> done(const Result<T>& r) {
+Result<void> dojo_step_done(const Result<T>& r) { // named apart from the other runners' done (unity batches)
     if (!r) return r.error();
     return ok();
 }
@@ -37,7 +37,7 @@ template <class Edit>
 Result<void> edit_clip(ScriptContext& c, const std::string& clip, const std::string& name, Edit edit) {
     auto index = clip_index(c, clip);
     if (!index) return index.error();
-    return done(c.dojo.edit(name, [&](auto& f) { return edit(f, *index); }));
+    return dojo_step_done(c.dojo.edit(name, [&](auto& f) { return edit(f, *index); }));
 }
 
 // count < 0 means "all": stop quietly when history runs out.
@@ -100,7 +100,7 @@ Result<void> ClipNew::run(ScriptContext& c) const {
         pose = std::move(values).value();
     }
     const std::string step = "new clip " + name + (from.empty() ? "" : " " + from);
-    return done(c.dojo.edit(step, [&](auto& f) { return new_clip(f, name, pose); }));
+    return dojo_step_done(c.dojo.edit(step, [&](auto& f) { return new_clip(f, name, pose); }));
 }
 Result<void> ClipDuplicate::run(ScriptContext& c) const {
     return edit_clip(c, clip, "duplicate clip " + clip,

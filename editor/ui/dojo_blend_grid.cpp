@@ -3,7 +3,7 @@
 // tinted, the rest at the default. A cell is dragged or typed (Ctrl+click or double-click) to set its pair,
 // and cleared back from its menu or the Clear button; selecting a cell plays that transition in the
 // transition tester. Each change is one undo step through model/dojo_clips.h.
-#include "ui/dojo_panel.h"
+#include "ui/dojo_blend_grid.h"
 
 #include <imgui.h>
 
@@ -39,10 +39,15 @@ void legend_chip(const ImVec4& fill, const char* label) {
 }
 } // namespace
 
-void DojoPanel::blend_grid() {
-    const BlendGrid grid = editor::blend_grid(file_);
+void DojoBlendGrid::select(const DojoContext& dojo, int from, int to) {
+    from_ = from, to_ = to;
+    dojo.playback.test_transition(from, to);
+}
+
+void DojoBlendGrid::draw(const DojoContext& dojo) {
+    const BlendGrid grid = editor::blend_grid(dojo.edits.file());
     const std::size_t n = grid.clips.size();
-    if (blend_from_ >= static_cast<int>(n) || blend_to_ >= static_cast<int>(n)) blend_from_ = blend_to_ = -1;
+    if (from_ >= static_cast<int>(n) || to_ >= static_cast<int>(n)) from_ = to_ = -1;
     double seconds = grid.default_seconds;
     ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted("Default blend");
@@ -50,11 +55,11 @@ void DojoPanel::blend_grid() {
     ImGui::SetNextItemWidth(90);
     if (ImGui::DragScalar("##default", ImGuiDataType_Double, &seconds, 0.005f, &kBlendMin, &kBlendMax,
                           "%.2f s", ImGuiSliderFlags_AlwaysClamp)) {
-        begin_edit("default blend");
-        if (auto r = set_default_blend(file_, seconds); !r)
-            refuse(r.error());
+        dojo.edits.begin_drag("default blend");
+        if (auto r = set_default_blend(dojo.edits.file_in_place(), seconds); !r)
+            dojo.edits.refuse(r.error());
         else
-            after_edit();
+            dojo.edits.changed();
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("The blend time of every pair not set below");
     ImGui::SameLine(0, 18);
@@ -80,7 +85,7 @@ void DojoPanel::blend_grid() {
     const float rows_height = (ImGui::GetFrameHeight() + 2.0f) * static_cast<float>(n + 1) + 8.0f;
     const float height =
         std::min(rows_height, ImGui::GetContentRegionAvail().y - ImGui::GetFrameHeightWithSpacing());
-    blend_centres_.assign(n * n, Vec2(0.0f));
+    centres_.assign(n * n, Vec2(0.0f));
     if (ImGui::BeginTable("blend grid", static_cast<int>(n) + 1, flags, ImVec2(0, std::max(80.0f, height)))) {
         ImGui::TableSetupScrollFreeze(1, 1);
         ImGui::TableSetupColumn("from \\ to", ImGuiTableColumnFlags_WidthFixed, name_width);
@@ -105,18 +110,20 @@ void DojoPanel::blend_grid() {
             ImGui::TextUnformatted(grid.clips[from].c_str());
             for (std::size_t to = 0; to < n; ++to) {
                 ImGui::TableNextColumn();
-                blend_cell(from, to, grid.at(from, to), cell_width);
+                cell(dojo, from, to, grid.at(from, to), cell_width);
             }
         }
         ImGui::EndTable();
     }
     ImGui::PopStyleVar(2);
-    blend_details(grid);
+    details(dojo, grid);
 }
 
-void DojoPanel::blend_cell(std::size_t from, std::size_t to, const BlendCell& cell, float width) {
-    const std::string from_name = file_.clips[from].name, to_name = file_.clips[to].name;
-    const bool selected = blend_from_ == static_cast<int>(from) && blend_to_ == static_cast<int>(to);
+void DojoBlendGrid::cell(const DojoContext& dojo, std::size_t from, std::size_t to, const BlendCell& cell,
+                         float width) {
+    const anim::AnimationFile& file = dojo.edits.file();
+    const std::string from_name = file.clips[from].name, to_name = file.clips[to].name;
+    const bool selected = from_ == static_cast<int>(from) && to_ == static_cast<int>(to);
     const ImVec4 fill = fill_of(cell.source);
     ImGui::PushID(static_cast<int>(from * 1000 + to));
     ImGui::PushStyleColor(ImGuiCol_FrameBg, fill);
@@ -132,20 +139,17 @@ void DojoPanel::blend_cell(std::size_t from, std::size_t to, const BlendCell& ce
                                            &kBlendMax, "%.2f", ImGuiSliderFlags_AlwaysClamp);
     ImGui::PopStyleColor(cell.source == BlendCell::Source::Default ? 5 : 4);
     ImGui::PopStyleVar();
-    if (const std::size_t n = file_.clips.size(); blend_centres_.size() == n * n && ImGui::IsItemVisible()) {
+    if (const std::size_t n = file.clips.size(); centres_.size() == n * n && ImGui::IsItemVisible()) {
         const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-        blend_centres_[from * n + to] = Vec2((min.x + max.x) * 0.5f, (min.y + max.y) * 0.5f);
+        centres_[from * n + to] = Vec2((min.x + max.x) * 0.5f, (min.y + max.y) * 0.5f);
     }
-    if (ImGui::IsItemActivated() && !selected) {
-        blend_from_ = static_cast<int>(from), blend_to_ = static_cast<int>(to);
-        test_transition(static_cast<int>(from), static_cast<int>(to));
-    }
+    if (ImGui::IsItemActivated() && !selected) select(dojo, static_cast<int>(from), static_cast<int>(to));
     if (changed) {
-        begin_edit("blend " + from_name + " -> " + to_name);
-        if (auto r = set_blend(file_, from_name, to_name, seconds); !r)
-            refuse(r.error());
+        dojo.edits.begin_drag("blend " + from_name + " -> " + to_name);
+        if (auto r = set_blend(dojo.edits.file_in_place(), from_name, to_name, seconds); !r)
+            dojo.edits.refuse(r.error());
         else
-            after_edit(), test_transition(static_cast<int>(from), static_cast<int>(to));
+            dojo.edits.changed(), dojo.playback.test_transition(static_cast<int>(from), static_cast<int>(to));
     }
     if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
         ImGui::SetTooltip("%s -> %s: %.3f s (%s)\ndrag, or Ctrl+click to type; right-click to clear",
@@ -157,23 +161,22 @@ void DojoPanel::blend_cell(std::size_t from, std::size_t to, const BlendCell& ce
         ImGui::TextDisabled("%s -> %s", from_name.c_str(), to_name.c_str());
         if (ImGui::MenuItem("Clear (back to the * pairs or the default)", nullptr, false,
                             cell.source == BlendCell::Source::Explicit))
-            apply("clear blend " + from_name + " -> " + to_name,
-                  [&] { return clear_blend(file_, from_name, to_name); });
+            dojo.edits.apply("clear blend " + from_name + " -> " + to_name,
+                             [&](anim::AnimationFile& f) { return clear_blend(f, from_name, to_name); });
         if (ImGui::MenuItem("Preview in the transition tester"))
-            blend_from_ = static_cast<int>(from), blend_to_ = static_cast<int>(to),
-            test_transition(static_cast<int>(from), static_cast<int>(to));
+            select(dojo, static_cast<int>(from), static_cast<int>(to));
         ImGui::EndPopup();
     }
     ImGui::PopID();
 }
 
 // The selected cell, where its time comes from, and Clear.
-void DojoPanel::blend_details(const BlendGrid& grid) {
-    if (blend_from_ < 0 || blend_to_ < 0) {
+void DojoBlendGrid::details(const DojoContext& dojo, const BlendGrid& grid) {
+    if (from_ < 0 || to_ < 0) {
         ImGui::TextDisabled("Select a cell to play that transition in the tester under the preview.");
         return;
     }
-    const auto from = static_cast<size_t>(blend_from_), to = static_cast<size_t>(blend_to_);
+    const auto from = static_cast<size_t>(from_), to = static_cast<size_t>(to_);
     if (from >= grid.clips.size() || to >= grid.clips.size()) return;
     const BlendCell& cell = grid.at(from, to);
     ImGui::AlignTextToFramePadding();
@@ -184,13 +187,14 @@ void DojoPanel::blend_details(const BlendGrid& grid) {
     ImGui::SameLine();
     ImGui::BeginDisabled(cell.source != BlendCell::Source::Explicit);
     if (ImGui::SmallButton("Clear"))
-        apply("clear blend " + grid.clips[from] + " -> " + grid.clips[to],
-              [&] { return clear_blend(file_, grid.clips[from], grid.clips[to]); });
+        dojo.edits.apply(
+            "clear blend " + grid.clips[from] + " -> " + grid.clips[to],
+            [&](anim::AnimationFile& f) { return clear_blend(f, grid.clips[from], grid.clips[to]); });
     ImGui::EndDisabled();
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip("Remove this pair: the cell falls back to the * pairs or the default");
     ImGui::SameLine();
-    if (transition_mode_) ImGui::TextDisabled("(in the tester)");
+    if (dojo.playback.transition()) ImGui::TextDisabled("(in the tester)");
 }
 
 } // namespace ks::editor::ui

@@ -1,8 +1,7 @@
-// The dojo's clip management: the clip list (name, length, loop mode, events, a lock on the clips the game
-// needs), New (empty, or from the pose shown), Duplicate, Rename, Delete and the loop mode of the shown
-// clip. Each is one undo step through model/dojo_clips.h; a refusal (a required clip, a taken name) shows
-// the model's message under the list.
-#include "ui/dojo_panel.h"
+// The dojo's clip management (dojo_clip_list.h).
+#include "ui/dojo_clip_list.h"
+
+#include "model/dojo_clips.h"
 #include "ui/panel_style.h"
 
 #include <imgui.h>
@@ -27,47 +26,49 @@ void draw_lock(float size) {
 }
 } // namespace
 
-void DojoPanel::clip_toolbar() {
+void DojoClipList::toolbar(const DojoContext& dojo) {
     ImGui::AlignTextToFramePadding();
-    ImGui::TextDisabled("Clips in %s", clip_file_.filename().string().c_str());
-    const auto clip = static_cast<std::size_t>(clip_);
-    const std::string protection = clip_protection(file_, clip);
+    ImGui::TextDisabled("Clips in %s", dojo.clip_file.filename().string().c_str());
+    const auto clip = dojo.clip_index();
+    const std::string protection = clip_protection(dojo.edits.file(), clip);
     const float buttons = ImGui::CalcTextSize("New clip...Duplicate Rename...Delete").x +
                           ImGui::GetStyle().FramePadding.x * 8 + ImGui::GetStyle().ItemSpacing.x * 3;
     ImGui::SameLine(std::max(ImGui::GetCursorPosX(), ImGui::GetContentRegionMax().x - buttons));
-    if (ImGui::Button("New clip...")) open_clip_dialog(kNewEmpty);
-    mark(DojoSpot::NewClip);
+    if (ImGui::Button("New clip...")) open_dialog(dojo, kNewEmpty);
+    dojo.mark(DojoSpot::NewClip);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Add a clip: empty, or holding the pose shown now");
     ImGui::SameLine();
     if (ImGui::Button("Duplicate"))
-        apply("duplicate clip", [&]() -> Result<void> {
-            auto copy = duplicate_clip(file_, clip);
+        dojo.edits.apply("duplicate clip", [&](anim::AnimationFile& file) -> Result<void> {
+            auto copy = duplicate_clip(file, clip);
             if (!copy) return copy.error();
-            clip_ = static_cast<int>(*copy);
+            dojo.playback.choose_clip(static_cast<int>(*copy)); // shown once the edit compiles
             return ok();
         });
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Insert a copy of this clip after it");
     ImGui::SameLine();
     ImGui::BeginDisabled(!protection.empty());
-    if (ImGui::Button("Rename...")) open_clip_dialog(kRename);
+    if (ImGui::Button("Rename...")) open_dialog(dojo, kRename);
     ImGui::EndDisabled();
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip("%s", protection.empty() ? "Rename this clip (blend pairs and 'next' follow it)"
                                                    : ("Required: " + protection).c_str());
     ImGui::SameLine();
     ImGui::BeginDisabled(!protection.empty());
-    if (ImGui::Button("Delete")) apply("delete clip", [&] { return delete_clip(file_, clip); });
+    if (ImGui::Button("Delete"))
+        dojo.edits.apply("delete clip", [&](anim::AnimationFile& file) { return delete_clip(file, clip); });
     ImGui::EndDisabled();
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip("%s", protection.empty() ? "Delete this clip and its blend pairs (Ctrl+Z undoes)"
                                                    : ("Required: " + protection).c_str());
 }
 
-void DojoPanel::clip_list() {
+void DojoClipList::list(const DojoContext& dojo) {
+    const anim::AnimationFile& file = dojo.edits.file();
     // In a short window the list gives way (it scrolls) so that the pages under it stay on screen.
     const float line = ImGui::GetTextLineHeightWithSpacing();
     const float fits = (ImGui::GetContentRegionAvail().y * 0.35f - 8.0f) / line - 1.0f;
-    const float rows = std::clamp(fits, 1.0f, std::min<float>(4.5f, static_cast<float>(file_.clips.size())));
+    const float rows = std::clamp(fits, 1.0f, std::min<float>(4.5f, static_cast<float>(file.clips.size())));
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
                                   ImGuiTableFlags_BordersOuter | ImGuiTableFlags_SizingStretchProp;
     const float height = line * (rows + 1.0f) + 8.0f;
@@ -78,17 +79,17 @@ void DojoPanel::clip_list() {
         ImGui::TableSetupColumn("loop", ImGuiTableColumnFlags_WidthStretch, 1.6f);
         ImGui::TableSetupColumn("events", ImGuiTableColumnFlags_WidthStretch, 0.9f);
         ImGui::TableHeadersRow();
-        for (int i = 0; i < static_cast<int>(file_.clips.size()); ++i) {
-            const anim::ClipDef& def = file_.clips[static_cast<size_t>(i)];
+        for (int i = 0; i < static_cast<int>(file.clips.size()); ++i) {
+            const anim::ClipDef& def = file.clips[static_cast<size_t>(i)];
             ImGui::PushID(i);
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            const bool selected = i == clip_ && !transition_mode_;
+            const bool selected = i == dojo.playback.clip() && !dojo.playback.transition();
             if (ImGui::Selectable(def.name.c_str(), selected, ImGuiSelectableFlags_SpanAllColumns) &&
-                i < static_cast<int>(clips_.clips.size()))
-                show_clip(i);
+                i < static_cast<int>(dojo.playback.clips().clips.size()))
+                dojo.show_clip(i);
             if (selected && ImGui::IsWindowAppearing()) ImGui::SetScrollHereY();
-            const std::string protection = clip_protection(file_, static_cast<std::size_t>(i));
+            const std::string protection = clip_protection(file, static_cast<std::size_t>(i));
             if (!protection.empty()) {
                 ImGui::SameLine(ImGui::GetColumnWidth() - ImGui::GetTextLineHeight() * 0.7f);
                 draw_lock(ImGui::GetTextLineHeight());
@@ -110,14 +111,16 @@ void DojoPanel::clip_list() {
         }
         ImGui::EndTable();
     }
-    if (!message_.empty()) ImGui::TextColored(kErrorColour, "%s", message_.c_str());
+    if (const std::string& message = dojo.edits.message(); !message.empty())
+        ImGui::TextColored(kErrorColour, "%s", message.c_str());
 }
 
 // once / loop / ping-pong / next (with the clip played after) for the shown clip.
-void DojoPanel::loop_row() {
-    const anim::ClipDef* def = shown_def();
+void DojoClipList::loop_row(const DojoContext& dojo) {
+    const anim::ClipDef* def = dojo.shown_def();
     if (!def) return;
-    const auto clip = static_cast<std::size_t>(clip_);
+    const anim::AnimationFile& file = dojo.edits.file();
+    const auto clip = dojo.clip_index();
     ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted("Loop");
     constexpr anim::LoopMode kModes[] = {anim::LoopMode::Once, anim::LoopMode::Loop, anim::LoopMode::PingPong,
@@ -131,13 +134,14 @@ void DojoPanel::loop_row() {
         if (ImGui::RadioButton(kLabels[m], def->loop == kModes[m]) && def->loop != kModes[m]) {
             std::string next;
             if (kModes[m] == anim::LoopMode::Next) // the first other clip until one is chosen
-                for (const auto& other : file_.clips)
+                for (const auto& other : file.clips)
                     if (other.name != def->name) {
                         next = other.name;
                         break;
                     }
-            apply(std::string("loop mode ") + kLabels[m],
-                  [&, mode = kModes[m]] { return set_loop_mode(file_, clip, mode, next); });
+            dojo.edits.apply(
+                std::string("loop mode ") + kLabels[m],
+                [&, mode = kModes[m]](anim::AnimationFile& f) { return set_loop_mode(f, clip, mode, next); });
             return; // `def` may have moved
         }
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kTips[m]);
@@ -147,59 +151,58 @@ void DojoPanel::loop_row() {
     ImGui::SetNextItemWidth(std::max(80.0f, ImGui::GetContentRegionAvail().x));
     if (!ImGui::BeginCombo("##next", def->next.c_str())) return;
     std::string chosen;
-    for (const auto& other : file_.clips)
+    for (const auto& other : file.clips)
         if (ImGui::Selectable(other.name.c_str(), other.name == def->next)) chosen = other.name;
     ImGui::EndCombo();
     if (!chosen.empty() && chosen != def->next)
-        apply("next clip " + chosen,
-              [&] { return set_loop_mode(file_, clip, anim::LoopMode::Next, chosen); });
+        dojo.edits.apply("next clip " + chosen, [&](anim::AnimationFile& f) {
+            return set_loop_mode(f, clip, anim::LoopMode::Next, chosen);
+        });
 }
 
-void DojoPanel::open_clip_dialog(int kind) {
-    clip_dialog_ = kind;
+void DojoClipList::open_dialog(const DojoContext& dojo, Dialog kind) {
+    dialog_ = kind;
     open_dialog_ = true;
-    const anim::ClipDef* def = shown_def();
-    std::snprintf(clip_name_, sizeof(clip_name_), "%s",
-                  kind == kRename && def ? def->name.c_str() : "new_clip");
+    const anim::ClipDef* def = dojo.shown_def();
+    std::snprintf(name_, sizeof(name_), "%s", kind == kRename && def ? def->name.c_str() : "new_clip");
 }
 
 // The New clip / Rename clip dialog: the name (checked as it is typed) and, for a new clip, what it starts
 // with.
-void DojoPanel::clip_dialog() {
-    const char* title = clip_dialog_ == kRename ? "Rename clip" : "New clip";
+void DojoClipList::dialog(const DojoContext& dojo) {
+    const char* title = dialog_ == kRename ? "Rename clip" : "New clip";
     if (open_dialog_) ImGui::OpenPopup(title);
     open_dialog_ = false;
     ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
     if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-    const anim::ClipDef* def = shown_def();
-    const bool rename = clip_dialog_ == kRename;
+    const anim::ClipDef* def = dojo.shown_def();
+    const bool rename = dialog_ == kRename;
     ImGui::TextUnformatted(rename && def ? ("Rename '" + def->name + "' to:").c_str() : "Name:");
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
     ImGui::SetNextItemWidth(300);
     const bool entered =
-        ImGui::InputText("##clip name", clip_name_, sizeof(clip_name_),
+        ImGui::InputText("##clip name", name_, sizeof(name_),
                          ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
-    mark(DojoSpot::ClipNameField);
-    const std::string name = clip_name_;
+    dojo.mark(DojoSpot::ClipNameField);
+    const std::string name = name_;
     const bool unchanged = rename && def && name == def->name;
-    const auto check = unchanged ? Result<void>(ok()) : check_new_clip_name(file_, name);
+    const auto check = unchanged ? Result<void>(ok()) : check_new_clip_name(dojo.edits.file(), name);
     if (check)
         ImGui::TextDisabled("letters, digits, _ and -");
     else
         ImGui::TextColored(kErrorColour, "%s", check.error().message.c_str());
     if (!rename) {
         ImGui::Spacing();
-        if (ImGui::RadioButton("Empty: the rest nodes ease home", clip_dialog_ == kNewEmpty))
-            clip_dialog_ = kNewEmpty;
+        if (ImGui::RadioButton("Empty: the rest nodes ease home", dialog_ == kNewEmpty)) dialog_ = kNewEmpty;
         char label[128];
         std::snprintf(label, sizeof(label), "Holding the pose shown: '%s' at %.2f s",
-                      def ? def->name.c_str() : "", time_);
-        if (ImGui::RadioButton(label, clip_dialog_ == kNewFromPose)) clip_dialog_ = kNewFromPose;
+                      def ? def->name.c_str() : "", dojo.playback.time());
+        if (ImGui::RadioButton(label, dialog_ == kNewFromPose)) dialog_ = kNewFromPose;
     }
     ImGui::Spacing();
     ImGui::BeginDisabled(!check);
     const bool confirmed = ImGui::Button(rename ? "Rename" : "Create", ImVec2(110, 0)) || (entered && check);
-    mark(DojoSpot::ClipDialogOk);
+    dojo.mark(DojoSpot::ClipDialogOk);
     ImGui::EndDisabled();
     ImGui::SameLine();
     if (ImGui::Button("Cancel", ImVec2(110, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape)))
@@ -207,26 +210,33 @@ void DojoPanel::clip_dialog() {
     if (confirmed && check) {
         ImGui::CloseCurrentPopup();
         if (rename && !unchanged) {
-            apply("rename clip to " + name,
-                  [&] { return rename_clip(file_, static_cast<size_t>(clip_), name); });
+            const auto clip = dojo.clip_index();
+            dojo.edits.apply("rename clip to " + name,
+                             [&](anim::AnimationFile& file) { return rename_clip(file, clip, name); });
         } else if (!rename) {
-            std::vector<NodePoseValue> pose;
-            if (clip_dialog_ == kNewFromPose && player_)
-                for (auto& value : pose_values(rig_, player_->pose()))
-                    if (std::any_of(file_.rig.begin(), file_.rig.end(),
-                                    [&](const anim::RigNodeDef& n) { return n.name == value.node; }))
-                        pose.push_back(std::move(value));
-            std::size_t made = 0;
-            if (apply("new clip " + name, [&]() -> Result<void> {
-                    auto index = new_clip(file_, name, pose);
-                    if (!index) return index.error();
-                    made = *index;
-                    return ok();
-                }))
-                show_clip(static_cast<int>(made));
+            create_clip(dojo, name);
         }
     }
     ImGui::EndPopup();
+}
+
+// A new clip, empty or holding the pose shown (the nodes the file's rig names), shown once made.
+void DojoClipList::create_clip(const DojoContext& dojo, const std::string& name) {
+    const anim::AnimationFile& file = dojo.edits.file();
+    std::vector<NodePoseValue> pose;
+    if (dialog_ == kNewFromPose && dojo.playback.player())
+        for (auto& value : pose_values(dojo.playback.rig(), dojo.playback.player()->pose()))
+            if (std::any_of(file.rig.begin(), file.rig.end(),
+                            [&](const anim::RigNodeDef& n) { return n.name == value.node; }))
+                pose.push_back(std::move(value));
+    std::size_t made = 0;
+    if (dojo.edits.apply("new clip " + name, [&](anim::AnimationFile& edited) -> Result<void> {
+            auto index = new_clip(edited, name, pose);
+            if (!index) return index.error();
+            made = *index;
+            return ok();
+        }))
+        dojo.show_clip(static_cast<int>(made));
 }
 
 } // namespace ks::editor::ui

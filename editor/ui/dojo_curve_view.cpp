@@ -1,8 +1,5 @@
-// The dojo's curve view: one node's channel (rotation x/y/z in degrees, position x/y/z as the offset from
-// rest) over the shown clip's time, each eased segment drawn in its own shade with its easing named, and the
-// keys (the phase ends) as handles. Dragging a handle moves the key in time (model: move_key_time) and in
-// value (set_key_value; a node with no key in that phase is keyed first), the whole drag one undo step.
-#include "ui/dojo_panel.h"
+// The dojo's curve view (dojo_curve_view.h).
+#include "ui/dojo_curve_view.h"
 
 #include <imgui.h>
 
@@ -29,48 +26,49 @@ double nice_step(double span, int lines) {
 } // namespace
 
 // Samples the curve again when the file, clip, node, channel or width changed; false when it cannot be drawn
-// (curve_error_ says why).
-bool DojoPanel::refresh_curve(int samples) {
-    const CurveKeyStamp stamp{revision_, clip_, curve_node_, samples, curve_channel_};
-    if (stamp == curve_stamp_) return curve_error_.empty();
-    curve_stamp_ = stamp;
-    auto curve = clip_curve(file_, static_cast<size_t>(clip_),
-                            file_.rig[static_cast<size_t>(curve_node_)].name, curve_channel_, samples);
+// (error_ says why).
+bool DojoCurveView::refresh(const DojoContext& dojo, int samples) {
+    const Stamp stamp{dojo.edits.revision(), dojo.playback.clip(), node_, samples, channel_};
+    if (stamp == stamp_) return error_.empty();
+    stamp_ = stamp;
+    const anim::AnimationFile& file = dojo.edits.file();
+    auto curve =
+        clip_curve(file, dojo.clip_index(), file.rig[static_cast<size_t>(node_)].name, channel_, samples);
     if (!curve) {
-        curve_error_ =
-            curve.error().message + (curve.error().hint.empty() ? "" : " (" + curve.error().hint + ")");
+        error_ = curve.error().message + (curve.error().hint.empty() ? "" : " (" + curve.error().hint + ")");
         return false;
     }
-    curve_error_.clear();
+    error_.clear();
     curve_ = std::move(*curve);
     return true;
 }
 
 // Node (keyed nodes bright, the others dim) and channel.
-void DojoPanel::curve_picker() {
-    const anim::ClipDef* def = shown_def();
+void DojoCurveView::picker(const DojoContext& dojo) {
+    const anim::ClipDef* def = dojo.shown_def();
+    const anim::AnimationFile& file = dojo.edits.file();
     auto keyed = [&](const std::string& node) {
         for (const auto& phase : def->phases)
             for (const auto& target : phase.targets)
                 if (target.node == node) return true;
         return false;
     };
-    if (curve_node_ < 0 || static_cast<size_t>(curve_node_) >= file_.rig.size()) { // the first keyed node
-        curve_node_ = 0;
-        for (size_t i = 0; i < file_.rig.size(); ++i)
-            if (keyed(file_.rig[i].name)) {
-                curve_node_ = static_cast<int>(i);
+    if (node_ < 0 || static_cast<size_t>(node_) >= file.rig.size()) { // the first keyed node
+        node_ = 0;
+        for (size_t i = 0; i < file.rig.size(); ++i)
+            if (keyed(file.rig[i].name)) {
+                node_ = static_cast<int>(i);
                 break;
             }
     }
     ImGui::SetNextItemWidth(150);
-    if (ImGui::BeginCombo("##node", file_.rig[static_cast<size_t>(curve_node_)].name.c_str())) {
-        for (size_t i = 0; i < file_.rig.size(); ++i) {
-            const bool bright = keyed(file_.rig[i].name);
+    if (ImGui::BeginCombo("##node", file.rig[static_cast<size_t>(node_)].name.c_str())) {
+        for (size_t i = 0; i < file.rig.size(); ++i) {
+            const bool bright = keyed(file.rig[i].name);
             if (!bright)
                 ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-            if (ImGui::Selectable(file_.rig[i].name.c_str(), static_cast<int>(i) == curve_node_))
-                curve_node_ = static_cast<int>(i);
+            if (ImGui::Selectable(file.rig[i].name.c_str(), static_cast<int>(i) == node_))
+                node_ = static_cast<int>(i);
             if (!bright) ImGui::PopStyleColor();
         }
         ImGui::EndCombo();
@@ -86,7 +84,7 @@ void DojoPanel::curve_picker() {
             ImGui::TextDisabled(c == 0 ? "rotation" : "position");
         }
         ImGui::SameLine(0, c % 3 == 0 ? 6.0f : 2.0f);
-        const bool on = static_cast<int>(curve_channel_) == c;
+        const bool on = static_cast<int>(channel_) == c;
         ImVec4 colour = ImGui::ColorConvertU32ToFloat4(kAxisColours[c % 3]);
         colour.w = on ? 0.85f : 0.18f;
         ImGui::PushStyleColor(ImGuiCol_Button, colour);
@@ -94,7 +92,7 @@ void DojoPanel::curve_picker() {
                               ImVec4(colour.x, colour.y, colour.z, on ? 0.95f : 0.4f));
         ImGui::PushID(c);
         if (ImGui::Button(kAxes[c % 3], ImVec2(ImGui::GetFrameHeight() * 1.1f, 0)))
-            curve_channel_ = static_cast<CurveChannel>(c);
+            channel_ = static_cast<CurveChannel>(c);
         ImGui::PopID();
         ImGui::PopStyleColor(2);
         if (ImGui::IsItemHovered())
@@ -181,23 +179,24 @@ void draw_handle(ImDrawList* draw, ImVec2 c, const CurveKey& key, bool selected,
 
 // The axes: the clip's time, and the values shown with a margin; kept while a key is dragged, so the plot
 // does not rescale under the mouse.
-void DojoPanel::fit_curve_axes() {
-    if (curve_drag_.active) return;
+void DojoCurveView::fit_axes() {
+    if (drag_.active) return;
     double lo = curve_.start_value, hi = curve_.start_value;
     for (const auto& point : curve_.points) lo = std::min(lo, point.value), hi = std::max(hi, point.value);
-    const double least = is_position(curve_channel_) ? 0.2 : 20.0;
+    const double least = is_position(channel_) ? 0.2 : 20.0;
     if (hi - lo < least) lo -= (least - (hi - lo)) * 0.5, hi = lo + least;
     const double pad = (hi - lo) * 0.12;
-    curve_drag_.t0 = 0.0;
-    curve_drag_.t1 = std::max(curve_.duration, 0.01);
-    curve_drag_.v0 = lo - pad;
-    curve_drag_.v1 = hi + pad;
+    drag_.t0 = 0.0;
+    drag_.t1 = std::max(curve_.duration, 0.01);
+    drag_.v0 = lo - pad;
+    drag_.v1 = hi + pad;
 }
 
-void DojoPanel::curve_view() {
-    const anim::ClipDef* def = shown_def();
-    if (!def || file_.rig.empty()) return;
-    curve_picker();
+void DojoCurveView::draw(const DojoContext& dojo) {
+    const anim::ClipDef* def = dojo.shown_def();
+    const anim::AnimationFile& file = dojo.edits.file();
+    if (!def || file.rig.empty()) return;
+    picker(dojo);
     const ImVec2 p = ImGui::GetCursorScreenPos();
     const ImVec2 size(ImGui::GetContentRegionAvail().x,
                       std::max(120.0f, ImGui::GetContentRegionAvail().y - 26.0f));
@@ -205,49 +204,49 @@ void DojoPanel::curve_view() {
     draw->AddRectFilled(p, ImVec2(p.x + size.x, p.y + size.y), IM_COL32(20, 22, 28, 255), 4.0f);
     const ImVec2 lo(p.x + kLeftMargin, p.y + kTopMargin);
     const ImVec2 hi(p.x + size.x - kRightMargin, p.y + size.y - kBottomMargin);
-    if (!refresh_curve(std::clamp(static_cast<int>((hi.x - lo.x) / 3.0f), 16, 400))) {
+    if (!refresh(dojo, std::clamp(static_cast<int>((hi.x - lo.x) / 3.0f), 16, 400))) {
         ImGui::Dummy(size);
-        draw->AddText(ImVec2(lo.x, lo.y + 10), IM_COL32(255, 110, 90, 255), curve_error_.c_str());
+        draw->AddText(ImVec2(lo.x, lo.y + 10), IM_COL32(255, 110, 90, 255), error_.c_str());
         return;
     }
-    fit_curve_axes();
-    const Plot plot{lo, hi, curve_drag_.t0, curve_drag_.t1, curve_drag_.v0, curve_drag_.v1};
-    draw_grid(draw, plot, curve_, is_position(curve_channel_));
+    fit_axes();
+    const Plot plot{lo, hi, drag_.t0, drag_.t1, drag_.v0, drag_.v1};
+    draw_grid(draw, plot, curve_, is_position(channel_));
     draw_segments(draw, plot, curve_);
-    const std::string node = file_.rig[static_cast<size_t>(curve_node_)].name;
+    const std::string node = file.rig[static_cast<size_t>(node_)].name;
     for (std::size_t k = 0; k < curve_.keys.size(); ++k) {
         const CurveKey& key = curve_.keys[k];
         const ImVec2 c(plot.x(key.time), plot.y(key.value));
         ImGui::PushID(static_cast<int>(k));
         ImGui::SetCursorScreenPos(ImVec2(c.x - kHandle - 2, c.y - kHandle - 2));
         ImGui::InvisibleButton("key", ImVec2(2 * kHandle + 4, 2 * kHandle + 4));
-        curve_handles_.push_back(Vec2(c.x, c.y));
+        handles_.push_back(Vec2(c.x, c.y));
         const bool hovered = ImGui::IsItemHovered(), active = ImGui::IsItemActive();
         if (ImGui::IsItemActivated()) {
-            curve_drag_.active = true;
-            curve_drag_.key = k;
-            curve_drag_.time = key.time;
-            curve_drag_.value = key.value;
-            curve_drag_.target = key.keyed ? key.target_value : 0.0;
-            curve_drag_.keyed = key.keyed;
-            curve_drag_.origin = file_;
-            selected_phase_ = static_cast<int>(key.phase);
+            drag_.active = true;
+            drag_.key = k;
+            drag_.time = key.time;
+            drag_.value = key.value;
+            drag_.target = key.keyed ? key.target_value : 0.0;
+            drag_.keyed = key.keyed;
+            drag_.origin = file;
+            dojo.selection.phase = static_cast<int>(key.phase);
         }
-        if (active && curve_drag_.active && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 1.0f)) {
+        if (active && drag_.active && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 1.0f)) {
             const ImVec2 mouse = ImGui::GetIO().MousePos;
-            curve_drag(k, plot.time_at(mouse.x), plot.value_at(mouse.y), ImGui::GetIO().KeyShift);
+            drag(dojo, k, plot.time_at(mouse.x), plot.value_at(mouse.y), ImGui::GetIO().KeyShift);
         }
-        if (ImGui::IsItemDeactivated()) curve_drag_.active = false, curve_drag_.origin = {};
-        draw_handle(draw, c, key, static_cast<int>(key.phase) == selected_phase_, hovered || active);
+        if (ImGui::IsItemDeactivated()) drag_.active = false, drag_.origin = {};
+        draw_handle(draw, c, key, static_cast<int>(key.phase) == dojo.selection.phase, hovered || active);
         if (hovered && !active)
             ImGui::SetTooltip(
                 "key %zu of %s at %.3f s: %.2f%s\n%s", key.phase + 1, node.c_str(), key.time, key.value,
-                is_position(curve_channel_) ? "" : "\xc2\xb0",
+                is_position(channel_) ? "" : "\xc2\xb0",
                 key.keyed ? (key.relative ? "relative key: drag to move" : "absolute key: drag to move")
                           : "not keyed here: drag up or down to key it");
         ImGui::PopID();
     }
-    const float playhead = plot.x(clip_time());
+    const float playhead = plot.x(dojo.clip_time());
     draw->AddLine(ImVec2(playhead, lo.y), ImVec2(playhead, hi.y), IM_COL32(255, 80, 80, 200), 1.5f);
     ImGui::SetCursorScreenPos(p);
     ImGui::Dummy(size);
@@ -257,41 +256,38 @@ void DojoPanel::curve_view() {
 
 // One frame of a key drag: the file as it was when the drag began, with the key moved to (seconds, value).
 // The first change records the drag's one undo step; a refused position keeps the last good one.
-void DojoPanel::curve_drag(std::size_t key, double seconds, double value, bool shift) {
+void DojoCurveView::drag(const DojoContext& dojo, std::size_t key, double seconds, double value, bool shift) {
     if (shift) { // one direction: the larger of the two moves on screen
-        const double dt = std::abs(seconds - curve_drag_.time) / (curve_drag_.t1 - curve_drag_.t0);
-        const double dv = std::abs(value - curve_drag_.value) / (curve_drag_.v1 - curve_drag_.v0);
+        const double dt = std::abs(seconds - drag_.time) / (drag_.t1 - drag_.t0);
+        const double dv = std::abs(value - drag_.value) / (drag_.v1 - drag_.v0);
         if (dt > dv)
-            value = curve_drag_.value;
+            value = drag_.value;
         else
-            seconds = curve_drag_.time;
+            seconds = drag_.time;
     }
     // Whole milliseconds and tenths of a degree (thousandths of a unit) read well in the file.
     seconds = std::round(seconds * 1000.0) / 1000.0;
-    const double resolution = is_position(curve_channel_) ? 1000.0 : 10.0;
-    const double target =
-        std::round((curve_drag_.target + value - curve_drag_.value) * resolution) / resolution;
-    const auto clip = static_cast<std::size_t>(clip_);
+    const double resolution = is_position(channel_) ? 1000.0 : 10.0;
+    const double target = std::round((drag_.target + value - drag_.value) * resolution) / resolution;
+    const auto clip = dojo.clip_index();
     const std::size_t phase = curve_.keys[key].phase;
-    const std::string& node = file_.rig[static_cast<size_t>(curve_node_)].name;
-    anim::AnimationFile edited = curve_drag_.origin;
+    const std::string node = dojo.edits.file().rig[static_cast<size_t>(node_)].name;
+    anim::AnimationFile edited = drag_.origin;
     Result<void> result = ok();
-    if (std::abs(seconds - curve_drag_.time) > 1e-4)
+    if (std::abs(seconds - drag_.time) > 1e-4)
         result = move_key_time(edited, clip, phase, std::max(0.0, seconds));
-    if (result && std::abs(value - curve_drag_.value) > 1e-6) {
-        if (!curve_drag_.keyed) result = add_node_key(edited, clip, phase, node);
-        if (result) result = set_key_value(edited, clip, phase, node, curve_channel_, target);
+    if (result && std::abs(value - drag_.value) > 1e-6) {
+        if (!drag_.keyed) result = add_node_key(edited, clip, phase, node);
+        if (result) result = set_key_value(edited, clip, phase, node, channel_, target);
     }
     if (!result) {
-        message_ = result.error().message; // shown while the drag stays refused, not logged every frame
+        dojo.edits.show_message(
+            result.error().message); // while the drag stays refused, not logged each frame
         return;
     }
-    message_.clear();
-    if (!edit_open_)
-        history_.record(curve_drag_.origin, "drag key " + std::to_string(phase + 1) + " of " + node);
-    edit_open_ = true;
-    file_ = std::move(edited);
-    after_edit();
+    dojo.edits.show_message({});
+    dojo.edits.record_drag(drag_.origin, "drag key " + std::to_string(phase + 1) + " of " + node);
+    dojo.edits.replace(std::move(edited));
 }
 
 } // namespace ks::editor::ui

@@ -1,7 +1,5 @@
-// The selected key's (phase's) editor: the key list, Duplicate / Remove / Earlier / Later, its duration and
-// easing (with the easing's curve), one row per keyed node (rotation, position offset, mode, remove) and
-// Add key. Every change is one step of the dojo's history (a dragged field is one step).
-#include "ui/dojo_panel.h"
+// The selected key's (phase's) editor (dojo_key_table.h).
+#include "ui/dojo_key_table.h"
 
 #include <imgui.h>
 
@@ -11,6 +9,23 @@
 namespace ks::editor::ui {
 
 namespace {
+// A dragged vector field: the components the drag changed, snapped to the field's grid (no float noise in
+// the file); the others keep their exact values.
+DVec3 dragged(const DVec3& before, const float (&v)[3], double steps) {
+    DVec3 out = before;
+    for (int i = 0; i < 3; ++i)
+        if (v[i] != static_cast<float>(before[i])) out[i] = snap(static_cast<double>(v[i]), steps);
+    return out;
+}
+
+// Where `node` is at the shown key now (rotation or position offset): a channel added to a key starts
+// there, so nothing moves until it is edited.
+DVec3 where(const DojoContext& dojo, const std::string& node, bool position) {
+    const auto values = key_values(dojo.edits.file(), dojo.clip_index(), node, position);
+    const auto key = static_cast<std::size_t>(dojo.selection.phase);
+    return key < values.size() ? snap(values[key], kValueSteps) : DVec3(0.0);
+}
+
 // The easing's shape, 0..1 over 0..1, in a small box.
 void ease_thumbnail(const anim::Ease& ease, float size) {
     ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -30,18 +45,19 @@ void ease_thumbnail(const anim::Ease& ease, float size) {
 }
 } // namespace
 
-bool DojoPanel::phase_buttons() {
-    const auto c = static_cast<std::size_t>(clip_), p = static_cast<std::size_t>(selected_phase_);
-    const std::size_t count = file_.clips[c].phases.size();
+bool DojoKeyTable::phase_buttons(const DojoContext& dojo) {
+    int& selected = dojo.selection.phase;
+    const auto c = dojo.clip_index(), p = static_cast<std::size_t>(selected);
+    const std::size_t count = dojo.edits.file().clips[c].phases.size();
     const std::string key = "key " + std::to_string(p + 1);
     bool changed = false;
     const bool duplicate_clicked = ImGui::SmallButton("Duplicate key");
-    mark(DojoSpot::DuplicateKey);
+    dojo.mark(DojoSpot::DuplicateKey);
     if (duplicate_clicked)
-        changed = apply("duplicate " + key, [&]() -> Result<void> {
-            auto copy = duplicate_phase(file_, c, p);
+        changed = dojo.edits.apply("duplicate " + key, [&](anim::AnimationFile& file) -> Result<void> {
+            auto copy = duplicate_phase(file, c, p);
             if (!copy) return copy.error();
-            selected_phase_ = static_cast<int>(*copy);
+            selected = static_cast<int>(*copy);
             return {};
         });
     if (ImGui::IsItemHovered())
@@ -50,9 +66,9 @@ bool DojoPanel::phase_buttons() {
     ImGui::SameLine();
     ImGui::BeginDisabled(count <= 1);
     if (ImGui::SmallButton("Remove key"))
-        changed = apply("remove " + key, [&]() -> Result<void> {
-            auto r = remove_phase(file_, c, p);
-            if (r) selected_phase_ = std::max(0, selected_phase_ - 1);
+        changed = dojo.edits.apply("remove " + key, [&](anim::AnimationFile& file) -> Result<void> {
+            auto r = remove_phase(file, c, p);
+            if (r) selected = std::max(0, selected - 1);
             return r;
         });
     ImGui::EndDisabled();
@@ -60,52 +76,57 @@ bool DojoPanel::phase_buttons() {
         ImGui::SameLine();
         ImGui::BeginDisabled(offset < 0 ? p == 0 : p + 1 >= count);
         if (ImGui::SmallButton(offset < 0 ? "Earlier" : "Later"))
-            changed = apply("move " + key + (offset < 0 ? " earlier" : " later"), [&]() -> Result<void> {
-                auto moved = move_phase(file_, c, p, offset);
-                if (!moved) return moved.error();
-                selected_phase_ = static_cast<int>(*moved);
-                return {};
-            });
+            changed = dojo.edits.apply("move " + key + (offset < 0 ? " earlier" : " later"),
+                                       [&](anim::AnimationFile& file) -> Result<void> {
+                                           auto moved = move_phase(file, c, p, offset);
+                                           if (!moved) return moved.error();
+                                           selected = static_cast<int>(*moved);
+                                           return {};
+                                       });
         ImGui::EndDisabled();
     }
     return changed;
 }
 
-void DojoPanel::key_table() {
-    if (static_cast<size_t>(clip_) >= file_.clips.size()) return;
-    anim::ClipDef& def = file_.clips[static_cast<size_t>(clip_)];
+void DojoKeyTable::draw(const DojoContext& dojo) {
+    int& selected = dojo.selection.phase;
+    const auto clip_index = dojo.clip_index();
+    // The fields below change the key in place (begin_drag records the drag's one undo step first).
+    anim::AnimationFile& file = dojo.edits.file_in_place();
+    if (clip_index >= file.clips.size()) return;
+    anim::ClipDef& def = file.clips[clip_index];
     if (def.phases.empty()) return;
-    selected_phase_ = std::clamp(selected_phase_, 0, static_cast<int>(def.phases.size()) - 1);
+    selected = std::clamp(selected, 0, static_cast<int>(def.phases.size()) - 1);
     for (int i = 0; i < static_cast<int>(def.phases.size()); ++i) {
         char label[32];
         std::snprintf(label, sizeof(label), "key %d", i + 1);
         if (i) ImGui::SameLine();
-        if (ImGui::RadioButton(label, selected_phase_ == i)) selected_phase_ = i;
+        if (ImGui::RadioButton(label, selected == i)) selected = i;
     }
-    if (phase_buttons()) return; // the phases changed under this frame's references: draw them next frame
-    anim::PhaseDef& phase = def.phases[static_cast<size_t>(selected_phase_)];
-    bool edited = phase_timing(phase);
+    if (phase_buttons(dojo)) return; // the phases changed under this frame's references: draw them next frame
+    anim::PhaseDef& phase = def.phases[static_cast<size_t>(selected)];
+    bool edited = phase_timing(dojo, phase);
     std::string remove_node; // a key to remove, applied after the table (the rows reference the targets)
-    edited |= target_rows(phase, remove_node);
-    const auto clip_index = static_cast<std::size_t>(clip_),
-               phase_index = static_cast<std::size_t>(selected_phase_);
-    if (edited) after_edit();
+    edited |= target_rows(dojo, phase, remove_node);
+    const auto phase_index = static_cast<std::size_t>(selected);
+    if (edited) dojo.edits.changed();
     if (!remove_node.empty()) {
-        apply("remove key " + remove_node,
-              [&] { return remove_node_key(file_, clip_index, phase_index, remove_node); });
+        dojo.edits.apply("remove key " + remove_node, [&](anim::AnimationFile& f) {
+            return remove_node_key(f, clip_index, phase_index, remove_node);
+        });
         return;
     }
-    add_key_row();
+    add_key_row(dojo);
 }
 
 // The selected key's duration and easing (with its curve); true when either changed.
-bool DojoPanel::phase_timing(anim::PhaseDef& phase) {
+bool DojoKeyTable::phase_timing(const DojoContext& dojo, anim::PhaseDef& phase) {
     bool edited = false;
     ImGui::BeginGroup();
     float duration = static_cast<float>(phase.duration);
     ImGui::SetNextItemWidth(120);
     if (ImGui::DragFloat("duration", &duration, 0.005f, 0.0f, 30.0f, "%.3f s", ImGuiSliderFlags_AlwaysClamp))
-        begin_edit("key duration"), phase.duration = duration, edited = true;
+        dojo.edits.begin_drag("key duration"), phase.duration = snap(duration, kTimeSteps), edited = true;
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Seconds to reach this key's targets; a key with no targets is a delay.");
     ImGui::SetNextItemWidth(170);
@@ -114,7 +135,7 @@ bool DojoPanel::phase_timing(anim::PhaseDef& phase) {
         for (const auto& name : anim::known_ease_names())
             if (ImGui::Selectable(name.c_str(), name == current))
                 if (auto e = anim::parse_ease_name(name))
-                    begin_edit("key easing"), phase.ease = *e, edited = true;
+                    dojo.edits.begin_drag("key easing"), phase.ease = *e, edited = true;
         ImGui::EndCombo();
     }
     ImGui::EndGroup();
@@ -125,7 +146,7 @@ bool DojoPanel::phase_timing(anim::PhaseDef& phase) {
 }
 
 // One row per keyed node: rotation, position offset, mode and a remove button (`remove_node` names it).
-bool DojoPanel::target_rows(anim::PhaseDef& phase, std::string& remove_node) {
+bool DojoKeyTable::target_rows(const DojoContext& dojo, anim::PhaseDef& phase, std::string& remove_node) {
     bool edited = false;
     if (ImGui::BeginTable("targets", 5,
                           ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
@@ -150,9 +171,11 @@ bool DojoPanel::target_rows(anim::PhaseDef& phase, std::string& remove_node) {
                               static_cast<float>(rot->z)};
                 ImGui::SetNextItemWidth(-1);
                 if (ImGui::DragFloat3("##rot", v, 0.5f, -3600.0f, 3600.0f, "%.1f"))
-                    begin_edit("rotate " + target.node), *rot = DVec3(v[0], v[1], v[2]), edited = true;
+                    dojo.edits.begin_drag("rotate " + target.node),
+                        *rot = dragged(*rot, v, kDegreeFieldSteps), edited = true;
             } else if (ImGui::SmallButton("+ rot")) {
-                begin_edit("rotate " + target.node), target.rot = DVec3(0.0), edited = true;
+                const DVec3 here = where(dojo, target.node, false);
+                dojo.edits.begin_drag("rotate " + target.node), target.rot = here, edited = true;
             }
             ImGui::TableNextColumn();
             auto& pos = target.pos ? target.pos : target.add_pos;
@@ -161,12 +184,18 @@ bool DojoPanel::target_rows(anim::PhaseDef& phase, std::string& remove_node) {
                               static_cast<float>(pos->z)};
                 ImGui::SetNextItemWidth(-1);
                 if (ImGui::DragFloat3("##pos", v, 0.01f, -100.0f, 100.0f, "%.2f"))
-                    begin_edit("move " + target.node), *pos = DVec3(v[0], v[1], v[2]), edited = true;
+                    dojo.edits.begin_drag("move " + target.node), *pos = dragged(*pos, v, kUnitFieldSteps),
+                                                                  edited = true;
             } else if (ImGui::SmallButton("+ pos")) {
-                begin_edit("move " + target.node), target.pos = DVec3(0.0), edited = true;
+                const DVec3 here = where(dojo, target.node, true);
+                dojo.edits.begin_drag("move " + target.node), target.pos = here, edited = true;
             }
             ImGui::TableNextColumn();
             ImGui::TextDisabled("%s", target.add_rot || target.add_pos ? "relative" : "absolute");
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip(
+                    "absolute: the key holds these values; relative (the root's offsets, a looping "
+                    "motion): added to where the node is when the key starts");
             ImGui::TableNextColumn();
             if (ImGui::SmallButton("x")) remove_node = target.node;
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("Remove this node's key from this phase");
@@ -178,11 +207,10 @@ bool DojoPanel::target_rows(anim::PhaseDef& phase, std::string& remove_node) {
 }
 
 // The node combo and "Add key" button; true when a key was added.
-bool DojoPanel::add_key_row() {
+bool DojoKeyTable::add_key_row(const DojoContext& dojo) {
     bool edited = false;
-    const auto clip_index = static_cast<std::size_t>(clip_),
-               phase_index = static_cast<std::size_t>(selected_phase_);
-    const auto free_nodes = unkeyed_nodes(file_, clip_index, phase_index);
+    const auto clip_index = dojo.clip_index(), phase_index = static_cast<std::size_t>(dojo.selection.phase);
+    const auto free_nodes = unkeyed_nodes(dojo.edits.file(), clip_index, phase_index);
     add_node_ = std::clamp(add_node_, 0, std::max(0, static_cast<int>(free_nodes.size()) - 1));
     ImGui::BeginDisabled(free_nodes.empty());
     ImGui::SetNextItemWidth(140);
@@ -195,10 +223,12 @@ bool DojoPanel::add_key_row() {
     }
     ImGui::SameLine();
     const bool add_clicked = ImGui::Button("Add key");
-    mark(DojoSpot::AddKey);
+    dojo.mark(DojoSpot::AddKey);
     if (add_clicked && !free_nodes.empty()) {
         const std::string node = free_nodes[static_cast<size_t>(add_node_)];
-        edited = apply("add key " + node, [&] { return add_node_key(file_, clip_index, phase_index, node); });
+        edited = dojo.edits.apply("add key " + node, [&](anim::AnimationFile& file) {
+            return add_node_key(file, clip_index, phase_index, node);
+        });
     }
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(

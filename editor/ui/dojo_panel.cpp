@@ -1,10 +1,10 @@
-// The dojo panel's core: loading the clip file and the robot's rig, recompiling after edits, playback and
-// the history, and the tab's layout. The parts live beside it (see dojo_panel.h).
+// The dojo panel: the start view (--dojo-view), the context its parts share, loading the clip file and the
+// robot's rig, playback with the events' sounds, the status, and the tab's layout. The parts live beside it
+// (see dojo_panel.h).
 #include "ui/dojo_panel.h"
 
 #include "anim/gltf_rig.h"
 #include "core/paths.h"
-#include "render/mesh_data.h"
 
 #include <imgui.h>
 
@@ -17,7 +17,6 @@
 namespace ks::editor::ui {
 
 namespace {
-constexpr float kDojoBar = 212.0f; // transport, timeline (with its event lane) and transition tester
 constexpr const char* kPageNames[] = {"keys", "curves", "blends", "events"};
 constexpr const char* kSpotNames[] = {"add_key",     "duplicate_key", "new_clip",    "clip_name",
                                       "clip_ok",     "page_keys",     "page_curves", "page_blends",
@@ -92,53 +91,71 @@ const char* dojo_spot_name(DojoSpot spot) {
     return kSpotNames[static_cast<size_t>(spot)];
 }
 
-void dojo_preview_size(float tab_width, float tab_height, float& w, float& h) {
-    w = std::max(64.0f, std::floor(tab_width * 0.5f));
-    h = std::max(64.0f, std::floor(tab_height - kDojoBar));
+const char* dojo_page_name(DojoPage page) {
+    return kPageNames[static_cast<size_t>(page)];
+}
+
+const anim::ClipDef* DojoContext::shown_def() const {
+    const auto& clips = edits.file().clips;
+    return clip_index() < clips.size() ? &clips[clip_index()] : nullptr;
+}
+
+double DojoContext::clip_time() const {
+    const anim::ClipDef* def = shown_def();
+    if (!def || playback.transition()) return 0.0;
+    return dojo_pass_time(def->loop, def->duration(), playback.time());
+}
+
+void DojoContext::show_clip(int index) const {
+    if (!playback.show_clip(index)) return;
+    selection.phase = 0;
+    selection.event = -1;
+}
+
+void DojoContext::mark(DojoSpot spot) const {
+    if (ImGui::IsWindowAppearing()) return;
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    spots[static_cast<size_t>(spot)] = Vec2((a.x + b.x) * 0.5f, (a.y + b.y) * 0.5f);
 }
 
 DojoPanel::DojoPanel(render::AssetLibrary& assets, render::SceneRenderer& renderer, DojoSetup setup)
-    : assets_(assets), renderer_(renderer),
-      clip_file_(setup.clip_file.empty() ? paths::asset("animations/robot.json")
-                                         : std::move(setup.clip_file)),
-      audition_(std::move(setup.audition)), log_(std::move(setup.log)) {
+    : audition_(std::move(setup.audition)), log_(std::move(setup.log)), edits_(playback_, log_),
+      preview_(assets, renderer),
+      file_(setup.clip_file.empty() ? paths::asset("animations/robot.json") : std::move(setup.clip_file),
+            [this] { load(); }) {
     if (!log_) log_ = [](const std::string&, bool) {};
-    render::MeshData floor;
-    render::append_box(floor, Vec3(0, -0.05f, 0), Vec3(14, 0.1f, 14), Mat4(1.0f), 2.0f);
-    floor_ = std::make_unique<render::GpuMesh>(floor);
-    floor_material_ = &assets_.surface("tiles");
-    lights_.push_back({render::Light::Type::Point, Vec3(3.0f, 5.0f, 4.0f), Vec3(0, -1, 0),
-                       Vec3(1.0f, 0.85f, 0.7f), 1.2f, 20.0f, 0.8f, 0.9f});
-    lights_.push_back({render::Light::Type::Point, Vec3(-4.0f, 3.0f, -2.0f), Vec3(0, -1, 0),
-                       Vec3(0.5f, 0.7f, 1.0f), 0.8f, 20.0f, 0.8f, 0.9f});
+}
+
+DojoContext DojoPanel::context() {
+    return {edits_, playback_, selection_, spots_, log_, audition_, file_.path()};
 }
 
 void DojoPanel::load() {
     loaded_ = true;
-    model_ = &assets_.model("robot");
-    remember_disk();
-    auto file = anim::load_animation_file(clip_file_);
+    const render::Model& model = preview_.model();
+    file_.remember_disk();
+    auto file = anim::load_animation_file(file_.path());
     if (!file) {
-        compile_error_ = file.error().str();
-        log_(compile_error_, true);
+        edits_.set_load_error(file.error().str());
+        log_(file.error().str(), true);
         return;
     }
-    file_ = std::move(*file);
-    auto rig = anim::load_gltf_rig(model_->path);
+    auto rig = anim::load_gltf_rig(model.path);
     if (!rig) {
-        compile_error_ = "robot model: " + rig.error().str();
+        edits_.set_load_error("robot model: " + rig.error().str());
         return;
     }
-    rig_ = std::move(*rig);
-    binding_ = anim::RigBinding(rig_, model_->node_names());
-    model_pose_ = model_->rest_pose();
-    dirty_ = false;
-    history_.clear();
-    edit_open_ = false;
-    message_.clear();
-    selected_event_ = -1;
-    recompile();
-    if (clips_.clips.size() > 1 && to_clip_ == 0) to_clip_ = 1;
+    if (const std::size_t made = make_keys_absolute(*file))
+        log_("dojo: " + std::to_string(made) + " relative keys of " + file_.path().filename().string() +
+                 " made absolute (the same poses; Save writes them)",
+             false);
+    playback_.set_rig(std::move(*rig));
+    preview_.bind(playback_.rig());
+    selection_.event = -1;
+    edits_.reset(std::move(*file));
+    const DojoPlayPlan& plan = playback_.plan();
+    if (playback_.clips().clips.size() > 1 && plan.to == 0)
+        playback_.set_transition(plan.transition, plan.from, 1, plan.switch_at, plan.blend);
 }
 
 void DojoPanel::ensure_loaded() {
@@ -147,221 +164,139 @@ void DojoPanel::ensure_loaded() {
 
 void DojoPanel::apply_view(const DojoView& view) {
     ensure_loaded();
+    const DojoContext dojo = context();
     if (!view.clip.empty()) {
-        const int index = clips_.find(view.clip);
+        const int index = playback_.clips().find(view.clip);
         if (index < 0)
-            log_("--dojo-view: no clip '" + view.clip + "' in " + clip_file_.string(), true);
+            log_("--dojo-view: no clip '" + view.clip + "' in " + file_.path().string(), true);
         else
-            show_clip(index);
+            dojo.show_clip(index);
     }
-    page_ = view.page;
-    page_requested_ = true;
-    curve_channel_ = view.channel;
+    selection_.request_page(view.page);
+    curve_view_.show_channel(view.channel);
     if (!view.node.empty()) {
-        const auto found = std::find_if(file_.rig.begin(), file_.rig.end(),
+        const auto& rig = edits_.file().rig;
+        const auto found = std::find_if(rig.begin(), rig.end(),
                                         [&](const anim::RigNodeDef& n) { return n.name == view.node; });
-        if (found == file_.rig.end())
+        if (found == rig.end())
             log_("--dojo-view: no node '" + view.node + "' in the rig", true);
         else
-            curve_node_ = static_cast<int>(found - file_.rig.begin());
+            curve_view_.show(static_cast<int>(found - rig.begin()), view.channel);
     }
-    onion_ = view.onion;
+    preview_.set_onion(view.onion);
     if (!view.blend_from.empty()) {
-        const int from = clips_.find(view.blend_from), to = clips_.find(view.blend_to);
+        const int from = playback_.clips().find(view.blend_from), to = playback_.clips().find(view.blend_to);
         if (from < 0 || to < 0)
             log_("--dojo-view: blend=" + view.blend_from + ">" + view.blend_to +
                      " names a clip the file lacks",
                  true);
         else
-            blend_from_ = from, blend_to_ = to, test_transition(from, to);
+            blend_grid_.select(dojo, from, to);
     }
     if (view.time >= 0.0) {
-        playing_ = false;
-        restart_at(view.time);
+        playback_.set_playing(false);
+        playback_.restart_at(view.time);
     }
-}
-
-void DojoPanel::recompile() {
-    ++revision_; // the file changed: cached ghosts and curves are stale, compiled or not
-    issues_ = dojo_file_issues(file_);
-    compile_error_.clear();
-    if (!issues_.empty()) return; // keep the last good clips playing until the file is valid again
-    auto compiled = anim::compile(file_, rig_);
-    if (!compiled) {
-        compile_error_ = compiled.error().str();
-        return;
-    }
-    clips_ = std::move(*compiled);
-    const int last = std::max(0, static_cast<int>(clips_.clips.size()) - 1);
-    clip_ = std::clamp(clip_, 0, last);
-    from_clip_ = std::clamp(from_clip_, 0, last);
-    to_clip_ = std::clamp(to_clip_, 0, last);
-    player_ = std::make_unique<anim::Player>(clips_, rig_);
-    restart_at(time_);
 }
 
 void DojoPanel::show_clip(int index) {
-    if (index < 0 || index >= static_cast<int>(clips_.clips.size())) return;
-    clip_ = index;
-    transition_mode_ = false;
-    selected_phase_ = 0;
-    selected_event_ = -1;
-    playing_ = true;
-    restart_at(0.0);
+    context().show_clip(index);
 }
 
-DojoPlayPlan DojoPanel::play_plan() const {
-    DojoPlayPlan plan;
-    plan.transition = transition_mode_;
-    plan.clip = clip_;
-    plan.from = from_clip_;
-    plan.to = to_clip_;
-    plan.switch_at = switch_time_;
-    plan.blend = blend_time_;
-    return plan;
-}
-
-void DojoPanel::restart_at(double seconds) {
-    if (!player_ || clips_.clips.empty()) return;
-    player_ = std::make_unique<anim::Player>(clips_, rig_);
-    dojo_restart_at(*player_, play_plan(), seconds);
-    time_ = seconds;
-}
-
-// Playback by dt: a Once clip (or the transition test) starts over when Loop is on; the transition test
-// hands over to its `to` clip at the switch time; events the playhead passes are auditioned when they name
-// a sound.
+// Playback by dt; events the playhead passes are auditioned when they name a sound.
 void DojoPanel::advance(double dt) {
-    if (!player_ || !playing_ || !(dt > 0) || clips_.clips.empty()) return;
-    const double step = dt * speed_;
-    const double length = timeline_length();
-    if (loop_ && length > 0 && time_ + step > length &&
-        (transition_mode_ || clips_.clips[static_cast<size_t>(clip_)].loop == anim::LoopMode::Once)) {
-        restart_at(0.0);
-        return;
-    }
-    dojo_advance(*player_, play_plan(), time_, step, [this](const anim::Player& player) {
-        if (!audition_ || !event_sounds_) return;
+    playback_.advance(dt, [this](const anim::Player& player) {
+        if (!audition_ || !timeline_.event_sounds()) return;
         for (const anim::FiredEvent& fired : player.fired_events())
             if (fired.event && !fired.event->sound.empty())
                 audition_(fired.event->sound, 1.0f), ++auditioned_;
     });
-    time_ += step;
-}
-
-void DojoPanel::evaluate_pose() {
-    if (player_) binding_.write_locals(player_->pose(), model_pose_.local);
 }
 
 void DojoPanel::tick(double dt) {
     advance(dt);
-    evaluate_pose();
+    if (playback_.player()) preview_.pose_from(*playback_.player());
 }
 
-void DojoPanel::begin_edit(const std::string& name) {
-    if (!edit_open_) history_.record(file_, name);
-    edit_open_ = true;
-}
-
-void DojoPanel::after_edit() {
-    dirty_ = true;
-    recompile();
-}
-
-void DojoPanel::refuse(const Error& error) {
-    message_ = error.message + (error.hint.empty() ? "" : " (" + error.hint + ")");
-    log_("dojo: " + error.str(), true);
+void DojoPanel::render(float width, float height, double dt) {
+    ensure_loaded();
+    tick(dt);
+    preview_.render(context(), width, height);
 }
 
 void DojoPanel::begin_frame() {
     spots_ = {};
-    curve_handles_.clear();
-    event_flags_.clear();
+    curve_view_.begin_frame();
+    events_.begin_frame();
 }
 
-void DojoPanel::mark(DojoSpot spot) {
-    // Not while its window appears: a popup is only measured in its first frame, and a click that follows
-    // the spot reported then comes too early for it (the quit question's Cancel was missed).
-    if (ImGui::IsWindowAppearing()) return;
-    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-    spots_[static_cast<size_t>(spot)] = Vec2((a.x + b.x) * 0.5f, (a.y + b.y) * 0.5f);
+void DojoPanel::save() {
+    file_.save(context());
 }
 
-const anim::ClipDef* DojoPanel::shown_def() const {
-    return static_cast<size_t>(clip_) < file_.clips.size() ? &file_.clips[static_cast<size_t>(clip_)]
-                                                           : nullptr;
+void DojoPanel::reload() {
+    file_.reload(context());
 }
 
-// The playhead within the shown clip: a looping clip's time within its pass, a ping-pong's folded back.
-double DojoPanel::clip_time() const {
-    const anim::ClipDef* def = shown_def();
-    if (!def || transition_mode_) return 0.0;
-    const double d = def->duration();
-    if (d <= 0) return 0.0;
-    switch (def->loop) {
-    case anim::LoopMode::Loop:
-        return std::fmod(time_, d);
-    case anim::LoopMode::PingPong: {
-        const double u = std::fmod(time_, 2.0 * d);
-        return u <= d ? u : 2.0 * d - u;
-    }
-    default:
-        return std::min(time_, d);
-    }
+void DojoPanel::prompts() {
+    file_.prompts(context());
+}
+
+bool DojoPanel::delete_selected() {
+    return events_.delete_selected(context());
 }
 
 DojoPanel::Status DojoPanel::status() const {
     Status st;
-    st.undo = history_.undo_count();
-    st.redo = history_.redo_count();
-    const auto c = static_cast<std::size_t>(clip_), p = static_cast<std::size_t>(selected_phase_);
-    if (c < file_.clips.size() && p < file_.clips[c].phases.size()) {
-        st.keys = file_.clips[c].phases[p].targets.size();
-        st.phases = file_.clips[c].phases.size();
+    const anim::AnimationFile& file = edits_.file();
+    st.undo = edits_.history().undo_count();
+    st.redo = edits_.history().redo_count();
+    const auto c = static_cast<std::size_t>(playback_.clip()), p = static_cast<std::size_t>(selection_.phase);
+    if (c < file.clips.size() && p < file.clips[c].phases.size()) {
+        st.keys = file.clips[c].phases[p].targets.size();
+        st.phases = file.clips[c].phases.size();
         st.phase = p;
     }
-    if (c < file_.clips.size()) {
-        st.clip = file_.clips[c].name;
-        st.events = file_.clips[c].events.size();
+    if (c < file.clips.size()) {
+        st.clip = file.clips[c].name;
+        st.events = file.clips[c].events.size();
     }
-    st.clips = file_.clips.size();
-    st.page = kPageNames[static_cast<size_t>(page_)];
-    st.undo_name = history_.undo_name();
-    st.message = message_;
+    st.clips = file.clips.size();
+    st.page = dojo_page_name(selection_.page);
+    st.undo_name = edits_.history().undo_name();
+    st.message = edits_.message();
     st.spots = spots_;
-    st.transition = transition_mode_;
-    st.blend_from = blend_from_;
-    st.blend_to = blend_to_;
-    if (page_ == DojoPage::Blends && blend_centres_.size() == file_.clips.size() * file_.clips.size()) {
-        for (const auto& clip : file_.clips) st.blend_clips.push_back(clip.name);
-        st.blend_centres = blend_centres_;
+    st.transition = playback_.transition();
+    st.blend_from = blend_grid_.from();
+    st.blend_to = blend_grid_.to();
+    if (selection_.page == DojoPage::Blends &&
+        blend_grid_.centres().size() == file.clips.size() * file.clips.size()) {
+        for (const auto& clip : file.clips) st.blend_clips.push_back(clip.name);
+        st.blend_centres = blend_grid_.centres();
     }
-    if (page_ == DojoPage::Curves) st.curve_keys = curve_handles_;
-    st.event_flags = event_flags_;
-    st.dirty = dirty_;
-    st.changed_on_disk = changed_on_disk_;
-    st.onion = onion_;
-    st.ghosts = ghost_instances_;
+    if (selection_.page == DojoPage::Curves) st.curve_keys = curve_view_.handles();
+    st.event_flags = events_.flags();
+    st.dirty = edits_.dirty();
+    st.changed_on_disk = file_.changed_on_disk();
+    st.onion = preview_.onion();
+    st.ghosts = preview_.ghost_instances();
     st.auditioned = auditioned_;
     return st;
 }
 
 bool DojoPanel::undo() {
-    if (!history_.undo(file_)) return false;
-    after_edit();
-    return true;
+    return edits_.undo();
 }
 
 bool DojoPanel::redo() {
-    if (!history_.redo(file_)) return false;
-    after_edit();
-    return true;
+    return edits_.redo();
 }
 
 void DojoPanel::panel(float x, float y, float width, float height) {
     ensure_loaded();
-    watch_disk();
-    if (!ImGui::IsAnyItemActive()) edit_open_ = false; // a drag is one undo step
+    file_.watch_disk();
+    if (!ImGui::IsAnyItemActive()) edits_.end_drag(); // a drag is one undo step
+    const DojoContext dojo = context();
     ImGui::SetNextWindowPos(ImVec2(x, y));
     ImGui::SetNextWindowSize(ImVec2(width, height));
     ImGui::Begin("Dojo", nullptr,
@@ -372,68 +307,71 @@ void DojoPanel::panel(float x, float y, float width, float height) {
     dojo_preview_size(width, height, pw, ph);
     // The preview is rendered before the UI is built, so on the frame the tab is opened it has not been
     // rendered yet and its target has no size: lay the panel out at the size the preview is about to get.
-    if (target_.width() > 0 && target_.height() > 0) {
-        pw = std::min(pw, static_cast<float>(target_.width()));
-        ph = std::min(ph, static_cast<float>(target_.height()));
+    if (preview_.target_width() > 0 && preview_.target_height() > 0) {
+        pw = std::min(pw, static_cast<float>(preview_.target_width()));
+        ph = std::min(ph, static_cast<float>(preview_.target_height()));
     }
     ImGui::BeginGroup();
-    draw_preview_image(pw, ph);
-    if (clips_.clips.empty()) {
-        ImGui::TextColored(ImVec4(1, 0.4f, 0.35f, 1), "%s", compile_error_.c_str());
+    preview_.draw(pw, ph);
+    if (playback_.clips().clips.empty()) {
+        ImGui::TextColored(ImVec4(1, 0.4f, 0.35f, 1), "%s", edits_.compile_error().c_str());
         ImGui::EndGroup();
         ImGui::End();
         return;
     }
-    transport();
-    timeline(pw);
+    timeline_.transport(dojo);
+    timeline_.timeline(dojo, pw, [&](Vec2 origin, float w, float h, double length) {
+        events_.lane(dojo, origin, w, h, length);
+    });
     ImGui::Spacing();
-    transition_tester();
+    dojo_transition_tester(dojo);
     ImGui::EndGroup();
 
     ImGui::SetCursorPos(ImVec2(start.x + pw + 12, start.y));
     ImGui::BeginChild("right", ImVec2(0, 0), false, ImGuiWindowFlags_NoScrollbar);
-    clip_toolbar();
-    clip_list();
-    loop_row();
-    right_pages();
-    file_row();
+    clip_list_.toolbar(dojo);
+    clip_list_.list(dojo);
+    clip_list_.loop_row(dojo);
+    right_pages(dojo);
+    file_.row(dojo);
     ImGui::EndChild();
-    clip_dialog();
-    add_event_popup();
+    clip_list_.dialog(dojo);
+    events_.popup(dojo);
     ImGui::End();
 }
 
 // Keys, Curves, Blends, Events: one page at a time, the file row kept below them.
-void DojoPanel::right_pages() {
+void DojoPanel::right_pages(const DojoContext& dojo) {
     const float file_row_height =
         ImGui::GetFrameHeightWithSpacing() *
-        (1.0f + (changed_on_disk_ ? 1.0f : 0.0f) + static_cast<float>(issues_.size()) +
-         (compile_error_.empty() ? 0.0f : 1.0f));
+        (1.0f + (file_.changed_on_disk() ? 1.0f : 0.0f) + static_cast<float>(edits_.issues().size()) +
+         (edits_.compile_error().empty() ? 0.0f : 1.0f));
     if (!ImGui::BeginTabBar("pages")) return;
     constexpr const char* kTitles[] = {"Keys", "Curves", "Blends", "Events"};
     constexpr DojoSpot kSpots[] = {DojoSpot::PageKeys, DojoSpot::PageCurves, DojoSpot::PageBlends,
                                    DojoSpot::PageEvents};
     for (int i = 0; i < static_cast<int>(DojoPage::Count); ++i) {
         const auto page = static_cast<DojoPage>(i);
-        const ImGuiTabItemFlags flags =
-            page_requested_ && page == page_ ? ImGuiTabItemFlags_SetSelected : ImGuiTabItemFlags_None;
+        const ImGuiTabItemFlags flags = selection_.page_requested && page == selection_.page
+                                            ? ImGuiTabItemFlags_SetSelected
+                                            : ImGuiTabItemFlags_None;
         const bool open = ImGui::BeginTabItem(kTitles[i], nullptr, flags);
-        mark(kSpots[i]);
+        dojo.mark(kSpots[i]);
         if (!open) continue;
-        if (!page_requested_) page_ = page;
+        if (!selection_.page_requested) selection_.page = page;
         ImGui::BeginChild("page", ImVec2(0, -file_row_height), false);
         switch (page) {
         case DojoPage::Keys:
-            key_table();
+            key_table_.draw(dojo);
             break;
         case DojoPage::Curves:
-            curve_view();
+            curve_view_.draw(dojo);
             break;
         case DojoPage::Blends:
-            blend_grid();
+            blend_grid_.draw(dojo);
             break;
         case DojoPage::Events:
-            event_list();
+            events_.list(dojo);
             break;
         case DojoPage::Count:
             break;
@@ -441,7 +379,7 @@ void DojoPanel::right_pages() {
         ImGui::EndChild();
         ImGui::EndTabItem();
     }
-    page_requested_ = false;
+    selection_.page_requested = false;
     ImGui::EndTabBar();
 }
 

@@ -1,8 +1,9 @@
 // The dojo's 3D preview: the posed robot on a tiled floor under two studio lights, orbited by dragging, and
 // the onion skin: the poses at the keys before and after the playhead drawn over it, tinted.
-#include "ui/dojo_panel.h"
+#include "ui/dojo_preview.h"
 
 #include "render/level_scene.h"
+#include "render/mesh_data.h"
 
 #include <imgui.h>
 
@@ -12,6 +13,8 @@
 namespace ks::editor::ui {
 
 namespace {
+constexpr float kDojoBar = 212.0f; // transport, timeline (with its event lane) and transition tester
+
 // The ghosts' washes (linear rgb added to the shading): the previous key blue, the next key magenta, both
 // far from the robot's yellow.
 const Vec3 kPreviousKeyTint(0.05f, 0.25f, 0.75f);
@@ -25,37 +28,59 @@ bool same_matrix(const Mat4& a, const Mat4& b) {
 }
 } // namespace
 
-// The keys either side of the playhead: the phase ends of the shown clip, and its start (t = 0). A looping
-// clip's playhead is taken within its first pass, the pass the ghosts are posed from.
-void DojoPanel::update_ghosts() {
+void dojo_preview_size(float tab_width, float tab_height, float& w, float& h) {
+    w = std::max(64.0f, std::floor(tab_width * 0.5f));
+    h = std::max(64.0f, std::floor(tab_height - kDojoBar));
+}
+
+DojoPreview::DojoPreview(render::AssetLibrary& assets, render::SceneRenderer& renderer)
+    : assets_(assets), renderer_(renderer) {
+    render::MeshData floor;
+    render::append_box(floor, Vec3(0, -0.05f, 0), Vec3(14, 0.1f, 14), Mat4(1.0f), 2.0f);
+    floor_ = std::make_unique<render::GpuMesh>(floor);
+    floor_material_ = &assets_.surface("tiles");
+    lights_.push_back({render::Light::Type::Point, Vec3(3.0f, 5.0f, 4.0f), Vec3(0, -1, 0),
+                       Vec3(1.0f, 0.85f, 0.7f), 1.2f, 20.0f, 0.8f, 0.9f});
+    lights_.push_back({render::Light::Type::Point, Vec3(-4.0f, 3.0f, -2.0f), Vec3(0, -1, 0),
+                       Vec3(0.5f, 0.7f, 1.0f), 0.8f, 20.0f, 0.8f, 0.9f});
+}
+
+const render::Model& DojoPreview::model() {
+    model_ = &assets_.model("robot");
+    return *model_;
+}
+
+void DojoPreview::bind(const anim::Rig& rig) {
+    binding_ = anim::RigBinding(rig, model().node_names());
+    pose_ = model_->rest_pose();
+}
+
+void DojoPreview::pose_from(const anim::Player& player) {
+    binding_.write_locals(player.pose(), pose_.local);
+}
+
+// The keys either side of the playhead (model: dojo_keys_around), posed once per key time and file revision.
+void DojoPreview::update_ghosts(const DojoContext& dojo) {
     ghosts_[0].shown = ghosts_[1].shown = false;
-    if (!onion_ || transition_mode_ || static_cast<size_t>(clip_) >= file_.clips.size() ||
-        static_cast<size_t>(clip_) >= clips_.clips.size())
+    const DojoPlayback& playback = dojo.playback;
+    const anim::ClipDef* def = dojo.shown_def();
+    const int clip = playback.clip();
+    if (!onion_ || playback.transition() || !def ||
+        static_cast<size_t>(clip) >= playback.clips().clips.size())
         return;
-    const anim::ClipDef& def = file_.clips[static_cast<size_t>(clip_)];
-    const double duration = def.duration();
-    if (duration <= 0) return;
-    const double now =
-        def.loop == anim::LoopMode::Once ? std::min(time_, duration) : std::fmod(time_, duration);
-    constexpr double kAtKey = 1e-4; // the playhead on a key: the ghosts are the keys around it
-    double previous = -1.0, next = -1.0, t = 0.0;
-    if (now > kAtKey) previous = 0.0;
-    for (const anim::PhaseDef& phase : def.phases) {
-        t += phase.duration;
-        if (t < now - kAtKey) previous = t;
-        if (t > now + kAtKey && next < 0) next = t;
-    }
-    const double times[2] = {previous, next};
+    const DojoKeysAround around = dojo_keys_around(*def, playback.time());
+    const double times[2] = {around.previous, around.next};
     for (int g = 0; g < 2; ++g) {
         Ghost& ghost = ghosts_[static_cast<size_t>(g)];
         if (times[g] < 0) continue;
         ghost.shown = true;
-        if (ghost.time == times[g] && ghost.revision == revision_ && ghost.clip == clip_) continue;
+        const std::uint64_t revision = dojo.edits.revision();
+        if (ghost.time == times[g] && ghost.revision == revision && ghost.clip == clip) continue;
         ghost.time = times[g];
-        ghost.revision = revision_;
-        ghost.clip = clip_;
-        anim::Player player(clips_, rig_);
-        player.play(clip_, 0.0f);
+        ghost.revision = revision;
+        ghost.clip = clip;
+        anim::Player player(playback.clips(), playback.rig());
+        player.play(clip, 0.0f);
         player.advance(ghost.time);
         if (ghost.pose.local.size() != model_->nodes.size()) ghost.pose = model_->rest_pose();
         binding_.write_locals(player.pose(), ghost.pose.local);
@@ -64,7 +89,7 @@ void DojoPanel::update_ghosts() {
 
 // Appends the ghost's instances, keeping only the parts that are not where the live pose has them (a part
 // drawn twice in the same place would flicker between its tinted and plain copies).
-void DojoPanel::emit_ghost(const render::ModelPose& ghost, const Vec3& tint, std::size_t main_count) {
+void DojoPreview::emit_ghost(const render::ModelPose& ghost, const Vec3& tint, std::size_t main_count) {
     const std::size_t first = instances_.size();
     model_->emit(Mat4(1.0f), ghost, scratch_, instances_);
     std::size_t kept = first;
@@ -80,18 +105,16 @@ void DojoPanel::emit_ghost(const render::ModelPose& ghost, const Vec3& tint, std
     ghost_instances_ += static_cast<int>(kept - first);
 }
 
-void DojoPanel::render(float width, float height, double dt) {
-    ensure_loaded();
-    dojo_preview_size(width, height, preview_w_, preview_h_);
-    tick(dt);
-    target_.ensure(static_cast<int>(preview_w_), static_cast<int>(preview_h_));
+void DojoPreview::render(const DojoContext& dojo, float tab_width, float tab_height) {
+    dojo_preview_size(tab_width, tab_height, width_, height_);
+    target_.ensure(static_cast<int>(width_), static_cast<int>(height_));
     target_.bind();
     instances_.clear();
     ghost_instances_ = 0;
     if (model_) {
-        model_->emit(Mat4(1.0f), model_pose_, scratch_, instances_);
+        model_->emit(Mat4(1.0f), pose_, scratch_, instances_);
         const std::size_t main_count = instances_.size();
-        update_ghosts();
+        update_ghosts(dojo);
         if (ghosts_[0].shown) emit_ghost(ghosts_[0].pose, kPreviousKeyTint, main_count);
         if (ghosts_[1].shown) emit_ghost(ghosts_[1].pose, kNextKeyTint, main_count);
     }
@@ -99,7 +122,7 @@ void DojoPanel::render(float width, float height, double dt) {
     const Vec3 target(0.0f, 1.6f, 0.0f);
     geometry::Camera camera;
     camera.fov_y = radians(40.0f);
-    camera.aspect = preview_w_ / preview_h_;
+    camera.aspect = width_ / height_;
     camera.yaw = orbit_yaw_;
     camera.pitch = -orbit_pitch_;
     camera.position = target - camera.forward() * orbit_distance_;
@@ -122,7 +145,7 @@ void DojoPanel::render(float width, float height, double dt) {
 }
 
 // The rendered preview (drag to orbit) with the onion-skin toggle and its legend over its top-left corner.
-void DojoPanel::draw_preview_image(float w, float h) {
+void DojoPreview::draw(float w, float h) {
     const ImVec2 corner = ImGui::GetCursorScreenPos();
     if (target_.texture() == 0) { // not rendered yet (the tab's first frame): keep its place
         ImGui::Dummy(ImVec2(w, h));

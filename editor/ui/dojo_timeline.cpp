@@ -1,7 +1,5 @@
-// The dojo's transport (play, pause, stop, step, loop, speed) and its timeline: ticks every 0.1 s, a marker
-// at the end of every key (phase), the blend window of the transition test, the playhead, and the clip's
-// events in a lane below (dojo_events.cpp); dragging on the ticks scrubs.
-#include "ui/dojo_panel.h"
+// The dojo's transport and timeline (dojo_timeline.h).
+#include "ui/dojo_timeline.h"
 
 #include <imgui.h>
 
@@ -11,45 +9,45 @@
 
 namespace ks::editor::ui {
 
-double DojoPanel::timeline_length() const {
-    if (clips_.clips.empty()) return 0.0;
-    if (transition_mode_)
-        return switch_time_ + blend_time_ + clips_.clips[static_cast<size_t>(to_clip_)].duration;
-    return clips_.clips[static_cast<size_t>(clip_)].duration;
-}
-
-void DojoPanel::transport() {
-    if (ImGui::Button(playing_ ? "Pause" : "Play")) playing_ = !playing_;
+void DojoTimeline::transport(const DojoContext& dojo) {
+    DojoPlayback& playback = dojo.playback;
+    if (ImGui::Button(playback.playing() ? "Pause" : "Play")) playback.set_playing(!playback.playing());
     ImGui::SameLine();
-    if (ImGui::Button("Stop")) playing_ = false, restart_at(0.0);
+    if (ImGui::Button("Stop")) playback.set_playing(false), playback.restart_at(0.0);
     ImGui::SameLine();
-    if (ImGui::Button("Step")) playing_ = false, restart_at(time_ + 1.0 / 30.0);
+    if (ImGui::Button("Step")) playback.set_playing(false), playback.restart_at(playback.time() + 1.0 / 30.0);
     ImGui::SameLine();
-    ImGui::Checkbox("Loop", &loop_);
+    bool loop = playback.loop();
+    if (ImGui::Checkbox("Loop", &loop)) playback.set_loop(loop);
     ImGui::SameLine();
-    if (audition_) {
+    if (dojo.audition) {
         ImGui::Checkbox("Sounds", &event_sounds_);
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Play the events' sounds as the playhead passes them");
         ImGui::SameLine();
     }
     ImGui::SetNextItemWidth(80);
-    ImGui::DragFloat("speed", &speed_, 0.01f, 0.05f, 4.0f, "%.2fx");
+    float speed = playback.speed();
+    if (ImGui::DragFloat("speed", &speed, 0.01f, 0.05f, 4.0f, "%.2fx")) playback.set_speed(speed);
     ImGui::SameLine();
-    ImGui::Text("t = %.3f s%s", time_, player_ && player_->blending() ? "  (blending)" : "");
+    const anim::Player* player = playback.player();
+    ImGui::Text("t = %.3f s%s", playback.time(), player && player->blending() ? "  (blending)" : "");
 }
 
-void DojoPanel::timeline(float width) {
+void DojoTimeline::timeline(const DojoContext& dojo, float width, const DojoEventLane& lane_of) {
+    DojoPlayback& playback = dojo.playback;
+    const anim::AnimationFile& file = dojo.edits.file();
+    const DojoPlayPlan& plan = playback.plan();
     // InvisibleButton refuses (asserts on) a zero size: a window too small for a timeline shows none.
-    if (clips_.clips.empty() || !(width >= 1.0f)) return;
-    const double length = std::max(0.01, timeline_length());
+    if (playback.clips().clips.empty() || !(width >= 1.0f)) return;
+    const double length = std::max(0.01, playback.timeline_length());
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const ImVec2 p = ImGui::GetCursorScreenPos();
     const float h = 34.0f;
     ImGui::InvisibleButton("timeline", ImVec2(width, h));
     if (ImGui::IsItemActive()) { // scrub
         const float u = std::clamp((ImGui::GetIO().MousePos.x - p.x) / width, 0.0f, 1.0f);
-        playing_ = false;
-        restart_at(u * length);
+        playback.set_playing(false);
+        playback.restart_at(u * length);
     }
     draw->AddRectFilled(p, ImVec2(p.x + width, p.y + h), IM_COL32(28, 31, 38, 255), 4.0f);
     for (int s = 0; s <= static_cast<int>(length * 10); ++s) { // ticks every 0.1 s, labels every second
@@ -66,33 +64,33 @@ void DojoPanel::timeline(float width) {
     // Key markers: the end of every phase (where its targets are reached).
     // The file's clips can outnumber the compiled ones while the file has issues: index with care.
     auto markers = [&](int clip, double offset, ImU32 colour) {
-        if (clip < 0 || static_cast<size_t>(clip) >= file_.clips.size()) return;
-        const anim::ClipDef& def = file_.clips[static_cast<size_t>(clip)];
+        if (clip < 0 || static_cast<size_t>(clip) >= file.clips.size()) return;
+        const anim::ClipDef& def = file.clips[static_cast<size_t>(clip)];
         double t = 0;
         for (size_t i = 0; i < def.phases.size(); ++i) {
             t += def.phases[i].duration;
             const float x = p.x + static_cast<float>((offset + t) / length) * width;
             if (x > p.x + width + 1) break;
-            const bool sel = !transition_mode_ && static_cast<int>(i) == selected_phase_;
+            const bool sel = !plan.transition && static_cast<int>(i) == dojo.selection.phase;
             draw->AddQuadFilled(ImVec2(x, p.y + 3), ImVec2(x + 5, p.y + 9), ImVec2(x, p.y + 15),
                                 ImVec2(x - 5, p.y + 9), sel ? IM_COL32(255, 210, 80, 255) : colour);
         }
     };
-    if (transition_mode_) {
-        markers(from_clip_, 0.0, IM_COL32(150, 200, 255, 255));
-        markers(to_clip_, switch_time_, IM_COL32(255, 150, 120, 255));
-        const float xs = p.x + static_cast<float>(switch_time_ / length) * width;
-        const float xb = p.x + static_cast<float>((switch_time_ + blend_time_) / length) * width;
+    if (plan.transition) {
+        markers(plan.from, 0.0, IM_COL32(150, 200, 255, 255));
+        markers(plan.to, plan.switch_at, IM_COL32(255, 150, 120, 255));
+        const float xs = p.x + static_cast<float>(plan.switch_at / length) * width;
+        const float xb = p.x + static_cast<float>((plan.switch_at + plan.blend) / length) * width;
         draw->AddRectFilled(ImVec2(xs, p.y), ImVec2(xb, p.y + h), IM_COL32(255, 200, 80, 50));
     } else {
-        markers(clip_, 0.0, IM_COL32(150, 200, 255, 255));
+        markers(plan.clip, 0.0, IM_COL32(150, 200, 255, 255));
     }
     // The playhead: a looping clip's pass, a ping-pong's way back, the transition test's own time.
-    const double shown = transition_mode_ ? std::fmod(time_, length + 1e-9) : clip_time();
+    const double shown = plan.transition ? std::fmod(playback.time(), length + 1e-9) : dojo.clip_time();
     const float x = p.x + static_cast<float>(shown / length) * width;
     const float lane = ImGui::GetFrameHeight() * 0.8f;
-    if (!transition_mode_) event_lane(Vec2(p.x, p.y + h + 2), width, lane, length);
-    draw->AddLine(ImVec2(x, p.y), ImVec2(x, p.y + h + (transition_mode_ ? 0 : lane + 2)),
+    if (!plan.transition && lane_of) lane_of(Vec2(p.x, p.y + h + 2), width, lane, length);
+    draw->AddLine(ImVec2(x, p.y), ImVec2(x, p.y + h + (plan.transition ? 0 : lane + 2)),
                   IM_COL32(255, 80, 80, 255), 2.0f);
     ImGui::SetCursorScreenPos(ImVec2(p.x, p.y + h + 2));
     ImGui::Dummy(ImVec2(width, lane));

@@ -144,9 +144,11 @@ TEST_CASE("dojo curves: a key's value sets the target's component, a relative ke
     REQUIRE(set_key_value(file, 0, 1, "head", CurveChannel::RotY, 120));
     CHECK(*file.clips[0].phases[1].targets[1].add_rot == DVec3(0, 120, 0));
     CHECK_FALSE(file.clips[0].phases[1].targets[1].rot.has_value());
-    // The head is keyed for rotation only: a position value makes a relative position key.
+    // The head is keyed for rotation only: a position value makes an absolute position key where the
+    // head is (at rest: no offset) with that component set.
     REQUIRE(set_key_value(file, 0, 1, "head", CurveChannel::PosX, 0.25));
-    CHECK(*file.clips[0].phases[1].targets[1].add_pos == DVec3(0.25, 0, 0));
+    CHECK(*file.clips[0].phases[1].targets[1].pos == DVec3(0.25, 0, 0));
+    CHECK_FALSE(file.clips[0].phases[1].targets[1].add_pos.has_value());
     CHECK(curve(file, "head", CurveChannel::PosX).keys[1].value == doctest::Approx(0.25).epsilon(1e-5));
     CHECK(anim::validate(file).empty()); // (not the robot's file: it has no required clips)
 

@@ -129,13 +129,14 @@ TEST_CASE("dojo keys: add a node's key, refuse bad requests unchanged, remove it
     const std::string node = free_nodes.front();
     CHECK(!has_key(file, 0, 0, node));
 
+    const DVec3 reached = editor::key_values(file, 0, node, false).front();
     REQUIRE(editor::add_node_key(file, 0, 0, node));
     CHECK(has_key(file, 0, 0, node));
     const auto& added = file.clips[0].phases[0].targets.back();
     CHECK(added.node == node);
-    REQUIRE(added.add_rot);
-    CHECK(*added.add_rot == DVec3(0.0)); // holds the pose the phase starts with
-    CHECK(!added.rot);
+    REQUIRE(added.rot);
+    CHECK(*added.rot == reached); // an absolute key where the node is: no pose changes
+    CHECK(!added.add_rot);
     CHECK(anim::validate(file).empty());
     CHECK(editor::unkeyed_nodes(file, 0, 0).size() == free_nodes.size() - 1);
 

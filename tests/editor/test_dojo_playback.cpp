@@ -124,3 +124,82 @@ TEST_CASE("dojo playback: a clip alone plays the same by frames as by scrubbing"
     CHECK(largest_difference(played.pose(), scrubbed.pose()) < 1e-4f);
     CHECK(played.current_clip() == plan.clip);
 }
+
+TEST_CASE("dojo playback: the pass time of a loop wraps, a ping-pong folds back, a once clip holds its end") {
+    CHECK(dojo_pass_time(anim::LoopMode::Loop, 1.0, 2.25) == doctest::Approx(0.25));
+    CHECK(dojo_pass_time(anim::LoopMode::PingPong, 1.0, 1.25) == doctest::Approx(0.75));
+    CHECK(dojo_pass_time(anim::LoopMode::PingPong, 1.0, 2.25) == doctest::Approx(0.25));
+    CHECK(dojo_pass_time(anim::LoopMode::Once, 1.0, 3.0) == 1.0);
+    CHECK(dojo_pass_time(anim::LoopMode::Next, 1.0, 0.5) == 0.5);
+    CHECK(dojo_pass_time(anim::LoopMode::Loop, 0.0, 0.5) == 0.0); // no length: no pass
+}
+
+TEST_CASE("dojo playback: the keys around the playhead are the clip's start and phase ends either side") {
+    const anim::AnimationFile file = ks::dojo_test::nod_file(); // keys at 0.4 s and 1 s
+    const anim::ClipDef& nod = file.clips[0];
+    auto around = dojo_keys_around(nod, 0.0);
+    CHECK(around.previous == -1.0);
+    CHECK(around.next == doctest::Approx(0.4));
+    around = dojo_keys_around(nod, 0.6);
+    CHECK(around.previous == doctest::Approx(0.4));
+    CHECK(around.next == doctest::Approx(1.0));
+    around = dojo_keys_around(nod, 0.4); // on a key: the keys either side of it
+    CHECK(around.previous == 0.0);
+    CHECK(around.next == doctest::Approx(1.0));
+    around = dojo_keys_around(nod, 5.0); // a once clip held at its end
+    CHECK(around.previous == doctest::Approx(0.4));
+    CHECK(around.next == -1.0);
+}
+
+TEST_CASE("dojo playback: DojoPlayback shows clips, tests transitions, loops a once clip and keeps its "
+          "choices in range when the clips change") {
+    const Compiled c;
+    DojoPlayback playback;
+    playback.set_rig(c.rig);
+    CHECK_FALSE(playback.has_clips());
+    playback.set_clips(c.clips);
+    REQUIRE(playback.has_clips());
+    const int alert = c.clips.find("alert"), idle = c.clips.find("idle");
+    CHECK_FALSE(playback.show_clip(-1));
+    CHECK_FALSE(playback.show_clip(static_cast<int>(c.clips.clips.size())));
+    REQUIRE(playback.show_clip(alert));
+    CHECK(playback.clip() == alert);
+    CHECK(playback.playing());
+    CHECK(playback.time() == 0.0);
+    const double length = c.clips.clips[static_cast<std::size_t>(alert)].duration;
+    CHECK(playback.timeline_length() == doctest::Approx(length));
+
+    // Playing: speed scales dt; a once clip starts over (Loop on) when a step would pass its end.
+    playback.set_speed(2.0f);
+    playback.advance(0.1);
+    CHECK(playback.time() == doctest::Approx(0.2));
+    playback.advance(length); // past the end
+    CHECK(playback.time() == 0.0);
+    playback.set_loop(false);
+    playback.advance(length);
+    CHECK(playback.time() == doctest::Approx(2.0 * length));
+    playback.set_playing(false);
+    playback.advance(0.1);
+    CHECK(playback.time() == doctest::Approx(2.0 * length));
+
+    // The transition test takes the file's blend for the pair and starts over.
+    REQUIRE(playback.test_transition(idle, alert));
+    CHECK(playback.transition());
+    CHECK(playback.plan().blend == c.clips.blend_time(idle, alert));
+    CHECK(playback.time() == 0.0);
+    CHECK(playback.timeline_length() ==
+          doctest::Approx(playback.plan().switch_at + playback.plan().blend + length));
+    REQUIRE(playback.show_clip(idle)); // leaves the test
+    CHECK_FALSE(playback.transition());
+
+    // Fewer clips (after an edit): the choices are kept in range and the playhead kept.
+    playback.restart_at(0.3);
+    anim::ClipSet fewer = c.clips;
+    fewer.clips.resize(1);
+    playback.choose_clip(static_cast<int>(c.clips.clips.size()) - 1);
+    playback.set_clips(fewer);
+    CHECK(playback.clip() == 0);
+    CHECK(playback.plan().from == 0);
+    CHECK(playback.plan().to == 0);
+    CHECK(playback.time() == doctest::Approx(0.3));
+}
