@@ -243,3 +243,26 @@ TEST_CASE("an unknown material is a warning tagged like an unknown texture, with
     CHECK(d.error.where.line == 6);
     CHECK(d.error.message.find("brush 7 (\"Block\"): texture \"concret\"") != std::string::npos);
 }
+
+TEST_CASE("a level of 1000 brushes saves and loads back exactly, and how long loading takes") {
+    Level level;
+    for (int i = 0; i < 1000; ++i) {
+        Entity& e = level.add(EntityType::Brush, {float(i % 40) * 8.0f, float(i % 3), float(i / 40) * 8.0f});
+        e.rotation = {float(i * 37 % 360) - 180.0f, float(i % 7) - 3.0f, 0.0f};
+        std::vector<brush::Face> faces =
+            brush::make_box({-2, 0, -2}, {2, 1 + (i % 5), 2}, {"concrete"}).value().faces();
+        const DVec3 cut = glm::normalize(DVec3(i % 3 - 1, 3, i % 5 - 2));
+        faces.push_back({{cut, 1.0 * cut.y}, {"metal", {0.25, 0}, {2, 2}, 30}}); // through y = 1 at x = z = 0
+        e.as<BrushProps>().brush = brush::Brush::from_faces(faces, brush::RedundantPlanes::drop).value();
+    }
+    const std::string text = save_level_string(level);
+    const auto start = std::chrono::steady_clock::now();
+    LoadReport report;
+    auto back = load_level_string(text, "brushes.json", &report);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    REQUIRE_MESSAGE(back.ok(), report.str());
+    CHECK(report.diagnostics.empty());
+    CHECK(*back == level);
+    MESSAGE("1000 brushes (" << text.size() / 1024 << " KiB): loaded in " << seconds * 1e3 << " ms, "
+                             << seconds * 1e6 / 1000 << " us per brush");
+}
