@@ -186,6 +186,7 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
         case EntityType::Trigger: // the logic entities are invisible in the game
         case EntityType::Spawner:
         case EntityType::Message:
+        case EntityType::Brush: // its faces are drawn by the brush surfaces (issue 25)
         case EntityType::Count:
             break;
         }
