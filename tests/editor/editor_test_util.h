@@ -5,6 +5,7 @@
 #include "model/editor.h"
 #include "model/script.h"
 #include "test_support.h"
+#include "view/view_camera.h"
 
 #include <doctest/doctest.h>
 
@@ -68,6 +69,14 @@ inline editor::Editor two_rooms() {
 
 // The viewport size the view and picking tests use.
 inline const Vec2 kViewport(960.0f, 540.0f);
+
+// The top view over `centre` in a kViewport-sized view, 60 units across (the picking and drag tests').
+inline editor::ViewCamera top_view(Vec3 centre = Vec3(0.0f)) {
+    editor::ViewCamera v;
+    v.set_viewport(kViewport);
+    v.set_view(editor::ViewMode::Top, centre, 60.0f);
+    return v;
+}
 
 // A visibility filter that shows every entity.
 inline bool all_shown(const level::Entity&) {

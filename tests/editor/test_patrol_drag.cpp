@@ -6,14 +6,7 @@
 using namespace ks;
 using namespace ks::editor;
 
-namespace {
-ViewCamera top_view() {
-    ViewCamera v;
-    v.set_viewport(Vec2(960.0f, 540.0f));
-    v.set_view(ViewMode::Top, Vec3(0.0f), 60.0f);
-    return v;
-}
-} // namespace
+using editor_test::top_view;
 
 TEST_CASE("a selected robot's patrol point is picked under the cursor and dragged as one undo step") {
     Editor editor;

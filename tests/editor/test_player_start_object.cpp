@@ -16,15 +16,9 @@ using namespace ks::editor;
 using editor_test::all_shown;
 
 using editor_test::kViewport;
+using editor_test::top_view;
 
 namespace {
-
-ViewCamera top_view(Vec3 centre = Vec3(0.0f)) {
-    ViewCamera v;
-    v.set_viewport(kViewport);
-    v.set_view(ViewMode::Top, centre, 60.0f);
-    return v;
-}
 
 // A floor, a robot at (-6, 0, 0) and the player start at (4, 0, 6) facing -z, on a 1-unit grid.
 Editor small_level() {
