@@ -4,6 +4,7 @@
 #include "model/edit_entities.h"
 #include "model/edit_layers.h"
 #include "model/edit_selection.h"
+#include "model/groups.h"
 
 using namespace ks;
 using namespace ks::editor;
@@ -86,7 +87,8 @@ TEST_CASE("layers: rename, the active layer and moving entities between layers; 
     CHECK(ed.level().editor.layers[1].name == "Outer walls");
     CHECK(last_step(ed) == "Rename layer");
 
-    CHECK(!move_selection_to_layer(ed, 1).ok()); // nothing selected
+    ed.clear_selection(); // placing selected the robot
+    CHECK(!move_selection_to_layer(ed, 1).ok());
     REQUIRE(select(ed, {1, 2}).ok());
     REQUIRE(move_selection_to_layer(ed, 1).ok());
     CHECK(ed.level().editor.layers[1].entities == std::vector<int>{1, 2});
