@@ -11,6 +11,10 @@
 #include "core/paths.h"
 #include "editor/median_time.h"
 #include "level/level_io.h"
+#include "model/edit_entities.h"
+#include "model/edit_files.h"
+#include "model/edit_selection.h"
+#include "model/edit_transforms.h"
 #include "model/editor.h"
 #include "model/reachability.h"
 #include "model/validation.h"
@@ -156,7 +160,7 @@ int run_editor(int argc, const char* const* argv) {
         return 1;
     }
     editor::Editor ed;
-    if (auto r = ed.open(file); !r) {
+    if (auto r = open(ed, file); !r) {
         std::fprintf(stderr, "%s\n", r.error().str().c_str());
         return 1;
     }
@@ -167,11 +171,11 @@ int run_editor(int argc, const char* const* argv) {
     std::printf("%-44s %12s\n", "operation", "ms");
     auto row = [](const char* what, double ms) { std::printf("%-44s %12.4f\n", what, ms); };
     row("place a robot + undo (no validation)", median_ms(reps, [&] {
-            (void)ed.place(level::EntityType::Robot, Vec3(20.0f, 0.0f, -20.0f));
+            (void)place(ed, level::EntityType::Robot, Vec3(20.0f, 0.0f, -20.0f));
             ed.undo();
         }));
     row("place a robot + undo + live validation", median_ms(reps, [&] {
-            (void)ed.place(level::EntityType::Robot, Vec3(20.0f, 0.0f, -20.0f));
+            (void)place(ed, level::EntityType::Robot, Vec3(20.0f, 0.0f, -20.0f));
             (void)ed.issues();
             ed.undo();
             (void)ed.issues();
@@ -181,19 +185,20 @@ int run_editor(int argc, const char* const* argv) {
         int wall = 0;
         for (const auto& e : ed.level().entities)
             if (e.type() == level::EntityType::Wall) wall = e.id;
-        (void)ed.select({wall});
-        const size_t walks = ed.walk_checks_run();
+        (void)select(ed, {wall});
+        const size_t walks = ed.validation().walk_checks_run();
         row("move a wall + undo + live validation", median_ms(walk_reps, [&] {
-                (void)ed.move_selection(Vec3(0.5f, 0.0f, 0.0f));
+                (void)move_selection(ed, Vec3(0.5f, 0.0f, 0.0f));
                 (void)ed.issues();
                 ed.undo();
                 (void)ed.issues();
             }));
-        std::printf("%-44s %12zu\n", "  (walk checks run by those edits)", ed.walk_checks_run() - walks);
+        std::printf("%-44s %12zu\n", "  (walk checks run by those edits)",
+                    ed.validation().walk_checks_run() - walks);
     }
-    ed.select_all();
+    select_all(ed);
     row("move every entity + undo", median_ms(reps, [&] {
-            (void)ed.move_selection(Vec3(1.0f, 0.0f, 0.0f));
+            (void)move_selection(ed, Vec3(1.0f, 0.0f, 0.0f));
             ed.undo();
         }));
     ed.clear_selection();
@@ -216,8 +221,8 @@ int run_editor(int argc, const char* const* argv) {
         std::printf("%-44s %12.4f   (%d of %d rays hit)\n", "pick one entity under a click", ms / rays, hits,
                     rays);
     }
-    row("save (validate + atomic write)", median_ms(reps, [&] { (void)ed.save(); }));
-    row("open (parse + load)", median_ms(reps, [&] { (void)ed.open(file); }));
+    row("save (validate + atomic write)", median_ms(reps, [&] { (void)save(ed); }));
+    row("open (parse + load)", median_ms(reps, [&] { (void)open(ed, file); }));
     std::filesystem::remove_all(dir, ec);
     return 0;
 }

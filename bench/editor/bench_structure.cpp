@@ -7,6 +7,13 @@
 #include "core/paths.h"
 #include "editor/median_time.h"
 #include "level/level_io.h"
+#include "model/edit_entities.h"
+#include "model/edit_files.h"
+#include "model/edit_groups.h"
+#include "model/edit_layers.h"
+#include "model/edit_prefabs.h"
+#include "model/edit_selection.h"
+#include "model/edit_transforms.h"
 #include "model/editor.h"
 #include "model/prefab.h"
 #include "soak/soak.h"
@@ -58,7 +65,7 @@ int run_structure(int argc, const char* const* argv) {
     ed.prefabs().set_folders({dir / "prefabs", paths::data_root() / "prefabs"});
     const level::Level big = level_of(2000);
     if (auto r = level::save_level_file(dir / "big.json", big); !r) fail(r.error());
-    if (auto r = ed.open(dir / "big.json"); !r) fail(r.error());
+    if (auto r = open(ed, dir / "big.json"); !r) fail(r.error());
     const size_t n = ed.level().entities.size();
     std::vector<int> half, hundred;
     for (const auto& e : ed.level().entities) {
@@ -71,7 +78,7 @@ int run_structure(int argc, const char* const* argv) {
                 kFrameMs);
     std::printf("%-52s %10s %10s %12s\n", "operation", "ms", "frames", "x place one");
     const double base = median_ms(reps, [&] {
-        (void)ed.place(level::EntityType::Robot, Vec3(20.0f, 0.0f, -20.0f));
+        (void)place(ed, level::EntityType::Robot, Vec3(20.0f, 0.0f, -20.0f));
         ed.undo();
     });
     auto row = [&](const char* what, double ms) {
@@ -80,35 +87,35 @@ int run_structure(int argc, const char* const* argv) {
     row("place one entity + undo (the baseline)", base);
     auto group_undo = [&](const std::vector<int>& ids) {
         return median_ms(reps, [&] {
-            (void)ed.select(ids);
-            if (auto r = ed.group_selection(); !r) fail(r.error());
+            (void)select(ed, ids);
+            if (auto r = group_selection(ed); !r) fail(r.error());
             ed.undo();
         });
     };
     row("group 100 entities + undo", group_undo(hundred));
     row("group half the level + undo", group_undo(half));
-    (void)ed.select(half);
-    if (auto r = ed.group_selection("half"); !r) fail(r.error());
+    (void)select(ed, half);
+    if (auto r = group_selection(ed, "half"); !r) fail(r.error());
     row("click a member of the half-level group (select it)",
-        median_ms(reps, [&] { (void)ed.select_picked(half[half.size() / 2]); }));
+        median_ms(reps, [&] { (void)select_picked(ed, half[half.size() / 2]); }));
     row("move the half-level group + undo", median_ms(reps, [&] {
-            (void)ed.move_selection(Vec3(1.0f, 0.0f, 0.0f));
+            (void)move_selection(ed, Vec3(1.0f, 0.0f, 0.0f));
             ed.undo();
         }));
     row("duplicate the half-level group + undo", median_ms(reps, [&] {
-            (void)ed.duplicate();
+            (void)duplicate(ed);
             ed.undo();
         }));
     ed.undo(); // the group
-    if (auto r = ed.layer_add("half"); !r) fail(r.error());
-    (void)ed.select(half);
-    if (auto r = ed.move_selection_to_layer(1); !r) fail(r.error());
+    if (auto r = layer_add(ed, "half"); !r) fail(r.error());
+    (void)select(ed, half);
+    if (auto r = move_selection_to_layer(ed, 1); !r) fail(r.error());
     row("hide + show a layer of half the level", median_ms(reps, [&] {
-            (void)ed.layer_set_visible(1, false);
-            (void)ed.layer_set_visible(1, true);
+            (void)layer_set_visible(ed, 1, false);
+            (void)layer_set_visible(ed, 1, true);
         }));
     row("place the doorway prefab + undo", median_ms(reps, [&] {
-            if (auto r = ed.place_prefab("doorway", Vec3(10.0f, 0.0f, -10.0f)); !r) fail(r.error());
+            if (auto r = place_prefab(ed, "doorway", Vec3(10.0f, 0.0f, -10.0f)); !r) fail(r.error());
             ed.undo();
         }));
 
@@ -121,7 +128,7 @@ int run_structure(int argc, const char* const* argv) {
     for (int count : {1, 10, 50, 200}) {
         for (; placed < count; ++placed)
             if (auto r =
-                    ed.place_prefab("doorway", Vec3(20.0f * (placed % 20), 0.0f, -20.0f * (placed / 20)));
+                    place_prefab(ed, "doorway", Vec3(20.0f * (placed % 20), 0.0f, -20.0f * (placed / 20)));
                 !r)
                 fail(r.error());
         editor::Prefab taller = *prefab;
@@ -135,7 +142,7 @@ int run_structure(int argc, const char* const* argv) {
                     wall->size.y = wall->size.y == 18.0f ? 20.0f : 18.0f;
             (void)files::write_atomic(dir / "prefabs" / "doorway.json", editor::prefab_to_text(taller));
             ed.prefabs().set_folders({dir / "prefabs"}); // the file's time may not move within a second
-            if (auto r = ed.update_prefab_instances(); !r) fail(r.error());
+            if (auto r = update_prefab_instances(ed); !r) fail(r.error());
             ed.undo();
         });
         std::printf("%-12d %10.4f %10.4f %16.5f\n", count, ms, ms / kFrameMs, ms / count);

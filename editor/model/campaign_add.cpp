@@ -41,7 +41,7 @@ Result<CampaignAddReport> add_to_campaign(Editor& editor, const fs::path& campai
             "save it first (File > Save, Ctrl+S), then add it to the campaign");
     if (campaign_file.empty())
         return refuse({}, "no campaign file given", "name one, like " + default_campaign_file().string());
-    if (editor.reachability_pending()) editor.wait_for_reachability();
+    if (editor.validation().reachability_pending()) editor.validation().wait_for_reachability();
     if (const int errors = count_errors(editor.issues()); errors > 0)
         return refuse(editor.file_path(),
                       "the level has " + std::to_string(errors) + " design error(s) and should not ship",

@@ -68,7 +68,7 @@ void store(T& target, const FieldValue& value) {
         target = std::get<T>(value);
 }
 
-// A robot's patrol is a list, not one value: it is edited point by point (editor_patrol.cpp), so the
+// A robot's patrol is a list, not one value: it is edited point by point (edit_patrols.cpp), so the
 // by-name field access below leaves it out; so is a brush's faces (shaped by the brush tools, not typed).
 struct Describer {
     std::vector<FieldDescriptor> out;

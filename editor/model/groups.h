@@ -2,7 +2,7 @@
 // Questions about the level's groups and layers (level/editor_data.h), window-free: which group holds an
 // entity, every entity of a group and its children, what a click picks while a group is entered, which
 // layer an entity is in, and the entities a document hides and locks (one by one, or through a layer).
-// The edits that change groups and layers are Editor methods (editor_groups.cpp, editor_layers.cpp).
+// The edits that change groups and layers are free functions in edit_groups.h and edit_layers.h.
 #include "core/math.h"
 #include "level/editor_data.h"
 

@@ -1,6 +1,6 @@
 #pragma once
 // Editing a level's logic (links and objectives), window-free. The Editor's methods (editor.h, implemented in
-// editor_logic.cpp) name a list of links by its owner; the helpers here check a link against its source and
+// edit_logic.h) name a list of links by its owner; the helpers here check a link against its source and
 // keep link targets and kill lists pointing at what they meant when an entity or an objective is renamed.
 #include "core/result.h"
 #include "level/level.h"

@@ -1,7 +1,7 @@
 #pragma once
 // Edits to one robot's patrol route, checked before anything changes: finite points inside the level
 // format's position range, at most level::kMaxPatrolPoints, indices that exist, a known mode, a wait in
-// range. The Editor wraps each in one undoable command (editor_patrol.cpp); tests call them directly.
+// range. edit_patrols.h wraps each in one undoable command; tests call them directly.
 #include "core/result.h"
 #include "level/level.h"
 

@@ -4,7 +4,7 @@
 // An instance is a group (level::Group with a PrefabLink) whose frame (position, yaw) says where the
 // prefab's origin lies; its members follow the prefab except for the fields the instance overrides.
 // This file holds the file format, the frame maths and the member refresh; the edits are Editor methods
-// (editor_prefabs.cpp) and the folder listing is PrefabLibrary (prefab_library.h).
+// (edit_prefabs.h) and the folder listing is PrefabLibrary (prefab_library.h).
 #include "core/result.h"
 #include "level/level.h"
 

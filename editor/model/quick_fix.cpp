@@ -1,17 +1,21 @@
-// The quick fixes (quick_fix.h): Editor::apply_quick_fix sends each kind to its own apply_fix, one undo
-// step through the Editor's edits.
-#include "model/editor.h"
+// The quick fixes (quick_fix.h): apply_quick_fix sends each kind to its own apply_fix overload, one undo
+// step through the editor's operations.
+#include "model/quick_fix.h"
 
 #include "model/command.h"
+#include "model/edit_entities.h"
+#include "model/edit_logic.h"
+#include "model/edit_patrols.h"
+#include "model/edit_prefabs.h"
+#include "model/editor.h"
 
 namespace ks::editor {
+namespace {
 
-template <>
-Result<void> Editor::apply_fix(const Issue& issue, const std::string&, const std::monostate&) {
+Result<void> apply_fix(Editor&, const Issue& issue, const std::string&, const std::monostate&) {
     return Error("this issue has no quick fix", Location{}, issue.message);
 }
 
-namespace {
 // The issue's entity, checked before an edit: it may have gone, or been locked, since the check ran.
 Result<const level::Entity*> fixable_entity(const Document& doc, const Issue& issue,
                                             const std::string& name) {
@@ -21,69 +25,64 @@ Result<const level::Entity*> fixable_entity(const Document& doc, const Issue& is
         return Error(name + ": entity " + std::to_string(issue.entity_id) + " is locked");
     return current;
 }
-} // namespace
 
-template <>
-Result<void> Editor::apply_fix(const Issue& issue, const std::string& name, const fixes::SetField& fix) {
-    auto current = fixable_entity(doc_, issue, name);
+Result<void> apply_fix(Editor& editor, const Issue& issue, const std::string& name,
+                       const fixes::SetField& fix) {
+    const Document& doc = editor.doc();
+    auto current = fixable_entity(doc, issue, name);
     if (!current) return current.error();
     level::Entity after = **current;
     if (auto r = set_entity_field(after, fix.field, fix.value); !r) return r;
     auto change = std::make_unique<LevelChange>();
     change->set_name(name);
     change->updates.push_back({**current, std::move(after)});
-    execute(std::move(change), {issue.entity_id});
+    editor.execute(std::move(change), {issue.entity_id});
     return ok();
 }
 
-template <>
-Result<void> Editor::apply_fix(const Issue& issue, const std::string& name, const fixes::MoveEntity& fix) {
-    return apply_fix(issue, name, fixes::SetField{"position", FieldValue(fix.position)});
+Result<void> apply_fix(Editor& editor, const Issue& issue, const std::string& name,
+                       const fixes::MoveEntity& fix) {
+    return apply_fix(editor, issue, name, fixes::SetField{"position", FieldValue(fix.position)});
 }
 
-template <>
-Result<void> Editor::apply_fix(const Issue&, const std::string& name, const fixes::MovePlayerStart& fix) {
+Result<void> apply_fix(Editor& editor, const Issue&, const std::string& name,
+                       const fixes::MovePlayerStart& fix) {
+    const Document& doc = editor.doc();
     auto change = std::make_unique<LevelChange>();
     change->set_name(name);
     change->player_start =
-        Change<level::PlayerStart>{doc_.level.player_start, {fix.position, doc_.level.player_start.yaw}};
-    execute(std::move(change), doc_.selection);
+        Change<level::PlayerStart>{doc.level.player_start, {fix.position, doc.level.player_start.yaw}};
+    editor.execute(std::move(change), doc.selection);
     return ok();
 }
 
-template <>
-Result<void> Editor::apply_fix(const Issue& issue, const std::string&, const fixes::DeleteEntity&) {
-    return delete_entities({issue.entity_id});
+Result<void> apply_fix(Editor& editor, const Issue& issue, const std::string&, const fixes::DeleteEntity&) {
+    return delete_entities(editor, {issue.entity_id});
 }
 
-template <>
-Result<void> Editor::apply_fix(const Issue& issue, const std::string&, const fixes::MovePatrolPoint& fix) {
-    return patrol_move(issue.entity_id, fix.index, fix.position);
+Result<void> apply_fix(Editor& editor, const Issue& issue, const std::string&,
+                       const fixes::MovePatrolPoint& fix) {
+    return patrol_move(editor, issue.entity_id, fix.index, fix.position);
 }
 
-template <>
-Result<void> Editor::apply_fix(const Issue&, const std::string&, const fixes::SetSetting& fix) {
-    return set_setting(fix.field, fix.value);
+Result<void> apply_fix(Editor& editor, const Issue&, const std::string&, const fixes::SetSetting& fix) {
+    return set_setting(editor, fix.field, fix.value);
 }
 
-template <>
-Result<void> Editor::apply_fix(const Issue&, const std::string&, const fixes::SetLink& fix) {
-    return link_set(fix.owner, fix.index, fix.link);
+Result<void> apply_fix(Editor& editor, const Issue&, const std::string&, const fixes::SetLink& fix) {
+    return link_set(editor, fix.owner, fix.index, fix.link);
 }
 
-template <>
-Result<void> Editor::apply_fix(const Issue&, const std::string&, const fixes::RemoveLink& fix) {
-    return link_remove(fix.owner, fix.index);
+Result<void> apply_fix(Editor& editor, const Issue&, const std::string&, const fixes::RemoveLink& fix) {
+    return link_remove(editor, fix.owner, fix.index);
 }
 
-template <>
-Result<void> Editor::apply_fix(const Issue&, const std::string&, const fixes::AddLink& fix) {
-    auto added = link_add(fix.owner, fix.link);
+Result<void> apply_fix(Editor& editor, const Issue&, const std::string&, const fixes::AddLink& fix) {
+    auto added = link_add(editor, fix.owner, fix.link);
     if (!added) return added.error();
     return ok();
 }
 
-namespace {
 // Objective `objective` with its kill list edited by `edit` at name `kill_index` (both checked).
 template <class Edit>
 Result<level::Objective> edit_kill_list(const level::Level& level, int objective, int kill_index, Edit edit) {
@@ -97,37 +96,36 @@ Result<level::Objective> edit_kill_list(const level::Level& level, int objective
     edit(changed.kill, changed.kill.begin() + kill_index);
     return changed;
 }
-} // namespace
 
-template <>
-Result<void> Editor::apply_fix(const Issue&, const std::string&, const fixes::SetKillName& fix) {
-    auto changed = edit_kill_list(doc_.level, fix.objective, fix.kill_index,
-                                  [&](auto&, auto name) { *name = fix.name; });
+Result<void> apply_fix(Editor& editor, const Issue&, const std::string&, const fixes::SetKillName& fix) {
+    const Document& doc = editor.doc();
+    auto changed =
+        edit_kill_list(doc.level, fix.objective, fix.kill_index, [&](auto&, auto name) { *name = fix.name; });
     if (!changed) return changed.error();
-    return objective_set(fix.objective, std::move(changed).value());
+    return objective_set(editor, fix.objective, std::move(changed).value());
 }
 
-template <>
-Result<void> Editor::apply_fix(const Issue&, const std::string&, const fixes::RemoveKillName& fix) {
-    auto changed = edit_kill_list(doc_.level, fix.objective, fix.kill_index,
+Result<void> apply_fix(Editor& editor, const Issue&, const std::string&, const fixes::RemoveKillName& fix) {
+    const Document& doc = editor.doc();
+    auto changed = edit_kill_list(doc.level, fix.objective, fix.kill_index,
                                   [](auto& kill, auto name) { kill.erase(name); });
     if (!changed) return changed.error();
-    return objective_set(fix.objective, std::move(changed).value());
+    return objective_set(editor, fix.objective, std::move(changed).value());
 }
 
-template <>
-Result<void> Editor::apply_fix(const Issue&, const std::string&, const fixes::AddShutdownObjective&) {
-    return add_shutdown_objective();
+Result<void> apply_fix(Editor& editor, const Issue&, const std::string&, const fixes::AddShutdownObjective&) {
+    return add_shutdown_objective(editor);
 }
 
-template <>
-Result<void> Editor::apply_fix(const Issue&, const std::string&, const fixes::UnlinkPrefab& fix) {
-    return unlink_prefab(fix.group);
+Result<void> apply_fix(Editor& editor, const Issue&, const std::string&, const fixes::UnlinkPrefab& fix) {
+    return unlink_prefab(editor, fix.group);
 }
 
-Result<void> Editor::apply_quick_fix(const Issue& issue) {
+} // namespace
+
+Result<void> apply_quick_fix(Editor& editor, const Issue& issue) {
     const std::string name = "Quick fix: " + issue.fix.label;
-    return std::visit([&](const auto& fix) { return apply_fix(issue, name, fix); }, issue.fix.action);
+    return std::visit([&](const auto& fix) { return apply_fix(editor, issue, name, fix); }, issue.fix.action);
 }
 
 } // namespace ks::editor

@@ -1,7 +1,7 @@
 #pragma once
 // A validation issue's quick fix (validation.h): a label for its button and a typed action, one struct per
-// kind of fix. Editor::apply_quick_fix applies each kind by its own function (quick_fix.cpp), as one undo
-// step. A new kind of fix is a struct here, joined to FixAction, and its apply function in quick_fix.cpp.
+// kind of fix. apply_quick_fix applies each kind by its own function (quick_fix.cpp), as one undo step. A
+// new kind of fix is a struct here, joined to FixAction, and its apply_fix overload in quick_fix.cpp.
 #include "core/math.h"
 #include "level/level.h"
 #include "model/field_access.h"
@@ -89,5 +89,11 @@ struct QuickFix {
         return std::holds_alternative<Fix>(action);
     }
 };
+
+class Editor;
+struct Issue;
+// The issue's fix as one undo step through the editor's operations (edit_*.h).
+// Tests: tests/editor/test_validation.cpp and the rules' own test files.
+Result<void> apply_quick_fix(Editor& editor, const Issue& issue);
 
 } // namespace ks::editor

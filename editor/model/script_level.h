@@ -2,7 +2,8 @@
 // The script language's level steps: files, selection, entity edits, fields and settings, patrols,
 // history, editing aids (script_level_edits.cpp) and the level's expectations (script_level_expect.cpp).
 // Each step is what its command's parser read, typed; its `run` applies it to the script's Editor.
-#include "model/editor.h"
+#include "model/edit_selection.h"
+#include "model/edit_transforms.h"
 #include "model/validation.h"
 
 #include <optional>

@@ -1,6 +1,10 @@
 // The script language's level commands for files, selection and entity edits (script_level.h): each
 // command's parser, its steps' `run`, and the table entry that registers it (script_command.h).
 #include "model/campaign_add.h"
+#include "model/edit_entities.h"
+#include "model/edit_files.h"
+#include "model/edit_selection.h"
+#include "model/edit_transforms.h"
 #include "model/script_level_words.h"
 
 #include "core/log.h"
@@ -206,14 +210,14 @@ std::span<const CommandSpec> level_edit_commands() {
 namespace steps {
 
 Result<void> New::run(ScriptContext& c) const {
-    c.editor.new_document();
+    new_document(c.editor);
     return ok();
 }
 Result<void> Open::run(ScriptContext& c) const {
-    return c.editor.open(c.resolve(path));
+    return open(c.editor, c.resolve(path));
 }
 Result<void> Save::run(ScriptContext& c) const {
-    auto r = c.editor.save();
+    auto r = save(c.editor);
     if (!r) return r.error();
     c.report.saved.push_back(r->path);
     return ok();
@@ -221,14 +225,14 @@ Result<void> Save::run(ScriptContext& c) const {
 Result<void> SaveAs::run(ScriptContext& c) const {
     SaveOptions options;
     options.overwrite_existing = overwrite;
-    auto r = c.editor.save_as(c.resolve(path), options);
+    auto r = save_as(c.editor, c.resolve(path), options);
     if (!r) return r.error();
     c.report.saved.push_back(r->path);
     if (r->draft) log::warn(c.file_name, ":", c.line, ": saved a draft with ", r->error_count, " error(s)");
     return ok();
 }
 Result<void> Recover::run(ScriptContext& c) const {
-    if (accept) return c.editor.accept_recovery();
+    if (accept) return accept_recovery(c.editor);
     c.editor.decline_recovery();
     return ok();
 }
@@ -241,14 +245,14 @@ Result<void> CampaignAdd::run(ScriptContext& c) const {
 }
 
 Result<void> Select::run(ScriptContext& c) const {
-    return c.editor.select(ids, mode);
+    return select(c.editor, ids, mode);
 }
 Result<void> SelectAll::run(ScriptContext& c) const {
-    c.editor.select_all();
+    select_all(c.editor);
     return ok();
 }
 Result<void> SelectType::run(ScriptContext& c) const {
-    c.editor.select_all_of_type(type);
+    select_all_of_type(c.editor, type);
     return ok();
 }
 Result<void> SelectNone::run(ScriptContext& c) const {
@@ -256,39 +260,39 @@ Result<void> SelectNone::run(ScriptContext& c) const {
     return ok();
 }
 Result<void> SelectBox::run(ScriptContext& c) const {
-    c.editor.select_in_box({glm::min(a, b), glm::max(a, b)});
+    select_in_box(c.editor, {glm::min(a, b), glm::max(a, b)});
     return ok();
 }
 
 Result<void> Place::run(ScriptContext& c) const {
-    return done(c.editor.place(type, position, yaw, name));
+    return done(place(c.editor, type, position, yaw, name));
 }
 Result<void> Move::run(ScriptContext& c) const {
-    return c.editor.move_selection(delta, snap);
+    return move_selection(c.editor, delta, snap);
 }
 Result<void> Nudge::run(ScriptContext& c) const {
-    return c.editor.nudge(axis, direction);
+    return nudge(c.editor, axis, direction);
 }
 Result<void> Rotate::run(ScriptContext& c) const {
-    return c.editor.rotate_selection_about(axis, degrees, space);
+    return rotate_selection_about(c.editor, axis, degrees, space);
 }
 Result<void> Scale::run(ScriptContext& c) const {
-    return c.editor.scale_selection(factors);
+    return scale_selection(c.editor, factors);
 }
 Result<void> Delete::run(ScriptContext& c) const {
-    return c.editor.delete_selection();
+    return delete_selection(c.editor);
 }
 Result<void> Duplicate::run(ScriptContext& c) const {
-    return c.editor.duplicate(offset);
+    return duplicate(c.editor, offset);
 }
 Result<void> Copy::run(ScriptContext& c) const {
     if (c.editor.doc().selection.empty())
         return Error("copy: nothing is selected", Location{}, "select entities first");
-    c.editor.copy();
+    copy(c.editor);
     return ok();
 }
 Result<void> Paste::run(ScriptContext& c) const {
-    return c.editor.paste();
+    return paste(c.editor);
 }
 
 } // namespace steps

@@ -1,6 +1,10 @@
 // The script language's level commands for fields and settings, patrols, history and editing aids
 // (script_level.h): each command's parser, its steps' `run`, and the table entry that registers it
 // (script_command.h).
+#include "model/edit_entities.h"
+#include "model/edit_layers.h"
+#include "model/edit_patrols.h"
+#include "model/quick_fix.h"
 #include "model/script_level_words.h"
 
 #include <optional>
@@ -191,19 +195,19 @@ std::span<const CommandSpec> level_setting_commands() {
 namespace steps {
 
 Result<void> Set::run(ScriptContext& c) const {
-    return c.editor.set_field_text(field, value);
+    return set_field_text(c.editor, field, value);
 }
 Result<void> Reset::run(ScriptContext& c) const {
-    return c.editor.revert_field(field);
+    return revert_field(c.editor, field);
 }
 Result<void> Setting::run(ScriptContext& c) const {
-    return c.editor.set_setting_text(field, value);
+    return set_setting_text(c.editor, field, value);
 }
 Result<void> PlayerStart::run(ScriptContext& c) const {
-    return c.editor.set_player_start({position, yaw});
+    return set_player_start(c.editor, {position, yaw});
 }
 Result<void> LevelName::run(ScriptContext& c) const {
-    return c.editor.rename_level(name);
+    return rename_level(c.editor, name);
 }
 // Every quick fix of the rule, re-validating after each (a fix may resolve other issues).
 Result<void> Fix::run(ScriptContext& c) const {
@@ -215,25 +219,25 @@ Result<void> Fix::run(ScriptContext& c) const {
                 break;
             }
         if (!next) return ok();
-        if (auto r = c.editor.apply_quick_fix(*next); !r) return r;
+        if (auto r = apply_quick_fix(c.editor, *next); !r) return r;
     }
     return Error(std::string("fix ") + rule_name(rule) + ": the fixes do not settle");
 }
 
 Result<void> PatrolAdd::run(ScriptContext& c) const {
-    return c.editor.patrol_add(robot, point, after);
+    return patrol_add(c.editor, robot, point, after);
 }
 Result<void> PatrolMove::run(ScriptContext& c) const {
-    return c.editor.patrol_move(robot, index, point);
+    return patrol_move(c.editor, robot, index, point);
 }
 Result<void> PatrolRemove::run(ScriptContext& c) const {
-    return c.editor.patrol_remove(robot, index);
+    return patrol_remove(c.editor, robot, index);
 }
 Result<void> PatrolMode::run(ScriptContext& c) const {
-    return c.editor.patrol_set_mode(robot, mode);
+    return patrol_set_mode(c.editor, robot, mode);
 }
 Result<void> PatrolWait::run(ScriptContext& c) const {
-    return c.editor.patrol_set_wait(robot, seconds);
+    return patrol_set_wait(c.editor, robot, seconds);
 }
 
 namespace {
@@ -282,14 +286,14 @@ Result<void> Snap::run(ScriptContext& c) const {
 Result<void> SetLocked::run(ScriptContext& c) const {
     for (int id : ids) {
         if (!c.editor.level().find(id)) return Error("no entity with id " + std::to_string(id));
-        if (auto done = c.editor.set_locked(id, locked); !done) return done;
+        if (auto done = set_locked(c.editor, id, locked); !done) return done;
     }
     return ok();
 }
 Result<void> SetHidden::run(ScriptContext& c) const {
     for (int id : ids) {
         if (!c.editor.level().find(id)) return Error("no entity with id " + std::to_string(id));
-        if (auto done = c.editor.set_hidden(id, hidden); !done) return done;
+        if (auto done = set_hidden(c.editor, id, hidden); !done) return done;
     }
     return ok();
 }

@@ -1,5 +1,7 @@
 // The script language's level-logic steps (script_logic.h) run on the Editor's logic edits, and their
 // expectations checked. Every edit is the Editor's own, so a script's line is one undo step like the panel's.
+#include "model/edit_entities.h"
+#include "model/edit_logic.h"
 #include "model/script_command.h"
 
 #include "jsonio/number_text.h"
@@ -38,7 +40,7 @@ Error missing_objective(const Editor& editor, const std::string& id) {
 }
 
 Result<const std::vector<level::Link>*> links(const Editor& editor, const LinkOwner& owner) {
-    if (const auto* list = editor.links_of(owner)) return list;
+    if (const auto* list = links_of(editor, owner)) return list;
     if (owner.kind == LinkOwner::Kind::Entity)
         return Error("no entity with id " + std::to_string(owner.entity_id));
     return missing_objective(editor, owner.objective_id);
@@ -59,7 +61,7 @@ Result<void> edit_objective(Editor& editor, const std::string& id, Edit edit) {
     if (!index) return index.error();
     level::Objective objective = editor.level().objectives[static_cast<size_t>(*index)];
     edit(objective);
-    return editor.objective_set(*index, std::move(objective));
+    return objective_set(editor, *index, std::move(objective));
 }
 
 } // namespace
@@ -71,11 +73,11 @@ Result<void> LogicStep::run(ScriptContext& c) const {
 namespace steps {
 
 Result<void> Name::run(ScriptContext& c) const {
-    return c.editor.rename(entity_id, name);
+    return rename(c.editor, entity_id, name);
 }
 
 Result<void> LinkAdd::run(ScriptContext& c) const {
-    auto r = c.editor.link_add(owner, link);
+    auto r = link_add(c.editor, owner, link);
     if (!r) return r.error();
     return ok();
 }
@@ -97,15 +99,15 @@ Result<void> LinkSet::run(ScriptContext& c) const {
         changed.delay = link.delay;
     else
         changed.once = link.once;
-    return c.editor.link_set(owner, index, std::move(changed));
+    return link_set(c.editor, owner, index, std::move(changed));
 }
 
 Result<void> LinkRemove::run(ScriptContext& c) const {
-    return c.editor.link_remove(owner, index);
+    return link_remove(c.editor, owner, index);
 }
 
 Result<void> ObjectiveAdd::run(ScriptContext& c) const {
-    return c.editor.objective_add({id, text, {}, {}});
+    return objective_add(c.editor, {id, text, {}, {}});
 }
 Result<void> ObjectiveText::run(ScriptContext& c) const {
     return edit_objective(c.editor, id, [&](level::Objective& o) { o.text = text; });
@@ -116,7 +118,7 @@ Result<void> ObjectiveKill::run(ScriptContext& c) const {
 Result<void> ObjectiveRemove::run(ScriptContext& c) const {
     auto at = objective_index(c.editor, id);
     if (!at) return at.error();
-    return c.editor.objective_remove(*at);
+    return objective_remove(c.editor, *at);
 }
 Result<void> ObjectiveMove::run(ScriptContext& c) const {
     auto at = objective_index(c.editor, id);
@@ -125,7 +127,7 @@ Result<void> ObjectiveMove::run(ScriptContext& c) const {
     if (index >= static_cast<int>(count))
         return Error("no position " + std::to_string(index + 1) + " among the objectives", Location{},
                      "the level has " + std::to_string(count) + " (counted from 1)");
-    return c.editor.objective_move(*at, index);
+    return objective_move(c.editor, *at, index);
 }
 
 Result<void> ExpectObjectives::run(ScriptContext& c) const {

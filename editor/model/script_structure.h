@@ -3,7 +3,7 @@
 // (`layer ...`) and prefabs (`prefab ...`), and their expectations; parsed and registered by
 // script_structure_parser.cpp, run on the Editor by script_structure_runner.cpp. Documented in
 // docs/editor.md.
-#include "model/editor.h"
+#include "model/edit_selection.h"
 
 #include <string>
 #include <variant>

@@ -1,5 +1,9 @@
 // The script language's group, layer and prefab steps (script_structure.h) run on the Editor, and their
 // expectations checked. Every edit is the Editor's own, so a line is one undo step like the panel's.
+#include "model/edit_groups.h"
+#include "model/edit_layers.h"
+#include "model/edit_prefabs.h"
+#include "model/edit_selection.h"
 #include "model/script_command.h"
 
 #include "jsonio/suggest.h"
@@ -12,7 +16,7 @@ namespace fs = std::filesystem;
 namespace {
 
 template <class T>
-Result<void> done(const Result<T>& r) {
+Result<void> structure_done(const Result<T>& r) {
     if (!r) return r.error();
     return ok();
 }
@@ -68,42 +72,42 @@ Result<void> StructureStep::run(ScriptContext& c) const {
 namespace steps {
 
 Result<void> Group::run(ScriptContext& c) const {
-    return done(c.editor.group_selection(name));
+    return structure_done(group_selection(c.editor, name));
 }
 Result<void> Ungroup::run(ScriptContext& c) const {
-    return c.editor.ungroup_selection();
+    return ungroup_selection(c.editor);
 }
 Result<void> Enter::run(ScriptContext& c) const {
-    return c.editor.enter_group(group);
+    return enter_group(c.editor, group);
 }
 Result<void> Exit::run(ScriptContext& c) const {
-    c.editor.exit_group();
+    exit_group(c.editor);
     return ok();
 }
 Result<void> Pick::run(ScriptContext& c) const {
-    return c.editor.select_picked(entity_id, mode);
+    return select_picked(c.editor, entity_id, mode);
 }
 
 Result<void> LayerAdd::run(ScriptContext& c) const {
-    return done(c.editor.layer_add(name));
+    return structure_done(layer_add(c.editor, name));
 }
 Result<void> LayerRename::run(ScriptContext& c) const {
-    return on_layer(c.editor, layer, [&](int i) { return c.editor.layer_rename(i, name); });
+    return on_layer(c.editor, layer, [&](int i) { return layer_rename(c.editor, i, name); });
 }
 Result<void> LayerRemove::run(ScriptContext& c) const {
-    return on_layer(c.editor, layer, [&](int i) { return c.editor.layer_remove(i); });
+    return on_layer(c.editor, layer, [&](int i) { return layer_remove(c.editor, i); });
 }
 Result<void> LayerVisible::run(ScriptContext& c) const {
-    return on_layer(c.editor, layer, [&](int i) { return c.editor.layer_set_visible(i, visible); });
+    return on_layer(c.editor, layer, [&](int i) { return layer_set_visible(c.editor, i, visible); });
 }
 Result<void> LayerLocked::run(ScriptContext& c) const {
-    return on_layer(c.editor, layer, [&](int i) { return c.editor.layer_set_locked(i, locked); });
+    return on_layer(c.editor, layer, [&](int i) { return layer_set_locked(c.editor, i, locked); });
 }
 Result<void> LayerActive::run(ScriptContext& c) const {
-    return on_layer(c.editor, layer, [&](int i) { return c.editor.layer_set_active(i); });
+    return on_layer(c.editor, layer, [&](int i) { return layer_set_active(c.editor, i); });
 }
 Result<void> LayerMove::run(ScriptContext& c) const {
-    return on_layer(c.editor, layer, [&](int i) { return c.editor.move_selection_to_layer(i); });
+    return on_layer(c.editor, layer, [&](int i) { return move_selection_to_layer(c.editor, i); });
 }
 
 Result<void> PrefabFolder::run(ScriptContext& c) const {
@@ -112,28 +116,28 @@ Result<void> PrefabFolder::run(ScriptContext& c) const {
     return ok();
 }
 Result<void> PrefabSave::run(ScriptContext& c) const {
-    auto r = c.editor.save_prefab(name, title, replace);
+    auto r = save_prefab(c.editor, name, title, replace);
     if (!r) return r.error();
     c.report.saved.push_back(*r);
     return ok();
 }
 Result<void> PrefabPlace::run(ScriptContext& c) const {
-    return done(c.editor.place_prefab(name, position, yaw));
+    return structure_done(place_prefab(c.editor, name, position, yaw));
 }
 Result<void> PrefabApply::run(ScriptContext& c) const {
-    auto r = c.editor.apply_instance_to_prefab(group);
+    auto r = apply_instance_to_prefab(c.editor, group);
     if (!r) return r.error();
     c.report.saved.push_back(*r);
     return ok();
 }
 Result<void> PrefabUpdate::run(ScriptContext& c) const {
-    return done(c.editor.update_prefab_instances());
+    return structure_done(update_prefab_instances(c.editor));
 }
 Result<void> PrefabRevert::run(ScriptContext& c) const {
-    return c.editor.revert_prefab_overrides(group, entity_id, field);
+    return revert_prefab_overrides(c.editor, group, entity_id, field);
 }
 Result<void> PrefabUnlink::run(ScriptContext& c) const {
-    return c.editor.unlink_prefab(group);
+    return unlink_prefab(c.editor, group);
 }
 
 Result<void> ExpectGroups::run(ScriptContext& c) const {

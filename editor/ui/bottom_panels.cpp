@@ -1,5 +1,7 @@
 // The history, log and validation panels (bottom_panels.h).
 #include "ui/bottom_panels.h"
+#include "model/edit_selection.h"
+#include "model/quick_fix.h"
 
 #include "ui/panel_style.h"
 
@@ -80,13 +82,13 @@ void ValidationPanel::draw(const PanelContext& ctx, const Rect& rect) {
                                                       IM_COL32(90, 120, 180, 50));
             ImGui::SetTooltip("Click to select what this is about");
         }
-        if (ImGui::IsItemClicked()) ctx.report(editor.select_issue(issue), "select");
+        if (ImGui::IsItemClicked()) ctx.report(select_issue(editor, issue), "select");
         if (issue.fix.available()) {
             ImGui::Indent(40.0f);
             const bool fix = ImGui::SmallButton(issue.fix.label.c_str());
             ImGui::Unindent(40.0f);
             if (fix) {
-                ctx.report(editor.apply_quick_fix(issue), "quick fix");
+                ctx.report(apply_quick_fix(editor, issue), "quick fix");
                 ImGui::PopID();
                 break;
             }

@@ -2,6 +2,10 @@
 // (inspector.h, outliner.h, prefab_palette.h, place_palette.h, bottom_panels.h, dojo_panel.h); the menus are
 // in menus.cpp, the file prompts in file_prompts.cpp, the viewport in viewport.cpp.
 #include "ui/editor_app.h"
+#include "model/edit_entities.h"
+#include "model/edit_files.h"
+#include "model/edit_selection.h"
+#include "model/edit_transforms.h"
 
 #include "core/cli.h"
 #include "core/files.h"
@@ -68,7 +72,7 @@ Result<void> EditorApp::init() {
     if (!renderer) return renderer.error();
     renderer_ = std::move(*renderer);
     if (options_.level) {
-        if (auto r = editor_.open(*options_.level); !r) {
+        if (auto r = open(editor_, *options_.level); !r) {
             log_line(r.error().str(), true);
             return r.error();
         }
@@ -86,7 +90,7 @@ Result<void> EditorApp::init() {
         if (!view) return view.error();
         dojo_->apply_view(*view);
         if (view->robot > 0) { // preview in context: select the robot and play the clip on it
-            if (auto r = editor_.select({view->robot}); !r) return r.error();
+            if (auto r = select(editor_, {view->robot}); !r) return r.error();
             if (preview_robot() != view->robot)
                 return Error("--dojo-view: entity " + std::to_string(view->robot) + " is not a robot", {},
                              "give the id of a robot in the level (--level FILE)");
@@ -179,7 +183,8 @@ PanelContext EditorApp::context() {
 // What changes on screen with no input: a playing clip, a background job whose result is awaited.
 bool EditorApp::animating() const {
     const bool clip_playing = dojo_->playing() && (dojo_tab_ || (clip_preview_ && preview_robot() != 0));
-    return clip_playing || analysis_.running() || editor_.reachability_pending() || nav_preview_.building();
+    return clip_playing || analysis_.running() || editor_.validation().reachability_pending() ||
+           nav_preview_.building();
 }
 
 // Every frame, and while the window waits for input: the play-test's output, autosave, prefab files changed
@@ -212,7 +217,7 @@ bool EditorApp::poll_background() {
 }
 
 void EditorApp::update_title() {
-    std::string title = editor_.title();
+    std::string title = editor::title(editor_);
     if (play_.running()) title += "  [playing]";
     if (title != last_title_) {
         glfwSetWindowTitle(shell_.window(), title.c_str());
@@ -315,18 +320,18 @@ void EditorApp::handle_shortcuts() {
         if (pressed(GLFW_KEY_DELETE)) dojo_->delete_selected();
         return; // the rest acts on the level viewport
     }
-    if (ctrl && pressed(GLFW_KEY_D)) report(editor_.duplicate(), "duplicate");
-    if (ctrl && pressed(GLFW_KEY_A)) editor_.select_all();
+    if (ctrl && pressed(GLFW_KEY_D)) report(duplicate(editor_), "duplicate");
+    if (ctrl && pressed(GLFW_KEY_A)) select_all(editor_);
     if (ctrl && pressed(GLFW_KEY_C)) {
-        const std::string text = editor_.copy();
+        const std::string text = copy(editor_);
         glfwSetClipboardString(shell_.window(), text.c_str());
         log_line("copied " + std::to_string(editor_.doc().selection.size()) + " entities as JSON");
     }
     if (ctrl && pressed(GLFW_KEY_V)) {
         const char* text = glfwGetClipboardString(shell_.window());
-        report(text ? editor_.paste_text(text) : editor_.paste(), "paste");
+        report(text ? paste_text(editor_, text) : paste(editor_), "paste");
     }
-    if (pressed(GLFW_KEY_DELETE)) report(editor_.delete_selection(), "delete");
+    if (pressed(GLFW_KEY_DELETE)) report(delete_selection(editor_), "delete");
     if (pressed(GLFW_KEY_ESCAPE)) {
         if (inspector_.texture_browser().is_open())
             inspector_.texture_browser().close();
@@ -344,12 +349,12 @@ void EditorApp::handle_shortcuts() {
     if (ctrl && pressed(GLFW_KEY_G))
         shift ? ungroup_selection(editor_, log_) : group_selection(editor_, log_);
     if (flying_ || ctrl) return;
-    if (repeat(GLFW_KEY_LEFT)) report(editor_.nudge(0, -1), "nudge");
-    if (repeat(GLFW_KEY_RIGHT)) report(editor_.nudge(0, +1), "nudge");
-    if (repeat(GLFW_KEY_UP)) report(editor_.nudge(2, -1), "nudge");
-    if (repeat(GLFW_KEY_DOWN)) report(editor_.nudge(2, +1), "nudge");
-    if (repeat(GLFW_KEY_PAGE_UP)) report(editor_.nudge(1, +1), "nudge");
-    if (repeat(GLFW_KEY_PAGE_DOWN)) report(editor_.nudge(1, -1), "nudge");
+    if (repeat(GLFW_KEY_LEFT)) report(nudge(editor_, 0, -1), "nudge");
+    if (repeat(GLFW_KEY_RIGHT)) report(nudge(editor_, 0, +1), "nudge");
+    if (repeat(GLFW_KEY_UP)) report(nudge(editor_, 2, -1), "nudge");
+    if (repeat(GLFW_KEY_DOWN)) report(nudge(editor_, 2, +1), "nudge");
+    if (repeat(GLFW_KEY_PAGE_UP)) report(nudge(editor_, 1, +1), "nudge");
+    if (repeat(GLFW_KEY_PAGE_DOWN)) report(nudge(editor_, 1, -1), "nudge");
     if (pressed(GLFW_KEY_F)) focus_selection();
     if (pressed(GLFW_KEY_W)) gizmo_.mode = GizmoMode::Move;
     if (pressed(GLFW_KEY_E)) gizmo_.mode = GizmoMode::Rotate;

@@ -1,6 +1,7 @@
 // New, Open, Save and Quit, and the questions they ask first (unsaved changes, a path, overwriting,
 // recovering an autosave).
 #include "core/paths.h"
+#include "model/edit_files.h"
 #include "ui/dojo_panel.h"
 #include "ui/editor_app.h"
 
@@ -37,7 +38,7 @@ void EditorApp::request(PendingAction action, fs::path path) {
 void EditorApp::perform(PendingAction action) {
     switch (action) {
     case PendingAction::New:
-        editor_.new_document();
+        new_document(editor_);
         log_line("new level");
         break;
     case PendingAction::Open:
@@ -60,7 +61,7 @@ void EditorApp::perform(PendingAction action) {
 }
 
 void EditorApp::open_file(const fs::path& path) {
-    if (auto r = editor_.open(path); !r) {
+    if (auto r = open(editor_, path); !r) {
         log_line(r.error().str(), true);
         if (!fs::exists(path)) recent_.remove(path);
         return;
@@ -79,10 +80,10 @@ void EditorApp::save(bool save_as) {
                                                   : editor_.file_path().string().c_str());
         return;
     }
-    auto r = editor_.save();
+    auto r = editor::save(editor_);
     if (!r) {
         log_line(r.error().str(), true);
-        if (editor_.disk_status() == DiskStatus::Modified) ask_overwrite_ = true;
+        if (disk_status(editor_) == DiskStatus::Modified) ask_overwrite_ = true;
         return;
     }
     log_line((r->draft ? "saved as DRAFT (" + std::to_string(r->error_count) + " design errors): "
@@ -140,7 +141,7 @@ void EditorApp::modal_prompts() {
             const fs::path path = paths::resolve_user_path(path_input_);
             ImGui::CloseCurrentPopup();
             if (path_for_save_) {
-                auto r = editor_.save_as(path);
+                auto r = save_as(editor_, path);
                 if (!r && fs::exists(path)) {
                     pending_path_ = path;
                     ask_overwrite_ = true;
@@ -171,7 +172,8 @@ void EditorApp::modal_prompts() {
             SaveOptions options;
             options.overwrite_existing = true;
             options.overwrite_external_changes = true;
-            auto r = pending_path_.empty() ? editor_.save(options) : editor_.save_as(pending_path_, options);
+            auto r = pending_path_.empty() ? editor::save(editor_, options)
+                                           : save_as(editor_, pending_path_, options);
             if (r)
                 log_line((r->draft ? "saved as DRAFT: " : "saved ") + r->path.string(), r->draft);
             else
@@ -197,7 +199,7 @@ void EditorApp::modal_prompts() {
             ImGui::Text("The editor may have closed without saving. Recover it? (Undo returns to the file.)");
         }
         if (ImGui::Button("Recover")) {
-            report(editor_.accept_recovery(), "recover");
+            report(accept_recovery(editor_), "recover");
             ImGui::CloseCurrentPopup();
         }
         ImGui::SameLine();

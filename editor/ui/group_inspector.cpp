@@ -2,6 +2,8 @@
 // count; for a prefab instance its prefab, Apply to prefab, Revert all overrides and Unlink. The fields of a
 // prefab member that the instance keeps as its own are marked in the field table (override_marker), with
 // "Revert to prefab" in the field's context menu.
+#include "model/edit_groups.h"
+#include "model/edit_prefabs.h"
 #include "ui/inspector_sections.h"
 #include "ui/panel_style.h"
 #include "ui/structure_actions.h"
@@ -43,13 +45,13 @@ bool GroupSection::draw_group(const PanelContext& ctx) {
     // One whole group selected; or one entity of a prefab instance, shown with its instance's buttons.
     const level::Group* group = nullptr;
     bool whole = false;
-    if (const std::vector<int> groups = editor.selected_groups(); groups.size() == 1) {
+    if (const std::vector<int> groups = selected_groups(editor); groups.size() == 1) {
         group = data.find_group(groups.front());
         whole = group && group_entities_deep(data, group->id).size() == selection.size();
     }
     if (!whole) {
         group = selection.size() == 1 && selection.front() > 0
-                    ? data.find_group(editor.prefab_instance_of(selection.front()))
+                    ? data.find_group(prefab_instance_of(editor, selection.front()))
                     : nullptr;
         if (!group) return false;
     }
@@ -61,7 +63,7 @@ bool GroupSection::draw_group(const PanelContext& ctx) {
         std::snprintf(name, sizeof name, "%s", group->name.c_str());
         ImGui::SetNextItemWidth(-50);
         if (ImGui::InputText("name", name, sizeof name, ImGuiInputTextFlags_EnterReturnsTrue))
-            ctx.report(editor.rename_group(id, name), "rename group");
+            ctx.report(rename_group(editor, id, name), "rename group");
         ctx.spots.here("group.name");
         ImGui::Text("%zu entities", group_entities_deep(data, id).size());
         if (!group->groups.empty()) {
@@ -69,7 +71,7 @@ bool GroupSection::draw_group(const PanelContext& ctx) {
             ImGui::TextDisabled("(%zu groups inside)", group->groups.size());
         }
         ImGui::SameLine();
-        if (ImGui::SmallButton("Enter")) ctx.report(editor.enter_group(id), "enter group");
+        if (ImGui::SmallButton("Enter")) ctx.report(enter_group(editor, id), "enter group");
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(
                 "Pick its members one by one (or double-click one in the viewport; Esc leaves)");
@@ -96,13 +98,13 @@ bool GroupSection::draw_group(const PanelContext& ctx) {
             ImGui::SetTooltip("Rewrite the prefab file from this instance; every instance follows");
         ImGui::SameLine();
         ImGui::BeginDisabled(overridden == 0);
-        if (ImGui::Button("Revert all")) ctx.report(editor.revert_prefab_overrides(id), "revert");
+        if (ImGui::Button("Revert all")) ctx.report(revert_prefab_overrides(editor, id), "revert");
         ImGui::EndDisabled();
         ctx.spots.here("group.revert");
         if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
             ImGui::SetTooltip("Drop every override: the members follow the prefab again");
         ImGui::SameLine();
-        if (ImGui::Button("Unlink")) ctx.report(editor.unlink_prefab(id), "unlink");
+        if (ImGui::Button("Unlink")) ctx.report(unlink_prefab(editor, id), "unlink");
         ctx.spots.here("group.unlink");
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("Make it a plain group that no longer follows the prefab");
@@ -121,7 +123,7 @@ PrimaryOverrides primary_overrides(const Editor& editor) {
     const auto& selection = editor.doc().selection;
     if (selection.empty() || selection.front() <= 0) return out;
     out.entity = selection.front();
-    out.instance = editor.prefab_instance_of(out.entity);
+    out.instance = prefab_instance_of(editor, out.entity);
     if (const level::Group* group = editor.level().editor.find_group(out.instance))
         out.fields = member_overrides(*group, out.entity);
     return out;
@@ -135,7 +137,8 @@ void override_marker(const PanelContext& ctx, const PrimaryOverrides& primary, c
     const bool overridden = fields && std::find(fields->begin(), fields->end(), field) != fields->end();
     if (ImGui::BeginPopupContextItem("field_menu")) {
         if (ImGui::MenuItem("Revert to prefab", nullptr, false, overridden))
-            ctx.report(ctx.editor.revert_prefab_overrides(primary.instance, primary.entity, field), "revert");
+            ctx.report(revert_prefab_overrides(ctx.editor, primary.instance, primary.entity, field),
+                       "revert");
         ImGui::EndPopup();
     }
     if (!overridden) return;

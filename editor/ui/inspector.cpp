@@ -1,6 +1,8 @@
 // The inspector: its tabs, the Properties tab's sections in order (inspector_sections.cpp), the field value
 // widgets and the texture browser the texture field opens.
 #include "ui/inspector.h"
+#include "model/edit_entities.h"
+#include "model/edit_selection.h"
 
 #include "ui/panel_style.h"
 
@@ -24,7 +26,7 @@ const char* inspector_tab_name(InspectorTab tab) {
 }
 
 std::optional<SelectionTexture> selection_texture(const Editor& editor) {
-    const auto selected = editor.selected_entities();
+    const auto selected = selected_entities(editor);
     if (selected.empty()) return std::nullopt;
     for (const FieldDescriptor& field : common_fields(selected))
         if (field.kind == FieldKind::Texture)
@@ -148,7 +150,7 @@ void Inspector::texture_browser_window(const PanelContext& ctx, Vec2 position) {
         return;
     }
     if (auto picked = browser.draw(ctx.assets, current->name, position, ctx.spots)) {
-        ctx.report(ctx.editor.set_field(current->field, *picked), "texture");
+        ctx.report(set_field(ctx.editor, current->field, *picked), "texture");
         ctx.editor.end_merging(); // each pick is its own step
     }
 }
@@ -168,7 +170,7 @@ void Inspector::draw(const PanelContext& ctx, const Rect& rect) {
             ImGui::EndTabItem();
         }
         const Editor& editor = ctx.editor;
-        const auto selected = editor.selected_entities();
+        const auto selected = selected_entities(editor);
         char links_title[48];
         std::snprintf(links_title, sizeof links_title, "Links (%zu)###links",
                       selected.size() == 1 ? selected.front()->links.size() : editor.level().links.size());
@@ -198,7 +200,7 @@ void Inspector::draw(const PanelContext& ctx, const Rect& rect) {
 
 void Inspector::properties_tab(const PanelContext& ctx, float width) {
     InspectorSelection selection;
-    selection.entities = ctx.editor.selected_entities();
+    selection.entities = selected_entities(ctx.editor);
     selection.player_start = ctx.editor.doc().player_start_selected();
     selection.width = width;
     for (const auto& section : sections_)

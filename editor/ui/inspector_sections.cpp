@@ -5,6 +5,8 @@
 // make_inspector_sections().
 #include "ui/inspector_sections.h"
 #include "level/entity_shapes.h"
+#include "model/edit_entities.h"
+#include "model/edit_patrols.h"
 #include "ui/panel_style.h"
 
 #include <imgui.h>
@@ -25,22 +27,22 @@ void level_settings(const PanelContext& ctx, FieldWidgets& widgets) {
     std::snprintf(name, sizeof(name), "%s", editor.level().name.c_str());
     ImGui::SetNextItemWidth(-90);
     if (ImGui::InputText("Level name", name, sizeof(name), ImGuiInputTextFlags_EnterReturnsTrue))
-        ctx.report(editor.rename_level(name), "rename");
+        ctx.report(rename_level(editor, name), "rename");
     level::PlayerStart start = editor.level().player_start;
     ImGui::SetNextItemWidth(-90);
     if (ImGui::DragFloat3("Start", &start.position.x, 0.1f))
-        ctx.report(editor.set_player_start(start, "settings:player_start"), "player start");
+        ctx.report(set_player_start(editor, start, "settings:player_start"), "player start");
     if (ImGui::IsItemDeactivatedAfterEdit()) editor.end_merging();
     ImGui::SetNextItemWidth(-90);
     if (ImGui::DragFloat("Start yaw", &start.yaw, 1.0f, -360.0f, 360.0f, "%.0f deg"))
-        ctx.report(editor.set_player_start(start, "settings:player_start"), "player start");
+        ctx.report(set_player_start(editor, start, "settings:player_start"), "player start");
     if (ImGui::IsItemDeactivatedAfterEdit()) editor.end_merging();
     if (ImGui::Button("Player start at camera")) {
         const geometry::Camera& camera = ctx.window.viewport_camera().camera;
         level::PlayerStart at = start;
         at.position = camera.position - Vec3(0, 3, 0);
         at.yaw = std::remainder(degrees(camera.yaw), 360.0f);
-        ctx.report(editor.set_player_start(at), "player start");
+        ctx.report(set_player_start(editor, at), "player start");
     }
     ImGui::Separator();
     for (const auto& field : describe_settings_fields()) {
@@ -54,7 +56,7 @@ void level_settings(const PanelContext& ctx, FieldWidgets& widgets) {
         ImGui::SetNextItemWidth(-1);
         FieldValue edited = *value;
         if (widgets.edit(ctx, field, edited, false)) {
-            ctx.report(editor.set_setting(field.name, edited, "settings:" + field.name), field.name.c_str());
+            ctx.report(set_setting(editor, field.name, edited, "settings:" + field.name), field.name.c_str());
             if (field.kind == FieldKind::Sound) editor.end_merging(); // each name picked is its own step
         }
         if (ImGui::IsItemDeactivatedAfterEdit()) editor.end_merging();
@@ -79,11 +81,11 @@ class PlayerStartSection final : public InspectorSection {
         level::PlayerStart start = editor.level().player_start;
         ImGui::SetNextItemWidth(-90);
         if (ImGui::DragFloat3("position", &start.position.x, 0.1f, 0.0f, 0.0f, "%g"))
-            ctx.report(editor.set_player_start(start, "inspector:player_start"), "player start");
+            ctx.report(set_player_start(editor, start, "inspector:player_start"), "player start");
         if (ImGui::IsItemDeactivatedAfterEdit()) editor.end_merging();
         ImGui::SetNextItemWidth(-90);
         if (ImGui::DragFloat("yaw", &start.yaw, 1.0f, -180.0f, 180.0f, "%.0f deg"))
-            ctx.report(editor.set_player_start(start, "inspector:player_start"), "player start");
+            ctx.report(set_player_start(editor, start, "inspector:player_start"), "player start");
         if (ImGui::IsItemDeactivatedAfterEdit()) editor.end_merging();
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
         ImGui::TextWrapped(
@@ -95,7 +97,7 @@ class PlayerStartSection final : public InspectorSection {
             level::PlayerStart at = start;
             at.position = camera.position - Vec3(0, level::kPlayerHeight, 0);
             at.yaw = std::remainder(degrees(camera.yaw), 360.0f);
-            ctx.report(editor.set_player_start(at), "player start");
+            ctx.report(set_player_start(editor, at), "player start");
         }
         ImGui::SameLine();
         if (ImGui::Button("Focus")) ctx.window.focus_selection();
@@ -168,7 +170,7 @@ class FieldTableSection final : public InspectorSection {
             ImGui::SetNextItemWidth(-1);
             FieldValue edited = *value;
             if (widgets.edit(ctx, field, edited, mixed)) {
-                ctx.report(editor.set_field(field.name, edited, "inspector:" + field.name),
+                ctx.report(set_field(editor, field.name, edited, "inspector:" + field.name),
                            field.name.c_str());
                 if (field.kind == FieldKind::Sound || field.kind == FieldKind::Texture)
                     editor.end_merging(); // each name picked is its own step
@@ -178,7 +180,7 @@ class FieldTableSection final : public InspectorSection {
             auto def = default_entity_field(primary, field.name);
             const bool is_default = def && *def == *value && !mixed;
             if (!is_default) {
-                if (ImGui::SmallButton("R")) ctx.report(editor.revert_field(field.name), "revert");
+                if (ImGui::SmallButton("R")) ctx.report(revert_field(editor, field.name), "revert");
                 if (ImGui::IsItemHovered())
                     ImGui::SetTooltip("Revert to default: %s", def ? format_field_value(*def).c_str() : "?");
             }
@@ -217,16 +219,16 @@ class PatrolSection final : public InspectorSection {
         if (!patrol.active()) {
             ImGui::TextDisabled("No patrol: the robot wanders");
             if (ImGui::Button("Add patrol point here"))
-                ctx.report(editor.patrol_add(id, robot.position), "patrol");
+                ctx.report(patrol_add(editor, id, robot.position), "patrol");
             return;
         }
         int mode = patrol.ping_pong() ? 1 : 0;
         if (ImGui::Combo("mode", &mode, "loop\0ping_pong\0"))
-            ctx.report(editor.patrol_set_mode(id, mode == 1 ? "ping_pong" : "loop"), "patrol mode");
+            ctx.report(patrol_set_mode(editor, id, mode == 1 ? "ping_pong" : "loop"), "patrol mode");
         float wait = patrol.wait;
         if (ImGui::DragFloat("wait (s)", &wait, 0.05f, 0.0f, static_cast<float>(level::kMaxPatrolWait),
                              "%.2f"))
-            ctx.report(editor.patrol_set_wait(id, wait, "inspector:patrol.wait"), "patrol wait");
+            ctx.report(patrol_set_wait(editor, id, wait, "inspector:patrol.wait"), "patrol wait");
         if (ImGui::IsItemDeactivatedAfterEdit()) editor.end_merging();
         for (int i = 0; i < static_cast<int>(patrol.points.size()); ++i)
             if (!point_row(ctx, robot, i)) break; // the list changed under the loop
@@ -244,7 +246,7 @@ class PatrolSection final : public InspectorSection {
         char label[16];
         std::snprintf(label, sizeof label, "%d", i);
         if (ImGui::DragFloat3(label, &point.x, 0.1f, 0.0f, 0.0f, "%.2f"))
-            ctx.report(editor.patrol_move(id, i, point, "inspector:patrol." + std::to_string(i)),
+            ctx.report(patrol_move(editor, id, i, point, "inspector:patrol." + std::to_string(i)),
                        "patrol point");
         if (ImGui::IsItemDeactivatedAfterEdit()) editor.end_merging();
         ImGui::SameLine();
@@ -254,14 +256,14 @@ class PatrolSection final : public InspectorSection {
             const Vec3 at = next < patrol.points.size()
                                 ? (patrol.points[static_cast<size_t>(i)] + patrol.points[next]) * 0.5f
                                 : patrol.points[static_cast<size_t>(i)] + Vec3(2, 0, 0);
-            ctx.report(editor.patrol_add(id, at, i), "patrol add");
+            ctx.report(patrol_add(editor, id, at, i), "patrol add");
             ImGui::PopID();
             return false;
         }
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Add a point after this one");
         ImGui::SameLine();
         if (ImGui::SmallButton("x")) {
-            ctx.report(editor.patrol_remove(id, i), "patrol remove");
+            ctx.report(patrol_remove(editor, id, i), "patrol remove");
             ImGui::PopID();
             return false;
         }
@@ -289,9 +291,9 @@ class SelectionActionsSection final : public InspectorSection {
     bool applies(const InspectorSelection& s) const override { return !s.entities.empty(); }
     void draw(const PanelContext& ctx, InspectorSelection&, FieldWidgets&) override {
         ImGui::Spacing();
-        if (ImGui::Button("Duplicate")) ctx.report(ctx.editor.duplicate(), "duplicate");
+        if (ImGui::Button("Duplicate")) ctx.report(duplicate(ctx.editor), "duplicate");
         ImGui::SameLine();
-        if (ImGui::Button("Delete")) ctx.report(ctx.editor.delete_selection(), "delete");
+        if (ImGui::Button("Delete")) ctx.report(delete_selection(ctx.editor), "delete");
         ImGui::SameLine();
         if (ImGui::Button("Focus")) ctx.window.focus_selection();
     }

@@ -5,6 +5,8 @@
 // remove button; "+ Add link" below. Every change is one undo step (a dragged delay too); a link the level
 // checks find wrong is framed red with their message under it.
 #include "jsonio/json_path.h"
+#include "model/edit_logic.h"
+#include "model/edit_selection.h"
 #include "ui/editor_app.h"
 #include "ui/panel_style.h"
 #include "ui/problem_lines.h"
@@ -56,14 +58,14 @@ Result<void> EditorApp::apply_link_target(const LinkOwner& owner, int index, con
     editor_.begin_transaction("Set link target"); // naming the entity and the link's target: one step
     std::string target = option.target;
     if (option.kind == level::TargetKind::Entity) {
-        auto named = editor_.ensure_link_name(option.entity_id);
+        auto named = ensure_link_name(editor_, option.entity_id);
         if (!named) {
             editor_.cancel_transaction();
             return named.error();
         }
         target = *named;
     }
-    const std::vector<level::Link>* links = editor_.links_of(owner);
+    const std::vector<level::Link>* links = links_of(editor_, owner);
     if (!links || index < 0 || index >= static_cast<int>(links->size())) {
         editor_.cancel_transaction();
         return Error("the link being edited is gone");
@@ -73,7 +75,7 @@ Result<void> EditorApp::apply_link_target(const LinkOwner& owner, int index, con
     const std::string action =
         action_for_target(target_actions(editor_.level(), option.kind, target), link.action);
     if (!action.empty()) link.action = action;
-    auto r = editor_.link_set(owner, index, link);
+    auto r = link_set(editor_, owner, index, link);
     if (!r) {
         editor_.cancel_transaction();
         return r;
@@ -121,7 +123,7 @@ bool EditorApp::link_row(const LinkOwner& owner, int index, const std::vector<st
                          const std::string& spot) {
     const level::Level& level = editor_.level();
     level::Link link =
-        (*editor_.links_of(owner))[static_cast<size_t>(index)]; // a copy: edits change the list
+        (*links_of(editor_, owner))[static_cast<size_t>(index)]; // a copy: edits change the list
     const std::string path = jsonio::element_path(links_path(level, owner), static_cast<size_t>(index));
     const auto problems = problems_at(logic_problems_, path);
     const bool broken = std::any_of(problems.begin(), problems.end(), [](auto* p) { return p->error; });
@@ -141,7 +143,7 @@ bool EditorApp::link_row(const LinkOwner& owner, int index, const std::vector<st
         ImGui::SetNextItemWidth(width * 0.36f);
         if (auto event = choice_combo("##event", link.event, events, spots_); !event.empty()) {
             link.event = event;
-            report(editor_.link_set(owner, index, link), "link event");
+            report(link_set(editor_, owner, index, link), "link event");
             changed = true;
         }
         spots_.here(spot + ".event");
@@ -160,7 +162,7 @@ bool EditorApp::link_row(const LinkOwner& owner, int index, const std::vector<st
     const auto actions = target_actions(level, kind, link.target);
     if (auto action = choice_combo("##action", link.action, actions, spots_); !action.empty() && !changed) {
         link.action = action;
-        report(editor_.link_set(owner, index, link), "link action");
+        report(link_set(editor_, owner, index, link), "link action");
         changed = true;
     }
     spots_.here(spot + ".action");
@@ -171,8 +173,8 @@ bool EditorApp::link_row(const LinkOwner& owner, int index, const std::vector<st
                          ImGuiSliderFlags_AlwaysClamp) &&
         !changed) {
         link.delay = delay;
-        report(editor_.link_set(owner, index, link,
-                                "link delay " + owner_key(owner) + " " + std::to_string(index)),
+        report(link_set(editor_, owner, index, link,
+                        "link delay " + owner_key(owner) + " " + std::to_string(index)),
                "link delay");
     }
     if (ImGui::IsItemDeactivatedAfterEdit()) editor_.end_merging(); // one drag = one step
@@ -182,14 +184,14 @@ bool EditorApp::link_row(const LinkOwner& owner, int index, const std::vector<st
     bool once = link.once;
     if (ImGui::Checkbox("once", &once) && !changed) {
         link.once = once;
-        report(editor_.link_set(owner, index, link), "link once");
+        report(link_set(editor_, owner, index, link), "link once");
         changed = true;
     }
     spots_.here(spot + ".once");
     ImGui::SameLine();
     if (ImGui::SmallButton("x") && !changed) {
         if (picking) end_pick();
-        report(editor_.link_remove(owner, index), "remove link");
+        report(link_remove(editor_, owner, index), "remove link");
         changed = true;
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Remove this link");
@@ -200,7 +202,7 @@ bool EditorApp::link_row(const LinkOwner& owner, int index, const std::vector<st
 }
 
 void EditorApp::link_list(const LinkOwner& owner, const std::string& spot) {
-    const std::vector<level::Link>* links = editor_.links_of(owner);
+    const std::vector<level::Link>* links = links_of(editor_, owner);
     if (!links) return;
     const level::Level& level = editor_.level();
     const std::vector<std::string> events = level::event_names(owner_events(level, owner));
@@ -225,7 +227,7 @@ void EditorApp::link_list(const LinkOwner& owner, const std::string& spot) {
     }
     if (ImGui::SmallButton(("+ Add link##" + spot).c_str())) {
         // The first event it emits; the action is set again when the target is chosen.
-        auto added = editor_.link_add(owner, {events.front(), "", "open"});
+        auto added = link_add(editor_, owner, {events.front(), "", "open"});
         if (!added) log_line("add link: " + added.error().str(), true);
     }
     spots_.here(spot + "_add");
@@ -234,7 +236,7 @@ void EditorApp::link_list(const LinkOwner& owner, const std::string& spot) {
 // The Links tab: the selected entity's links (what its events set off) and the links that act on it; with
 // nothing selected, the level's own (on_start).
 void EditorApp::links_tab() {
-    const auto selected = editor_.selected_entities();
+    const auto selected = selected_entities(editor_);
     if (selected.size() > 1) {
         ImGui::TextWrapped("%zu selected: select one entity to wire its links.", selected.size());
         return;
@@ -270,7 +272,7 @@ void EditorApp::links_tab() {
         ImGui::PushID(static_cast<int>(i));
         const std::string row = incoming[i].source + ": " + incoming[i].label;
         if (ImGui::Selectable(row.c_str(), false) && incoming[i].source_entity != 0)
-            report(editor_.select({incoming[i].source_entity}), "select");
+            report(select(editor_, {incoming[i].source_entity}), "select");
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(incoming[i].source_entity != 0 ? "Click to select the source"
                                                              : "In the Objectives tab or the level settings");

@@ -1,4 +1,7 @@
 // The editor window's menu bar: File, Edit, View, Play, Help and the Level / Dojo tabs.
+#include "model/edit_entities.h"
+#include "model/edit_files.h"
+#include "model/edit_selection.h"
 #include "ui/dojo_panel.h"
 #include "ui/editor_app.h"
 
@@ -54,20 +57,20 @@ void EditorApp::menu_bar() {
         }
         ImGui::Separator();
         const bool any = !editor_.doc().selection.empty();
-        if (ImGui::MenuItem("Duplicate", "Ctrl+D", false, any)) report(editor_.duplicate(), "duplicate");
-        if (ImGui::MenuItem("Delete", "Del", false, any)) report(editor_.delete_selection(), "delete");
+        if (ImGui::MenuItem("Duplicate", "Ctrl+D", false, any)) report(duplicate(editor_), "duplicate");
+        if (ImGui::MenuItem("Delete", "Del", false, any)) report(delete_selection(editor_), "delete");
         if (ImGui::MenuItem("Copy", "Ctrl+C", false, any))
-            glfwSetClipboardString(shell_.window(), editor_.copy().c_str());
+            glfwSetClipboardString(shell_.window(), copy(editor_).c_str());
         if (ImGui::MenuItem("Paste", "Ctrl+V")) {
             const char* text = glfwGetClipboardString(shell_.window());
-            report(text ? editor_.paste_text(text) : editor_.paste(), "paste");
+            report(text ? paste_text(editor_, text) : paste(editor_), "paste");
         }
         ImGui::Separator();
-        if (ImGui::MenuItem("Select All", "Ctrl+A")) editor_.select_all();
+        if (ImGui::MenuItem("Select All", "Ctrl+A")) select_all(editor_);
         if (ImGui::BeginMenu("Select All of Type")) {
             for (auto type : level::all_types())
                 if (ImGui::MenuItem(std::string(level::type_name(type)).c_str()))
-                    editor_.select_all_of_type(type);
+                    select_all_of_type(editor_, type);
             ImGui::EndMenu();
         }
         if (ImGui::MenuItem("Select None", "Esc")) editor_.clear_selection();
@@ -124,7 +127,7 @@ void EditorApp::menu_bar() {
     }
     spots_.here("tab.dojo");
     ImGui::Separator();
-    const std::string status = editor_.title();
+    const std::string status = title(editor_);
     ImGui::TextDisabled("%s", status.c_str());
     ImGui::EndMainMenuBar();
 }

@@ -3,6 +3,7 @@
 // pick in the viewport) and on_complete links (the link-list widget); add, remove, move up and down. Every
 // change is one undo step; problems the level checks find are shown under what they are about.
 #include "jsonio/json_path.h"
+#include "model/edit_logic.h"
 #include "ui/editor_app.h"
 #include "ui/problem_lines.h"
 #include "view/link_options.h"
@@ -38,7 +39,7 @@ std::optional<std::string> text_field(const char* label, const std::string& valu
 
 Result<void> EditorApp::add_kill_name(int objective, int entity_id) {
     editor_.begin_transaction("Add to kill list"); // naming the robot and listing it: one step
-    auto named = editor_.ensure_link_name(entity_id);
+    auto named = ensure_link_name(editor_, entity_id);
     const auto& objectives = editor_.level().objectives;
     if (!named || objective < 0 || objective >= static_cast<int>(objectives.size())) {
         editor_.cancel_transaction();
@@ -47,7 +48,7 @@ Result<void> EditorApp::add_kill_name(int objective, int entity_id) {
     level::Objective edited = objectives[static_cast<size_t>(objective)];
     if (std::find(edited.kill.begin(), edited.kill.end(), *named) == edited.kill.end())
         edited.kill.push_back(*named);
-    auto r = editor_.objective_set(objective, std::move(edited));
+    auto r = objective_set(editor_, objective, std::move(edited));
     if (!r) {
         editor_.cancel_transaction();
         return r;
@@ -73,7 +74,7 @@ bool EditorApp::kill_list(int index, const level::Objective& objective, const st
         if (removed) {
             level::Objective edited = objective;
             edited.kill.erase(edited.kill.begin() + k);
-            report(editor_.objective_set(index, std::move(edited)), "kill list");
+            report(objective_set(editor_, index, std::move(edited)), "kill list");
             return false;
         }
     }
@@ -129,26 +130,26 @@ bool EditorApp::objective_item(int index) {
     if (auto id = text_field("id", objective.id)) {
         level::Objective edited = objective;
         edited.id = *id;
-        report(editor_.objective_set(index, std::move(edited)), "objective id");
+        report(objective_set(editor_, index, std::move(edited)), "objective id");
         return false;
     }
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Links name it (Enter commits; links that named it follow)");
     ImGui::SameLine();
     if (ImGui::SmallButton("Up") && index > 0) {
-        report(editor_.objective_move(index, index - 1), "move objective");
+        report(objective_move(editor_, index, index - 1), "move objective");
         return false;
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Earlier in the HUD's order");
     ImGui::SameLine();
     if (ImGui::SmallButton("Dn") && index + 1 < count) {
-        report(editor_.objective_move(index, index + 1), "move objective");
+        report(objective_move(editor_, index, index + 1), "move objective");
         return false;
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Later in the HUD's order");
     ImGui::SameLine();
     if (ImGui::SmallButton("x")) {
-        report(editor_.objective_remove(index), "remove objective");
+        report(objective_remove(editor_, index), "remove objective");
         return false;
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Remove this objective");
@@ -157,7 +158,7 @@ bool EditorApp::objective_item(int index) {
     if (auto text = text_field("text", objective.text)) {
         level::Objective edited = objective;
         edited.text = *text;
-        report(editor_.objective_set(index, std::move(edited)), "objective text");
+        report(objective_set(editor_, index, std::move(edited)), "objective text");
         return false;
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("What the HUD shows (Enter commits)");
@@ -185,7 +186,7 @@ void EditorApp::objectives_tab() {
     }
     if (count == 0) ImGui::TextDisabled("No objectives: the level is never won by them.");
     if (ImGui::Button("+ Add objective"))
-        report(editor_.objective_add({fresh_objective_id(editor_.level()), "New objective", {}, {}}),
+        report(objective_add(editor_, {fresh_objective_id(editor_.level()), "New objective", {}, {}}),
                "add objective");
     spots_.here("objective_add");
 }

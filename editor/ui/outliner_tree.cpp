@@ -3,6 +3,10 @@
 // filter or a search, a flat list of the matching entities. Only what is open or on screen is drawn (tree
 // nodes closed by default, ImGuiListClipper over the long lists), so a 2 000-entity level costs a few rows a
 // frame. The Layers tab: each layer's eye, lock, active radio, name (double-click renames), count and delete.
+#include "model/edit_groups.h"
+#include "model/edit_layers.h"
+#include "model/edit_prefabs.h"
+#include "model/edit_selection.h"
 #include "ui/outliner.h"
 #include "ui/panel_style.h"
 #include "ui/structure_actions.h"
@@ -99,7 +103,7 @@ void Outliner::entity_row(const PanelContext& ctx, int index) {
     const bool own_locked = sorted_has(doc.level.editor.locked, e.id);
     ImGui::PushStyleColor(ImGuiCol_Text, own_hidden ? kDimText : ImVec4(0.8f, 0.85f, 0.95f, 1));
     if (ImGui::SmallButton(own_hidden ? "-" : "o"))
-        ctx.report(ctx.editor.set_hidden(e.id, !own_hidden), "Hide");
+        ctx.report(set_hidden(ctx.editor, e.id, !own_hidden), "Hide");
     ImGui::PopStyleColor();
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(own_hidden ? "Hidden: click to show"
@@ -110,7 +114,7 @@ void Outliner::entity_row(const PanelContext& ctx, int index) {
                                          : locked   ? ImVec4(0.7f, 0.55f, 0.35f, 1)
                                                     : kDimText);
     if (ImGui::SmallButton(own_locked ? "L" : locked ? "l" : "."))
-        ctx.report(ctx.editor.set_locked(e.id, !own_locked), "Lock");
+        ctx.report(set_locked(ctx.editor, e.id, !own_locked), "Lock");
     ImGui::PopStyleColor();
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(own_locked ? "Locked: click to unlock"
@@ -129,10 +133,10 @@ void Outliner::entity_row(const PanelContext& ctx, int index) {
         // A row is the entity itself, wherever its group is: the group it is in is entered.
         const int parent = parent_group_of_entity(doc.level.editor, e.id);
         if (parent != 0 && parent != ctx.editor.open_group())
-            ctx.report(ctx.editor.enter_group(parent), "enter");
+            ctx.report(enter_group(ctx.editor, parent), "enter");
         if (parent == 0)
-            while (ctx.editor.open_group() != 0) ctx.editor.exit_group();
-        ctx.report(ctx.editor.select({e.id}, click_mode()), "select");
+            while (ctx.editor.open_group() != 0) exit_group(ctx.editor);
+        ctx.report(select(ctx.editor, {e.id}, click_mode()), "select");
         if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) ctx.window.focus_selection();
     }
     ImGui::PopStyleColor();
@@ -155,7 +159,7 @@ void Outliner::group_context_menu(const PanelContext& ctx, const level::Group& g
     if (!ImGui::BeginPopupContextItem("group_menu")) return;
     const int id = group.id;
     if (ImGui::MenuItem("Select")) select_group(ctx.editor, ctx.log, id);
-    if (ImGui::MenuItem("Enter group")) ctx.report(ctx.editor.enter_group(id), "enter group");
+    if (ImGui::MenuItem("Enter group")) ctx.report(enter_group(ctx.editor, id), "enter group");
     if (ImGui::MenuItem("Rename...")) {
         rename_group_ = id;
         std::snprintf(rename_buffer_, sizeof rename_buffer_, "%s", group.name.c_str());
@@ -168,8 +172,8 @@ void Outliner::group_context_menu(const PanelContext& ctx, const level::Group& g
         ImGui::Separator();
         if (ImGui::MenuItem("Apply to prefab")) apply_to_prefab(ctx.editor, ctx.log, id);
         if (ImGui::MenuItem("Revert all overrides"))
-            ctx.report(ctx.editor.revert_prefab_overrides(id), "revert");
-        if (ImGui::MenuItem("Unlink from prefab")) ctx.report(ctx.editor.unlink_prefab(id), "unlink");
+            ctx.report(revert_prefab_overrides(ctx.editor, id), "revert");
+        if (ImGui::MenuItem("Unlink from prefab")) ctx.report(unlink_prefab(ctx.editor, id), "unlink");
     }
     ImGui::EndPopup();
 }
@@ -184,7 +188,7 @@ void Outliner::rename_group_popup(const PanelContext& ctx) {
     ImGui::SetNextItemWidth(200);
     if (ImGui::InputText("##group_name", rename_buffer_, sizeof rename_buffer_,
                          ImGuiInputTextFlags_EnterReturnsTrue)) {
-        ctx.report(ctx.editor.rename_group(rename_group_, rename_buffer_), "rename group");
+        ctx.report(rename_group(ctx.editor, rename_group_, rename_buffer_), "rename group");
         rename_group_ = 0;
         ImGui::CloseCurrentPopup();
     }
@@ -281,7 +285,7 @@ void Outliner::layers_tab(const PanelContext& ctx) {
     const int active = ctx.editor.level().editor.active_layer;
     if (ImGui::SmallButton("+ Layer")) {
         const std::string name = "Layer " + std::to_string(std::max<size_t>(1, layers.size()));
-        if (auto added = ctx.editor.layer_add(name); !added)
+        if (auto added = layer_add(ctx.editor, name); !added)
             ctx.log.line("layer: " + added.error().str(), true);
     }
     ctx.spots.here("layers.add");
@@ -308,19 +312,19 @@ void Outliner::layers_tab(const PanelContext& ctx) {
         ImGui::TableNextColumn();
         ImGui::PushStyleColor(ImGuiCol_Text, layer.visible ? ImVec4(0.8f, 0.85f, 0.95f, 1) : kDimText);
         if (ImGui::SmallButton(layer.visible ? "o" : "-"))
-            ctx.report(ctx.editor.layer_set_visible(i, !layer.visible), "layer");
+            ctx.report(layer_set_visible(ctx.editor, i, !layer.visible), "layer");
         ImGui::PopStyleColor();
         ctx.spots.here(spot + ".eye");
         if (ImGui::IsItemHovered()) ImGui::SetTooltip(layer.visible ? "Shown: click to hide" : "Hidden");
         ImGui::TableNextColumn();
         ImGui::PushStyleColor(ImGuiCol_Text, layer.locked ? ImVec4(1.0f, 0.7f, 0.3f, 1) : kDimText);
         if (ImGui::SmallButton(layer.locked ? "L" : "."))
-            ctx.report(ctx.editor.layer_set_locked(i, !layer.locked), "layer");
+            ctx.report(layer_set_locked(ctx.editor, i, !layer.locked), "layer");
         ImGui::PopStyleColor();
         ctx.spots.here(spot + ".lock");
         if (ImGui::IsItemHovered()) ImGui::SetTooltip(layer.locked ? "Locked: click to unlock" : "Lock");
         ImGui::TableNextColumn();
-        if (ImGui::RadioButton("##active", active == i)) ctx.report(ctx.editor.layer_set_active(i), "layer");
+        if (ImGui::RadioButton("##active", active == i)) ctx.report(layer_set_active(ctx.editor, i), "layer");
         ctx.spots.here(spot + ".active");
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("The active layer: new entities go here");
         ImGui::TableNextColumn();
@@ -329,7 +333,7 @@ void Outliner::layers_tab(const PanelContext& ctx) {
             if (focus_rename_) ImGui::SetKeyboardFocusHere(), focus_rename_ = false;
             if (ImGui::InputText("##name", rename_buffer_, sizeof rename_buffer_,
                                  ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll)) {
-                ctx.report(ctx.editor.layer_rename(i, rename_buffer_), "rename layer");
+                ctx.report(layer_rename(ctx.editor, i, rename_buffer_), "rename layer");
                 rename_layer_ = -1;
             } else if (ImGui::IsItemDeactivated()) {
                 rename_layer_ = -1;
@@ -346,11 +350,11 @@ void Outliner::layers_tab(const PanelContext& ctx) {
             if (ImGui::BeginPopupContextItem("layer_menu")) {
                 if (ImGui::MenuItem("Move selection here", nullptr, false,
                                     !ctx.editor.doc().selection.empty()))
-                    ctx.report(ctx.editor.move_selection_to_layer(i), "move to layer");
+                    ctx.report(move_selection_to_layer(ctx.editor, i), "move to layer");
                 ctx.spots.here("layer_menu.move");
                 if (ImGui::MenuItem("Select all in layer")) {
                     const auto table = layer_table(ctx.editor.level().editor);
-                    ctx.editor.select_where([&](const level::Entity& e) {
+                    select_where(ctx.editor, [&](const level::Entity& e) {
                         auto it = table.find(e.id);
                         return (it == table.end() ? 0 : it->second) == i;
                     });
@@ -369,7 +373,7 @@ void Outliner::layers_tab(const PanelContext& ctx) {
         ImGui::TextDisabled("%d", count);
         ImGui::TableNextColumn();
         if (i > 0) {
-            if (ImGui::SmallButton("x")) ctx.report(ctx.editor.layer_remove(i), "remove layer");
+            if (ImGui::SmallButton("x")) ctx.report(layer_remove(ctx.editor, i), "remove layer");
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("Remove the layer: its entities go to Default");
         }
         ImGui::PopID();
@@ -404,7 +408,7 @@ void Outliner::outliner_tab(const PanelContext& ctx) {
     ImGui::SetNextItemWidth(-1);
     ImGui::InputTextWithHint("##search", "Search names...", search_, sizeof(search_));
     if (type_filter_ >= 0 && ImGui::Button("Select all of this type", ImVec2(-1, 0)))
-        ctx.editor.select_all_of_type(static_cast<level::EntityType>(type_filter_));
+        select_all_of_type(ctx.editor, static_cast<level::EntityType>(type_filter_));
     ImGui::BeginChild("entities", ImVec2(0, 0), false);
     tree(ctx);
     ImGui::EndChild();
@@ -421,7 +425,7 @@ void Outliner::player_start_row(const PanelContext& ctx) {
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Where the player starts: click to select, then move and turn it");
     if (!clicked) return;
-    ctx.report(ctx.editor.select({kPlayerStartId}, click_mode()), "select");
+    ctx.report(select(ctx.editor, {kPlayerStartId}, click_mode()), "select");
     if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) ctx.window.focus_selection();
 }
 

@@ -5,6 +5,7 @@
 // regains focus; thumbnails are rendered offscreen in the render pass, again only when the library's
 // revision changes.
 #include "ui/prefab_palette.h"
+#include "model/edit_prefabs.h"
 
 #include "model/bounds.h"
 #include "render/debug_draw.h"
@@ -50,7 +51,7 @@ void PrefabPalette::rescan(Editor& editor, EditorLog& log, bool focused) {
     if (!editor.prefabs().rescan() || editor.history().in_transaction()) return;
     // A prefab file changed on disk (another editor applied an instance, an edit by hand): the instances in
     // this level follow it at once, as opening the level would, in one step that undo takes back.
-    auto updated = editor.update_prefab_instances();
+    auto updated = update_prefab_instances(editor);
     if (!updated)
         log.line("prefab instances not updated: " + updated.error().str(), true);
     else if (*updated > 0)

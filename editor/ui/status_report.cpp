@@ -3,6 +3,8 @@
 // where things are on screen (palette buttons, entities, gizmo handles) and to wait for the state an input
 // should produce (selection, entity count, undo depth, dirty flag, play-test) instead of sleeping.
 #include "level/level.h"
+#include "model/edit_files.h"
+#include "model/edit_groups.h"
 #include "ui/dojo_panel.h"
 #include "ui/editor_app.h"
 
@@ -130,7 +132,7 @@ void EditorApp::structure_status(nlohmann::json& s) const {
                           {"prefab", g.has_prefab ? g.prefab.prefab : std::string()},
                           {"overrides", g.has_prefab ? json(g.prefab.overrides) : json::array()}});
     s["groups"] = groups;
-    s["selected_groups"] = editor_.selected_groups();
+    s["selected_groups"] = selected_groups(editor_);
     s["open_group"] = editor_.open_group();
     json layers = json::array();
     for (size_t i = 0; i < data.layers.size(); ++i) {
@@ -168,7 +170,7 @@ void EditorApp::write_status() {
     json s;
     s["frame"] = frame_;
     s["pid"] = static_cast<long>(getpid());
-    s["title"] = editor_.title();
+    s["title"] = title(editor_);
     s["file"] = editor_.file_path().string();
     s["entities"] = editor_.level().entities.size();
     s["selection"] = editor_.doc().selection;

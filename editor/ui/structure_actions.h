@@ -1,7 +1,7 @@
 #pragma once
 // Group and prefab actions as the window's keys, menus and panels do them: each an Editor call whose
 // outcome goes to the log (structure_actions.cpp).
-#include "model/editor.h"
+#include "model/edit_selection.h"
 #include "ui/editor_log.h"
 
 #include <string>

@@ -1,7 +1,10 @@
 // Groups, layers and prefabs from the viewport, the keys and the Edit menu: Ctrl+G / Ctrl+Shift+G, a
 // double click entering a group and Esc leaving it, the entered group's outline and hint, the "Save
 // selection as prefab..." prompt and the "Move selection to layer" submenu. Every edit is an Editor call
-// (editor_groups.cpp, editor_layers.cpp, editor_prefabs.cpp).
+// (edit_groups.h, edit_layers.h, edit_prefabs.h).
+#include "model/edit_groups.h"
+#include "model/edit_layers.h"
+#include "model/edit_prefabs.h"
 #include "ui/editor_app.h"
 #include "ui/structure_actions.h"
 
@@ -14,7 +17,7 @@ namespace ks::editor::ui {
 void EditorApp::structure_menu_items() {
     const bool any = !editor_.doc().selection.empty();
     if (ImGui::MenuItem("Group", "Ctrl+G", false, any)) group_selection(editor_, log_);
-    if (ImGui::MenuItem("Ungroup", "Ctrl+Shift+G", false, !editor_.selected_groups().empty()))
+    if (ImGui::MenuItem("Ungroup", "Ctrl+Shift+G", false, !selected_groups(editor_).empty()))
         ungroup_selection(editor_, log_);
     if (ImGui::MenuItem("Leave group", "Esc", false, editor_.open_group() != 0)) leave_group(editor_, log_);
     if (ImGui::MenuItem("Save selection as prefab...", nullptr, false, any)) open_prefab_prompt();
@@ -23,16 +26,16 @@ void EditorApp::structure_menu_items() {
     if (ImGui::BeginMenu("Move selection to layer", any)) {
         if (layers.empty()) {
             if (ImGui::MenuItem("New layer")) {
-                auto added = editor_.layer_add("Layer 1");
+                auto added = layer_add(editor_, "Layer 1");
                 if (added)
-                    report(editor_.move_selection_to_layer(*added), "move to layer");
+                    report(move_selection_to_layer(editor_, *added), "move to layer");
                 else
                     report(added.error(), "layer");
             }
         }
         for (size_t i = 0; i < layers.size(); ++i)
             if (ImGui::MenuItem(layers[i].name.c_str()))
-                report(editor_.move_selection_to_layer(static_cast<int>(i)), "move to layer");
+                report(move_selection_to_layer(editor_, static_cast<int>(i)), "move to layer");
         ImGui::EndMenu();
     }
 }
@@ -74,7 +77,7 @@ void EditorApp::prefab_prompt() {
                            prefab_name_);
     if (!prefab_error_.empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", prefab_error_.c_str());
     auto save = [&](bool replace) {
-        auto saved = editor_.save_prefab(prefab_name_, prefab_title_, replace);
+        auto saved = save_prefab(editor_, prefab_name_, prefab_title_, replace);
         if (!saved) {
             prefab_error_ = saved.error().str();
             return;

@@ -3,6 +3,9 @@
 // picking, box select, placing from the palette and the gizmo.
 #include "core/files.h"
 #include "level/level_io.h"
+#include "model/edit_entities.h"
+#include "model/edit_prefabs.h"
+#include "model/edit_selection.h"
 #include "ui/editor_app.h"
 #include "ui/layout.h"
 #include "ui/structure_actions.h"
@@ -286,7 +289,7 @@ GizmoFrame EditorApp::gizmo_frame() const {
 }
 
 void EditorApp::focus_selection() {
-    const auto selected = editor_.selected_entities();
+    const auto selected = selected_entities(editor_);
     geometry::Aabb box{Vec3(-10.0f), Vec3(10.0f)}; // an empty level
     if (editor_.doc().player_start_selected())
         box = player_obb(editor_.level().player_start).aabb();
@@ -489,10 +492,10 @@ void EditorApp::viewport_input(Vec2 origin, bool hovered) {
         if (placing_) {
             const geometry::Ray ray = view_.ray(mouse);
             if (placing_.type) {
-                auto placed = editor_.place(*placing_.type, placement_for(*placing_.type, place_point(ray)));
+                auto placed = place(editor_, *placing_.type, placement_for(*placing_.type, place_point(ray)));
                 if (!placed) log_line("place: " + placed.error().str(), true);
             } else {
-                auto placed = editor_.place_prefab(placing_.prefab, place_point(ray), 0.0f);
+                auto placed = place_prefab(editor_, placing_.prefab, place_point(ray), 0.0f);
                 if (!placed) log_line("place prefab: " + placed.error().str(), true);
             }
             if (!io.KeyShift) placing_.reset(); // Shift keeps placing
@@ -526,15 +529,16 @@ void EditorApp::viewport_input(Vec2 origin, bool hovered) {
                                [this](const level::Entity& e) { return shown(e); }, overlays_.player_start)
                                .id;
             if (id > 0) // its whole group, or inside an entered group what lies in it
-                report(editor_.select_picked(id, mode), "select");
+                report(select_picked(editor_, id, mode), "select");
             else if (id)
-                report(editor_.select({id}, mode), "select");
+                report(select(editor_, {id}, mode), "select");
             else if (mode == SelectMode::Replace)
                 editor_.clear_selection();
             return;
         }
         const Vec2 lo = glm::min(box_start_, end) - origin, hi = glm::max(box_start_, end) - origin;
-        const int n = editor_.select_picked_where(
+        const int n = select_picked_where(
+            editor_,
             [&](const level::Entity& e) {
                 Vec2 p;
                 if (!view_.project(entity_obb(e).center, p)) return false;

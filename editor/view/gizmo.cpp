@@ -1,4 +1,5 @@
 #include "view/gizmo.h"
+#include "model/edit_transforms.h"
 
 #include "level/entity_shapes.h"
 
@@ -223,7 +224,7 @@ std::string Gizmo::drag_ring(Editor& editor, const geometry::Ray& ray, const Gri
     Result<void> result;
     if (increment != 0.0f) {
         const int k = ring_axis(active_);
-        result = editor.rotate_selection_about(k, increment, space, grid.snap);
+        result = rotate_selection_about(editor, k, increment, space, grid.snap);
         if (result) applied_angle_ = degrees;
     }
     char text[96];
@@ -244,7 +245,7 @@ std::string Gizmo::drag(Editor& editor, const ViewCamera& view, Vec2 mouse, bool
     auto move_to = [&](const Vec3& total) {
         const Vec3 increment = total - applied_move_;
         if (increment != Vec3(0.0f)) {
-            result = editor.move_selection(increment);
+            result = move_selection(editor, increment);
             if (result) applied_move_ = total;
         }
         std::snprintf(text, sizeof(text), "move %+.2f, %+.2f, %+.2f", applied_move_.x, applied_move_.y,
@@ -261,7 +262,7 @@ std::string Gizmo::drag(Editor& editor, const ViewCamera& view, Vec2 mouse, bool
             target[axis] = factor;
             const Vec3 increment = target / applied_scale_;
             if (increment != Vec3(1.0f)) {
-                result = editor.scale_selection(increment);
+                result = scale_selection(editor, increment);
                 if (result) applied_scale_ = target;
             }
             std::snprintf(text, sizeof(text), "scale %c x%.2f", "xyz"[axis], applied_scale_[axis]);

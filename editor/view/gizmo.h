@@ -8,6 +8,7 @@
 // begin opens a transaction, drag applies increments (each snapped from the drag's start, so rounding never
 // accumulates), end commits, cancel reverts. The ImGui front end draws GizmoShape (ui/gizmo_draw.cpp).
 #include "model/editor.h"
+#include "model/rotation.h"
 #include "view/view_camera.h"
 
 #include <array>

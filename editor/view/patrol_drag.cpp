@@ -1,4 +1,5 @@
 #include "view/patrol_drag.h"
+#include "model/edit_patrols.h"
 
 #include "view/gizmo.h"
 
@@ -45,7 +46,7 @@ std::string PatrolDrag::drag(Editor& editor, const ViewCamera& view, Vec2 mouse)
     const auto on_plane = plane_point(view.ray(mouse), start_, kUp);
     if (!on_plane) return {}; // the plane is edge-on or behind: keep the point where it is
     const Vec3 moved = start_ + (*on_plane - grab_);
-    auto r = editor.patrol_move(hit_->robot_id, hit_->index, moved, merge_key_);
+    auto r = patrol_move(editor, hit_->robot_id, hit_->index, moved, merge_key_);
     return r ? std::string() : "patrol drag: " + r.error().str();
 }
 

@@ -1,5 +1,8 @@
 // Idle autosave with an injected clock, rotation to the newest N, and recovery after a crash.
 #include "editor_test_util.h"
+#include "model/edit_entities.h"
+#include "model/edit_files.h"
+#include "model/edit_transforms.h"
 
 #include "core/log.h"
 #include "model/autosave.h"
@@ -23,13 +26,13 @@ TEST_CASE("autosave: only after the user pauses, only when changed, and at most 
     config.max_delay_seconds = 60;
     Autosaver autosaver(config, t.clock());
     Editor ed;
-    REQUIRE(ed.save_as(dir / "lvl.json").ok());
+    REQUIRE(save_as(ed, dir / "lvl.json").ok());
 
     CHECK_FALSE(autosaver.update(ed)->has_value()); // clean: nothing to do
     t.now += 100;
     CHECK_FALSE(autosaver.update(ed)->has_value());
 
-    (void)ed.place(EntityType::Robot, {0, 0, 0});
+    (void)place(ed, EntityType::Robot, {0, 0, 0});
     CHECK_FALSE(autosaver.update(ed)->has_value()); // just changed
     t.now += 4.9;
     CHECK_FALSE(autosaver.update(ed)->has_value());
@@ -45,7 +48,7 @@ TEST_CASE("autosave: only after the user pauses, only when changed, and at most 
     // Continuous work: a change every second never pauses 5 s, but after 60 s it is saved anyway.
     int saves = 0;
     for (int i = 0; i < 70; ++i) {
-        (void)ed.move_selection({0.1f, 0, 0});
+        (void)move_selection(ed, {0.1f, 0, 0});
         t.now += 1.0;
         saves += autosaver.update(ed)->has_value();
     }
@@ -61,16 +64,16 @@ TEST_CASE("autosave: rotation keeps the newest N; untitled levels go to the conf
     config.untitled_dir = dir / "untitled";
     Autosaver autosaver(config, t.clock());
     Editor ed;
-    (void)ed.place(EntityType::Robot, {0, 0, 0});
+    (void)place(ed, EntityType::Robot, {0, 0, 0});
     CHECK_FALSE(autosaver.update(ed)->has_value()); // the frame of the change
     t.now += 10;
     auto first = autosaver.update(ed);
     REQUIRE(first->has_value());
     CHECK(**first == dir / "untitled" / "untitled.1.json");
 
-    REQUIRE(ed.save_as(dir / "room.json").ok());
+    REQUIRE(save_as(ed, dir / "room.json").ok());
     for (int i = 0; i < 5; ++i) {
-        (void)ed.place(EntityType::Pickup, {float(i), 0, 0});
+        (void)place(ed, EntityType::Pickup, {float(i), 0, 0});
         CHECK_FALSE(autosaver.update(ed)->has_value());
         t.now += 10;
         REQUIRE(autosaver.update(ed)->has_value());
@@ -93,12 +96,12 @@ TEST_CASE(
     std::string saved_text, autosaved_text;
     {
         Editor ed;
-        (void)ed.place(EntityType::Robot, {0, 0, 0});
-        REQUIRE(ed.save_as(file).ok());
+        (void)place(ed, EntityType::Robot, {0, 0, 0});
+        REQUIRE(save_as(ed, file).ok());
         saved_text = editor_test::text_of(ed);
         Autosaver autosaver({}, t.clock());
-        (void)ed.place(EntityType::Pickup, {3, 0, 0});
-        (void)ed.rename_level("Unsaved work");
+        (void)place(ed, EntityType::Pickup, {3, 0, 0});
+        (void)rename_level(ed, "Unsaved work");
         CHECK_FALSE(autosaver.update(ed)->has_value());
         t.now += 30;
         REQUIRE(autosaver.update(ed)->has_value());
@@ -107,10 +110,10 @@ TEST_CASE(
         fs::last_write_time(file, fs::last_write_time(file) - std::chrono::seconds(10));
     }
     Editor ed;
-    REQUIRE(ed.open(file).ok());
+    REQUIRE(open(ed, file).ok());
     REQUIRE(ed.recovery_offer().has_value());
     CHECK(ed.recovery_offer()->autosave.filename() == "crash.1.json");
-    REQUIRE(ed.accept_recovery().ok());
+    REQUIRE(accept_recovery(ed).ok());
     CHECK(editor_test::text_of(ed) == autosaved_text);
     CHECK(ed.has_unsaved_changes());
     CHECK(ed.file_path() == file); // Save writes to the real file, not the autosave
@@ -121,7 +124,7 @@ TEST_CASE(
 
     // Decline: nothing changes and the offer goes away.
     Editor declined;
-    REQUIRE(declined.open(file).ok());
+    REQUIRE(open(declined, file).ok());
     REQUIRE(declined.recovery_offer().has_value());
     declined.decline_recovery();
     CHECK_FALSE(declined.recovery_offer().has_value());
@@ -129,9 +132,9 @@ TEST_CASE(
 
     // Once the file is saved after the autosave, there is nothing to recover.
     REQUIRE(ed.redo());
-    REQUIRE(ed.save().ok());
+    REQUIRE(save(ed).ok());
     Editor after;
-    REQUIRE(after.open(file).ok());
+    REQUIRE(open(after, file).ok());
     CHECK_FALSE(after.recovery_offer().has_value());
     CHECK_FALSE(find_recovery(dir / "never_autosaved.json").has_value());
 }
@@ -146,7 +149,7 @@ TEST_CASE("autosave: an untitled level is recovered at start-up as an unsaved un
     {
         Editor crashed;
         Autosaver autosaver(config, t.clock());
-        (void)crashed.place(EntityType::Robot, {0, 0, 0});
+        (void)place(crashed, EntityType::Robot, {0, 0, 0});
         CHECK_FALSE(autosaver.update(crashed)->has_value());
         t.now += 10;
         REQUIRE(autosaver.update(crashed)->has_value());
@@ -157,7 +160,7 @@ TEST_CASE("autosave: an untitled level is recovered at start-up as an unsaved un
     CHECK(offer->level_file.empty());
     Editor ed;
     ed.offer_recovery(*offer);
-    REQUIRE(ed.accept_recovery().ok());
+    REQUIRE(accept_recovery(ed).ok());
     CHECK(editor_test::text_of(ed) == autosaved);
     CHECK(ed.file_path().empty());
     CHECK(ed.has_unsaved_changes());

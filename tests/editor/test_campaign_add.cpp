@@ -3,6 +3,9 @@
 // untitled, unsaved and erroneous levels and duplicates are refused with a message and leave the campaign
 // unchanged.
 #include "editor_test_util.h"
+#include "model/edit_entities.h"
+#include "model/edit_files.h"
+#include "model/edit_logic.h"
 
 #include "level/campaign.h"
 #include "model/campaign_add.h"
@@ -21,7 +24,7 @@ void build_and_save(Editor& ed, const fs::path& file) {
     auto built = run_script_text(editor_test::kTwoRoomScript, "two_rooms.kss", file.parent_path(), ed);
     REQUIRE_MESSAGE(built.ok(), (built.ok() ? std::string() : built.error().str()));
     fs::create_directories(file.parent_path());
-    auto saved = ed.save_as(file);
+    auto saved = save_as(ed, file);
     REQUIRE_MESSAGE(saved.ok(), (saved.ok() ? std::string() : saved.error().str()));
 }
 
@@ -101,21 +104,21 @@ TEST_CASE("add to campaign: refuses untitled, unsaved and erroneous levels and a
     CHECK(error_of(untitled).find("Save As") != std::string::npos);
 
     build_and_save(ed, dir / "two.json");
-    REQUIRE(ed.place(level::EntityType::Pickup, Vec3(0.0f, 0.0f, 12.0f)).ok());
+    REQUIRE(place(ed, level::EntityType::Pickup, Vec3(0.0f, 0.0f, 12.0f)).ok());
     auto unsaved = add_to_campaign(ed, campaign);
     REQUIRE_FALSE(unsaved.ok());
     CHECK(error_of(unsaved).find("unsaved changes") != std::string::npos);
 
     // A link to a target that does not exist is a design error: saved as a draft, it should not ship.
-    REQUIRE(ed.link_add(LinkOwner::level(), {"on_start", "Nobody", "open"}).ok());
-    REQUIRE(ed.save().ok());
+    REQUIRE(link_add(ed, LinkOwner::level(), {"on_start", "Nobody", "open"}).ok());
+    REQUIRE(save(ed).ok());
     auto draft = add_to_campaign(ed, campaign);
     REQUIRE_FALSE(draft.ok());
     CHECK(error_of(draft).find("design error") != std::string::npos);
     CHECK(test::read_file(campaign) == before);
 
     ed.undo();
-    REQUIRE(ed.save().ok());
+    REQUIRE(save(ed).ok());
     std::ofstream(campaign) << R"({"name": "Broken", "levels": [{"file": "gone.json", "title": "Gone"}]})";
     auto broken = add_to_campaign(ed, campaign);
     REQUIRE_FALSE(broken.ok());

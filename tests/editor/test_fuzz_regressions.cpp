@@ -4,6 +4,9 @@
 // autosave brings back every edit it held.
 #include "editor_test_util.h"
 #include "hardening/fault_support.h"
+#include "model/edit_entities.h"
+#include "model/edit_files.h"
+#include "model/edit_transforms.h"
 
 #include "core/log.h"
 #include "model/autosave.h"
@@ -62,8 +65,8 @@ TEST_CASE("faults: opening a damaged level reports the file and leaves the open 
     const std::string good = ks::test::read_file(ks::test::source_dir() / "levels" / "main.json");
     Editor ed;
     REQUIRE(run_script_text(editor_test::kTwoRoomScript, "two_rooms.kss", dir.path(), ed).ok());
-    REQUIRE(ed.save_as(dir / "two_rooms.json").ok());
-    (void)ed.place(EntityType::Robot, {2, 0, 2}); // an unsaved edit that must survive the failed opens
+    REQUIRE(save_as(ed, dir / "two_rooms.json").ok());
+    (void)place(ed, EntityType::Robot, {2, 0, 2}); // an unsaved edit that must survive the failed opens
     const std::string before = editor_test::text_of(ed);
     for (const auto& damaged : hardening::damaged_copies(good)) {
         CAPTURE(damaged.what);
@@ -72,14 +75,14 @@ TEST_CASE("faults: opening a damaged level reports the file and leaves the open 
             std::ofstream out(path, std::ios::binary | std::ios::trunc);
             out << damaged.text;
         }
-        auto opened = ed.open(path);
+        auto opened = open(ed, path);
         REQUIRE_FALSE(opened.ok());
         hardening::check_clear_error(opened.error(), path.string());
         CHECK(editor_test::text_of(ed) == before);
         CHECK(ed.file_path() == dir / "two_rooms.json");
         CHECK(ed.has_unsaved_changes());
     }
-    auto missing = ed.open(dir / "missing.json");
+    auto missing = open(ed, dir / "missing.json");
     REQUIRE_FALSE(missing.ok());
     hardening::check_clear_error(missing.error(), (dir / "missing.json").string());
     CHECK(editor_test::text_of(ed) == before);
@@ -91,36 +94,36 @@ TEST_CASE("faults: a failed Save keeps the file on disk, the edits in the editor
     const fs::path file = dir / "level.json";
     Editor ed;
     REQUIRE(run_script_text(editor_test::kTwoRoomScript, "two_rooms.kss", dir.path(), ed).ok());
-    REQUIRE(ed.save_as(file).ok());
+    REQUIRE(save_as(ed, file).ok());
     const std::string on_disk = ks::test::read_file(file);
     for (files::Fault fault : hardening::kSaveFaults) {
         CAPTURE(hardening::fault_name(fault));
-        (void)ed.place(EntityType::Pickup, {float(int(fault)), 0, 5});
+        (void)place(ed, EntityType::Pickup, {float(int(fault)), 0, 5});
         const std::string edited = editor_test::text_of(ed);
         Result<SaveReport> saved = Error("not run");
         {
             hardening::FaultGuard guard(fault);
-            saved = ed.save();
+            saved = save(ed);
         }
         REQUIRE_FALSE(saved.ok());
         hardening::check_clear_error(saved.error(), file.string());
         CHECK(ks::test::read_file(file) == on_disk);
         CHECK(editor_test::text_of(ed) == edited);
         CHECK(ed.has_unsaved_changes());
-        CHECK(ed.title().find('*') != std::string::npos);
-        CHECK(ed.disk_status() == DiskStatus::Unchanged); // the failed save did not confuse change detection
+        CHECK(title(ed).find('*') != std::string::npos);
+        CHECK(disk_status(ed) == DiskStatus::Unchanged); // the failed save did not confuse change detection
     }
     // Save As to a new name fails the same way and does not adopt the new name.
     {
         hardening::FaultGuard guard(files::Fault::OpenTemp);
-        auto saved_as = ed.save_as(dir / "elsewhere.json");
+        auto saved_as = save_as(ed, dir / "elsewhere.json");
         REQUIRE_FALSE(saved_as.ok());
     }
     CHECK_FALSE(fs::exists(dir / "elsewhere.json"));
     CHECK(ed.file_path() == file);
     // Once the disk works again, the next Save writes every edit.
     const std::string edited = editor_test::text_of(ed);
-    REQUIRE(ed.save().ok());
+    REQUIRE(save(ed).ok());
     CHECK(ks::test::read_file(file) == edited);
     CHECK_FALSE(ed.has_unsaved_changes());
 }
@@ -136,30 +139,30 @@ TEST_CASE(
         Editor ed;
         Autosaver autosaver({}, t.clock());
         REQUIRE(run_script_text(editor_test::kTwoRoomScript, "two_rooms.kss", dir.path(), ed).ok());
-        REQUIRE(ed.save_as(file).ok());
+        REQUIRE(save_as(ed, file).ok());
         saved_text = ks::test::read_file(file);
         age(file);
-        (void)ed.place(EntityType::GasCylinder, {4, 0, -4});
-        (void)ed.rename_level("Edited, then killed while saving");
+        (void)place(ed, EntityType::GasCylinder, {4, 0, -4});
+        (void)rename_level(ed, "Edited, then killed while saving");
         auto autosaved = autosave_now(autosaver, ed, t);
         REQUIRE(autosaved.ok());
         REQUIRE(autosaved->has_value());
         edited_text = editor_test::text_of(ed);
         // The process dies after writing the temporary file, before the rename.
         hardening::FaultGuard killed(files::Fault::BeforeRename);
-        REQUIRE_FALSE(ed.save().ok());
+        REQUIRE_FALSE(save(ed).ok());
     }
     CHECK(ks::test::read_file(file) == saved_text);
     CHECK(hardening::leftover_temp_files(dir.path()) == 1); // what the dead process left behind
 
     Editor restarted;
-    REQUIRE(restarted.open(file).ok()); // the stray temporary file is not in the way
+    REQUIRE(open(restarted, file).ok()); // the stray temporary file is not in the way
     CHECK(editor_test::text_of(restarted) == saved_text);
     REQUIRE(restarted.recovery_offer().has_value());
-    REQUIRE(restarted.accept_recovery().ok());
+    REQUIRE(accept_recovery(restarted).ok());
     CHECK(editor_test::text_of(restarted) == edited_text);
     CHECK(restarted.has_unsaved_changes());
-    REQUIRE(restarted.save().ok());
+    REQUIRE(save(restarted).ok());
     CHECK(ks::test::read_file(file) == edited_text);
 }
 
@@ -177,7 +180,7 @@ TEST_CASE("faults: an untitled level survives a failed Save As and a crash throu
         REQUIRE(autosave_now(autosaver, ed, t)->has_value());
         edited_text = editor_test::text_of(ed);
         hardening::FaultGuard read_only(files::Fault::OpenTemp);
-        auto saved = ed.save_as(dir / "first_save.json");
+        auto saved = save_as(ed, dir / "first_save.json");
         REQUIRE_FALSE(saved.ok());
         CHECK(saved.error().hint.find("writable") != std::string::npos);
         CHECK(ed.file_path().empty());
@@ -187,7 +190,7 @@ TEST_CASE("faults: an untitled level survives a failed Save As and a crash throu
     REQUIRE(offer.has_value());
     Editor restarted;
     restarted.offer_recovery(*offer);
-    REQUIRE(restarted.accept_recovery().ok());
+    REQUIRE(accept_recovery(restarted).ok());
     CHECK(editor_test::text_of(restarted) == edited_text);
 }
 
@@ -200,9 +203,9 @@ TEST_CASE(
     Editor ed;
     Autosaver autosaver({}, t.clock());
     REQUIRE(run_script_text(editor_test::kTwoRoomScript, "two_rooms.kss", dir.path(), ed).ok());
-    REQUIRE(ed.save_as(file).ok());
+    REQUIRE(save_as(ed, file).ok());
     age(file);
-    (void)ed.place(EntityType::Robot, {1, 0, 1});
+    (void)place(ed, EntityType::Robot, {1, 0, 1});
     auto first = autosave_now(autosaver, ed, t);
     REQUIRE(first.ok());
     REQUIRE(first->has_value());
@@ -211,7 +214,7 @@ TEST_CASE(
 
     for (files::Fault fault : hardening::kSaveFaults) {
         CAPTURE(hardening::fault_name(fault));
-        (void)ed.place(EntityType::Pickup, {float(int(fault)), 0, -3});
+        (void)place(ed, EntityType::Pickup, {float(int(fault)), 0, -3});
         Result<std::optional<fs::path>> failed = std::optional<fs::path>();
         {
             hardening::FaultGuard guard(fault);
@@ -228,7 +231,7 @@ TEST_CASE(
         CHECK(offer->autosave == first_autosave);
     }
     // The next change autosaves normally, with everything done since.
-    (void)ed.nudge(0, 1);
+    (void)nudge(ed, 0, 1);
     auto retried = autosave_now(autosaver, ed, t);
     REQUIRE(retried.ok());
     REQUIRE(retried->has_value());
@@ -242,8 +245,8 @@ TEST_CASE("faults: a failed autosave is retried after an idle period even withou
     Editor ed;
     Autosaver autosaver({}, t.clock());
     REQUIRE(run_script_text(editor_test::kTwoRoomScript, "two_rooms.kss", dir.path(), ed).ok());
-    REQUIRE(ed.save_as(dir / "level.json").ok());
-    (void)ed.place(EntityType::Robot, {1, 0, 1});
+    REQUIRE(save_as(ed, dir / "level.json").ok());
+    (void)place(ed, EntityType::Robot, {1, 0, 1});
     {
         hardening::FaultGuard full_disk(files::Fault::ShortWrite);
         auto failed = autosave_now(autosaver, ed, t);
@@ -272,9 +275,9 @@ TEST_CASE("faults: a damaged autosave is refused with its name and the document 
         Editor ed;
         Autosaver autosaver({}, t.clock());
         REQUIRE(run_script_text(editor_test::kTwoRoomScript, "two_rooms.kss", dir.path(), ed).ok());
-        REQUIRE(ed.save_as(file).ok());
+        REQUIRE(save_as(ed, file).ok());
         age(file);
-        (void)ed.place(EntityType::Robot, {1, 0, 1});
+        (void)place(ed, EntityType::Robot, {1, 0, 1});
         auto written = autosave_now(autosaver, ed, t);
         REQUIRE(written->has_value());
         autosave = **written;
@@ -286,9 +289,9 @@ TEST_CASE("faults: a damaged autosave is refused with its name and the document 
         out << autosaved.substr(0, autosaved.size() / 2);
     }
     Editor ed;
-    REQUIRE(ed.open(file).ok());
+    REQUIRE(open(ed, file).ok());
     REQUIRE(ed.recovery_offer().has_value());
-    auto accepted = ed.accept_recovery();
+    auto accepted = accept_recovery(ed);
     REQUIRE_FALSE(accepted.ok());
     hardening::check_clear_error(accepted.error(), autosave.string());
     CHECK(editor_test::text_of(ed) == saved);

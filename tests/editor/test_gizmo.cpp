@@ -2,6 +2,7 @@
 // handles keep their size on screen, end-on handles are neither shown nor hit, a drag moves by the mouse's
 // distance in world units snapped to the grid, and the whole drag is one undo step.
 #include "editor_test_util.h"
+#include "model/edit_entities.h"
 #include "view/gizmo.h"
 
 using namespace ks;
@@ -26,7 +27,7 @@ Vec2 midpoint(Vec2 a, Vec2 b) {
 Editor one_robot(Vec3 at) {
     Editor e;
     e.grid().step = 1.0f;
-    REQUIRE(e.place(level::EntityType::Robot, at).ok());
+    REQUIRE(place(e, level::EntityType::Robot, at).ok());
     return e;
 }
 } // namespace

@@ -2,7 +2,12 @@
 // its culprit (entity, or the owner and link), and its quick fix -- where it has one -- makes it go away in
 // one undo step; `fix RULE` in scripts runs them.
 #include "editor_test_util.h"
+#include "model/edit_entities.h"
+#include "model/edit_logic.h"
+#include "model/edit_selection.h"
+#include "model/edit_transforms.h"
 #include "model/logic_validation.h"
+#include "model/quick_fix.h"
 #include "model/script.h"
 
 using namespace ks;
@@ -42,7 +47,7 @@ void fix_in_one_step(Editor& ed, Rule rule) {
     REQUIRE(issues.size() == 1);
     const size_t steps = ed.history().undo_count();
     const std::string before = text_of(ed);
-    REQUIRE_MESSAGE(ed.apply_quick_fix(issues.front()).ok(), issues.front().fix.label);
+    REQUIRE_MESSAGE(apply_quick_fix(ed, issues.front()).ok(), issues.front().fix.label);
     CHECK(ed.history().undo_count() == steps + 1);
     CHECK(issues_of(ed, rule).empty());
     REQUIRE(ed.undo());
@@ -55,11 +60,11 @@ void fix_in_one_step(Editor& ed, Rule rule) {
 
 TEST_CASE("link_target: a link naming nothing is retargeted to the did-you-mean name, else removed") {
     Editor ed = two_rooms();
-    const int trigger = *ed.place(EntityType::Trigger, {0, 0, 10}, 0, "Entry");
-    REQUIRE(ed.link_add(LinkOwner::entity(trigger), rule_link("on_enter", "Door", "open")).ok());
+    const int trigger = *place(ed, EntityType::Trigger, {0, 0, 10}, 0, "Entry");
+    REQUIRE(link_add(ed, LinkOwner::entity(trigger), rule_link("on_enter", "Door", "open")).ok());
     CHECK(issues_of(ed, Rule::LinkTarget).empty()); // the good case
 
-    REQUIRE(ed.link_set(LinkOwner::entity(trigger), 0, rule_link("on_enter", "Dor", "open")).ok());
+    REQUIRE(link_set(ed, LinkOwner::entity(trigger), 0, rule_link("on_enter", "Dor", "open")).ok());
     auto issues = issues_of(ed, Rule::LinkTarget);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].severity == IssueSeverity::Error);
@@ -70,13 +75,13 @@ TEST_CASE("link_target: a link naming nothing is retargeted to the did-you-mean 
     CHECK(issues[0].fix.is<fixes::SetLink>());
     CHECK(issues[0].fix.label == "Retarget to \"Door\"");
     for (const Issue& issue : ed.issues()) CHECK(issue.rule != Rule::Format); // not reported twice
-    REQUIRE(ed.select_issue(issues[0]).ok());
+    REQUIRE(select_issue(ed, issues[0]).ok());
     CHECK(ed.doc().selection == std::vector<int>{trigger});
     fix_in_one_step(ed, Rule::LinkTarget);
-    CHECK(ed.links_of(LinkOwner::entity(trigger))->at(0) == rule_link("on_enter", "Door", "open"));
+    CHECK(links_of(ed, LinkOwner::entity(trigger))->at(0) == rule_link("on_enter", "Door", "open"));
 
     // Nothing close: the fix removes the link. On the level's own links: no entity to select.
-    REQUIRE(ed.link_add(LinkOwner::level(), rule_link("on_start", "Zebra", "open")).ok());
+    REQUIRE(link_add(ed, LinkOwner::level(), rule_link("on_start", "Zebra", "open")).ok());
     issues = issues_of(ed, Rule::LinkTarget);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].entity_id == 0);
@@ -86,7 +91,7 @@ TEST_CASE("link_target: a link naming nothing is retargeted to the did-you-mean 
     CHECK(ed.level().links.empty());
 
     // A win link must name the level.
-    REQUIRE(ed.link_add(LinkOwner::entity(trigger), rule_link("on_exit", "Door", "win")).ok());
+    REQUIRE(link_add(ed, LinkOwner::entity(trigger), rule_link("on_exit", "Door", "win")).ok());
     issues = issues_of(ed, Rule::LinkTarget);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].fix.label == "Retarget to \"level\"");
@@ -95,8 +100,8 @@ TEST_CASE("link_target: a link naming nothing is retargeted to the did-you-mean 
 
 TEST_CASE("link_target: kill-list names and links to a deleted entity") {
     Editor ed = two_rooms();
-    REQUIRE(ed.rename(kRobot, "Guard").ok());
-    REQUIRE(ed.objective_add({"clear", "Kill the guard", {"Gaurd"}, {}}).ok());
+    REQUIRE(rename(ed, kRobot, "Guard").ok());
+    REQUIRE(objective_add(ed, {"clear", "Kill the guard", {"Gaurd"}, {}}).ok());
     auto issues = issues_of(ed, Rule::LinkTarget);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].owner == LinkOwner::objective("clear"));
@@ -105,14 +110,14 @@ TEST_CASE("link_target: kill-list names and links to a deleted entity") {
     CHECK(ed.level().objectives[1].kill == std::vector<std::string>{"Guard"});
 
     // Deleting the door leaves the panel's link naming nothing, and nothing else takes "open": removed.
-    REQUIRE(ed.link_add(LinkOwner::entity(kPanel), rule_link("on_use", "Door", "open")).ok());
-    REQUIRE(ed.delete_entities({kDoor}).ok());
+    REQUIRE(link_add(ed, LinkOwner::entity(kPanel), rule_link("on_use", "Door", "open")).ok());
+    REQUIRE(delete_entities(ed, {kDoor}).ok());
     issues = issues_of(ed, Rule::LinkTarget);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].entity_id == kPanel);
     CHECK(issues[0].fix.is<fixes::RemoveLink>());
     // Deleting the guard too: its kill-list name goes.
-    REQUIRE(ed.delete_entities({kRobot}).ok());
+    REQUIRE(delete_entities(ed, {kRobot}).ok());
     run_ok(ed, "fix link_target\nexpect no_issue link_target\n");
     CHECK(ed.level().find(kPanel)->links == std::vector{rule_link("on_use", "shutdown", "complete")});
     CHECK(ed.level().objectives[1].kill.empty());
@@ -120,12 +125,12 @@ TEST_CASE("link_target: kill-list names and links to a deleted entity") {
 
 TEST_CASE("logic_loop: two doors toggling each other with no delay; the fix delays the first link") {
     Editor ed = two_rooms();
-    const int other = *ed.place(EntityType::Door, {0, 0, 30}, 0, "Other");
-    REQUIRE(ed.link_add(LinkOwner::entity(kDoor), rule_link("on_open", "Other", "toggle", 0.5f)).ok());
-    REQUIRE(ed.link_add(LinkOwner::entity(other), rule_link("on_open", "Door", "toggle")).ok());
+    const int other = *place(ed, EntityType::Door, {0, 0, 30}, 0, "Other");
+    REQUIRE(link_add(ed, LinkOwner::entity(kDoor), rule_link("on_open", "Other", "toggle", 0.5f)).ok());
+    REQUIRE(link_add(ed, LinkOwner::entity(other), rule_link("on_open", "Door", "toggle")).ok());
     CHECK(issues_of(ed, Rule::LogicLoop).empty()); // a delay breaks the loop
 
-    REQUIRE(ed.link_set(LinkOwner::entity(kDoor), 0, rule_link("on_open", "Other", "toggle")).ok());
+    REQUIRE(link_set(ed, LinkOwner::entity(kDoor), 0, rule_link("on_open", "Other", "toggle")).ok());
     auto issues = issues_of(ed, Rule::LogicLoop);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].severity == IssueSeverity::Warning);
@@ -143,11 +148,11 @@ TEST_CASE("logic_loop: two doors toggling each other with no delay; the fix dela
 TEST_CASE("objective: one nothing can complete gets an on_use -> complete link on the control panel") {
     Editor ed = two_rooms();
     CHECK(issues_of(ed, Rule::Objective).empty()); // the panel completes "shutdown"
-    REQUIRE(ed.rename(kRobot, "Guard").ok());
-    REQUIRE(ed.objective_add({"clear", "Kill the guard", {"Guard"}, {}}).ok());
+    REQUIRE(rename(ed, kRobot, "Guard").ok());
+    REQUIRE(objective_add(ed, {"clear", "Kill the guard", {"Guard"}, {}}).ok());
     CHECK(issues_of(ed, Rule::Objective).empty()); // completed by the kill list
 
-    REQUIRE(ed.objective_add({"escape", "Escape", {}, {}}).ok());
+    REQUIRE(objective_add(ed, {"escape", "Escape", {}, {}}).ok());
     auto issues = issues_of(ed, Rule::Objective);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].owner == LinkOwner::objective("escape"));
@@ -159,30 +164,30 @@ TEST_CASE("objective: one nothing can complete gets an on_use -> complete link o
                                                         rule_link("on_use", "escape", "complete")});
 
     // Without a control panel there is nothing to add the link to: no fix, and `fix objective` leaves them.
-    REQUIRE(ed.delete_entities({kPanel}).ok());
+    REQUIRE(delete_entities(ed, {kPanel}).ok());
     issues = issues_of(ed, Rule::Objective);
     REQUIRE(issues.size() == 2); // shutdown and escape
     CHECK(!issues[0].fix.available());
     run_ok(ed, "fix objective\nexpect issue objective\nexpect no_issue control_panel\n");
 
     // A spawner nothing starts: reported on the kill-list name, no fix (the hint says what to add).
-    const int spawner = *ed.place(EntityType::Spawner, {0, 0, -10}, 0, "Wave");
-    REQUIRE(ed.objective_remove(2).ok());
-    REQUIRE(ed.objective_set(0, {"shutdown", "Beat the wave", {"Wave"}, {}}).ok());
+    const int spawner = *place(ed, EntityType::Spawner, {0, 0, -10}, 0, "Wave");
+    REQUIRE(objective_remove(ed, 2).ok());
+    REQUIRE(objective_set(ed, 0, {"shutdown", "Beat the wave", {"Wave"}, {}}).ok());
     issues = issues_of(ed, Rule::Objective);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].message.find("never spawns") != std::string::npos);
     CHECK(!issues[0].fix.available());
-    const int trigger = *ed.place(EntityType::Trigger, {0, 0, 10}, 0, "Entry");
-    REQUIRE(ed.link_add(LinkOwner::entity(trigger), rule_link("on_enter", "Wave", "spawn")).ok());
+    const int trigger = *place(ed, EntityType::Trigger, {0, 0, 10}, 0, "Entry");
+    REQUIRE(link_add(ed, LinkOwner::entity(trigger), rule_link("on_enter", "Wave", "spawn")).ok());
     CHECK(issues_of(ed, Rule::Objective).empty());
     CHECK(ed.level().find(spawner) != nullptr);
 }
 
 TEST_CASE("objective: a level with no objectives and no win link can never be won; the fix adds shutdown") {
     Editor ed = two_rooms();
-    REQUIRE(ed.objective_remove(0).ok());
-    REQUIRE(ed.link_remove(LinkOwner::entity(kPanel), 0).ok());
+    REQUIRE(objective_remove(ed, 0).ok());
+    REQUIRE(link_remove(ed, LinkOwner::entity(kPanel), 0).ok());
     auto issues = issues_of(ed, Rule::Objective);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].message.find("no objectives and no link wins it") != std::string::npos);
@@ -194,22 +199,22 @@ TEST_CASE("objective: a level with no objectives and no win link can never be wo
 
     // A win link is enough; without a panel there is nothing to fix with, and the panel is missed again.
     REQUIRE(ed.undo());
-    const int trigger = *ed.place(EntityType::Trigger, {0, 0, -10}, 0, "Exit");
-    REQUIRE(ed.link_add(LinkOwner::entity(trigger), rule_link("on_enter", "level", "win")).ok());
+    const int trigger = *place(ed, EntityType::Trigger, {0, 0, -10}, 0, "Exit");
+    REQUIRE(link_add(ed, LinkOwner::entity(trigger), rule_link("on_enter", "level", "win")).ok());
     CHECK(issues_of(ed, Rule::Objective).empty());
-    REQUIRE(ed.link_remove(LinkOwner::entity(trigger), 0).ok());
-    REQUIRE(ed.delete_entities({kPanel}).ok());
+    REQUIRE(link_remove(ed, LinkOwner::entity(trigger), 0).ok());
+    REQUIRE(delete_entities(ed, {kPanel}).ok());
     issues = issues_of(ed, Rule::Objective);
     REQUIRE(issues.size() == 1);
     CHECK(!issues[0].fix.available());
     CHECK(issues_of(ed, Rule::ControlPanel).size() == 1);
-    CHECK_FALSE(ed.add_shutdown_objective().ok());
+    CHECK_FALSE(add_shutdown_objective(ed).ok());
 }
 
 TEST_CASE("locked_door: a locked door nothing frees is unlocked by the fix") {
     Editor ed = two_rooms();
-    REQUIRE(ed.select({kDoor}).ok());
-    REQUIRE(ed.set_field("locked", FieldValue(true)).ok());
+    REQUIRE(select(ed, {kDoor}).ok());
+    REQUIRE(set_field(ed, "locked", FieldValue(true)).ok());
     auto issues = issues_of(ed, Rule::LockedDoor);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].entity_id == kDoor);
@@ -219,7 +224,7 @@ TEST_CASE("locked_door: a locked door nothing frees is unlocked by the fix") {
 
     // Locked, but the robot's death unlocks it: the good case.
     REQUIRE(ed.undo());
-    REQUIRE(ed.link_add(LinkOwner::entity(kRobot), rule_link("on_death", "Door", "unlock")).ok());
+    REQUIRE(link_add(ed, LinkOwner::entity(kRobot), rule_link("on_death", "Door", "unlock")).ok());
     CHECK(issues_of(ed, Rule::LockedDoor).empty());
     run_ok(ed, "link 10 remove 1\nexpect issue locked_door 9\nfix locked_door\nexpect no_issue locked_door\n"
                "expect field 9 locked false\n");
@@ -227,13 +232,13 @@ TEST_CASE("locked_door: a locked door nothing frees is unlocked by the fix") {
 
 TEST_CASE("trigger_reach: a trigger the player or the robots can never walk into") {
     Editor ed = two_rooms();
-    const int near = *ed.place(EntityType::Trigger, {0, 0, 10}, 0, "Near");     // the player's room
-    const int behind = *ed.place(EntityType::Trigger, {0, 0, -6}, 0, "Behind"); // past the (closed) door
+    const int near = *place(ed, EntityType::Trigger, {0, 0, 10}, 0, "Near");     // the player's room
+    const int behind = *place(ed, EntityType::Trigger, {0, 0, -6}, 0, "Behind"); // past the (closed) door
     CHECK(issues_of(ed, Rule::TriggerReach).empty());
 
     // Out of the level, and hanging above the floor (the body's 3 units do not reach a box 5 units up).
-    const int outside = *ed.place(EntityType::Trigger, {60, 0, 60}, 0, "Outside");
-    const int high = *ed.place(EntityType::Trigger, {0, 5, 10}, 0, "High");
+    const int outside = *place(ed, EntityType::Trigger, {60, 0, 60}, 0, "Outside");
+    const int high = *place(ed, EntityType::Trigger, {0, 5, 10}, 0, "High");
     auto issues = issues_of(ed, Rule::TriggerReach);
     REQUIRE(issues.size() == 2);
     CHECK(issues[0].entity_id == outside);
@@ -241,8 +246,8 @@ TEST_CASE("trigger_reach: a trigger the player or the robots can never walk into
     CHECK(issues[0].message.find("the player cannot walk into its box") != std::string::npos);
     CHECK(!issues[0].fix.available());
     // Lowered to 2 units up, the box meets the player's body (3 units tall) again.
-    REQUIRE(ed.select({high}).ok());
-    REQUIRE(ed.move_selection({0, -3, 0}).ok());
+    REQUIRE(select(ed, {high}).ok());
+    REQUIRE(move_selection(ed, {0, -3, 0}).ok());
     CHECK(issues_of(ed, Rule::TriggerReach).size() == 1);
 
     // An island of floor nobody walks to: robots cannot set it off either, until a robot stands there.
@@ -251,39 +256,39 @@ TEST_CASE("trigger_reach: a trigger the player or the robots can never walk into
     issues = issues_of(ed, Rule::TriggerReach);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].message.find("no robot can walk into its box") != std::string::npos);
-    const int guard = *ed.place(EntityType::Robot, {62, 0, 62});
+    const int guard = *place(ed, EntityType::Robot, {62, 0, 62});
     CHECK(issues_of(ed, Rule::TriggerReach).empty());
-    REQUIRE(ed.select({near}).ok());
+    REQUIRE(select(ed, {near}).ok());
     REQUIRE(
-        ed.set_field("who", FieldValue(std::string("robots"))).ok()); // the robots reach the near room too
+        set_field(ed, "who", FieldValue(std::string("robots"))).ok()); // the robots reach the near room too
     CHECK(issues_of(ed, Rule::TriggerReach).empty());
-    REQUIRE(ed.select({behind}).ok());
-    REQUIRE(ed.set_field("who", FieldValue(std::string("both"))).ok());
+    REQUIRE(select(ed, {behind}).ok());
+    REQUIRE(set_field(ed, "who", FieldValue(std::string("both"))).ok());
     CHECK(issues_of(ed, Rule::TriggerReach).empty());
-    REQUIRE(ed.delete_entities({guard}).ok());
+    REQUIRE(delete_entities(ed, {guard}).ok());
     CHECK(issues_of(ed, Rule::TriggerReach).size() == 1);
 }
 
 TEST_CASE("trigger_reach: checked without a control panel, and answered off the UI thread in the window") {
     Editor ed = two_rooms();
-    REQUIRE(ed.delete_entities({kPanel}).ok());
-    const int outside = *ed.place(EntityType::Trigger, {60, 0, 60}, 0, "Outside");
+    REQUIRE(delete_entities(ed, {kPanel}).ok());
+    const int outside = *place(ed, EntityType::Trigger, {60, 0, 60}, 0, "Outside");
     REQUIRE(issues_of(ed, Rule::TriggerReach).size() == 1);
 
     Editor window = two_rooms();
     window.validation_options().background_reachability = true;
-    const int trigger = *window.place(EntityType::Trigger, {60, 0, 60}, 0, "Outside");
+    const int trigger = *place(window, EntityType::Trigger, {60, 0, 60}, 0, "Outside");
     (void)window.issues(); // starts the walk check in the background
-    window.wait_for_reachability();
+    window.validation().wait_for_reachability();
     auto issues = issues_of(window, Rule::TriggerReach);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].entity_id == trigger);
     // Triggers do not shape the mesh: moving one is answered again at once, without a new walk check.
-    const size_t checks = window.walk_checks_run();
-    REQUIRE(window.select({trigger}).ok());
-    REQUIRE(window.move_selection({-60, 0, -50}).ok());
+    const size_t checks = window.validation().walk_checks_run();
+    REQUIRE(select(window, {trigger}).ok());
+    REQUIRE(move_selection(window, {-60, 0, -50}).ok());
     CHECK(issues_of(window, Rule::TriggerReach).empty());
-    CHECK_FALSE(window.reachability_pending());
-    CHECK(window.walk_checks_run() == checks);
+    CHECK_FALSE(window.validation().reachability_pending());
+    CHECK(window.validation().walk_checks_run() == checks);
     CHECK(outside == trigger);
 }

@@ -1,6 +1,9 @@
 // Dragging patrol points in the viewport, without a window: the selected robot's point under the cursor is
 // picked, dragged on its horizontal plane, and the whole drag is one undo step.
 #include "editor_test_util.h"
+#include "model/edit_entities.h"
+#include "model/edit_patrols.h"
+#include "model/edit_selection.h"
 #include "view/patrol_drag.h"
 
 using namespace ks;
@@ -11,14 +14,14 @@ using editor_test::top_view;
 TEST_CASE("a selected robot's patrol point is picked under the cursor and dragged as one undo step") {
     Editor editor;
     editor.grid().step = 1.0f;
-    const int robot = *editor.place(level::EntityType::Robot, Vec3(0, 0, 0));
-    REQUIRE(editor.patrol_add(robot, Vec3(0, 0, 0)).ok());
-    REQUIRE(editor.patrol_add(robot, Vec3(10, 0, -5)).ok());
+    const int robot = *place(editor, level::EntityType::Robot, Vec3(0, 0, 0));
+    REQUIRE(patrol_add(editor, robot, Vec3(0, 0, 0)).ok());
+    REQUIRE(patrol_add(editor, robot, Vec3(10, 0, -5)).ok());
     const ViewCamera view = top_view();
     Vec2 at;
     REQUIRE(view.project(Vec3(10, 0, -5), at));
 
-    REQUIRE(editor.select({robot}).ok());
+    REQUIRE(select(editor, {robot}).ok());
     auto hit = pick_patrol_point(editor, view, at + Vec2(3, -2));
     REQUIRE(hit);
     CHECK(hit->robot_id == robot);
@@ -26,7 +29,7 @@ TEST_CASE("a selected robot's patrol point is picked under the cursor and dragge
     CHECK_FALSE(pick_patrol_point(editor, view, at + Vec2(40, 0))); // too far from any point
     editor.clear_selection();
     CHECK_FALSE(pick_patrol_point(editor, view, at)); // only the selected robots' routes
-    REQUIRE(editor.select({robot}).ok());
+    REQUIRE(select(editor, {robot}).ok());
 
     const std::size_t undo_depth = editor.history().undo_count();
     PatrolDrag drag;

@@ -2,6 +2,8 @@
 // is under the cursor anywhere in the picture, the nearest entity along the view wins, hidden and locked
 // entities are skipped, and a palette click lands on the surface under the cursor, snapped.
 #include "editor_test_util.h"
+#include "model/edit_entities.h"
+#include "model/edit_layers.h"
 #include "view/picking.h"
 
 using namespace ks;
@@ -23,8 +25,8 @@ ViewCamera axis_view(ViewMode mode, Vec3 centre = Vec3(0.0f), float extent = 60.
 TEST_CASE("top view picks with parallel rays anywhere in the picture") {
     Editor editor;
     editor.grid().step = 1.0f;
-    const int robot = *editor.place(level::EntityType::Robot, Vec3(-50, 0, 14));
-    const int pickup = *editor.place(level::EntityType::Pickup, Vec3(20, 0, -20));
+    const int robot = *place(editor, level::EntityType::Robot, Vec3(-50, 0, 14));
+    const int pickup = *place(editor, level::EntityType::Pickup, Vec3(20, 0, -20));
     const ViewCamera top = axis_view(ViewMode::Top);
     Vec2 at_robot, at_pickup;
     REQUIRE(top.project(Vec3(-50, 1, 14), at_robot));
@@ -34,9 +36,9 @@ TEST_CASE("top view picks with parallel rays anywhere in the picture") {
     CHECK(pick_entity(editor.doc(), top.ray(at_pickup), all_shown).id == pickup);
     CHECK(pick_entity(editor.doc(), top.ray(at_robot + Vec2(40, 0)), all_shown).id == 0);
     // Locked and hidden entities are not picked.
-    REQUIRE(editor.set_locked(robot, true).ok());
+    REQUIRE(set_locked(editor, robot, true).ok());
     CHECK(pick_entity(editor.doc(), top.ray(at_robot), all_shown).id == 0);
-    REQUIRE(editor.set_locked(robot, false).ok());
+    REQUIRE(set_locked(editor, robot, false).ok());
     CHECK(pick_entity(editor.doc(), top.ray(at_robot), [&](const level::Entity& e) {
               return e.id != robot;
           }).id == 0);
@@ -45,14 +47,14 @@ TEST_CASE("top view picks with parallel rays anywhere in the picture") {
 TEST_CASE("front view picks the nearest of entities in line along the view") {
     Editor editor;
     editor.grid().step = 1.0f;
-    const int back = *editor.place(level::EntityType::Robot, Vec3(0, 0, -10));
-    const int front_robot = *editor.place(level::EntityType::Robot, Vec3(0, 0, 10));
+    const int back = *place(editor, level::EntityType::Robot, Vec3(0, 0, -10));
+    const int front_robot = *place(editor, level::EntityType::Robot, Vec3(0, 0, 10));
     const ViewCamera front = axis_view(ViewMode::Front); // looks along -z: +z is nearer
     Vec2 p;
     REQUIRE(front.project(Vec3(0, 1, 0), p));
     const PickHit hit = pick_entity(editor.doc(), front.ray(p), all_shown);
     CHECK(hit.id == front_robot);
-    REQUIRE(editor.set_hidden(front_robot, true).ok());
+    REQUIRE(set_hidden(editor, front_robot, true).ok());
     CHECK(pick_entity(editor.doc(), front.ray(p), [&](const level::Entity& e) {
               return !editor.doc().hidden.contains(e.id);
           }).id == back);
@@ -61,7 +63,7 @@ TEST_CASE("front view picks the nearest of entities in line along the view") {
 TEST_CASE("placing lands on the surface under the cursor, snapped; else the ground or the view plane") {
     Editor editor;
     editor.grid().step = 0.5f;
-    REQUIRE(editor.place(level::EntityType::Floor, Vec3(0, 2, 0)).ok()); // a floor slab at height 2
+    REQUIRE(place(editor, level::EntityType::Floor, Vec3(0, 2, 0)).ok()); // a floor slab at height 2
     const ViewCamera top = axis_view(ViewMode::Top);
     Vec2 p;
     REQUIRE(top.project(Vec3(1.3f, 2, -2.2f), p));

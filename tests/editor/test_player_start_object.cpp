@@ -3,6 +3,9 @@
 // drawn as a body-sized figure facing its yaw.
 #include "editor_test_util.h"
 #include "level/entity_shapes.h"
+#include "model/edit_entities.h"
+#include "model/edit_selection.h"
+#include "model/edit_transforms.h"
 #include "model/script.h"
 #include "view/gizmo.h"
 #include "view/picking.h"
@@ -24,9 +27,9 @@ namespace {
 Editor small_level() {
     Editor e;
     e.grid().step = 1.0f;
-    REQUIRE(e.place(level::EntityType::Floor, Vec3(0.0f)).ok());
-    REQUIRE(e.place(level::EntityType::Robot, Vec3(-6, 0, 0)).ok());
-    REQUIRE(e.set_player_start({Vec3(4, 0, 6), 0.0f}).ok());
+    REQUIRE(place(e, level::EntityType::Floor, Vec3(0.0f)).ok());
+    REQUIRE(place(e, level::EntityType::Robot, Vec3(-6, 0, 0)).ok());
+    REQUIRE(set_player_start(e, {Vec3(4, 0, 6), 0.0f}).ok());
     e.clear_selection();
     return e;
 }
@@ -34,42 +37,42 @@ Editor small_level() {
 
 TEST_CASE("the player start is selected like an entity, alone or with others") {
     Editor editor = small_level();
-    REQUIRE(editor.select({kPlayerStartId}).ok());
+    REQUIRE(select(editor, {kPlayerStartId}).ok());
     CHECK(editor.doc().player_start_selected());
-    CHECK(editor.selected_entities().empty()); // it has no level entity
-    REQUIRE(editor.select({2}, SelectMode::Add).ok());
+    CHECK(selected_entities(editor).empty()); // it has no level entity
+    REQUIRE(select(editor, {2}, SelectMode::Add).ok());
     CHECK(editor.doc().selection == std::vector<int>{kPlayerStartId, 2});
-    REQUIRE(editor.select({kPlayerStartId}, SelectMode::Toggle).ok());
+    REQUIRE(select(editor, {kPlayerStartId}, SelectMode::Toggle).ok());
     CHECK_FALSE(editor.doc().player_start_selected());
-    REQUIRE(editor.select({kPlayerStartId}).ok());
-    editor.select_all(); // Ctrl+A: the entities
+    REQUIRE(select(editor, {kPlayerStartId}).ok());
+    select_all(editor); // Ctrl+A: the entities
     CHECK_FALSE(editor.doc().player_start_selected());
     editor.clear_selection();
     CHECK(editor.doc().selection.empty());
     // A player_start issue selects it (the start floats above the floor here).
-    REQUIRE(editor.set_player_start({Vec3(4, 2, 6), 0.0f}).ok());
+    REQUIRE(set_player_start(editor, {Vec3(4, 2, 6), 0.0f}).ok());
     editor.validation_options().check_reachability = false;
     const auto& issues = editor.issues();
     const auto floating = std::find_if(issues.begin(), issues.end(),
                                        [](const Issue& i) { return i.rule == Rule::PlayerStart; });
     REQUIRE(floating != issues.end());
-    REQUIRE(editor.select_issue(*floating).ok());
+    REQUIRE(select_issue(editor, *floating).ok());
     CHECK(editor.doc().selection == std::vector<int>{kPlayerStartId});
 }
 
 TEST_CASE("moving and turning the selected player start are undoable steps, with entities too") {
     Editor editor = small_level();
-    REQUIRE(editor.select({kPlayerStartId}).ok());
+    REQUIRE(select(editor, {kPlayerStartId}).ok());
     const size_t steps = editor.history().undo_count();
-    REQUIRE(editor.move_selection(Vec3(2, 0, -3)).ok());
+    REQUIRE(move_selection(editor, Vec3(2, 0, -3)).ok());
     CHECK(editor.level().player_start.position == Vec3(6, 0, 3));
     CHECK(editor.history().undo_count() == steps + 1);
-    REQUIRE(editor.move_selection(Vec3(0.4f, 0, 0.3f), true).ok()); // snapped: stays on the grid
+    REQUIRE(move_selection(editor, Vec3(0.4f, 0, 0.3f), true).ok()); // snapped: stays on the grid
     CHECK(editor.level().player_start.position == Vec3(6, 0, 3));
-    REQUIRE(editor.rotate_selection(92.0f).ok()); // snapped to the 15-degree step
+    REQUIRE(rotate_selection(editor, 92.0f).ok()); // snapped to the 15-degree step
     CHECK(editor.level().player_start.yaw == 90.0f);
     CHECK(editor.level().player_start.position == Vec3(6, 0, 3)); // alone: turns in place
-    const auto about_x = editor.rotate_selection_about(0, 30.0f, RotationSpace::World);
+    const auto about_x = rotate_selection_about(editor, 0, 30.0f, RotationSpace::World);
     REQUIRE_FALSE(about_x.ok()); // it turns about y only
     CHECK(about_x.error().message.find("player start turns about y only") != std::string::npos);
     CHECK(editor.undo());
@@ -81,11 +84,11 @@ TEST_CASE("moving and turning the selected player start are undoable steps, with
     CHECK(editor.level().player_start.position == Vec3(6, 0, 3));
 
     // With a robot: one step moves both; a half turn swings them about the centre between them.
-    REQUIRE(editor.select({2}, SelectMode::Add).ok());
-    REQUIRE(editor.move_selection(Vec3(0, 0, 1)).ok());
+    REQUIRE(select(editor, {2}, SelectMode::Add).ok());
+    REQUIRE(move_selection(editor, Vec3(0, 0, 1)).ok());
     CHECK(editor.level().find(2)->position == Vec3(-6, 0, 1));
     CHECK(editor.level().player_start.position == Vec3(6, 0, 4));
-    REQUIRE(editor.rotate_selection(180.0f).ok());
+    REQUIRE(rotate_selection(editor, 180.0f).ok());
     CHECK(editor.level().find(2)->position == Vec3(6, 0, 4));
     CHECK(editor.level().player_start.position == Vec3(-6, 0, 1));
     CHECK(editor.level().player_start.yaw == 180.0f);
@@ -111,7 +114,7 @@ TEST_CASE("a click on the start's body picks it before the floor under it; the g
     CHECK(pick_selectable(editor.doc(), ray, all_shown, false).id == 1); // its overlay hidden: not picked
     CHECK(pick_selectable(editor.doc(), top.ray(at + Vec2(200, 0)), all_shown, true).id != kPlayerStartId);
 
-    REQUIRE(editor.select({kPlayerStartId}).ok());
+    REQUIRE(select(editor, {kPlayerStartId}).ok());
     const GizmoFrame frame = gizmo_frame(editor.doc(), RotationSpace::World);
     CHECK(frame.pivot == editor.level().player_start.position);
     CHECK_FALSE(frame.three_axes); // the yaw ring only

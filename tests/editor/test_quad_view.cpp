@@ -3,6 +3,7 @@
 // gives back the active one, the others keep their pan and zoom), and picking through every pane's camera
 // at its own pane size, before and after a resize.
 #include "editor_test_util.h"
+#include "model/edit_entities.h"
 #include "view/picking.h"
 #include "view/quad_view.h"
 
@@ -82,8 +83,8 @@ TEST_CASE("entering the 4-up view frames the panes once, takes the single view i
 TEST_CASE("a click picks through each pane's own camera, before and after the viewport is resized") {
     Editor editor;
     editor.grid().step = 1.0f;
-    const int robot = *editor.place(level::EntityType::Robot, Vec3(12, 0, -8));
-    const int pickup = *editor.place(level::EntityType::Pickup, Vec3(-15, 0, 10));
+    const int robot = *place(editor, level::EntityType::Robot, Vec3(12, 0, -8));
+    const int pickup = *place(editor, level::EntityType::Pickup, Vec3(-15, 0, 10));
     QuadView quad;
     ViewCamera single;
     single.set_viewport(Vec2(960, 540));

@@ -1,6 +1,9 @@
 // Seeded random command sequences: after any mix of edits, undo-all gives back the byte-identical start,
 // redo-all the byte-identical end, and undoing k steps then redoing them lands on the same text.
 #include "editor_test_util.h"
+#include "model/edit_entities.h"
+#include "model/edit_selection.h"
+#include "model/edit_transforms.h"
 
 #include "core/random.h"
 #include "level/level_io.h"
@@ -20,7 +23,7 @@ void select_some(Editor& ed, Rng& rng) {
     std::vector<int> ids;
     for (const auto& e : ed.level().entities)
         if (rng.chance(0.3f)) ids.push_back(e.id);
-    (void)ed.select(ids, rng.chance(0.5f) ? SelectMode::Replace : SelectMode::Toggle);
+    (void)select(ed, ids, rng.chance(0.5f) ? SelectMode::Replace : SelectMode::Toggle);
 }
 
 // One random edit through the same calls the UI makes; failures (nothing selected, out of range) are fine,
@@ -30,44 +33,44 @@ void random_edit(Editor& ed, Rng& rng, std::string& clipboard) {
     switch (rng.below(14)) {
     case 0:
     case 1:
-        (void)ed.place(type, random_point(rng), rng.uniform(-360, 360));
+        (void)place(ed, type, random_point(rng), rng.uniform(-360, 360));
         break;
     case 2:
         select_some(ed, rng);
         break;
     case 3:
-        (void)ed.move_selection(random_point(rng) * 0.1f, rng.chance(0.5f));
+        (void)move_selection(ed, random_point(rng) * 0.1f, rng.chance(0.5f));
         break;
     case 4:
-        (void)ed.rotate_selection(rng.uniform(-200, 200));
+        (void)rotate_selection(ed, rng.uniform(-200, 200));
         break;
     case 5:
-        (void)ed.scale_selection({rng.uniform(0.5f, 2), rng.uniform(0.5f, 2), rng.uniform(0.5f, 2)});
+        (void)scale_selection(ed, {rng.uniform(0.5f, 2), rng.uniform(0.5f, 2), rng.uniform(0.5f, 2)});
         break;
     case 6:
-        (void)ed.duplicate();
+        (void)duplicate(ed);
         break;
     case 7:
-        (void)ed.delete_selection();
+        (void)delete_selection(ed);
         break;
     case 8:
-        clipboard = ed.copy();
+        clipboard = copy(ed);
         break;
     case 9:
-        (void)ed.paste_text(clipboard);
+        (void)paste_text(ed, clipboard);
         break;
     case 10:
-        (void)ed.set_field_text("name", "n" + std::to_string(rng.below(100)));
+        (void)set_field_text(ed, "name", "n" + std::to_string(rng.below(100)));
         break;
     case 11:
-        (void)ed.nudge(static_cast<int>(rng.below(3)), rng.chance(0.5f) ? 1 : -1);
+        (void)nudge(ed, static_cast<int>(rng.below(3)), rng.chance(0.5f) ? 1 : -1);
         break;
     case 12:
-        (void)ed.set_setting("fog_density", FieldValue(static_cast<double>(rng.uniform(0, 0.05f))));
+        (void)set_setting(ed, "fog_density", FieldValue(static_cast<double>(rng.uniform(0, 0.05f))));
         break;
     case 13: {
         ed.begin_transaction("Random drag");
-        for (int i = 0; i < 5; ++i) (void)ed.move_selection({rng.uniform(-1, 1), 0, rng.uniform(-1, 1)});
+        for (int i = 0; i < 5; ++i) (void)move_selection(ed, {rng.uniform(-1, 1), 0, rng.uniform(-1, 1)});
         if (rng.chance(0.3f))
             ed.cancel_transaction();
         else
@@ -83,7 +86,7 @@ TEST_CASE("random command sequences keep the undo/redo invariants (seeded)") {
         CAPTURE(seed);
         Rng rng(seed);
         Editor ed;
-        for (int i = 0; i < 8; ++i) (void)ed.place(EntityType::Pickup, random_point(rng));
+        for (int i = 0; i < 8; ++i) (void)place(ed, EntityType::Pickup, random_point(rng));
         ed.end_merging();
         // Start from a saved-like state: the first steps are the baseline.
         const size_t baseline_steps = ed.history().undo_count();

@@ -2,6 +2,9 @@
 // world and local turns (composed as quaternions, gimbal lock included), snapping, one undo step per turn or
 // ring drag, the rings the gizmo offers, and the script's axis forms.
 #include "editor_test_util.h"
+#include "model/edit_entities.h"
+#include "model/edit_selection.h"
+#include "model/edit_transforms.h"
 #include "model/rotation.h"
 #include "model/script.h"
 #include "view/gizmo.h"
@@ -36,7 +39,7 @@ Vec3 ypr_of(const Quat& q) {
 Editor one(level::EntityType type, Vec3 at = Vec3(0.0f)) {
     Editor e;
     e.grid().step = 1.0f;
-    REQUIRE(e.place(type, at).ok());
+    REQUIRE(place(e, type, at).ok());
     return e;
 }
 } // namespace
@@ -94,40 +97,40 @@ TEST_CASE("only walls, floors, stairs and control panels turn about x and z; one
     const int wall = editor.doc().selection.front();
     CHECK(selection_turns_on_three_axes(editor.doc()));
     const size_t steps = editor.history().undo_count();
-    REQUIRE(editor.rotate_selection_about(0, 28.0f, RotationSpace::Local).ok()); // snapped to 30
+    REQUIRE(rotate_selection_about(editor, 0, 28.0f, RotationSpace::Local).ok()); // snapped to 30
     CHECK(editor.level().find(wall)->rotation == Vec3(0.0f, 30.0f, 0.0f));
-    REQUIRE(editor.rotate_selection_about(2, 7.0f, RotationSpace::Local, false).ok()); // free: as given
+    REQUIRE(rotate_selection_about(editor, 2, 7.0f, RotationSpace::Local, false).ok()); // free: as given
     CHECK(editor.level().find(wall)->rotation == Vec3(0.0f, 30.0f, 7.0f));
     CHECK(editor.history().undo_count() == steps + 2);
     editor.undo();
     editor.undo();
     CHECK(editor.level().find(wall)->rotation == Vec3(0.0f));
 
-    REQUIRE(editor.place(level::EntityType::Robot, Vec3(5, 0, 0)).ok());
-    REQUIRE(editor.select({wall}, SelectMode::Add).ok());
+    REQUIRE(place(editor, level::EntityType::Robot, Vec3(5, 0, 0)).ok());
+    REQUIRE(select(editor, {wall}, SelectMode::Add).ok());
     CHECK_FALSE(selection_turns_on_three_axes(editor.doc()));
     const std::string before = editor_test::text_of(editor);
-    const auto refused = editor.rotate_selection_about(2, 30.0f, RotationSpace::World);
+    const auto refused = rotate_selection_about(editor, 2, 30.0f, RotationSpace::World);
     REQUIRE_FALSE(refused.ok());
     CHECK(refused.error().message.find("robot 2 turns about y only") != std::string::npos);
     CHECK(refused.error().message.find("wall, floor, stair, control_panel") != std::string::npos);
-    CHECK(editor_test::text_of(editor) == before);                               // nothing changed
-    REQUIRE(editor.rotate_selection_about(1, 90.0f, RotationSpace::World).ok()); // y: both turn
+    CHECK(editor_test::text_of(editor) == before);                                // nothing changed
+    REQUIRE(rotate_selection_about(editor, 1, 90.0f, RotationSpace::World).ok()); // y: both turn
     CHECK(editor.level().find(wall)->rotation.x == 90.0f);
     CHECK(editor.level().find(2)->rotation.x == 90.0f);
     // World turns swing the selection about its centre; local turns keep each in place.
     CHECK(editor.level().find(2)->position == Vec3(2.5f, 0, -2.5f));
-    REQUIRE(editor.rotate_selection_about(1, 90.0f, RotationSpace::Local).ok());
+    REQUIRE(rotate_selection_about(editor, 1, 90.0f, RotationSpace::Local).ok());
     CHECK(editor.level().find(2)->position == Vec3(2.5f, 0, -2.5f));
 }
 
 TEST_CASE("a group of walls turned about world x moves as one rigid piece") {
     Editor editor;
     editor.grid().step = 1.0f;
-    REQUIRE(editor.place(level::EntityType::Wall, Vec3(0, 0, -4)).ok());
-    REQUIRE(editor.place(level::EntityType::Wall, Vec3(0, 0, 4)).ok());
-    editor.select_all();
-    REQUIRE(editor.rotate_selection_about(0, 90.0f, RotationSpace::World).ok());
+    REQUIRE(place(editor, level::EntityType::Wall, Vec3(0, 0, -4)).ok());
+    REQUIRE(place(editor, level::EntityType::Wall, Vec3(0, 0, 4)).ok());
+    select_all(editor);
+    REQUIRE(rotate_selection_about(editor, 0, 90.0f, RotationSpace::World).ok());
     // Pivot (0, 0, 0): a right-handed turn about x takes +z to -y.
     CHECK(editor.level().find(1)->position == Vec3(0, 4, 0));
     CHECK(editor.level().find(2)->position == Vec3(0, -4, 0));
@@ -137,7 +140,7 @@ TEST_CASE("a group of walls turned about world x moves as one rigid piece") {
 TEST_CASE("the gizmo offers three rings where the selection pitches and rolls, in world or local axes") {
     Editor editor = one(level::EntityType::Wall);
     const int wall = editor.doc().selection.front();
-    REQUIRE(editor.rotate_selection_about(1, 30.0f, RotationSpace::World).ok());
+    REQUIRE(rotate_selection_about(editor, 1, 30.0f, RotationSpace::World).ok());
     ViewCamera persp;
     persp.set_viewport(kViewport);
     persp.camera.position = Vec3(12, 10, 14);
@@ -184,7 +187,7 @@ TEST_CASE("the gizmo offers three rings where the selection pitches and rolls, i
     CHECK(std::fmod(pitch, 15.0f) != 0.0f);
 
     // A robot gets the yaw ring only.
-    REQUIRE(editor.place(level::EntityType::Robot, Vec3(6, 0, 0)).ok());
+    REQUIRE(place(editor, level::EntityType::Robot, Vec3(6, 0, 0)).ok());
     const GizmoShape robot = gizmo_shape(persp, gizmo_frame(editor.doc(), RotationSpace::World));
     CHECK_FALSE(robot.ring_visible[0]);
     CHECK(robot.ring_visible[1]);

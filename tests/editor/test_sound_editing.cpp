@@ -2,6 +2,9 @@
 // marker, drawn as a speaker and a sphere, and checked against the files in assets/sounds.
 #include "core/files.h"
 #include "editor_test_util.h"
+#include "model/edit_entities.h"
+#include "model/edit_selection.h"
+#include "model/quick_fix.h"
 #include "model/script.h"
 #include "model/sound_names.h"
 #include "view/picking.h"
@@ -34,8 +37,8 @@ Editor editor_with_floor() {
     editor.validation_options().check_reachability = false;
     editor.validation_options().sound_names = kPlanSounds;
     editor.grid().step = 1.0f;
-    REQUIRE(editor.place(level::EntityType::Floor, Vec3(0.0f)).ok());
-    REQUIRE(editor.set_field("size", Vec2(40, 40)).ok());
+    REQUIRE(place(editor, level::EntityType::Floor, Vec3(0.0f)).ok());
+    REQUIRE(set_field(editor, "size", Vec2(40, 40)).ok());
     return editor;
 }
 
@@ -51,7 +54,7 @@ TEST_CASE("a palette click places a sound emitter above the surface under the cu
     const Vec3 surface = place_point(editor.doc(), top.ray(cursor), all_shown, Vec3(0.0f));
     CHECK(surface.y == doctest::Approx(0.0f));
     const size_t steps = editor.history().undo_count();
-    auto placed = editor.place(level::EntityType::Sound, placement_for(level::EntityType::Sound, surface));
+    auto placed = place(editor, level::EntityType::Sound, placement_for(level::EntityType::Sound, surface));
     REQUIRE(placed.ok());
     const level::Entity& e = *editor.level().find(*placed);
     CHECK(e.type() == level::EntityType::Sound);
@@ -69,7 +72,7 @@ TEST_CASE("a palette click places a sound emitter above the surface under the cu
 
 TEST_CASE("the inspector's sound fields: a sound-name kind, sliders, one undo step per edit, refusals") {
     Editor editor = editor_with_floor();
-    const int id = *editor.place(level::EntityType::Sound, Vec3(0, 2, 0));
+    const int id = *place(editor, level::EntityType::Sound, Vec3(0, 2, 0));
     const auto fields = describe_entity_fields(*editor.level().find(id));
     auto field = [&](const char* name) {
         auto it = std::find_if(fields.begin(), fields.end(),
@@ -87,29 +90,29 @@ TEST_CASE("the inspector's sound fields: a sound-name kind, sliders, one undo st
 
     const std::string placed = editor_test::text_of(editor);
     const size_t steps = editor.history().undo_count();
-    REQUIRE(editor.set_field("sound", FieldValue(std::string("vent_loop"))).ok());
-    REQUIRE(editor.set_field("volume", FieldValue(0.25)).ok());
-    REQUIRE(editor.set_field_text("radius", "12.5").ok());
-    REQUIRE(editor.set_field("loop", FieldValue(false)).ok());
+    REQUIRE(set_field(editor, "sound", FieldValue(std::string("vent_loop"))).ok());
+    REQUIRE(set_field(editor, "volume", FieldValue(0.25)).ok());
+    REQUIRE(set_field_text(editor, "radius", "12.5").ok());
+    REQUIRE(set_field(editor, "loop", FieldValue(false)).ok());
     CHECK(editor.history().undo_count() == steps + 4);
     const level::SoundProps edited = editor.level().find(id)->as<level::SoundProps>();
     CHECK(edited == level::SoundProps{{"vent_loop"}, 0.25f, 12.5f, false});
     const std::string after = editor_test::text_of(editor);
 
     // Bad values change nothing and record no step; the messages say what would be right.
-    auto bad_name = editor.set_field("sound", FieldValue(std::string("Vent Loop")));
+    auto bad_name = set_field(editor, "sound", FieldValue(std::string("Vent Loop")));
     REQUIRE_FALSE(bad_name.ok());
     CHECK(bad_name.error().message ==
           "Set sound: sound 2: 'sound': sound name \"Vent Loop\" has characters other "
           "than a-z, 0-9 and _");
     CHECK(bad_name.error().hint.find("write \"vent_loop\"") != std::string::npos);
-    CHECK_FALSE(editor.set_field("sound", FieldValue(std::string())).ok());
-    auto loud = editor.set_field("volume", FieldValue(1.5));
+    CHECK_FALSE(set_field(editor, "sound", FieldValue(std::string())).ok());
+    auto loud = set_field(editor, "volume", FieldValue(1.5));
     REQUIRE_FALSE(loud.ok());
     CHECK(loud.error().message == "Set volume: sound 2: 'volume' = 1.5 is out of range");
     CHECK(loud.error().hint == "valid range is 0 .. 1");
-    CHECK_FALSE(editor.set_field("radius", FieldValue(-1.0)).ok());
-    CHECK_FALSE(editor.set_field("radius", FieldValue(std::nan(""))).ok());
+    CHECK_FALSE(set_field(editor, "radius", FieldValue(-1.0)).ok());
+    CHECK_FALSE(set_field(editor, "radius", FieldValue(std::nan(""))).ok());
     CHECK(editor.history().undo_count() == steps + 4);
     CHECK(editor_test::text_of(editor) == after);
 
@@ -117,18 +120,18 @@ TEST_CASE("the inspector's sound fields: a sound-name kind, sliders, one undo st
     CHECK(editor_test::text_of(editor) == placed);
     for (int i = 0; i < 4; ++i) REQUIRE(editor.redo());
     CHECK(editor_test::text_of(editor) == after);
-    REQUIRE(editor.revert_field("volume").ok());
+    REQUIRE(revert_field(editor, "volume").ok());
     CHECK(editor.level().find(id)->as<level::SoundProps>().volume == 1.0f);
 }
 
 TEST_CASE("the level's ambient_sound is a setting: set, emptied for none, undone") {
     Editor editor = editor_with_floor();
     const std::string before = editor_test::text_of(editor);
-    REQUIRE(editor.set_setting_text("ambient_sound", "ambient_dojo").ok());
+    REQUIRE(set_setting_text(editor, "ambient_sound", "ambient_dojo").ok());
     CHECK(editor.level().settings.ambient_sound.value == "ambient_dojo");
-    REQUIRE(editor.set_setting("ambient_sound", FieldValue(std::string())).ok());
+    REQUIRE(set_setting(editor, "ambient_sound", FieldValue(std::string())).ok());
     CHECK(editor.level().settings.ambient_sound.value.empty());
-    CHECK_FALSE(editor.set_setting_text("ambient_sound", "Ambient Dojo").ok());
+    CHECK_FALSE(set_setting_text(editor, "ambient_sound", "Ambient Dojo").ok());
     REQUIRE(editor.undo());
     REQUIRE(editor.undo());
     CHECK(editor_test::text_of(editor) == before);
@@ -136,7 +139,7 @@ TEST_CASE("the level's ambient_sound is a setting: set, emptied for none, undone
 
 TEST_CASE("a click on a sound emitter's marker picks it; a click beside it does not") {
     Editor editor = editor_with_floor();
-    const int id = *editor.place(level::EntityType::Sound, Vec3(5, 2, 5));
+    const int id = *place(editor, level::EntityType::Sound, Vec3(5, 2, 5));
     editor.clear_selection();
     ViewCamera top;
     top.set_viewport({960, 540});
@@ -145,8 +148,8 @@ TEST_CASE("a click on a sound emitter's marker picks it; a click beside it does 
     REQUIRE(top.project(Vec3(5, 2, 5), at));
     const PickHit hit = pick_entity(editor.doc(), top.ray(at), all_shown);
     CHECK(hit.id == id); // above the floor, so it is hit first
-    REQUIRE(editor.select({hit.id}).ok());
-    CHECK(editor.selected_entities().front()->type() == level::EntityType::Sound);
+    REQUIRE(select(editor, {hit.id}).ok());
+    CHECK(selected_entities(editor).front()->type() == level::EntityType::Sound);
     Vec2 beside;
     REQUIRE(top.project(Vec3(5 + 2 * level::kSoundMarkerHalfSize, 2, 5), beside));
     CHECK(pick_entity(editor.doc(), top.ray(beside), all_shown).id != id);
@@ -183,10 +186,10 @@ TEST_CASE("the marker: a speaker inside the pick box from any view, and the radi
 
 TEST_CASE("validation: an unknown sound is an error with a did-you-mean and a fix; known ones pass") {
     Editor editor = editor_with_floor();
-    const int id = *editor.place(level::EntityType::Sound, Vec3(0, 2, 0), 0, "hum");
+    const int id = *place(editor, level::EntityType::Sound, Vec3(0, 2, 0), 0, "hum");
     CHECK(sound_issues(editor).empty()); // machine_hum, the default, is known; so is ambient_facility
 
-    REQUIRE(editor.set_field("sound", FieldValue(std::string("machine_hmu"))).ok());
+    REQUIRE(set_field(editor, "sound", FieldValue(std::string("machine_hmu"))).ok());
     auto issues = sound_issues(editor);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].severity == IssueSeverity::Error);
@@ -196,12 +199,12 @@ TEST_CASE("validation: an unknown sound is an error with a did-you-mean and a fi
               " 'hum' plays \"machine_hmu\", which is not a file in assets/sounds; did you "
               "mean \"machine_hum\"?");
     CHECK(issues[0].fix.is<fixes::SetField>());
-    REQUIRE(editor.apply_quick_fix(issues[0]).ok());
+    REQUIRE(apply_quick_fix(editor, issues[0]).ok());
     CHECK(editor.level().find(id)->as<level::SoundProps>().sound.value == "machine_hum");
     CHECK(sound_issues(editor).empty());
 
     // Nothing close: the message lists the sounds there are, and there is no fix to guess.
-    REQUIRE(editor.set_field("sound", FieldValue(std::string("thunder"))).ok());
+    REQUIRE(set_field(editor, "sound", FieldValue(std::string("thunder"))).ok());
     issues = sound_issues(editor);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].message.find(
@@ -211,17 +214,17 @@ TEST_CASE("validation: an unknown sound is an error with a did-you-mean and a fi
     REQUIRE(editor.undo());
 
     // The level's ambient loop, fixed through the settings (one undoable step).
-    REQUIRE(editor.set_setting_text("ambient_sound", "ambient_facilty").ok());
+    REQUIRE(set_setting_text(editor, "ambient_sound", "ambient_facilty").ok());
     issues = sound_issues(editor);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].entity_id == 0);
     CHECK(issues[0].message == "the level's ambient_sound is \"ambient_facilty\", which is not a file in "
                                "assets/sounds; did you mean \"ambient_facility\"?");
     CHECK(issues[0].fix.is<fixes::SetSetting>());
-    REQUIRE(editor.apply_quick_fix(issues[0]).ok());
+    REQUIRE(apply_quick_fix(editor, issues[0]).ok());
     CHECK(editor.level().settings.ambient_sound.value == "ambient_facility");
     CHECK(sound_issues(editor).empty());
-    REQUIRE(editor.set_setting("ambient_sound", FieldValue(std::string())).ok());
+    REQUIRE(set_setting(editor, "ambient_sound", FieldValue(std::string())).ok());
     CHECK(sound_issues(editor).empty()); // none is allowed
 
     // A name the format refuses is the format rule's, not reported twice.
@@ -252,8 +255,8 @@ TEST_CASE("sound names are the .wav files of the folder; a missing folder gives 
     // Validation against that folder's names, as the window passes them.
     Editor editor = editor_with_floor();
     editor.validation_options().sound_names = sound_names_in(dir.path());
-    REQUIRE(editor.place(level::EntityType::Sound, Vec3(0, 2, 0)).ok()); // machine_hum: not in this folder
-    REQUIRE(editor.set_setting_text("ambient_sound", "").ok());
+    REQUIRE(place(editor, level::EntityType::Sound, Vec3(0, 2, 0)).ok()); // machine_hum: not in this folder
+    REQUIRE(set_setting_text(editor, "ambient_sound", "").ok());
     const auto issues = sound_issues(editor);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].message.find("\"machine_hum\", which is not a file in assets/sounds (known sounds: "

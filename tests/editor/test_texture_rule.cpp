@@ -3,6 +3,9 @@
 // `fix texture`, and the texture browser's search.
 #include "editor_test_util.h"
 #include "level/texture_names.h"
+#include "model/edit_entities.h"
+#include "model/edit_selection.h"
+#include "model/quick_fix.h"
 #include "model/script.h"
 #include "view/texture_search.h"
 
@@ -22,8 +25,8 @@ std::vector<Issue> texture_issues(Editor& editor) {
 Editor two_walls() {
     Editor editor;
     editor.validation_options().check_reachability = false;
-    REQUIRE(editor.place(level::EntityType::Wall, Vec3(0.0f), 0.0f, "North").ok());
-    REQUIRE(editor.place(level::EntityType::Stair, Vec3(10, 0, 0)).ok());
+    REQUIRE(place(editor, level::EntityType::Wall, Vec3(0.0f), 0.0f, "North").ok());
+    REQUIRE(place(editor, level::EntityType::Stair, Vec3(10, 0, 0)).ok());
     return editor;
 }
 } // namespace
@@ -45,10 +48,10 @@ TEST_CASE("texture fields are their own kind; an empty name is refused, an unkno
 TEST_CASE("an unknown texture is a validation error with the closest material as its quick fix") {
     Editor editor = two_walls();
     CHECK(texture_issues(editor).empty());
-    REQUIRE(editor.select({1}).ok());
-    REQUIRE(editor.set_field("texture", FieldValue(std::string("concret"))).ok());
-    REQUIRE(editor.select({2}).ok());
-    REQUIRE(editor.set_field("texture", FieldValue(std::string("granite_blocks"))).ok());
+    REQUIRE(select(editor, {1}).ok());
+    REQUIRE(set_field(editor, "texture", FieldValue(std::string("concret"))).ok());
+    REQUIRE(select(editor, {2}).ok());
+    REQUIRE(set_field(editor, "texture", FieldValue(std::string("granite_blocks"))).ok());
     auto issues = texture_issues(editor);
     REQUIRE(issues.size() == 2);
     const Issue& typo = issues[0];
@@ -66,7 +69,7 @@ TEST_CASE("an unknown texture is a validation error with the closest material as
         if (issue.message.find("granite") != std::string::npos) CHECK(issue.rule == Rule::Texture);
 
     const size_t steps = editor.history().undo_count();
-    REQUIRE(editor.apply_quick_fix(typo).ok());
+    REQUIRE(apply_quick_fix(editor, typo).ok());
     CHECK(editor.level().find(1)->as<level::WallProps>().texture == "concrete");
     CHECK(editor.history().undo_count() == steps + 1);
     CHECK(texture_issues(editor).size() == 1);

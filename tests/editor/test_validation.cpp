@@ -1,6 +1,13 @@
 // Every design rule: it fires on a level built to break it, names the offender, and its quick fix (where
 // there is one) makes it go away. The shipped main level and the scripted two-room level pass them all.
 #include "editor_test_util.h"
+#include "model/edit_entities.h"
+#include "model/edit_layers.h"
+#include "model/edit_logic.h"
+#include "model/edit_patrols.h"
+#include "model/edit_selection.h"
+#include "model/edit_transforms.h"
+#include "model/quick_fix.h"
 
 #include "core/log.h"
 #include "model/reachability.h"
@@ -45,9 +52,10 @@ void wall_in_box(Editor& ed, const Vec3& c) {
     for (const auto& [offset, size] :
          {std::pair{Vec3(0, 0, -3), Vec3(6.5f, 16, 0.5f)}, std::pair{Vec3(0, 0, 3), Vec3(6.5f, 16, 0.5f)},
           std::pair{Vec3(-3, 0, 0), Vec3(0.5f, 16, 6.5f)}, std::pair{Vec3(3, 0, 0), Vec3(0.5f, 16, 6.5f)}}) {
-        REQUIRE(ed.place(EntityType::Wall, c + offset).ok());
-        REQUIRE(ed.set_field_text("size", std::to_string(size.x) + "," + std::to_string(size.y) + "," +
-                                              std::to_string(size.z))
+        REQUIRE(place(ed, EntityType::Wall, c + offset).ok());
+        REQUIRE(set_field_text(ed, "size",
+                               std::to_string(size.x) + "," + std::to_string(size.y) + "," +
+                                   std::to_string(size.z))
                     .ok());
     }
 }
@@ -84,27 +92,27 @@ TEST_CASE("rule format: range problems from the level checks point at their enti
 TEST_CASE("rule player_start: floating (drop fix), outside every floor, inside a wall (push-out fix)") {
     Editor ed;
     build_two_rooms(ed);
-    REQUIRE(ed.set_player_start({{0, 2, 15}, 0}).ok());
+    REQUIRE(set_player_start(ed, {{0, 2, 15}, 0}).ok());
     auto issues = of_rule(ed.issues(), Rule::PlayerStart);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].entity_id == 0);
     CHECK(issues[0].message.find("floats 2.00") != std::string::npos);
     REQUIRE(issues[0].fix.is<fixes::MovePlayerStart>());
-    REQUIRE(ed.apply_quick_fix(issues[0]).ok());
+    REQUIRE(apply_quick_fix(ed, issues[0]).ok());
     CHECK(ed.level().player_start.position == Vec3(0, 0, 15));
     CHECK(of_rule(ed.issues(), Rule::PlayerStart).empty());
 
-    REQUIRE(ed.set_player_start({{50, 0, 0}, 0}).ok());
+    REQUIRE(set_player_start(ed, {{50, 0, 0}, 0}).ok());
     issues = of_rule(ed.issues(), Rule::PlayerStart);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].severity == IssueSeverity::Error);
     CHECK(issues[0].message.find("outside every floor") != std::string::npos);
 
-    REQUIRE(ed.set_player_start({{-9.5f, 0, 10}, 0}).ok()); // the west wall is at x = -10
+    REQUIRE(set_player_start(ed, {{-9.5f, 0, 10}, 0}).ok()); // the west wall is at x = -10
     issues = of_rule(ed.issues(), Rule::PlayerStart);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].message.find("inside wall") != std::string::npos);
-    REQUIRE(ed.apply_quick_fix(issues[0]).ok());
+    REQUIRE(apply_quick_fix(ed, issues[0]).ok());
     CHECK(ed.level().player_start.position.x == doctest::Approx(-8.74).epsilon(0.01));
     CHECK(of_rule(ed.issues(), Rule::PlayerStart).empty());
 }
@@ -114,53 +122,53 @@ TEST_CASE("rule control_panel: missing in a level without objectives is an error
     Editor ed;
     build_two_rooms(ed);
     const int panel = id_named(ed, "Panel");
-    REQUIRE(ed.select({panel}).ok());
-    REQUIRE(ed.duplicate(Vec3(-4, 0, 0)).ok());
+    REQUIRE(select(ed, {panel}).ok());
+    REQUIRE(duplicate(ed, Vec3(-4, 0, 0)).ok());
     auto issues = of_rule(ed.issues(), Rule::ControlPanel);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].severity == IssueSeverity::Warning);
     CHECK(issues[0].entity_id == ed.level().next_id - 1);
-    REQUIRE(ed.apply_quick_fix(issues[0]).ok());
+    REQUIRE(apply_quick_fix(ed, issues[0]).ok());
     CHECK(of_rule(ed.issues(), Rule::ControlPanel).empty());
 
     // With an objective (the panel's "shutdown"), the objective rule says whether the level can be won.
-    REQUIRE(ed.delete_entities({panel}).ok());
+    REQUIRE(delete_entities(ed, {panel}).ok());
     CHECK(of_rule(ed.issues(), Rule::ControlPanel).empty());
     CHECK(of_rule(ed.issues(), Rule::Objective).size() == 1);
-    REQUIRE(ed.objective_remove(0).ok());
+    REQUIRE(objective_remove(ed, 0).ok());
     issues = of_rule(ed.issues(), Rule::ControlPanel);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].severity == IssueSeverity::Error);
     CHECK(issues[0].entity_id == 0);
     CHECK(!issues[0].fix.available());
-    CHECK_FALSE(ed.apply_quick_fix(issues[0]).ok());
+    CHECK_FALSE(apply_quick_fix(ed, issues[0]).ok());
 }
 
 TEST_CASE("rule wall_overlap: a robot in a wall is found by its oriented box and pushed out") {
     Editor ed;
     build_two_rooms(ed);
-    int robot = *ed.place(EntityType::Robot, {-9.5f, 0, 10}, 30); // turned, half inside the west wall
+    int robot = *place(ed, EntityType::Robot, {-9.5f, 0, 10}, 30); // turned, half inside the west wall
     auto issues = of_rule(ed.issues(), Rule::WallOverlap);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].entity_id == robot);
     CHECK(issues[0].message.find("West") != std::string::npos);
     REQUIRE(issues[0].fix.is<fixes::MoveEntity>());
-    REQUIRE(ed.apply_quick_fix(issues[0]).ok());
+    REQUIRE(apply_quick_fix(ed, issues[0]).ok());
     CHECK(ed.doc().selection == std::vector<int>{robot});
     CHECK(of_rule(ed.issues(), Rule::WallOverlap).empty());
     CHECK(ed.level().find(robot)->position.x > -9.5f);
 
     // Touching the wall's face is fine; a rotated control panel reaching through it is not.
-    REQUIRE(ed.select({robot}).ok());
-    REQUIRE(ed.set_field("rotation", FieldValue(Vec3(0))).ok());
-    REQUIRE(ed.set_field("position", FieldValue(Vec3(-9.75f + 0.8f, 0, 10))).ok());
+    REQUIRE(select(ed, {robot}).ok());
+    REQUIRE(set_field(ed, "rotation", FieldValue(Vec3(0))).ok());
+    REQUIRE(set_field(ed, "position", FieldValue(Vec3(-9.75f + 0.8f, 0, 10))).ok());
     CHECK(of_rule(ed.issues(), Rule::WallOverlap).empty());
     int panel = id_named(ed, "Panel");
-    REQUIRE(ed.select({panel}).ok());
-    REQUIRE(ed.set_field("rotation", FieldValue(Vec3(90, 0, 0))).ok()); // 5.34 deep along x: fits (20 wide)
+    REQUIRE(select(ed, {panel}).ok());
+    REQUIRE(set_field(ed, "rotation", FieldValue(Vec3(90, 0, 0))).ok()); // 5.34 deep along x: fits (20 wide)
     CHECK(of_rule(ed.issues(), Rule::WallOverlap).empty());
     REQUIRE(
-        ed.set_field("position", FieldValue(Vec3(0, 0, -19))).ok()); // 1.47 half-depth: into the north wall
+        set_field(ed, "position", FieldValue(Vec3(0, 0, -19))).ok()); // 1.47 half-depth: into the north wall
     issues = of_rule(ed.issues(), Rule::WallOverlap);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].entity_id == panel);
@@ -170,9 +178,9 @@ TEST_CASE("rule support: floating and sunk entities drop to the floor; outside e
     Editor ed;
     build_two_rooms(ed);
     ed.grid().snap = false;
-    int pickup = *ed.place(EntityType::Pickup, {-5, 3, 5});
-    int gas = *ed.place(EntityType::GasCylinder, {5, -0.5f, 5});
-    int robot = *ed.place(EntityType::Robot, {40, 0, 0});
+    int pickup = *place(ed, EntityType::Pickup, {-5, 3, 5});
+    int gas = *place(ed, EntityType::GasCylinder, {5, -0.5f, 5});
+    int robot = *place(ed, EntityType::Robot, {40, 0, 0});
     auto issues = of_rule(ed.issues(), Rule::Support);
     INFO(dump(issues));
     REQUIRE(issues.size() == 3);
@@ -184,7 +192,7 @@ TEST_CASE("rule support: floating and sunk entities drop to the floor; outside e
     CHECK(issues[2].entity_id == robot);
     CHECK(issues[2].severity == IssueSeverity::Error);
     CHECK(issues[2].fix.is<fixes::DeleteEntity>());
-    for (const auto& issue : issues) REQUIRE(ed.apply_quick_fix(issue).ok());
+    for (const auto& issue : issues) REQUIRE(apply_quick_fix(ed, issue).ok());
     CHECK(ed.level().find(pickup)->position.y == 0.0f);
     CHECK(ed.level().find(gas)->position.y == 0.0f);
     CHECK(ed.level().find(robot) == nullptr);
@@ -201,13 +209,13 @@ TEST_CASE("rule support: floating and sunk entities drop to the floor; outside e
 TEST_CASE("rule stair_slope: steeper than the character's limit, fixed by lengthening the run") {
     Editor ed;
     build_two_rooms(ed);
-    int stair = *ed.place(EntityType::Stair, {0, 0, 10});
-    REQUIRE(ed.set_field_text("size", "6,6,4").ok()); // 56°
+    int stair = *place(ed, EntityType::Stair, {0, 0, 10});
+    REQUIRE(set_field_text(ed, "size", "6,6,4").ok()); // 56°
     auto issues = of_rule(ed.issues(), Rule::StairSlope);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].entity_id == stair);
     CHECK(issues[0].message.find("56.31") != std::string::npos);
-    REQUIRE(ed.apply_quick_fix(issues[0]).ok());
+    REQUIRE(apply_quick_fix(ed, issues[0]).ok());
     const Vec3 size = ed.level().find(stair)->as<level::StairProps>().size;
     CHECK(size.x == 6.0f);
     CHECK(size.y == 6.0f);
@@ -215,7 +223,7 @@ TEST_CASE("rule stair_slope: steeper than the character's limit, fixed by length
     CHECK(slope <= CharacterLimits{}.max_slope_degrees);
     CHECK(slope > CharacterLimits{}.max_slope_degrees - 0.1f);
     CHECK(of_rule(ed.issues(), Rule::StairSlope).empty());
-    REQUIRE(ed.set_field_text("size", "6,6,12").ok()); // the reference's 26.6°
+    REQUIRE(set_field_text(ed, "size", "6,6,12").ok()); // the reference's 26.6°
     CHECK(of_rule(ed.issues(), Rule::StairSlope).empty());
 }
 
@@ -224,15 +232,15 @@ TEST_CASE("rule door_gap: in the open, beside one wall only, and blocked by a wa
     build_two_rooms(ed);
     int door = id_named(ed, "Door");
     CHECK(of_rule(ed.issues(), Rule::DoorGap).empty());
-    REQUIRE(ed.select({door}).ok());
-    REQUIRE(ed.move_selection({0, 0, 10}).ok());
+    REQUIRE(select(ed, {door}).ok());
+    REQUIRE(move_selection(ed, {0, 0, 10}).ok());
     auto issues = of_rule(ed.issues(), Rule::DoorGap);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].entity_id == door);
     CHECK(issues[0].message.find("either side") != std::string::npos);
     REQUIRE(ed.undo());
 
-    REQUIRE(ed.delete_entities({id_named(ed, "Door east side")}).ok());
+    REQUIRE(delete_entities(ed, {id_named(ed, "Door east side")}).ok());
     issues = of_rule(ed.issues(), Rule::DoorGap);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].message.find("+x jamb") != std::string::npos);
@@ -266,9 +274,9 @@ TEST_CASE("rule reachability: a sealed room or a platform without stairs makes t
     build_two_rooms(ed);
     CHECK(of_rule(ed.issues(), Rule::Reachability).empty());
     // Seal the doorway with a wall (and remove the door, so door_gap does not mask the point).
-    REQUIRE(ed.delete_entities({id_named(ed, "Door")}).ok());
-    (void)ed.place(EntityType::Wall, {0, 0, 0});
-    REQUIRE(ed.set_field_text("size", "5,16,0.5").ok());
+    REQUIRE(delete_entities(ed, {id_named(ed, "Door")}).ok());
+    (void)place(ed, EntityType::Wall, {0, 0, 0});
+    REQUIRE(set_field_text(ed, "size", "5,16,0.5").ok());
     auto issues = of_rule(ed.issues(), Rule::Reachability);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].entity_id == id_named(ed, "Panel"));
@@ -292,12 +300,12 @@ TEST_CASE("rule reachability: a sealed room or a platform without stairs makes t
     REQUIRE(ed.undo());
     REQUIRE(ed.undo());
     CHECK(of_rule(ed.issues(), Rule::Reachability).empty());
-    int low = *ed.place(EntityType::Floor, {0, 2.5f, 0});
-    REQUIRE(ed.set_field_text("size", "20,4").ok());
+    int low = *place(ed, EntityType::Floor, {0, 2.5f, 0});
+    REQUIRE(set_field_text(ed, "size", "20,4").ok());
     CHECK(of_rule(ed.issues(), Rule::Reachability).size() == 1);
-    REQUIRE(ed.select({low}).ok());
+    REQUIRE(select(ed, {low}).ok());
     // Headroom 3.6 - 0.5 thickness = 3.1: the player (3 tall, standing a skin above the floor) fits.
-    REQUIRE(ed.move_selection({0, 1.1f, 0}).ok());
+    REQUIRE(move_selection(ed, {0, 1.1f, 0}).ok());
     CHECK(of_rule(ed.issues(), Rule::Reachability).empty());
     REQUIRE(ed.undo()); // the move,
     REQUIRE(ed.undo()); // the size,
@@ -309,8 +317,8 @@ TEST_CASE("rule reachability: a sealed room or a platform without stairs makes t
 
     // During a drag (open transaction) the walk check waits for the commit; other rules stay live.
     ed.begin_transaction("Drag");
-    REQUIRE(ed.select({id_named(ed, "Panel")}).ok());
-    REQUIRE(ed.move_selection({0, 3, 0}).ok());
+    REQUIRE(select(ed, {id_named(ed, "Panel")}).ok());
+    REQUIRE(move_selection(ed, {0, 3, 0}).ok());
     CHECK(of_rule(ed.issues(), Rule::Reachability).empty());
     CHECK(of_rule(ed.issues(), Rule::Support).size() == 1);
     ed.commit_transaction();
@@ -324,18 +332,18 @@ TEST_CASE("rule reachability: a sealed room or a platform without stairs makes t
 TEST_CASE("validation: issues are cached per revision and clicking one selects the offender") {
     Editor ed;
     build_two_rooms(ed);
-    int pickup = *ed.place(EntityType::Pickup, {-5, 3, 5});
+    int pickup = *place(ed, EntityType::Pickup, {-5, 3, 5});
     const auto* first = &ed.issues();
     CHECK(&ed.issues() == first);
-    REQUIRE(ed.select({}).ok());
+    REQUIRE(select(ed, {}).ok());
     auto issues = of_rule(ed.issues(), Rule::Support);
     REQUIRE(issues.size() == 1);
-    REQUIRE(ed.select_issue(issues[0]).ok());
+    REQUIRE(select_issue(ed, issues[0]).ok());
     CHECK(ed.doc().selection == std::vector<int>{pickup});
     // A locked offender cannot be selected or fixed.
-    REQUIRE(ed.set_locked(pickup, true).ok());
-    CHECK_FALSE(ed.select_issue(issues[0]).ok());
-    CHECK_FALSE(ed.apply_quick_fix(issues[0]).ok());
+    REQUIRE(set_locked(ed, pickup, true).ok());
+    CHECK_FALSE(select_issue(ed, issues[0]).ok());
+    CHECK_FALSE(apply_quick_fix(ed, issues[0]).ok());
 }
 
 TEST_CASE(
@@ -370,28 +378,28 @@ TEST_CASE("validation: the walk check reruns only when what it reads changes, an
         CHECK(dump(ed.issues()) == dump(validate_design(ed.level())));
     };
     same_as_fresh();
-    const size_t runs = ed.walk_checks_run();
+    const size_t runs = ed.validation().walk_checks_run();
     // Robots, pickups, names and lights do not block or carry the player: no new walk.
-    REQUIRE(ed.select_all_of_type(EntityType::Robot) == 1);
-    REQUIRE(ed.move_selection({2, 0, 0}).ok());
+    REQUIRE(select_all_of_type(ed, EntityType::Robot) == 1);
+    REQUIRE(move_selection(ed, {2, 0, 0}).ok());
     same_as_fresh();
-    REQUIRE(ed.rename(id_named(ed, "Door"), "Front door").ok());
+    REQUIRE(rename(ed, id_named(ed, "Door"), "Front door").ok());
     same_as_fresh();
-    (void)ed.place(EntityType::Pickup, {5, 0, 5});
-    (void)ed.place(EntityType::TopLight, {0, 15, 5});
+    (void)place(ed, EntityType::Pickup, {5, 0, 5});
+    (void)place(ed, EntityType::TopLight, {0, 15, 5});
     same_as_fresh();
-    CHECK(ed.walk_checks_run() == runs);
+    CHECK(ed.validation().walk_checks_run() == runs);
     // A wall across the doorway, the panel moved, the player start moved: each reruns it.
-    (void)ed.place(EntityType::Wall, {0, 0, 0});
-    REQUIRE(ed.set_field_text("size", "5,16,0.5").ok());
+    (void)place(ed, EntityType::Wall, {0, 0, 0});
+    REQUIRE(set_field_text(ed, "size", "5,16,0.5").ok());
     same_as_fresh();
     CHECK(of_rule(ed.issues(), Rule::Reachability).size() == 1);
-    CHECK(ed.walk_checks_run() > runs);
-    const size_t runs_sealed = ed.walk_checks_run();
-    REQUIRE(ed.select({id_named(ed, "Panel")}).ok());
-    REQUIRE(ed.move_selection({1, 0, 0}).ok());
+    CHECK(ed.validation().walk_checks_run() > runs);
+    const size_t runs_sealed = ed.validation().walk_checks_run();
+    REQUIRE(select(ed, {id_named(ed, "Panel")}).ok());
+    REQUIRE(move_selection(ed, {1, 0, 0}).ok());
     same_as_fresh();
-    CHECK(ed.walk_checks_run() == runs_sealed + 1);
+    CHECK(ed.validation().walk_checks_run() == runs_sealed + 1);
     REQUIRE(ed.undo());
     REQUIRE(ed.undo());
     REQUIRE(ed.undo()); // the wall is gone: reachable again
@@ -399,10 +407,10 @@ TEST_CASE("validation: the walk check reruns only when what it reads changes, an
     CHECK(of_rule(ed.issues(), Rule::Reachability).empty());
     level::PlayerStart start = ed.level().player_start;
     start.position.z = 14;
-    REQUIRE(ed.set_player_start(start).ok());
-    const size_t before = ed.walk_checks_run();
+    REQUIRE(set_player_start(ed, start).ok());
+    const size_t before = ed.validation().walk_checks_run();
     same_as_fresh();
-    CHECK(ed.walk_checks_run() == before + 1);
+    CHECK(ed.validation().walk_checks_run() == before + 1);
 }
 
 TEST_CASE("validation: in the window the walk check runs in the background and its issue arrives when done") {
@@ -410,21 +418,22 @@ TEST_CASE("validation: in the window the walk check runs in the background and i
     ed.validation_options().background_reachability = true;
     build_two_rooms(ed);
     (void)ed.issues();
-    ed.wait_for_reachability();
+    ed.validation().wait_for_reachability();
     CHECK(of_rule(ed.issues(), Rule::Reachability).empty());
     // Seal the doorway: the edit returns at once; the rule's answer follows the finished check.
-    (void)ed.place(EntityType::Wall, {0, 0, 0});
-    REQUIRE(ed.set_field_text("size", "5,16,0.5").ok());
+    (void)place(ed, EntityType::Wall, {0, 0, 0});
+    REQUIRE(set_field_text(ed, "size", "5,16,0.5").ok());
     const auto& during = ed.issues();
-    if (ed.reachability_pending()) CHECK(of_rule(during, Rule::Reachability).empty()); // the previous answer
-    ed.wait_for_reachability();
-    CHECK_FALSE(ed.reachability_pending());
+    if (ed.validation().reachability_pending())
+        CHECK(of_rule(during, Rule::Reachability).empty()); // the previous answer
+    ed.validation().wait_for_reachability();
+    CHECK_FALSE(ed.validation().reachability_pending());
     CHECK(of_rule(ed.issues(), Rule::Reachability).size() == 1);
     CHECK(dump(ed.issues()) == dump(validate_design(ed.level())));
     REQUIRE(ed.undo());
     REQUIRE(ed.undo());
     (void)ed.issues();
-    ed.wait_for_reachability();
+    ed.validation().wait_for_reachability();
     CHECK(of_rule(ed.issues(), Rule::Reachability).empty());
 }
 
@@ -436,7 +445,7 @@ TEST_CASE("rule robot_reach: a robot walled off from the player's area is a warn
     // A closed box of walls around a spot in the first room, and a robot inside it.
     const Vec3 c(-8, 0, 8);
     wall_in_box(ed, c);
-    REQUIRE(ed.place(EntityType::Robot, c).ok());
+    REQUIRE(place(ed, EntityType::Robot, c).ok());
     const int trapped = ed.doc().selection.front();
     auto issues = of_rule(ed.issues(), Rule::RobotReach);
     INFO(dump(ed.issues()));
@@ -444,10 +453,10 @@ TEST_CASE("rule robot_reach: a robot walled off from the player's area is a warn
     CHECK(issues[0].entity_id == trapped);
     CHECK(issues[0].message.find("can never walk to the player's area") != std::string::npos);
     CHECK(dump(ed.issues()) == dump(validate_design(ed.level())));
-    const size_t runs = ed.walk_checks_run();
-    REQUIRE(ed.move_selection({0, 0, 12}).ok()); // out of the box, still in the room
+    const size_t runs = ed.validation().walk_checks_run();
+    REQUIRE(move_selection(ed, {0, 0, 12}).ok()); // out of the box, still in the room
     CHECK(of_rule(ed.issues(), Rule::RobotReach).empty());
-    CHECK(ed.walk_checks_run() == runs); // robots do not shape the mesh: no rebuild
+    CHECK(ed.validation().walk_checks_run() == runs); // robots do not shape the mesh: no rebuild
     CHECK(dump(ed.issues()) == dump(validate_design(ed.level())));
 }
 
@@ -455,18 +464,18 @@ TEST_CASE("rule patrol on the mesh: a point inside a prop snaps to the nearest w
           "robot can never walk to is reported") {
     Editor ed;
     build_two_rooms(ed);
-    REQUIRE(ed.place(EntityType::GasCylinder, {-2, 0, 14}).ok());
-    REQUIRE(ed.place(EntityType::Robot, {-8, 0, 18}).ok());
+    REQUIRE(place(ed, EntityType::GasCylinder, {-2, 0, 14}).ok());
+    REQUIRE(place(ed, EntityType::Robot, {-8, 0, 18}).ok());
     const int robot = ed.doc().selection.front();
-    REQUIRE(ed.patrol_add(robot, {-8, 0, 18}).ok());
-    REQUIRE(ed.patrol_add(robot, {-2, 0, 14}).ok()); // on the floor, but inside the cylinder
+    REQUIRE(patrol_add(ed, robot, {-8, 0, 18}).ok());
+    REQUIRE(patrol_add(ed, robot, {-2, 0, 14}).ok()); // on the floor, but inside the cylinder
     auto issues = of_rule(ed.issues(), Rule::Patrol);
     INFO(dump(ed.issues()));
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].message.find("patrol point 1 is where robots cannot walk") != std::string::npos);
     REQUIRE(issues[0].fix.is<fixes::MovePatrolPoint>());
     CHECK(dump(ed.issues()) == dump(validate_design(ed.level())));
-    REQUIRE(ed.apply_quick_fix(issues[0]).ok());
+    REQUIRE(apply_quick_fix(ed, issues[0]).ok());
     CHECK(of_rule(ed.issues(), Rule::Patrol).empty());
     const Vec3 moved = ed.level().find(robot)->as<level::RobotProps>().patrol.points[1];
     CHECK(glm::length(Vec2(moved.x + 2.0f, moved.z - 14.0f)) < 4.0f); // near where it was
@@ -474,7 +483,7 @@ TEST_CASE("rule patrol on the mesh: a point inside a prop snaps to the nearest w
     // A point inside a walled-off box: on a floor, on the mesh, but not reachable from the robot.
     const Vec3 c(-8, 0, 8);
     wall_in_box(ed, c);
-    REQUIRE(ed.patrol_add(robot, c).ok());
+    REQUIRE(patrol_add(ed, robot, c).ok());
     issues = of_rule(ed.issues(), Rule::Patrol);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].message.find("patrol point 2 cannot be walked to") != std::string::npos);

@@ -4,6 +4,7 @@
 // left. Here (not tests/editor) because it needs both the editor's model and the game.
 #include "game/playtest_analysis.h"
 #include "level/level_io.h"
+#include "model/edit_files.h"
 #include "model/script.h"
 #include "test_support.h"
 
@@ -61,7 +62,7 @@ TEST_CASE("three rooms from prefabs: the report finds the deadly room, the fix w
     CHECK(after.wins == 6);
 
     editor::Editor reopened;
-    REQUIRE(reopened.open(file).ok());
+    REQUIRE(open(reopened, file).ok());
     CHECK(!reopened.has_unsaved_changes()); // the prefabs did not change: nothing to update
     CHECK(reopened.level().editor == fixed.level().editor);
     CHECK(level::save_level_string(reopened.level()) == level::save_level_string(fixed.level()));

@@ -2,7 +2,14 @@
 // linked instances (turned, names made unique, links kept inside), overrides recorded and kept when the
 // prefab changes, apply to prefab, updates on open, revert, unlink, and the shipped prefabs.
 #include "editor_test_util.h"
+#include "model/edit_entities.h"
+#include "model/edit_files.h"
+#include "model/edit_logic.h"
+#include "model/edit_prefabs.h"
+#include "model/edit_selection.h"
+#include "model/edit_transforms.h"
 #include "model/prefab.h"
+#include "model/quick_fix.h"
 #include "model/script.h"
 
 #include "core/files.h"
@@ -17,12 +24,12 @@ namespace {
 Editor doorway(const std::filesystem::path& prefab_folder) {
     Editor ed;
     ed.prefabs().set_folders({prefab_folder});
-    REQUIRE(ed.place(level::EntityType::Wall, Vec3(-5, 0, 0), 0, "West").ok());
-    REQUIRE(ed.place(level::EntityType::Wall, Vec3(5, 0, 0), 0, "East").ok());
-    REQUIRE(ed.place(level::EntityType::Door, Vec3(0, 0, 0), 0, "Gate").ok());
-    REQUIRE(ed.place(level::EntityType::Trigger, Vec3(0, 0, 4), 0, "Mat").ok());
-    REQUIRE(ed.link_add(LinkOwner::entity(4), {"on_enter", "Gate", "open", 0.0f, false}).ok());
-    REQUIRE(ed.select({1, 2, 3, 4}).ok());
+    REQUIRE(place(ed, level::EntityType::Wall, Vec3(-5, 0, 0), 0, "West").ok());
+    REQUIRE(place(ed, level::EntityType::Wall, Vec3(5, 0, 0), 0, "East").ok());
+    REQUIRE(place(ed, level::EntityType::Door, Vec3(0, 0, 0), 0, "Gate").ok());
+    REQUIRE(place(ed, level::EntityType::Trigger, Vec3(0, 0, 4), 0, "Mat").ok());
+    REQUIRE(link_add(ed, LinkOwner::entity(4), {"on_enter", "Gate", "open", 0.0f, false}).ok());
+    REQUIRE(select(ed, {1, 2, 3, 4}).ok());
     return ed;
 }
 
@@ -129,7 +136,7 @@ TEST_CASE("frames: into and out of a turned frame is exact at quarter turns, pat
 TEST_CASE("save a selection as a prefab, place instances: turned, unique names, links kept inside") {
     test::ScratchDir dir;
     Editor ed = doorway(dir.path());
-    auto saved = ed.save_prefab("doorway", "Doorway with a mat");
+    auto saved = save_prefab(ed, "doorway", "Doorway with a mat");
     REQUIRE(saved.ok());
     CHECK(std::filesystem::exists(dir / "doorway.json"));
     // The selection became instance 1 of it.
@@ -137,9 +144,9 @@ TEST_CASE("save a selection as a prefab, place instances: turned, unique names, 
     REQUIRE(first);
     CHECK(first->has_prefab);
     CHECK(first->prefab.members == std::vector<int>{1, 2, 3, 4});
-    CHECK(!ed.save_prefab("doorway").ok()); // exists: not replaced by accident
+    CHECK(!save_prefab(ed, "doorway").ok()); // exists: not replaced by accident
 
-    auto placed = ed.place_prefab("doorway", Vec3(0, 0, 40), 90);
+    auto placed = place_prefab(ed, "doorway", Vec3(0, 0, 40), 90);
     REQUIRE(placed.ok());
     CHECK(*placed == 2);
     CHECK(ed.doc().selection.size() == 4);
@@ -154,7 +161,7 @@ TEST_CASE("save a selection as a prefab, place instances: turned, unique names, 
     CHECK(ed.level().entities.size() == 4);
     CHECK(ed.level().editor.groups.size() == 1);
 
-    auto missing = ed.place_prefab("doorwya", Vec3(0));
+    auto missing = place_prefab(ed, "doorwya", Vec3(0));
     REQUIRE(!missing.ok());
     CHECK(missing.error().str().find("did you mean 'doorway'") != std::string::npos);
 }
@@ -162,35 +169,35 @@ TEST_CASE("save a selection as a prefab, place instances: turned, unique names, 
 TEST_CASE("overrides are recorded, kept when the prefab changes, reverted; moving the instance is none") {
     test::ScratchDir dir;
     Editor ed = doorway(dir.path());
-    REQUIRE(ed.save_prefab("doorway").ok());
-    REQUIRE(ed.place_prefab("doorway", Vec3(0, 0, 40), 0).ok());
+    REQUIRE(save_prefab(ed, "doorway").ok());
+    REQUIRE(place_prefab(ed, "doorway", Vec3(0, 0, 40), 0).ok());
     // Moving the whole instance changes no member relative to its frame.
-    REQUIRE(ed.select_picked(5).ok());
-    REQUIRE(ed.move_selection(Vec3(2, 0, 0)).ok());
-    REQUIRE(ed.rotate_selection(90).ok());
+    REQUIRE(select_picked(ed, 5).ok());
+    REQUIRE(move_selection(ed, Vec3(2, 0, 0)).ok());
+    REQUIRE(rotate_selection(ed, 90).ok());
     for (const auto& overrides : ed.level().editor.find_group(2)->prefab.overrides) CHECK(overrides.empty());
     // An edited member field is an override of that member.
-    REQUIRE(ed.select({7}).ok()); // the second instance's door
-    REQUIRE(ed.set_field("width", FieldValue(6.0)).ok());
+    REQUIRE(select(ed, {7}).ok()); // the second instance's door
+    REQUIRE(set_field(ed, "width", FieldValue(6.0)).ok());
     CHECK(ed.level().editor.find_group(2)->prefab.overrides[2] == std::vector<std::string>{"width"});
 
     // The first instance is edited and applied: the second follows, except its overridden width.
-    REQUIRE(ed.select({3}).ok());
-    REQUIRE(ed.set_field("height", FieldValue(12.0)).ok());
-    REQUIRE(ed.set_field("width", FieldValue(4.5)).ok());
-    REQUIRE(ed.apply_instance_to_prefab(1).ok());
+    REQUIRE(select(ed, {3}).ok());
+    REQUIRE(set_field(ed, "height", FieldValue(12.0)).ok());
+    REQUIRE(set_field(ed, "width", FieldValue(4.5)).ok());
+    REQUIRE(apply_instance_to_prefab(ed, 1).ok());
     CHECK(ed.level().editor.find_group(1)->prefab.overrides[2].empty());
     const level::Entity& door = member(ed, 2, 2);
     CHECK(door.as<level::DoorProps>().height == doctest::Approx(12));
     CHECK(door.as<level::DoorProps>().width == doctest::Approx(6));
     // Revert: the width follows the prefab again.
-    REQUIRE(ed.revert_prefab_overrides(2, 7, "width").ok());
+    REQUIRE(revert_prefab_overrides(ed, 2, 7, "width").ok());
     CHECK(member(ed, 2, 2).as<level::DoorProps>().width == doctest::Approx(4.5));
-    CHECK(!ed.revert_prefab_overrides(2, 7, "width").ok()); // nothing left to revert
+    CHECK(!revert_prefab_overrides(ed, 2, 7, "width").ok()); // nothing left to revert
     // Unlink: a plain group that no longer follows.
-    REQUIRE(ed.unlink_prefab(2).ok());
+    REQUIRE(unlink_prefab(ed, 2).ok());
     CHECK(!ed.level().editor.find_group(2)->has_prefab);
-    CHECK(!ed.unlink_prefab(2).ok());
+    CHECK(!unlink_prefab(ed, 2).ok());
 }
 
 TEST_CASE(
@@ -198,11 +205,11 @@ TEST_CASE(
     test::ScratchDir dir;
     std::filesystem::create_directories(dir / "prefabs");
     Editor ed = doorway(dir / "prefabs");
-    REQUIRE(ed.save_prefab("doorway").ok());
-    REQUIRE(ed.place_prefab("doorway", Vec3(0, 0, 40)).ok());
-    REQUIRE(ed.delete_entities({5}).ok()); // the second instance's west wall
+    REQUIRE(save_prefab(ed, "doorway").ok());
+    REQUIRE(place_prefab(ed, "doorway", Vec3(0, 0, 40)).ok());
+    REQUIRE(delete_entities(ed, {5}).ok()); // the second instance's west wall
     CHECK(ed.level().editor.find_group(2)->prefab.members[0] == 0);
-    REQUIRE(ed.save_as(dir / "level.json").ok());
+    REQUIRE(save_as(ed, dir / "level.json").ok());
 
     // Another session changes the prefab: the walls get taller, and a light joins.
     auto text = files::read_text(dir / "prefabs" / "doorway.json");
@@ -220,7 +227,7 @@ TEST_CASE(
 
     Editor again;
     again.prefabs().set_folders({dir / "prefabs"});
-    REQUIRE(again.open(dir / "level.json").ok());
+    REQUIRE(open(again, dir / "level.json").ok());
     CHECK(again.has_unsaved_changes()); // the update is a step of its own
     CHECK(again.history().undo_name().find("Update prefab instances (doorway)") == 0);
     CHECK(member(again, 2, 1).as<level::WallProps>().size.y == doctest::Approx(20));
@@ -274,7 +281,7 @@ TEST_CASE("the shipped prefabs load, place into a level and give a valid level")
         CHECK(std::find(names.begin(), names.end(), shipped) != names.end());
     float z = 0;
     for (const std::string& name : names) {
-        REQUIRE(ed.place_prefab(name, Vec3(0, 0, z)).ok());
+        REQUIRE(place_prefab(ed, name, Vec3(0, 0, z)).ok());
         z += 60;
     }
     const level::LoadReport report = level::validate(ed.level());
@@ -285,7 +292,7 @@ TEST_CASE("the shipped prefabs load, place into a level and give a valid level")
 TEST_CASE("the prefab rule: an instance whose prefab is gone is a warning, fixed by unlinking it") {
     test::ScratchDir dir;
     Editor ed = doorway(dir.path());
-    REQUIRE(ed.save_prefab("doorway").ok());
+    REQUIRE(save_prefab(ed, "doorway").ok());
     auto prefab_issue = [&]() -> const Issue* {
         for (const Issue& issue : ed.issues())
             if (issue.rule == Rule::Prefab) return &issue;
@@ -300,7 +307,7 @@ TEST_CASE("the prefab rule: an instance whose prefab is gone is a warning, fixed
     CHECK(issue->entity_id == 1);
     CHECK(issue->message.find("no prefab named 'doorway'") != std::string::npos);
     CHECK(issue->message.find("prefabs: doorway_old") != std::string::npos);
-    REQUIRE(ed.apply_quick_fix(*issue).ok());
+    REQUIRE(apply_quick_fix(ed, *issue).ok());
     CHECK(!ed.level().editor.find_group(1)->has_prefab);
     CHECK(prefab_issue() == nullptr);
 }

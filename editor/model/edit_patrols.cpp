@@ -1,19 +1,23 @@
-// Editor: robot patrol edits. Each builds one LevelChange updating the robot and executes it through History.
-#include "model/editor.h"
+// Robot patrol edits: edit_patrols.h. Each builds one LevelChange updating the robot and executes it
+// through the Editor.
+#include "model/edit_patrols.h"
+
 #include "model/patrol_edit.h"
 
 namespace ks::editor {
+namespace {
 
-Result<void> Editor::edit_patrol(int id, std::string name,
-                                 const std::function<Result<void>(level::Patrol&)>& edit,
-                                 std::string merge_key) {
-    const level::Entity* current = doc_.level.find(id);
+Result<void> edit_patrol(Editor& editor, int id, std::string name,
+                         const std::function<Result<void>(level::Patrol&)>& edit,
+                         std::string merge_key = {}) {
+    const Document& doc = editor.doc();
+    const level::Entity* current = doc.level.find(id);
     if (!current) return Error(name + ": no entity with id " + std::to_string(id));
     if (!current->try_as<level::RobotProps>())
         return Error(name + ": entity " + std::to_string(id) + " is a " +
                          std::string(level::type_name(current->type())) + ", not a robot",
                      Location{}, "patrols belong to robots");
-    if (doc_.locked.contains(id))
+    if (doc.locked.contains(id))
         return Error(name + ": robot " + std::to_string(id) + " is locked", Location{}, "unlock it first");
     level::Entity after = *current;
     if (auto r = edit(after.as<level::RobotProps>().patrol); !r) {
@@ -26,35 +30,36 @@ Result<void> Editor::edit_patrol(int id, std::string name,
     change->set_name(std::move(name));
     change->merge_key = std::move(merge_key);
     change->updates.push_back({*current, std::move(after)});
-    execute(std::move(change), doc_.selection);
+    editor.execute(std::move(change), doc.selection);
     return ok();
 }
+} // namespace
 
-Result<void> Editor::patrol_add(int id, Vec3 point, std::optional<int> after) {
-    return edit_patrol(id, "Add patrol point",
+Result<void> patrol_add(Editor& editor, int id, Vec3 point, std::optional<int> after) {
+    return edit_patrol(editor, id, "Add patrol point",
                        [&](level::Patrol& patrol) { return add_patrol_point(patrol, point, after); });
 }
 
-Result<void> Editor::patrol_move(int id, int index, Vec3 point, std::string merge_key) {
+Result<void> patrol_move(Editor& editor, int id, int index, Vec3 point, std::string merge_key) {
     return edit_patrol(
-        id, "Move patrol point",
+        editor, id, "Move patrol point",
         [&](level::Patrol& patrol) { return move_patrol_point(patrol, index, point); }, std::move(merge_key));
 }
 
-Result<void> Editor::patrol_remove(int id, int index) {
-    return edit_patrol(id, "Remove patrol point",
+Result<void> patrol_remove(Editor& editor, int id, int index) {
+    return edit_patrol(editor, id, "Remove patrol point",
                        [&](level::Patrol& patrol) { return remove_patrol_point(patrol, index); });
 }
 
-Result<void> Editor::patrol_set_mode(int id, std::string_view mode) {
-    return edit_patrol(id, "Set patrol mode",
+Result<void> patrol_set_mode(Editor& editor, int id, std::string_view mode) {
+    return edit_patrol(editor, id, "Set patrol mode",
                        [&](level::Patrol& patrol) { return set_patrol_mode(patrol, mode); });
 }
 
-Result<void> Editor::patrol_set_wait(int id, float seconds, std::string merge_key) {
+Result<void> patrol_set_wait(Editor& editor, int id, float seconds, std::string merge_key) {
     return edit_patrol(
-        id, "Set patrol wait", [&](level::Patrol& patrol) { return set_patrol_wait(patrol, seconds); },
-        std::move(merge_key));
+        editor, id, "Set patrol wait",
+        [&](level::Patrol& patrol) { return set_patrol_wait(patrol, seconds); }, std::move(merge_key));
 }
 
 } // namespace ks::editor

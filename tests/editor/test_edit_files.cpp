@@ -1,5 +1,9 @@
 // New / Open / Save / Save As, title and dirty marker, drafts, external changes, recent files.
 #include "editor_test_util.h"
+#include "model/edit_entities.h"
+#include "model/edit_files.h"
+#include "model/edit_selection.h"
+#include "model/edit_transforms.h"
 
 #include "core/files.h"
 #include "core/log.h"
@@ -21,25 +25,25 @@ TEST_CASE("files: open the shipped level, save it unchanged byte for byte, edit,
     const std::string original = ks::test::read_file(copy);
 
     Editor ed;
-    REQUIRE(ed.open(copy).ok());
-    CHECK(ed.title() == "main.json - Killswitch Editor");
+    REQUIRE(open(ed, copy).ok());
+    CHECK(title(ed) == "main.json - Killswitch Editor");
     CHECK_FALSE(ed.has_unsaved_changes());
-    CHECK(ed.disk_status() == DiskStatus::Unchanged);
-    auto saved = ed.save();
+    CHECK(disk_status(ed) == DiskStatus::Unchanged);
+    auto saved = save(ed);
     REQUIRE(saved.ok());
     CHECK_FALSE(saved->draft);
     CHECK(ks::test::read_file(copy) == original); // load -> save is byte-identical
 
-    REQUIRE(ed.select({40}).ok()); // the robot behind door 1
-    REQUIRE(ed.move_selection({1, 0, 0}).ok());
-    CHECK(ed.title() == "main.json* - Killswitch Editor");
+    REQUIRE(select(ed, {40}).ok()); // the robot behind door 1
+    REQUIRE(move_selection(ed, {1, 0, 0}).ok());
+    CHECK(title(ed) == "main.json* - Killswitch Editor");
     const std::string edited = editor_test::text_of(ed);
-    REQUIRE(ed.save().ok());
-    CHECK(ed.title() == "main.json - Killswitch Editor");
+    REQUIRE(save(ed).ok());
+    CHECK(title(ed) == "main.json - Killswitch Editor");
     CHECK(ks::test::read_file(copy) == edited);
 
     Editor again;
-    REQUIRE(again.open(copy).ok());
+    REQUIRE(open(again, copy).ok());
     CHECK(again.level() == ed.level());
     // Undo after saving goes back to the original text, and the doc is dirty relative to the file.
     REQUIRE(ed.undo());
@@ -51,24 +55,24 @@ TEST_CASE("files: new, save without a path, Save As refusing to overwrite silent
     ks::test::ScratchDir dir;
     log::Capture quiet;
     Editor ed;
-    CHECK(ed.title() == "Untitled [draft] - Killswitch Editor"); // an empty level has no control panel
-    (void)ed.place(EntityType::Robot, {0, 0, 0});
-    CHECK(ed.title() == "Untitled* [draft] - Killswitch Editor");
-    auto no_path = ed.save();
+    CHECK(title(ed) == "Untitled [draft] - Killswitch Editor"); // an empty level has no control panel
+    (void)place(ed, EntityType::Robot, {0, 0, 0});
+    CHECK(title(ed) == "Untitled* [draft] - Killswitch Editor");
+    auto no_path = save(ed);
     REQUIRE_FALSE(no_path.ok());
     CHECK(no_path.error().hint.find("Save As") != std::string::npos);
 
     REQUIRE(files::write_atomic(dir / "taken.json", "someone else's file").ok());
-    auto taken = ed.save_as(dir / "taken.json");
+    auto taken = save_as(ed, dir / "taken.json");
     REQUIRE_FALSE(taken.ok());
     CHECK(taken.error().where.file == (dir / "taken.json").string());
     CHECK(ks::test::read_file(dir / "taken.json") == "someone else's file");
     SaveOptions overwrite;
     overwrite.overwrite_existing = true;
-    REQUIRE(ed.save_as(dir / "taken.json", overwrite).ok());
+    REQUIRE(save_as(ed, dir / "taken.json", overwrite).ok());
 
-    CHECK_FALSE(ed.save_as(dir / "no" / "such" / "folder.json").ok());
-    ed.new_document();
+    CHECK_FALSE(save_as(ed, dir / "no" / "such" / "folder.json").ok());
+    new_document(ed);
     CHECK(ed.file_path().empty());
     CHECK(ed.level().entities.empty());
     CHECK_FALSE(ed.history().can_undo());
@@ -78,13 +82,13 @@ TEST_CASE("files: a level with design errors saves as a flagged draft") {
     ks::test::ScratchDir dir;
     log::Capture capture;
     Editor ed;
-    (void)ed.place(EntityType::Robot, {0, 0, 0}); // no floor, no control panel
-    auto saved = ed.save_as(dir / "draft.json");
+    (void)place(ed, EntityType::Robot, {0, 0, 0}); // no floor, no control panel
+    auto saved = save_as(ed, dir / "draft.json");
     REQUIRE(saved.ok());
     CHECK(saved->draft);
     CHECK(saved->error_count >= 2);
     CHECK(capture.text().find("draft") != std::string::npos);
-    CHECK(ed.title().find("[draft]") != std::string::npos);
+    CHECK(title(ed).find("[draft]") != std::string::npos);
     // The draft is still a loadable level file.
     CHECK(level::load_level_file(dir / "draft.json").ok());
 }
@@ -93,19 +97,19 @@ TEST_CASE("files: Save never overwrites a file changed on disk since it was open
     ks::test::ScratchDir dir;
     log::Capture quiet;
     Editor ed;
-    (void)ed.place(EntityType::Robot, {0, 0, 0});
-    REQUIRE(ed.save_as(dir / "shared.json").ok());
-    (void)ed.place(EntityType::Pickup, {2, 0, 0});
+    (void)place(ed, EntityType::Robot, {0, 0, 0});
+    REQUIRE(save_as(ed, dir / "shared.json").ok());
+    (void)place(ed, EntityType::Pickup, {2, 0, 0});
 
     // Someone else saves the same file.
     Editor other;
-    REQUIRE(other.open(dir / "shared.json").ok());
-    REQUIRE(other.rename_level("Their edit").ok());
-    REQUIRE(other.save().ok());
+    REQUIRE(open(other, dir / "shared.json").ok());
+    REQUIRE(rename_level(other, "Their edit").ok());
+    REQUIRE(save(other).ok());
     const std::string theirs = ks::test::read_file(dir / "shared.json");
-    CHECK(ed.disk_status() == DiskStatus::Modified);
+    CHECK(disk_status(ed) == DiskStatus::Modified);
 
-    auto refused = ed.save();
+    auto refused = save(ed);
     REQUIRE_FALSE(refused.ok());
     CHECK(refused.error().message.find("changed on disk") != std::string::npos);
     CHECK(ks::test::read_file(dir / "shared.json") == theirs);
@@ -113,31 +117,31 @@ TEST_CASE("files: Save never overwrites a file changed on disk since it was open
 
     SaveOptions force;
     force.overwrite_external_changes = true;
-    REQUIRE(ed.save(force).ok());
-    CHECK(ed.disk_status() == DiskStatus::Unchanged);
+    REQUIRE(save(ed, force).ok());
+    CHECK(disk_status(ed) == DiskStatus::Unchanged);
 
     // Touching the file without changing its content is not a conflict.
     fs::last_write_time(dir / "shared.json", fs::file_time_type::clock::now() + std::chrono::seconds(5));
-    (void)ed.place(EntityType::Pickup, {4, 0, 0});
-    CHECK(ed.save().ok());
+    (void)place(ed, EntityType::Pickup, {4, 0, 0});
+    CHECK(save(ed).ok());
 
     fs::remove(dir / "shared.json");
-    CHECK(ed.disk_status() == DiskStatus::Deleted);
+    CHECK(disk_status(ed) == DiskStatus::Deleted);
 }
 
 TEST_CASE("files: opening bad files reports file and place, and leaves the document alone") {
     ks::test::ScratchDir dir;
     Editor ed;
-    (void)ed.place(EntityType::Robot, {0, 0, 0});
+    (void)place(ed, EntityType::Robot, {0, 0, 0});
     REQUIRE(files::write_atomic(dir / "broken.json",
                                 "{\n  \"format\": \"killswitch-level\",\n  \"version\": 1,\n  oops\n}")
                 .ok());
-    auto r = ed.open(dir / "broken.json");
+    auto r = open(ed, dir / "broken.json");
     REQUIRE_FALSE(r.ok());
     CHECK(r.error().str().find("broken.json") != std::string::npos);
     CHECK(r.error().str().find(":4") != std::string::npos); // the line of the syntax error
     CHECK(ed.level().entities.size() == 1);
-    CHECK_FALSE(ed.open(dir / "missing.json").ok());
+    CHECK_FALSE(open(ed, dir / "missing.json").ok());
     CHECK(ed.level().entities.size() == 1);
 }
 
@@ -151,8 +155,8 @@ TEST_CASE("recent files: most recent first, capped, persisted; a malformed list 
         ed.set_recent_files(&recent);
         log::Capture quiet;
         for (const char* name : {"a.json", "b.json", "c.json", "d.json"})
-            REQUIRE(ed.save_as(dir / name).ok());
-        REQUIRE(ed.open(dir / "b.json").ok());
+            REQUIRE(save_as(ed, dir / name).ok());
+        REQUIRE(open(ed, dir / "b.json").ok());
         REQUIRE(recent.entries().size() == 3);
         CHECK(recent.entries()[0] == dir / "b.json");
         CHECK(recent.entries()[1] == dir / "d.json");

@@ -1,7 +1,11 @@
 // Robot patrols in the editor: adding, moving and removing points, mode and wait, each one undo step; the
 // script commands; the design check that a point stands on a floor, and its snap-down quick fix.
 #include "editor_test_util.h"
+#include "model/edit_files.h"
+#include "model/edit_layers.h"
+#include "model/edit_patrols.h"
 #include "model/patrol_edit.h"
+#include "model/quick_fix.h"
 #include "model/script.h"
 
 #include <limits>
@@ -36,14 +40,14 @@ TEST_CASE("patrol points are added, moved and removed, each one undo step that u
     const std::string before = text_of(ed);
     const size_t steps = ed.history().undo_count();
 
-    REQUIRE(ed.patrol_add(kRobot, {3, 0, -10}).ok());
-    REQUIRE(ed.patrol_add(kRobot, {-5, 0, -10}).ok());
-    REQUIRE(ed.patrol_add(kRobot, {0, 0, -5}, 0).ok()); // after the first point
+    REQUIRE(patrol_add(ed, kRobot, {3, 0, -10}).ok());
+    REQUIRE(patrol_add(ed, kRobot, {-5, 0, -10}).ok());
+    REQUIRE(patrol_add(ed, kRobot, {0, 0, -5}, 0).ok()); // after the first point
     CHECK(patrol_of(ed).points == std::vector<Vec3>{{3, 0, -10}, {0, 0, -5}, {-5, 0, -10}});
-    REQUIRE(ed.patrol_move(kRobot, 2, {-6, 0, -12}).ok());
-    REQUIRE(ed.patrol_set_mode(kRobot, "ping_pong").ok());
-    REQUIRE(ed.patrol_set_wait(kRobot, 1.5f).ok());
-    REQUIRE(ed.patrol_remove(kRobot, 1).ok());
+    REQUIRE(patrol_move(ed, kRobot, 2, {-6, 0, -12}).ok());
+    REQUIRE(patrol_set_mode(ed, kRobot, "ping_pong").ok());
+    REQUIRE(patrol_set_wait(ed, kRobot, 1.5f).ok());
+    REQUIRE(patrol_remove(ed, kRobot, 1).ok());
     CHECK(ed.history().undo_count() == steps + 7);
     const level::Patrol edited = patrol_of(ed);
     CHECK(edited.points == std::vector<Vec3>{{3, 0, -10}, {-6, 0, -12}});
@@ -62,9 +66,9 @@ TEST_CASE("patrol points are added, moved and removed, each one undo step that u
 TEST_CASE("removing the last point removes the patrol, so the file has none and the robot wanders") {
     Editor ed = two_rooms();
     const std::string before = text_of(ed);
-    REQUIRE(ed.patrol_add(kRobot, {3, 0, -10}).ok());
-    REQUIRE(ed.patrol_set_wait(kRobot, 4).ok());
-    REQUIRE(ed.patrol_remove(kRobot, 0).ok());
+    REQUIRE(patrol_add(ed, kRobot, {3, 0, -10}).ok());
+    REQUIRE(patrol_set_wait(ed, kRobot, 4).ok());
+    REQUIRE(patrol_remove(ed, kRobot, 0).ok());
     CHECK_FALSE(patrol_of(ed).active());
     CHECK(patrol_of(ed) == level::Patrol{});
     CHECK(text_of(ed) == before);
@@ -72,25 +76,27 @@ TEST_CASE("removing the last point removes the patrol, so the file has none and 
 
 TEST_CASE("bad patrol edits are errors that change nothing") {
     Editor ed = two_rooms();
-    REQUIRE(ed.patrol_add(kRobot, {3, 0, -10}).ok());
+    REQUIRE(patrol_add(ed, kRobot, {3, 0, -10}).ok());
     const std::string before = text_of(ed);
     const size_t steps = ed.history().undo_count();
     const float nan = std::numeric_limits<float>::quiet_NaN();
 
     auto message = [](const Result<void>& r) { return r.ok() ? std::string("ok") : r.error().str(); };
-    CHECK(message(ed.patrol_add(1, {0, 0, 0})).find("entity 1 is a floor, not a robot") != std::string::npos);
-    CHECK(message(ed.patrol_add(99, {0, 0, 0})).find("no entity with id 99") != std::string::npos);
-    CHECK(message(ed.patrol_add(kRobot, {nan, 0, 0})).find("is not finite") != std::string::npos);
-    CHECK(message(ed.patrol_add(kRobot, {2e5f, 0, 0})).find("out of range") != std::string::npos);
-    CHECK(message(ed.patrol_add(kRobot, {0, 0, 0}, 5)).find("cannot add after point 5") != std::string::npos);
-    CHECK(message(ed.patrol_move(kRobot, 3, {0, 0, 0}))
-              .find("no patrol point 3 (points are numbered 0 .. 0)") != std::string::npos);
-    CHECK(message(ed.patrol_remove(kRobot, -1)).find("no patrol point -1") != std::string::npos);
-    CHECK(message(ed.patrol_set_mode(kRobot, "zigzag")).find("unknown patrol mode 'zigzag'") !=
+    CHECK(message(patrol_add(ed, 1, {0, 0, 0})).find("entity 1 is a floor, not a robot") !=
           std::string::npos);
-    CHECK(message(ed.patrol_set_wait(kRobot, -2)).find("0 .. 600 seconds") != std::string::npos);
-    REQUIRE(ed.set_locked(kRobot, true).ok());
-    CHECK(message(ed.patrol_add(kRobot, {0, 0, 0})).find("is locked") != std::string::npos);
+    CHECK(message(patrol_add(ed, 99, {0, 0, 0})).find("no entity with id 99") != std::string::npos);
+    CHECK(message(patrol_add(ed, kRobot, {nan, 0, 0})).find("is not finite") != std::string::npos);
+    CHECK(message(patrol_add(ed, kRobot, {2e5f, 0, 0})).find("out of range") != std::string::npos);
+    CHECK(message(patrol_add(ed, kRobot, {0, 0, 0}, 5)).find("cannot add after point 5") !=
+          std::string::npos);
+    CHECK(message(patrol_move(ed, kRobot, 3, {0, 0, 0}))
+              .find("no patrol point 3 (points are numbered 0 .. 0)") != std::string::npos);
+    CHECK(message(patrol_remove(ed, kRobot, -1)).find("no patrol point -1") != std::string::npos);
+    CHECK(message(patrol_set_mode(ed, kRobot, "zigzag")).find("unknown patrol mode 'zigzag'") !=
+          std::string::npos);
+    CHECK(message(patrol_set_wait(ed, kRobot, -2)).find("0 .. 600 seconds") != std::string::npos);
+    REQUIRE(set_locked(ed, kRobot, true).ok());
+    CHECK(message(patrol_add(ed, kRobot, {0, 0, 0})).find("is locked") != std::string::npos);
     REQUIRE(ed.undo()); // the lock (a step: locks are saved in the level's editor section)
     CHECK(text_of(ed) == before);
     CHECK(ed.history().undo_count() == steps);
@@ -122,9 +128,9 @@ expect valid
 )");
     REQUIRE_MESSAGE(r.ok(), (r.ok() ? std::string() : r.error().str()));
     CHECK(r->expectations_checked == 6);
-    REQUIRE(ed.save_as(dir / "patrol.json").ok());
+    REQUIRE(save_as(ed, dir / "patrol.json").ok());
     Editor reopened;
-    REQUIRE(reopened.open(dir / "patrol.json").ok());
+    REQUIRE(open(reopened, dir / "patrol.json").ok());
     const level::Patrol& patrol = patrol_of(reopened);
     CHECK(patrol.points == std::vector<Vec3>{{3, 0, -10}, {-6, 0, -12}});
     CHECK(patrol.ping_pong());
@@ -164,10 +170,10 @@ TEST_CASE("script: patrol syntax errors point at the word") {
 TEST_CASE(
     "validation: a patrol point off the floor is a warning whose quick fix snaps it down, one undo step") {
     Editor ed = two_rooms();
-    REQUIRE(ed.patrol_add(kRobot, {3, 0, -10}).ok());
-    REQUIRE(ed.patrol_add(kRobot, {-4, 2.5f, -8}).ok());  // floats above the floor
-    REQUIRE(ed.patrol_add(kRobot, {-4, -0.3f, -4}).ok()); // sunk into it
-    REQUIRE(ed.patrol_add(kRobot, {40, 0, -8}).ok());     // beyond every floor: no fix
+    REQUIRE(patrol_add(ed, kRobot, {3, 0, -10}).ok());
+    REQUIRE(patrol_add(ed, kRobot, {-4, 2.5f, -8}).ok());  // floats above the floor
+    REQUIRE(patrol_add(ed, kRobot, {-4, -0.3f, -4}).ok()); // sunk into it
+    REQUIRE(patrol_add(ed, kRobot, {40, 0, -8}).ok());     // beyond every floor: no fix
     auto issues = patrol_issues(ed);
     REQUIRE(issues.size() == 3);
     CHECK(issues[0]->severity == IssueSeverity::Warning);
@@ -180,7 +186,7 @@ TEST_CASE(
     CHECK(std::get<fixes::MovePatrolPoint>(issues[0]->fix.action).index == 1);
 
     const Issue first = *issues[0];
-    REQUIRE(ed.apply_quick_fix(first).ok());
+    REQUIRE(apply_quick_fix(ed, first).ok());
     CHECK(patrol_of(ed).points[1] == Vec3(-4, 0, -8));
     CHECK(patrol_issues(ed).size() == 2);
     REQUIRE(ed.undo());

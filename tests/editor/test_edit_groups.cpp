@@ -1,7 +1,14 @@
-// Groups and layers in the editor model: Ctrl+G / Ctrl+Shift+G, what a click picks inside and outside an
-// entered group, moving, turning and duplicating a group as one, deleting members, layers' visibility and
-// locks, and everything surviving save, reopen and undo.
+// Groups (edit_groups.h): Ctrl+G / Ctrl+Shift+G, what a click picks inside and outside an entered group,
+// moving, turning and duplicating a group as one, deleting members, and the editor section (groups, layers,
+// hidden and locked entities) surviving save, reopen and undo. Layers: test_edit_layers.cpp.
 #include "editor_test_util.h"
+#include "model/edit_entities.h"
+#include "model/edit_files.h"
+#include "model/edit_groups.h"
+#include "model/edit_layers.h"
+#include "model/edit_prefabs.h"
+#include "model/edit_selection.h"
+#include "model/edit_transforms.h"
 #include "model/script.h"
 
 using namespace ks;
@@ -12,8 +19,8 @@ namespace {
 // Four walls 1..4 along x, a robot 5.
 Editor four_walls() {
     Editor ed;
-    for (int i = 0; i < 4; ++i) REQUIRE(ed.place(level::EntityType::Wall, Vec3(4.0f * i, 0, 0)).ok());
-    REQUIRE(ed.place(level::EntityType::Robot, Vec3(0, 0, 8)).ok());
+    for (int i = 0; i < 4; ++i) REQUIRE(place(ed, level::EntityType::Wall, Vec3(4.0f * i, 0, 0)).ok());
+    REQUIRE(place(ed, level::EntityType::Robot, Vec3(0, 0, 8)).ok());
     return ed;
 }
 
@@ -26,8 +33,8 @@ std::vector<int> sorted(std::vector<int> ids) {
 
 TEST_CASE("Ctrl+G groups the selection; a click on a member selects the group; ungroup dissolves it") {
     Editor ed = four_walls();
-    REQUIRE(ed.select({1, 2}).ok());
-    auto group = ed.group_selection("Pair");
+    REQUIRE(select(ed, {1, 2}).ok());
+    auto group = group_selection(ed, "Pair");
     REQUIRE(group.ok());
     CHECK(*group == 1);
     const level::Group* g = ed.level().editor.find_group(1);
@@ -35,36 +42,36 @@ TEST_CASE("Ctrl+G groups the selection; a click on a member selects the group; u
     CHECK(g->name == "Pair");
     CHECK(g->entities == std::vector<int>{1, 2});
     CHECK(g->position == Vec3(2, 0, 0)); // the selection's centre at floor level
-    REQUIRE(ed.select_picked(2).ok());
+    REQUIRE(select_picked(ed, 2).ok());
     CHECK(sorted(ed.doc().selection) == std::vector<int>{1, 2});
-    CHECK(ed.selected_groups() == std::vector<int>{1});
-    REQUIRE(ed.select_picked(3).ok());
+    CHECK(selected_groups(ed) == std::vector<int>{1});
+    REQUIRE(select_picked(ed, 3).ok());
     CHECK(ed.doc().selection == std::vector<int>{3});
 
     // A group of the group and a wall: nesting; the click picks the outermost.
-    REQUIRE(ed.select({1, 2, 3}).ok());
-    auto outer = ed.group_selection();
+    REQUIRE(select(ed, {1, 2, 3}).ok());
+    auto outer = group_selection(ed);
     REQUIRE(outer.ok());
     CHECK(ed.level().editor.find_group(*outer)->groups == std::vector<int>{1});
     CHECK(ed.level().editor.find_group(*outer)->entities == std::vector<int>{3});
-    REQUIRE(ed.select_picked(1).ok());
+    REQUIRE(select_picked(ed, 1).ok());
     CHECK(sorted(ed.doc().selection) == std::vector<int>{1, 2, 3});
 
     // Entering the outer group: a click picks its child group, or its own member.
-    REQUIRE(ed.enter_group(*outer).ok());
-    REQUIRE(ed.select_picked(1).ok());
+    REQUIRE(enter_group(ed, *outer).ok());
+    REQUIRE(select_picked(ed, 1).ok());
     CHECK(sorted(ed.doc().selection) == std::vector<int>{1, 2});
-    REQUIRE(ed.select_picked(3).ok());
+    REQUIRE(select_picked(ed, 3).ok());
     CHECK(ed.doc().selection == std::vector<int>{3});
-    REQUIRE(ed.enter_group(1).ok());
-    REQUIRE(ed.select_picked(2).ok());
+    REQUIRE(enter_group(ed, 1).ok());
+    REQUIRE(select_picked(ed, 2).ok());
     CHECK(ed.doc().selection == std::vector<int>{2});
     // A click outside the entered group leaves it.
-    REQUIRE(ed.select_picked(5).ok());
+    REQUIRE(select_picked(ed, 5).ok());
     CHECK(ed.open_group() == 0);
 
-    REQUIRE(ed.select_picked(1).ok());
-    REQUIRE(ed.ungroup_selection().ok());
+    REQUIRE(select_picked(ed, 1).ok());
+    REQUIRE(ungroup_selection(ed).ok());
     CHECK(ed.level().editor.groups.size() == 1); // the inner pair is top-level again
     CHECK(ed.level().editor.find_group(1) != nullptr);
     CHECK(ed.undo());
@@ -76,20 +83,20 @@ TEST_CASE("Ctrl+G groups the selection; a click on a member selects the group; u
 
 TEST_CASE("a group moves, turns and duplicates as one; its frame follows; copies stay groups") {
     Editor ed = four_walls();
-    REQUIRE(ed.select({1, 2}).ok());
-    REQUIRE(ed.group_selection("Pair").ok());
-    REQUIRE(ed.select_picked(1).ok());
-    REQUIRE(ed.move_selection(Vec3(0, 0, 3)).ok());
+    REQUIRE(select(ed, {1, 2}).ok());
+    REQUIRE(group_selection(ed, "Pair").ok());
+    REQUIRE(select_picked(ed, 1).ok());
+    REQUIRE(move_selection(ed, Vec3(0, 0, 3)).ok());
     CHECK(ed.level().find(1)->position == Vec3(0, 0, 3));
     CHECK(ed.level().find(2)->position == Vec3(4, 0, 3));
     CHECK(ed.level().editor.find_group(1)->position == Vec3(2, 0, 3));
-    REQUIRE(ed.rotate_selection(90).ok());
+    REQUIRE(rotate_selection(ed, 90).ok());
     const level::Group* g = ed.level().editor.find_group(1);
     CHECK(g->yaw == doctest::Approx(90));
     CHECK(g->position.x == doctest::Approx(2));
     CHECK(g->position.z == doctest::Approx(3));
     CHECK(ed.level().find(1)->position.z == doctest::Approx(5)); // (-2, 0) turned a quarter: (0, 2)
-    REQUIRE(ed.duplicate(Vec3(10, 0, 0)).ok());
+    REQUIRE(duplicate(ed, Vec3(10, 0, 0)).ok());
     REQUIRE(ed.level().editor.groups.size() == 2);
     const level::Group& copy = ed.level().editor.groups[1];
     CHECK(copy.id == 2);
@@ -98,20 +105,20 @@ TEST_CASE("a group moves, turns and duplicates as one; its frame follows; copies
     CHECK(copy.position.x == doctest::Approx(12));
     CHECK(sorted(ed.doc().selection) == std::vector<int>{6, 7});
     // Moving one member (inside the entered group) leaves the frame.
-    REQUIRE(ed.enter_group(1).ok());
-    REQUIRE(ed.select_picked(1).ok());
-    REQUIRE(ed.move_selection(Vec3(1, 0, 0)).ok());
+    REQUIRE(enter_group(ed, 1).ok());
+    REQUIRE(select_picked(ed, 1).ok());
+    REQUIRE(move_selection(ed, Vec3(1, 0, 0)).ok());
     CHECK(ed.level().editor.find_group(1)->position.x == doctest::Approx(2));
 }
 
 TEST_CASE("deleting members: empty groups go; undo brings entities and group back bit for bit") {
     Editor ed = four_walls();
-    REQUIRE(ed.select({1, 2}).ok());
-    REQUIRE(ed.group_selection().ok());
+    REQUIRE(select(ed, {1, 2}).ok());
+    REQUIRE(group_selection(ed).ok());
     const std::string grouped = editor_test::text_of(ed);
-    REQUIRE(ed.delete_entities({1}).ok());
+    REQUIRE(delete_entities(ed, {1}).ok());
     CHECK(ed.level().editor.find_group(1)->entities == std::vector<int>{2});
-    REQUIRE(ed.delete_entities({2}).ok());
+    REQUIRE(delete_entities(ed, {2}).ok());
     CHECK(ed.level().editor.groups.empty());
     CHECK(ed.undo());
     CHECK(ed.undo());
@@ -121,80 +128,29 @@ TEST_CASE("deleting members: empty groups go; undo brings entities and group bac
 TEST_CASE("grouping refuses nothing selected and a selection that is one group already") {
     Editor ed = four_walls();
     ed.clear_selection();
-    CHECK(!ed.group_selection().ok());
-    REQUIRE(ed.select({1, 2}).ok());
-    REQUIRE(ed.group_selection().ok());
-    auto again = ed.group_selection();
+    CHECK(!group_selection(ed).ok());
+    REQUIRE(select(ed, {1, 2}).ok());
+    REQUIRE(group_selection(ed).ok());
+    auto again = group_selection(ed);
     REQUIRE(!again.ok());
     CHECK(again.error().message.find("one group already") != std::string::npos);
-    CHECK(!ed.enter_group(42).ok());
-}
-
-TEST_CASE("layers: new entities join the active layer; hide and lock a layer; remove it; undo") {
-    Editor ed = four_walls();
-    auto walls = ed.layer_add("Walls");
-    REQUIRE(walls.ok());
-    CHECK(*walls == 1);
-    CHECK(ed.level().editor.layers.size() == 2);
-    CHECK(ed.level().editor.layers[0].name == "Default");
-    CHECK(!ed.layer_add("Walls").ok()); // names are unique
-    CHECK(!ed.layer_add("").ok());
-    REQUIRE(ed.select({1, 2, 3, 4}).ok());
-    REQUIRE(ed.move_selection_to_layer(1).ok());
-    CHECK(layer_of(ed.level().editor, 3) == 1);
-    CHECK(layer_of(ed.level().editor, 5) == 0);
-    REQUIRE(ed.layer_set_active(1).ok());
-    auto placed = ed.place(level::EntityType::Wall, Vec3(0, 0, -8));
-    REQUIRE(placed.ok());
-    CHECK(layer_of(ed.level().editor, *placed) == 1);
-
-    REQUIRE(ed.layer_set_visible(1, false).ok());
-    CHECK(ed.doc().hidden.contains(1));
-    CHECK(!ed.doc().hidden.contains(5));
-    CHECK(ed.select_all() == 1); // only the robot is visible
-    REQUIRE(ed.layer_set_visible(1, true).ok());
-    REQUIRE(ed.layer_set_locked(1, true).ok());
-    CHECK(ed.doc().locked.contains(2));
-    CHECK(!ed.select({2}).ok());
-    CHECK(!ed.select_picked(2).ok());
-    CHECK(ed.undo()); // unlock again
-    CHECK(!ed.doc().locked.contains(2));
-    REQUIRE(ed.layer_remove(1).ok());
-    CHECK(ed.level().editor.layers.size() == 1);
-    CHECK(layer_of(ed.level().editor, 1) == 0);
-    CHECK(ed.level().editor.active_layer == 0);
-    CHECK(!ed.layer_remove(0).ok()); // Default stays
-    CHECK(!ed.layer_set_visible(7, false).ok());
-}
-
-TEST_CASE("hiding and locking one entity are saved steps") {
-    Editor ed = four_walls();
-    REQUIRE(ed.set_hidden(2, true).ok());
-    REQUIRE(ed.set_locked(3, true).ok());
-    CHECK(ed.has_unsaved_changes());
-    CHECK(ed.level().editor.hidden == std::vector<int>{2});
-    CHECK(ed.level().editor.locked == std::vector<int>{3});
-    CHECK(ed.doc().hidden.contains(2));
-    CHECK(ed.doc().locked.contains(3));
-    CHECK(!ed.set_hidden(99, true).ok());
-    CHECK(ed.undo());
-    CHECK(!ed.doc().locked.contains(3));
+    CHECK(!enter_group(ed, 42).ok());
 }
 
 TEST_CASE("layers, groups, hidden and locked entities survive save and reopen exactly") {
     test::ScratchDir dir;
     Editor ed = four_walls();
-    REQUIRE(ed.layer_add("Walls").ok());
-    REQUIRE(ed.select({1, 2}).ok());
-    REQUIRE(ed.move_selection_to_layer(1).ok());
-    REQUIRE(ed.group_selection("Pair").ok());
-    REQUIRE(ed.layer_set_visible(1, false).ok());
-    REQUIRE(ed.set_locked(5, true).ok());
-    REQUIRE(ed.set_hidden(4, true).ok());
-    REQUIRE(ed.save_as(dir / "structure.json").ok());
+    REQUIRE(layer_add(ed, "Walls").ok());
+    REQUIRE(select(ed, {1, 2}).ok());
+    REQUIRE(move_selection_to_layer(ed, 1).ok());
+    REQUIRE(group_selection(ed, "Pair").ok());
+    REQUIRE(layer_set_visible(ed, 1, false).ok());
+    REQUIRE(set_locked(ed, 5, true).ok());
+    REQUIRE(set_hidden(ed, 4, true).ok());
+    REQUIRE(save_as(ed, dir / "structure.json").ok());
     const std::string saved = editor_test::text_of(ed);
     Editor again;
-    REQUIRE(again.open(dir / "structure.json").ok());
+    REQUIRE(open(again, dir / "structure.json").ok());
     CHECK(editor_test::text_of(again) == saved);
     CHECK(!again.has_unsaved_changes());
     CHECK(again.level().editor == ed.level().editor);
@@ -260,14 +216,14 @@ TEST_CASE("a 2 000-entity level: a 1 000-entity group picks, moves and undoes as
     // Timings are ks_bench structure's (docs/performance.md); this checks the structure at that size.
     Editor ed;
     for (int i = 0; i < 2000; ++i)
-        REQUIRE(ed.place(level::EntityType::Wall, Vec3(float(i % 50) * 4, 0, float(i / 50) * 4)).ok());
+        REQUIRE(place(ed, level::EntityType::Wall, Vec3(float(i % 50) * 4, 0, float(i / 50) * 4)).ok());
     std::vector<int> half;
     for (int id = 1; id <= 1000; ++id) half.push_back(id);
-    REQUIRE(ed.select(half).ok());
-    REQUIRE(ed.group_selection().ok());
-    REQUIRE(ed.select_picked(500).ok());
+    REQUIRE(select(ed, half).ok());
+    REQUIRE(group_selection(ed).ok());
+    REQUIRE(select_picked(ed, 500).ok());
     CHECK(ed.doc().selection.size() == 1000);
-    REQUIRE(ed.move_selection(Vec3(0, 0, 1)).ok());
+    REQUIRE(move_selection(ed, Vec3(0, 0, 1)).ok());
     CHECK(ed.undo());
     CHECK(ed.undo());
     CHECK(ed.level().editor.groups.empty());
@@ -277,14 +233,14 @@ TEST_CASE("copy and paste keep groups and prefab links; a plain entity pastes pl
     test::ScratchDir dir;
     Editor ed = four_walls();
     ed.prefabs().set_folders({dir.path()});
-    REQUIRE(ed.select({1, 2}).ok());
-    REQUIRE(ed.group_selection("Pair").ok());
-    REQUIRE(ed.select({3, 4}).ok());
-    REQUIRE(ed.save_prefab("two_walls").ok()); // group 2, an instance
-    REQUIRE(ed.select({1, 2, 3, 4}).ok());
-    const std::string text = ed.copy();
+    REQUIRE(select(ed, {1, 2}).ok());
+    REQUIRE(group_selection(ed, "Pair").ok());
+    REQUIRE(select(ed, {3, 4}).ok());
+    REQUIRE(save_prefab(ed, "two_walls").ok()); // group 2, an instance
+    REQUIRE(select(ed, {1, 2, 3, 4}).ok());
+    const std::string text = copy(ed);
     CHECK(text.find("\"editor\"") != std::string::npos);
-    REQUIRE(ed.paste().ok());
+    REQUIRE(paste(ed).ok());
     CHECK(sorted(ed.doc().selection) == std::vector<int>{6, 7, 8, 9});
     REQUIRE(ed.level().editor.groups.size() == 4);
     const level::Group& pair = ed.level().editor.groups[2];
@@ -294,25 +250,25 @@ TEST_CASE("copy and paste keep groups and prefab links; a plain entity pastes pl
     const level::Group& instance = ed.level().editor.groups[3];
     CHECK(instance.has_prefab);
     CHECK(instance.prefab.members == std::vector<int>{8, 9});
-    REQUIRE(ed.select_picked(8).ok());
+    REQUIRE(select_picked(ed, 8).ok());
     CHECK(sorted(ed.doc().selection) == std::vector<int>{8, 9});
     CHECK(ed.undo());
     CHECK(ed.level().editor.groups.size() == 2);
     // One member alone pastes as a plain entity.
-    REQUIRE(ed.select({1}).ok());
-    (void)ed.copy();
-    REQUIRE(ed.paste().ok());
+    REQUIRE(select(ed, {1}).ok());
+    (void)copy(ed);
+    REQUIRE(paste(ed).ok());
     CHECK(ed.level().editor.groups.size() == 2);
 }
 
 TEST_CASE("box select takes the groups it touches whole, and counts what the box held") {
     Editor ed = four_walls();
-    REQUIRE(ed.select({1, 2}).ok());
-    REQUIRE(ed.group_selection().ok());
-    const int held = ed.select_picked_where([](const level::Entity& e) { return e.id == 2 || e.id == 3; });
+    REQUIRE(select(ed, {1, 2}).ok());
+    REQUIRE(group_selection(ed).ok());
+    const int held = select_picked_where(ed, [](const level::Entity& e) { return e.id == 2 || e.id == 3; });
     CHECK(held == 2);
     CHECK(sorted(ed.doc().selection) == std::vector<int>{1, 2, 3});
-    REQUIRE(ed.enter_group(1).ok()); // inside the group, members one by one
-    (void)ed.select_picked_where([](const level::Entity& e) { return e.id == 2; });
+    REQUIRE(enter_group(ed, 1).ok()); // inside the group, members one by one
+    (void)select_picked_where(ed, [](const level::Entity& e) { return e.id == 2; });
     CHECK(ed.doc().selection == std::vector<int>{2});
 }
