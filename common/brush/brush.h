@@ -57,6 +57,9 @@ class Brush {
     // kOnPlaneEpsilon), or -1.
     int find_face(const Plane& plane) const;
 
+    // The same faces (planes and attributes, exactly) about the same anchor; the derived data follows.
+    bool operator==(const Brush& other) const { return anchor_ == other.anchor_ && faces_ == other.faces_; }
+
   private:
     Brush() = default;
 

@@ -18,6 +18,8 @@ struct FaceAttributes {
 struct Face {
     Plane plane;
     FaceAttributes attributes;
+
+    bool operator==(const Face&) const = default;
 };
 
 } // namespace ks::brush

@@ -27,6 +27,7 @@ struct Plane {
     double signed_distance(const DVec3& p) const { return glm::dot(normal, p) - distance; }
     Plane flipped() const { return {-normal, -distance}; }
     Plane translated(const DVec3& delta) const { return {normal, distance + glm::dot(normal, delta)}; }
+    bool operator==(const Plane&) const = default;
 };
 
 // The plane through a, b, c whose normal follows the right hand (a->b->c counter-clockwise seen from the

@@ -1,5 +1,7 @@
 #include "level/entity_shapes.h"
 
+#include "brush/texture_mapping.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -47,6 +49,7 @@ bool keeps_pitch_and_roll(EntityType type) {
     case EntityType::Floor:
     case EntityType::Stair:
     case EntityType::ControlPanel:
+    case EntityType::Brush:
         return true;
     default:
         return false;
@@ -91,10 +94,20 @@ std::optional<PlacedShape> static_solid_shape(const Entity& e) {
     case EntityType::Trigger:
     case EntityType::Spawner:
     case EntityType::Message:
+    case EntityType::Brush: // not a box: world_brush
     case EntityType::Count:
         break;
     }
     return std::nullopt;
+}
+
+Result<brush::Brush> world_brush(const Entity& entity) {
+    const auto* props = entity.try_as<BrushProps>();
+    if (!props)
+        return Error(std::string(type_name(entity.type())) + " " + std::to_string(entity.id) +
+                     " is not a brush");
+    const glm::dmat3 rotation = glm::mat3_cast(dquat_from_ypr_degrees(DVec3(entity.rotation)));
+    return brush::transformed(props->brush, rotation, DVec3(entity.position));
 }
 
 float door_leaf_slide(const DoorProps& door, float open_fraction) {
@@ -156,6 +169,11 @@ PlacedShape bounding_shape(const Entity& e) {
     case EntityType::Message:
         return unturned(ShapeKind::Box, e.position, Vec3(0, kLogicMarkerHalfSize, 0),
                         Vec3(kLogicMarkerHalfSize));
+    case EntityType::Brush: { // the box around its faces in its own frame: turns with it, as its faces do
+        const brush::Brush& b = e.as<BrushProps>().brush;
+        return placed(ShapeKind::Box, entity_frame(e), Vec3((b.bounds_min() + b.bounds_max()) * 0.5),
+                      Vec3((b.bounds_max() - b.bounds_min()) * 0.5));
+    }
     default:
         break;
     }

@@ -3,6 +3,7 @@
 // placements. The game builds its physics bodies from these shapes, the editor its boxes and picking, the
 // renderer's level scene and the runtime's world view their model transforms, so the four cannot disagree.
 // Pure functions of the entity (and, for things that move, of the game's state), no module above level.
+#include "brush/brush.h"
 #include "geometry/transform.h"
 #include "level/level.h"
 
@@ -15,9 +16,9 @@ geometry::Transform entity_frame(const Entity& entity);
 // The entity's position turned by its yaw only: doors, lights and props stand upright whatever their pitch.
 geometry::Transform upright_frame(const Entity& entity);
 
-// Whether the game turns this type's body by its pitch and roll too: walls, floors, stairs and the control
-// panel (their solid shapes use entity_frame). Every other type stands upright and turns by its yaw alone,
-// so the editor offers it only the yaw ring.
+// Whether the game turns this type's body by its pitch and roll too: walls, floors, stairs, the control
+// panel (their solid shapes use entity_frame) and brushes (world_brush). Every other type stands upright and
+// turns by its yaw alone, so the editor offers it only the yaw ring.
 bool keeps_pitch_and_roll(EntityType type);
 
 enum class ShapeKind : std::uint8_t {
@@ -55,6 +56,11 @@ inline constexpr float kLogicMarkerHalfSize = 0.75f; // the editor's box on a me
 // emitters are heard, never touched).
 std::optional<PlacedShape> static_solid_shape(const Entity& entity);
 
+// A brush entity's brush in the world: its faces (in the entity's frame) turned by the entity's full
+// rotation and moved to its position, texture lock on (the texture travels with the brush). An Error for
+// other types, and where the turned brush would leave the brush module's world (brush::kMaxCoordinate).
+Result<brush::Brush> world_brush(const Entity& entity);
+
 // Door leaves, indexed by side: 0 is the leaf on the door's local -x, 1 the one on +x. Each slides outward
 // along local x by open_offset times the open fraction (0 closed, 1 open); the result is in the door's
 // upright frame (upright_frame), so physics and drawing place the leaves by the same formula.
@@ -77,7 +83,8 @@ PlacedShape trigger_box(const Entity& trigger);
 // The box the editor selects, picks and checks overlaps with: the solid shape where there is one (a stair
 // as the box around its wedge), otherwise the doorway with closed leaves, the robot's body, the pickup's
 // cube, the top light's hanging bulb, the sound emitter's marker (an upright cube around its point), the
-// trigger's volume, a robot's body where a spawner makes them, a cube on a message's position.
+// trigger's volume, a robot's body where a spawner makes them, a cube on a message's position, the box
+// around a brush's faces in the entity's frame.
 PlacedShape bounding_shape(const Entity& entity);
 
 // ---- model placements: the transform from a generated model's frame to the world -----------------------

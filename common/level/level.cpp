@@ -1,5 +1,7 @@
 #include "level/level.h"
 
+#include "brush/brush_build.h"
+
 #include <algorithm>
 #include <utility>
 
@@ -7,8 +9,8 @@ namespace ks::level {
 namespace {
 
 constexpr std::array<std::string_view, static_cast<size_t>(EntityType::Count)> kTypeNames = {
-    "wall",   "floor",        "stair",         "door",  "floor_light", "top_light", "robot",
-    "pickup", "gas_cylinder", "control_panel", "sound", "trigger",     "spawner",   "message",
+    "wall",         "floor",         "stair", "door",    "floor_light", "top_light", "robot", "pickup",
+    "gas_cylinder", "control_panel", "sound", "trigger", "spawner",     "message",   "brush",
 };
 
 // Builds the variant alternative whose index is `index` (the EntityType order is the variant order).
@@ -50,6 +52,16 @@ const std::array<EntityType, static_cast<size_t>(EntityType::Count)>& all_types(
 
 Props default_props(EntityType type) {
     return props_for_index(static_cast<size_t>(type), std::make_index_sequence<std::variant_size_v<Props>>{});
+}
+
+const brush::Brush& default_brush() {
+    static const brush::Brush box = [] {
+        brush::FaceAttributes attributes;
+        attributes.material = std::string(kDefaultBrushMaterial);
+        const double h = kDefaultBrushHalfSize;
+        return brush::make_box({-h, 0.0, -h}, {h, 2.0 * h, h}, attributes).value();
+    }();
+    return box;
 }
 
 Entity* Level::find(int id) {

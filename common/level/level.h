@@ -1,8 +1,9 @@
 #pragma once
-// Level format v2: the one data model that the loader reads, the editor edits, and the game spawns from.
+// Level format v3: the one data model that the loader reads, the editor edits, and the game spawns from.
 // Each entity type's properties are defined once, as a struct with a visit() that lists every field with
 // its default, range, unit and tooltip; loading, saving, validation and the editor's inspector all walk
 // that list, so there are no parallel copies to keep in step. See docs/level-format.md.
+#include "brush/brush.h"
 #include "core/math.h"
 #include "level/editor_data.h"
 
@@ -16,7 +17,7 @@
 namespace ks::level {
 
 inline constexpr std::string_view kFormatName = "killswitch-level";
-inline constexpr int kFormatVersion = 2;
+inline constexpr int kFormatVersion = 3;
 
 // Metadata a visitor receives with each field. Ranges are inclusive; a field outside its range is an error.
 struct FieldInfo {
@@ -360,10 +361,32 @@ struct MessageProps {
     bool operator==(const MessageProps&) const = default;
 };
 
+// ---- shaped geometry (docs/level-format.md, "Brushes")
+// ----------------------------------------------------- A convex brush: its face planes in the entity's own
+// frame (world = R * local + position, like every entity), so moving, turning, duplicating and grouping work
+// on brushes unchanged, and a brush near its position keeps small, exact plane distances. The brush is always
+// valid (brush::Brush refuses invalid planes), so every user gets its derived vertices and faces; the world
+// brush is level::world_brush.
+inline constexpr std::string_view kDefaultBrushMaterial = "concrete";
+inline constexpr double kDefaultBrushHalfSize = 2.0; // the default brush: a 4 x 4 x 4 box on its position
+
+// A 4 x 4 x 4 box standing on the origin (bottom centre, like walls), every face kDefaultBrushMaterial.
+const brush::Brush& default_brush();
+
+struct BrushProps {
+    brush::Brush brush = default_brush();
+    template <class V>
+    void visit(V& v) {
+        v.field(brush, {"faces", "The brush's face planes in the entity's frame, each with its material and "
+                                 "texture mapping"});
+    }
+    bool operator==(const BrushProps&) const = default;
+};
+
 // The variant's order is the EntityType order.
 using Props = std::variant<WallProps, FloorProps, StairProps, DoorProps, FloorLightProps, TopLightProps,
                            RobotProps, PickupProps, GasCylinderProps, ControlPanelProps, SoundProps,
-                           TriggerProps, SpawnerProps, MessageProps>;
+                           TriggerProps, SpawnerProps, MessageProps, BrushProps>;
 
 enum class EntityType : std::uint8_t {
     Wall,
@@ -380,11 +403,12 @@ enum class EntityType : std::uint8_t {
     Trigger,
     Spawner,
     Message,
+    Brush,
     Count
 };
 
 // "wall", "floor", "stair", "door", "floor_light", "top_light", "robot", "pickup", "gas_cylinder",
-// "control_panel", "sound", "trigger", "spawner", "message"
+// "control_panel", "sound", "trigger", "spawner", "message", "brush"
 std::string_view type_name(EntityType type);
 bool type_from_name(std::string_view name, EntityType& out);
 const std::array<EntityType, static_cast<size_t>(EntityType::Count)>& all_types();

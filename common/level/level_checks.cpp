@@ -3,6 +3,8 @@
 #include "jsonio/number_text.h"
 #include "jsonio/suggest.h"
 #include "jsonio/text.h"
+#include "level/brush_faces.h"
+#include "level/entity_shapes.h"
 #include "level/logic_checks.h"
 #include "level/patrol_checks.h"
 #include "level/sound_name.h"
@@ -107,6 +109,12 @@ class FieldChecker {
         check_patrol(v, path_of(info), sink_);
     }
 
+    // The planes are valid by construction (brush::Brush refuses others); an empty material is not.
+    void field(brush::Brush& v, const FieldInfo& info) {
+        SubjectScope scope(sink_, subject_);
+        check_brush_materials(v, path_of(info), sink_);
+    }
+
   private:
     std::string path_of(const FieldInfo& info) const { return member_path(path_, info.name); }
     std::string path_;
@@ -148,6 +156,11 @@ void check_entity(const Entity& entity, const std::string& path, DiagnosticSink&
                        " is larger than eye_radius_max " + jsonio::readable_float(robot->eye_radius_max),
                    "the robot starts following inside eye_radius_min and keeps following inside "
                    "eye_radius_max, so min <= max");
+    if (entity.type() == EntityType::Brush) {
+        if (Result<brush::Brush> placed = world_brush(entity); !placed)
+            sink.error(member_path(path, "position"), entity_subject(entity) + ": " + placed.error().message,
+                       placed.error().hint);
+    }
     if (spawner && spawner->robot.dummy)
         sink.error(member_path(props_path, "dummy"),
                    entity_subject(entity) + ": a spawner cannot make animation dummies",

@@ -57,6 +57,11 @@ void migrate_1_to_2(Json& document) {
             Json::array({Json{{"id", kShutdownObjective}, {"text", kShutdownObjectiveText}}});
 }
 
+// Version 3 added the brush entity. A version-2 file has none (its readers refused the type), so every entity
+// reads as it did and the document needs no change; the step exists so the version says which types a file
+// may hold, and a version-2 file is saved as version 3.
+void migrate_2_to_3(Json&) {}
+
 } // namespace
 
 const std::vector<Migration>& migrations() {
@@ -66,6 +71,7 @@ const std::vector<Migration>& migrations() {
         {1,
          "the control panel's win became the objective \"shutdown\", completed by each panel's on_use link",
          &migrate_1_to_2},
+        {2, "the brush entity type was added (nothing in a version-2 level changes)", &migrate_2_to_3, false},
     };
     return table;
 }
@@ -75,8 +81,9 @@ std::vector<std::string> migrate(Json& document, int version) {
     for (int v = version; v < kFormatVersion; ++v) {
         const Migration& step = migrations().at(static_cast<size_t>(v));
         step.apply(document);
-        applied.push_back("version " + std::to_string(v) + " -> " + std::to_string(v + 1) + ": " +
-                          step.summary);
+        if (step.changes_document)
+            applied.push_back("version " + std::to_string(v) + " -> " + std::to_string(v + 1) + ": " +
+                              step.summary);
     }
     return applied;
 }

@@ -2,6 +2,8 @@
 
 #include "level/editor_data_io.h"
 
+#include "level/brush_faces.h"
+
 #include "jsonio/describe.h"
 #include "jsonio/number_text.h"
 #include "jsonio/object_reader.h"
@@ -164,6 +166,14 @@ class FieldReader {
         if (!j) return;
         SubjectScope scope(sink_, subject_);
         read_patrol(*j, path_of(info), info, sink_, v);
+    }
+
+    // A brush's problems name the entity too; the brush is read whole or not at all.
+    void field(brush::Brush& v, const FieldInfo& info) {
+        const Json* j = member(info);
+        if (!j) return;
+        SubjectScope scope(sink_, subject_);
+        read_brush_faces(*j, path_of(info), sink_, v);
     }
 
     // Links and name lists hang off an entity or an objective, so their messages name it too.

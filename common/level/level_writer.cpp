@@ -2,6 +2,8 @@
 
 #include "level/editor_data_io.h"
 
+#include "level/brush_faces.h"
+
 #include "jsonio/number_text.h"
 
 #include <algorithm>
@@ -51,6 +53,7 @@ class FieldWriter {
     void field(Patrol& v, const FieldInfo& info) {
         if (v.active()) object_[info.name] = patrol_json(v);
     }
+    void field(brush::Brush& v, const FieldInfo& info) { object_[info.name] = brush_faces_json(v); }
     // Lists are left out while empty, so entities and objectives without them save as they always did.
     void field(std::vector<Link>& v, const FieldInfo& info) {
         if (!v.empty()) object_[info.name] = links_json(v);

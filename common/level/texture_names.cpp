@@ -21,6 +21,11 @@ class TextureFieldCollector {
     void field(std::string& value, const FieldInfo& info) {
         if (is_texture_field(info.name)) out_.push_back({info.name, &value});
     }
+    void field(brush::Brush& brush, const FieldInfo& info) {
+        for (size_t i = 0; i < brush.faces().size(); ++i)
+            out_.push_back({jsonio::member_path(jsonio::element_path(info.name, i), "material"),
+                            &brush.faces()[i].attributes.material});
+    }
     template <class T>
     void field(T&, const FieldInfo&) {}
 

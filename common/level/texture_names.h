@@ -22,9 +22,10 @@ std::vector<std::string> surface_texture_names_in(const std::filesystem::path& f
 // (the folder belongs to the asset generator and does not change while a program runs).
 const std::vector<std::string>& shipped_texture_names();
 
-// The texture names of an entity's fields, with the field's name (none for types without textures).
+// The texture names of an entity's fields, with the field's path below the entity's props: "texture", or
+// a brush face's "faces[3].material" (none for types without textures).
 struct TextureField {
-    const char* field;
+    std::string field;
     const std::string* name;
 };
 std::vector<TextureField> texture_fields(const Entity& entity);

@@ -112,6 +112,21 @@ std::optional<SolidGeometry> surface_geometry(const level::Entity& e, AssetLibra
     g.mesh = std::move(data);
     return g;
 }
+// A brush entity's geometry: its brush placed in the world (level::world_brush), each material's faces one
+// surface; it casts the sun's shadow and occludes like a wall.
+std::optional<SolidGeometry> brush_geometry(const level::Entity& e, AssetLibrary& assets) {
+    auto world = level::world_brush(e);
+    if (!world.ok()) {
+        log::warn("brush entity ", e.id, " not drawn: ", world.error().str());
+        return std::nullopt;
+    }
+    BrushMesh built = build_brush_mesh(*world);
+    SolidGeometry g;
+    for (const auto& range : built.materials)
+        g.parts.push_back({&assets.surface(range.material), range.first_polygon, range.polygon_count});
+    g.mesh = std::move(built.mesh);
+    return g;
+}
 } // namespace
 
 MeshData build_surface_mesh(const level::Entity& e) {
@@ -174,6 +189,9 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
         case EntityType::Floor:
         case EntityType::Stair:
             if (auto g = surface_geometry(e, assets)) geometry.push_back(std::move(*g));
+            break;
+        case EntityType::Brush:
+            if (auto g = brush_geometry(e, assets)) geometry.push_back(std::move(*g));
             break;
         case EntityType::Door: {
             const auto& d = e.as<level::DoorProps>();

@@ -1,5 +1,6 @@
 #include "level_builders.h"
 
+#include "brush/brush_build.h"
 #include "level/level_io.h"
 #include "level/logic_names.h"
 
@@ -91,6 +92,26 @@ class RandomFiller {
         v.wait = random_float(rng_, 0, 5);
     }
 
+    // A box of random size, often cut by a slanted plane of a random whole-number direction (normalised,
+    // so its components are full-precision doubles), with random materials and mappings per face.
+    void field(brush::Brush& v, const FieldInfo&) {
+        static const char* const kMaterials[] = {"concrete", "wood", "tiles", "ceiling", "metal"};
+        const double w = 0.5 + rng_.below(40) * 0.25, h = 0.5 + rng_.below(40) * 0.25;
+        std::vector<brush::Face> faces = brush::make_box({-w, 0, -w}, {w, h, w}).value().faces();
+        if (rng_.chance(0.6f)) {
+            const DVec3 n = glm::normalize(DVec3(static_cast<double>(rng_.below(7)) - 3.0, 4.0,
+                                                 static_cast<double>(rng_.below(7)) - 3.0));
+            faces.push_back({{n, h * 0.75 * n.y}, {}});
+        }
+        for (brush::Face& f : faces) {
+            f.attributes.material = kMaterials[rng_.below(5)];
+            f.attributes.offset = {random_float(rng_, -8, 8), rng_.uniform_double() * 3};
+            f.attributes.scale = {random_float(rng_, 0.25, 8), rng_.chance(0.5f) ? 1.0 : -2.5};
+            f.attributes.rotation_degrees = rng_.chance(0.5f) ? 0.0 : random_float(rng_, -180, 180);
+        }
+        v = brush::Brush::from_faces(std::move(faces), brush::RedundantPlanes::drop).value();
+    }
+
   private:
     Rng& rng_;
 };
@@ -179,6 +200,16 @@ Level level_with_every_type() {
     spawner.robot.health = 60;
     spawner.robot.hearing_radius = 45;
     level.add(EntityType::Message, {0, 2, 0}, "Welcome").as<MessageProps>() = {"Clear the \"hall\"", 6.5f};
+    { // a ramp: a box cut by a slope of direction (0, 2, 1), faces with their own materials and mappings
+        std::vector<brush::Face> faces = brush::make_box({-3, 0, -4}, {3, 4, 4}).value().faces();
+        const DVec3 slope = glm::normalize(DVec3(0, 2, 1));
+        faces.push_back({{slope, 4.0 * slope.y}, {}}); // through y = 4 over z = 0: down to y = 2 at z = 4
+        for (size_t i = 0; i < faces.size(); ++i)
+            faces[i].attributes = {
+                i % 2 ? "metal" : "wood", {0.5 * double(i), -0.25}, {2, 0.75}, 15.0 * double(i)};
+        level.add(EntityType::Brush, {-30, 0, 40}, "Ramp").as<BrushProps>().brush =
+            brush::Brush::from_faces(std::move(faces)).value();
+    }
     int yaw = -144;
     for (Entity& e : level.entities) e.rotation = {static_cast<float>(yaw += 37), 0.5f, -1.25f};
 

@@ -63,6 +63,13 @@ class DocLister {
     void field(std::vector<std::string>&, const FieldInfo& info) {
         row(info, "array of names", "at most " + std::to_string(kMaxKillNames), "[]");
     }
+    void field(ks::brush::Brush&, const FieldInfo& info) {
+        // Its default written out would be six faces of JSON: the table names it instead.
+        rows_ += "| " + code(info.name) +
+                 " | array of faces (see Brushes) | a 4 × 4 × 4 box of `concrete` | 4 .. " +
+                 std::to_string(ks::brush::kMaxFaces) + " faces | " + info.unit + " | " + info.tooltip +
+                 " |\n";
+    }
     std::string table() const {
         return "| field | value | default | range | unit | meaning |\n|---|---|---|---|---|---|\n" + rows_;
     }

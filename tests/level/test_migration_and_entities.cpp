@@ -34,11 +34,32 @@ TEST_CASE("a version 0 file loads through both migrations and saves as the curre
     CHECK(level->entities[1].rotation == ks::Vec3(-90, 0, 0));
     CHECK(level->entities[1].as<RobotProps>().health == 50.0f);
     const std::string saved = save_level_string(*level);
-    CHECK(saved.find("\"version\": 2,") != std::string::npos);
+    CHECK(saved.find("\"version\": 3,") != std::string::npos);
     CHECK(saved.find("\"objects\"") == std::string::npos);
     LoadReport again;
     REQUIRE(load_level_string(saved, "upgraded.json", &again).ok());
     CHECK(again.diagnostics.empty());
+}
+
+TEST_CASE("a version 2 file loads unchanged and without a warning, and saves as version 3") {
+    const auto path = ks::test::data_dir() / "levels" / "good" / "version2_migration.json";
+    LoadReport report;
+    auto level = load_level_file(path, &report);
+    REQUIRE_MESSAGE(level.ok(), report.str());
+    CHECK_MESSAGE(report.diagnostics.empty(), report.str());
+    REQUIRE(level->entities.size() == 2);
+    CHECK(level->entities[1].type() == EntityType::Wall);
+    nlohmann::ordered_json doc = nlohmann::ordered_json::parse(ks::test::read_file(path));
+    const nlohmann::ordered_json before = doc;
+    CHECK(migrate(doc, 2).empty());
+    CHECK(doc == before); // the step leaves the document as it was
+    const std::string saved = save_level_string(*level);
+    CHECK(saved.find("\"version\": 3,") != std::string::npos);
+    LoadReport again;
+    auto reloaded = load_level_string(saved, "v3.json", &again);
+    REQUIRE(reloaded.ok());
+    CHECK(again.diagnostics.empty());
+    CHECK(*reloaded == *level);
 }
 
 TEST_CASE("migration 0 -> 1 renames in place and leaves unrelated keys alone") {
@@ -48,7 +69,7 @@ TEST_CASE("migration 0 -> 1 renames in place and leaves unrelated keys alone") {
     CHECK(
         doc.dump() ==
         R"({"format":"killswitch-level","version":0,"entities":[{"id":1,"x":1,"rotation":[30,0,0]},5],"tail":true})");
-    CHECK(migrate(doc, 0).size() == 2); // 0 -> 1 -> 2
+    CHECK(migrate(doc, 0).size() == 2); // 0 -> 1 -> 2; 2 -> 3 changes nothing and is not reported
     nlohmann::ordered_json current = nlohmann::ordered_json::parse(R"({"version": 2})");
     CHECK(migrate(current, kFormatVersion).empty());
 }

@@ -61,11 +61,13 @@ TEST_CASE("a texture field is found by its name on every type that has one") {
         const auto fields = texture_fields(e);
         with_texture += !fields.empty();
         for (const TextureField& f : fields) {
-            CHECK(is_texture_field(f.field));
+            // A brush's faces each name a material: "faces[i].material".
+            CHECK((is_texture_field(f.field) ||
+                   (e.type() == EntityType::Brush && f.field.ends_with("].material"))));
             CHECK(has(shipped_texture_names(), *f.name)); // every default names a shipped material
         }
     }
-    CHECK(with_texture == 3); // wall, floor, stair
+    CHECK(with_texture == 4); // wall, floor, stair, brush
 }
 
 TEST_CASE("loading warns about an unknown texture with file, line, entity, field and a did-you-mean") {
@@ -125,8 +127,16 @@ TEST_CASE("the types that keep pitch and roll are those whose game body turns wi
         const auto yawed = static_solid_shape(e);
         e.rotation = {30.0f, 20.0f, 10.0f};
         const auto tilted = static_solid_shape(e);
-        // The game's body: the static solid where there is one (doors, robots and the rest stand upright).
-        const bool body_turns = tilted && std::abs(glm::dot(tilted->rotation(), yawed->rotation())) < 0.9999f;
+        // The game's body: the static solid where there is one (doors, robots and the rest stand upright),
+        // a brush's world brush (its vertex centre moves when the pitch and roll turn it).
+        bool body_turns = tilted && std::abs(glm::dot(tilted->rotation(), yawed->rotation())) < 0.9999f;
+        if (type == EntityType::Brush) {
+            const auto tilted_brush = world_brush(e);
+            e.rotation = {30.0f, 0.0f, 0.0f};
+            const auto yawed_brush = world_brush(e);
+            REQUIRE((tilted_brush.ok() && yawed_brush.ok()));
+            body_turns = glm::length(tilted_brush->vertex_centre() - yawed_brush->vertex_centre()) > 1e-3;
+        }
         CAPTURE(type_name(type));
         CHECK(keeps_pitch_and_roll(type) == body_turns);
     }
