@@ -151,6 +151,36 @@ bool LightBake::hits(const Occluder& o, const Vec3& from, const Vec3& dir, float
     return true;
 }
 
+void LightBake::sun_occluders(const Vertex* corners, std::size_t count, const Vec3& dir, float length,
+                              std::vector<int>& out) const {
+    // The polygon's bounds swept along the ray meet a solid's bounds exactly when the ray from the bounds'
+    // centre meets the solid's bounds grown by their half size (with a margin for the rays' lift).
+    Vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (std::size_t i = 0; i < count; ++i) {
+        lo = glm::min(lo, corners[i].position);
+        hi = glm::max(hi, corners[i].position);
+    }
+    const Vec3 centre = (lo + hi) * 0.5f, grow = (hi - lo) * 0.5f + Vec3(0.1f);
+    out.clear();
+    for (std::size_t i = 0; i < occluders_.size(); ++i) {
+        const Occluder& o = occluders_[i];
+        if (!o.blocks_sun) continue;
+        float t0 = 0.0f, t1 = length;
+        for (int a = 0; a < 3 && t0 <= t1; ++a) {
+            const float near_side = o.lo[a] - grow[a] - centre[a], far_side = o.hi[a] + grow[a] - centre[a];
+            if (std::abs(dir[a]) < 1e-12f) {
+                if (near_side > 0.0f || far_side < 0.0f) t1 = -1.0f;
+                continue;
+            }
+            float n = near_side / dir[a], f = far_side / dir[a];
+            if (n > f) std::swap(n, f);
+            t0 = std::max(t0, n);
+            t1 = std::min(t1, f);
+        }
+        if (t0 <= t1) out.push_back(static_cast<int>(i));
+    }
+}
+
 void LightBake::add_occluders(const MeshData& mesh, bool blocks_sun) {
     std::size_t polygon = 0, vertex = 0;
     for (std::uint32_t faces : mesh.solid_sizes) {
@@ -233,6 +263,7 @@ BakeStats LightBake::bake(const std::vector<BakeSurface>& surfaces, const Enviro
     const bool sun_on = glm::length(env.sun_color) > 0.0f && is_finite(to_sun);
     constexpr float kLift = 0.02f; // ray origins leave the surface by this much (no self-shadowing)
     const float sun_reach = 1e4f;
+    std::vector<int> sun_subset;
     for (Face& f : faces) {
         const float inv_w = 1.0f / static_cast<float>(width_), inv_h = 1.0f / static_cast<float>(height_);
         // Texel centres: the rectangle's corners at texels (0.5, 0.5) and (w - 0.5, h - 0.5).
@@ -247,6 +278,7 @@ BakeStats LightBake::bake(const std::vector<BakeSurface>& surfaces, const Enviro
         const Vec3 ambient = glm::mix(env.ground_color, env.sky_color, n.y * 0.5f + 0.5f);
         const float sun_cos = sun_on ? std::max(glm::dot(n, to_sun), 0.0f) : 0.0f;
         const FaceEdges edges(f);
+        if (sun_cos > 0.0f) sun_occluders(f.corners, f.corner_count, to_sun, sun_reach, sun_subset);
         for (int j = 0; j < f.h; ++j)
             for (int i = 0; i < f.w; ++i) {
                 const Vec2 q = edges.pull_inside(Vec2(f.extent.x * static_cast<float>(i) / (f.w - 1),
@@ -254,7 +286,8 @@ BakeStats LightBake::bake(const std::vector<BakeSurface>& surfaces, const Enviro
                 const Vec3 p = f.origin + f.u_dir * q.x + f.v_dir * q.y + n * kLift;
                 const auto index = static_cast<std::uint32_t>((f.y + j) * width_ + f.x + i);
                 Vec3 e = ambient;
-                if (sun_cos > 0.0f && !occluded(p, to_sun, sun_reach, true)) e += env.sun_color * sun_cos;
+                if (sun_cos > 0.0f && !occluded(p, to_sun, sun_reach, true, &sun_subset))
+                    e += env.sun_color * sun_cos;
                 base_[index] = e;
                 for (size_t k = 0; k < lights.size(); ++k) {
                     const Light& l = lights[k];

@@ -73,6 +73,10 @@ class LightBake {
                   const std::vector<int>* subset = nullptr) const;
     bool hits(const Occluder& o, const Vec3& from, const Vec3& dir, float length) const;
     void add_occluders(const MeshData& mesh, bool blocks_sun);
+    // The solids that block the sun and that a ray along `dir` from anywhere on a polygon may meet: the
+    // sun's rays from one face are tested against these only.
+    void sun_occluders(const Vertex* corners, std::size_t count, const Vec3& dir, float length,
+                       std::vector<int>& out) const;
 
     int width_ = 0, height_ = 0;
     std::vector<Occluder> occluders_;
