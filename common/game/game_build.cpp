@@ -3,6 +3,7 @@
 #include "game/game.h"
 
 #include "game/robot_rig.h"
+#include "physics/brush_shape.h"
 
 #include <algorithm>
 
@@ -23,6 +24,22 @@ Shape physics_shape(const level::PlacedShape& shape) {
         break;
     }
     return Shape::box(shape.half);
+}
+
+// Every static solid's collision shape and placement, through this one function: walls, floors, stairs,
+// lamp stands, cylinders and the panel as the level's boxes, wedges and cylinders (their bodies, and so the
+// bot's state hashes, are as they always were); a brush as a Hull from its world brush. nullopt: no body.
+Result<std::optional<physics::BrushBody>> static_body(const level::Entity& e) {
+    if (e.type() == level::EntityType::Brush) {
+        Result<brush::Brush> world = level::world_brush(e);
+        if (!world)
+            return Error(world.error().message, Location("level", 0, 0, entity_label(e)), world.error().hint);
+        return std::optional<physics::BrushBody>(physics::brush_body(*world));
+    }
+    const auto shape = level::static_solid_shape(e);
+    if (!shape) return std::optional<physics::BrushBody>();
+    return std::optional<physics::BrushBody>(
+        physics::BrushBody{physics_shape(*shape), {shape->centre(), shape->rotation()}});
 }
 
 } // namespace
@@ -75,8 +92,8 @@ Result<void> Game::build(const level::Level& level) {
     return ok();
 }
 
-// Walls, floors, stairs, lamp stands, cylinders and the panel: one static body each, shaped by the level's
-// entity shapes; lights, cylinders and panels also get their game records.
+// Walls, floors, stairs, brushes, lamp stands, cylinders and the panel: one static body each, shaped by the
+// level's entity shapes (static_body); lights, cylinders and panels also get their game records.
 Result<void> Game::add_entity(const level::Entity& e) {
     switch (e.type()) {
     case level::EntityType::Door:
@@ -102,11 +119,12 @@ Result<void> Game::add_entity(const level::Entity& e) {
         kind = BodyKind::Panel;
         index = interactables_.next_panel();
     }
-    const auto shape = level::static_solid_shape(e);
-    if (!shape) return ok();
+    Result<std::optional<physics::BrushBody>> solid = static_body(e);
+    if (!solid) return solid.error();
+    if (!*solid) return ok();
     BodyDesc d;
-    d.shape = physics_shape(*shape);
-    d.transform = {shape->centre(), shape->rotation()};
+    d.shape = std::move((*solid)->shape);
+    d.transform = (*solid)->transform;
     d.layers = layers;
     d.user_data = pack_user(kind, index);
     auto body = core_.world.add(d, entity_label(e));
@@ -117,7 +135,7 @@ Result<void> Game::add_entity(const level::Entity& e) {
         Cylinder c;
         c.entity_id = e.id;
         c.props = e.as<level::GasCylinderProps>();
-        c.centre = shape->centre();
+        c.centre = d.transform.position;
         c.yaw = yaw;
         c.body = *body;
         explosives_.add(c);
@@ -125,7 +143,7 @@ Result<void> Game::add_entity(const level::Entity& e) {
         Panel k;
         k.entity_id = e.id;
         k.size = e.as<level::ControlPanelProps>().size;
-        k.centre = shape->centre();
+        k.centre = d.transform.position;
         k.yaw = yaw;
         k.body = *body;
         interactables_.add_panel(k);

@@ -94,6 +94,14 @@ ConvexSolid solid_of(const level::PlacedShape& s) {
     return box_solid(s);
 }
 
+// A brush's derived vertices and face polygons, rounded to float once.
+ConvexSolid brush_solid(const brush::Brush& b) {
+    ConvexSolid out;
+    for (const DVec3& v : b.vertices()) out.corners.push_back(Vec3(v));
+    out.faces = b.polygons();
+    return out;
+}
+
 // Appends the solid's faces as triangles wound so that Recast's normal (cross(b - a, c - a)) points out of
 // the solid: its walkable test reads the normal's y.
 void append_solid(const ConvexSolid& solid, InputGeometry& in) {
@@ -200,10 +208,38 @@ int tile_border_cells(const NavSettings& settings) {
 // Only floors (not ceilings) and stairs are walked on: the tops of walls, ceilings, the panel and props are
 // solid but never part of the mesh (robots cannot get up there, and a ceiling's roof would otherwise be a
 // large unreachable island that nearest-point queries snap onto).
+// Brushes are walked on where their slope allows (a ramp, a platform's top); their faces turned down are
+// never walkable by slope, so they need no ceiling flag.
 namespace {
 bool walked_on(const level::Entity& e) {
     if (const auto* floor = e.try_as<level::FloorProps>()) return !floor->ceiling;
-    return e.type() == level::EntityType::Stair;
+    return e.type() == level::EntityType::Stair || e.type() == level::EntityType::Brush;
+}
+
+Error absurd(const level::Level& level, const level::Entity& e) {
+    return Error(entity_label(level, e) + " has a non-finite or absurd position, rotation or size",
+                 Location{}, "fix its numbers in the editor");
+}
+
+// Every solid the mesh is built from, through this one function: the level's boxes, wedges and cylinders
+// (static_solid_shape; obstacles drawn in by half a cell), a brush as its world brush. Brushes are not drawn
+// in: like floors and stairs they are walked on, and drawing in would open seams where they meet; a brush
+// wall grows by up to a cell instead, erring on the side of blocking. nullopt: no solid.
+Result<std::optional<ConvexSolid>> entity_solid(const level::Level& level, const level::Entity& e,
+                                                const NavSettings& settings) {
+    if (e.type() == level::EntityType::Brush) {
+        if (!sane(e.position) || !sane(e.rotation)) return absurd(level, e);
+        Result<brush::Brush> world = level::world_brush(e);
+        if (!world)
+            return Error(entity_label(level, e) + ": " + world.error().message, Location{},
+                         world.error().hint);
+        return std::optional<ConvexSolid>(brush_solid(*world));
+    }
+    const auto shape = level::static_solid_shape(e);
+    if (!shape) return std::optional<ConvexSolid>();
+    if (!sane(e.rotation) || !sane_shape(*shape)) return absurd(level, e);
+    return std::optional<ConvexSolid>(
+        solid_of(is_obstacle(e.type()) ? drawn_in(*shape, settings.cell_size) : *shape));
 }
 } // namespace
 
@@ -220,13 +256,11 @@ Result<InputGeometry> collect_input(const level::Level& level, const NavSettings
             in.doors.push_back(door_footprint(e, settings));
             continue;
         }
-        const auto shape = level::static_solid_shape(e);
-        if (!shape) continue;
-        if (!sane(e.rotation) || !sane_shape(*shape))
-            return Error(entity_label(level, e) + " has a non-finite or absurd position, rotation or size",
-                         Location{}, "fix its numbers in the editor");
+        Result<std::optional<ConvexSolid>> solid = entity_solid(level, e, settings);
+        if (!solid) return solid.error();
+        if (!*solid) continue;
         const int first = static_cast<int>(in.triangles.size() / 3);
-        append_solid(solid_of(is_obstacle(e.type()) ? drawn_in(*shape, settings.cell_size) : *shape), in);
+        append_solid(**solid, in);
         if (!walked_on(e)) never_walked.emplace_back(first, static_cast<int>(in.triangles.size() / 3));
     }
     if (in.triangles.empty())

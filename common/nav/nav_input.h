@@ -1,8 +1,9 @@
 #pragma once
 // What Recast rasterises for a level: the triangles of every entity's static solid shape
 // (level::static_solid_shape: walls, floors, stair wedges, lamp stands, gas cylinders, the control panel;
-// cylinders as 16-sided prisms), each triangle's area (walkable where its slope allows), the triangles each
-// tile touches, and each door's doorway footprint, whose polygons get the door flag.
+// cylinders as 16-sided prisms) and of every brush's faces (level::world_brush), each triangle's area
+// (walkable where its slope allows), the triangles each tile touches, and each door's doorway footprint,
+// whose polygons get the door flag.
 #include "core/math.h"
 #include "core/result.h"
 #include "geometry/aabb.h"

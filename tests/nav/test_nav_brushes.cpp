@@ -1,0 +1,112 @@
+// Brush entities in the navigation mesh: their faces are Recast input, walkable where their slope allows
+// (a ramp, a platform's top) and never on their undersides; a brush wall blocks like a wall entity.
+#include "brush/brush_build.h"
+#include "nav/nav_levels.h"
+
+#include <doctest/doctest.h>
+
+using namespace ks;
+using namespace ks::test;
+
+namespace {
+
+std::unique_ptr<nav::NavMesh> build(const level::Level& level) {
+    auto mesh = nav::NavMesh::build(level, robot_settings());
+    REQUIRE_MESSAGE(mesh.ok(), (mesh.ok() ? "" : mesh.error().str()));
+    return std::move(mesh.value());
+}
+
+level::Entity& add_brush(level::Level& level, Vec3 position, float yaw, const brush::Brush& b) {
+    level::Entity& e = level.add(level::EntityType::Brush, position, "brush");
+    e.rotation.x = yaw;
+    e.as<level::BrushProps>().brush = b;
+    return e;
+}
+
+brush::Brush box(DVec3 min, DVec3 max) {
+    return brush::make_box(min, max, {"concrete"}).value();
+}
+
+// A ramp 12 wide and 12 long rising from y = 0 at local z = 6 to y = 6 at local z = -6 (26.6 degrees).
+brush::Brush ramp() {
+    std::vector<brush::Face> faces;
+    for (const auto& [n, d] : std::vector<std::pair<DVec3, double>>{
+             {{-1, 0, 0}, 6}, {{1, 0, 0}, 6}, {{0, -1, 0}, 0}, {{0, 0, -1}, 6}})
+        faces.push_back({{n, d}, {"concrete"}});
+    const DVec3 slope = glm::normalize(DVec3(0, 2, 1));
+    faces.push_back({{slope, 6.0 * slope.y / 2.0}, {"tiles"}}); // 2y + z = 6
+    return brush::Brush::from_faces(faces).value();
+}
+
+// A 40 x 40 ground, a brush platform 6 high over z in [-20, -8], and (optionally) a brush ramp up to it
+// from z = 4.
+level::Level brush_platform_level(bool with_ramp) {
+    level::Level lv;
+    lv.name = "brush platform";
+    add_floor(lv, Vec3(0), Vec2(40, 40));
+    add_brush(lv, Vec3(0, 0, -14), 0.0f, box({-6, 0, -6}, {6, 6, 6}));
+    if (with_ramp) add_brush(lv, Vec3(0, 0, -2), 0.0f, ramp());
+    return lv;
+}
+
+} // namespace
+
+TEST_CASE("a robot's path goes up a brush ramp onto a brush platform") {
+    auto mesh = build(brush_platform_level(true));
+    const Vec3 on_platform(0, 6, -16);
+    std::vector<Vec3> path;
+    REQUIRE(mesh->find_path(Vec3(10, 0, 12), on_platform, path) == nav::PathStatus::Found);
+    CHECK(path.back().y == doctest::Approx(6.0f).epsilon(0.05));
+    bool on_ramp = false; // between the ramp's foot (z = 4) and top (z = -8), part way up
+    for (size_t i = 1; i < path.size(); ++i) {
+        const Vec3 mid = (path[i - 1] + path[i]) * 0.5f;
+        if (std::abs(mid.x) < 6.0f && mid.z < 4.0f && mid.z > -8.0f && mid.y > 0.5f && mid.y < 5.5f)
+            on_ramp = true;
+    }
+    CHECK(on_ramp);
+    // Standing on the ramp half way up: the mesh is on its slope, 3 above the ground.
+    const auto half_way = mesh->nearest_point(Vec3(0, 3.5f, -2), Vec3(1, 1, 1));
+    REQUIRE(half_way.has_value());
+    CHECK(half_way->y == doctest::Approx(3.0f).epsilon(0.1));
+
+    auto without = build(brush_platform_level(false));
+    CHECK_FALSE(without->reachable(Vec3(10, 0, 12), on_platform));
+}
+
+TEST_CASE("a brush wall blocks, turned by its entity's yaw, and a gap between two lets the path through") {
+    level::Level closed;
+    closed.name = "brush wall";
+    add_floor(closed, Vec3(0), Vec2(30, 30));
+    // Thin along local x, long along local z; yaw 90 lays it along world x, across the room at z = 0.
+    add_brush(closed, Vec3(0), 90.0f, box({-0.25, 0, -15}, {0.25, 4, 15}));
+    CHECK_FALSE(build(closed)->reachable(Vec3(0, 0, 8), Vec3(0, 0, -8)));
+
+    level::Level gap;
+    gap.name = "brush wall with a gap";
+    add_floor(gap, Vec3(0), Vec2(30, 30));
+    add_brush(gap, Vec3(-5, 0, 0), 0.0f, box({-10, 0, -0.25}, {10, 4, 0.25}));      // x in [-15, 5]
+    add_brush(gap, Vec3(12.5f, 0, 0), 0.0f, box({-2.5, 0, -0.25}, {2.5, 4, 0.25})); // x in [10, 15]
+    auto mesh = build(gap);
+    std::vector<Vec3> path;
+    REQUIRE(mesh->find_path(Vec3(0, 0, 8), Vec3(0, 0, -8), path) == nav::PathStatus::Found);
+    const auto x = crossing_x(path, 0.0f);
+    REQUIRE(x.has_value());
+    CHECK(*x >= 5.0f + level::kRobotRadius - 0.3f); // brushes are not drawn in: up to a cell narrower
+    CHECK(*x <= 10.0f - level::kRobotRadius + 0.3f);
+}
+
+TEST_CASE("a brush's underside is never walked on; its top and the floor under it are") {
+    level::Level lv;
+    lv.name = "brush slab";
+    add_floor(lv, Vec3(0), Vec2(30, 30));
+    add_brush(lv, Vec3(0, 5, 0), 0.0f, box({-5, 0, -5}, {5, 0.5, 5})); // a slab from y = 5 to 5.5
+    auto mesh = build(lv);
+    const auto under = mesh->nearest_point(Vec3(0, 4.9f, 0), Vec3(1, 0.3f, 1));
+    CHECK_FALSE(under.has_value()); // nothing walkable at the slab's underside
+    const auto top = mesh->nearest_point(Vec3(0, 5.8f, 0), Vec3(1, 0.5f, 1));
+    REQUIRE(top.has_value());
+    CHECK(top->y == doctest::Approx(5.5f).epsilon(0.05));
+    const auto floor = mesh->nearest_point(Vec3(0, 0.5f, 0), Vec3(1, 1, 1));
+    REQUIRE(floor.has_value());
+    CHECK(floor->y == doctest::Approx(0.0f).epsilon(0.05));
+}
