@@ -49,7 +49,7 @@ struct FaceEdges {
     std::vector<Vec2> point, inward; // a point on each edge and its inward unit normal
     std::vector<float> inset;
 
-    FaceEdges(const Face& f) {
+    explicit FaceEdges(const Face& f) {
         std::vector<Vec2> c;
         Vec2 centre(0.0f);
         for (std::size_t i = 0; i < f.corner_count; ++i) {
