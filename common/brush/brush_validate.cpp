@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace ks::brush {
 namespace {
@@ -44,8 +45,13 @@ Result<void> normalize(Face& face, std::size_t i) {
     if (!(len > 1e-150) || !std::isfinite(len))
         return Error("the plane normal " + vector_text(face.plane.normal) + " has no direction",
                      face_location(i, ".plane.normal"), "give the non-zero direction the face looks toward");
-    face.plane.normal /= len;
-    face.plane.distance /= len;
+    // A normal already unit length within rounding is kept as it is: dividing it by its computed length
+    // (1 +- an ulp or two) would move its last bits every time, so a brush read from a file, saved and
+    // read again would not give the same planes (normalising is idempotent this way).
+    if (std::abs(len - 1.0) > 4.0 * std::numeric_limits<double>::epsilon()) {
+        face.plane.normal /= len;
+        face.plane.distance /= len;
+    }
     if (!std::isfinite(face.plane.distance) || std::abs(face.plane.distance) > 4.0 * kMaxCoordinate)
         return Error("the plane lies " + number_text(face.plane.distance) +
                          " units from the origin, beyond the world",
