@@ -19,15 +19,25 @@ geometry::Obb entity_obb(const Entity& e) {
     return box;
 }
 
+namespace {
+// A brush's box is its world vertices' (a turned brush's box around its turned box would be larger).
+geometry::Aabb entity_aabb(const Entity& e) {
+    if (e.type() == level::EntityType::Brush)
+        if (const auto world = level::world_brush(e))
+            return {Vec3(world->bounds_min()), Vec3(world->bounds_max())};
+    return entity_obb(e).aabb();
+}
+} // namespace
+
 geometry::Aabb selection_bounds(const std::vector<const Entity*>& entities) {
     geometry::Aabb box = geometry::Aabb::empty();
-    for (const Entity* e : entities) box.grow(entity_obb(*e).aabb());
+    for (const Entity* e : entities) box.grow(entity_aabb(*e));
     return box;
 }
 
 geometry::Aabb selection_bounds(const std::vector<Entity>& entities) {
     geometry::Aabb box = geometry::Aabb::empty();
-    for (const Entity& e : entities) box.grow(entity_obb(e).aabb());
+    for (const Entity& e : entities) box.grow(entity_aabb(e));
     return box;
 }
 

@@ -69,7 +69,7 @@ void store(T& target, const FieldValue& value) {
 }
 
 // A robot's patrol is a list, not one value: it is edited point by point (editor_patrol.cpp), so the
-// by-name field access below leaves it out.
+// by-name field access below leaves it out; so is a brush's faces (shaped by the brush tools, not typed).
 struct Describer {
     std::vector<FieldDescriptor> out;
     template <class T>
@@ -77,6 +77,7 @@ struct Describer {
         out.push_back(describe(value, info));
     }
     void field(level::Patrol&, const level::FieldInfo&) {}
+    void field(brush::Brush&, const level::FieldInfo&) {}
 };
 
 // Calls fn(value, descriptor) for the field called `name`; `found` says whether there was one.
@@ -92,6 +93,7 @@ struct Finder {
         fn(value, describe(value, info));
     }
     void field(level::Patrol&, const level::FieldInfo&) {}
+    void field(brush::Brush&, const level::FieldInfo&) {}
 };
 
 template <class Visitable, class F>

@@ -14,8 +14,8 @@ namespace {
 using level::Entity;
 using level::EntityType;
 
-// What the navigation mesh is built from (level::static_solid_shape and the doorways): the entities whose
-// edits can change the answer.
+// What the navigation mesh is built from (level::static_solid_shape, brushes and the doorways): the entities
+// whose edits can change the answer.
 bool shapes_the_mesh(EntityType t) {
     switch (t) {
     case EntityType::Wall:
@@ -25,6 +25,7 @@ bool shapes_the_mesh(EntityType t) {
     case EntityType::GasCylinder:
     case EntityType::ControlPanel:
     case EntityType::Door:
+    case EntityType::Brush:
         return true;
     default:
         return false; // robots and pickups move or vanish, lights hang out of the way

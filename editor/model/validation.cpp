@@ -1,6 +1,7 @@
 #include "model/validation.h"
 
 #include "level/level_io.h"
+#include "level/texture_names.h"
 #include "model/logic_validation.h"
 #include "model/patrol_validation.h"
 #include "model/reachability.h"
@@ -170,11 +171,11 @@ Issue texture_issue(const Level& level, const level::Diagnostic& d) {
     issue.severity = IssueSeverity::Error;
     issue.entity_id = entity_id_from_path(level, d.error.where.path);
     issue.message = d.error.str();
-    if (!d.suggestion.empty()) {
-        const std::string& path = d.error.where.path;
-        issue.fix = {"Use " + d.suggestion,
-                     fixes::SetField{path.substr(path.rfind('.') + 1), FieldValue(d.suggestion)}};
-    }
+    const std::string& path = d.error.where.path;
+    const std::string field = path.substr(path.rfind('.') + 1);
+    // A brush face's material ("faces[2].material") is no field the inspector sets by name: no quick fix.
+    if (!d.suggestion.empty() && level::is_texture_field(field))
+        issue.fix = {"Use " + d.suggestion, fixes::SetField{field, FieldValue(d.suggestion)}};
     return issue;
 }
 

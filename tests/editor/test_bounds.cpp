@@ -1,5 +1,7 @@
 // The editor's entity boxes and walkable surfaces follow the level conventions (the box maths itself is
 // tested in tests/geometry/test_obb.cpp).
+#include "brush/brush_build.h"
+#include "level/entity_shapes.h"
 #include "model/bounds.h"
 
 #include <doctest/doctest.h>
@@ -62,4 +64,21 @@ TEST_CASE("selection bounds: the box around every entity's box, empty (not valid
     CHECK_FALSE(selection_bounds(std::vector<level::Entity>{}).valid());
     CHECK_FALSE(selection_bounds(std::vector<const level::Entity*>{}).valid());
     CHECK(is_finite(selection_bounds(std::vector<level::Entity>{}).center()));
+}
+
+TEST_CASE("a brush's box turns with it, and its selection bounds are its world vertices' box") {
+    level::Level level;
+    level::Entity& e = level.add(level::EntityType::Brush, {10, 2, -4});
+    e.rotation = {30, 20, 0};
+    const DVec3 corners[] = {{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {0, 0, 4}}; // a tetrahedron
+    e.as<level::BrushProps>().brush = brush::make_from_points(corners, {"concrete"}).value();
+    const auto world = level::world_brush(e);
+    REQUIRE(world.ok());
+    const geometry::Obb box = entity_obb(e);
+    for (const DVec3& v : world->vertices()) CHECK(box.contains(Vec3(v), 1e-4f));
+    const geometry::Aabb bounds = selection_bounds(std::vector<level::Entity>{e});
+    CHECK(glm::length(bounds.min - Vec3(world->bounds_min())) < 1e-5f);
+    CHECK(glm::length(bounds.max - Vec3(world->bounds_max())) < 1e-5f);
+    const Vec3 tight = bounds.max - bounds.min, loose = box.aabb().max - box.aabb().min;
+    CHECK(tight.x + tight.y + tight.z < loose.x + loose.y + loose.z - 1.0f); // tighter than the turned box's
 }

@@ -29,7 +29,8 @@ TEST_CASE("fields: every entity type lists name, position, rotation and its own 
     for (auto type : level::all_types()) {
         CAPTURE(level::type_name(type));
         auto fields = describe_entity_fields(make(type));
-        REQUIRE(fields.size() > 3);
+        // A brush's faces are shaped by the brush tools, not typed into fields.
+        REQUIRE(fields.size() > (type == EntityType::Brush ? 2u : 3u));
         CHECK(fields[0].name == "name");
         CHECK(fields[1].name == "position");
         CHECK(fields[2].name == "rotation");
