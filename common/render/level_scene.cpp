@@ -1,11 +1,14 @@
 #include "render/level_scene.h"
 
+#include "core/log.h"
 #include "level/entity_shapes.h"
+#include "render/brush_mesh.h"
 #include "render/scene_renderer.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <optional>
 
 namespace ks::render {
 
@@ -64,17 +67,99 @@ Light light_from(const level::LightProps& props, Light::Type type) {
 }
 } // namespace
 
+namespace {
+// Level geometry before its light map is baked: a mesh of polygons and solids (a wall's box, a stair's
+// steps, a brush) and the surfaces drawn from it, one per material (polygon ranges of the mesh).
+struct SolidGeometry {
+    struct Part {
+        const Material* material = nullptr;
+        std::uint32_t first_polygon = 0, polygon_count = 0;
+    };
+    MeshData mesh;
+    bool casts_shadow = true;
+    std::vector<Part> parts;
+};
+
+// One solid of six quads, every vertex a corner of its bounds: an axis-aligned box, whose bounds are solid
+// (occlusion culling). A stair's steps or a ramp's bounds hold air; a box drawn in two materials is drawn as
+// two meshes, neither of them the whole box.
+bool is_axis_aligned_box(const MeshData& data) {
+    if (data.solid_sizes.size() != 1 || data.polygon_sizes.size() != 6) return false;
+    for (std::uint32_t n : data.polygon_sizes)
+        if (n != 4) return false;
+    const geometry::Aabb bounds = data.bounds();
+    const float eps = 1e-3f * (1.0f + glm::length(bounds.max - bounds.min));
+    for (const auto& v : data.vertices)
+        for (int a = 0; a < 3; ++a)
+            if (std::abs(v.position[a] - bounds.min[a]) >= eps &&
+                std::abs(v.position[a] - bounds.max[a]) >= eps)
+                return false;
+    return true;
+}
+
+// A wall's, floor's or stair's geometry: one material, ceilings cast no sun shadow (the sun stands for the
+// simulator's overhead light, as in the reference).
+std::optional<SolidGeometry> surface_geometry(const level::Entity& e, AssetLibrary& assets) {
+    MeshData data = build_surface_mesh(e);
+    if (data.vertices.empty()) return std::nullopt;
+    const std::string& texture = e.try_as<level::WallProps>()    ? e.as<level::WallProps>().texture
+                                 : e.try_as<level::FloorProps>() ? e.as<level::FloorProps>().texture
+                                                                 : e.as<level::StairProps>().texture;
+    const bool ceiling = e.try_as<level::FloorProps>() && e.as<level::FloorProps>().ceiling;
+    SolidGeometry g;
+    g.casts_shadow = !ceiling;
+    g.parts.push_back({&assets.surface(texture), 0, static_cast<std::uint32_t>(data.polygon_sizes.size())});
+    g.mesh = std::move(data);
+    return g;
+}
+// A brush entity's geometry: its brush placed in the world (level::world_brush), each material's faces one
+// surface; it casts the sun's shadow and occludes like a wall.
+std::optional<SolidGeometry> brush_geometry(const level::Entity& e, AssetLibrary& assets) {
+    auto world = level::world_brush(e);
+    if (!world.ok()) {
+        log::warn("brush entity ", e.id, " not drawn: ", world.error().str());
+        return std::nullopt;
+    }
+    BrushMesh built = build_brush_mesh(*world);
+    SolidGeometry g;
+    for (const auto& range : built.materials)
+        g.parts.push_back({&assets.surface(range.material), range.first_polygon, range.polygon_count});
+    g.mesh = std::move(built.mesh);
+    return g;
+}
+} // namespace
+
 MeshData build_surface_mesh(const level::Entity& e) {
     MeshData mesh;
     const auto solid = level::static_solid_shape(e);
     if (!solid) return mesh;
-    const Mat4 m = solid->frame.matrix();
+    // Walls and floors are one box, stairs `steps` boxes (step i, from the low end at local +z, a block from
+    // the floor up to its tread), all drawn as brushes: one geometry path for every level surface.
+    std::vector<std::pair<Vec3, Vec3>> boxes; // centre and half size in the solid's frame
+    float world_per_repeat = 4.0f;            // stairs: 4 units per repeat
     if (const auto* wall = e.try_as<level::WallProps>()) {
-        append_box(mesh, solid->local_centre, solid->half * 2.0f, m, wall->texture_scale);
+        boxes.emplace_back(solid->local_centre, solid->half);
+        world_per_repeat = wall->texture_scale;
     } else if (const auto* floor = e.try_as<level::FloorProps>()) {
-        append_box(mesh, solid->local_centre, solid->half * 2.0f, m, floor->texture_scale);
+        boxes.emplace_back(solid->local_centre, solid->half);
+        world_per_repeat = floor->texture_scale;
     } else if (const auto* stair = e.try_as<level::StairProps>()) {
-        append_stairs(mesh, solid->half * 2.0f, stair->steps, m, 4.0f);
+        const Vec3 size = solid->half * 2.0f;
+        const int steps = std::max(stair->steps, 1);
+        const float rise = size.y / static_cast<float>(steps), run = size.z / static_cast<float>(steps);
+        for (int i = 0; i < steps; ++i) {
+            const float top = rise * static_cast<float>(i + 1),
+                        z_front = size.z * 0.5f - run * static_cast<float>(i);
+            boxes.emplace_back(Vec3(0.0f, top * 0.5f, z_front - run * 0.5f), Vec3(size.x, top, run) * 0.5f);
+        }
+    }
+    for (const auto& [centre, half] : boxes) {
+        auto box = placed_box_brush(centre, half, solid->frame, world_per_repeat);
+        if (!box.ok()) {
+            log::warn("entity ", e.id, ": not drawn: ", box.error().message);
+            continue;
+        }
+        append_mesh(mesh, build_brush_mesh(*box).mesh);
     }
     return mesh;
 }
@@ -96,35 +181,18 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
                                               const LevelSceneOptions& options) {
     auto scene = std::unique_ptr<LevelScene>(new LevelScene(options));
     scene->environment_ = environment_from_settings(level.settings);
-    std::vector<MeshData> surface_meshes; // uploaded once their light-map coordinates are baked
+    std::vector<SolidGeometry> geometry; // uploaded once their light-map coordinates are baked
     for (const auto& e : level.entities) {
         const Mat4 m = entity_matrix(e);
         switch (e.type()) {
         case EntityType::Wall:
         case EntityType::Floor:
-        case EntityType::Stair: {
-            MeshData data = build_surface_mesh(e);
-            if (data.vertices.empty()) break;
-            std::string texture = e.try_as<level::WallProps>()    ? e.as<level::WallProps>().texture
-                                  : e.try_as<level::FloorProps>() ? e.as<level::FloorProps>().texture
-                                                                  : e.as<level::StairProps>().texture;
-            // Ceilings cast no sun shadow: the sun stands for the simulator's overhead light, as in the
-            // reference.
-            bool ceiling = e.try_as<level::FloorProps>() && e.as<level::FloorProps>().ceiling;
-            scene->bounds_ = geometry::merge(scene->bounds_, data.bounds());
-            // A wall or floor that is an axis-aligned box (every vertex a corner of its bounds) is solid, so
-            // it may hide what lies behind it (occlusion culling). Stairs' bounds hold air above the steps.
-            bool occluder = !e.try_as<level::StairProps>();
-            const geometry::Aabb bounds = data.bounds();
-            const float eps = 1e-3f * (1.0f + glm::length(bounds.max - bounds.min));
-            for (const auto& v : data.vertices)
-                for (int a = 0; a < 3 && occluder; ++a)
-                    occluder = std::abs(v.position[a] - bounds.min[a]) < eps ||
-                               std::abs(v.position[a] - bounds.max[a]) < eps;
-            scene->surfaces_.push_back({nullptr, &assets.surface(texture), !ceiling, occluder});
-            surface_meshes.push_back(std::move(data));
+        case EntityType::Stair:
+            if (auto g = surface_geometry(e, assets)) geometry.push_back(std::move(*g));
             break;
-        }
+        case EntityType::Brush:
+            if (auto g = brush_geometry(e, assets)) geometry.push_back(std::move(*g));
+            break;
         case EntityType::Door: {
             const auto& d = e.as<level::DoorProps>();
             Prop p = make_prop(e, &assets.model("door"), level::door_model_matrix(e));
@@ -186,18 +254,17 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
         case EntityType::Trigger: // the logic entities are invisible in the game
         case EntityType::Spawner:
         case EntityType::Message:
-        case EntityType::Brush: // its faces are drawn by the brush surfaces (issue 25)
         case EntityType::Count:
             break;
         }
     }
+    for (const auto& g : geometry) scene->bounds_ = geometry::merge(scene->bounds_, g.mesh.bounds());
     for (const auto& p : scene->props_)
         scene->bounds_ = geometry::merge(scene->bounds_, geometry::transform_aabb(p.model->bounds, p.root));
 
     // Bake the level geometry's light (every light, then switch off those that start off).
     std::vector<BakeSurface> bake_surfaces;
-    for (size_t i = 0; i < surface_meshes.size(); ++i)
-        bake_surfaces.push_back({&surface_meshes[i], scene->surfaces_[i].casts_shadow});
+    for (auto& g : geometry) bake_surfaces.push_back({&g.mesh, g.casts_shadow});
     std::vector<Light> bake_lights;
     for (auto& p : scene->props_)
         if (p.type == EntityType::FloorLight || p.type == EntityType::TopLight) {
@@ -209,8 +276,16 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
         scene->bake_stats_ = scene->bake_.bake(bake_surfaces, scene->environment_, bake_lights);
     for (const auto& p : scene->props_)
         if (p.bake_light >= 0) scene->bake_.set_light_on(p.bake_light, p.light_on);
-    for (size_t i = 0; i < surface_meshes.size(); ++i)
-        scene->surfaces_[i].mesh = std::make_unique<GpuMesh>(surface_meshes[i]);
+    for (const auto& g : geometry) {
+        const bool occluder = g.parts.size() == 1 && is_axis_aligned_box(g.mesh);
+        for (const auto& part : g.parts) {
+            const bool whole = part.polygon_count == g.mesh.polygon_sizes.size();
+            auto mesh = whole ? std::make_unique<GpuMesh>(g.mesh)
+                              : std::make_unique<GpuMesh>(
+                                    polygon_range(g.mesh, part.first_polygon, part.polygon_count));
+            scene->surfaces_.push_back({std::move(mesh), part.material, g.casts_shadow, occluder});
+        }
+    }
     if (!scene->bounds_.valid()) scene->bounds_ = {Vec3(-1.0f), Vec3(1.0f)};
     return scene;
 }

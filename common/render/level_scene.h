@@ -1,7 +1,8 @@
 #pragma once
 // Turns a ks::level::Level into what the SceneRenderer draws: level geometry (walls, floors, ceilings,
-// stairs) baked into world-space meshes with box-mapped UVs, props as model instances (doors, lights,
-// robots, pickups, cylinders, the control panel) and the lights. Door openings and light switches are
+// stairs as box brushes, and brush entities) as world-space brush meshes, one per entity and material
+// (brush_mesh.h), props as model instances (doors, lights, robots, pickups, cylinders, the control panel)
+// and the lights. Door openings and light switches are
 // state the game sets; emit() writes the current frame's instances and lights into reused vectors.
 #include "level/level.h"
 #include "render/asset_library.h"
@@ -16,7 +17,7 @@
 
 namespace ks::render {
 
-// Per-axis surface geometry for one level entity, in world space (exposed for tests: no GL needed).
+// A wall's, floor's or stair's geometry in world space, drawn from box brushes (exposed for tests: no GL).
 MeshData build_surface_mesh(const level::Entity& entity);
 // Linear colour from a level's sRGB colour.
 Vec3 to_linear(const level::Color& c);
@@ -66,7 +67,7 @@ class LevelScene {
         std::unique_ptr<GpuMesh> mesh;
         const Material* material;
         bool casts_shadow;
-        bool occluder = false; // axis-aligned box: its bounds are solid (MeshInstance::occluder)
+        bool occluder = false; // a whole axis-aligned box: its bounds are solid (MeshInstance::occluder)
     };
     struct Prop {
         int entity_id = 0;

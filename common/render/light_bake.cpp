@@ -4,15 +4,83 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <limits>
 
 namespace ks::render {
 
 namespace {
+// A polygon of the level geometry (MeshData::polygon_sizes) and the rectangle of texels over it: the
+// rectangle bounds the polygon in the face's frame (u along its first edge), texel centres on its edges.
 struct Face {
-    Vertex* corner[4]; // v0, v0 + U, v0 + U + V, v0 + V (append_box's order)
-    Vec3 origin, u, v, normal;
-    int w = 0, h = 0; // texels
-    int x = 0, y = 0; // atlas position
+    Vertex* corners = nullptr;
+    std::size_t corner_count = 0;
+    Vec3 origin, u_dir, v_dir, normal; // origin: the rectangle's corner; u_dir, v_dir: unit, in the plane
+    Vec2 extent{0.0f};                 // the rectangle's size along u_dir, v_dir
+    int w = 0, h = 0;                  // texels
+    int x = 0, y = 0;                  // atlas position
+};
+
+Face make_face(Vertex* corners, std::size_t count) {
+    Face f;
+    f.corners = corners;
+    f.corner_count = count;
+    f.normal = glm::normalize(corners[0].normal);
+    const Vec3 first_edge = corners[1].position - corners[0].position;
+    f.u_dir = glm::normalize(first_edge - f.normal * glm::dot(first_edge, f.normal));
+    f.v_dir = glm::cross(f.normal, f.u_dir);
+    Vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (std::size_t i = 0; i < count; ++i) {
+        const Vec3 d = corners[i].position - corners[0].position;
+        const Vec2 p(glm::dot(d, f.u_dir), glm::dot(d, f.v_dir));
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    f.origin = corners[0].position + f.u_dir * lo.x + f.v_dir * lo.y;
+    f.extent = hi - lo;
+    return f;
+}
+
+// The point of the polygon (in the face's rectangle coordinates) that a texel at `p` samples: `p` itself
+// when it lies at least `inset` inside every edge, else pulled in across the edges it is too close to or
+// beyond. Why: texel centres lie on the rectangle's edges, so an edge texel would see the neighbouring
+// solid, and a polygon that does not fill its rectangle has texels outside it, which bilinear filtering
+// still reads at the polygon's edges. On a rectangle this is clamping each coordinate.
+struct FaceEdges {
+    std::vector<Vec2> point, inward; // a point on each edge and its inward unit normal
+    std::vector<float> inset;
+
+    explicit FaceEdges(const Face& f) {
+        std::vector<Vec2> c;
+        Vec2 centre(0.0f);
+        for (std::size_t i = 0; i < f.corner_count; ++i) {
+            const Vec3 d = f.corners[i].position - f.origin;
+            c.emplace_back(glm::dot(d, f.u_dir), glm::dot(d, f.v_dir));
+            centre += c.back() / static_cast<float>(f.corner_count);
+        }
+        for (std::size_t i = 0; i < c.size(); ++i) {
+            const Vec2 e = c[(i + 1) % c.size()] - c[i];
+            if (glm::length(e) < 1e-6f) continue;
+            Vec2 n = glm::normalize(Vec2(-e.y, e.x));
+            if (glm::dot(centre - c[i], n) < 0.0f) n = -n; // either winding
+            point.push_back(c[i]);
+            inward.push_back(n);
+            // 0.05 units, or half the way to the centre on a face too thin for that.
+            inset.push_back(std::min(0.05f, 0.5f * glm::dot(centre - c[i], n)));
+        }
+    }
+    Vec2 pull_inside(Vec2 p) const {
+        for (int pass = 0; pass < 4; ++pass) {
+            bool moved = false;
+            for (std::size_t e = 0; e < point.size(); ++e) {
+                const float d = glm::dot(p - point[e], inward[e]);
+                if (d >= inset[e]) continue;
+                p += inward[e] * (inset[e] - d);
+                moved = true;
+            }
+            if (!moved) break;
+        }
+        return p;
+    }
 };
 
 double cpu_ms() {
@@ -63,24 +131,77 @@ bool LightBake::occluded(const Vec3& from, const Vec3& dir, float length, bool s
 }
 
 bool LightBake::hits(const Occluder& o, const Vec3& from, const Vec3& dir, float length) const {
-    // Slab test in the box's frame.
-    Vec3 p = Vec3(o.to_local * Vec4(from, 1.0f));
-    Vec3 d = Mat3(o.to_local) * dir;
+    // The segment clipped by each face's half-space (for a box: the slab test).
     float t0 = 0.0f, t1 = length;
-    bool miss = false;
-    for (int a = 0; a < 3 && !miss; ++a) {
-        if (std::abs(d[a]) < 1e-12f) {
-            miss = std::abs(p[a]) > o.half[a];
+    for (std::uint32_t i = o.first_plane; i < o.first_plane + o.plane_count; ++i) {
+        const Vec4& plane = planes_[i];
+        const Vec3 n(plane);
+        const float outside = glm::dot(n, from) - plane.w, along = glm::dot(n, dir);
+        if (std::abs(along) < 1e-12f) {
+            if (outside > 0.0f) return false;
             continue;
         }
-        float inv = 1.0f / d[a];
-        float n = (-o.half[a] - p[a]) * inv, f = (o.half[a] - p[a]) * inv;
-        if (n > f) std::swap(n, f);
-        t0 = std::max(t0, n);
-        t1 = std::min(t1, f);
-        miss = t0 > t1;
+        const float t = -outside / along;
+        if (along < 0.0f)
+            t0 = std::max(t0, t);
+        else
+            t1 = std::min(t1, t);
+        if (t0 > t1) return false;
     }
-    return !miss;
+    return true;
+}
+
+void LightBake::sun_occluders(const Vertex* corners, std::size_t count, const Vec3& dir, float length,
+                              std::vector<int>& out) const {
+    // The polygon's bounds swept along the ray meet a solid's bounds exactly when the ray from the bounds'
+    // centre meets the solid's bounds grown by their half size (with a margin for the rays' lift).
+    Vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (std::size_t i = 0; i < count; ++i) {
+        lo = glm::min(lo, corners[i].position);
+        hi = glm::max(hi, corners[i].position);
+    }
+    const Vec3 centre = (lo + hi) * 0.5f, grow = (hi - lo) * 0.5f + Vec3(0.1f);
+    out.clear();
+    for (std::size_t i = 0; i < occluders_.size(); ++i) {
+        const Occluder& o = occluders_[i];
+        if (!o.blocks_sun) continue;
+        float t0 = 0.0f, t1 = length;
+        for (int a = 0; a < 3 && t0 <= t1; ++a) {
+            const float near_side = o.lo[a] - grow[a] - centre[a], far_side = o.hi[a] + grow[a] - centre[a];
+            if (std::abs(dir[a]) < 1e-12f) {
+                if (near_side > 0.0f || far_side < 0.0f) t1 = -1.0f;
+                continue;
+            }
+            float n = near_side / dir[a], f = far_side / dir[a];
+            if (n > f) std::swap(n, f);
+            t0 = std::max(t0, n);
+            t1 = std::min(t1, f);
+        }
+        if (t0 <= t1) out.push_back(static_cast<int>(i));
+    }
+}
+
+void LightBake::add_occluders(const MeshData& mesh, bool blocks_sun) {
+    std::size_t polygon = 0, vertex = 0;
+    for (std::uint32_t faces : mesh.solid_sizes) {
+        Occluder o;
+        o.first_plane = static_cast<std::uint32_t>(planes_.size());
+        o.blocks_sun = blocks_sun;
+        o.lo = Vec3(std::numeric_limits<float>::max());
+        o.hi = -o.lo;
+        for (std::uint32_t k = 0; k < faces && polygon < mesh.polygon_sizes.size(); ++k, ++polygon) {
+            const Vertex& first = mesh.vertices[vertex];
+            const Vec3 n = glm::normalize(first.normal);
+            planes_.emplace_back(n, glm::dot(n, first.position));
+            for (std::size_t i = 0; i < mesh.polygon_sizes[polygon]; ++i) {
+                o.lo = glm::min(o.lo, mesh.vertices[vertex + i].position);
+                o.hi = glm::max(o.hi, mesh.vertices[vertex + i].position);
+            }
+            vertex += mesh.polygon_sizes[polygon];
+        }
+        o.plane_count = static_cast<std::uint32_t>(planes_.size()) - o.first_plane;
+        occluders_.push_back(o);
+    }
 }
 
 BakeStats LightBake::bake(const std::vector<BakeSurface>& surfaces, const Environment& env,
@@ -88,38 +209,15 @@ BakeStats LightBake::bake(const std::vector<BakeSurface>& surfaces, const Enviro
     const double start = cpu_ms();
     BakeStats stats;
     occluders_.clear();
+    planes_.clear();
     std::vector<Face> faces;
     for (const BakeSurface& s : surfaces) {
-        auto& verts = s.mesh->vertices;
-        // Boxes: 24 vertices each, faces in append_box's order (+x, -x, +y, -y, +z, -z in box space).
-        for (size_t b = 0; b + 24 <= verts.size(); b += 24) {
-            Vec3 center(0.0f);
-            for (size_t i = 0; i < 24; ++i) center += verts[b + i].position / 24.0f;
-            Vec3 axis[3] = {verts[b].normal, verts[b + 8].normal, verts[b + 16].normal};
-            Vec3 half(0.0f);
-            for (int a = 0; a < 3; ++a) {
-                axis[a] = glm::normalize(axis[a]);
-                for (size_t i = 0; i < 24; ++i)
-                    half[a] = std::max(half[a], std::abs(glm::dot(verts[b + i].position - center, axis[a])));
-            }
-            Mat4 to_box(1.0f); // rows = axes: world -> box
-            for (int a = 0; a < 3; ++a) {
-                to_box[0][a] = axis[a].x;
-                to_box[1][a] = axis[a].y;
-                to_box[2][a] = axis[a].z;
-                to_box[3][a] = -glm::dot(axis[a], center);
-            }
-            Vec3 reach = glm::abs(axis[0]) * half.x + glm::abs(axis[1]) * half.y + glm::abs(axis[2]) * half.z;
-            occluders_.push_back({to_box, half, s.blocks_sun, center - reach, center + reach});
-        }
-        for (size_t q = 0; q + 4 <= verts.size(); q += 4) {
-            Face f;
-            for (int i = 0; i < 4; ++i) f.corner[i] = &verts[q + static_cast<size_t>(i)];
-            f.origin = verts[q].position;
-            f.u = verts[q + 1].position - verts[q].position;
-            f.v = verts[q + 3].position - verts[q].position;
-            f.normal = glm::normalize(verts[q].normal);
-            faces.push_back(f);
+        add_occluders(*s.mesh, s.blocks_sun);
+        std::size_t vertex = 0;
+        for (std::uint32_t n : s.mesh->polygon_sizes) {
+            if (n >= 3 && vertex + n <= s.mesh->vertices.size())
+                faces.push_back(make_face(&s.mesh->vertices[vertex], n));
+            vertex += n;
         }
     }
     stats.faces = static_cast<int>(faces.size());
@@ -130,8 +228,8 @@ BakeStats LightBake::bake(const std::vector<BakeSurface>& surfaces, const Enviro
     const int atlas_width = std::clamp(settings.atlas_width, 64, 8192);
     for (;;) {
         for (Face& f : faces) {
-            f.w = texels_along(glm::length(f.u), texel);
-            f.h = texels_along(glm::length(f.v), texel);
+            f.w = texels_along(f.extent.x, texel);
+            f.h = texels_along(f.extent.y, texel);
         }
         int h = pack(faces, atlas_width);
         if (h > 0 && h <= 8192 && static_cast<long long>(h) * atlas_width <= settings.max_texels) {
@@ -153,7 +251,7 @@ BakeStats LightBake::bake(const std::vector<BakeSurface>& surfaces, const Enviro
     for (const Light& l : lights) light_color_.push_back(l.color * l.intensity);
     light_on_.assign(lights.size(), 1);
 
-    // Each light's candidate occluders: boxes whose bounds touch its range sphere.
+    // Each light's candidate occluders: solids whose bounds touch its range sphere.
     std::vector<std::vector<int>> near(lights.size());
     for (size_t k = 0; k < lights.size(); ++k)
         for (size_t i = 0; i < occluders_.size(); ++i) {
@@ -165,28 +263,31 @@ BakeStats LightBake::bake(const std::vector<BakeSurface>& surfaces, const Enviro
     const bool sun_on = glm::length(env.sun_color) > 0.0f && is_finite(to_sun);
     constexpr float kLift = 0.02f; // ray origins leave the surface by this much (no self-shadowing)
     const float sun_reach = 1e4f;
+    std::vector<int> sun_subset;
     for (Face& f : faces) {
         const float inv_w = 1.0f / static_cast<float>(width_), inv_h = 1.0f / static_cast<float>(height_);
-        auto uv = [&](float tx, float ty) { return Vec2((f.x + tx) * inv_w, (f.y + ty) * inv_h); };
-        f.corner[0]->lightmap_uv = uv(0.5f, 0.5f);
-        f.corner[1]->lightmap_uv = uv(f.w - 0.5f, 0.5f);
-        f.corner[2]->lightmap_uv = uv(f.w - 0.5f, f.h - 0.5f);
-        f.corner[3]->lightmap_uv = uv(0.5f, f.h - 0.5f);
+        // Texel centres: the rectangle's corners at texels (0.5, 0.5) and (w - 0.5, h - 0.5).
+        for (std::size_t c = 0; c < f.corner_count; ++c) {
+            const Vec3 d = f.corners[c].position - f.origin;
+            const float s = f.extent.x > 0.0f ? glm::dot(d, f.u_dir) / f.extent.x : 0.0f;
+            const float t = f.extent.y > 0.0f ? glm::dot(d, f.v_dir) / f.extent.y : 0.0f;
+            f.corners[c].lightmap_uv = Vec2((f.x + 0.5f + s * static_cast<float>(f.w - 1)) * inv_w,
+                                            (f.y + 0.5f + t * static_cast<float>(f.h - 1)) * inv_h);
+        }
         const Vec3 n = f.normal;
         const Vec3 ambient = glm::mix(env.ground_color, env.sky_color, n.y * 0.5f + 0.5f);
         const float sun_cos = sun_on ? std::max(glm::dot(n, to_sun), 0.0f) : 0.0f;
-        // Texel centres lie on the face's edges; the points they sample are nudged 0.05 units inside so
-        // an edge texel sees this face, not the neighbouring box's.
-        const float inset_u = std::min(0.05f / std::max(glm::length(f.u), 1e-4f), 0.25f);
-        const float inset_v = std::min(0.05f / std::max(glm::length(f.v), 1e-4f), 0.25f);
+        const FaceEdges edges(f);
+        if (sun_cos > 0.0f) sun_occluders(f.corners, f.corner_count, to_sun, sun_reach, sun_subset);
         for (int j = 0; j < f.h; ++j)
             for (int i = 0; i < f.w; ++i) {
-                float s = std::clamp(static_cast<float>(i) / (f.w - 1), inset_u, 1.0f - inset_u);
-                float t = std::clamp(static_cast<float>(j) / (f.h - 1), inset_v, 1.0f - inset_v);
-                const Vec3 p = f.origin + f.u * s + f.v * t + n * kLift;
+                const Vec2 q = edges.pull_inside(Vec2(f.extent.x * static_cast<float>(i) / (f.w - 1),
+                                                      f.extent.y * static_cast<float>(j) / (f.h - 1)));
+                const Vec3 p = f.origin + f.u_dir * q.x + f.v_dir * q.y + n * kLift;
                 const auto index = static_cast<std::uint32_t>((f.y + j) * width_ + f.x + i);
                 Vec3 e = ambient;
-                if (sun_cos > 0.0f && !occluded(p, to_sun, sun_reach, true)) e += env.sun_color * sun_cos;
+                if (sun_cos > 0.0f && !occluded(p, to_sun, sun_reach, true, &sun_subset))
+                    e += env.sun_color * sun_cos;
                 base_[index] = e;
                 for (size_t k = 0; k < lights.size(); ++k) {
                     const Light& l = lights[k];

@@ -2,13 +2,14 @@
 // Light baked into a light map for static level geometry, the fast path's answer to per-pixel lighting
 // on software rasterisers. No GL here (testable on the CPU); LightmapTexture uploads the result.
 //
-// Each rectangular face of the level's box meshes (append_box/append_stairs: 4 vertices per face, 24 per
-// box) gets a rectangle of texels in one atlas, texel centres on the face's edges so bilinear filtering
-// never reads a neighbour. A texel stores diffuse irradiance in pbr.frag's units (what multiplies albedo):
-// the hemisphere ambient, the sun (with shadows: a ray against the level's boxes, ceilings excluded as
-// in the full path) and each point/spot light with its falloff and cone, occluded by the boxes (so
-// unlike the full path, light does not leak through walls). Every light's share is kept per texel, so a
-// light switching on or off re-combines the atlas in a few milliseconds instead of re-baking.
+// Each polygon of the level's meshes (MeshData::polygon_sizes: a box's faces, a brush's faces) gets the
+// rectangle of texels that bounds it in one atlas, texel centres on the rectangle's edges so bilinear
+// filtering never reads a neighbour. A texel stores diffuse irradiance in pbr.frag's units (what multiplies
+// albedo): the hemisphere ambient, the sun (with shadows: a ray against the level's convex solids,
+// MeshData::solid_sizes, ceilings excluded as in the full path) and each point/spot light with its falloff
+// and cone, occluded by the solids (so unlike the full path, light does not leak through walls). Every
+// light's share is kept per texel, so a light switching on or off re-combines the atlas in a few milliseconds
+// instead of re-baking.
 #include "render/mesh_data.h"
 #include "render/scene.h"
 
@@ -24,7 +25,8 @@ struct BakeSettings {
 };
 
 struct BakeSurface {
-    MeshData* mesh;  // world space, built from boxes; its vertices' lightmap_uv are written by bake()
+    MeshData*
+        mesh; // world space, made of polygons and solids; its vertices' lightmap_uv are written by bake()
     bool blocks_sun; // ceilings do not (the full path's ceilings cast no sun shadow either)
 };
 
@@ -57,23 +59,28 @@ class LightBake {
 
   private:
     struct Occluder {
-        Mat4 to_local; // world -> box space (centred, axis-aligned)
-        Vec3 half;
-        bool blocks_sun;
+        std::uint32_t first_plane = 0, plane_count = 0; // in planes_
+        bool blocks_sun = true;
         Vec3 lo, hi; // world bounds
     };
     struct Share {
         std::uint32_t texel;
         float amount; // atten * cos * visibility, times the light's colour * intensity when combined
     };
-    // Against every occluder (sun: those that block it) or only `subset` (a light's: the boxes touching its
+    // Against every occluder (sun: those that block it) or only `subset` (a light's: the solids touching its
     // range sphere, since both ends of its rays lie inside that sphere).
     bool occluded(const Vec3& from, const Vec3& dir, float length, bool sun,
                   const std::vector<int>* subset = nullptr) const;
     bool hits(const Occluder& o, const Vec3& from, const Vec3& dir, float length) const;
+    void add_occluders(const MeshData& mesh, bool blocks_sun);
+    // The solids that block the sun and that a ray along `dir` from anywhere on a polygon may meet: the
+    // sun's rays from one face are tested against these only.
+    void sun_occluders(const Vertex* corners, std::size_t count, const Vec3& dir, float length,
+                       std::vector<int>& out) const;
 
     int width_ = 0, height_ = 0;
     std::vector<Occluder> occluders_;
+    std::vector<Vec4> planes_;   // the solids' face planes: outward normal, distance (dot(normal, p) == w)
     std::vector<Vec3> base_;     // ambient + sun
     std::vector<Vec3> combined_; // what is uploaded
     std::vector<std::vector<Share>> shares_;

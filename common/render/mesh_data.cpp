@@ -10,6 +10,22 @@ geometry::Aabb MeshData::bounds() const {
     return box;
 }
 
+void append_polygon(MeshData& mesh, const std::vector<Vertex>& polygon) {
+    const auto base = static_cast<std::uint32_t>(mesh.vertices.size());
+    mesh.vertices.insert(mesh.vertices.end(), polygon.begin(), polygon.end());
+    for (std::uint32_t i = 2; i < polygon.size(); ++i)
+        mesh.indices.insert(mesh.indices.end(), {base, base + i - 1, base + i});
+    mesh.polygon_sizes.push_back(static_cast<std::uint32_t>(polygon.size()));
+}
+
+void append_mesh(MeshData& mesh, const MeshData& more) {
+    const auto base = static_cast<std::uint32_t>(mesh.vertices.size());
+    mesh.vertices.insert(mesh.vertices.end(), more.vertices.begin(), more.vertices.end());
+    for (std::uint32_t i : more.indices) mesh.indices.push_back(base + i);
+    mesh.polygon_sizes.insert(mesh.polygon_sizes.end(), more.polygon_sizes.begin(), more.polygon_sizes.end());
+    mesh.solid_sizes.insert(mesh.solid_sizes.end(), more.solid_sizes.begin(), more.solid_sizes.end());
+}
+
 namespace {
 struct BoxFaceAxes {
     Vec3 normal, u, v; // outward normal and the two in-plane axes (u x v = normal)
@@ -67,20 +83,9 @@ void append_box(MeshData& mesh, const Vec3& center, const Vec3& size, const Mat4
             mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
         else
             mesh.indices.insert(mesh.indices.end(), {base, base + 2, base + 1, base, base + 3, base + 2});
+        mesh.polygon_sizes.push_back(4);
     }
-}
-
-void append_stairs(MeshData& mesh, const Vec3& size, int steps, const Mat4& to_world,
-                   float world_per_repeat) {
-    steps = std::max(steps, 1);
-    const float rise = size.y / steps, run = size.z / steps;
-    // Step i (0 = lowest, at local +z end) is a solid block from the floor up to its tread.
-    for (int i = 0; i < steps; ++i) {
-        float top = rise * (i + 1);
-        float z_front = size.z * 0.5f - run * i;
-        Vec3 center(0.0f, top * 0.5f, z_front - run * 0.5f);
-        append_box(mesh, center, Vec3(size.x, top, run), to_world, world_per_repeat);
-    }
+    mesh.solid_sizes.push_back(6);
 }
 
 MeshData unit_cube() {

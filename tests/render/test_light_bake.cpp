@@ -1,5 +1,7 @@
 // The fast path's light bake (CPU only): layout, sun shadows, light falloff and occlusion, re-combining
 // when a light switches, bad input.
+#include "brush/brush_build.h"
+#include "render/brush_mesh.h"
 #include "render/light_bake.h"
 
 #include <doctest/doctest.h>
@@ -32,6 +34,24 @@ Vec3 floor_light(const LightBake& bake, const MeshData& floor, float x, float z)
     Vec2 uv = top[0].lightmap_uv + (top[1].lightmap_uv - top[0].lightmap_uv) * s +
               (top[3].lightmap_uv - top[0].lightmap_uv) * t;
     return bake.sample(uv);
+}
+
+// The baked light at a point of any mesh: the triangle holding it, its light-map coordinate interpolated.
+Vec3 light_at(const LightBake& bake, const MeshData& mesh, const Vec3& p) {
+    for (size_t i = 0; i < mesh.indices.size(); i += 3) {
+        const Vertex& a = mesh.vertices[mesh.indices[i]];
+        const Vertex& b = mesh.vertices[mesh.indices[i + 1]];
+        const Vertex& c = mesh.vertices[mesh.indices[i + 2]];
+        const Vec3 n = glm::cross(b.position - a.position, c.position - a.position);
+        const float area2 = glm::dot(n, n);
+        if (area2 < 1e-12f || std::abs(glm::dot(p - a.position, n)) > 1e-3f * std::sqrt(area2)) continue;
+        const float wb = glm::dot(glm::cross(p - a.position, c.position - a.position), n) / area2;
+        const float wc = glm::dot(glm::cross(b.position - a.position, p - a.position), n) / area2;
+        if (wb < -1e-4f || wc < -1e-4f || wb + wc > 1.0f + 1e-4f) continue;
+        return bake.sample(a.lightmap_uv * (1.0f - wb - wc) + b.lightmap_uv * wb + c.lightmap_uv * wc);
+    }
+    FAIL("no triangle holds the point");
+    return Vec3(0.0f);
 }
 
 Environment dark_with_sun(Vec3 sun_direction) {
@@ -164,4 +184,47 @@ TEST_CASE("light bake: bad input gives finite texels, never a crash") {
     LightBake empty;
     BakeStats none = empty.bake({}, Environment{}, {});
     CHECK(none.faces == 0);
+}
+
+TEST_CASE("light bake: a brush ramp gets texels on every face and casts its sloped shadow") {
+    Room room;
+    // A ramp on the floor at x 2..6, rising toward -z from z = 0 to 4 high at z = -8.
+    const DVec3 profile[] = {{2, 0, 0}, {2, 0, -8}, {2, 4, -8}};
+    auto ramp = brush::make_extrusion(profile, {4, 0, 0});
+    REQUIRE(ramp.ok());
+    MeshData mesh = build_brush_mesh(*ramp).mesh;
+    std::vector<BakeSurface> surfaces = room.surfaces();
+    surfaces.push_back({&mesh, true});
+    LightBake bake;
+    // Sunlight travels toward -z and down at 45 degrees: the ramp's back (4 high at z = -8) shades the floor
+    // from z = -8 to -12 behind it; its slope faces the sun.
+    const BakeStats stats = bake.bake(surfaces, dark_with_sun(Vec3(0, -1, -1)), {});
+    CHECK(stats.faces == 12 + 5);
+    CHECK(stats.occluders == 3);
+    // Every polygon of the ramp has its own texels (the triangles too), apart from every other's.
+    std::vector<std::array<float, 4>> rects;
+    for (size_t p = 0, v = 0; p < mesh.polygon_sizes.size(); v += mesh.polygon_sizes[p], ++p) {
+        Vec2 lo(1e9f), hi(-1e9f);
+        for (size_t i = 0; i < mesh.polygon_sizes[p]; ++i) {
+            const Vec2 uv = mesh.vertices[v + i].lightmap_uv;
+            CHECK((uv.x > 0.0f && uv.x < 1.0f && uv.y > 0.0f && uv.y < 1.0f));
+            lo = glm::min(lo, uv);
+            hi = glm::max(hi, uv);
+        }
+        CHECK((hi.x > lo.x && hi.y > lo.y));
+        rects.push_back({lo.x, lo.y, hi.x, hi.y});
+    }
+    for (size_t a = 0; a < rects.size(); ++a)
+        for (size_t b = a + 1; b < rects.size(); ++b)
+            CHECK((rects[a][2] < rects[b][0] || rects[b][2] < rects[a][0] || rects[a][3] < rects[b][1] ||
+                   rects[b][3] < rects[a][1]));
+    const float lit = 0.1f + std::sqrt(0.5f);
+    CHECK(light_at(bake, room.floor, Vec3(4, 0, 5)).x == doctest::Approx(lit).epsilon(0.02));
+    CHECK(light_at(bake, room.floor, Vec3(4, 0, -9.5f)).x == doctest::Approx(0.1f).epsilon(0.02));
+    CHECK(light_at(bake, room.floor, Vec3(8, 0, -9.5f)).x == doctest::Approx(lit).epsilon(0.02)); // beside it
+    // The slope, normal (0, 2, 1) / sqrt 5, faces the sun: cos = 3 / sqrt 10; the triangle ends are in the
+    // sun's plane (cos 0): ambient only, and lit nowhere by a shadow leaking through.
+    CHECK(light_at(bake, mesh, Vec3(4, 2, -4)).x ==
+          doctest::Approx(0.1f + 3.0f / std::sqrt(10.0f)).epsilon(0.02));
+    CHECK(light_at(bake, mesh, Vec3(2, 1, -6)).x == doctest::Approx(0.1f).epsilon(0.02));
 }

@@ -161,9 +161,13 @@ TEST_CASE("box UVs follow world units over texture_scale, on any wall size and o
 }
 
 TEST_CASE("stairs are `steps` boxes that rise toward local -z to the full height") {
-    MeshData mesh;
-    append_stairs(mesh, Vec3(12, 6, 12), 10, Mat4(1.0f), 4.0f);
+    level::Entity stair;
+    stair.props = level::StairProps{Vec3(12, 6, 12), 10, "tiles"};
+    const MeshData mesh = build_surface_mesh(stair);
     CHECK(mesh.vertices.size() == 10 * 24);
+    CHECK(mesh.solid_sizes == std::vector<std::uint32_t>(10, 6)); // ten box solids for the light bake
+    for (const Vertex& v : mesh.vertices) // risers and treads: 4 units per texture repeat
+        if (v.normal.z > 0.5f || v.normal.y > 0.5f) CHECK(v.uv.x == doctest::Approx(v.position.x / 4.0f));
     geometry::Aabb b = mesh.bounds();
     CHECK(b.min.y == doctest::Approx(0.0f));
     CHECK(b.max.y == doctest::Approx(6.0f));
