@@ -1,5 +1,7 @@
 #include "nav/nav_levels.h"
 
+#include <doctest/doctest.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -7,6 +9,12 @@ namespace ks::test {
 
 nav::NavSettings robot_settings() {
     return nav::robot_nav_settings(0.65f, 50.0f);
+}
+
+std::unique_ptr<nav::NavMesh> build_robot_mesh(const level::Level& level) {
+    auto mesh = nav::NavMesh::build(level, robot_settings());
+    REQUIRE_MESSAGE(mesh.ok(), (mesh.ok() ? "" : mesh.error().str()));
+    return std::move(mesh.value());
 }
 
 level::Entity& add_floor(level::Level& level, Vec3 centre, Vec2 size) {

@@ -5,6 +5,7 @@
 #include "nav/nav_mesh.h"
 #include "nav/nav_settings.h"
 
+#include <memory>
 #include <vector>
 
 namespace ks::test {
@@ -12,6 +13,8 @@ namespace ks::test {
 // The robot's settings with the character controller's step height and slope
 // (physics::CharacterSettings: 0.65 and 50 degrees; the nav tests cannot see physics).
 nav::NavSettings robot_settings();
+// The mesh of `level` with robot_settings(); fails the test when it cannot be built.
+std::unique_ptr<nav::NavMesh> build_robot_mesh(const level::Level& level);
 
 // A floor whose walking surface is at `centre` (y), `size` along x and z.
 level::Entity& add_floor(level::Level& level, Vec3 centre, Vec2 size);

@@ -10,12 +10,6 @@ using namespace ks::test;
 
 namespace {
 
-std::unique_ptr<nav::NavMesh> build(const level::Level& level) {
-    auto mesh = nav::NavMesh::build(level, robot_settings());
-    REQUIRE_MESSAGE(mesh.ok(), (mesh.ok() ? "" : mesh.error().str()));
-    return std::move(mesh.value());
-}
-
 level::Entity& add_brush(level::Level& level, Vec3 position, float yaw, const brush::Brush& b) {
     level::Entity& e = level.add(level::EntityType::Brush, position, "brush");
     e.rotation.x = yaw;
@@ -52,7 +46,7 @@ level::Level brush_platform_level(bool with_ramp) {
 } // namespace
 
 TEST_CASE("a robot's path goes up a brush ramp onto a brush platform") {
-    auto mesh = build(brush_platform_level(true));
+    auto mesh = build_robot_mesh(brush_platform_level(true));
     const Vec3 on_platform(0, 6, -16);
     std::vector<Vec3> path;
     REQUIRE(mesh->find_path(Vec3(10, 0, 12), on_platform, path) == nav::PathStatus::Found);
@@ -69,7 +63,7 @@ TEST_CASE("a robot's path goes up a brush ramp onto a brush platform") {
     REQUIRE(half_way.has_value());
     CHECK(half_way->y == doctest::Approx(3.0f).epsilon(0.1));
 
-    auto without = build(brush_platform_level(false));
+    auto without = build_robot_mesh(brush_platform_level(false));
     CHECK_FALSE(without->reachable(Vec3(10, 0, 12), on_platform));
 }
 
@@ -79,14 +73,14 @@ TEST_CASE("a brush wall blocks, turned by its entity's yaw, and a gap between tw
     add_floor(closed, Vec3(0), Vec2(30, 30));
     // Thin along local x, long along local z; yaw 90 lays it along world x, across the room at z = 0.
     add_brush(closed, Vec3(0), 90.0f, box({-0.25, 0, -15}, {0.25, 4, 15}));
-    CHECK_FALSE(build(closed)->reachable(Vec3(0, 0, 8), Vec3(0, 0, -8)));
+    CHECK_FALSE(build_robot_mesh(closed)->reachable(Vec3(0, 0, 8), Vec3(0, 0, -8)));
 
     level::Level gap;
     gap.name = "brush wall with a gap";
     add_floor(gap, Vec3(0), Vec2(30, 30));
     add_brush(gap, Vec3(-5, 0, 0), 0.0f, box({-10, 0, -0.25}, {10, 4, 0.25}));      // x in [-15, 5]
     add_brush(gap, Vec3(12.5f, 0, 0), 0.0f, box({-2.5, 0, -0.25}, {2.5, 4, 0.25})); // x in [10, 15]
-    auto mesh = build(gap);
+    auto mesh = build_robot_mesh(gap);
     std::vector<Vec3> path;
     REQUIRE(mesh->find_path(Vec3(0, 0, 8), Vec3(0, 0, -8), path) == nav::PathStatus::Found);
     const auto x = crossing_x(path, 0.0f);
@@ -100,7 +94,7 @@ TEST_CASE("a brush's underside is never walked on; its top and the floor under i
     lv.name = "brush slab";
     add_floor(lv, Vec3(0), Vec2(30, 30));
     add_brush(lv, Vec3(0, 5, 0), 0.0f, box({-5, 0, -5}, {5, 0.5, 5})); // a slab from y = 5 to 5.5
-    auto mesh = build(lv);
+    auto mesh = build_robot_mesh(lv);
     const auto under = mesh->nearest_point(Vec3(0, 4.9f, 0), Vec3(1, 0.3f, 1));
     CHECK_FALSE(under.has_value()); // nothing walkable at the slab's underside
     const auto top = mesh->nearest_point(Vec3(0, 5.8f, 0), Vec3(1, 0.5f, 1));

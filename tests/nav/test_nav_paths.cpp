@@ -9,12 +9,6 @@ using namespace ks::test;
 
 namespace {
 
-std::unique_ptr<nav::NavMesh> build(const level::Level& level) {
-    auto mesh = nav::NavMesh::build(level, robot_settings());
-    REQUIRE_MESSAGE(mesh.ok(), (mesh.ok() ? "" : mesh.error().str()));
-    return std::move(mesh.value());
-}
-
 // A 30 x 30 room split along z = 0 by a wall with a 5-wide opening at x in [5, 10].
 level::Level split_room() {
     level::Level lv;
@@ -33,7 +27,7 @@ float polyline_length(const std::vector<Vec3>& path) {
 } // namespace
 
 TEST_CASE("a path detours around a wall through the doorway") {
-    const auto mesh = build(split_room());
+    const auto mesh = build_robot_mesh(split_room());
     std::vector<Vec3> path;
     REQUIRE(mesh->find_path(Vec3(0, 0, 8), Vec3(0, 0, -8), path) == nav::PathStatus::Found);
     const auto x = crossing_x(path, 0.0f);
@@ -53,7 +47,7 @@ TEST_CASE("a path detours around a wall through the doorway") {
 TEST_CASE("a closed door blocks the path and opening it lets the path through without a rebuild") {
     level::Level lv = split_room();
     const int door = add_door(lv, Vec3(7.5f, 0, 0), 5.0f, false).id;
-    auto mesh = build(lv);
+    auto mesh = build_robot_mesh(lv);
     CHECK(mesh->stats().door_polygons > 0);
     CHECK_FALSE(mesh->door_open(door));
     const Vec3 a(0, 0, 8), b(0, 0, -8);
@@ -79,7 +73,7 @@ TEST_CASE("a closed door blocks the path and opening it lets the path through wi
 TEST_CASE("a door that starts open in the level starts open in the mesh") {
     level::Level lv = split_room();
     const int door = add_door(lv, Vec3(7.5f, 0, 0), 5.0f, true).id;
-    auto mesh = build(lv);
+    auto mesh = build_robot_mesh(lv);
     CHECK(mesh->door_open(door));
     CHECK(mesh->reachable(Vec3(0, 0, 8), Vec3(0, 0, -8)));
 }
@@ -99,7 +93,7 @@ level::Level platform_level(bool with_stair) {
 } // namespace
 
 TEST_CASE("stairs lead onto a platform and the path climbs them") {
-    auto mesh = build(platform_level(true));
+    auto mesh = build_robot_mesh(platform_level(true));
     const Vec3 on_platform(0, 6, -16);
     std::vector<Vec3> path;
     REQUIRE(mesh->find_path(Vec3(10, 0, 12), on_platform, path) == nav::PathStatus::Found);
@@ -113,12 +107,12 @@ TEST_CASE("stairs lead onto a platform and the path climbs them") {
     }
     CHECK(on_stair);
 
-    auto without = build(platform_level(false));
+    auto without = build_robot_mesh(platform_level(false));
     CHECK_FALSE(without->reachable(Vec3(10, 0, 12), on_platform));
 }
 
 TEST_CASE("floors at two heights are separate layers joined only by the stair") {
-    auto mesh = build(platform_level(true));
+    auto mesh = build_robot_mesh(platform_level(true));
     const auto low = mesh->nearest_point(Vec3(0, 0.5f, -14), Vec3(1, 1, 1));
     const auto high = mesh->nearest_point(Vec3(0, 6.5f, -14), Vec3(1, 1, 1));
     REQUIRE(low.has_value());
@@ -143,7 +137,7 @@ TEST_CASE("gas cylinders in a corridor are walked around") {
     add_wall(lv, Vec3(-20, 0, 3), Vec3(20, 0, 3));
     const Vec3 cylinders[] = {{-6, 0, 0}, {0, 0, 0.5f}, {6, 0, -0.5f}};
     for (const Vec3& c : cylinders) add_cylinder(lv, c, 0.5f);
-    auto mesh = build(lv);
+    auto mesh = build_robot_mesh(lv);
     std::vector<Vec3> path;
     REQUIRE(mesh->find_path(Vec3(-15, 0, 0), Vec3(15, 0, 0), path) == nav::PathStatus::Found);
     for (const Vec3& c : cylinders) {
@@ -158,7 +152,7 @@ TEST_CASE("islands: points are on the same island exactly when a path joins them
     level::Level lv = split_room();
     const int door = add_door(lv, Vec3(7.5f, 0, 0), 5.0f, false).id;
     add_floor(lv, Vec3(60, 0, 0), Vec2(10, 10)); // apart from the room
-    auto mesh = build(lv);
+    auto mesh = build_robot_mesh(lv);
     const Vec3 extents(1, 1, 1), near(0, 0, 8), far(0, 0, -8), apart(60, 0, 0);
     const int near_island = mesh->island(near, extents);
     CHECK(near_island != 0);
