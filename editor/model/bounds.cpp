@@ -1,5 +1,6 @@
 #include "model/bounds.h"
 
+#include "brush/brush_query.h"
 #include "level/entity_shapes.h"
 
 #include <algorithm>
@@ -77,6 +78,26 @@ std::optional<float> surface_height_at(const Entity& support, const geometry::Ob
         return support.position.y + s->size.y * static_cast<float>(k + 1) / static_cast<float>(steps);
     }
     return std::nullopt;
+}
+
+std::optional<SupportSurface> SupportSurface::of(const Entity& entity) {
+    const auto type = entity.type();
+    if (!is_finite(entity.position) || !is_finite(entity.rotation)) return std::nullopt;
+    if (type == level::EntityType::Floor || type == level::EntityType::Stair)
+        return SupportSurface(entity, entity_obb(entity));
+    if (type != level::EntityType::Brush) return std::nullopt;
+    auto world = level::world_brush(entity);
+    if (!world) return std::nullopt;
+    SupportSurface surface(entity, entity_obb(entity));
+    surface.world_brush_ = std::make_shared<const brush::Brush>(std::move(*world));
+    return surface;
+}
+
+std::optional<float> SupportSurface::height_at(float x, float z, bool stair_as_ramp) const {
+    if (!world_brush_) return surface_height_at(*entity_, box_, x, z, stair_as_ramp);
+    const auto top = brush::top_at(*world_brush_, x, z);
+    if (!top) return std::nullopt;
+    return static_cast<float>(*top);
 }
 
 } // namespace ks::editor

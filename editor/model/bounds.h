@@ -8,6 +8,7 @@
 #include "level/level.h"
 #include "physics/character.h"
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -29,6 +30,25 @@ std::optional<float> surface_height_at(const level::Entity& support, float x, fl
 // the ramp through the tread edges rather than the visible treads.
 std::optional<float> surface_height_at(const level::Entity& support, const geometry::Obb& box, float x,
                                        float z, bool stair_as_ramp = false);
+
+// Something an entity can stand on, with what its height query needs made once: a floor (not a ceiling), a
+// stair, or a brush (the top of its world brush over the point: a platform's top, a ramp's slope).
+class SupportSurface {
+  public:
+    // nullopt when `entity` is none of those (or a brush that cannot be placed in the world).
+    static std::optional<SupportSurface> of(const level::Entity& entity);
+    const level::Entity& entity() const { return *entity_; }
+    const geometry::Obb& box() const { return box_; }
+    // The walkable top at (x, z), if that point is over the surface (surface_height_at's rule for floors
+    // and stairs).
+    std::optional<float> height_at(float x, float z, bool stair_as_ramp = false) const;
+
+  private:
+    SupportSurface(const level::Entity& entity, geometry::Obb box) : entity_(&entity), box_(box) {}
+    const level::Entity* entity_;
+    geometry::Obb box_;
+    std::shared_ptr<const brush::Brush> world_brush_; // brushes only
+};
 
 // The character limits the editor's rules use: the player's body (seed facts §5.1) and the game's own
 // character-controller settings (common/physics/character.h), so the editor and the game agree.

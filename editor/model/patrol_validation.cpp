@@ -9,19 +9,10 @@
 namespace ks::editor {
 namespace {
 
-struct Surface {
-    const level::Entity* entity;
-    geometry::Obb box;
-};
-
-std::vector<Surface> walkable_surfaces(const level::Level& level) {
-    std::vector<Surface> out;
-    for (const auto& e : level.entities) {
-        const auto type = e.type();
-        if ((type == level::EntityType::Floor || type == level::EntityType::Stair) && is_finite(e.position) &&
-            is_finite(e.rotation))
-            out.push_back({&e, entity_obb(e)});
-    }
+std::vector<SupportSurface> walkable_surfaces(const level::Level& level) {
+    std::vector<SupportSurface> out;
+    for (const auto& e : level.entities)
+        if (auto surface = SupportSurface::of(e)) out.push_back(std::move(*surface));
     return out;
 }
 
@@ -37,12 +28,12 @@ struct PointProblem {
     std::optional<float> fixed_y;
 };
 
-std::optional<PointProblem> point_problem(const std::vector<Surface>& surfaces, Vec3 p,
+std::optional<PointProblem> point_problem(const std::vector<SupportSurface>& surfaces, Vec3 p,
                                           const ValidationOptions& o) {
     std::optional<float> below, sunk; // highest surface under the point; lowest one just above it
     bool over_any = false;
-    for (const Surface& s : surfaces) {
-        const auto h = surface_height_at(*s.entity, s.box, p.x, p.z);
+    for (const SupportSurface& s : surfaces) {
+        const auto h = s.height_at(p.x, p.z);
         if (!h) continue;
         over_any = true;
         if (std::fabs(*h - p.y) <= o.support_tolerance) return std::nullopt;
@@ -62,7 +53,7 @@ std::optional<PointProblem> point_problem(const std::vector<Surface>& surfaces, 
 
 void check_patrol_support(const level::Level& level, const ValidationOptions& options,
                           std::vector<Issue>& out) {
-    std::optional<std::vector<Surface>> surfaces; // built on the first robot with a route
+    std::optional<std::vector<SupportSurface>> surfaces; // built on the first robot with a route
     for (const auto& e : level.entities) {
         const auto* robot = e.try_as<level::RobotProps>();
         if (!robot || !robot->patrol.active()) continue;
@@ -88,7 +79,7 @@ void check_patrol_on_mesh(const level::Level& level, nav::NavMesh& mesh, const V
                           std::vector<Issue>& out) {
     const float reach = options.character.radius + options.walk_cell;
     const Vec3 extents(reach, options.character.step_height + options.support_tolerance, reach);
-    std::optional<std::vector<Surface>> surfaces;
+    std::optional<std::vector<SupportSurface>> surfaces;
     for (const auto& e : level.entities) {
         const auto* robot = e.try_as<level::RobotProps>();
         if (!robot || !robot->patrol.active() || !is_finite(e.position)) continue;

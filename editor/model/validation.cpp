@@ -48,33 +48,40 @@ struct Placed {
     geometry::Aabb bounds;
 };
 
-// The level's walls and walkable surfaces (floors, stairs) with their boxes, indexed on the ground plane.
+// The level's walls and walkable surfaces (floors, stairs, brushes) with their boxes, indexed on the ground
+// plane.
 struct Solids {
-    std::vector<Placed> walls, supports;
+    std::vector<Placed> walls;
+    std::vector<SupportSurface> supports;
     XzGrid wall_grid, support_grid;
     mutable std::vector<int> near; // query results, reused
 
-    static std::vector<geometry::Aabb> bounds_of(const std::vector<Placed>& placed) {
-        std::vector<geometry::Aabb> b;
-        b.reserve(placed.size());
-        for (const Placed& p : placed) b.push_back(p.bounds);
-        return b;
-    }
-    static std::vector<Placed> collect(const Level& level, bool walls) {
+    static std::vector<Placed> collect_walls(const Level& level) {
         std::vector<Placed> out;
         for (const auto& e : level.entities) {
-            const EntityType t = e.type();
-            if (walls ? t != EntityType::Wall || !is_finite(e.position) || !is_finite(e.rotation)
-                      : t != EntityType::Floor && t != EntityType::Stair)
-                continue;
+            if (e.type() != EntityType::Wall || !is_finite(e.position) || !is_finite(e.rotation)) continue;
             const geometry::Obb box = entity_obb(e);
             out.push_back({&e, box, box.aabb()});
         }
         return out;
     }
+    static std::vector<SupportSurface> collect_supports(const Level& level) {
+        std::vector<SupportSurface> out;
+        for (const auto& e : level.entities)
+            if (auto surface = SupportSurface::of(e)) out.push_back(std::move(*surface));
+        return out;
+    }
+    template <class T, class BoxOf>
+    static std::vector<geometry::Aabb> bounds_of(const std::vector<T>& items, BoxOf box_of) {
+        std::vector<geometry::Aabb> b;
+        b.reserve(items.size());
+        for (const T& item : items) b.push_back(box_of(item));
+        return b;
+    }
     explicit Solids(const Level& level)
-        : walls(collect(level, true)), supports(collect(level, false)), wall_grid(bounds_of(walls)),
-          support_grid(bounds_of(supports)) {}
+        : walls(collect_walls(level)), supports(collect_supports(level)),
+          wall_grid(bounds_of(walls, [](const Placed& p) { return p.bounds; })),
+          support_grid(bounds_of(supports, [](const SupportSurface& s) { return s.box().aabb(); })) {}
     // Walls whose box may overlap `box`, in level order.
     const std::vector<int>& walls_near(const geometry::Aabb& box) const {
         wall_grid.query(box, near);
@@ -92,9 +99,9 @@ Support find_support(const Solids& solids, int self_id, Vec3 p, const Validation
     Support s;
     solids.support_grid.query_point(p.x, p.z, solids.near);
     for (int i : solids.near) {
-        const Placed& e = solids.supports[static_cast<size_t>(i)];
-        if (e.entity->id == self_id) continue;
-        auto h = surface_height_at(*e.entity, e.box, p.x, p.z);
+        const SupportSurface& e = solids.supports[static_cast<size_t>(i)];
+        if (e.entity().id == self_id) continue;
+        auto h = e.height_at(p.x, p.z);
         if (!h) continue;
         s.over_any = true;
         if (*h <= p.y + o.support_tolerance) {
@@ -115,9 +122,10 @@ bool stands_on_ground(EntityType t) {
     case EntityType::Pickup:
     case EntityType::GasCylinder:
     case EntityType::ControlPanel:
+    case EntityType::Spawner: // its robots appear where it stands: on no ground, they fall or never come
         return true;
     default:
-        return false; // walls (lintels float by design), floors, ceiling lights
+        return false; // walls (lintels float by design), floors, ceiling lights, brushes
     }
 }
 

@@ -1,17 +1,31 @@
 #include "view/picking.h"
 
+#include "brush/brush_query.h"
+#include "level/entity_shapes.h"
 #include "view/player_start_marker.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace ks::editor {
+namespace {
+// Where the ray meets the entity: its box, or for a brush the brush itself (a ramp is picked on its slope,
+// not anywhere in its box); negative when it misses.
+float ray_distance(const level::Entity& e, const geometry::Ray& ray) {
+    const float t = geometry::ray_obb(ray, entity_obb(e));
+    if (t < 0.0f || e.type() != level::EntityType::Brush) return t;
+    const auto world = level::world_brush(e);
+    if (!world) return t;
+    const auto entry = brush::ray_entry(*world, DVec3(ray.origin), DVec3(ray.direction));
+    return entry ? static_cast<float>(*entry) : -1.0f;
+}
+} // namespace
 
 PickHit pick_entity(const Document& doc, const geometry::Ray& ray, const ShownFn& shown) {
     PickHit best{0, 1e30f};
     for (const auto& e : doc.level.entities) {
         if (!shown(e) || doc.locked.contains(e.id)) continue;
-        const float t = geometry::ray_obb(ray, entity_obb(e));
+        const float t = ray_distance(e, ray);
         if (t >= 0.0f && t < best.distance) best = {e.id, t};
     }
     return best;
@@ -29,7 +43,8 @@ PickHit pick_selectable(const Document& doc, const geometry::Ray& ray, const Sho
 
 namespace {
 bool is_surface(level::EntityType t) {
-    return t == level::EntityType::Floor || t == level::EntityType::Stair || t == level::EntityType::Wall;
+    return t == level::EntityType::Floor || t == level::EntityType::Stair || t == level::EntityType::Wall ||
+           t == level::EntityType::Brush;
 }
 } // namespace
 
@@ -37,7 +52,7 @@ Vec3 place_point(const Document& doc, const geometry::Ray& ray, const ShownFn& s
     float best_t = 1e30f;
     for (const auto& e : doc.level.entities) {
         if (!shown(e) || !is_surface(e.type())) continue;
-        const float t = geometry::ray_obb(ray, entity_obb(e));
+        const float t = ray_distance(e, ray);
         if (t >= 0.0f && t < best_t) best_t = t;
     }
     Vec3 p;

@@ -1,0 +1,19 @@
+#pragma once
+// Questions asked of a brush in the world by tools that place things on it or pick it: the top of the brush
+// over a point of the ground plane (what stands on it stands there) and where a ray enters it. Both clip a
+// line by every face's half-space, so they are exact for any convex brush, ramps and turned brushes too.
+#include "brush/brush.h"
+
+#include <optional>
+
+namespace ks::brush {
+
+// The height where the vertical line through (x, z) leaves the brush at the top, or nullopt when the line
+// misses the brush (or only grazes an edge or a vertical face).
+std::optional<double> top_at(const Brush& brush, double x, double z);
+
+// The distance along `direction` (any length: the result is in its units) at which the ray from `origin`
+// enters the brush; 0 when the origin is inside; nullopt when it misses.
+std::optional<double> ray_entry(const Brush& brush, const DVec3& origin, const DVec3& direction);
+
+} // namespace ks::brush
