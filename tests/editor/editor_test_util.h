@@ -2,6 +2,7 @@
 // Shared helpers for the editor model tests.
 #include "level/level_io.h"
 #include "model/autosave.h"
+#include "model/edit_entities.h"
 #include "model/editor.h"
 #include "model/script.h"
 #include "test_support.h"
@@ -64,6 +65,15 @@ inline editor::Editor two_rooms() {
     editor::Editor ed;
     auto r = editor::run_script_text(kTwoRoomScript, "two_rooms.kss", {}, ed);
     REQUIRE_MESSAGE(r.ok(), (r.ok() ? std::string() : r.error().str()));
+    return ed;
+}
+
+// Four walls 1..4 along x, a robot 5 (the groups and layers tests).
+inline editor::Editor four_walls() {
+    editor::Editor ed;
+    for (int i = 0; i < 4; ++i)
+        REQUIRE(editor::place(ed, level::EntityType::Wall, Vec3(4.0f * i, 0, 0)).ok());
+    REQUIRE(editor::place(ed, level::EntityType::Robot, Vec3(0, 0, 8)).ok());
     return ed;
 }
 

@@ -13,16 +13,9 @@
 
 using namespace ks;
 using namespace ks::editor;
+using editor_test::four_walls;
 
 namespace {
-
-// Four walls 1..4 along x, a robot 5.
-Editor four_walls() {
-    Editor ed;
-    for (int i = 0; i < 4; ++i) REQUIRE(place(ed, level::EntityType::Wall, Vec3(4.0f * i, 0, 0)).ok());
-    REQUIRE(place(ed, level::EntityType::Robot, Vec3(0, 0, 8)).ok());
-    return ed;
-}
 
 std::vector<int> sorted(std::vector<int> ids) {
     std::sort(ids.begin(), ids.end());

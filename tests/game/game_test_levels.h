@@ -116,6 +116,22 @@ inline level::Entity& add_trigger(level::Level& lv, const char* name, Vec3 at, V
 }
 
 // One frame's input with E (interact) pressed.
+// `lv` has a way up (a stair, a ramp) from the start toward -z onto a platform 6 high beyond z = -16: the
+// player walks forward onto it, then a robot standing at (0, 0, 3), angered, chases up after.
+inline void check_climb_to_platform(level::Level lv) {
+    auto& r = add_robot(lv, Vec3(0, 0, 3));
+    r.as<level::RobotProps>().shooting_distance = 1.0f;
+    r.as<level::RobotProps>().hit_probability = 0.0f;
+    auto g = make_game(lv);
+    run_for(*g, 1.4, Input{1.0f});
+    CHECK(g->player().feet.y == doctest::Approx(6.0f).epsilon(0.02));
+    CHECK(g->player().feet.z < -16.0f);
+    g->damage_robot(0, 1.0f, true); // angry: chases wherever the player is
+    run_for(*g, 4.0);
+    CHECK(g->robots()[0].feet.y == doctest::Approx(6.0f).epsilon(0.02));
+    CHECK(g->robots()[0].feet.z < -16.0f);
+}
+
 inline Input press_e() {
     Input in;
     in.interact = true;

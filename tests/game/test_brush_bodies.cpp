@@ -35,17 +35,7 @@ TEST_CASE("a brush ramp is climbed onto a brush platform by the player and by a 
     auto lv = flat_level();
     add_brush(lv, Vec3(0, 0, -10), 0.0f, ramp()); // foot at z = -4, top at z = -16
     add_brush(lv, Vec3(0, 0, -22), 0.0f, brush::make_box({-6, 0, -6}, {6, 6, 6}, {"concrete"}).value());
-    auto& r = add_robot(lv, Vec3(0, 0, 3));
-    r.as<level::RobotProps>().shooting_distance = 1.0f;
-    r.as<level::RobotProps>().hit_probability = 0.0f;
-    auto g = make_game(lv);
-    run_for(*g, 1.4, Input{1.0f});
-    CHECK(g->player().feet.y == doctest::Approx(6.0f).epsilon(0.02));
-    CHECK(g->player().feet.z < -16.0f);
-    g->damage_robot(0, 1.0f, true); // angry: chases wherever the player is
-    run_for(*g, 4.0);
-    CHECK(g->robots()[0].feet.y == doctest::Approx(6.0f).epsilon(0.02));
-    CHECK(g->robots()[0].feet.z < -16.0f);
+    check_climb_to_platform(lv);
 }
 
 TEST_CASE("a brush wall turned by its entity's yaw stops the player") {

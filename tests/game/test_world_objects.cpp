@@ -69,17 +69,7 @@ TEST_CASE("stairs are climbable by the player and by a chasing robot") {
     auto& top = lv.add(level::EntityType::Floor, Vec3(0, 6, -22), "platform");
     top.as<level::FloorProps>().size = Vec2(12, 12);
     top.as<level::FloorProps>().thickness = 6.0f;
-    auto& r = add_robot(lv, Vec3(0, 0, 3));
-    r.as<level::RobotProps>().shooting_distance = 1.0f;
-    r.as<level::RobotProps>().hit_probability = 0.0f;
-    auto g = make_game(lv);
-    run_for(*g, 1.4, Input{1.0f});
-    CHECK(g->player().feet.y == doctest::Approx(6.0f).epsilon(0.02));
-    CHECK(g->player().feet.z < -16.0f);
-    g->damage_robot(0, 1.0f, true); // angry: chases wherever the player is
-    run_for(*g, 4.0);
-    CHECK(g->robots()[0].feet.y == doctest::Approx(6.0f).epsilon(0.02));
-    CHECK(g->robots()[0].feet.z < -16.0f);
+    check_climb_to_platform(lv);
 }
 
 TEST_CASE("floor lights toggle with E; top lights are fixed") {
