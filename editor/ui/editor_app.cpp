@@ -41,7 +41,6 @@ EditorApp::EditorApp(shell::AppShell& shell, const AppOptions& options)
 
 EditorApp::~EditorApp() {
     log::set_sink(nullptr);
-    if (crosshair_) glfwDestroyCursor(crosshair_);
     if (g_app == this) g_app = nullptr;
 }
 
@@ -170,7 +169,7 @@ int EditorApp::run() {
     shell::ShellHooks hooks;
     hooks.render = [this](const shell::FrameInfo& info) { render_views(info); };
     hooks.imgui = [this](const shell::FrameInfo& info) { build_ui(info); };
-    hooks.wants_close = [this]() { return quit_; };
+    hooks.wants_close = [this]() { return files_.quit(); };
     hooks.animating = [this]() { return animating(); };
     hooks.idle_poll = [this]() { return poll_background(); };
     return shell_.run(hooks);
@@ -248,7 +247,7 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
     dojo_->begin_frame();
     spots_.enabled = options_.status_file.has_value();
     spots_.clear();
-    refresh_logic_problems();
+    logic_.refresh_problems();
     const PanelContext ctx = context();
     menu_bar();
     if (dojo_tab_) {
@@ -259,6 +258,7 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
         // Wiring links and objectives takes more rows than an entity's fields: those tabs get more height.
         const float split = inspector_.shown_tab() == InspectorTab::Properties ? 0.62f : 0.74f;
         inspector_.draw(ctx, Rect{layout.right.x, layout.right.y, layout.right.w, layout.right.h * split});
+        if (logic_.picking()) placing_.reset(); // a pick the inspector began takes the viewport's clicks
         validation_.draw(ctx, Rect{layout.right.x, layout.right.y + layout.right.h * split, layout.right.w,
                                    layout.right.h * (1.0f - split)});
         // Over the viewport's right edge, beside the inspector whose texture field opened it.
@@ -272,8 +272,7 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
                    layout.bottom.h);
     log_panel_.draw(log_, Rect{layout.bottom.x + layout.bottom.w * 0.6f, layout.bottom.y,
                                layout.bottom.w * 0.4f, layout.bottom.h});
-    modal_prompts();
-    campaign_prompt();
+    files_.draw();
     about_.draw(spots_);
     prefab_prompt();
     dojo_->prompts(); // the clip file's questions, whichever tab is shown
@@ -285,6 +284,15 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
     update_title();
     ++frame_;
     if (options_.status_file) write_status();
+}
+
+void EditorApp::request(PendingAction action, fs::path path) {
+    if (action == PendingAction::Quit && dojo_->dirty() && !dojo_quit_confirmed_) {
+        dojo_->ask_before_quit(); // the clip file first; its answer comes back through dojo_->prompts()
+        return;
+    }
+    dojo_quit_confirmed_ = false; // a confirmation counts for this one request
+    files_.request(action, std::move(path));
 }
 
 void EditorApp::handle_shortcuts() {
@@ -300,7 +308,7 @@ void EditorApp::handle_shortcuts() {
         if (dojo_tab_)
             dojo_->save();
         else
-            save(shift);
+            files_.save(shift);
     }
     // Shift decides between undo and redo for every Z event, including auto-repeat: testing only the first
     // press for redo let a held Ctrl+Shift+Z fall through to the repeating undo once the key-repeat delay
@@ -335,8 +343,8 @@ void EditorApp::handle_shortcuts() {
     if (pressed(GLFW_KEY_ESCAPE)) {
         if (inspector_.texture_browser().is_open())
             inspector_.texture_browser().close();
-        else if (pick_)
-            end_pick();
+        else if (logic_.picking())
+            logic_.end_pick();
         else if (gizmo_.dragging())
             gizmo_.cancel(editor_);
         else if (placing_)

@@ -18,8 +18,10 @@
 #include "ui/about_box.h"
 #include "ui/analysis_view.h"
 #include "ui/bottom_panels.h"
+#include "ui/file_prompts.h"
 #include "ui/gizmo_draw.h"
 #include "ui/inspector.h"
+#include "ui/logic_panels.h"
 #include "ui/outliner.h"
 #include "ui/panel_context.h"
 #include "ui/place_palette.h"
@@ -48,7 +50,6 @@
 #include <vector>
 
 struct ImDrawList;
-struct GLFWcursor;
 
 namespace ks::editor::ui {
 
@@ -96,14 +97,6 @@ struct Overlays {
     bool links = true;     // arrows for the links between entities (the selection's bright and labelled)
 };
 
-// Pick mode (link_pick.cpp): what the next click on an entity in the viewport is for.
-enum class PickPurpose { LinkTarget, KillName };
-struct PickRequest {
-    PickPurpose purpose = PickPurpose::LinkTarget;
-    LinkOwner owner; // LinkTarget: whose link
-    int index = 0;   // LinkTarget: the link; KillName: the objective
-};
-
 // What the next viewport click places: an entity type from the palette or a prefab from the Prefabs tab.
 struct PlaceTool {
     std::optional<level::EntityType> type;
@@ -112,9 +105,6 @@ struct PlaceTool {
     void reset() { type.reset(), prefab.clear(); }
     std::string label() const { return type ? std::string(level::type_name(*type)) : "prefab " + prefab; }
 };
-
-// A question the user must answer before an action goes on (unsaved changes, overwrite, recovery).
-enum class PendingAction { None, New, Open, OpenRecent, Quit };
 
 // Owns the panels (each with its own state, working through a PanelContext), arranges them in the fixed
 // layout and runs the frame; it is also the WindowServices the panels may call.
@@ -152,13 +142,8 @@ class EditorApp final : private WindowServices {
 
     // editor_app.cpp: menus and files
     void menu_bar();
+    // The dojo's unsaved clip edits are asked about before a Quit goes on to files_.
     void request(PendingAction action, std::filesystem::path path = {});
-    void perform(PendingAction action);
-    void save(bool save_as);
-    void modal_prompts();
-    void open_campaign_prompt(); // campaign_prompt.cpp: File > Add to Campaign...
-    void campaign_prompt();
-    void open_file(const std::filesystem::path& path);
     void report(const Result<void>& result, const char* what) { log_.report(result, what); }
 
     // viewport.cpp
@@ -214,32 +199,12 @@ class EditorApp final : private WindowServices {
     PanelContext context();
     void viewport_toolbar();
 
-    // link_list.cpp: the inspector's Links tab, the selected entity's links and those acting on it
-    void links_tab() override;
-
-    // link_list.cpp: the link-list widget; `spot` names its widgets in the status file ("link0.event")
-    void link_list(const LinkOwner& owner, const std::string& spot) override;
-    bool link_row(const LinkOwner& owner, int index, const std::vector<std::string>& events,
-                  const std::string& spot); // false: the list changed
-    // The link's target (an entity is named first if it needs a name) and an action it takes: one step.
-    Result<void> apply_link_target(const LinkOwner& owner, int index, const TargetOption& option);
-    bool target_widgets(const LinkOwner& owner, int index, const level::Link& link, float width,
-                        const std::string& spot); // true: the target changed
-    // The level checks' findings, redone at the start of a frame after a change: the pointers the widgets
-    // take into logic_problems_ stay valid for the whole frame.
-    void refresh_logic_problems();
-
-    // link_pick.cpp
-    void begin_pick(PickRequest request);
-    void end_pick();
-    void pick_click(int entity_id);
-    void pick_hint(ImDrawList* draw, Vec2 origin);
-
-    // objectives_panel.cpp
-    void objectives_tab() override;
-    bool objective_item(int index); // false: the list changed
-    bool kill_list(int index, const level::Objective& objective, const std::string& path);
-    Result<void> add_kill_name(int objective, int entity_id); // naming the entity if needed: one step
+    // WindowServices: the logic widgets live in logic_ (logic_panels.h)
+    void links_tab() override { logic_.links_tab(); }
+    void link_list(const LinkOwner& owner, const std::string& spot) override {
+        logic_.link_list(owner, spot);
+    }
+    void objectives_tab() override { logic_.objectives_tab(); }
 
     shell::AppShell& shell_;
     AppOptions options_;
@@ -317,25 +282,10 @@ class EditorApp final : private WindowServices {
 
     // level logic
     float palette_height_ = 1e4f; // the place palette's height when last drawn in full
-    std::optional<PickRequest> pick_;
-    std::string pick_message_; // the hint over the viewport while picking
-    GLFWcursor* crosshair_ = nullptr;
-    std::vector<LogicProblem> logic_problems_;
-    std::uint64_t problems_revision_ = ~0ull;
-    UiSpots spots_; // --status-file: where the logic widgets were drawn this frame
+    UiSpots spots_;               // --status-file: where the logic widgets were drawn this frame
+    LogicPanels logic_{editor_, log_, spots_, shell_.window()}; // Links and Objectives tabs, pick mode
 
-    // prompts
-    PendingAction pending_ = PendingAction::None;
-    std::filesystem::path pending_path_;
-    bool ask_unsaved_ = false;
-    bool ask_path_ = false;
-    bool path_for_save_ = false;
-    bool ask_overwrite_ = false;
-    char path_input_[512] = {};
-    bool ask_campaign_ = false;
-    char campaign_input_[512] = {};
-    char campaign_title_[256] = {};
-    bool quit_ = false;
+    FilePrompts files_{editor_, log_, recent_, [this] { set_view(ViewMode::Perspective); }};
     AboutBox about_; // Help > About
     bool close_requested_ = false;
     std::string last_title_;

@@ -90,11 +90,7 @@ void EditorApp::logic_status(nlohmann::json& s) const {
             {{"id", o.id}, {"text", o.text}, {"kill", o.kill}, {"links", links_json(o.links)}});
     s["objectives"] = objectives;
     s["level_links"] = links_json(editor_.level().links);
-    s["pick"] = {{"active", pick_.has_value()},
-                 {"purpose", !pick_                                      ? ""
-                             : pick_->purpose == PickPurpose::LinkTarget ? "link_target"
-                                                                         : "kill"},
-                 {"message", pick_message_}};
+    logic_.pick_status(s);
     json spots = json::object();
     for (const auto& [name, at] : spots_.all()) spots[name] = point(at);
     s["spots"] = spots;

@@ -119,7 +119,7 @@ void EditorApp::open_group_hint(ImDrawList* draw, Vec2 origin, Vec2 size, bool p
     // A 4-up pane is narrow: the group's name alone.
     const std::string text = pane ? "In " + group->name + " (Esc leaves)"
                                   : "Inside group " + group_label(*group) + "  -  Esc to leave";
-    const float top = pane ? 46.0f : (placing_ || pick_ ? 28.0f : 8.0f);
+    const float top = pane ? 46.0f : (placing_ || logic_.picking() ? 28.0f : 8.0f);
     const ImVec2 at(origin.x + 12, origin.y + top);
     const ImVec2 extent = ImGui::CalcTextSize(text.c_str());
     draw->PushClipRect(ImVec2(origin.x, origin.y), ImVec2(origin.x + size.x, origin.y + size.y), true);

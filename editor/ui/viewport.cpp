@@ -388,7 +388,7 @@ void EditorApp::viewport_panel(float x, float y, float w, float h) {
     draw->AddText(ImVec2(under.x + 12, under.y + span.y - 23), IM_COL32(225, 230, 240, 255), text);
     draw->PopClipRect();
     clip_preview_overlay(Vec2(origin.x, origin.y), area); // the selection's, not a pane's: across the bottom
-    pick_hint(draw, viewport_origin_);
+    logic_.pick_hint(draw, viewport_origin_);
     if (!quad_.on) open_group_hint(draw, viewport_origin_, viewport_size_, false);
     if (placing_) {
         const std::string hint = "Click to place " + placing_.label() + "  (Shift: several, Esc: stop)";
@@ -457,12 +457,13 @@ void EditorApp::viewport_input(Vec2 origin, bool hovered) {
                             hovered && !gizmo_.dragging() && !patrol_drag_.dragging() && !box_selecting_,
                             mouse, hovered ? wheel_ : 0.0f),
             io.DeltaTime);
-    if (pick_ && hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Right) &&
+    if (logic_.picking() && hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Right) &&
         io.MouseDragMaxDistanceSqr[1] < 16.0f)
-        end_pick(); // a right click (not a fly drag) cancels picking
+        logic_.end_pick(); // a right click (not a fly drag) cancels picking
     if (flying_) return;
-    if (pick_) { // the next left click picks; nothing else happens meanwhile
-        if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) pick_click(pick(view_.ray(mouse)));
+    if (logic_.picking()) { // the next left click picks; nothing else happens meanwhile
+        if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left))
+            logic_.pick_click(pick(view_.ray(mouse)));
         hovered_handle_ = Handle::None;
         return;
     }
