@@ -90,10 +90,10 @@ Result<void> EditorApp::init() {
         dojo_->apply_view(*view);
         if (view->robot > 0) { // preview in context: select the robot and play the clip on it
             if (auto r = select(editor_, {view->robot}); !r) return r.error();
-            if (preview_robot() != view->robot)
+            if (ClipPreview::robot(editor_) != view->robot)
                 return Error("--dojo-view: entity " + std::to_string(view->robot) + " is not a robot", {},
                              "give the id of a robot in the level (--level FILE)");
-            clip_preview_ = true;
+            clip_preview_.turn_on();
         }
     }
     overlays_.navmesh = options_.show_navmesh;
@@ -181,7 +181,8 @@ PanelContext EditorApp::context() {
 
 // What changes on screen with no input: a playing clip, a background job whose result is awaited.
 bool EditorApp::animating() const {
-    const bool clip_playing = dojo_->playing() && (dojo_tab_ || (clip_preview_ && preview_robot() != 0));
+    const bool clip_playing =
+        dojo_->playing() && (dojo_tab_ || (clip_preview_.on() && ClipPreview::robot(editor_) != 0));
     return clip_playing || analysis_.running() || editor_.validation().reachability_pending() ||
            nav_preview_.building();
 }
@@ -192,18 +193,7 @@ bool EditorApp::poll_background() {
     const std::uint64_t logged = log_.revision(), prefabs = editor_.prefabs().revision();
     const std::uint64_t revision = editor_.revision();
     const bool playing = play_.running();
-    std::vector<std::string> lines;
-    play_.poll(lines);
-    for (auto& l : lines) log_line("[game] " + l, l.find("error") != std::string::npos);
-    if (!play_.running() && play_.last_exit_code() && !play_file_.empty()) {
-        const int code = *play_.last_exit_code();
-        log_line(code == 0 ? "play-test ended"
-                           : "play-test FAILED with exit code " + std::to_string(code) +
-                                 " (its messages are above)",
-                 code != 0);
-        play_exit_code_ = code;
-        play_file_.clear();
-    }
+    play_.poll();
     if (!shell_.screenshot_mode()) {
         if (auto r = autosaver_.update(editor_); !r)
             log_line("autosave: " + r.error().str(), true);
@@ -231,7 +221,7 @@ void EditorApp::render_views(const shell::FrameInfo& info) {
         dojo_->render(layout.bottom.w, layout.centre.h, info.frame_dt);
     } else {
         rebuild_scene_if_changed();
-        pose_preview_robot(info.frame_dt);
+        clip_preview_.pose(editor_, *dojo_, *scene_, info.frame_dt);
         prefabs_.render_thumbnails(editor_.prefabs(), *renderer_, assets_);
         const int w = static_cast<int>(layout.centre.w), h = static_cast<int>(layout.centre.h - kViewportBar);
         render_level_views(w, std::max(1, h));
@@ -268,13 +258,14 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
     // Along the bottom: history, the play-test report, the log.
     history_panel_.draw(editor_,
                         Rect{layout.bottom.x, layout.bottom.y, layout.bottom.w * 0.2f, layout.bottom.h});
-    analysis_panel(layout.bottom.x + layout.bottom.w * 0.2f, layout.bottom.y, layout.bottom.w * 0.4f,
-                   layout.bottom.h);
+    analysis_.window(editor_, spots_,
+                     Rect{layout.bottom.x + layout.bottom.w * 0.2f, layout.bottom.y, layout.bottom.w * 0.4f,
+                          layout.bottom.h});
     log_panel_.draw(log_, Rect{layout.bottom.x + layout.bottom.w * 0.6f, layout.bottom.y,
                                layout.bottom.w * 0.4f, layout.bottom.h});
     files_.draw();
     about_.draw(spots_);
-    prefab_prompt();
+    prefab_prompt_.draw(ctx);
     dojo_->prompts(); // the clip file's questions, whichever tab is shown
     if (dojo_->take_quit_answer() == DojoPanel::QuitAnswer::Go) {
         dojo_quit_confirmed_ = true;
@@ -323,7 +314,7 @@ void EditorApp::handle_shortcuts() {
     } else if (ctrl && repeat(GLFW_KEY_Z)) {
         undo();
     }
-    if (pressed(GLFW_KEY_F5)) play_test(shift);
+    if (pressed(GLFW_KEY_F5)) play_.start(editor_.level(), shift ? &view_ : nullptr);
     if (dojo_tab_) {
         if (pressed(GLFW_KEY_DELETE)) dojo_->delete_selected();
         return; // the rest acts on the level viewport

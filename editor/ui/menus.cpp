@@ -107,12 +107,14 @@ void EditorApp::menu_bar() {
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Play")) {
-        if (ImGui::MenuItem("Play from start", "F5", false, !play_.running())) play_test(false);
-        if (ImGui::MenuItem("Play from camera", "Shift+F5", false, !play_.running())) play_test(true);
+        if (ImGui::MenuItem("Play from start", "F5", false, !play_.running()))
+            play_.start(editor_.level(), nullptr);
+        if (ImGui::MenuItem("Play from camera", "Shift+F5", false, !play_.running()))
+            play_.start(editor_.level(), &view_);
         if (ImGui::MenuItem("Stop", nullptr, false, play_.running())) play_.stop();
         ImGui::Separator();
         if (ImGui::MenuItem("Analyze (bot play-tests)", nullptr, false, !analysis_.running()))
-            start_analysis();
+            analysis_.start(editor_.level(), editor_.file_path());
         if (ImGui::MenuItem("Cancel analysis", nullptr, false, analysis_.running())) analysis_.cancel();
         ImGui::MenuItem("Show play-test report", nullptr, &analysis_.overlay, analysis_.report() != nullptr);
         ImGui::EndMenu();
