@@ -251,9 +251,8 @@ class EditorApp final : private WindowServices {
     LeftTab start_tab_ = LeftTab::Outliner;      // Layers, Prefabs: brought to the front on the next frame
     LeftTab shown_left_tab_ = LeftTab::Outliner; // the status file reports it
     PrefabPrompt prefab_prompt_;                 // Edit > Save selection as prefab...
-    std::vector<MarkerLine>
-        marker_lines_;           // a sound emitter's or the player start's lines, reused every frame
-    LogicOverlay logic_overlay_; // trigger, spawner and message markers; link arrows
+    std::vector<MarkerLine> marker_lines_;       // a sound emitter's or the player start's lines, reused
+    LogicOverlay logic_overlay_;                 // trigger, spawner and message markers; link arrows
     bool dojo_tab_ = false;
     std::unique_ptr<DojoPanel> dojo_;
     bool dojo_quit_confirmed_ = false; // the dojo's unsaved clip edits were saved or dropped for quitting

@@ -1,8 +1,6 @@
 // The 3D viewport: the level drawn by the game's renderer into the panel's own target, overlays (grid,
 // selection, collision bounds, light ranges, robot radii, patrol routes, player start), the camera,
 // picking, box select, placing from the palette and the gizmo.
-#include "core/files.h"
-#include "level/level_io.h"
 #include "model/edit_entities.h"
 #include "model/edit_prefabs.h"
 #include "model/edit_selection.h"
@@ -21,7 +19,6 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
-#include <unistd.h>
 
 namespace ks::editor::ui {
 namespace fs = std::filesystem;
