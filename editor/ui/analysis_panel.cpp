@@ -1,6 +1,6 @@
 // The Play-test report panel (bottom strip) and Play > Analyze: the autoplay bot's runs of the level being
 // edited (ui/analysis_view.h), and what the status file says of them.
-#include "ui/editor_app.h"
+#include "ui/analysis_view.h"
 #include "ui/panel_style.h"
 
 #include <imgui.h>
@@ -8,28 +8,20 @@
 
 namespace ks::editor::ui {
 
-void EditorApp::start_analysis() {
-    analysis_.start(editor_.level(), editor_.file_path());
-}
-
-void EditorApp::analysis_panel(float x, float y, float w, float h) {
-    const bool continuous = editor_.history().in_transaction() || ImGui::IsAnyItemActive();
-    analysis_.update(editor_.level(), editor_.revision(), continuous, editor_.file_path());
-    place_panel(x, y, w, h);
+void AnalysisView::window(const Editor& editor, UiSpots& spots, const Rect& rect) {
+    const bool continuous = editor.history().in_transaction() || ImGui::IsAnyItemActive();
+    update(editor.level(), editor.revision(), continuous, editor.file_path());
+    place_panel(rect.x, rect.y, rect.w, rect.h);
     ImGui::Begin("Play-test report", nullptr, kPanelFlags);
-    analysis_.panel(editor_.level(), editor_.file_path(), spots_);
+    panel(editor.level(), editor.file_path(), spots);
     ImGui::End();
 }
 
-void EditorApp::analysis_status(nlohmann::json& s) const {
-    nlohmann::json a = {{"running", analysis_.running()},
-                        {"progress", analysis_.progress()},
-                        {"runs_done", analysis_.runs_done()},
-                        {"runs", analysis_.runs},
-                        {"overlay", analysis_.overlay},
-                        {"stale", analysis_.stale()},
-                        {"file", analysis_.report_file().string()}};
-    if (const game::PlaytestReport* r = analysis_.report())
+void AnalysisView::status(nlohmann::json& s) const {
+    nlohmann::json a = {
+        {"running", running()}, {"progress", progress()}, {"runs_done", runs_done()},      {"runs", runs},
+        {"overlay", overlay},   {"stale", stale()},       {"file", report_file().string()}};
+    if (const game::PlaytestReport* r = report())
         a["report"] = {{"completed", r->runs.size()},
                        {"requested", r->requested},
                        {"wins", r->wins},

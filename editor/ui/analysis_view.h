@@ -8,8 +8,12 @@
 // loads the report beside it, if any.
 #include "core/math.h"
 #include "game/playtest_analysis.h"
+#include "model/editor.h"
+#include "ui/layout.h"
 #include "ui/ui_spots.h"
 #include "view/view_camera.h"
+
+#include <nlohmann/json_fwd.hpp>
 
 #include <cstdint>
 #include <filesystem>
@@ -55,6 +59,9 @@ class AnalysisView {
     void panel(const level::Level& level, const std::filesystem::path& level_file, UiSpots& spots);
     // Over one view of the level: the heat map, the deaths and the paths (when shown).
     void draw(ImDrawList* draw, const ViewCamera& view, Vec2 origin) const;
+    // The Play-test report panel in the bottom strip (analysis_panel.cpp): update, then the panel's window.
+    void window(const Editor& editor, UiSpots& spots, const Rect& rect);
+    void status(nlohmann::json& status) const; // "analysis"
 
   private:
     void finish();

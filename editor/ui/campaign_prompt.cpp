@@ -2,7 +2,7 @@
 // the saved level as the campaign's next level (model/campaign_add.h holds the rules and the refusals).
 #include "core/paths.h"
 #include "model/campaign_add.h"
-#include "ui/editor_app.h"
+#include "ui/file_prompts.h"
 
 #include <imgui.h>
 
@@ -10,7 +10,7 @@
 
 namespace ks::editor::ui {
 
-void EditorApp::open_campaign_prompt() {
+void FilePrompts::open_campaign_prompt() {
     ask_campaign_ = true;
     if (campaign_input_[0] == '\0')
         std::snprintf(campaign_input_, sizeof(campaign_input_), "%s",
@@ -18,7 +18,7 @@ void EditorApp::open_campaign_prompt() {
     std::snprintf(campaign_title_, sizeof(campaign_title_), "%s", editor_.level().name.c_str());
 }
 
-void EditorApp::campaign_prompt() {
+void FilePrompts::campaign_prompt() {
     if (ask_campaign_) ImGui::OpenPopup("Add to campaign");
     ask_campaign_ = false;
     ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));

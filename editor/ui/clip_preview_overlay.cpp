@@ -1,8 +1,8 @@
 // Preview in context: the level robot selected in the viewport plays any of the dojo's clips where it
 // stands, lit by the level. The dojo panel's player poses it (the clip, the playhead and Play/Pause are the
 // dojo tab's own), and the level scene draws that robot in the pose instead of its rest pose.
+#include "ui/clip_preview.h"
 #include "ui/dojo_panel.h"
-#include "ui/editor_app.h"
 
 #include <imgui.h>
 
@@ -10,30 +10,28 @@
 
 namespace ks::editor::ui {
 
-int EditorApp::preview_robot() const {
-    const auto& selection = editor_.doc().selection;
+int ClipPreview::robot(const Editor& editor) {
+    const auto& selection = editor.doc().selection;
     if (selection.empty()) return 0;
-    const level::Entity* e = editor_.level().find(selection.front());
+    const level::Entity* e = editor.level().find(selection.front());
     return e && e->type() == level::EntityType::Robot ? e->id : 0;
 }
 
-// Render pass: advance the dojo's player and hand the pose to the level scene (before it emits).
-void EditorApp::pose_preview_robot(double dt) {
-    const int robot = clip_preview_ ? preview_robot() : 0;
-    if (posed_robot_ != robot && posed_robot_ != 0) scene_->set_pose(posed_robot_, nullptr);
-    posed_robot_ = robot;
-    if (robot == 0) return;
-    dojo_->ensure_loaded();
-    dojo_->tick(dt);
-    scene_->set_pose(robot, &dojo_->pose());
+void ClipPreview::pose(const Editor& editor, DojoPanel& dojo, render::LevelScene& scene, double dt) {
+    const int shown_robot = on_ ? robot(editor) : 0;
+    if (posed_robot_ != shown_robot && posed_robot_ != 0) scene.set_pose(posed_robot_, nullptr);
+    posed_robot_ = shown_robot;
+    if (shown_robot == 0) return;
+    dojo.ensure_loaded();
+    dojo.tick(dt);
+    scene.set_pose(shown_robot, &dojo.pose());
 }
 
-// The bar over the viewport's bottom-left corner, shown while a robot is the primary selection.
-void EditorApp::clip_preview_overlay(Vec2 origin, Vec2 size) {
-    const int robot = preview_robot();
-    preview_toggle_ = Vec2(0.0f);
-    if (robot == 0) return;
-    const level::Entity* e = editor_.level().find(robot);
+void ClipPreview::draw(const Editor& editor, DojoPanel& dojo, Vec2 origin, Vec2 size) {
+    const int selected_robot = robot(editor);
+    toggle_centre_ = Vec2(0.0f);
+    if (selected_robot == 0) return;
+    const level::Entity* e = editor.level().find(selected_robot);
     const float height = ImGui::GetFrameHeight() + ImGui::GetStyle().WindowPadding.y * 2.0f;
     ImGui::SetCursorScreenPos(ImVec2(origin.x + 6, origin.y + size.y - 32 - height));
     ImGui::PushStyleColor(ImGuiCol_ChildBg, IM_COL32(15, 17, 22, 215));
@@ -43,28 +41,28 @@ void EditorApp::clip_preview_overlay(Vec2 origin, Vec2 size) {
     char label[96];
     std::snprintf(label, sizeof(label), "Preview clip on %s",
                   e->name.empty() ? "the robot" : e->name.c_str());
-    ImGui::Checkbox(label, &clip_preview_);
-    preview_toggle_ = Vec2((ImGui::GetItemRectMin().x + ImGui::GetItemRectMax().x) * 0.5f,
-                           (ImGui::GetItemRectMin().y + ImGui::GetItemRectMax().y) * 0.5f);
+    ImGui::Checkbox(label, &on_);
+    toggle_centre_ = Vec2((ImGui::GetItemRectMin().x + ImGui::GetItemRectMax().x) * 0.5f,
+                          (ImGui::GetItemRectMin().y + ImGui::GetItemRectMax().y) * 0.5f);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Plays the dojo's clip on this robot where it stands, in the level's light");
-    const auto& clips = dojo_->clips();
-    if (clip_preview_ && !clips.empty()) {
-        const int shown = dojo_->clip();
+    const auto& clips = dojo.clips();
+    if (on_ && !clips.empty()) {
+        const int shown = dojo.clip();
         ImGui::SameLine();
         ImGui::SetNextItemWidth(150);
         if (ImGui::BeginCombo("##preview clip", clips[static_cast<size_t>(shown)].name.c_str())) {
             for (int i = 0; i < static_cast<int>(clips.size()); ++i)
                 if (ImGui::Selectable(clips[static_cast<size_t>(i)].name.c_str(), i == shown))
-                    dojo_->show_clip(i);
+                    dojo.show_clip(i);
             ImGui::EndCombo();
         }
         ImGui::SameLine();
-        if (ImGui::Button(dojo_->playing() ? "Pause" : "Play")) dojo_->set_playing(!dojo_->playing());
+        if (ImGui::Button(dojo.playing() ? "Pause" : "Play")) dojo.set_playing(!dojo.playing());
         ImGui::SameLine();
-        if (ImGui::Button("Restart")) dojo_->show_clip(shown);
+        if (ImGui::Button("Restart")) dojo.show_clip(shown);
         ImGui::SameLine();
-        ImGui::TextDisabled("%.2f s", dojo_->time());
+        ImGui::TextDisabled("%.2f s", dojo.time());
     }
     ImGui::EndChild();
     ImGui::PopStyleVar();

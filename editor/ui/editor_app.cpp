@@ -41,7 +41,6 @@ EditorApp::EditorApp(shell::AppShell& shell, const AppOptions& options)
 
 EditorApp::~EditorApp() {
     log::set_sink(nullptr);
-    if (crosshair_) glfwDestroyCursor(crosshair_);
     if (g_app == this) g_app = nullptr;
 }
 
@@ -91,10 +90,10 @@ Result<void> EditorApp::init() {
         dojo_->apply_view(*view);
         if (view->robot > 0) { // preview in context: select the robot and play the clip on it
             if (auto r = select(editor_, {view->robot}); !r) return r.error();
-            if (preview_robot() != view->robot)
+            if (ClipPreview::robot(editor_) != view->robot)
                 return Error("--dojo-view: entity " + std::to_string(view->robot) + " is not a robot", {},
                              "give the id of a robot in the level (--level FILE)");
-            clip_preview_ = true;
+            clip_preview_.turn_on();
         }
     }
     overlays_.navmesh = options_.show_navmesh;
@@ -170,7 +169,7 @@ int EditorApp::run() {
     shell::ShellHooks hooks;
     hooks.render = [this](const shell::FrameInfo& info) { render_views(info); };
     hooks.imgui = [this](const shell::FrameInfo& info) { build_ui(info); };
-    hooks.wants_close = [this]() { return quit_; };
+    hooks.wants_close = [this]() { return files_.quit(); };
     hooks.animating = [this]() { return animating(); };
     hooks.idle_poll = [this]() { return poll_background(); };
     return shell_.run(hooks);
@@ -182,7 +181,8 @@ PanelContext EditorApp::context() {
 
 // What changes on screen with no input: a playing clip, a background job whose result is awaited.
 bool EditorApp::animating() const {
-    const bool clip_playing = dojo_->playing() && (dojo_tab_ || (clip_preview_ && preview_robot() != 0));
+    const bool clip_playing =
+        dojo_->playing() && (dojo_tab_ || (clip_preview_.on() && ClipPreview::robot(editor_) != 0));
     return clip_playing || analysis_.running() || editor_.validation().reachability_pending() ||
            nav_preview_.building();
 }
@@ -193,18 +193,7 @@ bool EditorApp::poll_background() {
     const std::uint64_t logged = log_.revision(), prefabs = editor_.prefabs().revision();
     const std::uint64_t revision = editor_.revision();
     const bool playing = play_.running();
-    std::vector<std::string> lines;
-    play_.poll(lines);
-    for (auto& l : lines) log_line("[game] " + l, l.find("error") != std::string::npos);
-    if (!play_.running() && play_.last_exit_code() && !play_file_.empty()) {
-        const int code = *play_.last_exit_code();
-        log_line(code == 0 ? "play-test ended"
-                           : "play-test FAILED with exit code " + std::to_string(code) +
-                                 " (its messages are above)",
-                 code != 0);
-        play_exit_code_ = code;
-        play_file_.clear();
-    }
+    play_.poll();
     if (!shell_.screenshot_mode()) {
         if (auto r = autosaver_.update(editor_); !r)
             log_line("autosave: " + r.error().str(), true);
@@ -232,7 +221,7 @@ void EditorApp::render_views(const shell::FrameInfo& info) {
         dojo_->render(layout.bottom.w, layout.centre.h, info.frame_dt);
     } else {
         rebuild_scene_if_changed();
-        pose_preview_robot(info.frame_dt);
+        clip_preview_.pose(editor_, *dojo_, *scene_, info.frame_dt);
         prefabs_.render_thumbnails(editor_.prefabs(), *renderer_, assets_);
         const int w = static_cast<int>(layout.centre.w), h = static_cast<int>(layout.centre.h - kViewportBar);
         render_level_views(w, std::max(1, h));
@@ -248,7 +237,7 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
     dojo_->begin_frame();
     spots_.enabled = options_.status_file.has_value();
     spots_.clear();
-    refresh_logic_problems();
+    logic_.refresh_problems();
     const PanelContext ctx = context();
     menu_bar();
     if (dojo_tab_) {
@@ -259,6 +248,7 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
         // Wiring links and objectives takes more rows than an entity's fields: those tabs get more height.
         const float split = inspector_.shown_tab() == InspectorTab::Properties ? 0.62f : 0.74f;
         inspector_.draw(ctx, Rect{layout.right.x, layout.right.y, layout.right.w, layout.right.h * split});
+        if (logic_.picking()) placing_.reset(); // a pick the inspector began takes the viewport's clicks
         validation_.draw(ctx, Rect{layout.right.x, layout.right.y + layout.right.h * split, layout.right.w,
                                    layout.right.h * (1.0f - split)});
         // Over the viewport's right edge, beside the inspector whose texture field opened it.
@@ -268,14 +258,14 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
     // Along the bottom: history, the play-test report, the log.
     history_panel_.draw(editor_,
                         Rect{layout.bottom.x, layout.bottom.y, layout.bottom.w * 0.2f, layout.bottom.h});
-    analysis_panel(layout.bottom.x + layout.bottom.w * 0.2f, layout.bottom.y, layout.bottom.w * 0.4f,
-                   layout.bottom.h);
+    analysis_.window(editor_, spots_,
+                     Rect{layout.bottom.x + layout.bottom.w * 0.2f, layout.bottom.y, layout.bottom.w * 0.4f,
+                          layout.bottom.h});
     log_panel_.draw(log_, Rect{layout.bottom.x + layout.bottom.w * 0.6f, layout.bottom.y,
                                layout.bottom.w * 0.4f, layout.bottom.h});
-    modal_prompts();
-    campaign_prompt();
+    files_.draw();
     about_.draw(spots_);
-    prefab_prompt();
+    prefab_prompt_.draw(ctx);
     dojo_->prompts(); // the clip file's questions, whichever tab is shown
     if (dojo_->take_quit_answer() == DojoPanel::QuitAnswer::Go) {
         dojo_quit_confirmed_ = true;
@@ -285,6 +275,15 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
     update_title();
     ++frame_;
     if (options_.status_file) write_status();
+}
+
+void EditorApp::request(PendingAction action, fs::path path) {
+    if (action == PendingAction::Quit && dojo_->dirty() && !dojo_quit_confirmed_) {
+        dojo_->ask_before_quit(); // the clip file first; its answer comes back through dojo_->prompts()
+        return;
+    }
+    dojo_quit_confirmed_ = false; // a confirmation counts for this one request
+    files_.request(action, std::move(path));
 }
 
 void EditorApp::handle_shortcuts() {
@@ -300,7 +299,7 @@ void EditorApp::handle_shortcuts() {
         if (dojo_tab_)
             dojo_->save();
         else
-            save(shift);
+            files_.save(shift);
     }
     // Shift decides between undo and redo for every Z event, including auto-repeat: testing only the first
     // press for redo let a held Ctrl+Shift+Z fall through to the repeating undo once the key-repeat delay
@@ -315,7 +314,7 @@ void EditorApp::handle_shortcuts() {
     } else if (ctrl && repeat(GLFW_KEY_Z)) {
         undo();
     }
-    if (pressed(GLFW_KEY_F5)) play_test(shift);
+    if (pressed(GLFW_KEY_F5)) play_.start(editor_.level(), shift ? &view_ : nullptr);
     if (dojo_tab_) {
         if (pressed(GLFW_KEY_DELETE)) dojo_->delete_selected();
         return; // the rest acts on the level viewport
@@ -335,8 +334,8 @@ void EditorApp::handle_shortcuts() {
     if (pressed(GLFW_KEY_ESCAPE)) {
         if (inspector_.texture_browser().is_open())
             inspector_.texture_browser().close();
-        else if (pick_)
-            end_pick();
+        else if (logic_.picking())
+            logic_.end_pick();
         else if (gizmo_.dragging())
             gizmo_.cancel(editor_);
         else if (placing_)

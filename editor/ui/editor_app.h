@@ -2,10 +2,11 @@
 // The editor window: a fixed ImGui layout (menu bar; outliner left; the inspector's Properties, Links and
 // Objectives tabs and validation right; history and log below; the 3D viewport in the middle, or the dojo
 // tab) around one Editor session. The panels are objects of their own (inspector.h, outliner.h,
-// prefab_palette.h, place_palette.h, bottom_panels.h, dojo_panel.h) working through a PanelContext
-// (panel_context.h); EditorApp owns them, arranges them and runs the frame (docs/architecture.md, "The editor
-// window's panels"). Panels only present the model and dispatch Editor calls; every edit goes through its
-// commands.
+// prefab_palette.h, place_palette.h, bottom_panels.h, logic_panels.h, file_prompts.h, prefab_prompt.h,
+// playtest_launcher.h, logic_overlay.h, dojo_panel.h) working through a PanelContext (panel_context.h) or the
+// narrower part of it they need; EditorApp owns them, arranges them and runs the frame (docs/architecture.md,
+// "The editor window's panels"). Panels only present the model and dispatch Editor calls; every edit goes
+// through its commands.
 #include "model/autosave.h"
 #include "model/editor.h"
 #include "model/nav_preview.h"
@@ -18,13 +19,18 @@
 #include "ui/about_box.h"
 #include "ui/analysis_view.h"
 #include "ui/bottom_panels.h"
+#include "ui/clip_preview.h"
+#include "ui/file_prompts.h"
 #include "ui/gizmo_draw.h"
 #include "ui/inspector.h"
+#include "ui/logic_overlay.h"
+#include "ui/logic_panels.h"
 #include "ui/outliner.h"
 #include "ui/panel_context.h"
 #include "ui/place_palette.h"
-#include "ui/playtest.h"
+#include "ui/playtest_launcher.h"
 #include "ui/prefab_palette.h"
+#include "ui/prefab_prompt.h"
 #include "ui/render_target.h"
 #include "ui/sound_widgets.h"
 #include "ui/ui_spots.h"
@@ -48,7 +54,6 @@
 #include <vector>
 
 struct ImDrawList;
-struct GLFWcursor;
 
 namespace ks::editor::ui {
 
@@ -96,14 +101,6 @@ struct Overlays {
     bool links = true;     // arrows for the links between entities (the selection's bright and labelled)
 };
 
-// Pick mode (link_pick.cpp): what the next click on an entity in the viewport is for.
-enum class PickPurpose { LinkTarget, KillName };
-struct PickRequest {
-    PickPurpose purpose = PickPurpose::LinkTarget;
-    LinkOwner owner; // LinkTarget: whose link
-    int index = 0;   // LinkTarget: the link; KillName: the objective
-};
-
 // What the next viewport click places: an entity type from the palette or a prefab from the Prefabs tab.
 struct PlaceTool {
     std::optional<level::EntityType> type;
@@ -112,9 +109,6 @@ struct PlaceTool {
     void reset() { type.reset(), prefab.clear(); }
     std::string label() const { return type ? std::string(level::type_name(*type)) : "prefab " + prefab; }
 };
-
-// A question the user must answer before an action goes on (unsaved changes, overwrite, recovery).
-enum class PendingAction { None, New, Open, OpenRecent, Quit };
 
 // Owns the panels (each with its own state, working through a PanelContext), arranges them in the fixed
 // layout and runs the frame; it is also the WindowServices the panels may call.
@@ -145,20 +139,13 @@ class EditorApp final : private WindowServices {
 
     // structure_ui.cpp: groups and prefabs from the viewport, the keys and the Edit menu
     void structure_menu_items(); // the Edit menu's group, prefab and layer items
-    void open_prefab_prompt();
-    void prefab_prompt();
-    void draw_open_group_box(); // render pass: the entered group's bounds
+    void draw_open_group_box();  // render pass: the entered group's bounds
     void open_group_hint(ImDrawList* draw, Vec2 origin, Vec2 size, bool pane) const; // "Inside group"
 
     // editor_app.cpp: menus and files
     void menu_bar();
+    // The dojo's unsaved clip edits are asked about before a Quit goes on to files_.
     void request(PendingAction action, std::filesystem::path path = {});
-    void perform(PendingAction action);
-    void save(bool save_as);
-    void modal_prompts();
-    void open_campaign_prompt(); // campaign_prompt.cpp: File > Add to Campaign...
-    void campaign_prompt();
-    void open_file(const std::filesystem::path& path);
     void report(const Result<void>& result, const char* what) { log_.report(result, what); }
 
     // viewport.cpp
@@ -170,10 +157,6 @@ class EditorApp final : private WindowServices {
     void draw_navmesh();
     void draw_sound_emitter(const level::Entity& e, bool selected);
     void draw_axis_grid(ImDrawList* draw, Vec2 origin) const;
-    // logic_overlay.cpp: logic entity markers (render pass), trigger fills and link arrows (ImGui pass)
-    void draw_logic_marker(const level::Entity& e, bool selected);
-    void update_link_arrows();
-    void logic_overlay(ImDrawList* draw, Vec2 origin);
     void viewport_input(Vec2 origin, bool hovered);
     int pick(const geometry::Ray& ray) const;
     bool shown(const level::Entity& e) const; // not hidden, and not a ceiling while ceilings are off
@@ -183,7 +166,6 @@ class EditorApp final : private WindowServices {
     const ViewCamera& viewport_camera() const override { return view_; }
     void set_view(ViewMode mode);
     void level_box(Vec3& lo, Vec3& hi) const; // every entity's bounds (±20 around 0 for an empty level)
-    void play_test(bool from_camera);
 
     // viewport_panes.cpp: the 4-up view (view/quad_view.h) and the render pass of the level's views
     void render_level_views(int width, int height);
@@ -195,16 +177,7 @@ class EditorApp final : private WindowServices {
     void sync_active_pane(); // view_ is the active pane's camera between frames: write it back
     void panes_status(nlohmann::json& status) const;
 
-    // analysis_panel.cpp: Play > Analyze and the Play-test report panel
-    void analysis_panel(float x, float y, float w, float h);
-    void start_analysis();
-    void analysis_status(nlohmann::json& status) const;
     GizmoFrame gizmo_frame() const; // the selection's pivot and the rings' axes in the gizmo's space
-
-    // clip_preview_overlay.cpp: a dojo clip played on the selected level robot
-    int preview_robot() const; // the primary selection when it is a robot, else 0
-    void pose_preview_robot(double dt);
-    void clip_preview_overlay(Vec2 origin, Vec2 size);
 
     // player_start_ui.cpp: the player start's figure over the level
     void draw_player_start();
@@ -214,32 +187,12 @@ class EditorApp final : private WindowServices {
     PanelContext context();
     void viewport_toolbar();
 
-    // link_list.cpp: the inspector's Links tab, the selected entity's links and those acting on it
-    void links_tab() override;
-
-    // link_list.cpp: the link-list widget; `spot` names its widgets in the status file ("link0.event")
-    void link_list(const LinkOwner& owner, const std::string& spot) override;
-    bool link_row(const LinkOwner& owner, int index, const std::vector<std::string>& events,
-                  const std::string& spot); // false: the list changed
-    // The link's target (an entity is named first if it needs a name) and an action it takes: one step.
-    Result<void> apply_link_target(const LinkOwner& owner, int index, const TargetOption& option);
-    bool target_widgets(const LinkOwner& owner, int index, const level::Link& link, float width,
-                        const std::string& spot); // true: the target changed
-    // The level checks' findings, redone at the start of a frame after a change: the pointers the widgets
-    // take into logic_problems_ stay valid for the whole frame.
-    void refresh_logic_problems();
-
-    // link_pick.cpp
-    void begin_pick(PickRequest request);
-    void end_pick();
-    void pick_click(int entity_id);
-    void pick_hint(ImDrawList* draw, Vec2 origin);
-
-    // objectives_panel.cpp
-    void objectives_tab() override;
-    bool objective_item(int index); // false: the list changed
-    bool kill_list(int index, const level::Objective& objective, const std::string& path);
-    Result<void> add_kill_name(int objective, int entity_id); // naming the entity if needed: one step
+    // WindowServices: the logic widgets live in logic_ (logic_panels.h)
+    void links_tab() override { logic_.links_tab(); }
+    void link_list(const LinkOwner& owner, const std::string& spot) override {
+        logic_.link_list(owner, spot);
+    }
+    void objectives_tab() override { logic_.objectives_tab(); }
 
     shell::AppShell& shell_;
     AppOptions options_;
@@ -297,54 +250,27 @@ class EditorApp final : private WindowServices {
     LogPanel log_panel_;
     LeftTab start_tab_ = LeftTab::Outliner;      // Layers, Prefabs: brought to the front on the next frame
     LeftTab shown_left_tab_ = LeftTab::Outliner; // the status file reports it
-    bool ask_prefab_ = false;
-    bool prefab_prompt_open_ = false; // status file
-    char prefab_name_[80] = {};
-    char prefab_title_[128] = {};
-    std::string prefab_error_;
-    std::vector<MarkerLine> marker_lines_;  // a marker's or an arrow's lines, reused every frame
-    std::vector<LinkArrow> link_arrows_;    // cached until the level, the selection or what is shown changes
-    std::vector<std::string> arrow_labels_; // each arrow's labels, one per line
-    std::uint64_t arrows_key_ = ~0ull;
-    std::vector<int> arrows_selection_;
+    PrefabPrompt prefab_prompt_;                 // Edit > Save selection as prefab...
+    std::vector<MarkerLine> marker_lines_;       // a sound emitter's or the player start's lines, reused
+    LogicOverlay logic_overlay_;                 // trigger, spawner and message markers; link arrows
     bool dojo_tab_ = false;
     std::unique_ptr<DojoPanel> dojo_;
     bool dojo_quit_confirmed_ = false; // the dojo's unsaved clip edits were saved or dropped for quitting
-    bool clip_preview_ = false;        // "Preview clip" on the selected robot
-    int posed_robot_ = 0;              // the robot the level scene draws in the dojo's pose (0: none)
-    Vec2 preview_toggle_{0.0f};        // the "Preview clip" check box's centre (status file; 0 when hidden)
+    ClipPreview clip_preview_;         // a dojo clip played on the selected level robot
     std::array<Vec2, 2> menu_spots_{}; // status: the File menu's title and its Quit item (while open)
 
     // level logic
     float palette_height_ = 1e4f; // the place palette's height when last drawn in full
-    std::optional<PickRequest> pick_;
-    std::string pick_message_; // the hint over the viewport while picking
-    GLFWcursor* crosshair_ = nullptr;
-    std::vector<LogicProblem> logic_problems_;
-    std::uint64_t problems_revision_ = ~0ull;
-    UiSpots spots_; // --status-file: where the logic widgets were drawn this frame
+    UiSpots spots_;               // --status-file: where the logic widgets were drawn this frame
+    LogicPanels logic_{editor_, log_, spots_, shell_.window()}; // Links and Objectives tabs, pick mode
 
-    // prompts
-    PendingAction pending_ = PendingAction::None;
-    std::filesystem::path pending_path_;
-    bool ask_unsaved_ = false;
-    bool ask_path_ = false;
-    bool path_for_save_ = false;
-    bool ask_overwrite_ = false;
-    char path_input_[512] = {};
-    bool ask_campaign_ = false;
-    char campaign_input_[512] = {};
-    char campaign_title_[256] = {};
-    bool quit_ = false;
+    FilePrompts files_{editor_, log_, recent_, [this] { set_view(ViewMode::Perspective); }};
     AboutBox about_; // Help > About
     bool close_requested_ = false;
     std::string last_title_;
 
-    PlayTest play_;
+    PlayTestLauncher play_{log_, options_.executable_dir}; // Play from start / from camera
     AnalysisView analysis_{[this](const std::string& line, bool error) { log_line(line, error); }};
-    std::filesystem::path play_file_;
-    std::vector<std::string> play_command_; // the last play-test's runtime and arguments
-    std::optional<int> play_exit_code_;     // the last play-test's exit code, once it ended
 
     // --status-file
     std::uint64_t frame_ = 0;

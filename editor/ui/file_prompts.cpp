@@ -1,9 +1,8 @@
 // New, Open, Save and Quit, and the questions they ask first (unsaved changes, a path, overwriting,
 // recovering an autosave).
+#include "ui/file_prompts.h"
 #include "core/paths.h"
 #include "model/edit_files.h"
-#include "ui/dojo_panel.h"
-#include "ui/editor_app.h"
 
 #include <imgui.h>
 
@@ -21,12 +20,7 @@ fs::path new_level_folder() {
 }
 } // namespace
 
-void EditorApp::request(PendingAction action, fs::path path) {
-    if (action == PendingAction::Quit && dojo_->dirty() && !dojo_quit_confirmed_) {
-        dojo_->ask_before_quit(); // the clip file first; its answer comes back through modal_prompts
-        return;
-    }
-    dojo_quit_confirmed_ = false; // a confirmation counts for this one request
+void FilePrompts::request(PendingAction action, fs::path path) {
     pending_ = action;
     pending_path_ = std::move(path);
     if (editor_.has_unsaved_changes())
@@ -35,7 +29,7 @@ void EditorApp::request(PendingAction action, fs::path path) {
         perform(action);
 }
 
-void EditorApp::perform(PendingAction action) {
+void FilePrompts::perform(PendingAction action) {
     switch (action) {
     case PendingAction::New:
         new_document(editor_);
@@ -60,7 +54,7 @@ void EditorApp::perform(PendingAction action) {
     pending_ = PendingAction::None;
 }
 
-void EditorApp::open_file(const fs::path& path) {
+void FilePrompts::open_file(const fs::path& path) {
     if (auto r = open(editor_, path); !r) {
         log_line(r.error().str(), true);
         if (!fs::exists(path)) recent_.remove(path);
@@ -68,10 +62,10 @@ void EditorApp::open_file(const fs::path& path) {
     }
     log_line("opened " + path.string());
     if (editor_.recovery_offer()) log_line("an autosave newer than the file exists: recover it?");
-    set_view(ViewMode::Perspective);
+    if (opened_) opened_();
 }
 
-void EditorApp::save(bool save_as) {
+void FilePrompts::save(bool save_as) {
     if (save_as || editor_.file_path().empty()) {
         path_for_save_ = true;
         ask_path_ = true;
@@ -92,7 +86,7 @@ void EditorApp::save(bool save_as) {
              r->draft);
 }
 
-void EditorApp::modal_prompts() {
+void FilePrompts::draw() {
     if (ask_unsaved_) ImGui::OpenPopup("Unsaved changes");
     if (ask_path_) ImGui::OpenPopup(path_for_save_ ? "Save level as" : "Open level");
     if (ask_overwrite_) ImGui::OpenPopup("Overwrite?");
@@ -210,6 +204,7 @@ void EditorApp::modal_prompts() {
         if (!offer) ImGui::CloseCurrentPopup();
         ImGui::EndPopup();
     }
+    campaign_prompt();
 }
 
 } // namespace ks::editor::ui

@@ -7,7 +7,7 @@
 #include "jsonio/json_path.h"
 #include "model/edit_logic.h"
 #include "model/edit_selection.h"
-#include "ui/editor_app.h"
+#include "ui/logic_panels.h"
 #include "ui/panel_style.h"
 #include "ui/problem_lines.h"
 #include "view/link_options.h"
@@ -48,13 +48,13 @@ std::string owner_key(const LinkOwner& owner) {
 
 } // namespace
 
-void EditorApp::refresh_logic_problems() {
+void LogicPanels::refresh_problems() {
     if (problems_revision_ == editor_.revision()) return;
     logic_problems_ = logic_problems(editor_.level());
     problems_revision_ = editor_.revision();
 }
 
-Result<void> EditorApp::apply_link_target(const LinkOwner& owner, int index, const TargetOption& option) {
+Result<void> LogicPanels::apply_link_target(const LinkOwner& owner, int index, const TargetOption& option) {
     editor_.begin_transaction("Set link target"); // naming the entity and the link's target: one step
     std::string target = option.target;
     if (option.kind == level::TargetKind::Entity) {
@@ -85,8 +85,8 @@ Result<void> EditorApp::apply_link_target(const LinkOwner& owner, int index, con
 }
 
 // The target combo and its Pick button; true when the target changed (the list changed under the caller).
-bool EditorApp::target_widgets(const LinkOwner& owner, int index, const level::Link& link, float width,
-                               const std::string& spot) {
+bool LogicPanels::target_widgets(const LinkOwner& owner, int index, const level::Link& link, float width,
+                                 const std::string& spot) {
     const level::Level& level = editor_.level();
     const level::TargetKind kind = link_target_kind(level, link);
     const bool picking =
@@ -119,8 +119,8 @@ bool EditorApp::target_widgets(const LinkOwner& owner, int index, const level::L
     return changed;
 }
 
-bool EditorApp::link_row(const LinkOwner& owner, int index, const std::vector<std::string>& events,
-                         const std::string& spot) {
+bool LogicPanels::link_row(const LinkOwner& owner, int index, const std::vector<std::string>& events,
+                           const std::string& spot) {
     const level::Level& level = editor_.level();
     level::Link link =
         (*links_of(editor_, owner))[static_cast<size_t>(index)]; // a copy: edits change the list
@@ -201,7 +201,7 @@ bool EditorApp::link_row(const LinkOwner& owner, int index, const std::vector<st
     return !changed;
 }
 
-void EditorApp::link_list(const LinkOwner& owner, const std::string& spot) {
+void LogicPanels::link_list(const LinkOwner& owner, const std::string& spot) {
     const std::vector<level::Link>* links = links_of(editor_, owner);
     if (!links) return;
     const level::Level& level = editor_.level();
@@ -235,7 +235,7 @@ void EditorApp::link_list(const LinkOwner& owner, const std::string& spot) {
 
 // The Links tab: the selected entity's links (what its events set off) and the links that act on it; with
 // nothing selected, the level's own (on_start).
-void EditorApp::links_tab() {
+void LogicPanels::links_tab() {
     const auto selected = selected_entities(editor_);
     if (selected.size() > 1) {
         ImGui::TextWrapped("%zu selected: select one entity to wire its links.", selected.size());

@@ -2,8 +2,10 @@
 // in the viewport the link's target (naming the entity if it has no name) or a name to kill, in one undo
 // step. Esc or a right click cancels; a click on something that cannot be the target says why and leaves
 // everything as it was, still picking. The cursor is a crosshair meanwhile.
-#include "ui/editor_app.h"
+#include "ui/logic_panels.h"
 #include "view/link_options.h"
+
+#include <nlohmann/json.hpp>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -11,25 +13,29 @@
 
 namespace ks::editor::ui {
 
-void EditorApp::begin_pick(PickRequest request) {
-    pick_ = std::move(request);
-    placing_.reset();
+LogicPanels::~LogicPanels() {
+    if (crosshair_) glfwDestroyCursor(crosshair_);
+}
+
+void LogicPanels::begin_pick(PickRequest request) {
+    pick_ = std::move(request); // the window stops placing while picking (EditorApp::build_ui)
     pick_message_ = pick_->purpose == PickPurpose::LinkTarget
                         ? "Click the link's target in the viewport  (Esc or right click: cancel)"
                         : "Click a robot or spawner to kill in the viewport  (Esc or right click: cancel)";
     if (!crosshair_) crosshair_ = glfwCreateStandardCursor(GLFW_CROSSHAIR_CURSOR);
     ImGui::GetIO().ConfigFlags |= ImGuiConfigFlags_NoMouseCursorChange; // ImGui's backend leaves ours alone
-    if (crosshair_) glfwSetCursor(shell_.window(), crosshair_);
+    if (crosshair_) glfwSetCursor(window_, crosshair_);
 }
 
-void EditorApp::end_pick() {
+void LogicPanels::end_pick() {
+    if (!pick_) return;
     pick_.reset();
     pick_message_.clear();
     ImGui::GetIO().ConfigFlags &= ~ImGuiConfigFlags_NoMouseCursorChange;
-    glfwSetCursor(shell_.window(), nullptr);
+    glfwSetCursor(window_, nullptr);
 }
 
-void EditorApp::pick_click(int entity_id) {
+void LogicPanels::pick_click(int entity_id) {
     if (!pick_) return;
     const level::Level& level = editor_.level();
     if (entity_id == 0) {
@@ -59,14 +65,22 @@ void EditorApp::pick_click(int entity_id) {
 
 // While picking: the hint over the viewport and the crosshair (set again each frame: leaving the window
 // and coming back resets the cursor).
-void EditorApp::pick_hint(ImDrawList* draw, Vec2 origin) {
+void LogicPanels::pick_hint(ImDrawList* draw, Vec2 origin) {
     if (!pick_) return;
-    if (crosshair_) glfwSetCursor(shell_.window(), crosshair_);
+    if (crosshair_) glfwSetCursor(window_, crosshair_);
     const ImVec2 at(origin.x + 12, origin.y + 8);
     const ImVec2 extent = ImGui::CalcTextSize(pick_message_.c_str());
     draw->AddRectFilled(ImVec2(at.x - 4, at.y - 2), ImVec2(at.x + extent.x + 4, at.y + extent.y + 2),
                         IM_COL32(15, 17, 22, 200), 4.0f);
     draw->AddText(at, IM_COL32(255, 210, 90, 255), pick_message_.c_str());
+}
+
+void LogicPanels::pick_status(nlohmann::json& s) const {
+    s["pick"] = {{"active", pick_.has_value()},
+                 {"purpose", !pick_                                      ? ""
+                             : pick_->purpose == PickPurpose::LinkTarget ? "link_target"
+                                                                         : "kill"},
+                 {"message", pick_message_}};
 }
 
 } // namespace ks::editor::ui

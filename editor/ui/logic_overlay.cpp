@@ -2,9 +2,9 @@
 // filled faintly; a spawner's ring and post; a message's speech bubble) and the link arrows between
 // entities (view/link_arrows.h): faint for every link, bright with their labels for the selection's outgoing
 // links, a second colour for its incoming ones. Links to objectives and the level are in the inspector.
+#include "ui/logic_overlay.h"
 #include "level/entity_shapes.h"
-#include "ui/editor_app.h"
-#include "view/logic_markers.h"
+#include "model/bounds.h"
 
 #include <imgui.h>
 
@@ -35,7 +35,8 @@ ImU32 to_imgui(const Vec4& c, float alpha) {
 }
 } // namespace
 
-void EditorApp::draw_logic_marker(const level::Entity& e, bool selected) {
+void LogicOverlay::draw_marker(render::DebugDraw& debug, const ViewCamera& view, const level::Entity& e,
+                               bool selected) {
     const float alpha = selected ? 1.0f : 0.8f;
     marker_lines_.clear();
     Vec4 colour(1.0f);
@@ -45,7 +46,7 @@ void EditorApp::draw_logic_marker(const level::Entity& e, bool selected) {
         const geometry::Obb box = entity_obb(e);
         Mat4 m(box.axes);
         m[3] = Vec4(box.center, 1.0f);
-        debug_.box(m, box.half, Vec4(Vec3(colour), alpha));
+        debug.box(m, box.half, Vec4(Vec3(colour), alpha));
         return; // the faces are filled on screen (logic_overlay)
     }
     case level::EntityType::Spawner:
@@ -54,22 +55,21 @@ void EditorApp::draw_logic_marker(const level::Entity& e, bool selected) {
         break;
     case level::EntityType::Message:
         colour = kMessageMarker;
-        message_marker(e.position + Vec3(0, level::kLogicMarkerHalfSize, 0), view_.camera.right(),
-                       view_.camera.up(), level::kLogicMarkerHalfSize, marker_lines_);
+        message_marker(e.position + Vec3(0, level::kLogicMarkerHalfSize, 0), view.camera.right(),
+                       view.camera.up(), level::kLogicMarkerHalfSize, marker_lines_);
         break;
     default:
         return;
     }
-    for (const MarkerLine& line : marker_lines_) debug_.line(line.a, line.b, Vec4(Vec3(colour), alpha));
+    for (const MarkerLine& line : marker_lines_) debug.line(line.a, line.b, Vec4(Vec3(colour), alpha));
 }
 
-void EditorApp::update_link_arrows() {
-    const Document& doc = editor_.doc();
-    const std::uint64_t key = editor_.revision() ^ (static_cast<std::uint64_t>(doc.hidden.size()) << 48) ^
-                              (static_cast<std::uint64_t>(overlays_.ceilings) << 63);
+void LogicOverlay::update_link_arrows(const Editor& editor, bool ceilings, const Shown& shown) {
+    const Document& doc = editor.doc();
+    const std::uint64_t key = editor.revision() ^ (static_cast<std::uint64_t>(doc.hidden.size()) << 48) ^
+                              (static_cast<std::uint64_t>(ceilings) << 63);
     if (key == arrows_key_ && doc.selection == arrows_selection_) return;
-    link_arrows_ =
-        link_arrows(editor_.level(), doc.selection, [this](const level::Entity& e) { return shown(e); });
+    link_arrows_ = link_arrows(editor.level(), doc.selection, shown);
     arrow_labels_.clear();
     for (const LinkArrow& arrow : link_arrows_) {
         std::string text;
@@ -80,26 +80,27 @@ void EditorApp::update_link_arrows() {
     arrows_selection_ = doc.selection;
 }
 
-void EditorApp::logic_overlay(ImDrawList* draw, Vec2 origin) {
-    const Vec2 size = view_.viewport();
+void LogicOverlay::draw(ImDrawList* draw, Vec2 origin, const ViewCamera& view, const Editor& editor,
+                        bool links, bool ceilings, const Shown& shown) {
+    const Vec2 size = view.viewport();
     draw->PushClipRect(ImVec2(origin.x, origin.y), ImVec2(origin.x + size.x, origin.y + size.y), true);
     auto screen = [&](const Vec3& p, ImVec2& out) {
         Vec2 s;
-        if (!view_.project(p, s)) return false;
+        if (!view.project(p, s)) return false;
         out = ImVec2(origin.x + s.x, origin.y + s.y);
         return true;
     };
     // Trigger boxes: the faces toward the camera, filled faintly over the picture.
-    for (const auto& e : editor_.level().entities) {
+    for (const auto& e : editor.level().entities) {
         if (e.type() != level::EntityType::Trigger || !shown(e)) continue;
         const geometry::Obb box = entity_obb(e);
         const auto faces = box_faces(box);
         const ImU32 fill = to_imgui(trigger_colour(e.as<level::TriggerProps>()),
-                                    editor_.doc().is_selected(e.id) ? 0.16f : 0.09f);
+                                    editor.doc().is_selected(e.id) ? 0.16f : 0.09f);
         for (size_t f = 0; f < faces.size(); ++f) {
             const Vec3 normal = box.axes[static_cast<int>(f / 2)] * (f % 2 == 0 ? -1.0f : 1.0f);
             const Vec3 face_centre = (faces[f][0] + faces[f][2]) * 0.5f;
-            const Vec3 toward = view_.orthographic() ? -view_.forward() : view_.camera.position - face_centre;
+            const Vec3 toward = view.orthographic() ? -view.forward() : view.camera.position - face_centre;
             if (glm::dot(normal, toward) <= 0.0f) continue;
             ImVec2 q[4];
             if (!screen(faces[f][0], q[0]) || !screen(faces[f][1], q[1]) || !screen(faces[f][2], q[2]) ||
@@ -108,8 +109,8 @@ void EditorApp::logic_overlay(ImDrawList* draw, Vec2 origin) {
             draw->AddQuadFilled(q[0], q[1], q[2], q[3], fill);
         }
     }
-    if (overlays_.links) {
-        update_link_arrows();
+    if (links) {
+        update_link_arrows(editor, ceilings, shown);
         for (int pass = 0; pass < 2; ++pass) // the faint ones first, the selection's over them
             for (const LinkArrow& arrow : link_arrows_) {
                 const bool bright = arrow.role != ArrowRole::Other;

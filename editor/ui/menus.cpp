@@ -31,9 +31,9 @@ void EditorApp::menu_bar() {
                 if (ImGui::MenuItem(entry.string().c_str())) request(PendingAction::OpenRecent, entry);
             ImGui::EndMenu();
         }
-        if (ImGui::MenuItem("Save", "Ctrl+S")) save(false);
-        if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) save(true);
-        if (ImGui::MenuItem("Add to Campaign...")) open_campaign_prompt();
+        if (ImGui::MenuItem("Save", "Ctrl+S")) files_.save(false);
+        if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) files_.save(true);
+        if (ImGui::MenuItem("Add to Campaign...")) files_.open_campaign_prompt();
         ImGui::Separator();
         if (ImGui::MenuItem("Quit")) request(PendingAction::Quit);
         menu_spots_[1] = item_centre();
@@ -107,12 +107,14 @@ void EditorApp::menu_bar() {
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Play")) {
-        if (ImGui::MenuItem("Play from start", "F5", false, !play_.running())) play_test(false);
-        if (ImGui::MenuItem("Play from camera", "Shift+F5", false, !play_.running())) play_test(true);
+        if (ImGui::MenuItem("Play from start", "F5", false, !play_.running()))
+            play_.start(editor_.level(), nullptr);
+        if (ImGui::MenuItem("Play from camera", "Shift+F5", false, !play_.running()))
+            play_.start(editor_.level(), &view_);
         if (ImGui::MenuItem("Stop", nullptr, false, play_.running())) play_.stop();
         ImGui::Separator();
         if (ImGui::MenuItem("Analyze (bot play-tests)", nullptr, false, !analysis_.running()))
-            start_analysis();
+            analysis_.start(editor_.level(), editor_.file_path());
         if (ImGui::MenuItem("Cancel analysis", nullptr, false, analysis_.running())) analysis_.cancel();
         ImGui::MenuItem("Show play-test report", nullptr, &analysis_.overlay, analysis_.report() != nullptr);
         ImGui::EndMenu();
@@ -123,7 +125,7 @@ void EditorApp::menu_bar() {
     spots_.here("tab.level");
     if (ImGui::RadioButton("Dojo", dojo_tab_)) {
         dojo_tab_ = true;
-        if (pick_) end_pick(); // the level's viewport, where the pick would land, is gone
+        logic_.end_pick(); // the level's viewport, where the pick would land, is gone
     }
     spots_.here("tab.dojo");
     ImGui::Separator();

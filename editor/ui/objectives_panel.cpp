@@ -4,7 +4,7 @@
 // change is one undo step; problems the level checks find are shown under what they are about.
 #include "jsonio/json_path.h"
 #include "model/edit_logic.h"
-#include "ui/editor_app.h"
+#include "ui/logic_panels.h"
 #include "ui/problem_lines.h"
 #include "view/link_options.h"
 
@@ -37,7 +37,7 @@ std::optional<std::string> text_field(const char* label, const std::string& valu
 }
 } // namespace
 
-Result<void> EditorApp::add_kill_name(int objective, int entity_id) {
+Result<void> LogicPanels::add_kill_name(int objective, int entity_id) {
     editor_.begin_transaction("Add to kill list"); // naming the robot and listing it: one step
     auto named = ensure_link_name(editor_, entity_id);
     const auto& objectives = editor_.level().objectives;
@@ -57,7 +57,7 @@ Result<void> EditorApp::add_kill_name(int objective, int entity_id) {
     return ok();
 }
 
-bool EditorApp::kill_list(int index, const level::Objective& objective, const std::string& path) {
+bool LogicPanels::kill_list(int index, const level::Objective& objective, const std::string& path) {
     ImGui::TextDisabled("Kill:");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("All of these dead completes it (a spawner: all its robots)");
@@ -104,7 +104,7 @@ bool EditorApp::kill_list(int index, const level::Objective& objective, const st
     return !changed;
 }
 
-bool EditorApp::objective_item(int index) {
+bool LogicPanels::objective_item(int index) {
     const level::Objective objective = editor_.level().objectives[static_cast<size_t>(index)]; // a copy
     const std::string path = jsonio::element_path("objectives", static_cast<size_t>(index));
     const std::string spot = "objective" + std::to_string(index);
@@ -171,7 +171,7 @@ bool EditorApp::objective_item(int index) {
     return editor_.level().objectives.size() == static_cast<size_t>(count);
 }
 
-void EditorApp::objectives_tab() {
+void LogicPanels::objectives_tab() {
     ImGui::TextDisabled("HUD order; all complete wins (?)");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("An objective completes when a link does 'complete' to it, or when everything on\n"

@@ -70,7 +70,7 @@ void EditorApp::outliner_panel(float x, float y, float w, float h) {
         palette_height_ = ImGui::GetCursorPosY();
         ImGui::EndChild();
         if (type) {
-            if (pick_) end_pick(); // placing takes the viewport's clicks
+            logic_.end_pick(); // placing takes the viewport's clicks
             placing_.reset();
             placing_.type = *type;
         }
@@ -102,7 +102,7 @@ void EditorApp::outliner_panel(float x, float y, float w, float h) {
     if (prefabs) {
         shown_left_tab_ = LeftTab::Prefabs;
         if (const auto name = prefabs_.draw(ctx, placing_.prefab)) {
-            if (pick_) end_pick(); // placing takes the viewport's clicks
+            logic_.end_pick(); // placing takes the viewport's clicks
             placing_.reset();
             placing_.prefab = *name;
         }

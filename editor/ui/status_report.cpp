@@ -90,16 +90,12 @@ void EditorApp::logic_status(nlohmann::json& s) const {
             {{"id", o.id}, {"text", o.text}, {"kill", o.kill}, {"links", links_json(o.links)}});
     s["objectives"] = objectives;
     s["level_links"] = links_json(editor_.level().links);
-    s["pick"] = {{"active", pick_.has_value()},
-                 {"purpose", !pick_                                      ? ""
-                             : pick_->purpose == PickPurpose::LinkTarget ? "link_target"
-                                                                         : "kill"},
-                 {"message", pick_message_}};
+    logic_.pick_status(s);
     json spots = json::object();
     for (const auto& [name, at] : spots_.all()) spots[name] = point(at);
     s["spots"] = spots;
     s["show_links"] = overlays_.links;
-    s["link_arrows"] = link_arrows_.size();
+    s["link_arrows"] = logic_overlay_.arrow_count();
 }
 
 // The player start (where it is, whether it is selected, its body's centre on screen), the gizmo's
@@ -156,11 +152,7 @@ void EditorApp::structure_status(nlohmann::json& s) const {
                            {"error", entry.prefab ? std::string() : entry.prefab.error().str()}});
     s["prefabs"] = prefabs;
     s["prefab_thumbnails"] = prefabs_.thumbnail_count();
-    s["prefab_prompt"] = {{"open", prefab_prompt_open_},
-                          {"name", std::string(prefab_name_)},
-                          {"problem", prefab_name_[0] ? prefab_name_problem(prefab_name_) : std::string()},
-                          {"exists", editor_.prefabs().find(prefab_name_) != nullptr},
-                          {"error", prefab_error_}};
+    prefab_prompt_.status(editor_, s);
     s["prefab_folders"] = json::array();
     for (const auto& folder : editor_.prefabs().folders()) s["prefab_folders"].push_back(folder.string());
 }
@@ -197,7 +189,9 @@ void EditorApp::write_status() {
     s["inspector_tab"] = inspector_tab_name(inspector_.shown_tab());
     s["menu"] = {{"file", point(menu_spots_[0])}, {"quit", point(menu_spots_[1])}};
     s["about"] = about_.status();
-    s["clip_preview"] = {{"on", clip_preview_}, {"robot", posed_robot_}, {"toggle", point(preview_toggle_)}};
+    s["clip_preview"] = {{"on", clip_preview_.on()},
+                         {"robot", clip_preview_.posed_robot()},
+                         {"toggle", point(clip_preview_.toggle_centre())}};
     if (dojo_) s["dojo"] = dojo_status(*dojo_);
     int wx = 0, wy = 0;
     glfwGetWindowPos(shell_.window(), &wx, &wy);
@@ -262,12 +256,8 @@ void EditorApp::write_status() {
     structure_status(s);
     logic_status(s);
     panes_status(s);
-    analysis_status(s);
-    json play;
-    play["running"] = play_.running();
-    play["command"] = play_command_;
-    play["exit_code"] = play_exit_code_ ? json(*play_exit_code_) : json(nullptr);
-    s["playtest"] = play;
+    analysis_.status(s);
+    play_.status(s);
     s["error_lines"] = log_.error_lines();
     s["last_error"] = log_.last_error();
     s["log_lines"] = log_.lines().size();

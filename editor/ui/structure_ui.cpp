@@ -1,7 +1,7 @@
 // Groups, layers and prefabs from the viewport, the keys and the Edit menu: Ctrl+G / Ctrl+Shift+G, a
 // double click entering a group and Esc leaving it, the entered group's outline and hint, the "Save
-// selection as prefab..." prompt and the "Move selection to layer" submenu. Every edit is an Editor call
-// (edit_groups.h, edit_layers.h, edit_prefabs.h).
+// selection as prefab..." menu item (its prompt: prefab_prompt.h) and the "Move selection to layer" submenu.
+// Every edit is an Editor call (edit_groups.h, edit_layers.h, edit_prefabs.h).
 #include "model/edit_groups.h"
 #include "model/edit_layers.h"
 #include "model/edit_prefabs.h"
@@ -20,7 +20,7 @@ void EditorApp::structure_menu_items() {
     if (ImGui::MenuItem("Ungroup", "Ctrl+Shift+G", false, !selected_groups(editor_).empty()))
         ungroup_selection(editor_, log_);
     if (ImGui::MenuItem("Leave group", "Esc", false, editor_.open_group() != 0)) leave_group(editor_, log_);
-    if (ImGui::MenuItem("Save selection as prefab...", nullptr, false, any)) open_prefab_prompt();
+    if (ImGui::MenuItem("Save selection as prefab...", nullptr, false, any)) prefab_prompt_.open(editor_);
     spots_.here("menu.save_prefab");
     const auto& layers = editor_.level().editor.layers;
     if (ImGui::BeginMenu("Move selection to layer", any)) {
@@ -38,61 +38,6 @@ void EditorApp::structure_menu_items() {
                 report(move_selection_to_layer(editor_, static_cast<int>(i)), "move to layer");
         ImGui::EndMenu();
     }
-}
-
-void EditorApp::open_prefab_prompt() {
-    if (editor_.doc().selection.empty()) return;
-    ask_prefab_ = true;
-    prefab_error_.clear();
-    prefab_name_[0] = prefab_title_[0] = '\0';
-}
-
-// Name (the file's stem, checked by the model as it is typed) and title; a name in use offers Replace.
-void EditorApp::prefab_prompt() {
-    if (ask_prefab_) {
-        ImGui::OpenPopup("Save selection as prefab");
-        ask_prefab_ = false;
-    }
-    ImGui::SetNextWindowSize(ImVec2(440, 0), ImGuiCond_Appearing);
-    prefab_prompt_open_ = false;
-    if (!ImGui::BeginPopupModal("Save selection as prefab", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
-        return;
-    prefab_prompt_open_ = true;
-    ImGui::TextWrapped("%zu entities become prefabs/NAME.json and a linked instance of it.",
-                       editor_.doc().selection.size());
-    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-    ImGui::SetNextItemWidth(300);
-    if (ImGui::InputTextWithHint("name", "a-z 0-9 _ -", prefab_name_, sizeof(prefab_name_)))
-        prefab_error_.clear();
-    spots_.here("prefab_prompt.name");
-    ImGui::SetNextItemWidth(300);
-    ImGui::InputTextWithHint("title", "shown in the Prefabs tab", prefab_title_, sizeof(prefab_title_));
-    spots_.here("prefab_prompt.title");
-    const std::string problem = prefab_name_problem(prefab_name_);
-    const bool exists = editor_.prefabs().find(prefab_name_) != nullptr;
-    if (prefab_name_[0] && !problem.empty())
-        ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", problem.c_str());
-    else if (exists)
-        ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "A prefab named %s exists: Replace rewrites it.",
-                           prefab_name_);
-    if (!prefab_error_.empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", prefab_error_.c_str());
-    auto save = [&](bool replace) {
-        auto saved = save_prefab(editor_, prefab_name_, prefab_title_, replace);
-        if (!saved) {
-            prefab_error_ = saved.error().str();
-            return;
-        }
-        log_line("saved prefab " + saved->string());
-        ImGui::CloseCurrentPopup();
-    };
-    ImGui::BeginDisabled(!problem.empty() || !prefab_name_[0]);
-    if (ImGui::Button(exists ? "Replace" : "Save", ImVec2(100, 0))) save(exists);
-    spots_.here("prefab_prompt.save");
-    ImGui::EndDisabled();
-    ImGui::SameLine();
-    if (ImGui::Button("Cancel", ImVec2(100, 0))) ImGui::CloseCurrentPopup();
-    spots_.here("prefab_prompt.cancel");
-    ImGui::EndPopup();
 }
 
 // The entered group's bounds, a thin box in every view, so the designer sees they are inside it.
@@ -119,7 +64,7 @@ void EditorApp::open_group_hint(ImDrawList* draw, Vec2 origin, Vec2 size, bool p
     // A 4-up pane is narrow: the group's name alone.
     const std::string text = pane ? "In " + group->name + " (Esc leaves)"
                                   : "Inside group " + group_label(*group) + "  -  Esc to leave";
-    const float top = pane ? 46.0f : (placing_ || pick_ ? 28.0f : 8.0f);
+    const float top = pane ? 46.0f : (placing_ || logic_.picking() ? 28.0f : 8.0f);
     const ImVec2 at(origin.x + 12, origin.y + top);
     const ImVec2 extent = ImGui::CalcTextSize(text.c_str());
     draw->PushClipRect(ImVec2(origin.x, origin.y), ImVec2(origin.x + size.x, origin.y + size.y), true);

@@ -1,11 +1,10 @@
 // The 3D viewport: the level drawn by the game's renderer into the panel's own target, overlays (grid,
 // selection, collision bounds, light ranges, robot radii, patrol routes, player start), the camera,
 // picking, box select, placing from the palette and the gizmo.
-#include "core/files.h"
-#include "level/level_io.h"
 #include "model/edit_entities.h"
 #include "model/edit_prefabs.h"
 #include "model/edit_selection.h"
+#include "ui/dojo_panel.h"
 #include "ui/editor_app.h"
 #include "ui/layout.h"
 #include "ui/structure_actions.h"
@@ -20,7 +19,6 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
-#include <unistd.h>
 
 namespace ks::editor::ui {
 namespace fs = std::filesystem;
@@ -197,7 +195,7 @@ void EditorApp::draw_overlays() {
         if (const auto* r = e.try_as<level::RobotProps>(); r && (selected || overlays_.patrols))
             patrol_route(debug_, r->patrol, selected);
         if (e.type() == level::EntityType::Sound) draw_sound_emitter(e, selected);
-        draw_logic_marker(e, selected);
+        logic_overlay_.draw_marker(debug_, view_, e, selected);
     }
     draw_player_start();
     if (placing_ && place_ray_) { // where a click would place (in every pane of the 4-up view)
@@ -320,34 +318,6 @@ void EditorApp::set_view(ViewMode mode) { // in the 4-up view: the active pane's
     frame_box(view_, mode, lo, hi);
 }
 
-void EditorApp::play_test(bool from_camera) {
-    if (play_.running()) {
-        log_line("a play-test is already running", true);
-        return;
-    }
-    play_file_ = fs::temp_directory_path() / ("killswitch-playtest-" + std::to_string(getpid()) + ".json");
-    if (auto r = files::write_atomic(play_file_, level::save_level_string(editor_.level())); !r) {
-        log_line("play-test: " + r.error().str(), true);
-        return;
-    }
-    std::optional<PlayStart> start;
-    if (from_camera) // feet three units under the eye, facing where the camera looks
-        start = PlayStart{view_.camera.position - Vec3(0, 3, 0),
-                          std::remainder(degrees(view_.camera.yaw), 360.0f)};
-    const fs::path runtime = playtest_runtime(options_.executable_dir);
-    const auto args = playtest_arguments(play_file_, start, query_runtime_options(runtime));
-    play_exit_code_.reset();
-    if (auto r = play_.start(runtime, args); !r) {
-        log_line("play-test: " + r.error().str(), true);
-        return;
-    }
-    play_command_ = {runtime.string()};
-    play_command_.insert(play_command_.end(), args.begin(), args.end());
-    std::string line = "play-test:";
-    for (const auto& a : play_command_) line += " " + a;
-    log_line(line);
-}
-
 void EditorApp::viewport_panel(float x, float y, float w, float h) {
     ImGui::SetNextWindowPos(ImVec2(x, y));
     ImGui::SetNextWindowSize(ImVec2(w, h));
@@ -387,8 +357,9 @@ void EditorApp::viewport_panel(float x, float y, float w, float h) {
                         ImVec2(under.x + span.x - 6, under.y + span.y - 4), IM_COL32(15, 17, 22, 170), 4.0f);
     draw->AddText(ImVec2(under.x + 12, under.y + span.y - 23), IM_COL32(225, 230, 240, 255), text);
     draw->PopClipRect();
-    clip_preview_overlay(Vec2(origin.x, origin.y), area); // the selection's, not a pane's: across the bottom
-    pick_hint(draw, viewport_origin_);
+    clip_preview_.draw(editor_, *dojo_, Vec2(origin.x, origin.y),
+                       area); // the selection's, not a pane's: across the bottom
+    logic_.pick_hint(draw, viewport_origin_);
     if (!quad_.on) open_group_hint(draw, viewport_origin_, viewport_size_, false);
     if (placing_) {
         const std::string hint = "Click to place " + placing_.label() + "  (Shift: several, Esc: stop)";
@@ -421,7 +392,8 @@ void EditorApp::pane_overlays(ImDrawList* draw, Vec2 origin, bool active) {
     const Vec2 size = view_.viewport();
     draw->PushClipRect(ImVec2(origin.x, origin.y), ImVec2(origin.x + size.x, origin.y + size.y), true);
     if (overlays_.grid && view_.orthographic()) draw_axis_grid(draw, origin);
-    logic_overlay(draw, origin);
+    logic_overlay_.draw(draw, origin, view_, editor_, overlays_.links, overlays_.ceilings,
+                        [this](const level::Entity& e) { return shown(e); });
     analysis_.draw(draw, view_, origin);
     if (!editor_.doc().selection.empty() && !placing_)
         draw_gizmo(draw, gizmo_, view_, origin, gizmo_frame(), active ? hovered_handle_ : Handle::None);
@@ -457,12 +429,13 @@ void EditorApp::viewport_input(Vec2 origin, bool hovered) {
                             hovered && !gizmo_.dragging() && !patrol_drag_.dragging() && !box_selecting_,
                             mouse, hovered ? wheel_ : 0.0f),
             io.DeltaTime);
-    if (pick_ && hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Right) &&
+    if (logic_.picking() && hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Right) &&
         io.MouseDragMaxDistanceSqr[1] < 16.0f)
-        end_pick(); // a right click (not a fly drag) cancels picking
+        logic_.end_pick(); // a right click (not a fly drag) cancels picking
     if (flying_) return;
-    if (pick_) { // the next left click picks; nothing else happens meanwhile
-        if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) pick_click(pick(view_.ray(mouse)));
+    if (logic_.picking()) { // the next left click picks; nothing else happens meanwhile
+        if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left))
+            logic_.pick_click(pick(view_.ray(mouse)));
         hovered_handle_ = Handle::None;
         return;
     }
