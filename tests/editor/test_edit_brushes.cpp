@@ -171,7 +171,7 @@ expect count brush 8
     Editor fresh;
     auto bad = run_script_text("brush ramp 0,0,0 4,4,4 up +y\n", "bad.kss", {}, fresh);
     REQUIRE_FALSE(bad.ok());
-    CHECK(bad.error().str().find("bad.kss:1:25: expected the high side") != std::string::npos);
+    CHECK(bad.error().str().find("bad.kss:1:27: expected the high side") != std::string::npos);
     auto few = run_script_text("brush extrude y 0 4 0,0 1,0\n", "few.kss", {}, fresh);
     REQUIRE_FALSE(few.ok());
     CHECK(few.error().str().find("at least 3 points") != std::string::npos);
