@@ -155,6 +155,19 @@ TEST_CASE("dojo.json loads cleanly, matches the reference and re-saves byte-iden
 }
 
 TEST_CASE(
+    "archive.json loads with no error or warning and re-saves byte-identically; its walls are brushes") {
+    // Built by the editor from levels/source/archive.kss (tests/editor/test_archive_script.cpp rebuilds it).
+    const Level level = load_clean("archive.json");
+    CHECK(save_level_string(level) == ks::test::read_file(shipped("archive.json")));
+    CHECK(level.name == "The Archive");
+    auto counts = count_types(level);
+    CHECK(counts[EntityType::Brush] >= 15);
+    CHECK(counts[EntityType::ControlPanel] == 1);
+    CHECK(counts[EntityType::Robot] >= 1);
+    CHECK(level.objectives.size() == 2);
+}
+
+TEST_CASE(
     "lockdown.json loads with no error or warning (format and logic checks) and re-saves byte-identically") {
     // Built by the editor from levels/source/lockdown.kss (tests/editor/test_lockdown_script.cpp rebuilds
     // it).
