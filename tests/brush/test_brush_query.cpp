@@ -14,7 +14,7 @@ using namespace ks::brush;
 
 namespace {
 
-Brush box(DVec3 min, DVec3 max) {
+Brush solid_box(DVec3 min, DVec3 max) {
     auto b = make_box(min, max);
     REQUIRE(b.ok());
     return *b;
@@ -32,7 +32,7 @@ Brush ramp(DVec3 offset = DVec3(0.0)) {
 } // namespace
 
 TEST_CASE("top_at: a box's top inside, nothing outside or on a vertical side") {
-    const Brush b = box({-2, 0, -2}, {2, 3, 2});
+    const Brush b = solid_box({-2, 0, -2}, {2, 3, 2});
     CHECK(top_at(b, 0, 0).value_or(-1) == doctest::Approx(3).epsilon(1e-15));
     CHECK(top_at(b, 1.999, -1.999).value_or(-1) == doctest::Approx(3));
     CHECK_FALSE(top_at(b, 2.5, 0).has_value());
@@ -59,7 +59,7 @@ TEST_CASE("top_at: a ramp rises linearly; a turned ramp too; exact far from the 
 }
 
 TEST_CASE("ray_entry: from outside, inside, missing, and parallel to a face") {
-    const Brush b = box({-1, -1, -1}, {1, 1, 1});
+    const Brush b = solid_box({-1, -1, -1}, {1, 1, 1});
     CHECK(ray_entry(b, {-5, 0, 0}, {1, 0, 0}).value_or(-1) == doctest::Approx(4));
     CHECK(ray_entry(b, {-5, 0, 0}, {2, 0, 0}).value_or(-1) == doctest::Approx(2)); // in direction's units
     CHECK(ray_entry(b, {0, 0, 0}, {0, 0, 1}).value_or(-1) == 0.0);
