@@ -53,4 +53,9 @@ std::optional<double> ray_entry(const Brush& brush, const DVec3& origin, const D
     return span.t_min;
 }
 
+bool contains(const Brush& brush, const DVec3& point, double tolerance) {
+    return std::all_of(brush.faces().begin(), brush.faces().end(),
+                       [&](const Face& f) { return f.plane.signed_distance(point) <= tolerance; });
+}
+
 } // namespace ks::brush
