@@ -149,65 +149,82 @@ void structure_status(nlohmann::json& s, const Editor& editor, const Outliner& o
     s["prefab_folders"] = json::array();
     for (const auto& folder : editor.prefabs().folders()) s["prefab_folders"].push_back(folder.string());
 }
-} // namespace
 
-void EditorApp::write_status() {
-    using nlohmann::json;
-    json s;
-    s["frame"] = frame_;
-    s["pid"] = static_cast<long>(getpid());
-    s["title"] = title(editor_);
-    s["file"] = editor_.file_path().string();
-    s["entities"] = editor_.level().entities.size();
-    s["selection"] = editor_.doc().selection;
-    s["undo"] = editor_.history().undo_count();
-    s["undo_name"] = editor_.history().undo_name();
-    s["redo"] = editor_.history().step_names().size() - editor_.history().undo_count();
-    s["dirty"] = editor_.has_unsaved_changes();
-    scene_.status(s);
-    s["tab"] = dojo_tab_ ? "dojo" : "level";
-    s["left_tab"] = left_tab_name(shown_left_tab_);
-    s["inspector_tab"] = inspector_tab_name(inspector_.shown_tab());
-    s["menu"] = {{"file", point(menu_spots_[0])}, {"quit", point(menu_spots_[1])}};
-    s["about"] = about_.status();
-    s["clip_preview"] = {{"on", clip_preview_.on()},
-                         {"robot", clip_preview_.posed_robot()},
-                         {"toggle", point(clip_preview_.toggle_centre())}};
-    if (dojo_) s["dojo"] = dojo_status(*dojo_);
+// The session: the file, the entities and the selection's primary, the history.
+void document_status(nlohmann::json& s, Editor& editor) { // title() takes the editor as it is
+    s["title"] = title(editor);
+    s["file"] = editor.file_path().string();
+    s["entities"] = editor.level().entities.size();
+    s["selection"] = editor.doc().selection;
+    s["undo"] = editor.history().undo_count();
+    s["undo_name"] = editor.history().undo_name();
+    s["redo"] = editor.history().step_names().size() - editor.history().undo_count();
+    s["dirty"] = editor.has_unsaved_changes();
+    if (editor.doc().selection.empty()) return;
+    if (const level::Entity* e = editor.level().find(editor.doc().selection.front())) {
+        s["primary"] = {{"id", e->id},
+                        {"type", std::string(level::type_name(e->type()))},
+                        {"name", e->name},
+                        {"position", {e->position.x, e->position.y, e->position.z}},
+                        {"yaw", e->rotation.x},
+                        {"rotation", {e->rotation.x, e->rotation.y, e->rotation.z}},
+                        {"links", links_json(e->links)}};
+        if (const auto texture = selection_texture(editor)) s["primary"]["texture"] = texture->name;
+    }
+}
+
+// The window and what input the editor sees, so that a test driving it with X events can say why a key did
+// nothing.
+void input_status(nlohmann::json& s, GLFWwindow* window) {
     int wx = 0, wy = 0;
-    glfwGetWindowPos(shell_.window(), &wx, &wy);
+    glfwGetWindowPos(window, &wx, &wy);
     s["window"] = {wx, wy};
-    // What input the editor sees, so that a test driving it with X events can say why a key did nothing.
     const ImGuiIO& io = ImGui::GetIO();
     // Keys other than the modifiers held in this frame: a test releases a key once the editor has seen it
     // pressed, before ImGui's key repeat could fire a second time on a slow frame.
     int keys_down = 0;
     for (int k = 0; k < IM_ARRAYSIZE(io.KeysDown); ++k)
         if (io.KeysDown[k] && (k < GLFW_KEY_LEFT_SHIFT || k > GLFW_KEY_RIGHT_SUPER)) ++keys_down;
-    s["input"] = {{"focused", glfwGetWindowAttrib(shell_.window(), GLFW_FOCUSED) != 0},
+    s["input"] = {{"focused", glfwGetWindowAttrib(window, GLFW_FOCUSED) != 0},
                   {"keys_down", keys_down},
                   {"ctrl", io.KeyCtrl},
                   {"shift", io.KeyShift},
                   {"text_input", io.WantTextInput},
                   {"active_item", ImGui::IsAnyItemActive()}};
-    json palette = json::object();
-    for (auto type : level::all_types()) {
-        const PlacePalette::ScreenRect& r = palette_.rect(type);
-        if (r.max.x > r.min.x) palette[std::string(level::type_name(type))] = point((r.min + r.max) * 0.5f);
+}
+
+// Temp file and rename, so a reader never sees half of it; false: not written (tried again next frame). A
+// status file is a test aid: never an error for the user.
+bool write_atomically(const std::filesystem::path& path, const std::string& text) {
+    const auto temp = std::filesystem::path(path.string() + ".tmp");
+    {
+        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+        out << text << '\n';
+        if (!out) return false;
     }
-    s["palette"] = palette;
-    if (!editor_.doc().selection.empty())
-        if (const level::Entity* e = editor_.level().find(editor_.doc().selection.front())) {
-            s["primary"] = {{"id", e->id},
-                            {"type", std::string(level::type_name(e->type()))},
-                            {"name", e->name},
-                            {"position", {e->position.x, e->position.y, e->position.z}},
-                            {"yaw", e->rotation.x},
-                            {"rotation", {e->rotation.x, e->rotation.y, e->rotation.z}},
-                            {"links", links_json(e->links)}};
-            if (const auto texture = selection_texture(editor_)) s["primary"]["texture"] = texture->name;
-        }
+    std::error_code ec;
+    std::filesystem::rename(temp, path, ec);
+    return true;
+}
+} // namespace
+
+// Each panel writes its own part; the keys do not depend on who writes them.
+void EditorApp::write_status() {
+    nlohmann::json s;
+    s["frame"] = frame_;
+    s["pid"] = static_cast<long>(getpid());
+    document_status(s, editor_);
+    input_status(s, shell_.window());
+    s["tab"] = dojo_tab_ ? "dojo" : "level";
+    s["left_tab"] = left_tab_name(shown_left_tab_);
+    s["inspector_tab"] = inspector_tab_name(inspector_.shown_tab());
+    s["menu"] = {{"file", point(menu_spots_[0])}, {"quit", point(menu_spots_[1])}};
+    s["about"] = about_.status();
+    if (dojo_) s["dojo"] = dojo_status(*dojo_);
+    palette_.status(s);
+    clip_preview_.status(s);
     objects_status(s, editor_, inspector_.texture_browser());
+    scene_.status(s);
     viewport_.status(s, !dojo_tab_); // after objects_status: it adds the player start's place on screen
     structure_status(s, editor_, outliner_, prefabs_, prefab_prompt_);
     logic_status(s, editor_, logic_, spots_);
@@ -218,16 +235,7 @@ void EditorApp::write_status() {
     s["log_lines"] = log_.lines().size();
     std::string text = s.dump();
     if (text == last_status_) return;
-    const auto& path = *options_.status_file;
-    const auto temp = std::filesystem::path(path.string() + ".tmp");
-    {
-        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        out << text << '\n';
-        if (!out) return; // a status file is a test aid: never an error for the user
-    }
-    std::error_code ec;
-    std::filesystem::rename(temp, path, ec);
-    last_status_ = std::move(text);
+    if (write_atomically(*options_.status_file, text)) last_status_ = std::move(text);
 }
 
 } // namespace ks::editor::ui
