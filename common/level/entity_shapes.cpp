@@ -110,6 +110,12 @@ Result<brush::Brush> world_brush(const Entity& entity) {
     return brush::transformed(props->brush, rotation, DVec3(entity.position));
 }
 
+bool is_ceiling(const Entity& entity) {
+    if (const auto* floor = entity.try_as<FloorProps>()) return floor->ceiling;
+    if (const auto* brush = entity.try_as<BrushProps>()) return brush->ceiling;
+    return false;
+}
+
 float door_leaf_slide(const DoorProps& door, float open_fraction) {
     return open_fraction * door.open_offset;
 }

@@ -61,6 +61,9 @@ std::optional<PlacedShape> static_solid_shape(const Entity& entity);
 // other types, and where the turned brush would leave the brush module's world (brush::kMaxCoordinate).
 Result<brush::Brush> world_brush(const Entity& entity);
 
+// A floor or a brush marked as a ceiling: it casts no sun shadow, and the editor hides it with its ceilings.
+bool is_ceiling(const Entity& entity);
+
 // Door leaves, indexed by side: 0 is the leaf on the door's local -x, 1 the one on +x. Each slides outward
 // along local x by open_offset times the open fraction (0 closed, 1 open); the result is in the door's
 // upright frame (upright_frame), so physics and drawing place the leaves by the same formula.

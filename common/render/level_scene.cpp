@@ -105,9 +105,8 @@ std::optional<SolidGeometry> surface_geometry(const level::Entity& e, AssetLibra
     const std::string& texture = e.try_as<level::WallProps>()    ? e.as<level::WallProps>().texture
                                  : e.try_as<level::FloorProps>() ? e.as<level::FloorProps>().texture
                                                                  : e.as<level::StairProps>().texture;
-    const bool ceiling = e.try_as<level::FloorProps>() && e.as<level::FloorProps>().ceiling;
     SolidGeometry g;
-    g.casts_shadow = !ceiling;
+    g.casts_shadow = !level::is_ceiling(e);
     g.parts.push_back({&assets.surface(texture), 0, static_cast<std::uint32_t>(data.polygon_sizes.size())});
     g.mesh = std::move(data);
     return g;
@@ -122,7 +121,7 @@ std::optional<SolidGeometry> brush_geometry(const level::Entity& e, AssetLibrary
     }
     BrushMesh built = build_brush_mesh(*world);
     SolidGeometry g;
-    g.casts_shadow = !e.as<level::BrushProps>().ceiling;
+    g.casts_shadow = !level::is_ceiling(e);
     for (const auto& range : built.materials)
         g.parts.push_back({&assets.surface(range.material), range.first_polygon, range.polygon_count});
     g.mesh = std::move(built.mesh);

@@ -104,8 +104,7 @@ void draw_obb(render::DebugDraw& debug, const geometry::Obb& box, const Vec4& co
 
 bool Overlays::shows(const Document& doc, const level::Entity& e) const {
     if (doc.hidden.contains(e.id)) return false;
-    const auto* floor = e.try_as<level::FloorProps>();
-    return ceilings || !floor || !floor->ceiling;
+    return ceilings || !level::is_ceiling(e);
 }
 
 void ViewportLines::draw(render::DebugDraw& debug, const ViewCamera& view, const Editor& editor,

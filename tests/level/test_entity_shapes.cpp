@@ -143,3 +143,16 @@ TEST_CASE("cylinder and pickup models sit where the bodies are") {
     const Mat4 p = pickup_model_matrix(pc, Quat(1, 0, 0, 0));
     CHECK(p[3].y == doctest::Approx(2.0f + kPickupModelLift));
 }
+
+TEST_CASE("ceilings: a floor or a brush with the ceiling flag, nothing else") {
+    Level lv;
+    lv.add(EntityType::Floor);
+    lv.add(EntityType::Brush);
+    lv.add(EntityType::Wall);
+    for (const Entity& e : lv.entities) CHECK_FALSE(is_ceiling(e));
+    lv.entities[0].as<FloorProps>().ceiling = true;
+    lv.entities[1].as<BrushProps>().ceiling = true;
+    CHECK(is_ceiling(lv.entities[0]));
+    CHECK(is_ceiling(lv.entities[1]));
+    CHECK_FALSE(is_ceiling(lv.entities[2]));
+}
