@@ -10,6 +10,7 @@ std::span<const CommandTable> script_command_tables() {
         {"commands", level_setting_commands()},
         {"expectations", level_expect_commands()},
         {"brushes", brush_commands()},
+        {"geometry tools", tool_commands()},
         {"groups, layers, prefabs", structure_commands()},
         {"level logic", logic_commands()},
         {"clip files", dojo_commands()},

@@ -319,6 +319,7 @@ void EditorApp::handle_shortcuts() {
         if (pressed(GLFW_KEY_DELETE)) dojo_->delete_selected();
         return; // the rest acts on the level viewport
     }
+    if (tools_.keys(editor_, log_, ctrl)) return;
     if (ctrl && pressed(GLFW_KEY_D)) report(duplicate(editor_), "duplicate");
     if (ctrl && pressed(GLFW_KEY_A)) select_all(editor_);
     if (ctrl && pressed(GLFW_KEY_C)) {

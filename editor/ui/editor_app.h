@@ -21,6 +21,7 @@
 #include "ui/bottom_panels.h"
 #include "ui/clip_preview.h"
 #include "ui/file_prompts.h"
+#include "ui/geometry_tools_ui.h"
 #include "ui/gizmo_draw.h"
 #include "ui/inspector.h"
 #include "ui/logic_overlay.h"
@@ -236,6 +237,8 @@ class EditorApp final : private WindowServices {
 
     // tools
     PlaceTool placing_; // palette or prefab: the next click places one
+    // draw, clip, measure (geometry_tools_ui.h)
+    GeometryToolsUi tools_;
     bool box_selecting_ = false;
     Vec2 box_start_{0.0f};
     bool click_pending_ = false;

@@ -184,6 +184,7 @@ void EditorApp::write_status() {
                   {"bakes", scene_stats_.bakes},
                   {"last_build_cpu_ms", scene_stats_.last_build_cpu_ms}};
     s["view"] = view_mode_name(view_.mode);
+    tools_.status(s, editor_.doc());
     s["tab"] = dojo_tab_ ? "dojo" : "level";
     s["left_tab"] = left_tab_name(shown_left_tab_);
     s["inspector_tab"] = inspector_tab_name(inspector_.shown_tab());

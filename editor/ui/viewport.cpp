@@ -367,6 +367,7 @@ void EditorApp::viewport_panel(float x, float y, float w, float h) {
                       hint.c_str());
     }
     ImGui::End();
+    tools_.options(editor_, log_, viewport_area_.origin, spots_);
 }
 
 // The single view: the picture, the mouse and the overlays.
@@ -395,7 +396,8 @@ void EditorApp::pane_overlays(ImDrawList* draw, Vec2 origin, bool active) {
     logic_overlay_.draw(draw, origin, view_, editor_, overlays_.links, overlays_.ceilings,
                         [this](const level::Entity& e) { return shown(e); });
     analysis_.draw(draw, view_, origin);
-    if (!editor_.doc().selection.empty() && !placing_)
+    tools_.draw(draw, origin, view_, editor_.doc());
+    if (!editor_.doc().selection.empty() && !placing_ && tools_.active() == GeometryTool::none)
         draw_gizmo(draw, gizmo_, view_, origin, gizmo_frame(), active ? hovered_handle_ : Handle::None);
     if (active && box_selecting_) {
         const ImVec2 m = ImGui::GetIO().MousePos;
@@ -436,6 +438,13 @@ void EditorApp::viewport_input(Vec2 origin, bool hovered) {
     if (logic_.picking()) { // the next left click picks; nothing else happens meanwhile
         if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left))
             logic_.pick_click(pick(view_.ray(mouse)));
+        hovered_handle_ = Handle::None;
+        return;
+    }
+    if (tools_.active() != GeometryTool::none) { // a geometry tool takes the left mouse; Alt still orbits
+        if (!io.KeyAlt)
+            tools_.mouse(editor_, log_, view_, mouse, hovered,
+                         [this](const level::Entity& e) { return shown(e); });
         hovered_handle_ = Handle::None;
         return;
     }
