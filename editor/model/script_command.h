@@ -7,8 +7,8 @@
 //
 // Adding a command: its step struct (with `run`) joins its concern's variant in script_<concern>.h, and its
 // parse function, `run` and table entry go in that concern's .cpp (script_level_edits.cpp,
-// script_level_settings.cpp, script_level_expect.cpp, script_brush_parser.cpp, script_tool_parser.cpp, script_structure_*.cpp,
-// script_logic_*.cpp, script_dojo_*.cpp).
+// script_level_settings.cpp, script_level_expect.cpp, script_brush_parser.cpp, script_tool_parser.cpp,
+// script_structure_*.cpp, script_logic_*.cpp, script_dojo_*.cpp).
 #include "model/dojo_document.h"
 #include "model/script.h"
 #include "model/script_tokens.h"
