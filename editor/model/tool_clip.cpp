@@ -16,8 +16,8 @@ Error clip_error(const std::string& message, const std::string& hint) {
     return Error(std::string(kClipWhat) + ": " + message, Location{}, hint);
 }
 
-// Where the unit plane cuts the brush: the crossings of its edges (and its vertices on the plane), in order
-// around the normal. Empty when the plane does not pass through the inside.
+// Where the unit plane cuts the brush (both in one frame): the crossings of its edges (and its vertices on
+// the plane), in order around the normal. Empty when the plane does not pass through the inside.
 std::vector<DVec3> cut_outline(const brush::Brush& world, const brush::Plane& plane) {
     const auto& vertices = world.vertices();
     std::vector<double> side(vertices.size());
@@ -136,10 +136,15 @@ ToolPreview ClipTool::preview(const Document& doc) const {
     for (int id : doc.selection) {
         const level::Entity* e = doc.level.find(id);
         if (!e || e->type() != level::EntityType::Brush) continue;
-        auto world = level::world_brush(*e);
-        if (!world) continue;
+        // In the brush's own frame (its faces derived already): the plane moved there, the outline back.
+        const brush::Brush& local = e->as<level::BrushProps>().brush;
+        const glm::dmat3 rotation = glm::mat3_cast(dquat_from_ypr_degrees(DVec3(e->rotation)));
+        const DVec3 position(e->position);
+        const brush::Plane in_frame{glm::transpose(rotation) * plane->normal,
+                                    plane->distance - glm::dot(plane->normal, position)};
         ++brushes;
-        const auto outline = cut_outline(*world, *plane);
+        std::vector<DVec3> outline = cut_outline(local, in_frame);
+        for (DVec3& p : outline) p = rotation * p + position;
         if (!outline.empty()) {
             if (cut++ == 0) {
                 anchor = DVec3(0.0);
@@ -149,7 +154,7 @@ ToolPreview ClipTool::preview(const Document& doc) const {
             out.polyline(outline, true, ToolLine::cut);
             continue;
         }
-        const brush::PlaneReach reach = brush::reach(*world, *plane);
+        const brush::PlaneReach reach = brush::reach(local, in_frame);
         if ((keep_ == ClipKeep::back && reach == brush::PlaneReach::all_in_front) ||
             (keep_ == ClipKeep::front && reach == brush::PlaneReach::all_behind))
             emptied = "the clip would leave nothing of brush " + std::to_string(id);

@@ -18,21 +18,35 @@ int pointer_normal_axis(const DVec3& n) {
 
 struct PointerBrushHit {
     const level::Entity* entity = nullptr;
-    std::optional<brush::Brush> world;
     double distance = 1e300;
 };
 
-// The nearest shown brush the ray enters (boxes first, so only brushes under the mouse are derived).
+// A brush entity's frame: world = rotation * local + position (level::world_brush's transform), so the
+// tools read its derived local brush instead of deriving a world copy every frame.
+struct PointerFrame {
+    glm::dmat3 rotation{1.0};
+    DVec3 position{0.0};
+    explicit PointerFrame(const level::Entity& e)
+        : rotation(glm::mat3_cast(dquat_from_ypr_degrees(DVec3(e.rotation)))), position(e.position) {}
+    DVec3 to_world(const DVec3& local) const { return rotation * local + position; }
+    DVec3 to_local(const DVec3& world) const { return glm::transpose(rotation) * (world - position); }
+};
+
+const brush::Brush& local_brush(const level::Entity& e) {
+    return e.as<level::BrushProps>().brush;
+}
+
+// The nearest shown brush the ray enters (boxes first, so only brushes under the mouse are clipped).
 PointerBrushHit pointer_nearest_brush(const Document& doc, const geometry::Ray& ray, const ShownFn& shown) {
     PointerBrushHit best;
     for (const level::Entity& e : doc.level.entities) {
         if (e.type() != level::EntityType::Brush || !shown(e)) continue;
         const float box_t = geometry::ray_obb(ray, entity_obb(e));
         if (box_t < 0.0f || box_t > best.distance) continue;
-        auto world = level::world_brush(e);
-        if (!world) continue;
-        const auto t = brush::ray_entry(*world, DVec3(ray.origin), DVec3(ray.direction));
-        if (t && *t < best.distance) best = {&e, std::move(*world), *t};
+        const PointerFrame frame(e);
+        const DVec3 direction = glm::transpose(frame.rotation) * DVec3(ray.direction);
+        const auto t = brush::ray_entry(local_brush(e), frame.to_local(DVec3(ray.origin)), direction);
+        if (t && *t < best.distance) best = {&e, *t};
     }
     return best;
 }
@@ -77,8 +91,10 @@ std::optional<ToolPoint> tool_point(const Document& doc, const ViewCamera& view,
             std::optional<ToolPoint> best;
             float best_pixels = options.vertex_pixels, best_depth = 0.0f;
             const Vec3 eye = view.camera.position, forward = view.forward();
-            auto consider = [&](const brush::Brush& world, int id) {
-                for (const DVec3& v : world.vertices()) {
+            auto consider = [&](const level::Entity& e) {
+                const PointerFrame frame(e);
+                for (const DVec3& local : local_brush(e).vertices()) {
+                    const DVec3 v = frame.to_world(local);
                     Vec2 s;
                     if (!view.project(Vec3(v), s)) continue;
                     // Vertices on one pixel (a box's top and bottom seen from above): the nearer one.
@@ -86,22 +102,23 @@ std::optional<ToolPoint> tool_point(const Document& doc, const ViewCamera& view,
                     const bool tie = best && std::abs(d - best_pixels) < 0.01f;
                     if ((tie && depth < best_depth) || (!tie && d < best_pixels)) {
                         best_pixels = d, best_depth = depth;
-                        best = ToolPoint{v, PointKind::vertex, std::nullopt, id};
+                        best = ToolPoint{v, PointKind::vertex, std::nullopt, e.id};
                     }
                 }
             };
-            if (hit.world) consider(*hit.world, hit.entity->id);
+            if (hit.entity) consider(*hit.entity);
             for (int id : doc.selection) {
                 const level::Entity* e = doc.level.find(id);
-                if (!e || e->type() != level::EntityType::Brush || (hit.entity && hit.entity->id == id))
-                    continue;
-                if (auto world = level::world_brush(*e)) consider(*world, id);
+                if (e && e->type() == level::EntityType::Brush && e != hit.entity) consider(*e);
             }
             if (best) return best;
         }
-        if (options.faces && hit.world) {
+        if (options.faces && hit.entity) {
             DVec3 p = DVec3(ray.origin) + DVec3(ray.direction) * hit.distance;
-            const brush::Plane face = pointer_face_at(*hit.world, p);
+            const PointerFrame frame(*hit.entity);
+            const brush::Plane local = pointer_face_at(local_brush(*hit.entity), frame.to_local(p));
+            const DVec3 normal = frame.rotation * local.normal;
+            const brush::Plane face{normal, glm::dot(normal, frame.to_world(local.normal * local.distance))};
             const int axis = pointer_normal_axis(face.normal);
             if (axis >= 0) { // on the face's plane exactly, the two other coordinates on the grid
                 for (int other = 0; other < 3; ++other)

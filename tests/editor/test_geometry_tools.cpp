@@ -34,14 +34,14 @@ bool gt_has_label(const ToolPreview& p, const std::string& text) {
     return std::any_of(p.labels.begin(), p.labels.end(), [&](const ToolLabel& l) { return l.text == text; });
 }
 
-const DrawPlane kTopPlane{1, 0.0, std::nullopt};
+const DrawPlane kGtTopPlane{1, 0.0, std::nullopt};
 
 } // namespace
 
 TEST_CASE("draw tool: a box dragged in the top view shows its size live and commits as one undo step") {
     Editor ed;
     DrawTool tool;
-    tool.press(kTopPlane, {0, 0, 0});
+    tool.press(kGtTopPlane, {0, 0, 0});
     tool.move({4, 0, 2});
     CHECK(tool.stage() == DrawStage::dragging);
     const ToolPreview live = tool.preview();
@@ -60,7 +60,7 @@ TEST_CASE("draw tool: a box dragged in the top view shows its size live and comm
     CHECK(ed.history().undo_count() == 1);
 
     // The next box in the top view takes the last one's height range; in the front view its depth range.
-    tool.press(kTopPlane, {6, 0, 0});
+    tool.press(kGtTopPlane, {6, 0, 0});
     tool.move({8, 0, 2});
     CHECK(tool.dimensions() == DVec3(2, 3, 2));
     REQUIRE(tool.release(ed).ok());
@@ -77,17 +77,17 @@ TEST_CASE(
     Editor ed;
     const std::string before = editor_test::text_of(ed);
     DrawTool tool;
-    tool.press(kTopPlane, {3, 0, 3});
+    tool.press(kGtTopPlane, {3, 0, 3});
     CHECK(tool.preview().problem == "the box has no size along x");
     auto click = tool.release(ed);
     REQUIRE_FALSE(click.ok());
     CHECK(click.error().message == "Draw: the box has no size along x");
-    tool.press(kTopPlane, {0, 0, 0});
+    tool.press(kGtTopPlane, {0, 0, 0});
     tool.move({5, 0, 0});
     auto line = tool.release(ed);
     REQUIRE_FALSE(line.ok());
     CHECK(line.error().message == "Draw: the box has no size along z");
-    tool.press(kTopPlane, {1e6, 0, 1e6});
+    tool.press(kGtTopPlane, {1e6, 0, 1e6});
     tool.move({1e6 + 8, 0, 1e6 + 8});
     auto far = tool.release(ed);
     REQUIRE_FALSE(far.ok());
@@ -115,15 +115,15 @@ TEST_CASE("draw tool: a polygon is clicked, closed on its first corner, extruded
     Editor ed;
     DrawTool tool;
     tool.shape = DrawShape::polygon;
-    REQUIRE(tool.add_point(kTopPlane, {0, 0, 0}).ok());
-    REQUIRE(tool.add_point(kTopPlane, {4, 7, 0}).ok()); // off the plane: taken onto it
+    REQUIRE(tool.add_point(kGtTopPlane, {0, 0, 0}).ok());
+    REQUIRE(tool.add_point(kGtTopPlane, {4, 7, 0}).ok()); // off the plane: taken onto it
     CHECK(tool.points().back() == DVec3(4, 0, 0));
-    auto twice = tool.add_point(kTopPlane, {4, 0, 0});
+    auto twice = tool.add_point(kGtTopPlane, {4, 0, 0});
     REQUIRE_FALSE(twice.ok());
     CHECK(twice.error().message == "Draw: the point repeats corner 2");
-    REQUIRE(tool.add_point(kTopPlane, {4, 0, 4}).ok());
-    CHECK(gt_has_label(tool.preview(), "4.000"));       // edge lengths while placing
-    REQUIRE(tool.add_point(kTopPlane, {0, 0, 0}).ok()); // the first corner closes
+    REQUIRE(tool.add_point(kGtTopPlane, {4, 0, 4}).ok());
+    CHECK(gt_has_label(tool.preview(), "4.000"));         // edge lengths while placing
+    REQUIRE(tool.add_point(kGtTopPlane, {0, 0, 0}).ok()); // the first corner closes
     CHECK(tool.stage() == DrawStage::extruding);
     // A ray passing the vertical line through the centre (8/3, y, 4/3) at height 5.
     tool.extrude_toward({Vec3(20.0f, 5.0f, 4.0f / 3.0f), Vec3(-1, 0, 0)});
@@ -141,7 +141,7 @@ TEST_CASE("draw tool: non-convex, collinear and too-small polygons are refused w
     DrawTool tool;
     tool.shape = DrawShape::polygon;
     for (DVec3 p : {DVec3(0, 0, 0), DVec3(4, 0, 0), DVec3(1, 0, 1), DVec3(0, 0, 4)})
-        REQUIRE(tool.add_point(kTopPlane, p).ok());
+        REQUIRE(tool.add_point(kGtTopPlane, p).ok());
     auto dent = tool.close();
     REQUIRE_FALSE(dent.ok());
     CHECK(dent.error().message.find("not strictly convex") != std::string::npos);
@@ -152,7 +152,7 @@ TEST_CASE("draw tool: non-convex, collinear and too-small polygons are refused w
     auto two = tool.close();
     REQUIRE_FALSE(two.ok());
     CHECK(two.error().message == "Draw: a polygon needs at least 3 corners, it has 2");
-    REQUIRE(tool.add_point(kTopPlane, {8, 0, 0}).ok());
+    REQUIRE(tool.add_point(kGtTopPlane, {8, 0, 0}).ok());
     auto line = tool.commit(ed);
     REQUIRE_FALSE(line.ok());
     CHECK(line.error().message.find("cannot be extruded") != std::string::npos);
@@ -198,6 +198,35 @@ TEST_CASE("clip tool: three points preview the cut on the selected brush; Enter 
     CHECK(ed.history().undo_count() == 2);
     REQUIRE(ed.undo());
     CHECK(gt_world(ed, cube).bounds_min().x == doctest::Approx(0.0));
+}
+
+TEST_CASE("clip tool: the cut's outline on a turned brush lies on the plane and inside the brush") {
+    Editor ed;
+    auto report = run_script_text("brush box 0,0,0 4,4,4\nrotate y 45\n", "turned.kss", {}, ed);
+    REQUIRE_MESSAGE(report.ok(), (report.ok() ? std::string() : report.error().str()));
+    const brush::Brush world = gt_world(ed, ed.doc().selection.front());
+    ClipTool tool;
+    for (DVec3 p : {DVec3(2, 0, 0), DVec3(2, 1, 0), DVec3(2, 0, 1)}) REQUIRE(tool.add_point(p).ok());
+    const ToolPreview shown = tool.preview(ed.doc());
+    CHECK(shown.problem.empty());
+    int cut = 0;
+    for (const ToolSegment& s : shown.segments) {
+        if (s.kind != ToolLine::cut) continue;
+        ++cut;
+        CHECK(s.a.x == doctest::Approx(2.0));
+        for (const brush::Face& f : world.faces()) CHECK(f.plane.signed_distance(s.a) <= 1e-9);
+    }
+    CHECK(cut == 4); // the turned cube cut straight across: a rectangle
+
+    // The pointer finds the turned brush's top face and its corners too.
+    const ViewCamera top = editor_test::top_view(Vec3(2, 0, 2));
+    Vec2 corner;
+    REQUIRE(top.project(Vec3(world.bounds_max().x, 4.0f, 2.0f), corner));
+    auto vertex = tool_point(ed.doc(), top, corner + Vec2(-2, 0), editor_test::all_shown);
+    REQUIRE(vertex);
+    CHECK(vertex->kind == PointKind::vertex);
+    CHECK(vertex->point.x == doctest::Approx(world.bounds_max().x));
+    CHECK(vertex->point.y == doctest::Approx(4.0));
 }
 
 TEST_CASE("clip tool: two points in an axis view make a plane containing the view direction; keep both") {
