@@ -6,6 +6,8 @@
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
+#include <vector>
+
 namespace ks::editor::ui {
 namespace {
 
@@ -71,7 +73,14 @@ void GeometryToolsUi::choose(GeometryTool tool) {
     match_face_ = false;
 }
 
-void GeometryToolsUi::toolbar(UiSpots& spots) {
+void GeometryToolsUi::bar(Editor& editor, EditorLog& log, Vec2 origin, Vec2 size, UiSpots& spots) {
+    // Kept off the crowded tool bar at the top: over the picture's bottom left, growing upward.
+    ImGui::SetNextWindowPos(ImVec2(origin.x + 8, origin.y + size.y - 32), ImGuiCond_Always,
+                            ImVec2(0.0f, 1.0f));
+    ImGui::SetNextWindowBgAlpha(0.8f);
+    ImGui::Begin("##geometry_tools", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
     static constexpr std::pair<GeometryTool, const char*> kButtons[] = {
         {GeometryTool::draw, "Draw"}, {GeometryTool::clip, "Clip"}, {GeometryTool::measure, "Measure"}};
     static constexpr const char* kTips[] = {
@@ -86,33 +95,26 @@ void GeometryToolsUi::toolbar(UiSpots& spots) {
         if (on) ImGui::PopStyleColor();
         spots.here(std::string("tool.") + tool_name(tool));
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kTips[i]);
-        ImGui::SameLine();
+        if (i < 2) ImGui::SameLine();
     }
-}
-
-void GeometryToolsUi::options(Editor& editor, EditorLog& log, Vec2 origin, UiSpots& spots) {
-    if (active_ == GeometryTool::none) return;
-    ImGui::SetNextWindowPos(ImVec2(origin.x + 8, origin.y + 44));
-    ImGui::SetNextWindowBgAlpha(0.8f);
-    ImGui::Begin("##geometry_tool", nullptr,
-                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
-                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
     if (active_ == GeometryTool::draw) {
         draw_.grid = editor.doc().grid.step;
         for (DrawShape shape : {DrawShape::box, DrawShape::polygon}) {
+            ImGui::SameLine();
             if (ImGui::RadioButton(shape == DrawShape::box ? "Box" : "Polygon", draw_.shape == shape)) {
                 draw_.cancel();
                 draw_.shape = shape;
             }
             spots.here(shape == DrawShape::box ? "tool.box" : "tool.polygon");
-            ImGui::SameLine();
         }
+        ImGui::SameLine();
         double height = draw_.height();
-        ImGui::SetNextItemWidth(90);
+        ImGui::SetNextItemWidth(80);
         if (ImGui::InputDouble("height", &height, 0.0, 0.0, "%.3f", ImGuiInputTextFlags_EnterReturnsTrue))
             draw_.set_height(height);
         spots.here("tool.height");
     } else if (active_ == GeometryTool::clip) {
+        ImGui::SameLine();
         const std::string keep = std::string("Keep: ") + clip_keep_name(clip_.keep());
         if (ImGui::SmallButton(keep.c_str())) clip_.cycle_keep();
         spots.here("tool.keep");
@@ -127,10 +129,12 @@ void GeometryToolsUi::options(Editor& editor, EditorLog& log, Vec2 origin, UiSpo
         ImGui::SameLine();
         if (ImGui::SmallButton("Reset")) clip_.reset();
     }
-    const ToolPreview shown = preview(editor.doc());
-    if (!shown.problem.empty())
-        ImGui::TextColored(ImVec4(1.0f, 0.5f, 0.4f, 1.0f), "%s", shown.problem.c_str());
-    ImGui::TextDisabled("%s", shown.hint.c_str());
+    if (active_ != GeometryTool::none) {
+        const ToolPreview shown = preview(editor.doc());
+        if (!shown.problem.empty())
+            ImGui::TextColored(ImVec4(1.0f, 0.5f, 0.4f, 1.0f), "%s", shown.problem.c_str());
+        ImGui::TextDisabled("%s", shown.hint.c_str());
+    }
     ImGui::End();
 }
 
@@ -279,9 +283,21 @@ void GeometryToolsUi::draw(ImDrawList* draw, Vec2 origin, const ViewCamera& view
         ImVec2 a, b;
         if (screen(s.a, a) && screen(s.b, b)) draw->AddLine(a, b, line_colour(s.kind), 2.0f);
     }
+    // Labels of a small box crowd one spot: each moves down past those drawn before it.
+    std::vector<std::pair<ImVec2, ImVec2>> taken;
     for (const ToolLabel& l : shown.labels) {
         ImVec2 at;
-        if (screen(l.at, at)) label(draw, ImVec2(at.x + 6, at.y - 16), l.text, IM_COL32(255, 255, 255, 255));
+        if (!screen(l.at, at)) continue;
+        at = ImVec2(at.x + 6, at.y - 16);
+        const ImVec2 size = ImGui::CalcTextSize(l.text.c_str());
+        for (bool moved = true; moved;) {
+            moved = false;
+            for (const auto& [lo, hi] : taken)
+                if (at.x < hi.x && at.x + size.x + 6 > lo.x && at.y < hi.y && at.y + size.y + 4 > lo.y)
+                    at.y = hi.y + 1, moved = true;
+        }
+        taken.push_back({ImVec2(at.x - 3, at.y - 2), ImVec2(at.x + size.x + 3, at.y + size.y + 2)});
+        label(draw, at, l.text, IM_COL32(255, 255, 255, 255));
     }
     ImVec2 at;
     if (hover_ && screen(hover_->point, at)) { // the point a click would take, shaped by its kind

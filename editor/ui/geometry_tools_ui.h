@@ -1,6 +1,6 @@
 #pragma once
-// The geometry tools in the window (docs/editor.md, "Geometry tools"): the tool bar's Draw, Clip and Measure
-// buttons and keys (B, C, M; Esc leaves), the active tool's options over the viewport, the viewport's
+// The geometry tools in the window (docs/editor.md, "Geometry tools"): a bar over the viewport with the Draw,
+// Clip and Measure buttons and the active tool's options, the keys (B, C, M; Esc leaves), the viewport's
 // mouse routed to it (snapped points from view/tool_pointer.h), its preview and labels drawn over each
 // view, and its state for the status file. The tools themselves are window-free (model/tool_draw.h,
 // tool_clip.h, tool_measure.h); this only feeds them and shows what they say.
@@ -26,11 +26,10 @@ class GeometryToolsUi {
     // Chooses a tool (the same one again, or none, leaves it); what the others were doing is dropped.
     void choose(GeometryTool tool);
 
-    // The tool bar's buttons (spots tool.draw, tool.clip, tool.measure).
-    void toolbar(UiSpots& spots);
-    // The active tool's options at `origin` (window pixels, the viewport's top left): shape and height,
-    // keep side and match face, Apply and Cancel.
-    void options(Editor& editor, EditorLog& log, Vec2 origin, UiSpots& spots);
+    // The tools' bar over the viewport's bottom left (`area`: the viewport, window pixels), above its status
+    // line: the Draw, Clip and Measure buttons (spots tool.draw, tool.clip, tool.measure), then the active
+    // tool's options (shape and height; keep side, match face, Clip) and what it says (problem, hint).
+    void bar(Editor& editor, EditorLog& log, Vec2 origin, Vec2 size, UiSpots& spots);
     // The viewport's mouse in the view the mouse works in (`mouse` in its pixels).
     void mouse(Editor& editor, EditorLog& log, const ViewCamera& view, Vec2 mouse, bool hovered,
                const ShownFn& shown);

@@ -14,7 +14,6 @@
 namespace ks::editor::ui {
 
 void EditorApp::viewport_toolbar() {
-    tools_.toolbar(spots_);
     for (GizmoMode m : {GizmoMode::Move, GizmoMode::Rotate, GizmoMode::Scale}) {
         if (ImGui::RadioButton(gizmo_mode_name(m), gizmo_.mode == m)) gizmo_.mode = m;
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Gizmo mode (W / E / R)");

@@ -367,7 +367,7 @@ void EditorApp::viewport_panel(float x, float y, float w, float h) {
                       hint.c_str());
     }
     ImGui::End();
-    tools_.options(editor_, log_, viewport_area_.origin, spots_);
+    tools_.bar(editor_, log_, viewport_area_.origin, viewport_area_.size, spots_);
 }
 
 // The single view: the picture, the mouse and the overlays.
