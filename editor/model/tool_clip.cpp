@@ -22,6 +22,9 @@ std::vector<DVec3> cut_outline(const brush::Brush& world, const brush::Plane& pl
     const auto& vertices = world.vertices();
     std::vector<double> side(vertices.size());
     for (size_t i = 0; i < vertices.size(); ++i) side[i] = plane.signed_distance(vertices[i]);
+    // A plane touching the brush along a face, an edge or a vertex cuts nothing (brush::split's rule).
+    const auto [low, high] = std::minmax_element(side.begin(), side.end());
+    if (side.empty() || *low >= -brush::kOnPlaneEpsilon || *high <= brush::kOnPlaneEpsilon) return {};
     std::vector<DVec3> points;
     auto add = [&](const DVec3& p) {
         for (const DVec3& q : points)

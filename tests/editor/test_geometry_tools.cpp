@@ -274,6 +274,11 @@ TEST_CASE("clip tool: collinear points, a plane missing the brush and a clip lea
     REQUIRE_FALSE(emptied.ok());
     CHECK(emptied.error().message.find("leaves nothing") != std::string::npos);
 
+    ClipTool along; // the plane of the cube's -x face: it cuts nothing, and keeping the back leaves nothing
+    for (DVec3 p : {DVec3(0, 0, 0), DVec3(0, 1, 0), DVec3(0, 0, 1)}) REQUIRE(along.add_point(p).ok());
+    CHECK(along.preview(ed.doc()).problem == "the clip would leave nothing of brush " + std::to_string(cube));
+    REQUIRE_FALSE(along.apply(ed).ok());
+
     ed.clear_selection();
     ClipTool none;
     for (DVec3 p : {DVec3(2, 0, 0), DVec3(2, 1, 0), DVec3(2, 0, 1)}) REQUIRE(none.add_point(p).ok());
