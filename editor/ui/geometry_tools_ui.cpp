@@ -124,7 +124,7 @@ void GeometryToolsUi::bar(Editor& editor, EditorLog& log, Vec2 origin, Vec2 size
         if (ImGui::Checkbox("Match face", &match_face_) && match_face_) clip_.reset();
         spots.here("tool.match_face");
         ImGui::SameLine();
-        if (ImGui::SmallButton("Clip")) enter(editor, log);
+        if (ImGui::SmallButton("Apply")) enter(editor, log); // not "Clip": the tool button above has that id
         spots.here("tool.apply");
         ImGui::SameLine();
         if (ImGui::SmallButton("Reset")) clip_.reset();

@@ -28,7 +28,7 @@ class GeometryToolsUi {
 
     // The tools' bar over the viewport's bottom left (`area`: the viewport, window pixels), above its status
     // line: the Draw, Clip and Measure buttons (spots tool.draw, tool.clip, tool.measure), then the active
-    // tool's options (shape and height; keep side, match face, Clip) and what it says (problem, hint).
+    // tool's options (shape and height; keep side, match face, Apply) and what it says (problem, hint).
     void bar(Editor& editor, EditorLog& log, Vec2 origin, Vec2 size, UiSpots& spots);
     // The viewport's mouse in the view the mouse works in (`mouse` in its pixels).
     void mouse(Editor& editor, EditorLog& log, const ViewCamera& view, Vec2 mouse, bool hovered,

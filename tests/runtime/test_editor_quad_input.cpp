@@ -177,7 +177,7 @@ TEST_CASE("editor 4-up view: select, drag the gizmo and box select in different 
     CHECK(st["undo_name"] == "Place box brush");
     REQUIRE(st["selection"].size() == 1);
 
-    // The clip tool (C): two clicks across the new box in the top view, Tab to keep the front, Enter.
+    // The clip tool (C): two clicks across the new box in the top view, Keep (front), Apply.
     s.key("c");
     st = s.wait("the clip tool", [](const json& j) { return j["tool"]["active"] == "clip"; });
     const float across = start[0].get<float>() + 45.0f;
@@ -189,9 +189,9 @@ TEST_CASE("editor 4-up view: select, drag the gizmo and box select in different 
                j["tool"]["problem"] == "";
     });
     CHECK(std::abs(st["tool"]["clip"]["plane"][0].get<double>()) == doctest::Approx(1.0)); // across x
-    s.key("Tab");
-    s.wait("keep front", [](const json& j) { return j["tool"]["clip"]["keep"] == "front"; });
-    s.key("Return");
+    s.click(st["spots"]["tool.keep"]); // the bar's Keep button, as Tab does
+    st = s.wait("keep front", [](const json& j) { return j["tool"]["clip"]["keep"] == "front"; });
+    s.click(st["spots"]["tool.apply"]); // the bar's Apply button, as Enter does
     st = s.wait("the box clipped", [&](const json& j) { return j["undo"] == undo_draw + 2; });
     CHECK(st["undo_name"] == "Clip brushes");
     CHECK(st["entities"] == entities + 1);
