@@ -10,6 +10,7 @@
 #include "model/script_level.h"
 #include "model/script_logic.h"
 #include "model/script_structure.h"
+#include "model/script_tool.h"
 
 #include <filesystem>
 #include <string>
@@ -20,11 +21,11 @@
 namespace ks::editor {
 
 // One parsed line: its number and its typed step, one of each concern's steps (script_level.h,
-// script_brush.h, script_structure.h, script_logic.h, script_dojo.h). The commands that make them are in the
-// registry (script_command.h).
+// script_brush.h, script_tool.h, script_structure.h, script_logic.h, script_dojo.h). The commands that make
+// them are in the registry (script_command.h).
 struct ScriptStep {
     int line = 0;
-    std::variant<LevelStep, BrushStep, StructureStep, LogicStep, DojoStep> action;
+    std::variant<LevelStep, BrushStep, ToolStep, StructureStep, LogicStep, DojoStep> action;
 };
 
 struct Script {

@@ -7,8 +7,8 @@
 //
 // Adding a command: its step struct (with `run`) joins its concern's variant in script_<concern>.h, and its
 // parse function, `run` and table entry go in that concern's .cpp (script_level_edits.cpp,
-// script_level_settings.cpp, script_level_expect.cpp, script_brush_parser.cpp, script_structure_*.cpp,
-// script_logic_*.cpp, script_dojo_*.cpp).
+// script_level_settings.cpp, script_level_expect.cpp, script_brush_parser.cpp, script_tool_parser.cpp,
+// script_structure_*.cpp, script_logic_*.cpp, script_dojo_*.cpp).
 #include "model/dojo_document.h"
 #include "model/script.h"
 #include "model/script_tokens.h"
@@ -61,6 +61,7 @@ std::span<const CommandSpec> level_edit_commands();
 std::span<const CommandSpec> level_setting_commands();
 std::span<const CommandSpec> level_expect_commands();
 std::span<const CommandSpec> brush_commands();
+std::span<const CommandSpec> tool_commands();
 std::span<const CommandSpec> structure_commands();
 std::span<const CommandSpec> logic_commands();
 std::span<const CommandSpec> dojo_commands();

@@ -6,13 +6,10 @@ namespace ks::editor {
 
 std::span<const CommandTable> script_command_tables() {
     static const CommandTable kTables[] = {
-        {"commands", level_edit_commands()},
-        {"commands", level_setting_commands()},
-        {"expectations", level_expect_commands()},
-        {"brushes", brush_commands()},
-        {"groups, layers, prefabs", structure_commands()},
-        {"level logic", logic_commands()},
-        {"clip files", dojo_commands()},
+        {"commands", level_edit_commands()},       {"commands", level_setting_commands()},
+        {"expectations", level_expect_commands()}, {"brushes", brush_commands()},
+        {"geometry tools", tool_commands()},       {"groups, layers, prefabs", structure_commands()},
+        {"level logic", logic_commands()},         {"clip files", dojo_commands()},
     };
     return kTables;
 }

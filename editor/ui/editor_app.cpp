@@ -299,6 +299,7 @@ void EditorApp::handle_shortcuts() {
         if (pressed(GLFW_KEY_DELETE)) dojo_->delete_selected();
         return; // the rest acts on the level viewport
     }
+    if (viewport_.geometry_tool_keys(ctrl)) return;
     if (ctrl && pressed(GLFW_KEY_D)) report(duplicate(editor_), "duplicate");
     if (ctrl && pressed(GLFW_KEY_A)) select_all(editor_);
     if (ctrl && pressed(GLFW_KEY_C)) {

@@ -10,6 +10,7 @@
 #include "shell/app_shell.h"
 #include "ui/analysis_view.h"
 #include "ui/editor_log.h"
+#include "ui/geometry_tools_ui.h"
 #include "ui/layout.h"
 #include "ui/logic_overlay.h"
 #include "ui/logic_panels.h"
@@ -58,9 +59,11 @@ class LevelViewport {
     void rebuild_scene();
     void render(int width, int height);
 
-    void view_menu();    // the View menu's views, framing and overlays
-    void shortcuts();    // F, W / E / R / X and the numpad's views (no Ctrl, not flying)
-    bool escape();       // Esc: ends a gizmo drag or disarms the armed tool; false: neither was going on
+    void view_menu(); // the View menu's views, framing and overlays
+    void shortcuts(); // F, W / E / R / X and the numpad's views (no Ctrl, not flying)
+    bool escape();    // Esc: ends a gizmo drag or disarms the armed tool; false: neither was going on
+    // The geometry tools' keys (B, C, M; with one active Esc, Enter, Tab, ...): true when one was used.
+    bool geometry_tool_keys(bool ctrl) { return geometry_.keys(ctx_.editor, ctx_.log, ctrl); }
     void disarm_tools(); // the inspector's pick mode, or another tool, takes the viewport's clicks
     Result<void> set_gizmo_option(const std::string& option); // --gizmo MODE[,local]
     void set_view(ViewMode mode); // frames the level; in the 4-up view, the active pane's
@@ -122,7 +125,8 @@ class LevelViewport {
     bool flying_ = false;
     bool box_selecting_ = false;
     Vec2 box_start_{0.0f};
-    PlaceTool place_; // palette or prefab: the next click places one
+    PlaceTool place_;          // palette or prefab: the next click places one
+    GeometryToolsUi geometry_; // draw, clip, measure (geometry_tools_ui.h): the left mouse while active
 };
 
 } // namespace ks::editor::ui

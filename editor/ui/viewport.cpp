@@ -100,6 +100,7 @@ void LevelViewport::panel(const Rect& rect, const OverPicture& over_picture) {
             draw->AddText(ImVec2(origin_.x + 12, origin_.y + 8), IM_COL32(140, 255, 160, 255),
                           tool->hint().c_str());
     ImGui::End();
+    geometry_.bar(ctx_.editor, ctx_.log, area_.origin, area_.size, ctx_.spots);
 }
 
 // Along the bottom of the view (in the 4-up view, of the active pane): view, camera speed, grid, what a drag
@@ -146,7 +147,8 @@ void LevelViewport::pane_overlays(ImDrawList* draw, Vec2 origin, bool active) {
     if (overlays_.grid && view_.orthographic()) axis_grid(draw, view_, ctx_.editor.doc().grid.step, origin);
     logic_overlay_.draw(draw, origin, view_, ctx_.editor, overlays_.links, overlays_.ceilings, shown_fn());
     ctx_.analysis.draw(draw, view_, origin);
-    if (!ctx_.editor.doc().selection.empty() && !tool_armed())
+    geometry_.draw(draw, origin, view_, ctx_.editor.doc());
+    if (!ctx_.editor.doc().selection.empty() && !tool_armed() && geometry_.active() == GeometryTool::none)
         draw_gizmo(draw, gizmo_, view_, origin, gizmo_frame(), active ? hovered_handle_ : Handle::None);
     if (active && box_selecting_) {
         const ImVec2 m = ImGui::GetIO().MousePos;

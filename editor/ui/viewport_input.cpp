@@ -34,12 +34,18 @@ void LevelViewport::input(Vec2 origin, bool hovered) {
     }
     const bool has_selection = !ctx_.editor.doc().selection.empty();
     if (drag(mouse)) return;
-    hovered_handle_ =
-        hovered && has_selection && !tool_armed() ? gizmo_.hit(view_, gizmo_frame(), mouse) : Handle::None;
+    hovered_handle_ = hovered && has_selection && !tool_armed() && geometry_.active() == GeometryTool::none
+                          ? gizmo_.hit(view_, gizmo_frame(), mouse)
+                          : Handle::None;
     if (io.KeyAlt) return; // Alt + left drag orbits
     if (ViewportTool* tool = armed_tool()) {
         const ShownFn shown = shown_fn();
         tool->input(ToolInput{ctx_.editor, ctx_.log, view_, mouse, hovered, shown});
+        return;
+    }
+    if (geometry_.active() != GeometryTool::none) { // a geometry tool takes the left mouse
+        geometry_.mouse(ctx_.editor, ctx_.log, view_, mouse, hovered, shown_fn());
+        hovered_handle_ = Handle::None;
         return;
     }
     if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) click(mouse);

@@ -2,7 +2,7 @@
 // under Xvfb): Numpad 0 splits the viewport into top, front, side and perspective panes; a click selects in
 // an orthographic pane, the gizmo drags in another, a box select works in a third, each pane becoming the
 // active one; idle panes are not drawn again; the panes follow a window resize and still pick; Numpad 0
-// goes back to one view. The Analyze
+// goes back to one view; there the draw tool drags a box and the clip tool cuts it. The Analyze
 // button plays the level with the bot in the background, saves the report beside the level and marks it
 // stale after an edit. The editor reports its state in --status-file every frame; the test waits on that.
 #include "game/playtest_report.h"
@@ -13,6 +13,7 @@
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <fstream>
 
 using namespace ks;
@@ -147,6 +148,57 @@ TEST_CASE("editor 4-up view: select, drag the gizmo and box select in different 
     st = s.wait("back to one view", [](const json& j) { return j["quad"] == false; });
     CHECK(st["view"] == "Top");
     CHECK(st["panes"].empty());
+
+    // The draw tool (B): a box dragged in the top view, its size shown live, placed as one undo step.
+    s.key("Escape");
+    s.key("b");
+    st = s.wait("the draw tool", [](const json& j) { return j["tool"]["active"] == "draw"; });
+    const size_t entities = st["entities"], undo_draw = st["undo"];
+    const json robot = st["screen"][std::to_string(kQuadRobot)], panel = st["screen"]["3"];
+    const json start{(robot[0].get<float>() + panel[0].get<float>()) * 0.5f + 30.0f,
+                     (robot[1].get<float>() + panel[1].get<float>()) * 0.5f};
+    s.xdo("mousemove " + s.at(start));
+    s.frames(2);
+    s.xdo("mousedown 1");
+    s.frames(2);
+    s.xdo("mousemove " + s.at(json{start[0].get<float>() + 90.0f, start[1].get<float>() + 70.0f}));
+    st = s.wait("the box's live dimensions", [](const json& j) {
+        return j["tool"]["draw"]["stage"] == "dragging" && j["tool"]["draw"].contains("dimensions") &&
+               j["tool"]["draw"]["dimensions"][0].get<double>() > 0.0 &&
+               j["tool"]["draw"]["dimensions"][2].get<double>() > 0.0;
+    });
+    CHECK(st["tool"]["labels"].size() >= 4); // width x depth x height, and the three edges
+    const double width = st["tool"]["draw"]["dimensions"][0];
+    s.xdo("mouseup 1");
+    st = s.wait("the box placed", [&](const json& j) {
+        return j["entities"] == entities + 1 && j["undo"] == undo_draw + 1 &&
+               j["tool"]["draw"]["stage"] == "idle";
+    });
+    CHECK(st["undo_name"] == "Place box brush");
+    REQUIRE(st["selection"].size() == 1);
+
+    // The clip tool (C): two clicks across the new box in the top view, Keep (front), Apply.
+    s.key("c");
+    st = s.wait("the clip tool", [](const json& j) { return j["tool"]["active"] == "clip"; });
+    const float across = start[0].get<float>() + 45.0f;
+    s.click(json{across, start[1].get<float>() + 20.0f});
+    s.wait("one clip point", [](const json& j) { return j["tool"]["clip"]["points"] == 1; });
+    s.click(json{across, start[1].get<float>() + 50.0f});
+    st = s.wait("the clip plane previewed", [](const json& j) {
+        return j["tool"]["clip"]["points"] == 2 && j["tool"]["clip"].contains("plane") &&
+               j["tool"]["problem"] == "";
+    });
+    CHECK(std::abs(st["tool"]["clip"]["plane"][0].get<double>()) == doctest::Approx(1.0)); // across x
+    s.click(st["spots"]["tool.keep"]); // the bar's Keep button, as Tab does
+    st = s.wait("keep front", [](const json& j) { return j["tool"]["clip"]["keep"] == "front"; });
+    s.click(st["spots"]["tool.apply"]); // the bar's Apply button, as Enter does
+    st = s.wait("the box clipped", [&](const json& j) { return j["undo"] == undo_draw + 2; });
+    CHECK(st["undo_name"] == "Clip brushes");
+    CHECK(st["entities"] == entities + 1);
+    CHECK(st["tool"]["clip"]["points"] == 0);
+    CHECK(width > 0.0);
+    s.key("Escape"); // leaves the tool
+    s.wait("no tool", [](const json& j) { return j["tool"]["active"] == "none"; });
 }
 
 TEST_CASE("editor Analyze: the bot's runs in the background, the report beside the level, stale after an "
