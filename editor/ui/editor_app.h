@@ -41,6 +41,7 @@
 #include "view/picking.h"
 #include "view/player_start_marker.h"
 #include "view/quad_view.h"
+#include "view/section_view.h"
 #include "view/sound_marker.h"
 #include "view/view_camera.h"
 
@@ -99,6 +100,7 @@ struct Overlays {
         true; // in the axis views: walls, doors and stairs outlined, so the plan reads at a glance
     bool ceilings = false; // off by default: ceilings would hide the rooms from an editor camera above them
     bool links = true;     // arrows for the links between entities (the selection's bright and labelled)
+    bool section = false;  // front and side views: hide what is in front of the selection (section_view.h)
 };
 
 // What the next viewport click places: an entity type from the palette or a prefab from the Prefabs tab.
@@ -226,6 +228,7 @@ class EditorApp final : private WindowServices {
     PaneRect viewport_area_;                 // the single view's or the four panes' area (window pixels)
     std::optional<geometry::Ray> place_ray_; // the mouse's ray in the active view, while it is hovered
     Overlays overlays_;
+    std::optional<SectionCut> section_; // this frame's cut while overlays_.section is on
     Gizmo gizmo_;
     PatrolDrag patrol_drag_;
     Handle hovered_handle_ = Handle::None;

@@ -86,12 +86,14 @@ void patrol_route(render::DebugDraw& draw, const level::Patrol& patrol, bool sel
 
 bool EditorApp::shown(const level::Entity& e) const {
     if (editor_.doc().hidden.contains(e.id)) return false;
+    if (section_ && in_front_of_cut(*section_, e)) return false;
     const auto* floor = e.try_as<level::FloorProps>();
     return overlays_.ceilings || !floor || !floor->ceiling;
 }
 
 void EditorApp::rebuild_scene_if_changed() {
-    const std::uint64_t revision = editor_.revision() ^
+    section_ = overlays_.section ? section_cut(editor_, view_) : std::nullopt;
+    const std::uint64_t revision = editor_.revision() ^ section_key(section_) ^
                                    (static_cast<std::uint64_t>(editor_.doc().hidden.size()) << 48) ^
                                    (static_cast<std::uint64_t>(overlays_.ceilings) << 63);
     // While a continuous edit is in progress (a gizmo drag: an open history transaction; an inspector field
@@ -202,7 +204,7 @@ void EditorApp::draw_overlays() {
         const Vec3 p = place_point(*place_ray_);
         if (placing_.type) {
             level::Entity preview;
-            preview.position = placement_for(*placing_.type, p);
+            preview.position = placement_for(editor_.doc(), *placing_.type, p);
             preview.props = level::default_props(*placing_.type);
             const geometry::Obb box = entity_obb(preview);
             debug_.box(obb_transform(box), box.half, Vec4(0.4f, 1.0f, 0.5f, 0.9f));
@@ -465,7 +467,8 @@ void EditorApp::viewport_input(Vec2 origin, bool hovered) {
         if (placing_) {
             const geometry::Ray ray = view_.ray(mouse);
             if (placing_.type) {
-                auto placed = place(editor_, *placing_.type, placement_for(*placing_.type, place_point(ray)));
+                auto placed = place(editor_, *placing_.type,
+                                    placement_for(editor_.doc(), *placing_.type, place_point(ray)));
                 if (!placed) log_line("place: " + placed.error().str(), true);
             } else {
                 auto placed = place_prefab(editor_, placing_.prefab, place_point(ray), 0.0f);
