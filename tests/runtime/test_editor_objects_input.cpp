@@ -160,3 +160,91 @@ TEST_CASE("editor objects input: open the texture browser from the wall's textur
     REQUIRE(saved);
     CHECK(saved->find(kObjectsWall)->as<level::WallProps>().texture == "wood");
 }
+
+TEST_CASE(
+    "editor objects input: typed fields (Enter sets and leaves the field, Esc cancels only the typing, "
+    "Tab moves on, no errors while typing), Ctrl+D's copy one grid step along x, quick taps never lost") {
+    test::require_window_test_tools();
+    test::ScratchDir dir;
+    const auto level_file = test::write_file(dir / "objects_input.json", kObjectsLevel);
+    std::ofstream(dir / "select.kss") << "select " << kObjectsWall << "\n";
+    const auto status = dir / "status.json";
+    const test::PrivateDisplay display;
+    EditorProcess editor({"--level", level_file.string(), "--run", (dir / "select.kss").string(), "--width",
+                          "1280", "--height", "720", "--status-file", status.string()},
+                         {"XDG_CONFIG_HOME=" + (dir / "config").string()}, display);
+    Session s(status, editor, display);
+    json st = s.wait("the wall's fields", [](const json& j) {
+        return j["frame"] >= 2 && j.contains("primary") && j["spots"].contains("field.texture_scale") &&
+               j["spots"].contains("field.position.0") && j["spots"].contains("inspector.duplicate");
+    });
+    CHECK(st["primary"]["fields"]["texture_scale"] == "4");
+    const size_t undo_before = st["undo"], errors_before = st["error_lines"];
+    // A double-click types into a number field (its text selected, so typing replaces it).
+    auto type_into = [&](const json& spot) {
+        s.focus();
+        s.xdo("mousemove " + s.at(spot));
+        s.frames(2);
+        s.xdo("click --repeat 2 --delay 40 1");
+        return s.wait("typing into the field",
+                      [](const json& j) { return j["input"]["text_input"] == true; });
+    };
+
+    // "0.5" passes "0" and "0." (below the field's 0.01): nothing is set or logged until Enter.
+    type_into(st["spots"]["field.texture_scale"]);
+    s.type("0.5");
+    st = s.frames(2);
+    CHECK(st["primary"]["fields"]["texture_scale"] == "4");
+    CHECK(st["undo"] == undo_before);
+    s.key("Return");
+    st = s.wait("Enter set it and left the field", [](const json& j) {
+        return j["primary"]["fields"]["texture_scale"] == "0.5" && j["input"]["text_input"] == false &&
+               j["input"]["active_item"] == false;
+    });
+    CHECK(st["undo"] == undo_before + 1);
+    CHECK(st["error_lines"] == errors_before);
+
+    // Straight after Enter, a quick Ctrl+D tap (press and release between two frames) duplicates: the copy
+    // is one grid step along x, selected.
+    s.focus();
+    s.xdo("key --delay 0 ctrl+d");
+    st =
+        s.wait("the copy", [&](const json& j) { return j["entities"] == 4 && j["undo"] == undo_before + 2; });
+    const int copy = st["primary"]["id"];
+    CHECK(copy != kObjectsWall);
+    CHECK(st["primary"]["position"] == json::array({1, 0, -12}));
+    CHECK(st["primary"]["fields"]["texture_scale"] == "0.5");
+
+    // Esc drops what is being typed, and only that: the value set before stays.
+    type_into(st["spots"]["field.texture_scale"]);
+    s.type("7");
+    s.key("Escape");
+    st = s.wait("Esc left the field", [](const json& j) { return j["input"]["text_input"] == false; });
+    CHECK(st["primary"]["fields"]["texture_scale"] == "0.5");
+    CHECK(st["undo"] == undo_before + 2);
+    CHECK(st["selection"] == json::array({copy})); // the Esc went to the field, not to the selection
+
+    // Tab moves from x to y, setting x; Enter sets y.
+    type_into(st["spots"]["field.position.0"]);
+    s.type("3");
+    s.key("Tab");
+    st = s.wait("x set, typing y", [](const json& j) {
+        return j["primary"]["position"][0] == 3 && j["input"]["text_input"] == true;
+    });
+    s.type("2");
+    s.key("Return");
+    st = s.wait("y set", [](const json& j) {
+        return j["primary"]["position"] == json::array({3, 2, -12}) && j["input"]["text_input"] == false;
+    });
+    CHECK(st["undo"] == undo_before + 4);
+    CHECK(st["error_lines"] == errors_before);
+
+    // Quick taps: the right arrow nudges, E switches to the rotate gizmo, Delete deletes.
+    s.xdo("key --delay 0 Right");
+    st = s.wait("nudged", [](const json& j) { return j["primary"]["position"] == json::array({4, 2, -12}); });
+    s.xdo("key --delay 0 e");
+    st = s.wait("rotate mode", [](const json& j) { return j["gizmo"] == "Rotate"; });
+    s.xdo("key --delay 0 Delete");
+    st = s.wait("deleted", [](const json& j) { return j["entities"] == 3; });
+    CHECK(st["undo"] == undo_before + 6);
+}
