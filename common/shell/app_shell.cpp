@@ -212,9 +212,9 @@ int AppShell::run(const ShellHooks& hooks) {
         ImGui_ImplGlfw_NewFrame();
         feed_imgui_nav(gamepad_);
         ImGui::NewFrame();
-        release_seen_taps(); // this frame has seen the keys tapped since the last
         if (hooks.imgui) hooks.imgui(info);
         ImGui::Render();
+        release_seen_taps(); // this frame has seen the keys tapped since the last: let them go
         render::draw_imgui(ImGui::GetDrawData(), info.width, info.height);
 
         ++info.frame_index;

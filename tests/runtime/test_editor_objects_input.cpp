@@ -2,8 +2,10 @@
 // under Xvfb), as a designer uses them: click the player start in the top view, drag it with the gizmo's x
 // arrow and turn it with the yaw ring (each drag one undo step), Ctrl+Z; open the texture browser from the
 // selected wall's texture field, search, click a thumbnail (the wall's texture changes, one undo step),
-// close it, Ctrl+Z. The editor reports its state in --status-file every frame; the test waits on that, never
-// on time. Without a display or xdotool these tests fail: ./run.sh test provides both.
+// close it, Ctrl+Z; type into the wall's size (Enter sets and leaves the field, Esc drops only the typing,
+// Tab moves on, nothing logged while typing), Ctrl+D, and quick taps of Ctrl+D, an arrow, E and Delete.
+// The editor reports its state in --status-file every frame; the test waits on that, never on time.
+// Without a display or xdotool these tests fail: ./run.sh test provides both.
 #include "level/level_io.h"
 #include "runtime/editor_session.h"
 #include "runtime/screen_image.h"
@@ -175,37 +177,42 @@ TEST_CASE(
                          {"XDG_CONFIG_HOME=" + (dir / "config").string()}, display);
     Session s(status, editor, display);
     json st = s.wait("the wall's fields", [](const json& j) {
-        return j["frame"] >= 2 && j.contains("primary") && j["spots"].contains("field.texture_scale") &&
-               j["spots"].contains("field.position.0") && j["spots"].contains("inspector.duplicate");
+        return j["frame"] >= 2 && j.contains("primary") && j["spots"].contains("field.size.1") &&
+               j["spots"].contains("field.rotation.0") && j["spots"].contains("inspector.duplicate");
     });
-    CHECK(st["primary"]["fields"]["texture_scale"] == "4");
+    CHECK(st["primary"]["fields"]["size"] == "20,16,0.5");
     const size_t undo_before = st["undo"], errors_before = st["error_lines"];
-    // A double-click types into a number field (its text selected, so typing replaces it).
-    auto type_into = [&](const json& spot) {
+    // Ctrl+click types into a number (its text selected, so typing replaces it). Ctrl is held until a
+    // frame has seen it, and let go once the field is being typed into.
+    auto type_into = [&](const std::string& spot) {
         s.focus();
-        s.xdo("mousemove " + s.at(spot));
+        s.xdo("mousemove " + s.at(s.last()["spots"][spot]));
         s.frames(2);
-        s.xdo("click --repeat 2 --delay 40 1");
-        return s.wait("typing into the field",
-                      [](const json& j) { return j["input"]["text_input"] == true; });
+        s.xdo("keydown ctrl");
+        s.wait("Ctrl seen", [](const json& j) { return j["input"]["ctrl"] == true; });
+        s.xdo("click 1");
+        s.wait("typing into the field", [](const json& j) { return j["input"]["text_input"] == true; });
+        s.xdo("keyup ctrl");
+        return s.wait("Ctrl let go", [](const json& j) { return j["input"]["ctrl"] == false; });
     };
 
-    // "0.5" passes "0" and "0." (below the field's 0.01): nothing is set or logged until Enter.
-    type_into(st["spots"]["field.texture_scale"]);
+    // The height to "0.5": on the way "0" and "0." are below the field's 0.01 (and were set, refused and
+    // logged red at every key); nothing is set or logged until Enter.
+    type_into("field.size.1");
     s.type("0.5");
     st = s.frames(2);
-    CHECK(st["primary"]["fields"]["texture_scale"] == "4");
+    CHECK(st["primary"]["fields"]["size"] == "20,16,0.5");
     CHECK(st["undo"] == undo_before);
     s.key("Return");
     st = s.wait("Enter set it and left the field", [](const json& j) {
-        return j["primary"]["fields"]["texture_scale"] == "0.5" && j["input"]["text_input"] == false &&
+        return j["primary"]["fields"]["size"] == "20,0.5,0.5" && j["input"]["text_input"] == false &&
                j["input"]["active_item"] == false;
     });
     CHECK(st["undo"] == undo_before + 1);
     CHECK(st["error_lines"] == errors_before);
 
-    // Straight after Enter, a quick Ctrl+D tap (press and release between two frames) duplicates: the copy
-    // is one grid step along x, selected.
+    // Straight after Enter, a quick Ctrl+D tap (press and release back to back, between two frames)
+    // duplicates: the copy is one grid step along x, selected.
     s.focus();
     s.xdo("key --delay 0 ctrl+d");
     st =
@@ -213,37 +220,38 @@ TEST_CASE(
     const int copy = st["primary"]["id"];
     CHECK(copy != kObjectsWall);
     CHECK(st["primary"]["position"] == json::array({1, 0, -12}));
-    CHECK(st["primary"]["fields"]["texture_scale"] == "0.5");
+    CHECK(st["primary"]["fields"]["size"] == "20,0.5,0.5");
 
-    // Esc drops what is being typed, and only that: the value set before stays.
-    type_into(st["spots"]["field.texture_scale"]);
+    // Esc drops what is being typed, and only that: the value set before stays, and so does the selection.
+    type_into("field.size.1");
     s.type("7");
     s.key("Escape");
     st = s.wait("Esc left the field", [](const json& j) { return j["input"]["text_input"] == false; });
-    CHECK(st["primary"]["fields"]["texture_scale"] == "0.5");
+    CHECK(st["primary"]["fields"]["size"] == "20,0.5,0.5");
     CHECK(st["undo"] == undo_before + 2);
-    CHECK(st["selection"] == json::array({copy})); // the Esc went to the field, not to the selection
+    CHECK(st["selection"] == json::array({copy}));
 
-    // Tab moves from x to y, setting x; Enter sets y.
-    type_into(st["spots"]["field.position.0"]);
+    // Tab sets the width and moves on to the height; Enter sets the height.
+    type_into("field.size.0");
     s.type("3");
     s.key("Tab");
-    st = s.wait("x set, typing y", [](const json& j) {
-        return j["primary"]["position"][0] == 3 && j["input"]["text_input"] == true;
+    st = s.wait("the width set, typing the height", [](const json& j) {
+        return j["primary"]["fields"]["size"] == "3,0.5,0.5" && j["input"]["text_input"] == true;
     });
     s.type("2");
     s.key("Return");
-    st = s.wait("y set", [](const json& j) {
-        return j["primary"]["position"] == json::array({3, 2, -12}) && j["input"]["text_input"] == false;
+    st = s.wait("the height set", [](const json& j) {
+        return j["primary"]["fields"]["size"] == "3,2,0.5" && j["input"]["text_input"] == false;
     });
     CHECK(st["undo"] == undo_before + 4);
     CHECK(st["error_lines"] == errors_before);
 
     // Quick taps: the right arrow nudges, E switches to the rotate gizmo, Delete deletes.
+    s.focus();
     s.xdo("key --delay 0 Right");
-    st = s.wait("nudged", [](const json& j) { return j["primary"]["position"] == json::array({4, 2, -12}); });
+    s.wait("nudged", [](const json& j) { return j["primary"]["position"] == json::array({2, 0, -12}); });
     s.xdo("key --delay 0 e");
-    st = s.wait("rotate mode", [](const json& j) { return j["gizmo"] == "Rotate"; });
+    s.wait("rotate mode", [](const json& j) { return j["gizmo"] == "Rotate"; });
     s.xdo("key --delay 0 Delete");
     st = s.wait("deleted", [](const json& j) { return j["entities"] == 3; });
     CHECK(st["undo"] == undo_before + 6);
