@@ -38,16 +38,11 @@ std::optional<SelectionTexture> selection_texture(const Editor& editor) {
 }
 
 namespace {
-// What each number of a vector field is, shown in it ("yaw 90"), for the fields whose order is not x, y, z
-// read off the screen: a rotation is yaw, pitch, roll (about y, x, z), so 90 typed into what looked like
-// "y" laid a wall flat.
+// What each number of a vector field is, shown in it ("yaw 90"), for the field whose order is not x, y, z:
+// a rotation is yaw, pitch, roll (about y, x, z), so 90 typed into what looked like "y" laid a wall flat.
 const char* const* component_labels(const FieldDescriptor& field) {
     static const char* const kRotation[] = {"yaw", "pitch", "roll"};
-    static const char* const kPosition[] = {"x", "y", "z"};
-    if (field.kind != FieldKind::Vec3) return nullptr;
-    if (field.name == "rotation") return kRotation;
-    if (field.name == "position") return kPosition;
-    return nullptr;
+    return field.kind == FieldKind::Vec3 && field.name == "rotation" ? kRotation : nullptr;
 }
 
 // A vector's numbers, each labelled, as one group (like DragFloat3, with the same ids): side by side where
@@ -82,6 +77,16 @@ bool labelled_drag(const char* id, float* v, int n, const char* const* labels, f
     ImGui::PopID();
     ImGui::EndGroup();
     return changed;
+}
+
+// The spots `spot`.N of the numbers of the vector widget just drawn (equal thirds or halves of it).
+void vector_spots(UiSpots& spots, const std::string& spot, int n) {
+    if (!spots.enabled) return;
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    for (int i = 0; i < n; ++i)
+        spots.set(spot + "." + std::to_string(i),
+                  Vec2(lo.x + (hi.x - lo.x) * (static_cast<float>(i) + 0.5f) / static_cast<float>(n),
+                       (lo.y + hi.y) * 0.5f));
 }
 
 bool is_number(FieldKind kind) {
@@ -177,6 +182,8 @@ bool FieldWidgets::edit(const PanelContext& ctx, const FieldDescriptor& field, F
     }
     if (mixed) ImGui::PopStyleColor();
     if (field.kind != FieldKind::Texture) ctx.spots.here("field." + field.name);
+    if ((field.kind == FieldKind::Vec2 || field.kind == FieldKind::Vec3) && !component_labels(field))
+        vector_spots(ctx.spots, "field." + field.name, field.kind == FieldKind::Vec2 ? 2 : 3);
     if (!is_number(field.kind)) return changed;
     // Typed numbers are set once, when the typing ends (field_typing.h); dragged ones as they change.
     changed = typed_.filter(widget, ctx.editor.doc().selection, changed, value);
