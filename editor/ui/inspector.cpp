@@ -187,7 +187,9 @@ bool FieldWidgets::edit(const PanelContext& ctx, const FieldDescriptor& field, F
     if (!is_number(field.kind)) return changed;
     // Typed numbers are set once, when the typing ends (field_typing.h); dragged ones as they change.
     changed = typed_.filter(widget, ctx.editor.doc().selection, changed, value);
-    typed_commit_ = changed && !ImGui::IsItemActive(); // a drag changes only while it is held
+    // A drag changes only while it is held; a Tab from one number of a vector to the next sets the first
+    // while the next is being typed into.
+    typed_commit_ = changed && (!ImGui::IsItemActive() || typed_.typing(widget));
     if (typed_.typing(widget)) typing_hint(field);
     return changed;
 }
