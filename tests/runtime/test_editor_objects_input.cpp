@@ -246,10 +246,13 @@ TEST_CASE(
     CHECK(st["undo"] == undo_before + 4);
     CHECK(st["error_lines"] == errors_before);
 
-    // Quick taps: the right arrow nudges, E switches to the rotate gizmo, Delete deletes.
+    // Quick taps: two of the right arrow in one go (both could fall between two frames) nudge twice, E
+    // switches to the rotate gizmo, Delete deletes.
     s.focus();
-    s.xdo("key --delay 0 Right");
-    s.wait("nudged", [](const json& j) { return j["primary"]["position"] == json::array({2, 0, -12}); });
+    s.xdo("key --delay 0 Right Right");
+    s.wait("nudged twice", [](const json& j) {
+        return j["primary"]["position"] == json::array({3, 0, -12});
+    });
     s.xdo("key --delay 0 e");
     s.wait("rotate mode", [](const json& j) { return j["gizmo"] == "Rotate"; });
     s.xdo("key --delay 0 Delete");
