@@ -3,7 +3,6 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
-#include <algorithm>
 #include <array>
 #include <deque>
 
@@ -18,27 +17,35 @@ struct KeyEvent {
 GLFWwindow* g_window = nullptr;
 GLFWkeyfun g_imgui_key = nullptr;                // the callback this one sits in front of (ImGui's backend)
 std::array<bool, GLFW_KEY_LAST + 1> g_changed{}; // pressed or released since the last frame began
-std::deque<KeyEvent> g_waiting;                  // in arrival order: each waits for its key's next frame
+bool g_any_changed = false;                      // some key was
+std::deque<KeyEvent> g_waiting;                  // in arrival order, for a later frame
 
 bool known(int key) {
     return key >= 0 && key <= GLFW_KEY_LAST;
 }
 
-// Hands the event to ImGui; a press or release is the key's one change this frame.
+// Whether the next frame could not tell the event apart from what it already gets: a key changes once a
+// frame (a tap's release waits for the frame that sees it pressed), and a release waits while any key
+// changed this frame (a Ctrl let go in the frame D was pressed would make it see a plain D). Presses of
+// different keys go together (a chord).
+bool too_soon(const KeyEvent& e) {
+    if (e.action == GLFW_RELEASE) return g_any_changed;
+    return e.action == GLFW_PRESS && g_changed[static_cast<size_t>(e.key)];
+}
+
 void deliver(const KeyEvent& e) {
-    if (known(e.key) && e.action != GLFW_REPEAT) g_changed[static_cast<size_t>(e.key)] = true;
+    if (e.action != GLFW_REPEAT) g_changed[static_cast<size_t>(e.key)] = g_any_changed = true;
     if (g_imgui_key && g_window) g_imgui_key(g_window, e.key, e.scancode, e.action, e.mods);
 }
 
 void on_key(GLFWwindow* window, int key, int scancode, int action, int mods) {
     const KeyEvent e{key, scancode, action, mods};
-    // A second change of a key before a frame has seen the first waits; so does everything after a waiting
-    // event, so that a Ctrl let go after a tapped D is let go after it.
-    if (window == g_window && known(key) && (!g_waiting.empty() || g_changed[static_cast<size_t>(key)])) {
+    // Behind a waiting event everything waits, so events keep their order.
+    if (window == g_window && known(key) && (!g_waiting.empty() || too_soon(e))) {
         g_waiting.push_back(e);
         return;
     }
-    if (window == g_window) {
+    if (window == g_window && known(key)) {
         deliver(e);
     } else if (g_imgui_key) {
         g_imgui_key(window, key, scancode, action, mods);
@@ -51,6 +58,7 @@ void install_key_taps(GLFWwindow* window) {
     g_window = window;
     g_imgui_key = glfwSetKeyCallback(window, on_key);
     g_changed.fill(false);
+    g_any_changed = false;
     g_waiting.clear();
 }
 
@@ -64,13 +72,13 @@ void uninstall_key_taps(GLFWwindow* window) {
 
 void release_seen_taps() {
     g_changed.fill(false);
-    // In order, each key's next change, up to the first key that already changed: the next frame sees them.
-    while (!g_waiting.empty() && !g_changed[static_cast<size_t>(g_waiting.front().key)]) {
+    g_any_changed = false;
+    // In order, as many as the next frame can tell apart.
+    while (!g_waiting.empty() && !too_soon(g_waiting.front())) {
         deliver(g_waiting.front());
         g_waiting.pop_front();
     }
-    if (!g_waiting.empty() || std::any_of(g_changed.begin(), g_changed.end(), [](bool c) { return c; }))
-        glfwPostEmptyEvent(); // a frame soon: a key held down while idle would start repeating
+    if (g_any_changed) glfwPostEmptyEvent(); // that frame soon: a key held down while idle would repeat
 }
 
 } // namespace ks::shell
