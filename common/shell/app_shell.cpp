@@ -8,6 +8,7 @@
 #include "render/window_target.h"
 #include "shell/frame_pacing.h"
 #include "shell/gl_window.h"
+#include "shell/key_taps.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -98,6 +99,7 @@ Result<void> AppShell::init(const ShellConfig& config) {
     io.FontDefault = fonts_.body;
     ImGui::StyleColorsDark();
     ImGui_ImplGlfw_InitForOpenGL(window_, true);
+    install_key_taps(window_); // in front of the backend's key callback: quick taps are never lost
     render::init_imgui_renderer();
     imgui_ready_ = true;
     return ok();
@@ -106,6 +108,7 @@ Result<void> AppShell::init(const ShellConfig& config) {
 AppShell::~AppShell() {
     if (imgui_ready_) {
         render::shutdown_imgui_renderer();
+        uninstall_key_taps(window_);
         ImGui_ImplGlfw_Shutdown();
         ImGui::DestroyContext();
     }
@@ -211,6 +214,7 @@ int AppShell::run(const ShellHooks& hooks) {
         ImGui::NewFrame();
         if (hooks.imgui) hooks.imgui(info);
         ImGui::Render();
+        release_seen_taps(); // this frame has seen the keys tapped since the last: let them go
         render::draw_imgui(ImGui::GetDrawData(), info.width, info.height);
 
         ++info.frame_index;

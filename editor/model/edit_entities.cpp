@@ -89,7 +89,7 @@ Result<void> rename(Editor& editor, int id, std::string name) {
 
 Result<void> duplicate(Editor& editor, std::optional<Vec3> offset) {
     const Document& doc = editor.doc();
-    const Vec3 delta = offset.value_or(Vec3(doc.grid.step, 0.0f, doc.grid.step));
+    const Vec3 delta = offset.value_or(Vec3(doc.grid.step, 0.0f, 0.0f));
     if (!is_finite(delta)) return Error("duplicate: the offset must be finite numbers");
     auto change = std::make_unique<LevelChange>();
     std::vector<int> new_ids;

@@ -21,7 +21,8 @@ Result<void> set_field(Editor& editor, std::string_view name, const FieldValue& 
 Result<void> set_field_text(Editor& editor, std::string_view name, std::string_view text);
 Result<void> revert_field(Editor& editor, std::string_view name);
 Result<void> rename(Editor& editor, int id, std::string name);
-// Default offset: one grid step in x and z.
+// Default offset: one grid step along x, so a copy sits beside its original, selected,
+// and one coordinate (or one arrow key) moves it on.
 Result<void> duplicate(Editor& editor, std::optional<Vec3> offset = std::nullopt);
 Result<void> delete_selection(Editor& editor);
 Result<void> delete_entities(Editor& editor, const std::vector<int>& ids);

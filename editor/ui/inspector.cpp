@@ -4,9 +4,11 @@
 #include "model/edit_entities.h"
 #include "model/edit_selection.h"
 
+#include "ui/field_typing.h"
 #include "ui/panel_style.h"
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -35,12 +37,73 @@ std::optional<SelectionTexture> selection_texture(const Editor& editor) {
     return std::nullopt;
 }
 
+namespace {
+// What each number of a vector field is, shown in it ("yaw 90"), for the field whose order is not x, y, z:
+// a rotation is yaw, pitch, roll (about y, x, z), so 90 typed into what looked like "y" laid a wall flat.
+const char* const* component_labels(const FieldDescriptor& field) {
+    static const char* const kRotation[] = {"yaw", "pitch", "roll"};
+    return field.kind == FieldKind::Vec3 && field.name == "rotation" ? kRotation : nullptr;
+}
+
+// A vector's numbers, each labelled, as one group (like DragFloat3, with the same ids): side by side where
+// each shows its label and value whole, else one under the other (a robot's long field names leave the
+// numbers too little room for "yaw -90" in a row). Each number's centre is the spot `spot`.N.
+bool labelled_drag(const char* id, float* v, int n, const char* const* labels, float speed, float lo,
+                   float hi, UiSpots& spots, const std::string& spot) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float full = ImGui::CalcItemWidth();
+    const float each = (full - style.ItemInnerSpacing.x * static_cast<float>(n - 1)) / static_cast<float>(n);
+    bool in_a_row = true;
+    for (int i = 0; i < n; ++i) {
+        char text[64];
+        std::snprintf(text, sizeof text, "%s %g", labels[i], static_cast<double>(v[i]));
+        in_a_row = in_a_row && ImGui::CalcTextSize(text).x + style.FramePadding.x * 2 <= each;
+    }
+    bool changed = false;
+    ImGui::BeginGroup();
+    ImGui::PushID(id);
+    if (in_a_row) ImGui::PushMultiItemsWidths(n, full);
+    for (int i = 0; i < n; ++i) {
+        ImGui::PushID(i);
+        if (i > 0 && in_a_row) ImGui::SameLine(0, style.ItemInnerSpacing.x);
+        if (!in_a_row) ImGui::SetNextItemWidth(full);
+        char format[32];
+        std::snprintf(format, sizeof format, "%s %%g", labels[i]);
+        changed |= ImGui::DragFloat("", &v[i], speed, lo, hi, format, ImGuiSliderFlags_AlwaysClamp);
+        spots.here(spot + "." + std::to_string(i));
+        ImGui::PopID();
+        if (in_a_row) ImGui::PopItemWidth();
+    }
+    ImGui::PopID();
+    ImGui::EndGroup();
+    return changed;
+}
+
+// The spots `spot`.N of the numbers of the vector widget just drawn (equal thirds or halves of it).
+void vector_spots(UiSpots& spots, const std::string& spot, int n) {
+    if (!spots.enabled) return;
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    for (int i = 0; i < n; ++i)
+        spots.set(spot + "." + std::to_string(i),
+                  Vec2(lo.x + (hi.x - lo.x) * (static_cast<float>(i) + 0.5f) / static_cast<float>(n),
+                       (lo.y + hi.y) * 0.5f));
+}
+
+bool is_number(FieldKind kind) {
+    return kind == FieldKind::Float || kind == FieldKind::Int || kind == FieldKind::Vec2 ||
+           kind == FieldKind::Vec3;
+}
+} // namespace
+
 bool FieldWidgets::edit(const PanelContext& ctx, const FieldDescriptor& field, FieldValue& value,
                         bool mixed) {
     const char* id = "##value";
+    const ImGuiID widget = ImGui::GetID(id);
     bool changed = false;
+    typed_commit_ = false;
     if (mixed) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.6f, 0.6f, 0.65f, 1));
-    const float lo = static_cast<float>(field.min), hi = static_cast<float>(field.max);
+    // Inside the field's range as doubles: a float 0.01 is below 0.01 and would be refused.
+    const float lo = float_at_least(field.min), hi = float_at_most(field.max);
     const float speed = std::clamp((hi - lo) / 400.0f, 0.01f, 0.25f);
     switch (field.kind) {
     case FieldKind::Float: {
@@ -84,7 +147,10 @@ bool FieldWidgets::edit(const PanelContext& ctx, const FieldDescriptor& field, F
     }
     case FieldKind::Vec3: {
         Vec3 v = std::get<Vec3>(value);
-        changed = ImGui::DragFloat3(id, &v.x, speed, lo, hi, "%g", ImGuiSliderFlags_AlwaysClamp);
+        if (const char* const* labels = component_labels(field))
+            changed = labelled_drag(id, &v.x, 3, labels, speed, lo, hi, ctx.spots, "field." + field.name);
+        else
+            changed = ImGui::DragFloat3(id, &v.x, speed, lo, hi, "%g", ImGuiSliderFlags_AlwaysClamp);
         if (changed) value = v;
         break;
     }
@@ -115,6 +181,16 @@ bool FieldWidgets::edit(const PanelContext& ctx, const FieldDescriptor& field, F
         break;
     }
     if (mixed) ImGui::PopStyleColor();
+    if (field.kind != FieldKind::Texture) ctx.spots.here("field." + field.name);
+    if ((field.kind == FieldKind::Vec2 || field.kind == FieldKind::Vec3) && !component_labels(field))
+        vector_spots(ctx.spots, "field." + field.name, field.kind == FieldKind::Vec2 ? 2 : 3);
+    if (!is_number(field.kind)) return changed;
+    // Typed numbers are set once, when the typing ends (field_typing.h); dragged ones as they change.
+    changed = typed_.filter(widget, ctx.editor.doc().selection, changed, value);
+    // A drag changes only while it is held; a Tab from one number of a vector to the next sets the first
+    // while the next is being typed into.
+    typed_commit_ = changed && (!ImGui::IsItemActive() || typed_.typing(widget));
+    if (typed_.typing(widget)) typing_hint(field);
     return changed;
 }
 

@@ -3,6 +3,7 @@
 // applies to the selection; the Links and Objectives tabs, drawn by the window (they share the viewport's
 // pick mode); and the texture browser its texture field opens. A new section: one class and one line in
 // make_inspector_sections() (inspector_sections.cpp).
+#include "ui/field_typing.h"
 #include "ui/layout.h"
 #include "ui/panel_context.h"
 #include "ui/texture_browser.h"
@@ -29,7 +30,10 @@ std::optional<SelectionTexture> selection_texture(const Editor& editor);
 class FieldWidgets {
   public:
     // True when the user changed `value` this frame; `mixed`: the selected entities' values differ (grey).
+    // A number typed into is changed once, when the typing ends (Enter, Tab, a click away; Esc drops it).
     bool edit(const PanelContext& ctx, const FieldDescriptor& field, FieldValue& value, bool mixed);
+    // The last edit() was a typed number committed: its own undo step (nothing of a drag to merge with).
+    bool typed_commit() const { return typed_commit_; }
     TextureBrowser& texture_browser() { return texture_browser_; }
     const TextureBrowser& texture_browser() const { return texture_browser_; }
 
@@ -38,6 +42,8 @@ class FieldWidgets {
 
     std::vector<std::string> sound_names_; // offered by the sound lists (sound_widgets.h)
     TextureBrowser texture_browser_;
+    TypedEdit typed_; // numbers typed into, set when the typing ends
+    bool typed_commit_ = false;
 };
 
 // What the Properties tab's sections share this frame.

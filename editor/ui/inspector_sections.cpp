@@ -1,7 +1,7 @@
 // The inspector's Properties tab, section by section: the player start alone; the level settings when
 // nothing is selected; the group or prefab instance (group_inspector.cpp); the selection's title and field
-// table (common fields of several); a robot's patrol; a sound's Audition; the actions; the level settings
-// folded below. A new section is a class here (or in its own file) and one line in
+// the actions; the field table (common fields of several); a robot's patrol; a sound's Audition; the level
+// settings folded below. A new section is a class here (or in its own file) and one line in
 // make_inspector_sections().
 #include "ui/inspector_sections.h"
 #include "level/entity_shapes.h"
@@ -18,7 +18,7 @@
 namespace ks::editor::ui {
 
 namespace {
-const ImVec4 kStartText(0.45f, 1.0f, 0.55f, 1.0f); // the player start's green (viewport_lines.cpp)
+const ImVec4 kStartTitleText(0.45f, 1.0f, 0.55f, 1.0f); // the player start's green (viewport_lines.cpp)
 
 // The level's name, player start, settings fields, ambient Audition and on_start links.
 void level_settings(const PanelContext& ctx, FieldWidgets& widgets) {
@@ -57,7 +57,8 @@ void level_settings(const PanelContext& ctx, FieldWidgets& widgets) {
         FieldValue edited = *value;
         if (widgets.edit(ctx, field, edited, false)) {
             ctx.report(set_setting(editor, field.name, edited, "settings:" + field.name), field.name.c_str());
-            if (field.kind == FieldKind::Sound) editor.end_merging(); // each name picked is its own step
+            if (field.kind == FieldKind::Sound || widgets.typed_commit())
+                editor.end_merging(); // each name picked, each number typed, is its own step
         }
         if (ImGui::IsItemDeactivatedAfterEdit()) editor.end_merging();
         ImGui::PopID();
@@ -76,7 +77,7 @@ class PlayerStartSection final : public InspectorSection {
     bool applies(const InspectorSelection& s) const override { return s.entities.empty() && s.player_start; }
     void draw(const PanelContext& ctx, InspectorSelection&, FieldWidgets&) override {
         Editor& editor = ctx.editor;
-        ImGui::TextColored(kStartText, "Player start");
+        ImGui::TextColored(kStartTitleText, "Player start");
         ImGui::Separator();
         level::PlayerStart start = editor.level().player_start;
         ImGui::SetNextItemWidth(-90);
@@ -172,8 +173,9 @@ class FieldTableSection final : public InspectorSection {
             if (widgets.edit(ctx, field, edited, mixed)) {
                 ctx.report(set_field(editor, field.name, edited, "inspector:" + field.name),
                            field.name.c_str());
-                if (field.kind == FieldKind::Sound || field.kind == FieldKind::Texture)
-                    editor.end_merging(); // each name picked is its own step
+                if (field.kind == FieldKind::Sound || field.kind == FieldKind::Texture ||
+                    widgets.typed_commit())
+                    editor.end_merging(); // each name picked, each number typed, is its own step
             }
             if (ImGui::IsItemDeactivatedAfterEdit()) editor.end_merging(); // one drag = one step
             ImGui::TableNextColumn();
@@ -223,8 +225,14 @@ class PatrolSection final : public InspectorSection {
             return;
         }
         int mode = patrol.ping_pong() ? 1 : 0;
+        // Mode and wait share a row, so a robot's route fits under its fields.
+        const float half = (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x) * 0.5f;
+        ImGui::SetNextItemWidth(half - ImGui::CalcTextSize("mode").x - ImGui::GetStyle().ItemInnerSpacing.x);
         if (ImGui::Combo("mode", &mode, "loop\0ping_pong\0"))
             ctx.report(patrol_set_mode(editor, id, mode == 1 ? "ping_pong" : "loop"), "patrol mode");
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(half - ImGui::CalcTextSize("wait (s)").x -
+                                ImGui::GetStyle().ItemInnerSpacing.x);
         float wait = patrol.wait;
         if (ImGui::DragFloat("wait (s)", &wait, 0.05f, 0.0f, static_cast<float>(level::kMaxPatrolWait),
                              "%.2f"))
@@ -285,17 +293,21 @@ class SoundAuditionSection final : public InspectorSection {
     }
 };
 
-// Duplicate, Delete, Focus.
+// Duplicate, Delete, Focus: one row under the title, so a long field table never pushes them out of a
+// 1280 x 720 window.
 class SelectionActionsSection final : public InspectorSection {
   public:
     bool applies(const InspectorSelection& s) const override { return !s.entities.empty(); }
     void draw(const PanelContext& ctx, InspectorSelection&, FieldWidgets&) override {
-        ImGui::Spacing();
-        if (ImGui::Button("Duplicate")) ctx.report(duplicate(ctx.editor), "duplicate");
+        if (ImGui::SmallButton("Duplicate")) ctx.report(duplicate(ctx.editor), "duplicate");
+        ctx.spots.here("inspector.duplicate");
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("A copy one grid step along x, selected (Ctrl+D)");
         ImGui::SameLine();
-        if (ImGui::Button("Delete")) ctx.report(delete_selection(ctx.editor), "delete");
+        if (ImGui::SmallButton("Delete")) ctx.report(delete_selection(ctx.editor), "delete");
+        ctx.spots.here("inspector.delete");
         ImGui::SameLine();
-        if (ImGui::Button("Focus")) ctx.window.focus_selection();
+        if (ImGui::SmallButton("Focus")) ctx.window.focus_selection();
+        ImGui::Separator();
     }
 };
 
@@ -320,10 +332,10 @@ std::vector<std::unique_ptr<InspectorSection>> make_inspector_sections() {
     add<LevelSettingsSection>(sections);
     sections.push_back(make_group_section());
     add<SelectionTitleSection>(sections);
+    add<SelectionActionsSection>(sections); // above the fields: on screen however many fields follow
     add<FieldTableSection>(sections);
     add<PatrolSection>(sections);
     add<SoundAuditionSection>(sections);
-    add<SelectionActionsSection>(sections);
     add<FoldedLevelSettingsSection>(sections);
     return sections;
 }

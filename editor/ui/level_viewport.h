@@ -21,6 +21,7 @@
 #include "view/gizmo.h"
 #include "view/patrol_drag.h"
 #include "view/quad_view.h"
+#include "view/section_view.h"
 #include "view/view_camera.h"
 
 #include <nlohmann/json_fwd.hpp>
@@ -93,7 +94,9 @@ class LevelViewport {
     void end_box_select(Vec2 origin, Vec2 mouse);
     int pick(const geometry::Ray& ray) const;
     ShownFn shown_fn() const { // what the views show and picking finds
-        return [this](const level::Entity& e) { return overlays_.shows(ctx_.editor.doc(), e); };
+        return [this](const level::Entity& e) {
+            return overlays_.shows(ctx_.editor.doc(), e) && !(section_ && in_front_of_cut(*section_, e));
+        };
     }
     GizmoFrame gizmo_frame() const; // the selection's pivot and the rings' axes in the gizmo's space
     // The viewport's tools: a new tool is a member below and an entry in both lists.
@@ -117,6 +120,7 @@ class LevelViewport {
     Vec2 origin_{0.0f}, size_{640.0f, 360.0f}; // the active view's picture (window pixels)
     std::optional<geometry::Ray> place_ray_;   // the mouse's ray in the active view, while it is hovered
     Overlays overlays_;
+    std::optional<SectionCut> section_; // this frame's cut while overlays_.section is on
     ViewportLines lines_;
     LogicOverlay logic_overlay_; // trigger, spawner and message markers; link arrows
     Gizmo gizmo_;

@@ -21,7 +21,7 @@ void PlaceTool::input(const ToolInput& in) {
     const geometry::Ray ray = in.view.ray(in.mouse);
     const Vec3 at = place_point(in.editor.doc(), ray, in.shown, in.view.pivot);
     if (type_) {
-        auto placed = place(in.editor, *type_, placement_for(*type_, at));
+        auto placed = place(in.editor, *type_, placement_for(in.editor.doc(), *type_, at));
         if (!placed) in.log.line("place: " + placed.error().str(), true);
     } else {
         auto placed = place_prefab(in.editor, prefab_, at, 0.0f);
@@ -37,7 +37,7 @@ void PlaceTool::draw_lines(render::DebugDraw& debug, const ToolView& view) const
     const Vec3 p = place_point(view.editor.doc(), *view.mouse_ray, view.shown, view.view.pivot);
     if (type_) {
         level::Entity preview;
-        preview.position = placement_for(*type_, p);
+        preview.position = placement_for(view.editor.doc(), *type_, p);
         preview.props = level::default_props(*type_);
         draw_obb(debug, entity_obb(preview), Vec4(0.4f, 1.0f, 0.5f, 0.9f));
     } else if (const PrefabEntry* entry = view.editor.prefabs().find(prefab_); entry && entry->prefab) {

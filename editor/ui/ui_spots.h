@@ -22,6 +22,10 @@ class UiSpots {
         const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
         spots_[name] = Vec2((lo.x + hi.x) * 0.5f, (lo.y + hi.y) * 0.5f);
     }
+    // A point inside the last item (one number of a vector widget).
+    void set(const std::string& name, Vec2 at) {
+        if (enabled && !ImGui::IsWindowAppearing()) spots_[name] = at;
+    }
     const std::map<std::string, Vec2>& all() const { return spots_; }
 
   private:

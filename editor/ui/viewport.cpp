@@ -179,9 +179,21 @@ void LevelViewport::open_group_hint(ImDrawList* draw, Vec2 origin, Vec2 size, bo
     draw->PopClipRect();
 }
 
+namespace {
+// A small button that shows whether it is on (the highlight of the view buttons); true when clicked.
+bool toggle_button(const char* label, bool on) {
+    if (on) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.26f, 0.45f, 0.75f, 1));
+    const bool clicked = ImGui::SmallButton(label);
+    if (on) ImGui::PopStyleColor();
+    return clicked;
+}
+} // namespace
+
+// One row that fits the viewport's width at 1280 x 720 in every gizmo mode: the modes and views are small
+// buttons, and where even that is too wide "Perspective" shortens to "Persp"; Snap comes before the views.
 void LevelViewport::toolbar() {
     for (GizmoMode m : {GizmoMode::Move, GizmoMode::Rotate, GizmoMode::Scale}) {
-        if (ImGui::RadioButton(gizmo_mode_name(m), gizmo_.mode == m)) gizmo_.mode = m;
+        if (toggle_button(gizmo_mode_name(m), gizmo_.mode == m)) gizmo_.mode = m;
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Gizmo mode (W / E / R)");
         ImGui::SameLine();
     }
@@ -193,33 +205,37 @@ void LevelViewport::toolbar() {
             ImGui::SetTooltip("The rotate rings turn about the world's axes or the entity's own (X toggles)");
         ImGui::SameLine();
     }
-    ImGui::TextDisabled("|");
-    for (ViewMode v : {ViewMode::Perspective, ViewMode::Top, ViewMode::Front, ViewMode::Side}) {
-        ImGui::SameLine();
-        const bool active = view_.mode == v;
-        if (active) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.26f, 0.45f, 0.75f, 1));
-        if (ImGui::SmallButton(view_mode_name(v))) set_view(v);
-        if (active) ImGui::PopStyleColor();
-    }
+    // Snap and the grid steps before the view buttons: in a narrow window the view buttons (also on the
+    // numpad) run off the bar's end, never the Snap control.
+    GridSettings& grid = ctx_.editor.grid();
+    ImGui::Checkbox("Snap", &grid.snap);
+    ctx_.spots.here("toolbar.snap");
     ImGui::SameLine();
-    if (quad_.on) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.26f, 0.45f, 0.75f, 1));
-    if (ImGui::SmallButton("4-up")) toggle_quad();
-    if (quad_.on) ImGui::PopStyleColor();
+    ImGui::SetNextItemWidth(48);
+    ImGui::DragFloat("##grid", &grid.step, 0.05f, 0.05f, 16.0f, "%g u");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Grid step (origin snapping, nudge distance)");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(44);
+    ImGui::DragFloat("##rot", &grid.rotation_step, 0.5f, 1.0f, 90.0f, "%.0f\xc2\xb0");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Rotation snapping step");
+    constexpr ViewMode kViews[] = {ViewMode::Perspective, ViewMode::Top, ViewMode::Front, ViewMode::Side};
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float gap = style.ItemInnerSpacing.x; // between the view buttons: they read as one group
+    ImGui::SameLine(0, style.ItemSpacing.x * 2);
+    float full = ImGui::CalcTextSize("4-up").x + style.FramePadding.x * 2 + gap * 4;
+    for (ViewMode v : kViews) full += ImGui::CalcTextSize(view_mode_name(v)).x + style.FramePadding.x * 2;
+    const bool narrow = ImGui::GetContentRegionAvail().x < full;
+    for (ViewMode v : kViews) {
+        if (v != kViews[0]) ImGui::SameLine(0, gap);
+        const bool shorten = narrow && v == ViewMode::Perspective;
+        if (toggle_button(shorten ? "Persp" : view_mode_name(v), view_.mode == v)) set_view(v);
+        if (shorten && ImGui::IsItemHovered()) ImGui::SetTooltip("Perspective (Numpad 5)");
+    }
+    ImGui::SameLine(0, gap);
+    if (toggle_button("4-up", quad_.on)) toggle_quad();
     ctx_.spots.here("view_4up");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Top, front, side and perspective at once, each with its own camera (Numpad 0)");
-    ImGui::SameLine();
-    ImGui::TextDisabled("|");
-    ImGui::SameLine();
-    ImGui::Checkbox("Snap", &ctx_.editor.grid().snap);
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(70);
-    ImGui::DragFloat("##grid", &ctx_.editor.grid().step, 0.05f, 0.05f, 16.0f, "%.2f u");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Grid step (origin snapping, nudge distance)");
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(70);
-    ImGui::DragFloat("##rot", &ctx_.editor.grid().rotation_step, 0.5f, 1.0f, 90.0f, "%.0f deg");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Rotation snapping step");
 }
 
 } // namespace ks::editor::ui

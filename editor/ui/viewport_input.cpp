@@ -213,6 +213,10 @@ void LevelViewport::view_menu() {
     ImGui::MenuItem("All sound radii", nullptr, &overlays_.sound_radii);
     ImGui::MenuItem("Navigation mesh", nullptr, &overlays_.navmesh);
     ImGui::MenuItem("Ceilings", nullptr, &overlays_.ceilings);
+    ImGui::MenuItem("Section at the selection (front, side)", nullptr, &overlays_.section);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "In the front and side views, hide what stands between the camera and the selection");
     ImGui::MenuItem("Show links", nullptr, &overlays_.links);
 }
 

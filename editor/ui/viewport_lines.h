@@ -30,6 +30,7 @@ struct Overlays {
         true; // in the axis views: walls, doors and stairs outlined, so the plan reads at a glance
     bool ceilings = false; // off by default: ceilings would hide the rooms from an editor camera above them
     bool links = true;     // arrows for the links between entities (the selection's bright and labelled)
+    bool section = false;  // front and side views: hide what is in front of the selection (section_view.h)
 
     // Drawn and picked: not hidden, and not a ceiling while ceilings are off.
     bool shows(const Document& doc, const level::Entity& e) const;

@@ -33,7 +33,10 @@ void LevelViewport::sync_active_pane() {
 }
 
 void LevelViewport::rebuild_scene() {
-    scene_.rebuild_if_changed(ctx_.editor, overlays_.ceilings, shown_fn());
+    section_ = overlays_.section ? section_cut(ctx_.editor, view_) : std::nullopt;
+    scene_.rebuild_if_changed(ctx_.editor,
+                              section_key(section_) ^ (static_cast<std::uint64_t>(overlays_.ceilings) << 63),
+                              shown_fn());
 }
 
 // A view's lines in the render pass: the overlays', the tools' (where a click would place) and the entered

@@ -76,10 +76,9 @@ Result<void> ViewportScene::init(const std::string& gl_renderer) {
     return ok();
 }
 
-void ViewportScene::rebuild_if_changed(const Editor& editor, bool ceilings, const Shown& shown) {
-    const std::uint64_t revision = editor.revision() ^
-                                   (static_cast<std::uint64_t>(editor.doc().hidden.size()) << 48) ^
-                                   (static_cast<std::uint64_t>(ceilings) << 63);
+void ViewportScene::rebuild_if_changed(const Editor& editor, std::uint64_t shown_key, const Shown& shown) {
+    const std::uint64_t revision =
+        editor.revision() ^ (static_cast<std::uint64_t>(editor.doc().hidden.size()) << 48) ^ shown_key;
     // While a continuous edit is in progress (a gizmo drag: an open history transaction; an inspector field
     // dragged: an active ImGui item, its edits merged into one step) the scene is rebuilt every changed frame
     // without the light-map bake (most of a rebuild's cost on a software rasteriser); the bake runs once when

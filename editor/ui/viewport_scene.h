@@ -37,7 +37,9 @@ class ViewportScene {
 
     // A new level scene when the document, what is hidden or `ceilings` changed, or the light map still
     // waits for the end of a continuous edit.
-    void rebuild_if_changed(const Editor& editor, bool ceilings, const Shown& shown);
+    // `shown_key` changes whenever what `shown` lets through changes other than by the document (ceilings
+    // shown, the section's cut).
+    void rebuild_if_changed(const Editor& editor, std::uint64_t shown_key, const Shown& shown);
     void emit(); // the level's instances and lights for this frame's views (after the clip preview's pose)
     // `view` into the single view's target of width x height pixels, unless its picture would not change.
     void render_single(const ViewCamera& view, int width, int height, const DrawLines& lines);

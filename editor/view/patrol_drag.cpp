@@ -45,7 +45,10 @@ std::string PatrolDrag::drag(Editor& editor, const ViewCamera& view, Vec2 mouse)
     if (!hit_) return {};
     const auto on_plane = plane_point(view.ray(mouse), start_, kUp);
     if (!on_plane) return {}; // the plane is edge-on or behind: keep the point where it is
-    const Vec3 moved = start_ + (*on_plane - grab_);
+    // With Snap on, the point lands on the grid in x and z (as a palette click does); its height is kept.
+    const GridSettings& grid = editor.doc().grid;
+    const Vec3 free = start_ + (*on_plane - grab_);
+    const Vec3 moved(grid.snap_value(free.x), free.y, grid.snap_value(free.z));
     auto r = patrol_move(editor, hit_->robot_id, hit_->index, moved, merge_key_);
     return r ? std::string() : "patrol drag: " + r.error().str();
 }

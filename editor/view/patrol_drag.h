@@ -1,8 +1,9 @@
 #pragma once
 // Dragging a robot's patrol point in the viewport: the point of the selected robots' routes nearest the
 // cursor (within a few pixels) is picked, then moved on the horizontal plane through it, so it keeps its
-// height on the floor; the whole drag is one undo step (patrol_move, edit_patrols.h, with one merge key per
-// drag). Window-free, like the gizmo: tests drive it with a ViewCamera.
+// height on the floor, its x and z on the grid while Snap is on; the whole drag is one undo step
+// (patrol_move, edit_patrols.h, with one merge key per drag). Window-free, like the gizmo: tests drive it
+// with a ViewCamera.
 #include "model/editor.h"
 #include "view/view_camera.h"
 

@@ -66,8 +66,29 @@ Vec3 place_point(const Document& doc, const geometry::Ray& ray, const ShownFn& s
     return Vec3(doc.grid.snap_value(p.x), p.y, doc.grid.snap_value(p.z));
 }
 
-Vec3 placement_for(level::EntityType type, const Vec3& surface) {
-    return type == level::EntityType::Sound ? surface + Vec3(0, kSoundPlaceHeight, 0) : surface;
+std::optional<float> overhead_height(const Document& doc, const Vec3& surface) {
+    // From just above the surface, so the slab clicked on is not its own ceiling.
+    const geometry::Ray up{surface + Vec3(0, 0.05f, 0), Vec3(0, 1, 0)};
+    float best_t = 1e30f;
+    for (const auto& e : doc.level.entities) {
+        if (!is_surface(e.type())) continue;
+        const float t = ray_distance(e, up);
+        if (t > 0.0f && t < best_t) best_t = t; // 0: the ray starts inside it (a wall clicked on its face)
+    }
+    if (best_t >= 1e29f) return std::nullopt;
+    return up.origin.y + best_t;
+}
+
+Vec3 placement_for(const Document& doc, level::EntityType type, const Vec3& surface) {
+    switch (type) {
+    case level::EntityType::Sound:
+        return surface + Vec3(0, kSoundPlaceHeight, 0);
+    case level::EntityType::TopLight:
+        return Vec3(surface.x, overhead_height(doc, surface).value_or(surface.y + kTopLightPlaceHeight),
+                    surface.z);
+    default:
+        return surface;
+    }
 }
 
 } // namespace ks::editor

@@ -7,6 +7,7 @@
 #include "view/view_camera.h"
 
 #include <functional>
+#include <optional>
 
 namespace ks::editor {
 
@@ -32,8 +33,15 @@ Vec3 place_point(const Document& doc, const geometry::Ray& ray, const ShownFn& s
 // How far above the surface a palette click puts a sound emitter: its position is the point the sound
 // comes from, so it goes about where a machine's noise would, and its marker clears the floor.
 inline constexpr float kSoundPlaceHeight = 2.0f;
+// Where a top light goes when nothing is overhead: as high as a default wall (its fixture at the wall's top).
+inline constexpr float kTopLightPlaceHeight = 16.0f;
+// The height of what is overhead at `surface`: the underside of the nearest ceiling, floor, stair, wall
+// (a lintel) or brush straight above it (hidden ones too: the game has them), if any.
+std::optional<float> overhead_height(const Document& doc, const Vec3& surface);
 // The position an entity of `type` gets for a palette click whose place_point is `surface`: the surface
-// point itself (a bottom centre) for every type but the sound emitter.
-Vec3 placement_for(level::EntityType type, const Vec3& surface);
+// point itself (a bottom centre) for the types that stand on it; a sound emitter kSoundPlaceHeight above
+// it; a top light (its position is the ceiling fixture's) under what is overhead, else
+// kTopLightPlaceHeight above the surface.
+Vec3 placement_for(const Document& doc, level::EntityType type, const Vec3& surface);
 
 } // namespace ks::editor

@@ -51,7 +51,7 @@ TEST_CASE("properties: multi-selection edits common fields; revert to default") 
     REQUIRE(set_field_text(ed, "kind", "shield").ok());
 }
 
-TEST_CASE("duplicate gives new ids after next_id, offset by a grid step, and selects the copies") {
+TEST_CASE("duplicate gives new ids after next_id, offset by one grid step along x, and selects the copies") {
     Editor ed;
     ed.grid().step = 2.0f;
     int a = *place(ed, EntityType::Robot, {0, 0, 0}, 0, "R1");
@@ -64,8 +64,8 @@ TEST_CASE("duplicate gives new ids after next_id, offset by a grid step, and sel
     CHECK(copy_a.id == 3); // level order, not selection order
     CHECK(copy_b.id == 4);
     CHECK(copy_a.name == "R1");
-    CHECK(copy_a.position == Vec3(2, 0, 2));
-    CHECK(copy_b.position == Vec3(6, 0, 2));
+    CHECK(copy_a.position == Vec3(2, 0, 0)); // one step along x only: y and z are kept
+    CHECK(copy_b.position == Vec3(6, 0, 0));
     CHECK(ed.level().next_id == 5);
     CHECK(ed.doc().selection == std::vector<int>{3, 4});
     CHECK(ed.history().undo_name() == "Duplicate 2 entities");

@@ -49,3 +49,31 @@ TEST_CASE("a selected robot's patrol point is picked under the cursor and dragge
     REQUIRE(editor.undo());
     CHECK(editor.level().find(robot)->as<level::RobotProps>().patrol.points[1] == Vec3(10, 0, -5));
 }
+
+TEST_CASE("a dragged patrol point lands on the grid with Snap on, and anywhere with Snap off") {
+    Editor editor;
+    editor.grid().step = 2.0f;
+    const int robot = *place(editor, level::EntityType::Robot, Vec3(0, 0, 0));
+    REQUIRE(patrol_add(editor, robot, Vec3(0, 0, 0)).ok());
+    REQUIRE(patrol_add(editor, robot, Vec3(10, 0, -6)).ok());
+    REQUIRE(select(editor, {robot}).ok());
+    const ViewCamera view = top_view();
+    Vec2 at, target;
+    REQUIRE(view.project(Vec3(10, 0, -6), at));
+    REQUIRE(view.project(Vec3(13.3f, 0, -4.6f), target)); // between grid lines in x and z
+    auto point = [&] { return editor.level().find(robot)->as<level::RobotProps>().patrol.points[1]; };
+
+    PatrolDrag drag;
+    drag.begin(editor, view, PatrolPointHit{robot, 1}, at);
+    CHECK(drag.drag(editor, view, target).empty());
+    drag.end();
+    CHECK(point() == Vec3(14, 0, -4)); // the nearest grid point of step 2, height kept
+
+    editor.grid().snap = false;
+    REQUIRE(view.project(Vec3(14, 0, -4), at));
+    drag.begin(editor, view, PatrolPointHit{robot, 1}, at);
+    CHECK(drag.drag(editor, view, target).empty());
+    drag.end();
+    CHECK(point().x == doctest::Approx(13.3f).epsilon(0.01));
+    CHECK(point().z == doctest::Approx(-4.6f).epsilon(0.01));
+}

@@ -85,3 +85,34 @@ TEST_CASE("placing lands on the surface under the cursor, snapped; else the grou
     CHECK(in_plane.y == doctest::Approx(7.3f).epsilon(1e-3));
     CHECK(in_plane.z == doctest::Approx(4.0f));
 }
+
+TEST_CASE(
+    "palette placement heights: a top light under the ceiling, a sound above the floor, the rest on it") {
+    Editor editor;
+    editor.grid().step = 1.0f;
+    REQUIRE(place(editor, level::EntityType::Floor, Vec3(0, 0, 0)).ok()); // 20 x 20 at y = 0
+    const int ceiling = *place(editor, level::EntityType::Floor, Vec3(0, 12, 0));
+    REQUIRE(set_field(editor, "ceiling", FieldValue(true)).ok());
+    REQUIRE(set_field(editor, "size", FieldValue(Vec2(8, 8))).ok()); // over x, z in -4 .. 4 only
+    const Document& doc = editor.doc();
+    const Vec3 under(2, 0, 1), open_sky(8, 0, 8);
+    using level::EntityType;
+
+    // Under the ceiling the fixture sits on its underside; elsewhere a default wall's height up.
+    REQUIRE(overhead_height(doc, under));
+    CHECK(*overhead_height(doc, under) == doctest::Approx(12.0f));
+    CHECK_FALSE(overhead_height(doc, open_sky));
+    CHECK(placement_for(doc, EntityType::TopLight, under) == Vec3(2, 12, 1));
+    CHECK(placement_for(doc, EntityType::TopLight, open_sky) == Vec3(8, kTopLightPlaceHeight, 8));
+    // A ceiling hidden in the editor (the default) is still where the lamp hangs in the game.
+    REQUIRE(set_hidden(editor, ceiling, true).ok());
+    CHECK(placement_for(doc, EntityType::TopLight, under) == Vec3(2, 12, 1));
+    // A lintel over a doorway is overhead too.
+    REQUIRE(place(editor, EntityType::Wall, Vec3(8, 10, 8)).ok());
+    CHECK(placement_for(doc, EntityType::TopLight, open_sky).y == doctest::Approx(10.0f));
+
+    CHECK(placement_for(doc, EntityType::Sound, under) == under + Vec3(0, kSoundPlaceHeight, 0));
+    for (EntityType type : level::all_types()) // every other type stands on the surface (its bottom centre)
+        if (type != EntityType::TopLight && type != EntityType::Sound)
+            CHECK_MESSAGE(placement_for(doc, type, under) == under, std::string(level::type_name(type)));
+}

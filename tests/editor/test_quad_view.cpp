@@ -1,11 +1,13 @@
 // The 4-up view without a window (view/quad_view.h): four equal panes that tile the viewport at any size,
 // the pane under a point, each pane's own camera (entering takes the single view into its pane, leaving
 // gives back the active one, the others keep their pan and zoom), and picking through every pane's camera
-// at its own pane size, before and after a resize.
+// at its own pane size, before and after a resize. And the axis views' section (view/section_view.h).
 #include "editor_test_util.h"
 #include "model/edit_entities.h"
+#include "model/edit_selection.h"
 #include "view/picking.h"
 #include "view/quad_view.h"
+#include "view/section_view.h"
 
 using namespace ks;
 using namespace ks::editor;
@@ -137,4 +139,54 @@ TEST_CASE("fit_box fills an axis pane with the two sides of the box it shows, at
             const Vec2 filled = (max_px - min_px) / pane;
             CHECK(std::max(filled.x, filled.y) == doctest::Approx(1.0f / 1.1f).epsilon(0.02));
         }
+}
+
+TEST_CASE("the section hides what stands between the front or side camera and the selection, nothing else") {
+    Editor editor;
+    editor.grid().step = 1.0f;
+    using level::EntityType;
+    const int floor = *place(editor, EntityType::Floor, Vec3(0, 0, 0)); // 20 x 20: z and x in -10 .. 10
+    const int south = *place(editor, EntityType::Wall, Vec3(0, 0, 10));
+    const int north = *place(editor, EntityType::Wall, Vec3(0, 0, -10));
+    const int east = *place(editor, EntityType::Wall, Vec3(10, 0, 0), 90.0f);
+    const int robot = *place(editor, EntityType::Robot, Vec3(0, 0, 0)); // selected
+    auto entity = [&](int id) { return *editor.level().find(id); };
+    ViewCamera view;
+    view.set_viewport(Vec2(960, 540));
+
+    view.set_view(ViewMode::Front, Vec3(0.0f), 40.0f); // looking along -z: the south wall is in front
+    auto cut = section_cut(editor, view);
+    REQUIRE(cut);
+    CHECK(in_front_of_cut(*cut, entity(south)));
+    CHECK_FALSE(in_front_of_cut(*cut, entity(north)));
+    CHECK_FALSE(in_front_of_cut(*cut, entity(floor))); // reaches behind the robot
+    CHECK_FALSE(in_front_of_cut(*cut, entity(east)));  // beside it, not in front
+    CHECK_FALSE(in_front_of_cut(*cut, entity(robot)));
+
+    view.set_view(ViewMode::Side, Vec3(0.0f), 40.0f); // looking along -x: the east wall is in front
+    cut = section_cut(editor, view);
+    REQUIRE(cut);
+    CHECK(in_front_of_cut(*cut, entity(east)));
+    CHECK_FALSE(in_front_of_cut(*cut, entity(south)));
+    CHECK_FALSE(in_front_of_cut(*cut, entity(robot)));
+    const std::uint64_t side_key = section_key(cut);
+    CHECK(side_key != 0);
+
+    // The cut follows the selection, and is the picture's key.
+    REQUIRE(select(editor, {south}).ok());
+    view.set_view(ViewMode::Front, Vec3(0.0f), 40.0f);
+    cut = section_cut(editor, view);
+    REQUIRE(cut);
+    CHECK_FALSE(in_front_of_cut(*cut, entity(south)));
+    CHECK(section_key(cut) != side_key);
+
+    // No cut in the perspective and top views, or with nothing selected.
+    view.set_view(ViewMode::Perspective, Vec3(0.0f), 40.0f);
+    CHECK_FALSE(section_cut(editor, view));
+    view.set_view(ViewMode::Top, Vec3(0.0f), 40.0f);
+    CHECK_FALSE(section_cut(editor, view));
+    view.set_view(ViewMode::Front, Vec3(0.0f), 40.0f);
+    editor.clear_selection();
+    CHECK_FALSE(section_cut(editor, view));
+    CHECK(section_key(std::nullopt) == 0);
 }

@@ -54,7 +54,8 @@ TEST_CASE("a palette click places a sound emitter above the surface under the cu
     const Vec3 surface = place_point(editor.doc(), top.ray(cursor), all_shown, Vec3(0.0f));
     CHECK(surface.y == doctest::Approx(0.0f));
     const size_t steps = editor.history().undo_count();
-    auto placed = place(editor, level::EntityType::Sound, placement_for(level::EntityType::Sound, surface));
+    auto placed = place(editor, level::EntityType::Sound,
+                        placement_for(editor.doc(), level::EntityType::Sound, surface));
     REQUIRE(placed.ok());
     const level::Entity& e = *editor.level().find(*placed);
     CHECK(e.type() == level::EntityType::Sound);
@@ -64,7 +65,7 @@ TEST_CASE("a palette click places a sound emitter above the surface under the cu
     CHECK(editor.history().undo_count() == steps + 1);
     CHECK(editor.history().undo_name() == "Place sound");
     // Every other type lands on the surface itself.
-    CHECK(placement_for(level::EntityType::Robot, surface) == surface);
+    CHECK(placement_for(editor.doc(), level::EntityType::Robot, surface) == surface);
     REQUIRE(editor.undo());
     CHECK(editor.level().find(*placed) == nullptr);
     CHECK(sound_issues(editor).empty());

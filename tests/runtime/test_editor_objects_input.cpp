@@ -2,8 +2,10 @@
 // under Xvfb), as a designer uses them: click the player start in the top view, drag it with the gizmo's x
 // arrow and turn it with the yaw ring (each drag one undo step), Ctrl+Z; open the texture browser from the
 // selected wall's texture field, search, click a thumbnail (the wall's texture changes, one undo step),
-// close it, Ctrl+Z. The editor reports its state in --status-file every frame; the test waits on that, never
-// on time. Without a display or xdotool these tests fail: ./run.sh test provides both.
+// close it, Ctrl+Z; type into the wall's size (Enter sets and leaves the field, Esc drops only the typing,
+// Tab moves on, nothing logged while typing), Ctrl+D, and quick taps of Ctrl+D, an arrow, E and Delete.
+// The editor reports its state in --status-file every frame; the test waits on that, never on time.
+// Without a display or xdotool these tests fail: ./run.sh test provides both.
 #include "level/level_io.h"
 #include "runtime/editor_session.h"
 #include "runtime/screen_image.h"
@@ -159,4 +161,108 @@ TEST_CASE("editor objects input: open the texture browser from the wall's textur
     auto saved = level::load_level_file(level_file);
     REQUIRE(saved);
     CHECK(saved->find(kObjectsWall)->as<level::WallProps>().texture == "wood");
+}
+
+TEST_CASE(
+    "editor objects input: typed fields (Enter sets and leaves the field, Esc cancels only the typing, "
+    "Tab moves on, no errors while typing), Ctrl+D's copy one grid step along x, quick taps never lost") {
+    test::require_window_test_tools();
+    test::ScratchDir dir;
+    const auto level_file = test::write_file(dir / "objects_input.json", kObjectsLevel);
+    std::ofstream(dir / "select.kss") << "select " << kObjectsWall << "\n";
+    const auto status = dir / "status.json";
+    const test::PrivateDisplay display;
+    EditorProcess editor({"--level", level_file.string(), "--run", (dir / "select.kss").string(), "--width",
+                          "1280", "--height", "720", "--status-file", status.string()},
+                         {"XDG_CONFIG_HOME=" + (dir / "config").string()}, display);
+    Session s(status, editor, display);
+    json st = s.wait("the wall's fields", [](const json& j) {
+        return j["frame"] >= 2 && j.contains("primary") && j["spots"].contains("field.size.1") &&
+               j["spots"].contains("field.rotation.0") && j["spots"].contains("inspector.duplicate");
+    });
+    CHECK(st["primary"]["fields"]["size"] == "20,16,0.5");
+    const size_t undo_before = st["undo"], errors_before = st["error_lines"];
+    // Ctrl+click types into a number (its text selected, so typing replaces it). Ctrl is held until a
+    // frame has seen it, and let go once the field is being typed into.
+    auto type_into = [&](const std::string& spot) {
+        s.focus();
+        s.xdo("mousemove " + s.at(s.last()["spots"][spot]));
+        s.frames(2);
+        s.xdo("keydown ctrl");
+        s.wait("Ctrl seen", [](const json& j) { return j["input"]["ctrl"] == true; });
+        s.xdo("click 1");
+        s.wait("typing into the field", [](const json& j) { return j["input"]["text_input"] == true; });
+        s.xdo("keyup ctrl");
+        return s.wait("Ctrl let go", [](const json& j) { return j["input"]["ctrl"] == false; });
+    };
+
+    // Enter, Esc and Tab as quick taps (press and release back to back): seen for one frame, never held
+    // long enough for ImGui's key repeat to Tab twice on a slow frame.
+    auto tap = [&](const std::string& key) {
+        s.focus();
+        s.xdo("key --delay 0 " + key);
+    };
+
+    // The height to "0.5": on the way "0" and "0." are below the field's 0.01 (and were set, refused and
+    // logged red at every key); nothing is set or logged until Enter.
+    type_into("field.size.1");
+    s.type("0.5");
+    st = s.frames(2);
+    CHECK(st["primary"]["fields"]["size"] == "20,16,0.5");
+    CHECK(st["undo"] == undo_before);
+    tap("Return");
+    st = s.wait("Enter set it and left the field", [](const json& j) {
+        return j["primary"]["fields"]["size"] == "20,0.5,0.5" && j["input"]["text_input"] == false &&
+               j["input"]["active_item"] == false;
+    });
+    CHECK(st["undo"] == undo_before + 1);
+    CHECK(st["error_lines"] == errors_before);
+
+    // Straight after Enter, a quick Ctrl+D tap (press and release back to back, between two frames)
+    // duplicates: the copy is one grid step along x, selected.
+    s.focus();
+    s.xdo("key --delay 0 ctrl+d");
+    st =
+        s.wait("the copy", [&](const json& j) { return j["entities"] == 4 && j["undo"] == undo_before + 2; });
+    const int copy = st["primary"]["id"];
+    CHECK(copy != kObjectsWall);
+    CHECK(st["primary"]["position"] == json::array({1, 0, -12}));
+    CHECK(st["primary"]["fields"]["size"] == "20,0.5,0.5");
+
+    // Esc drops what is being typed, and only that: the value set before stays, and so does the selection.
+    type_into("field.size.1");
+    s.type("7");
+    tap("Escape");
+    st = s.wait("Esc left the field", [](const json& j) { return j["input"]["text_input"] == false; });
+    CHECK(st["primary"]["fields"]["size"] == "20,0.5,0.5");
+    CHECK(st["undo"] == undo_before + 2);
+    CHECK(st["selection"] == json::array({copy}));
+
+    // Tab sets the width and moves on to the height; Enter sets the height.
+    type_into("field.size.0");
+    s.type("3");
+    tap("Tab");
+    st = s.wait("the width set, typing the height", [](const json& j) {
+        return j["primary"]["fields"]["size"] == "3,0.5,0.5" && j["input"]["text_input"] == true;
+    });
+    s.type("2");
+    tap("Return");
+    st = s.wait("the height set", [](const json& j) {
+        return j["primary"]["fields"]["size"] == "3,2,0.5" && j["input"]["text_input"] == false;
+    });
+    CHECK(st["undo"] == undo_before + 4);
+    CHECK(st["error_lines"] == errors_before);
+
+    // Quick taps: two of the right arrow 40 ms apart (often within one frame) nudge twice, E
+    // switches to the rotate gizmo, Delete deletes.
+    s.focus();
+    s.xdo("key --delay 40 Right Right"); // 0 ms apart, GLFW takes the second for key repeat
+    s.wait("nudged twice", [](const json& j) {
+        return j["primary"]["position"] == json::array({3, 0, -12});
+    });
+    s.xdo("key --delay 0 e");
+    s.wait("rotate mode", [](const json& j) { return j["gizmo"] == "Rotate"; });
+    s.xdo("key --delay 0 Delete");
+    st = s.wait("deleted", [](const json& j) { return j["entities"] == 3; });
+    CHECK(st["undo"] == undo_before + 6);
 }
