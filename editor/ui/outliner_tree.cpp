@@ -24,7 +24,7 @@ namespace {
 const ImVec4 kGroupText(0.6f, 0.8f, 1.0f, 1);
 const ImVec4 kPrefabText(0.55f, 1.0f, 0.8f, 1);
 const ImVec4 kDimText(0.45f, 0.45f, 0.5f, 1);
-const ImVec4 kStartText(0.45f, 1.0f, 0.55f, 1.0f); // the player start's green
+const ImVec4 kOutlinerStartText(0.45f, 1.0f, 0.55f, 1.0f); // the player start's green
 
 bool mentions(const std::string& haystack, const char* needle) {
     if (!*needle) return true;
@@ -417,7 +417,7 @@ void Outliner::outliner_tab(const PanelContext& ctx) {
 // The player start's row at the top of the tree (player_start_ui.cpp draws its figure).
 void Outliner::player_start_row(const PanelContext& ctx) {
     if (type_filter_ >= 0 || !mentions("player start", search_)) return;
-    ImGui::PushStyleColor(ImGuiCol_Text, kStartText);
+    ImGui::PushStyleColor(ImGuiCol_Text, kOutlinerStartText);
     const bool clicked = ImGui::Selectable("     Player start", ctx.editor.doc().player_start_selected(),
                                            ImGuiSelectableFlags_AllowDoubleClick);
     ImGui::PopStyleColor();

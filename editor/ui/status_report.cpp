@@ -166,6 +166,7 @@ void EditorApp::write_status() {
     s["file"] = editor_.file_path().string();
     s["entities"] = editor_.level().entities.size();
     s["selection"] = editor_.doc().selection;
+    s["faces"] = face_status(editor_);
     s["undo"] = editor_.history().undo_count();
     s["undo_name"] = editor_.history().undo_name();
     s["redo"] = editor_.history().step_names().size() - editor_.history().undo_count();

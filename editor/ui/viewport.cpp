@@ -9,6 +9,7 @@
 #include "ui/layout.h"
 #include "ui/structure_actions.h"
 #include "ui/view_input.h"
+#include "view/face_picking.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -217,6 +218,7 @@ void EditorApp::draw_overlays() {
         }
     }
     draw_open_group_box();
+    draw_selected_faces(debug_, editor_.doc()); // face_inspector.h
 }
 
 // A speaker facing the camera (the renderer draws nothing for a sound: it is heard, not seen); selected, the
@@ -472,6 +474,12 @@ void EditorApp::viewport_input(Vec2 origin, bool hovered) {
                 if (!placed) log_line("place prefab: " + placed.error().str(), true);
             }
             if (!io.KeyShift) placing_.reset(); // Shift keeps placing
+            return;
+        }
+        if (io.KeyCtrl && io.KeyShift) { // a brush face joins or leaves the face selection (face_picking.h)
+            report(click_face(editor_, pick_face(editor_.doc(), view_.ray(mouse),
+                                                 [this](const level::Entity& e) { return shown(e); })),
+                   "face");
             return;
         }
         // A double click on a group's member enters the group (before the gizmo: the first click selected
