@@ -72,7 +72,8 @@ Result<void> edit_selected_faces(Editor& editor, const std::string& name, const 
         const brush::Brush& local = e->as<level::BrushProps>().brush;
         std::vector<brush::Face> anchored = local.anchored_faces();
         for (int face : faces) {
-            if (face < 0 || face >= static_cast<int>(anchored.size())) continue; // follow_face_selection keeps them in range
+            if (face < 0 || face >= static_cast<int>(anchored.size()))
+                continue; // follow_face_selection keeps them in range
             brush::FaceAttributes& at = anchored[static_cast<size_t>(face)].attributes;
             if (auto r = edit(local, face, at); !r)
                 return Error(name + ": " + face_label(*e, face) + ": " + r.error().message, Location{},
