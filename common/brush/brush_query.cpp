@@ -62,4 +62,9 @@ std::optional<RayEntry> ray_entry_face(const Brush& brush, const DVec3& origin, 
     return RayEntry{span.t_min, span.entry_face};
 }
 
+bool contains(const Brush& brush, const DVec3& point, double tolerance) {
+    return std::all_of(brush.faces().begin(), brush.faces().end(),
+                       [&](const Face& f) { return f.plane.signed_distance(point) <= tolerance; });
+}
+
 } // namespace ks::brush

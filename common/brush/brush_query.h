@@ -1,7 +1,8 @@
 #pragma once
-// Questions asked of a brush in the world by tools that place things on it or pick it: the top of the brush
-// over a point of the ground plane (what stands on it stands there) and where a ray enters it. Both clip a
-// line by every face's half-space, so they are exact for any convex brush, ramps and turned brushes too.
+// Questions asked of a brush in the world by tools that place things on it, pick it or check a level: the
+// top of the brush over a point of the ground plane (what stands on it stands there), where a ray enters it
+// (both clip a line by every face's half-space, so they are exact for any convex brush, ramps and turned
+// brushes too) and whether a point is inside (a door's jamb against a brush wall).
 #include "brush/brush.h"
 
 #include <optional>
@@ -23,5 +24,9 @@ struct RayEntry {
     int face = -1;
 };
 std::optional<RayEntry> ray_entry_face(const Brush& brush, const DVec3& origin, const DVec3& direction);
+
+// Whether `point` is inside the brush or within `tolerance` of every face's plane (a point just outside one
+// face but within tolerance counts as inside).
+bool contains(const Brush& brush, const DVec3& point, double tolerance = 0.0);
 
 } // namespace ks::brush

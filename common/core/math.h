@@ -26,6 +26,15 @@ constexpr float degrees(float radians) {
     return radians * (180.0f / kPi);
 }
 
+// The exact double value of each float component. Why not DVec3(v): GCC 12 at -O3 (its SLP vectorizer)
+// folds a double narrowed to float and widened back into the unrounded double for vectorised pairs, so
+// DVec3(Vec3(d)) can return d itself (seen: a position of -9999.99995 kept where the float is -10000);
+// reading the floats back through volatile memory keeps the rounding.
+inline DVec3 exact_double(const Vec3& v) {
+    volatile float c[3] = {v.x, v.y, v.z};
+    return {c[0], c[1], c[2]};
+}
+
 inline bool is_finite(float v) {
     return std::isfinite(v);
 }

@@ -375,8 +375,11 @@ const brush::Brush& default_brush();
 
 struct BrushProps {
     brush::Brush brush = default_brush();
+    bool ceiling = false; // casts no sun shadow; hidden in the editor's views while ceilings are hidden
     template <class V>
     void visit(V& v) {
+        v.field(ceiling, {"ceiling", "Acts as a ceiling: casts no sun shadow (the sun stands for the "
+                                     "simulator's overhead light) and is hidden with the editor's ceilings"});
         v.field(brush, {"faces", "The brush's face planes in the entity's frame, each with its material and "
                                  "texture mapping"});
     }

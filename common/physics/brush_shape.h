@@ -19,15 +19,6 @@ struct BrushBody {
     geometry::Transform transform; // position: the bounding-box centre in float; no rotation
 };
 
-// The exact double value of each float component. Why not DVec3(v): GCC 12 at -O3 (its SLP vectorizer)
-// folds a double narrowed to float and widened back into the unrounded double for vectorised pairs, so
-// DVec3(Vec3(d)) can return d itself (seen: a position of -9999.99995 kept where the float is -10000);
-// reading the floats back through volatile memory keeps the rounding.
-inline DVec3 exact_double(const Vec3& v) {
-    volatile float c[3] = {v.x, v.y, v.z};
-    return {c[0], c[1], c[2]};
-}
-
 // The polyhedron of `b` with coordinates relative to `origin` (planes and vertices shifted in double).
 Polyhedron brush_polyhedron(const brush::Brush& b, const DVec3& origin);
 

@@ -113,7 +113,7 @@ std::optional<SolidGeometry> surface_geometry(const level::Entity& e, AssetLibra
     return g;
 }
 // A brush entity's geometry: its brush placed in the world (level::world_brush), each material's faces one
-// surface; it casts the sun's shadow and occludes like a wall.
+// surface; it occludes like a wall and casts the sun's shadow unless it is a ceiling (as floors).
 std::optional<SolidGeometry> brush_geometry(const level::Entity& e, AssetLibrary& assets) {
     auto world = level::world_brush(e);
     if (!world.ok()) {
@@ -122,6 +122,7 @@ std::optional<SolidGeometry> brush_geometry(const level::Entity& e, AssetLibrary
     }
     BrushMesh built = build_brush_mesh(*world);
     SolidGeometry g;
+    g.casts_shadow = !e.as<level::BrushProps>().ceiling;
     for (const auto& range : built.materials)
         g.parts.push_back({&assets.surface(range.material), range.first_polygon, range.polygon_count});
     g.mesh = std::move(built.mesh);

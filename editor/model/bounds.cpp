@@ -88,8 +88,12 @@ std::optional<SupportSurface> SupportSurface::of(const Entity& entity) {
     if (type != level::EntityType::Brush) return std::nullopt;
     auto world = level::world_brush(entity);
     if (!world) return std::nullopt;
+    return of_brush(entity, std::make_shared<const brush::Brush>(std::move(*world)));
+}
+
+SupportSurface SupportSurface::of_brush(const Entity& entity, std::shared_ptr<const brush::Brush> world) {
     SupportSurface surface(entity, entity_obb(entity));
-    surface.world_brush_ = std::make_shared<const brush::Brush>(std::move(*world));
+    surface.world_brush_ = std::move(world);
     return surface;
 }
 

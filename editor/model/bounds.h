@@ -37,6 +37,9 @@ class SupportSurface {
   public:
     // nullopt when `entity` is none of those (or a brush that cannot be placed in the world).
     static std::optional<SupportSurface> of(const level::Entity& entity);
+    // A brush entity's surface from its world brush made already (level::world_brush), so a caller that
+    // needs the brush for other questions builds it once.
+    static SupportSurface of_brush(const level::Entity& entity, std::shared_ptr<const brush::Brush> world);
     const level::Entity& entity() const { return *entity_; }
     const geometry::Obb& box() const { return box_; }
     // The walkable top at (x, z), if that point is over the surface (surface_height_at's rule for floors

@@ -1,5 +1,8 @@
 #include "model/validation.h"
 
+#include "brush/brush_csg.h"
+#include "brush/brush_query.h"
+#include "level/entity_shapes.h"
 #include "level/level_io.h"
 #include "level/texture_names.h"
 #include "model/logic_validation.h"
@@ -48,12 +51,20 @@ struct Placed {
     geometry::Aabb bounds;
 };
 
-// The level's walls and walkable surfaces (floors, stairs, brushes) with their boxes, indexed on the ground
-// plane.
+// A brush entity with its world brush, made once per validation.
+struct PlacedBrush {
+    const Entity* entity;
+    std::shared_ptr<const brush::Brush> brush;
+    geometry::Aabb bounds;
+};
+
+// The level's walls, brushes and walkable surfaces (floors, stairs, brushes) with their boxes, indexed on
+// the ground plane.
 struct Solids {
     std::vector<Placed> walls;
+    std::vector<PlacedBrush> brushes;
     std::vector<SupportSurface> supports;
-    XzGrid wall_grid, support_grid;
+    XzGrid wall_grid, brush_grid, support_grid;
     mutable std::vector<int> near; // query results, reused
 
     static std::vector<Placed> collect_walls(const Level& level) {
@@ -65,10 +76,24 @@ struct Solids {
         }
         return out;
     }
-    static std::vector<SupportSurface> collect_supports(const Level& level) {
+    static std::vector<PlacedBrush> collect_brushes(const Level& level) {
+        std::vector<PlacedBrush> out;
+        for (const auto& e : level.entities) {
+            if (e.type() != EntityType::Brush || !is_finite(e.position) || !is_finite(e.rotation)) continue;
+            auto world = level::world_brush(e);
+            if (!world) continue;
+            const geometry::Aabb bounds{Vec3(world->bounds_min()), Vec3(world->bounds_max())};
+            out.push_back({&e, std::make_shared<const brush::Brush>(std::move(*world)), bounds});
+        }
+        return out;
+    }
+    static std::vector<SupportSurface> collect_supports(const Level& level,
+                                                        const std::vector<PlacedBrush>& brushes) {
         std::vector<SupportSurface> out;
         for (const auto& e : level.entities)
-            if (auto surface = SupportSurface::of(e)) out.push_back(std::move(*surface));
+            if (e.type() != EntityType::Brush)
+                if (auto surface = SupportSurface::of(e)) out.push_back(std::move(*surface));
+        for (const PlacedBrush& b : brushes) out.push_back(SupportSurface::of_brush(*b.entity, b.brush));
         return out;
     }
     template <class T, class BoxOf>
@@ -79,15 +104,47 @@ struct Solids {
         return b;
     }
     explicit Solids(const Level& level)
-        : walls(collect_walls(level)), supports(collect_supports(level)),
+        : walls(collect_walls(level)), brushes(collect_brushes(level)),
+          supports(collect_supports(level, brushes)),
           wall_grid(bounds_of(walls, [](const Placed& p) { return p.bounds; })),
+          brush_grid(bounds_of(brushes, [](const PlacedBrush& p) { return p.bounds; })),
           support_grid(bounds_of(supports, [](const SupportSurface& s) { return s.box().aabb(); })) {}
     // Walls whose box may overlap `box`, in level order.
     const std::vector<int>& walls_near(const geometry::Aabb& box) const {
         wall_grid.query(box, near);
         return near;
     }
+    // Brushes whose bounds may overlap `box`, in level order.
+    const std::vector<int>& brushes_near(const geometry::Aabb& box) const {
+        brush_grid.query(box, near);
+        return near;
+    }
 };
+
+// The box as a brush (its six face planes), to ask whether a brush shares a volume with it.
+std::optional<brush::Brush> box_brush(const geometry::Obb& box) {
+    std::vector<brush::Face> faces;
+    for (int axis = 0; axis < 3; ++axis)
+        for (double sign : {-1.0, 1.0}) {
+            const DVec3 normal = sign * glm::normalize(DVec3(box.axes[axis]));
+            faces.push_back({{normal, glm::dot(normal, DVec3(box.center)) + double(box.half[axis])}, {}});
+        }
+    auto b = brush::Brush::from_faces(std::move(faces));
+    if (!b) return std::nullopt;
+    return std::move(*b);
+}
+
+// The first brush that shares a volume with `box` (more than touching it), if any.
+const PlacedBrush* brush_overlapping(const Solids& solids, const geometry::Obb& box) {
+    const auto cut = box_brush(box);
+    if (!cut) return nullptr;
+    for (int i : solids.brushes_near(box.aabb())) {
+        const PlacedBrush& b = solids.brushes[static_cast<size_t>(i)];
+        if (const auto common = brush::intersect(*b.brush, *cut); common && common->volume() > 1e-6)
+            return &b;
+    }
+    return nullptr;
+}
 
 struct Support {
     bool over_any = false;      // some floor or stair lies under or over (x, z)
@@ -236,8 +293,16 @@ void check_player_start(const Level& level, const Solids& solids, const Validati
             fix = {"Push out of the wall", fixes::MovePlayerStart{start.position + *delta}};
         add(IssueSeverity::Error, "is inside " + describe(*w.entity) + " (by " + num(ov.depth) + ")",
             std::move(fix));
-        break;
+        return;
     }
+    // Against brushes, the body above a step: a start on a ramp or at a platform's edge stands partly in
+    // its ground, which the support rule judges.
+    geometry::Obb upper = body;
+    const float lift = std::min(o.character.step_height, upper.half.y);
+    upper.center.y += lift / 2;
+    upper.half.y -= lift / 2;
+    if (const PlacedBrush* b = brush_overlapping(solids, upper))
+        add(IssueSeverity::Error, "is inside " + describe(*b->entity) + "; move it into the open", {});
 }
 
 void check_control_panels(const Level& level, std::vector<Issue>& out) {
@@ -321,6 +386,9 @@ void check_doors(const Level& level, const Solids& solids, std::vector<Issue>& o
             const Vec3 probe = door.center + door.axes[0] * (side * (d->width / 2 + 0.25f));
             for (int i : solids.walls_near(geometry::Aabb{probe, probe}))
                 if (solids.walls[static_cast<size_t>(i)].box.contains(probe, 0.05f)) return true;
+            for (int i : solids.brushes_near(geometry::Aabb{probe, probe}))
+                if (brush::contains(*solids.brushes[static_cast<size_t>(i)].brush, DVec3(probe), 0.05))
+                    return true;
             return false;
         };
         const bool left = wall_at(-1.0f), right = wall_at(1.0f);
@@ -341,6 +409,9 @@ void check_doors(const Level& level, const Solids& solids, std::vector<Issue>& o
                     break;
                 }
             }
+        if (problem.empty())
+            if (const PlacedBrush* b = brush_overlapping(solids, doorway))
+                problem = "is blocked by " + describe(*b->entity);
         if (!problem.empty())
             out.push_back({Rule::DoorGap,
                            IssueSeverity::Error,

@@ -7,6 +7,8 @@
 #include "model/editor.h"
 #include "render/level_scene.h"
 
+#include <nlohmann/json_fwd.hpp>
+
 namespace ks::editor::ui {
 
 class DojoPanel;
@@ -22,6 +24,7 @@ class ClipPreview {
     void draw(const Editor& editor, DojoPanel& dojo, Vec2 origin, Vec2 size);
     int posed_robot() const { return posed_robot_; }
     Vec2 toggle_centre() const { return toggle_centre_; }
+    void status(nlohmann::json& status) const; // "clip_preview"
 
   private:
     bool on_ = false;          // "Preview clip" on the selected robot

@@ -5,10 +5,17 @@
 #include "ui/dojo_panel.h"
 
 #include <imgui.h>
+#include <nlohmann/json.hpp>
 
 #include <cstdio>
 
 namespace ks::editor::ui {
+
+void ClipPreview::status(nlohmann::json& s) const {
+    s["clip_preview"] = {{"on", on_},
+                         {"robot", posed_robot_},
+                         {"toggle", nlohmann::json::array({toggle_centre_.x, toggle_centre_.y})}};
+}
 
 int ClipPreview::robot(const Editor& editor) {
     const auto& selection = editor.doc().selection;

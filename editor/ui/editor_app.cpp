@@ -1,6 +1,6 @@
 // The editor window's frame: start-up, layout, shortcuts and the title. The panels are their own objects
 // (inspector.h, outliner.h, prefab_palette.h, place_palette.h, bottom_panels.h, dojo_panel.h); the menus are
-// in menus.cpp, the file prompts in file_prompts.cpp, the viewport in viewport.cpp.
+// in menus.cpp, the file prompts in file_prompts.cpp, the viewport in level_viewport.h.
 #include "ui/editor_app.h"
 #include "model/edit_entities.h"
 #include "model/edit_files.h"
@@ -60,16 +60,7 @@ Result<void> EditorApp::init() {
     editor_.set_recent_files(&recent_);
     // The walk check builds a navigation mesh: in the window it must never hold up a frame.
     editor_.validation_options().background_reachability = true;
-    render::RendererSettings settings = render::renderer_settings_from_environment();
-    settings.msaa_samples = render::default_msaa_for(shell_.gl_renderer());
-    // Full resolution on software rasterisers too (the game's automatic choice there is 0.5): thin overlays
-    // (eye radii, grid, gizmo) at half resolution turn to stairs, and the viewport is about 40 % of the
-    // window (21.2-23.1 vs 17.6-22.3 ms per editor frame on llvmpipe: docs/performance.md, "Viewport
-    // resolution"). KS_RENDER_SCALE still overrides (automatic_render_scale).
-    settings.software_render_scale = 1.0f;
-    auto renderer = render::SceneRenderer::create(assets_.textures(), settings);
-    if (!renderer) return renderer.error();
-    renderer_ = std::move(*renderer);
+    if (auto r = scene_.init(shell_.gl_renderer()); !r) return r.error();
     if (options_.level) {
         if (auto r = open(editor_, *options_.level); !r) {
             log_line(r.error().str(), true);
@@ -80,7 +71,7 @@ Result<void> EditorApp::init() {
         if (auto offer = find_untitled_recovery(autosaver_.config())) editor_.offer_recovery(*offer);
     }
     dojo_ = std::make_unique<DojoPanel>(
-        assets_, *renderer_,
+        assets_, scene_.renderer(),
         DojoSetup{options_.dojo_file, options_.audition,
                   [this](const std::string& line, bool error) { log_line(line, error); }});
     dojo_tab_ = options_.start_in_dojo;
@@ -96,19 +87,20 @@ Result<void> EditorApp::init() {
             clip_preview_.turn_on();
         }
     }
-    overlays_.navmesh = options_.show_navmesh;
+    viewport_.overlays().navmesh = options_.show_navmesh;
     if (options_.inspector_tab) inspector_.select_tab(*options_.inspector_tab);
-    set_view(options_.view.value_or(ViewMode::Perspective)); // perspective: from above one corner
+    viewport_.set_view(options_.view.value_or(ViewMode::Perspective)); // perspective: from above one corner
     if (options_.camera) {
         const Result<PoseArgument> pose = parse_pose(*options_.camera);
         if (!pose)
             return Error("--camera '" + *options_.camera + "': " + pose.error().message, {},
                          pose.error().hint);
-        view_.camera.position = pose->position;
-        view_.camera.yaw = radians(pose->yaw_degrees);
-        view_.camera.pitch = radians(pose->pitch_degrees);
+        geometry::Camera& camera = viewport_.camera().camera;
+        camera.position = pose->position;
+        camera.yaw = radians(pose->yaw_degrees);
+        camera.pitch = radians(pose->pitch_degrees);
     }
-    if (options_.quad_view) toggle_quad();
+    if (options_.quad_view) viewport_.toggle_quad();
     analysis_.runs = options_.analysis_runs;
     analysis_.update(editor_.level(), editor_.revision(), false, editor_.file_path()); // the report beside it
     if (options_.report) {
@@ -128,7 +120,7 @@ Result<void> EditorApp::init() {
     if (auto r = apply_start_ui_options(); !r) return r.error();
     start_tab_ = options_.left_tab.value_or(LeftTab::Outliner);
     editor_.prefabs().rescan(); // the Prefabs tab lists them from the first frame
-    rebuild_scene_if_changed();
+    viewport_.rebuild_scene();
     g_app = this;
     glfwSetWindowCloseCallback(shell_.window(), [](GLFWwindow* window) {
         if (!g_app) return;
@@ -138,24 +130,11 @@ Result<void> EditorApp::init() {
     return ok();
 }
 
-// --gizmo MODE[,local] and --textures: the viewport tools as a screenshot or a test wants them.
+// --gizmo MODE[,local] and --textures: the viewport's gizmo and the texture browser as a screenshot or a
+// test wants them.
 Result<void> EditorApp::apply_start_ui_options() {
-    if (options_.gizmo) {
-        std::string mode = *options_.gizmo;
-        if (mode.ends_with(",local")) {
-            gizmo_.space = RotationSpace::Local;
-            mode.resize(mode.size() - 6);
-        }
-        if (mode == "move")
-            gizmo_.mode = GizmoMode::Move;
-        else if (mode == "rotate")
-            gizmo_.mode = GizmoMode::Rotate;
-        else if (mode == "scale")
-            gizmo_.mode = GizmoMode::Scale;
-        else
-            return Error("--gizmo '" + *options_.gizmo + "': expected move, rotate or scale", {},
-                         "add ,local for the entity's own rotation axes, e.g. --gizmo rotate,local");
-    }
+    if (options_.gizmo)
+        if (auto r = viewport_.set_gizmo_option(*options_.gizmo); !r) return r.error();
     if (options_.texture_browser) {
         if (!selection_texture(editor_))
             return Error("--textures: the selection has no texture field", {},
@@ -184,7 +163,7 @@ bool EditorApp::animating() const {
     const bool clip_playing =
         dojo_->playing() && (dojo_tab_ || (clip_preview_.on() && ClipPreview::robot(editor_) != 0));
     return clip_playing || analysis_.running() || editor_.validation().reachability_pending() ||
-           nav_preview_.building();
+           viewport_.animating();
 }
 
 // Every frame, and while the window waits for input: the play-test's output, autosave, prefab files changed
@@ -220,18 +199,17 @@ void EditorApp::render_views(const shell::FrameInfo& info) {
     if (dojo_tab_) {
         dojo_->render(layout.bottom.w, layout.centre.h, info.frame_dt);
     } else {
-        rebuild_scene_if_changed();
-        clip_preview_.pose(editor_, *dojo_, *scene_, info.frame_dt);
-        prefabs_.render_thumbnails(editor_.prefabs(), *renderer_, assets_);
+        viewport_.rebuild_scene();
+        clip_preview_.pose(editor_, *dojo_, scene_.scene(), info.frame_dt);
+        prefabs_.render_thumbnails(editor_.prefabs(), scene_.renderer(), assets_);
         const int w = static_cast<int>(layout.centre.w), h = static_cast<int>(layout.centre.h - kViewportBar);
-        render_level_views(w, std::max(1, h));
+        viewport_.render(w, std::max(1, h));
     }
     RenderTarget::clear_window(info.width, info.height);
 }
 
 void EditorApp::build_ui(const shell::FrameInfo& info) {
     poll_background();
-    wheel_ = ImGui::GetIO().MouseWheel;
     const Layout layout = compute_layout(static_cast<float>(info.width), static_cast<float>(info.height),
                                          ImGui::GetFrameHeight());
     dojo_->begin_frame();
@@ -244,11 +222,13 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
         dojo_->panel(layout.bottom.x, layout.centre.y, layout.bottom.w, layout.centre.h);
     } else {
         outliner_panel(layout.left.x, layout.left.y, layout.left.w, layout.left.h);
-        viewport_panel(layout.centre.x, layout.centre.y, layout.centre.w, layout.centre.h);
+        viewport_.panel(layout.centre, [this](Vec2 origin, Vec2 size) {
+            clip_preview_.draw(editor_, *dojo_, origin, size); // the selected robot's, across the bottom
+        });
         // Wiring links and objectives takes more rows than an entity's fields: those tabs get more height.
         const float split = inspector_.shown_tab() == InspectorTab::Properties ? 0.62f : 0.74f;
         inspector_.draw(ctx, Rect{layout.right.x, layout.right.y, layout.right.w, layout.right.h * split});
-        if (logic_.picking()) placing_.reset(); // a pick the inspector began takes the viewport's clicks
+        if (logic_.picking()) viewport_.disarm_tools(); // a pick the inspector began takes its clicks
         validation_.draw(ctx, Rect{layout.right.x, layout.right.y + layout.right.h * split, layout.right.w,
                                    layout.right.h * (1.0f - split)});
         // Over the viewport's right edge, beside the inspector whose texture field opened it.
@@ -314,7 +294,7 @@ void EditorApp::handle_shortcuts() {
     } else if (ctrl && repeat(GLFW_KEY_Z)) {
         undo();
     }
-    if (pressed(GLFW_KEY_F5)) play_.start(editor_.level(), shift ? &view_ : nullptr);
+    if (pressed(GLFW_KEY_F5)) play_.start(editor_.level(), shift ? &viewport_.camera() : nullptr);
     if (dojo_tab_) {
         if (pressed(GLFW_KEY_DELETE)) dojo_->delete_selected();
         return; // the rest acts on the level viewport
@@ -336,35 +316,23 @@ void EditorApp::handle_shortcuts() {
             inspector_.texture_browser().close();
         else if (logic_.picking())
             logic_.end_pick();
-        else if (gizmo_.dragging())
-            gizmo_.cancel(editor_);
-        else if (placing_)
-            placing_.reset();
-        else if (editor_.open_group() != 0)
-            leave_group(editor_, log_);
-        else
-            editor_.clear_selection();
+        else if (!viewport_.escape()) { // escape(): a gizmo drag ends, or the armed tool disarms
+            if (editor_.open_group() != 0)
+                leave_group(editor_, log_);
+            else
+                editor_.clear_selection();
+        }
     }
     if (ctrl && pressed(GLFW_KEY_G))
         shift ? ungroup_selection(editor_, log_) : group_selection(editor_, log_);
-    if (flying_ || ctrl) return;
+    if (viewport_.flying() || ctrl) return;
     if (repeat(GLFW_KEY_LEFT)) report(nudge(editor_, 0, -1), "nudge");
     if (repeat(GLFW_KEY_RIGHT)) report(nudge(editor_, 0, +1), "nudge");
     if (repeat(GLFW_KEY_UP)) report(nudge(editor_, 2, -1), "nudge");
     if (repeat(GLFW_KEY_DOWN)) report(nudge(editor_, 2, +1), "nudge");
     if (repeat(GLFW_KEY_PAGE_UP)) report(nudge(editor_, 1, +1), "nudge");
     if (repeat(GLFW_KEY_PAGE_DOWN)) report(nudge(editor_, 1, -1), "nudge");
-    if (pressed(GLFW_KEY_F)) focus_selection();
-    if (pressed(GLFW_KEY_W)) gizmo_.mode = GizmoMode::Move;
-    if (pressed(GLFW_KEY_E)) gizmo_.mode = GizmoMode::Rotate;
-    if (pressed(GLFW_KEY_R)) gizmo_.mode = GizmoMode::Scale;
-    if (pressed(GLFW_KEY_X))
-        gizmo_.space = gizmo_.space == RotationSpace::World ? RotationSpace::Local : RotationSpace::World;
-    if (pressed(GLFW_KEY_KP_7)) set_view(ViewMode::Top);
-    if (pressed(GLFW_KEY_KP_1)) set_view(ViewMode::Front);
-    if (pressed(GLFW_KEY_KP_3)) set_view(ViewMode::Side);
-    if (pressed(GLFW_KEY_KP_5)) set_view(ViewMode::Perspective);
-    if (pressed(GLFW_KEY_KP_0)) toggle_quad();
+    viewport_.shortcuts(); // F, the gizmo's mode and space, the numpad's views
 }
 
 } // namespace ks::editor::ui

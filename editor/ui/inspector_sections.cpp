@@ -18,7 +18,7 @@
 namespace ks::editor::ui {
 
 namespace {
-const ImVec4 kStartText(0.45f, 1.0f, 0.55f, 1.0f); // the player start's green (player_start_ui.cpp)
+const ImVec4 kStartText(0.45f, 1.0f, 0.55f, 1.0f); // the player start's green (viewport_lines.cpp)
 
 // The level's name, player start, settings fields, ambient Audition and on_start links.
 void level_settings(const PanelContext& ctx, FieldWidgets& widgets) {

@@ -88,31 +88,14 @@ void EditorApp::menu_bar() {
     }
     brush_menu_.draw(context());
     if (ImGui::BeginMenu("View")) {
-        if (ImGui::MenuItem("Perspective", "Num 5")) set_view(ViewMode::Perspective);
-        if (ImGui::MenuItem("Top", "Num 7")) set_view(ViewMode::Top);
-        if (ImGui::MenuItem("Front", "Num 1")) set_view(ViewMode::Front);
-        if (ImGui::MenuItem("Side", "Num 3")) set_view(ViewMode::Side);
-        if (ImGui::MenuItem("4-up view", "Num 0", quad_.on)) toggle_quad();
-        if (ImGui::MenuItem("Focus Selection", "F")) focus_selection();
-        ImGui::Separator();
-        ImGui::MenuItem("Grid", nullptr, &overlays_.grid);
-        ImGui::MenuItem("Collision bounds", nullptr, &overlays_.collision);
-        ImGui::MenuItem("Structure outlines (axis views)", nullptr, &overlays_.outlines);
-        ImGui::MenuItem("Light ranges", nullptr, &overlays_.lights);
-        ImGui::MenuItem("Robot eye / shooting radii", nullptr, &overlays_.robots);
-        ImGui::MenuItem("Player start", nullptr, &overlays_.player_start);
-        ImGui::MenuItem("All patrol routes", nullptr, &overlays_.patrols);
-        ImGui::MenuItem("All sound radii", nullptr, &overlays_.sound_radii);
-        ImGui::MenuItem("Navigation mesh", nullptr, &overlays_.navmesh);
-        ImGui::MenuItem("Ceilings", nullptr, &overlays_.ceilings);
-        ImGui::MenuItem("Show links", nullptr, &overlays_.links);
+        viewport_.view_menu();
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Play")) {
         if (ImGui::MenuItem("Play from start", "F5", false, !play_.running()))
             play_.start(editor_.level(), nullptr);
         if (ImGui::MenuItem("Play from camera", "Shift+F5", false, !play_.running()))
-            play_.start(editor_.level(), &view_);
+            play_.start(editor_.level(), &viewport_.camera());
         if (ImGui::MenuItem("Stop", nullptr, false, play_.running())) play_.stop();
         ImGui::Separator();
         if (ImGui::MenuItem("Analyze (bot play-tests)", nullptr, false, !analysis_.running()))

@@ -414,7 +414,7 @@ void Outliner::outliner_tab(const PanelContext& ctx) {
     ImGui::EndChild();
 }
 
-// The player start's row at the top of the tree (player_start_ui.cpp draws its figure).
+// The player start's row at the top of the tree (viewport_lines.cpp draws its figure).
 void Outliner::player_start_row(const PanelContext& ctx) {
     if (type_filter_ >= 0 || !mentions("player start", search_)) return;
     ImGui::PushStyleColor(ImGuiCol_Text, kOutlinerStartText);

@@ -4,8 +4,19 @@
 #include "ui/panel_style.h"
 
 #include <imgui.h>
+#include <nlohmann/json.hpp>
 
 namespace ks::editor::ui {
+
+void PlacePalette::status(nlohmann::json& s) const {
+    nlohmann::json palette = nlohmann::json::object();
+    for (auto type : level::all_types()) {
+        const ScreenRect& r = rect(type);
+        const Vec2 centre = (r.min + r.max) * 0.5f;
+        if (r.max.x > r.min.x) palette[std::string(level::type_name(type))] = {centre.x, centre.y};
+    }
+    s["palette"] = palette;
+}
 
 std::optional<level::EntityType> PlacePalette::draw(std::optional<level::EntityType> armed) {
     std::optional<level::EntityType> clicked;

@@ -4,6 +4,8 @@
 #include "core/math.h"
 #include "level/level.h"
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <array>
 #include <optional>
 
@@ -17,6 +19,7 @@ class PlacePalette {
     // The type clicked this frame, if any; `armed`: the type being placed (highlighted).
     std::optional<level::EntityType> draw(std::optional<level::EntityType> armed);
     const ScreenRect& rect(level::EntityType type) const { return rects_[static_cast<size_t>(type)]; }
+    void status(nlohmann::json& status) const; // "palette": each drawn button's centre, by type name
 
   private:
     std::array<ScreenRect, static_cast<size_t>(level::EntityType::Count)> rects_{};

@@ -1,7 +1,9 @@
 // Brushes as ground in the editor: the player start, robots and spawners stand on a brush's top (a ramp's
 // slope included) by the support rules, a spawner in the air is flagged like a robot, and the viewport
-// picks a ramp on its slope and places things on it. Also the disabled-trigger quick fix.
+// picks a ramp on its slope and places things on it; a door in a doorway cut through a brush wall is in its
+// gap. Also the disabled-trigger quick fix.
 #include "brush/brush_build.h"
+#include "brush/brush_csg.h"
 #include "editor_test_util.h"
 #include "model/edit_entities.h"
 #include "model/edit_logic.h"
@@ -108,4 +110,40 @@ TEST_CASE(
     REQUIRE(apply_quick_fix(ed, issues[0]).ok());
     CHECK(ed.level().find(trigger)->as<level::TriggerProps>().enabled);
     CHECK(issues_with(ed, Rule::TriggerReach).empty());
+}
+
+TEST_CASE("door_gap and the player start see brush walls: a doorway cut by subtract, a brush in the way") {
+    level::Level lv = brush_ground();
+    // A wall 0.5 thick along x at z = -8 with a doorway 5 wide and 5 high cut out of it.
+    auto wall = brush::make_box({-10, 0, -8.25}, {10, 8, -7.75});
+    auto cutter = brush::make_box({-2.5, 0, -9}, {2.5, 5, -7});
+    REQUIRE(wall.ok());
+    REQUIRE(cutter.ok());
+    auto pieces = brush::subtract(*wall, *cutter);
+    REQUIRE(pieces.ok());
+    REQUIRE(pieces->fragments.size() == 3); // either side of the doorway, over it
+    for (const brush::Brush& piece : pieces->fragments)
+        lv.add(EntityType::Brush, Vec3(0), "wall piece").as<level::BrushProps>().brush = piece;
+    lv.add(EntityType::Door, {0, 0, -8}, "Door");
+    Editor ed = editor_on(std::move(lv));
+    const int door = ed.level().entities.back().id;
+    CHECK_MESSAGE(issues_with(ed, Rule::DoorGap).empty(), issues_with(ed, Rule::DoorGap)[0].message);
+
+    REQUIRE(select(ed, {door}).ok());
+    REQUIRE(set_field_text(ed, "position", "6,0,-8").ok()); // into the wall beside the doorway
+    auto issues = issues_with(ed, Rule::DoorGap);
+    REQUIRE(issues.size() == 1);
+    CHECK(issues[0].message.find("is blocked by brush") != std::string::npos);
+    REQUIRE(set_field_text(ed, "position", "-6,0,6").ok()); // in the room, away from the wall
+    issues = issues_with(ed, Rule::DoorGap);
+    REQUIRE(issues.size() == 1);
+    CHECK(issues[0].message.find("either side") != std::string::npos);
+
+    // The player start inside the wall beside the doorway is an error; in the doorway it is not.
+    REQUIRE(set_player_start(ed, {{6, 0, -8}, 0}).ok());
+    issues = issues_with(ed, Rule::PlayerStart);
+    REQUIRE(issues.size() == 1);
+    CHECK(issues[0].message.find("is inside brush") != std::string::npos);
+    REQUIRE(set_player_start(ed, {{0, 0, -8}, 0}).ok());
+    CHECK(issues_with(ed, Rule::PlayerStart).empty());
 }

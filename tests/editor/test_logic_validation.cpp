@@ -184,6 +184,39 @@ TEST_CASE("objective: one nothing can complete gets an on_use -> complete link o
     CHECK(ed.level().find(spawner) != nullptr);
 }
 
+TEST_CASE(
+    "objective: a chain of links that breaks two links before the objective is named; fixed at the panel") {
+    Editor ed = two_rooms();
+    const int trigger = *place(ed, EntityType::Trigger, {0, 0, 10}, 0, "Latch");
+    REQUIRE(select(ed, {trigger}).ok());
+    REQUIRE(set_field(ed, "enabled", FieldValue(false)).ok());
+    // The latch completes "escape"; only the far room's robot dying after a spawn enables it, and nothing
+    // spawns.
+    const int spawner = *place(ed, EntityType::Spawner, {0, 0, -10}, 0, "Wave");
+    REQUIRE(link_add(ed, LinkOwner::entity(trigger), rule_link("on_enter", "escape", "complete")).ok());
+    REQUIRE(objective_add(ed, {"escape", "Escape", {}, {}}).ok());
+    REQUIRE(objective_add(ed, {"wave", "Beat the wave", {"Wave"}, {}}).ok());
+    REQUIRE(link_add(ed, LinkOwner::objective("escape"), rule_link("on_complete", "Wave", "spawn")).ok());
+    REQUIRE(link_add(ed, LinkOwner::entity(kRobot), rule_link("on_death", "Latch", "enable")).ok());
+    CHECK(issues_of(ed, Rule::TriggerReach).empty());
+    CHECK(issues_of(ed, Rule::Objective).empty()); // the robot can die: the chain holds
+    // The robot's enabling link is taken back: the latch can never fire, so neither objective can complete.
+    REQUIRE(link_remove(ed, LinkOwner::entity(kRobot), 0).ok());
+    auto issues = issues_of(ed, Rule::Objective);
+    REQUIRE(issues.size() == 2);
+    CHECK(issues[0].owner == LinkOwner::objective("escape"));
+    CHECK(
+        issues[0].message.find("trigger \"Latch\" starts disabled and nothing that can happen enables it") !=
+        std::string::npos);
+    CHECK(issues[1].owner == LinkOwner::objective("wave"));
+    CHECK(issues[1].message.find("spawner \"Wave\" never spawns (the link that spawns it never fires: "
+                                 "objective \"escape\" never completes)") != std::string::npos);
+    // Completing "escape" at the control panel frees both.
+    REQUIRE(apply_quick_fix(ed, issues[0]).ok());
+    CHECK(issues_of(ed, Rule::Objective).empty());
+    CHECK(ed.level().find(spawner) != nullptr);
+}
+
 TEST_CASE("objective: a level with no objectives and no win link can never be won; the fix adds shutdown") {
     Editor ed = two_rooms();
     REQUIRE(objective_remove(ed, 0).ok());

@@ -380,6 +380,59 @@ TEST_CASE(
 }
 
 TEST_CASE(
+    "unwinnable by construction: every chain of links toward an objective is followed to where it breaks") {
+    Level level;
+    level.add(EntityType::Floor, {0, 0, 0}, "Ground");
+    level.add(EntityType::ControlPanel, {0, 0, -9}, "Panel");
+    level.add(EntityType::Trigger, {0, 0, 5}, "Latch");
+    level.add(EntityType::Door, {9, 0, -5}, "Vault").as<DoorProps>().locked = true;
+    level.add(EntityType::Spawner, {0, 0, -20}, "Hive");
+    Entity& latch = level.entities[2];
+    latch.as<TriggerProps>().enabled = false;
+    // The objective is completed by the latch, which only the vault's opening enables; the vault is never
+    // unlocked. Two links deep: the one-step checks see a link for each, so only the chain shows it.
+    level.objectives = {{"escape", "Escape", {}, {}}};
+    latch.links = {{"on_enter", "escape", "complete"}};
+    level.entities[3].links = {{"on_open", "Latch", "enable"}};
+    LoadReport report = validate(level);
+    const std::string chain = "objectives[0]: objective \"escape\": the objective can never be completed, "
+                              "whatever the player does: the link completing it (on_enter) never fires: "
+                              "trigger \"Latch\" starts disabled and nothing that can happen enables it";
+    CHECK_MESSAGE(ks::test::contains_text(report.str(), chain), report.str());
+    for (const auto& d : report.diagnostics)
+        if (ks::test::contains_text(d.error.str(), "can never be completed"))
+            CHECK(d.kind == Diagnostic::Kind::ObjectiveNeverCompletes);
+    // Unlocking the vault from the panel makes the whole chain possible.
+    level.entities[1].links = {{"on_use", "Vault", "unlock"}};
+    CHECK_FALSE(ks::test::contains_text(validate(level).str(), "can never be completed"));
+
+    // A kill list waiting on a spawner whose spawn link comes from an objective that never completes.
+    level.objectives = {{"first", "First", {}, {}}, {"second", "Second", {"Hive"}, {}}};
+    level.objectives[0].links = {{"on_complete", "Hive", "spawn"}};
+    level.entities[1].links.clear(); // the vault stays locked: "escape" is gone, "first" has no completer
+    latch.links = {{"on_enter", "first", "complete"}};
+    const std::string text = validate(level).str();
+    CHECK_MESSAGE(ks::test::contains_text(text,
+                                          "objective \"second\": the objective can never be completed, "
+                                          "whatever the player does: spawner \"Hive\" never spawns (the "
+                                          "link that spawns it never fires: objective \"first\" never "
+                                          "completes)"),
+                  text);
+    CHECK(ks::test::contains_text(text, "objective \"first\": the objective can never be completed"));
+    // Enabling the latch at start frees the whole chain: first, then the hive, then second.
+    latch.as<TriggerProps>().enabled = true;
+    CHECK_FALSE(ks::test::contains_text(validate(level).str(), "can never be completed"));
+
+    // Without objectives, a win link whose event can never happen.
+    level.objectives.clear();
+    latch.as<TriggerProps>().enabled = false;
+    latch.links = {{"on_enter", "level", "win"}};
+    CHECK(ks::test::contains_text(validate(level).str(),
+                                  "no link that wins the level can fire, so it can never be won: trigger "
+                                  "\"Latch\" starts disabled"));
+}
+
+TEST_CASE(
     "migration 1 -> 2: the panel's win becomes the shutdown objective; version-1 leftovers are dropped") {
     LoadReport report;
     auto level =

@@ -1,6 +1,7 @@
 // Brush entities in the navigation mesh: their faces are Recast input, walkable where their slope allows
 // (a ramp, a platform's top) and never on their undersides; a brush wall blocks like a wall entity.
 #include "brush/brush_build.h"
+#include "level_brushes.h"
 #include "nav/nav_levels.h"
 
 #include <doctest/doctest.h>
@@ -10,26 +11,8 @@ using namespace ks::test;
 
 namespace {
 
-level::Entity& add_brush(level::Level& level, Vec3 position, float yaw, const brush::Brush& b) {
-    level::Entity& e = level.add(level::EntityType::Brush, position, "brush");
-    e.rotation.x = yaw;
-    e.as<level::BrushProps>().brush = b;
-    return e;
-}
-
 brush::Brush box(DVec3 min, DVec3 max) {
     return brush::make_box(min, max, {"concrete"}).value();
-}
-
-// A ramp 12 wide and 12 long rising from y = 0 at local z = 6 to y = 6 at local z = -6 (26.6 degrees).
-brush::Brush ramp() {
-    std::vector<brush::Face> faces;
-    for (const auto& [n, d] : std::vector<std::pair<DVec3, double>>{
-             {{-1, 0, 0}, 6}, {{1, 0, 0}, 6}, {{0, -1, 0}, 0}, {{0, 0, -1}, 6}})
-        faces.push_back({{n, d}, {"concrete"}});
-    const DVec3 slope = glm::normalize(DVec3(0, 2, 1));
-    faces.push_back({{slope, 6.0 * slope.y / 2.0}, {"tiles"}}); // 2y + z = 6
-    return brush::Brush::from_faces(faces).value();
 }
 
 // A 40 x 40 ground, a brush platform 6 high over z in [-20, -8], and (optionally) a brush ramp up to it
@@ -38,8 +21,8 @@ level::Level brush_platform_level(bool with_ramp) {
     level::Level lv;
     lv.name = "brush platform";
     add_floor(lv, Vec3(0), Vec2(40, 40));
-    add_brush(lv, Vec3(0, 0, -14), 0.0f, box({-6, 0, -6}, {6, 6, 6}));
-    if (with_ramp) add_brush(lv, Vec3(0, 0, -2), 0.0f, ramp());
+    place_brush(lv, Vec3(0, 0, -14), 0.0f, box({-6, 0, -6}, {6, 6, 6}));
+    if (with_ramp) place_brush(lv, Vec3(0, 0, -2), 0.0f, stair_ramp());
     return lv;
 }
 
@@ -72,14 +55,14 @@ TEST_CASE("a brush wall blocks, turned by its entity's yaw, and a gap between tw
     closed.name = "brush wall";
     add_floor(closed, Vec3(0), Vec2(30, 30));
     // Thin along local x, long along local z; yaw 90 lays it along world x, across the room at z = 0.
-    add_brush(closed, Vec3(0), 90.0f, box({-0.25, 0, -15}, {0.25, 4, 15}));
+    place_brush(closed, Vec3(0), 90.0f, box({-0.25, 0, -15}, {0.25, 4, 15}));
     CHECK_FALSE(build_robot_mesh(closed)->reachable(Vec3(0, 0, 8), Vec3(0, 0, -8)));
 
     level::Level gap;
     gap.name = "brush wall with a gap";
     add_floor(gap, Vec3(0), Vec2(30, 30));
-    add_brush(gap, Vec3(-5, 0, 0), 0.0f, box({-10, 0, -0.25}, {10, 4, 0.25}));      // x in [-15, 5]
-    add_brush(gap, Vec3(12.5f, 0, 0), 0.0f, box({-2.5, 0, -0.25}, {2.5, 4, 0.25})); // x in [10, 15]
+    place_brush(gap, Vec3(-5, 0, 0), 0.0f, box({-10, 0, -0.25}, {10, 4, 0.25}));      // x in [-15, 5]
+    place_brush(gap, Vec3(12.5f, 0, 0), 0.0f, box({-2.5, 0, -0.25}, {2.5, 4, 0.25})); // x in [10, 15]
     auto mesh = build_robot_mesh(gap);
     std::vector<Vec3> path;
     REQUIRE(mesh->find_path(Vec3(0, 0, 8), Vec3(0, 0, -8), path) == nav::PathStatus::Found);
@@ -93,7 +76,7 @@ TEST_CASE("a brush's underside is never walked on; its top and the floor under i
     level::Level lv;
     lv.name = "brush slab";
     add_floor(lv, Vec3(0), Vec2(30, 30));
-    add_brush(lv, Vec3(0, 5, 0), 0.0f, box({-5, 0, -5}, {5, 0.5, 5})); // a slab from y = 5 to 5.5
+    place_brush(lv, Vec3(0, 5, 0), 0.0f, box({-5, 0, -5}, {5, 0.5, 5})); // a slab from y = 5 to 5.5
     auto mesh = build_robot_mesh(lv);
     const auto under = mesh->nearest_point(Vec3(0, 4.9f, 0), Vec3(1, 0.3f, 1));
     CHECK_FALSE(under.has_value()); // nothing walkable at the slab's underside
