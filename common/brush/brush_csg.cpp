@@ -77,6 +77,33 @@ Result<Brush> intersect(const Brush& a, const Brush& b) {
     return both;
 }
 
+Result<Brush> intersect_all(std::span<const Brush> brushes) {
+    auto at = [](std::size_t i) { return Location({}, 0, 0, "brushes[" + std::to_string(i) + "]"); };
+    if (brushes.size() < 2)
+        return Error("an intersection needs two or more brushes, got " + std::to_string(brushes.size()),
+                     Location({}, 0, 0, "brushes"), "select the brushes whose common part to keep");
+    // Every pair first, so a refusal names the two that do not meet rather than a partial result.
+    for (std::size_t i = 0; i < brushes.size(); ++i)
+        for (std::size_t j = i + 1; j < brushes.size(); ++j)
+            if (!intersect(brushes[i], brushes[j]))
+                return Error("brushes[" + std::to_string(i) + "] and brushes[" + std::to_string(j) +
+                                 "] do not overlap in a volume (apart, or only touching)",
+                             at(j), "move them so that they overlap, or leave one out");
+    std::vector<Face> faces = brushes.front().anchored_faces();
+    const DVec3 anchor = brushes.front().anchor();
+    for (const Brush& b : brushes.subspan(1))
+        for (Face f : b.faces()) {
+            f.plane = f.plane.translated(-anchor);
+            faces.push_back(std::move(f));
+        }
+    auto all = Brush::from_anchored_faces(anchor, std::move(faces), RedundantPlanes::drop);
+    if (!all)
+        return Error("the brushes overlap two by two but have no volume in common (" + all.error().message +
+                         ")",
+                     at(brushes.size() - 1), "leave out a brush that misses the common part of the others");
+    return all;
+}
+
 Result<Brush> merge(const Brush& a, const Brush& b) {
     std::vector<DVec3> points = a.vertices();
     points.insert(points.end(), b.vertices().begin(), b.vertices().end());

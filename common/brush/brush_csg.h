@@ -12,6 +12,7 @@
 #include "brush/brush.h"
 
 #include <optional>
+#include <span>
 
 namespace ks::brush {
 
@@ -30,6 +31,13 @@ Result<Subtraction> subtract(const Brush& a, const Brush& b, CutOrder order = Cu
 
 // A n B (faces of both; planes that contribute nothing are dropped). Refused when they do not overlap.
 Result<Brush> intersect(const Brush& a, const Brush& b);
+
+// The common part of all `brushes` (at least two), the first one's faces first, so a face two brushes share
+// keeps the first one's attributes; it keeps the first brush's anchor. Refused, naming the brushes by index
+// (`brushes[i]`), when fewer than two are given, when two of them do not overlap (apart, or only touching
+// along a face, an edge or a corner), or when together they leave no volume (each pair overlaps, all do
+// not).
+Result<Brush> intersect_all(std::span<const Brush> brushes);
 
 // The union when it is convex (the hull of both has the volume of A + B - A n B), each face keeping the
 // attributes of the face of A or B it lies on; refused otherwise.

@@ -11,12 +11,14 @@ namespace {
 struct Span {
     double t_min = -std::numeric_limits<double>::infinity();
     double t_max = std::numeric_limits<double>::infinity();
+    int entry_face = -1; // the face through which the line enters (sets t_min)
     bool empty() const { return !(t_min < t_max); }
 };
 
 Span clip_line(const Brush& brush, const DVec3& origin, const DVec3& direction) {
     Span span;
-    for (const Face& face : brush.faces()) {
+    for (std::size_t i = 0; i < brush.faces().size(); ++i) {
+        const Face& face = brush.faces()[i];
         const double along = glm::dot(face.plane.normal, direction);
         const double outside = face.plane.signed_distance(origin); // > 0: origin on the outer side
         if (std::fabs(along) <= std::numeric_limits<double>::min()) {
@@ -28,8 +30,8 @@ Span clip_line(const Brush& brush, const DVec3& origin, const DVec3& direction) 
         const double t = -outside / along;
         if (along > 0.0)
             span.t_max = std::min(span.t_max, t); // leaving through this face
-        else
-            span.t_min = std::max(span.t_min, t); // entering through it
+        else if (t > span.t_min)
+            span.t_min = t, span.entry_face = static_cast<int>(i); // entering through it
         if (span.empty()) return span;
     }
     return span;
@@ -51,6 +53,13 @@ std::optional<double> ray_entry(const Brush& brush, const DVec3& origin, const D
     span.t_min = std::max(span.t_min, 0.0);
     if (span.empty()) return std::nullopt;
     return span.t_min;
+}
+
+std::optional<RayEntry> ray_entry_face(const Brush& brush, const DVec3& origin, const DVec3& direction) {
+    if (!(glm::dot(direction, direction) > 0.0)) return std::nullopt;
+    const Span span = clip_line(brush, origin, direction);
+    if (span.empty() || span.t_min < 0.0 || span.entry_face < 0) return std::nullopt;
+    return RayEntry{span.t_min, span.entry_face};
 }
 
 bool contains(const Brush& brush, const DVec3& point, double tolerance) {

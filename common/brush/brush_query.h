@@ -17,6 +17,14 @@ std::optional<double> top_at(const Brush& brush, double x, double z);
 // enters the brush; 0 when the origin is inside; nullopt when it misses.
 std::optional<double> ray_entry(const Brush& brush, const DVec3& origin, const DVec3& direction);
 
+// Where the ray from `origin` enters the brush and through which face (its index in faces()); nullopt when
+// it misses or starts inside (no face is entered). Picking a face with the mouse asks this.
+struct RayEntry {
+    double distance = 0.0;
+    int face = -1;
+};
+std::optional<RayEntry> ray_entry_face(const Brush& brush, const DVec3& origin, const DVec3& direction);
+
 // Whether `point` is inside the brush or within `tolerance` of every face's plane (a point just outside one
 // face but within tolerance counts as inside).
 bool contains(const Brush& brush, const DVec3& point, double tolerance = 0.0);

@@ -1,8 +1,8 @@
 #pragma once
 // The document an editor session edits: the level itself (with its editor section: layers, groups, prefab
 // instances, entities hidden and locked one by one, all saved in the file) plus view state around it
-// (selection, the entered group, grid). Only commands change `level`; the selection and the entered group
-// are not saved and not history steps.
+// (selection, the selected brush faces, the entered group, grid). Only commands change `level`; the selection
+// and the entered group are not saved and not history steps.
 #include "level/level.h"
 
 #include <algorithm>
@@ -50,6 +50,16 @@ class IdSet {
 // (entity ids start at 1). It has no level::Entity, so selected_entities() leaves it out.
 inline constexpr int kPlayerStartId = -1;
 
+// A selected face of a brush entity: its index in the brush's faces (in the entity's frame) and that face's
+// plane there, by which it is found again when an edit or an undo reorders or replaces the faces
+// (edit_faces.h follow_face_selection).
+struct FaceRef {
+    int entity = 0;
+    int face = 0;
+    brush::Plane plane;
+    bool operator==(const FaceRef& other) const { return entity == other.entity && face == other.face; }
+};
+
 struct Document {
     level::Level level;
     // Selection in the order entities were picked (the first is the primary: gizmo pivot, inspector header);
@@ -62,6 +72,9 @@ struct Document {
     GridSettings grid;
     // The group entered by a double-click (0: none): clicks pick its members one by one (groups.h pick_unit).
     int open_group = 0;
+    // The selected brush faces (edit_faces.h), in the order they were picked (the first is the primary: its
+    // attributes are the ones shown and copied). Independent of `selection`; not saved, not history steps.
+    std::vector<FaceRef> faces;
 
     bool is_selected(int id) const {
         return std::find(selection.begin(), selection.end(), id) != selection.end();

@@ -287,6 +287,51 @@ Result<void> merge_selected_brushes(Editor& editor) {
                            removed);
 }
 
+Result<void> intersect_selected_brushes(Editor& editor) {
+    constexpr const char* kWhat = "Intersect";
+    auto brushes = selected_brushes(editor.doc(), kWhat);
+    if (!brushes) return brushes.error();
+    if (brushes->size() < 2)
+        return Error(std::string(kWhat) + ": select two or more brushes", Location{},
+                     "add the brushes whose common part to keep");
+    std::vector<brush::Brush> worlds;
+    for (const WorldBrush& b : *brushes) worlds.push_back(b.world);
+    auto common = brush::intersect_all(worlds);
+    if (!common) {
+        // The refusal names brushes[i]: say which entities those are.
+        std::string message = common.error().message;
+        for (size_t i = worlds.size(); i-- > 0;) {
+            const std::string index = "brushes[" + std::to_string(i) + "]";
+            for (size_t at = message.find(index); at != std::string::npos; at = message.find(index))
+                message.replace(at, index.size(), brush_label(*(*brushes)[i].entity));
+        }
+        return Error(std::string(kWhat) + ": " + message, Location{}, common.error().hint);
+    }
+    std::unordered_set<int> removed;
+    for (size_t i = 1; i < brushes->size(); ++i) removed.insert((*brushes)[i].entity->id);
+    return replace_brushes(editor, "Intersect brushes", {{brushes->front().entity, {std::move(*common)}}},
+                           removed);
+}
+
+std::string csg_unavailable(const Document& doc, CsgOp op) {
+    int selected = 0;
+    for (int id : doc.selection) {
+        const Entity* e = doc.level.find(id);
+        if (!e || e->type() != level::EntityType::Brush) continue;
+        if (doc.locked.contains(id)) return brush_label(*e) + " is locked: unlock it first";
+        ++selected;
+    }
+    if (selected == 0) return "select brushes first";
+    if ((op == CsgOp::merge || op == CsgOp::intersect) && selected < 2) return "select two or more brushes";
+    if (op == CsgOp::subtract) {
+        for (const Entity& e : doc.level.entities)
+            if (e.type() == level::EntityType::Brush && !doc.is_selected(e.id) && !doc.locked.contains(e.id))
+                return {};
+        return "there is no other unlocked brush to cut";
+    }
+    return {};
+}
+
 Result<void> clip_selected_brushes(Editor& editor, Vec3 point, Vec3 normal, ClipKeep keep) {
     constexpr const char* kWhat = "Clip";
     if (!is_finite(point) || !is_finite(normal) || glm::length(normal) < 1e-6f)

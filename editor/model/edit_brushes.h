@@ -1,8 +1,8 @@
 #pragma once
 // Brush entities: placing boxes, extruded convex polygons and ramps, and the CSG edits on them (subtract,
-// hollow, merge, clip), each one undoable step built on common/brush. A new brush entity stands on the
-// bottom centre of its bounds (like walls) with its faces in its own frame; an edit that cuts a brush keeps
-// its id, name, rotation and layer for the first piece and adds the others as new entities beside it.
+// hollow, merge, intersect, clip), each one undoable step built on common/brush. A new brush entity stands on
+// the bottom centre of its bounds (like walls) with its faces in its own frame; an edit that cuts a brush
+// keeps its id, name, rotation and layer for the first piece and adds the others as new entities beside it.
 // Errors name the entity and say what to do; a refused edit changes nothing.
 // Tests: tests/editor/test_edit_brushes.cpp.
 #include "model/editor.h"
@@ -47,6 +47,16 @@ Result<void> subtract_selected_brushes(Editor& editor);
 Result<void> hollow_selected_brushes(Editor& editor, float thickness);
 // The selected brushes (two or more) become one, the first selected; refused when their union is not convex.
 Result<void> merge_selected_brushes(Editor& editor);
+
+// The selected brushes (two or more) become their common part, kept in the first selected (its id, name
+// and frame); the others are removed. Refused, naming the two brushes, when two of them do not overlap in
+// a volume, or when all of them have no volume in common.
+Result<void> intersect_selected_brushes(Editor& editor);
+
+// The CSG menu's items, and why one does not apply to the selection now (empty when it does): the menu
+// greys the item and shows the reason. The edits above refuse the same cases with the same words.
+enum class CsgOp { subtract, hollow, merge, intersect };
+std::string csg_unavailable(const Document& doc, CsgOp op);
 
 enum class ClipKeep { back, front, both };
 // Each selected brush cut by the plane through `point` with `normal` (world): `back` keeps what lies behind

@@ -3,6 +3,7 @@
 #include "model/editor.h"
 
 #include "core/log.h"
+#include "model/edit_faces.h"
 #include "model/groups.h"
 #include "model/logic_edit.h"
 #include "model/prefab.h"
@@ -36,13 +37,23 @@ void Editor::execute(std::unique_ptr<LevelChange> change, std::vector<int> selec
     follow_structure(*change);
     change->selection_after = std::move(selection_after);
     history_.execute(doc_, std::move(change));
+    follow_face_selection(doc_);
 }
 
 bool Editor::undo() {
-    return history_.undo(doc_);
+    const bool undone = history_.undo(doc_);
+    follow_face_selection(doc_);
+    return undone;
 }
 bool Editor::redo() {
-    return history_.redo(doc_);
+    const bool redone = history_.redo(doc_);
+    follow_face_selection(doc_);
+    return redone;
+}
+
+void Editor::cancel_transaction() {
+    history_.cancel_transaction(doc_);
+    follow_face_selection(doc_);
 }
 
 Result<void> Editor::modify_selection(std::string name, const EntityEdit& edit, std::string merge_key,
@@ -59,7 +70,9 @@ Result<void> Editor::modify_selection(std::string name, const EntityEdit& edit, 
         const Entity* current = found == by_id.end() ? nullptr : found->second;
         if (!current || doc_.locked.contains(id)) continue;
         Entity after = *current;
-        if (auto r = edit(after); !r) {
+        auto r = edit(after);
+        if (r && face_session_.texture_lock) r = keep_textures_on_world(*current, after);
+        if (!r) {
             Error e = r.error();
             e.message = name + ": " + edit_subject(*current) + ": " + e.message;
             return e;
@@ -171,7 +184,7 @@ const std::vector<Issue>& Editor::issues() {
 }
 
 void Editor::replace_level(level::Level level, std::filesystem::path path, DiskFingerprint disk) {
-    doc_ = Document{std::move(level), {}, {}, {}, doc_.grid, 0};
+    doc_ = Document{std::move(level), {}, {}, {}, doc_.grid, 0, {}};
     refresh_view_sets(doc_);
     history_.clear();
     path_ = std::move(path);

@@ -21,6 +21,13 @@
 namespace ks::editor {
 
 class RecentFiles;
+
+// The face tools' session state (edit_faces.h): the attributes Copy took, and whether moving or turning a
+// brush keeps its textures fixed on the world (off: they travel with the brush, as the file stores them).
+struct FaceSession {
+    std::optional<brush::FaceAttributes> copied;
+    bool texture_lock = false;
+};
 class PrefabSync;
 
 struct RecoveryOffer {
@@ -45,6 +52,9 @@ class Editor {
     // The group entered by a double-click (0: none).
     int open_group() const { return doc_.open_group; }
     void set_open_group(int group_id) { doc_.open_group = group_id; }
+    void set_face_selection(std::vector<FaceRef> faces) { doc_.faces = std::move(faces); }
+    FaceSession& face_session() { return face_session_; }
+    const FaceSession& face_session() const { return face_session_; }
 
     // ---- the edit API the operations use (each call one undoable step) ----
     // Executes through History; entity renames in `change` take the links and kill lists naming them
@@ -70,7 +80,7 @@ class Editor {
     // A drag or compound edit as one step.
     void begin_transaction(std::string name) { history_.begin_transaction(std::move(name)); }
     void commit_transaction() { history_.commit_transaction(); }
-    void cancel_transaction() { history_.cancel_transaction(doc_); }
+    void cancel_transaction();
     void end_merging() { history_.seal(); }
 
     // The selection as JSON text (edit_entities.h copy) and where paste reads it.
@@ -118,6 +128,7 @@ class Editor {
     ValidationCache validation_;
     std::uint64_t reloads_ = 0;
     PrefabLibrary prefabs_;
+    FaceSession face_session_;
     bool syncing_prefabs_ = false; // while a prefab sync runs: follow_structure records no overrides
 };
 

@@ -29,7 +29,7 @@ Result<void> check_point(Vec3 point) {
     return ok();
 }
 
-Result<void> check_index(const level::Patrol& patrol, int index) {
+Result<void> check_patrol_index(const level::Patrol& patrol, int index) {
     if (index >= 0 && index < static_cast<int>(patrol.points.size())) return ok();
     if (patrol.points.empty())
         return Error("the robot has no patrol points", Location{}, "add one first: patrol ID add X,Y,Z");
@@ -55,14 +55,14 @@ Result<void> add_patrol_point(level::Patrol& patrol, Vec3 point, std::optional<i
 }
 
 Result<void> move_patrol_point(level::Patrol& patrol, int index, Vec3 point) {
-    if (auto r = check_index(patrol, index); !r) return r;
+    if (auto r = check_patrol_index(patrol, index); !r) return r;
     if (auto r = check_point(point); !r) return r;
     patrol.points[static_cast<size_t>(index)] = point;
     return ok();
 }
 
 Result<void> remove_patrol_point(level::Patrol& patrol, int index) {
-    if (auto r = check_index(patrol, index); !r) return r;
+    if (auto r = check_patrol_index(patrol, index); !r) return r;
     patrol.points.erase(patrol.points.begin() + index);
     if (patrol.points.empty()) patrol = {};
     return ok();

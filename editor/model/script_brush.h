@@ -1,8 +1,9 @@
 #pragma once
 // The script language's brush steps (`brush box`, `brush ramp`, `brush extrude`, `brush subtract`,
-// `brush hollow`, `brush merge`, `brush clip`): each is what its line said, typed; its `run` calls the
-// brush edits of edit_brushes.h. Parsed, run and registered in script_brush_parser.cpp.
+// `brush hollow`, `brush merge`, `brush intersect`, `brush clip`): each is what its line said, typed; its
+// `run` calls the brush edits of edit_brushes.h. Parsed, run and registered in script_brush_parser.cpp.
 #include "model/edit_brushes.h"
+#include "model/script_face.h"
 
 #include <variant>
 #include <vector>
@@ -41,6 +42,9 @@ struct BrushHollow {
 struct BrushMerge {
     Result<void> run(ScriptContext& c) const;
 };
+struct BrushIntersect {
+    Result<void> run(ScriptContext& c) const;
+};
 struct BrushClip {
     Vec3 point{0.0f}, normal{0.0f, 1.0f, 0.0f};
     ClipKeep keep = ClipKeep::back;
@@ -51,7 +55,7 @@ struct BrushClip {
 
 struct BrushStep {
     std::variant<steps::BrushBox, steps::BrushRamp, steps::BrushExtrude, steps::BrushSubtract,
-                 steps::BrushHollow, steps::BrushMerge, steps::BrushClip>
+                 steps::BrushHollow, steps::BrushMerge, steps::BrushIntersect, steps::BrushClip, FaceStep>
         step;
     Result<void> run(ScriptContext& c) const;
 };

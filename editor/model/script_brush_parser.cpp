@@ -6,11 +6,11 @@ namespace ks::editor {
 namespace {
 using namespace script_tokens;
 
-constexpr const char* kBrushUsage =
-    "brush box X,Y,Z X,Y,Z [material M] [name TEXT] | "
-    "brush ramp X,Y,Z X,Y,Z up +x|-x|+z|-z [material M] [name TEXT] | "
-    "brush extrude x|y|z FROM TO U,V U,V U,V... [material M] [name TEXT] | "
-    "brush subtract | brush hollow THICKNESS | brush merge | brush clip X,Y,Z NX,NY,NZ [back|front|both]";
+constexpr const char* kBrushUsage = "brush box X,Y,Z X,Y,Z [material M] [name TEXT] | "
+                                    "brush ramp X,Y,Z X,Y,Z up +x|-x|+z|-z [material M] [name TEXT] | "
+                                    "brush extrude x|y|z FROM TO U,V U,V U,V... [material M] [name TEXT] | "
+                                    "brush subtract | brush hollow THICKNESS | brush merge | brush intersect "
+                                    "| brush clip X,Y,Z NX,NY,NZ [back|front|both]";
 
 template <class T>
 Result<ScriptStep> brush_step(T step) {
@@ -112,8 +112,9 @@ Result<ScriptStep> parse_brush(const LineWords& w) {
             return w.fail(2, "expected the wall thickness, a positive number", kBrushUsage);
         return brush_step(step);
     }
-    if (what == "subtract" || what == "merge") {
+    if (what == "subtract" || what == "merge" || what == "intersect") {
         if (auto r = w.need(2, 2, kBrushUsage); !r) return r.error();
+        if (what == "intersect") return brush_step(steps::BrushIntersect{});
         return what == "merge" ? brush_step(steps::BrushMerge{}) : brush_step(steps::BrushSubtract{});
     }
     return w.fail(1, "unknown brush command '" + w.word(1) + "'", kBrushUsage);
@@ -122,8 +123,14 @@ Result<ScriptStep> parse_brush(const LineWords& w) {
 constexpr CommandSpec kCommands[] = {
     {"brush", false, kBrushUsage,
      "place a box, ramp or extruded-polygon brush (selected); cut the selected brushes from the brushes they "
-     "overlap (the cutters go), hollow, merge or clip the selected brushes",
+     "overlap (the cutters go), hollow, merge, intersect (keep their common part) or clip the selected "
+     "brushes",
      parse_brush},
+    {"face", false, kFaceUsage,
+     "select brush faces (by index or the direction they face); set their material, offset, scale or "
+     "rotation, fit or align their texture, copy and paste their attributes; replace a material across the "
+     "level; texture lock on or off",
+     parse_face_line},
 };
 
 // An edit's result without its value.
@@ -161,6 +168,9 @@ Result<void> BrushHollow::run(ScriptContext& c) const {
 }
 Result<void> BrushMerge::run(ScriptContext& c) const {
     return merge_selected_brushes(c.editor);
+}
+Result<void> BrushIntersect::run(ScriptContext& c) const {
+    return intersect_selected_brushes(c.editor);
 }
 Result<void> BrushClip::run(ScriptContext& c) const {
     return clip_selected_brushes(c.editor, point, normal, keep);

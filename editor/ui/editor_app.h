@@ -16,6 +16,7 @@
 #include "ui/analysis_view.h"
 #include "ui/bottom_panels.h"
 #include "ui/clip_preview.h"
+#include "ui/face_inspector.h"
 #include "ui/file_prompts.h"
 #include "ui/inspector.h"
 #include "ui/level_viewport.h"
@@ -131,6 +132,7 @@ class EditorApp final : private WindowServices {
     Outliner outliner_;
     PrefabPalette prefabs_;
     Inspector inspector_;
+    BrushMenu brush_menu_;
     ValidationPanel validation_;
     HistoryPanel history_panel_;
     LogPanel log_panel_;

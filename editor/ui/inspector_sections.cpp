@@ -328,6 +328,7 @@ void add(std::vector<std::unique_ptr<InspectorSection>>& sections) {
 
 std::vector<std::unique_ptr<InspectorSection>> make_inspector_sections() {
     std::vector<std::unique_ptr<InspectorSection>> sections;
+    sections.push_back(make_face_section()); // first: shown above whatever else applies
     add<PlayerStartSection>(sections);
     add<LevelSettingsSection>(sections);
     sections.push_back(make_group_section());

@@ -22,5 +22,7 @@ void override_marker(const PanelContext& ctx, const PrimaryOverrides& primary, c
 // One whole group selected (its name, Enter, Ungroup), or a prefab instance's member; for a prefab instance
 // its prefab, Apply to prefab, Revert all and Unlink (group_inspector.cpp).
 std::unique_ptr<InspectorSection> make_group_section();
+// The selected brush faces (face_inspector.cpp).
+std::unique_ptr<InspectorSection> make_face_section();
 
 } // namespace ks::editor::ui

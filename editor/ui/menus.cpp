@@ -1,4 +1,5 @@
-// The editor window's menu bar: File, Edit, View, Play, Help and the Level / Dojo tabs.
+// The editor window's menu bar: File, Edit, Brush (face_inspector.cpp), View, Play, Help and the Level / Dojo
+// tabs.
 #include "model/edit_entities.h"
 #include "model/edit_files.h"
 #include "model/edit_selection.h"
@@ -85,6 +86,7 @@ void EditorApp::menu_bar() {
         ImGui::DragFloat("Rotation step", &grid.rotation_step, 0.5f, 1.0f, 90.0f, "%.0f deg");
         ImGui::EndMenu();
     }
+    brush_menu_.draw(context());
     if (ImGui::BeginMenu("View")) {
         viewport_.view_menu();
         ImGui::EndMenu();

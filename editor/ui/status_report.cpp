@@ -156,6 +156,7 @@ void document_status(nlohmann::json& s, Editor& editor) { // title() takes the e
     s["file"] = editor.file_path().string();
     s["entities"] = editor.level().entities.size();
     s["selection"] = editor.doc().selection;
+    s["faces"] = face_status(editor);
     s["undo"] = editor.history().undo_count();
     s["undo_name"] = editor.history().undo_name();
     s["redo"] = editor.history().step_names().size() - editor.history().undo_count();

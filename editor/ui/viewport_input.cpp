@@ -4,6 +4,7 @@
 #include "ui/level_viewport.h"
 #include "ui/structure_actions.h"
 #include "ui/view_input.h"
+#include "view/face_picking.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -77,6 +78,11 @@ bool LevelViewport::drag(Vec2 mouse) {
 
 void LevelViewport::click(Vec2 mouse) {
     Editor& editor = ctx_.editor;
+    if (ImGui::GetIO().KeyCtrl &&
+        ImGui::GetIO().KeyShift) { // a brush face joins or leaves the face selection
+        ctx_.log.report(click_face(editor, pick_face(editor.doc(), view_.ray(mouse), shown_fn())), "face");
+        return;
+    }
     // A double click on a group's member enters the group (before the gizmo: the first click selected the
     // group, and its gizmo may lie under the pointer now).
     if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) &&

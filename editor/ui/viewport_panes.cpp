@@ -5,6 +5,7 @@
 // between frames it holds the active pane's camera, where the menus, keys and the status file find it.
 #include "model/bounds.h"
 #include "model/edit_selection.h"
+#include "ui/face_inspector.h"
 #include "ui/level_viewport.h"
 
 #define GLFW_INCLUDE_NONE
@@ -47,6 +48,7 @@ void LevelViewport::draw_lines(render::DebugDraw& debug, const ViewCamera& view)
     const ToolView tool_view{ctx_.editor, view, place_ray_, shown};
     for (const ViewportTool* tool : tools()) tool->draw_lines(debug, tool_view);
     lines_.open_group_box(debug, ctx_.editor);
+    draw_selected_faces(debug, ctx_.editor.doc()); // face_inspector.h
 }
 
 void LevelViewport::render(int width, int height) {

@@ -3,6 +3,7 @@
 #include "brush/brush_build.h"
 #include "brush/brush_clip.h"
 #include "brush/brush_csg.h"
+#include "brush/texture_mapping.h"
 #include "brush_checks.h"
 
 #include <doctest/doctest.h>
@@ -132,6 +133,74 @@ TEST_CASE("intersect: the common part, refused when apart or only touching") {
     CHECK(common->faces().size() == 6);
     CHECK(!intersect(a, box({5, 0, 0}, {6, 1, 1}, "cut")).ok());
     CHECK(!intersect(a, box({4, 0, 0}, {6, 4, 4}, "cut")).ok());
+}
+
+TEST_CASE("intersect_all: refusals name the brushes and say why") {
+    const Brush a = box({0, 0, 0}, {4, 4, 4}, "wall");
+    const Brush overlapping = box({2, 2, 2}, {6, 6, 6}, "cut");
+    const Brush apart = box({10, 0, 0}, {12, 4, 4}, "cut");
+    CHECK(!intersect_all(std::span<const Brush>(&a, 1)).ok());
+    const Brush disjoint[] = {a, overlapping, apart};
+    auto refused = intersect_all(disjoint);
+    REQUIRE(!refused.ok());
+    CHECK(refused.error().message.find("brushes[0] and brushes[2]") != std::string::npos);
+    CHECK(refused.error().message.find("do not overlap") != std::string::npos);
+    CHECK(refused.error().where.path == "brushes[2]");
+    // Touching along a face only: no volume in common.
+    const Brush touching[] = {a, box({4, 0, 0}, {8, 4, 4}, "cut")};
+    REQUIRE(!intersect_all(touching).ok());
+    // Three bars overlapping two by two around a triangle, with nothing common to all three.
+    const Brush along_x = box({0, 0, 0}, {10, 1, 1}, "a"), along_z = box({0, 0, 0}, {1, 1, 10}, "b");
+    auto diagonal = clip(box({-1, 0, -1}, {11, 1, 11}, "c"),
+                         {glm::normalize(DVec3(1, 0, 1)), 10.5 / std::sqrt(2.0)}, ClipSide::keep_back);
+    REQUIRE(diagonal.ok());
+    diagonal =
+        clip(*diagonal, {glm::normalize(DVec3(-1, 0, -1)), -9.5 / std::sqrt(2.0)}, ClipSide::keep_back);
+    REQUIRE(diagonal.ok());
+    const Brush triangle[] = {along_x, along_z, *diagonal};
+    auto none = intersect_all(triangle);
+    REQUIRE(!none.ok());
+    CHECK(none.error().message.find("no volume in common") != std::string::npos);
+}
+
+TEST_CASE("intersect_all: shared faces keep the first brush's attributes; three brushes at once") {
+    const Brush a = box({0, 0, 0}, {4, 4, 4}, "wall");
+    const Brush flush = box({0, 0, 2}, {4, 4, 6}, "cut"); // shares the four side planes with a
+    const Brush pair[] = {a, flush};
+    auto common = intersect_all(pair);
+    REQUIRE(common.ok());
+    CHECK(audit(*common).empty());
+    CHECK(common->faces().size() == 6);
+    CHECK(common->volume() == doctest::Approx(32.0));
+    for (const Face& f : common->faces())
+        CHECK(f.attributes.material == (f.plane.normal.z < -0.5 ? "cut" : "wall"));
+    const Brush three[] = {a, flush, box({1, -1, -1}, {3, 5, 5}, "third")};
+    auto all = intersect_all(three);
+    REQUIRE(all.ok());
+    CHECK(audit(*all).empty());
+    CHECK(all->volume() == doctest::Approx(2 * 4 * 2));
+}
+
+TEST_CASE("intersect_all: nearly parallel planes and coordinates near the limit") {
+    // A box turned 1e-6 rad about z: its sides are 1e-6 rad from a's.
+    const double t = 1e-6;
+    const glm::dmat3 turn{{std::cos(t), std::sin(t), 0}, {-std::sin(t), std::cos(t), 0}, {0, 0, 1}};
+    auto tilted = transformed(box({1, 0, 0}, {5, 4, 4}, "cut"), turn, DVec3(0.0));
+    REQUIRE(tilted.ok());
+    const Brush near_parallel[] = {box({0, 0, 0}, {4, 4, 4}, "wall"), *tilted};
+    auto slanted = intersect_all(near_parallel);
+    REQUIRE(slanted.ok());
+    CHECK(audit(*slanted).empty());
+    CHECK(slanted->volume() == doctest::Approx(3 * 4 * 4).epsilon(1e-4));
+    // Far out: 60 000 units from the origin on every axis.
+    const DVec3 far(60000, -60000, 60000);
+    const Brush distant[] = {box(far, far + DVec3(4), "wall"),
+                             box(far + DVec3(2, 1, 3), far + DVec3(7), "cut")};
+    auto out = intersect_all(distant);
+    REQUIRE(out.ok());
+    CHECK(audit(*out).empty());
+    CHECK(out->volume() == doctest::Approx(2 * 3 * 1).epsilon(1e-9));
+    for (const DVec3& v : out->vertices()) CHECK(glm::length(v - glm::round(v)) < 1e-9);
 }
 
 TEST_CASE("merge: a convex union is one brush; a non-convex one is refused") {

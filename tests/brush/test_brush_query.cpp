@@ -71,3 +71,21 @@ TEST_CASE("ray_entry: from outside, inside, missing, and parallel to a face") {
     // Straight down onto the slope at z = 0: the top is 2 high.
     CHECK(*ray_entry(r, {0, 10, 0}, {0, -1, 0}) == doctest::Approx(8).epsilon(1e-12));
 }
+
+TEST_CASE("ray_entry_face: the face a ray enters through; none from inside or when it misses") {
+    const Brush b = solid_box({-1, -1, -1}, {1, 1, 1});
+    auto from_left = ray_entry_face(b, {-5, 0.2, 0.3}, {1, 0, 0});
+    REQUIRE(from_left.has_value());
+    CHECK(from_left->distance == doctest::Approx(4));
+    CHECK(b.faces()[static_cast<size_t>(from_left->face)].plane.normal.x == doctest::Approx(-1.0));
+    auto from_above = ray_entry_face(b, {0.5, 9, 0}, glm::normalize(DVec3(0.01, -1, 0)));
+    REQUIRE(from_above.has_value());
+    CHECK(b.faces()[static_cast<size_t>(from_above->face)].plane.normal.y == doctest::Approx(1.0));
+    CHECK_FALSE(ray_entry_face(b, {0, 0, 0}, {0, 0, 1}).has_value());
+    CHECK_FALSE(ray_entry_face(b, {-5, 3, 0}, {1, 0, 0}).has_value());
+    const Brush r = ramp();
+    auto slope = ray_entry_face(r, {0, 10, 0}, {0, -1, 0});
+    REQUIRE(slope.has_value());
+    CHECK(r.faces()[static_cast<size_t>(slope->face)].plane.normal.y > 0.1);
+    CHECK(r.faces()[static_cast<size_t>(slope->face)].plane.normal.y < 0.99);
+}

@@ -180,3 +180,56 @@ expect count brush 8
     CHECK(stray.error().str().find("stray.kss:2: Subtract: brush 1 overlaps no other brush") !=
           std::string::npos);
 }
+
+TEST_CASE("brushes: intersect keeps the common part in the first brush, one step; refusals name both") {
+    Editor ed;
+    auto a = place_box_brush(ed, {0, 0, 0}, {4, 4, 4}, {"metal", "A"});
+    auto b = place_box_brush(ed, {2, 0, 2}, {6, 4, 6}, {"tiles", "B"});
+    auto far = place_box_brush(ed, {20, 0, 20}, {22, 2, 22});
+    REQUIRE((a.ok() && b.ok() && far.ok()));
+    const size_t steps = ed.history().undo_count();
+    REQUIRE(select(ed, {*a}).ok());
+    auto alone = intersect_selected_brushes(ed);
+    REQUIRE_FALSE(alone.ok());
+    CHECK(alone.error().message.find("select two or more brushes") != std::string::npos);
+    REQUIRE(select(ed, {*a, *b, *far}).ok());
+    auto apart = intersect_selected_brushes(ed);
+    REQUIRE_FALSE(apart.ok());
+    CHECK(apart.error().message.find("brush " + std::to_string(*a) + " (\"A\") and brush " +
+                                     std::to_string(*far) + " do not overlap") != std::string::npos);
+    CHECK(ed.history().undo_count() == steps);
+    REQUIRE(select(ed, {*a, *b}).ok());
+    REQUIRE(intersect_selected_brushes(ed).ok());
+    CHECK(ed.history().undo_count() == steps + 1);
+    CHECK(ed.level().find(*b) == nullptr);
+    const brush::Brush common = brush_edit_world(ed, *a);
+    CHECK(common.volume() == doctest::Approx(2 * 4 * 2));
+    CHECK(common.bounds_min() == DVec3(2, 0, 2));
+    CHECK(ed.doc().selection == std::vector<int>{*a});
+    REQUIRE(ed.undo());
+    CHECK(brush_edit_count(ed) == 3);
+    CHECK(brush_edit_world(ed, *a).volume() == doctest::Approx(64.0));
+
+    auto report = run_script_text("select " + std::to_string(*a) + " " + std::to_string(*b) +
+                                      "\nbrush intersect\nexpect count brush 2\n",
+                                  "intersect.kss", {}, ed);
+    REQUIRE_MESSAGE(report.ok(), (report.ok() ? std::string() : report.error().str()));
+}
+
+TEST_CASE("brushes: the CSG menu says why an item does not apply") {
+    Editor ed;
+    CHECK(csg_unavailable(ed.doc(), CsgOp::hollow) == "select brushes first");
+    auto a = place_box_brush(ed, {0, 0, 0}, {4, 4, 4});
+    REQUIRE(a.ok());
+    CHECK(csg_unavailable(ed.doc(), CsgOp::hollow).empty());
+    CHECK(csg_unavailable(ed.doc(), CsgOp::merge) == "select two or more brushes");
+    CHECK(csg_unavailable(ed.doc(), CsgOp::subtract) == "there is no other unlocked brush to cut");
+    auto b = place_box_brush(ed, {2, 0, 2}, {6, 4, 6});
+    REQUIRE(b.ok());
+    CHECK(csg_unavailable(ed.doc(), CsgOp::subtract).empty());
+    REQUIRE(select(ed, {*a, *b}).ok());
+    CHECK(csg_unavailable(ed.doc(), CsgOp::intersect).empty());
+    REQUIRE(run_script_text("lock " + std::to_string(*b) + "\n", "lock.kss", {}, ed).ok());
+    ed.set_selection({*a, *b});
+    CHECK(csg_unavailable(ed.doc(), CsgOp::merge).find("is locked") != std::string::npos);
+}

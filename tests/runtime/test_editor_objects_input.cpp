@@ -1,11 +1,12 @@
-// The player start and the texture browser in the real killswitch-editor window, with real X input (xdotool
-// under Xvfb), as a designer uses them: click the player start in the top view, drag it with the gizmo's x
-// arrow and turn it with the yaw ring (each drag one undo step), Ctrl+Z; open the texture browser from the
-// selected wall's texture field, search, click a thumbnail (the wall's texture changes, one undo step),
-// close it, Ctrl+Z; type into the wall's size (Enter sets and leaves the field, Esc drops only the typing,
-// Tab moves on, nothing logged while typing), Ctrl+D, and quick taps of Ctrl+D, an arrow, E and Delete.
-// The editor reports its state in --status-file every frame; the test waits on that, never on time.
-// Without a display or xdotool these tests fail: ./run.sh test provides both.
+// The player start, the texture browser and brush faces in the real killswitch-editor window, with real X
+// input (xdotool under Xvfb), as a designer uses them: click the player start in the top view, drag it with
+// the gizmo's x arrow and turn it with the yaw ring (each drag one undo step), Ctrl+Z; open the texture
+// browser from the selected wall's texture field, search, click a thumbnail (the wall's texture changes, one
+// undo step), close it, Ctrl+Z; type into the wall's size (Enter sets and leaves the field, Esc drops only
+// the typing, Tab moves on, nothing logged while typing), Ctrl+D, and quick taps of Ctrl+D, an arrow, E and
+// Delete; Ctrl+Shift+click a brush's top face, Fit (one step), Ctrl+Z. The editor reports its state in
+// --status-file every frame; the test waits on that, never on time. Without a display or xdotool these tests
+// fail: ./run.sh test provides both.
 #include "level/level_io.h"
 #include "runtime/editor_session.h"
 #include "runtime/screen_image.h"
@@ -265,4 +266,46 @@ TEST_CASE(
     s.xdo("key --delay 0 Delete");
     st = s.wait("deleted", [](const json& j) { return j["entities"] == 3; });
     CHECK(st["undo"] == undo_before + 6);
+TEST_CASE("editor objects input: Ctrl+Shift+click picks a brush's top face in the top view, Fit fits the "
+          "texture, Ctrl+Z undoes it with the face still selected") {
+    test::require_window_test_tools();
+    test::ScratchDir dir;
+    const auto level_file = test::write_file(dir / "faces_input.json", R"({
+  "format": "killswitch-level",
+  "version": 2,
+  "name": "Faces input test",
+  "player_start": {"position": [8, 0, 8], "yaw": 0},
+  "next_id": 2,
+  "entities": [{"id": 1, "type": "brush", "name": "Block", "position": [0, 0, 0]}]
+})");
+    const auto status = dir / "status.json";
+    const test::PrivateDisplay display;
+    EditorProcess editor({"--level", level_file.string(), "--view", "top", "--width", "1280", "--height",
+                          "720", "--status-file", status.string()},
+                         {"XDG_CONFIG_HOME=" + (dir / "config").string()}, display);
+    Session s(status, editor, display);
+    json st = s.wait("the brush on screen", [](const json& j) {
+        return j["frame"] >= 2 && j["view"] == "Top" && j["screen"].contains("1");
+    });
+    CHECK(st["faces"]["selected"].empty());
+    s.focus();
+    s.xdo("keydown ctrl+shift");
+    s.frames(2);
+    s.click(st["screen"]["1"]);
+    s.frames(2);
+    s.xdo("keyup ctrl+shift");
+    st = s.wait("the top face picked", [](const json& j) {
+        return j["faces"]["selected"].size() == 1 && j["spots"].contains("face.fit");
+    });
+    CHECK(st["faces"]["selected"][0]["entity"] == 1);
+    CHECK(st["selection"].empty()); // faces are picked beside the entity selection
+    const size_t undo_before = st["undo"];
+
+    s.click(st["spots"]["face.fit"]);
+    st = s.wait("the texture fitted", [&](const json& j) { return j["undo"] == undo_before + 1; });
+    CHECK(st["faces"]["selected"][0]["scale"] == json::array({4.0, 4.0})); // the default brush's 4 x 4 top
+    s.key("ctrl+z");
+    st = s.wait("the fit undone", [&](const json& j) { return j["undo"] == undo_before; });
+    CHECK(st["faces"]["selected"].size() == 1);
+    CHECK(st["faces"]["selected"][0]["scale"] == json::array({1.0, 1.0}));
 }
