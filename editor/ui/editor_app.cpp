@@ -271,7 +271,12 @@ void EditorApp::handle_shortcuts() {
     if (io.WantTextInput || ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId)) return;
     // ImGui 1.86 indexes keys by the backend's codes: GLFW_KEY_* name physical positions (US layout).
     auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
-    auto repeat = [](int key) { return ImGui::IsKeyPressed(key, true); };
+    // Auto-repeat only for a key held down through more than one frame: ImGui 1.86 repeats by time, so one
+    // slow frame (past the repeat delay) after a quick press repeated it at once: one Ctrl+Z undid twice.
+    auto repeat = [&io](int key) {
+        return ImGui::IsKeyPressed(key, true) &&
+               (io.KeysDownDuration[key] == 0.0f || io.KeysDownDurationPrev[key] > 0.0f);
+    };
     const bool ctrl = io.KeyCtrl, shift = io.KeyShift;
     if (ctrl && pressed(GLFW_KEY_N)) request(PendingAction::New);
     if (ctrl && pressed(GLFW_KEY_O)) request(PendingAction::Open);

@@ -73,14 +73,7 @@ void GeometryToolsUi::choose(GeometryTool tool) {
     match_face_ = false;
 }
 
-void GeometryToolsUi::bar(Editor& editor, EditorLog& log, Vec2 origin, Vec2 size, UiSpots& spots) {
-    // Kept off the crowded tool bar at the top: over the picture's bottom left, growing upward.
-    ImGui::SetNextWindowPos(ImVec2(origin.x + 8, origin.y + size.y - 32), ImGuiCond_Always,
-                            ImVec2(0.0f, 1.0f));
-    ImGui::SetNextWindowBgAlpha(0.8f);
-    ImGui::Begin("##geometry_tools", nullptr,
-                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
-                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
+void GeometryToolsUi::buttons(UiSpots& spots) {
     static constexpr std::pair<GeometryTool, const char*> kButtons[] = {
         {GeometryTool::draw, "Draw"}, {GeometryTool::clip, "Clip"}, {GeometryTool::measure, "Measure"}};
     static constexpr const char* kTips[] = {
@@ -95,8 +88,22 @@ void GeometryToolsUi::bar(Editor& editor, EditorLog& log, Vec2 origin, Vec2 size
         if (on) ImGui::PopStyleColor();
         spots.here(std::string("tool.") + tool_name(tool));
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kTips[i]);
-        if (i < 2) ImGui::SameLine();
+        if (i < 2) ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
     }
+}
+
+void GeometryToolsUi::bar(Editor& editor, EditorLog& log, Vec2 origin, Vec2 size, UiSpots& spots) {
+    // Kept off the crowded tool bar at the top: over the picture's bottom right (the status line holds the
+    // bottom left), growing left and upward: the buttons, then the active tool's options and what it says.
+    ImGui::SetNextWindowPos(ImVec2(origin.x + size.x - 8, origin.y + size.y - 32), ImGuiCond_Always,
+                            ImVec2(1.0f, 1.0f));
+    ImGui::SetNextWindowBgAlpha(0.8f);
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4, 4));
+    ImGui::Begin("##geometry_tools", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
+    ImGui::PopStyleVar();
+    buttons(spots);
     if (active_ == GeometryTool::draw) {
         draw_.grid = editor.doc().grid.step;
         for (DrawShape shape : {DrawShape::box, DrawShape::polygon}) {

@@ -26,9 +26,10 @@ class GeometryToolsUi {
     // Chooses a tool (the same one again, or none, leaves it); what the others were doing is dropped.
     void choose(GeometryTool tool);
 
-    // The tools' bar over the viewport's bottom left (`area`: the viewport, window pixels), above its status
-    // line: the Draw, Clip and Measure buttons (spots tool.draw, tool.clip, tool.measure), then the active
-    // tool's options (shape and height; keep side, match face, Apply) and what it says (problem, hint).
+    // The tools' bar over the viewport's bottom right (`origin`, `size`: the viewport, window pixels), above
+    // its status line: the Draw, Clip and Measure buttons (spots tool.draw, tool.clip, tool.measure), then
+    // the active tool's options (shape and height; keep side, match face, Apply) and what it says (problem,
+    // hint).
     void bar(Editor& editor, EditorLog& log, Vec2 origin, Vec2 size, UiSpots& spots);
     // The viewport's mouse in the view the mouse works in (`mouse` in its pixels).
     void mouse(Editor& editor, EditorLog& log, const ViewCamera& view, Vec2 mouse, bool hovered,
@@ -40,6 +41,7 @@ class GeometryToolsUi {
     void status(nlohmann::json& status, const Document& doc) const;
 
   private:
+    void buttons(UiSpots& spots);
     ToolPreview preview(const Document& doc) const;
     void enter(Editor& editor, EditorLog& log); // Enter: close, extrude or clip
     void draw_mouse(Editor& editor, EditorLog& log, const ViewCamera& view, Vec2 mouse, bool hovered,

@@ -171,7 +171,7 @@ void document_status(nlohmann::json& s, Editor& editor) { // title() takes the e
                         {"rotation", {e->rotation.x, e->rotation.y, e->rotation.z}},
                         {"links", links_json(e->links)}};
         if (const auto texture = selection_texture(editor)) s["primary"]["texture"] = texture->name;
-        json fields = json::object(); // every field as the inspector's text (what a typed edit set)
+        nlohmann::json fields = nlohmann::json::object(); // every field as the inspector's text (what a typed edit set)
         for (const FieldDescriptor& field : describe_entity_fields(*e))
             if (const auto value = get_entity_field(*e, field.name))
                 fields[field.name] = format_field_value(*value);

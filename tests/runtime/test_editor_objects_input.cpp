@@ -266,6 +266,8 @@ TEST_CASE(
     s.xdo("key --delay 0 Delete");
     st = s.wait("deleted", [](const json& j) { return j["entities"] == 3; });
     CHECK(st["undo"] == undo_before + 6);
+}
+
 TEST_CASE("editor objects input: Ctrl+Shift+click picks a brush's top face in the top view, Fit fits the "
           "texture, Ctrl+Z undoes it with the face still selected") {
     test::require_window_test_tools();
