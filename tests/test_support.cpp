@@ -27,6 +27,14 @@ std::string read_file(const fs::path& path) {
     return out.str();
 }
 
+bool sanitized_build() {
+#ifdef KS_SANITIZED_BUILD
+    return true;
+#else
+    return false;
+#endif
+}
+
 bool contains_text(const std::string& text, const std::string& part) {
     return text.find(part) != std::string::npos;
 }

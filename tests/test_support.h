@@ -12,6 +12,12 @@ std::string editor_binary();        // bin_dir() / killswitch-editor
 std::string read_file(const std::filesystem::path& path);
 // `text` contains `part` (a report line, a message).
 bool contains_text(const std::string& text, const std::string& part);
+// The AddressSanitizer + UBSan build (KS_SANITIZE), where code runs several times slower: long property loops
+// take `sanitized_share` of their iterations there; the Release pass runs them in full.
+bool sanitized_build();
+inline int iterations(int full, double sanitized_share = 0.25) {
+    return sanitized_build() ? static_cast<int>(full * sanitized_share) : full;
+}
 // Writes `text` to `path` (replacing it); the path back.
 std::filesystem::path write_file(const std::filesystem::path& path, const std::string& text);
 

@@ -11,6 +11,7 @@
 #include "brush/texture_mapping.h"
 #include "brush_checks.h"
 #include "core/random.h"
+#include "test_support.h"
 
 #include <doctest/doctest.h>
 
@@ -173,7 +174,8 @@ TEST_CASE("property: 10 000 random clip, vertex-move and subtract edits") {
         pool.push_back(std::move(*b));
         home.push_back(centre);
     }
-    for (t.edits = 0; t.edits < 10000; ++t.edits) {
+    const int edits = ks::test::iterations(10000); // 2 500 in the sanitized build
+    for (t.edits = 0; t.edits < edits; ++t.edits) {
         const std::size_t k = rng.below(static_cast<std::uint32_t>(pool.size()));
         auto next = edit(rng, pool[k], t);
         next ? ++t.accepted : ++t.refused;
