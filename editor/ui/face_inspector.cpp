@@ -113,7 +113,7 @@ class FaceSection final : public InspectorSection {
             ImGui::SetTooltip("Copy a face's attributes first");
         ImGui::SameLine();
         bool lock = editor.face_session().texture_lock;
-        if (ImGui::Checkbox("Texture lock", &lock)) set_texture_lock(editor, lock);
+        if (ImGui::Checkbox("Pin to world", &lock)) set_texture_lock(editor, lock);
         ctx.spots.here("face.lock");
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(
@@ -187,7 +187,7 @@ void BrushMenu::draw(const PanelContext& ctx) {
     if (ImGui::MenuItem("Clear face selection", nullptr, false, !doc.faces.empty()))
         clear_face_selection(editor);
     bool lock = editor.face_session().texture_lock;
-    if (ImGui::MenuItem("Texture lock", nullptr, &lock)) set_texture_lock(editor, lock);
+    if (ImGui::MenuItem("Pin to world", nullptr, &lock)) set_texture_lock(editor, lock);
     ImGui::EndMenu();
 }
 
