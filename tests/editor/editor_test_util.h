@@ -1,5 +1,6 @@
 #pragma once
 // Shared helpers for the editor model tests.
+#include "level/entity_shapes.h"
 #include "level/level_io.h"
 #include "model/autosave.h"
 #include "model/edit_entities.h"
@@ -13,6 +14,20 @@
 #include <string>
 
 namespace ks::editor_test {
+
+// Brush entity `id`'s brush in the world (level::world_brush), required to exist.
+inline brush::Brush world_brush_of(const editor::Editor& ed, int id) {
+    auto world = level::world_brush(*ed.level().find(id));
+    REQUIRE(world.ok());
+    return *world;
+}
+
+// How many brush entities the level holds.
+inline int brush_count(const editor::Editor& ed) {
+    int n = 0;
+    for (const level::Entity& e : ed.level().entities) n += e.type() == level::EntityType::Brush;
+    return n;
+}
 
 inline std::string text_of(const editor::Editor& editor) {
     return level::save_level_string(editor.level());

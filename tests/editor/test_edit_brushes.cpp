@@ -16,23 +16,11 @@ using level::EntityType;
 
 namespace {
 
-brush::Brush brush_edit_world(const Editor& ed, int id) {
-    auto world = level::world_brush(*ed.level().find(id));
-    REQUIRE(world.ok());
-    return *world;
-}
-
 double brush_edit_total_volume(const Editor& ed) {
     double volume = 0.0;
     for (const level::Entity& e : ed.level().entities)
-        if (e.type() == EntityType::Brush) volume += brush_edit_world(ed, e.id).volume();
+        if (e.type() == EntityType::Brush) volume += editor_test::world_brush_of(ed, e.id).volume();
     return volume;
-}
-
-int brush_edit_count(const Editor& ed) {
-    return static_cast<int>(
-        std::count_if(ed.level().entities.begin(), ed.level().entities.end(),
-                      [](const level::Entity& e) { return e.type() == EntityType::Brush; }));
 }
 
 } // namespace
@@ -45,7 +33,7 @@ TEST_CASE("brushes: a box from two corners is snapped, stands on its bottom cent
     const level::Entity& e = *ed.level().find(*id);
     CHECK(e.name == "Block");
     CHECK(e.position == Vec3(1.0f, 0.0f, 0.0f));
-    const brush::Brush world = brush_edit_world(ed, *id);
+    const brush::Brush world = editor_test::world_brush_of(ed, *id);
     CHECK(world.bounds_min() == DVec3(-2.0, 0.0, -1.0));
     CHECK(world.bounds_max() == DVec3(4.0, 3.0, 1.0));
     for (const brush::Face& f : world.faces()) CHECK(f.attributes.material == "metal");
@@ -62,7 +50,7 @@ TEST_CASE("brushes: a ramp 4 high over 8 needs no trigonometry; an extruded poly
     Editor ed;
     auto ramp = place_ramp_brush(ed, {0, 0, 0}, {6, 4, 8}, {2, 1});
     REQUIRE(ramp.ok());
-    const brush::Brush r = brush_edit_world(ed, *ramp);
+    const brush::Brush r = editor_test::world_brush_of(ed, *ramp);
     CHECK(r.volume() == doctest::Approx(6.0 * 4.0 * 8.0 / 2.0));
     CHECK(glm::length(r.bounds_max() - DVec3(6.0, 4.0, 8.0)) < 1e-9);
     // The slope: its normal leans back against the climb (up and toward -z), 4 over 8.
@@ -75,11 +63,12 @@ TEST_CASE("brushes: a ramp 4 high over 8 needs no trigonometry; an extruded poly
     const glm::vec2 wall[] = {{0, 0}, {8, 6}, {7.4f, 6.8f}, {-0.6f, 0.8f}};
     auto angled = place_extruded_brush(ed, 1, 0, 5, wall, {"tiles", ""});
     REQUIRE(angled.ok());
-    CHECK(brush_edit_world(ed, *angled).volume() == doctest::Approx(10.0 * 1.0 * 5.0).epsilon(1e-5));
+    CHECK(editor_test::world_brush_of(ed, *angled).volume() ==
+          doctest::Approx(10.0 * 1.0 * 5.0).epsilon(1e-5));
     const glm::vec2 dent[] = {{0, 0}, {4, 0}, {2, 1}, {4, 4}};
     auto bad = place_extruded_brush(ed, 1, 0, 5, dent);
     CHECK_FALSE(bad.ok());
-    CHECK(brush_edit_count(ed) == 2);
+    CHECK(editor_test::brush_count(ed) == 2);
 }
 
 TEST_CASE("brushes: subtract cuts a window, keeps the wall's id and volume, removes the cutter; one undo") {
@@ -93,7 +82,7 @@ TEST_CASE("brushes: subtract cuts a window, keeps the wall's id and volume, remo
     REQUIRE(subtract_selected_brushes(ed).ok());
     CHECK(ed.level().find(window) == nullptr);
     CHECK(ed.level().find(wall) != nullptr);
-    CHECK(brush_edit_count(ed) == 5); // four pieces around the window and the untouched box
+    CHECK(editor_test::brush_count(ed) == 5); // four pieces around the window and the untouched box
     CHECK(brush_edit_total_volume(ed) ==
           doctest::Approx(before - 4.0 * 4.0 * 3.0 - 4.0 * 3.0 * 1.0).epsilon(1e-9));
     CHECK(ed.level().find(other)->position == Vec3(22, 0, 2));
@@ -101,7 +90,7 @@ TEST_CASE("brushes: subtract cuts a window, keeps the wall's id and volume, remo
     for (const level::Entity& e : ed.level().entities) {
         if (e.name.rfind("Wall", 0) == 0) ++named;
         if (e.type() != EntityType::Brush || e.id == other) continue;
-        const brush::Brush piece = brush_edit_world(ed, e.id);
+        const brush::Brush piece = editor_test::world_brush_of(ed, e.id);
         for (const brush::Face& f : piece.faces()) metal_faces += f.attributes.material == "metal";
     }
     CHECK(named == 4);
@@ -109,7 +98,7 @@ TEST_CASE("brushes: subtract cuts a window, keeps the wall's id and volume, remo
     // which lie on the cutter's planes.
     CHECK(metal_faces == 8);
     REQUIRE(ed.undo());
-    CHECK(brush_edit_count(ed) == 3);
+    CHECK(editor_test::brush_count(ed) == 3);
     CHECK(brush_edit_total_volume(ed) == doctest::Approx(before));
 
     // A cutter that touches nothing is refused by name, and nothing changes.
@@ -119,23 +108,23 @@ TEST_CASE("brushes: subtract cuts a window, keeps the wall's id and volume, remo
     REQUIRE_FALSE(refused.ok());
     CHECK(refused.error().message.find("brush " + std::to_string(stray) + " overlaps no other brush") !=
           std::string::npos);
-    CHECK(brush_edit_count(ed) == 4);
+    CHECK(editor_test::brush_count(ed) == 4);
 }
 
 TEST_CASE("brushes: hollow, merge and clip; a non-convex merge and an empty clip are refused") {
     Editor ed;
     const int room = *place_box_brush(ed, {0, 0, 0}, {10, 6, 10});
     REQUIRE(hollow_selected_brushes(ed, 0.5f).ok());
-    CHECK(brush_edit_count(ed) == 6);
+    CHECK(editor_test::brush_count(ed) == 6);
     CHECK(brush_edit_total_volume(ed) == doctest::Approx(600.0 - 9.0 * 5.0 * 9.0));
     REQUIRE(ed.undo());
-    CHECK(brush_edit_count(ed) == 1);
+    CHECK(editor_test::brush_count(ed) == 1);
 
     const int right = *place_box_brush(ed, {10, 0, 0}, {14, 6, 10});
     REQUIRE(select(ed, {room, right}).ok());
     REQUIRE(merge_selected_brushes(ed).ok());
-    CHECK(brush_edit_count(ed) == 1);
-    CHECK(brush_edit_world(ed, room).volume() == doctest::Approx(14.0 * 6.0 * 10.0));
+    CHECK(editor_test::brush_count(ed) == 1);
+    CHECK(editor_test::world_brush_of(ed, room).volume() == doctest::Approx(14.0 * 6.0 * 10.0));
     const int corner = *place_box_brush(ed, {14, 0, 10}, {16, 6, 12});
     REQUIRE(select(ed, {room, corner}).ok());
     auto l_shape = merge_selected_brushes(ed);
@@ -144,9 +133,9 @@ TEST_CASE("brushes: hollow, merge and clip; a non-convex merge and an empty clip
 
     REQUIRE(select(ed, {room}).ok());
     REQUIRE(clip_selected_brushes(ed, {0, 3, 0}, {0, 1, 0}, ClipKeep::back).ok());
-    CHECK(brush_edit_world(ed, room).bounds_max().y == doctest::Approx(3.0));
+    CHECK(editor_test::world_brush_of(ed, room).bounds_max().y == doctest::Approx(3.0));
     REQUIRE(clip_selected_brushes(ed, {7, 0, 0}, {1, 0, 0}, ClipKeep::both).ok());
-    CHECK(brush_edit_count(ed) == 3);
+    CHECK(editor_test::brush_count(ed) == 3);
     REQUIRE(select(ed, {room}).ok());
     auto nothing = clip_selected_brushes(ed, {-5, 0, 0}, {1, 0, 0}, ClipKeep::back);
     REQUIRE_FALSE(nothing.ok());
@@ -202,13 +191,13 @@ TEST_CASE("brushes: intersect keeps the common part in the first brush, one step
     REQUIRE(intersect_selected_brushes(ed).ok());
     CHECK(ed.history().undo_count() == steps + 1);
     CHECK(ed.level().find(*b) == nullptr);
-    const brush::Brush common = brush_edit_world(ed, *a);
+    const brush::Brush common = editor_test::world_brush_of(ed, *a);
     CHECK(common.volume() == doctest::Approx(2 * 4 * 2));
     CHECK(common.bounds_min() == DVec3(2, 0, 2));
     CHECK(ed.doc().selection == std::vector<int>{*a});
     REQUIRE(ed.undo());
-    CHECK(brush_edit_count(ed) == 3);
-    CHECK(brush_edit_world(ed, *a).volume() == doctest::Approx(64.0));
+    CHECK(editor_test::brush_count(ed) == 3);
+    CHECK(editor_test::world_brush_of(ed, *a).volume() == doctest::Approx(64.0));
 
     auto report = run_script_text("select " + std::to_string(*a) + " " + std::to_string(*b) +
                                       "\nbrush intersect\nexpect count brush 2\n",

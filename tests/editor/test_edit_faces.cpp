@@ -31,18 +31,15 @@ const brush::Face& local_face(const Editor& ed, int id, int face) {
 }
 
 brush::Face world_face(const Editor& ed, int id, int face) {
-    auto world = level::world_brush(*ed.level().find(id));
-    REQUIRE(world.ok());
-    return world->faces()[static_cast<size_t>(face)];
+    return editor_test::world_brush_of(ed, id).faces()[static_cast<size_t>(face)];
 }
 
 // The world corners of a face.
 std::vector<DVec3> world_corners(const Editor& ed, int id, int face) {
-    auto world = level::world_brush(*ed.level().find(id));
-    REQUIRE(world.ok());
+    const brush::Brush world = editor_test::world_brush_of(ed, id);
     std::vector<DVec3> out;
-    for (int v : world->polygons()[static_cast<size_t>(face)])
-        out.push_back(world->vertices()[static_cast<size_t>(v)]);
+    for (int v : world.polygons()[static_cast<size_t>(face)])
+        out.push_back(world.vertices()[static_cast<size_t>(v)]);
     return out;
 }
 

@@ -18,18 +18,6 @@ using namespace ks::editor;
 
 namespace {
 
-brush::Brush gt_world(const Editor& ed, int id) {
-    auto world = level::world_brush(*ed.level().find(id));
-    REQUIRE(world.ok());
-    return *world;
-}
-
-int gt_brush_count(const Editor& ed) {
-    return static_cast<int>(
-        std::count_if(ed.level().entities.begin(), ed.level().entities.end(),
-                      [](const auto& e) { return e.type() == level::EntityType::Brush; }));
-}
-
 bool gt_has_label(const ToolPreview& p, const std::string& text) {
     return std::any_of(p.labels.begin(), p.labels.end(), [&](const ToolLabel& l) { return l.text == text; });
 }
@@ -55,8 +43,8 @@ TEST_CASE("draw tool: a box dragged in the top view shows its size live and comm
     auto id = tool.release(ed);
     REQUIRE_MESSAGE(id.ok(), (id.ok() ? "" : id.error().str()));
     CHECK(tool.stage() == DrawStage::idle);
-    CHECK(gt_world(ed, *id).bounds_min() == DVec3(0, 0, 0));
-    CHECK(gt_world(ed, *id).bounds_max() == DVec3(4, 3, 2));
+    CHECK(editor_test::world_brush_of(ed, *id).bounds_min() == DVec3(0, 0, 0));
+    CHECK(editor_test::world_brush_of(ed, *id).bounds_max() == DVec3(4, 3, 2));
     CHECK(ed.history().undo_count() == 1);
 
     // The next box in the top view takes the last one's height range; in the front view its depth range.
@@ -69,7 +57,7 @@ TEST_CASE("draw tool: a box dragged in the top view shows its size live and comm
     CHECK(*tool.bounds() == std::array{DVec3(0, 0, 0), DVec3(2, 5, 2)});
     tool.cancel();
     CHECK(ed.undo());
-    CHECK(gt_brush_count(ed) == 1);
+    CHECK(editor_test::brush_count(ed) == 1);
 }
 
 TEST_CASE(
@@ -132,7 +120,7 @@ TEST_CASE("draw tool: a polygon is clicked, closed on its first corner, extruded
     CHECK(tool.height() == doctest::Approx(5.0));
     auto id = tool.commit(ed);
     REQUIRE_MESSAGE(id.ok(), (id.ok() ? "" : id.error().str()));
-    CHECK(gt_world(ed, *id).volume() == doctest::Approx(8.0 * 5.0));
+    CHECK(editor_test::world_brush_of(ed, *id).volume() == doctest::Approx(8.0 * 5.0));
     CHECK(ed.history().undo_count() == 1);
 }
 
@@ -156,7 +144,7 @@ TEST_CASE("draw tool: non-convex, collinear and too-small polygons are refused w
     auto line = tool.commit(ed);
     REQUIRE_FALSE(line.ok());
     CHECK(line.error().message.find("cannot be extruded") != std::string::npos);
-    CHECK(gt_brush_count(ed) == 0);
+    CHECK(editor_test::brush_count(ed) == 0);
     CHECK(ed.history().undo_count() == 0);
 }
 
@@ -192,19 +180,19 @@ TEST_CASE("clip tool: three points preview the cut on the selected brush; Enter 
     tool.cycle_keep();
     CHECK(tool.keep() == ClipKeep::front);
     REQUIRE(tool.apply(ed).ok());
-    CHECK(gt_world(ed, cube).bounds_min().x == doctest::Approx(2.0));
-    CHECK(gt_world(ed, cube).bounds_max().x == doctest::Approx(4.0));
+    CHECK(editor_test::world_brush_of(ed, cube).bounds_min().x == doctest::Approx(2.0));
+    CHECK(editor_test::world_brush_of(ed, cube).bounds_max().x == doctest::Approx(4.0));
     CHECK_FALSE(tool.busy());
     CHECK(ed.history().undo_count() == 2);
     REQUIRE(ed.undo());
-    CHECK(gt_world(ed, cube).bounds_min().x == doctest::Approx(0.0));
+    CHECK(editor_test::world_brush_of(ed, cube).bounds_min().x == doctest::Approx(0.0));
 }
 
 TEST_CASE("clip tool: the cut's outline on a turned brush lies on the plane and inside the brush") {
     Editor ed;
     auto report = run_script_text("brush box 0,0,0 4,4,4\nrotate y 45\n", "turned.kss", {}, ed);
     REQUIRE_MESSAGE(report.ok(), (report.ok() ? std::string() : report.error().str()));
-    const brush::Brush world = gt_world(ed, ed.doc().selection.front());
+    const brush::Brush world = editor_test::world_brush_of(ed, ed.doc().selection.front());
     ClipTool tool;
     for (DVec3 p : {DVec3(2, 0, 0), DVec3(2, 1, 0), DVec3(2, 0, 1)}) REQUIRE(tool.add_point(p).ok());
     const ToolPreview shown = tool.preview(ed.doc());
@@ -243,7 +231,7 @@ TEST_CASE("clip tool: two points in an axis view make a plane containing the vie
     CHECK(tool.plane()->normal == DVec3(1, 0, 0));
     tool.set_keep(ClipKeep::both);
     REQUIRE(tool.apply(ed).ok());
-    CHECK(gt_brush_count(ed) == 2);
+    CHECK(editor_test::brush_count(ed) == 2);
 
     ClipTool straight; // two points one above the other, seen from the top
     straight.set_view_direction(DVec3(0, -1, 0));
@@ -292,7 +280,7 @@ TEST_CASE("clip tool: match a face cuts by that face's plane; a fourth point sta
     Editor ed;
     const int low = gt_cube(ed);
     const int tall = gt_cube(ed, {6, 0, 0}, {8, 10, 2});
-    const brush::Brush lows = gt_world(ed, low);
+    const brush::Brush lows = editor_test::world_brush_of(ed, low);
     const auto top = std::find_if(lows.faces().begin(), lows.faces().end(),
                                   [](const brush::Face& f) { return f.plane.normal.y > 0.5; });
     REQUIRE(top != lows.faces().end());
@@ -302,7 +290,7 @@ TEST_CASE("clip tool: match a face cuts by that face's plane; a fourth point sta
     CHECK(tool.points().empty());
     REQUIRE(select(ed, {tall}).ok());
     REQUIRE(tool.apply(ed).ok());
-    CHECK(gt_world(ed, tall).bounds_max().y == doctest::Approx(4.0));
+    CHECK(editor_test::world_brush_of(ed, tall).bounds_max().y == doctest::Approx(4.0));
 
     ClipTool again;
     for (DVec3 p : {DVec3(0, 0, 0), DVec3(1, 0, 0), DVec3(0, 1, 0), DVec3(5, 5, 5)})
