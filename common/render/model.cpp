@@ -165,8 +165,13 @@ std::unique_ptr<Model> load_model(const std::filesystem::path& path, TextureCach
             dst.position = Vec3(src->mVertices[v].x, src->mVertices[v].y, src->mVertices[v].z);
             dst.normal = src->mNormals ? Vec3(src->mNormals[v].x, src->mNormals[v].y, src->mNormals[v].z)
                                        : Vec3(0, 1, 0);
-            dst.uv = src->mTextureCoords[0] ? Vec2(src->mTextureCoords[0][v].x, src->mTextureCoords[0][v].y)
-                                            : Vec2(0);
+            // assimp hands texture coordinates over with v = 0 at the image's bottom (its glTF importer
+            // flips glTF's v, OBJ's is bottom-up already); our textures are uploaded top row first (the
+            // world's maps are made that way), so v is turned back. The tangent frame below keeps assimp's
+            // bitangent, which still points up the image as glTF's normal maps expect.
+            dst.uv = src->mTextureCoords[0]
+                         ? Vec2(src->mTextureCoords[0][v].x, 1.0f - src->mTextureCoords[0][v].y)
+                         : Vec2(0);
             if (src->mTangents && src->mBitangents) {
                 Vec3 t(src->mTangents[v].x, src->mTangents[v].y, src->mTangents[v].z);
                 Vec3 b(src->mBitangents[v].x, src->mBitangents[v].y, src->mBitangents[v].z);

@@ -472,6 +472,26 @@ TEST_CASE("generated models carry the node names and dimensions the conventions 
         CHECK(hi.x - lo.x == doctest::Approx(2.94).epsilon(0.01));
         CHECK(hi.z - lo.z == doctest::Approx(5.34).epsilon(0.01));
         CHECK(hi.y == doctest::Approx(4.0).epsilon(0.01));
+        // The screen faces -X; a player there has +Z on the right and +Y up, so u grows with z and v
+        // (0 at the image's top) falls with y, or the "SIMULATION CONTROL" title ends up at the bottom,
+        // upside down (it was, issue 28). The screen's centre is 2.65 up.
+        const Gltf g = load_model("control_panel");
+        int front_vertices = 0;
+        for (const json& m : doc["meshes"])
+            for (const json& prim : m["primitives"]) {
+                if (doc["materials"][prim["material"].get<int>()]["name"] != "screen_emissive") continue;
+                const std::vector<double> pos = read_accessor(g, prim["attributes"]["POSITION"].get<int>());
+                const std::vector<double> nrm = read_accessor(g, prim["attributes"]["NORMAL"].get<int>());
+                const std::vector<double> uv = read_accessor(g, prim["attributes"]["TEXCOORD_0"].get<int>());
+                for (size_t i = 0; i < pos.size() / 3; ++i) {
+                    if (nrm[3 * i] > -0.5) continue;
+                    ++front_vertices;
+                    CHECK(uv[2 * i] == doctest::Approx(pos[3 * i + 2] / 4.4 + 0.5).epsilon(0.01));
+                    CHECK(uv[2 * i + 1] ==
+                          doctest::Approx(0.5 - (pos[3 * i + 1] - 2.65) / 2.1).epsilon(0.01));
+                }
+            }
+        CHECK(front_vertices >= 4);
     }
     SUBCASE("gas cylinder and pickups") {
         const auto [lo, hi] = model_bounds(load_model("gas_cylinder").doc);

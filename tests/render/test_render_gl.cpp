@@ -515,6 +515,49 @@ TEST_CASE(
     }
 }
 
+TEST_CASE("the control panel's screen reads upright: its big title at the top, the small status line below") {
+    // assimp hands texture coordinates over bottom-up; drawn as they came, every model's textures were
+    // upside down, which only the panel's text showed (issue 28).
+    KS_REQUIRE_GL();
+    AssetLibrary assets(assets_dir());
+    RendererSettings settings;
+    settings.render_scale = 1.0f;
+    auto renderer = SceneRenderer::create(assets.textures(), settings);
+    REQUIRE(renderer);
+    const Model& panel = assets.model("control_panel");
+    REQUIRE_FALSE(panel.placeholder);
+    std::vector<MeshInstance> instances;
+    std::vector<Mat4> scratch;
+    panel.emit(Mat4(1.0f), scratch, instances);
+    // Straight at the screen (4.4 x 2.1, centre 2.65 up, facing -X), filling about 60 % of the height.
+    geometry::Camera cam;
+    cam.position = Vec3(-4.0f, 2.65f, 0.0f);
+    cam.yaw = std::atan2(-1.0f, 0.0f); // looking along +X
+    cam.pitch = 0.0f;
+    cam.fov_y = radians(45.0f);
+    Environment env;
+    env.sky_color = env.ground_color = env.sun_color = Vec3(0.3f);
+    const auto rgb = render_offscreen(**renderer, cam, env, instances, {});
+    const int w = ks::test::kGlWidth, h = ks::test::kGlHeight;
+    const int screen_h = static_cast<int>(h * 1.05f / (4.0f * std::tan(radians(22.5f))));
+    const int top = h / 2 - screen_h / 2, bottom = h / 2 + screen_h / 2;
+    auto cyan_in_rows = [&](int y0, int y1) {
+        int n = 0;
+        for (int y = std::max(0, y0); y < std::min(h, y1); ++y)
+            for (int x = w / 4; x < w * 3 / 4; ++x) {
+                const unsigned char* p = &rgb[(static_cast<size_t>(y) * w + x) * 3];
+                n += p[2] > 150 && p[1] > 120 && p[0] < 130 ? 1 : 0;
+            }
+        return n;
+    };
+    const int title = cyan_in_rows(top, top + screen_h / 5),
+              footer = cyan_in_rows(bottom - screen_h / 5, bottom);
+    CAPTURE(title);
+    CAPTURE(footer);
+    CHECK(title > 2 * footer);
+    CHECK(title > 40);
+}
+
 TEST_CASE("killswitch --screenshot renders the main level and the asset viewer to PNG files") {
     KS_REQUIRE_GL();
     ks::test::ScratchDir dir;
