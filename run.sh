@@ -54,7 +54,7 @@ REAL_INPUT_TESTS='^runtime/test_(editor_[a-z_]*input|dojo_input|play_input)$'
 # The suites that judge a picture or a timing (pixels of menus, views, particles; idle CPU): when both passes
 # run, they run in the Release pass only. Their code paths run sanitized in the real-input suites and
 # render/test_render_gl; a sanitizer makes a timing meaningless and a picture no more right.
-PICTURE_TESTS='^(runtime/test_(game_app|play_views|dojo_views|play_feedback|menu_version|idle_cpu)|render/test_render_feedback)$'
+PICTURE_TESTS='^(runtime/test_(game_app|play_views|dojo_views|play_feedback|menu_layout|idle_cpu)|render/test_render_feedback)$'
 
 njobs() { nproc 2>/dev/null || echo 2; }
 

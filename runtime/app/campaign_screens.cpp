@@ -17,8 +17,7 @@ constexpr ImU32 kMuted = IM_COL32(95, 105, 115, 255); // secondary text on the l
 constexpr ImU32 kError = IM_COL32(180, 35, 35, 255);
 
 float scale() {
-    const float h = ImGui::GetIO().DisplaySize.y;
-    return h > 0.0f ? ui::ui_scale(h) : 1.0f;
+    return ui::display_scale();
 }
 
 // The panel's fonts are loaded for the window and scaled by begin_panel; draw-list text needs the size.
@@ -254,7 +253,7 @@ MenuAction custom_levels_screen(const std::vector<LevelGroup>& groups, const lev
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
     MenuAction action = MenuAction::None;
     // Taller where the window has room for more of the list (440 at 270p and 540p, 540 from 720p on).
-    const float panel_h = std::clamp(h / ui::ui_scale(h) - 180.0f, 440.0f, 540.0f);
+    const float panel_h = std::clamp(h / ui::ui_scale(w, h) - 180.0f, 440.0f, 540.0f);
     ui::begin_panel("##custom", "Custom Level", 760, panel_h, w, h, fonts);
     const float s = scale();
     ui::centred_text("Play one level on its own. Your levels folder is listed below the shipped ones.",

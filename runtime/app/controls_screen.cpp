@@ -56,7 +56,7 @@ bool key_button(Action a, std::size_t slot, const Options& o, const ControlsStat
 }
 
 void bindings_table(Options& o, ControlsState& st, float x, float width) {
-    const float s = ui::ui_scale(ImGui::GetIO().DisplaySize.y);
+    const float s = ui::display_scale();
     const float key_w = 130 * s, gap = 10 * s;
     const float key_x = x + width - 2 * key_w - gap;
     const auto clash = conflicts(o.bindings);
@@ -87,7 +87,7 @@ void bindings_table(Options& o, ControlsState& st, float x, float width) {
 }
 
 void gamepad_column(Options& o, bool& changed, float x, float width) {
-    const float s = ui::ui_scale(ImGui::GetIO().DisplaySize.y);
+    const float s = ui::display_scale();
     text_at(x, "Gamepad", kQuiet);
     for (const auto& row : kPadRows) {
         text_at(x, row[0], ui::kAccentActive);
@@ -95,23 +95,22 @@ void gamepad_column(Options& o, bool& changed, float x, float width) {
         ImGui::TextUnformatted(row[1]);
     }
     auto slider = [&](const char* label, const char* id, float& value, float lo, float hi, const char* format,
-                      float shown_scale) {
+                      float shown_scale, float step) {
         text_at(x, label, ui::kInk);
         ImGui::SameLine(x + 170 * s);
-        ImGui::SetNextItemWidth(width - 170 * s);
         float shown = value * shown_scale;
-        if (ImGui::SliderFloat(id, &shown, lo * shown_scale, hi * shown_scale, format,
-                               ImGuiSliderFlags_AlwaysClamp)) {
+        char text[32];
+        std::snprintf(text, sizeof text, format, static_cast<double>(shown));
+        if (ui::value_slider(label, id, shown, lo * shown_scale, hi * shown_scale, step, text,
+                             width - 170 * s)) {
             value = shown / shown_scale;
             changed = true;
         }
-        ui::record_button(label);
-        ui::nav_focus_ring();
     };
     slider("Look speed", "##padlook", o.pad_look_sensitivity, Options::kMinSensitivity,
-           Options::kMaxSensitivity, "%.2f", 1.0f);
+           Options::kMaxSensitivity, "%.2f", 1.0f, 0.01f);
     slider("Dead zone", "##paddead", o.pad_dead_zone, Options::kMinDeadZone, Options::kMaxDeadZone, "%.0f %%",
-           100.0f);
+           100.0f, 1.0f);
 }
 } // namespace
 
@@ -119,7 +118,7 @@ MenuAction controls_screen(Options& o, ControlsState& st, bool& changed, const s
                            float h) {
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
     MenuAction action = MenuAction::None;
-    const float s = ui::ui_scale(h);
+    const float s = ui::ui_scale(w, h);
     // As tall as the window allows (520 at 720p); in a small window the table and the pad column scroll
     // (keyboard and pad navigation scroll to the highlighted key) and the note and buttons stay.
     const float panel_h = std::clamp(h / s - 80.0f, 420.0f, 510.0f);

@@ -62,7 +62,7 @@ int clip_rows(const anim::DojoController& dojo, bool picking, float row, float l
 } // namespace
 
 int dojo_legend(const anim::DojoController& dojo, bool picking, const shell::Fonts& fonts, float w, float h) {
-    const float s = ui::ui_scale(h);
+    const float s = ui::ui_scale(w, h);
     ImFont* font = fonts.body ? fonts.body : ImGui::GetFont();
     const float px = 20.0f * s, row = px * 1.3f, pad = 14.0f * s, title_h = 34.0f * s;
     const float box_w = 340.0f * s;

@@ -46,6 +46,8 @@ void GameApp::write_status(const shell::FrameInfo& info) {
         add("button %.0f %.0f %.0f %.0f %s", b.x0, b.y0, b.x1, b.y1, b.label.c_str());
     for (const auto& b : ui::buttons_drawn())
         if (b.focused) add("focus %s", b.label.c_str());
+    for (const auto& t : ui::texts_drawn())
+        add("text %.0f %.0f %.0f %.0f %s", t.x0, t.y0, t.x1, t.y1, t.label.c_str());
     if (session_ && session_->game) {
         const auto& g = *session_->game;
         const auto& p = g.player();

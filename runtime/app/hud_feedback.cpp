@@ -22,7 +22,7 @@ ImVec2 on_ring(ImVec2 c, float radius, float angle) {
 void draw_hit_marker(ImDrawList* d, float strength, float w, float h) {
     if (!(strength > 0.0f)) return;
     const float k = std::clamp(strength, 0.0f, 1.0f);
-    const float s = ui::ui_scale(h);
+    const float s = ui::ui_scale(w, h);
     const ImVec2 c(w * 0.5f, h * 0.5f);
     const float pop = 1.0f + 0.25f * k * k; // starts larger, settles as it fades
     const float r0 = 8.0f * s * pop, r1 = 18.0f * s * pop;
@@ -37,7 +37,7 @@ void draw_hit_marker(ImDrawList* d, float strength, float w, float h) {
 }
 
 void draw_damage_arcs(ImDrawList* d, std::span<const feedback::DamageArc> arcs, float w, float h) {
-    const float s = ui::ui_scale(h);
+    const float s = ui::ui_scale(w, h);
     const ImVec2 c(w * 0.5f, h * 0.5f);
     const float radius = 95.0f * s, half_span = 0.42f, thickness = 12.0f * s;
     for (const feedback::DamageArc& arc : arcs) {

@@ -3,11 +3,17 @@
 #include <imgui_internal.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace ks::runtime::ui {
 
-float ui_scale(float height) {
-    return std::clamp(height / 720.0f, 0.6f, 3.0f);
+float ui_scale(float width, float height) {
+    return std::clamp(std::min(height / 720.0f, width / 1280.0f), 0.6f, 3.0f);
+}
+
+float display_scale() {
+    const ImVec2 size = ImGui::GetIO().DisplaySize;
+    return size.x > 0.0f && size.y > 0.0f ? ui_scale(size.x, size.y) : 1.0f;
 }
 
 void draw_backdrop(ImDrawList* d, float w, float h, float strength) {
@@ -26,7 +32,7 @@ void draw_backdrop(ImDrawList* d, float w, float h, float strength) {
 
 void begin_panel(const char* id, const std::string& title, float panel_w, float panel_h, float w, float h,
                  const shell::Fonts& fonts) {
-    const float s = ui_scale(h);
+    const float s = ui_scale(w, h);
     const ImVec2 size(panel_w * s, panel_h * s);
     const ImVec2 pos((w - size.x) * 0.5f, (h - size.y) * 0.5f + 20.0f * s);
     ImDrawList* bg = ImGui::GetBackgroundDrawList();
@@ -76,10 +82,68 @@ std::vector<ButtonRect>& drawn() {
     static std::vector<ButtonRect> rects;
     return rects;
 }
+std::vector<TextRect>& texts() {
+    static std::vector<TextRect> rects;
+    return rects;
+}
+
+// Draws `shown` right-aligned in the column after the last item and records it as text `label`.
+void value_text(const char* label, const std::string& shown, float column_w, float gap) {
+    ImGui::SameLine(0.0f, gap);
+    const float x = ImGui::GetCursorPosX();
+    ImGui::SetCursorPosX(x + std::max(0.0f, column_w - ImGui::CalcTextSize(shown.c_str()).x));
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted(shown.c_str());
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    texts().push_back({label, a.x, a.y, b.x, b.y});
+}
+
+float value_column(float width, float& slider_w) {
+    const float s = display_scale();
+    const float column = std::min(84.0f * s, width * 0.4f);
+    slider_w = std::max(1.0f, width - column - 8.0f * s);
+    return column;
+}
 } // namespace
 
 void begin_frame() {
     drawn().clear();
+    texts().clear();
+}
+
+const std::vector<TextRect>& texts_drawn() {
+    return texts();
+}
+
+bool value_slider(const char* label, const char* id, float& value, float lo, float hi, float step,
+                  const std::string& shown, float width) {
+    float slider_w = 0.0f;
+    const float column = value_column(width, slider_w);
+    ImGui::SetNextItemWidth(slider_w);
+    float v = value;
+    // No text on the slider ("" also keeps ImGui from rounding to a format); typing is off, the step rounds.
+    const bool moved =
+        ImGui::SliderFloat(id, &v, lo, hi, "", ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_NoInput);
+    record_button(label);
+    nav_focus_ring();
+    if (moved) v = std::clamp(step > 0.0f ? std::round(v / step) * step : v, lo, hi);
+    value_text(label, shown, column, width - slider_w - column);
+    const bool changed = moved && v != value;
+    if (moved) value = v;
+    return changed;
+}
+
+bool value_slider(const char* label, const char* id, int& value, int lo, int hi, const std::string& shown,
+                  float width) {
+    float slider_w = 0.0f;
+    const float column = value_column(width, slider_w);
+    ImGui::SetNextItemWidth(slider_w);
+    const bool moved =
+        ImGui::SliderInt(id, &value, lo, hi, "", ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_NoInput);
+    record_button(label);
+    nav_focus_ring();
+    value_text(label, shown, column, width - slider_w - column);
+    return moved;
 }
 
 const std::vector<ButtonRect>& buttons_drawn() {
@@ -104,14 +168,14 @@ void nav_focus_ring() {
     if (!drawn().empty() && drawn().back().x0 >= ImGui::GetItemRectMin().x - 1.0f &&
         drawn().back().x1 <= ImGui::GetItemRectMax().x + 1.0f)
         drawn().back().focused = true; // the button record_button() just recorded
-    const float s = ui_scale(ImGui::GetIO().DisplaySize.y);
+    const float s = display_scale();
     const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
     ImGui::GetWindowDrawList()->AddRect(ImVec2(a.x - 4 * s, a.y - 4 * s), ImVec2(b.x + 4 * s, b.y + 4 * s),
                                         kNavRing, 8.0f * s, 0, 4.0f * s);
 }
 
 bool big_button(const char* label, const shell::Fonts& fonts, float width_720) {
-    const float s = ImGui::GetIO().DisplaySize.y > 0 ? ui_scale(ImGui::GetIO().DisplaySize.y) : 1.0f;
+    const float s = display_scale();
     const ImVec2 size(width_720 * s, 52.0f * s);
     ImGui::SetCursorPosX((ImGui::GetWindowWidth() - size.x) * 0.5f);
     const ImVec2 p = ImGui::GetCursorScreenPos();
@@ -135,7 +199,7 @@ bool big_button(const char* label, const shell::Fonts& fonts, float width_720) {
 
 int button_row(std::initializer_list<const char*> labels, const shell::Fonts& fonts, float width_720,
                std::size_t quiet_from) {
-    const float s = ImGui::GetIO().DisplaySize.y > 0 ? ui_scale(ImGui::GetIO().DisplaySize.y) : 1.0f;
+    const float s = display_scale();
     const float gap = 10.0f * s, total = width_720 * s;
     const float each =
         (total - gap * static_cast<float>(labels.size() - 1)) / static_cast<float>(labels.size());
@@ -184,7 +248,7 @@ void centred_text(const std::string& text, ImFont* font, ImU32 colour) {
 }
 
 void progress_bar(float fraction, const std::string& label, const shell::Fonts& fonts, float width_720) {
-    const float s = ui_scale(ImGui::GetIO().DisplaySize.y);
+    const float s = display_scale();
     const ImVec2 size(width_720 * s, 26.0f * s);
     ImGui::SetCursorPosX((ImGui::GetWindowWidth() - size.x) * 0.5f);
     const ImVec2 p = ImGui::GetCursorScreenPos();

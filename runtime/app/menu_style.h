@@ -20,8 +20,11 @@ inline constexpr ImU32 kAccentActive = IM_COL32(25, 140, 195, 255);
 inline constexpr ImU32 kPanel = IM_COL32(232, 238, 238, 242); // panel body
 inline constexpr ImU32 kInk = IM_COL32(40, 48, 58, 255);      // body text on the panel
 
-// Scale from the 720p layout to the current window.
-float ui_scale(float height);
+// Scale from the 1280x720 layout to a `width` x `height` window: the height's ratio, or the width's when
+// the window is narrower than 16:9 (a 4:3 window cut the Controls panel off at both sides), within
+// [0.6, 3]. display_scale(): the same for ImGui's display size (1 before it has one).
+float ui_scale(float width, float height);
+float display_scale();
 
 // Darkens the frame behind a menu: a vertical navy→plum gradient at ~80 % plus a vignette at the edges.
 void draw_backdrop(ImDrawList* draw, float width, float height, float strength = 1.0f);
@@ -52,6 +55,23 @@ const std::vector<ButtonRect>& buttons_drawn();
 // Records the last ImGui item as a button named `label` (for buttons not drawn by big_button): the part of
 // it not clipped away, nothing when it is out of sight.
 void record_button(const char* label);
+
+// Non-clickable text a layout check wants to see (a slider's value beside it): --status-file's `text`
+// lines. Cleared by begin_frame().
+struct TextRect {
+    std::string label;
+    float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+const std::vector<TextRect>& texts_drawn();
+
+// A slider of `width` (pixels) whose value `shown` is printed beside it, right-aligned in a column of its
+// own, never under the grab (the grab covered "75 deg" in the middle of its range). Dragging rounds the
+// value to `step`. Records the slider as button `label` and its value as text `label`; returns true when
+// the value changed.
+bool value_slider(const char* label, const char* id, float& value, float lo, float hi, float step,
+                  const std::string& shown, float width);
+bool value_slider(const char* label, const char* id, int& value, int lo, int hi, const std::string& shown,
+                  float width);
 
 // The keyboard/gamepad highlight: a thick warm ring round the last item when it has the navigation focus and
 // the player is navigating with keys or a pad (ImGui hides it while the mouse is used).

@@ -36,7 +36,7 @@ void two_columns(const char* left, const char* right, float split) {
 void loading_screen(float fraction, const std::string& step, const shell::Fonts& fonts, float w, float h) {
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h, 1.25f);
     ui::begin_panel("##loading", "Killswitch", 560, 200, w, h, fonts);
-    ImGui::Dummy(ImVec2(1, 16 * ui::ui_scale(h)));
+    ImGui::Dummy(ImVec2(1, 16 * ui::ui_scale(w, h)));
     ui::centred_text("Loading the simulation...", fonts.hud);
     ui::progress_bar(fraction, step, fonts, 440);
     ui::end_panel();
@@ -78,7 +78,7 @@ MenuAction main_menu(const std::string& error, const shell::Fonts& fonts, float 
         break;
     }
     if (!error.empty()) {
-        ImGui::PushTextWrapPos(ImGui::GetWindowWidth() - 30 * ui::ui_scale(h));
+        ImGui::PushTextWrapPos(ImGui::GetWindowWidth() - 30 * ui::ui_scale(w, h));
         ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(190, 30, 30, 255));
         ImGui::TextWrapped("%s", error.c_str());
         ImGui::PopStyleColor();
@@ -132,18 +132,18 @@ MenuAction how_to_play(const Options& options, const shell::Fonts& fonts, float 
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
     MenuAction action = MenuAction::None;
     // 500 at 720p; in a smaller window the controls list scrolls above Back.
-    const float panel_h = std::clamp(h / ui::ui_scale(h) - 80.0f, 440.0f, 500.0f);
+    const float panel_h = std::clamp(h / ui::ui_scale(w, h) - 80.0f, 440.0f, 500.0f);
     ui::begin_panel("##howto", "How to Play", 900, panel_h, w, h, fonts);
-    ImGui::PushTextWrapPos(ImGui::GetWindowWidth() - 30 * ui::ui_scale(h));
+    ImGui::PushTextWrapPos(ImGui::GetWindowWidth() - 30 * ui::ui_scale(w, h));
     ImGui::TextWrapped("Survive the rogue robots and reach the computer at the end of the level to end the "
                        "simulation. Shoot gas cylinders to blow up robots near them - keep your distance. "
                        "Pick up health (red), shield (blue) and ammo (yellow) on the way.");
     ImGui::PopTextWrapPos();
     if (fonts.body) ImGui::PushFont(fonts.body);
-    ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(10 * ui::ui_scale(h), 5 * ui::ui_scale(h)));
+    ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(10 * ui::ui_scale(w, h), 5 * ui::ui_scale(w, h)));
     ImGui::PushStyleColor(ImGuiCol_ScrollbarBg, IM_COL32(0, 0, 0, 20));
     ImGui::PushStyleColor(ImGuiCol_ScrollbarGrab, ui::kAccent);
-    ImGui::BeginChild("##howto_keys", ImVec2(0, ImGui::GetContentRegionAvail().y - 70 * ui::ui_scale(h)),
+    ImGui::BeginChild("##howto_keys", ImVec2(0, ImGui::GetContentRegionAvail().y - 70 * ui::ui_scale(w, h)),
                       false, ImGuiWindowFlags_NoBackground | ImGuiWindowFlags_NavFlattened);
     const auto& b = options.bindings;
     const std::string move = keys_text(b, Action::Forward) + ", " + keys_text(b, Action::Left) + ", " +
@@ -187,7 +187,7 @@ MenuAction credits(const shell::Fonts& fonts, float w, float h) {
 MenuAction options_panel(Options& o, bool& changed, const shell::Fonts& fonts, float w, float h) {
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h);
     MenuAction action = MenuAction::None;
-    const float s = ui::ui_scale(h);
+    const float s = ui::ui_scale(w, h);
     // Two columns (controls and picture | sound) so every row fits a 270-pixel-high window too.
     ui::begin_panel("##options", "Options", 1000, 440, w, h, fonts);
     ImGui::PushStyleColor(ImGuiCol_FrameBg, IM_COL32(205, 214, 218, 255));
@@ -210,12 +210,19 @@ MenuAction options_panel(Options& o, bool& changed, const shell::Fonts& fonts, f
         ImGui::SameLine(column_x + label_w);
         ImGui::SetNextItemWidth(column_w - label_w);
     };
+    const float slider_w = column_w - label_w;
+    auto shown = [](const char* format, float value) {
+        char text[32];
+        std::snprintf(text, sizeof text, format, static_cast<double>(value));
+        return std::string(text);
+    };
     label("Mouse sensitivity");
-    changed |= ImGui::SliderFloat("##sens", &o.mouse_sensitivity, Options::kMinSensitivity,
-                                  Options::kMaxSensitivity, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+    changed |=
+        ui::value_slider("Mouse sensitivity", "##sens", o.mouse_sensitivity, Options::kMinSensitivity,
+                         Options::kMaxSensitivity, 0.01f, shown("%.2f", o.mouse_sensitivity), slider_w);
     label("Field of view");
-    changed |= ImGui::SliderFloat("##fov", &o.fov_degrees, Options::kMinFov, Options::kMaxFov, "%.0f deg",
-                                  ImGuiSliderFlags_AlwaysClamp);
+    changed |= ui::value_slider("Field of view", "##fov", o.fov_degrees, Options::kMinFov, Options::kMaxFov,
+                                1.0f, shown("%.0f deg", o.fov_degrees), slider_w);
     label("Invert mouse Y");
     changed |= ImGui::Checkbox("##invert", &o.invert_y);
     ui::record_button("Invert mouse Y");
@@ -225,7 +232,7 @@ MenuAction options_panel(Options& o, bool& changed, const shell::Fonts& fonts, f
         static const char* names[] = {"Auto", "25 %", "50 %", "75 %", "100 %"};
         int step =
             o.render_scale <= 0.0f ? 0 : std::clamp(static_cast<int>(o.render_scale * 4.0f + 0.5f), 1, 4);
-        if (ImGui::SliderInt("##scale", &step, 0, 4, names[step], ImGuiSliderFlags_AlwaysClamp)) {
+        if (ui::value_slider("Render scale", "##scale", step, 0, 4, names[step], slider_w)) {
             o.render_scale = step == 0 ? 0.0f : static_cast<float>(step) * 0.25f;
             changed = true;
         }
@@ -253,11 +260,10 @@ MenuAction options_panel(Options& o, bool& changed, const shell::Fonts& fonts, f
     auto volume = [&](const char* text, const char* id, float& value) {
         label(text);
         float percent = value * 100.0f;
-        if (ImGui::SliderFloat(id, &percent, 0.0f, 100.0f, "%.0f %%", ImGuiSliderFlags_AlwaysClamp)) {
+        if (ui::value_slider(text, id, percent, 0.0f, 100.0f, 1.0f, shown("%.0f %%", percent), slider_w)) {
             value = percent / 100.0f;
             changed = true;
         }
-        ui::record_button(text);
     };
     volume("Master volume", "##master", o.master_volume);
     volume("Effects", "##effects", o.effects_volume);
