@@ -87,6 +87,7 @@ Result<void> Game::build(const level::Level& level) {
     robots_.build_navigation(level, std::move(navigation_source_), interactables_.doors());
     spawners_.build(level);
     logic_.build(level);
+    spawners_.check_ground(logic_);
     core_.events.reserve(64);
     core_.world.build_static();
     return ok();

@@ -100,17 +100,26 @@ std::optional<Vec3> Spawners::spawn_point(const SpawnerState& s) {
     return std::nullopt;
 }
 
-bool Spawners::spawn_robot(SpawnerState& s, LevelLogic& logic) {
+bool Spawners::has_ground(SpawnerState& s, LevelLogic& logic) {
     nav::NavMesh* navigation = robots_.navigation();
-    if (!navigation || !navigation->nearest_point(s.position, Vec3(kSpawnReach, 4.0f, kSpawnReach))) {
-        s.stuck = true; // the mesh never changes where it lies: this spawner can never spawn
-        logic.report("spawner \"" + s.name + "\": " +
-                     (navigation ? "no walkable ground within " +
-                                       std::to_string(static_cast<int>(kSpawnReach)) + " units of it"
-                                 : "the level has no navigation mesh (" + robots_.navigation_error() + ")") +
-                     ", so it makes no robots");
-        return false;
-    }
+    if (navigation && navigation->nearest_point(s.position, Vec3(kSpawnReach, 4.0f, kSpawnReach)))
+        return true;
+    s.stuck = true; // the mesh never changes where it lies: this spawner can never spawn
+    logic.report("spawner \"" + s.name + "\": " +
+                 (navigation ? "no walkable ground within " + std::to_string(static_cast<int>(kSpawnReach)) +
+                                   " units of it"
+                             : "the level has no navigation mesh (" + robots_.navigation_error() + ")") +
+                 ", so it makes no robots; move it over a floor robots can walk on");
+    return false;
+}
+
+void Spawners::check_ground(LevelLogic& logic) {
+    for (SpawnerState& s : spawners_)
+        if (!s.stuck) has_ground(s, logic);
+}
+
+bool Spawners::spawn_robot(SpawnerState& s, LevelLogic& logic) {
+    if (!has_ground(s, logic)) return false;
     const auto point = spawn_point(s);
     if (!point) return false;
     level::Entity entity;

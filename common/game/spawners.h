@@ -44,12 +44,18 @@ class Spawners {
     void build(const level::Level& level);
     // A link's spawn: a wave of `count` starts now (one under way goes on as it was).
     void start(std::size_t spawner);
+    // At the level's start (after the navigation mesh is built): a spawner with no walkable ground near it
+    // can never make a robot, which is said now in `logic`'s problems rather than when a link first starts
+    // it, and it is marked stuck.
+    void check_ground(LevelLogic& logic);
     // Makes the robots that are due; what can never work is said once in `logic`'s problems.
     void update(LevelLogic& logic);
     std::span<const SpawnerState> spawners() const { return spawners_; }
 
   private:
     bool spawn_robot(SpawnerState& s, LevelLogic& logic);
+    // False (and `s` stuck, the reason reported) when no navigation mesh lies within reach of it.
+    bool has_ground(SpawnerState& s, LevelLogic& logic);
     std::optional<Vec3> spawn_point(const SpawnerState& s);
     bool spawn_spot_clear(const Vec3& feet) const;
 

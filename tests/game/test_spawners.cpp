@@ -109,6 +109,21 @@ TEST_CASE("a spawner over no walkable ground makes nothing and says so; one with
     CHECK(glm::length(Vec2(made.x, made.z + 40.0f)) == doctest::Approx(2.5f).epsilon(0.15));
 }
 
+TEST_CASE("a spawner over no walkable ground is named when the game is made, before anything starts it") {
+    // Issue 30: the game said so only when a link first started the spawner, perhaps minutes into play.
+    auto lv = flat_level();
+    add_spawner(lv, "Void", Vec3(500, 0, 500), 2, 0.0f, 2);
+    add_spawner(lv, "Pen", Vec3(0, 0, -12), 1, 0.0f, 1);
+    auto g = make_game(lv); // no link starts either
+    REQUIRE(g->logic().problems().size() == 1);
+    CHECK(g->logic().problems().front().find("spawner \"Void\": no walkable ground") != std::string::npos);
+    CHECK(g->logic().problems().front().find("move it over a floor") != std::string::npos);
+    CHECK(g->logic().spawners()[0].stuck);
+    CHECK_FALSE(g->logic().spawners()[1].stuck);
+    run_for(*g, 0.5);
+    CHECK(g->logic().problems().size() == 1); // said once
+}
+
 TEST_CASE(
     "robots made during play are whole robots: shot through their bodies, killed, counted by objectives") {
     auto lv = flat_level();
