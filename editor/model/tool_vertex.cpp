@@ -333,14 +333,14 @@ ToolPreview VertexTool::preview(const Document& doc) const {
     if (editable_brushes(doc).empty() && out.problem.empty()) out.problem = "no unlocked brush is selected";
     switch (mode_) {
     case VertexMode::vertex:
-        out.hint = "drag a vertex (Shift-click adds); drag an edge's midpoint to split it; onto a neighbour "
-                   "merges; Delete removes; V: edge mode";
+        out.hint =
+            "drag a vertex; Shift adds; a ring splits its edge; onto a neighbour merges; Delete removes";
         break;
     case VertexMode::edge:
-        out.hint = "drag an edge's handle (Shift-click adds); V: face mode";
+        out.hint = "drag an edge's handle; Shift-click adds";
         break;
     case VertexMode::face:
-        out.hint = "drag a face's handle (Shift-click adds); V: vertex mode";
+        out.hint = "drag a face's handle; Shift-click adds";
         break;
     }
     return out;
