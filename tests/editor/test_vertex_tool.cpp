@@ -82,6 +82,21 @@ TEST_CASE("vertex tool: a vertex shared by two selected brushes moves in both, a
     CHECK(vt_has_vertex(editor_test::world_brush_of(ed, b), {4, 4, 4}));
 }
 
+TEST_CASE("vertex tool: a turned brush's vertex moves by the world delta") {
+    Editor ed;
+    auto turned = run_script_text("brush box 0,0,0 4,4,4\nrotate y 90\n", "turned.kss", {}, ed);
+    REQUIRE(turned.ok());
+    const int id = ed.doc().selection.front();
+    REQUIRE(ed.level().find(id)->rotation.x != 0.0f); // its own frame is turned; its corners are the box's
+    VertexTool tool;
+    REQUIRE(tool.grab(ed.doc(), {4, 4, 4}).ok());
+    tool.drag(ed.doc(), {1, 0, 0});
+    REQUIRE(tool.release(ed).ok());
+    const brush::Brush world = editor_test::world_brush_of(ed, id);
+    CHECK(std::any_of(world.vertices().begin(), world.vertices().end(),
+                      [](const DVec3& v) { return glm::length(v - DVec3(5, 4, 4)) < 1e-5; }));
+}
+
 TEST_CASE("vertex tool: a refused drag says why and leaves the level and the history unchanged") {
     Editor ed;
     vt_box(ed);
