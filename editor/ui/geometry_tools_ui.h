@@ -39,7 +39,8 @@ class GeometryToolsUi {
     // The vertex tool's handles on screen in the active view, for the status file.
     void status_on_screen(nlohmann::json& status, const Document& doc, const ViewCamera& view,
                           Vec2 origin) const;
-    // B, C, M, V choose; with a tool active Esc, Enter, Tab, Backspace, [ and ]. True when a key was used.
+    // B, C, M, V choose; with a tool active Esc, Enter, Tab, Backspace, [ and ] (the vertex tool: V, Delete).
+    // True when a key was used.
     bool keys(Editor& editor, EditorLog& log, bool ctrl);
     // The preview, labels and the point under the mouse over one view at `origin`.
     void draw(ImDrawList* draw, Vec2 origin, const ViewCamera& view, const Document& doc) const;
