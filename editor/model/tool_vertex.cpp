@@ -209,7 +209,7 @@ void VertexTool::drag(const Document& doc, const DVec3& delta) {
     for (const level::Entity* e : editable_brushes(doc)) {
         const BrushFrame frame(*e);
         const brush::Brush& local = local_of(*e);
-        Result<brush::Brush> result = local;
+        std::optional<Result<brush::Brush>> result; // only for the brushes the drag reaches
         if (splitting_) {
             if (edge_between(local, frame, corners_[0], corners_[1]) < 0) continue;
             result = brush::add_vertex(local, frame.to_local(*grabbed_ + delta));
@@ -222,12 +222,12 @@ void VertexTool::drag(const Document& doc, const DVec3& delta) {
                               : std::nullopt;
             result = merged ? std::move(*merged) : brush::move_vertices(local, moving, local_delta);
         }
-        if (!result) {
-            problem_ = brush_label(*e) + ": " + result.error().message;
+        if (!*result) {
+            problem_ = brush_label(*e) + ": " + result->error().message;
             moved_.clear();
             return;
         }
-        moved_.push_back({e->id, std::move(*result)});
+        moved_.push_back({e->id, std::move(**result)});
     }
 }
 
