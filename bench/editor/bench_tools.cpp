@@ -2,14 +2,17 @@
 // model and view code, no window), against the frame budget (16.7 ms at 60 Hz): what one mouse move costs
 // while a box is dragged (the point on the plane, the move, the preview with its labels, and the point under
 // the mouse that the overlay marks), the clip tool's preview (the cut's outline on 1, 100 and every brush
-// selected), and each tool's commit with its undo.
+// selected), a vertex drag's mouse move (the snapped delta, the moved hulls, the preview and the handles the
+// views draw, with 1 and 100 brushes selected), and each tool's commit with its undo.
 #include "bench_registry.h"
 #include "editor/median_time.h"
 #include "model/edit_selection.h"
 #include "model/editor.h"
 #include "model/tool_clip.h"
 #include "model/tool_draw.h"
+#include "model/tool_vertex.h"
 #include "view/tool_pointer.h"
+#include "view/vertex_handles.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -106,6 +109,30 @@ int run_tools(int argc, const char* const* argv) {
         row(what.c_str(), ms);
     }
 
+    for (int count : {1, 100}) {
+        std::vector<int> ids;
+        for (int i = 0; i < count; ++i) ids.push_back(ed.level().entities[static_cast<size_t>(i)].id);
+        if (auto r = editor::select(ed, ids); !r) tools_fail(r.error());
+        editor::VertexTool vertex;
+        DVec3 corner(-1e9); // the outermost corner, dragged outward (+x)
+        for (const editor::VertexHandle& h : vertex.handles(ed.doc()))
+            if (!h.split && h.at.x + h.at.y + h.at.z > corner.x + corner.y + corner.z) corner = h.at;
+        Vec2 press;
+        if (!top.project(Vec3(corner), press)) tools_fail(Error("the vertex is off screen"));
+        if (auto r = vertex.grab(ed.doc(), corner); !r) tools_fail(r.error());
+        const editor::VertexDrag drag = editor::start_vertex_drag(ed.doc(), top, press, corner, true);
+        const double ms = bench::median_ms(reps, [&] {
+            const Vec2 m = press + Vec2(30.0f + static_cast<float>(frame++ % 40), 0.0f);
+            if (auto delta = editor::vertex_drag_delta(ed.doc(), top, m, drag)) vertex.drag(ed.doc(), *delta);
+            if (vertex.preview(ed.doc()).segments.empty() || vertex.handles(ed.doc()).empty())
+                tools_fail(Error("no vertex drag preview: " + vertex.preview(ed.doc()).problem));
+        });
+        vertex.cancel();
+        const std::string what =
+            "vertex: one mouse move of a vertex drag (" + std::to_string(count) + " brushes selected)";
+        row(what.c_str(), ms);
+    }
+
     if (auto r = editor::select(ed, {ed.level().entities.front().id}); !r) tools_fail(r.error());
     row("clip: apply to 1 brush + undo", bench::median_ms(reps, [&] {
             editor::ClipTool once = clip;
@@ -122,10 +149,10 @@ int run_tools(int argc, const char* const* argv) {
     return 0;
 }
 
-bench::Registrar
-    registrar({"tools",
-               "editor geometry tools (draw drag, clip preview, commits) on a 2 025-brush level, "
-               "against one frame",
-               run_tools});
+bench::Registrar registrar(
+    {"tools",
+     "editor geometry tools (draw drag, clip preview, vertex drag, commits) on a 2 025-brush level, "
+     "against one frame",
+     run_tools});
 
 } // namespace

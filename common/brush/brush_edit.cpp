@@ -108,6 +108,44 @@ Result<Brush> move_face(const Brush& brush, int face_index, const DVec3& delta) 
     return move_vertices(brush, brush.polygons()[static_cast<std::size_t>(face_index)], delta);
 }
 
+Result<Brush> add_vertex(const Brush& brush, const DVec3& point) {
+    if (!is_finite(point))
+        return Error("the new vertex is not finite", Location({}, 0, 0, "point"), "give finite numbers");
+    const bool outside = std::any_of(brush.faces().begin(), brush.faces().end(), [&](const Face& f) {
+        return f.plane.signed_distance(point) > kOnPlaneEpsilon;
+    });
+    if (!outside)
+        return Error("the new vertex would lie inside the brush or on its surface",
+                     Location({}, 0, 0, "point"), "drag it out of the brush");
+    std::vector<DVec3> points = brush.vertices();
+    points.push_back(point);
+    const Brush* sources[] = {&brush};
+    auto result = make_hull_of(points, sources, true);
+    if (!result)
+        return Error("the new vertex would swallow others (" + result.error().message + ")",
+                     Location({}, 0, 0, "point"), "drag it less far out");
+    return result;
+}
+
+Result<Brush> remove_vertices(const Brush& brush, std::span<const int> vertex_indices) {
+    std::vector<bool> removed(brush.vertices().size(), false);
+    for (int v : vertex_indices) {
+        if (v < 0 || static_cast<std::size_t>(v) >= removed.size())
+            return Error("there is no vertex " + std::to_string(v), Location({}, 0, 0, "vertices"),
+                         "give indices below " + std::to_string(removed.size()));
+        removed[static_cast<std::size_t>(v)] = true;
+    }
+    std::vector<DVec3> points;
+    for (std::size_t i = 0; i < removed.size(); ++i)
+        if (!removed[i]) points.push_back(brush.vertices()[i]);
+    const Brush* sources[] = {&brush};
+    auto result = make_hull_of(points, sources);
+    if (!result)
+        return Error("without those vertices the brush has no volume (" + result.error().message + ")",
+                     Location({}, 0, 0, "vertices"), "keep at least four vertices that are not on one plane");
+    return result;
+}
+
 Result<Brush> snap_to_grid(const Brush& brush, double grid) {
     if (!(grid > 0.0) || !std::isfinite(grid))
         return Error("the grid must be a positive number", Location({}, 0, 0, "grid"), "give a grid above 0");

@@ -22,6 +22,13 @@ Result<Brush> move_vertices(const Brush& brush, std::span<const int> vertex_indi
 Result<Brush> move_edge(const Brush& brush, int edge_index, const DVec3& delta);
 Result<Brush> move_face(const Brush& brush, int face_index, const DVec3& delta);
 
+// A new vertex at `point` (an edge split: its midpoint dragged out): the hull of the vertices and the point.
+// Refused unless the point lies outside the brush and every old vertex stays a corner of the new hull.
+Result<Brush> add_vertex(const Brush& brush, const DVec3& point);
+// The hull of the vertices that are left (a vertex merged into its neighbour, or deleted). Refused when
+// what is left spans no volume.
+Result<Brush> remove_vertices(const Brush& brush, std::span<const int> vertex_indices);
+
 // Rounds every vertex to the nearest multiple of `grid` (> 0) and re-derives the planes from the rounded
 // points; vertices that round to the same point become one. Refused when the rounded points span no volume.
 // Afterwards every vertex is within 1e-9 of the grid (tests/brush/test_brush_edit.cpp, the property test).

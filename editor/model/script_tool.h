@@ -1,9 +1,11 @@
 #pragma once
-// The script language's geometry-tool steps (`tool draw`, `tool polygon`, `tool clip`, `tool measure`): each
-// line is one whole use of a tool (tool_draw.h, tool_clip.h, tool_measure.h), fed the points a mouse would
+// The script language's geometry-tool steps (`tool draw`, `tool polygon`, `tool clip`, `tool measure`,
+// `tool vertex`): each line is one whole use of a tool (tool_draw.h, tool_clip.h, tool_measure.h,
+// tool_vertex.h), fed the points a mouse would
 // click, so scripts and tests drive the same state machines as the viewport. Parsed, run and registered in
 // script_tool_parser.cpp.
 #include "model/edit_brushes.h"
+#include "model/tool_vertex.h"
 
 #include <optional>
 #include <variant>
@@ -45,10 +47,23 @@ struct ToolMeasure {
     Result<void> run(ScriptContext& c) const;
 };
 
+// `tool vertex [edge|face] X,Y,Z... by DX,DY,DZ`: the handles at those points selected and dragged by the
+// delta (one undo step); `tool vertex split X,Y,Z by D`: the edge whose midpoint is there split;
+// `tool vertex remove X,Y,Z...`: those vertices removed. All on the selected brushes.
+struct ToolVertex {
+    enum class Action { move, split, remove };
+    Action action = Action::move;
+    VertexMode mode = VertexMode::vertex;
+    std::vector<DVec3> handles;
+    DVec3 delta{0.0};
+    Result<void> run(ScriptContext& c) const;
+};
+
 } // namespace steps
 
 struct ToolStep {
-    std::variant<steps::ToolDraw, steps::ToolPolygon, steps::ToolClip, steps::ToolMeasure> step;
+    std::variant<steps::ToolDraw, steps::ToolPolygon, steps::ToolClip, steps::ToolMeasure, steps::ToolVertex>
+        step;
     Result<void> run(ScriptContext& c) const;
 };
 

@@ -18,7 +18,9 @@ constexpr const char* kToolUsage =
     "tool draw top|front|side|perspective X,Y,Z X,Y,Z [height H] | "
     "tool polygon top|front|side|perspective X,Y,Z X,Y,Z X,Y,Z... [height H] | "
     "tool clip [top|front|side] X,Y,Z X,Y,Z [X,Y,Z] [keep back|front|both] | "
-    "tool clip match ID FACE [keep back|front|both] | tool measure X,Y,Z X,Y,Z [is DISTANCE [ANGLE]]";
+    "tool clip match ID FACE [keep back|front|both] | tool measure X,Y,Z X,Y,Z [is DISTANCE [ANGLE]] | "
+    "tool vertex [edge|face] X,Y,Z... by DX,DY,DZ | tool vertex split X,Y,Z by DX,DY,DZ | "
+    "tool vertex remove X,Y,Z...";
 
 template <class T>
 Result<ScriptStep> tool_step(T step) {
@@ -129,19 +131,48 @@ Result<ScriptStep> parse_measure(const LineWords& w) {
     return tool_step(step);
 }
 
+Result<ScriptStep> parse_vertex(const LineWords& w) {
+    using Action = steps::ToolVertex::Action;
+    steps::ToolVertex step;
+    size_t i = 2;
+    const std::string_view first = i < w.size() ? w.text(i) : std::string_view();
+    if (first == "edge" || first == "face") step.mode = first == "edge" ? VertexMode::edge : VertexMode::face;
+    if (first == "split" || first == "remove")
+        step.action = first == "split" ? Action::split : Action::remove;
+    if (first == "edge" || first == "face" || first == "split" || first == "remove") ++i;
+    for (; i < w.size() && w.text(i) != "by"; ++i) {
+        DVec3 p;
+        if (auto r = point_at(w, i, p); !r) return r.error();
+        step.handles.push_back(p);
+    }
+    if (step.handles.empty()) return w.fail(i, "expected the handles' points X,Y,Z", kToolUsage);
+    if (step.action == Action::split && step.handles.size() != 1)
+        return w.fail(3, "a split takes one edge's midpoint", kToolUsage);
+    if (step.action == Action::remove) {
+        if (i != w.size())
+            return w.fail(i, "'tool vertex remove' takes only the vertices' points", kToolUsage);
+        return tool_step(step);
+    }
+    if (i + 2 != w.size()) return w.fail(i, "expected 'by DX,DY,DZ' at the end", kToolUsage);
+    if (auto r = point_at(w, i + 1, step.delta); !r) return r.error();
+    return tool_step(step);
+}
+
 Result<ScriptStep> parse_tool(const LineWords& w) {
     if (w.size() < 2) return w.fail(1, "expected which tool", kToolUsage);
     const std::string_view what = w.text(1);
     if (what == "draw" || what == "polygon") return parse_draw(w, what == "polygon");
     if (what == "clip") return parse_clip(w);
     if (what == "measure") return parse_measure(w);
+    if (what == "vertex") return parse_vertex(w);
     return w.fail(1, "unknown tool '" + w.word(1) + "'", kToolUsage);
 }
 
 constexpr CommandSpec kCommands[] = {
     {"tool", false, kToolUsage,
      "use a geometry tool as the mouse would: drag a box brush or extrude a clicked polygon in a view, clip "
-     "the selected brushes by 2 or 3 points or a brush's face, measure between two points",
+     "the selected brushes by 2 or 3 points or a brush's face, measure between two points, drag the selected "
+     "brushes' vertices, edges or faces, split an edge, remove vertices",
      parse_tool},
 };
 
@@ -234,6 +265,21 @@ Result<void> ToolMeasure::run(ScriptContext& c) const {
                                                                       angle_text(m.rise_degrees) +
                                                                       ", expected " + angle_text(*angle));
     return ok();
+}
+
+Result<void> ToolVertex::run(ScriptContext& c) const {
+    VertexTool tool;
+    tool.set_mode(mode);
+    if (action == Action::split) {
+        if (auto grabbed = tool.grab(c.editor.doc(), handles.front()); !grabbed) return grabbed.error();
+    } else {
+        for (const DVec3& h : handles)
+            if (auto selected = tool.select(c.editor.doc(), h, true); !selected) return selected.error();
+        if (action == Action::remove) return tool.remove_selected(c.editor);
+        if (auto grabbed = tool.grab(c.editor.doc(), handles.front(), true); !grabbed) return grabbed.error();
+    }
+    tool.drag(c.editor.doc(), delta);
+    return tool.release(c.editor);
 }
 
 } // namespace steps

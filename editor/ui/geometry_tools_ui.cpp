@@ -19,6 +19,8 @@ const char* tool_name(GeometryTool tool) {
         return "clip";
     case GeometryTool::measure:
         return "measure";
+    case GeometryTool::vertex:
+        return "vertex";
     case GeometryTool::none:
         return "none";
     }
@@ -70,17 +72,22 @@ void GeometryToolsUi::choose(GeometryTool tool) {
     draw_.cancel();
     clip_.reset();
     measure_.reset();
+    vertex_.reset();
     match_face_ = false;
 }
 
 void GeometryToolsUi::buttons(UiSpots& spots) {
-    static constexpr std::pair<GeometryTool, const char*> kButtons[] = {
-        {GeometryTool::draw, "Draw"}, {GeometryTool::clip, "Clip"}, {GeometryTool::measure, "Measure"}};
+    static constexpr std::pair<GeometryTool, const char*> kButtons[] = {{GeometryTool::draw, "Draw"},
+                                                                        {GeometryTool::clip, "Clip"},
+                                                                        {GeometryTool::measure, "Measure"},
+                                                                        {GeometryTool::vertex, "Vertex"}};
     static constexpr const char* kTips[] = {
         "Draw a brush: drag a box, or click a polygon and extrude it (B; B again: box / polygon)",
         "Clip the selected brushes by 2 or 3 points or a face (C; Tab: side kept, Enter: clip)",
-        "Measure between two points on vertices, faces or the grid (M)"};
-    for (size_t i = 0; i < 3; ++i) {
+        "Measure between two points on vertices, faces or the grid (M)",
+        "Edit the selected brushes' vertices, edges or faces: drag, split, merge (V; V again: the next "
+        "mode)"};
+    for (size_t i = 0; i < 4; ++i) {
         const auto [tool, text] = kButtons[i];
         const bool on = active_ == tool;
         if (on) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.26f, 0.45f, 0.75f, 1));
@@ -88,7 +95,7 @@ void GeometryToolsUi::buttons(UiSpots& spots) {
         if (on) ImGui::PopStyleColor();
         spots.here(std::string("tool.") + tool_name(tool));
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kTips[i]);
-        if (i < 2) ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+        if (i < 3) ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
     }
 }
 
@@ -135,6 +142,8 @@ void GeometryToolsUi::bar(Editor& editor, EditorLog& log, Vec2 origin, Vec2 size
         spots.here("tool.apply");
         ImGui::SameLine();
         if (ImGui::SmallButton("Reset")) clip_.reset();
+    } else if (active_ == GeometryTool::vertex) {
+        vertex_.options(spots);
     }
     if (active_ != GeometryTool::none) {
         const ToolPreview shown = preview(editor.doc());
@@ -153,6 +162,8 @@ ToolPreview GeometryToolsUi::preview(const Document& doc) const {
         return clip_.preview(doc);
     case GeometryTool::measure:
         return measure_.preview();
+    case GeometryTool::vertex:
+        return vertex_.tool().preview(doc);
     case GeometryTool::none:
         break;
     }
@@ -201,6 +212,7 @@ void GeometryToolsUi::draw_mouse(Editor& editor, EditorLog& log, const ViewCamer
 void GeometryToolsUi::mouse(Editor& editor, EditorLog& log, const ViewCamera& view, Vec2 mouse, bool hovered,
                             const ShownFn& shown) {
     hover_.reset();
+    if (active_ == GeometryTool::vertex) return vertex_.mouse(editor, log, view, mouse, hovered);
     if (hovered) hover_ = tool_point(editor.doc(), view, mouse, shown);
     switch (active_) {
     case GeometryTool::draw:
@@ -228,6 +240,7 @@ void GeometryToolsUi::mouse(Editor& editor, EditorLog& log, const ViewCamera& vi
             if (measure_.finished()) log.line("Measure: " + measurement_text(*measure_.measurement()));
         }
         return;
+    case GeometryTool::vertex:
     case GeometryTool::none:
         return;
     }
@@ -254,11 +267,15 @@ bool GeometryToolsUi::keys(Editor& editor, EditorLog& log, bool ctrl) {
     }
     if (pressed(GLFW_KEY_C)) return choose(GeometryTool::clip), true;
     if (pressed(GLFW_KEY_M)) return choose(GeometryTool::measure), true;
+    const bool v = pressed(GLFW_KEY_V);
+    if (v && active_ != GeometryTool::vertex) return choose(GeometryTool::vertex), true;
+    if (active_ == GeometryTool::vertex && vertex_.keys(editor, log, v)) return true;
     if (active_ == GeometryTool::none) return false;
     if (pressed(GLFW_KEY_ESCAPE)) { // the step under way first, then the tool
-        const bool busy = active_ == GeometryTool::draw   ? draw_.busy()
-                          : active_ == GeometryTool::clip ? clip_.busy() || match_face_
-                                                          : measure_.busy();
+        const bool busy = active_ == GeometryTool::draw      ? draw_.busy()
+                          : active_ == GeometryTool::clip    ? clip_.busy() || match_face_
+                          : active_ == GeometryTool::measure ? measure_.busy()
+                                                             : false; // the vertex tool's Esc: its keys()
         if (busy) {
             draw_.cancel(), clip_.reset(), measure_.reset();
             match_face_ = false;
@@ -280,6 +297,7 @@ bool GeometryToolsUi::keys(Editor& editor, EditorLog& log, bool ctrl) {
 void GeometryToolsUi::draw(ImDrawList* draw, Vec2 origin, const ViewCamera& view, const Document& doc) const {
     if (active_ == GeometryTool::none) return;
     const ToolPreview shown = preview(doc);
+    if (active_ == GeometryTool::vertex) vertex_.draw(draw, origin, view, doc);
     auto screen = [&](const DVec3& p, ImVec2& out) {
         Vec2 s;
         if (!view.project(Vec3(p), s)) return false;
@@ -341,8 +359,14 @@ void GeometryToolsUi::status(nlohmann::json& status, const Document& doc) const 
     if (const auto m = measure_.measurement())
         tool["measure"] = {
             {"distance", m->distance}, {"angle", m->rise_degrees}, {"text", measurement_text(*m)}};
+    vertex_.status(tool, doc);
     if (hover_) tool["hover"] = {{"kind", point_kind_name(hover_->kind)}, {"point", vec_json(hover_->point)}};
     status["tool"] = tool;
+}
+
+void GeometryToolsUi::status_on_screen(nlohmann::json& status, const Document& doc, const ViewCamera& view,
+                                       Vec2 origin) const {
+    if (active_ == GeometryTool::vertex) vertex_.status_on_screen(status["tool"], doc, view, origin);
 }
 
 } // namespace ks::editor::ui

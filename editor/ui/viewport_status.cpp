@@ -34,6 +34,7 @@ void LevelViewport::status(nlohmann::json& s, bool level_shown) const {
     lines_.status(s, overlays_);
     s["view"] = view_mode_name(view_.mode);
     geometry_.status(s, ctx_.editor.doc());
+    geometry_.status_on_screen(s, ctx_.editor.doc(), view_, origin_);
     s["viewport"] = {origin_.x, origin_.y, size_.x, size_.y};
     s["show_links"] = overlays_.links;
     s["link_arrows"] = logic_overlay_.arrow_count();

@@ -1,5 +1,5 @@
 // Vertex, edge and face moves (accepted, and refused when the brush would lose a corner or turn over) and
-// snapping to a grid.
+// snapping to a grid; a vertex added (an edge split) and vertices removed.
 #include "brush/brush_build.h"
 #include "brush/brush_edit.h"
 #include "brush/texture_mapping.h"
@@ -146,4 +146,26 @@ TEST_CASE("snapping a brush smaller than the grid is refused") {
     REQUIRE(!snapped.ok());
     CHECK(snapped.error().where.path == "grid");
     CHECK(!snap_to_grid(*tiny, 0.0).ok());
+}
+
+TEST_CASE("an edge split adds a vertex outside the brush; removing vertices rebuilds the hull of the rest") {
+    const Brush b = cube();
+    auto split = add_vertex(b, {1, 3, 2}); // above the top front edge's midpoint
+    REQUIRE(split.ok());
+    CHECK(audit(*split).empty());
+    CHECK(split->vertices().size() == 9);
+    CHECK(has_vertex(*split, {1, 3, 2}, 1e-12));
+    for (const Face& f : split->faces()) CHECK(f.attributes.material == "crate");
+    CHECK_FALSE(add_vertex(b, {1, 2, 2}).ok()); // on the edge: not outside
+    CHECK_FALSE(add_vertex(b, {1, 1, 1}).ok()); // inside
+    CHECK_FALSE(add_vertex(b, {9, 9, 9}).ok()); // swallows the corner (2,2,2)
+    const int corner[] = {vertex_at(b, {2, 2, 2})};
+    auto removed = remove_vertices(b, corner);
+    REQUIRE(removed.ok());
+    CHECK(audit(*removed).empty());
+    CHECK(removed->vertices().size() == 7);
+    CHECK(removed->volume() == doctest::Approx(8.0 - 4.0 / 3.0));
+    const int face[] = {vertex_at(b, {0, 0, 0}), vertex_at(b, {2, 0, 0}), vertex_at(b, {0, 2, 0}),
+                        vertex_at(b, {2, 2, 0}), vertex_at(b, {0, 0, 2})};
+    CHECK_FALSE(remove_vertices(b, face).ok()); // three left: no volume
 }

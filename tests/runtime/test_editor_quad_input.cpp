@@ -2,9 +2,10 @@
 // under Xvfb): Numpad 0 splits the viewport into top, front, side and perspective panes; a click selects in
 // an orthographic pane, the gizmo drags in another, a box select works in a third, each pane becoming the
 // active one; idle panes are not drawn again; the panes follow a window resize and still pick; Numpad 0
-// goes back to one view; there the draw tool drags a box and the clip tool cuts it. The Analyze
-// button plays the level with the bot in the background, saves the report beside the level and marks it
-// stale after an edit. The editor reports its state in --status-file every frame; the test waits on that.
+// goes back to one view; there the draw tool drags a box, the clip tool cuts it and the vertex tool drags
+// one of its corners. The Analyze button plays the level with the bot in the background, saves the report
+// beside the level and marks it stale after an edit. The editor reports its state in --status-file every
+// frame; the test waits on that.
 #include "game/playtest_report.h"
 #include "runtime/editor_session.h"
 #include "runtime/screen_image.h"
@@ -189,6 +190,7 @@ TEST_CASE("editor 4-up view: select, drag the gizmo and box select in different 
                j["tool"]["problem"] == "";
     });
     CHECK(std::abs(st["tool"]["clip"]["plane"][0].get<double>()) == doctest::Approx(1.0)); // across x
+    st = s.frames(2); // the bar drops its problem line and fits itself to the rest a frame later
     s.click(st["spots"]["tool.keep"]); // the bar's Keep button, as Tab does
     st = s.wait("keep front", [](const json& j) { return j["tool"]["clip"]["keep"] == "front"; });
     s.click(st["spots"]["tool.apply"]); // the bar's Apply button, as Enter does
@@ -197,7 +199,37 @@ TEST_CASE("editor 4-up view: select, drag the gizmo and box select in different 
     CHECK(st["entities"] == entities + 1);
     CHECK(st["tool"]["clip"]["points"] == 0);
     CHECK(width > 0.0);
-    s.key("Escape"); // leaves the tool
+
+    // The vertex tool (V): the clipped box's bottom-right corner on screen dragged outward, one undo step.
+    s.key("v");
+    st = s.wait("the vertex tool's handles", [](const json& j) {
+        return j["tool"]["active"] == "vertex" && j["tool"]["vertex"].contains("screen") &&
+               !j["tool"]["vertex"]["screen"].empty();
+    });
+    json corner;
+    for (const json& h : st["tool"]["vertex"]["screen"])
+        if (!h["split"].get<bool>() &&
+            (corner.is_null() || h["screen"][0].get<float>() + h["screen"][1].get<float>() >
+                                     corner[0].get<float>() + corner[1].get<float>() + 0.5f))
+            corner = h["screen"];
+    REQUIRE_FALSE(corner.is_null());
+    s.xdo("mousemove " + s.at(corner));
+    s.frames(2);
+    s.xdo("mousedown 1");
+    s.frames(2);
+    s.xdo("mousemove " + s.at(json{corner[0].get<float>() + 40.0f, corner[1].get<float>() + 30.0f}));
+    st = s.wait("the vertex drag previewed", [](const json& j) {
+        return j["tool"]["vertex"]["dragging"] == true && j["tool"]["vertex"]["moved"] == 1 &&
+               j["tool"]["problem"] == "";
+    });
+    s.xdo("mouseup 1");
+    st = s.wait("the vertex moved", [&](const json& j) { return j["undo"] == undo_draw + 3; });
+    CHECK(st["undo_name"] == "Move vertices");
+    CHECK(st["tool"]["vertex"]["selected"].size() == 1);
+    CHECK(st["tool"]["vertex"]["dragging"] == false);
+    s.key("Escape"); // drops the handle selection, then leaves the tool
+    s.wait("no vertex selected", [](const json& j) { return j["tool"]["vertex"]["selected"].empty(); });
+    s.key("Escape");
     s.wait("no tool", [](const json& j) { return j["tool"]["active"] == "none"; });
 }
 
