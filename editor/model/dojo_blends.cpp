@@ -90,4 +90,22 @@ BlendGrid blend_grid(const anim::AnimationFile& file) {
     return grid;
 }
 
+std::vector<std::string> short_clip_labels(const std::vector<std::string>& names, std::size_t max_chars) {
+    max_chars = std::max<std::size_t>(max_chars, 3);
+    std::vector<std::string> labels;
+    labels.reserve(names.size());
+    for (const std::string& name : names) {
+        if (name.size() <= max_chars) {
+            labels.push_back(name);
+            continue;
+        }
+        const std::size_t tail = (max_chars - 1) / 2, head = max_chars - 1 - tail;
+        labels.push_back(name.substr(0, head) + "." + name.substr(name.size() - tail));
+    }
+    std::vector<std::string> out = labels;
+    for (std::size_t i = 0; i < labels.size(); ++i)
+        if (std::count(labels.begin(), labels.end(), labels[i]) > 1) out[i] = "#" + std::to_string(i + 1);
+    return out;
+}
+
 } // namespace ks::editor

@@ -116,6 +116,10 @@ struct BlendGrid {
     const BlendCell& at(std::size_t from, std::size_t to) const { return cells[from * clips.size() + to]; }
 };
 BlendGrid blend_grid(const anim::AnimationFile& file);
+// The grid's column headers: a name that fits `max_chars` (at least 3) stays whole; a longer one keeps its
+// start and its end around a '.' ("shoot_pose_reverse" at 8: "shoo.rse"), since clip names often differ
+// at the end; names whose cuts would still read the same get their row number instead ("#4").
+std::vector<std::string> short_clip_labels(const std::vector<std::string>& names, std::size_t max_chars);
 
 // ---- clip events -------------------------------------------------------------------------------------
 

@@ -69,8 +69,9 @@ void DojoBlendGrid::draw(const DojoContext& dojo) {
     ImGui::SameLine(0, 12);
     legend_chip(kDefaultFill, "default");
 
-    // Compact cells, so the robot's clips fit without scrolling; the columns are numbered (the rows name
-    // them), since names as long as shoot_pose_reverse would not fit over a cell.
+    // Compact cells, so the robot's clips fit without scrolling; the column headers are the clips' names cut
+    // to the cell (short_clip_labels: start.end, or the row's number where cuts would read the same), the
+    // whole name in the tooltip.
     ImGui::PushStyleVar(ImGuiStyleVar_CellPadding, ImVec2(2.0f, 1.0f));
     ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(3.0f, 1.0f));
     float name_width = ImGui::CalcTextSize("from \\ to").x;
@@ -89,11 +90,11 @@ void DojoBlendGrid::draw(const DojoContext& dojo) {
     if (ImGui::BeginTable("blend grid", static_cast<int>(n) + 1, flags, ImVec2(0, std::max(80.0f, height)))) {
         ImGui::TableSetupScrollFreeze(1, 1);
         ImGui::TableSetupColumn("from \\ to", ImGuiTableColumnFlags_WidthFixed, name_width);
-        for (std::size_t to = 0; to < n; ++to) {
-            char header[24];
-            std::snprintf(header, sizeof(header), "%zu", to + 1);
-            ImGui::TableSetupColumn(header, ImGuiTableColumnFlags_WidthFixed, cell_width);
-        }
+        const float char_width = std::max(1.0f, ImGui::CalcTextSize("m").x);
+        const std::vector<std::string> headers =
+            short_clip_labels(grid.clips, static_cast<std::size_t>(cell_width / char_width));
+        for (std::size_t to = 0; to < n; ++to)
+            ImGui::TableSetupColumn(headers[to].c_str(), ImGuiTableColumnFlags_WidthFixed, cell_width);
         ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
         for (int column = 0; column <= static_cast<int>(n); ++column) {
             ImGui::TableSetColumnIndex(column);

@@ -182,3 +182,17 @@ TEST_CASE("dojo events: a hand-written file's unsorted events come out sorted af
     for (const anim::ClipEvent& e : file.clips[0].events) order += e.name;
     CHECK(order == "ywxz");
 }
+
+TEST_CASE("the blend grid's column headers: whole names that fit, start.end cuts, row numbers for clashes") {
+    const std::vector<std::string> names = {
+        "idle", "walk", "shoot_pose", "shoot_pose_reverse", "alert", "patrol_left_arm", "patrol_right_arm"};
+    const std::vector<std::string> at8 = short_clip_labels(names, 8);
+    CHECK(at8 == std::vector<std::string>{"idle", "walk", "shoo.ose", "shoo.rse", "alert", "#6", "#7"});
+    for (const std::string& label : at8) CHECK(label.size() <= 8);
+    // Wide enough for every name: all whole.
+    CHECK(short_clip_labels(names, 40) == names);
+    // Narrower than 3 is taken as 3; equal cuts of different names never stay equal.
+    const std::vector<std::string> at1 = short_clip_labels({"alpha", "aroma", "beta"}, 1);
+    CHECK(at1 == std::vector<std::string>{"#1", "#2", "b.a"});
+    CHECK(short_clip_labels({}, 8).empty());
+}
