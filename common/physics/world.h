@@ -86,9 +86,15 @@ struct RayFilter {
 
 enum class HitOrder : std::uint8_t { Ascending, Descending };
 
+// How a step finds the movers near a character or a trigger. Both give the same candidates in the same
+// (body) order, so a world steps bit for bit the same with either: AllPairs, every mover against every
+// other, is the reference the grid is tested and benchmarked against.
+enum class MoverBroadphase : std::uint8_t { Grid, AllPairs };
+
 struct WorldSettings {
     double step = 1.0 / 120.0;     // fixed step, seconds
     int max_steps_per_frame = 240; // a 2 s hitch is caught up in one frame; more waits for the next
+    MoverBroadphase movers = MoverBroadphase::Grid;
 };
 
 class World {

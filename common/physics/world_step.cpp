@@ -89,6 +89,7 @@ constexpr int kMaxCellsPerMover = 64;
 } // namespace
 
 void World::index_movers(float dt) {
+    if (settings_.movers == MoverBroadphase::AllPairs) return;
     float max_speed = 0.0f;
     for (std::uint32_t index : movers_) {
         const Body& b = bodies_[index];
@@ -139,7 +140,8 @@ void World::index_movers(float dt) {
 
 template <class Visit>
 void World::movers_overlapping(const geometry::Aabb& region, Visit&& visit) const {
-    if (!grid_valid_) { // bodies were added since the last step: scan them all
+    // Bodies added since the last step are not in the grid yet: scan them all (as the reference does).
+    if (!grid_valid_ || settings_.movers == MoverBroadphase::AllPairs) {
         for (std::uint32_t index : movers_)
             if (bodies_[index].bounds.overlaps(region)) visit(index);
         return;
@@ -193,7 +195,8 @@ void World::step(float dt) {
         // pushed further than that (out of a door that closed on it, out of a packed crowd) is visited by
         // every later query of this step instead, so no contact with it is missed.
         const Vec3 moved = b.transform.position - b.previous_position;
-        if (std::max(std::abs(moved.x), std::abs(moved.z)) > mover_slack_) grid_oversized_.push_back(cd.body);
+        if (grid_valid_ && std::max(std::abs(moved.x), std::abs(moved.z)) > mover_slack_)
+            grid_oversized_.push_back(cd.body);
         const BodyId self = id_of(cd.body);
         for (const CharacterContact& cc : scratch_.contacts) {
             const BodyId other = id_of(cc.obstacle_id);
