@@ -86,6 +86,7 @@ int cell_of(float v, float cell) {
     return static_cast<int>(std::floor(v * (1.0f / cell)));
 }
 constexpr int kMaxCellsPerMover = 64;
+constexpr float kDepenetrationMargin = 0.5f; // x/z units a push may add to a step's travel
 } // namespace
 
 void World::index_movers(float dt) {
@@ -100,8 +101,10 @@ void World::index_movers(float dt) {
             if (std::isfinite(v)) max_speed = std::max(max_speed, std::min(v, 2.0f * m.max_speed));
         }
     }
-    // Ground snap and depenetration move a character beyond its velocity: allow for them too.
-    mover_slack_ = max_speed * dt + 2.0f;
+    // Depenetration can push a character further than its velocity takes it. A small margin covers the
+    // usual push; a character pushed further is visited by every later query of the step (see step()), so
+    // the margin trades the query box's width against that list, never correctness (docs/performance.md).
+    mover_slack_ = max_speed * dt + kDepenetrationMargin;
 
     std::uint32_t buckets = 16;
     while (buckets < 2 * movers_.size()) buckets *= 2;
