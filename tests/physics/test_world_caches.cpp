@@ -220,7 +220,7 @@ TEST_CASE("collision callbacks keep firing through replace, clear, remove and re
 
 TEST_CASE("a character pushed further than the movers' grid slack in a step is still met by the next one") {
     // No floor, no gravity. A kinematic box (half size 12) is moved onto character A, which is pushed out
-    // through the +x face to x = 13.01, 13 units in one step, far beyond the grid's slack (2 units here).
+    // through the +x face to x = 13.01, 13 units in one step, far beyond the grid's slack (0.5 units here).
     // B stands there; B moves after A in the same step and must find A where it now is (the grid has A in
     // the cells around the origin), so the two report a contact and end apart.
     World w;
