@@ -98,7 +98,7 @@ void World::remove(BodyId id) {
         static_triggers_.erase(std::find(static_triggers_.begin(), static_triggers_.end(), index));
     } else {
         movers_.erase(std::find(movers_.begin(), movers_.end(), index));
-        // Its grid entries stay until the next step; queries skip dead bodies.
+        grid_valid_ = false; // the grid names movers by position: re-indexed by the next step
     }
     if (b->character_slot != kNone) {
         const std::uint32_t slot = b->character_slot;

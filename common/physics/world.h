@@ -86,9 +86,15 @@ struct RayFilter {
 
 enum class HitOrder : std::uint8_t { Ascending, Descending };
 
+// How a step finds the movers near a character or a trigger. Both give the same candidates in the same
+// (body) order, so a world steps bit for bit the same with either: AllPairs, every mover against every
+// other, is the reference the grid is tested and benchmarked against.
+enum class MoverBroadphase : std::uint8_t { Grid, AllPairs };
+
 struct WorldSettings {
     double step = 1.0 / 120.0;     // fixed step, seconds
     int max_steps_per_frame = 240; // a 2 s hitch is caught up in one frame; more waits for the next
+    MoverBroadphase movers = MoverBroadphase::Grid;
 };
 
 class World {
@@ -267,17 +273,21 @@ class World {
     std::vector<std::uint32_t> movers_;
     // Movers' broadphase: a hash grid over x/z rebuilt each step from the bounds at the start of the step
     // (counting sort: no allocation once warm). Queries widen their box by how far a mover can travel in
-    // the step, so a mover's current bounds are always found.
+    // the step, so a mover's current bounds are always found. Entries are positions in movers_ and the
+    // bounds tested are a contiguous copy kept current through the step, so a candidate that misses costs
+    // two reads of small arrays; all of it is valid only inside a step (nothing is added or removed then).
     static constexpr float kCell = 8.0f;        // a power of two: cell_of multiplies by its exact reciprocal
     std::vector<std::uint32_t> grid_start_;     // bucket -> first entry in grid_items_ (size buckets + 1)
-    std::vector<std::uint32_t> grid_items_;     // body indices, bucket by bucket
-    std::vector<std::uint32_t> grid_oversized_; // movers spanning too many cells: always visited
+    std::vector<std::uint32_t> grid_items_;     // positions in movers_, bucket by bucket
+    std::vector<std::uint32_t> grid_oversized_; // positions of movers spanning too many cells: always visited
     std::vector<std::uint32_t> grid_count_;
     struct CellRange {
         int x0, x1, z0, z1;
     };
     std::vector<CellRange> mover_cells_;            // by position in movers_, rebuilt each step
-    mutable std::vector<std::uint32_t> grid_stamp_; // by body index: last query that visited it
+    std::vector<geometry::Aabb> mover_bounds_;      // by position in movers_: the bounds now
+    std::vector<std::uint32_t> mover_position_;     // by body index: its position in movers_ (this step)
+    mutable std::vector<std::uint32_t> grid_stamp_; // by position in movers_: last query that visited it
     mutable std::uint32_t grid_query_ = 0;
     std::uint32_t grid_mask_ = 0;
     bool grid_valid_ = false;

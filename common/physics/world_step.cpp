@@ -86,9 +86,11 @@ int cell_of(float v, float cell) {
     return static_cast<int>(std::floor(v * (1.0f / cell)));
 }
 constexpr int kMaxCellsPerMover = 64;
+constexpr float kDepenetrationMargin = 0.5f; // x/z units a push may add to a step's travel
 } // namespace
 
 void World::index_movers(float dt) {
+    if (settings_.movers == MoverBroadphase::AllPairs) return;
     float max_speed = 0.0f;
     for (std::uint32_t index : movers_) {
         const Body& b = bodies_[index];
@@ -99,8 +101,10 @@ void World::index_movers(float dt) {
             if (std::isfinite(v)) max_speed = std::max(max_speed, std::min(v, 2.0f * m.max_speed));
         }
     }
-    // Ground snap and depenetration move a character beyond its velocity: allow for them too.
-    mover_slack_ = max_speed * dt + 2.0f;
+    // Depenetration can push a character further than its velocity takes it. A small margin covers the
+    // usual push; a character pushed further is visited by every later query of the step (see step()), so
+    // the margin trades the query box's width against that list, never correctness (docs/performance.md).
+    mover_slack_ = max_speed * dt + kDepenetrationMargin;
 
     std::uint32_t buckets = 16;
     while (buckets < 2 * movers_.size()) buckets *= 2;
@@ -109,14 +113,18 @@ void World::index_movers(float dt) {
     grid_oversized_.clear();
     // Each mover's cell range, computed once for both passes (x0 > x1 marks an oversized mover).
     mover_cells_.resize(movers_.size());
+    mover_bounds_.resize(movers_.size());
+    if (mover_position_.size() < bodies_.size()) mover_position_.resize(bodies_.size(), kNone);
     for (std::size_t i = 0; i < movers_.size(); ++i) {
         const geometry::Aabb& b = bodies_[movers_[i]].bounds;
+        mover_bounds_[i] = b;
+        mover_position_[movers_[i]] = static_cast<std::uint32_t>(i);
         const double nx = std::floor(b.max.x * (1.0f / kCell)) - std::floor(b.min.x * (1.0f / kCell)) + 1.0;
         const double nz = std::floor(b.max.z * (1.0f / kCell)) - std::floor(b.min.z * (1.0f / kCell)) + 1.0;
         CellRange& r = mover_cells_[i];
         if (nx * nz > kMaxCellsPerMover) {
             r = {1, 0, 0, 0};
-            grid_oversized_.push_back(movers_[i]);
+            grid_oversized_.push_back(static_cast<std::uint32_t>(i));
             continue;
         }
         r = {cell_of(b.min.x, kCell), cell_of(b.max.x, kCell), cell_of(b.min.z, kCell),
@@ -131,15 +139,16 @@ void World::index_movers(float dt) {
         const CellRange& r = mover_cells_[i];
         for (int x = r.x0; x <= r.x1; ++x)
             for (int z = r.z0; z <= r.z1; ++z)
-                grid_items_[grid_count_[cell_hash(x, z) & grid_mask_]++] = movers_[i];
+                grid_items_[grid_count_[cell_hash(x, z) & grid_mask_]++] = static_cast<std::uint32_t>(i);
     }
-    if (grid_stamp_.size() < bodies_.size()) grid_stamp_.resize(bodies_.size(), 0);
+    if (grid_stamp_.size() < movers_.size()) grid_stamp_.resize(movers_.size(), 0);
     grid_valid_ = true;
 }
 
 template <class Visit>
 void World::movers_overlapping(const geometry::Aabb& region, Visit&& visit) const {
-    if (!grid_valid_) { // bodies were added since the last step: scan them all
+    // Bodies added since the last step are not in the grid yet: scan them all (as the reference does).
+    if (!grid_valid_ || settings_.movers == MoverBroadphase::AllPairs) {
         for (std::uint32_t index : movers_)
             if (bodies_[index].bounds.overlaps(region)) visit(index);
         return;
@@ -148,17 +157,17 @@ void World::movers_overlapping(const geometry::Aabb& region, Visit&& visit) cons
         std::fill(grid_stamp_.begin(), grid_stamp_.end(), 0u);
         grid_query_ = 1;
     }
-    auto consider = [&](std::uint32_t index) {
-        if (grid_stamp_[index] == grid_query_) return; // already seen through another cell
-        grid_stamp_[index] = grid_query_;
-        const Body& b = bodies_[index];
-        if (b.alive && b.motion != Motion::Static && b.bounds.overlaps(region)) visit(index);
+    auto consider = [&](std::uint32_t position) {
+        if (grid_stamp_[position] == grid_query_) return; // already seen through another cell
+        grid_stamp_[position] = grid_query_;
+        if (mover_bounds_[position].overlaps(region)) visit(movers_[position]);
     };
     const geometry::Aabb wide = region.expanded(mover_slack_);
     const int x0 = cell_of(wide.min.x, kCell), x1 = cell_of(wide.max.x, kCell);
     const int z0 = cell_of(wide.min.z, kCell), z1 = cell_of(wide.max.z, kCell);
     if (static_cast<double>(x1 - x0 + 1) * (z1 - z0 + 1) > 4.0 * (grid_mask_ + 1)) {
-        for (std::uint32_t index : movers_) consider(index); // a query wider than the whole grid
+        for (std::uint32_t position = 0; position < movers_.size(); ++position)
+            consider(position); // a query wider than the whole grid
     } else {
         for (int x = x0; x <= x1; ++x)
             for (int z = z0; z <= z1; ++z) {
@@ -166,7 +175,7 @@ void World::movers_overlapping(const geometry::Aabb& region, Visit&& visit) cons
                 for (std::uint32_t i = grid_start_[k]; i < grid_start_[k + 1]; ++i) consider(grid_items_[i]);
             }
     }
-    for (std::uint32_t index : grid_oversized_) consider(index);
+    for (std::uint32_t position : grid_oversized_) consider(position);
 }
 
 // ---- step ---------------------------------------------------------------------------------------------
@@ -192,8 +201,13 @@ void World::step(float dt) {
         // Queries find movers through the cells of their start-of-step bounds, widened by the slack. One
         // pushed further than that (out of a door that closed on it, out of a packed crowd) is visited by
         // every later query of this step instead, so no contact with it is missed.
-        const Vec3 moved = b.transform.position - b.previous_position;
-        if (std::max(std::abs(moved.x), std::abs(moved.z)) > mover_slack_) grid_oversized_.push_back(cd.body);
+        if (grid_valid_) {
+            const std::uint32_t position = mover_position_[cd.body];
+            mover_bounds_[position] = b.bounds;
+            const Vec3 moved = b.transform.position - b.previous_position;
+            if (std::max(std::abs(moved.x), std::abs(moved.z)) > mover_slack_)
+                grid_oversized_.push_back(position);
+        }
         const BodyId self = id_of(cd.body);
         for (const CharacterContact& cc : scratch_.contacts) {
             const BodyId other = id_of(cc.obstacle_id);
