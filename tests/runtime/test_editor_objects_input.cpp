@@ -4,9 +4,9 @@
 // browser from the selected wall's texture field, search, click a thumbnail (the wall's texture changes, one
 // undo step), close it, Ctrl+Z; type into the wall's size (Enter sets and leaves the field, Esc drops only
 // the typing, Tab moves on, nothing logged while typing), Ctrl+D, and quick taps of Ctrl+D, an arrow, E and
-// Delete; Ctrl+Shift+click a brush's top face, Fit (one step), Ctrl+Z. The editor reports its state in
-// --status-file every frame; the test waits on that, never on time. Without a display or xdotool these tests
-// fail: ./run.sh test provides both.
+// Delete; Ctrl+Shift+click a brush's top face, Fit (one step), Ctrl+Z, drag its texture (one step), Ctrl+Z.
+// The editor reports its state in --status-file every frame; the test waits on that, never on time. Without
+// a display or xdotool these tests fail: ./run.sh test provides both.
 #include "level/level_io.h"
 #include "runtime/editor_session.h"
 #include "runtime/screen_image.h"
@@ -269,7 +269,7 @@ TEST_CASE(
 }
 
 TEST_CASE("editor objects input: Ctrl+Shift+click picks a brush's top face in the top view, Fit fits the "
-          "texture, Ctrl+Z undoes it with the face still selected") {
+          "texture, Ctrl+Z undoes it with the face still selected; a drag moves the texture, one step") {
     test::require_window_test_tools();
     test::ScratchDir dir;
     const auto level_file = test::write_file(dir / "faces_input.json", R"({
@@ -310,4 +310,17 @@ TEST_CASE("editor objects input: Ctrl+Shift+click picks a brush's top face in th
     st = s.wait("the fit undone", [&](const json& j) { return j["undo"] == undo_before; });
     CHECK(st["faces"]["selected"].size() == 1);
     CHECK(st["faces"]["selected"][0]["scale"] == json::array({1.0, 1.0}));
+
+    // A drag on the selected face moves its texture live (Snap on: whole grid steps), one step; Ctrl+Z.
+    s.drag(st["screen"]["1"], 120.0f, 0.0f, 6);
+    st = s.wait("the texture dragged", [&](const json& j) {
+        return j["undo"] == undo_before + 1 && j["texture_drag"] == "" &&
+               j["faces"]["selected"][0]["offset"] != json::array({0.0, 0.0});
+    });
+    const double shifted = st["faces"]["selected"][0]["offset"][0].get<double>();
+    CHECK(shifted == std::round(shifted));
+    CHECK(st["selection"].empty()); // a drag on a selected face is not a box select
+    s.key("ctrl+z");
+    st = s.wait("the drag undone", [&](const json& j) { return j["undo"] == undo_before; });
+    CHECK(st["faces"]["selected"][0]["offset"] == json::array({0.0, 0.0}));
 }
