@@ -82,6 +82,11 @@ Timing time_step(editor::Editor& ed, int reps, const std::function<void()>& edit
     return t;
 }
 
+template <class R>
+void check(const R& r) {
+    if (!r) fail_faces(r.error());
+}
+
 // Replace texture as it was: every changed brush rebuilt from its planes (derived again), one step.
 void replace_rederiving(editor::Editor& ed, const std::string& from, const std::string& to) {
     auto change = std::make_unique<editor::LevelChange>();
@@ -140,11 +145,6 @@ void check_replace_equal(editor::Editor& ed) {
 
 void row(const char* name, const Timing& t) {
     std::printf("%-44s %9.3f %9.3f %8.2f\n", name, t.run, t.undo_redo, t.undo_redo / kFrameMs);
-}
-
-template <class R>
-void check(const R& r) {
-    if (!r) fail_faces(r.error());
 }
 
 int run_faces(int argc, const char* const* argv) {
