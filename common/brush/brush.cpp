@@ -88,6 +88,18 @@ Result<Brush> Brush::from_anchored_faces(const DVec3& anchor, std::vector<Face> 
     return brush;
 }
 
+Result<Brush> Brush::with_attributes(std::vector<FaceAttributes> attributes) const {
+    if (attributes.size() != faces_.size())
+        return Error("the brush has " + std::to_string(faces_.size()) + " faces, not " +
+                         std::to_string(attributes.size()),
+                     Location({}, 0, 0, "faces"), "give one set of attributes per face");
+    for (std::size_t i = 0; i < attributes.size(); ++i)
+        if (auto r = check_attributes(attributes[i], i); !r) return r.error();
+    Brush out = *this;
+    for (std::size_t i = 0; i < attributes.size(); ++i) out.faces_[i].attributes = std::move(attributes[i]);
+    return out;
+}
+
 DVec3 Brush::vertex_centre() const {
     DVec3 c(0.0);
     for (const DVec3& v : vertices_) c += v;

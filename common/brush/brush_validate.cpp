@@ -25,7 +25,12 @@ Result<void> check_numbers(const Face& face, std::size_t i) {
     if (!std::isfinite(p.distance))
         return Error("the plane distance " + number_text(p.distance) + " is not a finite number",
                      face_location(i, ".plane.distance"), "give a finite number");
-    const FaceAttributes& a = face.attributes;
+    return check_attributes(face.attributes, i);
+}
+
+} // namespace
+
+Result<void> check_attributes(const FaceAttributes& a, std::size_t i) {
     if (!std::isfinite(a.offset.x) || !std::isfinite(a.offset.y))
         return Error("the texture offset is not finite", face_location(i, ".offset"),
                      "give two finite numbers");
@@ -39,6 +44,8 @@ Result<void> check_numbers(const Face& face, std::size_t i) {
                          "give a finite, non-zero scale (1 = one world unit per texture unit)");
     return ok();
 }
+
+namespace {
 
 Result<void> normalize(Face& face, std::size_t i) {
     const double len = glm::length(face.plane.normal);

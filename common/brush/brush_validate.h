@@ -9,6 +9,9 @@ namespace ks::brush {
 // `drop` mode a duplicate of an earlier face is removed instead of refused.
 Result<std::vector<Face>> validate_faces(std::vector<Face> faces, RedundantPlanes redundant);
 
+// A face's texture attributes: finite offset and rotation, finite non-zero scales (`index` names the face).
+Result<void> check_attributes(const FaceAttributes& attributes, std::size_t index);
+
 // "faces[i]" followed by `field` (".plane.normal"): the path every brush error uses.
 Location face_location(std::size_t index, const std::string& field = {});
 

@@ -85,6 +85,34 @@ Result<std::vector<WorldBrush>> selected_brushes(const Document& doc, const char
     return out;
 }
 
+// A box around a brush entity's world brush, without deriving it: the brush's vertices carried into the
+// world by the entity's frame. The derived world brush's vertices agree with them to rounding (far below
+// kBoundsMargin), so a brush whose box is apart from a cutter's by the margin is apart for brush::subtract
+// too, which then returns it whole: skipping it changes nothing.
+struct WorldBox {
+    DVec3 lo, hi;
+};
+constexpr double kBoundsMargin = 1e-6;
+
+WorldBox world_box(const Entity& e) {
+    const glm::dmat3 rotation = glm::mat3_cast(dquat_from_ypr_degrees(DVec3(e.rotation)));
+    const DVec3 position(e.position);
+    WorldBox box{DVec3(1e300), DVec3(-1e300)};
+    for (const DVec3& v : e.as<level::BrushProps>().brush.vertices()) {
+        const DVec3 w = rotation * v + position;
+        box.lo = glm::min(box.lo, w), box.hi = glm::max(box.hi, w);
+    }
+    return box;
+}
+
+bool apart(const WorldBox& a, const brush::Brush& cutter) {
+    for (int k = 0; k < 3; ++k)
+        if (a.lo[k] - kBoundsMargin >= cutter.bounds_max()[k] ||
+            cutter.bounds_min()[k] >= a.hi[k] + kBoundsMargin)
+            return true;
+    return false;
+}
+
 // The pieces that replace brush entities: the first piece keeps the entity (id, name, frame, layer), the
 // others are new entities named after it ("Wall 2", "Wall 3"); `removed` entities go.
 struct Replacement {
@@ -208,10 +236,15 @@ Result<void> subtract_selected_brushes(Editor& editor) {
     if (!cutters) return cutters.error();
     std::unordered_set<int> removed;
     for (const WorldBrush& c : *cutters) removed.insert(c.entity->id);
-    // Every other unlocked brush, cut by each cutter in turn.
+    // Every other unlocked brush near a cutter, cut by each cutter in turn; brushes apart from every cutter
+    // are not taken into the world at all.
     std::vector<Replacement> targets;
     for (const Entity& e : doc.level.entities) {
         if (e.type() != level::EntityType::Brush || removed.contains(e.id) || doc.locked.contains(e.id))
+            continue;
+        const WorldBox box = world_box(e);
+        if (std::all_of(cutters->begin(), cutters->end(),
+                        [&](const WorldBrush& c) { return apart(box, c.world); }))
             continue;
         auto world = level::world_brush(e);
         if (!world) return Error(std::string(kWhat) + ": " + world.error().message);

@@ -54,44 +54,14 @@ std::vector<DVec3> face_corners(const brush::Brush& b, int face) {
 // What an attribute edit does to one face: the brush (for its corners), the face index, the attributes.
 using FaceEdit = std::function<Result<void>(const brush::Brush&, int, brush::FaceAttributes&)>;
 
-// One LevelChange applying `edit` to every selected face (grouped by entity); no step when nothing changes.
-Result<void> edit_selected_faces(Editor& editor, const std::string& name, const FaceEdit& edit,
-                                 std::string merge_key = {}) {
-    const Document& doc = editor.doc();
-    if (doc.faces.empty()) return Error(name + ": no face is selected", Location{}, "pick brush faces first");
-    std::map<int, std::vector<int>> by_entity; // entity id -> face indices, in id order
-    for (const FaceRef& f : doc.faces) by_entity[f.entity].push_back(f.face);
-    auto change = std::make_unique<LevelChange>();
-    for (const auto& [id, faces] : by_entity) {
-        const Entity* e = doc.level.find(id);
-        if (!e || !e->try_as<level::BrushProps>())
-            continue; // follow_face_selection keeps this from happening
-        if (doc.locked.contains(id))
-            return Error(name + ": brush " + std::to_string(id) + " is locked", Location{},
-                         "unlock it first");
-        const brush::Brush& local = e->as<level::BrushProps>().brush;
-        std::vector<brush::Face> anchored = local.anchored_faces();
-        for (int face : faces) {
-            if (face < 0 || face >= static_cast<int>(anchored.size()))
-                continue; // follow_face_selection keeps them in range
-            brush::FaceAttributes& at = anchored[static_cast<size_t>(face)].attributes;
-            if (auto r = edit(local, face, at); !r)
-                return Error(name + ": " + face_label(*e, face) + ": " + r.error().message, Location{},
-                             r.error().hint);
-            at.rotation_degrees = wrapped_degrees(at.rotation_degrees);
-        }
-        auto rebuilt = brush::Brush::from_anchored_faces(local.anchor(), std::move(anchored));
-        if (!rebuilt) return Error(name + ": brush " + std::to_string(id) + ": " + rebuilt.error().message);
-        if (*rebuilt == local) continue;
-        Entity after = *e;
-        after.as<level::BrushProps>().brush = std::move(*rebuilt);
-        change->updates.push_back({*e, std::move(after)});
-    }
-    if (change->empty()) return ok();
-    change->set_name(name);
-    change->merge_key = std::move(merge_key);
-    editor.execute(std::move(change), doc.selection);
-    return ok();
+Result<void> edit_faces(Editor& editor, const std::string& name, const FaceEdit& edit,
+                        std::string merge_key = {}) {
+    return edit_selected_faces(
+        editor, name,
+        [&](const Entity&, const brush::Brush& b, int face, brush::FaceAttributes& at) {
+            return edit(b, face, at);
+        },
+        std::move(merge_key));
 }
 
 Result<const brush::Brush*> face_brush(const Document& doc, int entity, const char* what) {
@@ -109,6 +79,47 @@ Result<const brush::Brush*> face_brush(const Document& doc, int entity, const ch
 }
 
 } // namespace
+
+// One LevelChange for every selected face (grouped by entity).
+Result<void> edit_selected_faces(Editor& editor, const std::string& name, const FaceAttributeEdit& edit,
+                                 std::string merge_key) {
+    const Document& doc = editor.doc();
+    if (doc.faces.empty()) return Error(name + ": no face is selected", Location{}, "pick brush faces first");
+    std::map<int, std::vector<int>> by_entity; // entity id -> face indices, in id order
+    for (const FaceRef& f : doc.faces) by_entity[f.entity].push_back(f.face);
+    auto change = std::make_unique<LevelChange>();
+    for (const auto& [id, faces] : by_entity) {
+        const Entity* e = doc.level.find(id);
+        if (!e || !e->try_as<level::BrushProps>())
+            continue; // follow_face_selection keeps this from happening
+        if (doc.locked.contains(id))
+            return Error(name + ": brush " + std::to_string(id) + " is locked", Location{},
+                         "unlock it first");
+        const brush::Brush& local = e->as<level::BrushProps>().brush;
+        std::vector<brush::FaceAttributes> attributes;
+        for (const brush::Face& f : local.faces()) attributes.push_back(f.attributes);
+        for (int face : faces) {
+            if (face < 0 || face >= static_cast<int>(attributes.size()))
+                continue; // follow_face_selection keeps them in range
+            brush::FaceAttributes& at = attributes[static_cast<size_t>(face)];
+            if (auto r = edit(*e, local, face, at); !r)
+                return Error(name + ": " + face_label(*e, face) + ": " + r.error().message, Location{},
+                             r.error().hint);
+            at.rotation_degrees = wrapped_degrees(at.rotation_degrees);
+        }
+        auto rebuilt = local.with_attributes(std::move(attributes));
+        if (!rebuilt) return Error(name + ": brush " + std::to_string(id) + ": " + rebuilt.error().message);
+        if (*rebuilt == local) continue;
+        Entity after = *e;
+        after.as<level::BrushProps>().brush = std::move(*rebuilt);
+        change->updates.push_back({*e, std::move(after)});
+    }
+    if (change->empty()) return ok();
+    change->set_name(name);
+    change->merge_key = std::move(merge_key);
+    editor.execute(std::move(change), doc.selection);
+    return ok();
+}
 
 Result<void> select_face(Editor& editor, int entity, int face, SelectMode mode) {
     auto b = face_brush(editor.doc(), entity, "Select face");
@@ -213,17 +224,16 @@ Result<void> set_face_material(Editor& editor, const std::string& material) {
     if (material.empty() || material.find_first_of(" \t\n") != std::string::npos)
         return Error("Set face material: a material name is one word, got \"" + material + "\"", Location{},
                      "pick one from the texture browser");
-    return edit_selected_faces(editor, "Set face material",
-                               [&](const brush::Brush&, int, brush::FaceAttributes& at) {
-                                   at.material = material;
-                                   return ok();
-                               });
+    return edit_faces(editor, "Set face material", [&](const brush::Brush&, int, brush::FaceAttributes& at) {
+        at.material = material;
+        return ok();
+    });
 }
 
 Result<void> set_face_offset(Editor& editor, glm::dvec2 offset, std::string merge_key) {
     if (!std::isfinite(offset.x) || !std::isfinite(offset.y))
         return Error("Set face offset: the offset must be two finite numbers");
-    return edit_selected_faces(
+    return edit_faces(
         editor, "Set face offset",
         [&](const brush::Brush&, int, brush::FaceAttributes& at) {
             at.offset = offset;
@@ -235,7 +245,7 @@ Result<void> set_face_offset(Editor& editor, glm::dvec2 offset, std::string merg
 Result<void> shift_face_offset(Editor& editor, glm::dvec2 delta, std::string merge_key) {
     if (!std::isfinite(delta.x) || !std::isfinite(delta.y))
         return Error("Shift face offset: the shift must be two finite numbers");
-    return edit_selected_faces(
+    return edit_faces(
         editor, "Shift face offset",
         [&](const brush::Brush&, int, brush::FaceAttributes& at) {
             at.offset += delta;
@@ -247,7 +257,7 @@ Result<void> shift_face_offset(Editor& editor, glm::dvec2 delta, std::string mer
 Result<void> set_face_scale(Editor& editor, glm::dvec2 scale, std::string merge_key) {
     if (auto r = check_scale(scale); !r)
         return Error("Set face scale: " + r.error().message, {}, r.error().hint);
-    return edit_selected_faces(
+    return edit_faces(
         editor, "Set face scale",
         [&](const brush::Brush&, int, brush::FaceAttributes& at) {
             at.scale = scale;
@@ -258,7 +268,7 @@ Result<void> set_face_scale(Editor& editor, glm::dvec2 scale, std::string merge_
 
 Result<void> set_face_rotation(Editor& editor, double degrees, std::string merge_key) {
     if (!std::isfinite(degrees)) return Error("Set face rotation: the angle must be a finite number");
-    return edit_selected_faces(
+    return edit_faces(
         editor, "Set face rotation",
         [&](const brush::Brush&, int, brush::FaceAttributes& at) {
             at.rotation_degrees = degrees;
@@ -269,7 +279,7 @@ Result<void> set_face_rotation(Editor& editor, double degrees, std::string merge
 
 Result<void> turn_face_texture(Editor& editor, double delta_degrees, std::string merge_key) {
     if (!std::isfinite(delta_degrees)) return Error("Turn face texture: the angle must be a finite number");
-    return edit_selected_faces(
+    return edit_faces(
         editor, "Turn face texture",
         [&](const brush::Brush&, int, brush::FaceAttributes& at) {
             at.rotation_degrees += delta_degrees;
@@ -283,7 +293,7 @@ Result<void> fit_face_texture(Editor& editor, glm::dvec2 repeats) {
         repeats.x > 1000 || repeats.y > 1000)
         return Error("Fit texture: the repeats must be numbers above 0 and at most 1000", Location{},
                      "give 1,1 for the texture once across the face");
-    return edit_selected_faces(
+    return edit_faces(
         editor, "Fit texture",
         [&](const brush::Brush& b, int face, brush::FaceAttributes& at) -> Result<void> {
             const brush::TextureAxes axes =
@@ -312,7 +322,7 @@ Result<void> fit_face_texture(Editor& editor, glm::dvec2 repeats) {
 }
 
 Result<void> align_face_texture_to_edge(Editor& editor, int edge) {
-    return edit_selected_faces(
+    return edit_faces(
         editor, "Align texture",
         [&](const brush::Brush& b, int face, brush::FaceAttributes& at) -> Result<void> {
             const std::vector<DVec3> corners = face_corners(b, face);
@@ -347,11 +357,11 @@ Result<void> paste_face_attributes(Editor& editor) {
     const auto& copied = editor.face_session().copied;
     if (!copied) return Error("Paste face: nothing is copied", Location{}, "copy a face's attributes first");
     const brush::FaceAttributes attributes = *copied;
-    return edit_selected_faces(editor, "Paste face attributes",
-                               [&](const brush::Brush&, int, brush::FaceAttributes& at) {
-                                   at = attributes;
-                                   return ok();
-                               });
+    return edit_faces(editor, "Paste face attributes",
+                      [&](const brush::Brush&, int, brush::FaceAttributes& at) {
+                          at = attributes;
+                          return ok();
+                      });
 }
 
 } // namespace ks::editor

@@ -13,6 +13,7 @@
 #include "model/edit_selection.h"
 #include "model/editor.h"
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -49,7 +50,15 @@ struct SelectedFace {
 std::vector<SelectedFace> selected_faces(const Document& doc);
 
 // ---- attribute edits on every selected face ----
-// A drag passes `merge_key` so the whole drag is one step.
+// What every edit below does: each selected face's attributes changed by `edit` (given its entity, its
+// brush in the entity's frame and its index) as one step named `name`, refused whole when an edit refuses
+// one face; no step when nothing changes. Only attributes change, so the brushes are not derived again.
+// A drag passes `merge_key` so the whole drag is one step (the texture drag: face_drag.h).
+using FaceAttributeEdit =
+    std::function<Result<void>(const level::Entity&, const brush::Brush&, int, brush::FaceAttributes&)>;
+Result<void> edit_selected_faces(Editor& editor, const std::string& name, const FaceAttributeEdit& edit,
+                                 std::string merge_key = {});
+
 Result<void> set_face_material(Editor& editor, const std::string& material);
 Result<void> set_face_offset(Editor& editor, glm::dvec2 offset, std::string merge_key = {});
 Result<void> shift_face_offset(Editor& editor, glm::dvec2 delta, std::string merge_key = {});

@@ -33,28 +33,33 @@ Result<int> replace_texture(Editor& editor, const std::string& from, const std::
     int replaced = 0;
     for (const Entity& e : doc.level.entities) {
         if (doc.locked.contains(e.id)) continue;
-        Entity after = e;
-        if (auto* props = after.try_as<level::BrushProps>()) {
-            std::vector<brush::Face> faces = props->brush.anchored_faces();
+        if (const auto* props = e.try_as<level::BrushProps>()) {
+            // Only the attributes change: the planes stay, so the brush is not derived again.
+            std::vector<brush::FaceAttributes> attributes;
             int here = 0;
-            for (brush::Face& f : faces)
-                if (f.attributes.material == from) f.attributes.material = to, ++here;
+            for (const brush::Face& f : props->brush.faces()) {
+                attributes.push_back(f.attributes);
+                if (f.attributes.material == from) attributes.back().material = to, ++here;
+            }
             if (here == 0) continue;
-            auto rebuilt = brush::Brush::from_anchored_faces(props->brush.anchor(), std::move(faces));
-            if (!rebuilt)
+            auto swapped = props->brush.with_attributes(std::move(attributes));
+            if (!swapped)
                 return Error(std::string(kWhat) + ": brush " + std::to_string(e.id) + ": " +
-                             rebuilt.error().message);
-            props->brush = std::move(*rebuilt);
+                             swapped.error().message);
+            Entity after = e;
+            after.as<level::BrushProps>().brush = std::move(*swapped);
+            change->updates.push_back({e, std::move(after)});
             replaced += here;
         } else {
             auto current = get_entity_field(e, "texture");
             if (!current || *current != FieldValue(from)) continue;
+            Entity after = e;
             if (auto r = set_entity_field(after, "texture", FieldValue(to)); !r)
                 return Error(std::string(kWhat) + ": entity " + std::to_string(e.id) + ": " +
                              r.error().message);
             ++replaced;
+            change->updates.push_back({e, std::move(after)});
         }
-        change->updates.push_back({e, std::move(after)});
     }
     if (replaced == 0)
         return Error(std::string(kWhat) + ": no unlocked brush face or texture field uses '" + from + "'",
@@ -75,9 +80,9 @@ Result<void> keep_textures_on_world(const Entity& before, Entity& after) {
     if (!is_finite(after.position) || !is_finite(after.rotation)) return ok(); // the field check refuses it
     const EntityFrame was = frame_of(before), now = frame_of(after);
     const glm::dmat3 back = glm::transpose(now.rotation);
-    std::vector<brush::Face> faces = props->brush.anchored_faces();
     const auto& local = props->brush.faces();
-    for (size_t i = 0; i < faces.size(); ++i) {
+    std::vector<brush::FaceAttributes> attributes;
+    for (size_t i = 0; i < local.size(); ++i) {
         // The face's world mapping before the motion, carried onto its plane after it, then back into the
         // entity's frame: the inverse of what world_brush applies.
         const brush::FaceAttributes world = brush::locked_attributes(local[i], was.rotation, was.position);
@@ -87,9 +92,9 @@ Result<void> keep_textures_on_world(const Entity& before, Entity& after) {
         if (std::abs(std::remainder(kept.rotation_degrees - local[i].attributes.rotation_degrees, 360.0)) <
             1e-9)
             kept.rotation_degrees = local[i].attributes.rotation_degrees;
-        faces[i].attributes = kept;
+        attributes.push_back(kept);
     }
-    auto rebuilt = brush::Brush::from_anchored_faces(props->brush.anchor(), std::move(faces));
+    auto rebuilt = props->brush.with_attributes(std::move(attributes));
     if (!rebuilt) return Error("texture lock: " + rebuilt.error().message);
     props->brush = std::move(*rebuilt);
     return ok();

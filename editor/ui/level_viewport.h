@@ -7,6 +7,7 @@
 // viewport.cpp (the panel, the ImGui pass), viewport_input.cpp (the mouse and the keys), viewport_panes.cpp
 // (the 4-up view, the render pass, framing) and viewport_status.cpp (--status-file).
 #include "model/editor.h"
+#include "model/face_drag.h"
 #include "shell/app_shell.h"
 #include "ui/analysis_view.h"
 #include "ui/editor_log.h"
@@ -125,6 +126,7 @@ class LevelViewport {
     LogicOverlay logic_overlay_; // trigger, spawner and message markers; link arrows
     Gizmo gizmo_;
     PatrolDrag patrol_drag_;
+    FaceDrag face_drag_; // a press on a selected face drags its texture (face_drag.h)
     Handle hovered_handle_ = Handle::None;
     bool flying_ = false;
     bool box_selecting_ = false;

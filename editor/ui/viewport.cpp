@@ -115,7 +115,8 @@ void LevelViewport::status_line(ImDrawList* draw, Vec2 area) const {
     std::snprintf(text, sizeof(text), "%s%s%s  |  grid %.2f %s  |  %s%s%s", quad_.on ? "4-up: " : "",
                   view_mode_name(view_.mode), speed, editor.doc().grid.step,
                   editor.doc().grid.snap ? "snap" : "free", gizmo_label(gizmo_).c_str(),
-                  gizmo_.readout().empty() ? "" : "  ", gizmo_.readout().c_str());
+                  gizmo_.readout().empty() && !face_drag_.dragging() ? "" : "  ",
+                  face_drag_.dragging() ? face_drag_.describe().c_str() : gizmo_.readout().c_str());
     draw->PushClipRect(ImVec2(under.x, under.y), ImVec2(under.x + span.x, under.y + span.y), true);
     draw->AddRectFilled(ImVec2(under.x + 6, under.y + span.y - 26),
                         ImVec2(under.x + span.x - 6, under.y + span.y - 4), IM_COL32(15, 17, 22, 170), 4.0f);

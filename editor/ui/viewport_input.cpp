@@ -18,11 +18,11 @@ void LevelViewport::input(Vec2 origin, bool hovered) {
     place_ray_.reset();
     if (hovered) place_ray_ = view_.ray(mouse);
     if (!ctx_.shell.screenshot_mode())
-        flying_ = view_.update(
-            read_view_input(ctx_.shell.window(),
-                            hovered && !gizmo_.dragging() && !patrol_drag_.dragging() && !box_selecting_,
-                            mouse, hovered ? io.MouseWheel : 0.0f),
-            io.DeltaTime);
+        flying_ = view_.update(read_view_input(ctx_.shell.window(),
+                                               hovered && !gizmo_.dragging() && !patrol_drag_.dragging() &&
+                                                   !face_drag_.dragging() && !box_selecting_,
+                                               mouse, hovered ? io.MouseWheel : 0.0f),
+                               io.DeltaTime);
     LogicPanels& logic = ctx_.logic;
     if (logic.picking() && hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Right) &&
         io.MouseDragMaxDistanceSqr[1] < 16.0f)
@@ -64,6 +64,17 @@ bool LevelViewport::drag(Vec2 mouse) {
         }
         return true;
     }
+    if (face_drag_.dragging()) {
+        if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+            if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) // past the click distance: a drag
+                ctx_.log.report(face_drag_.drag(editor, view_.ray(mouse)), "texture drag");
+        } else {
+            // A press and release on the spot that changed nothing is a click: the box select below picks.
+            box_selecting_ = !face_drag_.changed() && ImGui::GetIO().MouseDragMaxDistanceSqr[0] < 16.0f;
+            face_drag_.end(editor);
+        }
+        return true;
+    }
     if (gizmo_.dragging()) {
         if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
             if (auto message = gizmo_.drag(editor, view_, mouse, ImGui::GetIO().KeyCtrl); !message.empty())
@@ -96,8 +107,12 @@ void LevelViewport::click(Vec2 mouse) {
         gizmo_.begin(editor, view_, gizmo_frame(), hovered_handle_, mouse);
         return;
     }
-    box_selecting_ = true;
     box_start_ = Vec2(ImGui::GetIO().MousePos.x, ImGui::GetIO().MousePos.y);
+    const ImGuiIO& io = ImGui::GetIO();
+    if (begin_face_drag(face_drag_, editor, view_.ray(mouse), shown_fn(),
+                        face_drag_mode(io.KeyCtrl, io.KeyShift)))
+        return; // a selected face's texture: moved, or turned with Ctrl, scaled with Shift
+    box_selecting_ = true;
 }
 
 void LevelViewport::end_box_select(Vec2 origin, Vec2 mouse) {
@@ -157,6 +172,10 @@ void LevelViewport::disarm_tools() {
 bool LevelViewport::escape() {
     if (gizmo_.dragging()) {
         gizmo_.cancel(ctx_.editor);
+        return true;
+    }
+    if (face_drag_.dragging()) {
+        face_drag_.cancel(ctx_.editor);
         return true;
     }
     if (ViewportTool* tool = armed_tool()) {

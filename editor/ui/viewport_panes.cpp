@@ -75,7 +75,8 @@ void LevelViewport::quad_view(Vec2 origin, Vec2 size) {
     const ImGuiIO& io = ImGui::GetIO();
     // The pane under the mouse becomes the active one, unless a drag, a fly or a box select started in
     // another is still going on (it keeps the pane it started in until the button is released).
-    bool busy = gizmo_.dragging() || patrol_drag_.dragging() || box_selecting_ || flying_;
+    bool busy =
+        gizmo_.dragging() || patrol_drag_.dragging() || face_drag_.dragging() || box_selecting_ || flying_;
     for (int button = 0; button < 3; ++button)
         if (io.MouseDown[button] && !ImGui::IsMouseClicked(button)) busy = true;
     const int under =

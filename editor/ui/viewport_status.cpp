@@ -31,6 +31,7 @@ void LevelViewport::status(nlohmann::json& s, bool level_shown) const {
     s["gizmo"] = gizmo_mode_name(gizmo_.mode);
     s["gizmo_space"] = rotation_space_name(gizmo_.space);
     s["dragging"] = gizmo_.dragging();
+    s["texture_drag"] = face_drag_.dragging() ? face_drag_.describe() : std::string();
     lines_.status(s, overlays_);
     s["view"] = view_mode_name(view_.mode);
     geometry_.status(s, ctx_.editor.doc());

@@ -26,4 +26,13 @@ Result<void> click_face(Editor& editor, const std::optional<FacePick>& picked) {
     return select_face(editor, picked->entity, picked->face, SelectMode::Toggle);
 }
 
+bool begin_face_drag(FaceDrag& drag, Editor& editor, const geometry::Ray& ray, const ShownFn& shown,
+                     FaceDragMode mode) {
+    if (editor.doc().faces.empty()) return false;
+    const auto picked = pick_face(editor.doc(), ray, shown);
+    if (!picked) return false;
+    const DVec3 point = DVec3(ray.origin) + DVec3(ray.direction) * double(picked->distance);
+    return drag.begin(editor, picked->entity, picked->face, point, mode);
+}
+
 } // namespace ks::editor

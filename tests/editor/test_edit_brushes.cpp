@@ -3,8 +3,10 @@
 #include "editor_test_util.h"
 #include "model/edit_brushes.h"
 #include "model/edit_selection.h"
+#include "model/edit_transforms.h"
 #include "model/script.h"
 
+#include "brush/brush_csg.h"
 #include "level/entity_shapes.h"
 
 #include <algorithm>
@@ -221,4 +223,50 @@ TEST_CASE("brushes: the CSG menu says why an item does not apply") {
     REQUIRE(run_script_text("lock " + std::to_string(*b) + "\n", "lock.kss", {}, ed).ok());
     ed.set_selection({*a, *b});
     CHECK(csg_unavailable(ed.doc(), CsgOp::merge).find("is locked") != std::string::npos);
+}
+
+TEST_CASE("brushes: subtract skips far brushes by their bounds and cuts exactly what cutting all would") {
+    // Boxes around a cutter: overlapping it, flush against it (touching a face: not cut), 1e-4 away, turned
+    // (their boxes overlapping the cutter's, the brushes perhaps not), wholly inside it, and far away.
+    Editor ed;
+    ed.grid().snap = false;
+    std::vector<int> ids;
+    const auto box = [&](Vec3 a, Vec3 b, float turn = 0.0f) {
+        auto id = place_box_brush(ed, a, b, {"concrete", ""});
+        REQUIRE(id.ok());
+        if (turn != 0.0f) {
+            REQUIRE(select(ed, {*id}).ok());
+            REQUIRE(rotate_selection_about(ed, 1, turn, RotationSpace::World, false).ok());
+        }
+        ids.push_back(*id);
+    };
+    box({-3, 0, -3}, {-1, 2, -1});                // overlaps the cutter's corner
+    box({1, 0, -1}, {3, 2, 1});                   // flush against its +x face
+    box({-1, 2.0001f, -1}, {1, 3, 1});            // just above it
+    box({1.3f, 0, 1.3f}, {3.3f, 2, 3.3f}, 45.0f); // turned: a corner reaches into the cutter
+    box({-1.2f, 0.5f, 1.5f}, {1.2f, 1.5f, 4}, 10.0f);
+    box({-0.5f, 0.8f, -0.5f}, {0.5f, 1.5f, 0.5f}); // wholly inside: removed
+    for (int i = 0; i < 20; ++i) box({10.0f + i * 3, 0, 0}, {11.0f + i * 3, 1, 1}, 7.0f * i);
+    auto cutter = place_box_brush(ed, {-1.5f, 0.5f, -1.5f}, {1, 2, 1.6f}, {"wood", ""});
+    REQUIRE(cutter.ok());
+
+    // The reference: every brush taken into the world and cut.
+    const brush::Brush cutter_world = editor_test::world_brush_of(ed, *cutter);
+    std::vector<int> cut_ids;
+    size_t pieces = 0;
+    for (int id : ids) {
+        auto result = brush::subtract(editor_test::world_brush_of(ed, id), cutter_world);
+        REQUIRE(result.ok());
+        if (result->removed) cut_ids.push_back(id), pieces += result->fragments.size();
+    }
+    REQUIRE(cut_ids.size() >= 3);
+    const level::Level before = ed.level();
+    REQUIRE(select(ed, {*cutter}).ok());
+    REQUIRE(subtract_selected_brushes(ed).ok());
+    std::vector<int> changed;
+    for (int id : ids)
+        if (const level::Entity* now = ed.level().find(id); !now || !(*now == *before.find(id)))
+            changed.push_back(id); // cut, or removed whole
+    CHECK(changed == cut_ids);
+    CHECK(editor_test::brush_count(ed) == static_cast<int>(ids.size() - cut_ids.size() + pieces));
 }

@@ -6,6 +6,7 @@
 #include "model/edit_faces.h"
 #include "model/edit_selection.h"
 #include "model/edit_transforms.h"
+#include "model/face_drag.h"
 #include "model/script.h"
 #include "view/face_picking.h"
 
@@ -347,4 +348,170 @@ TEST_CASE("faces: a ray picks the face it enters through; a nearer entity hides 
     CHECK_FALSE(pick_face(ed.doc(), miss, all).has_value());
     REQUIRE(click_face(ed, pick_face(ed.doc(), miss, all)).ok());
     CHECK(ed.doc().faces.empty());
+}
+
+namespace {
+
+// A box turned 30 degrees about y with its top face selected, Snap off: the texture drag's test bed.
+struct DragBed {
+    Editor ed;
+    int id = 0, top = 0;
+    DVec3 centre{0.0}; // the top face's centre (world)
+    DragBed() {
+        id = face_test_box(ed, {0, 0, 0}, {4, 4, 4});
+        REQUIRE(select(ed, {id}).ok());
+        REQUIRE(rotate_selection_about(ed, 1, 30.0f, RotationSpace::World, false).ok());
+        top = top_of(ed, id);
+        REQUIRE(select_face(ed, id, top).ok());
+        REQUIRE(set_face_scale(ed, {2, 2}).ok());
+        ed.grid().snap = false;
+        for (const DVec3& p : world_corners(ed, id, top)) centre += p / 4.0;
+    }
+    glm::dvec2 texel(const DVec3& p) const { return brush::texture_coordinates(world_face(ed, id, top), p); }
+    const brush::FaceAttributes& attributes() const { return local_face(ed, id, top).attributes; }
+};
+
+} // namespace
+
+TEST_CASE("face drag: a move carries the grabbed texel to the mouse, whole grid steps with Snap; one step") {
+    DragBed bed;
+    Editor& ed = bed.ed;
+    const DVec3 grab = bed.centre + DVec3(0.3, 0, 0.2), to = grab + DVec3(1.3, 0, -0.7);
+    const glm::dvec2 grabbed = bed.texel(grab);
+    const brush::FaceAttributes start = bed.attributes();
+    const size_t steps = ed.history().undo_count();
+    FaceDrag drag;
+    REQUIRE(drag.begin(ed, bed.id, bed.top, grab, face_drag_mode(false, false)));
+    CHECK(drag.mode() == FaceDragMode::move);
+    for (double f : {0.25, 0.5, 1.0}) REQUIRE(drag.drag_to(ed, grab + (to - grab) * f).ok());
+    CHECK(drag.changed());
+    CHECK(bed.texel(to).x == doctest::Approx(grabbed.x).epsilon(1e-9));
+    CHECK(bed.texel(to).y == doctest::Approx(grabbed.y).epsilon(1e-9));
+    drag.end(ed);
+    CHECK(ed.history().undo_count() == steps + 1); // the whole drag is one step
+    REQUIRE(ed.undo());
+    CHECK(bed.attributes() == start);
+    REQUIRE(ed.redo());
+
+    // With Snap (grid 0.5): the texture moves by whole grid steps along u and v, each texel by 0.25 units.
+    ed.grid().snap = true;
+    ed.grid().step = 0.5f;
+    const brush::FaceAttributes before = bed.attributes();
+    REQUIRE(drag.begin(ed, bed.id, bed.top, grab, FaceDragMode::move));
+    REQUIRE(drag.drag_to(ed, to).ok());
+    drag.end(ed);
+    CHECK(ed.history().undo_count() == steps + 2);
+    for (int k = 0; k < 2; ++k) {
+        const double shifted_world = (before.offset[k] - bed.attributes().offset[k]) * before.scale[k];
+        CHECK(std::abs(shifted_world / 0.5 - std::round(shifted_world / 0.5)) < 1e-9);
+    }
+    CHECK(drag.describe().starts_with("texture move"));
+}
+
+TEST_CASE("face drag: Ctrl turns and Shift scales about the face's centre, snapped; Esc leaves no step") {
+    DragBed bed;
+    Editor& ed = bed.ed;
+    const glm::dvec2 at_centre = bed.texel(bed.centre);
+    const brush::FaceAttributes start = bed.attributes();
+    // Floors' base axes: u along +x, v along -z, in the turned brush's frame.
+    const glm::dmat3 turn = glm::mat3_cast(dquat_from_ypr_degrees(DVec3(ed.level().find(bed.id)->rotation)));
+    const auto on_face = [&](double degrees, double radius) {
+        const double a = glm::radians(degrees);
+        return bed.centre + turn * DVec3(std::cos(a) * radius, 0, -std::sin(a) * radius);
+    };
+    FaceDrag drag;
+    REQUIRE(drag.begin(ed, bed.id, bed.top, on_face(10, 1), face_drag_mode(true, false)));
+    REQUIRE(drag.drag_to(ed, on_face(62, 1.5)).ok());
+    CHECK(bed.attributes().rotation_degrees == doctest::Approx(start.rotation_degrees + 52));
+    ed.grid().snap = true; // the grid's rotation step, 15 degrees
+    REQUIRE(drag.drag_to(ed, on_face(62, 1.5)).ok());
+    CHECK(bed.attributes().rotation_degrees == doctest::Approx(start.rotation_degrees + 45));
+    CHECK(bed.texel(bed.centre).x == doctest::Approx(at_centre.x).epsilon(1e-9));
+    CHECK(bed.texel(bed.centre).y == doctest::Approx(at_centre.y).epsilon(1e-9));
+    drag.end(ed);
+
+    const size_t steps = ed.history().undo_count();
+    const brush::FaceAttributes turned = bed.attributes();
+    REQUIRE(drag.begin(ed, bed.id, bed.top, on_face(0, 1), face_drag_mode(false, true)));
+    CHECK(drag.mode() == FaceDragMode::scale);
+    REQUIRE(drag.drag_to(ed, on_face(0, 2.05)).ok()); // 2.05 snaps to 2 (eighths)
+    CHECK(bed.attributes().scale.x == doctest::Approx(turned.scale.x * 2));
+    CHECK(bed.attributes().scale.y == doctest::Approx(turned.scale.y * 2));
+    CHECK(bed.texel(bed.centre).x == doctest::Approx(at_centre.x).epsilon(1e-9));
+    ed.grid().snap = false;
+    REQUIRE(drag.drag_to(ed, on_face(0, 1.3)).ok());
+    CHECK(bed.attributes().scale.x == doctest::Approx(turned.scale.x * 1.3));
+    // Esc: as at the press, and no step left.
+    drag.cancel(ed);
+    CHECK(!drag.dragging());
+    CHECK(bed.attributes() == turned);
+    CHECK(ed.history().undo_count() == steps);
+}
+
+TEST_CASE("face drag: only a selected, unlocked face is grabbed; texture lock keeps a dragged texture") {
+    DragBed bed;
+    Editor& ed = bed.ed;
+    FaceDrag drag;
+    CHECK(!drag.begin(ed, bed.id, (bed.top + 1) % 6, bed.centre, FaceDragMode::move)); // not selected
+    CHECK(!drag.begin(ed, 999, 0, bed.centre, FaceDragMode::move));
+    CHECK(!drag.dragging());
+    // A press that does not move changes nothing and leaves no step (the viewport takes it as a click).
+    const size_t steps = ed.history().undo_count();
+    REQUIRE(drag.begin(ed, bed.id, bed.top, bed.centre, FaceDragMode::move));
+    REQUIRE(drag.drag_to(ed, bed.centre).ok());
+    drag.end(ed);
+    CHECK(!drag.changed());
+    CHECK(ed.history().undo_count() == steps);
+
+    // Texture lock on: the dragged texture then stays on the world while the brush moves under it.
+    set_texture_lock(ed, true);
+    REQUIRE(drag.begin(ed, bed.id, bed.top, bed.centre, FaceDragMode::move));
+    REQUIRE(drag.drag_to(ed, bed.centre + DVec3(0.4, 0, 0.9)).ok());
+    drag.end(ed);
+    const DVec3 probe = bed.centre + DVec3(0.5, 0, 0.5);
+    const glm::dvec2 dragged = bed.texel(probe);
+    REQUIRE(select(ed, {bed.id}).ok());
+    REQUIRE(move_selection(ed, {0.75f, 0, -0.5f}).ok());
+    CHECK(bed.texel(probe).x == doctest::Approx(dragged.x).epsilon(1e-9));
+    CHECK(bed.texel(probe).y == doctest::Approx(dragged.y).epsilon(1e-9));
+    // Undo: the move, then the whole drag.
+    REQUIRE(ed.undo());
+    REQUIRE(ed.undo());
+    CHECK(ed.history().undo_count() == steps);
+}
+
+TEST_CASE("faces: replace texture swaps attributes only; the level equals the one rebuilt from planes") {
+    Editor ed;
+    for (int i = 0; i < 6; ++i) {
+        const int id =
+            face_test_box(ed, {i * 6.0f, 0, 0}, {i * 6.0f + 3, 2 + i, 3}, i % 2 ? "metal" : "wood");
+        REQUIRE(select(ed, {id}).ok());
+        REQUIRE(rotate_selection_about(ed, 1, 17.0f * i, RotationSpace::World, false).ok());
+    }
+    level::Level slow = ed.level();
+    for (level::Entity& e : slow.entities) {
+        auto& b = e.as<level::BrushProps>().brush;
+        std::vector<brush::Face> faces = b.anchored_faces();
+        for (brush::Face& f : faces)
+            if (f.attributes.material == "metal") f.attributes.material = "tiles";
+        auto rebuilt = brush::Brush::from_anchored_faces(b.anchor(), std::move(faces));
+        REQUIRE(rebuilt.ok());
+        b = *rebuilt;
+    }
+    REQUIRE(replace_texture(ed, "metal", "tiles").ok());
+    REQUIRE(ed.level().entities.size() == slow.entities.size());
+    for (size_t i = 0; i < slow.entities.size(); ++i) {
+        CHECK(ed.level().entities[i] == slow.entities[i]);
+        const brush::Brush& fast = ed.level().entities[i].as<level::BrushProps>().brush;
+        const brush::Brush& rebuilt = slow.entities[i].as<level::BrushProps>().brush;
+        CHECK(fast.vertices() == rebuilt.vertices());
+        CHECK(fast.polygons() == rebuilt.polygons());
+        CHECK(fast.volume() == rebuilt.volume());
+    }
+    // The fast path refuses what from_faces refuses.
+    const brush::Brush& b = ed.level().entities[0].as<level::BrushProps>().brush;
+    std::vector<brush::FaceAttributes> bad(b.faces().size());
+    bad[3].scale.y = 0.0;
+    CHECK(b.with_attributes(bad).error().where.path == "faces[3].scale.y");
+    CHECK(!b.with_attributes({}).ok());
 }

@@ -4,9 +4,9 @@
 // browser from the selected wall's texture field, search, click a thumbnail (the wall's texture changes, one
 // undo step), close it, Ctrl+Z; type into the wall's size (Enter sets and leaves the field, Esc drops only
 // the typing, Tab moves on, nothing logged while typing), Ctrl+D, and quick taps of Ctrl+D, an arrow, E and
-// Delete; Ctrl+Shift+click a brush's top face, Fit (one step), Ctrl+Z. The editor reports its state in
-// --status-file every frame; the test waits on that, never on time. Without a display or xdotool these tests
-// fail: ./run.sh test provides both.
+// Delete; Ctrl+Shift+click a brush's top face, Fit (one step), Ctrl+Z, drag its texture (one step), Ctrl+Z.
+// The editor reports its state in --status-file every frame; the test waits on that, never on time. Without
+// a display or xdotool these tests fail: ./run.sh test provides both.
 #include "level/level_io.h"
 #include "runtime/editor_session.h"
 #include "runtime/screen_image.h"
@@ -110,73 +110,9 @@ TEST_CASE("editor objects input: click the player start in the top view, drag it
     CHECK(saved->player_start == level::PlayerStart{Vec3(6, 0, 8), 0.0f});
 }
 
-TEST_CASE("editor objects input: open the texture browser from the wall's texture field, search, click a "
-          "thumbnail, close, undo with real X events") {
-    test::require_window_test_tools();
-    test::ScratchDir dir;
-    const auto level_file = test::write_file(dir / "objects_input.json", kObjectsLevel);
-    std::ofstream(dir / "select.kss") << "select " << kObjectsWall << "\n";
-    const auto status = dir / "status.json";
-    const test::PrivateDisplay display;
-    EditorProcess editor({"--level", level_file.string(), "--run", (dir / "select.kss").string(), "--width",
-                          "1280", "--height", "720", "--status-file", status.string()},
-                         {"XDG_CONFIG_HOME=" + (dir / "config").string()}, display);
-    Session s(status, editor, display);
-    json st = s.wait("the wall's texture field", [](const json& j) {
-        return j["frame"] >= 2 && j.contains("primary") && j["spots"].contains("inspector.texture");
-    });
-    CHECK(st["primary"]["texture"] == "concrete");
-    CHECK(st["texture_browser"]["open"] == false);
-    const size_t undo_before = st["undo"];
-
-    s.click(st["spots"]["inspector.texture"]);
-    st = s.wait("the browser open with every material", [](const json& j) {
-        return j["texture_browser"]["open"] == true && j["spots"].contains("texture:concrete") &&
-               j["texture_browser"]["shown"].size() >= 6;
-    });
-    const auto all = st["texture_browser"]["shown"].get<std::vector<std::string>>();
-    CHECK(std::find(all.begin(), all.end(), "wood") != all.end());
-
-    s.click(st["spots"]["texture_search"]);
-    s.type("wo");
-    st = s.wait("the search narrowed to wood", [](const json& j) {
-        return j["texture_browser"]["query"] == "wo" &&
-               j["texture_browser"]["shown"] == json::array({"wood"}) && j["spots"].contains("texture:wood");
-    });
-    CHECK_FALSE(st["spots"].contains("texture:concrete"));
-
-    s.click(st["spots"]["texture:wood"]);
-    st = s.wait("the wall is wood", [](const json& j) { return j["primary"]["texture"] == "wood"; });
-    CHECK(st["undo"] == undo_before + 1);
-    CHECK(st["texture_browser"]["open"] == true); // stays open to try another
-
-    s.click(st["spots"]["texture_close"]);
-    st = s.wait("the browser closed", [](const json& j) { return j["texture_browser"]["open"] == false; });
-    s.key("ctrl+z");
-    st = s.wait("the texture undone", [](const json& j) { return j["primary"]["texture"] == "concrete"; });
-    CHECK(st["undo"] == undo_before);
-    s.key("ctrl+y");
-    s.wait("the texture redone", [](const json& j) { return j["primary"]["texture"] == "wood"; });
-    s.key("ctrl+s");
-    s.wait("saved", [](const json& j) { return j["dirty"] == false; });
-    auto saved = level::load_level_file(level_file);
-    REQUIRE(saved);
-    CHECK(saved->find(kObjectsWall)->as<level::WallProps>().texture == "wood");
-}
-
-TEST_CASE(
-    "editor objects input: typed fields (Enter sets and leaves the field, Esc cancels only the typing, "
-    "Tab moves on, no errors while typing), Ctrl+D's copy one grid step along x, quick taps never lost") {
-    test::require_window_test_tools();
-    test::ScratchDir dir;
-    const auto level_file = test::write_file(dir / "objects_input.json", kObjectsLevel);
-    std::ofstream(dir / "select.kss") << "select " << kObjectsWall << "\n";
-    const auto status = dir / "status.json";
-    const test::PrivateDisplay display;
-    EditorProcess editor({"--level", level_file.string(), "--run", (dir / "select.kss").string(), "--width",
-                          "1280", "--height", "720", "--status-file", status.string()},
-                         {"XDG_CONFIG_HOME=" + (dir / "config").string()}, display);
-    Session s(status, editor, display);
+namespace {
+// The typed fields and quick taps on the selected wall (the texture test's editor, after it saved).
+void typed_fields_and_taps(Session& s) {
     json st = s.wait("the wall's fields", [](const json& j) {
         return j["frame"] >= 2 && j.contains("primary") && j["spots"].contains("field.size.1") &&
                j["spots"].contains("field.rotation.0") && j["spots"].contains("inspector.duplicate");
@@ -267,9 +203,69 @@ TEST_CASE(
     st = s.wait("deleted", [](const json& j) { return j["entities"] == 3; });
     CHECK(st["undo"] == undo_before + 6);
 }
+} // namespace
+
+// One editor with the wall selected for both the texture browser and the typed fields (one setup, one
+// launch): the typed fields run on the level the texture part saved (the wall is wood, still selected).
+TEST_CASE(
+    "editor objects input: the wall's texture from the browser (search, click a thumbnail, close, undo, "
+    "save); typed fields (Enter sets and leaves the field, Esc cancels only the typing, Tab moves on, no "
+    "errors while typing), Ctrl+D's copy one grid step along x, quick taps never lost") {
+    test::require_window_test_tools();
+    test::ScratchDir dir;
+    const auto level_file = test::write_file(dir / "objects_input.json", kObjectsLevel);
+    std::ofstream(dir / "select.kss") << "select " << kObjectsWall << "\n";
+    const auto status = dir / "status.json";
+    const test::PrivateDisplay display;
+    EditorProcess editor({"--level", level_file.string(), "--run", (dir / "select.kss").string(), "--width",
+                          "1280", "--height", "720", "--status-file", status.string()},
+                         {"XDG_CONFIG_HOME=" + (dir / "config").string()}, display);
+    Session s(status, editor, display);
+    json st = s.wait("the wall's texture field", [](const json& j) {
+        return j["frame"] >= 2 && j.contains("primary") && j["spots"].contains("inspector.texture");
+    });
+    CHECK(st["primary"]["texture"] == "concrete");
+    CHECK(st["texture_browser"]["open"] == false);
+    const size_t undo_before = st["undo"];
+
+    s.click(st["spots"]["inspector.texture"]);
+    st = s.wait("the browser open with every material", [](const json& j) {
+        return j["texture_browser"]["open"] == true && j["spots"].contains("texture:concrete") &&
+               j["texture_browser"]["shown"].size() >= 6;
+    });
+    const auto all = st["texture_browser"]["shown"].get<std::vector<std::string>>();
+    CHECK(std::find(all.begin(), all.end(), "wood") != all.end());
+
+    s.click(st["spots"]["texture_search"]);
+    s.type("wo");
+    st = s.wait("the search narrowed to wood", [](const json& j) {
+        return j["texture_browser"]["query"] == "wo" &&
+               j["texture_browser"]["shown"] == json::array({"wood"}) && j["spots"].contains("texture:wood");
+    });
+    CHECK_FALSE(st["spots"].contains("texture:concrete"));
+
+    s.click(st["spots"]["texture:wood"]);
+    st = s.wait("the wall is wood", [](const json& j) { return j["primary"]["texture"] == "wood"; });
+    CHECK(st["undo"] == undo_before + 1);
+    CHECK(st["texture_browser"]["open"] == true); // stays open to try another
+
+    s.click(st["spots"]["texture_close"]);
+    st = s.wait("the browser closed", [](const json& j) { return j["texture_browser"]["open"] == false; });
+    s.key("ctrl+z");
+    st = s.wait("the texture undone", [](const json& j) { return j["primary"]["texture"] == "concrete"; });
+    CHECK(st["undo"] == undo_before);
+    s.key("ctrl+y");
+    s.wait("the texture redone", [](const json& j) { return j["primary"]["texture"] == "wood"; });
+    s.key("ctrl+s");
+    s.wait("saved", [](const json& j) { return j["dirty"] == false; });
+    auto saved = level::load_level_file(level_file);
+    REQUIRE(saved);
+    CHECK(saved->find(kObjectsWall)->as<level::WallProps>().texture == "wood");
+    typed_fields_and_taps(s);
+}
 
 TEST_CASE("editor objects input: Ctrl+Shift+click picks a brush's top face in the top view, Fit fits the "
-          "texture, Ctrl+Z undoes it with the face still selected") {
+          "texture, Ctrl+Z undoes it with the face still selected; a drag moves the texture, one step") {
     test::require_window_test_tools();
     test::ScratchDir dir;
     const auto level_file = test::write_file(dir / "faces_input.json", R"({
@@ -310,4 +306,17 @@ TEST_CASE("editor objects input: Ctrl+Shift+click picks a brush's top face in th
     st = s.wait("the fit undone", [&](const json& j) { return j["undo"] == undo_before; });
     CHECK(st["faces"]["selected"].size() == 1);
     CHECK(st["faces"]["selected"][0]["scale"] == json::array({1.0, 1.0}));
+
+    // A drag on the selected face moves its texture live (Snap on: whole grid steps), one step; Ctrl+Z.
+    s.drag(st["screen"]["1"], 120.0f, 0.0f, 6);
+    st = s.wait("the texture dragged", [&](const json& j) {
+        return j["undo"] == undo_before + 1 && j["texture_drag"] == "" &&
+               j["faces"]["selected"][0]["offset"] != json::array({0.0, 0.0});
+    });
+    const double shifted = st["faces"]["selected"][0]["offset"][0].get<double>();
+    CHECK(shifted == std::round(shifted));
+    CHECK(st["selection"].empty()); // a drag on a selected face is not a box select
+    s.key("ctrl+z");
+    st = s.wait("the drag undone", [&](const json& j) { return j["undo"] == undo_before; });
+    CHECK(st["faces"]["selected"][0]["offset"] == json::array({0.0, 0.0}));
 }
