@@ -11,6 +11,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
 
 namespace ks::editor::ui {
@@ -173,9 +174,11 @@ void BrushMenu::draw(const PanelContext& ctx) {
     ctx.spots.here("brush.hollow");
     if (hollow_open) {
         ImGui::SetNextItemWidth(100);
-        ImGui::DragFloat("wall thickness", &thickness_, 0.05f, 0.01f, 64.0f, "%.2f");
+        float thickness = thickness_ ? *thickness_ : std::clamp(doc.grid.step, 0.01f, 64.0f);
+        if (ImGui::DragFloat("wall thickness", &thickness, 0.05f, 0.01f, 64.0f, "%.2f"))
+            thickness_ = thickness;
         if (ImGui::Button("Hollow")) {
-            ctx.report(hollow_selected_brushes(editor, thickness_), "hollow");
+            ctx.report(hollow_selected_brushes(editor, thickness), "hollow");
             ImGui::CloseCurrentPopup();
         }
         ctx.spots.here("brush.hollow_apply");
