@@ -265,7 +265,10 @@ shot window
 
 # --- 5. a platform and a ramp up to it, in the front view: two boxes, the second clipped to a wedge -------
 step "platform and ramp (box, box, clip)"
+key Escape "leave the draw tool"
+key Escape "clear the selection (the wall's pieces: a brush drawn now would take their depth)"
 key KP_1 "front view"
+key b "draw tool (box)"
 drag $(at -10 1 -6) $(at -4 4 -6) "drag the platform (6 x 3, as deep as the window)"
 wait_for "the platform" '.undo_name == "Place box brush"'
 drag $(at -4 1 -6) $(at 2 4 -6) "drag the ramp's box beside it"
@@ -300,6 +303,7 @@ TEXTURE=$(status | jq -r '.faces.selected[0].material as $now | [.spots | keys[]
     map(select(. != $now and (. as $t | $shown | index($t)))) | .[0]')
 click $(spot "texture:$TEXTURE") "the texture $TEXTURE"
 wait_for "the faces textured" "[.faces.selected[].material] | all(. == \"$TEXTURE\")"
+click $(spot texture_close) "close the texture browser (it covers the viewport)"
 key Escape "clear the selection"
 
 # --- 7. the door, the lamp, the robot and its patrol, the control panel (top view) -----------------------
