@@ -304,6 +304,7 @@ TEXTURE=$(status | jq -r '.faces.selected[0].material as $now | [.spots | keys[]
 click $(spot "texture:$TEXTURE") "the texture $TEXTURE"
 wait_for "the faces textured" "[.faces.selected[].material] | all(. == \"$TEXTURE\")"
 click $(spot texture_close) "close the texture browser (it covers the viewport)"
+click $(spot face.clear) "clear the face selection (its section tops every inspector; Esc leaves it)"
 key Escape "clear the selection"
 
 # --- 7. the door, the lamp, the robot and its patrol, the control panel (top view) -----------------------
@@ -311,7 +312,13 @@ step "door"
 key KP_7 "top view"
 click $(q '.palette.door | "\(.[0]) \(.[1])"') "palette: door"
 click $(at 0 1 9.5) "place the door in the doorway (inside the wall's line: from above the lintel is hit first)"
-wait_for "the door" '.primary.type == "door"'
+wait_for "the door" '.primary.type == "door" and .gizmo_handles.z != null'
+# From above the wall over the arch is met first, so the door went in just inside; its z arrow moves it
+# one grid step into the wall's line.
+read -r hx hy < <(q '.gizmo_handles.z | "\(.[0]) \(.[1])"')
+dz=$(status | jq -r '.axes_on_screen | .z[1] - .origin[1]')
+drag "$hx" "$hy" "$hx" "$(echo "$hy + $dz" | bc -l)" "drag the door's z arrow one step into the doorway"
+wait_for "the door moved" '.primary.position[2] > 9.9'
 
 step "lamp"
 click $(q '.palette.top_light | "\(.[0]) \(.[1])"') "palette: top_light"
