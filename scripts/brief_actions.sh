@@ -329,6 +329,14 @@ step "robot with a patrol"
 click $(q '.palette.robot | "\(.[0]) \(.[1])"') "palette: robot"
 click $(at 5 0 -6) "place the robot"
 wait_for "the robot" '.primary.type == "robot"'
+# The robot's fields fill the inspector (about 300 pixels tall at 1280 x 720): its Patrol section is below.
+for _ in 1 2 3 4 5 6; do
+    [ "$(q '.spots["patrol.add_here"][1] < 340')" = true ] && break
+    move_to 1110 250
+    xdotool click --repeat 4 5
+    frames 3
+    counted "scroll the inspector down to the Patrol section (one wheel turn)"
+done
 click $(spot patrol.add_here) "Add patrol point here"
 click $(spot patrol0.add) "+ a point after it"
 click $(spot patrol1.add) "+ a point after that"
