@@ -36,6 +36,10 @@ size_t polygon_point(const Error& error) {
 
 std::array<double, 2> DrawTool::range_along(const DrawPlane& plane) const {
     const auto& last = last_range_[static_cast<size_t>(plane.axis)];
+    if (!plane.grows && reference && (*reference)[1][plane.axis] - (*reference)[0][plane.axis] > 0.0) {
+        const double lo = (*reference)[0][plane.axis];
+        return {lo, next_height_ ? lo + *next_height_ : (*reference)[1][plane.axis]};
+    }
     const double h = next_height_ ? *next_height_ : last ? (*last)[1] - (*last)[0] : grid;
     if (!plane.grows) {
         const double lo = last ? (*last)[0] : 0.0;

@@ -6,8 +6,10 @@
 //
 // The plane a drawing lies on is across a world axis: the top view's is across y, the front view's across z,
 // the side view's across x (the drag gives the two other axes), the perspective view's is the face under the
-// cursor (an axis-aligned one) or the ground. Along that axis the brush takes the range of the last brush
-// drawn (in an axis view) or grows from the plane by the last brush's height; the first is the grid step.
+// cursor (an axis-aligned one) or the ground. Along that axis the brush takes, in an axis view, the range of
+// the selection (`reference`: a window selects a wall, then draws the doorway through it, TrenchBroom's
+// reference bounds) or else of the last brush drawn; in perspective it grows from the plane by the last
+// brush's height; the first is the grid step. A typed height keeps the range's start.
 // Tests: tests/editor/test_geometry_tools.cpp.
 #include "geometry/ray.h"
 #include "model/edit_brushes.h"
@@ -36,6 +38,9 @@ class DrawTool {
     DrawShape shape = DrawShape::box;
     double grid = 1.0; // the document's grid step: the first height and the height's step
     BrushLook look;
+    // The selected brushes' bounds (lo, hi), set by the window before each press: the range along an axis
+    // view's axis; nullopt when nothing is selected.
+    std::optional<std::array<DVec3, 2>> reference;
 
     DrawStage stage() const { return stage_; }
     bool busy() const { return stage_ != DrawStage::idle; }

@@ -86,6 +86,7 @@ void ValidationPanel::draw(const PanelContext& ctx, const Rect& rect) {
         if (issue.fix.available()) {
             ImGui::Indent(40.0f);
             const bool fix = ImGui::SmallButton(issue.fix.label.c_str());
+            ctx.spots.here("fix:" + issue.fix.label);
             ImGui::Unindent(40.0f);
             if (fix) {
                 ctx.report(apply_quick_fix(editor, issue), "quick fix");

@@ -11,6 +11,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
 
 namespace ks::editor::ui {
@@ -160,30 +161,40 @@ std::unique_ptr<InspectorSection> make_face_section() {
 }
 
 void BrushMenu::draw(const PanelContext& ctx) {
-    if (!ImGui::BeginMenu("Brush")) return;
-    ctx.spots.here("menu.brush");
+    const bool open = ImGui::BeginMenu("Brush");
+    ctx.spots.here("menu.brush"); // the menu's title, where a click opens it
+    if (!open) return;
     Editor& editor = ctx.editor;
     const Document& doc = editor.doc();
     if (csg_item(doc, "Subtract (cut the selected from the others)", CsgOp::subtract))
         ctx.report(subtract_selected_brushes(editor), "subtract");
+    ctx.spots.here("brush.subtract");
     const std::string hollow_why = csg_unavailable(doc, CsgOp::hollow);
-    if (ImGui::BeginMenu("Hollow", hollow_why.empty())) {
+    const bool hollow_open = ImGui::BeginMenu("Hollow", hollow_why.empty());
+    ctx.spots.here("brush.hollow");
+    if (hollow_open) {
         ImGui::SetNextItemWidth(100);
-        ImGui::DragFloat("wall thickness", &thickness_, 0.05f, 0.01f, 64.0f, "%.2f");
+        float thickness = thickness_ ? *thickness_ : std::clamp(doc.grid.step, 0.01f, 64.0f);
+        if (ImGui::DragFloat("wall thickness", &thickness, 0.05f, 0.01f, 64.0f, "%.2f"))
+            thickness_ = thickness;
         if (ImGui::Button("Hollow")) {
-            ctx.report(hollow_selected_brushes(editor, thickness_), "hollow");
+            ctx.report(hollow_selected_brushes(editor, thickness), "hollow");
             ImGui::CloseCurrentPopup();
         }
+        ctx.spots.here("brush.hollow_apply");
         ImGui::EndMenu();
     }
     if (!hollow_why.empty() && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip("%s", hollow_why.c_str());
     if (csg_item(doc, "Merge", CsgOp::merge)) ctx.report(merge_selected_brushes(editor), "merge");
+    ctx.spots.here("brush.merge");
     if (csg_item(doc, "Intersect (keep the common part)", CsgOp::intersect))
         ctx.report(intersect_selected_brushes(editor), "intersect");
+    ctx.spots.here("brush.intersect");
     ImGui::Separator();
     if (ImGui::MenuItem("Select faces of selected brushes", nullptr, false, !doc.selection.empty()))
         ctx.report(select_faces_of_selection(editor), "select faces");
+    ctx.spots.here("brush.select_faces");
     if (ImGui::MenuItem("Clear face selection", nullptr, false, !doc.faces.empty()))
         clear_face_selection(editor);
     bool lock = editor.face_session().texture_lock;

@@ -11,19 +11,21 @@
 #include <nlohmann/json.hpp>
 
 #include <memory>
+#include <optional>
 
 namespace ks::editor::ui {
 
 // The Faces section of the inspector's Properties tab (one line in make_inspector_sections()).
 std::unique_ptr<InspectorSection> make_face_section();
 
-// The Brush menu of the menu bar; its hollow thickness is kept between frames.
+// The Brush menu of the menu bar; its hollow thickness is kept between frames, the grid step until the
+// designer sets one (TrenchBroom's hollow takes the grid size: walls that stay on the grid).
 class BrushMenu {
   public:
     void draw(const PanelContext& ctx);
 
   private:
-    float thickness_ = 0.25f;
+    std::optional<float> thickness_;
 };
 
 // The selected faces outlined in the viewport (just off their planes), each with its texture's u axis as a

@@ -1,6 +1,9 @@
 // The geometry tools in the window: geometry_tools_ui.h.
 #include "ui/geometry_tools_ui.h"
 
+#include "model/bounds.h"
+#include "model/edit_selection.h"
+
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -63,6 +66,14 @@ void label(ImDrawList* draw, ImVec2 at, const std::string& text, ImU32 colour) {
     draw->AddRectFilled(ImVec2(at.x - 3, at.y - 2), ImVec2(at.x + size.x + 3, at.y + size.y + 2),
                         IM_COL32(15, 17, 22, 200), 3.0f);
     draw->AddText(at, colour, text.c_str());
+}
+
+// The selected entities' bounds, the range a brush drawn in an axis view takes along the view's axis.
+std::optional<std::array<DVec3, 2>> selection_range(const Editor& editor) {
+    const auto selected = selected_entities(editor);
+    if (selected.empty()) return std::nullopt;
+    const geometry::Aabb box = selection_bounds(selected);
+    return std::array<DVec3, 2>{DVec3(box.min), DVec3(box.max)};
 }
 
 } // namespace
@@ -202,6 +213,7 @@ void GeometryToolsUi::draw_mouse(Editor& editor, EditorLog& log, const ViewCamer
     const auto at = tool_point(editor.doc(), view, mouse, shown, {!axis_view, !axis_view});
     if (!at) return;
     const DrawPlane plane = draw_plane_at(*at, view);
+    draw_.reference = selection_range(editor);
     if (draw_.shape == DrawShape::box) {
         draw_.press(plane, at->point);
     } else if (auto added = draw_.add_point(plane, at->point); !added) {

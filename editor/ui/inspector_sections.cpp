@@ -222,6 +222,7 @@ class PatrolSection final : public InspectorSection {
             ImGui::TextDisabled("No patrol: the robot wanders");
             if (ImGui::Button("Add patrol point here"))
                 ctx.report(patrol_add(editor, id, robot.position), "patrol");
+            ctx.spots.here("patrol.add_here");
             return;
         }
         int mode = patrol.ping_pong() ? 1 : 0;
@@ -268,6 +269,7 @@ class PatrolSection final : public InspectorSection {
             ImGui::PopID();
             return false;
         }
+        ctx.spots.here("patrol" + std::to_string(i) + ".add");
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Add a point after this one");
         ImGui::SameLine();
         if (ImGui::SmallButton("x")) {

@@ -3,6 +3,7 @@
 // gizmo's handles and the 4-up view's panes are on screen, so real-input tests can aim their clicks.
 #include "model/bounds.h"
 #include "ui/level_viewport.h"
+#include "view/tool_pointer.h"
 
 #include <nlohmann/json.hpp>
 
@@ -24,6 +25,21 @@ nlohmann::json entities_on_screen(const Editor& editor, const ViewCamera& view, 
     }
     return screen;
 }
+
+// In an axis view, where the world's origin and unit axes land (window pixels): the projection is affine
+// there, so a script can aim at any world point (scripts/brief_actions.sh); absent in perspective.
+nlohmann::json axes_on_screen(const ViewCamera& view, Vec2 origin) {
+    if (!view_axis(view)) return nullptr;
+    nlohmann::json axes = nlohmann::json::object();
+    const std::pair<const char*, Vec3> points[] = {
+        {"origin", Vec3(0.0f)}, {"x", Vec3(1, 0, 0)}, {"y", Vec3(0, 1, 0)}, {"z", Vec3(0, 0, 1)}};
+    for (const auto& [name, world] : points) {
+        Vec2 p;
+        if (!view.project(world, p)) return nullptr;
+        axes[name] = screen_point(p + origin);
+    }
+    return axes;
+}
 } // namespace
 
 void LevelViewport::status(nlohmann::json& s, bool level_shown) const {
@@ -40,6 +56,7 @@ void LevelViewport::status(nlohmann::json& s, bool level_shown) const {
     s["show_links"] = overlays_.links;
     s["link_arrows"] = logic_overlay_.arrow_count();
     s["screen"] = entities_on_screen(ctx_.editor, view_, origin_);
+    s["axes_on_screen"] = axes_on_screen(view_, origin_);
     if (level_shown) {
         Vec2 p;
         if (view_.project(player_obb(ctx_.editor.level().player_start).center, p))

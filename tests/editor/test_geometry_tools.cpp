@@ -60,6 +60,36 @@ TEST_CASE("draw tool: a box dragged in the top view shows its size live and comm
     CHECK(editor_test::brush_count(ed) == 1);
 }
 
+TEST_CASE("draw tool: in an axis view the selection's range along the view axis wins over the last brush's") {
+    Editor ed;
+    DrawTool tool;
+    tool.press(kGtTopPlane, {0, 0, 0}); // the last brush: z from 0 to 9
+    tool.move({4, 0, 9});
+    REQUIRE(tool.release(ed).ok());
+    // A wall selected (z 3 to 4): the doorway drawn in the front view goes through it, not the last range.
+    tool.reference = std::array{DVec3(-5, 0, 3), DVec3(5, 8, 4)};
+    const DrawPlane front{2, 0.0, std::nullopt};
+    tool.press(front, {0, 0, 0});
+    tool.move({2, 3, 0});
+    CHECK(*tool.bounds() == std::array{DVec3(0, 0, 3), DVec3(2, 3, 4)});
+    tool.set_height(3.0); // a typed depth keeps the start of the range
+    CHECK(*tool.bounds() == std::array{DVec3(0, 0, 3), DVec3(2, 3, 6)});
+    tool.cancel();
+    // A polygon takes it too; a flat selection (no size along the axis) is ignored for the last brush's.
+    REQUIRE(tool.add_point(front, {0, 0, 0}).ok());
+    CHECK(tool.preview().problem.empty());
+    tool.cancel();
+    tool.reference = std::array{DVec3(-5, 0, 2), DVec3(5, 8, 2)};
+    tool.press(front, {0, 0, 0});
+    tool.move({2, 3, 0});
+    CHECK(*tool.bounds() == std::array{DVec3(0, 0, 0), DVec3(2, 3, 9)});
+    tool.cancel();
+    // In perspective (a plane that grows) the reference is not used.
+    tool.press({1, 0.0, 1}, {0, 0, 0});
+    tool.move({2, 0, 2});
+    CHECK((*tool.bounds())[1].y == 1.0);
+}
+
 TEST_CASE(
     "draw tool: a zero-size or one-axis drag, and a box beyond the world, are refused and change nothing") {
     Editor ed;
