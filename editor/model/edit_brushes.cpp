@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <unordered_set>
 
 namespace ks::editor {
@@ -118,6 +119,7 @@ bool apart(const WorldBox& a, const brush::Brush& cutter) {
 struct Replacement {
     const Entity* entity;
     std::vector<brush::Brush> world_pieces;
+    std::vector<bool> ceilings{}; // per piece, when the edit decides (hollow's top); empty: the entity's flag
 };
 
 Result<void> replace_brushes(Editor& editor, const std::string& name,
@@ -135,6 +137,7 @@ Result<void> replace_brushes(Editor& editor, const std::string& name,
             if (!local) return Error(name + ": " + brush_label(*r.entity) + ": " + local.error().message);
             Entity piece = *r.entity;
             piece.as<level::BrushProps>().brush = std::move(*local);
+            if (i < r.ceilings.size()) piece.as<level::BrushProps>().ceiling = r.ceilings[i];
             if (i > 0) {
                 piece.id = next_id++;
                 if (!piece.name.empty()) piece.name += " " + std::to_string(i + 1);
@@ -292,7 +295,18 @@ Result<void> hollow_selected_brushes(Editor& editor, float thickness) {
         if (!walls)
             return Error(std::string(kWhat) + ": " + brush_label(*b.entity) + ": " + walls.error().message,
                          Location{}, "use a thickness below half the brush's smallest size");
-        changed.push_back({b.entity, std::move(*walls)});
+        // The piece wholly within `thickness` of the brush's top is its ceiling (hidden with the editor's
+        // ceilings, no sun shadow), as a designer hollowing a room wants: the top no longer hides the room
+        // in the top view or takes its clicks.
+        double top = -std::numeric_limits<double>::infinity();
+        for (const DVec3& v : b.world.vertices()) top = std::max(top, v.y);
+        std::vector<bool> ceilings;
+        for (const brush::Brush& wall : *walls) {
+            double low = std::numeric_limits<double>::infinity();
+            for (const DVec3& v : wall.vertices()) low = std::min(low, v.y);
+            ceilings.push_back(low >= top - double(thickness) - 1e-6);
+        }
+        changed.push_back({b.entity, std::move(*walls), std::move(ceilings)});
     }
     return replace_brushes(editor, "Hollow brushes", changed, {});
 }

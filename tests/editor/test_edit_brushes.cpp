@@ -119,6 +119,14 @@ TEST_CASE("brushes: hollow, merge and clip; a non-convex merge and an empty clip
     REQUIRE(hollow_selected_brushes(ed, 0.5f).ok());
     CHECK(editor_test::brush_count(ed) == 6);
     CHECK(brush_edit_total_volume(ed) == doctest::Approx(600.0 - 9.0 * 5.0 * 9.0));
+    // The top piece (wholly in the top 0.5) is the room's ceiling; the walls and the floor are not.
+    int ceilings = 0;
+    for (const level::Entity& e : ed.doc().level.entities)
+        if (const auto* b = e.try_as<level::BrushProps>(); b && b->ceiling) {
+            ++ceilings;
+            CHECK(editor_test::world_brush_of(ed, e.id).bounds_min().y == doctest::Approx(5.5));
+        }
+    CHECK(ceilings == 1);
     REQUIRE(ed.undo());
     CHECK(editor_test::brush_count(ed) == 1);
 
