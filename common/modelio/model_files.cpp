@@ -24,6 +24,9 @@ Result<void> check_model_name(std::string_view name) {
     if (path.is_absolute() || name.front() == '/')
         return Error("the model file \"" + std::string(name) + "\" is an absolute path", {},
                      "name it relative to assets/models or your models folder");
+    if (name.find("//") != std::string_view::npos || name.back() == '/')
+        return Error("the model file \"" + std::string(name) + "\" has an empty folder name", {},
+                     "separate folders with one '/'");
     for (const auto& part : path)
         if (part == ".." || part == "." || part.empty())
             return Error("the model file \"" + std::string(name) + "\" has a \"" + part.string() + "\" part",
