@@ -135,7 +135,7 @@ TEST_CASE("model entity: the user's models folder; box and hull collision as bru
     CHECK(picked.half.x == doctest::Approx(2.0f));
     CHECK(picked.centre().y == doctest::Approx(2.0f));
 
-    test::write_file(home.models() / "ball.obj", sphere_obj(48, 96));
+    test::write_file(home.models() / "ball.obj", sphere_obj(24, 48));
     Entity hull = model_entity("ball.obj", "hull");
     auto hull_brush = model_collision(hull);
     REQUIRE_MESSAGE(hull_brush.ok(), hull_brush.error().str());
