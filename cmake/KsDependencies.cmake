@@ -18,13 +18,23 @@ pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
 add_library(ks_stb INTERFACE)
 target_link_libraries(ks_stb INTERFACE PkgConfig::STB)
 
+# assimp from libassimp-dev: the modelio module reads designers' models with it (window-free, so every build
+# needs it), and render loads the project's own models.
+find_package(assimp REQUIRED)
+add_library(ks_assimp INTERFACE)
+if(TARGET assimp::assimp)
+    target_link_libraries(ks_assimp INTERFACE assimp::assimp)
+else()
+    target_link_libraries(ks_assimp INTERFACE ${ASSIMP_LIBRARIES})
+    target_include_directories(ks_assimp SYSTEM INTERFACE ${ASSIMP_INCLUDE_DIRS})
+endif()
+
 if(KS_BUILD_GL)
     set(OpenGL_GL_PREFERENCE GLVND)
     find_package(OpenGL REQUIRED)
     pkg_check_modules(GLFW3 REQUIRED IMPORTED_TARGET glfw3)
     pkg_check_modules(EPOXY REQUIRED IMPORTED_TARGET epoxy)
     pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
-    find_package(assimp REQUIRED)
 
     add_library(ks_gl INTERFACE)
     target_link_libraries(ks_gl INTERFACE PkgConfig::EPOXY PkgConfig::GLFW3 OpenGL::GL)
@@ -33,14 +43,6 @@ if(KS_BUILD_GL)
     add_library(ks_imgui INTERFACE)
     target_include_directories(ks_imgui SYSTEM INTERFACE ${IMGUI_INCLUDE_DIRS})
     target_link_libraries(ks_imgui INTERFACE ${IMGUI_LINK_LIBRARIES} PkgConfig::GLFW3 PkgConfig::EPOXY ${CMAKE_DL_LIBS})
-
-    add_library(ks_assimp INTERFACE)
-    if(TARGET assimp::assimp)
-        target_link_libraries(ks_assimp INTERFACE assimp::assimp)
-    else()
-        target_link_libraries(ks_assimp INTERFACE ${ASSIMP_LIBRARIES})
-        target_include_directories(ks_assimp SYSTEM INTERFACE ${ASSIMP_INCLUDE_DIRS})
-    endif()
 endif()
 
 # Recast/Detour from librecast-dev: Debian ships headers and shared libraries but no CMake or pkg-config

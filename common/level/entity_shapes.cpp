@@ -1,5 +1,7 @@
 #include "level/entity_shapes.h"
 
+#include "level/model_entity.h"
+
 #include "brush/texture_mapping.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -50,6 +52,7 @@ bool keeps_pitch_and_roll(EntityType type) {
     case EntityType::Stair:
     case EntityType::ControlPanel:
     case EntityType::Brush:
+    case EntityType::Model:
         return true;
     default:
         return false;
@@ -95,6 +98,7 @@ std::optional<PlacedShape> static_solid_shape(const Entity& e) {
     case EntityType::Spawner:
     case EntityType::Message:
     case EntityType::Brush: // not a box: world_brush
+    case EntityType::Model: // not a box: model_collision (level/model_entity.h)
     case EntityType::Count:
         break;
     }
@@ -180,6 +184,8 @@ PlacedShape bounding_shape(const Entity& e) {
         return placed(ShapeKind::Box, entity_frame(e), Vec3((b.bounds_min() + b.bounds_max()) * 0.5),
                       Vec3((b.bounds_max() - b.bounds_min()) * 0.5));
     }
+    case EntityType::Model:
+        return model_bounding_shape(e);
     default:
         break;
     }

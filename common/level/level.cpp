@@ -10,7 +10,7 @@ namespace {
 
 constexpr std::array<std::string_view, static_cast<size_t>(EntityType::Count)> kTypeNames = {
     "wall",         "floor",         "stair", "door",    "floor_light", "top_light", "robot", "pickup",
-    "gas_cylinder", "control_panel", "sound", "trigger", "spawner",     "message",   "brush",
+    "gas_cylinder", "control_panel", "sound", "trigger", "spawner",     "message",   "brush", "model",
 };
 
 // Builds the variant alternative whose index is `index` (the EntityType order is the variant order).

@@ -1,5 +1,5 @@
 #pragma once
-// Level format v3: the one data model that the loader reads, the editor edits, and the game spawns from.
+// Level format v4: the one data model that the loader reads, the editor edits, and the game spawns from.
 // Each entity type's properties are defined once, as a struct with a visit() that lists every field with
 // its default, range, unit and tooltip; loading, saving, validation and the editor's inspector all walk
 // that list, so there are no parallel copies to keep in step. See docs/level-format.md.
@@ -17,7 +17,7 @@
 namespace ks::level {
 
 inline constexpr std::string_view kFormatName = "killswitch-level";
-inline constexpr int kFormatVersion = 3;
+inline constexpr int kFormatVersion = 4;
 
 // Metadata a visitor receives with each field. Ranges are inclusive; a field outside its range is an error.
 struct FieldInfo {
@@ -386,10 +386,39 @@ struct BrushProps {
     bool operator==(const BrushProps&) const = default;
 };
 
+// ---- designers' models (docs/models.md) --------------------------------------------------------------
+// A model file (glTF, OBJ, FBX) placed like a brush (world = R * scale * model + position, the model's origin
+// on the entity's position), named relative to the shipped assets/models or the designer's models folder in
+// the user data folder (modelio/model_files.h). Its collision is chosen: none, the box around it, or one
+// convex hull of its vertices (level/model_entity.h). Triangle-mesh collision and several hulls are not
+// offered yet.
+inline constexpr int kMaxModelFileLength = 200; // characters
+
+inline constexpr std::string_view kDefaultModelFile =
+    "control_panel.gltf"; // a shipped model, so a new one shows
+
+struct ModelProps {
+    std::string file{kDefaultModelFile};
+    float scale = 1.0f;
+    Choice collision{"hull", {"none", "box", "hull"}};
+    template <class V>
+    void visit(V& v) {
+        v.field(file, {"file",
+                       "The model file (.glb, .gltf, .obj, .fbx) in assets/models or your models folder, "
+                       "as a relative path with '/'",
+                       1, kMaxModelFileLength});
+        v.field(scale,
+                {"scale", "Multiplies the model's size (one metre in the file is one unit)", 0.001, 1000});
+        v.field(collision, {"collision", "What the player, robots and shots collide with: nothing, the box "
+                                         "around the model, or one convex hull of it"});
+    }
+    bool operator==(const ModelProps&) const = default;
+};
+
 // The variant's order is the EntityType order.
 using Props = std::variant<WallProps, FloorProps, StairProps, DoorProps, FloorLightProps, TopLightProps,
                            RobotProps, PickupProps, GasCylinderProps, ControlPanelProps, SoundProps,
-                           TriggerProps, SpawnerProps, MessageProps, BrushProps>;
+                           TriggerProps, SpawnerProps, MessageProps, BrushProps, ModelProps>;
 
 enum class EntityType : std::uint8_t {
     Wall,
@@ -407,11 +436,12 @@ enum class EntityType : std::uint8_t {
     Spawner,
     Message,
     Brush,
+    Model,
     Count
 };
 
 // "wall", "floor", "stair", "door", "floor_light", "top_light", "robot", "pickup", "gas_cylinder",
-// "control_panel", "sound", "trigger", "spawner", "message", "brush"
+// "control_panel", "sound", "trigger", "spawner", "message", "brush", "model"
 std::string_view type_name(EntityType type);
 bool type_from_name(std::string_view name, EntityType& out);
 const std::array<EntityType, static_cast<size_t>(EntityType::Count)>& all_types();

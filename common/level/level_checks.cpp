@@ -6,9 +6,11 @@
 #include "level/brush_faces.h"
 #include "level/entity_shapes.h"
 #include "level/logic_checks.h"
+#include "level/model_entity.h"
 #include "level/patrol_checks.h"
 #include "level/sound_name.h"
 #include "level/texture_names.h"
+#include "modelio/model_files.h"
 
 #include <algorithm>
 #include <cmath>
@@ -137,6 +139,24 @@ void check_placement(const Vec3& position, const Vec3& rotation, const std::stri
     checker.field(r, {"rotation", "Yaw, pitch, roll", -kAngleLimit, kAngleLimit, "deg"});
 }
 
+// A badly spelt name is an error; a file that is missing or cannot be read, or a collision that cannot be
+// built, is a warning: the level still opens and the game draws a marker in its place (docs/models.md).
+void check_model(const Entity& entity, const ModelProps& model, const std::string& props_path,
+                 DiagnosticSink& sink) {
+    if (model.file.empty()) return; // the field check reports the empty name
+    const std::string subject = entity_subject(entity) + ": ";
+    if (Result<void> name = modelio::check_model_name(model.file); !name) {
+        sink.error(member_path(props_path, "file"), subject + name.error().message, name.error().hint);
+        return;
+    }
+    if (Result<std::shared_ptr<const modelio::ImportedModel>> file = entity_model(entity); !file) {
+        sink.warning(member_path(props_path, "file"), subject + file.error().str());
+        return;
+    }
+    if (Result<std::optional<brush::Brush>> collision = model_collision(entity); !collision)
+        sink.warning(member_path(props_path, "collision"), collision.error().message, collision.error().hint);
+}
+
 } // namespace
 
 void check_entity(const Entity& entity, const std::string& path, DiagnosticSink& sink) {
@@ -161,6 +181,7 @@ void check_entity(const Entity& entity, const std::string& path, DiagnosticSink&
             sink.error(member_path(path, "position"), entity_subject(entity) + ": " + placed.error().message,
                        placed.error().hint);
     }
+    if (const auto* model = entity.try_as<ModelProps>()) check_model(entity, *model, props_path, sink);
     if (spawner && spawner->robot.dummy)
         sink.error(member_path(props_path, "dummy"),
                    entity_subject(entity) + ": a spawner cannot make animation dummies",

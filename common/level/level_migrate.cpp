@@ -62,6 +62,9 @@ void migrate_1_to_2(Json& document) {
 // may hold, and a version-2 file is saved as version 3.
 void migrate_2_to_3(Json&) {}
 
+// Version 4 added the model entity; like 2 -> 3, a version-3 file reads unchanged.
+void migrate_3_to_4(Json&) {}
+
 } // namespace
 
 const std::vector<Migration>& migrations() {
@@ -72,6 +75,7 @@ const std::vector<Migration>& migrations() {
          "the control panel's win became the objective \"shutdown\", completed by each panel's on_use link",
          &migrate_1_to_2},
         {2, "the brush entity type was added (nothing in a version-2 level changes)", &migrate_2_to_3, false},
+        {3, "the model entity type was added (nothing in a version-3 level changes)", &migrate_3_to_4, false},
     };
     return table;
 }

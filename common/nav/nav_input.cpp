@@ -1,6 +1,7 @@
 #include "nav/nav_input.h"
 
 #include "level/entity_shapes.h"
+#include "level/model_entity.h"
 
 #include <Recast.h>
 
@@ -213,7 +214,8 @@ int tile_border_cells(const NavSettings& settings) {
 namespace {
 bool walked_on(const level::Entity& e) {
     if (const auto* floor = e.try_as<level::FloorProps>()) return !floor->ceiling;
-    return e.type() == level::EntityType::Stair || e.type() == level::EntityType::Brush;
+    return e.type() == level::EntityType::Stair || e.type() == level::EntityType::Brush ||
+           e.type() == level::EntityType::Model;
 }
 
 Error absurd(const level::Level& level, const level::Entity& e) {
@@ -222,11 +224,18 @@ Error absurd(const level::Level& level, const level::Entity& e) {
 }
 
 // Every solid the mesh is built from, through this one function: the level's boxes, wedges and cylinders
-// (static_solid_shape; obstacles drawn in by half a cell), a brush as its world brush. Brushes are not drawn
-// in: like floors and stairs they are walked on, and drawing in would open seams where they meet; a brush
-// wall grows by up to a cell instead, erring on the side of blocking. nullopt: no solid.
+// (static_solid_shape; obstacles drawn in by half a cell), a brush as its world brush, a model as its
+// collision brush (level::model_collision). Brushes are not drawn in: like floors and stairs they are walked
+// on, and drawing in would open seams where they meet; a brush wall grows by up to a cell instead, erring on
+// the side of blocking. nullopt: no solid.
 Result<std::optional<ConvexSolid>> entity_solid(const level::Level& level, const level::Entity& e,
                                                 const NavSettings& settings) {
+    if (e.type() == level::EntityType::Model) { // its collision brush, walked on like a brush; none if unread
+        if (!sane(e.position) || !sane(e.rotation)) return absurd(level, e);
+        Result<std::optional<brush::Brush>> collision = level::model_collision(e);
+        if (!collision || !collision->has_value()) return std::optional<ConvexSolid>();
+        return std::optional<ConvexSolid>(brush_solid(**collision));
+    }
     if (e.type() == level::EntityType::Brush) {
         if (!sane(e.position) || !sane(e.rotation)) return absurd(level, e);
         Result<brush::Brush> world = level::world_brush(e);

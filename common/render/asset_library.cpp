@@ -1,6 +1,8 @@
 #include "render/asset_library.h"
 
 #include "core/log.h"
+#include "modelio/model_files.h"
+#include "render/imported_model.h"
 
 namespace ks::render {
 
@@ -15,6 +17,23 @@ const Model& AssetLibrary::model(const std::string& name_or_path) {
     if (!is_path) path = root_ / "models" / (name_or_path + ".gltf");
     auto model = load_model(path, textures_, next_material_id_);
     return *models_.emplace(name_or_path, std::move(model)).first->second;
+}
+
+const Model& AssetLibrary::level_model(const std::string& file) {
+    Result<std::shared_ptr<const modelio::ImportedModel>> imported =
+        modelio::check_model_name(file)
+            ? modelio::import_cached(modelio::resolve_model_file(file))
+            : Result<std::shared_ptr<const modelio::ImportedModel>>(modelio::check_model_name(file).error());
+    LevelModel& slot = level_models_[file];
+    if (imported) {
+        if (slot.model && slot.source == *imported) return *slot.model;
+        slot = {*imported, {}, model_from_import(**imported, textures_, next_material_id_)};
+        return *slot.model;
+    }
+    if (slot.model && !slot.source && slot.error == imported.error().str()) return *slot.model;
+    log::warn(imported.error().str(), "; drawing a marker cube in its place");
+    slot = {nullptr, imported.error().str(), placeholder_model(file, textures_, next_material_id_)};
+    return *slot.model;
 }
 
 const Material& AssetLibrary::surface(const std::string& name) {

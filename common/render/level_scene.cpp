@@ -2,6 +2,7 @@
 
 #include "core/log.h"
 #include "level/entity_shapes.h"
+#include "level/model_entity.h"
 #include "render/brush_mesh.h"
 #include "render/scene_renderer.h"
 
@@ -250,6 +251,10 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
                 make_prop(e, &assets.model("control_panel"), level::control_panel_model_matrix(e)));
             break;
         }
+        case EntityType::Model: // a designer's model; the marker cube when its file cannot be read
+            scene->props_.push_back(
+                make_prop(e, &assets.level_model(e.as<level::ModelProps>().file), level::model_matrix(e)));
+            break;
         case EntityType::Sound:   // heard, not seen: the editor draws its own marker
         case EntityType::Trigger: // the logic entities are invisible in the game
         case EntityType::Spawner:

@@ -71,29 +71,6 @@ Mat4 to_mat4(const aiMatrix4x4& m) {
     return r;
 }
 
-std::unique_ptr<Model> placeholder_model(const std::filesystem::path& path, TextureCache& textures,
-                                         int& next_id) {
-    auto model = std::make_unique<Model>();
-    model->path = path.string();
-    model->placeholder = true;
-    Material mat;
-    mat.name = "placeholder";
-    mat.base_map = textures.placeholder().id;
-    mat.roughness = 0.8f;
-    mat.placeholder = true;
-    mat.id = next_id++;
-    model->materials.push_back(mat);
-    MeshData cube = unit_cube();
-    for (auto& v : cube.vertices) v.position.y += 0.5f; // origin at the bottom centre like every model
-    model->meshes.push_back({std::make_unique<GpuMesh>(cube), 0});
-    ModelNode root;
-    root.name = path.stem().string();
-    root.meshes = {0};
-    model->nodes.push_back(root);
-    model->bounds = cube.bounds();
-    return model;
-}
-
 Material convert_material(const aiMaterial* src, const std::filesystem::path& dir, TextureCache& textures) {
     Material mat;
     aiString name;
@@ -130,6 +107,29 @@ Material convert_material(const aiMaterial* src, const std::filesystem::path& di
     return mat;
 }
 } // namespace
+
+std::unique_ptr<Model> placeholder_model(const std::filesystem::path& path, TextureCache& textures,
+                                         int& next_id) {
+    auto model = std::make_unique<Model>();
+    model->path = path.string();
+    model->placeholder = true;
+    Material mat;
+    mat.name = "placeholder";
+    mat.base_map = textures.placeholder().id;
+    mat.roughness = 0.8f;
+    mat.placeholder = true;
+    mat.id = next_id++;
+    model->materials.push_back(mat);
+    MeshData cube = unit_cube();
+    for (auto& v : cube.vertices) v.position.y += 0.5f; // origin at the bottom centre like every model
+    model->meshes.push_back({std::make_unique<GpuMesh>(cube), 0});
+    ModelNode root;
+    root.name = path.stem().string();
+    root.meshes = {0};
+    model->nodes.push_back(root);
+    model->bounds = cube.bounds();
+    return model;
+}
 
 std::unique_ptr<Model> load_model(const std::filesystem::path& path, TextureCache& textures,
                                   int& next_material_id) {

@@ -56,6 +56,10 @@ class Model {
               float emissive_scale = 1.0f, bool casts_shadow = true) const;
 };
 
+// The magenta-checker cube (side 1, origin at its bottom centre) drawn for `path` when it cannot load.
+std::unique_ptr<Model> placeholder_model(const std::filesystem::path& path, TextureCache& textures,
+                                         int& next_material_id);
+
 // Loads `path`; never fails (placeholder on error). Material ids are drawn from `next_material_id`.
 std::unique_ptr<Model> load_model(const std::filesystem::path& path, TextureCache& textures,
                                   int& next_material_id);

@@ -26,6 +26,7 @@ bool shapes_the_mesh(EntityType t) {
     case EntityType::ControlPanel:
     case EntityType::Door:
     case EntityType::Brush:
+    case EntityType::Model: // its collision (none: no solid in the mesh)
         return true;
     default:
         return false; // robots and pickups move or vanish, lights hang out of the way

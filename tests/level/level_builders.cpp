@@ -58,7 +58,10 @@ class RandomFiller {
     void field(bool& v, const FieldInfo&) { v = rng_.chance(0.5f); }
     void field(std::string& v, const FieldInfo& info) {
         static const char* const kTextures[] = {"concrete", "wood", "tiles", "ceiling", "metal"};
-        v = std::string_view(info.name) == "texture" ? kTextures[rng_.below(5)] : random_name(rng_);
+        static const char* const kModels[] = {"door.gltf", "robot.gltf", "pickup_ammo.gltf"};
+        v = std::string_view(info.name) == "texture" ? kTextures[rng_.below(5)]
+            : std::string_view(info.name) == "file"  ? kModels[rng_.below(3)] // a shipped model
+                                                     : random_name(rng_);
         if (v.empty() && info.min >= 1) v = "text"; // a message needs some
     }
     void field(Vec2& v, const FieldInfo& info) {
@@ -210,6 +213,10 @@ Level level_with_every_type() {
         level.add(EntityType::Brush, {-30, 0, 40}, "Ramp").as<BrushProps>().brush =
             brush::Brush::from_faces(std::move(faces)).value();
     }
+    auto& model = level.add(EntityType::Model, {12, 0, -30}, "Console").as<ModelProps>();
+    model.file = "floor_light.gltf";
+    model.scale = 1.5f;
+    model.collision.value = "box";
     int yaw = -144;
     for (Entity& e : level.entities) e.rotation = {static_cast<float>(yaw += 37), 0.5f, -1.25f};
 

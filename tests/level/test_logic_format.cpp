@@ -97,7 +97,7 @@ TEST_CASE("a level without logic saves no logic keys") {
     const std::string saved = save_level_string(level);
     CHECK_FALSE(ks::test::contains_text(saved, "objectives"));
     CHECK_FALSE(ks::test::contains_text(saved, "links"));
-    CHECK(ks::test::contains_text(saved, "\"version\": 3,"));
+    CHECK(ks::test::contains_text(saved, "\"version\": 4,"));
 }
 
 TEST_CASE(

@@ -34,14 +34,14 @@ TEST_CASE("a version 0 file loads through both migrations and saves as the curre
     CHECK(level->entities[1].rotation == ks::Vec3(-90, 0, 0));
     CHECK(level->entities[1].as<RobotProps>().health == 50.0f);
     const std::string saved = save_level_string(*level);
-    CHECK(saved.find("\"version\": 3,") != std::string::npos);
+    CHECK(saved.find("\"version\": 4,") != std::string::npos);
     CHECK(saved.find("\"objects\"") == std::string::npos);
     LoadReport again;
     REQUIRE(load_level_string(saved, "upgraded.json", &again).ok());
     CHECK(again.diagnostics.empty());
 }
 
-TEST_CASE("a version 2 file loads unchanged and without a warning, and saves as version 3") {
+TEST_CASE("a version 2 file loads unchanged and without a warning, and saves as the current version") {
     const auto path = ks::test::data_dir() / "levels" / "good" / "version2_migration.json";
     LoadReport report;
     auto level = load_level_file(path, &report);
@@ -54,7 +54,7 @@ TEST_CASE("a version 2 file loads unchanged and without a warning, and saves as 
     CHECK(migrate(doc, 2).empty());
     CHECK(doc == before); // the step leaves the document as it was
     const std::string saved = save_level_string(*level);
-    CHECK(saved.find("\"version\": 3,") != std::string::npos);
+    CHECK(saved.find("\"version\": 4,") != std::string::npos);
     LoadReport again;
     auto reloaded = load_level_string(saved, "v3.json", &again);
     REQUIRE(reloaded.ok());

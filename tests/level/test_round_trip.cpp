@@ -61,7 +61,7 @@ TEST_CASE("the saved text has the documented layout") {
     REQUIRE(!text.empty());
     CHECK(text.back() == '\n');
     CHECK(text.find("\n\n") == std::string::npos);
-    CHECK(text.rfind("{\n  \"format\": \"killswitch-level\",\n  \"version\": 3,\n  \"name\": ", 0) == 0);
+    CHECK(text.rfind("{\n  \"format\": \"killswitch-level\",\n  \"version\": 4,\n  \"name\": ", 0) == 0);
     // Key order: the format's, not alphabetical.
     const char* const order[] = {"\"format\"",     "\"version\"",      "\"name\"",
                                  "\"settings\"",   "\"player_start\"", "\"next_id\"",

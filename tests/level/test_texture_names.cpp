@@ -5,6 +5,7 @@
 #include "core/paths.h"
 #include "level/entity_shapes.h"
 #include "level/level_io.h"
+#include "level/model_entity.h"
 #include "level/texture_names.h"
 #include "test_support.h"
 
@@ -136,6 +137,16 @@ TEST_CASE("the types that keep pitch and roll are those whose game body turns wi
             const auto yawed_brush = world_brush(e);
             REQUIRE((tilted_brush.ok() && yawed_brush.ok()));
             body_turns = glm::length(tilted_brush->vertex_centre() - yawed_brush->vertex_centre()) > 1e-3;
+        }
+        if (type == EntityType::Model) { // its collision brush (level/model_entity.h), the default box here
+            e.as<ModelProps>().collision.value = "box";
+            e.rotation = {30.0f, 20.0f, 10.0f};
+            const auto tilted_model = model_collision(e);
+            e.rotation = {30.0f, 0.0f, 0.0f};
+            const auto yawed_model = model_collision(e);
+            REQUIRE((tilted_model.ok() && yawed_model.ok() && *tilted_model && *yawed_model));
+            body_turns =
+                glm::length((**tilted_model).vertex_centre() - (**yawed_model).vertex_centre()) > 1e-3;
         }
         CAPTURE(type_name(type));
         CHECK(keeps_pitch_and_roll(type) == body_turns);

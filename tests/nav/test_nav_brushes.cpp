@@ -1,5 +1,6 @@
 // Brush entities in the navigation mesh: their faces are Recast input, walkable where their slope allows
 // (a ramp, a platform's top) and never on their undersides; a brush wall blocks like a wall entity.
+// Model entities come in through the same convex solids (their collision brush).
 #include "brush/brush_build.h"
 #include "level_brushes.h"
 #include "nav/nav_levels.h"
@@ -86,4 +87,22 @@ TEST_CASE("a brush's underside is never walked on; its top and the floor under i
     const auto floor = mesh->nearest_point(Vec3(0, 0.5f, 0), Vec3(1, 1, 1));
     REQUIRE(floor.has_value());
     CHECK(floor->y == doctest::Approx(0.0f).epsilon(0.05));
+}
+
+TEST_CASE(
+    "a model entity's collision is in the mesh: its box and its hull block, none lets the path through") {
+    auto room = [](const char* collision) {
+        level::Level lv;
+        lv.name = "model wall";
+        add_floor(lv, Vec3(0), Vec2(30, 30));
+        // The shipped door model (about 11 wide, 0.7 deep) scaled 4: a wall across the room at z = 0.
+        auto& model = lv.add(level::EntityType::Model, Vec3(0), "Wall model").as<level::ModelProps>();
+        model.file = "door.gltf";
+        model.scale = 4.0f;
+        model.collision.value = collision;
+        return lv;
+    };
+    CHECK_FALSE(build_robot_mesh(room("box"))->reachable(Vec3(0, 0, 8), Vec3(0, 0, -8)));
+    CHECK_FALSE(build_robot_mesh(room("hull"))->reachable(Vec3(0, 0, 8), Vec3(0, 0, -8)));
+    CHECK(build_robot_mesh(room("none"))->reachable(Vec3(0, 0, 8), Vec3(0, 0, -8)));
 }

@@ -1,0 +1,38 @@
+#pragma once
+// A model entity's file, placement and collision (docs/models.md): the one place that turns its properties
+// into the imported mesh, the matrix that draws it, the brush the game and the navigation mesh collide with
+// and the box the editor picks. Files are read through modelio's cache, so every user shares one import per
+// file.
+#include "brush/brush.h"
+#include "level/entity_shapes.h"
+#include "level/level.h"
+#include "modelio/model_import.h"
+
+#include <memory>
+#include <optional>
+
+namespace ks::level {
+
+// The most corners a model's collision hull keeps: more cost every contact test and say little about a prop's
+// shape. A hull with more is rebuilt from the vertices snapped to a coarser grid (model_collision).
+inline constexpr std::size_t kMaxModelHullFaces = 256;
+
+// The entity's model as read from its file (resolved by modelio::resolve_model_file). An Error for other
+// types, a badly spelt name, and a file that is missing or cannot be read (naming the file).
+Result<std::shared_ptr<const modelio::ImportedModel>> entity_model(const Entity& entity);
+
+// Model space to world: the entity's frame (full yaw, pitch, roll) times its scale.
+Mat4 model_matrix(const Entity& entity);
+
+// The collision the entity chose, as a convex brush in the world: "box" the box around the scaled model,
+// "hull" the convex hull of its scaled vertices (Qhull through brush::make_from_points; when it has more than
+// kMaxModelHullFaces faces the vertices are snapped to a grid of 64, 32, 16 or 8 cells along the model's
+// largest side, and the first hull under the cap is kept). nullopt for "none". An Error when the model cannot
+// be read or the hull cannot be built (flat models: choose "box" or "none").
+Result<std::optional<brush::Brush>> model_collision(const Entity& entity);
+
+// The box around the scaled model in the entity's frame; a unit cube standing on the position (the marker the
+// renderer draws) when the file cannot be read.
+PlacedShape model_bounding_shape(const Entity& entity);
+
+} // namespace ks::level

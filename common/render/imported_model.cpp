@@ -1,0 +1,92 @@
+#include "render/imported_model.h"
+
+#include "render/texture_cache.h"
+
+namespace ks::render {
+
+namespace {
+
+Material convert(const modelio::ImportedMaterial& src, const std::filesystem::path& dir,
+                 TextureCache& textures) {
+    Material mat;
+    mat.name = src.name;
+    mat.base_factor = src.base_color;
+    mat.emissive_factor = src.emissive;
+    mat.metallic = src.metallic;
+    mat.roughness = src.roughness;
+    auto map = [&](const std::string& file, ColorSpace space) -> unsigned {
+        if (file.empty() || file[0] == '*') return 0;
+        const Texture& t = textures.get(dir / file, space);
+        if (t.placeholder) mat.placeholder = true;
+        return t.id;
+    };
+    mat.base_map = map(src.textures.base_color, ColorSpace::Srgb);
+    mat.normal_map = map(src.textures.normal, ColorSpace::Linear);
+    mat.orm_map = map(src.textures.metal_rough, ColorSpace::Linear);
+    mat.emissive_map = map(src.textures.emissive, ColorSpace::Srgb);
+    return mat;
+}
+
+// Per-vertex tangents from each triangle's UV directions (normal maps need them), made orthogonal to the
+// normal.
+void add_tangents(MeshData& data) {
+    std::vector<Vec3> tangent(data.vertices.size(), Vec3(0.0f)), bitangent(data.vertices.size(), Vec3(0.0f));
+    for (size_t i = 0; i + 2 < data.indices.size(); i += 3) {
+        const Vertex &a = data.vertices[data.indices[i]], &b = data.vertices[data.indices[i + 1]],
+                     &c = data.vertices[data.indices[i + 2]];
+        const Vec3 e1 = b.position - a.position, e2 = c.position - a.position;
+        const Vec2 d1 = b.uv - a.uv, d2 = c.uv - a.uv;
+        const float det = d1.x * d2.y - d2.x * d1.y;
+        if (std::abs(det) < 1e-12f) continue;
+        const Vec3 t = (e1 * d2.y - e2 * d1.y) / det, bt = (e2 * d1.x - e1 * d2.x) / det;
+        for (size_t k = 0; k < 3; ++k) {
+            tangent[data.indices[i + k]] += t;
+            bitangent[data.indices[i + k]] += bt;
+        }
+    }
+    for (size_t v = 0; v < data.vertices.size(); ++v) {
+        Vertex& out = data.vertices[v];
+        Vec3 t = tangent[v] - out.normal * glm::dot(out.normal, tangent[v]);
+        if (glm::length(t) < 1e-12f)
+            t = std::abs(out.normal.x) < 0.9f ? glm::cross(out.normal, Vec3(1, 0, 0))
+                                              : glm::cross(out.normal, Vec3(0, 1, 0));
+        t = glm::normalize(t);
+        out.tangent = Vec4(t, glm::dot(glm::cross(out.normal, t), bitangent[v]) < 0.0f ? -1.0f : 1.0f);
+    }
+}
+
+} // namespace
+
+std::unique_ptr<Model> model_from_import(const modelio::ImportedModel& imported, TextureCache& textures,
+                                         int& next_material_id) {
+    auto model = std::make_unique<Model>();
+    model->path = imported.path.string();
+    const auto dir = imported.path.parent_path();
+    for (const modelio::ImportedMaterial& m : imported.materials) {
+        Material mat = convert(m, dir, textures);
+        mat.id = next_material_id++;
+        if (mat.placeholder) model->placeholder = true;
+        model->materials.push_back(std::move(mat));
+    }
+    ModelNode root;
+    root.name = imported.path.stem().string();
+    for (const modelio::ImportedMesh& mesh : imported.meshes) {
+        MeshData data;
+        data.vertices.resize(mesh.positions.size());
+        for (size_t v = 0; v < mesh.positions.size(); ++v)
+            data.vertices[v] = Vertex{mesh.positions[v], mesh.normals[v], mesh.uvs[v], Vec4(1, 0, 0, 1)};
+        data.indices = mesh.indices;
+        add_tangents(data);
+        root.meshes.push_back(static_cast<int>(model->meshes.size()));
+        model->meshes.push_back({std::make_unique<GpuMesh>(data), mesh.material});
+    }
+    model->nodes.push_back(std::move(root));
+    model->bounds = imported.bounds;
+    return model;
+}
+
+std::unique_ptr<Model> marker_model(const std::string& name, TextureCache& textures, int& next_material_id) {
+    return placeholder_model(name, textures, next_material_id);
+}
+
+} // namespace ks::render

@@ -1,0 +1,21 @@
+#pragma once
+// A designer's model (modelio::ImportedModel, node transforms already baked) as a drawable Model: one root
+// node holding every mesh, its materials' factors and texture files (relative to the model's folder) through
+// the texture cache. Textures embedded in a .glb ("*0") are not drawn yet: such a material shows its factors.
+#include "modelio/model_import.h"
+#include "render/model.h"
+
+#include <memory>
+
+namespace ks::render {
+
+class TextureCache;
+
+std::unique_ptr<Model> model_from_import(const modelio::ImportedModel& imported, TextureCache& textures,
+                                         int& next_material_id);
+
+// The drawn marker of a model whose file cannot be read: the magenta-checker cube standing on its origin
+// (side 1, as level::model_bounding_shape's box).
+std::unique_ptr<Model> marker_model(const std::string& name, TextureCache& textures, int& next_material_id);
+
+} // namespace ks::render

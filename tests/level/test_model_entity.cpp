@@ -1,0 +1,155 @@
+// The model entity: its fields in the file, its validation (a badly spelt file is an error, a missing or
+// broken one a warning so the level still opens), the designer's models folder, and its collision as a brush.
+#include "brush/brush.h"
+#include "level/level_io.h"
+#include "level/model_entity.h"
+#include "modelio/model_files.h"
+#include "test_support.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+using namespace ks;
+using namespace ks::level;
+
+namespace {
+
+// XDG_DATA_HOME pointed at a scratch folder for the test's life, so the user's models folder is ours.
+class ScratchDataHome {
+  public:
+    ScratchDataHome() {
+        if (const char* old = std::getenv("XDG_DATA_HOME")) old_ = old, had_ = true;
+        setenv("XDG_DATA_HOME", dir_.path().c_str(), 1);
+        std::filesystem::create_directories(models());
+    }
+    ~ScratchDataHome() { had_ ? setenv("XDG_DATA_HOME", old_.c_str(), 1) : unsetenv("XDG_DATA_HOME"); }
+    std::filesystem::path models() const { return dir_ / "killswitch/models"; }
+
+  private:
+    test::ScratchDir dir_;
+    std::string old_;
+    bool had_ = false;
+};
+
+// A UV sphere of `rings` x `segments` quads as OBJ text, radius 1 centred on (0, 1, 0).
+std::string sphere_obj(int rings, int segments) {
+    std::ostringstream obj;
+    for (int r = 0; r <= rings; ++r)
+        for (int s = 0; s < segments; ++s) {
+            const double t = kPi * r / rings, p = 2 * kPi * s / segments;
+            obj << "v " << std::sin(t) * std::cos(p) << " " << 1 + std::cos(t) << " "
+                << std::sin(t) * std::sin(p) << "\n";
+        }
+    for (int r = 0; r < rings; ++r)
+        for (int s = 0; s < segments; ++s) {
+            const int a = r * segments + s + 1, b = r * segments + (s + 1) % segments + 1;
+            obj << "f " << a << " " << a + segments << " " << b + segments << " " << b << "\n";
+        }
+    return obj.str();
+}
+
+const char* const kCubeObj =
+    "v -1 0 -1\nv 1 0 -1\nv 1 2 -1\nv -1 2 -1\nv -1 0 1\nv 1 0 1\nv 1 2 1\nv -1 2 1\n"
+    "f 1 4 3 2\nf 5 6 7 8\nf 1 5 8 4\nf 2 3 7 6\nf 4 8 7 3\nf 1 2 6 5\n";
+
+Entity model_entity(const std::string& file, const std::string& collision, float scale = 1.0f) {
+    Level level;
+    Entity& e = level.add(EntityType::Model, {10, 0, 5}, "Prop");
+    e.as<ModelProps>() = {file, scale, {collision, {"none", "box", "hull"}}};
+    return e;
+}
+
+} // namespace
+
+TEST_CASE("model entity: saved and loaded with its fields; a version-3 file loads silently") {
+    Level level;
+    auto& props = level.add(EntityType::Model, {1, 2, 3}, "Crate").as<ModelProps>();
+    props.file = "door.gltf";
+    props.scale = 2.5f;
+    props.collision.value = "box";
+    LoadReport report;
+    auto back = load_level_string(save_level_string(level), "model.json", &report);
+    REQUIRE_MESSAGE(back.ok(), report.str());
+    CHECK(report.diagnostics.empty());
+    CHECK(*back == level);
+
+    LoadReport v3;
+    CHECK(load_level_file(test::data_dir() / "levels/good/version3_migration.json", &v3).ok());
+    CHECK_MESSAGE(v3.diagnostics.empty(), v3.str());
+}
+
+TEST_CASE(
+    "model entity: a badly spelt file is an error at props.file; a missing file a warning, the level opens") {
+    auto load = [](const std::string& file, const std::string& extra = "") {
+        LoadReport report;
+        const std::string text = R"({"format": "killswitch-level", "version": 4, "entities": [
+  {"id": 1, "type": "model", "name": "Crate", "position": [0, 0, 0], "props": {"file": ")" +
+                                 file + "\"" + extra + "}}]}";
+        auto level = load_level_string(text, "models.json", &report);
+        return std::make_pair(level.ok(), report.str());
+    };
+    for (const char* bad : {"../secret.glb", "/abs/crate.glb", "crate.blend", "a//b.glb", "a\\\\b.glb"}) {
+        auto [loaded, text] = load(bad);
+        INFO(bad, " ", text);
+        CHECK_FALSE(loaded);
+        CHECK(test::contains_text(text, "entities[0].props.file"));
+        CHECK(test::contains_text(text, "model 1"));
+    }
+    auto [loaded, text] = load("nowhere/crate.glb");
+    CHECK(loaded);
+    CHECK(test::contains_text(text, "warning"));
+    CHECK(test::contains_text(text, "no such model file"));
+    CHECK(test::contains_text(text, "nowhere/crate.glb"));
+    auto [scaled, scale_text] = load("door.gltf", R"(, "scale": 0)");
+    CHECK_FALSE(scaled);
+    CHECK(test::contains_text(scale_text, "entities[0].props.scale"));
+    auto [chosen, choice_text] = load("door.gltf", R"(, "collision": "mesh")");
+    CHECK_FALSE(chosen);
+    CHECK(test::contains_text(choice_text, "entities[0].props.collision"));
+}
+
+TEST_CASE("model entity: the user's models folder; box and hull collision as brushes, turned and scaled") {
+    ScratchDataHome home;
+    test::write_file(home.models() / "cube.obj", kCubeObj);
+    CHECK(modelio::resolve_model_file("cube.obj") == home.models() / "cube.obj");
+    CHECK(modelio::resolve_model_file("door.gltf").parent_path().filename() ==
+          "models"); // the shipped one first
+
+    Entity none = model_entity("cube.obj", "none");
+    auto no_body = model_collision(none);
+    REQUIRE(no_body.ok());
+    CHECK_FALSE(no_body->has_value());
+
+    Entity box = model_entity("cube.obj", "box", 2.0f);
+    box.rotation = {90, 0, 0};
+    auto box_brush = model_collision(box);
+    REQUIRE_MESSAGE(box_brush.ok(), box_brush.error().str());
+    REQUIRE(box_brush->has_value());
+    CHECK((**box_brush).bounds_min().x == doctest::Approx(8.0));
+    CHECK((**box_brush).bounds_max().y == doctest::Approx(4.0));
+    CHECK((**box_brush).bounds_max().z == doctest::Approx(7.0));
+    const PlacedShape picked = bounding_shape(box);
+    CHECK(picked.half.x == doctest::Approx(2.0f));
+    CHECK(picked.centre().y == doctest::Approx(2.0f));
+
+    test::write_file(home.models() / "ball.obj", sphere_obj(24, 48));
+    Entity hull = model_entity("ball.obj", "hull");
+    auto hull_brush = model_collision(hull);
+    REQUIRE_MESSAGE(hull_brush.ok(), hull_brush.error().str());
+    REQUIRE(hull_brush->has_value());
+    const brush::Brush& b = **hull_brush;
+    CHECK(b.faces().size() <= kMaxModelHullFaces);
+    CHECK(b.bounds_max().y == doctest::Approx(2.0).epsilon(0.05));
+    CHECK(b.bounds_min().x == doctest::Approx(9.0).epsilon(0.05));
+    for (const DVec3& v : b.vertices()) // every corner near the sphere: the hull hugs it
+        CHECK(std::abs(glm::length(v - DVec3(10, 1, 5)) - 1.0) < 0.11); // within the snapping grid's step
+
+    test::write_file(home.models() / "flat.obj", "v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 3\n");
+    auto flat = model_collision(model_entity("flat.obj", "hull"));
+    REQUIRE_FALSE(flat.ok());
+    CHECK(test::contains_text(flat.error().str(), "choose collision"));
+    CHECK(model_collision(model_entity("flat.obj", "box")).ok() == false); // a box with no height
+}
