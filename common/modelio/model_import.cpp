@@ -100,8 +100,10 @@ Result<ImportedMesh> bake_mesh(const aiMesh& src, const Mat4& to_level, bool mir
         n = normal_matrix * n;
         const float len = glm::length(n);
         mesh.normals.push_back(std::isfinite(len) && len > 1e-12f ? n / len : Vec3(0, 1, 0));
+        // assimp hands v over bottom-up (its glTF reader flips glTF's, OBJ's and FBX's are bottom-up);
+        // turned back to the project's top-down convention (docs/assets.md), as render/model.cpp does.
         mesh.uvs.push_back(src.mTextureCoords[0]
-                               ? Vec2(src.mTextureCoords[0][v].x, src.mTextureCoords[0][v].y)
+                               ? Vec2(src.mTextureCoords[0][v].x, 1.0f - src.mTextureCoords[0][v].y)
                                : Vec2(0.0f));
     }
     mesh.indices.reserve(static_cast<std::size_t>(src.mNumFaces) * 3);

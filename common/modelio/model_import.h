@@ -36,7 +36,7 @@ struct ImportedMaterial {
 struct ImportedMesh {
     std::vector<Vec3> positions; // level units, +Y up
     std::vector<Vec3> normals;   // unit length, one per position
-    std::vector<Vec2> uvs;       // one per position (0 where the file has none)
+    std::vector<Vec2> uvs;       // one per position (0 where the file has none); v = 0 is the image's top
     std::vector<std::uint32_t> indices;
     int material = 0; // index into ImportedModel::materials (there is always at least one)
 };

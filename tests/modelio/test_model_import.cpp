@@ -207,3 +207,26 @@ TEST_CASE("modelio: truncated and corrupted files of every format never crash") 
     }
     CHECK(refused > runs / 2);
 }
+
+TEST_CASE("modelio: texture coordinates come out top-down (v = 0 at the image's top), whatever assimp does") {
+    // OBJ's vt is bottom-up; a corner at the image's bottom-left (0, 0) is (0, 1) in the project's
+    // convention, the convention the renderer's textures are uploaded in (docs/assets.md).
+    test::ScratchDir dir;
+    const auto file = test::write_file(
+        dir / "tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 0.75\nf 1/1 2/2 3/3\n");
+    Result<ImportedModel> m = import_model(file);
+    REQUIRE_MESSAGE(m.ok(), m.error().str());
+    REQUIRE(m->meshes.size() == 1);
+    const ImportedMesh& mesh = m->meshes[0];
+    REQUIRE(mesh.positions.size() == 3);
+    for (size_t i = 0; i < 3; ++i) {
+        CAPTURE(i);
+        const Vec3 p = mesh.positions[i];
+        const Vec2 uv = mesh.uvs[i];
+        if (p.y > 0.5f) // the top corner: vt 0 0.75
+            CHECK(uv.y == doctest::Approx(0.25f));
+        else
+            CHECK(uv.y == doctest::Approx(1.0f));
+        CHECK(uv.x == doctest::Approx(p.x));
+    }
+}
