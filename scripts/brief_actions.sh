@@ -221,12 +221,8 @@ wait_for "the room hollowed" '.entities == 6'
 key Escape "leave the draw tool"
 shot room
 
-# --- 2. the ceiling out of the top view's way ------------------------------------------------------------
-step "ceiling (mark it)"
-click $(at -6 10 -6) "select the ceiling (the top view's nearest brush; off the gizmo)"
-wait_for "one brush selected" '.selection | length == 1'
-click $(spot field.ceiling) "tick 'ceiling' (the top view now shows inside)"
-wait_for "the ceiling flag" '.undo_name != "Hollow brushes"'
+# --- 2. the player start onto the new floor (Hollow made the top piece the ceiling, hidden from above) --
+step "player start onto the floor"
 click $(spot "fix:Drop to floor") "validation's quick fix: the player start (sunk into the new floor) onto it"
 wait_for "the start on the floor" '.player_start.position[1] > 0.2'
 

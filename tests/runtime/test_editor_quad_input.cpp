@@ -2,8 +2,9 @@
 // under Xvfb): Numpad 0 splits the viewport into top, front, side and perspective panes; a click selects in
 // an orthographic pane, the gizmo drags in another, a box select works in a third, each pane becoming the
 // active one; idle panes are not drawn again; the panes follow a window resize and still pick; Numpad 0
-// goes back to one view; there the draw tool drags a box, the clip tool cuts it and the vertex tool drags
-// one of its corners. The Analyze button plays the level with the bot in the background, saves the report
+// goes back to one view; there the draw tool drags a box, the clip tool cuts it, the vertex tool drags
+// one of its corners, the measuring tool measures its width, and a second box is subtracted from it through
+// the Brush menu. The Analyze button plays the level with the bot in the background, saves the report
 // beside the level and marks it stale after an edit. The editor reports its state in --status-file every
 // frame; the test waits on that.
 #include "game/playtest_report.h"
@@ -16,6 +17,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <numbers>
 
 using namespace ks;
 using nlohmann::json;
@@ -231,6 +233,43 @@ TEST_CASE("editor 4-up view: select, drag the gizmo and box select in different 
     s.wait("no vertex selected", [](const json& j) { return j["tool"]["vertex"]["selected"].empty(); });
     s.key("Escape");
     s.wait("no tool", [](const json& j) { return j["tool"]["active"] == "none"; });
+
+    // The measuring tool (M): the two grid points the box was dragged between, along x: the box's width.
+    s.key("m");
+    s.wait("the measuring tool", [](const json& j) { return j["tool"]["active"] == "measure"; });
+    s.click(start);
+    s.click(json{start[0].get<float>() + 90.0f, start[1].get<float>()});
+    st = s.wait("a measurement", [](const json& j) { return j["tool"].contains("measure"); });
+    // A point may snap onto the box's top (a face under the cursor) and the other onto the grid below: the
+    // rise angle says so, and the run along the ground is the width.
+    const double distance = st["tool"]["measure"]["distance"], rise = st["tool"]["measure"]["angle"];
+    CHECK(distance * std::cos(rise * std::numbers::pi / 180.0) == doctest::Approx(width).epsilon(0.001));
+    s.key("Escape");
+    s.key("Escape");
+    s.wait("no tool", [](const json& j) { return j["tool"]["active"] == "none"; });
+
+    // Subtract: a second box drawn across the first, then Brush > Subtract from the menu bar.
+    s.key("b");
+    s.wait("the draw tool again", [](const json& j) { return j["tool"]["active"] == "draw"; });
+    const json cut_from{start[0].get<float>() + 15.0f, start[1].get<float>() + 15.0f};
+    s.xdo("mousemove " + s.at(cut_from));
+    s.frames(2);
+    s.xdo("mousedown 1");
+    s.frames(2);
+    s.xdo("mousemove " + s.at(json{cut_from[0].get<float>() + 60.0f, cut_from[1].get<float>() + 40.0f}));
+    s.frames(2);
+    s.xdo("mouseup 1");
+    st = s.wait("the cutter placed", [&](const json& j) { return j["undo"] == undo_draw + 4; });
+    REQUIRE(st["selection"].size() == 1);
+    const size_t before_cut = st["entities"];
+    s.key("Escape");
+    st = s.wait("the draw tool left", [](const json& j) { return j["tool"]["active"] == "none"; });
+    s.click(st["spots"]["menu.brush"]);
+    st = s.wait("the Brush menu", [](const json& j) { return j["spots"].contains("brush.subtract"); });
+    s.click(st["spots"]["brush.subtract"]);
+    st = s.wait("subtracted", [&](const json& j) { return j["undo"] == undo_draw + 5; });
+    CHECK(st["undo_name"] == "Subtract brushes");
+    CHECK(st["entities"].get<size_t>() > before_cut - 1); // the cutter gone, the box in pieces around it
 }
 
 TEST_CASE("editor Analyze: the bot's runs in the background, the report beside the level, stale after an "
