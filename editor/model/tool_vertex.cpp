@@ -1,6 +1,8 @@
 // The vertex tool: tool_vertex.h.
 #include "model/tool_vertex.h"
 
+#include "model/brush_frame.h"
+
 #include "brush/brush_edit.h"
 #include "level/entity_shapes.h"
 
@@ -21,17 +23,6 @@ bool same_place(const DVec3& a, const DVec3& b) {
 bool any_at(const std::vector<DVec3>& points, const DVec3& p) {
     return std::any_of(points.begin(), points.end(), [&](const DVec3& q) { return same_place(p, q); });
 }
-
-// A brush entity's frame: world = rotation * local + position (level::world_brush's transform).
-struct BrushFrame {
-    glm::dmat3 rotation{1.0};
-    DVec3 position{0.0};
-    explicit BrushFrame(const level::Entity& e)
-        : rotation(glm::mat3_cast(dquat_from_ypr_degrees(DVec3(e.rotation)))), position(e.position) {}
-    DVec3 to_world(const DVec3& local) const { return rotation * local + position; }
-    DVec3 to_local(const DVec3& world) const { return glm::transpose(rotation) * (world - position); }
-    DVec3 local_delta(const DVec3& world) const { return glm::transpose(rotation) * world; }
-};
 
 const brush::Brush& local_of(const level::Entity& e) {
     return e.as<level::BrushProps>().brush;

@@ -1,6 +1,8 @@
 // Where a geometry tool's click lands: tool_pointer.h.
 #include "view/tool_pointer.h"
 
+#include "model/brush_frame.h"
+
 #include "brush/brush_query.h"
 #include "level/entity_shapes.h"
 
@@ -21,17 +23,6 @@ struct PointerBrushHit {
     double distance = 1e300;
 };
 
-// A brush entity's frame: world = rotation * local + position (level::world_brush's transform), so the
-// tools read its derived local brush instead of deriving a world copy every frame.
-struct PointerFrame {
-    glm::dmat3 rotation{1.0};
-    DVec3 position{0.0};
-    explicit PointerFrame(const level::Entity& e)
-        : rotation(glm::mat3_cast(dquat_from_ypr_degrees(DVec3(e.rotation)))), position(e.position) {}
-    DVec3 to_world(const DVec3& local) const { return rotation * local + position; }
-    DVec3 to_local(const DVec3& world) const { return glm::transpose(rotation) * (world - position); }
-};
-
 const brush::Brush& local_brush(const level::Entity& e) {
     return e.as<level::BrushProps>().brush;
 }
@@ -43,7 +34,7 @@ PointerBrushHit pointer_nearest_brush(const Document& doc, const geometry::Ray& 
         if (e.type() != level::EntityType::Brush || !shown(e)) continue;
         const float box_t = geometry::ray_obb(ray, entity_obb(e));
         if (box_t < 0.0f || box_t > best.distance) continue;
-        const PointerFrame frame(e);
+        const BrushFrame frame(e);
         const DVec3 direction = glm::transpose(frame.rotation) * DVec3(ray.direction);
         const auto t = brush::ray_entry(local_brush(e), frame.to_local(DVec3(ray.origin)), direction);
         if (t && *t < best.distance) best = {&e, *t};
@@ -92,7 +83,7 @@ std::optional<ToolPoint> tool_point(const Document& doc, const ViewCamera& view,
             float best_pixels = options.vertex_pixels, best_depth = 0.0f;
             const Vec3 eye = view.camera.position, forward = view.forward();
             auto consider = [&](const level::Entity& e) {
-                const PointerFrame frame(e);
+                const BrushFrame frame(e);
                 for (const DVec3& local : local_brush(e).vertices()) {
                     const DVec3 v = frame.to_world(local);
                     Vec2 s;
@@ -115,7 +106,7 @@ std::optional<ToolPoint> tool_point(const Document& doc, const ViewCamera& view,
         }
         if (options.faces && hit.entity) {
             DVec3 p = DVec3(ray.origin) + DVec3(ray.direction) * hit.distance;
-            const PointerFrame frame(*hit.entity);
+            const BrushFrame frame(*hit.entity);
             const brush::Plane local = pointer_face_at(local_brush(*hit.entity), frame.to_local(p));
             const DVec3 normal = frame.rotation * local.normal;
             const brush::Plane face{normal, glm::dot(normal, frame.to_world(local.normal * local.distance))};

@@ -37,6 +37,14 @@ fs::path assets_dir() {
     return ks::test::source_dir() / "assets";
 }
 
+// This driver's quality path at full resolution (thin parts such as the floor light's stand, or a screen's
+// text, would thin out at the test's 320x180 scaled down by half).
+auto full_resolution_renderer(AssetLibrary& assets) {
+    RendererSettings settings;
+    settings.render_scale = 1.0f;
+    return SceneRenderer::create(assets.textures(), settings);
+}
+
 // Renders `instances` offscreen at the test size and returns RGB rows (top-down).
 std::vector<unsigned char> render_offscreen(SceneRenderer& renderer, const geometry::Camera& camera,
                                             const Environment& env,
@@ -460,11 +468,7 @@ TEST_CASE(
     "each asset on the turntable stage renders non-blank without placeholder, with its dominant colour") {
     KS_REQUIRE_GL();
     AssetLibrary assets(assets_dir());
-    // This driver's quality path, at full resolution (thin parts such as the floor light's stand would
-    // thin out at the test's 320x180 scaled down by half).
-    RendererSettings settings;
-    settings.render_scale = 1.0f;
-    auto renderer = SceneRenderer::create(assets.textures(), settings);
+    auto renderer = full_resolution_renderer(assets);
     REQUIRE(renderer);
     Environment env;
     env.sky_color = Vec3(0.5f);
@@ -520,9 +524,7 @@ TEST_CASE("the control panel's screen reads upright: its big title at the top, t
     // upside down, which only the panel's text showed (issue 28).
     KS_REQUIRE_GL();
     AssetLibrary assets(assets_dir());
-    RendererSettings settings;
-    settings.render_scale = 1.0f;
-    auto renderer = SceneRenderer::create(assets.textures(), settings);
+    auto renderer = full_resolution_renderer(assets);
     REQUIRE(renderer);
     const Model& panel = assets.model("control_panel");
     REQUIRE_FALSE(panel.placeholder);
