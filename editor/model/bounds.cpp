@@ -99,7 +99,16 @@ SupportSurface SupportSurface::of_brush(const Entity& entity, std::shared_ptr<co
 
 std::optional<float> SupportSurface::height_at(float x, float z, bool stair_as_ramp) const {
     if (!world_brush_) return surface_height_at(*entity_, box_, x, z, stair_as_ramp);
-    const auto top = brush::top_at(*world_brush_, x, z);
+    auto top = brush::top_at(*world_brush_, x, z);
+    if (!top) {
+        // A point on the brush's side (a door centred on the floor's edge) is over it, as on a floor entity's
+        // box; brush::top_at counts touching a face as outside (right for rays), so the point is moved a hair
+        // toward the brush's middle and asked again.
+        constexpr double kEdge = 1e-6;
+        const DVec3 mid = (world_brush_->bounds_min() + world_brush_->bounds_max()) * 0.5;
+        top = brush::top_at(*world_brush_, x + std::clamp(mid.x - x, -kEdge, kEdge),
+                            z + std::clamp(mid.z - z, -kEdge, kEdge));
+    }
     if (!top) return std::nullopt;
     return static_cast<float>(*top);
 }

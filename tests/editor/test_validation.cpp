@@ -1,6 +1,7 @@
 // Every design rule: it fires on a level built to break it, names the offender, and its quick fix (where
 // there is one) makes it go away. The shipped main level and the scripted two-room level pass them all.
 #include "editor_test_util.h"
+#include "model/edit_brushes.h"
 #include "model/edit_entities.h"
 #include "model/edit_layers.h"
 #include "model/edit_logic.h"
@@ -172,6 +173,23 @@ TEST_CASE("rule wall_overlap: a robot in a wall is found by its oriented box and
     issues = of_rule(ed.issues(), Rule::WallOverlap);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].entity_id == panel);
+}
+
+TEST_CASE("rule support: a point exactly on a floor brush's edge stands on it, as on a floor's box") {
+    // The brief's door, dragged onto the room's outer edge (z = 11 on a floor brush spanning -11..11), was
+    // "outside every floor": brush::top_at counts touching a side face as outside.
+    Editor ed;
+    REQUIRE(place_box_brush(ed, {-11, 0, -11}, {11, 1, 11}).ok());
+    ed.grid().snap = false;
+    const int on_edge = *place(ed, EntityType::Pickup, {0, 1, 11});
+    const int on_corner = *place(ed, EntityType::Pickup, {-11, 1, -11});
+    const int outside = *place(ed, EntityType::Pickup, {0, 1, 11.01f});
+    auto issues = of_rule(ed.issues(), Rule::Support);
+    INFO(dump(issues));
+    REQUIRE(issues.size() == 1);
+    CHECK(issues[0].entity_id == outside);
+    CHECK(issues[0].message.find("outside every floor") != std::string::npos);
+    CHECK(on_edge != on_corner);
 }
 
 TEST_CASE("rule support: floating and sunk entities drop to the floor; outside every floor offers delete") {
