@@ -18,6 +18,11 @@ pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
 add_library(ks_stb INTERFACE)
 target_link_libraries(ks_stb INTERFACE PkgConfig::STB)
 
+# zlib from zlib1g-dev: the screenshot writer (render/png_writer.h) deflates with it.
+find_package(ZLIB REQUIRED)
+add_library(ks_zlib INTERFACE)
+target_link_libraries(ks_zlib INTERFACE ZLIB::ZLIB)
+
 # assimp from libassimp-dev: the modelio module reads designers' models with it (window-free, so every build
 # needs it), and render loads the project's own models.
 find_package(assimp REQUIRED)

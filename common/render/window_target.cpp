@@ -1,7 +1,7 @@
 #include "render/window_target.h"
 
 #include <epoxy/gl.h>
-#include <stb_image_write.h>
+#include "render/png_writer.h"
 
 #include <vector>
 
@@ -46,9 +46,7 @@ Result<void> save_framebuffer_png(const std::string& path, int width, int height
     // GL rows run bottom-up; PNG rows top-down: write with a negative stride from the last row.
     const int stride = width * 3;
     const unsigned char* last_row = pixels.data() + static_cast<size_t>(height - 1) * stride;
-    if (!stbi_write_png(path.c_str(), width, height, 3, last_row, -stride))
-        return Error("cannot write PNG", Location{path}, "check that the folder exists and is writable");
-    return ok();
+    return write_png_rgb(path, width, height, last_row, -stride);
 }
 
 } // namespace ks::render

@@ -1,11 +1,11 @@
 #include "shell/offscreen_context.h"
 
+#include "render/png_writer.h"
 #include "render/window_target.h"
 #include "shell/gl_window.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
-#include <stb_image_write.h>
 
 namespace ks::shell {
 
@@ -44,9 +44,7 @@ std::vector<unsigned char> OffscreenContext::read_rgb() const {
 
 Result<void> OffscreenContext::save_png(const std::string& path) const {
     auto rgb = read_rgb();
-    if (!stbi_write_png(path.c_str(), width(), height(), 3, rgb.data(), width() * 3))
-        return Error("cannot write PNG", Location{path}, "check that the folder exists and is writable");
-    return ok();
+    return render::write_png_rgb(path, width(), height(), rgb.data(), width() * 3);
 }
 
 std::string OffscreenContext::renderer() const {

@@ -5,6 +5,7 @@
 #include "render/mesh_data.h"
 #include "render/occlusion.h"
 #include "render/particles.h"
+#include "render/png_writer.h"
 #include "render/scene_renderer.h"
 #include "render/shader_program.h"
 #include "render/texture_cache.h"
@@ -14,6 +15,7 @@
 
 #include <doctest/doctest.h>
 #include <glm/gtc/matrix_transform.hpp>
+#include <stb_image.h>
 
 #include <algorithm>
 #include <cmath>
@@ -519,4 +521,40 @@ TEST_CASE("renderer environment overrides are parsed once into RendererSettings"
         CHECK(lightmap_encoding_range(true) == 0.0f);
         CHECK(lightmap_encoding_range(false) > 0.0f);
     }
+}
+
+TEST_CASE(
+    "screenshot PNGs decode to the pixels written, top-down and bottom-up; bad sizes and paths are errors") {
+    const int w = 37, h = 23; // odd sizes: no row padding hides an off-by-one
+    std::vector<unsigned char> rgb(static_cast<size_t>(w) * h * 3);
+    for (size_t i = 0; i < rgb.size(); ++i) rgb[i] = static_cast<unsigned char>((i * 7919u) >> 3);
+    auto decoded = [&](const std::vector<unsigned char>& png) {
+        int dw = 0, dh = 0, channels = 0;
+        unsigned char* px =
+            stbi_load_from_memory(png.data(), static_cast<int>(png.size()), &dw, &dh, &channels, 3);
+        REQUIRE(px != nullptr);
+        CHECK(dw == w);
+        CHECK(dh == h);
+        std::vector<unsigned char> out(px, px + static_cast<size_t>(w) * h * 3);
+        stbi_image_free(px);
+        return out;
+    };
+    auto top_down = encode_png_rgb(w, h, rgb.data(), w * 3);
+    REQUIRE(top_down);
+    CHECK(decoded(*top_down) == rgb);
+
+    // The same image stored bottom-up (GL's read-back), written from its last row with a negative stride.
+    std::vector<unsigned char> flipped(rgb.size());
+    for (int y = 0; y < h; ++y)
+        std::copy_n(rgb.begin() + y * w * 3, w * 3, flipped.begin() + (h - 1 - y) * w * 3);
+    auto bottom_up = encode_png_rgb(w, h, flipped.data() + (h - 1) * w * 3, -w * 3);
+    REQUIRE(bottom_up);
+    CHECK(decoded(*bottom_up) == rgb);
+
+    CHECK_FALSE(encode_png_rgb(0, h, rgb.data(), w * 3));
+    CHECK_FALSE(encode_png_rgb(w, -1, rgb.data(), w * 3));
+    CHECK_FALSE(encode_png_rgb(w, h, nullptr, w * 3));
+    auto unwritable = write_png_rgb("/nonexistent-folder/shot.png", w, h, rgb.data(), w * 3);
+    REQUIRE_FALSE(unwritable);
+    CHECK(unwritable.error().where.file.find("/nonexistent-folder/shot.png") != std::string::npos);
 }
