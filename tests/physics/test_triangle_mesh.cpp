@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cmath>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -82,7 +83,7 @@ void add_quad(std::vector<DVec3>& v, std::vector<Index>& t, DVec3 a, DVec3 b, DV
 TEST_CASE("mesh contact: segment to triangle matches the long double reference on random cases") {
     std::mt19937 rng(27);
     Worst worst;
-    for (int i = 0; i < test::iterations(3000, 0.25); ++i) {
+    for (int i = 0; i < test::iterations(1500, 0.25); ++i) {
         const DVec3 a = as_float(random_point(rng, 10)), b = as_float(random_point(rng, 10)),
                     c = as_float(random_point(rng, 10));
         const DVec3 p0 = as_float(random_point(rng, 12)), p1 = as_float(p0 + random_point(rng, 4));
@@ -179,8 +180,9 @@ TEST_CASE("mesh build: zero-area triangles are dropped and counted; repeated one
     CHECK(test::contains_text(out_of_range.error().message, "triangle 0 names vertex 9 of 5"));
     const std::vector<DVec3> nan = {{0, 0, 0}, {1, 0, 0}, {0, std::nan(""), 1}};
     CHECK_FALSE(mesh_body(nan, std::vector<Index>{{0, 1, 2}}, "nan.glb").ok());
-    const std::vector<Index> too_many(kMaxMeshTriangles + 1, Index{0, 1, 2});
-    auto dense = mesh_body(v, too_many, "dense.glb");
+    // The count is refused before a triangle is read: the storage is left unwritten (untouched pages).
+    const std::unique_ptr<Index[]> storage(new Index[kMaxMeshTriangles + 1]);
+    auto dense = mesh_body(v, std::span<const Index>(storage.get(), kMaxMeshTriangles + 1), "dense.glb");
     REQUIRE_FALSE(dense.ok());
     CHECK(test::contains_text(dense.error().message, "more than the 1000000 a collision mesh may have"));
 
