@@ -5,6 +5,7 @@
 #include "game/robot_rig.h"
 #include "level/model_entity.h"
 #include "physics/brush_shape.h"
+#include "physics/triangle_mesh.h"
 
 #include <algorithm>
 
@@ -29,11 +30,19 @@ Shape physics_shape(const level::PlacedShape& shape) {
 
 // Every static solid's collision shape and placement, through this one function: walls, floors, stairs,
 // lamp stands, cylinders and the panel as the level's boxes, wedges and cylinders (their bodies, and so the
-// bot's state hashes, are as they always were); a brush as a Hull from its world brush; a model as the Hull
-// of the collision it chose (level::model_collision; none where its file cannot be read: the level's
-// validation warned, and the game plays on with the marker drawn in its place). nullopt: no body.
+// bot's state hashes, are as they always were); a brush as a Hull from its world brush; a model as its
+// triangles (a Mesh) or the Hull of the collision it chose (level::model_collision; none where its file
+// cannot be read: the level's validation warned, and the game plays on with the marker drawn in its place).
+// nullopt: no body.
 Result<std::optional<physics::BrushBody>> static_body(const level::Entity& e) {
     if (e.type() == level::EntityType::Model) {
+        Result<std::optional<level::CollisionMesh>> mesh = level::model_mesh_collision(e);
+        if (mesh && mesh->has_value()) { // "mesh": its triangles (physics/triangle_mesh.h)
+            Result<physics::MeshBody> body =
+                physics::mesh_body((*mesh)->vertices, (*mesh)->triangles, "model " + std::to_string(e.id));
+            if (!body) return std::optional<physics::BrushBody>();
+            return std::optional<physics::BrushBody>(physics::BrushBody{body->shape, body->transform});
+        }
         Result<std::optional<brush::Brush>> collision = level::model_collision(e);
         if (!collision || !collision->has_value()) return std::optional<physics::BrushBody>();
         return std::optional<physics::BrushBody>(physics::brush_body(**collision));

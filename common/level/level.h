@@ -389,8 +389,8 @@ struct BrushProps {
 // ---- designers' models (docs/models.md) --------------------------------------------------------------
 // A model file (glTF, OBJ, FBX) placed like a brush (world = R * scale * model + position, the model's origin
 // on the entity's position), named relative to the shipped assets/models or the designer's models folder in
-// the user data folder (modelio/model_files.h). Its collision is chosen: none, the box around it, or one
-// convex hull of its vertices (level/model_entity.h). Triangle-mesh collision and several hulls are not
+// the user data folder (modelio/model_files.h). Its collision is chosen: none, the box around it, one
+// convex hull of its vertices, or its own triangles (static, level/model_entity.h). Several hulls are not
 // offered yet.
 inline constexpr int kMaxModelFileLength = 200; // characters
 
@@ -400,7 +400,7 @@ inline constexpr std::string_view kDefaultModelFile =
 struct ModelProps {
     std::string file{kDefaultModelFile};
     float scale = 1.0f;
-    Choice collision{"hull", {"none", "box", "hull"}};
+    Choice collision{"hull", {"none", "box", "hull", "mesh"}};
     template <class V>
     void visit(V& v) {
         v.field(file, {"file",
@@ -410,7 +410,7 @@ struct ModelProps {
         v.field(scale,
                 {"scale", "Multiplies the model's size (one metre in the file is one unit)", 0.001, 1000});
         v.field(collision, {"collision", "What the player, robots and shots collide with: nothing, the box "
-                                         "around the model, or one convex hull of it"});
+                                         "around the model, one convex hull of it, or its triangles"});
     }
     bool operator==(const ModelProps&) const = default;
 };

@@ -155,6 +155,8 @@ void check_model(const Entity& entity, const ModelProps& model, const std::strin
     }
     if (Result<std::optional<brush::Brush>> collision = model_collision(entity); !collision)
         sink.warning(member_path(props_path, "collision"), collision.error().message, collision.error().hint);
+    if (Result<std::optional<CollisionMesh>> mesh = model_mesh_collision(entity); !mesh)
+        sink.warning(member_path(props_path, "collision"), mesh.error().message, mesh.error().hint);
 }
 
 } // namespace

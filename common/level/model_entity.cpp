@@ -75,7 +75,8 @@ Result<std::optional<brush::Brush>> model_collision(const Entity& entity) {
     if (!props)
         return Error(std::string(type_name(entity.type())) + " " + std::to_string(entity.id) +
                      " is not a model");
-    if (props->collision.value == "none") return std::optional<brush::Brush>();
+    if (props->collision.value == "none" || props->collision.value == "mesh")
+        return std::optional<brush::Brush>();
     Result<std::shared_ptr<const modelio::ImportedModel>> model = entity_model(entity);
     if (!model) return model.error();
     const double scale = props->scale;
@@ -90,6 +91,32 @@ Result<std::optional<brush::Brush>> model_collision(const Entity& entity) {
     Result<brush::Brush> world = brush::transformed(*local, entity_rotation(entity), DVec3(entity.position));
     if (!world) return world.error();
     return std::optional<brush::Brush>(std::move(*world));
+}
+
+Result<std::optional<CollisionMesh>> model_mesh_collision(const Entity& entity) {
+    const auto* props = entity.try_as<ModelProps>();
+    if (!props || props->collision.value != "mesh") return std::optional<CollisionMesh>();
+    Result<std::shared_ptr<const modelio::ImportedModel>> model = entity_model(entity);
+    if (!model) return model.error();
+    const modelio::ImportedModel& m = **model;
+    if (m.triangle_count > kMaxModelMeshTriangles)
+        return Error(model_subject(entity) + ": no mesh collision: " + std::to_string(m.triangle_count) +
+                         " triangles, more than " + std::to_string(kMaxModelMeshTriangles),
+                     Location(m.path.string()),
+                     "simplify the model, or choose collision \"hull\" or \"box\"");
+    const glm::dmat3 rotation = entity_rotation(entity);
+    const DVec3 position(entity.position);
+    const double scale = props->scale;
+    CollisionMesh out;
+    out.triangles.reserve(m.triangle_count);
+    for (const modelio::ImportedMesh& mesh : m.meshes) {
+        const auto base = static_cast<std::uint32_t>(out.vertices.size());
+        for (const Vec3& v : mesh.positions) out.vertices.push_back(rotation * (DVec3(v) * scale) + position);
+        for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3)
+            out.triangles.push_back(
+                {base + mesh.indices[i], base + mesh.indices[i + 1], base + mesh.indices[i + 2]});
+    }
+    return std::optional<CollisionMesh>(std::move(out));
 }
 
 PlacedShape model_bounding_shape(const Entity& entity) {

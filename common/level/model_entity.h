@@ -8,8 +8,10 @@
 #include "level/level.h"
 #include "modelio/model_import.h"
 
+#include <array>
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace ks::level {
 
@@ -27,9 +29,24 @@ Mat4 model_matrix(const Entity& entity);
 // The collision the entity chose, as a convex brush in the world: "box" the box around the scaled model,
 // "hull" the convex hull of its scaled vertices (Qhull through brush::make_from_points; when it has more than
 // kMaxModelHullFaces faces the vertices are snapped to a grid of 64, 32, 16 or 8 cells along the model's
-// largest side, and the first hull under the cap is kept). nullopt for "none". An Error when the model cannot
-// be read or the hull cannot be built (flat models: choose "box" or "none").
+// largest side, and the first hull under the cap is kept). nullopt for "none" and "mesh"
+// (model_mesh_collision). An Error when the model cannot be read or the hull cannot be built (flat models:
+// choose "box" or "none").
 Result<std::optional<brush::Brush>> model_collision(const Entity& entity);
+
+// The most triangles a "mesh" collision takes (the import refuses more too: this says why for collision).
+inline constexpr std::size_t kMaxModelMeshTriangles = 1'000'000;
+
+// A model's triangles placed in the world (double): what "mesh" collision collides with and what the
+// navigation mesh is built on (physics/triangle_mesh.h drops the zero-area ones).
+struct CollisionMesh {
+    std::vector<DVec3> vertices;
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+};
+// The "mesh" collision of the entity: every triangle of every mesh of its model, scaled, turned and placed.
+// nullopt for any other choice. An Error when the model cannot be read or has more than
+// kMaxModelMeshTriangles triangles.
+Result<std::optional<CollisionMesh>> model_mesh_collision(const Entity& entity);
 
 // The box around the scaled model in the entity's frame; a unit cube standing on the position (the marker the
 // renderer draws) when the file cannot be read.

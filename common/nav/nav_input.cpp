@@ -33,10 +33,13 @@ level::PlacedShape drawn_in(level::PlacedShape shape, float cell_size) {
     return shape;
 }
 
-// A convex solid as corner points and faces (each a loop of corner indices, any winding).
+// A convex solid as corner points and faces (each a loop of corner indices, any winding). `surface`: the
+// faces are a model's triangles ("mesh" collision), with no inside: each is wound to face up, as the
+// two-sided physics triangles are stood on from either side.
 struct ConvexSolid {
     std::vector<Vec3> corners;
     std::vector<std::vector<int>> faces;
+    bool surface = false;
 };
 
 ConvexSolid box_solid(const level::PlacedShape& s) {
@@ -103,6 +106,18 @@ ConvexSolid brush_solid(const brush::Brush& b) {
     return out;
 }
 
+// A model's "mesh" collision: its triangles, rounded to float once.
+ConvexSolid mesh_surface(const level::CollisionMesh& mesh) {
+    ConvexSolid out;
+    out.surface = true;
+    out.corners.reserve(mesh.vertices.size());
+    for (const DVec3& v : mesh.vertices) out.corners.push_back(Vec3(v));
+    out.faces.reserve(mesh.triangles.size());
+    for (const auto& t : mesh.triangles)
+        out.faces.push_back({static_cast<int>(t[0]), static_cast<int>(t[1]), static_cast<int>(t[2])});
+    return out;
+}
+
 // Appends the solid's faces as triangles wound so that Recast's normal (cross(b - a, c - a)) points out of
 // the solid: its walkable test reads the normal's y.
 void append_solid(const ConvexSolid& solid, InputGeometry& in) {
@@ -118,7 +133,8 @@ void append_solid(const ConvexSolid& solid, InputGeometry& in) {
         for (size_t k = 1; k + 1 < face.size(); ++k) {
             int a = face[0], b = face[k], c = face[k + 1];
             const Vec3 pa = solid.corners[a], pb = solid.corners[b], pc = solid.corners[c];
-            if (glm::dot(glm::cross(pb - pa, pc - pa), (pa + pb + pc) / 3.0f - centre) < 0.0f)
+            const Vec3 normal = glm::cross(pb - pa, pc - pa);
+            if (solid.surface ? normal.y < 0.0f : glm::dot(normal, (pa + pb + pc) / 3.0f - centre) < 0.0f)
                 std::swap(b, c);
             in.triangles.insert(in.triangles.end(), {base + a, base + b, base + c});
         }
@@ -225,13 +241,15 @@ Error absurd(const level::Level& level, const level::Entity& e) {
 
 // Every solid the mesh is built from, through this one function: the level's boxes, wedges and cylinders
 // (static_solid_shape; obstacles drawn in by half a cell), a brush as its world brush, a model as its
-// collision brush (level::model_collision). Brushes are not drawn in: like floors and stairs they are walked
-// on, and drawing in would open seams where they meet; a brush wall grows by up to a cell instead, erring on
-// the side of blocking. nullopt: no solid.
+// collision brush (level::model_collision) or its triangles (level::model_mesh_collision). Brushes are not
+// drawn in: like floors and stairs they are walked on, and drawing in would open seams where they meet; a
+// brush wall grows by up to a cell instead, erring on the side of blocking. nullopt: no solid.
 Result<std::optional<ConvexSolid>> entity_solid(const level::Level& level, const level::Entity& e,
                                                 const NavSettings& settings) {
     if (e.type() == level::EntityType::Model) { // its collision brush, walked on like a brush; none if unread
         if (!sane(e.position) || !sane(e.rotation)) return absurd(level, e);
+        Result<std::optional<level::CollisionMesh>> mesh = level::model_mesh_collision(e);
+        if (mesh && mesh->has_value()) return std::optional<ConvexSolid>(mesh_surface(**mesh));
         Result<std::optional<brush::Brush>> collision = level::model_collision(e);
         if (!collision || !collision->has_value()) return std::optional<ConvexSolid>();
         return std::optional<ConvexSolid>(brush_solid(**collision));

@@ -1,5 +1,7 @@
 #include "physics/character.h"
 
+#include "physics/triangle_mesh.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -124,7 +126,8 @@ struct Mover {
 
 } // namespace
 
-Vec3 surface_normal(const Shape& shape, const geometry::Transform& xf, const Vec3& point, const Vec3& contact_normal) {
+Vec3 surface_normal(const Shape& shape, const geometry::Transform& xf, const Vec3& point,
+                    const Vec3& contact_normal) {
     // Unrotated (most level geometry): the frame change is a translation (rotating by the identity
     // quaternion returns its input exactly, so this only skips work).
     const bool unrotated = xf.rotation == Quat(1.0f, 0.0f, 0.0f, 0.0f);
@@ -155,6 +158,7 @@ Vec3 surface_normal(const Shape& shape, const geometry::Transform& xf, const Vec
         if (std::abs(p.y - shape.half_height) <= tol) return Vec3(0.0f, 1.0f, 0.0f);
         break;
     case ShapeKind::Capsule:
+    case ShapeKind::Mesh: // the controller asks per triangle (triangle_normal)
         break;
     }
     return best_y > -2.0f ? best : contact_normal;
@@ -180,8 +184,7 @@ float sweep_capsule_in(const Segment& s, float radius, const Vec3& motion, float
     // a convex function of t, so its tangent never overshoots the first touch: t only grows toward it.
     for (int iter = 0; iter < 32; ++iter) {
         const Segment st{s.p0 + motion * t, s.p1 + motion * t};
-        const auto c =
-            collide_capsule_shape(st, radius, *o.shape, o.transform, len * (1.0f - t) + skin + 1e-3f);
+        const auto c = collide_capsule_obstacle(st, radius, o, len * (1.0f - t) + skin + 1e-3f);
         if (!c) return 1.0f;
         const float gap = -c->penetration;
         const float rate = -glm::dot(c->normal, motion);
@@ -189,8 +192,10 @@ float sweep_capsule_in(const Segment& s, float radius, const Vec3& motion, float
             if (rate <= kApproachFraction * len) return 1.0f; // resting or leaving: not blocking
             normal = c->normal;
             if (surface)
-                *surface =
-                    surface_normal(*o.shape, o.transform, c->point - c->normal * (gap * 0.5f), c->normal);
+                *surface = o.triangle != Obstacle::kWholeShape
+                               ? triangle_normal(*o.shape->mesh, o.triangle, o.transform, c->normal)
+                               : surface_normal(*o.shape, o.transform, c->point - c->normal * (gap * 0.5f),
+                                                c->normal);
             return t;
         }
         if (rate <= kApproachFraction * len) return 1.0f;
@@ -202,6 +207,13 @@ float sweep_capsule_in(const Segment& s, float radius, const Vec3& motion, float
     return t;
 }
 } // namespace
+
+std::optional<Contact> collide_capsule_obstacle(const Segment& s, float r, const Obstacle& o,
+                                                float contact_margin) {
+    if (o.triangle != Obstacle::kWholeShape)
+        return collide_capsule_triangle(s, r, *o.shape->mesh, o.triangle, o.transform, contact_margin);
+    return collide_capsule_shape(s, r, *o.shape, o.transform, contact_margin);
+}
 
 float sweep_capsule(const Segment& s, float radius, const Vec3& motion, const Obstacle& o, float skin,
                     Vec3& normal, Vec3* surface) {
@@ -263,7 +275,7 @@ void move_character(const ObstacleSource& world, float radius, float half_segmen
         for (std::size_t i = 0; i < scratch.obstacles.size(); ++i) {
             const Obstacle& o = scratch.obstacles[i];
             if (!own.overlaps(o.bounds)) continue;
-            const auto c = collide_capsule_shape(mover.segment_at(position), radius, *o.shape, o.transform);
+            const auto c = collide_capsule_obstacle(mover.segment_at(position), radius, o);
             if (c && c->penetration > 0.0f) {
                 position += c->normal * (c->penetration + cs.skin);
                 mover.touch(static_cast<int>(i));
@@ -326,8 +338,7 @@ void move_character(const ObstacleSource& world, float radius, float half_segmen
     // Report each touched obstacle once, with the exact contact at the final position.
     for (int i : touched) {
         const Obstacle& o = scratch.obstacles[i];
-        auto c =
-            collide_capsule_shape(mover.segment_at(position), radius, *o.shape, o.transform, 4.0f * cs.skin);
+        auto c = collide_capsule_obstacle(mover.segment_at(position), radius, o, 4.0f * cs.skin);
         Contact contact;
         if (c)
             contact = *c;

@@ -38,7 +38,15 @@ struct Obstacle {
     bool yaw_only = false;
     geometry::Aabb bounds{Vec3(-3.4e38f),
                           Vec3(3.4e38f)}; // world bounds: lets sweeps skip far obstacles cheaply
+    // A triangle mesh comes one triangle per obstacle (each convex, so the sweep's advancement holds):
+    // which one; kWholeShape for every other shape.
+    static constexpr std::uint32_t kWholeShape = 0xffffffffu;
+    std::uint32_t triangle = kWholeShape;
 };
+
+// The capsule's contact with one obstacle: collide_capsule_shape, or its one triangle of a mesh.
+std::optional<Contact> collide_capsule_obstacle(const Segment& s, float r, const Obstacle& o,
+                                                float contact_margin = 0.0f);
 
 // A contact the character made during its move (reported to collision callbacks).
 struct CharacterContact {
@@ -70,8 +78,10 @@ float sweep_capsule(const Segment& s, float radius, const Vec3& motion, const Ob
                     Vec3& normal, Vec3* surface = nullptr);
 
 // The normal of the obstacle's face at a point on its surface; where faces meet (a step's edge) the most
-// upward one. Ground is judged by this, not by the capsule's contact normal: a capsule resting on the edge
-// of a step touches it at an angle, yet stands on the step's flat top.
-Vec3 surface_normal(const Shape& shape, const geometry::Transform& xf, const Vec3& point, const Vec3& contact_normal);
+// upward one (a mesh triangle: its face normal on the contact's side; a whole mesh: the contact normal).
+// Ground is judged by this, not by the capsule's contact normal: a capsule resting on the edge of a step
+// touches it at an angle, yet stands on the step's flat top.
+Vec3 surface_normal(const Shape& shape, const geometry::Transform& xf, const Vec3& point,
+                    const Vec3& contact_normal);
 
 } // namespace ks::physics

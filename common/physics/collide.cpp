@@ -1,5 +1,7 @@
 #include "physics/collide.h"
 
+#include "physics/triangle_mesh.h"
+
 #include "geometry/obb.h"
 
 #include <algorithm>
@@ -201,7 +203,8 @@ bool inside_face(const Polyhedron& p, const Polyhedron::Face& f, const Vec3& q) 
 
 } // namespace
 
-SegmentDistance segment_polyhedron_distance(const Segment& s, const Polyhedron& p, const geometry::Transform& xf) {
+SegmentDistance segment_polyhedron_distance(const Segment& s, const Polyhedron& p,
+                                            const geometry::Transform& xf) {
     const Vec3 p0 = xf.to_local(s.p0), p1 = xf.to_local(s.p1), d = p1 - p0;
     // Clip the segment by every face plane: a non-empty remainder means it intersects the solid.
     float t0 = 0.0f, t1 = 1.0f;
@@ -371,8 +374,8 @@ std::optional<Contact> capsule_box_in(const Segment& s, float r, const Vec3& hal
 }
 } // namespace
 
-std::optional<Contact> collide_capsule_box(const Segment& s, float r, const Vec3& half, const geometry::Transform& xf,
-                                           float contact_margin) {
+std::optional<Contact> collide_capsule_box(const Segment& s, float r, const Vec3& half,
+                                           const geometry::Transform& xf, float contact_margin) {
     if (xf.rotation == Quat(1.0f, 0.0f, 0.0f, 0.0f))
         return capsule_box_in(s, r, half, TranslatedFrame{xf.position}, contact_margin);
     return capsule_box_in(s, r, half, RotatedFrame{xf}, contact_margin);
@@ -442,6 +445,8 @@ std::optional<Contact> collide_capsule_shape(const Segment& s, float r, const Sh
                                        contact_margin);
     case ShapeKind::Cylinder:
         return collide_capsule_cylinder(s, r, xf.position, shape.radius, shape.half_height, contact_margin);
+    case ShapeKind::Mesh:
+        return collide_capsule_mesh(s, r, *shape.mesh, xf, contact_margin);
     }
     return std::nullopt;
 }

@@ -1,5 +1,7 @@
 #include "physics/ray.h"
 
+#include "physics/triangle_mesh.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -35,7 +37,8 @@ bool ray_box(const geometry::Ray& ray, const Vec3& half, const geometry::Transfo
     return true;
 }
 
-bool ray_polyhedron(const geometry::Ray& ray, const Polyhedron& p, const geometry::Transform& xf, ShapeHit& hit) {
+bool ray_polyhedron(const geometry::Ray& ray, const Polyhedron& p, const geometry::Transform& xf,
+                    ShapeHit& hit) {
     const Vec3 o = xf.to_local(ray.origin);
     const Vec3 d = xf.dir_to_local(ray.direction);
     float tmin = -3.4e38f, tmax = 3.4e38f;
@@ -153,6 +156,8 @@ bool ray_shape(const geometry::Ray& ray, const Shape& shape, const geometry::Tra
     }
     case ShapeKind::Cylinder:
         return ray_cylinder(ray, xf.position, shape.radius, shape.half_height, hit);
+    case ShapeKind::Mesh:
+        return ray_mesh(ray, *shape.mesh, xf, hit);
     }
     return false;
 }

@@ -236,6 +236,13 @@ Result<void> Shape::validate(const std::string& what) const {
         if (kind != ShapeKind::Box && !polyhedron)
             return Error(what + ": polyhedron missing", Location(what), "build wedges with Shape::wedge");
         break;
+    case ShapeKind::Mesh:
+        for (int i = 0; i < 3; ++i)
+            if (!finite_positive(half_extents[i]))
+                return bad("half extent " + std::to_string(i), half_extents[i]);
+        if (!mesh)
+            return Error(what + ": triangle mesh missing", Location(what), "build meshes with mesh_body");
+        break;
     case ShapeKind::Capsule:
     case ShapeKind::Cylinder:
         if (!finite_positive(radius)) return bad("radius", radius);

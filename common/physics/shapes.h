@@ -5,6 +5,7 @@
 //   Capsule  upright capsule: player and robots (characters)
 //   Cylinder upright cylinder: gas cylinders, floor-light stands (static props)
 //   Hull     convex polyhedron built from a mesh's vertices, for any other prop
+//   Mesh     static triangle mesh (two-sided triangles in a BVH): concave models (physics/triangle_mesh.h)
 // Every shape is centred on its body's position (the centre of its bounding box), in the body's frame.
 // Capsules and cylinders stay upright: their body rotation is ignored except for yaw (a no-op for them).
 #include "core/math.h"
@@ -58,14 +59,17 @@ void derive_edges(Polyhedron& p);
 // (brush::kMaxCoordinate), too many points.
 Result<Polyhedron> build_convex_hull(std::span<const Vec3> points, const std::string& source);
 
-enum class ShapeKind : std::uint8_t { Box, Wedge, Capsule, Cylinder, Hull };
+struct TriangleMesh; // physics/triangle_mesh.h
+
+enum class ShapeKind : std::uint8_t { Box, Wedge, Capsule, Cylinder, Hull, Mesh };
 
 struct Shape {
     ShapeKind kind = ShapeKind::Box;
-    Vec3 half_extents{0.5f};  // box/wedge/hull: half size of the local bounding box
+    Vec3 half_extents{0.5f};  // box/wedge/hull/mesh: half size of the local bounding box
     float radius = 0.0f;      // capsule, cylinder
     float half_height = 0.0f; // capsule: half length of the core segment; cylinder: half height
     std::shared_ptr<const Polyhedron> polyhedron; // wedge and hull (boxes build theirs on demand)
+    std::shared_ptr<const TriangleMesh> mesh;     // Mesh (built by mesh_body)
 
     static Shape box(const Vec3& half);
     static Shape wedge(const Vec3& half);

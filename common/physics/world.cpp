@@ -37,6 +37,9 @@ Result<BodyId> World::add(const BodyDesc& desc, const std::string& what) {
     if (!is_finite(desc.transform.rotation) || std::abs(glm::length(desc.transform.rotation) - 1.0f) > 1e-3f)
         return Error(what + ": rotation is not a unit quaternion", Location(what),
                      "build rotations with quat_from_ypr");
+    if (desc.shape.kind == ShapeKind::Mesh && desc.motion != Motion::Static)
+        return Error(what + ": a triangle mesh can only be static", Location(what),
+                     "give a moving body a box or a hull");
     if (desc.motion == Motion::Character && (desc.shape.kind != ShapeKind::Capsule || desc.trigger))
         return Error(what + ": a character must be a (non-trigger) capsule", Location(what),
                      "use Shape::capsule(radius, half_segment) for player and robots");

@@ -2,6 +2,8 @@
 // characters, trigger overlaps and the callbacks.
 #include "physics/world.h"
 
+#include "physics/triangle_mesh.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -28,7 +30,7 @@ class World::Obstacles final : public ObstacleSource {
             const StaticPrim& p = w.static_prims_[slot];
             const Body& b = w.bodies_[p.body];
             if (p.enabled && (p.layers & mask) && b.bounds.overlaps(region))
-                out.push_back({&b.shape, b.transform, p.body, b.yaw_only, b.bounds});
+                body_obstacles(b, p.body, region, [&](const Obstacle& o) { out.push_back(o); });
             return true;
         };
         if (!cache) {
@@ -45,9 +47,10 @@ class World::Obstacles final : public ObstacleSource {
                 w.static_bvh_.aabb_query(cache->region, [&](std::uint32_t slot) {
                     const StaticPrim& p = w.static_prims_[slot];
                     const Body& b = w.bodies_[p.body];
-                    if (b.bounds.overlaps(cache->region))
-                        cache->entries.push_back(
-                            {{&b.shape, b.transform, p.body, b.yaw_only, b.bounds}, slot});
+                    if (!b.bounds.overlaps(cache->region)) return true;
+                    body_obstacles(b, p.body, cache->region, [&](const Obstacle& o) {
+                        cache->entries.push_back({o, slot});
+                    });
                     return true;
                 });
             }
@@ -71,6 +74,18 @@ class World::Obstacles final : public ObstacleSource {
     }
 
   private:
+    // A body as obstacles: itself, or a mesh's triangles that reach into `region` (physics/triangle_mesh.h).
+    template <class Out>
+    static void body_obstacles(const Body& b, std::uint32_t index, const geometry::Aabb& region, Out&& out) {
+        if (b.shape.kind != ShapeKind::Mesh) {
+            out(Obstacle{&b.shape, b.transform, index, b.yaw_only, b.bounds});
+            return;
+        }
+        mesh_triangles_in(*b.shape.mesh, b.transform, region,
+                          [&](std::uint32_t triangle, const geometry::Aabb& bounds) {
+                              out(Obstacle{&b.shape, b.transform, index, b.yaw_only, bounds, triangle});
+                          });
+    }
     const World& world_;
 };
 

@@ -58,7 +58,7 @@ const char* const kCubeObj =
 Entity model_entity(const std::string& file, const std::string& collision, float scale = 1.0f) {
     Level level;
     Entity& e = level.add(EntityType::Model, {10, 0, 5}, "Prop");
-    e.as<ModelProps>() = {file, scale, {collision, {"none", "box", "hull"}}};
+    e.as<ModelProps>() = {file, scale, {collision, {"none", "box", "hull", "mesh"}}};
     return e;
 }
 
@@ -98,6 +98,9 @@ TEST_CASE(
         CHECK(test::contains_text(text, "entities[0].props.file"));
         CHECK(test::contains_text(text, "model 1"));
     }
+    auto [meshed, mesh_text] = load("door.gltf", R"(, "collision": "mesh")");
+    CHECK_MESSAGE(meshed, mesh_text);
+    CHECK_MESSAGE(mesh_text.find("warning") == std::string::npos, mesh_text);
     auto [loaded, text] = load("nowhere/crate.glb");
     CHECK(loaded);
     CHECK(test::contains_text(text, "warning"));
@@ -106,7 +109,7 @@ TEST_CASE(
     auto [scaled, scale_text] = load("door.gltf", R"(, "scale": 0)");
     CHECK_FALSE(scaled);
     CHECK(test::contains_text(scale_text, "entities[0].props.scale"));
-    auto [chosen, choice_text] = load("door.gltf", R"(, "collision": "mesh")");
+    auto [chosen, choice_text] = load("door.gltf", R"(, "collision": "sphere")");
     CHECK_FALSE(chosen);
     CHECK(test::contains_text(choice_text, "entities[0].props.collision"));
 }
@@ -152,4 +155,31 @@ TEST_CASE("model entity: the user's models folder; box and hull collision as bru
     REQUIRE_FALSE(flat.ok());
     CHECK(test::contains_text(flat.error().str(), "choose collision"));
     CHECK(model_collision(model_entity("flat.obj", "box")).ok() == false); // a box with no height
+}
+
+TEST_CASE("model entity: mesh collision is the model's triangles, turned, scaled and placed") {
+    ScratchDataHome home;
+    test::write_file(home.models() / "cube.obj", kCubeObj);
+    Entity cube = model_entity("cube.obj", "mesh", 2.0f);
+    cube.rotation = {90, 0, 0};
+    auto none = model_collision(cube); // no brush: the triangles are the collision
+    REQUIRE(none.ok());
+    CHECK_FALSE(none->has_value());
+    auto mesh = model_mesh_collision(cube);
+    REQUIRE_MESSAGE(mesh.ok(), mesh.error().str());
+    REQUIRE(mesh->has_value());
+    CHECK((**mesh).triangles.size() == 12); // six quads
+    DVec3 lo(1e9), hi(-1e9);
+    for (const auto& t : (**mesh).triangles)
+        for (std::uint32_t i : t)
+            lo = glm::min(lo, (**mesh).vertices[i]), hi = glm::max(hi, (**mesh).vertices[i]);
+    CHECK(lo.x == doctest::Approx(8.0)); // the box collision's bounds: the same placement
+    CHECK(hi.y == doctest::Approx(4.0));
+    CHECK(hi.z == doctest::Approx(7.0));
+    auto hull = model_mesh_collision(model_entity("cube.obj", "hull"));
+    REQUIRE(hull.ok());
+    CHECK_FALSE(hull->has_value());
+    auto missing = model_mesh_collision(model_entity("gone.obj", "mesh"));
+    REQUIRE_FALSE(missing.ok());
+    CHECK(test::contains_text(missing.error().str(), "gone.obj"));
 }

@@ -89,8 +89,8 @@ TEST_CASE("a brush's underside is never walked on; its top and the floor under i
     CHECK(floor->y == doctest::Approx(0.0f).epsilon(0.05));
 }
 
-TEST_CASE(
-    "a model entity's collision is in the mesh: its box and its hull block, none lets the path through") {
+TEST_CASE("a model entity's collision is in the mesh: its box, hull and triangles block, none lets the path "
+          "through") {
     auto room = [](const char* collision) {
         level::Level lv;
         lv.name = "model wall";
@@ -104,5 +104,6 @@ TEST_CASE(
     };
     CHECK_FALSE(build_robot_mesh(room("box"))->reachable(Vec3(0, 0, 8), Vec3(0, 0, -8)));
     CHECK_FALSE(build_robot_mesh(room("hull"))->reachable(Vec3(0, 0, 8), Vec3(0, 0, -8)));
+    CHECK_FALSE(build_robot_mesh(room("mesh"))->reachable(Vec3(0, 0, 8), Vec3(0, 0, -8))); // by its triangles
     CHECK(build_robot_mesh(room("none"))->reachable(Vec3(0, 0, 8), Vec3(0, 0, -8)));
 }
