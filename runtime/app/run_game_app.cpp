@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 
 namespace ks::runtime {
 
@@ -111,6 +112,12 @@ int run_game_app(const CommandLine& cl, const shell::ShellConfig& shell_config) 
         }
         automation.logic_trace =
             *trace == "-" ? std::filesystem::path("-") : paths::resolve_user_path(*trace);
+        // Refused before the window opens, as the headless run refuses it.
+        if (automation.logic_trace != "-" && !std::ofstream(automation.logic_trace)) {
+            log::error(automation.logic_trace.string(),
+                       ": cannot write the logic trace (give --logic-trace a file in a folder that exists)");
+            return 2;
+        }
     }
     if (auto spec = cl.get("logic-break")) {
         auto parsed = parse_logic_break(*spec);

@@ -44,15 +44,14 @@ Result<LogicBreak> parse_logic_break(std::string_view spec) {
         int id = 0;
         const auto [end, ec] = std::from_chars(id_text.data(), id_text.data() + id_text.size(), id);
         if (ec != std::errc() || end != id_text.data() + id_text.size() || id <= 0)
-            return Error("--logic-break: " + jsonio::quote_text(id_text) + " is not an entity id", where,
-                         fix);
+            return Error(jsonio::quote_text(id_text) + " is not an entity id", where, fix);
         b.entity = id;
     }
     if (!event_text.empty()) {
         b.event = level::event_from_name(event_text);
         if (!b.event)
             return Error(
-                "--logic-break: " + jsonio::quote_text(event_text) + " is not an event (one of " +
+                jsonio::quote_text(event_text) + " is not an event (one of " +
                     [] {
                         std::string all;
                         for (const auto e : level::all_events())
@@ -63,8 +62,8 @@ Result<LogicBreak> parse_logic_break(std::string_view spec) {
                 where, fix);
     }
     if (colon != std::string_view::npos && (id_text.empty() || event_text.empty()))
-        return Error("--logic-break: " + jsonio::quote_text(spec) + " needs both sides of the ':'", where, fix);
-    if (b.entity < 0 && !b.event) return Error("--logic-break needs an entity id or an event", where, fix);
+        return Error(jsonio::quote_text(spec) + " needs both sides of the ':'", where, fix);
+    if (b.entity < 0 && !b.event) return Error("an entity id or an event is needed", where, fix);
     return b;
 }
 
