@@ -19,6 +19,7 @@ void print_headless_help() {
     std::printf(
         "usage: killswitch --headless [--level FILE] [--seconds S] [--seed N] [--autoplay]\n"
         "                  [--record FILE | --replay FILE] [--stats-json FILE|-] [--audio-out FILE.wav]\n"
+        "                  [--logic-trace FILE|-]\n"
         "  runs the game without a window at a fixed 120 Hz step, as fast as the CPU allows\n"
         "  --level FILE      the level to play (default levels/main.json)\n"
         "  --seconds S       simulated time limit (default 300)\n"
@@ -29,6 +30,9 @@ void print_headless_help() {
         "  --stats-json F    write the outcome, time, kills, damage and state hash as JSON (- = stdout)\n"
         "  --audio-out F.wav render the run's sound (heard at the player) to a 48 kHz stereo WAV, plus\n"
         "                    2 s after the end; the same run writes the same file\n"
+        "  --logic-trace F   write every level-logic event and action, a line each with its step (- = "
+        "stdout;\n"
+        "                    format in docs/game.md, \"Logic trace\")\n"
         "exit code 0 when the run completed (whatever its outcome), 2 on bad options or a bad level\n"
         "\n"
         "usage: killswitch --headless --campaign FILE [--seed N] [--seconds S]\n"

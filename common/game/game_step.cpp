@@ -26,6 +26,7 @@ Input sanitised(const Input& in) {
 
 void Game::step(const Input& raw) {
     core_.events.clear();
+    logic_.clear_records();
     const Input input = sanitised(raw);
     if (input.pause && core_.playing()) {
         core_.paused = !core_.paused;

@@ -4,6 +4,7 @@
 #include "core/log.h"
 #include "core/paths.h"
 #include "game/autoplay.h"
+#include "game/logic_trace.h"
 #include "game/replay.h"
 #include "level/level_io.h"
 
@@ -13,6 +14,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <optional>
 
 namespace ks::game {
 
@@ -47,8 +49,8 @@ const std::vector<std::string>& headless_flags() {
 }
 
 const std::vector<std::string>& headless_option_names() {
-    static const std::vector<std::string> names{"headless", "autoplay", "level",  "seconds",
-                                                "seed",     "record",   "replay", "stats-json"};
+    static const std::vector<std::string> names{"headless", "autoplay", "level",      "seconds",    "seed",
+                                                "record",   "replay",   "stats-json", "logic-trace"};
     return names;
 }
 
@@ -79,6 +81,12 @@ Result<HeadlessOptions> parse_headless_options(const CommandLine& cl) {
     if (auto r = cl.get("record")) o.record = *r;
     if (auto r = cl.get("replay")) o.replay = paths::resolve_user_path(*r);
     if (auto r = cl.get("stats-json")) o.stats_json = *r;
+    if (auto r = cl.get("logic-trace")) {
+        if (r->empty())
+            return Error("--logic-trace needs a file name", Location("command line", 0, 0, "--logic-trace"),
+                         "e.g. --logic-trace run.trace, or - for standard output");
+        o.logic_trace = *r;
+    }
     if (!o.record.empty() && !o.replay.empty())
         return Error("--record and --replay cannot be used together", Location("command line"),
                      "record a run first, then replay that file in a second run");
@@ -116,6 +124,12 @@ Result<HeadlessStats> run_headless(const HeadlessOptions& options) {
     }
     if (options.on_start)
         if (auto started = options.on_start(*level, game); !started) return started.error();
+    std::optional<LogicTraceWriter> trace;
+    if (!options.logic_trace.empty()) {
+        auto opened = LogicTraceWriter::open(options.logic_trace, *level, game.settings().step);
+        if (!opened) return opened.error();
+        trace.emplace(std::move(*opened));
+    }
     Recording record;
     record.seed = seed;
     record.level = options.level.string();
@@ -137,6 +151,8 @@ Result<HeadlessStats> run_headless(const HeadlessOptions& options) {
         if (!options.record.empty()) record.inputs.push_back(input);
         game.step(input);
         ++steps;
+        if (trace)
+            if (auto written = trace->write(game); !written) return written.error();
         if (options.after_step)
             if (auto observed = options.after_step(game); !observed) return observed.error();
     }

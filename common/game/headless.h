@@ -1,6 +1,6 @@
 #pragma once
 // Runs the game without a window: `killswitch --headless --level FILE [--seconds S] [--seed N] [--autoplay]
-// [--record FILE | --replay FILE] [--stats-json FILE|-]`. The runtime's main calls
+// [--record FILE | --replay FILE] [--stats-json FILE|-] [--logic-trace FILE|-]`. The runtime's main calls
 //   auto options = ks::game::parse_headless_options(command_line);   // Result<HeadlessOptions>
 //   auto stats = ks::game::run_headless(*options);                     // Result<HeadlessStats>
 // and returns exit code 0 on success (print stats->summary()). Without --autoplay or --replay the player
@@ -24,6 +24,8 @@ struct HeadlessOptions {
     std::uint64_t seed = 1;
     bool autoplay = false;
     std::filesystem::path record, replay, stats_json; // stats_json "-" = stdout
+    std::filesystem::path
+        logic_trace; // every logic event and action, a line each (logic_trace.h); "-" = stdout
     // Observers a driver adds (the runtime's --audio-out recorder): called once the level and game exist,
     // after every step, and once at the end (the game in its final state). An error stops the run and is
     // returned.

@@ -55,6 +55,7 @@ void LevelLogic::fire(LinkRange range, level::LinkEvent event) {
 }
 
 void LevelLogic::fire_entity(int entity_id, level::LinkEvent event) {
+    record_event({LogicEnd::Kind::Entity, entity_id}, event);
     if (entity_links_.empty()) return;
     if (auto it = entity_links_.find(entity_id); it != entity_links_.end()) fire(it->second, event);
 }
@@ -91,6 +92,26 @@ bool LevelLogic::next_ready(std::uint32_t& link) {
     link = ready_[ready_head_++];
     ++spent_;
     return true;
+}
+
+void LevelLogic::record_event(LogicEnd source, level::LinkEvent event) {
+    LogicRecord r;
+    r.step = core_.steps;
+    r.event = event;
+    r.source = source;
+    records_.push_back(r);
+}
+
+void LevelLogic::record_action(const LogicLink& link, int index) {
+    LogicRecord r;
+    r.step = core_.steps;
+    r.is_action = true;
+    r.event = link.event;
+    r.action = link.action;
+    r.source = link.source_end;
+    r.target = link.target_end;
+    r.link = index;
+    records_.push_back(r);
 }
 
 void LevelLogic::report(std::string problem) {

@@ -8,6 +8,7 @@
 // zero-delay loop is cut off there and reported), at most kMaxPending wait.
 #include "core/math.h"
 #include "game/game_core.h"
+#include "game/logic_record.h"
 #include "game/spawners.h"
 #include "geometry/transform.h"
 #include "level/level.h"
@@ -47,7 +48,8 @@ struct LogicLink {
     std::uint32_t target_index = 0;
     std::int64_t delay_steps = 0; // the link's delay rounded to whole steps
     bool once = false;
-    bool fired = false; // a once link that has fired
+    bool fired = false;              // a once link that has fired
+    LogicEnd source_end, target_end; // for logic records: the link's owner and what it acts on
 };
 
 struct LinkRange {
@@ -149,6 +151,11 @@ class LevelLogic {
     std::span<const Pending> pending() const { return pending_; }
     bool uses_locks() const { return uses_locks_; }
 
+    // The observer hook (logic_record.h): this step's events and actions, in order, and any run between
+    // steps since. Cleared by Game::step; the game never reads them.
+    std::span<const LogicRecord> records() const { return records_; }
+    void clear_records() { records_.clear(); }
+
   private:
     // Schedules every link in `range` whose event is `event`: a zero-delay link runs in this step, the
     // others wait in the queue. A fired once link is skipped.
@@ -168,6 +175,8 @@ class LevelLogic {
     void test_triggers();
     bool trigger_holds(const TriggerState& t) const;
     void apply_action(const LogicLink& link);
+    void record_event(LogicEnd source, level::LinkEvent event);
+    void record_action(const LogicLink& link, int index);
     void complete_objective_at(std::size_t index);
     void check_kill_objectives();
 
@@ -191,6 +200,7 @@ class LevelLogic {
     std::uint32_t sequence_ = 0;
     std::int64_t dropped_ = 0;
     std::vector<std::string> problems_;
+    std::vector<LogicRecord> records_;
     std::vector<bool> robot_dead_; // by robot index: its on_death has been seen (grows with the robots)
     bool started_ = false;
     bool overflow_reported_ = false, pending_full_reported_ = false; // said once, not every step

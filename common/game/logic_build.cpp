@@ -60,6 +60,7 @@ bool resolve_link(const level::Link& link, const level::Level& level, const leve
     switch (level::target_kind(*action)) {
     case level::TargetKind::Level:
         out.target = LogicTarget::Level;
+        out.target_end = {LogicEnd::Kind::Level, -1};
         return true;
     case level::TargetKind::Objective: {
         const auto& objectives = level.objectives;
@@ -68,6 +69,7 @@ bool resolve_link(const level::Link& link, const level::Level& level, const leve
         if (it == objectives.end()) return problem = "no such objective", false;
         out.target = LogicTarget::Objective;
         out.target_index = static_cast<std::uint32_t>(it - objectives.begin());
+        out.target_end = {LogicEnd::Kind::Objective, static_cast<int>(out.target_index)};
         return true;
     }
     case level::TargetKind::Entity:
@@ -108,6 +110,7 @@ bool resolve_link(const level::Link& link, const level::Level& level, const leve
     }
     if (!index) return problem = "the target is not in the game (an animation dummy?)", false;
     out.target_index = *index;
+    out.target_end = {LogicEnd::Kind::Entity, target.id};
     return true;
 }
 
@@ -136,7 +139,7 @@ void LevelLogic::build(const level::Level& level) {
                           messages_,
                           sounds_};
     auto add_links = [&](const std::vector<level::Link>& links, std::span<const level::LinkEvent> emitted,
-                         std::string_view owner) {
+                         std::string_view owner, LogicEnd owner_end) {
         LinkRange range{static_cast<std::uint32_t>(links_.size()), 0};
         for (const level::Link& link : links) {
             if (range.count >= static_cast<std::uint32_t>(level::kMaxLinks)) break;
@@ -153,6 +156,7 @@ void LevelLogic::build(const level::Level& level) {
             }
             if (resolved.action == LinkAction::Lock || resolved.action == LinkAction::Unlock)
                 uses_locks_ = true;
+            resolved.source_end = owner_end;
             links_.push_back(resolved);
             ++range.count;
         }
@@ -182,13 +186,15 @@ void LevelLogic::build(const level::Level& level) {
     for (std::size_t i = 0; i < level.objectives.size(); ++i) {
         const std::array events{level::kObjectiveEvent};
         objectives_[i].links =
-            add_links(level.objectives[i].links, events, "objective \"" + level.objectives[i].id + "\"");
+            add_links(level.objectives[i].links, events, "objective \"" + level.objectives[i].id + "\"",
+                      {LogicEnd::Kind::Objective, static_cast<int>(i)});
     }
     const std::array level_events{level::kLevelEvent};
-    level_links_ = add_links(level.links, level_events, "the level");
+    level_links_ = add_links(level.links, level_events, "the level", {LogicEnd::Kind::Level, -1});
     for (const level::Entity& e : level.entities) {
         if (e.links.empty()) continue;
-        const LinkRange range = add_links(e.links, level::entity_events(e.type()), level::entity_subject(e));
+        const LinkRange range = add_links(e.links, level::entity_events(e.type()), level::entity_subject(e),
+                                          {LogicEnd::Kind::Entity, e.id});
         if (range.count > 0) entity_links_[e.id] = range;
     }
     ready_.reserve(2 * static_cast<std::size_t>(LevelLogic::kMaxActionsPerStep));

@@ -18,7 +18,10 @@ using level::LinkEvent;
 
 void LevelLogic::step(float dt) {
     begin_step();
-    if (!std::exchange(started_, true)) fire(level_links_, LinkEvent::OnStart);
+    if (!std::exchange(started_, true)) {
+        record_event({LogicEnd::Kind::Level, -1}, LinkEvent::OnStart);
+        fire(level_links_, LinkEvent::OnStart);
+    }
     if (message_.visible()) message_.time_left = std::max(0.0f, message_.time_left - dt);
     test_triggers();
     run_cascade(0);
@@ -36,6 +39,7 @@ void LevelLogic::run_cascade(std::size_t cursor) {
         if (cursor < core_.events.size()) continue; // a completed objective said so: its events come first
         std::uint32_t link = 0;
         if (!next_ready(link)) return;
+        record_action(links_[link], static_cast<int>(link));
         apply_action(links_[link]);
     }
 }
@@ -175,6 +179,7 @@ void LevelLogic::complete_objective_at(std::size_t index) {
     ObjectiveState& o = objectives_[index];
     if (o.completed) return;
     o.completed = true;
+    record_event({LogicEnd::Kind::Objective, static_cast<int>(index)}, LinkEvent::OnComplete);
     core_.events.push_back({EventType::ObjectiveCompleted, player_.state().feet, Vec3(0.0f), -1,
                             static_cast<float>(index), o.id});
     fire(o.links, LinkEvent::OnComplete);
@@ -205,6 +210,7 @@ bool LevelLogic::run_action(level::LinkAction action, int target) {
         return false; // complete_objective names it
     case level::TargetKind::Level:
         link.target = LogicTarget::Level;
+        link.target_end = {LogicEnd::Kind::Level, -1};
         break;
     case level::TargetKind::Entity: {
         auto find = [&](const auto& records, LogicTarget kind, level::EntityType type) {
@@ -212,6 +218,7 @@ bool LevelLogic::run_action(level::LinkAction action, int target) {
                 if (records[i].entity_id != target) continue;
                 link.target = kind;
                 link.target_index = static_cast<std::uint32_t>(i);
+                link.target_end = {LogicEnd::Kind::Entity, target};
                 return level::entity_takes(type, action);
             }
             return false;
@@ -231,6 +238,7 @@ bool LevelLogic::run_action(level::LinkAction action, int target) {
     if (!core_.playing()) return true;
     reset_budget();
     const std::size_t cursor = core_.events.size();
+    record_action(link, -1);
     apply_action(link);
     run_cascade(cursor);
     check_won();

@@ -16,6 +16,7 @@ RuntimeOptions parse_runtime_help(const std::string& help_text) {
     o.screen = help_text.find("--screen") != std::string::npos;
     o.warp = help_text.find("--warp") != std::string::npos;
     o.camera = help_text.find("--camera") != std::string::npos;
+    o.logic_trace = help_text.find("--logic-trace") != std::string::npos;
     return o;
 }
 
@@ -40,6 +41,7 @@ std::vector<std::string> playtest_arguments(const std::filesystem::path& level,
                                             const RuntimeOptions& runtime) {
     std::vector<std::string> args = {"--level", level.string()};
     if (runtime.screen) args.insert(args.end(), {"--screen", "play"});
+    if (runtime.logic_trace) args.insert(args.end(), {"--logic-trace", "-"});
     if (start) {
         char text[128];
         if (runtime.warp || !runtime.camera) {

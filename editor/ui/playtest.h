@@ -21,9 +21,10 @@ struct PlayStart {
 // What the runtime's --help says it understands (asked once per play-test; the runtime is developed
 // alongside the editor, so the editor adapts instead of passing options it would reject).
 struct RuntimeOptions {
-    bool screen = false; // --screen play: straight into the game, no loading screen or menu
-    bool warp = false;   // --warp x,y,z,yaw,pitch: the player's feet and facing, degrees
-    bool camera = false; // --camera x,y,z,yaw,pitch: the older render-only view's eye
+    bool screen = false;      // --screen play: straight into the game, no loading screen or menu
+    bool warp = false;        // --warp x,y,z,yaw,pitch: the player's feet and facing, degrees
+    bool camera = false;      // --camera x,y,z,yaw,pitch: the older render-only view's eye
+    bool logic_trace = false; // --logic-trace -: the level logic's events and actions on stdout, into the log
 };
 RuntimeOptions parse_runtime_help(const std::string& help_text);
 // The runtime to start: $KS_PLAYTEST_COMMAND when set (tests substitute a recorder; a designer can point it
@@ -31,8 +32,9 @@ RuntimeOptions parse_runtime_help(const std::string& help_text);
 std::filesystem::path playtest_runtime(const std::filesystem::path& executable_dir);
 RuntimeOptions query_runtime_options(const std::filesystem::path& runtime);
 
-// The runtime's command line: --level TMP (+ --screen play) and, for Shift+F5, --warp x,y,z,yaw,0 with the
-// feet under the editor camera (or --camera at the eye when the runtime has no --warp).
+// The runtime's command line: --level TMP (+ --screen play, + --logic-trace - so the log lists what the
+// level's links do: docs/game.md, "Logic trace") and, for Shift+F5, --warp x,y,z,yaw,0 with the feet under
+// the editor camera (or --camera at the eye when the runtime has no --warp).
 std::vector<std::string> playtest_arguments(const std::filesystem::path& level,
                                             const std::optional<PlayStart>& start,
                                             const RuntimeOptions& runtime);

@@ -83,6 +83,7 @@ void GameApp::step_loader() {
     if (loader_.done()) {
         session_ = std::move(pending_);
         error_.clear();
+        logic_debug_.start(session_->level, *session_->game);
         apply_warp();
         if (loader_.then == Screen::Playing)
             enter_play();
@@ -189,7 +190,7 @@ void GameApp::fixed_update(double dt) {
     game::Input in = screen_ == Screen::Playing
                          ? input_.gather(events_.state(), options_, static_cast<float>(dt))
                          : game::Input{};
-    advance(in, static_cast<float>(dt));
+    if (!advance(in, static_cast<float>(dt))) return;
     if (g.phase() == game::Phase::Playing) session_->play_seconds += dt;
     if (g.phase() == game::Phase::Dead && g.death_camera().menu_ready && screen_ == Screen::Playing) {
         screen_ = Screen::Dead;
@@ -201,13 +202,16 @@ void GameApp::fixed_update(double dt) {
     }
 }
 
-void GameApp::advance(const game::Input& in, float dt) {
+bool GameApp::advance(const game::Input& in, float dt) {
+    if (!logic_debug_.may_step()) return false; // halted by the logic debugger (a pause waits too)
     auto& g = *session_->game;
     session_->view->before_step(g);
     g.step(in);
+    logic_debug_.after_step(g);
     session_->view->after_step(g, dt);
     session_->objective_flash.after_step(g, dt);
     if (session_->sounds) session_->sounds->after_step(g);
+    return true;
 }
 
 // What moves with no input: the world (play, the death camera), the loader's steps, a script's frames, a

@@ -72,10 +72,27 @@ void GameApp::handle_keys() {
         else if (screen_ == Screen::CustomLevels || screen_ == Screen::CampaignChoice)
             screen_ = return_to_;
     }
+    handle_logic_debug_keys();
     if (screen_ == Screen::Playing && session_ && session_->dojo_controller) {
         for (int k = 0; k <= 9; ++k)
             if (keys.take_press(GLFW_KEY_0 + k)) session_->dojo_controller->press(static_cast<char>('0' + k));
         if (keys.take_press(GLFW_KEY_TAB)) toggle_dojo_picking();
+    }
+}
+
+void GameApp::handle_logic_debug_keys() {
+    if (screen_ != Screen::Playing || !session_ || session_->dojo) return;
+    if (logic_debug_.handle_keys(events_.state(), logic_debug_visible_)) {
+        options_.logic_debugger = logic_debug_visible_;
+        options_dirty_ = true;
+        save_options_now();
+    }
+    const bool free_mouse = logic_debug_.wants_mouse(logic_debug_visible_);
+    if (free_mouse && input_.captured()) {
+        input_.release(shell_.window(), events_.state());
+        logic_debug_freed_mouse_ = true;
+    } else if (!free_mouse && std::exchange(logic_debug_freed_mouse_, false)) {
+        enter_play();
     }
 }
 
@@ -162,6 +179,8 @@ void GameApp::draw_world_overlay(float w, float h) {
         if (screen_ == Screen::Playing) {
             shell::draw_hud(fg, hud, shell::HudFonts{fonts.hud}, w, h);
             if (!session_->dojo) draw_logic_hud(fg, *session_->game, session_->objective_flash, fonts, w, h);
+            if (logic_debug_visible_ && !session_->dojo)
+                logic_debug_.draw(fg, *session_->game, session_->view->camera(), fonts, w, h);
             draw_hit_marker(fg, std::clamp(p.hit_marker / 0.3f, 0.0f, 1.0f), w, h);
             std::array<feedback::DamageArc, feedback::Feedback::kMaxArcs> arcs;
             const std::size_t n = session_->view->feedback().damage_arcs(p.yaw, p.eye(), arcs);
@@ -199,6 +218,7 @@ MenuAction GameApp::draw_screen(float w, float h) {
         bool changed = false;
         action = options_panel(options_, changed, fonts, w, h);
         options_dirty_ |= changed;
+        if (changed) logic_debug_visible_ = options_.logic_debugger;
         if (changed) apply_render_options();
         if (changed && audio_) audio_->apply_options(options_);
         break;

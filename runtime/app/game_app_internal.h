@@ -19,6 +19,7 @@
 #include "hud_feedback.h"
 #include "input_events.h"
 #include "level/level_io.h"
+#include "logic_debug_overlay.h"
 #include "logic_hud.h"
 #include "menu_style.h"
 #include "player_input.h"
@@ -91,6 +92,7 @@ class GameApp {
         std::error_code ec;
         save_unreadable_ = !campaign_save_ && std::filesystem::exists(campaign_save_path(), ec);
         apply_render_options();
+        logic_debug_visible_ = options_.logic_debugger;
         events_.install(shell_.window());
     }
 
@@ -108,6 +110,9 @@ class GameApp {
         std::filesystem::path audio_out; // --audio-out: record the mix to this WAV instead of playing it
         std::filesystem::path campaign;  // --campaign: start this campaign (else levels/campaign.json)
         bool start_campaign = false;     // --campaign given: play it from its first level at once
+        std::filesystem::path
+            logic_trace; // --logic-trace: the logic trace of each level played ("-": stdout)
+        std::optional<LogicBreak> logic_break; // --logic-break: the debugger shown, halting at this event
     };
     Result<void> start(const Automation& a);
     Result<void> set_up_scenario(const Automation& a, std::optional<Screen> screen);
@@ -119,8 +124,9 @@ class GameApp {
     void step_loader();
     void fixed_update(double dt);
     bool animating() const; // the shell draws frame after frame while true
-    // One game step with its view and sounds (every caller: play, warp, pause, the automation).
-    void advance(const game::Input& in, float dt);
+    // One game step with its view and sounds (every caller: play, warp, pause, the automation); false when
+    // the logic debugger holds the game.
+    bool advance(const game::Input& in, float dt);
     void update_audio(const shell::FrameInfo& info);
     void render(const shell::FrameInfo& info);
     void imgui(const shell::FrameInfo& info);
@@ -161,6 +167,8 @@ class GameApp {
     void apply_warp();
     void run_script(long long frame);
     void write_status(const shell::FrameInfo& info);
+    // F3 and the debugger's keys while playing; the mouse freed while it is halted (logic_debug_overlay.h).
+    void handle_logic_debug_keys();
     void write_logic_status(std::string& s) const;
     void write_campaign_status(std::string& s) const;
     // Real input drives the app: not a screenshot run, or a screenshot run driven by --input-script.
@@ -203,6 +211,9 @@ class GameApp {
     bool save_unreadable_ = false; // a save exists but did not read: kept aside before a new one is written
     std::vector<LevelGroup> custom_levels_;               // the custom level list, scanned when it opens
     const level::LevelFileEntry* picked_level_ = nullptr; // in custom_levels_: the one clicked this frame
+    LogicDebugOverlay logic_debug_;
+    bool logic_debug_visible_ = false;     // options_.logic_debugger, or --logic-break
+    bool logic_debug_freed_mouse_ = false; // the halted debugger released the mouse (taken back on resume)
     std::vector<render::MeshInstance> no_instances_;
     std::vector<render::Light> no_lights_;
 };

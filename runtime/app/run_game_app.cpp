@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 
 namespace ks::runtime {
 
@@ -45,6 +46,10 @@ void print_help() {
         "  --audio-out F.wav record the sound mix to a 48 kHz stereo WAV instead of playing it (with\n"
         "                    --screenshot --frames the frames are a fixed 1/60 s: the same run, the same "
         "file)\n"
+        "  --logic-trace F   write each level's logic events and actions as they happen (- = stdout; the\n"
+        "                    editor's play-test log shows them; format in docs/game.md, \"Logic trace\")\n"
+        "  --logic-break B   show the logic debugger (F3) and halt when the event fires: an entity id, an\n"
+        "                    event or ID:EVENT, e.g. 68:on_enter (F6 halt/resume, F7 one step, F8 break)\n"
         "  --input-script F  timed key/mouse events by frame (see runtime/model/input_script.h); with\n"
         "                    --screenshot the frames are a fixed 1/60 s, so the run is deterministic\n"
         "  --view MODEL      (renderer) one model on a turntable; --camera x,y,z,yaw,pitch: render-only "
@@ -52,7 +57,8 @@ void print_help() {
         "  --headless ...    run the game without a window (see killswitch --headless --help)\n"
         "  --version         print \"killswitch VERSION\" and exit\n"
         "controls: WASD/arrows move, mouse looks, click shoots, Space jumps, E interacts, Esc pauses, M "
-        "mutes\n"
+        "mutes,\n"
+        "          F3 shows the logic debugger\n"
         "options file: $XDG_CONFIG_HOME/killswitch/options.json (or ~/.config/killswitch/options.json)\n");
 }
 
@@ -97,6 +103,29 @@ int run_game_app(const CommandLine& cl, const shell::ShellConfig& shell_config) 
             return 2;
         }
         automation.audio_out = paths::resolve_user_path(*out);
+    }
+    if (auto trace = cl.get("logic-trace")) {
+        if (trace->empty()) {
+            log::error(
+                "--logic-trace: give a file name, e.g. --logic-trace run.trace, or - for standard output");
+            return 2;
+        }
+        automation.logic_trace =
+            *trace == "-" ? std::filesystem::path("-") : paths::resolve_user_path(*trace);
+        // Refused before the window opens, as the headless run refuses it.
+        if (automation.logic_trace != "-" && !std::ofstream(automation.logic_trace)) {
+            log::error(automation.logic_trace.string(),
+                       ": cannot write the logic trace (give --logic-trace a file in a folder that exists)");
+            return 2;
+        }
+    }
+    if (auto spec = cl.get("logic-break")) {
+        auto parsed = parse_logic_break(*spec);
+        if (!parsed) {
+            log::error(parsed.error().str());
+            return 2;
+        }
+        automation.logic_break = *parsed;
     }
     if (auto warp = cl.get("warp")) {
         const Result<PoseArgument> pose = parse_pose(*warp);

@@ -271,6 +271,9 @@ MenuAction options_panel(Options& o, bool& changed, const shell::Fonts& fonts, f
     label("Mute (M)");
     changed |= ImGui::Checkbox("##mute", &o.muted);
     ui::record_button("Mute (M)");
+    label("Logic debugger (F3)");
+    changed |= ImGui::Checkbox("##logic_debugger", &o.logic_debugger);
+    ui::record_button("Logic debugger (F3)");
     ImGui::SetCursorPosY(std::max(bottom, ImGui::GetCursorPosY()));
     ImGui::SetCursorPosX(40 * s);
     ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(90, 100, 110, 255));

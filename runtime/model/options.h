@@ -45,6 +45,7 @@ struct Options {
     float effects_volume = 1.0f;
     float ambience_volume = 0.7f;
     bool muted = false;
+    bool logic_debugger = false; // the in-game logic debugger shown (F3)
     // Controls: the keys of every action (key_bindings.h), and the gamepad's look speed (multiplies
     // GamepadInput::kLookRate) and its sticks' radial dead zone (a fraction of full tilt).
     Bindings bindings;
@@ -79,6 +80,7 @@ inline std::string options_to_json(const Options& o) {
     j["effects_volume"] = o.effects_volume;
     j["ambience_volume"] = o.ambience_volume;
     j["muted"] = o.muted;
+    j["logic_debugger"] = o.logic_debugger;
     j["bindings"] = bindings_to_json(o.bindings);
     j["pad_look_sensitivity"] = o.pad_look_sensitivity;
     j["pad_dead_zone"] = o.pad_dead_zone;
@@ -133,6 +135,7 @@ inline Options options_from_json(const std::string& text, std::vector<std::strin
                                             : QualityOption::Auto;
         in.flag("invert_y", o.invert_y);
         in.flag("muted", o.muted);
+        in.flag("logic_debugger", o.logic_debugger);
         if (const jsonio::Json* bindings = in.get("bindings")) {
             std::vector<std::string> binding_problems;
             o.bindings = bindings_from_json(nlohmann::json(*bindings), binding_problems);

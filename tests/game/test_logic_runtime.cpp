@@ -1,13 +1,18 @@
 // The level logic's machinery: delays counted in whole steps, once links, objectives and the win, a
 // zero-delay loop cut off without a hang, links an unvalidated level cannot resolve, and the logic's state
-// in the state hash (the same run twice is the same hash).
+// in the state hash (the same run twice is the same hash); the logic's records and the stored trace of
+// levels/lockdown.json.
 #include "game/autoplay.h"
+#include "game/headless.h"
+#include "game/logic_trace.h"
 #include "game_test_levels.h"
 #include "level/level_io.h"
+#include "test_support.h"
 
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <sstream>
 
 using namespace ks;
 using namespace ks::game;
@@ -214,4 +219,79 @@ TEST_CASE(
         return std::pair(g->steps(), g->state_hash());
     };
     CHECK(play(*v1) == play(*v2));
+}
+
+TEST_CASE("the logic records every event and action with its step, source, target and link") {
+    auto lv = flat_level();
+    add_message(lv, "Hello", "hello");
+    auto& t = lv.add(level::EntityType::Trigger, Vec3(0, 0, -10), "Gate");
+    t.links = {link("on_enter", "Hello", "show", 0.5f)};
+    const int gate = t.id, hello = lv.entities[1].id;
+    auto g = make_game(lv);
+    g->step({});
+    REQUIRE(g->logic().records().size() == 1); // the level's on_start, with no link
+    CHECK(g->logic().records()[0].source.kind == LogicEnd::Kind::Level);
+    g->teleport_player(Vec3(0, 0, -10), 0.0f);
+    g->step({});
+    REQUIRE(g->logic().records().size() == 1); // cleared each step: only this step's on_enter
+    const LogicRecord enter = g->logic().records()[0];
+    CHECK_FALSE(enter.is_action);
+    CHECK(enter.event == level::LinkEvent::OnEnter);
+    CHECK(enter.source == LogicEnd{LogicEnd::Kind::Entity, gate});
+    CHECK(enter.step == 2);
+    for (int i = 0; i < 59; ++i) g->step({});
+    CHECK(g->logic().records().empty());
+    g->step({}); // 60 steps after the event: the delayed show
+    REQUIRE(g->logic().records().size() == 1);
+    const LogicRecord show = g->logic().records()[0];
+    CHECK(show.is_action);
+    CHECK(show.action == level::LinkAction::Show);
+    CHECK(show.source == LogicEnd{LogicEnd::Kind::Entity, gate});
+    CHECK(show.target == LogicEnd{LogicEnd::Kind::Entity, hello});
+    CHECK(show.step == 62);
+    CHECK(g->logic().links()[static_cast<std::size_t>(show.link)].action == level::LinkAction::Show);
+    CHECK(logic_trace_line(show, LogicTraceNames(lv), 1.0 / 120.0) ==
+          "62 0.517 action show trigger:" + std::to_string(gate) +
+              ":\"Gate\" message:" + std::to_string(hello) + ":\"Hello\" 0");
+    // An action run from outside the links has no source and no link.
+    REQUIRE(g->run_action(level::LinkAction::Disable, gate));
+    REQUIRE(g->logic().records().size() == 2);
+    CHECK(g->logic().records()[1].link == -1);
+    CHECK(g->logic().records()[1].source.kind == LogicEnd::Kind::None);
+}
+
+// The stored trace is what the bot's run of levels/lockdown.json with seed 1 does, event for event. When a
+// change to the game, the bot or the level changes it on purpose, look at the difference, then write the new
+// one with (one line):
+//   build/bin/killswitch --headless --autoplay --seed 1 --level levels/lockdown.json
+//       --logic-trace tests/data/logic/lockdown_seed1.trace
+TEST_CASE(
+    "the logic trace of levels/lockdown.json with seed 1 is the stored one; an unwritable file is an error") {
+    ks::test::ScratchDir dir;
+    HeadlessOptions o;
+    o.level = ks::test::source_dir() / "levels" / "lockdown.json";
+    o.seconds = 60.0;
+    o.autoplay = true;
+    o.logic_trace = dir / "lockdown.trace";
+    auto stats = run_headless(o);
+    REQUIRE_MESSAGE(stats.ok(), stats.error().str());
+    const std::string stored = ks::test::read_file(ks::test::data_dir() / "logic" / "lockdown_seed1.trace");
+    const std::string traced = ks::test::read_file(o.logic_trace);
+    std::istringstream a(stored), b(traced);
+    std::string want, got;
+    int line = 0;
+    while (std::getline(a, want)) {
+        ++line;
+        if (!std::getline(b, got)) got = "(the trace ends)";
+        REQUIRE_MESSAGE(want == got, "line ", line, " differs: the stored trace says\n  ", want,
+                        "\nthe run says\n  ", got,
+                        "\n(if the change is meant, update the file: see this test's comment)");
+    }
+    CHECK_MESSAGE(!std::getline(b, got), "the run traces more than the stored trace: ", got);
+
+    o.logic_trace = dir / "no_such_folder" / "run.trace";
+    auto refused = run_headless(o);
+    REQUIRE_FALSE(refused.ok());
+    CHECK(ks::test::contains_text(refused.error().str(), (dir / "no_such_folder" / "run.trace").string()));
+    CHECK(ks::test::contains_text(refused.error().str(), "cannot write the logic trace"));
 }

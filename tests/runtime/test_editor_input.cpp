@@ -171,7 +171,7 @@ TEST_CASE("editor input: F5 plays the current document in the runtime, Shift+F5 
     test::write_file(fake,
                      "#!/bin/sh\n"
                      "if [ \"$1\" = --help ]; then echo 'usage: killswitch --level FILE --screen play --warp "
-                     "x,y,z,yaw,pitch'; exit 0; fi\n"
+                     "x,y,z,yaw,pitch --logic-trace FILE|-'; exit 0; fi\n"
                      "echo \"$@\" > '" +
                          (dir / "args.txt").string() +
                          "'\n"
@@ -216,6 +216,7 @@ TEST_CASE("editor input: F5 plays the current document in the runtime, Shift+F5 
     CHECK(args.find("--level " + command[2]) == 0);
     CHECK(args.find("--screen play") != std::string::npos);
     CHECK(args.find("--warp") == std::string::npos);
+    CHECK(args.find("--logic-trace -") != std::string::npos); // the logic's events into the play-test log
     auto played = level::load_level_file(dir / "played.json");
     REQUIRE(played);
     CHECK(played->entities.size() == entities); // the unsaved document, without the robot

@@ -1,5 +1,6 @@
 // `killswitch --headless --campaign FILE`: the CI's proof that a campaign can be won. Exit 0 when every level
-// was won, 1 naming the level lost, 2 on bad options or a bad file. Needs no display.
+// was won, 1 naming the level lost, 2 on bad options or a bad file. Needs no display. Also the logic trace
+// options of both modes (--logic-trace, --logic-break), refused before a window would open.
 #include "core/files.h"
 #include "test_support.h"
 
@@ -56,4 +57,26 @@ TEST_CASE("headless campaign CLI: a lost level exits 1 naming it; bad input exit
     auto help = killswitch("--headless --help");
     CHECK(help.exit_code == 0);
     CHECK(help.output.find("--headless --campaign FILE") != std::string::npos);
+}
+
+TEST_CASE(
+    "logic trace CLI: --logic-trace - writes the trace to stdout; a bad file or --logic-break exits 2") {
+    auto run = killswitch("--headless --autoplay --level " +
+                          (test::source_dir() / "levels" / "lockdown.json").string() + " --logic-trace -");
+    INFO(run.output);
+    CHECK(run.exit_code == 0);
+    CHECK(run.output.find("# killswitch logic trace 1: step time kind what source target link") !=
+          std::string::npos);
+    CHECK(run.output.find(" event on_enter trigger:68:\"Hall entry\" - -") != std::string::npos);
+
+    test::ScratchDir dir;
+    const std::string unwritable = (dir / "no_folder" / "run.trace").string();
+    for (const std::string mode : {"--headless ", ""}) {
+        auto refused = killswitch(mode + "--logic-trace " + unwritable);
+        CHECK(refused.exit_code == 2);
+        CHECK(refused.output.find(unwritable) != std::string::npos);
+    }
+    auto bad_break = killswitch("--logic-break 68:on_fly");
+    CHECK(bad_break.exit_code == 2);
+    CHECK(bad_break.output.find("\"on_fly\" is not an event") != std::string::npos);
 }

@@ -26,6 +26,7 @@ TEST_CASE("options: save then load gives the same options, in a folder that did 
     o.effects_volume = 0.5f;
     o.ambience_volume = 0.0f;
     o.muted = true;
+    o.logic_debugger = true;
     REQUIRE(runtime::save_options(path, o).ok());
     CHECK(runtime::load_options(path) == o);
     // Saving again replaces the file whole (no temporary left beside it).
@@ -74,6 +75,7 @@ TEST_CASE("options: bad files give defaults (per field) and a warning naming the
         {R"({"effects_volume": -0.1})", "effects_volume"},
         {R"({"ambience_volume": "loud"})", "ambience_volume"},
         {R"({"muted": 1})", "muted"},
+        {R"({"logic_debugger": "on"})", "logic_debugger"},
     };
     for (const auto& c : cases) {
         CAPTURE(c.text);
