@@ -86,8 +86,7 @@ Result<void> make_door(Output& out) {
     // Painted steel casings (the diamond-plate relief under a light grey enamel). Bare metal here read as a
     // near-black slab: a dark metallic surface only reflects its surroundings, and the fast path's per-vertex
     // light has little of them to reflect.
-    const int frame_mat =
-        model.add_material(textured("door_frame", "metal", vec4(0.66f, 0.68f, 0.72f, 1.0f), 0.12f, 1.0f));
+    const int frame_mat = model.add_material(textured("door_frame", "metal", vec4(1.0f), 0.0f, 1.0f));
     const int handle_mat = model.add_material(plain("door_handle", vec3(0.7f), 1.0f, 0.25f));
     const int lamp =
         model.add_material(plain("door_lamp", vec3(0.1f, 0.4f, 0.15f), 0.0f, 0.3f, vec3(0.2f, 1.0f, 0.35f)));
