@@ -46,29 +46,42 @@ ViewModelLayer::~ViewModelLayer() {
 }
 
 Result<void> ViewModelLayer::begin(int width, int height, int samples, const PixelRect& rect) {
-    if (!multisampled_ || multisampled_->format().samples != samples)
-        multisampled_ =
-            std::make_unique<RenderTarget>(RenderTargetFormat{ColourStorage::Renderbuffer, samples});
-    if (auto made = multisampled_->ensure(width, height); !made) return made;
+    samples_ = samples;
+    if (samples > 1) {
+        if (!multisampled_ || multisampled_->format().samples != samples)
+            multisampled_ =
+                std::make_unique<RenderTarget>(RenderTargetFormat{ColourStorage::Renderbuffer, samples});
+        if (auto made = multisampled_->ensure(width, height); !made) return made;
+    }
     if (auto made = resolved_.ensure(width, height); !made) return made;
     width_ = width;
     height_ = height;
-    multisampled_->bind();
+    if (samples > 1)
+        multisampled_->bind();
+    else
+        resolved_.bind();
     glViewport(0, 0, width, height);
     glEnable(GL_SCISSOR_TEST);
-    glScissor(rect.x, rect.y, rect.width, rect.height);
+    // Two pixels wider than the composited rectangle: the edge filter reads one pixel around each of its
+    // pixels, and texels outside the cleared area hold an earlier frame.
+    const int x0 = std::max(0, rect.x - 2), y0 = std::max(0, rect.y - 2);
+    glScissor(x0, y0, std::min(width, rect.x + rect.width + 2) - x0,
+              std::min(height, rect.y + rect.height + 2) - y0);
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glDepthMask(GL_TRUE);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glScissor(rect.x, rect.y, rect.width, rect.height);
     return ok();
 }
 
 void ViewModelLayer::composite(unsigned target_framebuffer, const PixelRect& rect) {
     glDisable(GL_SCISSOR_TEST);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampled_->framebuffer());
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolved_.framebuffer());
-    const int x1 = rect.x + rect.width, y1 = rect.y + rect.height;
-    glBlitFramebuffer(rect.x, rect.y, x1, y1, rect.x, rect.y, x1, y1, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    if (samples_ > 1) {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampled_->framebuffer());
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolved_.framebuffer());
+        const int x1 = rect.x + rect.width, y1 = rect.y + rect.height;
+        glBlitFramebuffer(rect.x, rect.y, x1, y1, rect.x, rect.y, x1, y1, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, target_framebuffer);
     glViewport(0, 0, width_, height_);
     glEnable(GL_SCISSOR_TEST);
@@ -78,6 +91,8 @@ void ViewModelLayer::composite(unsigned target_framebuffer, const PixelRect& rec
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     composite_.use();
+    glUniform1i(composite_.location("u_edge_filter"), samples_ > 1 ? 0 : 1);
+    glUniform2i(composite_.location("u_last_texel"), width_ - 1, height_ - 1);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, resolved_.texture());
     glBindSampler(0, 0);
