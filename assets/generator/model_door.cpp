@@ -83,8 +83,10 @@ Result<void> make_door(Output& out) {
     leaf_material.emissive_texture = "door_emissive";
     leaf_material.emissive = vec3(1.0f);
     const int leaf = model.add_material(leaf_material);
-    const int frame_mat =
-        model.add_material(textured("door_frame", "metal", vec4(0.42f, 0.44f, 0.48f, 1.0f), 1.0f, 1.0f));
+    // Painted steel casings (the diamond-plate relief under a light grey enamel). Bare metal here read as a
+    // near-black slab: a dark metallic surface only reflects its surroundings, and the fast path's per-vertex
+    // light has little of them to reflect.
+    const int frame_mat = model.add_material(textured("door_frame", "metal", vec4(1.0f), 0.0f, 1.0f));
     const int handle_mat = model.add_material(plain("door_handle", vec3(0.7f), 1.0f, 0.25f));
     const int lamp =
         model.add_material(plain("door_lamp", vec3(0.1f, 0.4f, 0.15f), 0.0f, 0.3f, vec3(0.2f, 1.0f, 0.35f)));

@@ -98,8 +98,7 @@ Result<void> make_robot(Output& out) {
     const int paint = model.add_material(textured("robot_paint", "robot", vec4(1.0f), 1.0f, 1.0f));
     // Body parts tile the paint map once per 2 units so panel seams stay sparse on small parts.
     const float uv = 0.5f;
-    const int dark =
-        model.add_material(textured("robot_joint", "metal", vec4(vec3(0.22f), 1.0f), 1.0f, 1.0f));
+    const int dark = model.add_material(textured("robot_joint", "metal", vec4(vec3(0.5f), 1.0f), 0.5f, 1.0f));
     const int rubber = model.add_material(plain("robot_rubber", vec3(0.07f), 0.0f, 0.88f));
     const int visor = model.add_material(
         plain("robot_visor", vec3(0.15f, 0.02f, 0.02f), 0.0f, 0.2f, vec3(1.0f, 0.12f, 0.04f)));

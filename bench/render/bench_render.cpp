@@ -10,10 +10,10 @@
 #include "level/level_io.h"
 #include "render/asset_library.h"
 #include "render/level_scene.h"
-#include "shell/offscreen_context.h"
 #include "render/scene_renderer.h"
 #include "render/texture_cache.h"
 #include "render/view_model.h"
+#include "shell/offscreen_context.h"
 
 #include <epoxy/gl.h>
 
@@ -46,6 +46,7 @@ struct Variant {
     bool fast_level_shader = true;
     bool doors_occlude = true;
     bool fast_trilinear = false;
+    int view_model_msaa = render::RendererSettings{}.view_model_msaa;
 };
 
 struct Measurement {
@@ -95,6 +96,7 @@ void measure(Measurement& m, shell::OffscreenContext& ctx, render::AssetLibrary&
     settings.depth_prepass = v.depth_prepass;
     settings.fast_level_shader = v.fast_level_shader;
     settings.fast_trilinear = v.fast_trilinear;
+    settings.view_model_msaa = v.view_model_msaa;
     scene.set_doors_occlude(v.doors_occlude);
     const float default_anisotropy = assets.textures().max_anisotropy();
     if (v.anisotropy > 0.0f) assets.textures().set_max_anisotropy(v.anisotropy);
@@ -256,6 +258,13 @@ int run(int argc, const char* const* argv) {
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.fast_level_shader = false; });
     with("fast, scale 0.5, trilinear",
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.fast_trilinear = true; });
+    // The rifle's own antialiased layer (render/view_model_layer.h) against drawing it into the scene.
+    with("fast, scale 0.5, aliased rifle",
+         [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.view_model_msaa = 0; });
+    with("fast, scale 1, aliased rifle",
+         [](Variant& v) { v.quality = Q::Fast, v.render_scale = 1.0f, v.view_model_msaa = 0; });
+    with("fast, scale 0.5, rifle msaa 4x",
+         [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.view_model_msaa = 4; });
     with("fast, 0.5, session 2", [](Variant& v) {
         v.quality = Q::Fast, v.render_scale = 0.5f, v.occlusion_culling = false, v.depth_prepass = false,
         v.fast_level_shader = false, v.doors_occlude = false;

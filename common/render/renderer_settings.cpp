@@ -54,6 +54,14 @@ std::vector<std::string> apply_environment_overrides(RendererSettings& settings,
             warnings.push_back("KS_LIGHTMAP_FLOAT='" + std::string(v) +
                                "' is not 0 or 1; keeping the 8-bit light map");
     }
+    if (const auto v = value("KS_VIEW_MODEL_MSAA"); !v.empty()) {
+        if (v == "0" || v == "1" || v == "2" || v == "4" || v == "8")
+            settings.view_model_msaa = v[0] - '0';
+        else
+            warnings.push_back("KS_VIEW_MODEL_MSAA='" + std::string(v) +
+                               "' is not 0, 1, 2, 4 or 8; keeping " +
+                               std::to_string(settings.view_model_msaa));
+    }
     if (const auto v = value("KS_SHADER_DIR"); !v.empty()) settings.shader_dir = std::string(v);
     if (const auto v = value("KS_SHADER_HOT_RELOAD"); !v.empty())
         settings.shader_hot_reload = v == "0" ? 0 : 1;

@@ -20,6 +20,12 @@ inline constexpr float kSoftwareRenderScale = 0.5f;
 
 struct RendererSettings {
     int msaa_samples = 0; // 0: draw straight into the bound framebuffer; 2/4/8: multisampled target
+    // The first-person view model's own layer at the target's full resolution, blended over the scene
+    // (render/view_model_layer.h) whenever the scene itself is not multisampled at full size: smooth rifle
+    // edges at a reduced render scale. 1: one sample per pixel and a silhouette filter (the default: cheap on
+    // llvmpipe); 2/4/8: multisampled; 0: drawn into the scene's target, aliased
+    // (KS_VIEW_MODEL_MSAA=0|1|2|4|8).
+    int view_model_msaa = 1;
     int shadow_map_size = 2048;
     bool shadows = true;
     bool surface_detail = true; // normal and bump (height) maps; off: the geometric normal only

@@ -89,6 +89,10 @@ Result<void> SceneRenderer::init() {
           std::tuple{&particle_program(), &particle_, std::function<void(ShaderProgram&)>(particle_units)},
           std::tuple{&line_program(), &line_, std::function<void(ShaderProgram&)>()}})
         if (auto r = shaders_->add(*files, *target, units); !r) return r.error();
+    if (auto r = shaders_->add(view_model_composite_program(), view_model_layer_.program(),
+                               [](ShaderProgram& p) { glUniform1i(p.location("u_layer"), 0); });
+        !r)
+        return r.error();
 
     glGenBuffers(1, &instance_buffer_);
 
@@ -194,6 +198,52 @@ void SceneRenderer::ensure_scale_target(int width, int height) {
     }
 }
 
+geometry::Camera SceneRenderer::view_model_camera(const SceneFrame& frame) const {
+    geometry::Camera vm = frame.camera;
+    vm.near_plane = 0.01f;
+    vm.far_plane = 20.0f;
+    vm.fov_y = frame.view_model->fov_y;
+    return vm;
+}
+
+void SceneRenderer::draw_view_model(const SceneFrame& frame, FrameStats& stats) {
+    // Camera space -> world (so scene lights reach it), its own near plane and a cleared depth buffer so it
+    // never sinks into walls.
+    const Mat4 camera_to_world = glm::inverse(frame.camera.view());
+    for (const auto& inst : frame.view_model->instances) {
+        MeshInstance w = inst;
+        w.world = camera_to_world * inst.world;
+        view_world_.push_back(w);
+    }
+    glClear(GL_DEPTH_BUFFER_BIT);
+    cull_and_batch(frame, stats);
+    const geometry::Camera vm = view_model_camera(frame);
+    if (fast_)
+        draw_batches_fast(vm, frame, stats, true);
+    else
+        draw_batches(vm.projection() * vm.view(), vm.position, frame, stats, true);
+    view_world_.clear();
+}
+
+void SceneRenderer::draw_view_model_layer(const SceneFrame& frame, FrameStats& stats, unsigned target_fbo) {
+    const PixelRect rect = view_model_screen_rect(
+        frame.view_model->instances, view_model_camera(frame).projection(), frame.width, frame.height);
+    if (rect.empty()) return;
+    if (auto begun = view_model_layer_.begin(frame.width, frame.height, settings_.view_model_msaa, rect);
+        !begun) {
+        log::warn("view model MSAA ", settings_.view_model_msaa, "x layer unsupported (",
+                  begun.error().message, "); drawing it without antialiasing");
+        settings_.view_model_msaa = 0;
+        glDisable(GL_SCISSOR_TEST);
+        glBindFramebuffer(GL_FRAMEBUFFER, target_fbo);
+        glViewport(0, 0, frame.width, frame.height);
+        draw_view_model(frame, stats);
+        return;
+    }
+    draw_view_model(frame, stats);
+    view_model_layer_.composite(target_fbo, rect);
+}
+
 FrameStats SceneRenderer::render(const SceneFrame& frame) {
     FrameStats stats;
     if (settings_.shader_hot_reload > 0) poll_shaders();
@@ -248,27 +298,12 @@ FrameStats SceneRenderer::render(const SceneFrame& frame) {
     draw_particles(frame, stats);
     draw_debug(frame, stats);
 
-    if (frame.view_model && !frame.view_model->instances.empty()) {
-        // The view model: camera space -> world (so scene lights reach it), its own near plane and a
-        // cleared depth buffer so it never sinks into walls.
-        const Mat4 camera_to_world = glm::inverse(frame.camera.view());
-        for (const auto& inst : frame.view_model->instances) {
-            MeshInstance w = inst;
-            w.world = camera_to_world * inst.world;
-            view_world_.push_back(w);
-        }
-        glClear(GL_DEPTH_BUFFER_BIT);
-        cull_and_batch(frame, stats);
-        geometry::Camera vm = frame.camera;
-        vm.near_plane = 0.01f;
-        vm.far_plane = 20.0f;
-        vm.fov_y = frame.view_model->fov_y;
-        if (fast_)
-            draw_batches_fast(vm, frame, stats, true);
-        else
-            draw_batches(vm.projection() * vm.view(), vm.position, frame, stats, true);
-        view_world_.clear();
-    }
+    // The view model: in the scene's target when that is multisampled at full size, else in its own
+    // antialiased layer over the finished scene (below).
+    const bool view_model = frame.view_model && !frame.view_model->instances.empty();
+    const bool view_model_layer =
+        view_model && settings_.view_model_msaa > 0 && (settings_.msaa_samples == 0 || scaled);
+    if (view_model && !view_model_layer) draw_view_model(frame, stats);
 
     if (settings_.msaa_samples > 0) {
         // Resolve (same size), then scale up if the scene was drawn smaller.
@@ -277,6 +312,7 @@ FrameStats SceneRenderer::render(const SceneFrame& frame) {
     }
     if (scaled) scale_target_.blit_to(static_cast<GLuint>(target_fbo), frame.width, frame.height, true);
     glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target_fbo));
+    if (view_model_layer) draw_view_model_layer(frame, stats, static_cast<unsigned>(target_fbo));
     glViewport(0, 0, frame.width, frame.height);
     glBindVertexArray(0);
     glUseProgram(0);

@@ -14,6 +14,7 @@
 #include "render/shader_library.h"
 #include "render/shader_program.h"
 #include "render/shaders.h"
+#include "render/view_model_layer.h"
 
 #include <cstdint>
 #include <memory>
@@ -93,6 +94,9 @@ class SceneRenderer {
     void draw_particles(const SceneFrame& frame, FrameStats& stats);
     void draw_debug(const SceneFrame& frame, FrameStats& stats);
     void ensure_msaa_target(int width, int height);
+    geometry::Camera view_model_camera(const SceneFrame& frame) const;
+    void draw_view_model(const SceneFrame& frame, FrameStats& stats);
+    void draw_view_model_layer(const SceneFrame& frame, FrameStats& stats, unsigned target_fbo);
     std::uint64_t shadow_caster_hash(const std::vector<MeshInstance>& instances) const;
     void upload_instances();
 
@@ -111,6 +115,7 @@ class SceneRenderer {
     unsigned line_vao_ = 0, line_buffer_ = 0;
     unsigned shadow_fbo_ = 0, shadow_texture_ = 0;
     std::unique_ptr<RenderTarget> msaa_target_; // made for settings_.msaa_samples on first use
+    ViewModelLayer view_model_layer_;           // the view model's antialiased layer (view_model_msaa)
     std::uint64_t shadow_hash_ = 0;
     Mat4 shadow_matrix_{1.0f};
 

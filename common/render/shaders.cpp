@@ -34,9 +34,14 @@ const ProgramFiles& line_program() {
     static const ProgramFiles p{"line", "line.vert", "line.frag"};
     return p;
 }
+const ProgramFiles& view_model_composite_program() {
+    static const ProgramFiles p{"view_model_composite", "view_model_composite.vert",
+                                "view_model_composite.frag"};
+    return p;
+}
 std::vector<const ProgramFiles*> all_programs() {
     return {&pbr_program(),    &fast_program(),     &fast_level_program(), &fast_level_lit_program(),
-            &shadow_program(), &particle_program(), &line_program()};
+            &shadow_program(), &particle_program(), &line_program(),       &view_model_composite_program()};
 }
 
 std::filesystem::path default_shader_dir() {

@@ -5,6 +5,7 @@
 #include "test_support.h"
 
 #include <doctest/doctest.h>
+#include <stb_image.h>
 
 #include <algorithm>
 #include <cmath>
@@ -434,6 +435,58 @@ TEST_CASE("generated models carry the node names and dimensions the conventions 
         CHECK(hi.z - lo.z == doctest::Approx(1.0).epsilon(0.1));
         const glm::vec3 muzzle = world_matrix(doc, find_node(doc, "muzzle"))[3];
         CHECK(muzzle.z == doctest::Approx(lo.z).epsilon(0.02));
+        // Issue 28: the reference's orange and grey painted rifle, not a dark silhouette. Each material's
+        // geometry where its parts are: polymer grip and magazine below, orange from handguard to stock,
+        // steel at the muzzle, markings and a luminous sight post.
+        std::map<std::string, std::pair<glm::vec3, glm::vec3>> parts;
+        size_t triangles = 0;
+        for (const json& prim : doc["meshes"][0]["primitives"]) {
+            const json& a = doc["accessors"][prim["attributes"]["POSITION"].get<int>()];
+            parts[doc["materials"][prim["material"].get<int>()]["name"].get<std::string>()] = {
+                glm::vec3(a["min"][0], a["min"][1], a["min"][2]),
+                glm::vec3(a["max"][0], a["max"][1], a["max"][2])};
+            triangles += doc["accessors"][prim["indices"].get<int>()]["count"].get<size_t>() / 3;
+        }
+        for (const char* m : {"rifle_orange", "rifle_grey", "rifle_polymer", "rifle_steel", "rifle_decal",
+                              "rifle_lens", "rifle_sight"})
+            CHECK_MESSAGE(parts.count(m) == 1, "missing material " << m);
+        CHECK(triangles >= 4000);
+        CHECK(parts["rifle_polymer"].first.y < lo.y + 0.01f);
+        CHECK(parts["rifle_orange"].second.z - parts["rifle_orange"].first.z > 0.6f);
+        CHECK(parts["rifle_steel"].first.z < lo.z + 0.01f);
+        // The maps: orange paint is orange, grey paint a light neutral grey, polymer darker than both but not
+        // black, and the markings atlas has the contrast of legible print.
+        struct Stats {
+            glm::dvec3 mean_rgb{0.0};
+            double mean_luma = 0, luma_stddev = 0;
+        };
+        auto stats = [](const std::string& texture) {
+            int w = 0, h = 0, c = 0;
+            const std::string path = (committed() / "textures" / (texture + ".png")).string();
+            unsigned char* p = stbi_load(path.c_str(), &w, &h, &c, 3);
+            REQUIRE_MESSAGE(p != nullptr, "cannot read " << path);
+            Stats s;
+            double sum2 = 0;
+            const size_t n = static_cast<size_t>(w) * h;
+            for (size_t i = 0; i < n; ++i) {
+                const glm::dvec3 rgb(p[3 * i], p[3 * i + 1], p[3 * i + 2]);
+                const double luma = glm::dot(rgb, glm::dvec3(0.2126, 0.7152, 0.0722));
+                s.mean_rgb += rgb / static_cast<double>(n);
+                s.mean_luma += luma / static_cast<double>(n);
+                sum2 += luma * luma / static_cast<double>(n);
+            }
+            stbi_image_free(p);
+            s.luma_stddev = std::sqrt(std::max(0.0, sum2 - s.mean_luma * s.mean_luma));
+            return s;
+        };
+        const auto orange = stats("rifle_orange_basecolor"), grey = stats("rifle_grey_basecolor");
+        const auto polymer = stats("rifle_polymer_basecolor"), decals = stats("rifle_decals_basecolor");
+        CHECK(orange.mean_rgb.x > orange.mean_rgb.z + 120.0);
+        CHECK(grey.mean_luma > 90.0);
+        CHECK(std::abs(grey.mean_rgb.x - grey.mean_rgb.z) < 20.0);
+        CHECK(polymer.mean_luma > 45.0);
+        CHECK(polymer.mean_luma < grey.mean_luma - 30.0);
+        CHECK(decals.luma_stddev > 40.0);
     }
     SUBCASE("door leaves and doorway") {
         const json doc = load_model("door").doc;

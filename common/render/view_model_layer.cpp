@@ -1,0 +1,107 @@
+#include "render/view_model_layer.h"
+
+#include "render/gpu_mesh.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ks::render {
+
+PixelRect view_model_screen_rect(const std::vector<MeshInstance>& instances, const Mat4& projection,
+                                 int width, int height) {
+    float lo_x = 1e30f, lo_y = 1e30f, hi_x = -1e30f, hi_y = -1e30f;
+    for (const MeshInstance& inst : instances) {
+        if (!inst.mesh) continue;
+        const geometry::Aabb& b = inst.mesh->bounds();
+        for (int corner = 0; corner < 8; ++corner) {
+            const Vec3 local((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
+                             (corner & 4) ? b.max.z : b.min.z);
+            const Vec4 clip = projection * (inst.world * Vec4(local, 1.0f));
+            // A corner behind the eye projects nowhere useful: the whole target may be covered.
+            if (clip.w <= 1e-4f) return PixelRect{0, 0, width, height};
+            const float x = (clip.x / clip.w * 0.5f + 0.5f) * static_cast<float>(width);
+            const float y = (clip.y / clip.w * 0.5f + 0.5f) * static_cast<float>(height);
+            lo_x = std::min(lo_x, x);
+            lo_y = std::min(lo_y, y);
+            hi_x = std::max(hi_x, x);
+            hi_y = std::max(hi_y, y);
+        }
+    }
+    if (lo_x > hi_x) return {};
+    const int x0 = std::clamp(static_cast<int>(std::floor(lo_x)) - 1, 0, width);
+    const int y0 = std::clamp(static_cast<int>(std::floor(lo_y)) - 1, 0, height);
+    const int x1 = std::clamp(static_cast<int>(std::ceil(hi_x)) + 1, 0, width);
+    const int y1 = std::clamp(static_cast<int>(std::ceil(hi_y)) + 1, 0, height);
+    return PixelRect{x0, y0, x1 - x0, y1 - y0};
+}
+
+ViewModelLayer::ViewModelLayer() {
+    glGenVertexArrays(1, &vao_);
+}
+
+ViewModelLayer::~ViewModelLayer() {
+    glDeleteVertexArrays(1, &vao_);
+}
+
+Result<void> ViewModelLayer::begin(int width, int height, int samples, const PixelRect& rect) {
+    samples_ = samples;
+    if (samples > 1) {
+        if (!multisampled_ || multisampled_->format().samples != samples)
+            multisampled_ =
+                std::make_unique<RenderTarget>(RenderTargetFormat{ColourStorage::Renderbuffer, samples});
+        if (auto made = multisampled_->ensure(width, height); !made) return made;
+    }
+    if (auto made = resolved_.ensure(width, height); !made) return made;
+    width_ = width;
+    height_ = height;
+    if (samples > 1)
+        multisampled_->bind();
+    else
+        resolved_.bind();
+    glViewport(0, 0, width, height);
+    glEnable(GL_SCISSOR_TEST);
+    // Two pixels wider than the composited rectangle: the edge filter reads one pixel around each of its
+    // pixels, and texels outside the cleared area hold an earlier frame.
+    const int x0 = std::max(0, rect.x - 2), y0 = std::max(0, rect.y - 2);
+    glScissor(x0, y0, std::min(width, rect.x + rect.width + 2) - x0,
+              std::min(height, rect.y + rect.height + 2) - y0);
+    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    glDepthMask(GL_TRUE);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glScissor(rect.x, rect.y, rect.width, rect.height);
+    return ok();
+}
+
+void ViewModelLayer::composite(unsigned target_framebuffer, const PixelRect& rect) {
+    glDisable(GL_SCISSOR_TEST);
+    if (samples_ > 1) {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampled_->framebuffer());
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolved_.framebuffer());
+        const int x1 = rect.x + rect.width, y1 = rect.y + rect.height;
+        glBlitFramebuffer(rect.x, rect.y, x1, y1, rect.x, rect.y, x1, y1, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, target_framebuffer);
+    glViewport(0, 0, width_, height_);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(rect.x, rect.y, rect.width, rect.height);
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    composite_.use();
+    glUniform1i(composite_.location("u_edge_filter"), samples_ > 1 ? 0 : 1);
+    glUniform2i(composite_.location("u_last_texel"), width_ - 1, height_ - 1);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, resolved_.texture());
+    glBindSampler(0, 0);
+    glBindVertexArray(vao_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+    glEnable(GL_DEPTH_TEST);
+    glDepthMask(GL_TRUE);
+}
+
+} // namespace ks::render
