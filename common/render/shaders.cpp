@@ -34,9 +34,13 @@ const ProgramFiles& line_program() {
     static const ProgramFiles p{"line", "line.vert", "line.frag"};
     return p;
 }
+const ProgramFiles& contact_shadow_program() {
+    static const ProgramFiles p{"contact_shadow", "contact_shadow.vert", "contact_shadow.frag"};
+    return p;
+}
 std::vector<const ProgramFiles*> all_programs() {
     return {&pbr_program(),    &fast_program(),     &fast_level_program(), &fast_level_lit_program(),
-            &shadow_program(), &particle_program(), &line_program()};
+            &shadow_program(), &particle_program(), &line_program(),       &contact_shadow_program()};
 }
 
 std::filesystem::path default_shader_dir() {

@@ -28,7 +28,8 @@ struct ProgramSources {
 
 // The programs: pbr (full quality), fast (software rasterisers: baked light + per-vertex light), fast_level
 // (fast, specialised for baked level surfaces), fast_level_lit (fast_level plus per-pixel dynamic lights, for
-// the baked surfaces a muzzle flash reaches), shadow, particle, line.
+// the baked surfaces a muzzle flash reaches), shadow, particle, line, contact_shadow (movers' shadows on the
+// floor, contact_shadows.h).
 const ProgramFiles& pbr_program();
 const ProgramFiles& fast_program();
 const ProgramFiles& fast_level_program();     // the fast path's baked level surfaces (no branches)
@@ -36,6 +37,7 @@ const ProgramFiles& fast_level_lit_program(); // ... with Light::dynamic lights 
 const ProgramFiles& shadow_program();
 const ProgramFiles& particle_program();
 const ProgramFiles& line_program();
+const ProgramFiles& contact_shadow_program();
 // All of the above (the shader compile test walks this list).
 std::vector<const ProgramFiles*> all_programs();
 

@@ -76,7 +76,7 @@ TEST_CASE("every shader program compiles and links on this driver") {
         CHECK_MESSAGE(program.ok(), (program.ok() ? "" : program.error().str()));
         ++count;
     }
-    CHECK(count == 7); // pbr, fast, fast_level, fast_level_lit, shadow, particle, line
+    CHECK(count == 8); // pbr, fast, fast_level, fast_level_lit, shadow, particle, line, contact_shadow
 }
 
 TEST_CASE("a broken shader reports file:line: message") {
