@@ -9,8 +9,10 @@
 namespace ks::render {
 
 namespace {
-constexpr float kStrength =
-    0.85f; // the darkest a shadow gets, as a share of its light (bounce fills the rest)
+// A light's shadow takes its whole share away at the core (the edges are soft).
+constexpr float kStrength = 1.0f;
+// The share of the sky's ambient light a caster hides from the floor at its feet.
+constexpr float kOcclusion = 0.5f;
 constexpr float kMinShare = 0.08f;  // a light giving less than this of the floor's light casts nothing
 constexpr float kLift = 0.05f;      // rays leave the floor by this much (the floor's own box does not block)
 constexpr float kMaxStretch = 3.0f; // a shadow reaches at most this many caster heights from its feet
@@ -145,6 +147,14 @@ void contact_shadows(const std::vector<ShadowCaster>& casters, const ShadowLight
             s.darkness = std::clamp(kStrength * share * fade, 0.0f, 1.0f);
             out.push_back(s);
         }
+        // The ambient light the caster hides from the floor right under it: a round, direction-free shadow at
+        // its feet (the darkening that makes a thing stand on the floor when no lamp is near).
+        ContactShadow o;
+        o.centre = Vec3(feet.x, c.ground, feet.y);
+        o.half_length = o.half_width = 1.25f * radius;
+        o.feet = 1.0f; // no fade along an axis
+        o.darkness = std::clamp(kOcclusion * ambient / total * fade, 0.0f, 1.0f);
+        out.push_back(o);
     }
 }
 

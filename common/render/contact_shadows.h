@@ -5,8 +5,9 @@
 // caster gets one soft ellipse on its floor per light that gives a fair share of the floor's light there,
 // stretched away from that light as far as the caster's height projects, as dark as that light's share of
 // the floor's irradiance in the light bake's units (hemisphere ambient, the sun, each light's falloff and
-// cone, walls blocking). So a robot under a lamp has a round shadow at its feet, one beside a lamp a long
-// one pointing away from it, and one in a dark corner almost none. No GL here (tests run it on the CPU); the
+// cone, walls blocking), plus a round one at its feet for the sky's ambient light it hides. So a robot under
+// a lamp has a round shadow at its feet, one beside a lamp a long one pointing away from it, and one far
+// from any lamp only the faint round one. No GL here (tests run it on the CPU); the
 // SceneRenderer draws the ellipses (scene_contact_shadows.cpp) on both paths.
 #include "geometry/aabb.h"
 #include "render/scene.h"
@@ -50,7 +51,8 @@ struct ShadowLights {
 // The light bake and the contact shadows share it.
 float light_reach(const Light& light, const Vec3& point, const Vec3& normal);
 
-// Appends the ellipses of every caster (at most two each: the two strongest lights) to `out`.
+// Appends the ellipses of every caster to `out`: one for each of its two strongest lights (when they give a
+// fair share of its floor's light), then the ambient one.
 void contact_shadows(const std::vector<ShadowCaster>& casters, const ShadowLights& lights,
                      std::vector<ContactShadow>& out);
 
