@@ -160,16 +160,17 @@ TEST_CASE("contact shadows: a robot darkens the lit floor beside it, away from t
             .mean_luma;
     };
     const Vec3 shadow_side = feet + Vec3(0.0f, 0.0f, 1.8f), lamp_side = feet - Vec3(0.0f, 0.0f, 2.5f);
+    // One scene, baked, for both paths (the full path does not read its light map).
+    auto scene = LevelScene::build(*level, assets);
+    std::vector<MeshInstance> instances;
+    std::vector<Light> lights;
+    std::vector<ShadowCaster> casters;
+    scene->emit(instances, lights, &casters);
+    REQUIRE(casters.size() == 17); // 8 robots, 6 cylinders, 3 pickups
     for (RenderQuality q : {RenderQuality::Full, RenderQuality::Fast}) {
         CAPTURE(static_cast<int>(q));
-        auto scene = LevelScene::build(*level, assets, level_scene_options(quality(q)));
         auto renderer = SceneRenderer::create(assets.textures(), quality(q));
         REQUIRE(renderer);
-        std::vector<MeshInstance> instances;
-        std::vector<Light> lights;
-        std::vector<ShadowCaster> casters;
-        scene->emit(instances, lights, &casters);
-        REQUIRE(casters.size() == 17); // 8 robots, 6 cylinders, 3 pickups
         auto render = [&](bool shadows) {
             auto* ctx = test::gl_context();
             ctx->bind();
