@@ -47,6 +47,7 @@ struct Variant {
     bool doors_occlude = true;
     bool fast_trilinear = false;
     int view_model_msaa = render::RendererSettings{}.view_model_msaa;
+    bool contact_shadows = true;
 };
 
 struct Measurement {
@@ -97,6 +98,7 @@ void measure(Measurement& m, shell::OffscreenContext& ctx, render::AssetLibrary&
     settings.fast_level_shader = v.fast_level_shader;
     settings.fast_trilinear = v.fast_trilinear;
     settings.view_model_msaa = v.view_model_msaa;
+    settings.contact_shadows = v.contact_shadows;
     scene.set_doors_occlude(v.doors_occlude);
     const float default_anisotropy = assets.textures().max_anisotropy();
     if (v.anisotropy > 0.0f) assets.textures().set_max_anisotropy(v.anisotropy);
@@ -109,6 +111,7 @@ void measure(Measurement& m, shell::OffscreenContext& ctx, render::AssetLibrary&
     }
     std::vector<render::MeshInstance> instances;
     std::vector<render::Light> lights;
+    std::vector<render::ShadowCaster> casters;
     std::vector<Mat4> scratch;
     render::ViewModel view_model;
     assets.model("rifle").emit(render::rifle_view_transform(0.0f), scratch, view_model.instances);
@@ -121,8 +124,9 @@ void measure(Measurement& m, shell::OffscreenContext& ctx, render::AssetLibrary&
     for (int i = -warmup; i < frames; ++i) {
         if (i == 0) cpu_start = cpu_now_ms();
         auto t0 = std::chrono::steady_clock::now();
-        scene.emit(instances, lights);
+        scene.emit(instances, lights, &casters);
         render::SceneFrame frame;
+        frame.shadow_casters = &casters;
         frame.camera = path_camera(start, std::max(i, 0), frames);
         frame.environment = scene.environment();
         frame.instances = &instances;
@@ -157,6 +161,7 @@ void measure(Measurement& m, shell::OffscreenContext& ctx, render::AssetLibrary&
     if (!shot_path.empty()) { // the start view, for side-by-side comparisons of the variants
         render::SceneFrame frame;
         frame.camera = start;
+        frame.shadow_casters = &casters;
         frame.environment = scene.environment();
         frame.instances = &instances;
         frame.lights = &lights;
@@ -265,6 +270,10 @@ int run(int argc, const char* const* argv) {
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 1.0f, v.view_model_msaa = 0; });
     with("fast, scale 0.5, rifle msaa 4x",
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.view_model_msaa = 4; });
+    with("fast, scale 0.5, no contact shadows",
+         [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.contact_shadows = false; });
+    with("fast, scale 1, no contact shadows",
+         [](Variant& v) { v.quality = Q::Fast, v.render_scale = 1.0f, v.contact_shadows = false; });
     with("fast, 0.5, session 2", [](Variant& v) {
         v.quality = Q::Fast, v.render_scale = 0.5f, v.occlusion_culling = false, v.depth_prepass = false,
         v.fast_level_shader = false, v.doors_occlude = false;

@@ -171,6 +171,7 @@ LevelScene::Prop LevelScene::make_prop(const level::Entity& e, const Model* mode
     p.type = e.type();
     p.model = model;
     p.root = root;
+    p.ground = e.position.y;
     return p;
 }
 
@@ -343,9 +344,11 @@ void mark_door_leaves(const Model& model, int left, int right, size_t first, std
 }
 } // namespace
 
-void LevelScene::emit(std::vector<MeshInstance>& instances, std::vector<Light>& lights) {
+void LevelScene::emit(std::vector<MeshInstance>& instances, std::vector<Light>& lights,
+                      std::vector<ShadowCaster>* casters) {
     instances.clear();
     lights.clear();
+    if (casters) casters->clear();
     // A light switched since the last frame: re-combine the light map (milliseconds) and upload it.
     if (bake_.update() || (lightmap_.id() == 0 && !bake_.texels().empty())) lightmap_.upload(bake_);
     for (const auto& s : surfaces_) {
@@ -359,6 +362,7 @@ void LevelScene::emit(std::vector<MeshInstance>& instances, std::vector<Light>& 
     }
     for (auto& p : props_) {
         const bool is_light = p.type == EntityType::FloorLight || p.type == EntityType::TopLight;
+        const std::size_t first = instances.size();
         if (p.type == EntityType::Door) {
             // Slide the leaves: door_l toward +x, door_r toward -x (the asset convention).
             if (pose_.local.size() != p.model->nodes.size()) pose_ = p.model->rest_pose();
@@ -371,7 +375,6 @@ void LevelScene::emit(std::vector<MeshInstance>& instances, std::vector<Light>& 
             if (r >= 0)
                 pose_.local[size_t(r)] =
                     glm::translate(Mat4(1.0f), Vec3(-shift, 0, 0)) * pose_.local[size_t(r)];
-            const size_t first = instances.size();
             p.model->emit(p.root, pose_, scratch_, instances);
             if (doors_occlude_) mark_door_leaves(*p.model, l, r, first, instances);
         } else if (p.pose) {
@@ -382,6 +385,11 @@ void LevelScene::emit(std::vector<MeshInstance>& instances, std::vector<Light>& 
                           !is_light);
         }
         if (is_light && p.light_on) lights.push_back(p.light);
+        // What the game moves (robots, pickups, gas cylinders) casts contact shadows, as the game's view
+        // does.
+        const bool mover =
+            p.type == EntityType::Robot || p.type == EntityType::Pickup || p.type == EntityType::GasCylinder;
+        if (casters && mover) casters->push_back(shadow_caster_of(instances, first, p.ground));
     }
 }
 

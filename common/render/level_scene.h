@@ -6,6 +6,7 @@
 // state the game sets; emit() writes the current frame's instances and lights into reused vectors.
 #include "level/level.h"
 #include "render/asset_library.h"
+#include "render/contact_shadows.h"
 #include "render/gpu_mesh.h"
 #include "render/light_bake.h"
 #include "render/lightmap_texture.h"
@@ -49,8 +50,10 @@ class LevelScene {
     void set_pose(int entity_id, const ModelPose* pose);
     // Door leaves are emitted as occluders (MeshInstance::occluder) unless this is off (benchmarks).
     void set_doors_occlude(bool on) { doors_occlude_ = on; }
-    // Clears and fills `instances` and `lights` for the current state.
-    void emit(std::vector<MeshInstance>& instances, std::vector<Light>& lights);
+    // Clears and fills `instances` and `lights` for the current state, and `casters` (when given) with the
+    // contact shadow casters of the props the game moves (robots, pickups, gas cylinders).
+    void emit(std::vector<MeshInstance>& instances, std::vector<Light>& lights,
+              std::vector<ShadowCaster>* casters = nullptr);
     const Environment& environment() const { return environment_; }
     const geometry::Aabb& bounds() const { return bounds_; }
     int surface_count() const { return static_cast<int>(surfaces_.size()); }
@@ -77,6 +80,7 @@ class LevelScene {
         bool light_on = true;
         float door_open = 0.0f;
         const ModelPose* pose = nullptr; // set_pose
+        float ground = 0.0f;             // the entity's height: the floor it stands on
         level::DoorProps door;           // for doors: the leaves slide as level::door_leaf_centre says
         Light light;                     // for floor/top lights
         int bake_light = -1;             // its index in the light bake

@@ -1,5 +1,7 @@
 #include "render/light_bake.h"
 
+#include "render/contact_shadows.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -291,24 +293,13 @@ BakeStats LightBake::bake(const std::vector<BakeSurface>& surfaces, const Enviro
                 base_[index] = e;
                 for (size_t k = 0; k < lights.size(); ++k) {
                     const Light& l = lights[k];
-                    Vec3 to_light = l.position - p;
-                    float dist = glm::length(to_light);
-                    if (!(dist < l.range) || dist < 1e-4f) continue;
-                    Vec3 dir = to_light / dist;
-                    float cosine = glm::dot(n, dir);
-                    if (cosine <= 0.0f) continue;
-                    float atten = 1.0f - dist / l.range;
-                    if (l.type == Light::Type::Spot) {
-                        float inner = std::max(l.cos_inner, l.cos_outer + 1e-3f);
-                        float x = std::clamp((glm::dot(-dir, glm::normalize(l.direction)) - l.cos_outer) /
-                                                 (inner - l.cos_outer),
-                                             0.0f, 1.0f);
-                        atten *= x * x * (3.0f - 2.0f * x); // GLSL smoothstep
-                    }
-                    if (atten <= 0.0f) continue;
+                    const float reach = light_reach(l, p, n);
+                    if (reach <= 0.0f) continue;
+                    const Vec3 to_light = l.position - p;
+                    const float dist = glm::length(to_light);
                     // Stop short of the light: fixtures sit on ceilings and walls.
-                    if (occluded(p, dir, dist - 0.05f, false, &near[k])) continue;
-                    shares_[k].push_back({index, atten * cosine});
+                    if (occluded(p, to_light / dist, dist - 0.05f, false, &near[k])) continue;
+                    shares_[k].push_back({index, reach});
                 }
             }
     }

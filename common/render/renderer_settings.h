@@ -28,6 +28,8 @@ struct RendererSettings {
     int view_model_msaa = 1;
     int shadow_map_size = 2048;
     bool shadows = true;
+    // Movers' contact shadows on the floor (SceneFrame::shadow_casters; contact_shadows.h), both paths.
+    bool contact_shadows = true;
     bool surface_detail = true; // normal and bump (height) maps; off: the geometric normal only
     int max_lights_per_draw = kMaxLightsPerDraw; // nearest point/spot lights shading each object, 0..8
     RenderQuality quality = RenderQuality::Auto;

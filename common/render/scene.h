@@ -61,6 +61,7 @@ struct FrameStats {
     int instances_occluded = 0; // inside it, but hidden behind an occluder box (fast path)
     int lights_in_view = 0;
     bool shadow_rendered = false;
+    int contact_shadows = 0;                     // ellipses drawn under movers (contact_shadows.h)
     bool fast_path = false;                      // RenderQuality::Fast drew this frame
     int internal_width = 0, internal_height = 0; // the 3D scene's resolution (render scale)
 };

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <functional>
 #include <tuple>
 
@@ -59,6 +60,7 @@ unsigned SceneRenderer::program_id(const std::string& name) const {
     if (name == "shadow") return shadow_.id();
     if (name == "particle") return particle_.id();
     if (name == "line") return line_.id();
+    if (name == "contact_shadow") return contact_shadow_.id();
     return 0;
 }
 
@@ -87,7 +89,8 @@ Result<void> SceneRenderer::init() {
                      std::function<void(ShaderProgram&)>(pbr_units)},
           std::tuple{&shadow_program(), &shadow_, std::function<void(ShaderProgram&)>()},
           std::tuple{&particle_program(), &particle_, std::function<void(ShaderProgram&)>(particle_units)},
-          std::tuple{&line_program(), &line_, std::function<void(ShaderProgram&)>()}})
+          std::tuple{&line_program(), &line_, std::function<void(ShaderProgram&)>()},
+          std::tuple{&contact_shadow_program(), &contact_shadow_, std::function<void(ShaderProgram&)>()}})
         if (auto r = shaders_->add(*files, *target, units); !r) return r.error();
     if (auto r = shaders_->add(view_model_composite_program(), view_model_layer_.program(),
                                [](ShaderProgram& p) { glUniform1i(p.location("u_layer"), 0); });
@@ -138,6 +141,19 @@ Result<void> SceneRenderer::init() {
     glEnableVertexAttribArray(1);
     glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(DebugVertex),
                           reinterpret_cast<void*>(sizeof(Vec3)));
+
+    glGenVertexArrays(1, &contact_vao_);
+    glGenBuffers(1, &contact_buffer_);
+    glBindVertexArray(contact_vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, contact_buffer_);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(ContactVertex), nullptr);
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, sizeof(ContactVertex),
+                          reinterpret_cast<void*>(offsetof(ContactVertex, ellipse)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(ContactVertex),
+                          reinterpret_cast<void*>(offsetof(ContactVertex, darkness_feet)));
     glBindVertexArray(0);
 
     if (settings_.shadows) {
@@ -174,6 +190,8 @@ SceneRenderer::~SceneRenderer() {
     glDeleteBuffers(1, &particle_quad_);
     glDeleteBuffers(1, &particle_buffer_);
     glDeleteBuffers(1, &line_buffer_);
+    glDeleteBuffers(1, &contact_buffer_);
+    glDeleteVertexArrays(1, &contact_vao_);
     glDeleteVertexArrays(1, &particle_vao_);
     glDeleteVertexArrays(1, &line_vao_);
     if (shadow_fbo_) glDeleteFramebuffers(1, &shadow_fbo_);
@@ -294,6 +312,7 @@ FrameStats SceneRenderer::render(const SceneFrame& frame) {
         else
             draw_batches(frame.camera.projection() * frame.camera.view(), frame.camera.position, frame, stats,
                          false);
+        draw_contact_shadows(frame, stats);
     }
     draw_particles(frame, stats);
     draw_debug(frame, stats);

@@ -4,6 +4,7 @@
 // picks the lights that reach each draw, renders the sun's shadow map only when a shadow caster moved,
 // then particles (additive, or alpha-blended back to front), debug lines and the first-person view model.
 #include "core/result.h"
+#include "render/contact_shadows.h"
 #include "render/debug_draw.h"
 #include "render/gpu_mesh.h"
 #include "render/occlusion.h"
@@ -39,6 +40,9 @@ struct SceneFrame {
     const std::vector<const ParticleEmitter*>* particles = nullptr;
     const DebugDraw* debug = nullptr;
     const ViewModel* view_model = nullptr;
+    // What moves (robots, gas cylinders, pickups, the player's rifle): each darkens its floor from the lights
+    // that reach it (contact_shadows.h). nullptr: none.
+    const std::vector<ShadowCaster>* shadow_casters = nullptr;
     int width = 1280, height = 720;
 };
 
@@ -92,6 +96,7 @@ class SceneRenderer {
     void ensure_scale_target(int width, int height);
     void resolve_settings();
     void draw_particles(const SceneFrame& frame, FrameStats& stats);
+    void draw_contact_shadows(const SceneFrame& frame, FrameStats& stats);
     void draw_debug(const SceneFrame& frame, FrameStats& stats);
     void ensure_msaa_target(int width, int height);
     geometry::Camera view_model_camera(const SceneFrame& frame) const;
@@ -102,7 +107,8 @@ class SceneRenderer {
 
     TextureCache& textures_;
     RendererSettings settings_;
-    ShaderProgram pbr_, fast_program_, fast_level_, fast_level_lit_, shadow_, particle_, line_;
+    ShaderProgram pbr_, fast_program_, fast_level_, fast_level_lit_, shadow_, particle_, line_,
+        contact_shadow_;
     std::unique_ptr<ShaderLibrary> shaders_;
     std::string gl_renderer_;
     bool fast_ = false;
@@ -113,6 +119,7 @@ class SceneRenderer {
     bool raw_srgb_ = false; // fast_sampler_ skips the sampler's sRGB decode (GL_EXT_texture_sRGB_decode)
     unsigned instance_buffer_ = 0, particle_vao_ = 0, particle_quad_ = 0, particle_buffer_ = 0;
     unsigned line_vao_ = 0, line_buffer_ = 0;
+    unsigned contact_vao_ = 0, contact_buffer_ = 0;
     unsigned shadow_fbo_ = 0, shadow_texture_ = 0;
     std::unique_ptr<RenderTarget> msaa_target_; // made for settings_.msaa_samples on first use
     ViewModelLayer view_model_layer_;           // the view model's antialiased layer (view_model_msaa)
@@ -151,6 +158,14 @@ class SceneRenderer {
     std::vector<int> order_;
     std::vector<Batch> sorted_batches_, shadow_batches_;
     std::vector<const MeshInstance*> shadow_order_;
+    ShadowLights contact_lights_;
+    std::vector<ContactShadow> contact_shadows_;
+    struct ContactVertex {
+        Vec3 position;
+        Vec2 ellipse;
+        Vec2 darkness_feet;
+    };
+    std::vector<ContactVertex> contact_vertices_;
     std::unordered_map<std::string, unsigned> sprite_ids_;
 };
 

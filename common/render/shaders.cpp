@@ -39,9 +39,15 @@ const ProgramFiles& view_model_composite_program() {
                                 "view_model_composite.frag"};
     return p;
 }
+const ProgramFiles& contact_shadow_program() {
+    static const ProgramFiles p{"contact_shadow", "contact_shadow.vert", "contact_shadow.frag"};
+    return p;
+}
 std::vector<const ProgramFiles*> all_programs() {
-    return {&pbr_program(),    &fast_program(),     &fast_level_program(), &fast_level_lit_program(),
-            &shadow_program(), &particle_program(), &line_program(),       &view_model_composite_program()};
+    return {
+        &pbr_program(),           &fast_program(),     &fast_level_program(), &fast_level_lit_program(),
+        &shadow_program(),        &particle_program(), &line_program(),       &view_model_composite_program(),
+        &contact_shadow_program()};
 }
 
 std::filesystem::path default_shader_dir() {

@@ -28,7 +28,8 @@ struct ProgramSources {
 
 // The programs: pbr (full quality), fast (software rasterisers: baked light + per-vertex light), fast_level
 // (fast, specialised for baked level surfaces), fast_level_lit (fast_level plus per-pixel dynamic lights, for
-// the baked surfaces a muzzle flash reaches), shadow, particle, line, view_model_composite.
+// the baked surfaces a muzzle flash reaches), shadow, particle, line, view_model_composite, contact_shadow
+// (movers' shadows on the floor, contact_shadows.h).
 const ProgramFiles& pbr_program();
 const ProgramFiles& fast_program();
 const ProgramFiles& fast_level_program();     // the fast path's baked level surfaces (no branches)
@@ -36,8 +37,8 @@ const ProgramFiles& fast_level_lit_program(); // ... with Light::dynamic lights 
 const ProgramFiles& shadow_program();
 const ProgramFiles& particle_program();
 const ProgramFiles& line_program();
-// The antialiased view model's resolved layer blended over the scene (render/view_model_layer.h).
-const ProgramFiles& view_model_composite_program();
+// the baked surfaces a muzzle flash reaches), shadow, particle, line, view_model_composite, contact_shadow
+// (movers' shadows on the floor, contact_shadows.h).
 // All of the above (the shader compile test walks this list).
 std::vector<const ProgramFiles*> all_programs();
 

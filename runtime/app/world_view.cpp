@@ -3,6 +3,7 @@
 #include "app/event_particles.h"
 #include "app/muzzle_lights.h"
 #include "level/entity_shapes.h"
+#include "render/gpu_mesh.h"
 #include "render/view_model.h"
 
 #include <algorithm>
@@ -91,7 +92,7 @@ void WorldView::fill(const game::Game& game, float alpha, float fov_degrees, con
     // Doors and lights follow the game.
     for (const auto& d : game.doors()) scene_->set_door_open(d.entity_id, d.progress);
     for (const auto& l : game.lights()) scene_->set_light_on(l.entity_id, l.on);
-    scene_->emit(instances_, lights_);
+    scene_->emit(instances_, lights_, &casters_);
     add_muzzle_lights(feedback_, lights_, a * step_dt_); // muzzle flashes light their surroundings
 
     // Robots: interpolated placement, posed from their animation player.
@@ -109,11 +110,14 @@ void WorldView::fill(const game::Game& game, float alpha, float fov_degrees, con
         robot_model_->emit(root, robot_pose_, scratch_, instances_);
         const Vec3 tint = feedback::hit_tint(robots[i].hit_flash);
         for (std::size_t k = first; k < instances_.size(); ++k) instances_[k].tint = tint;
+        casters_.push_back(render::shadow_caster_of(instances_, first, feet.y));
     }
     if (dummy && dummy->pose) {
         const Mat4 root = level::robot_model_matrix(dummy->feet, dummy->yaw);
         robot_binding_.write_locals(*dummy->pose, robot_pose_.local);
+        const std::size_t first = instances_.size();
         robot_model_->emit(root, robot_pose_, scratch_, instances_);
+        casters_.push_back(render::shadow_caster_of(instances_, first, dummy->feet.y));
     }
     // Pickups float and spin around the game's trigger centre.
     const Quat spin = glm::angleAxis(game.pickup_spin(), Vec3(0, 1, 0));
@@ -121,13 +125,20 @@ void WorldView::fill(const game::Game& game, float alpha, float fov_degrees, con
         if (p.taken) continue;
         const float bob = 0.2f * std::sin(static_cast<float>(time_) * 2.5f + static_cast<float>(p.entity_id));
         const Mat4 root = level::pickup_model_matrix(p.centre + Vec3(0.0f, bob, 0.0f), spin);
+        const std::size_t first = instances_.size();
         pickup_models_[static_cast<int>(p.kind)]->emit(root, scratch_, instances_);
+        casters_.push_back(
+            render::shadow_caster_of(instances_, first, p.centre.y - level::kPickupCentreHeight));
     }
     for (const auto& c : game.cylinders()) {
         if (c.exploded) continue;
         const Mat4 root = level::gas_cylinder_model_matrix(c.centre, c.yaw, c.props);
         // A lit fuse makes the cylinder glow before it goes.
+        const std::size_t first = instances_.size();
         cylinder_model_->emit(root, scratch_, instances_, c.fuse >= 0.0f ? 3.0f : 1.0f);
+        render::ShadowCaster caster = render::shadow_caster_of(instances_, first, 0.0f);
+        caster.ground = caster.bounds.min.y; // it stands on its floor
+        casters_.push_back(caster);
     }
 
     // Camera from the interpolated eye; the death camera's drop and tilt are in the snapshot. Explosions
@@ -146,6 +157,7 @@ void WorldView::fill(const game::Game& game, float alpha, float fov_degrees, con
         const float since = game.player().recoil;
         const float k = std::clamp(1.0f - since / 0.2f, 0.0f, 1.0f);
         rifle_->emit(render::rifle_view_transform(k * k), scratch_, view_model_.instances);
+        add_rifle_caster(game.player().grounded);
     }
     emitter_list_.clear();
     for (const auto& e : emitters_) emitter_list_.push_back(e.get());
@@ -156,6 +168,21 @@ void WorldView::fill(const game::Game& game, float alpha, float fov_degrees, con
     frame.lights = &lights_;
     frame.particles = &emitter_list_;
     frame.view_model = &view_model_;
+    frame.shadow_casters = &casters_;
+}
+
+void WorldView::add_rifle_caster(bool grounded) {
+    // The rifle's shadow falls on the floor under the player (feet = eye - 3), only while standing on it.
+    if (!grounded) return;
+    const Mat4 camera_to_world = glm::inverse(camera_.view());
+    render::ShadowCaster rifle;
+    rifle.bounds = geometry::Aabb::empty();
+    rifle.ground = camera_.position.y - 3.0f;
+    for (const auto& inst : view_model_.instances)
+        if (inst.mesh)
+            rifle.bounds = geometry::merge(
+                rifle.bounds, geometry::transform_aabb(inst.mesh->bounds(), camera_to_world * inst.world));
+    casters_.push_back(rifle);
 }
 
 } // namespace ks::runtime

@@ -74,6 +74,8 @@ class WorldView {
 
     std::vector<render::MeshInstance> instances_;
     std::vector<render::Light> lights_;
+    std::vector<render::ShadowCaster> casters_; // robots, pickups, cylinders, the rifle: contact shadows
+    void add_rifle_caster(bool grounded);
     std::vector<Mat4> scratch_;
     render::ViewModel view_model_;
     std::vector<std::unique_ptr<render::ParticleEmitter>> emitters_;

@@ -124,6 +124,7 @@ struct ViewStage {
     render::Environment environment;
     std::vector<render::MeshInstance> instances;
     std::vector<render::Light> lights;
+    std::vector<render::ShadowCaster> casters; // the level's robots, pickups and cylinders
     std::vector<Mat4> scratch;
     render::ViewModel view_model;
     std::vector<std::unique_ptr<render::ParticleEmitter>> emitters;
@@ -172,7 +173,8 @@ int run_view_loop(shell::AppShell& shell, const ViewOptions& options, render::As
         if (stage.turntable) {
             stage.turntable->emit(stage.time, stage.scratch, stage.instances, stage.camera);
         } else {
-            stage.scene->emit(stage.instances, stage.lights);
+            stage.scene->emit(stage.instances, stage.lights, &stage.casters);
+            frame.shadow_casters = &stage.casters;
             stage.view_model.instances.clear();
             if (options.hud)
                 rifle.emit(render::rifle_view_transform(0.0f), stage.scratch, stage.view_model.instances);

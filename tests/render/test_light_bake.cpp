@@ -2,6 +2,7 @@
 // when a light switches, bad input.
 #include "brush/brush_build.h"
 #include "render/brush_mesh.h"
+#include "render/contact_shadows.h"
 #include "render/light_bake.h"
 
 #include <doctest/doctest.h>
@@ -227,4 +228,89 @@ TEST_CASE("light bake: a brush ramp gets texels on every face and casts its slop
     CHECK(light_at(bake, mesh, Vec3(4, 2, -4)).x ==
           doctest::Approx(0.1f + 3.0f / std::sqrt(10.0f)).epsilon(0.02));
     CHECK(light_at(bake, mesh, Vec3(2, 1, -6)).x == doctest::Approx(0.1f).epsilon(0.02));
+}
+
+TEST_CASE("contact shadows fall away from the light that casts them, as dark as its share, walls blocking") {
+    Environment env;
+    env.sky_color = Vec3(0.2f);
+    env.sun_color = Vec3(0.0f);
+    Light lamp;
+    lamp.position = Vec3(0.0f, 16.0f, 0.0f);
+    lamp.range = 24.0f;
+    const std::vector<Light> lights{lamp};
+    ShadowLights in;
+    in.environment = &env;
+    in.lights = &lights;
+    auto caster_at = [](float x, float z) { // a robot-sized box standing on the floor at y = 0
+        return ShadowCaster{{Vec3(x - 0.5f, 0.0f, z - 0.5f), Vec3(x + 0.5f, 3.0f, z + 0.5f)}, 0.0f};
+    };
+    // The last ellipse of a caster is the round one of the ambient light it hides, centred at its feet.
+    auto check_ambient = [](const ContactShadow& s, const Vec3& feet, float ambient_share) {
+        CHECK(glm::length(s.centre - feet) < 1e-4f);
+        CHECK(s.half_length == doctest::Approx(s.half_width));
+        CHECK(s.darkness == doctest::Approx(0.5f * ambient_share).epsilon(0.02));
+    };
+    std::vector<ContactShadow> out;
+
+    // Beside the lamp (10 units along +z): stretched along +z, the caster's feet at its near end, as dark as
+    // the lamp's share of the floor's light there.
+    contact_shadows({caster_at(0.0f, 10.0f)}, in, out);
+    REQUIRE(out.size() == 2);
+    CHECK(out[0].axis.x == doctest::Approx(0.0f).epsilon(1e-4));
+    CHECK(out[0].axis.y == doctest::Approx(1.0f));
+    CHECK(out[0].centre.z > 10.5f);                // pushed away from the lamp
+    CHECK(out[0].half_length > out[0].half_width); // stretched
+    CHECK(out[0].feet < -0.3f);
+    const float reach = light_reach(lamp, Vec3(0.0f, 0.05f, 10.0f), Vec3(0, 1, 0));
+    CHECK(out[0].darkness == doctest::Approx(reach / (reach + 0.2f)).epsilon(0.02));
+    check_ambient(out[1], Vec3(0.0f, 0.0f, 10.0f), 0.2f / (reach + 0.2f));
+
+    // Right under it: round, centred on the feet, darker (the lamp gives more of the floor's light there).
+    out.clear();
+    contact_shadows({caster_at(0.0f, 0.0f)}, in, out);
+    REQUIRE(out.size() == 2);
+    CHECK(out[0].half_length == doctest::Approx(out[0].half_width));
+    CHECK(glm::length(Vec2(out[0].centre.x, out[0].centre.z)) < 1e-3f);
+    CHECK(out[0].darkness > 0.55f);
+
+    // A wall between the lamp and the caster's floor: that light casts nothing there, only the ambient one.
+    out.clear();
+    in.blockers = {{Vec3(-10.0f, 0.0f, 5.0f), Vec3(10.0f, 16.0f, 5.5f)}};
+    contact_shadows({caster_at(0.0f, 10.0f)}, in, out);
+    REQUIRE(out.size() == 1);
+    check_ambient(out[0], Vec3(0.0f, 0.0f, 10.0f), 1.0f);
+    in.blockers.clear();
+
+    // The sun (travelling toward +x, down at 45 degrees) alone: the shadow points along +x, as long as the
+    // caster is high; with a shadow map for it (sun = false), none.
+    env.sun_color = Vec3(0.5f);
+    env.sun_direction = Vec3(1.0f, -1.0f, 0.0f);
+    in.lights = nullptr;
+    out.clear();
+    contact_shadows({caster_at(0.0f, 0.0f)}, in, out);
+    REQUIRE(out.size() == 2);
+    CHECK(out[0].axis.x == doctest::Approx(1.0f));
+    CHECK(out[0].half_length == doctest::Approx(1.5f + out[0].half_width).epsilon(0.01));
+    in.sun = false;
+    out.clear();
+    contact_shadows({caster_at(0.0f, 0.0f)}, in, out);
+    REQUIRE(out.size() == 1);
+    check_ambient(out[0], Vec3(0.0f), 1.0f);
+
+    // A faint light (under 8 % of the floor's light) casts nothing; a floating caster's shadow is fainter;
+    // an empty or non-finite caster casts nothing (no NaN).
+    in.sun = true;
+    env.sun_color = Vec3(0.0f);
+    Light faint = lamp;
+    faint.intensity = 0.02f;
+    const std::vector<Light> faint_lights{faint};
+    in.lights = &faint_lights;
+    out.clear();
+    ShadowCaster bad = caster_at(0.0f, 0.0f), floating = caster_at(0.0f, 0.0f);
+    bad.ground = std::nanf("");
+    floating.ground = -2.0f;
+    contact_shadows({caster_at(0.0f, 0.0f), ShadowCaster{geometry::Aabb::empty(), 0.0f}, bad, floating}, in,
+                    out);
+    REQUIRE(out.size() == 2);
+    CHECK(out[1].darkness < out[0].darkness * 0.5f);
 }

@@ -205,3 +205,62 @@ TEST_CASE("the first-person rifle is lit and orange, not a near-black silhouette
     CHECK(edge_pixels > rifle_pixels / 50);   // the silhouette is blended ...
     CHECK(edge_pixels < rifle_pixels / 2);    // ... and only the silhouette
 }
+
+TEST_CASE("contact shadows: a robot darkens the lit floor beside it, away from the lamp, on both paths") {
+    REQUIRE_MESSAGE(test::gl_context(), "cannot run: no display (run under xvfb-run, as ./run.sh test does)");
+    auto level = level::load_level_file(test::source_dir() / "levels" / "main.json");
+    REQUIRE(level.ok());
+    AssetLibrary assets(test::source_dir() / "assets");
+    // The main level's robot at (35, 0, 10) stands 10 units from the lamp at (35, 16, 0): its shadow falls
+    // toward +z. Seen from the side (camera at -x looking +x: +z is to the right of the image).
+    const Vec3 feet(35.0f, 0.0f, 10.0f);
+    geometry::Camera cam;
+    cam.position = feet + Vec3(-9.0f, 7.0f, 0.0f);
+    cam.yaw = radians(-90.0f);
+    cam.pitch = radians(-35.0f);
+    cam.fov_y = radians(50.0f);
+    cam.aspect = static_cast<float>(test::kGlWidth) / test::kGlHeight;
+    auto luma_at = [&](const std::vector<unsigned char>& rgb, const Vec3& world) {
+        Vec2 px;
+        REQUIRE(geometry::world_to_screen(cam, world, Vec2(test::kGlWidth, test::kGlHeight), px));
+        // A 5x5 window around the point (pixels and read_rgb's rows both run top-down).
+        const int cx = static_cast<int>(px.x), cy = static_cast<int>(px.y);
+        return test::image_stats(rgb, test::kGlWidth, test::kGlHeight, cx - 2, cy - 2, cx + 3, cy + 3)
+            .mean_luma;
+    };
+    const Vec3 shadow_side = feet + Vec3(0.0f, 0.0f, 1.8f), lamp_side = feet - Vec3(0.0f, 0.0f, 2.5f);
+    // One scene, baked, for both paths (the full path does not read its light map).
+    auto scene = LevelScene::build(*level, assets);
+    std::vector<MeshInstance> instances;
+    std::vector<Light> lights;
+    std::vector<ShadowCaster> casters;
+    scene->emit(instances, lights, &casters);
+    REQUIRE(casters.size() == 17); // 8 robots, 6 cylinders, 3 pickups
+    for (RenderQuality q : {RenderQuality::Full, RenderQuality::Fast}) {
+        CAPTURE(static_cast<int>(q));
+        auto renderer = SceneRenderer::create(assets.textures(), quality(q));
+        REQUIRE(renderer);
+        auto render = [&](bool shadows) {
+            auto* ctx = test::gl_context();
+            ctx->bind();
+            SceneFrame frame;
+            frame.camera = cam;
+            frame.environment = scene->environment();
+            frame.instances = &instances;
+            frame.lights = &lights;
+            frame.shadow_casters = shadows ? &casters : nullptr;
+            frame.width = ctx->width();
+            frame.height = ctx->height();
+            const FrameStats stats = (*renderer)->render(frame);
+            CHECK((stats.contact_shadows > 0) == shadows);
+            return ctx->read_rgb();
+        };
+        const auto off = render(false), on = render(true);
+        const double shadow_off = luma_at(off, shadow_side), shadow_on = luma_at(on, shadow_side);
+        const double lamp_off = luma_at(off, lamp_side), lamp_on = luma_at(on, lamp_side);
+        MESSAGE("floor luma away from the lamp " << shadow_off << " -> " << shadow_on << ", toward it "
+                                                 << lamp_off << " -> " << lamp_on);
+        CHECK(shadow_on < shadow_off * 0.85); // darker where the shadow falls ...
+        CHECK(lamp_on > lamp_off - 1.0);      // ... and not toward the lamp
+    }
+}

@@ -76,7 +76,8 @@ TEST_CASE("every shader program compiles and links on this driver") {
         CHECK_MESSAGE(program.ok(), (program.ok() ? "" : program.error().str()));
         ++count;
     }
-    CHECK(count == 8); // pbr, fast, fast_level, fast_level_lit, shadow, particle, line, view_model_composite
+    CHECK(count == 9); // pbr, fast, fast_level, fast_level_lit, shadow, particle, line, view_model_composite,
+                       // contact_shadow
 }
 
 TEST_CASE("a broken shader reports file:line: message") {
