@@ -37,8 +37,9 @@ const ProgramFiles& fast_level_lit_program(); // ... with Light::dynamic lights 
 const ProgramFiles& shadow_program();
 const ProgramFiles& particle_program();
 const ProgramFiles& line_program();
-// the baked surfaces a muzzle flash reaches), shadow, particle, line, view_model_composite, contact_shadow
-// (movers' shadows on the floor, contact_shadows.h).
+// The antialiased view model's resolved layer blended over the scene (render/view_model_layer.h).
+const ProgramFiles& view_model_composite_program();
+const ProgramFiles& contact_shadow_program();
 // All of the above (the shader compile test walks this list).
 std::vector<const ProgramFiles*> all_programs();
 
