@@ -72,8 +72,8 @@ Result<GlbChunks> split_glb(const std::filesystem::path& path, const std::string
                           "export the file again as glTF 2.0 binary");
     const std::uint32_t json_length = read_u32(bytes, 12);
     if (read_u32(bytes, 16) != 0x4E4F534Au || 20 + std::size_t{json_length} > bytes.size())
-        return file_error(path, "the .glb file is truncated or corrupt (its JSON chunk is cut off)", "JSON chunk",
-                          "export the file again");
+        return file_error(path, "the .glb file is truncated or corrupt (its JSON chunk is cut off)",
+                          "JSON chunk", "export the file again");
     return GlbChunks{bytes.substr(20, json_length), bytes.substr(20 + std::size_t{json_length})};
 }
 
@@ -147,22 +147,28 @@ Result<void> check_scene(const std::filesystem::path& path, const AnimatedScene&
     for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
         const AnimNode& n = scene.nodes[i];
         if (n.parent >= static_cast<int>(i) || n.parent < -1)
-            return Error("node '" + n.name + "' names a parent that is not an earlier node", Location(path.string()));
+            return Error("node '" + n.name + "' names a parent that is not an earlier node",
+                         Location(path.string()));
         if (!finite(n.translation) || !finite(n.rotation) || !finite(n.scale))
-            return Error("node '" + n.name + "' has a rest transform that is not finite", Location(path.string()));
+            return Error("node '" + n.name + "' has a rest transform that is not finite",
+                         Location(path.string()));
     }
     for (const NodeAnimation& a : scene.animations)
         for (const NodeTrack& t : a.tracks) {
-            if (std::none_of(scene.nodes.begin(), scene.nodes.end(), [&](const AnimNode& n) { return n.name == t.node; }))
-                return Error("animation '" + a.name + "' animates node '" + t.node + "', which is not in the scene",
+            if (std::none_of(scene.nodes.begin(), scene.nodes.end(),
+                             [&](const AnimNode& n) { return n.name == t.node; }))
+                return Error("animation '" + a.name + "' animates node '" + t.node +
+                                 "', which is not in the scene",
                              Location(path.string()));
-            if (t.translation_times.size() != t.translations.size() || t.rotation_times.size() != t.rotations.size())
-                return Error("animation '" + a.name + "', node '" + t.node + "': times and values differ in number",
+            if (t.translation_times.size() != t.translations.size() ||
+                t.rotation_times.size() != t.rotations.size())
+                return Error("animation '" + a.name + "', node '" + t.node +
+                                 "': times and values differ in number",
                              Location(path.string()));
             for (std::size_t k = 0; k < t.translations.size(); ++k)
                 if (!finite(t.translations[k]) || !std::isfinite(t.translation_times[k]))
-                    return Error("a key is not finite", Location(path.string(), 0, 0,
-                                                                 key_place(a.name, t.node, "translation", k)));
+                    return Error("a key is not finite",
+                                 Location(path.string(), 0, 0, key_place(a.name, t.node, "translation", k)));
             for (std::size_t k = 0; k < t.rotations.size(); ++k)
                 if (!finite(t.rotations[k]) || !std::isfinite(t.rotation_times[k]))
                     return Error("a key is not finite",
@@ -175,9 +181,10 @@ aiNode* build_nodes(const AnimatedScene& scene) {
     std::vector<aiNode*> made;
     for (const AnimNode& n : scene.nodes) {
         auto* node = new aiNode(n.name);
-        node->mTransformation = aiMatrix4x4(aiVector3D(n.scale.x, n.scale.y, n.scale.z),
-                                            aiQuaternion(n.rotation.w, n.rotation.x, n.rotation.y, n.rotation.z),
-                                            aiVector3D(n.translation.x, n.translation.y, n.translation.z));
+        node->mTransformation =
+            aiMatrix4x4(aiVector3D(n.scale.x, n.scale.y, n.scale.z),
+                        aiQuaternion(n.rotation.w, n.rotation.x, n.rotation.y, n.rotation.z),
+                        aiVector3D(n.translation.x, n.translation.y, n.translation.z));
         made.push_back(node);
     }
     // One root holds the scene's roots (assimp needs a single root; it is written as a node too).
@@ -210,14 +217,16 @@ aiAnimation* build_animation(const NodeAnimation& animation) {
         channel->mPositionKeys = t.translations.empty() ? nullptr : new aiVectorKey[t.translations.size()];
         for (std::size_t k = 0; k < t.translations.size(); ++k) {
             const Vec3& v = t.translations[k];
-            channel->mPositionKeys[k] = aiVectorKey(t.translation_times[k] * kTicksPerSecond, aiVector3D(v.x, v.y, v.z));
+            channel->mPositionKeys[k] =
+                aiVectorKey(t.translation_times[k] * kTicksPerSecond, aiVector3D(v.x, v.y, v.z));
             end = std::max(end, t.translation_times[k]);
         }
         channel->mNumRotationKeys = static_cast<unsigned>(t.rotations.size());
         channel->mRotationKeys = t.rotations.empty() ? nullptr : new aiQuatKey[t.rotations.size()];
         for (std::size_t k = 0; k < t.rotations.size(); ++k) {
             const Quat& q = t.rotations[k];
-            channel->mRotationKeys[k] = aiQuatKey(t.rotation_times[k] * kTicksPerSecond, aiQuaternion(q.w, q.x, q.y, q.z));
+            channel->mRotationKeys[k] =
+                aiQuatKey(t.rotation_times[k] * kTicksPerSecond, aiQuaternion(q.w, q.x, q.y, q.z));
             end = std::max(end, t.rotation_times[k]);
         }
         out->mChannels[c] = channel;
@@ -238,7 +247,8 @@ Result<void> write_gltf_animations(const std::filesystem::path& path, const Anim
     out.mRootNode = build_nodes(scene);
     out.mNumAnimations = static_cast<unsigned>(scene.animations.size());
     out.mAnimations = out.mNumAnimations == 0 ? nullptr : new aiAnimation*[out.mNumAnimations];
-    for (std::size_t a = 0; a < scene.animations.size(); ++a) out.mAnimations[a] = build_animation(scene.animations[a]);
+    for (std::size_t a = 0; a < scene.animations.size(); ++a)
+        out.mAnimations[a] = build_animation(scene.animations[a]);
     Assimp::Exporter exporter;
     if (exporter.Export(&out, ext == ".glb" ? "glb2" : "gltf2", path.string()) != AI_SUCCESS)
         return file_error(path, std::string("cannot write the glTF file: ") + exporter.GetErrorString(), {},
@@ -267,22 +277,25 @@ std::vector<ChannelInfo> scan_channels(const nlohmann::json& doc) {
         if (!anim.is_object() || !anim.contains("channels") || !anim["channels"].is_array()) continue;
         const nlohmann::json samplers = anim.value("samplers", nlohmann::json::array());
         for (const nlohmann::json& channel : anim["channels"]) {
-            if (!channel.is_object() || !channel.contains("target") || !channel["target"].is_object()) continue;
+            if (!channel.is_object() || !channel.contains("target") || !channel["target"].is_object())
+                continue;
             ChannelInfo info;
             info.animation = a;
             const nlohmann::json& target = channel["target"];
             info.path = target.value("path", std::string());
             const auto node = target.find("node");
-            if (node != target.end() && node->is_number_unsigned() && nodes != doc.end() && nodes->is_array() &&
-                node->get<std::size_t>() < nodes->size()) {
+            if (node != target.end() && node->is_number_unsigned() && nodes != doc.end() &&
+                nodes->is_array() && node->get<std::size_t>() < nodes->size()) {
                 const nlohmann::json& n = (*nodes)[node->get<std::size_t>()];
                 info.node = n.is_object() ? n.value("name", std::string()) : std::string();
             }
             const auto sampler = channel.find("sampler");
             info.interpolation = "LINEAR";
             if (sampler != channel.end() && sampler->is_number_unsigned() && samplers.is_array() &&
-                sampler->get<std::size_t>() < samplers.size() && samplers[sampler->get<std::size_t>()].is_object())
-                info.interpolation = samplers[sampler->get<std::size_t>()].value("interpolation", std::string("LINEAR"));
+                sampler->get<std::size_t>() < samplers.size() &&
+                samplers[sampler->get<std::size_t>()].is_object())
+                info.interpolation =
+                    samplers[sampler->get<std::size_t>()].value("interpolation", std::string("LINEAR"));
             out.push_back(std::move(info));
         }
     }
@@ -320,7 +333,8 @@ void collect_nodes(const aiNode* node, int parent, std::vector<AnimNode>& out) {
         aiVector3D s, t;
         aiQuaternion r;
         n->mTransformation.Decompose(s, r, t);
-        out.push_back(AnimNode{n->mName.C_Str(), p, Vec3(t.x, t.y, t.z), Quat(r.w, r.x, r.y, r.z), Vec3(s.x, s.y, s.z)});
+        out.push_back(AnimNode{n->mName.C_Str(), p, Vec3(t.x, t.y, t.z), Quat(r.w, r.x, r.y, r.z),
+                               Vec3(s.x, s.y, s.z)});
         const int index = static_cast<int>(out.size()) - 1;
         for (unsigned c = n->mNumChildren; c-- > 0;) stack.emplace_back(n->mChildren[c], index);
     }
@@ -334,7 +348,8 @@ Result<void> read_keys(const std::filesystem::path& path, const Key* keys, unsig
         const double time = keys[k].mTime / ticks;
         const Value value = convert(keys[k].mValue);
         if (!std::isfinite(time) || !finite(value))
-            return file_error(path, "a key is not a finite number (NaN or infinity)", place + " key " + std::to_string(k),
+            return file_error(path, "a key is not a finite number (NaN or infinity)",
+                              place + " key " + std::to_string(k),
                               "fix the key in the animation program and export again");
         if (!times.empty() && time <= times.back())
             return file_error(path, "key times do not increase", place + " key " + std::to_string(k),
@@ -345,8 +360,9 @@ Result<void> read_keys(const std::filesystem::path& path, const Key* keys, unsig
     return ok();
 }
 
-Result<NodeAnimation> read_animation(const std::filesystem::path& path, const aiAnimation& anim, std::size_t index,
-                                     const std::vector<ChannelInfo>& channels, std::vector<std::string>& ignored) {
+Result<NodeAnimation> read_animation(const std::filesystem::path& path, const aiAnimation& anim,
+                                     std::size_t index, const std::vector<ChannelInfo>& channels,
+                                     std::vector<std::string>& ignored) {
     NodeAnimation out;
     out.name = anim.mName.length > 0 ? anim.mName.C_Str() : "animation_" + std::to_string(index);
     const double ticks = anim.mTicksPerSecond > 0 ? anim.mTicksPerSecond : kTicksPerSecond;
@@ -358,15 +374,15 @@ Result<NodeAnimation> read_animation(const std::filesystem::path& path, const ai
         // assimp fills a property the file does not animate with one rest key: only animated ones are read.
         if (const ChannelInfo* info = find_channel(channels, index, track.node, "translation")) {
             track.translation_interpolation = interpolation_of(*info);
-            auto r = read_keys(path, channel.mPositionKeys, channel.mNumPositionKeys, ticks, place + "translation",
-                               track.translation_times, track.translations,
+            auto r = read_keys(path, channel.mPositionKeys, channel.mNumPositionKeys, ticks,
+                               place + "translation", track.translation_times, track.translations,
                                [](const aiVector3D& v) { return Vec3(v.x, v.y, v.z); });
             if (!r) return r.error();
         }
         if (const ChannelInfo* info = find_channel(channels, index, track.node, "rotation")) {
             track.rotation_interpolation = interpolation_of(*info);
-            auto r = read_keys(path, channel.mRotationKeys, channel.mNumRotationKeys, ticks, place + "rotation",
-                               track.rotation_times, track.rotations,
+            auto r = read_keys(path, channel.mRotationKeys, channel.mNumRotationKeys, ticks,
+                               place + "rotation", track.rotation_times, track.rotations,
                                [](const aiQuaternion& q) { return Quat(q.w, q.x, q.y, q.z); });
             if (!r) return r.error();
         }
@@ -388,9 +404,11 @@ Result<AnimatedScene> read_gltf_animations(const std::filesystem::path& path) {
     using namespace gltf_io;
     const std::string ext = lower_extension(path);
     if (ext != ".gltf" && ext != ".glb")
-        return file_error(path, "\"" + ext + "\" is not a glTF file", {}, "export the animation as .glb or .gltf");
+        return file_error(path, "\"" + ext + "\" is not a glTF file", {},
+                          "export the animation as .glb or .gltf");
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) return file_error(path, "no such file", {}, "check the path");
+    if (!std::filesystem::is_regular_file(path, ec))
+        return file_error(path, "no such file", {}, "check the path");
     auto doc = read_document(path, ext == ".glb");
     if (!doc) return doc.error();
     const std::vector<ChannelInfo> channels = scan_channels(*doc);

@@ -41,7 +41,8 @@ void write_json(const std::filesystem::path& p, const nlohmann::json& doc) {
     std::ofstream(p) << doc.dump(2);
 }
 
-void check_refused(const Result<AnimatedScene>& r, const std::filesystem::path& file, const std::string& what) {
+void check_refused(const Result<AnimatedScene>& r, const std::filesystem::path& file,
+                   const std::string& what) {
     REQUIRE_FALSE(r.ok());
     INFO(r.error().str());
     CHECK(r.error().where.file == file.string());
@@ -71,7 +72,8 @@ TEST_CASE("modelio: node animations round-trip through .glb and .gltf; nodes are
             CHECK(std::abs(glm::dot(t.rotations[k], scene.animations[0].tracks[0].rotations[k])) ==
                   doctest::Approx(1.0).epsilon(1e-6));
         CHECK(t.translations[1].y == doctest::Approx(0.7f));
-        const auto arm = std::find_if(back->nodes.begin(), back->nodes.end(), [](auto& n) { return n.name == "arm"; });
+        const auto arm =
+            std::find_if(back->nodes.begin(), back->nodes.end(), [](auto& n) { return n.name == "arm"; });
         REQUIRE(arm != back->nodes.end());
         REQUIRE(arm->parent >= 0);
         CHECK(back->nodes[static_cast<std::size_t>(arm->parent)].name == "base");
@@ -97,7 +99,8 @@ TEST_CASE("modelio: scale channels, step and cubic-spline keys are reported") {
     scale["target"]["path"] = "scale";
     anim["channels"].push_back(scale);
     for (auto& c : anim["channels"])
-        if (c["target"]["path"] == "rotation") anim["samplers"][c["sampler"].get<std::size_t>()]["interpolation"] = "STEP";
+        if (c["target"]["path"] == "rotation")
+            anim["samplers"][c["sampler"].get<std::size_t>()]["interpolation"] = "STEP";
     write_json(file, doc);
     auto back = read_gltf_animations(file);
     REQUIRE(back.ok());
@@ -126,8 +129,9 @@ TEST_CASE("modelio: truncated, NaN-keyed and animation-free glTF files are refus
     const nlohmann::json doc = read_json(gltf);
     for (const auto& c : doc["animations"][0]["channels"]) {
         if (c["target"]["path"] != "rotation") continue;
-        const auto& acc = doc["accessors"][doc["animations"][0]["samplers"][c["sampler"].get<std::size_t>()]["output"]
-                                               .get<std::size_t>()];
+        const auto& acc =
+            doc["accessors"][doc["animations"][0]["samplers"][c["sampler"].get<std::size_t>()]["output"]
+                                 .get<std::size_t>()];
         const auto& view = doc["bufferViews"][acc["bufferView"].get<std::size_t>()];
         const auto bin = dir / doc["buffers"][0]["uri"].get<std::string>();
         std::fstream f(bin, std::ios::in | std::ios::out | std::ios::binary);
