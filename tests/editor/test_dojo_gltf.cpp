@@ -141,7 +141,7 @@ TEST_CASE("dojo glTF: nodes the rig has not are reported; a file matching no nod
     CHECK(dojo_test::text(file) == dojo_test::text(original));
 }
 
-TEST_CASE("dojo glTF: step keys hold, then jump; a spin stays continuous") {
+TEST_CASE("dojo glTF: step keys hold, then jump") {
     const anim::Rig rig = model_rig();
     anim::AnimationFile file = dojo_test::shipped_clips();
     REQUIRE(
