@@ -334,8 +334,10 @@ void DojoPanel::panel(float x, float y, float width, float height) {
     clip_list_.loop_row(dojo);
     right_pages(dojo);
     file_.row(dojo);
+    gltf_.buttons(dojo);
     ImGui::EndChild();
     clip_list_.dialog(dojo);
+    gltf_.prompt(dojo);
     events_.popup(dojo);
     ImGui::End();
 }

@@ -21,6 +21,7 @@
 #include "ui/dojo_curve_view.h"
 #include "ui/dojo_events.h"
 #include "ui/dojo_file.h"
+#include "ui/dojo_gltf_prompt.h"
 #include "ui/dojo_key_table.h"
 #include "ui/dojo_preview.h"
 #include "ui/dojo_timeline.h"
@@ -148,6 +149,7 @@ class DojoPanel {
     DojoCurveView curve_view_;
     DojoBlendGrid blend_grid_;
     DojoFile file_;
+    DojoGltfPrompt gltf_;
 };
 
 } // namespace ks::editor::ui
