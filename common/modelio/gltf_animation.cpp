@@ -1,7 +1,5 @@
 #include "modelio/gltf_animation.h"
 
-#include "core/files.h"
-
 #include <assimp/Exporter.hpp>
 #include <assimp/Importer.hpp>
 #include <assimp/scene.h>
@@ -50,23 +48,13 @@ std::string key_place(const std::string& animation, const std::string& node, con
 
 // ---- the file's JSON (a .gltf file, or a .glb's first chunk) ------------------------------------------
 
-struct GlbChunks {
-    std::string json;
-    std::string rest; // every chunk after the JSON one, as stored (length, type, data)
-};
-
 std::uint32_t read_u32(const std::string& bytes, std::size_t at) {
     std::uint32_t v = 0;
     std::memcpy(&v, bytes.data() + at, 4);
     return v;
 }
-void append_u32(std::string& out, std::uint32_t v) {
-    char b[4];
-    std::memcpy(b, &v, 4);
-    out.append(b, 4);
-}
-
-Result<GlbChunks> split_glb(const std::filesystem::path& path, const std::string& bytes) {
+// The JSON chunk of a .glb file.
+Result<std::string> glb_json(const std::filesystem::path& path, const std::string& bytes) {
     if (bytes.size() < 20 || bytes.compare(0, 4, "glTF") != 0)
         return file_error(path, "not a binary glTF (.glb) file: no glTF header", "file header",
                           "export the file again as glTF 2.0 binary");
@@ -74,20 +62,7 @@ Result<GlbChunks> split_glb(const std::filesystem::path& path, const std::string
     if (read_u32(bytes, 16) != 0x4E4F534Au || 20 + std::size_t{json_length} > bytes.size())
         return file_error(path, "the .glb file is truncated or corrupt (its JSON chunk is cut off)",
                           "JSON chunk", "export the file again");
-    return GlbChunks{bytes.substr(20, json_length), bytes.substr(20 + std::size_t{json_length})};
-}
-
-std::string join_glb(const GlbChunks& chunks) {
-    std::string json = chunks.json;
-    while (json.size() % 4 != 0) json.push_back(' ');
-    std::string out = "glTF";
-    append_u32(out, 2);
-    append_u32(out, static_cast<std::uint32_t>(12 + 8 + json.size() + chunks.rest.size()));
-    append_u32(out, static_cast<std::uint32_t>(json.size()));
-    append_u32(out, 0x4E4F534Au);
-    out += json;
-    out += chunks.rest;
-    return out;
+    return bytes.substr(20, json_length);
 }
 
 Result<std::string> read_bytes(const std::filesystem::path& path) {
@@ -102,43 +77,6 @@ Result<nlohmann::json> parse_json(const std::filesystem::path& path, const std::
         return file_error(path, "the glTF JSON is not valid (truncated or corrupt)", "JSON",
                           "export the file again");
     return doc;
-}
-
-// assimp writes every node as a matrix; glTF forbids animating such a node, so the written file's nodes get
-// the scene's translation, rotation and scale instead (matched by name).
-void nodes_as_trs(nlohmann::json& doc, const AnimatedScene& scene) {
-    if (!doc.contains("nodes") || !doc["nodes"].is_array()) return;
-    for (nlohmann::json& node : doc["nodes"]) {
-        node.erase("matrix");
-        const std::string name = node.value("name", std::string());
-        const auto found = std::find_if(scene.nodes.begin(), scene.nodes.end(),
-                                        [&](const AnimNode& n) { return n.name == name; });
-        if (found == scene.nodes.end()) continue;
-        const Vec3& t = found->translation;
-        const Quat& r = found->rotation;
-        const Vec3& s = found->scale;
-        node["translation"] = {t.x, t.y, t.z};
-        node["rotation"] = {r.x, r.y, r.z, r.w};
-        node["scale"] = {s.x, s.y, s.z};
-    }
-}
-
-Result<void> rewrite_nodes(const std::filesystem::path& path, const AnimatedScene& scene, bool binary) {
-    auto bytes = read_bytes(path);
-    if (!bytes) return bytes.error();
-    GlbChunks chunks;
-    if (binary) {
-        auto split = split_glb(path, *bytes);
-        if (!split) return split.error();
-        chunks = std::move(*split);
-    } else {
-        chunks.json = std::move(*bytes);
-    }
-    auto doc = parse_json(path, chunks.json);
-    if (!doc) return doc.error();
-    nodes_as_trs(*doc, scene);
-    chunks.json = doc->dump(binary ? -1 : 2);
-    return files::write_atomic(path, binary ? join_glb(chunks) : chunks.json);
 }
 
 // ---- writing --------------------------------------------------------------------------------------------
@@ -253,7 +191,7 @@ Result<void> write_gltf_animations(const std::filesystem::path& path, const Anim
     if (exporter.Export(&out, ext == ".glb" ? "glb2" : "gltf2", path.string()) != AI_SUCCESS)
         return file_error(path, std::string("cannot write the glTF file: ") + exporter.GetErrorString(), {},
                           "check that the folder exists and is writable");
-    return rewrite_nodes(path, scene, ext == ".glb");
+    return ok();
 }
 
 namespace gltf_io {
@@ -320,9 +258,9 @@ Result<nlohmann::json> read_document(const std::filesystem::path& path, bool bin
     if (!bytes) return bytes.error();
     if (bytes->empty()) return file_error(path, "the file is empty", {}, "export the animation again");
     if (!binary) return parse_json(path, *bytes);
-    auto chunks = split_glb(path, *bytes);
-    if (!chunks) return chunks.error();
-    return parse_json(path, chunks->json);
+    auto json = glb_json(path, *bytes);
+    if (!json) return json.error();
+    return parse_json(path, *json);
 }
 
 void collect_nodes(const aiNode* node, int parent, std::vector<AnimNode>& out) {

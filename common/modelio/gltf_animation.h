@@ -50,8 +50,8 @@ struct AnimatedScene {
 };
 
 // Writes `scene` as glTF 2.0: binary .glb or .gltf (JSON with the keys in a .bin beside it), chosen by the
-// extension. Nodes carry translation/rotation/scale (never a matrix: glTF forbids animating a node given by a
-// matrix, which assimp's exporter writes). Refuses non-finite values, unordered times and unknown nodes.
+// extension (assimp writes each node's translation/rotation/scale, as glTF requires of animated nodes).
+// Refuses non-finite values and tracks naming a node the scene has not.
 Result<void> write_gltf_animations(const std::filesystem::path& path, const AnimatedScene& scene);
 
 // Reads every node (with its name and rest transform) and every animation's translation and rotation keys.
