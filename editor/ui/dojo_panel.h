@@ -14,6 +14,7 @@
 // arranges the parts, each an object with its own state: DojoPreview (3D preview, onion skin), DojoTimeline
 // (transport, timeline) and the transition tester, DojoEvents (event lane, list, popup), DojoClipList,
 // DojoKeyTable, DojoCurveView, DojoBlendGrid and DojoFile (save, reload, changes on disk, the questions).
+#include "model/dojo_clipboard.h"
 #include "model/dojo_curves.h"
 #include "ui/dojo_blend_grid.h"
 #include "ui/dojo_clip_list.h"
@@ -87,6 +88,10 @@ class DojoPanel {
     void reload();
     // Delete in the Dojo tab: removes the selected event; false when none is selected.
     bool delete_selected();
+    // Ctrl+C: the shown key's values; Ctrl+Shift+C: the pose at the playhead. Ctrl+V pastes them into the
+    // shown key, Ctrl+Shift+V mirrored left <-> right (model/dojo_clipboard.h); each paste one undo step.
+    void copy(bool pose);
+    void paste(bool mirror);
     // The dojo's questions (reload over unsaved edits, save over outside changes, quit with unsaved edits),
     // drawn whichever tab is shown.
     void prompts();
@@ -150,6 +155,7 @@ class DojoPanel {
     DojoBlendGrid blend_grid_;
     DojoFile file_;
     DojoGltfPrompt gltf_;
+    DojoKeyClipboard clipboard_;
 };
 
 } // namespace ks::editor::ui
