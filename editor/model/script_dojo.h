@@ -25,6 +25,16 @@ struct DojoSave {
     std::string path; // empty: the opened file
     Result<void> run(ScriptContext& c) const;
 };
+// glTF for Blender (dojo_gltf.h): every clip, or the one named, written with the file's rig; a glTF's node
+// animations read into clips (what did not map goes to the log).
+struct DojoExport {
+    std::string path, clip; // clip empty: every clip
+    Result<void> run(ScriptContext& c) const;
+};
+struct DojoImport {
+    std::string path;
+    Result<void> run(ScriptContext& c) const;
+};
 struct DojoUndo {
     int count = 1;
     Result<void> run(ScriptContext& c) const;
@@ -195,14 +205,14 @@ struct ExpectDojoDirty {
 } // namespace steps
 
 struct DojoStep {
-    std::variant<steps::DojoOpen, steps::DojoSave, steps::DojoUndo, steps::DojoRedo, steps::ClipNew,
-                 steps::ClipDuplicate, steps::ClipRename, steps::ClipDelete, steps::ClipLoop,
-                 steps::BlendDefault, steps::BlendSet, steps::BlendClear, steps::EventAdd, steps::EventMove,
-                 steps::EventRename, steps::EventSound, steps::EventRemove, steps::KeyTime, steps::KeyValue,
-                 steps::KeyAdd, steps::KeyRemove, steps::ExpectClipExists, steps::ExpectClipLoop,
-                 steps::ExpectClipDuration, steps::ExpectBlend, steps::ExpectEvents, steps::ExpectEvent,
-                 steps::ExpectKeyTime, steps::ExpectKeyValue, steps::ExpectCurve, steps::ExpectDojoValid,
-                 steps::ExpectDojoIssue, steps::ExpectDojoDirty>
+    std::variant<steps::DojoOpen, steps::DojoSave, steps::DojoExport, steps::DojoImport, steps::DojoUndo,
+                 steps::DojoRedo, steps::ClipNew, steps::ClipDuplicate, steps::ClipRename, steps::ClipDelete,
+                 steps::ClipLoop, steps::BlendDefault, steps::BlendSet, steps::BlendClear, steps::EventAdd,
+                 steps::EventMove, steps::EventRename, steps::EventSound, steps::EventRemove, steps::KeyTime,
+                 steps::KeyValue, steps::KeyAdd, steps::KeyRemove, steps::ExpectClipExists,
+                 steps::ExpectClipLoop, steps::ExpectClipDuration, steps::ExpectBlend, steps::ExpectEvents,
+                 steps::ExpectEvent, steps::ExpectKeyTime, steps::ExpectKeyValue, steps::ExpectCurve,
+                 steps::ExpectDojoValid, steps::ExpectDojoIssue, steps::ExpectDojoDirty>
         step;
     // Every step but DojoOpen refuses to run before a clip file is open.
     Result<void> run(ScriptContext& c) const;

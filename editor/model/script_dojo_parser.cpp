@@ -7,7 +7,8 @@ namespace ks::editor {
 namespace {
 using namespace script_tokens;
 
-constexpr const char* kDojoUsage = "dojo open [FILE] | dojo save [FILE] | dojo undo|redo [N|all]";
+constexpr const char* kDojoUsage = "dojo open [FILE] | dojo save [FILE] | dojo export FILE.glb [CLIP] | dojo "
+                                   "import FILE.glb | dojo undo|redo [N|all]";
 constexpr const char* kClipUsage =
     "clip new NAME [from CLIP [SECONDS]] | clip duplicate|delete NAME | clip rename "
     "OLD NEW | clip loop NAME once|loop|ping_pong|next [NEXT]";
@@ -79,6 +80,14 @@ Result<ScriptStep> parse_dojo(const LineWords& words) {
     const std::string_view action = w.text(1);
     if (action == "open") return dojo_step(steps::DojoOpen{w.size() > 2 ? w.rest(2) : std::string()});
     if (action == "save") return dojo_step(steps::DojoSave{w.size() > 2 ? w.rest(2) : std::string()});
+    if (action == "export") {
+        if (auto r = w.need(3, 4, kDojoUsage); !r) return r.error();
+        return dojo_step(steps::DojoExport{w.word(2), w.size() == 4 ? w.word(3) : std::string()});
+    }
+    if (action == "import") {
+        if (auto r = w.need(3, 3, kDojoUsage); !r) return r.error();
+        return dojo_step(steps::DojoImport{w.word(2)});
+    }
     if (action == "undo" || action == "redo") {
         if (auto r = w.need(2, 3, kDojoUsage); !r) return r.error();
         int count = 1;

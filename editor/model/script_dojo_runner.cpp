@@ -1,9 +1,11 @@
 // The script language's dojo steps run on the script's DojoDocument (script_dojo.h): each edit through
 // DojoDocument::edit (one undo step, named after the line's words), each expectation checked against the
 // file.
+#include "core/log.h"
 #include "core/paths.h"
 #include "jsonio/number_text.h"
 #include "model/dojo_curves.h"
+#include "model/dojo_gltf.h"
 #include "model/script_command.h"
 
 #include <cmath>
@@ -77,6 +79,29 @@ Result<void> DojoSave::run(ScriptContext& c) const {
     if (auto saved = c.dojo.save(path.empty() ? std::filesystem::path() : c.resolve(path)); !saved)
         return saved;
     c.report.saved.push_back(c.dojo.path());
+    return ok();
+}
+Result<void> DojoExport::run(ScriptContext& c) const {
+    auto rig = anim::build_rig(c.dojo.file());
+    if (!rig) return rig.error();
+    std::vector<std::size_t> clips;
+    if (!clip.empty()) {
+        auto index = clip_index(c, clip);
+        if (!index) return index.error();
+        clips.push_back(*index);
+    }
+    if (auto written = export_clips_gltf(c.dojo.file(), *rig, clips, c.resolve(path)); !written)
+        return written;
+    c.report.saved.push_back(c.resolve(path));
+    return ok();
+}
+Result<void> DojoImport::run(ScriptContext& c) const {
+    auto rig = anim::build_rig(c.dojo.file());
+    if (!rig) return rig.error();
+    auto report = c.dojo.edit("import glTF " + path,
+                              [&](auto& f) { return import_clips_gltf(f, *rig, c.resolve(path)); });
+    if (!report) return report.error();
+    log::info(c.file_name + ":" + std::to_string(c.line) + ": " + report->summary());
     return ok();
 }
 Result<void> DojoUndo::run(ScriptContext& c) const {

@@ -246,6 +246,30 @@ bool DojoPanel::delete_selected() {
     return events_.delete_selected(context());
 }
 
+void DojoPanel::copy(bool pose) {
+    const DojoContext dojo = context();
+    if (dojo.shown_def() == nullptr || playback_.player() == nullptr) return;
+    const auto key = static_cast<std::size_t>(selection_.phase);
+    if (pose) {
+        clipboard_ = copy_pose(pose_values(playback_.rig(), playback_.player()->pose()));
+        log_("dojo: copied the pose at " + std::to_string(dojo.clip_time()) + " s", false);
+        return;
+    }
+    auto copied = copy_key(edits_.file(), dojo.clip_index(), key);
+    if (!copied) return edits_.refuse(copied.error());
+    clipboard_ = std::move(*copied);
+    log_("dojo: copied key " + std::to_string(key + 1) + " of " + dojo.shown_def()->name, false);
+}
+
+void DojoPanel::paste(bool mirror) {
+    const DojoContext dojo = context();
+    if (dojo.shown_def() == nullptr) return;
+    const std::size_t clip = dojo.clip_index(), key = static_cast<std::size_t>(selection_.phase);
+    const DojoKeyClipboard values = mirror ? mirrored(clipboard_, edits_.file()) : clipboard_;
+    edits_.apply(mirror ? "paste mirrored" : "paste",
+                 [&](anim::AnimationFile& file) { return paste_key(file, clip, key, values); });
+}
+
 DojoPanel::Status DojoPanel::status() const {
     Status st;
     const anim::AnimationFile& file = edits_.file();
@@ -334,8 +358,10 @@ void DojoPanel::panel(float x, float y, float width, float height) {
     clip_list_.loop_row(dojo);
     right_pages(dojo);
     file_.row(dojo);
+    gltf_.buttons(dojo);
     ImGui::EndChild();
     clip_list_.dialog(dojo);
+    gltf_.prompt(dojo);
     events_.popup(dojo);
     ImGui::End();
 }

@@ -14,6 +14,7 @@
 // arranges the parts, each an object with its own state: DojoPreview (3D preview, onion skin), DojoTimeline
 // (transport, timeline) and the transition tester, DojoEvents (event lane, list, popup), DojoClipList,
 // DojoKeyTable, DojoCurveView, DojoBlendGrid and DojoFile (save, reload, changes on disk, the questions).
+#include "model/dojo_clipboard.h"
 #include "model/dojo_curves.h"
 #include "ui/dojo_blend_grid.h"
 #include "ui/dojo_clip_list.h"
@@ -21,6 +22,7 @@
 #include "ui/dojo_curve_view.h"
 #include "ui/dojo_events.h"
 #include "ui/dojo_file.h"
+#include "ui/dojo_gltf_prompt.h"
 #include "ui/dojo_key_table.h"
 #include "ui/dojo_preview.h"
 #include "ui/dojo_timeline.h"
@@ -86,6 +88,10 @@ class DojoPanel {
     void reload();
     // Delete in the Dojo tab: removes the selected event; false when none is selected.
     bool delete_selected();
+    // Ctrl+C: the shown key's values; Ctrl+Shift+C: the pose at the playhead. Ctrl+V pastes them into the
+    // shown key, Ctrl+Shift+V mirrored left <-> right (model/dojo_clipboard.h); each paste one undo step.
+    void copy(bool pose);
+    void paste(bool mirror);
     // The dojo's questions (reload over unsaved edits, save over outside changes, quit with unsaved edits),
     // drawn whichever tab is shown.
     void prompts();
@@ -148,6 +154,8 @@ class DojoPanel {
     DojoCurveView curve_view_;
     DojoBlendGrid blend_grid_;
     DojoFile file_;
+    DojoGltfPrompt gltf_;
+    DojoKeyClipboard clipboard_;
 };
 
 } // namespace ks::editor::ui

@@ -302,6 +302,8 @@ void EditorApp::handle_shortcuts() {
     if (pressed(GLFW_KEY_F5)) play_.start(editor_.level(), shift ? &viewport_.camera() : nullptr);
     if (dojo_tab_) {
         if (pressed(GLFW_KEY_DELETE)) dojo_->delete_selected();
+        if (ctrl && pressed(GLFW_KEY_C)) dojo_->copy(shift);
+        if (ctrl && pressed(GLFW_KEY_V)) dojo_->paste(shift);
         return; // the rest acts on the level viewport
     }
     if (viewport_.geometry_tool_keys(ctrl)) return;

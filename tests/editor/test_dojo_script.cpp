@@ -215,3 +215,25 @@ TEST_CASE("dojo script: 'dojo open' without a file opens the robot's clips") {
     REQUIRE_MESSAGE(r.ok(), (r.ok() ? std::string() : r.error().str()));
     CHECK(r->expectations_checked == 3);
 }
+
+TEST_CASE("dojo script: a clip exported to glTF and imported back as a new clip; a missing file refused") {
+    ScratchClips clips;
+    auto r = run_dojo("dojo open robot.json\n"
+                      "dojo export idle.glb idle\n"
+                      "clip duplicate alert\n"
+                      "dojo export alert.gltf alert_copy\n"
+                      "clip delete alert_copy\n"
+                      "dojo import alert.gltf\n"
+                      "expect clip alert_copy exists\n"
+                      "expect clip alert_copy duration 0.6\n"
+                      "dojo undo\n"
+                      "expect clip alert_copy missing\n",
+                      clips.dir.path());
+    REQUIRE_MESSAGE(r.ok(), (r.ok() ? std::string() : r.error().str()));
+    REQUIRE(r->saved.size() == 2);
+    CHECK(std::filesystem::exists(clips.dir / "idle.glb"));
+    CHECK(std::filesystem::exists(clips.dir / "alert.gltf"));
+    const std::string error =
+        error_of(run_dojo("dojo open robot.json\ndojo import missing.glb\n", clips.dir.path()));
+    CHECK(ks::test::contains_text(error, "missing.glb"));
+}

@@ -179,6 +179,14 @@ TEST_CASE("dojo input: an event added at the playhead, a curve key dragged (one 
     CHECK(st["dojo"]["undo"] == 2); // the whole drag is one step
     CHECK(st["dojo"]["undo_name"].get<std::string>().find("drag key 1 of") == 0);
 
+    // Ctrl+C copies the shown key, Ctrl+Shift+V pastes it mirrored (one undo step); undone before saving.
+    s.key("ctrl+c");
+    s.key("ctrl+shift+v");
+    st = s.wait("the key pasted mirrored", [](const json& j) { return j["dojo"]["undo"] == 3; });
+    CHECK(st["dojo"]["undo_name"] == "paste mirrored");
+    s.key("ctrl+z");
+    st = s.wait("the paste undone", [](const json& j) { return j["dojo"]["undo"] == 2; });
+
     s.click(st["dojo"]["spots"]["save"]);
     st = s.wait("saved", [](const json& j) { return j["dojo"]["dirty"] == false; });
     auto saved = anim::load_animation_file(clips);
