@@ -108,6 +108,9 @@ class GameApp {
         std::filesystem::path audio_out; // --audio-out: record the mix to this WAV instead of playing it
         std::filesystem::path campaign;  // --campaign: start this campaign (else levels/campaign.json)
         bool start_campaign = false;     // --campaign given: play it from its first level at once
+        // --difficulty: played instead of the options' choice (the Options screen shows it; it is written to
+        // the file only when the player changes the options there).
+        std::optional<game::Difficulty> difficulty;
     };
     Result<void> start(const Automation& a);
     Result<void> set_up_scenario(const Automation& a, std::optional<Screen> screen);

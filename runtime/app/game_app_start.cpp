@@ -26,6 +26,7 @@ Result<void> GameApp::start(const Automation& a) {
     audio_ = std::move(*opened);
     audio_->apply_options(options_);
     status_path_ = a.status_file;
+    if (a.difficulty) options_.difficulty = *a.difficulty;
     script_ = a.script;
     scripted_ = a.scripted;
     // A scripted run reads no real pad (a controller on the desk must not disturb a test): only the script's.

@@ -26,6 +26,7 @@ void GameApp::write_status(const shell::FrameInfo& info) {
     add("options sensitivity %.2f fov %.0f invert_y %d render_scale %.2f quality %s",
         options_.mouse_sensitivity, options_.fov_degrees, options_.invert_y ? 1 : 0, options_.render_scale,
         quality_name(options_.quality));
+    add("difficulty %s", game::difficulty_name(options_.difficulty));
     // What the renderer made of them (automatic values resolved for this GL driver).
     add("renderer render_scale %.2f quality %s", renderer_.render_scale(),
         renderer_.quality() == render::RenderQuality::Fast ? "fast" : "full");

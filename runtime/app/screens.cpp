@@ -31,6 +31,20 @@ void two_columns(const char* left, const char* right, float split) {
     ImGui::SameLine(ImGui::GetWindowWidth() * split + 12.0f);
     ImGui::TextUnformatted(right);
 }
+
+// Easy, Normal, Hard (game/difficulty.h); `label` places the row's label and the control. True on a change.
+template <class Label> bool difficulty_row(Options& o, const Label& label) {
+    label("Difficulty");
+    int d = static_cast<int>(o.difficulty);
+    bool moved = false;
+    for (game::Difficulty choice : game::kDifficulties) {
+        if (choice != game::Difficulty::Easy) ImGui::SameLine();
+        moved |= ImGui::RadioButton(game::difficulty_title(choice), &d, static_cast<int>(choice));
+        ui::record_button(game::difficulty_title(choice));
+    }
+    if (moved) o.difficulty = static_cast<game::Difficulty>(d);
+    return moved;
+}
 } // namespace
 
 void loading_screen(float fraction, const std::string& step, const shell::Fonts& fonts, float w, float h) {
@@ -271,6 +285,7 @@ MenuAction options_panel(Options& o, bool& changed, const shell::Fonts& fonts, f
     label("Mute (M)");
     changed |= ImGui::Checkbox("##mute", &o.muted);
     ui::record_button("Mute (M)");
+    changed |= difficulty_row(o, label);
     ImGui::SetCursorPosY(std::max(bottom, ImGui::GetCursorPosY()));
     ImGui::SetCursorPosX(40 * s);
     ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(90, 100, 110, 255));
