@@ -114,9 +114,8 @@ int run_table(const std::vector<std::filesystem::path>& levels, const Matrix& ma
 } // namespace
 
 const std::vector<std::string>& analyze_option_names() {
-    static const std::vector<std::string> names{"analyze", "runs",       "report",
-                                                "seconds", "threads",    "bot-profile",
-                                                "difficulty"};
+    static const std::vector<std::string> names{"analyze", "runs",        "report",    "seconds",
+                                                "threads", "bot-profile", "difficulty"};
     return names;
 }
 

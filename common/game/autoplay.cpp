@@ -49,6 +49,13 @@ Autoplay::Autoplay(const Game& game, std::shared_ptr<nav::NavMesh> mesh, std::ui
     path_.reserve(64);
 }
 
+bool Autoplay::noticed(const Game& game, const Robot& r, const Vec3& to_robot) const {
+    if (settings_.view_half_angle >= kPi) return true;
+    if (since_shot_ < kTargetMemory && geometry::ground_distance(shot_from_, r.feet) < 3.0f) return true;
+    const float off = std::abs(wrap_angle(yaw_toward(Vec3(0.0f), to_robot) - game.player().yaw));
+    return off <= settings_.view_half_angle;
+}
+
 int Autoplay::pick_target(const Game& game) const {
     const PlayerState& p = game.player();
     const Vec3 eye = p.eye();
@@ -64,7 +71,7 @@ int Autoplay::pick_target(const Game& game) const {
         const Vec3 centre = r.feet + Vec3(0, 1.5f, 0);
         const Vec3 d = centre - eye;
         const float dist = glm::length(d);
-        if (dist >= best_distance || dist < 1e-3f) continue;
+        if (dist >= best_distance || dist < 1e-3f || !noticed(game, r, d)) continue;
         physics::RayHit hit;
         if (!game.world().ray_closest({eye, d / dist, dist + 2.0f}, hit, filter) || !(hit.body == r.body))
             continue;
@@ -90,7 +97,12 @@ void Autoplay::aim_at(const Game& game, const Vec3& point, Input& in, float& yaw
 }
 
 void Autoplay::notice_events(const Game& game) {
+    since_shot_ += static_cast<float>(game.settings().step);
     for (const Event& e : game.events()) {
+        if (e.type == EventType::PlayerDamaged && e.position != e.end) { // from somewhere (not a fall)
+            shot_from_ = e.position;
+            since_shot_ = 0.0f;
+        }
         switch (e.type) {
         case EventType::ObjectiveCompleted:
         case EventType::DoorToggled:

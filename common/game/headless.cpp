@@ -48,8 +48,8 @@ const std::vector<std::string>& headless_flags() {
 }
 
 const std::vector<std::string>& headless_option_names() {
-    static const std::vector<std::string> names{"headless", "autoplay",   "level",      "seconds",
-                                                "seed",     "record",     "replay",     "stats-json",
+    static const std::vector<std::string> names{"headless",   "autoplay",   "level",  "seconds",
+                                                "seed",       "record",     "replay", "stats-json",
                                                 "difficulty", "bot-profile"};
     return names;
 }

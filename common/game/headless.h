@@ -1,6 +1,7 @@
 #pragma once
 // Runs the game without a window: `killswitch --headless --level FILE [--seconds S] [--seed N] [--autoplay]
-// [--record FILE | --replay FILE] [--stats-json FILE|-] [--difficulty easy|normal|hard] [--bot-profile NAME]`. The runtime's main calls
+// [--record FILE | --replay FILE] [--stats-json FILE|-] [--difficulty easy|normal|hard] [--bot-profile
+// NAME]`. The runtime's main calls
 //   auto options = ks::game::parse_headless_options(command_line);   // Result<HeadlessOptions>
 //   auto stats = ks::game::run_headless(*options);                     // Result<HeadlessStats>
 // and returns exit code 0 on success (print stats->summary()). Without --autoplay or --replay the player
@@ -24,7 +25,7 @@ struct HeadlessOptions {
     std::uint64_t seed = 1;
     bool autoplay = false;
     Difficulty difficulty = Difficulty::Normal;
-    std::string bot_profile = "perfect"; // game/bot_profiles.h; only with autoplay
+    std::string bot_profile = "perfect";              // game/bot_profiles.h; only with autoplay
     std::filesystem::path record, replay, stats_json; // stats_json "-" = stdout
     // Observers a driver adds (the runtime's --audio-out recorder): called once the level and game exist,
     // after every step, and once at the end (the game in its final state). An error stops the run and is

@@ -27,7 +27,7 @@ struct RunSlot {
 struct Shared {
     const level::Level& level;
     const AnalysisOptions& options;
-    AutoplaySettings bot; // the options' profile
+    AutoplaySettings bot;                                 // the options' profile
     std::shared_ptr<const nav::NavMesh> robot_navigation; // copied by every game (null: each builds one)
     std::stop_token stop;
     AnalysisProgress* progress = nullptr;
@@ -175,7 +175,8 @@ Result<void> check_analysis_options(const AnalysisOptions& o) {
         return option_error("the path interval must be 1/120 s .. 3600 s", "path_interval", "e.g. 0.25");
     if (!(o.cell_size >= 0.25f && o.cell_size <= 1000.0f))
         return option_error("the heat map cell size must be 0.25 .. 1000 units", "cell_size", "e.g. 4");
-    if (auto profile = bot_profile(o.bot_profile, Location("analysis options", 0, 0, "bot_profile")); !profile)
+    if (auto profile = bot_profile(o.bot_profile, Location("analysis options", 0, 0, "bot_profile"));
+        !profile)
         return profile.error();
     return ok();
 }
@@ -192,8 +193,8 @@ Result<PlaytestReport> analyze_level(const level::Level& level, const AnalysisOp
     // A failed run stops the others; a stop from outside does too (stop_callback forwards it).
     std::stop_source abort;
     std::stop_callback forward(stop, [&abort] { abort.request_stop(); });
-    const Shared shared{level, options, *bot_profile(options.bot_profile, {}), robot_navigation,
-                        abort.get_token(), progress};
+    const Shared shared{
+        level, options, *bot_profile(options.bot_profile, {}), robot_navigation, abort.get_token(), progress};
     std::vector<RunSlot> slots(static_cast<std::size_t>(options.runs));
     std::atomic<int> next{0};
     std::atomic<bool> failed{false};

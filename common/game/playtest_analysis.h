@@ -22,12 +22,12 @@
 namespace ks::game {
 
 struct AnalysisOptions {
-    int runs = 20;               // seeds 1..runs
-    double seconds = 300.0;      // simulated time limit of a run
-    int threads = 0;             // worker threads; 0: std::thread::hardware_concurrency()
-    double path_interval = 0.25; // simulated seconds between samples of the bot's path
-    float cell_size = 4.0f;      // heat map cells, world units along x and z
-    std::string level_name;      // the report's "level" (a file name); the level's name when empty
+    int runs = 20;                       // seeds 1..runs
+    double seconds = 300.0;              // simulated time limit of a run
+    int threads = 0;                     // worker threads; 0: std::thread::hardware_concurrency()
+    double path_interval = 0.25;         // simulated seconds between samples of the bot's path
+    float cell_size = 4.0f;              // heat map cells, world units along x and z
+    std::string level_name;              // the report's "level" (a file name); the level's name when empty
     std::string bot_profile = "perfect"; // who plays (game/bot_profiles.h)
     Difficulty difficulty = Difficulty::Normal;
 };

@@ -153,12 +153,27 @@ std::vector<DeathPlace> deadliest_places(const PlaytestReport& report, std::size
     return places;
 }
 
+std::string new_player_warning(const PlaytestReport& report) {
+    const int finished = static_cast<int>(report.runs.size());
+    if (report.bot_profile != "new-player" || finished == 0 || 2 * report.deaths <= finished) return {};
+    std::string warning = "warning: the new-player bot died in " + std::to_string(report.deaths) + " of " +
+                          std::to_string(finished) + " runs";
+    if (const auto places = deadliest_places(report, 1); !places.empty()) {
+        char at[96];
+        std::snprintf(at, sizeof at, ", most at (%.0f, %.0f, %.0f)", static_cast<double>(places[0].at.x),
+                      static_cast<double>(places[0].at.y), static_cast<double>(places[0].at.z));
+        warning += at;
+    }
+    return warning + ": a new player would most likely die there too (give the fight cover, fewer or weaker "
+                     "robots, or health before it)";
+}
+
 std::string PlaytestReport::summary() const {
     const int finished = static_cast<int>(runs.size());
     char head[320], wins_line[256], damage_line[256];
     std::snprintf(head, sizeof head, "%s: %d of %d runs%s (seeds 1..%d, %.0f s limit each; bot %s, %s)",
-                  level.c_str(), finished, requested, cancelled ? " (cancelled)" : "", requested, seconds_limit,
-                  bot_profile.c_str(), difficulty_name(difficulty));
+                  level.c_str(), finished, requested, cancelled ? " (cancelled)" : "", requested,
+                  seconds_limit, bot_profile.c_str(), difficulty_name(difficulty));
     if (time_to_win.count > 0)
         std::snprintf(wins_line, sizeof wins_line,
                       "won %d (%.0f %%), died %d, timed out %d; time to win mean %.1f s, median %.1f s, "
@@ -180,7 +195,9 @@ std::string PlaytestReport::summary() const {
         deaths_line += one;
     }
     deaths_line = deaths_line.empty() ? "no deaths" : "died most at (x, y, z) " + deaths_line;
-    return std::string(head) + "\n" + wins_line + "\n" + damage_line + "\n" + deaths_line;
+    const std::string warning = new_player_warning(*this);
+    return std::string(head) + "\n" + wins_line + "\n" + damage_line + "\n" + deaths_line +
+           (warning.empty() ? "" : "\n" + warning);
 }
 
 std::string level_fingerprint(const level::Level& level) {

@@ -130,6 +130,9 @@ struct DeathPlace {
 };
 // The `most` cells with the most deaths, most first (ties: the first cell in row order).
 std::vector<DeathPlace> deadliest_places(const PlaytestReport& report, std::size_t most);
+// The designer's warning when the new-player bot died in most of the report's runs (empty otherwise): a
+// person new to the game would most likely die here too. The summary ends with it; the editor shows it.
+std::string new_player_warning(const PlaytestReport& report);
 
 // 16 hex digits of FNV-1a over the level as its file would be written (level::save_level_string).
 std::string level_fingerprint(const level::Level& level);

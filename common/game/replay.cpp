@@ -25,7 +25,8 @@ std::string save_recording_string(const Recording& r) {
     out.reserve(64 + r.inputs.size() * 48);
     out += kMagic;
     out += "\nseed " + std::to_string(r.seed) + "\nlevel " + r.level + "\n";
-    if (r.difficulty != Difficulty::Normal) out += std::string("difficulty ") + difficulty_name(r.difficulty) + "\n";
+    if (r.difficulty != Difficulty::Normal)
+        out += std::string("difficulty ") + difficulty_name(r.difficulty) + "\n";
     out += "steps " + std::to_string(r.inputs.size()) + "\n";
     for (const Input& in : r.inputs) {
         append_float(out, in.move_forward);
@@ -81,8 +82,7 @@ Result<Recording> load_recording_string(std::string_view text, const std::string
         r.difficulty = *difficulty;
         if (!next()) return fail("missing \"steps N\" line", "the step count follows the difficulty");
     }
-    if (line.rfind("steps ", 0) != 0)
-        return fail("missing \"steps N\" line", "line 4 holds the step count");
+    if (line.rfind("steps ", 0) != 0) return fail("missing \"steps N\" line", "line 4 holds the step count");
     const long long steps = std::strtoll(line.c_str() + 6, &end, 10);
     if (end == line.c_str() + 6 || *end != '\0' || steps < 0 || steps > 100'000'000)
         return fail("step count is not a number in 0..100000000", "write \"steps 3600\"");

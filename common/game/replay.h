@@ -21,7 +21,7 @@ namespace ks::game {
 
 struct Recording {
     std::uint64_t seed = 1;
-    std::string level; // as given on the command line (informational)
+    std::string level;                          // as given on the command line (informational)
     Difficulty difficulty = Difficulty::Normal; // the robots played against: a replay plays them again
     std::vector<Input> inputs;
 };

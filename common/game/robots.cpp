@@ -212,7 +212,8 @@ void RobotSystem::fight(std::size_t index, float distance, float dt) {
             break;
         }
         if (r.mode == RobotMode::Aim &&
-            r.mode_time >= std::max(0.0f, aim_length_ + difficulty_scale(core_.settings.difficulty).reaction_delay)) {
+            r.mode_time >=
+                std::max(0.0f, aim_length_ + difficulty_scale(core_.settings.difficulty).reaction_delay)) {
             r.mode = RobotMode::Shoot;
             r.mode_time = 0.0f;
         }

@@ -51,17 +51,19 @@ void check_start_ambush(const level::Level& level, std::vector<Issue>& out) {
         // The game's noticing rule (game/robots.cpp, engaged): on its level, inside the minimum eye radius.
         if (std::abs(to.y) >= 6.0f || distance >= robot->eye_radius_min) continue;
         if (sight_blocked(level, eye, player)) continue;
-        const float walk = std::max(0.0f, distance - robot->shooting_distance) / std::max(robot->velocity, 0.1f);
+        const float walk =
+            std::max(0.0f, distance - robot->shooting_distance) / std::max(robot->velocity, 0.1f);
         const float seconds = kRobotSecondsToAim + walk;
         if (seconds >= kAmbushSeconds) continue;
         char text[320];
-        std::snprintf(text, sizeof text,
-                      "%s %d%s%s%s sees the player start %.1f units away and can shoot within %.1f s: put a wall "
-                      "between them, move it beyond its eye radius (%.0f), or make it dormant until a link "
-                      "wakes it",
-                      level::type_name(e.type()), e.id, e.name.empty() ? "" : " '", e.name.c_str(),
-                      e.name.empty() ? "" : "'", static_cast<double>(distance), static_cast<double>(seconds),
-                      static_cast<double>(robot->eye_radius_min));
+        std::snprintf(
+            text, sizeof text,
+            "%s %d%s%s%s sees the player start %.1f units away and can shoot within %.1f s: put a wall "
+            "between them, move it beyond its eye radius (%.0f), or make it dormant until a link "
+            "wakes it",
+            level::type_name(e.type()), e.id, e.name.empty() ? "" : " '", e.name.c_str(),
+            e.name.empty() ? "" : "'", static_cast<double>(distance), static_cast<double>(seconds),
+            static_cast<double>(robot->eye_radius_min));
         out.push_back({Rule::StartAmbush, IssueSeverity::Warning, e.id, text, {}});
     }
 }

@@ -6,8 +6,8 @@ namespace ks::runtime {
 
 const std::vector<std::string>& game_app_options() {
     static const std::vector<std::string> names = {
-        "level", "dojo", "screen", "warp",        "dojo-key",     "dojo-time", "seed",
-        "msaa",  "help", "fire",   "status-file", "input-script", "audio-out", "campaign", "difficulty"};
+        "level", "dojo", "screen",      "warp",         "dojo-key",  "dojo-time", "seed",      "msaa",
+        "help",  "fire", "status-file", "input-script", "audio-out", "campaign",  "difficulty"};
     return names;
 }
 const std::vector<std::string>& game_app_flags() {

@@ -33,7 +33,8 @@ void two_columns(const char* left, const char* right, float split) {
 }
 
 // Easy, Normal, Hard (game/difficulty.h); `label` places the row's label and the control. True on a change.
-template <class Label> bool difficulty_row(Options& o, const Label& label) {
+template <class Label>
+bool difficulty_row(Options& o, const Label& label) {
     label("Difficulty");
     int d = static_cast<int>(o.difficulty);
     bool moved = false;

@@ -1,7 +1,7 @@
 #pragma once
-// The player's options (mouse sensitivity, invert Y, field of view, sound, key bindings, gamepad, difficulty) and their
-// file, $XDG_CONFIG_HOME/killswitch/options.json (or ~/.config/killswitch/options.json). GL-free and
-// header-only so the tests use it directly (runtime/ sources are compiled only into the killswitch
+// The player's options (mouse sensitivity, invert Y, field of view, sound, key bindings, gamepad, difficulty)
+// and their file, $XDG_CONFIG_HOME/killswitch/options.json (or ~/.config/killswitch/options.json). GL-free
+// and header-only so the tests use it directly (runtime/ sources are compiled only into the killswitch
 // executable). A missing file means defaults; a bad file (not JSON, wrong types, NaN, out of range, an
 // unknown field) gives one warning per problem naming the file, line:column and field, and the defaults for
 // what could not be read — never a failure.

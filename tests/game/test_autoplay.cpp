@@ -1,6 +1,7 @@
 // The autoplay bot wins the shipped main level and the logic example level headless, for several seeds,
 // within a simulated time limit.
 #include "game/autoplay.h"
+#include "game/bot_profiles.h"
 #include "game/headless.h"
 #include "level/level_io.h"
 #include "level/shutdown_objective.h"
@@ -108,4 +109,60 @@ TEST_CASE("the bot's mesh: doors open, paths through them keep the player's body
                 glm::length(p - (a + t * (b - a))) - c->as<level::GasCylinderProps>().radius;
             CHECK(clearance > level::kPlayerRadius + 0.5f * keep_out);
         }
+}
+
+// The main level's first fight, as each profile plays it: lost when the player is hurt before the first robot
+// it fights is down (or dies). One robot mesh and one bot mesh serve every run.
+TEST_CASE("the new-player bot loses the main level's first fight more often than the perfect bot") {
+    auto lv = level::load_level_file(ks::test::source_dir() / "levels/main.json");
+    REQUIRE(lv);
+    auto robots = build_robot_navigation(*lv);
+    REQUIRE(robots);
+    const std::shared_ptr<const nav::NavMesh> robot_mesh = std::move(*robots);
+    auto bot_mesh = build_autoplay_mesh(*lv, AutoplaySettings{}.cylinder_keep_out);
+    REQUIRE(bot_mesh);
+    auto first_fights_lost = [&](std::string_view profile) {
+        auto settings = bot_profile(profile, Location("test"));
+        REQUIRE(settings);
+        int lost = 0;
+        for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+            GameOptions options;
+            options.seed = seed;
+            options.navigation = robot_mesh;
+            auto created = Game::create(*lv, options);
+            REQUIRE(created);
+            Game& game = **created;
+            Autoplay bot(game, *bot_mesh, seed, *settings);
+            bool hurt = false, robot_down = false;
+            for (int step = 0; step < 60 * 120 && game.phase() == Phase::Playing && !robot_down; ++step) {
+                game.step(bot.decide(game));
+                for (const Event& e : game.events()) hurt |= e.type == EventType::PlayerDamaged;
+                for (const Robot& r : game.robots()) robot_down |= !r.alive();
+            }
+            lost += hurt ? 1 : 0;
+        }
+        MESSAGE(profile << ": first fight lost in " << lost << " of 4 runs");
+        return lost;
+    };
+    CHECK(first_fights_lost(kNewPlayerProfile) > first_fights_lost(kPerfectProfile));
+}
+
+TEST_CASE("bot profiles: perfect is the bot's defaults; a new player reacts, aims and turns like a person; "
+          "an unknown name is an error listing them") {
+    auto perfect = bot_profile(kPerfectProfile, {});
+    REQUIRE(perfect);
+    CHECK(perfect->reaction_time == 0.0f);
+    CHECK(perfect->aim_error == 0.0f);
+    CHECK(perfect->turn_rate == AutoplaySettings{}.turn_rate);
+    auto person = bot_profile(kNewPlayerProfile, {});
+    REQUIRE(person);
+    CHECK(person->reaction_time >= 0.25f); // at least a simple visual reaction
+    CHECK(person->aim_error > 0.0f);
+    CHECK(person->turn_rate < perfect->turn_rate);
+    CHECK(person->view_half_angle < kPi);
+    CHECK(bot_profile_names().front() == kPerfectProfile);
+    auto bad = bot_profile("aimbot", Location("command line", 0, 0, "--bot-profile"));
+    REQUIRE_FALSE(bad);
+    CHECK(bad.error().str().find("aimbot") != std::string::npos);
+    CHECK(bad.error().hint.find("new-player") != std::string::npos);
 }

@@ -235,8 +235,8 @@ TEST_CASE("a robot's shot that meets a gas cylinder first sets it off") {
 // robots aim longer before their first shot, hit less often and hurt less; Hard ones the other way.
 TEST_CASE("difficulty: Easy robots shoot later and hurt less than Normal ones, Hard ones sooner and more") {
     struct Outcome {
-        float damage = 0.0f;      // over the seeds
-        double first_hit = 0.0;   // summed over the seeds: when the first damage came (5 s if none)
+        float damage = 0.0f;    // over the seeds
+        double first_hit = 0.0; // summed over the seeds: when the first damage came (5 s if none)
     };
     auto play = [](Difficulty difficulty) {
         Outcome out;
@@ -259,7 +259,8 @@ TEST_CASE("difficulty: Easy robots shoot later and hurt less than Normal ones, H
         }
         return out;
     };
-    const Outcome easy = play(Difficulty::Easy), normal = play(Difficulty::Normal), hard = play(Difficulty::Hard);
+    const Outcome easy = play(Difficulty::Easy), normal = play(Difficulty::Normal),
+                  hard = play(Difficulty::Hard);
     MESSAGE("damage easy " << easy.damage << " normal " << normal.damage << " hard " << hard.damage
                            << "; first hit " << easy.first_hit << " / " << normal.first_hit << " / "
                            << hard.first_hit);

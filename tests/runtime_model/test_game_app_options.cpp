@@ -158,7 +158,8 @@ TEST_CASE("options: the difficulty saves and loads by name; a bad one is reporte
     CHECK(problems[0].find("hard") != std::string::npos); // the valid words
     // Files from before the difficulty existed read as Normal, with nothing to report.
     problems.clear();
-    CHECK(runtime::options_from_json(R"({"fov_degrees": 80})", problems).difficulty == game::Difficulty::Normal);
+    CHECK(runtime::options_from_json(R"({"fov_degrees": 80})", problems).difficulty ==
+          game::Difficulty::Normal);
     CHECK(problems.empty());
 }
 
