@@ -61,7 +61,7 @@ void check_start_ambush(const level::Level& level, std::vector<Issue>& out) {
             "%s %d%s%s%s sees the player start %.1f units away and can shoot within %.1f s: put a wall "
             "between them, move it beyond its eye radius (%.0f), or make it dormant until a link "
             "wakes it",
-            level::type_name(e.type()), e.id, e.name.empty() ? "" : " '", e.name.c_str(),
+            std::string(level::type_name(e.type())).c_str(), e.id, e.name.empty() ? "" : " '", e.name.c_str(),
             e.name.empty() ? "" : "'", static_cast<double>(distance), static_cast<double>(seconds),
             static_cast<double>(robot->eye_radius_min));
         out.push_back({Rule::StartAmbush, IssueSeverity::Warning, e.id, text, {}});

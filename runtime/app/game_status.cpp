@@ -26,7 +26,6 @@ void GameApp::write_status(const shell::FrameInfo& info) {
     add("options sensitivity %.2f fov %.0f invert_y %d render_scale %.2f quality %s",
         options_.mouse_sensitivity, options_.fov_degrees, options_.invert_y ? 1 : 0, options_.render_scale,
         quality_name(options_.quality));
-    add("difficulty %s", game::difficulty_name(options_.difficulty));
     // What the renderer made of them (automatic values resolved for this GL driver).
     add("renderer render_scale %.2f quality %s", renderer_.render_scale(),
         renderer_.quality() == render::RenderQuality::Fast ? "fast" : "full");
@@ -38,6 +37,7 @@ void GameApp::write_status(const shell::FrameInfo& info) {
         add("bind %s %s", kActionInfo[a].id, keys_text(options_.bindings, static_cast<Action>(a)).c_str());
     add("sound master %.2f effects %.2f ambience %.2f muted %d", options_.master_volume,
         options_.effects_volume, options_.ambience_volume, options_.muted ? 1 : 0);
+    add("difficulty %s", game::difficulty_name(options_.difficulty));
     if (audio_) {
         const audio::AudioStats a = audio_->engine().stats();
         add("audio output %d voices %d cues %d", a.output ? 1 : 0, a.active_voices,

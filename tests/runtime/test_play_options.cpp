@@ -1,5 +1,6 @@
 // The Options panel through clicks (--input-script): the slow-machine options (render scale, quality)
-// are saved and handed to the renderer, whose resolved values the --status-file reports.
+// are saved and handed to the renderer, whose resolved values the --status-file reports; the difficulty is
+// saved by its name.
 #include "runtime/play_session.h"
 #include "runtime/screen_image.h"
 #include "test_support.h"
@@ -16,7 +17,7 @@ TEST_CASE("options through the menu: Fast quality clicked, saved, and handed to 
                     "no DISPLAY: run the window tests under xvfb-run (./run.sh test does)");
     test::ScratchDir dir;
     test::write_file(dir / "level.json", test::corridor_level_json());
-    test::write_file(dir / "options.txt", "20 click Options\n26 click Full\n30 click Fast\n34 click Back\n");
+    test::write_file(dir / "options.txt", "20 click Options\n26 click Full\n30 click Fast\n32 click Hard\n34 click Back\n");
     const auto status_file = dir / "status.txt";
     const std::string killswitch = test::scripted_env(dir) + (test::bin_dir() / "killswitch").string() +
                                    " --width 480 --height 270 --level " + (dir / "level.json").string() +
@@ -38,6 +39,8 @@ TEST_CASE("options through the menu: Fast quality clicked, saved, and handed to 
     CHECK(resolved);
     const std::string saved = test::read_file(dir / "config" / "killswitch" / "options.json");
     CHECK(saved.find("\"quality\": \"fast\"") != std::string::npos);
+    CHECK(s.text.find("\ndifficulty hard\n") != std::string::npos);
+    CHECK(saved.find("\"difficulty\": \"hard\"") != std::string::npos);
     // A render scale from the file reaches the renderer (0.25: a quarter of the pixels each way).
     test::write_file(
         dir / "config" / "killswitch" / "options.json",
