@@ -32,19 +32,17 @@ void two_columns(const char* left, const char* right, float split) {
     ImGui::TextUnformatted(right);
 }
 
-// Easy, Normal, Hard (game/difficulty.h); `label` places the row's label and the control. True on a change.
+// Easy, Normal, Hard (game/difficulty.h) as a three-step slider (three radio buttons do not fit the
+// column); `label` places the row's label and the control. True on a change.
 template <class Label>
-bool difficulty_row(Options& o, const Label& label) {
+bool difficulty_row(Options& o, const Label& label, float width) {
     label("Difficulty");
     int d = static_cast<int>(o.difficulty);
-    bool moved = false;
-    for (game::Difficulty choice : game::kDifficulties) {
-        if (choice != game::Difficulty::Easy) ImGui::SameLine();
-        moved |= ImGui::RadioButton(game::difficulty_title(choice), &d, static_cast<int>(choice));
-        ui::record_button(game::difficulty_title(choice));
-    }
-    if (moved) o.difficulty = static_cast<game::Difficulty>(d);
-    return moved;
+    if (!ui::value_slider("Difficulty", "##difficulty", d, 0, 2,
+                          game::difficulty_title(static_cast<game::Difficulty>(d)), width))
+        return false;
+    o.difficulty = static_cast<game::Difficulty>(d);
+    return true;
 }
 } // namespace
 
@@ -286,7 +284,7 @@ MenuAction options_panel(Options& o, bool& changed, const shell::Fonts& fonts, f
     label("Mute (M)");
     changed |= ImGui::Checkbox("##mute", &o.muted);
     ui::record_button("Mute (M)");
-    changed |= difficulty_row(o, label);
+    changed |= difficulty_row(o, label, slider_w);
     ImGui::SetCursorPosY(std::max(bottom, ImGui::GetCursorPosY()));
     ImGui::SetCursorPosX(40 * s);
     ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(90, 100, 110, 255));

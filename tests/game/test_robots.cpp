@@ -238,13 +238,17 @@ TEST_CASE("difficulty: Easy robots shoot later and hurt less than Normal ones, H
         float damage = 0.0f;    // over the seeds
         double first_hit = 0.0; // summed over the seeds: when the first damage came (5 s if none)
     };
-    auto play = [](Difficulty difficulty) {
+    auto lv = flat_level();
+    add_robot(lv, Vec3(0, 0, -8));
+    auto built = build_robot_navigation(lv); // one mesh for every game
+    REQUIRE(built);
+    const std::shared_ptr<const nav::NavMesh> mesh = std::move(*built);
+    auto play = [&](Difficulty difficulty) {
         Outcome out;
         for (std::uint64_t seed = 1; seed <= 4; ++seed) {
-            auto lv = flat_level();
-            add_robot(lv, Vec3(0, 0, -8));
             GameOptions options;
             options.seed = seed;
+            options.navigation = mesh;
             options.settings.difficulty = difficulty;
             auto created = Game::create(lv, options);
             REQUIRE(created);
