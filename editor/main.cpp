@@ -27,7 +27,10 @@ void print_help() {
         "                         [--report FILE] [--gizmo move|rotate|scale[,local]] [--textures]\n"
         "                         [--left-tab outliner|layers|prefabs]\n"
         "       killswitch-editor --version  (prints \"killswitch-editor VERSION\" and exits)\n"
-        "       killswitch-editor --analyze LEVEL [--runs N] [--report FILE] [--seconds S] [--threads T]\n"
+        "       killswitch-editor --analyze LEVEL|CAMPAIGN [--runs N] [--report FILE] [--seconds S] "
+        "[--threads T]\n"
+        "                         [--bot-profile perfect|experienced|new-player[,...]] [--difficulty "
+        "easy|normal|hard[,...]]\n"
         "                         [--width W] [--height H] [--screenshot FILE --frames N] [--no-vsync]\n"
         "  --level FILE      open a level file (default: a new untitled level)\n"
         "  --script FILE     run editor commands (docs/editor.md) without a window, then exit:\n"
@@ -45,7 +48,9 @@ void print_help() {
         "                    beside the level, when there is one)\n"
         "  --analyze LEVEL   play LEVEL N times with the autoplay bot (seeds 1..N, --runs, default 20) on\n"
         "                    every core, without a window; write the report (default LEVEL.playtest.json\n"
-        "                    beside it; --seconds: time limit per run, default 300), print a summary\n"
+        "                    beside it; --seconds: time limit per run, default 300), print a summary;\n"
+        "                    a campaign, or several profiles or difficulties (comma lists): a table of\n"
+        "                    win rates and where the bot died\n"
         "  --inspector TAB   start with the inspector's properties, links or objectives tab shown\n"
         "  --gizmo MODE      start with the gizmo in move, rotate or scale mode (rotate,local: own axes)\n"
         "  --textures        open the texture browser for the selection (select it with --run)\n"
@@ -100,7 +105,7 @@ int main(int argc, char** argv) {
     }
     if (auto script = cl->get("script")) return run_script_mode(*script);
     if (cl->has("analyze")) return editor::run_analyze_mode(*cl);
-    for (const char* analyze_only : {"seconds", "threads"})
+    for (const char* analyze_only : {"seconds", "threads", "bot-profile", "difficulty"})
         if (cl->has(analyze_only)) {
             log::error("--", analyze_only, " goes with --analyze LEVEL (see killswitch-editor --help)");
             return 2;

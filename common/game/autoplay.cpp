@@ -49,6 +49,13 @@ Autoplay::Autoplay(const Game& game, std::shared_ptr<nav::NavMesh> mesh, std::ui
     path_.reserve(64);
 }
 
+bool Autoplay::noticed(const Game& game, const Robot& r, const Vec3& to_robot) const {
+    if (settings_.view_half_angle >= kPi) return true;
+    if (since_shot_ < kTargetMemory && geometry::ground_distance(shot_from_, r.feet) < 3.0f) return true;
+    const float off = std::abs(wrap_angle(yaw_toward(Vec3(0.0f), to_robot) - game.player().yaw));
+    return off <= settings_.view_half_angle;
+}
+
 int Autoplay::pick_target(const Game& game) const {
     const PlayerState& p = game.player();
     const Vec3 eye = p.eye();
@@ -64,7 +71,7 @@ int Autoplay::pick_target(const Game& game) const {
         const Vec3 centre = r.feet + Vec3(0, 1.5f, 0);
         const Vec3 d = centre - eye;
         const float dist = glm::length(d);
-        if (dist >= best_distance || dist < 1e-3f) continue;
+        if (dist >= best_distance || dist < 1e-3f || !noticed(game, r, d)) continue;
         physics::RayHit hit;
         if (!game.world().ray_closest({eye, d / dist, dist + 2.0f}, hit, filter) || !(hit.body == r.body))
             continue;
@@ -74,14 +81,14 @@ int Autoplay::pick_target(const Game& game) const {
     return best;
 }
 
-void Autoplay::aim_at(const Game& game, const Vec3& point, Input& in, float& yaw_error,
-                      float& pitch_error) const {
+void Autoplay::aim_at(const Game& game, const Vec3& point, Input& in, float& yaw_error, float& pitch_error,
+                      Vec2 offset) const {
     const PlayerState& p = game.player();
     const Vec3 eye = p.eye();
     const Vec3 d = point - eye;
     const float horizontal = std::sqrt(d.x * d.x + d.z * d.z);
-    const float want_yaw = yaw_toward(eye, point);
-    const float want_pitch = std::atan2(d.y, std::max(horizontal, 1e-4f));
+    const float want_yaw = yaw_toward(eye, point) + offset.x;
+    const float want_pitch = std::atan2(d.y, std::max(horizontal, 1e-4f)) + offset.y;
     const float max_turn = settings_.turn_rate * static_cast<float>(game.settings().step);
     yaw_error = wrap_angle(want_yaw - p.yaw);
     pitch_error = want_pitch - p.pitch;
@@ -90,7 +97,12 @@ void Autoplay::aim_at(const Game& game, const Vec3& point, Input& in, float& yaw
 }
 
 void Autoplay::notice_events(const Game& game) {
+    since_shot_ += static_cast<float>(game.settings().step);
     for (const Event& e : game.events()) {
+        if (e.type == EventType::PlayerDamaged && e.position != e.end) { // from somewhere (not a fall)
+            shot_from_ = e.position;
+            since_shot_ = 0.0f;
+        }
         switch (e.type) {
         case EventType::ObjectiveCompleted:
         case EventType::DoorToggled:
@@ -117,8 +129,63 @@ void Autoplay::refresh_goal(const Game& game) {
     goal_stale_ = false;
     since_goal_ = 0.0f;
     const BotGoal next = planner_.choose(game, *mesh_);
-    if (!next.same_target(goal_)) since_plan_ = 1e9f; // a new goal: plan for it now
+    if (!next.same_target(goal_)) {
+        since_plan_ = 1e9f; // a new goal: plan for it now
+        if (settings_.look_around > 0.0f) {
+            looking_left_ = settings_.look_around;
+            look_direction_ = rng_.chance(0.5f) ? 1.0f : -1.0f;
+        }
+    }
     goal_ = next;
+}
+
+bool Autoplay::look_around(float dt, Input& in) {
+    if (looking_left_ <= 0.0f) return false;
+    // Half the time one way, half back: a glance round of turn_rate/4 each way.
+    const float half = settings_.look_around * 0.5f;
+    const float direction = looking_left_ > half ? look_direction_ : -look_direction_;
+    looking_left_ -= dt;
+    in.look_yaw = direction * settings_.turn_rate * 0.25f * dt;
+    return true;
+}
+
+bool Autoplay::reacted(int target, float dt) {
+    if (target != target_) {
+        target_ = target;
+        target_seen_ = 0.0f;
+        draw_aim_offset();
+    }
+    target_lost_ = 0.0f;
+    target_seen_ += dt;
+    return target_seen_ >= settings_.reaction_time;
+}
+
+// Box-Muller from the bot's own Rng; nothing is drawn for a bot that aims true (the perfect profile's runs
+// stay as they were).
+void Autoplay::draw_aim_offset() {
+    if (!(settings_.aim_error > 0.0f)) return;
+    const float u1 = std::max(rng_.uniform(), 1e-7f), u2 = rng_.uniform();
+    const float r = settings_.aim_error * std::sqrt(-2.0f * std::log(u1));
+    aim_offset_ = Vec2(r * std::cos(2.0f * kPi * u2), r * std::sin(2.0f * kPi * u2));
+}
+
+void Autoplay::fight(const Game& game, int target, Input& in) {
+    const PlayerState& p = game.player();
+    const Robot& r = game.robots()[static_cast<std::size_t>(target)];
+    const Vec3 centre = r.feet + Vec3(0, 1.5f, 0);
+    float yaw_error = 0.0f, pitch_error = 0.0f;
+    aim_at(game, centre, in, yaw_error, pitch_error, aim_offset_);
+    const float distance = glm::length(centre - p.eye());
+    const float tolerance = settings_.aim_tolerance * game.settings().robot_radius / std::max(distance, 1.0f);
+    const float residual_yaw = yaw_error - in.look_yaw, residual_pitch = pitch_error - in.look_pitch;
+    if (std::abs(residual_yaw) < tolerance && std::abs(residual_pitch) < tolerance && fire_wait_ <= 0.0f &&
+        p.ammo > 0) {
+        in.fire = true;
+        fire_wait_ = settings_.fire_interval;
+        draw_aim_offset(); // the next shot is a new aimed movement
+    }
+    stuck_time_ = 0.0f;
+    stuck_anchor_ = p.feet;
 }
 
 bool Autoplay::use_goal(const Game& game, Input& in) {
@@ -218,28 +285,22 @@ Input Autoplay::decide(const Game& game) {
     notice_events(game);
     float yaw_error = 0.0f, pitch_error = 0.0f;
 
-    // Fight: the nearest robot in sight — with ammo. Without, fighting is standing still (the soak found the
-    // bot aiming at robots for an hour with an empty rifle): it ignores robots and heads for the panel.
+    // Fight: the nearest robot in sight, once the bot has reacted to it — with ammo. Without, fighting is
+    // standing still (the soak found the bot aiming at robots for an hour with an empty rifle): it ignores
+    // robots and heads for the panel.
     if (const int target = p.ammo > 0 ? pick_target(game) : -1; target >= 0) {
-        const Robot& r = game.robots()[static_cast<std::size_t>(target)];
-        const Vec3 centre = r.feet + Vec3(0, 1.5f, 0);
-        aim_at(game, centre, in, yaw_error, pitch_error);
-        const float distance = glm::length(centre - p.eye());
-        const float tolerance =
-            settings_.aim_tolerance * game.settings().robot_radius / std::max(distance, 1.0f);
-        const float residual_yaw = yaw_error - in.look_yaw, residual_pitch = pitch_error - in.look_pitch;
-        if (std::abs(residual_yaw) < tolerance && std::abs(residual_pitch) < tolerance &&
-            fire_wait_ <= 0.0f && p.ammo > 0) {
-            in.fire = true;
-            fire_wait_ = settings_.fire_interval;
+        if (reacted(target, dt)) {
+            looking_left_ = 0.0f; // a fight ends any look round
+            fight(game, target, in);
+            return in;
         }
-        stuck_time_ = 0.0f;
-        stuck_anchor_ = p.feet;
-        return in;
+    } else if ((target_lost_ += dt) >= kTargetMemory) {
+        target_ = -1;
     }
 
     if (goal_stale_ || since_goal_ >= settings_.replan_interval) refresh_goal(game);
     if (use_goal(game, in)) return in;
+    if (look_around(dt, in)) return in;
 
     follow_path(game);
     if (open_door_on_path(game, in)) return in;

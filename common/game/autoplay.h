@@ -17,9 +17,23 @@
 
 namespace ks::game {
 
+// How the bot plays. The defaults are the "perfect" profile (it sees, turns and hits at once); the other
+// profiles (game/bot_profiles.h) are people, their numbers from published human figures (docs/game.md).
 struct AutoplaySettings {
-    float turn_rate = 10.0f;      // rad/s, like a quick mouse flick
-    float fire_interval = 0.15f;  // seconds between clicks
+    float turn_rate = 10.0f;     // rad/s, like a quick mouse flick
+    float fire_interval = 0.15f; // seconds between clicks
+    // Seconds from a robot coming into sight to the bot's first turn toward it (it carries on with what it
+    // was doing meanwhile); a robot out of sight for less than kTargetMemory keeps its reaction.
+    float reaction_time = 0.0f;
+    // Radians: each shot is aimed at a point off the robot's centre by a normal draw of this deviation in
+    // yaw and in pitch (drawn again after every shot and at every new target).
+    float aim_error = 0.0f;
+    // Seconds the bot stands and looks around whenever it heads for a new goal (a new player does not know
+    // the way, and looks before walking on).
+    float look_around = 0.0f;
+    // Radians either side of the view direction (horizontally) inside which the bot notices a robot; a
+    // robot that just hit it is noticed anywhere (the HUD's damage arc points at it). π: all round.
+    float view_half_angle = kPi;
     float engage_range = 40.0f;   // robots farther than this are ignored
     float aim_tolerance = 0.6f;   // fire when the crosshair is within this fraction of the robot's radius
     float replan_interval = 1.0f; // seconds
@@ -52,7 +66,17 @@ class Autoplay {
 
   private:
     int pick_target(const Game& game) const;
-    void aim_at(const Game& game, const Vec3& point, Input& in, float& yaw_error, float& pitch_error) const;
+    // Whether the bot would notice robot `r` where it stands (in view, or it just shot the bot).
+    bool noticed(const Game& game, const Robot& r, const Vec3& to_robot) const;
+    // Turns toward `point`, `offset` radians (yaw, pitch) off it, at the turn rate.
+    void aim_at(const Game& game, const Vec3& point, Input& in, float& yaw_error, float& pitch_error,
+                Vec2 offset = Vec2(0.0f)) const;
+    // Whether the bot has reacted to robot `target` yet (it counts the time it has seen it).
+    bool reacted(int target, float dt);
+    void draw_aim_offset();
+    // Standing at a new goal, sweeping the view; false when done (or the profile never looks around).
+    bool look_around(float dt, Input& in);
+    void fight(const Game& game, int target, Input& in);
     // Marks the goal for choosing again when this step's events may have changed what is needed.
     void notice_events(const Game& game);
     void refresh_goal(const Game& game);
@@ -80,6 +104,16 @@ class Autoplay {
     float stuck_time_ = 0.0f;
     float unstick_time_ = 0.0f;
     float unstick_side_ = 1.0f;
+    int target_ = -1;          // the robot reacted to or being reacted to
+    float target_seen_ = 0.0f; // seconds it has been in sight
+    float target_lost_ = 0.0f; // seconds since it was last in sight
+    Vec2 aim_offset_{0.0f};    // the present shot's aim error (yaw, pitch)
+    float looking_left_ = 0.0f, look_direction_ = 1.0f;
+    Vec3 shot_from_{0.0f};    // where the last shot that hurt the bot came from (a robot's hand)
+    float since_shot_ = 1e9f; // seconds since then
 };
+
+// A robot out of the bot's sight for less than this is still the one it reacted to.
+inline constexpr float kTargetMemory = 1.0f;
 
 } // namespace ks::game

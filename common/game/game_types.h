@@ -2,6 +2,7 @@
 // The vocabulary the game shares with its drivers (keyboard, autoplay bot, replay file) and with the
 // renderer: the per-step input, the per-step events and the tunable game settings. Plain data only.
 #include "core/math.h"
+#include "game/difficulty.h"
 #include "level/entity_shapes.h"
 
 #include <cstdint>
@@ -98,6 +99,8 @@ struct GameSettings {
     float footstep_stride = 5.0f;       // ground distance between the player's footsteps (pace follows speed)
     float land_min_air_time = 0.2f;     // seconds off the ground before touching down counts as a landing
     float land_min_speed = 3.0f; // and the downward speed it must have (stairs and steps are not jumps)
+    // The player's choice (game/difficulty.h): the robots' aim time, hit chance and damage per shot.
+    Difficulty difficulty = Difficulty::Normal;
 };
 
 } // namespace ks::game

@@ -4,6 +4,7 @@
 #include "core/log.h"
 #include "core/paths.h"
 #include "game/autoplay.h"
+#include "game/bot_profiles.h"
 #include "game/logic_trace.h"
 #include "game/replay.h"
 #include "level/level_io.h"
@@ -49,8 +50,9 @@ const std::vector<std::string>& headless_flags() {
 }
 
 const std::vector<std::string>& headless_option_names() {
-    static const std::vector<std::string> names{"headless", "autoplay", "level",      "seconds",    "seed",
-                                                "record",   "replay",   "stats-json", "logic-trace"};
+    static const std::vector<std::string> names{"headless",    "autoplay",   "level",      "seconds",
+                                                "seed",        "record",     "replay",     "stats-json",
+                                                "logic-trace", "difficulty", "bot-profile"};
     return names;
 }
 
@@ -72,12 +74,28 @@ Result<void> parse_run_limits(const CommandLine& cl, double& seconds, std::uint6
     return {};
 }
 
+Result<void> parse_difficulty_option(const CommandLine& cl, Difficulty& difficulty) {
+    if (auto d = cl.get("difficulty")) {
+        auto parsed = parse_difficulty(*d, Location("command line", 0, 0, "--difficulty"));
+        if (!parsed) return parsed.error();
+        difficulty = *parsed;
+    }
+    return {};
+}
+
 Result<HeadlessOptions> parse_headless_options(const CommandLine& cl) {
     HeadlessOptions o;
     o.level = paths::resolve_user_path(cl.get_or("level", paths::level("main.json").string()));
     if (auto limits = parse_run_limits(cl, o.seconds, o.seed, "the simulated time limit"); !limits)
         return limits.error();
     o.autoplay = cl.has("autoplay");
+    if (auto d = parse_difficulty_option(cl, o.difficulty); !d) return d.error();
+    if (auto profile = cl.get("bot-profile")) {
+        const Location where("command line", 0, 0, "--bot-profile");
+        if (auto known = bot_profile(*profile, where); !known) return known.error();
+        if (!o.autoplay) return Error("--bot-profile needs --autoplay", where, "add --autoplay");
+        o.bot_profile = *profile;
+    }
     if (auto r = cl.get("record")) o.record = *r;
     if (auto r = cl.get("replay")) o.replay = paths::resolve_user_path(*r);
     if (auto r = cl.get("stats-json")) o.stats_json = *r;
@@ -108,17 +126,22 @@ Result<HeadlessStats> run_headless(const HeadlessOptions& options) {
                       std::to_string(replay.seed));
         seed = replay.seed;
     }
+    // A replay plays against the robots it was recorded with.
+    const Difficulty difficulty = options.replay.empty() ? options.difficulty : replay.difficulty;
     auto level = level::load_level_file(options.level);
     if (!level) return level.error();
     GameOptions game_options;
     game_options.seed = seed;
+    game_options.settings.difficulty = difficulty;
     auto created = Game::create(*level, game_options);
     if (!created) return created.error();
     Game& game = **created;
 
     std::unique_ptr<Autoplay> bot;
     if (options.autoplay) {
-        auto made = Autoplay::create(*level, game, seed);
+        auto profile = bot_profile(options.bot_profile, Location("command line", 0, 0, "--bot-profile"));
+        if (!profile) return profile.error();
+        auto made = Autoplay::create(*level, game, seed, *profile);
         if (!made) return made.error();
         bot = std::make_unique<Autoplay>(std::move(*made));
     }
@@ -133,6 +156,7 @@ Result<HeadlessStats> run_headless(const HeadlessOptions& options) {
     Recording record;
     record.seed = seed;
     record.level = options.level.string();
+    record.difficulty = difficulty;
 
     const double step = game.settings().step;
     std::int64_t max_steps = static_cast<std::int64_t>(options.seconds / step + 0.5);

@@ -1,6 +1,7 @@
 #pragma once
 // Runs the game without a window: `killswitch --headless --level FILE [--seconds S] [--seed N] [--autoplay]
-// [--record FILE | --replay FILE] [--stats-json FILE|-] [--logic-trace FILE|-]`. The runtime's main calls
+// [--record FILE | --replay FILE] [--stats-json FILE|-] [--logic-trace FILE|-] [--difficulty
+// easy|normal|hard] [--bot-profile NAME]`. The runtime's main calls
 //   auto options = ks::game::parse_headless_options(command_line);   // Result<HeadlessOptions>
 //   auto stats = ks::game::run_headless(*options);                     // Result<HeadlessStats>
 // and returns exit code 0 on success (print stats->summary()). Without --autoplay or --replay the player
@@ -23,6 +24,8 @@ struct HeadlessOptions {
     double seconds = 300.0; // simulated time limit
     std::uint64_t seed = 1;
     bool autoplay = false;
+    Difficulty difficulty = Difficulty::Normal;
+    std::string bot_profile = "perfect";              // game/bot_profiles.h; only with autoplay
     std::filesystem::path record, replay, stats_json; // stats_json "-" = stdout
     std::filesystem::path
         logic_trace; // every logic event and action, a line each (logic_trace.h); "-" = stdout
@@ -55,6 +58,8 @@ Result<HeadlessOptions> parse_headless_options(const CommandLine& command_line);
 // shared by every headless command line; `seconds_hint` says what the limit applies to in the error's fix.
 Result<void> parse_run_limits(const CommandLine& command_line, double& seconds, std::uint64_t& seed,
                               std::string_view seconds_hint);
+// --difficulty (game/difficulty.h; `difficulty` keeps its value when absent).
+Result<void> parse_difficulty_option(const CommandLine& command_line, Difficulty& difficulty);
 Result<HeadlessStats> run_headless(const HeadlessOptions& options);
 
 } // namespace ks::game

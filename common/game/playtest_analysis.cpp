@@ -1,6 +1,7 @@
 #include "game/playtest_analysis.h"
 
 #include "game/autoplay.h"
+#include "game/bot_profiles.h"
 #include "game/game.h"
 
 #include <algorithm>
@@ -26,6 +27,7 @@ struct RunSlot {
 struct Shared {
     const level::Level& level;
     const AnalysisOptions& options;
+    AutoplaySettings bot;                                 // the options' profile
     std::shared_ptr<const nav::NavMesh> robot_navigation; // copied by every game (null: each builds one)
     std::stop_token stop;
     AnalysisProgress* progress = nullptr;
@@ -42,6 +44,7 @@ bool play_run(const Shared& shared, const std::shared_ptr<nav::NavMesh>& mesh, s
               RunSlot& slot) {
     GameOptions game_options;
     game_options.seed = seed;
+    game_options.settings.difficulty = shared.options.difficulty;
     game_options.navigation = shared.robot_navigation;
     auto created = Game::create(shared.level, game_options);
     if (!created) {
@@ -50,7 +53,7 @@ bool play_run(const Shared& shared, const std::shared_ptr<nav::NavMesh>& mesh, s
     }
     Game& game = **created;
     slot.level_bounds = game.level_bounds();
-    Autoplay bot(game, mesh, seed);
+    Autoplay bot(game, mesh, seed, shared.bot);
     RunRecord& run = slot.record.emplace();
     run.seed = seed;
     const double step = game.settings().step;
@@ -172,6 +175,9 @@ Result<void> check_analysis_options(const AnalysisOptions& o) {
         return option_error("the path interval must be 1/120 s .. 3600 s", "path_interval", "e.g. 0.25");
     if (!(o.cell_size >= 0.25f && o.cell_size <= 1000.0f))
         return option_error("the heat map cell size must be 0.25 .. 1000 units", "cell_size", "e.g. 4");
+    if (auto profile = bot_profile(o.bot_profile, Location("analysis options", 0, 0, "bot_profile"));
+        !profile)
+        return profile.error();
     return ok();
 }
 
@@ -187,7 +193,8 @@ Result<PlaytestReport> analyze_level(const level::Level& level, const AnalysisOp
     // A failed run stops the others; a stop from outside does too (stop_callback forwards it).
     std::stop_source abort;
     std::stop_callback forward(stop, [&abort] { abort.request_stop(); });
-    const Shared shared{level, options, robot_navigation, abort.get_token(), progress};
+    const Shared shared{
+        level, options, *bot_profile(options.bot_profile, {}), robot_navigation, abort.get_token(), progress};
     std::vector<RunSlot> slots(static_cast<std::size_t>(options.runs));
     std::atomic<int> next{0};
     std::atomic<bool> failed{false};
@@ -209,6 +216,8 @@ Result<PlaytestReport> analyze_level(const level::Level& level, const AnalysisOp
     setup.seconds_limit = options.seconds;
     setup.path_interval = options.path_interval;
     setup.cell_size = options.cell_size;
+    setup.bot_profile = options.bot_profile;
+    setup.difficulty = options.difficulty;
     std::vector<RunRecord> runs;
     for (RunSlot& slot : slots) {
         if (slot.record) runs.push_back(std::move(*slot.record));

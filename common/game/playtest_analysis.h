@@ -22,12 +22,14 @@
 namespace ks::game {
 
 struct AnalysisOptions {
-    int runs = 20;               // seeds 1..runs
-    double seconds = 300.0;      // simulated time limit of a run
-    int threads = 0;             // worker threads; 0: std::thread::hardware_concurrency()
-    double path_interval = 0.25; // simulated seconds between samples of the bot's path
-    float cell_size = 4.0f;      // heat map cells, world units along x and z
-    std::string level_name;      // the report's "level" (a file name); the level's name when empty
+    int runs = 20;                       // seeds 1..runs
+    double seconds = 300.0;              // simulated time limit of a run
+    int threads = 0;                     // worker threads; 0: std::thread::hardware_concurrency()
+    double path_interval = 0.25;         // simulated seconds between samples of the bot's path
+    float cell_size = 4.0f;              // heat map cells, world units along x and z
+    std::string level_name;              // the report's "level" (a file name); the level's name when empty
+    std::string bot_profile = "perfect"; // who plays (game/bot_profiles.h)
+    Difficulty difficulty = Difficulty::Normal;
 };
 
 inline constexpr int kMaxAnalysisThreads = 256;
@@ -52,8 +54,8 @@ class AnalysisProgress {
 int analysis_threads(int requested, int runs);
 
 // Checks the options: runs in 1..10000, seconds in (0, 86400], threads in 0..kMaxAnalysisThreads, a finite
-// path interval of at least one game step and a cell size in [0.25, 1000]; the error names the option and its
-// range.
+// path interval of at least one game step, a cell size in [0.25, 1000] and a known bot profile; the error
+// names the option and its range.
 Result<void> check_analysis_options(const AnalysisOptions& options);
 
 // Plays the runs and summarises them. Checked first: the options, that a game can be built from the level

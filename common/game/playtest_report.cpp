@@ -111,6 +111,8 @@ PlaytestReport summarize_runs(std::vector<RunRecord> runs, const ReportSetup& se
     r.cancelled = setup.cancelled;
     r.seconds_limit = setup.seconds_limit;
     r.path_interval = setup.path_interval;
+    r.bot_profile = setup.bot_profile;
+    r.difficulty = setup.difficulty;
     std::vector<double> win_times, damage;
     geometry::Aabb area = setup.level_area;
     auto grow = [&area](const Vec3& p) {
@@ -138,11 +140,40 @@ PlaytestReport summarize_runs(std::vector<RunRecord> runs, const ReportSetup& se
     return r;
 }
 
+std::vector<DeathPlace> deadliest_places(const PlaytestReport& report, std::size_t most) {
+    const HeatGrid& g = report.death_heat;
+    std::vector<DeathPlace> places;
+    for (const HeatCell& c : g.cells)
+        places.push_back({Vec3(g.origin_x + (static_cast<float>(c.column) + 0.5f) * g.cell_size, c.y,
+                               g.origin_z + (static_cast<float>(c.row) + 0.5f) * g.cell_size),
+                          static_cast<int>(std::lround(c.value))});
+    std::stable_sort(places.begin(), places.end(),
+                     [](const DeathPlace& a, const DeathPlace& b) { return a.deaths > b.deaths; });
+    if (places.size() > most) places.resize(most);
+    return places;
+}
+
+std::string new_player_warning(const PlaytestReport& report) {
+    const int finished = static_cast<int>(report.runs.size());
+    if (report.bot_profile != "new-player" || finished == 0 || 2 * report.deaths <= finished) return {};
+    std::string warning = "warning: the new-player bot died in " + std::to_string(report.deaths) + " of " +
+                          std::to_string(finished) + " runs";
+    if (const auto places = deadliest_places(report, 1); !places.empty()) {
+        char at[96];
+        std::snprintf(at, sizeof at, ", most at (%.0f, %.0f, %.0f)", static_cast<double>(places[0].at.x),
+                      static_cast<double>(places[0].at.y), static_cast<double>(places[0].at.z));
+        warning += at;
+    }
+    return warning + ": a new player would most likely die there too (give the fight cover, fewer or weaker "
+                     "robots, or health before it)";
+}
+
 std::string PlaytestReport::summary() const {
     const int finished = static_cast<int>(runs.size());
-    char head[256], wins_line[256], damage_line[256];
-    std::snprintf(head, sizeof head, "%s: %d of %d runs%s (seeds 1..%d, %.0f s limit each)", level.c_str(),
-                  finished, requested, cancelled ? " (cancelled)" : "", requested, seconds_limit);
+    char head[320], wins_line[256], damage_line[256];
+    std::snprintf(head, sizeof head, "%s: %d of %d runs%s (seeds 1..%d, %.0f s limit each; bot %s, %s)",
+                  level.c_str(), finished, requested, cancelled ? " (cancelled)" : "", requested,
+                  seconds_limit, bot_profile.c_str(), difficulty_name(difficulty));
     if (time_to_win.count > 0)
         std::snprintf(wins_line, sizeof wins_line,
                       "won %d (%.0f %%), died %d, timed out %d; time to win mean %.1f s, median %.1f s, "
@@ -155,7 +186,18 @@ std::string PlaytestReport::summary() const {
                   "damage taken mean %.0f, median %.0f, max %.0f; heat map: %zu cells hit, %zu with deaths",
                   damage_taken.mean, damage_taken.median, damage_taken.max, damage_heat.cells.size(),
                   death_heat.cells.size());
-    return std::string(head) + "\n" + wins_line + "\n" + damage_line;
+    std::string deaths_line;
+    for (const DeathPlace& place : deadliest_places(*this, 3)) {
+        char one[96];
+        std::snprintf(one, sizeof one, "%s(%.0f, %.0f, %.0f) x%d", deaths_line.empty() ? "" : ", ",
+                      static_cast<double>(place.at.x), static_cast<double>(place.at.y),
+                      static_cast<double>(place.at.z), place.deaths);
+        deaths_line += one;
+    }
+    deaths_line = deaths_line.empty() ? "no deaths" : "died most at (x, y, z) " + deaths_line;
+    const std::string warning = new_player_warning(*this);
+    return std::string(head) + "\n" + wins_line + "\n" + damage_line + "\n" + deaths_line +
+           (warning.empty() ? "" : "\n" + warning);
 }
 
 std::string level_fingerprint(const level::Level& level) {

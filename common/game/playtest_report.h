@@ -6,6 +6,7 @@
 // runs, so the same runs give the same report byte for byte.
 #include "core/math.h"
 #include "core/result.h"
+#include "game/difficulty.h"
 #include "geometry/aabb.h"
 #include "level/level.h"
 
@@ -93,6 +94,8 @@ struct PlaytestReport {
     int requested = 0;      // runs asked for: seeds 1..requested
     bool cancelled = false; // stopped early: `runs` holds the runs that had finished
     double seconds_limit = 300.0, path_interval = 0.25;
+    std::string bot_profile = "perfect"; // who played (game/bot_profiles.h); absent in older files: perfect
+    Difficulty difficulty = Difficulty::Normal;
     int wins = 0, deaths = 0, timeouts = 0;
     double win_rate = 0.0;       // wins / finished runs
     Spread time_to_win;          // over the won runs
@@ -101,13 +104,16 @@ struct PlaytestReport {
     HeatGrid death_heat;         // deaths counted per cell
     std::vector<RunRecord> runs; // by seed
     bool operator==(const PlaytestReport&) const = default;
-    // Three lines for a terminal or the log: runs, win rate and times, damage and deaths.
+    // Four lines for a terminal or the log: runs (profile, difficulty), win rate and times, damage, and where
+    // the players died.
     std::string summary() const;
 };
 
 // What a report says besides the runs themselves.
 struct ReportSetup {
     std::string level, level_hash;
+    std::string bot_profile = "perfect";
+    Difficulty difficulty = Difficulty::Normal;
     int requested = 0;
     bool cancelled = false;
     double seconds_limit = 300.0, path_interval = 0.25;
@@ -115,6 +121,18 @@ struct ReportSetup {
     geometry::Aabb level_area = geometry::Aabb::empty(); // the heat maps cover this and every point
 };
 PlaytestReport summarize_runs(std::vector<RunRecord> runs, const ReportSetup& setup);
+
+// A place where players died: a death heat map cell's centre (x, z; y the deaths' mean height) and count.
+struct DeathPlace {
+    Vec3 at{0.0f};
+    int deaths = 0;
+    bool operator==(const DeathPlace&) const = default;
+};
+// The `most` cells with the most deaths, most first (ties: the first cell in row order).
+std::vector<DeathPlace> deadliest_places(const PlaytestReport& report, std::size_t most);
+// The designer's warning when the new-player bot died in most of the report's runs (empty otherwise): a
+// person new to the game would most likely die here too. The summary ends with it; the editor shows it.
+std::string new_player_warning(const PlaytestReport& report);
 
 // 16 hex digits of FNV-1a over the level as its file would be written (level::save_level_string).
 std::string level_fingerprint(const level::Level& level);

@@ -215,6 +215,9 @@ void read_report(const Json& root, jsonio::ProblemSink& sink, PlaytestReport& r)
     in.flag("cancelled", r.cancelled, Need::Required);
     in.number("seconds_limit", r.seconds_limit, kAny, Need::Required);
     in.number("path_interval", r.path_interval, kAny, Need::Required);
+    in.text("bot_profile", r.bot_profile, Need::Optional, 64);
+    if (std::string difficulty; in.choice("difficulty", difficulty, {"easy", "normal", "hard"}))
+        r.difficulty = *parse_difficulty(difficulty, {});
     if (const Json* s = in.get("summary", Need::Required, kRerun)) {
         ObjectReader summary(*s, "summary", sink, "the summary");
         summary.whole("wins", r.wins, {0, 1 << 20}, Need::Required);
@@ -254,6 +257,8 @@ std::string playtest_report_json(const PlaytestReport& r) {
     j["cancelled"] = r.cancelled;
     j["seconds_limit"] = r.seconds_limit;
     j["path_interval"] = r.path_interval;
+    j["bot_profile"] = r.bot_profile;
+    j["difficulty"] = difficulty_name(r.difficulty);
     j["summary"] = {{"wins", r.wins},
                     {"deaths", r.deaths},
                     {"timeouts", r.timeouts},

@@ -24,8 +24,10 @@ std::string save_recording_string(const Recording& r) {
     std::string out;
     out.reserve(64 + r.inputs.size() * 48);
     out += kMagic;
-    out += "\nseed " + std::to_string(r.seed) + "\nlevel " + r.level + "\nsteps " +
-           std::to_string(r.inputs.size()) + "\n";
+    out += "\nseed " + std::to_string(r.seed) + "\nlevel " + r.level + "\n";
+    if (r.difficulty != Difficulty::Normal)
+        out += std::string("difficulty ") + difficulty_name(r.difficulty) + "\n";
+    out += "steps " + std::to_string(r.inputs.size()) + "\n";
     for (const Input& in : r.inputs) {
         append_float(out, in.move_forward);
         out += ' ';
@@ -73,8 +75,14 @@ Result<Recording> load_recording_string(std::string_view text, const std::string
     if (!next() || line.rfind("level", 0) != 0)
         return fail("missing \"level PATH\" line", "line 3 names the level");
     r.level = line.size() > 6 ? line.substr(6) : "";
-    if (!next() || line.rfind("steps ", 0) != 0)
-        return fail("missing \"steps N\" line", "line 4 holds the step count");
+    if (!next()) return fail("missing \"steps N\" line", "line 4 holds the step count");
+    if (line.rfind("difficulty ", 0) == 0) {
+        auto difficulty = parse_difficulty(line.substr(11), Location(file_name, line_no, 12));
+        if (!difficulty) return difficulty.error();
+        r.difficulty = *difficulty;
+        if (!next()) return fail("missing \"steps N\" line", "the step count follows the difficulty");
+    }
+    if (line.rfind("steps ", 0) != 0) return fail("missing \"steps N\" line", "line 4 holds the step count");
     const long long steps = std::strtoll(line.c_str() + 6, &end, 10);
     if (end == line.c_str() + 6 || *end != '\0' || steps < 0 || steps > 100'000'000)
         return fail("step count is not a number in 0..100000000", "write \"steps 3600\"");

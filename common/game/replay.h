@@ -5,6 +5,7 @@
 //   killswitch-replay 1
 //   seed 42
 //   level levels/main.json
+//   difficulty hard                                   (only when not normal)
 //   steps 3600
 //   <move_forward> <move_right> <look_yaw> <look_pitch> <flags>   (one line per step; flags: j f e p)
 #include "core/result.h"
@@ -20,7 +21,8 @@ namespace ks::game {
 
 struct Recording {
     std::uint64_t seed = 1;
-    std::string level; // as given on the command line (informational)
+    std::string level;                          // as given on the command line (informational)
+    Difficulty difficulty = Difficulty::Normal; // the robots played against: a replay plays them again
     std::vector<Input> inputs;
 };
 

@@ -211,7 +211,9 @@ void RobotSystem::fight(std::size_t index, float distance, float dt) {
             anims_[index].play(clips_.shoot_pose_reverse);
             break;
         }
-        if (r.mode == RobotMode::Aim && r.mode_time >= aim_length_) {
+        if (r.mode == RobotMode::Aim &&
+            r.mode_time >=
+                std::max(0.0f, aim_length_ + difficulty_scale(core_.settings.difficulty).reaction_delay)) {
             r.mode = RobotMode::Shoot;
             r.mode_time = 0.0f;
         }
@@ -304,7 +306,8 @@ void RobotSystem::fire(std::size_t index) {
     const float len = glm::length(dir);
     dir = len > 1e-5f ? dir / len : Vec3(-std::sin(r.yaw), 0, -std::cos(r.yaw));
     // The reference: with probability 1 - p the shot fires no ray at all (still drawn as a muzzle flash).
-    if (!core_.rng.chance(r.props.hit_probability)) {
+    const DifficultyScale scale = difficulty_scale(core_.settings.difficulty);
+    if (!core_.rng.chance(std::min(1.0f, r.props.hit_probability * scale.accuracy))) {
         core_.push(EventType::RobotShot, tip, r.entity_id, 0.0f, tip + dir);
         return;
     }
@@ -315,8 +318,9 @@ void RobotSystem::fire(std::size_t index) {
     if (!any) return;
     const std::uint64_t user = core_.world.user_data(hit.body);
     if (user_kind(user) == BodyKind::Player) {
-        core_.push(EventType::Hit, hit.point, -1, r.props.damage, hit.normal);
-        player_.damage(r.props.damage, tip);
+        const float damage = r.props.damage * scale.damage;
+        core_.push(EventType::Hit, hit.point, -1, damage, hit.normal);
+        player_.damage(damage, tip);
     } else if (user_kind(user) == BodyKind::Cylinder) {
         core_.push(EventType::Hit, hit.point, explosives_.cylinders()[user_index(user)].entity_id, 0.0f,
                    hit.normal);

@@ -12,7 +12,7 @@ constexpr Rule kRules[] = {Rule::Format,    Rule::PlayerStart,  Rule::ControlPan
                            Rule::Support,   Rule::StairSlope,   Rule::DoorGap,      Rule::Reachability,
                            Rule::Patrol,    Rule::RobotReach,   Rule::Sound,        Rule::LinkTarget,
                            Rule::LogicLoop, Rule::TriggerReach, Rule::Objective,    Rule::LockedDoor,
-                           Rule::Texture,   Rule::Prefab};
+                           Rule::Texture,   Rule::Prefab,       Rule::StartAmbush};
 
 } // namespace
 

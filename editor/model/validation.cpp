@@ -5,6 +5,7 @@
 #include "level/entity_shapes.h"
 #include "level/level_io.h"
 #include "level/texture_names.h"
+#include "model/ambush_validation.h"
 #include "model/logic_validation.h"
 #include "model/patrol_validation.h"
 #include "model/reachability.h"
@@ -460,6 +461,8 @@ const char* rule_name(Rule rule) {
         return "texture";
     case Rule::Prefab:
         return "prefab";
+    case Rule::StartAmbush:
+        return "start_ambush";
     }
     return "?";
 }
@@ -483,6 +486,7 @@ std::vector<Issue> validate_design(const Level& level, const ValidationOptions& 
     check_doors(level, solids, out);
     check_patrol_support(level, options, out);
     check_sound_names(level, options, out);
+    check_start_ambush(level, out);
     if (options.check_reachability) check_reachability(level, options, out);
     return out;
 }

@@ -33,6 +33,7 @@ enum class Rule {
     LockedDoor,   // a locked door that no link unlocks or opens
     Texture,      // a texture field naming no surface material in assets/textures (level/texture_names.h)
     Prefab,       // a prefab instance whose prefab file is missing or broken (prefab_validation.cpp)
+    StartAmbush,  // a robot that sees the player start and can shoot within seconds (ambush_validation.cpp)
 };
 const char* rule_name(Rule rule);
 

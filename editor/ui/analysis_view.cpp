@@ -2,6 +2,8 @@
 // playtest_overlay.cpp.
 #include "ui/analysis_view.h"
 
+#include "game/bot_profiles.h"
+
 #include <imgui.h>
 
 #include <cstdio>
@@ -14,6 +16,7 @@ void AnalysisView::start(const level::Level& level, const fs::path& level_file) 
     if (job_) job_.reset(); // cancels and waits: a new analysis replaces the running one
     game::AnalysisOptions options;
     options.runs = runs;
+    if (new_player) options.bot_profile = std::string(game::kNewPlayerProfile);
     options.level_name = level_file.empty() ? level.name : level_file.filename().string();
     if (auto checked = game::check_analysis_options(options); !checked) {
         log_("analyze: " + checked.error().str(), true);
@@ -100,8 +103,11 @@ void AnalysisView::numbers() const {
     ImGui::TextColored(r.win_rate >= 0.5 ? ImVec4(0.45f, 1.0f, 0.55f, 1) : ImVec4(1.0f, 0.45f, 0.4f, 1),
                        "Won %d of %d (%.0f %%)", r.wins, finished, 100.0 * r.win_rate);
     ImGui::SameLine();
-    ImGui::TextDisabled("| died %d | timed out %d%s", r.deaths, r.timeouts,
-                        r.cancelled ? " | cancelled" : "");
+    ImGui::TextDisabled("| died %d | timed out %d%s | bot %s, %s", r.deaths, r.timeouts,
+                        r.cancelled ? " | cancelled" : "", r.bot_profile.c_str(),
+                        game::difficulty_name(r.difficulty));
+    if (const std::string warning = game::new_player_warning(r); !warning.empty())
+        ImGui::TextColored(ImVec4(1.0f, 0.78f, 0.25f, 1), "%s", warning.c_str());
     if (r.time_to_win.count > 0)
         ImGui::Text("Time to win: mean %.1f s, median %.1f s (%.1f - %.1f s)", r.time_to_win.mean,
                     r.time_to_win.median, r.time_to_win.min, r.time_to_win.max);
@@ -134,6 +140,11 @@ void AnalysisView::panel(const level::Level& level, const fs::path& level_file, 
         ImGui::SameLine();
         ImGui::SetNextItemWidth(90);
         ImGui::DragInt("runs", &runs, 0.2f, 1, 200);
+        ImGui::SameLine();
+        ImGui::Checkbox("new player", &new_player);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("The bot plays like a person new to the game: it reacts, turns and aims as "
+                              "people do (docs/game.md, Bot skill profiles)");
         if (report_ && !report_file_.empty()) {
             ImGui::SameLine();
             ImGui::TextDisabled("%s", report_file_.filename().string().c_str());

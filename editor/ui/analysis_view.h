@@ -31,11 +31,12 @@ class AnalysisView {
     using Log = std::function<void(const std::string& line, bool error)>;
     explicit AnalysisView(Log log) : log_(std::move(log)) {}
 
-    int runs = 20;       // seeds 1..runs
-    bool overlay = true; // draw the report over the viewport at all
-    bool heat = true;    // damage cells
-    bool deaths = true;  // death markers
-    bool paths = true;   // the bot's paths
+    int runs = 20;           // seeds 1..runs
+    bool new_player = false; // the new-player bot plays (game/bot_profiles.h), not the perfect one
+    bool overlay = true;     // draw the report over the viewport at all
+    bool heat = true;        // damage cells
+    bool deaths = true;      // death markers
+    bool paths = true;       // the bot's paths
 
     // Analyses a copy of `level`; the report goes beside `level_file` (kept in memory when it is empty).
     void start(const level::Level& level, const std::filesystem::path& level_file);

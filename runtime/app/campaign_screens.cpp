@@ -171,7 +171,8 @@ void result_tiles(const LevelResult& r, const shell::Fonts& fonts) {
     ImGui::SetCursorPosX(40 * s);
     const ImVec2 at = ImGui::GetCursorScreenPos();
     ImDrawList* d = ImGui::GetWindowDrawList();
-    tile(d, at, size, "TIME", format_time(r.seconds), "played", fonts);
+    tile(d, at, size, "TIME", format_time(r.seconds),
+         r.difficulty.empty() ? std::string("played") : "played on " + r.difficulty, fonts);
     tile(d, ImVec2(at.x + size.x + gap, at.y), size, "ROBOTS", std::to_string(r.robots_killed),
          "destroyed of " + std::to_string(r.robots_total), fonts);
     tile(d, ImVec2(at.x + 2 * (size.x + gap), at.y), size, "ACCURACY", accuracy_text(r.hits, r.shots),

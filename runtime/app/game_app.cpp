@@ -26,6 +26,7 @@ void GameApp::load(const std::filesystem::path& path, bool dojo, Screen then, Sc
     loader_.steps.push_back({"Building the simulation", [this, s]() -> Result<void> {
                                  game::GameOptions go;
                                  go.seed = seed_;
+                                 go.settings.difficulty = options_.difficulty;
                                  auto g = game::Game::create(s->level, go);
                                  if (!g) return g.error();
                                  s->game = std::move(*g);

@@ -63,6 +63,7 @@ LevelResult GameApp::result_now() const {
     r.robots_total = static_cast<int>(g.robots().size());
     r.shots = g.player().shots;
     r.hits = g.player().hits;
+    r.difficulty = game::difficulty_title(g.settings().difficulty);
     return r;
 }
 

@@ -113,6 +113,9 @@ class GameApp {
         std::filesystem::path
             logic_trace; // --logic-trace: the logic trace of each level played ("-": stdout)
         std::optional<LogicBreak> logic_break; // --logic-break: the debugger shown, halting at this event
+        // --difficulty: played instead of the options' choice (the Options screen shows it; it is written to
+        // the file only when the player changes the options there).
+        std::optional<game::Difficulty> difficulty;
     };
     Result<void> start(const Automation& a);
     Result<void> set_up_scenario(const Automation& a, std::optional<Screen> screen);

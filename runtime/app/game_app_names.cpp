@@ -5,10 +5,10 @@
 namespace ks::runtime {
 
 const std::vector<std::string>& game_app_options() {
-    static const std::vector<std::string> names = {"level",     "dojo",      "screen",      "warp",
-                                                   "dojo-key",  "dojo-time", "seed",        "msaa",
-                                                   "help",      "fire",      "status-file", "input-script",
-                                                   "audio-out", "campaign",  "logic-trace", "logic-break"};
+    static const std::vector<std::string> names = {
+        "level",     "dojo",     "screen",      "warp",        "dojo-key",    "dojo-time",
+        "seed",      "msaa",     "help",        "fire",        "status-file", "input-script",
+        "audio-out", "campaign", "logic-trace", "logic-break", "difficulty"};
     return names;
 }
 const std::vector<std::string>& game_app_flags() {

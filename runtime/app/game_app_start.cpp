@@ -28,6 +28,7 @@ Result<void> GameApp::start(const Automation& a) {
     status_path_ = a.status_file;
     logic_debug_.configure(a.logic_trace, a.logic_break);
     if (a.logic_break) logic_debug_visible_ = true;
+    if (a.difficulty) options_.difficulty = *a.difficulty;
     script_ = a.script;
     scripted_ = a.scripted;
     // A scripted run reads no real pad (a controller on the desk must not disturb a test): only the script's.

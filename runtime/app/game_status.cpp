@@ -37,6 +37,7 @@ void GameApp::write_status(const shell::FrameInfo& info) {
         add("bind %s %s", kActionInfo[a].id, keys_text(options_.bindings, static_cast<Action>(a)).c_str());
     add("sound master %.2f effects %.2f ambience %.2f muted %d", options_.master_volume,
         options_.effects_volume, options_.ambience_volume, options_.muted ? 1 : 0);
+    add("difficulty %s", game::difficulty_name(options_.difficulty));
     if (audio_) {
         const audio::AudioStats a = audio_->engine().stats();
         add("audio output %d voices %d cues %d", a.output ? 1 : 0, a.active_voices,

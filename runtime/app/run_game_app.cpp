@@ -42,6 +42,7 @@ void print_help() {
         "  --dojo-key K      in the Dojo, press key K (0-9) before the first frame\n"
         "  --dojo-time S     ... and advance the animation S seconds, then hold it (for screenshots)\n"
         "  --seed N          the game's random seed (default 1)\n"
+        "  --difficulty D    easy, normal or hard for this run (default: the options' choice)\n"
         "  --status-file F   rewrite F each frame the state changes: screen, buttons, player, doors, ...\n"
         "  --audio-out F.wav record the sound mix to a 48 kHz stereo WAV instead of playing it (with\n"
         "                    --screenshot --frames the frames are a fixed 1/60 s: the same run, the same "
@@ -150,6 +151,14 @@ int run_game_app(const CommandLine& cl, const shell::ShellConfig& shell_config) 
             return 2;
         }
         automation.dojo_time = *t;
+    }
+    if (auto difficulty = cl.get("difficulty")) {
+        auto parsed = game::parse_difficulty(*difficulty, Location("command line", 0, 0, "--difficulty"));
+        if (!parsed) {
+            log::error(parsed.error().str());
+            return 2;
+        }
+        automation.difficulty = *parsed;
     }
     auto seed = cl.get_int("seed", 1, 0, 2147483647);
     if (!seed) {

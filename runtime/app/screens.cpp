@@ -31,6 +31,19 @@ void two_columns(const char* left, const char* right, float split) {
     ImGui::SameLine(ImGui::GetWindowWidth() * split + 12.0f);
     ImGui::TextUnformatted(right);
 }
+
+// Easy, Normal, Hard (game/difficulty.h) as a three-step slider (three radio buttons do not fit the
+// column); `label` places the row's label and the control. True on a change.
+template <class Label>
+bool difficulty_row(Options& o, const Label& label, float width) {
+    label("Difficulty");
+    int d = static_cast<int>(o.difficulty);
+    if (!ui::value_slider("Difficulty", "##difficulty", d, 0, 2,
+                          game::difficulty_title(static_cast<game::Difficulty>(d)), width))
+        return false;
+    o.difficulty = static_cast<game::Difficulty>(d);
+    return true;
+}
 } // namespace
 
 void loading_screen(float fraction, const std::string& step, const shell::Fonts& fonts, float w, float h) {
@@ -271,6 +284,7 @@ MenuAction options_panel(Options& o, bool& changed, const shell::Fonts& fonts, f
     label("Mute (M)");
     changed |= ImGui::Checkbox("##mute", &o.muted);
     ui::record_button("Mute (M)");
+    changed |= difficulty_row(o, label, slider_w);
     label("Logic debugger (F3)");
     changed |= ImGui::Checkbox("##logic_debugger", &o.logic_debugger);
     ui::record_button("Logic debugger (F3)");

@@ -19,7 +19,8 @@ struct LevelResult {
     int robots_killed = 0;
     int robots_total = 0; // the robots the game had at the win (spawners add some)
     int shots = 0;
-    int hits = 0; // shots that hit a live robot
+    int hits = 0;           // shots that hit a live robot
+    std::string difficulty; // "Normal" (game::difficulty_title) when known: the summary says what was played
 };
 
 // "75 %" of the shots that hit, or "-" without a shot (nothing to measure).

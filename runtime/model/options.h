@@ -1,7 +1,7 @@
 #pragma once
-// The player's options (mouse sensitivity, invert Y, field of view, sound, key bindings, gamepad) and their
-// file, $XDG_CONFIG_HOME/killswitch/options.json (or ~/.config/killswitch/options.json). GL-free and
-// header-only so the tests use it directly (runtime/ sources are compiled only into the killswitch
+// The player's options (mouse sensitivity, invert Y, field of view, sound, key bindings, gamepad, difficulty)
+// and their file, $XDG_CONFIG_HOME/killswitch/options.json (or ~/.config/killswitch/options.json). GL-free
+// and header-only so the tests use it directly (runtime/ sources are compiled only into the killswitch
 // executable). A missing file means defaults; a bad file (not JSON, wrong types, NaN, out of range, an
 // unknown field) gives one warning per problem naming the file, line:column and field, and the defaults for
 // what could not be read — never a failure.
@@ -10,6 +10,7 @@
 #include "core/math.h"
 #include "core/paths.h"
 #include "core/result.h"
+#include "game/difficulty.h"
 #include "jsonio/document.h"
 #include "jsonio/number_text.h"
 #include "jsonio/object_reader.h"
@@ -51,6 +52,8 @@ struct Options {
     Bindings bindings;
     float pad_look_sensitivity = 1.0f;
     float pad_dead_zone = 0.15f;
+    // The robots' aim time, hit chance and damage (game/difficulty.h); `--difficulty` overrides it for a run.
+    game::Difficulty difficulty = game::Difficulty::Normal;
     bool operator==(const Options&) const = default;
 
     static constexpr float kMinSensitivity = 0.1f, kMaxSensitivity = 5.0f;
@@ -84,6 +87,7 @@ inline std::string options_to_json(const Options& o) {
     j["bindings"] = bindings_to_json(o.bindings);
     j["pad_look_sensitivity"] = o.pad_look_sensitivity;
     j["pad_dead_zone"] = o.pad_dead_zone;
+    j["difficulty"] = game::difficulty_name(o.difficulty);
     return j.dump(2) + "\n";
 }
 
@@ -133,6 +137,8 @@ inline Options options_from_json(const std::string& text, std::vector<std::strin
             o.quality = quality == "full"   ? QualityOption::Full
                         : quality == "fast" ? QualityOption::Fast
                                             : QualityOption::Auto;
+        if (std::string difficulty; in.choice("difficulty", difficulty, {"easy", "normal", "hard"}))
+            o.difficulty = *game::parse_difficulty(difficulty, Location(file_name));
         in.flag("invert_y", o.invert_y);
         in.flag("muted", o.muted);
         in.flag("logic_debugger", o.logic_debugger);

@@ -507,3 +507,31 @@ TEST_CASE("rule patrol on the mesh: a point inside a prop snaps to the nearest w
     CHECK(issues[0].message.find("patrol point 2 cannot be walked to") != std::string::npos);
     CHECK(dump(ed.issues()) == dump(validate_design(ed.level())));
 }
+
+TEST_CASE("rule start_ambush: a robot that sees the player start and can shoot within seconds is a warning; "
+          "a wall between, a dormant robot or one beyond its eye radius is not") {
+    Editor ed;
+    build_two_rooms(ed); // the player starts at (0, 0, 15); its robot waits behind the shut door
+    CHECK(of_rule(ed.issues(), Rule::StartAmbush).empty());
+    const int robot = *place(ed, EntityType::Robot, {0, 0, 9.4f}); // 5.6 units away, in plain sight
+    auto issues = of_rule(ed.issues(), Rule::StartAmbush);
+    REQUIRE(issues.size() == 1);
+    CHECK(issues[0].entity_id == robot);
+    CHECK(issues[0].severity == IssueSeverity::Warning);
+    MESSAGE(issues[0].message);
+    CHECK(issues[0].message.find("5.6 units away") != std::string::npos);
+    CHECK(issues[0].message.find("within 0.9 s") != std::string::npos);
+    CHECK(std::string(rule_name(Rule::StartAmbush)) == "start_ambush");
+
+    REQUIRE(set_field_text(ed, "dormant", "true").ok());
+    CHECK(of_rule(ed.issues(), Rule::StartAmbush).empty());
+    REQUIRE(set_field_text(ed, "dormant", "false").ok());
+    REQUIRE(!of_rule(ed.issues(), Rule::StartAmbush).empty());
+    REQUIRE(set_field_text(ed, "eye_radius_min", "5").ok()); // the start 5.6 away is beyond its eye
+    CHECK(of_rule(ed.issues(), Rule::StartAmbush).empty());
+    REQUIRE(set_field_text(ed, "eye_radius_min", "19").ok());
+    REQUIRE(!of_rule(ed.issues(), Rule::StartAmbush).empty());
+    REQUIRE(place(ed, EntityType::Wall, {0, 0, 12}).ok()); // a wall across the line of sight
+    REQUIRE(set_field_text(ed, "size", "4,16,0.5").ok());
+    CHECK(of_rule(ed.issues(), Rule::StartAmbush).empty());
+}

@@ -1,7 +1,9 @@
 // The autoplay bot wins the shipped main level and the logic example level headless, for several seeds,
 // within a simulated time limit.
 #include "game/autoplay.h"
+#include "game/bot_profiles.h"
 #include "game/headless.h"
+#include "game/playtest_analysis.h"
 #include "level/level_io.h"
 #include "level/shutdown_objective.h"
 #include "test_support.h"
@@ -108,4 +110,49 @@ TEST_CASE("the bot's mesh: doors open, paths through them keep the player's body
                 glm::length(p - (a + t * (b - a))) - c->as<level::GasCylinderProps>().radius;
             CHECK(clearance > level::kPlayerRadius + 0.5f * keep_out);
         }
+}
+
+// The main level's fights, as each profile plays them (seeds 1-4, the play-test analysis): the perfect bot
+// shoots first and is rarely hit; a new player, slower to see, turn and aim, is hit in more runs and takes
+// more damage. (Its first robot falls before any robot fires in every one of these runs: the fights that
+// hurt come later, at the doors.)
+TEST_CASE("the new-player bot loses the main level's fights more often than the perfect bot") {
+    auto lv = level::load_level_file(ks::test::source_dir() / "levels/main.json");
+    REQUIRE(lv);
+    auto play = [&](std::string_view profile) {
+        AnalysisOptions o;
+        o.runs = 4;
+        o.threads = 2;
+        o.seconds = 60.0;
+        o.bot_profile = std::string(profile);
+        auto report = analyze_level(*lv, o);
+        REQUIRE_MESSAGE(report, (report ? "" : report.error().str()));
+        MESSAGE(report->summary());
+        int hurt = 0;
+        for (const RunRecord& run : report->runs) hurt += run.damage_taken > 0.0f ? 1 : 0;
+        return std::pair{hurt, report->damage_taken.mean};
+    };
+    const auto person = play(kNewPlayerProfile), perfect = play(kPerfectProfile);
+    CHECK(person.first > perfect.first);
+    CHECK(person.second > perfect.second);
+}
+
+TEST_CASE("bot profiles: perfect is the bot's defaults; a new player reacts, aims and turns like a person; "
+          "an unknown name is an error listing them") {
+    auto perfect = bot_profile(kPerfectProfile, {});
+    REQUIRE(perfect);
+    CHECK(perfect->reaction_time == 0.0f);
+    CHECK(perfect->aim_error == 0.0f);
+    CHECK(perfect->turn_rate == AutoplaySettings{}.turn_rate);
+    auto person = bot_profile(kNewPlayerProfile, {});
+    REQUIRE(person);
+    CHECK(person->reaction_time >= 0.25f); // at least a simple visual reaction
+    CHECK(person->aim_error > 0.0f);
+    CHECK(person->turn_rate < perfect->turn_rate);
+    CHECK(person->view_half_angle < kPi);
+    CHECK(bot_profile_names().front() == kPerfectProfile);
+    auto bad = bot_profile("aimbot", Location("command line", 0, 0, "--bot-profile"));
+    REQUIRE_FALSE(bad);
+    CHECK(bad.error().str().find("aimbot") != std::string::npos);
+    CHECK(bad.error().hint.find("new-player") != std::string::npos);
 }

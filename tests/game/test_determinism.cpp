@@ -97,6 +97,18 @@ TEST_CASE("recordings round-trip bit-exactly and bad ones are reported with file
           std::string::npos);
     CHECK(bad("killswitch-replay 1\nseed 1\nlevel a\nsteps 3\n0 0 0 0 -\n").message.find("3") !=
           std::string::npos);
+    // The difficulty a run was recorded on: a header line only when not Normal (older files stay as they
+    // were), read back; a bad word is refused on its line.
+    CHECK(save_recording_string(r).find("difficulty") == std::string::npos);
+    CHECK(back->difficulty == Difficulty::Normal);
+    r.difficulty = Difficulty::Hard;
+    auto hard = load_recording_string(save_recording_string(r), "mem");
+    REQUIRE(hard.ok());
+    CHECK(hard->difficulty == Difficulty::Hard);
+    CHECK(hard->inputs == r.inputs);
+    const Error word = bad("killswitch-replay 1\nseed 1\nlevel a\ndifficulty brutal\nsteps 0\n");
+    CHECK(word.where.line == 4);
+    CHECK(word.message.find("brutal") != std::string::npos);
 }
 
 TEST_CASE("headless options: parsing, conflicts and missing files are errors, not crashes") {

@@ -270,6 +270,12 @@ TEST_CASE("analysis errors: bad options name the option, a level the game cannot
     o.cell_size = 4.0f;
     o.threads = 100000;
     REQUIRE_FALSE(analyze_level(hall(), o));
+    o.threads = 0;
+    o.bot_profile = "aimbot";
+    auto profile = analyze_level(hall(), o);
+    REQUIRE_FALSE(profile);
+    CHECK(profile.error().where.path == "bot_profile");
+    o.bot_profile = "perfect";
 
     // A robot standing on nothing in a level without a floor: the bot has no mesh to plan on.
     level::Level empty;

@@ -127,6 +127,14 @@ TEST_CASE("summarize_runs: outcomes, win rate, time to win and damage spreads, h
     CHECK(r.death_heat.origin_x == r.damage_heat.origin_x);
     CHECK(r.death_heat.columns == r.damage_heat.columns);
     CHECK(r.summary().find("won 1 (33 %)") != std::string::npos);
+    // Where players died: the death cell's centre and count, in the summary's last line.
+    const auto places = deadliest_places(r, 3);
+    REQUIRE(places.size() == 1);
+    CHECK(places[0].deaths == 1);
+    CHECK(places[0].at.x == doctest::Approx(2.0f)); // the cell [0, 4) x [0, 4)
+    CHECK(places[0].at.z == doctest::Approx(2.0f));
+    CHECK(r.summary().find("died most at (x, y, z) (2, 0, 2) x1") != std::string::npos);
+    CHECK(r.summary().find("bot perfect, normal") != std::string::npos);
 }
 
 TEST_CASE("the report's JSON file reads back equal, byte for byte, beside the level") {
@@ -136,6 +144,33 @@ TEST_CASE("the report's JSON file reads back equal, byte for byte, beside the le
     REQUIRE_MESSAGE(back, (back ? "" : back.error().str()));
     CHECK(*back == r);
     CHECK(playtest_report_json(*back) == text);
+    // Who played, and against which robots: saved, read back; a file from before them reads as the perfect
+    // bot on Normal.
+    ReportSetup hard_setup = setup();
+    hard_setup.bot_profile = "new-player";
+    hard_setup.difficulty = Difficulty::Hard;
+    const PlaytestReport hard = summarize_runs(three_runs(), hard_setup);
+    const std::string hard_text = playtest_report_json(hard);
+    CHECK(hard_text.find("\"bot_profile\": \"new-player\"") != std::string::npos);
+    auto hard_back = parse_playtest_report(hard_text, "arena.playtest.json");
+    REQUIRE(hard_back);
+    CHECK(*hard_back == hard);
+    auto old = parse_playtest_report(replaced(replaced(hard_text, "\"bot_profile\": \"new-player\",", ""),
+                                              "\"difficulty\": \"hard\",", ""),
+                                     "old.playtest.json");
+    REQUIRE_MESSAGE(old, (old ? "" : old.error().str()));
+    CHECK(old->bot_profile == "perfect");
+    // One death in three runs: no warning; two of three for the new player: a warning naming where.
+    CHECK(new_player_warning(hard).empty());
+    std::vector<RunRecord> deadly = three_runs();
+    deadly[0].outcome = RunOutcome::Death;
+    deadly[0].death = Vec3(1.0f, 0.0f, 1.0f);
+    const PlaytestReport lost = summarize_runs(deadly, hard_setup);
+    CHECK(new_player_warning(lost).find("died in 2 of 3 runs, most at (2, 0, 2)") != std::string::npos);
+    CHECK(lost.summary().find("new-player bot died in 2 of 3") != std::string::npos);
+    CHECK(new_player_warning(summarize_runs(deadly, setup())).empty()); // the perfect bot: no warning
+    CHECK(old->difficulty == Difficulty::Normal);
+    CHECK_FALSE(parse_playtest_report(replaced(hard_text, "\"hard\"", "\"brutal\""), "bad.playtest.json"));
     CHECK(text.find("\"format\": \"killswitch-playtest-report\"") != std::string::npos);
     CHECK(text.find("\"path\": [0, 0, 10, 1.25, 0.5, 7.5, 2.5, 0, 5]") != std::string::npos);
 

@@ -230,3 +230,63 @@ TEST_CASE("a robot's shot that meets a gas cylinder first sets it off") {
     run_for(*g, 3.0);
     CHECK(g->cylinders()[0].exploded);
 }
+
+// Difficulty (game/difficulty.h): a player standing 8 units in front of a robot, seeds 1-4, 5 s each. Easy
+// robots aim longer before their first shot, hit less often and hurt less; Hard ones the other way.
+TEST_CASE("difficulty: Easy robots shoot later and hurt less than Normal ones, Hard ones sooner and more") {
+    struct Outcome {
+        float damage = 0.0f;    // over the seeds
+        double first_hit = 0.0; // summed over the seeds: when the first damage came (5 s if none)
+    };
+    auto lv = flat_level();
+    add_robot(lv, Vec3(0, 0, -8));
+    auto built = build_robot_navigation(lv); // one mesh for every game
+    REQUIRE(built);
+    const std::shared_ptr<const nav::NavMesh> mesh = std::move(*built);
+    auto play = [&](Difficulty difficulty) {
+        Outcome out;
+        for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+            GameOptions options;
+            options.seed = seed;
+            options.navigation = mesh;
+            options.settings.difficulty = difficulty;
+            auto created = Game::create(lv, options);
+            REQUIRE(created);
+            Game& g = **created;
+            double first = 5.0;
+            for (int i = 0; i < 5 * 120 && g.phase() == Phase::Playing; ++i) {
+                g.step({});
+                if (first == 5.0 && count_events(g, EventType::PlayerDamaged) > 0) first = g.time();
+            }
+            out.damage += g.player().damage_taken;
+            out.first_hit += first;
+        }
+        return out;
+    };
+    const Outcome easy = play(Difficulty::Easy), normal = play(Difficulty::Normal),
+                  hard = play(Difficulty::Hard);
+    MESSAGE("damage easy " << easy.damage << " normal " << normal.damage << " hard " << hard.damage
+                           << "; first hit " << easy.first_hit << " / " << normal.first_hit << " / "
+                           << hard.first_hit);
+    CHECK(easy.damage < normal.damage);
+    CHECK(normal.damage < hard.damage);
+    CHECK(easy.first_hit > normal.first_hit);
+    CHECK(normal.first_hit > hard.first_hit);
+    // What a hit does: the robot's damage scaled, nothing else (a Normal hit is the level's 10).
+    CHECK(difficulty_scale(Difficulty::Normal).damage == 1.0f);
+    CHECK(difficulty_scale(Difficulty::Normal).accuracy == 1.0f);
+    CHECK(difficulty_scale(Difficulty::Normal).reaction_delay == 0.0f);
+}
+
+TEST_CASE("difficulty names: easy, normal, hard read back; anything else is an error naming the three") {
+    for (Difficulty d : kDifficulties) {
+        auto parsed = parse_difficulty(difficulty_name(d), Location("test"));
+        REQUIRE(parsed);
+        CHECK(*parsed == d);
+    }
+    auto bad = parse_difficulty("nightmare", Location("command line", 0, 0, "--difficulty"));
+    REQUIRE_FALSE(bad);
+    CHECK(bad.error().str().find("nightmare") != std::string::npos);
+    CHECK(bad.error().str().find("--difficulty") != std::string::npos);
+    CHECK(bad.error().hint == "use easy, normal or hard");
+}

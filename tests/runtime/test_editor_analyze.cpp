@@ -73,6 +73,20 @@ TEST_CASE("killswitch-editor --analyze writes the report, prints a summary, the 
     CHECK(read(level_file) == level_text);
 }
 
+TEST_CASE("killswitch-editor --analyze with several profiles and difficulties prints a row for each") {
+    test::ScratchDir dir;
+    const auto level_file = write_hall(dir);
+    auto table =
+        test::run_command(test::editor_binary() + " --analyze " + level_file.string() +
+                          " --runs 2 --seconds 60 --bot-profile perfect,new-player --difficulty easy,hard");
+    INFO(table.output);
+    REQUIRE(table.exit_code == 0);
+    for (const char* row : {"| hall.json | perfect | easy | 2/2 |", "| hall.json | perfect | hard | 2/2 |",
+                            "| hall.json | new-player | easy |", "| hall.json | new-player | hard |"})
+        CHECK(table.output.find(row) != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(dir / "hall.playtest.json")); // a table, no report file
+}
+
 TEST_CASE("killswitch-editor --analyze refuses a bad level or option with a message and a non-zero exit") {
     test::ScratchDir dir;
     const auto level_file = write_hall(dir);
@@ -90,6 +104,8 @@ TEST_CASE("killswitch-editor --analyze refuses a bad level or option with a mess
         {"--analyze " + level_file.string() + " --threads 999", 2, "--threads"},
         {"--analyze " + level_file.string() + " --report " + level_file.string(), 2, "never into it"},
         {"--analyze " + level_file.string() + " --runz 3", 2, "unknown option --runz"},
+        {"--analyze " + level_file.string() + " --bot-profile aimbot", 2, "unknown bot profile 'aimbot'"},
+        {"--analyze " + level_file.string() + " --difficulty brutal", 2, "use easy, normal or hard"},
         {"--threads 2", 2, "goes with --analyze"},
     };
     for (const Case& c : cases) {

@@ -1,5 +1,6 @@
 // The Options panel through clicks (--input-script): the slow-machine options (render scale, quality)
-// are saved and handed to the renderer, whose resolved values the --status-file reports.
+// are saved and handed to the renderer, whose resolved values the --status-file reports; the difficulty is
+// saved by its name and read back.
 #include "runtime/play_session.h"
 #include "runtime/screen_image.h"
 #include "test_support.h"
@@ -38,13 +39,17 @@ TEST_CASE("options through the menu: Fast quality clicked, saved, and handed to 
     CHECK(resolved);
     const std::string saved = test::read_file(dir / "config" / "killswitch" / "options.json");
     CHECK(saved.find("\"quality\": \"fast\"") != std::string::npos);
+    CHECK(s.text.find("\ndifficulty normal\n") != std::string::npos);
+    CHECK(saved.find("\"difficulty\": \"normal\"") != std::string::npos);
     // A render scale from the file reaches the renderer (0.25: a quarter of the pixels each way).
     test::write_file(
         dir / "config" / "killswitch" / "options.json",
-        R"({"format": "killswitch-options", "version": 1, "render_scale": 0.25, "quality": "full"})");
+        R"({"format": "killswitch-options", "version": 1, "render_scale": 0.25, "quality": "full",
+            "difficulty": "hard"})");
     run = test::run_command(killswitch + " --screen menu --screenshot " + (dir / "m.png").string() +
                             " --frames 2");
     REQUIRE(run.exit_code == 0);
     s = test::read_status(status_file);
     CHECK(s.text.find("renderer render_scale 0.25 quality full") != std::string::npos);
+    CHECK(s.text.find("\ndifficulty hard\n") != std::string::npos); // read from the file
 }

@@ -30,12 +30,12 @@ TEST_CASE("campaign progress: levels in order, a result per win, totals, and no 
     CHECK_FALSE(progress.advance()); // not won yet
     CHECK(progress.last_result() == nullptr);
 
-    progress.record_win({"ignored", 62.5, 3, 4, 20, 15});
+    progress.record_win({"ignored", 62.5, 3, 4, 20, 15, ""});
     CHECK(progress.results().size() == 1);
     CHECK(progress.last_result()->title == "First Light"); // the campaign's title, not the level's name
     CHECK_FALSE(progress.finished());
     // A retry after a win (Play Again is not offered, but a second win must not add a row).
-    progress.record_win({"", 60.0, 4, 4, 18, 16});
+    progress.record_win({"", 60.0, 4, 4, 18, 16, ""});
     CHECK(progress.results().size() == 1);
     CHECK(progress.results()[0].seconds == 60.0);
 
@@ -43,7 +43,7 @@ TEST_CASE("campaign progress: levels in order, a result per win, totals, and no 
     CHECK(progress.index() == 1);
     CHECK(progress.current_path() == std::filesystem::path("/data/campaigns/more/two.json"));
     CHECK(progress.on_last_level());
-    progress.record_win({"", 30.25, 2, 5, 10, 4});
+    progress.record_win({"", 30.25, 2, 5, 10, 4, ""});
     CHECK(progress.finished());
     CHECK_FALSE(progress.advance());
     const LevelResult total = progress.totals();
@@ -53,7 +53,7 @@ TEST_CASE("campaign progress: levels in order, a result per win, totals, and no 
     CHECK(total.robots_total == 9);
     CHECK(total.shots == 28);
     CHECK(total.hits == 20);
-    progress.record_win({"", 1.0, 0, 0, 0, 0}); // after the end: nothing changes
+    progress.record_win({"", 1.0, 0, 0, 0, 0, ""}); // after the end: nothing changes
     CHECK(progress.results().size() == 2);
 }
 

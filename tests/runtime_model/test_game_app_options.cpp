@@ -139,6 +139,32 @@ TEST_CASE("options: render scale 0 means automatic; 0.25..1 are kept; quality by
     CHECK(problems.empty());
 }
 
+TEST_CASE("options: the difficulty saves and loads by name; a bad one is reported and Normal kept") {
+    test::ScratchDir dir;
+    const auto path = dir / "options.json";
+    for (game::Difficulty d : game::kDifficulties) {
+        Options o;
+        o.difficulty = d;
+        REQUIRE(runtime::save_options(path, o).ok());
+        CHECK(runtime::load_options(path).difficulty == d);
+    }
+    CHECK(runtime::options_to_json(Options{}).find("\"difficulty\": \"normal\"") != std::string::npos);
+    std::vector<std::string> problems;
+    const Options bad = runtime::options_from_json("{\n  \"difficulty\": \"insane\"\n}", problems);
+    CHECK(bad.difficulty == game::Difficulty::Normal);
+    REQUIRE(problems.size() == 1);
+    MESSAGE(problems[0]);
+    CHECK(problems[0].find("options.json:2:") != std::string::npos);
+    CHECK(problems[0].find("difficulty") != std::string::npos);
+    CHECK(problems[0].find("insane") != std::string::npos);
+    CHECK(problems[0].find("hard") != std::string::npos); // the valid words
+    // Files from before the difficulty existed read as Normal, with nothing to report.
+    problems.clear();
+    CHECK(runtime::options_from_json(R"({"fov_degrees": 80})", problems).difficulty ==
+          game::Difficulty::Normal);
+    CHECK(problems.empty());
+}
+
 TEST_CASE("options: the file lives under XDG_CONFIG_HOME, else ~/.config") {
     const char* old_xdg = std::getenv("XDG_CONFIG_HOME");
     const std::string saved = old_xdg ? old_xdg : "";
