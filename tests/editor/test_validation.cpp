@@ -513,13 +513,13 @@ TEST_CASE("rule start_ambush: a robot that sees the player start and can shoot w
     Editor ed;
     build_two_rooms(ed); // the player starts at (0, 0, 15); its robot waits behind the shut door
     CHECK(of_rule(ed.issues(), Rule::StartAmbush).empty());
-    const int robot = *place(ed, EntityType::Robot, {0, 0, 9.4f}); // 5.6 units away, in plain sight
+    const int robot = *place(ed, EntityType::Robot, {0, 0, 9.5f}); // 5.5 units away (on the grid), in plain sight
     auto issues = of_rule(ed.issues(), Rule::StartAmbush);
     REQUIRE(issues.size() == 1);
     CHECK(issues[0].entity_id == robot);
     CHECK(issues[0].severity == IssueSeverity::Warning);
     MESSAGE(issues[0].message);
-    CHECK(issues[0].message.find("5.6 units away") != std::string::npos);
+    CHECK(issues[0].message.find("5.5 units away") != std::string::npos);
     CHECK(issues[0].message.find("within 0.9 s") != std::string::npos);
     CHECK(std::string(rule_name(Rule::StartAmbush)) == "start_ambush");
 
@@ -527,7 +527,7 @@ TEST_CASE("rule start_ambush: a robot that sees the player start and can shoot w
     CHECK(of_rule(ed.issues(), Rule::StartAmbush).empty());
     REQUIRE(set_field_text(ed, "dormant", "false").ok());
     REQUIRE(!of_rule(ed.issues(), Rule::StartAmbush).empty());
-    REQUIRE(set_field_text(ed, "eye_radius_min", "5").ok()); // the start 5.6 away is beyond its eye
+    REQUIRE(set_field_text(ed, "eye_radius_min", "5").ok()); // the start 5.5 away is beyond its eye
     CHECK(of_rule(ed.issues(), Rule::StartAmbush).empty());
     REQUIRE(set_field_text(ed, "eye_radius_min", "19").ok());
     REQUIRE(!of_rule(ed.issues(), Rule::StartAmbush).empty());

@@ -100,7 +100,7 @@ TEST_CASE("options and controls: inside the window, no value under a slider, at 
             REQUIRE(run.exit_code == 0);
             const std::string status = test::read_status(status_file).text;
             const std::vector<Rect> buttons = rects_of(status, "button"), texts = rects_of(status, "text");
-            CHECK(texts.size() == (std::string(screen) == "options" ? 6u : 2u)); // one value per slider
+            CHECK(texts.size() == (std::string(screen) == "options" ? 7u : 2u)); // one value per slider
             CHECK(buttons.size() >= 4u);
             for (const Rect& r : buttons) {
                 CAPTURE(r.label);
