@@ -46,4 +46,24 @@ double mean_abs_diff(const std::vector<unsigned char>& a, const std::vector<unsi
     return sum / a.size();
 }
 
+std::vector<unsigned char> render_offscreen(render::SceneRenderer& renderer, const geometry::Camera& camera,
+                                            const render::Environment& env,
+                                            const std::vector<render::MeshInstance>& instances,
+                                            const std::vector<render::Light>& lights,
+                                            const render::ViewModel* view_model) {
+    auto* ctx = gl_context();
+    ctx->bind();
+    render::SceneFrame frame;
+    frame.camera = camera;
+    frame.camera.aspect = static_cast<float>(ctx->width()) / ctx->height();
+    frame.environment = env;
+    frame.instances = &instances;
+    frame.lights = &lights;
+    frame.view_model = view_model;
+    frame.width = ctx->width();
+    frame.height = ctx->height();
+    renderer.render(frame);
+    return ctx->read_rgb();
+}
+
 } // namespace ks::test

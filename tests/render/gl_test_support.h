@@ -1,5 +1,6 @@
 #pragma once
 // Shared GL context for the render tests (one hidden window for the whole run) and image checks.
+#include "render/scene_renderer.h"
 #include "shell/offscreen_context.h"
 
 #include <string>
@@ -19,6 +20,13 @@ struct ImageStats {
 };
 ImageStats image_stats(const std::vector<unsigned char>& rgb, int width, int height, int x0 = 0, int y0 = 0,
                        int x1 = -1, int y1 = -1);
+// Renders `instances` in the shared context at its size (the camera's aspect made the context's) and
+// returns RGB rows (top-down).
+std::vector<unsigned char> render_offscreen(render::SceneRenderer& renderer, const geometry::Camera& camera,
+                                            const render::Environment& env,
+                                            const std::vector<render::MeshInstance>& instances,
+                                            const std::vector<render::Light>& lights,
+                                            const render::ViewModel* view_model = nullptr);
 // Mean absolute difference per channel (0..255) between two RGB images of the same size.
 double mean_abs_diff(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b);
 

@@ -28,18 +28,7 @@ RendererSettings quality(RenderQuality q) {
 std::vector<unsigned char> draw(SceneRenderer& renderer, const geometry::Camera& camera,
                                 const Environment& env, const std::vector<MeshInstance>& instances,
                                 const std::vector<Light>& lights) {
-    auto* ctx = test::gl_context();
-    ctx->bind();
-    SceneFrame frame;
-    frame.camera = camera;
-    frame.camera.aspect = static_cast<float>(ctx->width()) / static_cast<float>(ctx->height());
-    frame.environment = env;
-    frame.instances = &instances;
-    frame.lights = &lights;
-    frame.width = ctx->width();
-    frame.height = ctx->height();
-    renderer.render(frame);
-    return ctx->read_rgb();
+    return test::render_offscreen(renderer, camera, env, instances, lights);
 }
 
 // Mean of each channel over a rectangle given in fractions of the image (default: the centre third).
@@ -153,17 +142,8 @@ TEST_CASE("the first-person rifle is lit and orange, not a near-black silhouette
     assets.model("rifle").emit(rifle_view_transform(0.0f), scratch, rifle.instances);
     auto* ctx = test::gl_context();
     auto render = [&](SceneRenderer& renderer, const ViewModel* view_model) {
-        ctx->bind();
-        SceneFrame frame;
-        frame.camera = player_start_camera(*level, static_cast<float>(ctx->width()) / ctx->height());
-        frame.environment = scene->environment();
-        frame.instances = &instances;
-        frame.lights = &lights;
-        frame.view_model = view_model;
-        frame.width = ctx->width();
-        frame.height = ctx->height();
-        renderer.render(frame);
-        return ctx->read_rgb();
+        return test::render_offscreen(renderer, player_start_camera(*level, 16.0f / 9.0f),
+                                      scene->environment(), instances, lights, view_model);
     };
     // The fast path (what the software rasterisers the game targets draw) at full size, the rifle in its own
     // filtered layer (the default) and drawn straight into the scene (view_model_msaa 0).

@@ -27,6 +27,7 @@
 using namespace ks;
 using namespace ks::render;
 namespace fs = std::filesystem;
+using ks::test::render_offscreen;
 
 #define KS_REQUIRE_GL()                                                                                      \
     REQUIRE_MESSAGE(ks::test::gl_context(),                                                                  \
@@ -45,26 +46,6 @@ auto full_resolution_renderer(AssetLibrary& assets) {
     return SceneRenderer::create(assets.textures(), settings);
 }
 
-// Renders `instances` offscreen at the test size and returns RGB rows (top-down).
-std::vector<unsigned char> render_offscreen(SceneRenderer& renderer, const geometry::Camera& camera,
-                                            const Environment& env,
-                                            const std::vector<MeshInstance>& instances,
-                                            const std::vector<Light>& lights,
-                                            const ViewModel* view_model = nullptr) {
-    auto* ctx = ks::test::gl_context();
-    ctx->bind();
-    SceneFrame frame;
-    frame.camera = camera;
-    frame.camera.aspect = static_cast<float>(ctx->width()) / ctx->height();
-    frame.environment = env;
-    frame.instances = &instances;
-    frame.lights = &lights;
-    frame.view_model = view_model;
-    frame.width = ctx->width();
-    frame.height = ctx->height();
-    renderer.render(frame);
-    return ctx->read_rgb();
-}
 } // namespace
 
 TEST_CASE("every shader program compiles and links on this driver") {
