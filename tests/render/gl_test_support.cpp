@@ -46,24 +46,30 @@ double mean_abs_diff(const std::vector<unsigned char>& a, const std::vector<unsi
     return sum / a.size();
 }
 
+OffscreenShot render_frame_offscreen(render::SceneRenderer& renderer, render::SceneFrame frame) {
+    auto* ctx = gl_context();
+    ctx->bind();
+    frame.camera.aspect = static_cast<float>(ctx->width()) / ctx->height();
+    frame.width = ctx->width();
+    frame.height = ctx->height();
+    OffscreenShot shot;
+    shot.stats = renderer.render(frame);
+    shot.rgb = ctx->read_rgb();
+    return shot;
+}
+
 std::vector<unsigned char> render_offscreen(render::SceneRenderer& renderer, const geometry::Camera& camera,
                                             const render::Environment& env,
                                             const std::vector<render::MeshInstance>& instances,
                                             const std::vector<render::Light>& lights,
                                             const render::ViewModel* view_model) {
-    auto* ctx = gl_context();
-    ctx->bind();
     render::SceneFrame frame;
     frame.camera = camera;
-    frame.camera.aspect = static_cast<float>(ctx->width()) / ctx->height();
     frame.environment = env;
     frame.instances = &instances;
     frame.lights = &lights;
     frame.view_model = view_model;
-    frame.width = ctx->width();
-    frame.height = ctx->height();
-    renderer.render(frame);
-    return ctx->read_rgb();
+    return render_frame_offscreen(renderer, frame).rgb;
 }
 
 } // namespace ks::test

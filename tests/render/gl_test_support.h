@@ -20,6 +20,13 @@ struct ImageStats {
 };
 ImageStats image_stats(const std::vector<unsigned char>& rgb, int width, int height, int x0 = 0, int y0 = 0,
                        int x1 = -1, int y1 = -1);
+// Renders `frame` in the shared context at its size (the frame's size and the camera's aspect made the
+// context's): the RGB rows (top-down) and the renderer's statistics.
+struct OffscreenShot {
+    std::vector<unsigned char> rgb;
+    render::FrameStats stats;
+};
+OffscreenShot render_frame_offscreen(render::SceneRenderer& renderer, render::SceneFrame frame);
 // Renders `instances` in the shared context at its size (the camera's aspect made the context's) and
 // returns RGB rows (top-down).
 std::vector<unsigned char> render_offscreen(render::SceneRenderer& renderer, const geometry::Camera& camera,

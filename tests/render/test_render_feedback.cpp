@@ -221,19 +221,15 @@ TEST_CASE("contact shadows: a robot darkens the lit floor beside it, away from t
         auto renderer = SceneRenderer::create(assets.textures(), quality(q));
         REQUIRE(renderer);
         auto render = [&](bool shadows) {
-            auto* ctx = test::gl_context();
-            ctx->bind();
             SceneFrame frame;
             frame.camera = cam;
             frame.environment = scene->environment();
             frame.instances = &instances;
             frame.lights = &lights;
             frame.shadow_casters = shadows ? &casters : nullptr;
-            frame.width = ctx->width();
-            frame.height = ctx->height();
-            const FrameStats stats = (*renderer)->render(frame);
-            CHECK((stats.contact_shadows > 0) == shadows);
-            return ctx->read_rgb();
+            auto shot = test::render_frame_offscreen(**renderer, frame);
+            CHECK((shot.stats.contact_shadows > 0) == shadows);
+            return shot.rgb;
         };
         const auto off = render(false), on = render(true);
         const double shadow_off = luma_at(off, shadow_side), shadow_on = luma_at(on, shadow_side);

@@ -166,10 +166,7 @@ TEST_CASE("a missing or corrupt model or texture gives the placeholder and one w
 }
 
 namespace {
-struct MainLevelView {
-    std::vector<unsigned char> rgb;
-    FrameStats stats;
-};
+using MainLevelView = ks::test::OffscreenShot;
 
 // The full-quality path at full resolution (what GPUs get): the golden image's configuration.
 RendererSettings full_quality() {
@@ -201,20 +198,13 @@ MainLevelView render_main_level_start(RendererSettings settings = full_quality()
     ViewModel vm;
     std::vector<Mat4> scratch;
     assets.model("rifle").emit(rifle_view_transform(0.0f), scratch, vm.instances);
-    auto* ctx = ks::test::gl_context();
-    ctx->bind();
     SceneFrame frame;
     frame.camera = cam;
     frame.environment = scene->environment();
     frame.instances = &instances;
     frame.lights = &lights;
     frame.view_model = &vm;
-    frame.width = ctx->width();
-    frame.height = ctx->height();
-    MainLevelView out;
-    out.stats = (*renderer)->render(frame);
-    out.rgb = ctx->read_rgb();
-    return out;
+    return ks::test::render_frame_offscreen(**renderer, frame);
 }
 } // namespace
 
