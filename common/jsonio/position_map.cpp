@@ -12,7 +12,18 @@ namespace ks::jsonio {
 // backtracking). The current path lives in one buffer that grows and shrinks as the walk goes in and out.
 class PositionScanner {
   public:
-    PositionScanner(std::string_view text, PositionMap& map) : text_(text), map_(map) {}
+    // The first pass notes duplicate keys and overflowing numbers; the lookup index's pass records every
+    // value's path and position.
+    struct Findings {
+        std::vector<DuplicateKey>* duplicates;
+        std::vector<OverflowingNumber>* overflows;
+    };
+    struct Index {
+        std::string* arena;
+        std::vector<PositionMap::Entry>* entries;
+    };
+    PositionScanner(std::string_view text, Findings findings) : text_(text), findings_(findings) {}
+    PositionScanner(std::string_view text, Index index) : text_(text), index_(index) {}
 
     void run() {
         skip_space();
@@ -24,7 +35,8 @@ class PositionScanner {
     static constexpr int kMaxDepth = 512; // nlohmann refuses deeper text anyway; this guards our own stack
 
     std::string_view text_;
-    PositionMap& map_;
+    Findings findings_{nullptr, nullptr};
+    Index index_{nullptr, nullptr};
     std::size_t at_ = 0;
     TextPosition pos_{1, 1};
     std::string path_;
@@ -35,10 +47,11 @@ class PositionScanner {
 
     // Records the current path; returns its entry so that a member's value position can follow its key's.
     std::size_t record(TextPosition pos) {
-        map_.entries_.push_back({static_cast<std::uint32_t>(map_.arena_.size()),
-                                 static_cast<std::uint32_t>(path_.size()), pos, pos});
-        map_.arena_ += path_;
-        return map_.entries_.size() - 1;
+        if (!index_.entries) return 0;
+        index_.entries->push_back({static_cast<std::uint32_t>(index_.arena->size()),
+                                   static_cast<std::uint32_t>(path_.size()), pos, pos});
+        *index_.arena += path_;
+        return index_.entries->size() - 1;
     }
 
     void advance() {
@@ -116,13 +129,14 @@ class PositionScanner {
     }
 
     void note_overflow(TextPosition pos, std::size_t start, std::size_t length) {
-        if (length < 4 || length > 400) return; // nothing shorter than "1e39" leaves the range of a double
+        if (!findings_.overflows || length < 4 || length > 400)
+            return; // nothing shorter than "1e39" leaves the range of a double
         const std::string token(text_.substr(start, length));
         if (!(std::isdigit(static_cast<unsigned char>(token[0])) || token[0] == '-')) return;
         char* end = nullptr;
         const double value = std::strtod(token.c_str(), &end);
         if (end == token.c_str() + token.size() && std::isinf(value))
-            map_.overflows_.push_back({path_, pos, start, length, token});
+            findings_.overflows->push_back({path_, pos, start, length, token});
     }
 
     void object(int depth) {
@@ -137,15 +151,15 @@ class PositionScanner {
             if (base > 0) path_ += '.';
             path_ += key;
             auto seen = std::find_if(keys.begin(), keys.end(), [&](const auto& k) { return k.first == key; });
-            if (seen != keys.end())
-                map_.duplicates_.push_back({path_, seen->second, key_pos});
-            else
+            if (seen != keys.end()) {
+                if (findings_.duplicates) findings_.duplicates->push_back({path_, seen->second, key_pos});
+            } else
                 keys.emplace_back(std::move(key), key_pos);
             const std::size_t entry = record(key_pos);
             skip_space();
             if (peek() == ':') advance();
             skip_space();
-            map_.entries_[entry].value = here();
+            if (index_.entries) (*index_.entries)[entry].value = here();
             value(depth + 1);
             path_.resize(base);
             skip_space();
@@ -180,13 +194,21 @@ class PositionScanner {
 
 PositionMap PositionMap::scan(std::string_view text) {
     PositionMap map;
-    map.entries_.reserve(text.size() / 8);
-    map.arena_.reserve(text.size());
-    PositionScanner(text, map).run();
+    map.text_ = std::string(text);
+    PositionScanner(map.text_, PositionScanner::Findings{&map.duplicates_, &map.overflows_}).run();
     return map;
 }
 
+void PositionMap::index() const {
+    if (indexed_) return;
+    indexed_ = true;
+    entries_.reserve(text_.size() / 8);
+    arena_.reserve(text_.size());
+    PositionScanner(text_, PositionScanner::Index{&arena_, &entries_}).run();
+}
+
 std::pair<std::size_t, std::size_t> PositionMap::occurrences(std::string_view path) const {
+    index();
     if (sorted_.size() != entries_.size()) {
         sorted_.resize(entries_.size());
         for (std::uint32_t i = 0; i < sorted_.size(); ++i) sorted_[i] = i;

@@ -53,6 +53,21 @@ TEST_CASE("scan finds duplicate keys and numbers that overflow a double") {
     CHECK(map.overflowing_numbers()[1].token == "-2E+400");
 }
 
+TEST_CASE("the lookup index is built from the map's own copy of the text, once, after a move") {
+    PositionMap moved;
+    {
+        std::string text = "{\"a\": {\"b\": [1, 2]}, \"a\": 3}";
+        PositionMap map = PositionMap::scan(text);
+        text.assign(text.size(), 'x'); // the caller's buffer is gone before the first lookup
+        moved = std::move(map);
+    }
+    CHECK(moved.duplicate_keys().size() == 1); // found by the first pass, not again by the index's
+    CHECK(moved.find("a.b[1]").column == 17);
+    CHECK(moved.find_value("a").column == 27); // the last occurrence, which the parser keeps
+    CHECK(moved.find("a.b[1]").column == 17);  // a second lookup reuses the index
+    CHECK(moved.duplicate_keys().size() == 1);
+}
+
 TEST_CASE("scan survives broken and hostile text") {
     const char* const broken[] = {"",
                                   "{",
