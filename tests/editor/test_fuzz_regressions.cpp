@@ -10,6 +10,8 @@
 
 #include "core/log.h"
 #include "model/autosave.h"
+#include "model/prefab_library.h"
+#include "model/recent_files.h"
 #include "model/script.h"
 
 #include <chrono>
@@ -297,4 +299,57 @@ TEST_CASE("faults: a damaged autosave is refused with its name and the document 
     CHECK(editor_test::text_of(ed) == saved);
     CHECK_FALSE(ed.has_unsaved_changes());
     CHECK_FALSE(ed.history().can_undo());
+}
+
+TEST_CASE("faults: the prefab library and the recent-files list keep their previous file under every fault") {
+    log::Capture quiet;
+    for (files::Fault fault : hardening::kSaveFaults) {
+        CAPTURE(hardening::fault_name(fault));
+        ks::test::ScratchDir dir;
+        // A prefab saved, then saved again under the fault: the old file and the library's entry stay.
+        PrefabLibrary library({dir / "prefabs"});
+        level::Entity wall;
+        wall.id = 1;
+        wall.props = level::default_props(EntityType::Wall);
+        auto first = library.save(Prefab{"doorway", "Doorway", {wall}});
+        REQUIRE(first.ok());
+        const std::string prefab_before = ks::test::read_file(*first);
+        Result<fs::path> failed_prefab = Error("not run");
+        {
+            hardening::FaultGuard guard(fault);
+            failed_prefab = library.save(Prefab{"doorway", "Doorway, wider", {wall}});
+        }
+        REQUIRE_FALSE(failed_prefab.ok());
+        hardening::check_clear_error(failed_prefab.error(), first->string());
+        CHECK(failed_prefab.error().str().find("previous file was left untouched") != std::string::npos);
+        CHECK(ks::test::read_file(*first) == prefab_before);
+        library.rescan();
+        REQUIRE(library.get("doorway").ok());
+        CHECK(library.get("doorway")->title == "Doorway");
+        CHECK(hardening::leftover_temp_files(dir / "prefabs") ==
+              (fault == files::Fault::BeforeRename ? 1 : 0));
+        REQUIRE(library.save(Prefab{"doorway", "Doorway, wider", {wall}}).ok());
+        CHECK(library.get("doorway")->title == "Doorway, wider");
+
+        // The recent-files list the same way: the list on disk is the previous one until a save succeeds.
+        RecentFiles recent(dir / "recent.json");
+        recent.add(dir / "first.json");
+        REQUIRE(recent.save().ok());
+        const std::string recent_before = ks::test::read_file(dir / "recent.json");
+        recent.add(dir / "second.json");
+        Result<void> failed_recent = ok();
+        {
+            hardening::FaultGuard guard(fault);
+            failed_recent = recent.save();
+        }
+        REQUIRE_FALSE(failed_recent.ok());
+        hardening::check_clear_error(failed_recent.error(), (dir / "recent.json").string());
+        CHECK(ks::test::read_file(dir / "recent.json") == recent_before);
+        RecentFiles reread(dir / "recent.json");
+        REQUIRE(reread.load().ok());
+        CHECK(reread.entries().size() == 1);
+        REQUIRE(recent.save().ok());
+        REQUIRE(reread.load().ok());
+        CHECK(reread.entries().size() == 2);
+    }
 }
