@@ -48,7 +48,9 @@ void HistoryPanel::draw(Editor& editor, const Rect& rect) {
 void HistoryPanel::draw(DojoPanel& dojo, const Rect& rect) {
     place_panel(rect.x, rect.y, rect.w, rect.h);
     ImGui::Begin("History", nullptr, kPanelFlags);
-    ImGui::TextDisabled("the clip file's steps (the level's show in the Level tab)");
+    ImGui::TextDisabled("Dojo steps");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The clip file's undo steps; the level's show in the Level tab");
     const DojoHistory& history = dojo.history();
     const int target = history_list(history.step_names(), static_cast<int>(history.undo_count()), "(loaded)");
     if (target >= 0) {

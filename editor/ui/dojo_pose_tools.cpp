@@ -119,6 +119,11 @@ bool DojoPoseTools::overlay(const DojoContext& dojo, const ViewCamera& view, Vec
 
 void DojoPoseTools::bar(const DojoContext& dojo) {
     DojoPoseSettings& set = poser_.settings;
+    // A dark strip under the bar: its labels stay readable over the bright floor.
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(at.x - 4, at.y - 2),
+                                              ImVec2(at.x + 440, at.y + ImGui::GetFrameHeight() + 2),
+                                              IM_COL32(16, 18, 24, 200), 4.0f);
     const bool key_clicked = ImGui::SmallButton("Key");
     dojo.mark(DojoSpot::KeyPose);
     if (key_clicked) key(dojo);
