@@ -178,11 +178,12 @@ void DojoPanel::apply_view(const DojoView& view) {
         const auto& rig = edits_.file().rig;
         const auto found = std::find_if(rig.begin(), rig.end(),
                                         [&](const anim::RigNodeDef& n) { return n.name == view.node; });
-        if (found == rig.end())
+        if (found == rig.end()) {
             log_("--dojo-view: no node '" + view.node + "' in the rig", true);
-        else
-            curve_view_.show(static_cast<int>(found - rig.begin()), view.channel),
-                selection_.node = view.node;
+        } else {
+            curve_view_.show(static_cast<int>(found - rig.begin()), view.channel);
+            selection_.node = view.node; // posed in the preview too
+        }
     }
     preview_.set_onion(view.onion);
     if (!view.blend_from.empty()) {
