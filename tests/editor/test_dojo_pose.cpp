@@ -23,7 +23,7 @@ using ks::dojo_test::shipped_clips;
 using ks::dojo_test::text;
 
 namespace {
-struct Session {
+struct PoseSession {
     DojoPlayback playback;
     DojoEdits edits{playback, [](const std::string&, bool) {}};
     DojoPoseEdits pose_edits;
@@ -32,7 +32,7 @@ struct Session {
     std::size_t clip = 0;
     double seconds = 0.0;
 
-    explicit Session(const std::string& clip_name, double at) {
+    explicit PoseSession(const std::string& clip_name, double at) {
         auto rig = anim::build_rig(shipped_clips());
         REQUIRE(rig.ok());
         playback.set_rig(*rig);
@@ -59,7 +59,7 @@ struct Session {
 
 // A point of ring k on screen, `step` segments (7.5 degrees each) round from its farthest point from the
 // centre (clear of the other rings).
-Vec2 ring_point(const GizmoShape& shape, int k, int step) {
+Vec2 pose_ring_point(const GizmoShape& shape, int k, int step) {
     int far = 0;
     for (int i = 0; i < kGizmoRingSegments; ++i)
         if (glm::length(shape.rings[k][i] - shape.centre) > glm::length(shape.rings[k][far] - shape.centre))
@@ -68,7 +68,7 @@ Vec2 ring_point(const GizmoShape& shape, int k, int step) {
 }
 
 // The angle (degrees) of the turn taking a to b, signed about `axis`.
-float turn_about(const Quat& a, const Quat& b, const Vec3& axis) {
+float pose_turn_about(const Quat& a, const Quat& b, const Vec3& axis) {
     const Quat d = glm::normalize(b * glm::inverse(a));
     const float angle = 2.0f * std::acos(std::clamp(std::abs(d.w), 0.0f, 1.0f));
     const Vec3 v(d.x, d.y, d.z);
@@ -76,8 +76,8 @@ float turn_about(const Quat& a, const Quat& b, const Vec3& axis) {
     return sign * angle * 57.2957795f;
 }
 
-std::vector<std::vector<NodePoseValue>> poses_at(const anim::AnimationFile& file, std::size_t clip,
-                                                 const std::vector<double>& times) {
+std::vector<std::vector<NodePoseValue>> pose_values_at(const anim::AnimationFile& file, std::size_t clip,
+                                                       const std::vector<double>& times) {
     std::vector<std::vector<NodePoseValue>> out;
     for (double t : times) {
         auto values = clip_pose_values(file, clip, t);
@@ -87,7 +87,7 @@ std::vector<std::vector<NodePoseValue>> poses_at(const anim::AnimationFile& file
     return out;
 }
 
-std::vector<double> key_times(const anim::ClipDef& def) {
+std::vector<double> pose_key_times(const anim::ClipDef& def) {
     std::vector<double> times;
     double t = 0.0;
     for (const auto& p : def.phases) times.push_back(t += p.duration);
@@ -127,7 +127,7 @@ TEST_CASE("dojo pose: two-bone IK puts the tip on every reachable target, bones 
 }
 
 TEST_CASE("dojo pose: IK on the right hand turns arm_r and forearm_r so the wrist reaches the target") {
-    Session s("shoot_pose", 0.3);
+    PoseSession s("shoot_pose", 0.3);
     const int hand = s.node("hand_r");
     const anim::Pose pose = s.pose();
     const std::vector<Mat4> world = pose_world(s.playback.rig(), pose);
@@ -147,7 +147,7 @@ TEST_CASE("dojo pose: IK on the right hand turns arm_r and forearm_r so the wris
 }
 
 TEST_CASE("dojo pose: a ray picks the joint it passes, a bone picks the node that turns it, else none") {
-    Session s("idle", 0.2);
+    PoseSession s("idle", 0.2);
     const anim::Rig& rig = s.playback.rig();
     const std::vector<Mat4> world = pose_world(rig, s.pose());
     const Vec3 eye(4, 2, 5);
@@ -174,7 +174,7 @@ TEST_CASE("dojo pose: Euler angles read back nearest the old ones, whole turns a
 TEST_CASE("dojo pose: dragging a ring turns the node about it, world or local, snapped to whole steps") {
     for (const RotationSpace space : {RotationSpace::World, RotationSpace::Local}) {
         CAPTURE(rotation_space_name(space));
-        Session s("shoot_pose", 0.3);
+        PoseSession s("shoot_pose", 0.3);
         s.poser.settings.space = space;
         const int node = s.node("forearm_r");
         const GizmoFrame frame = s.poser.frame(s.playback.rig(), s.pose(), node);
@@ -184,24 +184,25 @@ TEST_CASE("dojo pose: dragging a ring turns the node about it, world or local, s
         for (int k = 0; k < 3; ++k) {
             if (!shape.ring_visible[k]) continue;
             CAPTURE(k);
-            const Vec2 grab = ring_point(shape, k, 0);
+            const Vec2 grab = pose_ring_point(shape, k, 0);
             if (ring_axis(s.poser.hit(s.view, frame, grab)) != k) continue; // another ring passes there too
             ++dragged;
             auto scene = s.scene();
             s.poser.begin_turn(scene, s.view, node, s.poser.hit(s.view, frame, grab), grab);
-            s.poser.drag(scene, s.view, ring_point(shape, k, 4)); // 4 segments: 30 degrees round the ring
-            const float turned = turn_about(before, s.world_of(node), frame.axes[k]);
+            s.poser.drag(scene, s.view,
+                         pose_ring_point(shape, k, 4)); // 4 segments: 30 degrees round the ring
+            const float turned = pose_turn_about(before, s.world_of(node), frame.axes[k]);
             CHECK(std::abs(turned) == doctest::Approx(30.0f).epsilon(0.08));
             // The ring's axis is what the node turned about: it stays where it was.
             CHECK(glm::length(s.world_of(node) * (glm::inverse(before) * frame.axes[k]) - frame.axes[k]) <
                   1e-3f);
             s.poser.settings.snap = true;
             s.poser.settings.snap_degrees = 45.0f;
-            s.poser.drag(scene, s.view, ring_point(shape, k, 4)); // 30 degrees snaps to 45
-            CHECK(std::abs(turn_about(before, s.world_of(node), frame.axes[k])) ==
+            s.poser.drag(scene, s.view, pose_ring_point(shape, k, 4)); // 30 degrees snaps to 45
+            CHECK(std::abs(pose_turn_about(before, s.world_of(node), frame.axes[k])) ==
                   doctest::Approx(45.0f).epsilon(1e-3));
-            s.poser.drag(scene, s.view, ring_point(shape, k, 4), true); // Ctrl: free again
-            CHECK(std::abs(turn_about(before, s.world_of(node), frame.axes[k])) ==
+            s.poser.drag(scene, s.view, pose_ring_point(shape, k, 4), true); // Ctrl: free again
+            CHECK(std::abs(pose_turn_about(before, s.world_of(node), frame.axes[k])) ==
                   doctest::Approx(turned).epsilon(1e-3));
             s.poser.settings.snap = false;
             s.poser.end(scene);
@@ -218,8 +219,8 @@ TEST_CASE("dojo pose: Key on a key time sets that key; between keys it splits th
         CAPTURE(name);
         anim::AnimationFile file = shipped;
         const std::size_t clip = index_of(file, name);
-        const std::vector<double> keys = key_times(file.clips[clip]);
-        const auto before = poses_at(file, clip, keys);
+        const std::vector<double> keys = pose_key_times(file.clips[clip]);
+        const auto before = pose_values_at(file, clip, keys);
         // Between the first two keys.
         const double at = keys[0] + (keys[1] - keys[0]) * 0.4;
         const NodeRotation turn{"forearm_l", DVec3(10, 20, 30)};
@@ -227,7 +228,7 @@ TEST_CASE("dojo pose: Key on a key time sets that key; between keys it splits th
         REQUIRE(keyed.ok());
         CHECK(*keyed == 1);
         CHECK(file.clips[clip].phases.size() == keys.size() + 1);
-        const auto after = poses_at(file, clip, keys);
+        const auto after = pose_values_at(file, clip, keys);
         for (std::size_t k = 0; k < keys.size(); ++k)
             for (std::size_t n = 0; n < before[k].size(); ++n) {
                 CAPTURE(keys[k]);
@@ -259,21 +260,21 @@ TEST_CASE("dojo pose: Key on a key time sets that key; between keys it splits th
 }
 
 TEST_CASE("dojo pose: auto-key writes a drag as one undo step; Key writes the turned nodes; undo restores") {
-    Session s("shooting", 0.35);
+    PoseSession s("shooting", 0.35);
     const std::string original = text(s.edits.file());
     const int node = s.node("forearm_l");
     s.poser.settings.auto_key = true;
     const GizmoFrame frame = s.poser.frame(s.playback.rig(), s.pose(), node);
     const GizmoShape shape = gizmo_shape(s.view, frame);
     int k = 0;
-    while (k < 3 &&
-           (!shape.ring_visible[k] || ring_axis(s.poser.hit(s.view, frame, ring_point(shape, k, 0))) != k))
+    while (k < 3 && (!shape.ring_visible[k] ||
+                     ring_axis(s.poser.hit(s.view, frame, pose_ring_point(shape, k, 0))) != k))
         ++k;
     REQUIRE(k < 3);
     auto scene = s.scene();
-    const Vec2 grab = ring_point(shape, k, 0);
+    const Vec2 grab = pose_ring_point(shape, k, 0);
     s.poser.begin_turn(scene, s.view, node, s.poser.hit(s.view, frame, grab), grab);
-    for (int step = 1; step <= 4; ++step) s.poser.drag(scene, s.view, ring_point(shape, k, step));
+    for (int step = 1; step <= 4; ++step) s.poser.drag(scene, s.view, pose_ring_point(shape, k, step));
     s.poser.end(scene);
     CHECK(s.edits.history().undo_count() == 1);
     CHECK(s.edits.history().undo_name() == "Rotate forearm_l");
@@ -288,7 +289,7 @@ TEST_CASE("dojo pose: auto-key writes a drag as one undo step; Key writes the tu
     // Without auto-key: a drag edits the pose only; Key writes it as one step.
     s.poser.settings.auto_key = false;
     s.poser.begin_turn(scene, s.view, node, s.poser.hit(s.view, frame, grab), grab);
-    s.poser.drag(scene, s.view, ring_point(shape, k, 3));
+    s.poser.drag(scene, s.view, pose_ring_point(shape, k, 3));
     s.poser.end(scene);
     CHECK(text(s.edits.file()) == original);
     REQUIRE(s.pose_edits.edits().size() == 1);
