@@ -232,6 +232,13 @@ const std::string& DojoHistory::redo_name() const {
     return redo_.empty() ? none : redo_.back().name;
 }
 
+std::vector<std::string> DojoHistory::step_names() const {
+    std::vector<std::string> names;
+    for (const auto& s : undo_) names.push_back(s.name);
+    for (auto it = redo_.rbegin(); it != redo_.rend(); ++it) names.push_back(it->name);
+    return names;
+}
+
 void DojoHistory::clear() {
     undo_.clear();
     redo_.clear();

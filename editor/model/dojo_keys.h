@@ -72,6 +72,8 @@ class DojoHistory {
     std::size_t redo_count() const { return redo_.size(); }
     const std::string& undo_name() const;
     const std::string& redo_name() const;
+    // Every step's name, oldest first: the undo steps, then the redo steps (the History panel's list).
+    std::vector<std::string> step_names() const;
     void clear();
 
   private:

@@ -3,6 +3,7 @@
 #include "model/edit_selection.h"
 #include "model/quick_fix.h"
 
+#include "ui/dojo_panel.h"
 #include "ui/panel_style.h"
 
 #include <imgui.h>
@@ -11,14 +12,11 @@
 
 namespace ks::editor::ui {
 
-void HistoryPanel::draw(Editor& editor, const Rect& rect) {
-    place_panel(rect.x, rect.y, rect.w, rect.h);
-    ImGui::Begin("History", nullptr, kPanelFlags);
-    const auto& history = editor.history();
-    const auto names = history.step_names();
-    const int done = static_cast<int>(history.undo_count());
+namespace {
+// The steps, the done ones bright; returns the number of steps to have done after a click, -1 for none.
+int history_list(const std::vector<std::string>& names, int done, const char* first) {
     int target = -1;
-    if (ImGui::Selectable("(opened)", done == 0)) target = 0;
+    if (ImGui::Selectable(first, done == 0)) target = 0;
     for (int i = 0; i < static_cast<int>(names.size()); ++i) {
         ImGui::PushID(i);
         ImGui::PushStyleColor(ImGuiCol_Text,
@@ -29,10 +27,36 @@ void HistoryPanel::draw(Editor& editor, const Rect& rect) {
         ImGui::PopStyleColor();
         ImGui::PopID();
     }
+    return target;
+}
+} // namespace
+
+void HistoryPanel::draw(Editor& editor, const Rect& rect) {
+    place_panel(rect.x, rect.y, rect.w, rect.h);
+    ImGui::Begin("History", nullptr, kPanelFlags);
+    const auto& history = editor.history();
+    const int target = history_list(history.step_names(), static_cast<int>(history.undo_count()), "(opened)");
     if (target >= 0) { // jump: undo or redo until `target` steps are done
         while (static_cast<int>(editor.history().undo_count()) > target && editor.undo()) {
         }
         while (static_cast<int>(editor.history().undo_count()) < target && editor.redo()) {
+        }
+    }
+    ImGui::End();
+}
+
+void HistoryPanel::draw(DojoPanel& dojo, const Rect& rect) {
+    place_panel(rect.x, rect.y, rect.w, rect.h);
+    ImGui::Begin("History", nullptr, kPanelFlags);
+    ImGui::TextDisabled("Dojo steps");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The clip file's undo steps; the level's show in the Level tab");
+    const DojoHistory& history = dojo.history();
+    const int target = history_list(history.step_names(), static_cast<int>(history.undo_count()), "(loaded)");
+    if (target >= 0) {
+        while (static_cast<int>(dojo.history().undo_count()) > target && dojo.undo()) {
+        }
+        while (static_cast<int>(dojo.history().undo_count()) < target && dojo.redo()) {
         }
     }
     ImGui::End();

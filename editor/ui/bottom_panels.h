@@ -9,9 +9,13 @@
 
 namespace ks::editor::ui {
 
+class DojoPanel;
+
+// The level's history, or in the Dojo tab the clip file's (its own undo steps: dojo_panel.h).
 class HistoryPanel {
   public:
     void draw(Editor& editor, const Rect& rect);
+    void draw(DojoPanel& dojo, const Rect& rect);
 };
 
 class LogPanel {

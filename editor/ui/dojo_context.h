@@ -37,6 +37,8 @@ enum class DojoSpot : std::uint8_t {
     AddEvent,
     QuitCancel,
     QuitDiscard,
+    KeyPose,
+    AutoKey,
     Count
 };
 const char* dojo_spot_name(DojoSpot spot);
@@ -48,6 +50,7 @@ struct DojoSelection {
     int phase = 0;
     int event = -1;
     DojoPage page = DojoPage::Keys;
+    std::string node; // the node posed in the preview and highlighted in the key table (empty: none)
     bool page_requested = false; // select `page`'s tab on the next frame
 
     void request_page(DojoPage wanted) { page = wanted, page_requested = true; }

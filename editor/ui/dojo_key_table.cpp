@@ -163,7 +163,9 @@ bool DojoKeyTable::target_rows(const DojoContext& dojo, anim::PhaseDef& phase, s
             ImGui::PushID(static_cast<int>(t));
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            ImGui::TextUnformatted(target.node.c_str());
+            // The node posed in the preview is highlighted; clicking a name selects it there.
+            if (ImGui::Selectable(target.node.c_str(), dojo.selection.node == target.node))
+                dojo.selection.node = target.node;
             ImGui::TableNextColumn();
             auto& rot = target.rot ? target.rot : target.add_rot;
             if (rot) {

@@ -18,10 +18,10 @@ namespace ks::editor::ui {
 
 namespace {
 constexpr const char* kPageNames[] = {"keys", "curves", "blends", "events"};
-constexpr const char* kSpotNames[] = {"add_key",     "duplicate_key", "new_clip",    "clip_name",
-                                      "clip_ok",     "page_keys",     "page_curves", "page_blends",
-                                      "page_events", "save",          "reload",      "reload_notice",
-                                      "add_event",   "quit_cancel",   "quit_discard"};
+constexpr const char* kSpotNames[] = {
+    "add_key",     "duplicate_key", "new_clip",     "clip_name", "clip_ok", "page_keys",
+    "page_curves", "page_blends",   "page_events",  "save",      "reload",  "reload_notice",
+    "add_event",   "quit_cancel",   "quit_discard", "key_pose",  "auto_key"};
 static_assert(std::size(kSpotNames) == static_cast<size_t>(DojoSpot::Count));
 
 Result<bool> parse_flag(const std::string& key, const std::string& value) {
@@ -178,10 +178,12 @@ void DojoPanel::apply_view(const DojoView& view) {
         const auto& rig = edits_.file().rig;
         const auto found = std::find_if(rig.begin(), rig.end(),
                                         [&](const anim::RigNodeDef& n) { return n.name == view.node; });
-        if (found == rig.end())
+        if (found == rig.end()) {
             log_("--dojo-view: no node '" + view.node + "' in the rig", true);
-        else
+        } else {
             curve_view_.show(static_cast<int>(found - rig.begin()), view.channel);
+            selection_.node = view.node; // posed in the preview too
+        }
     }
     preview_.set_onion(view.onion);
     if (!view.blend_from.empty()) {
@@ -305,7 +307,24 @@ DojoPanel::Status DojoPanel::status() const {
     st.onion = preview_.onion();
     st.ghosts = preview_.ghost_instances();
     st.auditioned = auditioned_;
+    pose_status(st);
     return st;
+}
+
+void DojoPanel::key_pose() {
+    preview_.pose_tools().key(context());
+}
+
+// The posing tools' part: the selected node, the joints and rings on screen, the unkeyed edits.
+void DojoPanel::pose_status(Status& st) const {
+    const DojoPoseTools& tools = preview_.pose_tools();
+    st.node = selection_.node;
+    st.pose_edits = tools.edits().edits().size();
+    st.auto_key = tools.settings().auto_key;
+    const anim::Rig& rig = playback_.rig();
+    for (int i = 0; i < rig.size() && i < static_cast<int>(tools.joints().size()); ++i)
+        st.joints.emplace_back(rig.node(i).name, tools.joints()[static_cast<std::size_t>(i)]);
+    st.rings = tools.rings();
 }
 
 bool DojoPanel::undo() {
@@ -336,7 +355,7 @@ void DojoPanel::panel(float x, float y, float width, float height) {
         ph = std::min(ph, static_cast<float>(preview_.target_height()));
     }
     ImGui::BeginGroup();
-    preview_.draw(pw, ph);
+    preview_.draw(dojo, pw, ph);
     if (playback_.clips().clips.empty()) {
         ImGui::TextColored(ImVec4(1, 0.4f, 0.35f, 1), "%s", edits_.compile_error().c_str());
         ImGui::EndGroup();

@@ -44,7 +44,7 @@ using LogFn = DojoLogFn;
 struct DojoView {
     std::string clip; // empty: the file's first clip
     DojoPage page = DojoPage::Keys;
-    std::string node; // the curve view's node (empty: the first the clip keys)
+    std::string node; // the curve view's node (empty: the first the clip keys), selected in the preview
     CurveChannel channel = CurveChannel::RotX;
     double time = -1.0; // >= 0: paused at this many seconds
     bool onion = false;
@@ -92,6 +92,8 @@ class DojoPanel {
     // shown key, Ctrl+Shift+V mirrored left <-> right (model/dojo_clipboard.h); each paste one undo step.
     void copy(bool pose);
     void paste(bool mirror);
+    // K in the Dojo tab: keys the nodes turned in the preview (or the selected one) at the playhead.
+    void key_pose();
     // The dojo's questions (reload over unsaved edits, save over outside changes, quit with unsaved edits),
     // drawn whichever tab is shown.
     void prompts();
@@ -128,6 +130,11 @@ class DojoPanel {
         std::vector<Vec2> blend_centres;      // its cells' centres, row-major ((0, 0): not drawn)
         std::vector<Vec2> curve_keys;         // the curve view's key handles, while it is shown
         std::vector<Vec2> event_flags;        // the event lane's flags (the event's time on the lane)
+        std::string node;                     // the node selected in the preview
+        std::size_t pose_edits = 0;           // nodes turned and not keyed yet
+        bool auto_key = false;
+        std::vector<std::pair<std::string, Vec2>> joints; // the rig's joints on screen
+        std::array<Vec2, 3> rings{};                      // a point on each gizmo ring ((0, 0): none)
     };
     Status status() const;
 
@@ -136,6 +143,7 @@ class DojoPanel {
     void advance(double dt); // playback, with the events' sounds as the playhead passes them
     DojoContext context();
     void right_pages(const DojoContext& dojo);
+    void pose_status(Status& st) const;
 
     SoundAudition audition_;
     LogFn log_;

@@ -111,6 +111,9 @@ void DojoPreview::render(const DojoContext& dojo, float tab_width, float tab_hei
     target_.bind();
     instances_.clear();
     ghost_instances_ = 0;
+    pose_tools_.sync(dojo);
+    if (model_ && !pose_tools_.edits().empty()) // the turned, not yet keyed nodes
+        binding_.write_locals(shown_pose(dojo.playback, pose_tools_.edits()), pose_.local);
     if (model_) {
         model_->emit(Mat4(1.0f), pose_, scratch_, instances_);
         const std::size_t main_count = instances_.size();
@@ -120,7 +123,8 @@ void DojoPreview::render(const DojoContext& dojo, float tab_width, float tab_hei
     }
     instances_.push_back({floor_.get(), floor_material_, Mat4(1.0f), 1.0f, false});
     const Vec3 target(0.0f, 1.6f, 0.0f);
-    geometry::Camera camera;
+    view_.set_viewport(Vec2(static_cast<float>(target_.width()), static_cast<float>(target_.height())));
+    geometry::Camera& camera = view_.camera;
     camera.fov_y = radians(40.0f);
     camera.aspect = width_ / height_;
     camera.yaw = orbit_yaw_;
@@ -145,7 +149,7 @@ void DojoPreview::render(const DojoContext& dojo, float tab_width, float tab_hei
 }
 
 // The rendered preview (drag to orbit) with the onion-skin toggle and its legend over its top-left corner.
-void DojoPreview::draw(float w, float h) {
+void DojoPreview::draw(const DojoContext& dojo, float w, float h) {
     const ImVec2 corner = ImGui::GetCursorScreenPos();
     if (target_.texture() == 0) { // not rendered yet (the tab's first frame): keep its place
         ImGui::Dummy(ImVec2(w, h));
@@ -153,7 +157,11 @@ void DojoPreview::draw(float w, float h) {
     }
     ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(target_.texture())), ImVec2(w, h),
                  ImVec2(0, 1), ImVec2(1, 0));
-    if (ImGui::IsItemHovered() && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
+    const bool posing =
+        pose_tools_.overlay(dojo, view_, Vec2(corner.x, corner.y), ImGui::IsItemHovered() && !orbiting_);
+    if (ImGui::IsItemHovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) orbiting_ = !posing;
+    if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) orbiting_ = false;
+    if (orbiting_ && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
         const ImVec2 d = ImGui::GetIO().MouseDelta;
         orbit_yaw_ -= d.x * 0.01f;
         orbit_pitch_ = std::clamp(orbit_pitch_ + d.y * 0.01f, -0.2f, 1.3f);
@@ -183,6 +191,8 @@ void DojoPreview::draw(float w, float h) {
             y += line + 2;
         }
     }
+    ImGui::SetCursorScreenPos(ImVec2(corner.x + 6, corner.y + h - ImGui::GetFrameHeight() - 4));
+    pose_tools_.bar(dojo);
     ImGui::SetCursorScreenPos(after);
 }
 

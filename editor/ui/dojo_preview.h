@@ -8,6 +8,7 @@
 #include "render/debug_draw.h"
 #include "render/scene_renderer.h"
 #include "ui/dojo_context.h"
+#include "ui/dojo_pose_tools.h"
 #include "ui/render_target.h"
 
 #include <array>
@@ -31,8 +32,11 @@ class DojoPreview {
 
     // GL pass: renders the posed robot (and the ghosts) into the preview target, sized for a tab w x h.
     void render(const DojoContext& dojo, float tab_width, float tab_height);
-    // The rendered image (drag to orbit, wheel to zoom) with the onion-skin toggle over its corner.
-    void draw(float width, float height);
+    // The rendered image (drag to orbit, wheel to zoom) with the onion-skin toggle over its corner, the rig
+    // and the posing tools over it (dojo_pose_tools.h), the posing bar below it.
+    void draw(const DojoContext& dojo, float width, float height);
+    DojoPoseTools& pose_tools() { return pose_tools_; }
+    const DojoPoseTools& pose_tools() const { return pose_tools_; }
     // The target's size (0 before the first render).
     int target_width() const { return target_.width(); }
     int target_height() const { return target_.height(); }
@@ -57,8 +61,11 @@ class DojoPreview {
     std::unique_ptr<render::GpuMesh> floor_;
     const render::Material* floor_material_ = nullptr;
     render::DebugDraw debug_;
+    ViewCamera view_; // the last render's camera: the posing tools' rays and projection
+    DojoPoseTools pose_tools_;
     float orbit_yaw_ = 0.6f, orbit_pitch_ = 0.25f, orbit_distance_ = 7.0f;
     float width_ = 400, height_ = 300;
+    bool orbiting_ = false; // a left drag that began off the rig and the rings
 
     bool onion_ = false;
     struct Ghost {

@@ -236,8 +236,11 @@ void EditorApp::build_ui(const shell::FrameInfo& info) {
                                                     layout.centre.y + kViewportBar + 8.0f));
     }
     // Along the bottom: history, the play-test report, the log.
-    history_panel_.draw(editor_,
-                        Rect{layout.bottom.x, layout.bottom.y, layout.bottom.w * 0.2f, layout.bottom.h});
+    const Rect history_rect{layout.bottom.x, layout.bottom.y, layout.bottom.w * 0.2f, layout.bottom.h};
+    if (dojo_tab_)
+        history_panel_.draw(*dojo_, history_rect);
+    else
+        history_panel_.draw(editor_, history_rect);
     analysis_.window(editor_, spots_,
                      Rect{layout.bottom.x + layout.bottom.w * 0.2f, layout.bottom.y, layout.bottom.w * 0.4f,
                           layout.bottom.h});
@@ -304,6 +307,7 @@ void EditorApp::handle_shortcuts() {
         if (pressed(GLFW_KEY_DELETE)) dojo_->delete_selected();
         if (ctrl && pressed(GLFW_KEY_C)) dojo_->copy(shift);
         if (ctrl && pressed(GLFW_KEY_V)) dojo_->paste(shift);
+        if (!ctrl && pressed(GLFW_KEY_K)) dojo_->key_pose();
         return; // the rest acts on the level viewport
     }
     if (viewport_.geometry_tool_keys(ctrl)) return;

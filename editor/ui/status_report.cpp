@@ -42,6 +42,10 @@ nlohmann::json dojo_status(const DojoPanel& dojo) {
     for (const Vec2& key : d.curve_keys) curve_keys.push_back(point(key));
     nlohmann::json event_flags = nlohmann::json::array();
     for (const Vec2& flag : d.event_flags) event_flags.push_back(point(flag));
+    nlohmann::json joints = nlohmann::json::object();
+    for (const auto& [name, at] : d.joints) joints[name] = point(at);
+    nlohmann::json rings = nlohmann::json::array();
+    for (const Vec2& ring : d.rings) rings.push_back(point(ring));
     return {{"undo", d.undo},
             {"redo", d.redo},
             {"undo_name", d.undo_name},
@@ -65,6 +69,12 @@ nlohmann::json dojo_status(const DojoPanel& dojo) {
             {"blend_cells", cells},
             {"curve_keys", curve_keys},
             {"event_flags", event_flags},
+            {"pose",
+             {{"node", d.node},
+              {"edits", d.pose_edits},
+              {"auto_key", d.auto_key},
+              {"joints", joints},
+              {"rings", rings}}},
             // Kept from before the spots map (older tests read them).
             {"add_key", point(d.spots[static_cast<size_t>(DojoSpot::AddKey)])},
             {"duplicate_key", point(d.spots[static_cast<size_t>(DojoSpot::DuplicateKey)])}};
@@ -171,7 +181,8 @@ void document_status(nlohmann::json& s, Editor& editor) { // title() takes the e
                         {"rotation", {e->rotation.x, e->rotation.y, e->rotation.z}},
                         {"links", links_json(e->links)}};
         if (const auto texture = selection_texture(editor)) s["primary"]["texture"] = texture->name;
-        nlohmann::json fields = nlohmann::json::object(); // every field as the inspector's text (what a typed edit set)
+        nlohmann::json fields =
+            nlohmann::json::object(); // every field as the inspector's text (what a typed edit set)
         for (const FieldDescriptor& field : describe_entity_fields(*e))
             if (const auto value = get_entity_field(*e, field.name))
                 fields[field.name] = format_field_value(*value);

@@ -81,10 +81,15 @@ Vec3 ring_v(const Mat3& axes, int k) {
     return axes[(k + 2) % 3];
 }
 
+} // namespace
+
 float angle_in_plane(const Vec3& offset, const Vec3& u, const Vec3& v) {
     return std::atan2(glm::dot(offset, v), glm::dot(offset, u));
 }
-} // namespace
+
+float ring_angle(const GizmoFrame& frame, int k, const Vec3& offset) {
+    return angle_in_plane(offset, ring_u(frame.axes, k), ring_v(frame.axes, k));
+}
 
 int ring_axis(Handle h) {
     return h == Handle::RingX ? 0 : h == Handle::RingY ? 1 : h == Handle::RingZ ? 2 : -1;

@@ -62,6 +62,10 @@ Handle gizmo_hit(GizmoMode mode, const GizmoShape& shape, Vec2 mouse);
 // to the axis), and the ray's point on the plane through `pivot` (nullopt when edge-on or behind).
 std::optional<float> axis_parameter(const geometry::Ray& ray, const Vec3& pivot, const Vec3& axis);
 std::optional<Vec3> plane_point(const geometry::Ray& ray, const Vec3& pivot, const Vec3& normal);
+// The angle of `offset` in the plane of unit axes u and v, from u toward v; and about ring k of `frame` (a
+// positive angle is a positive turn about the frame's axis k).
+float angle_in_plane(const Vec3& offset, const Vec3& u, const Vec3& v);
+float ring_angle(const GizmoFrame& frame, int k, const Vec3& offset);
 
 class Gizmo;
 // The mode as the viewport's status line shows it: "Move", "Rotate (world)", "Rotate (local)", "Scale".

@@ -14,7 +14,7 @@ using editor_test::all_shown;
 using editor_test::kViewport;
 
 namespace {
-ViewCamera axis_view(ViewMode mode, Vec3 centre = Vec3(0.0f), float extent = 60.0f) {
+ViewCamera picking_axis_view(ViewMode mode, Vec3 centre = Vec3(0.0f), float extent = 60.0f) {
     ViewCamera v;
     v.set_viewport(kViewport);
     v.set_view(mode, centre, extent);
@@ -27,7 +27,7 @@ TEST_CASE("top view picks with parallel rays anywhere in the picture") {
     editor.grid().step = 1.0f;
     const int robot = *place(editor, level::EntityType::Robot, Vec3(-50, 0, 14));
     const int pickup = *place(editor, level::EntityType::Pickup, Vec3(20, 0, -20));
-    const ViewCamera top = axis_view(ViewMode::Top);
+    const ViewCamera top = picking_axis_view(ViewMode::Top);
     Vec2 at_robot, at_pickup;
     REQUIRE(top.project(Vec3(-50, 1, 14), at_robot));
     REQUIRE(top.project(Vec3(20, 0.5f, -20), at_pickup));
@@ -49,7 +49,7 @@ TEST_CASE("front view picks the nearest of entities in line along the view") {
     editor.grid().step = 1.0f;
     const int back = *place(editor, level::EntityType::Robot, Vec3(0, 0, -10));
     const int front_robot = *place(editor, level::EntityType::Robot, Vec3(0, 0, 10));
-    const ViewCamera front = axis_view(ViewMode::Front); // looks along -z: +z is nearer
+    const ViewCamera front = picking_axis_view(ViewMode::Front); // looks along -z: +z is nearer
     Vec2 p;
     REQUIRE(front.project(Vec3(0, 1, 0), p));
     const PickHit hit = pick_entity(editor.doc(), front.ray(p), all_shown);
@@ -64,7 +64,7 @@ TEST_CASE("placing lands on the surface under the cursor, snapped; else the grou
     Editor editor;
     editor.grid().step = 0.5f;
     REQUIRE(place(editor, level::EntityType::Floor, Vec3(0, 2, 0)).ok()); // a floor slab at height 2
-    const ViewCamera top = axis_view(ViewMode::Top);
+    const ViewCamera top = picking_axis_view(ViewMode::Top);
     Vec2 p;
     REQUIRE(top.project(Vec3(1.3f, 2, -2.2f), p));
     const Vec3 on_floor = place_point(editor.doc(), top.ray(p), all_shown, Vec3(0.0f));
@@ -78,7 +78,7 @@ TEST_CASE("placing lands on the surface under the cursor, snapped; else the grou
     CHECK(ground.x == doctest::Approx(40.0f));
     CHECK(ground.z == doctest::Approx(20.0f));
     // A level ray of the front view that meets nothing: the plane through the fallback point.
-    const ViewCamera front = axis_view(ViewMode::Front);
+    const ViewCamera front = picking_axis_view(ViewMode::Front);
     REQUIRE(front.project(Vec3(-30.2f, 7.3f, 4.0f), p));
     const Vec3 in_plane = place_point(editor.doc(), front.ray(p), all_shown, Vec3(0, 0, 4));
     CHECK(in_plane.x == doctest::Approx(-30.0f));

@@ -2,7 +2,8 @@
 // into its dialog, a blend cell Ctrl+clicked and typed, Save; an event added at the playhead, a curve key
 // dragged, Save, then the file changed outside the editor and reloaded. Each case edits a scratch copy of
 // robot.json (--dojo-file) and checks what was saved; the shipped file is never written. The editor reports
-// where its buttons and cells are in --status-file; the test waits on that state, never on time.
+// where its buttons and cells are in --status-file; the test waits on that state, never on time. The last
+// case poses the robot's forearm by dragging its gizmo ring in the preview, keyed with K and by auto-key.
 #include "anim/clip_io.h"
 #include "core/files.h"
 #include "model/dojo_clips.h"
@@ -14,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 using namespace ks;
 using nlohmann::json;
@@ -218,4 +220,49 @@ TEST_CASE("dojo input: an event added at the playhead, a curve key dragged (one 
     st = s.wait("reloaded", [&](const json& j) { return j["dojo"]["clips"] == before + 1; });
     CHECK(st["dojo"]["changed_on_disk"] == false);
     CHECK(st["dojo"]["undo"] == 0); // a reload starts a fresh history
+}
+
+TEST_CASE("dojo input: a joint clicked in the preview, its gizmo ring dragged, K keys it; auto-key makes a "
+          "drag one undo step") {
+    REQUIRE_MESSAGE((test::have_display() && test::have_xdotool()),
+                    "no DISPLAY or xdotool: dojo input test cannot run");
+    test::ScratchDir dir;
+    const auto clips = copy_clips(dir);
+    const auto status = dir / "status.json";
+    const test::PrivateDisplay display;
+    EditorProcess editor({"--dojo", "--dojo-file", clips.string(), "--dojo-view", "clip=shoot_pose,time=0.3",
+                          "--width", "1280", "--height", "720", "--status-file", status.string()},
+                         {"XDG_CONFIG_HOME=" + (dir / "config").string()}, display);
+    Session s(status, editor, display);
+    json st = s.wait("the rig's joints over the preview", [](const json& j) {
+        return j.contains("dojo") && j["dojo"]["pose"]["joints"].contains("forearm_r");
+    });
+    s.click(st["dojo"]["pose"]["joints"]["forearm_r"]);
+    st = s.wait("forearm_r selected, its rings drawn", [](const json& j) {
+        return j["dojo"]["pose"]["node"] == "forearm_r" &&
+               j["dojo"]["pose"]["rings"][2][0].get<float>() > 0.0f;
+    });
+    // Along ring z's tangent at its outermost point: a turn about the forearm's own z.
+    const json ring = st["dojo"]["pose"]["rings"][2];
+    const json joint = st["dojo"]["pose"]["joints"]["forearm_r"];
+    const float rx = ring[0].get<float>() - joint[0].get<float>(),
+                ry = ring[1].get<float>() - joint[1].get<float>();
+    const float len = std::sqrt(rx * rx + ry * ry);
+    REQUIRE(len > 10.0f);
+    s.drag(ring, -ry / len * 40.0f, rx / len * 40.0f);
+    st = s.wait("the forearm turned, not keyed",
+                [](const json& j) { return j["dojo"]["pose"]["edits"] == 1; });
+    CHECK(st["dojo"]["undo"] == 0);
+    s.key("k");
+    st = s.wait("keyed", [](const json& j) { return j["dojo"]["undo"] == 1; });
+    CHECK(st["dojo"]["undo_name"] == "Key forearm_r at 0.30 s");
+    CHECK(st["dojo"]["phases"] == 1); // on the clip's key: no key added
+
+    s.click(st["dojo"]["spots"]["auto_key"]);
+    st = s.wait("auto-key on", [](const json& j) { return j["dojo"]["pose"]["auto_key"] == true; });
+    s.drag(st["dojo"]["pose"]["rings"][2], ry / len * 40.0f, -rx / len * 40.0f, 8);
+    st = s.wait("the drag keyed", [](const json& j) { return j["dojo"]["undo"] == 2; });
+    st = s.frames(3);
+    CHECK(st["dojo"]["undo"] == 2);                       // the whole drag is one step
+    CHECK(st["dojo"]["undo_name"] == "Rotate forearm_r"); // undoing it: tests/editor/test_dojo_pose.cpp
 }
