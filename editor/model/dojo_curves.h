@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -54,6 +55,17 @@ struct ClipCurve {
 // lacks, or a file that does not compile.
 Result<ClipCurve> clip_curve(const anim::AnimationFile& file, std::size_t clip, const std::string& node,
                              CurveChannel channel, int samples = 64);
+
+// A channel of one node, for several curves at once.
+struct NodeChannel {
+    std::string node;
+    CurveChannel channel = CurveChannel::RotX;
+    bool operator==(const NodeChannel&) const = default;
+    auto operator<=>(const NodeChannel&) const = default;
+};
+// clip_curve for each of `channels` (the file compiled once), in their order.
+Result<std::vector<ClipCurve>> clip_curves(const anim::AnimationFile& file, std::size_t clip,
+                                           std::span<const NodeChannel> channels, int samples = 64);
 
 // The channel's value (as ClipCurve shows it) `seconds` after the clip starts from the rest pose, past its
 // end too (a loop repeats, a ping-pong clip comes back, a once clip holds): a readout, and what scripts

@@ -96,7 +96,8 @@ void DojoClipList::list(const DojoContext& dojo) {
                 if (ImGui::IsItemHovered()) ImGui::SetTooltip("Required: %s", protection.c_str());
             }
             ImGui::TableNextColumn();
-            ImGui::Text("%.2f s", def.duration());
+            const TimeUnits units{dojo.selection.frames, clip_frame_rate(def)};
+            ImGui::TextUnformatted(units.text(def.duration()).c_str());
             ImGui::TableNextColumn();
             if (def.loop == anim::LoopMode::Next)
                 ImGui::Text("next: %s", def.next.c_str());

@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace ks::editor::ui {
@@ -123,10 +124,20 @@ void DojoKeyTable::draw(const DojoContext& dojo) {
 bool DojoKeyTable::phase_timing(const DojoContext& dojo, anim::PhaseDef& phase) {
     bool edited = false;
     ImGui::BeginGroup();
-    float duration = static_cast<float>(phase.duration);
     ImGui::SetNextItemWidth(120);
-    if (ImGui::DragFloat("duration", &duration, 0.005f, 0.0f, 30.0f, "%.3f s", ImGuiSliderFlags_AlwaysClamp))
-        dojo.edits.begin_drag("key duration"), phase.duration = snap(duration, kTimeSteps), edited = true;
+    if (const TimeUnits units = dojo.time_units(); units.frames) { // whole frames
+        double frames = std::round(phase.duration * units.fps);
+        const double most = 30.0 * units.fps, zero = 0.0;
+        if (ImGui::DragScalar("duration", ImGuiDataType_Double, &frames, 0.2f, &zero, &most, "%.0f f",
+                              ImGuiSliderFlags_AlwaysClamp))
+            dojo.edits.begin_drag("key duration"), phase.duration = std::round(frames) / units.fps,
+                                                   edited = true;
+    } else {
+        float duration = static_cast<float>(phase.duration);
+        if (ImGui::DragFloat("duration", &duration, 0.005f, 0.0f, 30.0f, "%.3f s",
+                             ImGuiSliderFlags_AlwaysClamp))
+            dojo.edits.begin_drag("key duration"), phase.duration = snap(duration, kTimeSteps), edited = true;
+    }
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Seconds to reach this key's targets; a key with no targets is a delay.");
     ImGui::SetNextItemWidth(170);
