@@ -126,8 +126,8 @@ Result<CompiledClips> compile_for(const anim::AnimationFile& file, std::size_t c
     return out;
 }
 
-// A relative key's offset changed by `delta`: the node's next relative key on the channel takes it back,
-// unless an absolute key or the rest rule comes first, so every later key reaches what it did.
+} // namespace
+
 void keep_later_keys(anim::AnimationFile& file, std::size_t clip, std::size_t phase, const std::string& node,
                      CurveChannel channel, double delta) {
     anim::ClipDef& def = file.clips[clip];
@@ -150,8 +150,6 @@ void keep_later_keys(anim::AnimationFile& file, std::size_t clip, std::size_t ph
         return;
     }
 }
-
-} // namespace
 
 const char* curve_channel_name(CurveChannel c) {
     return kChannelNames[static_cast<int>(c)];

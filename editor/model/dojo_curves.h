@@ -85,4 +85,10 @@ Result<void> move_key_time(anim::AnimationFile& file, std::size_t clip, std::siz
 Result<void> set_key_value(anim::AnimationFile& file, std::size_t clip, std::size_t phase,
                            const std::string& node, CurveChannel channel, double value);
 
+// After `node`'s value at key `phase` changed by `delta` on `channel`: the node's next relative key on the
+// channel takes it back, unless an absolute key or the rest rule comes first, so every later key reaches
+// what it did (set_key_value does this for a relative key; the graph for a key it adds).
+void keep_later_keys(anim::AnimationFile& file, std::size_t clip, std::size_t phase, const std::string& node,
+                     CurveChannel channel, double delta);
+
 } // namespace ks::editor

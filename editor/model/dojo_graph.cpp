@@ -93,7 +93,13 @@ Result<void> set_value(anim::AnimationFile& file, std::size_t clip, const GraphP
     const double grid = value_grid(key.channel.channel);
     // Unkeyed for this kind: set_key_value makes an absolute key at the node's values; this one is `value`.
     const double wanted = stored ? snap(*stored + delta, grid) : snap(value, grid);
-    return set_key_value(file, clip, key.phase, key.channel.node, key.channel.channel, wanted);
+    if (auto set = set_key_value(file, clip, key.phase, key.channel.node, key.channel.channel, wanted); !set)
+        return set;
+    // A key made here: a later key relative to this one (a root node's) still reaches what it did.
+    if (!point.keyed)
+        keep_later_keys(file, clip, key.phase, key.channel.node, key.channel.channel,
+                        (stored ? wanted - *stored : wanted - point.value));
+    return ok();
 }
 
 } // namespace

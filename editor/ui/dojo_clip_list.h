@@ -19,6 +19,8 @@ class DojoClipList {
     void open_dialog(const DojoContext& dojo, Dialog kind);
     void create_clip(const DojoContext& dojo, const std::string& name);
 
+    bool folded_ = false; // the list folded to one combo row (more room for the pages in a short window)
+    float rows_ = 0;      // rows the splitter under the list gives it; 0: three tenths of the column
     Dialog dialog_ = kNoDialog;
     bool open_dialog_ = false;
     char name_[64] = {};

@@ -15,12 +15,12 @@ namespace {
 constexpr float kLeftMargin = 46.0f, kBottomMargin = 18.0f, kTopMargin = 8.0f, kRightMargin = 10.0f;
 constexpr float kHandle = 5.5f; // half size of a key's diamond
 constexpr float kPick = 8.0f;   // how near (pixels) a click must be to pick a key or a handle
-constexpr float kListWidth = 176.0f;
 const ImU32 kAxisColours[3] = {IM_COL32(235, 90, 90, 255), IM_COL32(120, 215, 90, 255),
                                IM_COL32(90, 140, 245, 255)};
 const ImU32 kPositionColours[3] = {IM_COL32(255, 170, 160, 255), IM_COL32(190, 245, 160, 255),
                                    IM_COL32(160, 200, 255, 255)};
 const ImU32 kSelected = IM_COL32(255, 225, 90, 255), kHandleColour = IM_COL32(240, 240, 250, 255);
+const ImU32 kPlayhead = IM_COL32(255, 150, 40, 210); // orange: apart from the x axis' red
 
 ImU32 channel_colour(CurveChannel c) {
     return is_position(c) ? kPositionColours[component(c)] : kAxisColours[component(c)];
@@ -32,6 +32,11 @@ double nice_step(double span, int lines) {
     const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
     const double n = raw / magnitude;
     return (n < 1.5 ? 1.0 : n < 3.0 ? 2.0 : n < 7.0 ? 5.0 : 10.0) * magnitude;
+}
+
+// A segment's value span for handles: its rise, or a quarter of the view on a flat segment.
+double span_of(double v0, double v1, const GraphRange& range) {
+    return std::abs(v1 - v0) > 1e-9 ? v1 - v0 : (range.v1 - range.v0) * 0.25;
 }
 
 ImVec2 im(Vec2 v) {
@@ -102,8 +107,13 @@ const GraphPoint* DojoCurveView::point(const GraphKey& key) const {
 void DojoCurveView::channel_list(const DojoContext& dojo, float height) {
     const anim::AnimationFile& file = dojo.edits.file();
     const anim::ClipDef* def = dojo.shown_def();
-    ImGui::BeginChild("channels", ImVec2(kListWidth, height), true);
-    const float button = ImGui::GetTextLineHeight() + 2.0f;
+    // Sized by the font: names up to 8 characters wide (longer ones clipped, the tooltip names them), then
+    // six axis toggles.
+    const float button = ImGui::GetTextLineHeight() + 2.0f, name = ImGui::CalcTextSize("forearm_").x;
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float width = name + 6 * (button + 1.0f) + 4.0f + style.ItemSpacing.x + style.WindowPadding.x * 2 +
+                        style.ScrollbarSize;
+    ImGui::BeginChild("channels", ImVec2(width, height), true);
     for (std::size_t i = 0; i < file.rig.size(); ++i) {
         const std::string& node = file.rig[i].name;
         bool keyed = false;
@@ -120,7 +130,7 @@ void DojoCurveView::channel_list(const DojoContext& dojo, float height) {
             fit_pending_ = true;
         };
         const bool any = shown(CurveChannel::RotX) || shown(CurveChannel::RotY) || shown(CurveChannel::RotZ);
-        if (ImGui::Selectable(node.c_str(), any, 0, ImVec2(kListWidth - 6 * button - 24.0f, 0)))
+        if (ImGui::Selectable(node.c_str(), any, 0, ImVec2(name, 0)))
             for (int c = 0; c < 3; ++c) toggle(static_cast<CurveChannel>(c), !any);
         if (!keyed) ImGui::PopStyleColor();
         if (ImGui::IsItemHovered())
@@ -197,9 +207,30 @@ void DojoCurveView::plot(const DojoContext& dojo, Vec2 origin, Vec2 size) {
                       "No channels shown: pick a node's axes in the list");
     const bool rotation = std::any_of(channels_.begin(), channels_.end(),
                                       [](const NodeChannel& c) { return !is_position(c.channel); });
+    if (pending_key_ && !channels_.empty()) { // on the channel that changes most into that key
+        std::size_t best = 0;
+        double most = -1;
+        for (std::size_t c = 0; c < curves_.size(); ++c) {
+            const auto& keys = curves_[c].keys;
+            if (*pending_key_ >= keys.size()) continue;
+            const double from = *pending_key_ == 0 ? curves_[c].start_value : keys[*pending_key_ - 1].value;
+            if (std::abs(keys[*pending_key_].value - from) > most)
+                most = std::abs(keys[*pending_key_].value - from), best = c;
+        }
+        selection_.click({channels_[best], *pending_key_}, false);
+        selection_.keep_shown(points_);
+        pending_key_.reset();
+    }
     if (fit_pending_ && drag_.gesture == Gesture::None) {
         range_ = fit_graph(curves_, rotation ? 20.0 : 0.2);
         fit_pending_ = false;
+        double t0 = 0, v0 = 0, t1 = 0, v1 = 0; // and the tangent handles shown
+        anim::Ease ease;
+        if (handle_segment(t0, v0, t1, v1, ease))
+            for (const EaseHandle& h : ease_handles(ease)) {
+                const double v = v0 + h.y * span_of(v0, v1, range_), pad = (range_.v1 - range_.v0) * 0.06;
+                range_.v0 = std::min(range_.v0, v - pad), range_.v1 = std::max(range_.v1, v + pad);
+            }
     }
     plot.range = range_;
     mouse(dojo, plot);
@@ -263,7 +294,7 @@ void DojoCurveView::plot(const DojoContext& dojo, Vec2 origin, Vec2 size) {
         draw->AddRect(im(drag_.start), m, IM_COL32(255, 225, 90, 200));
     }
     const float playhead = plot.x(dojo.clip_time());
-    draw->AddLine(ImVec2(playhead, plot.lo.y), ImVec2(playhead, plot.hi.y), IM_COL32(255, 80, 80, 200), 1.5f);
+    draw->AddLine(ImVec2(playhead, plot.lo.y), ImVec2(playhead, plot.hi.y), kPlayhead, 1.5f);
     draw->PopClipRect();
 }
 
@@ -282,13 +313,6 @@ bool DojoCurveView::handle_segment(double& t0, double& v0, double& t1, double& v
     }
     return false;
 }
-
-namespace {
-// A segment's value span for handles: its rise, or a quarter of the view on a flat segment.
-double span_of(double v0, double v1, const GraphRange& range) {
-    return std::abs(v1 - v0) > 1e-9 ? v1 - v0 : (range.v1 - range.v0) * 0.25;
-}
-} // namespace
 
 void DojoCurveView::draw_handles(ImDrawList* draw, const Plot& plot) {
     double t0 = 0, v0 = 0, t1 = 0, v1 = 0;
@@ -360,6 +384,9 @@ void DojoCurveView::mouse(const DojoContext& dojo, const Plot& plot) {
         if (drag_.gesture == Gesture::Box)
             selection_.box(points_, plot.time_at(drag_.start.x), plot.value_at(drag_.start.y),
                            plot.time_at(m.x), plot.value_at(m.y), io.KeyShift);
+        // A click (no drag) on one of several selected keys selects it alone.
+        if (drag_.gesture == Gesture::Keys && drag_.lock == DragLock::Undecided && !io.KeyShift)
+            selection_.click(drag_.pressed, false);
         drag_.gesture = Gesture::None;
         drag_.origin = {};
     }
@@ -396,6 +423,7 @@ void DojoCurveView::press(const DojoContext& dojo, const Plot& plot, Vec2 m) {
     if (shift || !selection_.contains(nearest->key)) selection_.click(nearest->key, shift);
     dojo.selection.phase = static_cast<int>(nearest->key.phase);
     drag_.gesture = selection_.contains(nearest->key) ? Gesture::Keys : Gesture::None;
+    drag_.pressed = nearest->key;
     drag_.origin = dojo.edits.file();
 }
 

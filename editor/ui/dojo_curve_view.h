@@ -14,6 +14,7 @@
 #include "ui/dojo_context.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,9 @@ class DojoCurveView {
     // Shows only `channel` of rig node `node` (--dojo-view node=...,channel=...).
     void show(int node, CurveChannel channel);
     void show_channel(CurveChannel channel) { solo_channel_ = channel; }
+    // Selects key `phase` once the clip's channels are shown, on the channel that changes most into it
+    // (--dojo-view key=N).
+    void select_key(std::size_t phase) { pending_key_ = phase; }
     // Status: the shown keys' handles as last drawn (channel by channel, key by key).
     const std::vector<Vec2>& handles() const { return handles_; }
     const GraphSelection& selection() const { return selection_; }
@@ -76,6 +80,7 @@ class DojoCurveView {
     GraphRange range_;
     bool fit_pending_ = true;
     GraphSelection selection_;
+    std::optional<std::size_t> pending_key_;
 
     enum class Gesture : std::uint8_t { None, Keys, Box, Handle, Pan };
     struct Drag {
@@ -83,6 +88,7 @@ class DojoCurveView {
         Vec2 start{0};
         DragLock lock = DragLock::Undecided;
         std::size_t handle = 0;
+        GraphKey pressed;           // the key the drag began on
         anim::AnimationFile origin; // the file when the drag began: each frame edits from it
         GraphRange range;           // the view when the drag began
     } drag_;

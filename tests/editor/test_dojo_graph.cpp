@@ -134,7 +134,7 @@ TEST_CASE("graph: scaling around a pivot, with times snapped to whole frames in 
     // A negative time scale would reverse the keys: refused.
     how.time_scale = -1;
     CHECK_FALSE(transform_graph_keys(file, 0, keys, how, frames));
-    // The clip's frame rate: 14/24 and 36/24 fit 24 fps, not 30; the event at 0.9 s fits neither -> 30.
+    // The clip's frame rate: 14/24 and 36/24 s fit 24 fps, not 30; nod's 0.4, 1 and 0.9 s fit 30.
     file.clips[0].events.clear();
     CHECK(clip_frame_rate(file.clips[0]) == 24.0);
     CHECK(clip_frame_rate(nod_file().clips[0]) == 30.0);
