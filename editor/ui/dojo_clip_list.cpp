@@ -26,11 +26,16 @@ void draw_lock(float size) {
 }
 } // namespace
 
+bool DojoClipList::folded() const {
+    return folded_.value_or(ImGui::GetContentRegionAvail().y < ImGui::GetTextLineHeightWithSpacing() * 18.0f);
+}
+
 void DojoClipList::toolbar(const DojoContext& dojo) {
-    if (ImGui::ArrowButton("##fold", folded_ ? ImGuiDir_Right : ImGuiDir_Down)) folded_ = !folded_;
+    const bool folded = folded_now_ = this->folded();
+    if (ImGui::ArrowButton("##fold", folded ? ImGuiDir_Right : ImGuiDir_Down)) folded_ = !folded;
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(folded_ ? "Show the clip list"
-                                  : "Fold the clip list to one row (room for the pages)");
+        ImGui::SetTooltip(folded ? "Show the clip list"
+                                 : "Fold the clip list to one row (room for the pages)");
     ImGui::SameLine();
     ImGui::AlignTextToFramePadding();
     ImGui::TextDisabled("Clips in %s", dojo.clip_file.filename().string().c_str());
@@ -70,7 +75,7 @@ void DojoClipList::toolbar(const DojoContext& dojo) {
 
 void DojoClipList::list(const DojoContext& dojo) {
     const anim::AnimationFile& file = dojo.edits.file();
-    if (folded_) { // one row: the shown clip, picked from a combo
+    if (folded_now_) { // one row: the shown clip, picked from a combo
         const anim::ClipDef* shown = dojo.shown_def();
         ImGui::SetNextItemWidth(220.0f);
         if (ImGui::BeginCombo("clip", shown ? shown->name.c_str() : "")) {

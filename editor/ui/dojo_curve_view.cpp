@@ -180,7 +180,7 @@ void DojoCurveView::draw(const DojoContext& dojo) {
     }
     toolbar(dojo);
     const float height = std::max(90.0f, ImGui::GetContentRegionAvail().y);
-    if (show_list_) {
+    if (show_list_.value_or(ImGui::GetContentRegionAvail().x >= 560.0f)) {
         channel_list(dojo, height);
         ImGui::SameLine();
     }

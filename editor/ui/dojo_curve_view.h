@@ -66,8 +66,8 @@ class DojoCurveView {
     std::vector<NodeChannel> channels_; // shown, in rig order
     int solo_node_ = -1;                // show(): only this node's solo_channel_
     CurveChannel solo_channel_ = CurveChannel::RotX;
-    int chosen_for_ = -1; // the clip the shown channels were picked for
-    bool show_list_ = true;
+    int chosen_for_ = -1;           // the clip the shown channels were picked for
+    std::optional<bool> show_list_; // the animator's choice, else shown when the page is 560 px wide or more
     std::vector<ClipCurve> curves_; // channels_' curves, cached until the stamp changes
     std::vector<GraphPoint> points_;
     std::string error_;

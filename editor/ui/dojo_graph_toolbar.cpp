@@ -49,9 +49,9 @@ void DojoCurveView::edit(const DojoContext& dojo, const std::string& name, const
 }
 
 void DojoCurveView::toolbar(const DojoContext& dojo) {
-    if (ImGui::SmallButton(show_list_ ? "<<" : ">>")) show_list_ = !show_list_;
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(show_list_ ? "Hide the channel list" : "Show the channel list");
+    const bool list = show_list_.value_or(ImGui::GetContentRegionAvail().x >= 560.0f);
+    if (ImGui::SmallButton(list ? "<<" : ">>")) show_list_ = !list;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip(list ? "Hide the channel list" : "Show the channel list");
     ImGui::SameLine();
     if (ImGui::SmallButton("Fit")) fit_pending_ = true;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show every key of the shown channels (F over the graph)");
