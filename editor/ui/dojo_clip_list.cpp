@@ -89,7 +89,7 @@ void DojoClipList::list(const DojoContext& dojo) {
         return;
     }
     // Three tenths of the column (at most every clip); it scrolls beyond, so that the pages
-    // under it keep room for their own rows (at 1280x720: 6 clips and 8 key rows).
+    // under it keep room for their own rows.
     const float line = ImGui::GetTextLineHeightWithSpacing();
     const float fits = (ImGui::GetContentRegionAvail().y * 0.3f - 8.0f) / line - 1.0f;
     const float clips = static_cast<float>(file.clips.size());
