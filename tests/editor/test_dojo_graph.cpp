@@ -16,22 +16,23 @@ using ks::dojo_test::nod_file;
 using ks::dojo_test::text;
 
 namespace {
-const NodeChannel kChestZ{"chest", CurveChannel::RotZ}, kChestX{"chest", CurveChannel::RotX},
-    kHeadY{"head", CurveChannel::RotY};
+const NodeChannel kGraphChestZ{"chest", CurveChannel::RotZ}, kGraphChestX{"chest", CurveChannel::RotX},
+    kGraphHeadY{"head", CurveChannel::RotY};
 
-std::vector<GraphPoint> points(const anim::AnimationFile& file, const std::vector<NodeChannel>& channels) {
+std::vector<GraphPoint> graph_points_of(const anim::AnimationFile& file,
+                                        const std::vector<NodeChannel>& channels) {
     auto curves = clip_curves(file, 0, channels, 11);
     REQUIRE_MESSAGE(curves.ok(), (curves.ok() ? std::string() : curves.error().str()));
     return graph_points(channels, *curves);
 }
 
-double value_at(const anim::AnimationFile& file, const NodeChannel& c, double t) {
+double graph_value_at(const anim::AnimationFile& file, const NodeChannel& c, double t) {
     auto v = curve_value(file, 0, c.node, c.channel, t);
     REQUIRE(v.ok());
     return *v;
 }
 
-double key_time(const anim::AnimationFile& file, std::size_t phase) {
+double graph_key_time(const anim::AnimationFile& file, std::size_t phase) {
     double t = 0;
     for (std::size_t p = 0; p <= phase; ++p) t += file.clips[0].phases[p].duration;
     return t;
@@ -40,7 +41,7 @@ double key_time(const anim::AnimationFile& file, std::size_t phase) {
 
 TEST_CASE("graph: several channels' keys at once; click, Shift+click, box and select all") {
     const auto file = nod_file();
-    const auto pts = points(file, {kChestZ, kChestX, kHeadY});
+    const auto pts = graph_points_of(file, {kGraphChestZ, kGraphChestX, kGraphHeadY});
     REQUIRE(pts.size() == 6); // two keys on each channel
     CHECK(pts[0].value == doctest::Approx(30.0));
     CHECK(pts[0].keyed);
@@ -56,14 +57,14 @@ TEST_CASE("graph: several channels' keys at once; click, Shift+click, box and se
     // A box over the late keys between 5 and 95 degrees: chest z at 1 s (10) and head y at 1 s (90).
     sel.box(pts, 1.1, 95.0, 0.7, 5.0, false);
     CHECK(sel.keys().size() == 2);
-    CHECK(sel.contains({kChestZ, 1}));
-    CHECK(sel.contains({kHeadY, 1}));
+    CHECK(sel.contains({kGraphChestZ, 1}));
+    CHECK(sel.contains({kGraphHeadY, 1}));
     CHECK(sel.phases() == std::vector<std::size_t>{1});
     sel.box(pts, 0.3, 25.0, 0.5, 35.0, true); // Shift+box adds chest z's first key
     CHECK(sel.keys().size() == 3);
     sel.all(pts);
     CHECK(sel.keys().size() == 6);
-    sel.keep_shown(points(file, {kChestZ})); // other channels hidden
+    sel.keep_shown(graph_points_of(file, {kGraphChestZ})); // other channels hidden
     CHECK(sel.keys().size() == 2);
 }
 
@@ -75,7 +76,7 @@ TEST_CASE("graph: a drag mostly vertical moves values only, mostly horizontal ti
     CHECK(decide_drag_lock(30, 8, true) == DragLock::Both);
     // A value-only move leaves every key time exactly where it was (the issue: 0.75 became 0.748).
     auto file = nod_file();
-    const std::vector<GraphKey> keys{{kChestZ, 0}};
+    const std::vector<GraphKey> keys{{kGraphChestZ, 0}};
     GraphTransform up;
     up.value_offset = 12.5;
     REQUIRE(transform_graph_keys(file, 0, keys, up, {}));
@@ -87,17 +88,17 @@ TEST_CASE("graph: a drag mostly vertical moves values only, mostly horizontal ti
 
 TEST_CASE("graph: moving selected keys moves their times and values together; passing a key is refused") {
     auto file = nod_file();
-    const std::vector<GraphKey> keys{{kChestZ, 0}, {kChestX, 0}};
+    const std::vector<GraphKey> keys{{kGraphChestZ, 0}, {kGraphChestX, 0}};
     GraphTransform how;
     how.time_offset = 0.1;
     how.value_offset = -5.0;
     REQUIRE(transform_graph_keys(file, 0, keys, how, {}));
-    CHECK(key_time(file, 0) == doctest::Approx(0.5));
-    CHECK(key_time(file, 1) == doctest::Approx(1.0)); // the next key stays at 1 s
+    CHECK(graph_key_time(file, 0) == doctest::Approx(0.5));
+    CHECK(graph_key_time(file, 1) == doctest::Approx(1.0)); // the next key stays at 1 s
     CHECK(file.clips[0].phases[1].duration == 0.5);
     CHECK(file.clips[0].phases[0].targets[0].rot->z == 25.0);
     CHECK(file.clips[0].phases[0].targets[0].rot->x == -5.0);
-    CHECK(value_at(file, kHeadY, 1.0) == doctest::Approx(90.0)); // head's key untouched
+    CHECK(graph_value_at(file, kGraphHeadY, 1.0) == doctest::Approx(90.0)); // head's key untouched
     // Past key 2 (at 1 s) without it: refused, unchanged.
     const std::string before = text(file);
     how.time_offset = 0.6;
@@ -109,15 +110,16 @@ TEST_CASE("graph: moving selected keys moves their times and values together; pa
     // A hollow key (head is not keyed at key 1) moved up gets a key there; only head's y changes.
     GraphTransform up;
     up.value_offset = 20;
-    REQUIRE(transform_graph_keys(file, 0, std::vector<GraphKey>{{kHeadY, 0}}, up, {}));
-    CHECK(value_at(file, kHeadY, 0.5) == doctest::Approx(20.0));
-    CHECK(value_at(file, kChestZ, 0.5) == doctest::Approx(25.0));
-    CHECK(value_at(file, kHeadY, 1.0) == doctest::Approx(90.0)); // the later relative key still reaches 90
+    REQUIRE(transform_graph_keys(file, 0, std::vector<GraphKey>{{kGraphHeadY, 0}}, up, {}));
+    CHECK(graph_value_at(file, kGraphHeadY, 0.5) == doctest::Approx(20.0));
+    CHECK(graph_value_at(file, kGraphChestZ, 0.5) == doctest::Approx(25.0));
+    CHECK(graph_value_at(file, kGraphHeadY, 1.0) ==
+          doctest::Approx(90.0)); // the later relative key still reaches 90
 }
 
 TEST_CASE("graph: scaling around a pivot, with times snapped to whole frames in frames mode") {
     auto file = nod_file();
-    const std::vector<GraphKey> keys{{kChestZ, 0}, {kChestZ, 1}};
+    const std::vector<GraphKey> keys{{kGraphChestZ, 0}, {kGraphChestZ, 1}};
     GraphTransform how;
     how.pivot_time = 0;
     how.pivot_value = 10;
@@ -126,9 +128,9 @@ TEST_CASE("graph: scaling around a pivot, with times snapped to whole frames in 
     const TimeUnits frames{true, 24.0};
     REQUIRE(transform_graph_keys(file, 0, keys, how, frames));
     // 0.4 * 1.5 = 0.6 s = 14.4 frames -> 14 frames; 1.5 s = 36 frames.
-    CHECK(key_time(file, 0) == 14.0 / 24.0);
-    CHECK(key_time(file, 1) == doctest::Approx(36.0 / 24.0));
-    CHECK(std::abs(key_time(file, 1) * 24.0 - 36.0) < 1e-9);
+    CHECK(graph_key_time(file, 0) == 14.0 / 24.0);
+    CHECK(graph_key_time(file, 1) == doctest::Approx(36.0 / 24.0));
+    CHECK(std::abs(graph_key_time(file, 1) * 24.0 - 36.0) < 1e-9);
     CHECK(file.clips[0].phases[0].targets[0].rot->z == 50.0); // 10 + (30 - 10) * 2
     CHECK(file.clips[0].phases[1].targets[0].rot->z == 10.0); // at the pivot
     // A negative time scale would reverse the keys: refused.
@@ -149,16 +151,17 @@ TEST_CASE("graph: numeric entry sets a key's time and value exactly; several key
     auto file = nod_file();
     DojoHistory history;
     REQUIRE(apply_dojo_edit(file, history, "set key", [&] {
-        return set_graph_key(file, 0, {kChestZ, 0}, 0.25, -12.5, {});
+        return set_graph_key(file, 0, {kGraphChestZ, 0}, 0.25, -12.5, {});
     }));
-    CHECK(key_time(file, 0) == 0.25);
+    CHECK(graph_key_time(file, 0) == 0.25);
     CHECK(file.clips[0].phases[1].duration == 0.75); // key 2 stays at 1 s
     CHECK(file.clips[0].phases[0].targets[0].rot->z == -12.5);
-    CHECK(value_at(file, kChestZ, 0.25) == doctest::Approx(-12.5));
+    CHECK(graph_value_at(file, kGraphChestZ, 0.25) == doctest::Approx(-12.5));
     REQUIRE(apply_dojo_edit(file, history, "offset keys", [&] {
         GraphTransform how;
         how.value_offset = 2;
-        return transform_graph_keys(file, 0, std::vector<GraphKey>{{kChestZ, 0}, {kChestZ, 1}}, how, {});
+        return transform_graph_keys(file, 0, std::vector<GraphKey>{{kGraphChestZ, 0}, {kGraphChestZ, 1}}, how,
+                                    {});
     }));
     CHECK(file.clips[0].phases[0].targets[0].rot->z == -10.5);
     CHECK(file.clips[0].phases[1].targets[0].rot->z == 12.0);
@@ -166,8 +169,8 @@ TEST_CASE("graph: numeric entry sets a key's time and value exactly; several key
     REQUIRE(history.undo(file));
     REQUIRE(history.undo(file));
     CHECK(text(file) == text(nod_file()));
-    CHECK_FALSE(set_graph_key(file, 0, {kChestZ, 5}, 0.1, std::nullopt, {}));
-    CHECK_FALSE(set_graph_key(file, 0, {kChestZ, 0}, std::nullopt, NAN, {}));
+    CHECK_FALSE(set_graph_key(file, 0, {kGraphChestZ, 5}, 0.1, std::nullopt, {}));
+    CHECK_FALSE(set_graph_key(file, 0, {kGraphChestZ, 0}, std::nullopt, NAN, {}));
     CHECK(text(file) == text(nod_file()));
 }
 
@@ -183,15 +186,15 @@ TEST_CASE("graph: tangent handles shape the format's custom eases, and the curve
     REQUIRE(handles.size() == 2);
     CHECK(handles[0].u == doctest::Approx(0.42));
     CHECK(handles[1].y == doctest::Approx(1.0));
-    const double eased = value_at(file, kChestZ, 0.1);
+    const double eased = graph_value_at(file, kGraphChestZ, 0.1);
     CHECK(eased < 30.0 * 0.25); // ease-in-out starts slower than linear
     const auto dragged = drag_ease_handle(*file.clips[0].phases[0].targets[0].ease, 0, 1.4, 0.9);
     REQUIRE(dragged);
     CHECK(dragged->params[0] == 1.0f); // x kept inside the segment
     CHECK(dragged->params[1] == 0.9f);
     REQUIRE(set_segment_ease(file, 0, 0, "chest", *dragged));
-    CHECK(value_at(file, kChestZ, 0.2) == doctest::Approx(30.0 * (*dragged)(0.5)).epsilon(1e-4));
-    CHECK(value_at(file, kChestZ, 0.4) == doctest::Approx(30.0)); // the key itself stays
+    CHECK(graph_value_at(file, kGraphChestZ, 0.2) == doctest::Approx(30.0 * (*dragged)(0.5)).epsilon(1e-4));
+    CHECK(graph_value_at(file, kGraphChestZ, 0.4) == doctest::Approx(30.0)); // the key itself stays
     // A power curve's handle: dragging it to progress 0.125 at u = 0.5 makes the exponent 3.
     const auto power = drag_ease_handle(anim::Ease::power(2.0f, anim::EaseMode::In), 0, 0.5, 0.125);
     REQUIRE(power);
@@ -203,7 +206,7 @@ TEST_CASE("graph: tangent handles shape the format's custom eases, and the curve
     CHECK_FALSE(drag_ease_handle(anim::Ease::linear(), 0, 0.5, 0.5));
     // The head had no key at key 1: its easing keys it where it is (no pose changes), one node only.
     REQUIRE(set_segment_ease(file, 0, 0, "head", anim::Ease::power(2.0f, anim::EaseMode::Out)));
-    CHECK(value_at(file, kHeadY, 1.0) == doctest::Approx(90.0));
+    CHECK(graph_value_at(file, kGraphHeadY, 1.0) == doctest::Approx(90.0));
     // An invalid curve is refused with validate_ease's reason.
     auto bad = set_segment_ease(file, 0, 0, "chest", anim::Ease::bezier(1.5f, 0, 0.5f, 1));
     REQUIRE_FALSE(bad);
@@ -212,14 +215,14 @@ TEST_CASE("graph: tangent handles shape the format's custom eases, and the curve
 
 TEST_CASE("graph: fit all and frame selected") {
     const auto file = nod_file();
-    auto curves = clip_curves(file, 0, std::vector<NodeChannel>{kChestZ, kHeadY}, 11);
+    auto curves = clip_curves(file, 0, std::vector<NodeChannel>{kGraphChestZ, kGraphHeadY}, 11);
     REQUIRE(curves);
     const GraphRange all = fit_graph(*curves, 20.0);
     CHECK(all.t0 < 0.0);
     CHECK(all.t1 > 1.0);
     CHECK(all.v0 < 0.0);
     CHECK(all.v1 > 90.0);
-    const auto pts = points(file, {kChestZ});
+    const auto pts = graph_points_of(file, {kGraphChestZ});
     const GraphRange framed = frame_points(pts, all);
     CHECK(framed.v1 < all.v1);
     CHECK(framed.v0 < 10.0);
