@@ -99,18 +99,23 @@ struct CompiledClips {
     }
 };
 
+Result<int> node_index(const anim::Rig& rig, const std::string& node) {
+    const int index = rig.find(node);
+    if (index >= 0) return index;
+    std::string names;
+    for (const anim::RigNode& n : rig.nodes()) names += (names.empty() ? "" : ", ") + n.name;
+    return Error("node '" + node + "' is not in the rig", {}, "nodes: " + names);
+}
+
 Result<CompiledClips> compile_for(const anim::AnimationFile& file, std::size_t clip,
                                   const std::string& node) {
     if (auto found = clip_at(file, clip); !found) return found.error();
     auto rig = anim::build_rig(file);
     if (!rig) return rig.error();
     CompiledClips out;
-    out.node = rig->find(node);
-    if (out.node < 0) {
-        std::string names;
-        for (const anim::RigNode& n : rig->nodes()) names += (names.empty() ? "" : ", ") + n.name;
-        return Error("node '" + node + "' is not in the rig", {}, "nodes: " + names);
-    }
+    auto index = node_index(*rig, node);
+    if (!index) return index.error();
+    out.node = *index;
     auto clips = anim::compile(file, *rig);
     if (!clips) return clips.error();
     out.clips = std::move(clips).value();
@@ -121,8 +126,8 @@ Result<CompiledClips> compile_for(const anim::AnimationFile& file, std::size_t c
     return out;
 }
 
-// A relative key's offset changed by `delta`: the node's next relative key on the channel takes it back,
-// unless an absolute key or the rest rule comes first, so every later key reaches what it did.
+} // namespace
+
 void keep_later_keys(anim::AnimationFile& file, std::size_t clip, std::size_t phase, const std::string& node,
                      CurveChannel channel, double delta) {
     anim::ClipDef& def = file.clips[clip];
@@ -146,8 +151,6 @@ void keep_later_keys(anim::AnimationFile& file, std::size_t clip, std::size_t ph
     }
 }
 
-} // namespace
-
 const char* curve_channel_name(CurveChannel c) {
     return kChannelNames[static_cast<int>(c)];
 }
@@ -158,10 +161,39 @@ std::optional<CurveChannel> curve_channel_from_name(std::string_view name) {
     return std::nullopt;
 }
 
+namespace {
+ClipCurve sampled_curve(const anim::AnimationFile& file, std::size_t clip, const CompiledClips* compiled,
+                        CurveChannel channel, int samples);
+} // namespace
+
 Result<ClipCurve> clip_curve(const anim::AnimationFile& file, std::size_t clip, const std::string& node,
                              CurveChannel channel, int samples) {
     auto compiled = compile_for(file, clip, node);
     if (!compiled) return compiled.error();
+    return sampled_curve(file, clip, &*compiled, channel, samples);
+}
+
+Result<std::vector<ClipCurve>> clip_curves(const anim::AnimationFile& file, std::size_t clip,
+                                           std::span<const NodeChannel> channels, int samples) {
+    std::vector<ClipCurve> curves;
+    if (channels.empty()) {
+        if (auto found = clip_at(file, clip); !found) return found.error();
+        return curves;
+    }
+    auto compiled = compile_for(file, clip, channels.front().node);
+    if (!compiled) return compiled.error();
+    for (const NodeChannel& channel : channels) {
+        auto index = node_index(compiled->rig, channel.node);
+        if (!index) return index.error();
+        compiled->node = *index;
+        curves.push_back(sampled_curve(file, clip, &*compiled, channel.channel, samples));
+    }
+    return curves;
+}
+
+namespace {
+ClipCurve sampled_curve(const anim::AnimationFile& file, std::size_t clip, const CompiledClips* compiled,
+                        CurveChannel channel, int samples) {
     const anim::Clip& c = compiled->clips.clips[clip];
     const anim::RigNode& rig_node = compiled->rig.node(compiled->node);
     const auto n = static_cast<std::size_t>(compiled->node);
@@ -177,6 +209,7 @@ Result<ClipCurve> clip_curve(const anim::AnimationFile& file, std::size_t clip, 
     fill_keys(file, file.clips[clip], c, rig_node, compiled->node, channel, start, curve);
     return curve;
 }
+} // namespace
 
 Result<double> curve_value(const anim::AnimationFile& file, std::size_t clip, const std::string& node,
                            CurveChannel channel, double seconds) {

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -55,6 +56,17 @@ struct ClipCurve {
 Result<ClipCurve> clip_curve(const anim::AnimationFile& file, std::size_t clip, const std::string& node,
                              CurveChannel channel, int samples = 64);
 
+// A channel of one node, for several curves at once.
+struct NodeChannel {
+    std::string node;
+    CurveChannel channel = CurveChannel::RotX;
+    bool operator==(const NodeChannel&) const = default;
+    auto operator<=>(const NodeChannel&) const = default;
+};
+// clip_curve for each of `channels` (the file compiled once), in their order.
+Result<std::vector<ClipCurve>> clip_curves(const anim::AnimationFile& file, std::size_t clip,
+                                           std::span<const NodeChannel> channels, int samples = 64);
+
 // The channel's value (as ClipCurve shows it) `seconds` after the clip starts from the rest pose, past its
 // end too (a loop repeats, a ping-pong clip comes back, a once clip holds): a readout, and what scripts
 // check.
@@ -72,5 +84,11 @@ Result<void> move_key_time(anim::AnimationFile& file, std::size_t clip, std::siz
 // target for `node` (add one first: add_node_key) or the value is not finite / out of range.
 Result<void> set_key_value(anim::AnimationFile& file, std::size_t clip, std::size_t phase,
                            const std::string& node, CurveChannel channel, double value);
+
+// After `node`'s value at key `phase` changed by `delta` on `channel`: the node's next relative key on the
+// channel takes it back, unless an absolute key or the rest rule comes first, so every later key reaches
+// what it did (set_key_value does this for a relative key; the graph for a key it adds).
+void keep_later_keys(anim::AnimationFile& file, std::size_t clip, std::size_t phase, const std::string& node,
+                     CurveChannel channel, double delta);
 
 } // namespace ks::editor

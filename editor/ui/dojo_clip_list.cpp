@@ -26,7 +26,17 @@ void draw_lock(float size) {
 }
 } // namespace
 
+bool DojoClipList::folded() const {
+    return folded_.value_or(ImGui::GetContentRegionAvail().y < ImGui::GetTextLineHeightWithSpacing() * 18.0f);
+}
+
 void DojoClipList::toolbar(const DojoContext& dojo) {
+    const bool folded = folded_now_ = this->folded();
+    if (ImGui::ArrowButton("##fold", folded ? ImGuiDir_Right : ImGuiDir_Down)) folded_ = !folded;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(folded ? "Show the clip list"
+                                 : "Fold the clip list to one row (room for the pages)");
+    ImGui::SameLine();
     ImGui::AlignTextToFramePadding();
     ImGui::TextDisabled("Clips in %s", dojo.clip_file.filename().string().c_str());
     const auto clip = dojo.clip_index();
@@ -65,10 +75,25 @@ void DojoClipList::toolbar(const DojoContext& dojo) {
 
 void DojoClipList::list(const DojoContext& dojo) {
     const anim::AnimationFile& file = dojo.edits.file();
-    // In a short window the list gives way (it scrolls) so that the pages under it stay on screen.
+    if (folded_now_) { // one row: the shown clip, picked from a combo
+        const anim::ClipDef* shown = dojo.shown_def();
+        ImGui::SetNextItemWidth(220.0f);
+        if (ImGui::BeginCombo("clip", shown ? shown->name.c_str() : "")) {
+            for (int i = 0; i < static_cast<int>(file.clips.size()); ++i)
+                if (ImGui::Selectable(file.clips[static_cast<size_t>(i)].name.c_str(),
+                                      i == dojo.playback.clip()) &&
+                    i < static_cast<int>(dojo.playback.clips().clips.size()))
+                    dojo.show_clip(i);
+            ImGui::EndCombo();
+        }
+        return;
+    }
+    // Three tenths of the column (at most every clip); it scrolls beyond, so that the pages
+    // under it keep room for their own rows.
     const float line = ImGui::GetTextLineHeightWithSpacing();
-    const float fits = (ImGui::GetContentRegionAvail().y * 0.35f - 8.0f) / line - 1.0f;
-    const float rows = std::clamp(fits, 1.0f, std::min<float>(4.5f, static_cast<float>(file.clips.size())));
+    const float fits = (ImGui::GetContentRegionAvail().y * 0.3f - 8.0f) / line - 1.0f;
+    const float clips = static_cast<float>(file.clips.size());
+    const float rows = std::clamp(rows_ > 0 ? rows_ : fits, 1.0f, std::max(1.0f, clips));
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
                                   ImGuiTableFlags_BordersOuter | ImGuiTableFlags_SizingStretchProp;
     const float height = line * (rows + 1.0f) + 8.0f;
@@ -96,7 +121,8 @@ void DojoClipList::list(const DojoContext& dojo) {
                 if (ImGui::IsItemHovered()) ImGui::SetTooltip("Required: %s", protection.c_str());
             }
             ImGui::TableNextColumn();
-            ImGui::Text("%.2f s", def.duration());
+            const TimeUnits units{dojo.selection.frames, clip_frame_rate(def)};
+            ImGui::TextUnformatted(units.text(def.duration()).c_str());
             ImGui::TableNextColumn();
             if (def.loop == anim::LoopMode::Next)
                 ImGui::Text("next: %s", def.next.c_str());
@@ -113,6 +139,17 @@ void DojoClipList::list(const DojoContext& dojo) {
     }
     if (const std::string& message = dojo.edits.message(); !message.empty())
         ImGui::TextColored(kErrorColour, "%s", message.c_str());
+    // The splitter under the list: dragged, it gives the list more or fewer rows (the pages the rest).
+    ImGui::InvisibleButton("##list_split", ImVec2(std::max(1.0f, ImGui::GetContentRegionAvail().x), 6.0f));
+    if (ImGui::IsItemHovered() || ImGui::IsItemActive()) {
+        ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeNS);
+        const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+        ImGui::GetWindowDrawList()->AddLine(ImVec2(a.x, (a.y + b.y) * 0.5f), ImVec2(b.x, (a.y + b.y) * 0.5f),
+                                            ImGui::GetColorU32(ImGuiCol_SeparatorHovered), 2.0f);
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Drag: more or fewer clip rows");
+    if (ImGui::IsItemActive())
+        rows_ = std::clamp(rows + ImGui::GetIO().MouseDelta.y / line, 1.0f, std::max(1.0f, clips));
 }
 
 // once / loop / ping-pong / next (with the clip played after) for the shown clip.

@@ -5,6 +5,8 @@
 // the model's message under the list.
 #include "ui/dojo_context.h"
 
+#include <optional>
+
 namespace ks::editor::ui {
 
 class DojoClipList {
@@ -19,6 +21,12 @@ class DojoClipList {
     void open_dialog(const DojoContext& dojo, Dialog kind);
     void create_clip(const DojoContext& dojo, const std::string& name);
 
+    // The list folded to one combo row (room for the pages): the animator's choice, else folded while the
+    // column is under 18 lines high (960x540 and smaller); the toolbar decides for the frame.
+    std::optional<bool> folded_;
+    bool folded_now_ = false;
+    bool folded() const;
+    float rows_ = 0; // rows the splitter under the list gives it; 0: three tenths of the column
     Dialog dialog_ = kNoDialog;
     bool open_dialog_ = false;
     char name_[64] = {};

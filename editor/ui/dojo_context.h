@@ -6,6 +6,7 @@
 // DojoPanel owns the shared state and arranges the parts.
 #include "core/math.h"
 #include "model/dojo_edits.h"
+#include "model/dojo_frames.h"
 #include "model/dojo_playback.h"
 #include "ui/sound_widgets.h"
 
@@ -52,6 +53,7 @@ struct DojoSelection {
     DojoPage page = DojoPage::Keys;
     std::string node; // the node posed in the preview and highlighted in the key table (empty: none)
     bool page_requested = false; // select `page`'s tab on the next frame
+    bool frames = false;         // times shown (and dragged keys snapped) in frames, not seconds
 
     void request_page(DojoPage wanted) { page = wanted, page_requested = true; }
 };
@@ -70,6 +72,11 @@ struct DojoContext {
     std::size_t clip_index() const { return static_cast<std::size_t>(playback.clip()); }
     // The playhead within the shown clip's pass (0 in the transition test).
     double clip_time() const;
+    // Seconds, or frames at the shown clip's frame rate (the graph editor's toggle).
+    TimeUnits time_units() const {
+        const anim::ClipDef* def = shown_def();
+        return {selection.frames, def ? clip_frame_rate(*def) : kDefaultFrameRate};
+    }
     // Plays clip `index` from the start with its first key and no event selected.
     void show_clip(int index) const;
     // The last ImGui item's centre as `spot` (not while its window appears: a popup is only measured in its

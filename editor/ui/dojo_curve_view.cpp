@@ -1,6 +1,8 @@
-// The dojo's curve view (dojo_curve_view.h).
+// The dojo's graph editor: channels, plot and mouse (dojo_curve_view.h); the toolbar is in
+// dojo_graph_toolbar.cpp.
 #include "ui/dojo_curve_view.h"
 
+#include <GLFW/glfw3.h>
 #include <imgui.h>
 
 #include <algorithm>
@@ -10,283 +12,469 @@
 namespace ks::editor::ui {
 
 namespace {
-constexpr float kLeftMargin = 52.0f, kBottomMargin = 20.0f, kTopMargin = 18.0f, kRightMargin = 20.0f;
-constexpr float kHandle = 6.0f; // half size of a key handle
-const ImU32 kSegmentColours[2] = {IM_COL32(110, 190, 255, 255), IM_COL32(120, 235, 210, 255)};
+constexpr float kLeftMargin = 46.0f, kBottomMargin = 18.0f, kTopMargin = 8.0f, kRightMargin = 10.0f;
+constexpr float kHandle = 5.5f; // half size of a key's diamond
+constexpr float kPick = 8.0f;   // how near (pixels) a click must be to pick a key or a handle
 const ImU32 kAxisColours[3] = {IM_COL32(235, 90, 90, 255), IM_COL32(120, 215, 90, 255),
                                IM_COL32(90, 140, 245, 255)};
+const ImU32 kPositionColours[3] = {IM_COL32(255, 170, 160, 255), IM_COL32(190, 245, 160, 255),
+                                   IM_COL32(160, 200, 255, 255)};
+const ImU32 kSelected = IM_COL32(255, 225, 90, 255), kHandleColour = IM_COL32(240, 240, 250, 255);
+const ImU32 kPlayhead = IM_COL32(255, 150, 40, 210); // orange: apart from the x axis' red
+
+ImU32 channel_colour(CurveChannel c) {
+    return is_position(c) ? kPositionColours[component(c)] : kAxisColours[component(c)];
+}
 
 // A grid step of 1, 2 or 5 times a power of ten giving about `lines` lines over `span`.
 double nice_step(double span, int lines) {
-    const double raw = span / lines;
+    const double raw = std::max(span, 1e-9) / lines;
     const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
     const double n = raw / magnitude;
     return (n < 1.5 ? 1.0 : n < 3.0 ? 2.0 : n < 7.0 ? 5.0 : 10.0) * magnitude;
 }
+
+// A segment's value span for handles: its rise, or a quarter of the view on a flat segment.
+double span_of(double v0, double v1, const GraphRange& range) {
+    return std::abs(v1 - v0) > 1e-9 ? v1 - v0 : (range.v1 - range.v0) * 0.25;
+}
+
+ImVec2 im(Vec2 v) {
+    return ImVec2(v.x, v.y);
+}
+
+float distance(Vec2 a, Vec2 b) {
+    return std::hypot(a.x - b.x, a.y - b.y);
+}
+
+void diamond(ImDrawList* draw, ImVec2 c, float r, ImU32 colour, bool filled) {
+    const ImVec2 d[4] = {ImVec2(c.x, c.y - r), ImVec2(c.x + r, c.y), ImVec2(c.x, c.y + r),
+                         ImVec2(c.x - r, c.y)};
+    if (filled)
+        draw->AddQuadFilled(d[0], d[1], d[2], d[3], colour);
+    else
+        draw->AddQuad(d[0], d[1], d[2], d[3], colour, 1.6f);
+}
 } // namespace
 
-// Samples the curve again when the file, clip, node, channel or width changed; false when it cannot be drawn
-// (error_ says why).
+float DojoCurveView::Plot::x(double t) const {
+    return lo.x + static_cast<float>((t - range.t0) / (range.t1 - range.t0)) * (hi.x - lo.x);
+}
+float DojoCurveView::Plot::y(double v) const {
+    return hi.y - static_cast<float>((v - range.v0) / (range.v1 - range.v0)) * (hi.y - lo.y);
+}
+double DojoCurveView::Plot::time_at(float sx) const {
+    return range.t0 + (sx - lo.x) / (hi.x - lo.x) * (range.t1 - range.t0);
+}
+double DojoCurveView::Plot::value_at(float sy) const {
+    return range.v0 + (hi.y - sy) / (hi.y - lo.y) * (range.v1 - range.v0);
+}
+
+void DojoCurveView::show(int node, CurveChannel channel) {
+    solo_node_ = node;
+    solo_channel_ = channel;
+    chosen_for_ = -1;
+}
+
+// Samples the shown channels again when the file, clip, channels or width changed; false when they cannot
+// be drawn (error_ says why).
 bool DojoCurveView::refresh(const DojoContext& dojo, int samples) {
-    const Stamp stamp{dojo.edits.revision(), dojo.playback.clip(), node_, samples, channel_};
+    Stamp stamp{dojo.edits.revision(), dojo.playback.clip(), samples, channels_};
     if (stamp == stamp_) return error_.empty();
-    stamp_ = stamp;
-    const anim::AnimationFile& file = dojo.edits.file();
-    auto curve =
-        clip_curve(file, dojo.clip_index(), file.rig[static_cast<size_t>(node_)].name, channel_, samples);
-    if (!curve) {
-        error_ = curve.error().message + (curve.error().hint.empty() ? "" : " (" + curve.error().hint + ")");
+    stamp_ = std::move(stamp);
+    auto curves = clip_curves(dojo.edits.file(), dojo.clip_index(), channels_, samples);
+    if (!curves) {
+        error_ =
+            curves.error().message + (curves.error().hint.empty() ? "" : " (" + curves.error().hint + ")");
+        curves_.clear();
+        points_.clear();
         return false;
     }
     error_.clear();
-    curve_ = std::move(*curve);
+    curves_ = std::move(*curves);
+    points_ = graph_points(channels_, curves_);
+    selection_.keep_shown(points_);
     return true;
 }
 
-// Node (keyed nodes bright, the others dim) and channel.
-void DojoCurveView::picker(const DojoContext& dojo) {
-    const anim::ClipDef* def = dojo.shown_def();
+const GraphPoint* DojoCurveView::point(const GraphKey& key) const {
+    for (const GraphPoint& p : points_)
+        if (p.key == key) return &p;
+    return nullptr;
+}
+
+// Node rows, each with its rotation and position axes as toggles; a node's name toggles its rotation.
+void DojoCurveView::channel_list(const DojoContext& dojo, float height) {
     const anim::AnimationFile& file = dojo.edits.file();
-    auto keyed = [&](const std::string& node) {
+    const anim::ClipDef* def = dojo.shown_def();
+    // Sized by the font: names up to 8 characters wide (longer ones clipped, the tooltip names them), then
+    // six axis toggles.
+    const float button = ImGui::GetTextLineHeight() + 2.0f, name = ImGui::CalcTextSize("forearm_").x;
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float width = name + 6 * (button + 1.0f) + 4.0f + style.ItemSpacing.x + style.WindowPadding.x * 2 +
+                        style.ScrollbarSize;
+    ImGui::BeginChild("channels", ImVec2(width, height), true);
+    for (std::size_t i = 0; i < file.rig.size(); ++i) {
+        const std::string& node = file.rig[i].name;
+        bool keyed = false;
         for (const auto& phase : def->phases)
-            for (const auto& target : phase.targets)
-                if (target.node == node) return true;
-        return false;
-    };
-    if (node_ < 0 || static_cast<size_t>(node_) >= file.rig.size()) { // the first keyed node
-        node_ = 0;
-        for (size_t i = 0; i < file.rig.size(); ++i)
-            if (keyed(file.rig[i].name)) {
-                node_ = static_cast<int>(i);
-                break;
-            }
-    }
-    ImGui::SetNextItemWidth(150);
-    if (ImGui::BeginCombo("##node", file.rig[static_cast<size_t>(node_)].name.c_str())) {
-        for (size_t i = 0; i < file.rig.size(); ++i) {
-            const bool bright = keyed(file.rig[i].name);
-            if (!bright)
-                ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-            if (ImGui::Selectable(file.rig[i].name.c_str(), static_cast<int>(i) == node_))
-                node_ = static_cast<int>(i);
-            if (!bright) ImGui::PopStyleColor();
-        }
-        ImGui::EndCombo();
-    }
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("The node whose curve is shown (dim: not keyed in this clip)");
-    // Two segmented controls, rotation x y z and position x y z, each axis in its usual colour.
-    constexpr const char* kAxes[] = {"x", "y", "z"};
-    for (int c = 0; c < 6; ++c) {
-        if (c % 3 == 0) {
-            ImGui::SameLine(0, 14.0f);
-            ImGui::AlignTextToFramePadding();
-            ImGui::TextDisabled(c == 0 ? "rotation" : "position");
-        }
-        ImGui::SameLine(0, c % 3 == 0 ? 6.0f : 2.0f);
-        const bool on = static_cast<int>(channel_) == c;
-        ImVec4 colour = ImGui::ColorConvertU32ToFloat4(kAxisColours[c % 3]);
-        colour.w = on ? 0.85f : 0.18f;
-        ImGui::PushStyleColor(ImGuiCol_Button, colour);
-        ImGui::PushStyleColor(ImGuiCol_ButtonHovered,
-                              ImVec4(colour.x, colour.y, colour.z, on ? 0.95f : 0.4f));
-        ImGui::PushID(c);
-        if (ImGui::Button(kAxes[c % 3], ImVec2(ImGui::GetFrameHeight() * 1.1f, 0)))
-            channel_ = static_cast<CurveChannel>(c);
-        ImGui::PopID();
-        ImGui::PopStyleColor(2);
+            for (const auto& target : phase.targets) keyed = keyed || target.node == node;
+        ImGui::PushID(static_cast<int>(i));
+        if (!keyed) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        auto shown = [&](CurveChannel c) {
+            return std::find(channels_.begin(), channels_.end(), NodeChannel{node, c}) != channels_.end();
+        };
+        auto toggle = [&](CurveChannel c, bool on) {
+            std::erase(channels_, NodeChannel{node, c});
+            if (on) channels_.push_back({node, c});
+            fit_pending_ = true;
+        };
+        const bool any = shown(CurveChannel::RotX) || shown(CurveChannel::RotY) || shown(CurveChannel::RotZ);
+        if (ImGui::Selectable(node.c_str(), any, 0, ImVec2(name, 0)))
+            for (int c = 0; c < 3; ++c) toggle(static_cast<CurveChannel>(c), !any);
+        if (!keyed) ImGui::PopStyleColor();
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("%s %s", c < 3 ? "rotation (degrees)" : "position offset from rest",
-                              kAxes[c % 3]);
+            ImGui::SetTooltip("%s%s: click to show or hide its rotation", node.c_str(),
+                              keyed ? "" : " (not keyed in this clip)");
+        for (int c = 0; c < 6; ++c) {
+            const auto channel = static_cast<CurveChannel>(c);
+            ImGui::SameLine(0, c == 3 ? 5.0f : 1.0f);
+            const bool on = shown(channel);
+            ImVec4 colour = ImGui::ColorConvertU32ToFloat4(channel_colour(channel));
+            colour.w = on ? 0.9f : 0.15f;
+            ImGui::PushStyleColor(ImGuiCol_Button, colour);
+            ImGui::PushStyleColor(ImGuiCol_ButtonHovered, ImVec4(colour.x, colour.y, colour.z, 0.6f));
+            ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(0, 0));
+            ImGui::PushID(c);
+            if (ImGui::Button(c % 3 == 0 ? "x" : c % 3 == 1 ? "y" : "z", ImVec2(button, button)))
+                toggle(channel, !on);
+            ImGui::PopID();
+            ImGui::PopStyleVar();
+            ImGui::PopStyleColor(2);
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip("%s %s %s", node.c_str(), c < 3 ? "rotation (degrees)" : "position offset",
+                                  curve_channel_name(channel));
+        }
+        ImGui::PopID();
     }
-}
-
-namespace {
-// The plot's rectangle on screen and the time and value ranges it shows.
-struct Plot {
-    ImVec2 lo, hi; // top-left, bottom-right of the plotting area
-    double t0, t1, v0, v1;
-    float x(double t) const { return lo.x + static_cast<float>((t - t0) / (t1 - t0)) * (hi.x - lo.x); }
-    float y(double v) const { return hi.y - static_cast<float>((v - v0) / (v1 - v0)) * (hi.y - lo.y); }
-    double time_at(float sx) const { return t0 + (sx - lo.x) / (hi.x - lo.x) * (t1 - t0); }
-    double value_at(float sy) const { return v0 + (hi.y - sy) / (hi.y - lo.y) * (v1 - v0); }
-};
-
-// Value lines with their labels, and a faint line at each key's time with the time under the plot.
-void draw_grid(ImDrawList* draw, const Plot& plot, const ClipCurve& curve, bool position) {
-    const ImU32 label_colour = IM_COL32(130, 136, 150, 255);
-    const double step = nice_step(plot.v1 - plot.v0, 5);
-    for (double line = std::ceil(plot.v0 / step) * step; line <= plot.v1; line += step) {
-        const double v = std::abs(line) < step * 1e-6 ? 0.0 : line; // no "-0"
-        const float y = plot.y(v);
-        draw->AddLine(ImVec2(plot.lo.x, y), ImVec2(plot.hi.x, y),
-                      v == 0.0 ? IM_COL32(95, 100, 115, 255) : IM_COL32(45, 49, 58, 255));
-        char label[24];
-        std::snprintf(label, sizeof(label), position ? "%.2f" : "%.0f\xc2\xb0", v);
-        const ImVec2 text = ImGui::CalcTextSize(label);
-        draw->AddText(ImVec2(plot.lo.x - text.x - 6, y - text.y * 0.5f), label_colour, label);
-    }
-    draw->AddText(ImVec2(plot.lo.x - 4, plot.hi.y + 3), label_colour, "0s");
-    for (const CurveKey& key : curve.keys) {
-        const float x = plot.x(key.time);
-        draw->AddLine(ImVec2(x, plot.lo.y), ImVec2(x, plot.hi.y), IM_COL32(60, 64, 76, 255));
-        char label[16];
-        std::snprintf(label, sizeof(label), "%.2fs", key.time);
-        const ImVec2 text = ImGui::CalcTextSize(label);
-        draw->AddText(ImVec2(std::min(x - text.x * 0.5f, plot.hi.x - text.x), plot.hi.y + 3), label_colour,
-                      label);
-    }
-}
-
-// The curve, one eased segment per key in alternating shades with the easing's name over wide segments, and
-// the start value (the rest pose the dojo plays from) as a small dot.
-void draw_segments(ImDrawList* draw, const Plot& plot, const ClipCurve& curve) {
-    ImVec2 points[401];
-    double from = 0.0;
-    for (std::size_t k = 0; k < curve.keys.size(); ++k) {
-        const CurveKey& key = curve.keys[k];
-        int n = 0;
-        for (const CurvePoint& point : curve.points)
-            if (point.time >= from - 1e-9 && point.time <= key.time + 1e-9 && n < 401)
-                points[n++] = ImVec2(plot.x(point.time), plot.y(point.value));
-        const ImU32 colour = kSegmentColours[k % 2];
-        if (n >= 2) draw->AddPolyline(points, n, colour, 0, 2.5f);
-        const std::string ease = anim::ease_name(key.ease);
-        const ImVec2 text = ImGui::CalcTextSize(ease.c_str());
-        if (!ease.empty() && plot.x(key.time) - plot.x(from) > text.x + 8)
-            draw->AddText(
-                ImVec2((plot.x(from) + plot.x(key.time) - text.x) * 0.5f, plot.lo.y - kTopMargin + 2),
-                (colour & 0x00ffffff) | 0xa0000000, ease.c_str());
-        from = key.time;
-    }
-    draw->AddCircleFilled(ImVec2(plot.x(0.0), plot.y(curve.start_value)), 3.5f, IM_COL32(160, 165, 180, 255));
-}
-
-// A key's diamond: filled where the node's key sets the channel, hollow where it does not (yet).
-void draw_handle(ImDrawList* draw, ImVec2 c, const CurveKey& key, bool selected, bool hot) {
-    const ImU32 colour = selected    ? IM_COL32(255, 210, 80, 255)
-                         : key.keyed ? IM_COL32(255, 160, 90, 255)
-                                     : IM_COL32(150, 155, 170, 255);
-    const float r = kHandle + (hot ? 1.5f : 0.0f);
-    const ImVec2 d[4] = {ImVec2(c.x, c.y - r), ImVec2(c.x + r, c.y), ImVec2(c.x, c.y + r),
-                         ImVec2(c.x - r, c.y)};
-    if (key.keyed)
-        draw->AddQuadFilled(d[0], d[1], d[2], d[3], colour);
-    else
-        draw->AddQuad(d[0], d[1], d[2], d[3], colour, 1.8f);
-}
-} // namespace
-
-// The axes: the clip's time, and the values shown with a margin; kept while a key is dragged, so the plot
-// does not rescale under the mouse.
-void DojoCurveView::fit_axes() {
-    if (drag_.active) return;
-    double lo = curve_.start_value, hi = curve_.start_value;
-    for (const auto& point : curve_.points) lo = std::min(lo, point.value), hi = std::max(hi, point.value);
-    const double least = is_position(channel_) ? 0.2 : 20.0;
-    if (hi - lo < least) lo -= (least - (hi - lo)) * 0.5, hi = lo + least;
-    const double pad = (hi - lo) * 0.12;
-    drag_.t0 = 0.0;
-    drag_.t1 = std::max(curve_.duration, 0.01);
-    drag_.v0 = lo - pad;
-    drag_.v1 = hi + pad;
+    ImGui::EndChild();
 }
 
 void DojoCurveView::draw(const DojoContext& dojo) {
     const anim::ClipDef* def = dojo.shown_def();
     const anim::AnimationFile& file = dojo.edits.file();
     if (!def || file.rig.empty()) return;
-    picker(dojo);
+    if (chosen_for_ != dojo.playback.clip()) { // a new clip: its first keyed node's rotation, or the view's
+        chosen_for_ = dojo.playback.clip();
+        channels_.clear();
+        selection_.clear();
+        fit_pending_ = true;
+        std::string node;
+        if (solo_node_ >= 0 && static_cast<std::size_t>(solo_node_) < file.rig.size())
+            channels_.push_back({file.rig[static_cast<std::size_t>(solo_node_)].name, solo_channel_});
+        for (const auto& phase : def->phases)
+            for (const auto& target : phase.targets)
+                if (node.empty() && channels_.empty()) node = target.node;
+        if (!node.empty())
+            for (int c = 0; c < 3; ++c) channels_.push_back({node, static_cast<CurveChannel>(c)});
+    }
+    toolbar(dojo);
+    const float height = std::max(90.0f, ImGui::GetContentRegionAvail().y);
+    if (show_list_.value_or(ImGui::GetContentRegionAvail().x >= 560.0f)) {
+        channel_list(dojo, height);
+        ImGui::SameLine();
+    }
     const ImVec2 p = ImGui::GetCursorScreenPos();
-    const ImVec2 size(ImGui::GetContentRegionAvail().x,
-                      std::max(120.0f, ImGui::GetContentRegionAvail().y - 26.0f));
-    ImDrawList* draw = ImGui::GetWindowDrawList();
-    draw->AddRectFilled(p, ImVec2(p.x + size.x, p.y + size.y), IM_COL32(20, 22, 28, 255), 4.0f);
-    const ImVec2 lo(p.x + kLeftMargin, p.y + kTopMargin);
-    const ImVec2 hi(p.x + size.x - kRightMargin, p.y + size.y - kBottomMargin);
-    if (!refresh(dojo, std::clamp(static_cast<int>((hi.x - lo.x) / 3.0f), 16, 400))) {
-        ImGui::Dummy(size);
-        draw->AddText(ImVec2(lo.x, lo.y + 10), IM_COL32(255, 110, 90, 255), error_.c_str());
-        return;
-    }
-    fit_axes();
-    const Plot plot{lo, hi, drag_.t0, drag_.t1, drag_.v0, drag_.v1};
-    draw_grid(draw, plot, curve_, is_position(channel_));
-    draw_segments(draw, plot, curve_);
-    const std::string node = file.rig[static_cast<size_t>(node_)].name;
-    for (std::size_t k = 0; k < curve_.keys.size(); ++k) {
-        const CurveKey& key = curve_.keys[k];
-        const ImVec2 c(plot.x(key.time), plot.y(key.value));
-        ImGui::PushID(static_cast<int>(k));
-        ImGui::SetCursorScreenPos(ImVec2(c.x - kHandle - 2, c.y - kHandle - 2));
-        ImGui::InvisibleButton("key", ImVec2(2 * kHandle + 4, 2 * kHandle + 4));
-        handles_.push_back(Vec2(c.x, c.y));
-        const bool hovered = ImGui::IsItemHovered(), active = ImGui::IsItemActive();
-        if (ImGui::IsItemActivated()) {
-            drag_.active = true;
-            drag_.key = k;
-            drag_.time = key.time;
-            drag_.value = key.value;
-            drag_.target = key.keyed ? key.target_value : 0.0;
-            drag_.keyed = key.keyed;
-            drag_.origin = file;
-            dojo.selection.phase = static_cast<int>(key.phase);
-        }
-        if (active && drag_.active && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 1.0f)) {
-            const ImVec2 mouse = ImGui::GetIO().MousePos;
-            drag(dojo, k, plot.time_at(mouse.x), plot.value_at(mouse.y), ImGui::GetIO().KeyShift);
-        }
-        if (ImGui::IsItemDeactivated()) drag_.active = false, drag_.origin = {};
-        draw_handle(draw, c, key, static_cast<int>(key.phase) == dojo.selection.phase, hovered || active);
-        if (hovered && !active)
-            ImGui::SetTooltip(
-                "key %zu of %s at %.3f s: %.2f%s\n%s", key.phase + 1, node.c_str(), key.time, key.value,
-                is_position(channel_) ? "" : "\xc2\xb0",
-                key.keyed ? (key.relative ? "relative key: drag to move" : "absolute key: drag to move")
-                          : "not keyed here: drag up or down to key it");
-        ImGui::PopID();
-    }
-    const float playhead = plot.x(dojo.clip_time());
-    draw->AddLine(ImVec2(playhead, lo.y), ImVec2(playhead, hi.y), IM_COL32(255, 80, 80, 200), 1.5f);
-    ImGui::SetCursorScreenPos(p);
-    ImGui::Dummy(size);
-    ImGui::TextDisabled("Drag keys in time and value (Shift: one direction). Hollow: %s not keyed there.",
-                        node.c_str());
+    plot(dojo, Vec2(p.x, p.y), Vec2(std::max(80.0f, ImGui::GetContentRegionAvail().x), height));
 }
 
-// One frame of a key drag: the file as it was when the drag began, with the key moved to (seconds, value).
-// The first change records the drag's one undo step; a refused position keeps the last good one.
-void DojoCurveView::drag(const DojoContext& dojo, std::size_t key, double seconds, double value, bool shift) {
-    if (shift) { // one direction: the larger of the two moves on screen
-        const double dt = std::abs(seconds - drag_.time) / (drag_.t1 - drag_.t0);
-        const double dv = std::abs(value - drag_.value) / (drag_.v1 - drag_.v0);
-        if (dt > dv)
-            value = drag_.value;
-        else
-            seconds = drag_.time;
-    }
-    // Whole milliseconds and tenths of a degree (thousandths of a unit) read well in the file.
-    seconds = std::round(seconds * 1000.0) / 1000.0;
-    const double resolution = is_position(channel_) ? 1000.0 : 10.0;
-    const double target = std::round((drag_.target + value - drag_.value) * resolution) / resolution;
-    const auto clip = dojo.clip_index();
-    const std::size_t phase = curve_.keys[key].phase;
-    const std::string node = dojo.edits.file().rig[static_cast<size_t>(node_)].name;
-    anim::AnimationFile edited = drag_.origin;
-    Result<void> result = ok();
-    if (std::abs(seconds - drag_.time) > 1e-4)
-        result = move_key_time(edited, clip, phase, std::max(0.0, seconds));
-    if (result && std::abs(value - drag_.value) > 1e-6) {
-        if (!drag_.keyed) result = add_node_key(edited, clip, phase, node);
-        if (result) result = set_key_value(edited, clip, phase, node, channel_, target);
-    }
-    if (!result) {
-        dojo.edits.show_message(
-            result.error().message); // while the drag stays refused, not logged each frame
+void DojoCurveView::plot(const DojoContext& dojo, Vec2 origin, Vec2 size) {
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const ImVec2 p = im(origin), end(origin.x + size.x, origin.y + size.y);
+    draw->AddRectFilled(p, end, IM_COL32(20, 22, 28, 255), 4.0f);
+    Plot plot{Vec2(p.x + kLeftMargin, p.y + kTopMargin), Vec2(end.x - kRightMargin, end.y - kBottomMargin),
+              range_};
+    ImGui::SetCursorScreenPos(p);
+    ImGui::InvisibleButton("plot", im(size),
+                           ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonMiddle |
+                               ImGuiButtonFlags_MouseButtonRight);
+    if (!refresh(dojo, std::clamp(static_cast<int>((plot.hi.x - plot.lo.x) / 3.0f), 16, 400))) {
+        draw->AddText(ImVec2(plot.lo.x, plot.lo.y + 10), IM_COL32(255, 110, 90, 255), error_.c_str());
         return;
     }
+    if (channels_.empty())
+        draw->AddText(ImVec2(plot.lo.x, plot.lo.y + 10), IM_COL32(150, 155, 170, 255),
+                      "No channels shown: pick a node's axes in the list");
+    const bool rotation = std::any_of(channels_.begin(), channels_.end(),
+                                      [](const NodeChannel& c) { return !is_position(c.channel); });
+    if (pending_key_ && !channels_.empty()) { // on the channel that changes most into that key
+        std::size_t best = 0;
+        double most = -1;
+        for (std::size_t c = 0; c < curves_.size(); ++c) {
+            const auto& keys = curves_[c].keys;
+            if (*pending_key_ >= keys.size()) continue;
+            const double from = *pending_key_ == 0 ? curves_[c].start_value : keys[*pending_key_ - 1].value;
+            if (std::abs(keys[*pending_key_].value - from) > most)
+                most = std::abs(keys[*pending_key_].value - from), best = c;
+        }
+        selection_.click({channels_[best], *pending_key_}, false);
+        selection_.keep_shown(points_);
+        pending_key_.reset();
+    }
+    if (fit_pending_ && drag_.gesture == Gesture::None) {
+        range_ = fit_graph(curves_, rotation ? 20.0 : 0.2);
+        fit_pending_ = false;
+        double t0 = 0, v0 = 0, t1 = 0, v1 = 0; // and the tangent handles shown
+        anim::Ease ease;
+        if (handle_segment(t0, v0, t1, v1, ease))
+            for (const EaseHandle& h : ease_handles(ease)) {
+                const double v = v0 + h.y * span_of(v0, v1, range_), pad = (range_.v1 - range_.v0) * 0.06;
+                range_.v0 = std::min(range_.v0, v - pad), range_.v1 = std::max(range_.v1, v + pad);
+            }
+    }
+    plot.range = range_;
+    mouse(dojo, plot);
+    plot.range = range_;
+    draw->PushClipRect(p, end, true);
+    // Value lines with labels; time lines (seconds or frames) with labels under the plot.
+    const ImU32 label = IM_COL32(130, 136, 150, 255);
+    const double vstep = nice_step(range_.v1 - range_.v0, 5);
+    for (double line = std::ceil(range_.v0 / vstep) * vstep; line <= range_.v1; line += vstep) {
+        const double v = std::abs(line) < vstep * 1e-6 ? 0.0 : line;
+        const float y = plot.y(v);
+        draw->AddLine(ImVec2(plot.lo.x, y), ImVec2(plot.hi.x, y),
+                      v == 0.0 ? IM_COL32(95, 100, 115, 255) : IM_COL32(45, 49, 58, 255));
+        char text[24];
+        std::snprintf(text, sizeof(text), rotation ? "%.0f" : "%.2f", v);
+        const ImVec2 ts = ImGui::CalcTextSize(text);
+        draw->AddText(ImVec2(plot.lo.x - ts.x - 5, y - ts.y * 0.5f), label, text);
+    }
+    const TimeUnits units = dojo.time_units();
+    const double tstep = units.frames
+                             ? std::max(1.0, nice_step(units.shown(range_.t1 - range_.t0), 6)) / units.fps
+                             : nice_step(range_.t1 - range_.t0, 6);
+    for (double t = std::ceil(range_.t0 / tstep) * tstep; t <= range_.t1; t += tstep) {
+        const float x = plot.x(t);
+        draw->AddLine(ImVec2(x, plot.lo.y), ImVec2(x, plot.hi.y), IM_COL32(38, 41, 50, 255));
+        const std::string text = units.text(std::abs(t) < tstep * 1e-6 ? 0.0 : t);
+        draw->AddText(ImVec2(x - ImGui::CalcTextSize(text.c_str()).x * 0.5f, plot.hi.y + 2), label,
+                      text.c_str());
+    }
+    const anim::ClipDef* def = dojo.shown_def();
+    const float clip_end = plot.x(def ? def->duration() : 0.0);
+    draw->AddLine(ImVec2(clip_end, plot.lo.y), ImVec2(clip_end, plot.hi.y), IM_COL32(90, 95, 110, 255), 1.5f);
+    // The curves, each in its axis colour (positions lighter, dashed by skipping every other piece).
+    std::vector<ImVec2> line;
+    for (std::size_t c = 0; c < curves_.size(); ++c) {
+        line.clear();
+        for (const CurvePoint& point : curves_[c].points)
+            line.push_back(ImVec2(plot.x(point.time), plot.y(point.value)));
+        const ImU32 colour = channel_colour(channels_[c].channel);
+        if (!is_position(channels_[c].channel))
+            draw->AddPolyline(line.data(), static_cast<int>(line.size()), colour, 0, 2.0f);
+        else
+            for (std::size_t i = 0; i + 1 < line.size(); i += 2)
+                draw->AddLine(line[i], line[i + 1], colour, 2.0f);
+    }
+    draw_handles(draw, plot);
+    // The keys: filled where the node's key sets the channel, hollow where it does not (moving one keys it).
+    for (const GraphPoint& point : points_) {
+        const ImVec2 c(plot.x(point.time), plot.y(point.value));
+        handles_.push_back(Vec2(c.x, c.y));
+        const bool selected = selection_.contains(point.key);
+        const ImU32 colour = selected      ? kSelected
+                             : point.keyed ? channel_colour(point.key.channel.channel)
+                                           : IM_COL32(150, 155, 170, 255);
+        if (selected) diamond(draw, c, kHandle + 2.0f, IM_COL32(20, 22, 28, 255), true);
+        diamond(draw, c, kHandle + (selected ? 1.0f : 0.0f), colour, point.keyed || selected);
+    }
+    if (drag_.gesture == Gesture::Box) {
+        const ImVec2 m = ImGui::GetIO().MousePos;
+        draw->AddRectFilled(im(drag_.start), m, IM_COL32(255, 225, 90, 30));
+        draw->AddRect(im(drag_.start), m, IM_COL32(255, 225, 90, 200));
+    }
+    const float playhead = plot.x(dojo.clip_time());
+    draw->AddLine(ImVec2(playhead, plot.lo.y), ImVec2(playhead, plot.hi.y), kPlayhead, 1.5f);
+    draw->PopClipRect();
+}
+
+// The tangent handles of the single selected key's segment: Bezier control points joined to the segment's
+// ends, or a power curve's point.
+bool DojoCurveView::handle_segment(double& t0, double& v0, double& t1, double& v1, anim::Ease& ease) const {
+    if (selection_.keys().size() != 1) return false;
+    const GraphKey& key = selection_.keys().front();
+    for (std::size_t c = 0; c < channels_.size() && c < curves_.size(); ++c) {
+        if (channels_[c] != key.channel || key.phase >= curves_[c].keys.size()) continue;
+        const CurveKey& end = curves_[c].keys[key.phase];
+        t1 = end.time, v1 = end.value, ease = end.ease;
+        t0 = key.phase == 0 ? 0.0 : curves_[c].keys[key.phase - 1].time;
+        v0 = key.phase == 0 ? curves_[c].start_value : curves_[c].keys[key.phase - 1].value;
+        return !ease_handles(ease).empty() && t1 > t0;
+    }
+    return false;
+}
+
+void DojoCurveView::draw_handles(ImDrawList* draw, const Plot& plot) {
+    double t0 = 0, v0 = 0, t1 = 0, v1 = 0;
+    anim::Ease ease;
+    if (!handle_segment(t0, v0, t1, v1, ease)) return;
+    const double span = span_of(v0, v1, plot.range);
+    const auto handles = ease_handles(ease);
+    for (std::size_t i = 0; i < handles.size(); ++i) {
+        const ImVec2 h(plot.x(t0 + handles[i].u * (t1 - t0)), plot.y(v0 + handles[i].y * span));
+        if (ease.family == anim::EaseFamily::CubicBezier) {
+            const ImVec2 anchor = i == 0 ? ImVec2(plot.x(t0), plot.y(v0)) : ImVec2(plot.x(t1), plot.y(v1));
+            draw->AddLine(anchor, h, IM_COL32(240, 240, 250, 160), 1.2f);
+        }
+        draw->AddCircleFilled(h, 4.5f, kHandleColour);
+        draw->AddCircle(h, 6.0f, IM_COL32(20, 22, 28, 255), 0, 1.5f);
+    }
+}
+
+// Wheel zoom around the mouse (Shift: values only, Ctrl: time only), F fits, A selects all.
+void DojoCurveView::zoom_and_pan(const Plot& plot) {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.MouseWheel != 0.0f) {
+        const double f = std::pow(0.85, static_cast<double>(io.MouseWheel));
+        const double t = plot.time_at(io.MousePos.x), v = plot.value_at(io.MousePos.y);
+        if (!io.KeyShift) range_.t0 = t + (range_.t0 - t) * f, range_.t1 = t + (range_.t1 - t) * f;
+        if (!io.KeyCtrl) range_.v0 = v + (range_.v0 - v) * f, range_.v1 = v + (range_.v1 - v) * f;
+    }
+    if (!io.WantTextInput) {
+        if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) fit_pending_ = true;
+        if (ImGui::IsKeyPressed(GLFW_KEY_A, false)) selection_.all(points_);
+    }
+}
+
+void DojoCurveView::mouse(const DojoContext& dojo, const Plot& plot) {
+    const ImGuiIO& io = ImGui::GetIO();
+    const Vec2 m(io.MousePos.x, io.MousePos.y);
+    if (ImGui::IsItemHovered() && drag_.gesture == Gesture::None) zoom_and_pan(plot);
+    if (ImGui::IsItemActivated()) {
+        drag_.start = m;
+        drag_.range = range_;
+        drag_.lock = DragLock::Undecided;
+        if (ImGui::IsMouseClicked(ImGuiMouseButton_Left))
+            press(dojo, plot, m);
+        else
+            drag_.gesture = Gesture::Pan;
+    }
+    if (ImGui::IsItemActive()) {
+        switch (drag_.gesture) {
+        case Gesture::Keys:
+            drag_keys(dojo, plot, m);
+            break;
+        case Gesture::Handle:
+            drag_handle(dojo, plot, m);
+            break;
+        case Gesture::Pan: {
+            const double dt =
+                (m.x - drag_.start.x) / (plot.hi.x - plot.lo.x) * (drag_.range.t1 - drag_.range.t0);
+            const double dv =
+                (m.y - drag_.start.y) / (plot.hi.y - plot.lo.y) * (drag_.range.v1 - drag_.range.v0);
+            range_ = {drag_.range.t0 - dt, drag_.range.t1 - dt, drag_.range.v0 + dv, drag_.range.v1 + dv};
+            break;
+        }
+        case Gesture::Box:
+        case Gesture::None:
+            break;
+        }
+    }
+    if (ImGui::IsItemDeactivated()) {
+        if (drag_.gesture == Gesture::Box)
+            selection_.box(points_, plot.time_at(drag_.start.x), plot.value_at(drag_.start.y),
+                           plot.time_at(m.x), plot.value_at(m.y), io.KeyShift);
+        // A click (no drag) on one of several selected keys selects it alone.
+        if (drag_.gesture == Gesture::Keys && drag_.lock == DragLock::Undecided && !io.KeyShift)
+            selection_.click(drag_.pressed, false);
+        drag_.gesture = Gesture::None;
+        drag_.origin = {};
+    }
+}
+
+// A press: on a tangent handle, shape it; on a key, select it (Shift: toggle) and start moving the
+// selection; elsewhere, a box.
+void DojoCurveView::press(const DojoContext& dojo, const Plot& plot, Vec2 m) {
+    const bool shift = ImGui::GetIO().KeyShift;
+    double t0 = 0, v0 = 0, t1 = 0, v1 = 0;
+    anim::Ease ease;
+    if (!shift && handle_segment(t0, v0, t1, v1, ease)) {
+        const double span = span_of(v0, v1, plot.range);
+        const auto handles = ease_handles(ease);
+        for (std::size_t i = 0; i < handles.size(); ++i) {
+            const Vec2 h(plot.x(t0 + handles[i].u * (t1 - t0)), plot.y(v0 + handles[i].y * span));
+            if (distance(h, m) > kPick) continue;
+            drag_.gesture = Gesture::Handle;
+            drag_.handle = i;
+            drag_.origin = dojo.edits.file();
+            return;
+        }
+    }
+    const GraphPoint* nearest = nullptr;
+    float best = kPick;
+    for (const GraphPoint& point : points_) {
+        const float d = distance(Vec2(plot.x(point.time), plot.y(point.value)), m);
+        if (d <= best) best = d, nearest = &point;
+    }
+    if (!nearest) {
+        drag_.gesture = Gesture::Box;
+        return;
+    }
+    if (shift || !selection_.contains(nearest->key)) selection_.click(nearest->key, shift);
+    dojo.selection.phase = static_cast<int>(nearest->key.phase);
+    drag_.gesture = selection_.contains(nearest->key) ? Gesture::Keys : Gesture::None;
+    drag_.pressed = nearest->key;
+    drag_.origin = dojo.edits.file();
+}
+
+// One frame of moving the selected keys: the file as it was when the drag began, with the keys moved by
+// the mouse's travel along the direction the drag started in (Ctrl: both); whole milliseconds (frames in
+// frames mode) and tenths of a degree (thousandths of a unit).
+void DojoCurveView::drag_keys(const DojoContext& dojo, const Plot& plot, Vec2 m) {
+    const Vec2 d(m.x - drag_.start.x, m.y - drag_.start.y);
+    if (drag_.lock == DragLock::Undecided) drag_.lock = decide_drag_lock(d.x, d.y, ImGui::GetIO().KeyCtrl);
+    if (drag_.lock == DragLock::Undecided) return;
+    GraphTransform how;
+    if (drag_.lock != DragLock::ValueOnly)
+        how.time_offset = std::round((plot.time_at(m.x) - plot.time_at(drag_.start.x)) * 1000.0) / 1000.0;
+    if (drag_.lock != DragLock::TimeOnly) {
+        const bool position = std::all_of(selection_.keys().begin(), selection_.keys().end(),
+                                          [](const GraphKey& k) { return is_position(k.channel.channel); });
+        const double resolution = position ? 1000.0 : 10.0;
+        how.value_offset =
+            std::round((plot.value_at(m.y) - plot.value_at(drag_.start.y)) * resolution) / resolution;
+    }
+    anim::AnimationFile edited = drag_.origin;
+    auto moved = transform_graph_keys(edited, dojo.clip_index(), selection_.keys(), how, dojo.time_units());
+    if (!moved) return dojo.edits.show_message(moved.error().message); // not logged frame after frame
     dojo.edits.show_message({});
-    dojo.edits.record_drag(drag_.origin, "drag key " + std::to_string(phase + 1) + " of " + node);
+    const GraphKey& first = selection_.keys().front();
+    const std::string name = selection_.keys().size() == 1
+                                 ? "drag key " + std::to_string(first.phase + 1) + " of " + first.channel.node
+                                 : "move " + std::to_string(selection_.keys().size()) + " keys";
+    dojo.edits.record_drag(drag_.origin, name);
+    dojo.edits.replace(std::move(edited));
+}
+
+// One frame of shaping the selected key's easing by a tangent handle (from the file when the drag began).
+void DojoCurveView::drag_handle(const DojoContext& dojo, const Plot& plot, Vec2 m) {
+    double t0 = 0, v0 = 0, t1 = 0, v1 = 0;
+    anim::Ease ease;
+    if (selection_.keys().size() != 1 || !handle_segment(t0, v0, t1, v1, ease)) return;
+    const GraphKey& key = selection_.keys().front();
+    // The easing as it was when the drag began: the segment's ends do not move while it is shaped.
+    auto origin_curve = clip_curves(drag_.origin, dojo.clip_index(), std::span(&key.channel, 1), 2);
+    if (!origin_curve || key.phase >= origin_curve->front().keys.size()) return;
+    const auto shaped = drag_ease_handle(origin_curve->front().keys[key.phase].ease, drag_.handle,
+                                         (plot.time_at(m.x) - t0) / (t1 - t0),
+                                         (plot.value_at(m.y) - v0) / span_of(v0, v1, plot.range));
+    if (!shaped) return;
+    anim::AnimationFile edited = drag_.origin;
+    auto set = set_segment_ease(edited, dojo.clip_index(), key.phase, key.channel.node, *shaped);
+    if (!set) return dojo.edits.show_message(set.error().message);
+    dojo.edits.show_message({});
+    dojo.edits.record_drag(drag_.origin, "shape key " + std::to_string(key.phase + 1) + " of " +
+                                             key.channel.node + "'s easing");
     dojo.edits.replace(std::move(edited));
 }
 

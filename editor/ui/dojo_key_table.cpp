@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace ks::editor::ui {
@@ -26,11 +27,12 @@ DVec3 where(const DojoContext& dojo, const std::string& node, bool position) {
     return key < values.size() ? snap(values[key], kValueSteps) : DVec3(0.0);
 }
 
-// The easing's shape, 0..1 over 0..1, in a small box.
-void ease_thumbnail(const anim::Ease& ease, float size) {
+// The easing's shape, 0..1 over 0..1, in a small box `size` wide and `height` high (one field's height: the
+// key's fields stay on one row, leaving the table its rows at 1280x720).
+void ease_thumbnail(const anim::Ease& ease, float size, float height) {
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const ImVec2 p = ImGui::GetCursorScreenPos();
-    const float h = size * 0.6f, pad = h * 0.25f;
+    const float h = height / 1.5f, pad = h * 0.25f;
     draw->AddRectFilled(p, ImVec2(p.x + size, p.y + h + 2 * pad), IM_COL32(20, 22, 28, 255), 3.0f);
     draw->AddLine(ImVec2(p.x, p.y + pad), ImVec2(p.x + size, p.y + pad), IM_COL32(80, 80, 90, 255));
     draw->AddLine(ImVec2(p.x, p.y + pad + h), ImVec2(p.x + size, p.y + pad + h), IM_COL32(80, 80, 90, 255));
@@ -103,6 +105,12 @@ void DojoKeyTable::draw(const DojoContext& dojo) {
         if (i) ImGui::SameLine();
         if (ImGui::RadioButton(label, selected == i)) selected = i;
     }
+    // The key buttons on the keys' row when it has room (one row more for the table below).
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float buttons = ImGui::CalcTextSize("Duplicate keyRemove keyEarlierLater").x +
+                          style.FramePadding.x * 8 + style.ItemSpacing.x * 3;
+    ImGui::SameLine(0, 16.0f);
+    if (ImGui::GetContentRegionAvail().x < buttons) ImGui::NewLine();
     if (phase_buttons(dojo)) return; // the phases changed under this frame's references: draw them next frame
     anim::PhaseDef& phase = def.phases[static_cast<size_t>(selected)];
     bool edited = phase_timing(dojo, phase);
@@ -123,13 +131,24 @@ void DojoKeyTable::draw(const DojoContext& dojo) {
 bool DojoKeyTable::phase_timing(const DojoContext& dojo, anim::PhaseDef& phase) {
     bool edited = false;
     ImGui::BeginGroup();
-    float duration = static_cast<float>(phase.duration);
     ImGui::SetNextItemWidth(120);
-    if (ImGui::DragFloat("duration", &duration, 0.005f, 0.0f, 30.0f, "%.3f s", ImGuiSliderFlags_AlwaysClamp))
-        dojo.edits.begin_drag("key duration"), phase.duration = snap(duration, kTimeSteps), edited = true;
+    if (const TimeUnits units = dojo.time_units(); units.frames) { // whole frames
+        double frames = std::round(phase.duration * units.fps);
+        const double most = 30.0 * units.fps, zero = 0.0;
+        if (ImGui::DragScalar("duration", ImGuiDataType_Double, &frames, 0.2f, &zero, &most, "%.0f f",
+                              ImGuiSliderFlags_AlwaysClamp))
+            dojo.edits.begin_drag("key duration"), phase.duration = std::round(frames) / units.fps,
+                                                   edited = true;
+    } else {
+        float duration = static_cast<float>(phase.duration);
+        if (ImGui::DragFloat("duration", &duration, 0.005f, 0.0f, 30.0f, "%.3f s",
+                             ImGuiSliderFlags_AlwaysClamp))
+            dojo.edits.begin_drag("key duration"), phase.duration = snap(duration, kTimeSteps), edited = true;
+    }
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Seconds to reach this key's targets; a key with no targets is a delay.");
-    ImGui::SetNextItemWidth(170);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(150);
     const std::string current = anim::ease_name(phase.ease);
     if (ImGui::BeginCombo("easing", current.empty() ? "custom" : current.c_str())) {
         for (const auto& name : anim::known_ease_names())
@@ -140,7 +159,7 @@ bool DojoKeyTable::phase_timing(const DojoContext& dojo, anim::PhaseDef& phase) 
     }
     ImGui::EndGroup();
     ImGui::SameLine();
-    ease_thumbnail(phase.ease, 96.0f);
+    ease_thumbnail(phase.ease, 48.0f, ImGui::GetFrameHeight());
 
     return edited;
 }
@@ -151,7 +170,9 @@ bool DojoKeyTable::target_rows(const DojoContext& dojo, anim::PhaseDef& phase, s
     if (ImGui::BeginTable("targets", 5,
                           ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
                               ImGuiTableFlags_SizingStretchProp,
-                          ImVec2(0, std::max(80.0f, ImGui::GetContentRegionAvail().y - 64.0f)))) {
+                          ImVec2(0, std::max(ImGui::GetFrameHeightWithSpacing() * 3.0f,
+                                             ImGui::GetContentRegionAvail().y -
+                                                 ImGui::GetFrameHeightWithSpacing() - 4.0f)))) {
         ImGui::TableSetupColumn("node", ImGuiTableColumnFlags_WidthFixed, 90);
         ImGui::TableSetupColumn("rotation (deg, XYZ)");
         ImGui::TableSetupColumn("position offset");

@@ -67,6 +67,12 @@ Result<DojoView> parse_dojo_view(const std::string& text) {
             if (value.empty() || *end != '\0' || id <= 0 || id > 1'000'000)
                 return Error("--dojo-view: robot=" + value + " is not an entity id", {}, "e.g. robot=46");
             view.robot = static_cast<int>(id);
+        } else if (key == "key") {
+            char* end = nullptr;
+            const long n = std::strtol(value.c_str(), &end, 10);
+            if (value.empty() || *end != '\0' || n <= 0 || n > 10'000)
+                return Error("--dojo-view: key=" + value + " is not a key number", {}, "e.g. key=2 (from 1)");
+            view.key = static_cast<int>(n);
         } else if (key == "blend") {
             const auto arrow = value.find('>');
             if (arrow == std::string::npos || arrow == 0 || arrow + 1 == value.size())
@@ -81,7 +87,7 @@ Result<DojoView> parse_dojo_view(const std::string& text) {
         } else {
             return Error("--dojo-view: unknown item '" + item + "'", {},
                          "items are clip=NAME, page=keys|curves|blends|events, node=NODE, channel=rot.x, "
-                         "time=SECONDS, onion=1, robot=ID, blend=FROM>TO, separated by commas");
+                         "key=N, time=SECONDS, onion=1, robot=ID, blend=FROM>TO, separated by commas");
         }
     }
     return view;
@@ -185,6 +191,8 @@ void DojoPanel::apply_view(const DojoView& view) {
             selection_.node = view.node; // posed in the preview too
         }
     }
+    if (view.key > 0)
+        selection_.phase = view.key - 1, curve_view_.select_key(static_cast<size_t>(view.key - 1));
     preview_.set_onion(view.onion);
     if (!view.blend_from.empty()) {
         const int from = playback_.clips().find(view.blend_from), to = playback_.clips().find(view.blend_to);

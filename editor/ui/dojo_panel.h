@@ -50,8 +50,9 @@ struct DojoView {
     bool onion = false;
     int robot = 0; // > 0: the level robot with this id plays the clip in the level tab (preview in context)
     std::string blend_from, blend_to; // a blend cell selected (its transition plays in the tester)
+    int key = 0; // > 0: key N selected (the key table's, and the graph's on the channel changing most)
 };
-// Parses "clip=shooting,page=curves,node=arm_r,channel=rot.z,time=0.25,onion=1"; the error names the
+// Parses "clip=shooting,page=curves,node=arm_r,channel=rot.z,key=1,time=0.25,onion=1"; the error names the
 // unknown key or bad value and lists the keys.
 Result<DojoView> parse_dojo_view(const std::string& text);
 

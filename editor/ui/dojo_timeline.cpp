@@ -30,7 +30,8 @@ void DojoTimeline::transport(const DojoContext& dojo) {
     if (ImGui::DragFloat("speed", &speed, 0.01f, 0.05f, 4.0f, "%.2fx")) playback.set_speed(speed);
     ImGui::SameLine();
     const anim::Player* player = playback.player();
-    ImGui::Text("t = %.3f s%s", playback.time(), player && player->blending() ? "  (blending)" : "");
+    ImGui::Text("t = %s%s", dojo.time_units().text(playback.time()).c_str(),
+                player && player->blending() ? "  (blending)" : "");
 }
 
 void DojoTimeline::timeline(const DojoContext& dojo, float width, const DojoEventLane& lane_of) {

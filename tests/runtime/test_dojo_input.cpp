@@ -204,6 +204,10 @@ TEST_CASE("dojo input: an event added at the playhead, a curve key dragged (one 
     REQUIRE(arm->rot);
     CHECK(arm->rot->z > 62.0);  // dragged up from 60
     CHECK(arm->rot->y == 22.5); // the other axes untouched
+    // A vertical drag moves the value only: the key's time is exactly where it was.
+    const auto shipped = anim::load_animation_file(shipped_clips());
+    REQUIRE(shipped);
+    CHECK(pose->phases[0].duration == shipped->find_clip("shoot_pose")->phases[0].duration);
 
     // Outside the editor: a clip added to the file. The dojo notices, and Reload reads it.
     {

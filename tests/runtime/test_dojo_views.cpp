@@ -72,8 +72,8 @@ TEST_CASE("dojo curve view: a node's channel drawn over the clip's time, one han
     CHECK(keys[0][0].get<float>() > 660.0f);
     CHECK(keys[1][0].get<float>() > keys[0][0].get<float>());
     CHECK(keys[0][1].get<float>() == doctest::Approx(keys[1][1].get<float>()).epsilon(0.01));
-    // The segments' two shades of blue and teal, in the plot.
-    auto segment = [](int r, int g, int b) { return b > 190 && g > 170 && r > 90 && r < 150; };
+    // The curve in its axis' colour (x: red), in the plot.
+    auto segment = [](int r, int g, int b) { return r > 200 && g > 70 && g < 110 && b > 70 && b < 110; };
     const int drawn = count_pixels(death.image, 660, 290, 1270, 510, segment);
     INFO("curve pixels: " << drawn);
     CHECK(drawn > 150);
