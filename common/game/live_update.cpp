@@ -31,6 +31,33 @@ const Record* find_by_entity(std::span<const Record> records, int entity_id) {
     return nullptr;
 }
 
+// What the navigation mesh is built from (nav/nav_input.cpp): doors, brushes, models and every entity with
+// a solid shape.
+bool shapes_navigation(const level::Entity& e) {
+    const auto type = e.type();
+    return type == level::EntityType::Door || type == level::EntityType::Brush ||
+           type == level::EntityType::Model || level::static_solid_shape(e).has_value();
+}
+
+// The edit left the mesh's input as it was: the same solids, in the same order, with the same place and
+// props (names and links do not matter to it), and the same level settings.
+bool same_navigation_input(const level::Level& a, const level::Level& b) {
+    if (!(a.settings == b.settings)) return false;
+    auto next = [](const level::Level& lv, std::size_t& i) -> const level::Entity* {
+        while (i < lv.entities.size() && !shapes_navigation(lv.entities[i])) ++i;
+        return i < lv.entities.size() ? &lv.entities[i++] : nullptr;
+    };
+    std::size_t i = 0, k = 0;
+    for (;;) {
+        const level::Entity* x = next(a, i);
+        const level::Entity* y = next(b, k);
+        if (!x || !y) return x == y;
+        if (x->id != y->id || x->position != y->position || x->rotation != y->rotation ||
+            !(x->props == y->props))
+            return false;
+    }
+}
+
 } // namespace
 
 // Friend of the Game and its systems (one line in each header): the only code that writes their state
@@ -218,6 +245,11 @@ std::string LiveRebuild::summary() const {
 
 Result<LiveRebuild> rebuild_for_edit(const Game& running, const level::Level& before,
                                      const level::Level& edited, GameOptions options) {
+    // An edit that left the solids alone (robots, lights, links, spawners, triggers...) keeps the mesh:
+    // the build copies the running game's (a view of it, not owned: it is copied before create returns).
+    if (!options.navigation && running.navigation() && same_navigation_input(before, edited))
+        options.navigation =
+            std::shared_ptr<const nav::NavMesh>(std::shared_ptr<void>(), running.navigation());
     auto built = Game::create(edited, std::move(options));
     if (!built) return built.error();
     LiveRebuild out;

@@ -9,7 +9,9 @@
 // (a moved player start does not move a player already playing); the step count, the random sequence and
 // the phase go on. Robots a spawner made come along while alive and their spawner still exists. Delayed
 // link actions still waiting are dropped (their link may be gone), and the message on screen is kept when
-// its entity is. A moved door keeps how open it is. The navigation mesh is built again from the new level.
+// its entity is. A moved door keeps how open it is. The navigation mesh is built again when the edit
+// changed what it is made of (solids, doors, brushes, models, level settings), else copied from the running
+// game.
 #include "core/result.h"
 #include "game/game.h"
 #include "level/level.h"
