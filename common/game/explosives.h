@@ -38,6 +38,7 @@ class Explosives {
     std::span<const Cylinder> cylinders() const { return cylinders_; }
 
   private:
+    friend struct LiveCarry; // live_update.cpp
     GameCore& core_;
     PlayerSystem& player_;
     RobotSystem& robots_;

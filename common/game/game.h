@@ -116,6 +116,7 @@ class Game {
     bool complete_objective(std::string_view id) { return logic_.complete_objective(id); }
 
   private:
+    friend struct LiveCarry; // live_update.cpp: the state an edit carries over
     explicit Game(GameOptions options);
     Result<void> build(const level::Level& level);
     // Walls, floors, props, lights, cylinders and panels: a static body each (and their systems' records).

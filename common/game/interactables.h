@@ -95,6 +95,7 @@ class Interactables {
     int interact_target() const { return interact_target_; }
 
   private:
+    friend struct LiveCarry; // live_update.cpp
     void interact(int entity_id);
 
     GameCore& core_;

@@ -157,6 +157,7 @@ class LevelLogic {
     void clear_records() { records_.clear(); }
 
   private:
+    friend struct LiveCarry; // live_update.cpp
     // Schedules every link in `range` whose event is `event`: a zero-delay link runs in this step, the
     // others wait in the queue. A fired once link is skipped.
     void fire(LinkRange range, level::LinkEvent event);

@@ -68,6 +68,7 @@ class PlayerSystem {
     DeathCamera death_camera() const;
 
   private:
+    friend struct LiveCarry; // live_update.cpp
     void feet_events(bool was_grounded, const Vec3& old_velocity, const Vec3& ground_normal, float dt);
     void fire_shot();
 

@@ -124,6 +124,7 @@ class RobotSystem {
     const std::string& navigation_error() const { return navigation_error_; }
 
   private:
+    friend struct LiveCarry; // live_update.cpp
     void warn_missing_event_sounds(const std::string& source) const;
     void update_robot(std::size_t index, float dt);
     void hold_dormant(std::size_t index, float dt);

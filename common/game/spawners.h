@@ -53,6 +53,7 @@ class Spawners {
     std::span<const SpawnerState> spawners() const { return spawners_; }
 
   private:
+    friend struct LiveCarry; // live_update.cpp
     bool spawn_robot(SpawnerState& s, LevelLogic& logic);
     // False (and `s` stuck, the reason reported) when no navigation mesh lies within reach of it.
     bool has_ground(SpawnerState& s, LevelLogic& logic);

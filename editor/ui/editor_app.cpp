@@ -172,7 +172,7 @@ bool EditorApp::poll_background() {
     const std::uint64_t logged = log_.revision(), prefabs = editor_.prefabs().revision();
     const std::uint64_t revision = editor_.revision();
     const bool playing = play_.running();
-    play_.poll();
+    const bool edit_waiting = play_.poll(editor_.level(), editor_.revision());
     if (!shell_.screenshot_mode()) {
         if (auto r = autosaver_.update(editor_); !r)
             log_line("autosave: " + r.error().str(), true);
@@ -181,7 +181,7 @@ bool EditorApp::poll_background() {
     }
     if (!dojo_tab_) prefabs_.rescan(editor_, log_, glfwGetWindowAttrib(shell_.window(), GLFW_FOCUSED) != 0);
     return log_.revision() != logged || editor_.prefabs().revision() != prefabs ||
-           editor_.revision() != revision || play_.running() != playing;
+           editor_.revision() != revision || play_.running() != playing || edit_waiting;
 }
 
 void EditorApp::update_title() {

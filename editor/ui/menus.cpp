@@ -96,7 +96,7 @@ void EditorApp::menu_bar() {
             play_.start(editor_.level(), nullptr);
         if (ImGui::MenuItem("Play from camera", "Shift+F5", false, !play_.running()))
             play_.start(editor_.level(), &viewport_.camera());
-        if (ImGui::MenuItem("Stop", nullptr, false, play_.running())) play_.stop();
+        if (ImGui::MenuItem("Stop play-test", nullptr, false, play_.running())) play_.stop();
         ImGui::Separator();
         if (ImGui::MenuItem("Analyze (bot play-tests)", nullptr, false, !analysis_.running()))
             analysis_.start(editor_.level(), editor_.file_path());

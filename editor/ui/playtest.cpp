@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
+#include <string_view>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -63,8 +64,8 @@ PlayTest::~PlayTest() {
     // only no longer reaped by us.
 }
 
-Result<void> PlayTest::start(const std::filesystem::path& runtime,
-                             const std::vector<std::string>& arguments) {
+Result<void> PlayTest::start(const std::filesystem::path& runtime, const std::vector<std::string>& arguments,
+                             const std::vector<std::pair<std::string, std::string>>& environment) {
     if (running()) return Error{"a play-test is already running", {}, "close the game window first"};
     std::error_code ec;
     if (!std::filesystem::exists(runtime, ec))
@@ -78,6 +79,18 @@ Result<void> PlayTest::start(const std::filesystem::path& runtime,
     std::vector<char*> argv;
     for (auto& a : argv_text) argv.push_back(a.data());
     argv.push_back(nullptr);
+    // The child's environment is made here: between fork and exec only async-signal-safe calls are allowed.
+    std::vector<std::string> env_text;
+    for (char** e = environ; *e; ++e) {
+        const std::string_view entry(*e);
+        bool replaced = false;
+        for (const auto& [name, value] : environment) replaced |= entry.starts_with(name + "=");
+        if (!replaced) env_text.emplace_back(entry);
+    }
+    for (const auto& [name, value] : environment) env_text.push_back(name + "=" + value);
+    std::vector<char*> envp;
+    for (auto& e : env_text) envp.push_back(e.data());
+    envp.push_back(nullptr);
     const pid_t pid = fork();
     if (pid < 0) {
         close(fds[0]);
@@ -89,7 +102,7 @@ Result<void> PlayTest::start(const std::filesystem::path& runtime,
         dup2(fds[1], STDERR_FILENO);
         close(fds[0]);
         close(fds[1]);
-        execv(argv[0], argv.data());
+        execve(argv[0], argv.data(), envp.data());
         std::fprintf(stderr, "could not start %s: %s\n", argv[0], std::strerror(errno));
         _exit(127);
     }

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <sys/types.h>
+#include <utility>
 #include <vector>
 
 namespace ks::editor::ui {
@@ -42,7 +43,9 @@ std::vector<std::string> playtest_arguments(const std::filesystem::path& level,
 class PlayTest {
   public:
     ~PlayTest();
-    Result<void> start(const std::filesystem::path& runtime, const std::vector<std::string>& arguments);
+    // `environment`: variables added to the editor's own for the child (the live play-test's channel).
+    Result<void> start(const std::filesystem::path& runtime, const std::vector<std::string>& arguments,
+                       const std::vector<std::pair<std::string, std::string>>& environment = {});
     // Reads whatever output is waiting and reaps the child when it ended; appends complete lines to `lines`.
     void poll(std::vector<std::string>& lines);
     bool running() const { return pid_ > 0; }

@@ -29,7 +29,13 @@ void PlayTestLauncher::start(const level::Level& level, const ViewCamera* camera
     const fs::path runtime = playtest_runtime(executable_dir_);
     const auto args = playtest_arguments(play_file_, start, query_runtime_options(runtime));
     play_exit_code_.reset();
-    if (auto r = play_.start(runtime, args); !r) {
+    std::vector<std::pair<std::string, std::string>> environment;
+    if (auto live = live_.open(); !live)
+        log_line("live play-test off (the game runs on the saved copy): " + live.error().str(), true);
+    else
+        environment = std::move(*live);
+    if (auto r = play_.start(runtime, args, environment); !r) {
+        live_.close();
         log_line("play-test: " + r.error().str(), true);
         return;
     }
@@ -40,7 +46,7 @@ void PlayTestLauncher::start(const level::Level& level, const ViewCamera* camera
     log_line(line);
 }
 
-void PlayTestLauncher::poll() {
+bool PlayTestLauncher::poll(const level::Level& level, std::uint64_t revision) {
     std::vector<std::string> lines;
     play_.poll(lines);
     for (auto& l : lines) log_line("[game] " + l, l.find("error") != std::string::npos);
@@ -52,7 +58,9 @@ void PlayTestLauncher::poll() {
                  code != 0);
         play_exit_code_ = code;
         play_file_.clear();
+        live_.close();
     }
+    return live_.poll(level, revision);
 }
 
 void PlayTestLauncher::status(nlohmann::json& s) const {
@@ -61,6 +69,7 @@ void PlayTestLauncher::status(nlohmann::json& s) const {
     play["running"] = play_.running();
     play["command"] = play_command_;
     play["exit_code"] = play_exit_code_ ? json(*play_exit_code_) : json(nullptr);
+    live_.status(play);
     s["playtest"] = play;
 }
 

@@ -5,10 +5,12 @@
 #include "level/level.h"
 #include "ui/editor_log.h"
 #include "ui/playtest.h"
+#include "ui/playtest_live.h"
 #include "view/view_camera.h"
 
 #include <nlohmann/json_fwd.hpp>
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -23,9 +25,11 @@ class PlayTestLauncher {
 
     // `camera` set: the player starts under it, facing where it looks; else at the level's player start.
     void start(const level::Level& level, const ViewCamera* camera);
-    void poll(); // the runtime's output into the log; the exit once it ended
+    // The runtime's output into the log, the exit once it ended, and the live play-test's edits to the game
+    // (playtest_live.h). True while an edit waits to be sent (another frame is wanted).
+    bool poll(const level::Level& level, std::uint64_t revision);
     bool running() const { return play_.running(); }
-    void stop() { play_.stop(); }
+    void stop() { play_.stop(); }              // Play > Stop play-test
     void status(nlohmann::json& status) const; // "playtest"
 
   private:
@@ -34,6 +38,7 @@ class PlayTestLauncher {
     EditorLog& log_;
     std::filesystem::path executable_dir_;
     PlayTest play_;
+    LivePlayLink live_{log_};
     std::filesystem::path play_file_;
     std::vector<std::string> play_command_; // the last play-test's runtime and arguments
     std::optional<int> play_exit_code_;     // the last play-test's exit code, once it ended

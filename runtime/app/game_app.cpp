@@ -229,6 +229,7 @@ int GameApp::run() {
     hooks.imgui = [this](const shell::FrameInfo& info) { imgui(info); };
     hooks.wants_close = [this]() { return quit_; };
     hooks.animating = [this]() { return animating(); };
+    hooks.idle_poll = [this]() { return live_.has_value(); }; // paused: the editor's edits still arrive
     int code = shell_.run(hooks);
     if (code == 0) code = exit_code_;
     events_.uninstall();

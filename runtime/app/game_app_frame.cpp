@@ -127,6 +127,7 @@ void GameApp::render(const shell::FrameInfo& info) {
 void GameApp::imgui(const shell::FrameInfo& info) {
     const float w = static_cast<float>(info.width), h = static_cast<float>(info.height);
     ImGuiIO& io = ImGui::GetIO();
+    poll_live();
     ui::begin_frame();
     // While a rebind waits (and until the mouse button it bound is let go) ImGui must not see the keys and
     // clicks: they are the binding, not menu input.
@@ -144,6 +145,7 @@ void GameApp::imgui(const shell::FrameInfo& info) {
     else
         io.ConfigFlags |= kNav;
     draw_world_overlay(w, h);
+    draw_live_toast(w);
     apply_menu_action(draw_screen(w, h));
     if (audio_ && screen_ != Screen::Playing) audio_->menu_sounds(ui::buttons_drawn());
     write_status(info);
@@ -224,7 +226,7 @@ MenuAction GameApp::draw_screen(float w, float h) {
         break;
     }
     case Screen::Paused:
-        action = pause_menu(fonts, w, h);
+        action = pause_menu(fonts, w, h, live_.has_value());
         // Clicking back into the game (outside the panel) resumes, as the reference's pointer lock.
         if (action == MenuAction::None && interactive() && ImGui::IsMouseClicked(0) && !io.WantCaptureMouse)
             action = MenuAction::Resume;
@@ -312,6 +314,9 @@ void GameApp::apply_menu_action(MenuAction action) {
         break;
     case MenuAction::Quit:
         quit_ = true;
+        break;
+    case MenuAction::BackToEditor:
+        back_to_editor();
         break;
     case MenuAction::Resume:
         resume();

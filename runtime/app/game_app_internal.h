@@ -27,6 +27,7 @@
 #include "runtime/model/campaign_progress.h"
 #include "runtime/model/campaign_save.h"
 #include "runtime/model/input_script.h"
+#include "runtime/model/live_edits.h"
 #include "runtime/model/options.h"
 #include "runtime/model/screen_table.h"
 #include "runtime/model/step_budget.h"
@@ -94,6 +95,7 @@ class GameApp {
         apply_render_options();
         logic_debug_visible_ = options_.logic_debugger;
         events_.install(shell_.window());
+        start_live();
     }
 
     // Command-line automation: the screen to show and the scenario to set up (tests and screenshots).
@@ -172,6 +174,11 @@ class GameApp {
     void write_status(const shell::FrameInfo& info);
     // F3 and the debugger's keys while playing; the mouse freed while it is halted (logic_debug_overlay.h).
     void handle_logic_debug_keys();
+    // The live play-test (game_app_live.cpp): the editor's edits, their toast, Back to editor.
+    void start_live();
+    void poll_live();
+    void draw_live_toast(float w);
+    void back_to_editor();
     void write_logic_status(std::string& s) const;
     void write_campaign_status(std::string& s) const;
     // Real input drives the app: not a screenshot run, or a screenshot run driven by --input-script.
@@ -217,6 +224,9 @@ class GameApp {
     LogicDebugOverlay logic_debug_;
     bool logic_debug_visible_ = false;     // options_.logic_debugger, or --logic-break
     bool logic_debug_freed_mouse_ = false; // the halted debugger released the mouse (taken back on resume)
+    std::optional<LiveEdits> live_;        // started from the editor, live (game_app_live.cpp)
+    live::LiveNote live_toast_;
+    double live_toast_until_ = 0.0;
     std::vector<render::MeshInstance> no_instances_;
     std::vector<render::Light> no_lights_;
 };

@@ -38,6 +38,9 @@ void GameApp::write_status(const shell::FrameInfo& info) {
     add("sound master %.2f effects %.2f ambience %.2f muted %d", options_.master_volume,
         options_.effects_volume, options_.ambience_volume, options_.muted ? 1 : 0);
     add("difficulty %s", game::difficulty_name(options_.difficulty));
+    if (live_) // started from the editor: the live play-test's channel and the edits played
+        add("live %s applied %d refused %d", live_->connected() ? "connected" : "waiting", live_->applied(),
+            live_->refused());
     if (audio_) {
         const audio::AudioStats a = audio_->engine().stats();
         add("audio output %d voices %d cues %d", a.output ? 1 : 0, a.active_voices,

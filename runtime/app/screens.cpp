@@ -101,12 +101,13 @@ MenuAction main_menu(const std::string& error, const shell::Fonts& fonts, float 
     return action;
 }
 
-MenuAction pause_menu(const shell::Fonts& fonts, float w, float h) {
+MenuAction pause_menu(const shell::Fonts& fonts, float w, float h, bool back_to_editor) {
     ui::draw_backdrop(ImGui::GetBackgroundDrawList(), w, h, 0.8f);
     MenuAction action = MenuAction::None;
-    ui::begin_panel("##pause", "Paused", 560, 440, w, h, fonts);
+    ui::begin_panel("##pause", "Paused", 560, back_to_editor ? 510 : 440, w, h, fonts);
     ui::centred_text("Click outside this panel or press Resume to play on.", fonts.body);
     if (ui::big_button("Resume", fonts)) action = MenuAction::Resume;
+    if (back_to_editor && ui::big_button("Back to editor", fonts)) action = MenuAction::BackToEditor;
     if (ui::big_button("How to Play", fonts)) action = MenuAction::HowTo;
     if (ui::big_button("Options", fonts)) action = MenuAction::Options;
     if (ui::big_button("Credits", fonts)) action = MenuAction::Credits;

@@ -27,12 +27,13 @@ enum class MenuAction {
     Resume,
     MainMenu,
     Retry,
-    Back
+    Back,
+    BackToEditor // the pause menu of a game the editor started live
 };
 
 void loading_screen(float fraction, const std::string& step, const shell::Fonts& fonts, float w, float h);
 MenuAction main_menu(const std::string& error, const shell::Fonts& fonts, float w, float h);
-MenuAction pause_menu(const shell::Fonts& fonts, float w, float h);
+MenuAction pause_menu(const shell::Fonts& fonts, float w, float h, bool back_to_editor = false);
 MenuAction death_menu(const shell::Fonts& fonts, float w, float h);
 // A single level won (Play, a custom level): its time, robots and accuracy, Play Again or Main Menu.
 MenuAction win_menu(const LevelResult& result, const shell::Fonts& fonts, float w, float h);

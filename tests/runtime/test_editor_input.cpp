@@ -1,7 +1,8 @@
 // Drives the real killswitch-editor window the way a designer does, with real X input events (xdotool,
 // under Xvfb): pick a palette entry and click in the top view to place it, click to select, drag the gizmo's
 // x arrow, Ctrl+Z / Ctrl+Y, Ctrl+S; and F5 / Shift+F5 play-tests through a substitute runtime
-// ($KS_PLAYTEST_COMMAND) that records its arguments and the level file it was given, and fails on request.
+// ($KS_PLAYTEST_COMMAND) that records its arguments and the level file it was given, and fails on request;
+// and an edit reaching the real game that F5 started (the live play-test).
 // The editor reports its state in --status-file every frame; the test waits on that state, never on time.
 // Each case runs the editor on an X server of its own: ctest runs other GL tests in parallel, and a window
 // of theirs taking the focus makes ImGui 1.86's GLFW backend stop reading the mouse position (it reads it
@@ -16,8 +17,10 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <fstream>
+#include <thread>
 
 using namespace ks;
 using nlohmann::json;
@@ -283,4 +286,68 @@ TEST_CASE(
     CHECK(st["dojo"]["undo"] == 1); // the added key's step remains
     CHECK(st["dojo"]["redo"] == 1);
     CHECK(*files::read_text(shipped) == *shipped_before); // nothing was saved
+}
+
+TEST_CASE(
+    "editor input: with the real game started by F5, deleting a robot in the editor reaches the running "
+    "game without a restart") {
+    REQUIRE_MESSAGE((ks::test::have_display() && test::have_xdotool()),
+                    "no DISPLAY or xdotool: live play-test input test cannot run");
+    test::ScratchDir dir;
+    build_input_level(dir.path());
+    // The real runtime, in a small window, reporting its state; its pid kept so the test can end it.
+    const auto wrapper = dir / "live_runtime.sh";
+    const auto game_status = dir / "game_status.txt", game_pid = dir / "game.pid";
+    test::write_file(wrapper, "#!/bin/sh\necho $$ > '" + game_pid.string() + "'\nexec '" +
+                                  (test::bin_dir() / "killswitch").string() +
+                                  "' \"$@\" --width 320 --height 240 " + "--status-file '" +
+                                  game_status.string() + "'\n");
+    std::filesystem::permissions(wrapper, std::filesystem::perms::owner_all);
+    const auto status = dir / "status.json";
+    const test::PrivateDisplay display;
+    EditorProcess editor({"--level", (dir / "input.json").string(), "--width", "960", "--height", "540",
+                          "--status-file", status.string()},
+                         {"XDG_CONFIG_HOME=" + (dir / "config").string(),
+                          "XDG_DATA_HOME=" + (dir / "data").string(),
+                          "KS_PLAYTEST_COMMAND=" + wrapper.string()},
+                         display);
+    Session s(status, editor, display);
+    json st = s.wait("first frames", [](const json& j) { return j["frame"] >= 2; });
+    int robot = 0;
+    {
+        auto level = level::load_level_file(dir / "input.json");
+        REQUIRE(level);
+        for (const auto& e : level->entities)
+            if (e.type() == level::EntityType::Robot) robot = e.id;
+    }
+    s.click(st["screen"][std::to_string(robot)]); // selected before the game's window opens over it
+    s.wait("robot selected", [&](const json& j) { return selection(j) == std::vector<int>{robot}; });
+    s.key("F5");
+    s.wait("the game connected", [](const json& j) { return j["playtest"]["live"]["connected"] == true; });
+    auto game_says = [&](const std::string& line) {
+        std::error_code ec;
+        return std::filesystem::exists(game_status, ec) &&
+               test::read_file(game_status).find("\n" + line) != std::string::npos;
+    };
+    for (int i = 0; i < 900 && !game_says("robots 1 "); ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    REQUIRE(game_says("robots 1 "));
+
+    // Timed from before the key is sent: the key's own round trip counts against the second.
+    const auto deleted = std::chrono::steady_clock::now();
+    s.key("Delete");
+    while (!game_says("robots 0 ") && std::chrono::steady_clock::now() - deleted < std::chrono::seconds(30))
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - deleted).count();
+    MESSAGE("edit to game: " << seconds << " s");
+    CHECK(game_says("robots 0 "));
+    CHECK(game_says("live connected applied 1 refused 0"));
+    // The second of the requirement, with the key's own round trip (a frame must see it) and software GL on
+    // a machine shared with other suites on top: twice the second, outside ASan's several times slower build.
+    if (!test::sanitized_build()) CHECK(seconds < 2.0);
+    st = s.wait("applied reported", [](const json& j) { return j["playtest"]["live"]["applied"] == 1; });
+    CHECK(st["playtest"]["live"]["last_answer"].get<std::string>().find("1 removed") != std::string::npos);
+    const pid_t pid = std::stoi(test::read_file(game_pid));
+    ::kill(pid, SIGTERM);
+    s.wait("play-test ended", [](const json& j) { return j["playtest"]["running"] == false; });
 }
