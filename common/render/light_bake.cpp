@@ -109,9 +109,9 @@ BakeSettings BakeSettings::preview() {
 BakeSettings BakeSettings::full() {
     BakeSettings s;
     s.texel_size = 0.5f;
-    s.bounce_samples = 64;
+    s.bounce_samples = 32;
     s.indirect_stride = 2;
-    s.ao_samples = 32;
+    s.ao_samples = 16;
     return s;
 }
 
