@@ -133,6 +133,7 @@ class LightBake {
     void compute_direct(const Environment& env, const std::vector<Light>& lights, BakeProgress* progress);
     // Ambient occlusion into ambient_, the bounce into base_ and bounce_shares_; the rays it cast.
     long long compute_indirect(const BakeSettings& settings, BakeProgress* progress);
+    void gather_face(const Face& face, Gather& scratch) const; // one face's occlusion and bounce
     // The nearest solid a ray meets within `length`: the face it enters (-1: none known, or the ray starts
     // inside a solid) and the distance; false when it escapes.
     bool nearest_hit(const Vec3& from, const Vec3& dir, float length, const std::vector<int>& candidates,

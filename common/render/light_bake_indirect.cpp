@@ -88,19 +88,103 @@ bool LightBake::nearest_hit(const Vec3& from, const Vec3& dir, float length,
 
 // One thread's scratch, reused face after face: the inner loops allocate nothing once it has grown.
 struct LightBake::Gather {
+    // The pass's inputs and outputs (each face writes its own texels only).
+    int ao_samples = 0, bounce_samples = 0, stride = 1;
+    float ao_radius = 0.0f, bounce_distance = 0.0f;
+    std::uint32_t seed = 0;
+    size_t lights = 0;
+    const std::vector<std::uint32_t>* first = nullptr;                     // the lamps' direct light, CSR
+    const std::vector<std::pair<std::uint32_t, float>>* entries = nullptr; // (light, amount)
+    std::vector<Vec3>* ambient = nullptr;
+    std::vector<Vec3>* bounce = nullptr;
+    // Scratch.
     std::vector<int> near_ao, near_bounce;
     std::vector<Vec3> grid; // per gathering texel: the sun's bounce, then each light's
     std::vector<std::vector<ColorShare>> shares;
     long long rays = 0;
 };
 
+void LightBake::gather_face(const Face& f, Gather& g) const {
+    const Vec3 n = f.normal;
+    if (g.ao_samples > 0) {
+        near_occluders(f, g.ao_radius, g.near_ao);
+        for (int j = 0; j < f.h; ++j)
+            for (int i = 0; i < f.w; ++i) {
+                const auto index = static_cast<std::uint32_t>((f.y + j) * width_ + f.x + i);
+                const Vec2 offset = texel_offset(g.seed, index);
+                int open = 0;
+                for (int s = 0; s < g.ao_samples; ++s) {
+                    const Vec3 d = hemisphere_direction(s, g.ao_samples, offset, f.u_dir, f.v_dir, n);
+                    if (!occluded(points_[index], d, g.ao_radius, false, &g.near_ao)) ++open;
+                }
+                g.rays += g.ao_samples;
+                (*g.ambient)[index] *= static_cast<float>(open) / static_cast<float>(g.ao_samples);
+            }
+    }
+    if (g.bounce_samples == 0) return;
+    near_occluders(f, g.bounce_distance, g.near_bounce);
+    // The gathering texels: every stride-th along each axis, and the last.
+    const int gw = (f.w - 2) / g.stride + 2, gh = (f.h - 2) / g.stride + 2;
+    auto grid_texel = [&](int k, int size) { return std::min(k * g.stride, size - 1); };
+    const size_t slots = 1 + g.lights;
+    g.grid.assign(static_cast<size_t>(gw * gh) * slots, Vec3(0.0f));
+    const float weight = 1.0f / static_cast<float>(g.bounce_samples);
+    for (int gj = 0; gj < gh; ++gj)
+        for (int gi = 0; gi < gw; ++gi) {
+            const auto index =
+                static_cast<std::uint32_t>((f.y + grid_texel(gj, f.h)) * width_ + f.x + grid_texel(gi, f.w));
+            Vec3* out = &g.grid[static_cast<size_t>(gj * gw + gi) * slots];
+            const Vec2 offset = texel_offset(g.seed ^ 0x5bd1e995u, index);
+            for (int s = 0; s < g.bounce_samples; ++s) {
+                const Vec3 d = hemisphere_direction(s, g.bounce_samples, offset, f.u_dir, f.v_dir, n);
+                int hit_face = -1;
+                float t = 0.0f;
+                if (!nearest_hit(points_[index], d, g.bounce_distance, g.near_bounce, hit_face, t) ||
+                    hit_face < 0)
+                    continue;
+                const Face& h = faces_[static_cast<size_t>(hit_face)];
+                if (glm::dot(h.normal, d) >= 0.0f) continue; // its back: inside a solid
+                const Vec3 q = points_[index] + d * t - h.origin;
+                const int hi = std::clamp(
+                    static_cast<int>(std::lround(glm::dot(q, h.u_dir) / h.extent.x * (h.w - 1))), 0, h.w - 1);
+                const int hj = std::clamp(
+                    static_cast<int>(std::lround(glm::dot(q, h.v_dir) / h.extent.y * (h.h - 1))), 0, h.h - 1);
+                const auto hit = static_cast<size_t>((h.y + hj) * width_ + h.x + hi);
+                const Vec3 a = h.albedo * weight;
+                out[0] += a * sun_[hit];
+                if (!g.first->empty())
+                    for (std::uint32_t e = (*g.first)[hit]; e < (*g.first)[hit + 1]; ++e)
+                        out[1 + (*g.entries)[e].first] += a * (*g.entries)[e].second;
+            }
+            g.rays += g.bounce_samples;
+        }
+    // Every texel: bilinear between the four gathering texels around it.
+    for (int j = 0; j < f.h; ++j)
+        for (int i = 0; i < f.w; ++i) {
+            const int gi = std::min(i / g.stride, gw - 2), gj = std::min(j / g.stride, gh - 2);
+            const float fx = static_cast<float>(i - grid_texel(gi, f.w)) /
+                             static_cast<float>(std::max(1, grid_texel(gi + 1, f.w) - grid_texel(gi, f.w)));
+            const float fy = static_cast<float>(j - grid_texel(gj, f.h)) /
+                             static_cast<float>(std::max(1, grid_texel(gj + 1, f.h) - grid_texel(gj, f.h)));
+            const Vec3* c00 = &g.grid[static_cast<size_t>(gj * gw + gi) * slots];
+            const Vec3* c10 = c00 + slots;
+            const Vec3* c01 = c00 + static_cast<size_t>(gw) * slots;
+            const Vec3* c11 = c01 + slots;
+            const auto index = static_cast<std::uint32_t>((f.y + j) * width_ + f.x + i);
+            for (size_t k = 0; k < slots; ++k) {
+                const Vec3 v = glm::mix(glm::mix(c00[k], c10[k], fx), glm::mix(c01[k], c11[k], fx), fy);
+                if (k == 0)
+                    (*g.bounce)[index] = v;
+                else if (v.x + v.y + v.z > 1e-6f)
+                    g.shares[k - 1].push_back({index, v});
+            }
+        }
+}
+
 long long LightBake::compute_indirect(const BakeSettings& settings, BakeProgress* progress) {
     const size_t count = points_.size(), lights = shares_.size();
     const int ao_samples = std::max(0, settings.ao_samples),
               bounce_samples = std::max(0, settings.bounce_samples);
-    const int stride = std::max(1, settings.indirect_stride);
-    const float ao_radius = std::max(0.0f, settings.ao_radius);
-    const float bounce_distance = std::max(0.0f, settings.bounce_distance);
     // Each texel's direct light from the lamps, as (light, amount) lists in texel order (CSR), for the
     // bounce rays to read at the texel they hit.
     std::vector<std::uint32_t> first(bounce_samples > 0 && lights > 0 ? count + 1 : 0, 0);
@@ -130,86 +214,6 @@ long long LightBake::compute_indirect(const BakeSettings& settings, BakeProgress
     std::atomic<size_t> next{0};
     std::atomic<long long> done{0};
 
-    auto gather_face = [&](const Face& f, Gather& g) {
-        const Vec3 n = f.normal;
-        if (ao_samples > 0) {
-            near_occluders(f, ao_radius, g.near_ao);
-            for (int j = 0; j < f.h; ++j)
-                for (int i = 0; i < f.w; ++i) {
-                    const auto index = static_cast<std::uint32_t>((f.y + j) * width_ + f.x + i);
-                    const Vec2 offset = texel_offset(settings.seed, index);
-                    int open = 0;
-                    for (int s = 0; s < ao_samples; ++s) {
-                        const Vec3 d = hemisphere_direction(s, ao_samples, offset, f.u_dir, f.v_dir, n);
-                        if (!occluded(points_[index], d, ao_radius, false, &g.near_ao)) ++open;
-                    }
-                    g.rays += ao_samples;
-                    ambient[index] *= static_cast<float>(open) / static_cast<float>(ao_samples);
-                }
-        }
-        if (bounce_samples == 0) return;
-        near_occluders(f, bounce_distance, g.near_bounce);
-        // The gathering texels: every stride-th along each axis, and the last.
-        const int gw = (f.w - 2) / stride + 2, gh = (f.h - 2) / stride + 2;
-        auto grid_texel = [&](int k, int size) { return std::min(k * stride, size - 1); };
-        const size_t slots = 1 + lights;
-        g.grid.assign(static_cast<size_t>(gw * gh) * slots, Vec3(0.0f));
-        const float weight = 1.0f / static_cast<float>(bounce_samples);
-        for (int gj = 0; gj < gh; ++gj)
-            for (int gi = 0; gi < gw; ++gi) {
-                const auto index = static_cast<std::uint32_t>((f.y + grid_texel(gj, f.h)) * width_ + f.x +
-                                                              grid_texel(gi, f.w));
-                Vec3* out = &g.grid[static_cast<size_t>(gj * gw + gi) * slots];
-                const Vec2 offset = texel_offset(settings.seed ^ 0x5bd1e995u, index);
-                for (int s = 0; s < bounce_samples; ++s) {
-                    const Vec3 d = hemisphere_direction(s, bounce_samples, offset, f.u_dir, f.v_dir, n);
-                    int hit_face = -1;
-                    float t = 0.0f;
-                    if (!nearest_hit(points_[index], d, bounce_distance, g.near_bounce, hit_face, t) ||
-                        hit_face < 0)
-                        continue;
-                    const Face& h = faces_[static_cast<size_t>(hit_face)];
-                    if (glm::dot(h.normal, d) >= 0.0f) continue; // its back: inside a solid
-                    const Vec3 q = points_[index] + d * t - h.origin;
-                    const int hi = std::clamp(
-                        static_cast<int>(std::lround(glm::dot(q, h.u_dir) / h.extent.x * (h.w - 1))), 0,
-                        h.w - 1);
-                    const int hj = std::clamp(
-                        static_cast<int>(std::lround(glm::dot(q, h.v_dir) / h.extent.y * (h.h - 1))), 0,
-                        h.h - 1);
-                    const auto hit = static_cast<size_t>((h.y + hj) * width_ + h.x + hi);
-                    const Vec3 a = h.albedo * weight;
-                    out[0] += a * sun_[hit];
-                    if (!first.empty())
-                        for (std::uint32_t e = first[hit]; e < first[hit + 1]; ++e)
-                            out[1 + entries[e].first] += a * entries[e].second;
-                }
-                g.rays += bounce_samples;
-            }
-        // Every texel: bilinear between the four gathering texels around it.
-        for (int j = 0; j < f.h; ++j)
-            for (int i = 0; i < f.w; ++i) {
-                const int gi = std::min(i / stride, gw - 2), gj = std::min(j / stride, gh - 2);
-                const float fx =
-                    static_cast<float>(i - grid_texel(gi, f.w)) /
-                    static_cast<float>(std::max(1, grid_texel(gi + 1, f.w) - grid_texel(gi, f.w)));
-                const float fy =
-                    static_cast<float>(j - grid_texel(gj, f.h)) /
-                    static_cast<float>(std::max(1, grid_texel(gj + 1, f.h) - grid_texel(gj, f.h)));
-                const Vec3* c00 = &g.grid[static_cast<size_t>(gj * gw + gi) * slots];
-                const Vec3* c10 = c00 + slots;
-                const Vec3* c01 = c00 + static_cast<size_t>(gw) * slots;
-                const Vec3* c11 = c01 + slots;
-                const auto index = static_cast<std::uint32_t>((f.y + j) * width_ + f.x + i);
-                for (size_t k = 0; k < slots; ++k) {
-                    const Vec3 v = glm::mix(glm::mix(c00[k], c10[k], fx), glm::mix(c01[k], c11[k], fx), fy);
-                    if (k == 0)
-                        bounce[index] = v;
-                    else if (v.x + v.y + v.z > 1e-6f)
-                        g.shares[k - 1].push_back({index, v});
-                }
-            }
-    };
     auto work = [&](Gather& g) {
         g.shares.assign(lights, {});
         for (;;) {
@@ -226,6 +230,19 @@ long long LightBake::compute_indirect(const BakeSettings& settings, BakeProgress
     const bool indirect = ao_samples > 0 || bounce_samples > 0;
     const int threads = indirect ? std::max(1, settings.threads) : 0;
     std::vector<Gather> scratch(static_cast<size_t>(std::max(threads, 1)));
+    for (Gather& g : scratch) {
+        g.ao_samples = ao_samples;
+        g.bounce_samples = bounce_samples;
+        g.stride = std::max(1, settings.indirect_stride);
+        g.ao_radius = std::max(0.0f, settings.ao_radius);
+        g.bounce_distance = std::max(0.0f, settings.bounce_distance);
+        g.seed = settings.seed;
+        g.lights = lights;
+        g.first = &first;
+        g.entries = &entries;
+        g.ambient = &ambient;
+        g.bounce = &bounce;
+    }
     {
         std::vector<std::jthread> pool;
         for (int t = 1; t < threads; ++t)
