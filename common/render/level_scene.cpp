@@ -165,6 +165,31 @@ MeshData build_surface_mesh(const level::Entity& e) {
     return mesh;
 }
 
+namespace {
+// Each polygon's albedo for the bake's bounce: its material's base colour times its colour map's mean.
+std::vector<std::vector<Vec3>> surface_albedo(const std::vector<SolidGeometry>& geometry) {
+    std::vector<std::pair<const Material*, Vec3>> known;
+    std::vector<std::vector<Vec3>> out;
+    for (const SolidGeometry& g : geometry) {
+        std::vector<Vec3>& albedo = out.emplace_back(g.mesh.polygon_sizes.size(), Vec3(0.5f));
+        for (const auto& part : g.parts) {
+            if (!part.material) continue;
+            auto it = std::find_if(known.begin(), known.end(),
+                                   [&](const auto& k) { return k.first == part.material; });
+            if (it == known.end()) {
+                const Material& m = *part.material;
+                known.emplace_back(&m, Vec3(m.base_factor) * texture_mean_color(m.base_map, Vec3(1.0f)));
+                it = known.end() - 1;
+            }
+            for (std::uint32_t p = part.first_polygon;
+                 p < part.first_polygon + part.polygon_count && p < albedo.size(); ++p)
+                albedo[p] = it->second;
+        }
+    }
+    return out;
+}
+} // namespace
+
 LevelScene::Prop LevelScene::make_prop(const level::Entity& e, const Model* model, const Mat4& root) {
     Prop p;
     p.entity_id = e.id;
@@ -269,17 +294,22 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
         scene->bounds_ = geometry::merge(scene->bounds_, geometry::transform_aabb(p.model->bounds, p.root));
 
     // Bake the level geometry's light (every light, then switch off those that start off).
-    std::vector<BakeSurface> bake_surfaces;
-    for (auto& g : geometry) bake_surfaces.push_back({&g.mesh, g.casts_shadow});
-    std::vector<Light> bake_lights;
+    std::vector<Light>& bake_lights = scene->bake_lights_;
     for (auto& p : scene->props_)
         if (p.type == EntityType::FloorLight || p.type == EntityType::TopLight) {
             p.bake_light = static_cast<int>(bake_lights.size());
             bake_lights.push_back(p.light);
         }
     // Only the fast path reads the light map: GPUs (Full) skip the bake's CPU time.
-    if (options.bake_light_map)
-        scene->bake_stats_ = scene->bake_.bake(bake_surfaces, scene->environment_, bake_lights);
+    if (options.bake_light_map) {
+        std::vector<std::vector<Vec3>> albedo = surface_albedo(geometry);
+        std::vector<BakeSurface> bake_surfaces;
+        for (size_t i = 0; i < geometry.size(); ++i)
+            bake_surfaces.push_back({&geometry[i].mesh, geometry[i].casts_shadow, &albedo[i]});
+        scene->bake_stats_ = options.defer_bake ? scene->bake_.layout(bake_surfaces, options.bake)
+                                                : scene->bake_.bake(bake_surfaces, scene->environment_,
+                                                                    bake_lights, options.bake);
+    }
     for (const auto& p : scene->props_)
         if (p.bake_light >= 0) scene->bake_.set_light_on(p.bake_light, p.light_on);
     for (const auto& g : geometry) {
@@ -294,6 +324,14 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
     }
     if (!scene->bounds_.valid()) scene->bounds_ = {Vec3(-1.0f), Vec3(1.0f)};
     return scene;
+}
+
+void LevelScene::adopt_light_bake(LightBake bake, const BakeStats& stats) {
+    bake_ = std::move(bake);
+    bake_stats_ = stats;
+    for (const auto& p : props_)
+        if (p.bake_light >= 0) bake_.set_light_on(p.bake_light, p.light_on);
+    lightmap_stale_ = true;
 }
 
 void LevelScene::set_light_on(int id, bool on) {
@@ -350,7 +388,9 @@ void LevelScene::emit(std::vector<MeshInstance>& instances, std::vector<Light>& 
     lights.clear();
     if (casters) casters->clear();
     // A light switched since the last frame: re-combine the light map (milliseconds) and upload it.
-    if (bake_.update() || (lightmap_.id() == 0 && !bake_.texels().empty())) lightmap_.upload(bake_);
+    if (bake_.update() || lightmap_stale_ || (lightmap_.id() == 0 && !bake_.texels().empty()))
+        lightmap_.upload(bake_);
+    lightmap_stale_ = false;
     for (const auto& s : surfaces_) {
         MeshInstance inst;
         inst.mesh = s.mesh.get();

@@ -33,7 +33,12 @@ struct LevelSceneOptions {
     // Bake the light map that the fast path reads. false: the fast path lights the level geometry per vertex
     // (the editor's cheap rebuilds while a drag is in progress; a renderer on the full path never reads it).
     bool bake_light_map = true;
-    bool lightmap_float = false; // the texture's encoding: RendererSettings::lightmap_float
+    bool lightmap_float = false;              // the texture's encoding: RendererSettings::lightmap_float
+    BakeSettings bake = BakeSettings::full(); // the bake's quality (light_bake.h)
+    // Lay the light map out (the meshes' light-map coordinates) but leave computing it to the caller, who
+    // computes a copy of light_bake() on another thread and hands it back with adopt_light_bake() (the
+    // editor's preview bake). Until then the level geometry is lit per vertex.
+    bool defer_bake = false;
 };
 // The options that match a renderer's resolved settings: bake only for the fast path, same encoding.
 LevelSceneOptions level_scene_options(const RendererSettings& resolved);
@@ -61,6 +66,11 @@ class LevelScene {
     // when the options ask (level_scene_options: the renderer's quality is Fast); otherwise empty, and a
     // renderer switched to Fast lights the level geometry per vertex.
     const LightBake& light_bake() const { return bake_; }
+    // What a deferred bake computes with: light_bake().compute(environment(), bake_lights(), settings).
+    const std::vector<Light>& bake_lights() const { return bake_lights_; }
+    // Takes over a bake computed from a copy of light_bake() (this scene's layout), keeping the lights'
+    // switches; uploaded on the next emit().
+    void adopt_light_bake(LightBake bake, const BakeStats& stats);
     const BakeStats& bake_stats() const { return bake_stats_; }
     unsigned lightmap_texture() const { return lightmap_.id(); }
 
@@ -92,6 +102,8 @@ class LevelScene {
     geometry::Aabb bounds_ = geometry::Aabb::empty();
     LightBake bake_;
     BakeStats bake_stats_;
+    std::vector<Light> bake_lights_;
+    bool lightmap_stale_ = false; // a bake adopted since the last upload
     LightmapTexture lightmap_;
     std::vector<Mat4> scratch_;
     ModelPose pose_;

@@ -17,6 +17,35 @@ float lightmap_encoding_range(bool lightmap_float) {
     return lightmap_float ? 0.0f : kRange;
 }
 
+Vec3 texture_mean_color(unsigned texture, const Vec3& fallback) {
+    if (texture == 0) return fallback;
+    GLint previous = 0;
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &previous);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    GLint w = 0, h = 0;
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &w);
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &h);
+    Vec3 mean = fallback;
+    if (w > 0 && h > 0) {
+        const int top = static_cast<int>(std::floor(std::log2(static_cast<float>(std::max(w, h)))));
+        GLint tw = 0;
+        glGetTexLevelParameteriv(GL_TEXTURE_2D, top, GL_TEXTURE_WIDTH, &tw);
+        if (tw == 1) {
+            unsigned char rgba[16] = {};
+            glPixelStorei(GL_PACK_ALIGNMENT, 1);
+            glGetTexImage(GL_TEXTURE_2D, top, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+            // The stored (sRGB-encoded) bytes: decoded here.
+            auto linear = [](unsigned char b) {
+                const float v = static_cast<float>(b) / 255.0f;
+                return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+            };
+            mean = Vec3(linear(rgba[0]), linear(rgba[1]), linear(rgba[2]));
+        }
+    }
+    glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(previous));
+    return mean;
+}
+
 LightmapTexture::~LightmapTexture() {
     if (id_) glDeleteTextures(1, &id_);
 }

@@ -11,6 +11,10 @@ namespace ks::render {
 // sqrt(irradiance / range) in RGBA8.
 float lightmap_encoding_range(bool lightmap_float);
 
+// The mean linear colour of a mipmapped sRGB colour texture (its 1x1 mip level): the albedo the light
+// bake's bounce uses for a surface. `fallback` when the texture is 0 or has no such level.
+Vec3 texture_mean_color(unsigned texture, const Vec3& fallback);
+
 class LightmapTexture {
   public:
     explicit LightmapTexture(bool lightmap_float = false) : float_(lightmap_float) {}

@@ -112,11 +112,12 @@ void LevelViewport::status_line(ImDrawList* draw, Vec2 area) const {
     char text[256];
     char speed[48] = "";
     if (!quad_.on) std::snprintf(speed, sizeof(speed), "  |  fly speed %.1f u/s (wheel)", view_.speed);
-    std::snprintf(text, sizeof(text), "%s%s%s  |  grid %.2f %s  |  %s%s%s", quad_.on ? "4-up: " : "",
+    std::snprintf(text, sizeof(text), "%s%s%s  |  grid %.2f %s  |  %s%s%s%s", quad_.on ? "4-up: " : "",
                   view_mode_name(view_.mode), speed, editor.doc().grid.step,
                   editor.doc().grid.snap ? "snap" : "free", gizmo_label(gizmo_).c_str(),
                   gizmo_.readout().empty() && !face_drag_.dragging() ? "" : "  ",
-                  face_drag_.dragging() ? face_drag_.describe().c_str() : gizmo_.readout().c_str());
+                  face_drag_.dragging() ? face_drag_.describe().c_str() : gizmo_.readout().c_str(),
+                  scene_.bake_label().c_str());
     draw->PushClipRect(ImVec2(under.x, under.y), ImVec2(under.x + span.x, under.y + span.y), true);
     draw->AddRectFilled(ImVec2(under.x + 6, under.y + span.y - 26),
                         ImVec2(under.x + span.x - 6, under.y + span.y - 4), IM_COL32(15, 17, 22, 170), 4.0f);

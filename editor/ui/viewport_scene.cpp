@@ -86,10 +86,14 @@ void ViewportScene::rebuild_if_changed(const Editor& editor, std::uint64_t shown
     const bool continuous = editor.history().in_transaction() ||
                             (ImGui::GetCurrentContext() != nullptr && ImGui::IsAnyItemActive());
     const bool bake = !continuous;
+    if (scene_ && preview_bake_.finish(*scene_, scene_stats_.builds)) ++scene_stats_.bakes;
     if (scene_ && revision == scene_revision_ && (scene_baked_ || !bake)) return;
+    preview_bake_.cancel(); // its scene is about to go
     const std::clock_t cpu_start = std::clock();
     render::LevelSceneOptions options = render::level_scene_options(renderer_->settings());
     options.bake_light_map = options.bake_light_map && bake;
+    options.defer_bake = true; // computed by preview_bake_, on another thread
+    options.bake = render::BakeSettings::preview();
     const auto& entities = editor.level().entities;
     if (std::all_of(entities.begin(), entities.end(), shown)) {
         scene_ = render::LevelScene::build(editor.level(), assets_, options);
@@ -100,14 +104,14 @@ void ViewportScene::rebuild_if_changed(const Editor& editor, std::uint64_t shown
     }
     scene_stats_.last_build_cpu_ms = 1000.0 * static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
     ++scene_stats_.builds;
-    if (scene_->bake_stats().faces > 0) ++scene_stats_.bakes;
+    preview_bake_.start(*scene_, scene_stats_.builds); // nothing when not laid out (no bake asked)
     renderer_->invalidate_shadows();
     scene_revision_ = revision;
     scene_baked_ = bake;
 }
 
 void ViewportScene::emit() {
-    scene_->emit(instances_, lights_);
+    scene_->emit(instances_, lights_, &casters_);
 }
 
 bool ViewportScene::render_view(const ViewCamera& view, int width, int height, std::uint64_t& last_key,
@@ -120,10 +124,11 @@ bool ViewportScene::render_view(const ViewCamera& view, int width, int height, s
     frame.environment = scene_->environment();
     frame.instances = &instances_;
     frame.lights = &lights_;
+    frame.shadow_casters = &casters_;
     frame.debug = &debug_;
     frame.width = width;
     frame.height = height;
-    const std::uint64_t key = picture_key(frame, scene_stats_.builds);
+    const std::uint64_t key = picture_key(frame, scene_stats_.builds + (scene_stats_.bakes << 32));
     if (key == last_key) return false;
     last_key = key;
     renderer_->render(frame);
@@ -147,6 +152,8 @@ void ViewportScene::status(nlohmann::json& s) const {
     s["render_scale"] = renderer_ ? renderer_->render_scale() : 0.0f;
     s["scene"] = {{"builds", scene_stats_.builds},
                   {"bakes", scene_stats_.bakes},
+                  {"bake_running", preview_bake_.running()},
+                  {"last_bake_wall_ms", preview_bake_.last_wall_ms()},
                   {"last_build_cpu_ms", scene_stats_.last_build_cpu_ms}};
 }
 

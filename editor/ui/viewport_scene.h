@@ -9,6 +9,7 @@
 #include "render/debug_draw.h"
 #include "render/level_scene.h"
 #include "render/scene_renderer.h"
+#include "ui/preview_bake.h"
 #include "ui/render_target.h"
 #include "view/quad_view.h"
 #include "view/view_camera.h"
@@ -49,7 +50,8 @@ class ViewportScene {
     const RenderTarget& single_target() const { return single_target_; }
     const RenderTarget& pane_target(size_t pane) const { return pane_targets_[pane]; }
     unsigned long long pane_renders(size_t pane) const { return pane_renders_[pane]; }
-    void status(nlohmann::json& status) const; // "render_scale", "scene"
+    void status(nlohmann::json& status) const;                       // "render_scale", "scene"
+    std::string bake_label() const { return preview_bake_.label(); } // the status line's bake progress
 
   private:
     // The picture into the bound target; false: skipped, `last_key` says it shows the same.
@@ -60,13 +62,15 @@ class ViewportScene {
     std::unique_ptr<render::SceneRenderer> renderer_;
     std::unique_ptr<render::LevelScene> scene_;
     std::uint64_t scene_revision_ = ~0ull;
+    PreviewBake preview_bake_; // the light map of scene_, computed on a worker thread
     bool scene_baked_ = false; // built with the light-map bake requested (not during a continuous edit)
     struct SceneStats {
-        unsigned long long builds = 0, bakes = 0; // bakes: builds whose light map was baked
+        unsigned long long builds = 0, bakes = 0; // bakes: light maps computed and shown
         double last_build_cpu_ms = 0.0;
     } scene_stats_;
     std::vector<render::MeshInstance> instances_;
     std::vector<render::Light> lights_;
+    std::vector<render::ShadowCaster> casters_; // the movers' contact shadows, as the game draws them
     render::DebugDraw debug_;
     RenderTarget single_target_;
     std::uint64_t single_key_ = 0; // what the single view's picture shows

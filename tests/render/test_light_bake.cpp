@@ -314,3 +314,100 @@ TEST_CASE("contact shadows fall away from the light that casts them, as dark as 
     REQUIRE(out.size() == 2);
     CHECK(out[1].darkness < out[0].darkness * 0.5f);
 }
+
+namespace {
+// A small quality for the tests: every other texel gathers, enough rays for stable averages.
+BakeSettings indirect_settings(int bounce_samples, int ao_samples) {
+    BakeSettings s;
+    s.bounce_samples = bounce_samples;
+    s.ao_samples = ao_samples;
+    s.indirect_stride = 2;
+    return s;
+}
+Environment sun_only() {
+    Environment env = dark_with_sun(Vec3(0, -1, 0)); // straight down: vertical faces get no direct sun
+    env.sky_color = env.ground_color = Vec3(0.0f);
+    return env;
+}
+} // namespace
+
+TEST_CASE("light bake: one bounce lights a wall facing a lit floor, not one behind an occluder") {
+    Room room;
+    // A roofed hut (x -8..-4, z -2..2, 4 high) on the floor: its inner faces see only the shaded floor
+    // under the roof.
+    MeshData hut;
+    append_box(hut, Vec3(-8, 2, 0), Vec3(0.5f, 4, 4), Mat4(1.0f), 2.0f);
+    append_box(hut, Vec3(-4, 2, 0), Vec3(0.5f, 4, 4), Mat4(1.0f), 2.0f);
+    append_box(hut, Vec3(-6, 2, -2), Vec3(4, 4, 0.5f), Mat4(1.0f), 2.0f);
+    append_box(hut, Vec3(-6, 2, 2), Vec3(4, 4, 0.5f), Mat4(1.0f), 2.0f);
+    append_box(hut, Vec3(-6, 4.25f, 0), Vec3(4.5f, 0.5f, 4.5f), Mat4(1.0f), 2.0f);
+    const std::vector<Vec3> red(room.floor.polygon_sizes.size(), Vec3(1, 0, 0));
+    std::vector<BakeSurface> surfaces = {{&room.floor, true, &red}, {&room.wall, true}, {&hut, true}};
+    render::Light lamp;
+    lamp.position = Vec3(-2, 1, 6);
+    lamp.range = 6.0f;
+    LightBake bake;
+    const BakeStats stats = bake.bake(surfaces, sun_only(), {lamp}, indirect_settings(32, 0));
+    CHECK(stats.rays > 0);
+    // The big wall's -x face, 2 up: half its hemisphere is the sunlit red floor (albedo 1 here).
+    const Vec3 facing = light_at(bake, room.wall, Vec3(-0.25f, 2, -6));
+    CHECK(facing.x > 0.1f);
+    CHECK(facing.y == doctest::Approx(0.0f)); // the floor's colour
+    // The hut's west wall: its outer face sees the lit floor, its inner face the floor under the roof.
+    CHECK(light_at(bake, hut, Vec3(-8.25f, 1, 0)).x > 0.1f);
+    CHECK(light_at(bake, hut, Vec3(-7.75f, 1, 0)).x < 1e-3f);
+    // The lamp's bounce switches with it.
+    const Vec3 near_lamp = light_at(bake, room.wall, Vec3(-0.25f, 1, 6));
+    bake.set_light_on(0, false);
+    bake.update();
+    const Vec3 lamp_off = light_at(bake, room.wall, Vec3(-0.25f, 1, 6));
+    CHECK(lamp_off.x < near_lamp.x - 0.01f);
+    CHECK(lamp_off.x > 0.0f); // the sun's bounce stays
+}
+
+TEST_CASE("light bake: ambient occlusion darkens the inside corner, not the open floor") {
+    Room room;
+    Environment env;
+    env.sky_color = env.ground_color = Vec3(1.0f);
+    env.sun_color = Vec3(0.0f);
+    LightBake bake;
+    bake.bake(room.surfaces(), env, {}, indirect_settings(0, 32));
+    const float open = floor_light(bake, room.floor, -6.0f, 0.0f).x;
+    const float corner = floor_light(bake, room.floor, -0.5f, 0.0f).x;
+    CHECK(open == doctest::Approx(1.0f));
+    CHECK(corner < 0.8f);
+    CHECK(corner > 0.3f); // a wall covers at most half of the hemisphere
+    // Without occlusion samples the ambient is untouched.
+    bake.bake(room.surfaces(), env, {}, indirect_settings(0, 0));
+    CHECK(floor_light(bake, room.floor, -0.5f, 0.0f).x == doctest::Approx(1.0f));
+}
+
+TEST_CASE("light bake: the indirect light is deterministic: same seed, same texels, any thread count") {
+    Room room;
+    Environment env = dark_with_sun(Vec3(1, -2, 0.5f));
+    BakeSettings settings = indirect_settings(8, 8);
+    auto texels = [&](std::uint32_t seed, int threads) {
+        settings.seed = seed;
+        settings.threads = threads;
+        LightBake bake;
+        bake.bake(room.surfaces(), env, {}, settings);
+        return bake.texels();
+    };
+    const std::vector<Vec3> two = texels(7, 2);
+    CHECK(texels(7, 2) == two);
+    CHECK(texels(7, 1) == two);
+    CHECK(texels(8, 2) != two);
+    // layout() then compute() on a copy (the editor's worker thread) gives the same texels as bake().
+    LightBake laid;
+    laid.layout(room.surfaces(), settings);
+    CHECK(laid.texels().empty()); // nothing to upload until computed
+    LightBake copy = laid;
+    settings.seed = 7;
+    copy.compute(env, {}, settings);
+    CHECK(copy.texels() == two);
+    // A cancelled compute stops early and says so.
+    BakeProgress progress;
+    progress.cancel = true;
+    LightBake cancelled = laid;
+    CHECK(cancelled.compute(env, {}, settings, &progress).cancelled);
+}

@@ -34,6 +34,13 @@ using ks::test::render_offscreen;
                     "no display: run the GL tests under xvfb-run (./run.sh test does)")
 
 namespace {
+// The light map with the direct light alone: these pictures check the renderer, not the bake's bounce and
+// occlusion (test_light_bake.cpp), and the full bake would add seconds of CPU to each.
+LevelSceneOptions direct_light_only() {
+    LevelSceneOptions options;
+    options.bake = BakeSettings::direct_only();
+    return options;
+}
 fs::path assets_dir() {
     return ks::test::source_dir() / "assets";
 }
@@ -187,9 +194,14 @@ MainLevelView render_main_level_start(RendererSettings settings = full_quality()
     auto level = level::load_level_file(ks::test::source_dir() / "levels" / "main.json");
     REQUIRE_MESSAGE(level.ok(), (level.ok() ? "" : level.error().str()));
     AssetLibrary assets(assets_dir());
-    auto scene = LevelScene::build(*level, assets);
     auto renderer = SceneRenderer::create(assets.textures(), settings);
     REQUIRE(renderer);
+    // As the game builds it for this renderer (a light map only on the fast path), with the direct light
+    // alone: these cases check the renderer's switches, test_light_bake.cpp the bounce and occlusion, and
+    // the full bake would add seconds of CPU to each picture here.
+    LevelSceneOptions options = level_scene_options((*renderer)->settings());
+    options.bake = BakeSettings::direct_only();
+    auto scene = LevelScene::build(*level, assets, options);
     std::vector<MeshInstance> instances;
     std::vector<Light> lights;
     scene->emit(instances, lights);
@@ -299,7 +311,7 @@ TEST_CASE(
     auto level = level::load_level_file(ks::test::source_dir() / "levels" / "main.json");
     REQUIRE(level.ok());
     AssetLibrary assets(assets_dir());
-    auto scene = LevelScene::build(*level, assets);
+    auto scene = LevelScene::build(*level, assets, direct_light_only());
     RendererSettings plain = fast_quality(1.0f);
     plain.occlusion_culling = false;
     plain.depth_prepass = false;
@@ -409,7 +421,7 @@ TEST_CASE("lights toggle: switching every level light off darkens the view, emis
     // Both paths: per-pixel lights (full) and the re-combined light map (fast).
     for (RenderQuality quality : {RenderQuality::Full, RenderQuality::Fast}) {
         CAPTURE(static_cast<int>(quality));
-        auto scene = LevelScene::build(*level, assets);
+        auto scene = LevelScene::build(*level, assets, direct_light_only());
         RendererSettings settings;
         settings.quality = quality;
         settings.render_scale = 1.0f;

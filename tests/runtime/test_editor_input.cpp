@@ -97,7 +97,10 @@ TEST_CASE("editor input: place from the palette, select, drag the gizmo, undo, r
                 [&](const json& j) { return selection(j) == std::vector<int>{placed}; });
 
     // Drag the x arrow 90 pixels to the right.
-    st = s.wait("gizmo handles", [](const json& j) { return j.contains("gizmo_handles"); });
+    // The light map of the last edit (the placed robot) is computed on a worker thread: wait for it.
+    st = s.wait("gizmo handles, no bake running", [](const json& j) {
+        return j.contains("gizmo_handles") && !j["scene"]["bake_running"].get<bool>();
+    });
     const size_t undo_before = st["undo"];
     const unsigned long long builds_before = st["scene"]["builds"], bakes_before = st["scene"]["bakes"];
     const json grab = st["gizmo_handles"]["x"];
@@ -114,8 +117,12 @@ TEST_CASE("editor input: place from the palette, select, drag the gizmo, undo, r
     st = s.wait("drag ended", [](const json& j) { return j["dragging"] == false; });
     {
         // The scene is rebuilt as the robot moves, but the light map is baked once, after the drag (where
-        // this renderer bakes at all: llvmpipe's automatic quality is Fast, a GPU's is Full).
-        const json after = s.frames(2)["scene"];
+        // this renderer bakes at all: llvmpipe's automatic quality is Fast, a GPU's is Full), on a worker
+        // thread: the bake count rises when it is shown.
+        const json after = s.wait("the bake after the drag", [&](const json& j) {
+            return !j["scene"]["bake_running"].get<bool>() &&
+                   (bakes_before == 0 || j["scene"]["bakes"].get<unsigned long long>() > bakes_before);
+        })["scene"];
         INFO("scene before the drag: builds " << builds_before << ", bakes " << bakes_before
                                               << "; after: " << after.dump());
         CHECK(after["builds"].get<unsigned long long>() >= builds_before + 2);
