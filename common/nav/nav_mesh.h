@@ -90,6 +90,7 @@ class NavMesh {
     const NavSettings& settings() const { return settings_; }
 
   private:
+    friend struct NavCacheAccess; // nav_cache.cpp: writes a built mesh's tiles and doors, restores them
     NavMesh();
     struct Door {
         int entity_id = 0;

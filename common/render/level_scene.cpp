@@ -4,6 +4,7 @@
 #include "level/entity_shapes.h"
 #include "level/model_entity.h"
 #include "render/brush_mesh.h"
+#include "render/light_bake_cache.h"
 #include "render/scene_renderer.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -279,7 +280,9 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
         }
     // Only the fast path reads the light map: GPUs (Full) skip the bake's CPU time.
     if (options.bake_light_map)
-        scene->bake_stats_ = scene->bake_.bake(bake_surfaces, scene->environment_, bake_lights);
+        scene->bake_stats_ = options.cache_bake
+                                 ? bake_cached(scene->bake_, bake_surfaces, scene->environment_, bake_lights)
+                                 : scene->bake_.bake(bake_surfaces, scene->environment_, bake_lights);
     for (const auto& p : scene->props_)
         if (p.bake_light >= 0) scene->bake_.set_light_on(p.bake_light, p.light_on);
     for (const auto& g : geometry) {

@@ -34,6 +34,9 @@ struct LevelSceneOptions {
     // (the editor's cheap rebuilds while a drag is in progress; a renderer on the full path never reads it).
     bool bake_light_map = true;
     bool lightmap_float = false; // the texture's encoding: RendererSettings::lightmap_float
+    // Read the bake from the user's disk cache and write it there (light_bake_cache.h): the game, whose
+    // levels are baked again at every launch; not the editor, whose every edit would leave an entry.
+    bool cache_bake = false;
 };
 // The options that match a renderer's resolved settings: bake only for the fast path, same encoding.
 LevelSceneOptions level_scene_options(const RendererSettings& resolved);

@@ -18,6 +18,10 @@
 
 namespace ks::render {
 
+// The bake's version for its disk cache (light_bake_cache.h): bump it with any change to what bake() computes
+// from the same input, so cached atlases of the old bake are not used.
+inline constexpr std::uint32_t kLightBakeVersion = 1;
+
 struct BakeSettings {
     float texel_size = 0.5f;        // world units per texel (doubled until the atlas fits max_texels)
     long long max_texels = 1 << 20; // RGB16F: 6 MiB of texture at most
@@ -58,6 +62,7 @@ class LightBake {
     Vec3 sample(const Vec2& uv) const;
 
   private:
+    friend struct LightBakeCacheAccess; // light_bake_cache.cpp: stores and restores a finished bake
     struct Occluder {
         std::uint32_t first_plane = 0, plane_count = 0; // in planes_
         bool blocks_sun = true;
