@@ -81,12 +81,16 @@ def traced_launch(exe, args, screen_mark, home, cache):
     proc.wait()
     if not marks:
         sys.exit(f"{exe} {' '.join(args)}: no '{screen_mark}' frame in the trace")
-    phases, previous = [], start
-    for phase, mono, _, _ in marks:
+    # Each phase's wall time and process CPU time (all threads: llvmpipe's too) since the mark before it; the
+    # CPU time is the steadier figure on a shared machine.
+    phases, previous, previous_cpu = [], start, 0
+    for phase, mono, _, cpu in marks:
         if phase != "presented" and not phase.startswith("frame: "):
-            phases.append(("process start, dynamic linking" if phase == "main" else phase, (mono - previous) / 1e6))
-            previous = mono
-    phases.append(("frames until the screen is shown", (marks[-1][1] - previous) / 1e6))
+            name = "process start, dynamic linking" if phase == "main" else phase
+            phases.append((name, (mono - previous) / 1e6, (cpu - previous_cpu) / 1e6))
+            previous, previous_cpu = mono, cpu
+    phases.append(("frames until the screen is shown (first render)", (marks[-1][1] - previous) / 1e6,
+                   (marks[-1][3] - previous_cpu) / 1e6))
     return {
         "wall": (marks[-1][1] - start) / 1e6,
         "main thread CPU": marks[-1][2] / 1e6,
@@ -106,9 +110,9 @@ def exit_launch(exe, args, home, cache):
 
 def table(title, columns, rows):
     print(f"\n{title}")
-    print(f"{'':48}" + "".join(f"{c:>18}" for c in columns))
+    print(f"{'':50}" + "".join(f"{c:>12}" for c in columns))
     for name, values in rows:
-        print(f"{name[:48]:48}" + "".join(f"{v:>18.0f}" for v in values))
+        print(f"{name[:50]:50}" + "".join(f"{v:>12.0f}" for v in values))
 
 
 def main():
@@ -145,6 +149,7 @@ def main():
         for name, mark, args in SCENARIOS:
             columns = ["cold cache", "warm cache"]
             results = {c: [] for c in columns}
+            shown = ["cold wall", "cold CPU", "warm wall", "warm CPU"]
             warm_cache = os.path.join(root, "warm")
             for r in range(opts.runs):
                 for c in columns:
@@ -157,19 +162,27 @@ def main():
                         traced_launch(exe, args, mark, home, warm_cache)
                     results[c].append(traced_launch(exe, args, mark, home, warm_cache if c == "warm cache" else cold))
             rows = []
-            for key in ["wall", "main thread CPU", "process CPU (all threads)"]:
-                rows.append((key if key != "wall" else "wall time to the first frame",
-                             [statistics.median(x[key] for x in results[c]) for c in columns]))
+            def med(c, key):
+                return statistics.median(x[key] for x in results[c])
+            rows.append(("first frame (wall; CPU: all threads)",
+                         [v for c in columns for v in (med(c, "wall"), med(c, "process CPU (all threads)"))]))
+            rows.append(("  of which the main thread's CPU",
+                         [v for c in columns for v in (float("nan"), med(c, "main thread CPU"))]))
             order = []
             for c in columns:
                 for x in results[c]:
-                    for phase, _ in x["phases"]:
+                    for phase, _, _ in x["phases"]:
                         if phase not in order:
                             order.append(phase)
             for phase in order:
-                rows.append(("  " + phase, [statistics.median(sum(ms for p, ms in x["phases"] if p == phase)
-                                                              for x in results[c]) for c in columns]))
-            table(f"{name}: first frame, median of {opts.runs} (ms; phases are wall time)", columns, rows)
+                values = []
+                for c in columns:
+                    for i in (1, 2):
+                        values.append(statistics.median(sum(p[i] for p in x["phases"] if p[0] == phase)
+                                                        for x in results[c]))
+                rows.append(("  " + phase, values))
+            table(f"{name}: first frame, median of {opts.runs} (ms; each phase since the mark before it)",
+                  shown, rows)
     finally:
         shutil.rmtree(root, ignore_errors=True)
 
