@@ -1,11 +1,9 @@
 #include "core/startup_trace.h"
 
-#include <charconv>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
 #include <mutex>
-#include <string>
 
 namespace ks::startup {
 namespace {
@@ -29,15 +27,6 @@ long long now_ns(clockid_t clock) {
     return static_cast<long long>(ts.tv_sec) * 1000000000LL + ts.tv_nsec;
 }
 
-bool read_number(std::string_view& rest, long long& out) {
-    const std::size_t tab = rest.find('\t');
-    const std::string_view field = rest.substr(0, tab);
-    const auto [end, ec] = std::from_chars(field.data(), field.data() + field.size(), out);
-    if (ec != std::errc() || end != field.data() + field.size() || field.empty()) return false;
-    rest = tab == std::string_view::npos ? std::string_view() : rest.substr(tab + 1);
-    return true;
-}
-
 } // namespace
 
 bool enabled() {
@@ -57,16 +46,6 @@ void mark(std::string_view phase) {
         std::fclose(t.file);
         t.file = nullptr;
     }
-}
-
-bool parse_mark(std::string_view line, Mark& out) {
-    if (!line.empty() && line.back() == '\n') line.remove_suffix(1);
-    const std::size_t tab = line.find('\t');
-    if (tab == std::string_view::npos || tab == 0) return false;
-    out.phase = line.substr(0, tab);
-    std::string_view rest = line.substr(tab + 1);
-    return read_number(rest, out.monotonic_ns) && read_number(rest, out.thread_cpu_ns) &&
-           read_number(rest, out.process_cpu_ns) && rest.empty();
 }
 
 } // namespace ks::startup
