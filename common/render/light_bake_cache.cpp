@@ -4,6 +4,7 @@
 #include "core/startup_trace.h"
 
 #include <chrono>
+#include <cstddef>
 
 namespace ks::render {
 
@@ -15,7 +16,8 @@ constexpr std::uint64_t kMaxCount = 1ull << 28; // a sanity bound on any stored 
 // the cache stores and hashes must be extended with it (and kLightBakeVersion bumped).
 static_assert(sizeof(BakeSettings) == 24, "BakeSettings changed: hash the new field in light_bake_key");
 static_assert(sizeof(BakeStats) == 40, "BakeStats changed: store the new field in LightBakeCacheAccess");
-static_assert(sizeof(Vertex) == 14 * sizeof(float), "Vertex is hashed as bytes: it must have no padding");
+static_assert(sizeof(Vertex) == 14 * sizeof(float) && offsetof(Vertex, lightmap_uv) == 12 * sizeof(float),
+              "Vertex is hashed as bytes up to lightmap_uv: no padding, lightmap_uv last");
 static_assert(sizeof(Environment) == 17 * sizeof(float), "Environment is hashed as bytes: no padding");
 
 void hash_light(disk_cache::Hasher& h, const Light& l) {
@@ -98,10 +100,10 @@ std::uint64_t light_bake_key(const std::vector<BakeSurface>& surfaces, const Env
     h.value(surfaces.size());
     for (const BakeSurface& s : surfaces) {
         h.value(s.blocks_sun);
-        h.values(s.mesh->vertices)
-            .values(s.mesh->indices)
-            .values(s.mesh->polygon_sizes)
-            .values(s.mesh->solid_sizes);
+        // Every vertex field but lightmap_uv, which bake() writes: a mesh baked before keys as a fresh one.
+        h.value(s.mesh->vertices.size());
+        for (const Vertex& v : s.mesh->vertices) h.bytes(&v, offsetof(Vertex, lightmap_uv));
+        h.values(s.mesh->indices).values(s.mesh->polygon_sizes).values(s.mesh->solid_sizes);
     }
     return h.digest();
 }

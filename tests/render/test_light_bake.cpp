@@ -376,7 +376,7 @@ TEST_CASE("light bake cache: a hit is the bake, changed input misses, a bad entr
         CHECK(bake_cached(again, room.surfaces(), env, {light}, {}, store).texels == first.texels);
         again.update();
         CHECK(again.texels() == lit);
-        CHECK(test::read_file(entry) == good);
+        CHECK(store.load("lightbake", key).has_value()); // written again (its stats' bake time differs)
     }
 
     test::write_file(dir / "blocked", "x");
