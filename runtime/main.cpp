@@ -3,6 +3,7 @@
 #include "app/game_app.h"
 #include "core/cli.h"
 #include "core/log.h"
+#include "core/startup_trace.h"
 #include "core/version.h"
 #include "game/headless.h"
 #include "game/headless_campaign.h"
@@ -93,6 +94,7 @@ void record_audio(game::HeadlessOptions& options, const std::filesystem::path& w
 
 int main(int argc, char** argv) {
     using namespace ks;
+    startup::mark("main");
     std::vector<std::string> flags = kFlags;
     flags.insert(flags.end(), runtime::game_app_flags().begin(), runtime::game_app_flags().end());
     flags.insert(flags.end(), game::headless_flags().begin(), game::headless_flags().end());

@@ -79,6 +79,10 @@ fs::path user_config_dir() {
     return xdg_dir("XDG_CONFIG_HOME", ".config");
 }
 
+fs::path user_cache_dir() {
+    return xdg_dir("XDG_CACHE_HOME", ".cache");
+}
+
 fs::path user_levels_dir() {
     const fs::path data = user_data_dir();
     return data.empty() ? fs::path() : data / "levels";

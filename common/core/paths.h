@@ -25,6 +25,10 @@ std::filesystem::path user_data_dir();
 // $XDG_CONFIG_HOME/killswitch, else ~/.config/killswitch, by the same rule as user_data_dir() (a relative
 // XDG_CONFIG_HOME is ignored). Empty when neither variable gives a folder. Read on every call.
 std::filesystem::path user_config_dir();
+// Files the game can always make again, kept to start faster (the navigation mesh and light bake caches:
+// core/disk_cache.h): $XDG_CACHE_HOME/killswitch, else ~/.cache/killswitch, by the same rule as
+// user_data_dir() (a relative XDG_CACHE_HOME is ignored). Empty when neither variable gives a folder.
+std::filesystem::path user_cache_dir();
 // Where the player's own levels live: user_data_dir()/levels (empty when user_data_dir() is).
 std::filesystem::path user_levels_dir();
 // user_levels_dir(), created when missing (the editor's folder for a new level); empty when there is no such

@@ -1,6 +1,7 @@
 #include "game/autoplay.h"
 
 #include "geometry/ground_plane.h"
+#include "nav/nav_cache.h"
 #include "physics/character.h"
 
 #include <algorithm>
@@ -28,7 +29,7 @@ Result<std::shared_ptr<nav::NavMesh>> build_autoplay_mesh(const level::Level& le
     for (level::Entity& e : widened.entities)
         if (auto* cylinder = e.try_as<level::GasCylinderProps>()) cylinder->radius += cylinder_keep_out;
     const physics::CharacterSettings character;
-    auto mesh = nav::NavMesh::build(
+    auto mesh = nav::build_cached(
         widened, nav::player_nav_settings(character.step_height, character.max_slope_degrees));
     if (!mesh) return mesh.error();
     for (const level::Entity& e : level.entities)

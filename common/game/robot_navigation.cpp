@@ -5,6 +5,7 @@
 #include "game/interactables.h"
 #include "game/robot_system.h"
 #include "geometry/ground_plane.h"
+#include "nav/nav_cache.h"
 #include "physics/character.h"
 
 #include <algorithm>
@@ -24,8 +25,8 @@ constexpr float kSeparationRadii = 3.0f;
 
 Result<std::unique_ptr<nav::NavMesh>> build_robot_navigation(const level::Level& level) {
     const physics::CharacterSettings character;
-    return nav::NavMesh::build(level,
-                               nav::robot_nav_settings(character.step_height, character.max_slope_degrees));
+    return nav::build_cached(level,
+                             nav::robot_nav_settings(character.step_height, character.max_slope_degrees));
 }
 
 void RobotSystem::build_navigation(const level::Level& level, std::shared_ptr<const nav::NavMesh> source,

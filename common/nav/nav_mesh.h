@@ -13,6 +13,8 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
+#include <string_view>
 #include <unordered_map>
 #include <vector>
 
@@ -88,6 +90,12 @@ class NavMesh {
     std::vector<NavTriangle> triangles() const;
     const NavStats& stats() const { return stats_; }
     const NavSettings& settings() const { return settings_; }
+
+    // A built mesh as bytes (its stats, Detour's parameters and tiles at their references, the doors'
+    // polygons) and back: the disk cache's payload (nav_cache.h). read_tiles gives nullptr when the bytes do
+    // not hold a whole mesh Detour accepts.
+    std::string write_tiles() const;
+    static std::unique_ptr<NavMesh> read_tiles(std::string_view payload, const NavSettings& settings);
 
   private:
     NavMesh();

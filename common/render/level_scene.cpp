@@ -4,6 +4,7 @@
 #include "level/entity_shapes.h"
 #include "level/model_entity.h"
 #include "render/brush_mesh.h"
+#include "render/light_bake_cache.h"
 #include "render/scene_renderer.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -306,9 +307,14 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
         std::vector<BakeSurface> bake_surfaces;
         for (size_t i = 0; i < geometry.size(); ++i)
             bake_surfaces.push_back({&geometry[i].mesh, geometry[i].casts_shadow, &albedo[i]});
-        scene->bake_stats_ = options.defer_bake ? scene->bake_.layout(bake_surfaces, options.bake)
-                                                : scene->bake_.bake(bake_surfaces, scene->environment_,
-                                                                    bake_lights, options.bake);
+        if (options.defer_bake)
+            scene->bake_stats_ = scene->bake_.layout(bake_surfaces, options.bake);
+        else if (options.cache_bake)
+            scene->bake_stats_ =
+                bake_cached(scene->bake_, bake_surfaces, scene->environment_, bake_lights, options.bake);
+        else
+            scene->bake_stats_ =
+                scene->bake_.bake(bake_surfaces, scene->environment_, bake_lights, options.bake);
     }
     for (const auto& p : scene->props_)
         if (p.bake_light >= 0) scene->bake_.set_light_on(p.bake_light, p.light_on);

@@ -39,6 +39,9 @@ struct LevelSceneOptions {
     // computes a copy of light_bake() on another thread and hands it back with adopt_light_bake() (the
     // editor's preview bake). Until then the level geometry is lit per vertex.
     bool defer_bake = false;
+    // Read the bake from the user's disk cache and write it there (light_bake_cache.h): the game, whose
+    // levels are baked again at every launch; not the editor, whose every edit would leave an entry.
+    bool cache_bake = false;
 };
 // The options that match a renderer's resolved settings: bake only for the fast path, same encoding.
 LevelSceneOptions level_scene_options(const RendererSettings& resolved);

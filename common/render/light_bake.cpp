@@ -430,6 +430,35 @@ bool LightBake::update() {
     return true;
 }
 
+BakedAtlas LightBake::atlas() const {
+    return {width_, height_, base_, shares_, bounce_shares_, light_color_, light_on_};
+}
+
+bool LightBake::adopt(BakedAtlas atlas, std::size_t light_count) {
+    const std::size_t texels = static_cast<std::size_t>(std::max(atlas.width, 0)) *
+                               static_cast<std::size_t>(std::max(atlas.height, 0));
+    if (atlas.base.size() != texels || atlas.shares.size() != light_count ||
+        atlas.light_color.size() != light_count || atlas.light_on.size() != light_count ||
+        atlas.bounce_shares.size() > light_count)
+        return false;
+    for (const auto& list : atlas.shares)
+        for (const Share& share : list)
+            if (share.texel >= texels) return false;
+    for (const auto& list : atlas.bounce_shares)
+        for (const ColorShare& share : list)
+            if (share.texel >= texels) return false;
+    *this = LightBake();
+    width_ = atlas.width;
+    height_ = atlas.height;
+    base_ = std::move(atlas.base);
+    shares_ = std::move(atlas.shares);
+    bounce_shares_ = std::move(atlas.bounce_shares);
+    light_color_ = std::move(atlas.light_color);
+    light_on_ = std::move(atlas.light_on);
+    dirty_ = true;
+    return true;
+}
+
 Vec3 LightBake::sample(const Vec2& uv) const {
     if (combined_.empty()) return Vec3(0.0f);
     int x = std::clamp(static_cast<int>(uv.x * width_), 0, width_ - 1);

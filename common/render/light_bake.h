@@ -27,6 +27,10 @@
 
 namespace ks::render {
 
+// The bake's version for its disk cache (light_bake_cache.h): bump it with any change to what bake() computes
+// from the same input, so cached atlases of the old bake are not used.
+inline constexpr std::uint32_t kLightBakeVersion = 2;
+
 struct BakeSettings {
     float texel_size = 0.5f;        // world units per texel (doubled until the atlas fits max_texels)
     long long max_texels = 1 << 20; // RGB16F: 6 MiB of texture at most
@@ -64,6 +68,28 @@ struct BakeStats {
     double wall_ms = 0.0;   // wall time of the bake
     long long rays = 0;     // bounce and occlusion rays cast
     bool cancelled = false; // compute() stopped early (its texels are then incomplete)
+};
+
+// One light's part of a texel: atten * cos * visibility, times the light's colour * intensity when
+// combined; and its bounce, coloured by the albedo of what it bounced off.
+struct BakeShare {
+    std::uint32_t texel;
+    float amount;
+};
+struct BakeColorShare {
+    std::uint32_t texel;
+    Vec3 amount;
+};
+
+// What a finished bake keeps to light the level and to switch lights (the disk cache stores it): the atlas
+// size, the light-independent texels (ambient, sun, their bounce) and each light's shares and state.
+struct BakedAtlas {
+    int width = 0, height = 0;
+    std::vector<Vec3> base;
+    std::vector<std::vector<BakeShare>> shares;
+    std::vector<std::vector<BakeColorShare>> bounce_shares;
+    std::vector<Vec3> light_color;
+    std::vector<char> light_on;
 };
 
 // Progress of a compute() running on another thread, and a way to stop it.
@@ -104,6 +130,12 @@ class LightBake {
     Vec3 face_irradiance(int face, const Vec2& st) const;
     glm::ivec2 face_texels(int face) const;
 
+    // The finished bake, and the same adopted as if baked (update() then combines texels(); the layout's
+    // faces are not part of it, so face_count() is 0 after adopting). adopt() refuses, changing nothing, an
+    // atlas whose parts disagree (sizes, a texel outside the atlas, a light count that is not `light_count`).
+    BakedAtlas atlas() const;
+    bool adopt(BakedAtlas atlas, std::size_t light_count);
+
   private:
     // A polygon and the rectangle of texels over it: the rectangle bounds the polygon in the face's frame
     // (u along its first edge), texel centres on its edges.
@@ -121,14 +153,8 @@ class LightBake {
         bool blocks_sun = true;
         Vec3 lo, hi; // world bounds
     };
-    struct Share {
-        std::uint32_t texel;
-        float amount; // atten * cos * visibility, times the light's colour * intensity when combined
-    };
-    struct ColorShare { // a light's bounce: coloured by the albedo of what it bounced off
-        std::uint32_t texel;
-        Vec3 amount;
-    };
+    using Share = BakeShare;
+    using ColorShare = BakeColorShare;
     struct Gather; // light_bake_indirect.cpp
     void compute_direct(const Environment& env, const std::vector<Light>& lights, BakeProgress* progress);
     // Ambient occlusion into ambient_, the bounce into base_ and bounce_shares_; the rays it cast.

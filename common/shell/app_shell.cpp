@@ -4,6 +4,7 @@
 #include "core/fixed_step.h"
 #include "core/log.h"
 #include "core/paths.h"
+#include "core/startup_trace.h"
 #include "render/imgui_renderer.h"
 #include "render/window_target.h"
 #include "shell/frame_pacing.h"
@@ -22,6 +23,10 @@
 #include <vector>
 
 namespace ks::shell {
+
+// How many of the first frames the start-up trace marks when they are presented (a loading screen's bar
+// takes one frame per step).
+constexpr long long kTracedFrames = 200;
 
 const std::vector<std::string>& shell_options() {
     static const std::vector<std::string> options = {"width", "height", "screenshot", "frames", "no-vsync"};
@@ -83,6 +88,7 @@ Result<void> AppShell::init(const ShellConfig& config) {
     auto window = open_gl_window({config.title, config.width, config.height, true, true});
     if (!window) return window.error();
     window_ = *window;
+    startup::mark("window and GL context");
     glfwSwapInterval(config.vsync ? 1 : 0);
     log::info("OpenGL ", render::gl_version_name(), " on ", gl_renderer());
 
@@ -230,6 +236,9 @@ int AppShell::run(const ShellHooks& hooks) {
             break;
         }
         glfwSwapBuffers(window_);
+        // The start-up trace's frames, each once it is on screen (a launcher stops the game at the one it
+        // waits for).
+        if (startup::enabled() && info.frame_index <= kTracedFrames) startup::mark("presented");
         if (hooks.wants_close && hooks.wants_close()) break;
     }
     return exit_code;

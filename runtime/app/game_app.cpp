@@ -5,6 +5,8 @@
 // menu) is in game_app_frame.cpp, the automation's start in game_app_start.cpp.
 #include "game_app_internal.h"
 
+#include "core/startup_trace.h"
+
 namespace ks::runtime {
 
 void GameApp::load(const std::filesystem::path& path, bool dojo, Screen then, Screen on_failure) {
@@ -41,9 +43,9 @@ void GameApp::load(const std::filesystem::path& path, bool dojo, Screen then, Sc
                                  }});
     }
     loader_.steps.push_back({"Building the level scene", [this, s]() -> Result<void> {
-                                 s->view =
-                                     WorldView::build(s->level, *s->game, assets_,
-                                                      render::level_scene_options(renderer_.settings()));
+                                 auto scene_options = render::level_scene_options(renderer_.settings());
+                                 scene_options.cache_bake = true; // each launch would bake the same again
+                                 s->view = WorldView::build(s->level, *s->game, assets_, scene_options);
                                  if (audio_)
                                      s->sounds =
                                          std::make_unique<soundscape::Soundscape>(audio_->engine(), s->level);
@@ -71,6 +73,7 @@ void GameApp::load(const std::filesystem::path& path, bool dojo, Screen then, Sc
 void GameApp::step_loader() {
     if (screen_ != Screen::Loading || loader_.done() || freeze_loader_) return;
     auto result = loader_.steps[loader_.next].run();
+    if (startup::enabled()) startup::mark("loaded: " + loader_.steps[loader_.next].label);
     if (!result) {
         error_ = "Could not load: " + result.error().str();
         log::error(result.error().str());

@@ -2,6 +2,8 @@
 // world and the current screen's menu, and what each menu choice does.
 #include "game_app_internal.h"
 
+#include "core/startup_trace.h"
+
 #include <cstdio>
 
 namespace ks::runtime {
@@ -96,9 +98,18 @@ void GameApp::handle_logic_debug_keys() {
     }
 }
 
+void GameApp::mark_first_frame_of_screen() {
+    if (!startup::enabled()) return;
+    const std::uint64_t bit = std::uint64_t{1} << static_cast<unsigned>(screen_);
+    if (traced_screens_ & bit) return;
+    traced_screens_ |= bit;
+    startup::mark("frame: " + std::string(status_name(screen_)));
+}
+
 void GameApp::render(const shell::FrameInfo& info) {
     if (scripted_) run_script(info.frame_index);
     step_loader();
+    mark_first_frame_of_screen();
     handle_keys();
     budget_.new_frame(); // the next frame's fixed steps come after this call
     if (!session_ || !session_->view || screen_ == Screen::Loading) {

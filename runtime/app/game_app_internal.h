@@ -127,6 +127,8 @@ class GameApp {
     void load(const std::filesystem::path& path, bool dojo, Screen then, Screen on_failure = Screen::Menu);
     Result<void> finish_loading_now();
     void step_loader();
+    // KS_STARTUP_TRACE (core/startup_trace.h): "frame: SCREEN" the first time each screen is drawn.
+    void mark_first_frame_of_screen();
     void fixed_update(double dt);
     bool animating() const; // the shell draws frame after frame while true
     // One game step with its view and sounds (every caller: play, warp, pause, the automation); false when
@@ -209,7 +211,8 @@ class GameApp {
     std::unique_ptr<Session> session_, pending_;
     Loader loader_;
     bool freeze_loader_ = false, freeze_dojo_ = false;
-    bool dojo_picking_ = false; // the Dojo's mouse is free to click a clip in the list (Tab)
+    std::uint64_t traced_screens_ = 0; // bit per Screen already marked in the start-up trace
+    bool dojo_picking_ = false;        // the Dojo's mouse is free to click a clip in the list (Tab)
     std::string error_;
     bool quit_ = false;
     bool pause_requested_ = false;

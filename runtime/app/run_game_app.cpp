@@ -6,6 +6,7 @@
 #include "core/files.h"
 #include "core/log.h"
 #include "core/paths.h"
+#include "core/startup_trace.h"
 #include "level/campaign.h"
 #include "level/level_io.h"
 
@@ -189,6 +190,7 @@ int run_game_app(const CommandLine& cl, const shell::ShellConfig& shell_config) 
             return 2;
         }
     }
+    startup::mark("level file checked");
     if (!shell::display_available()) {
         std::fprintf(stderr, "%s\n", shell::no_display_message("killswitch").c_str());
         return 3;
@@ -203,12 +205,14 @@ int run_game_app(const CommandLine& cl, const shell::ShellConfig& shell_config) 
         log::error(shell.error().str());
         return 1;
     }
+    startup::mark("ImGui and fonts");
     int code = 0;
     {
         render::AssetLibrary assets(paths::asset(""));
         render::RendererSettings settings = render::renderer_settings_from_environment();
         settings.msaa_samples = *msaa >= 0 ? *msaa : render::default_msaa_for((*shell)->gl_renderer());
         auto renderer = render::SceneRenderer::create(assets.textures(), settings);
+        startup::mark("renderer (shaders)");
         if (!renderer) {
             log::error(renderer.error().str());
             shell::AppShell::destroy(*shell);
@@ -219,6 +223,7 @@ int run_game_app(const CommandLine& cl, const shell::ShellConfig& shell_config) 
             log::error(started.error().str());
             code = 2;
         } else {
+            startup::mark("app started");
             code = app.run();
         }
     }

@@ -4,12 +4,15 @@
 #include "render/brush_mesh.h"
 #include "render/contact_shadows.h"
 #include "render/light_bake.h"
+#include "render/light_bake_cache.h"
+#include "test_support.h"
 
 #include <doctest/doctest.h>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <array>
 #include <cmath>
+#include <filesystem>
 
 using namespace ks;
 using namespace ks::render;
@@ -410,4 +413,90 @@ TEST_CASE("light bake: the indirect light is deterministic: same seed, same texe
     progress.cancel = true;
     LightBake cancelled = laid;
     CHECK(cancelled.compute(env, {}, settings, &progress).cancelled);
+}
+
+// The disk cache (render/light_bake_cache.h): a hit restores the atlas, the light switches and the meshes'
+// light-map coordinates as baked; a moved light misses; a truncated, corrupt or foreign entry is ignored and
+// written again; an unwritable folder just means no caching.
+TEST_CASE("light bake cache: a hit is the bake, changed input misses, a bad entry is baked again") {
+    Room room;
+    render::Light light;
+    light.position = Vec3(-5, 4, 0);
+    light.range = 10.0f;
+    const Environment env = dark_with_sun(Vec3(1, -1, 0.3f));
+    test::ScratchDir dir;
+    const disk_cache::Store store(dir / "cache");
+    const std::uint64_t key = light_bake_key(room.surfaces(), env, {light}, {});
+    const auto entry = store.file("lightbake", key);
+
+    LightBake baked;
+    const BakeStats first = bake_cached(baked, room.surfaces(), env, {light}, {}, store);
+    REQUIRE(std::filesystem::exists(entry));
+    const std::vector<Vertex> baked_vertices = room.wall.vertices;
+    for (Vertex& v : room.wall.vertices) v.lightmap_uv = Vec2(0.0f); // as a fresh level build has them
+    for (Vertex& v : room.floor.vertices) v.lightmap_uv = Vec2(0.0f);
+    LightBake cached;
+    const BakeStats second = bake_cached(cached, room.surfaces(), env, {light}, {}, store);
+    CHECK(second.texels == first.texels);
+    CHECK(second.light_texels == first.light_texels);
+    CHECK(cached.width() == baked.width());
+    CHECK(cached.height() == baked.height());
+    CHECK(cached.update());
+    baked.update();
+    CHECK(cached.texels() == baked.texels());
+    const std::vector<Vec3> lit = baked.texels();
+    for (std::size_t i = 0; i < baked_vertices.size(); ++i)
+        CHECK(room.wall.vertices[i].lightmap_uv == baked_vertices[i].lightmap_uv);
+    cached.set_light_on(0, false); // the light's share is there to switch off
+    baked.set_light_on(0, false);
+    cached.update();
+    baked.update();
+    CHECK(cached.texels() == baked.texels());
+
+    // The bounce's own shares travel too: a bake with indirect light comes back texel for texel, lamp off.
+    const BakeSettings bounce = indirect_settings(8, 4);
+    CHECK(light_bake_key(room.surfaces(), env, {light}, bounce) != key);
+    LightBake bounced, bounced_cached;
+    (void)bake_cached(bounced, room.surfaces(), env, {light}, bounce, store);
+    (void)bake_cached(bounced_cached, room.surfaces(), env, {light}, bounce, store);
+    CHECK(bounced_cached.face_count() == 0); // restored, not baked again
+    for (LightBake* b : {&bounced, &bounced_cached}) {
+        b->set_light_on(0, false);
+        b->update();
+    }
+    CHECK(bounced_cached.texels() == bounced.texels());
+    // An atlas whose parts disagree is refused whole.
+    BakedAtlas broken = baked.atlas();
+    broken.base.pop_back();
+    LightBake untouched;
+    CHECK_FALSE(untouched.adopt(broken, 1));
+    CHECK(untouched.width() == 0);
+
+    render::Light moved = light;
+    moved.position.x += 0.5f;
+    CHECK(light_bake_key(room.surfaces(), env, {moved}, {}) != key);
+    BakeSettings finer;
+    finer.texel_size = 0.25f;
+    CHECK(light_bake_key(room.surfaces(), env, {light}, finer) != key);
+    Room shifted;
+    shifted.wall.vertices[0].position.y += 0.01f;
+    CHECK(light_bake_key(shifted.surfaces(), env, {light}, {}) != key);
+
+    const std::string good = test::read_file(entry);
+    std::string flipped = good;
+    flipped[flipped.size() - 3] = static_cast<char>(flipped[flipped.size() - 3] ^ 0x01);
+    for (const std::string& bad :
+         {good.substr(0, good.size() - 1), good.substr(0, 20), flipped, std::string("not a cache file")}) {
+        test::write_file(entry, bad);
+        LightBake again;
+        CHECK(bake_cached(again, room.surfaces(), env, {light}, {}, store).texels == first.texels);
+        again.update();
+        CHECK(again.texels() == lit);
+        CHECK(store.load("lightbake", key).has_value()); // written again (its stats' bake time differs)
+    }
+
+    test::write_file(dir / "blocked", "x");
+    LightBake uncached;
+    CHECK(bake_cached(uncached, room.surfaces(), env, {light}, {}, disk_cache::Store(dir / "blocked" / "c"))
+              .texels == first.texels);
 }
