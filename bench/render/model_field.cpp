@@ -58,7 +58,8 @@ void report_levels(const fs::path& file) {
     // Vertices shaded per triangle with a 16-entry post-transform cache (meshoptimizer's model of a GPU's).
     auto acmr = [&] {
         const modelio::ImportedMesh& mesh = model->meshes.front();
-        return meshopt_analyzeVertexCache(mesh.indices.data(), mesh.indices.size(), mesh.positions.size(), 16, 0, 0)
+        return meshopt_analyzeVertexCache(mesh.indices.data(), mesh.indices.size(), mesh.positions.size(), 16,
+                                          0, 0)
             .acmr;
     };
     const float acmr_before = acmr();

@@ -9,18 +9,18 @@
 #include <cstddef>
 #include <vector>
 
-    namespace ks::editor {
+namespace ks::editor {
 
-    // The most segments a triangle-mesh overlay draws: a dense mesh's wire is a solid blur long before this.
-    inline constexpr std::size_t kMaxCollisionWireSegments = 60'000;
+// The most segments a triangle-mesh overlay draws: a dense mesh's wire is a solid blur long before this.
+inline constexpr std::size_t kMaxCollisionWireSegments = 60'000;
 
-    struct CollisionWire {
-        std::vector<std::array<Vec3, 2>> segments;
-        bool truncated = false; // a mesh with more edges than kMaxCollisionWireSegments: the first ones
-    };
+struct CollisionWire {
+    std::vector<std::array<Vec3, 2>> segments;
+    bool truncated = false; // a mesh with more edges than kMaxCollisionWireSegments: the first ones
+};
 
-    // The entity's collision as segments: none for "none" and for entities that are not models; an Error when
-    // the collision cannot be made (the file cannot be read, the hull fails), as level validation says.
-    Result<CollisionWire> model_collision_wire(const level::Entity& entity);
+// The entity's collision as segments: none for "none" and for entities that are not models; an Error when
+// the collision cannot be made (the file cannot be read, the hull fails), as level validation says.
+Result<CollisionWire> model_collision_wire(const level::Entity& entity);
 
 } // namespace ks::editor
