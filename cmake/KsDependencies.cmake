@@ -69,3 +69,9 @@ target_link_libraries(ks_openal INTERFACE PkgConfig::OPENAL)
 find_package(Qhull REQUIRED CONFIG)
 add_library(ks_qhull INTERFACE)
 target_link_libraries(ks_qhull INTERFACE Qhull::qhull_r)
+
+# meshoptimizer from libmeshoptimizer-dev (CMake config meshoptimizer::meshoptimizer): only the modelio module
+# links it, for a designer's model's levels of detail (modelio/model_lod.h).
+find_package(meshoptimizer REQUIRED CONFIG)
+add_library(ks_meshoptimizer INTERFACE)
+target_link_libraries(ks_meshoptimizer INTERFACE meshoptimizer::meshoptimizer)

@@ -10,6 +10,7 @@
 #include "level/level_io.h"
 #include "render/asset_library.h"
 #include "render/level_scene.h"
+#include "render/model_field.h"
 #include "render/scene_renderer.h"
 #include "render/texture_cache.h"
 #include "render/view_model.h"
@@ -48,6 +49,7 @@ struct Variant {
     bool fast_trilinear = false;
     int view_model_msaa = render::RendererSettings{}.view_model_msaa;
     bool contact_shadows = true;
+    bool model_lods = true; // designers' models drawn at their levels of detail
 };
 
 struct Measurement {
@@ -100,6 +102,7 @@ void measure(Measurement& m, shell::OffscreenContext& ctx, render::AssetLibrary&
     settings.view_model_msaa = v.view_model_msaa;
     settings.contact_shadows = v.contact_shadows;
     scene.set_doors_occlude(v.doors_occlude);
+    scene.set_model_lods(v.model_lods);
     const float default_anisotropy = assets.textures().max_anisotropy();
     if (v.anisotropy > 0.0f) assets.textures().set_max_anisotropy(v.anisotropy);
     const int width = ctx.width() / v.resolution_divisor, height = ctx.height() / v.resolution_divisor;
@@ -124,10 +127,11 @@ void measure(Measurement& m, shell::OffscreenContext& ctx, render::AssetLibrary&
     for (int i = -warmup; i < frames; ++i) {
         if (i == 0) cpu_start = cpu_now_ms();
         auto t0 = std::chrono::steady_clock::now();
-        scene.emit(instances, lights, &casters);
         render::SceneFrame frame;
-        frame.shadow_casters = &casters;
         frame.camera = path_camera(start, std::max(i, 0), frames);
+        scene.set_view(frame.camera, height);
+        scene.emit(instances, lights, &casters);
+        frame.shadow_casters = &casters;
         frame.environment = scene.environment();
         frame.instances = &instances;
         frame.lights = &lights;
@@ -194,12 +198,12 @@ int run(int argc, const char* const* argv) {
         log::error(cl.error().str());
         return 2;
     }
-    if (auto unknown =
-            cl->unknown({"level", "json", "frames", "width", "height", "quick", "only", "shots", "rounds"});
+    if (auto unknown = cl->unknown(
+            {"level", "json", "frames", "width", "height", "quick", "only", "shots", "rounds", "models"});
         !unknown.empty()) {
         log::error("ks_bench render: unknown option --", unknown.front(),
                    " (use --level FILE --frames N --width W --height H --json --quick --only TEXT --shots "
-                   "DIR --rounds R)");
+                   "DIR --rounds R --models N)");
         return 2;
     }
     auto frames = cl->get_int("frames", 200, 10, 100000);
@@ -212,7 +216,15 @@ int run(int argc, const char* const* argv) {
             return 2;
         }
     auto path = paths::resolve_user_path(cl->get_or("level", paths::level("main.json").string()));
-    auto level = level::load_level_file(path);
+    auto models = cl->get_int("models", 0, 0, 100000);
+    if (!models) {
+        log::error(models.error().str());
+        return 2;
+    }
+    const std::filesystem::path scratch = std::filesystem::temp_directory_path() / "ks_bench_model_field";
+    if (*models > 0) path = std::to_string(*models) + " models";
+    auto level = *models > 0 ? Result<level::Level>(bench::model_field_level(*models, scratch))
+                             : level::load_level_file(path);
     if (!level) {
         log::error(level.error().str());
         return 2;
@@ -279,6 +291,17 @@ int run(int argc, const char* const* argv) {
         v.fast_level_shader = false, v.doors_occlude = false;
     });
     with("full, scale 0.5", [](Variant& v) { v.quality = Q::Full, v.render_scale = 0.5f; });
+    if (std::ranges::any_of(level->entities,
+                            [](const level::Entity& e) { return e.type() == level::EntityType::Model; })) {
+        // Designers' models at their levels of detail and in full at every distance (issue 27 item 4).
+        with("fast, scale 0.5, no model LODs",
+             [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.model_lods = false; });
+        with("fast, scale 1, no model LODs",
+             [](Variant& v) { v.quality = Q::Fast, v.render_scale = 1.0f, v.model_lods = false; });
+        with("full, scale 1, model LODs", [](Variant& v) { v.quality = Q::Full, v.render_scale = 1.0f; });
+        with("full, scale 1, no model LODs",
+             [](Variant& v) { v.quality = Q::Full, v.render_scale = 1.0f, v.model_lods = false; });
+    }
     if (!cl->has("quick")) {
         // The full path's features, one at a time (session 1's table).
         auto full = [&](const char* name, auto change) {

@@ -139,6 +139,28 @@ void check_placement(const Vec3& position, const Vec3& rotation, const std::stri
     checker.field(r, {"rotation", "Yaw, pitch, roll", -kAngleLimit, kAngleLimit, "deg"});
 }
 
+// The placed model's largest side against what a level can hold and what a player can see: a scale typed
+// for another unit (100 for centimetres on a file already in metres) is a warning, the fix the scale.
+void check_model_size(const modelio::ImportedModel& model, float scale, const std::string& subject,
+                      const std::string& scale_path, DiagnosticSink& sink) {
+    const Vec3 sides = model.bounds.max - model.bounds.min;
+    const float file_size = std::max({sides.x, sides.y, sides.z}), placed = file_size * scale;
+    const std::string file_says =
+        "; the file alone is " + jsonio::readable_float(file_size) + " units across";
+    if (placed > kMaxPlacedModelSize)
+        sink.warning(scale_path,
+                     subject + "scaled by " + jsonio::readable_float(scale) + " it is " +
+                         jsonio::readable_float(placed) + " units across, larger than a level (" +
+                         jsonio::readable_float(kMaxPlacedModelSize) + ")",
+                     "reset the scale to 1" + file_says);
+    else if (placed < kMinPlacedModelSize)
+        sink.warning(scale_path,
+                     subject + "scaled by " + jsonio::readable_float(scale) + " it is " +
+                         jsonio::readable_float(placed) + " units across, too small to see (under " +
+                         jsonio::readable_float(kMinPlacedModelSize) + ")",
+                     "reset the scale to 1" + file_says);
+}
+
 // A badly spelt name is an error; a file that is missing or cannot be read, or a collision that cannot be
 // built, is a warning: the level still opens and the game draws a marker in its place (docs/models.md).
 void check_model(const Entity& entity, const ModelProps& model, const std::string& props_path,
@@ -149,10 +171,12 @@ void check_model(const Entity& entity, const ModelProps& model, const std::strin
         sink.error(member_path(props_path, "file"), subject + name.error().message, name.error().hint);
         return;
     }
-    if (Result<std::shared_ptr<const modelio::ImportedModel>> file = entity_model(entity); !file) {
+    Result<std::shared_ptr<const modelio::ImportedModel>> file = entity_model(entity);
+    if (!file) {
         sink.warning(member_path(props_path, "file"), subject + file.error().str());
         return;
     }
+    check_model_size(**file, model.scale, subject, member_path(props_path, "scale"), sink);
     if (Result<std::optional<brush::Brush>> collision = model_collision(entity); !collision)
         sink.warning(member_path(props_path, "collision"), collision.error().message, collision.error().hint);
     if (Result<std::optional<CollisionMesh>> mesh = model_mesh_collision(entity); !mesh)

@@ -10,6 +10,9 @@ namespace ks::level {
 
 // Positions farther than this from the origin are mistakes (a typo'd exponent), not level design.
 inline constexpr double kPositionLimit = 1e5;
+// A placed model (file size times scale) larger or smaller than these is a warning at props.scale.
+inline constexpr float kMaxPlacedModelSize = 2000.0f;
+inline constexpr float kMinPlacedModelSize = 0.01f;
 // Angles are degrees; anything beyond ten turns is a unit mistake (radians * 1000?) rather than intent.
 inline constexpr double kAngleLimit = 3600;
 

@@ -1,6 +1,7 @@
 #include "modelio/model_files.h"
 
 #include "core/paths.h"
+#include "modelio/model_lod.h"
 
 #include <map>
 #include <mutex>
@@ -82,6 +83,10 @@ Result<std::shared_ptr<const ImportedModel>> import_cached(const std::filesystem
         if (it != cache.end() && it->second.stamp == stamp) return it->second.result;
     }
     Result<ImportedModel> model = import_model(path);
+    if (model) { // drawn many times: its triangles in draw order, and its levels of detail, made once here
+        optimize_draw_order(*model);
+        build_lods(*model);
+    }
     CacheEntry entry{stamp, model ? Result<std::shared_ptr<const ImportedModel>>(
                                         std::make_shared<const ImportedModel>(std::move(*model)))
                                   : Result<std::shared_ptr<const ImportedModel>>(model.error())};

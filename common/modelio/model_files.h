@@ -24,7 +24,8 @@ std::filesystem::path resolve_model_file(std::string_view name);
 
 // import_model through a cache keyed by the file's path, size and modification time: a level that places a
 // model many times reads it once, and a file changed on disk is read again. Failures are cached the same way.
-// Safe to call from several threads.
+// The import is kept in draw order (optimize_draw_order) with its levels of detail (build_lods). Safe to
+// call from several threads.
 Result<std::shared_ptr<const ImportedModel>> import_cached(const std::filesystem::path& path);
 
 } // namespace ks::modelio

@@ -41,9 +41,21 @@ struct ImportedMesh {
     int material = 0; // index into ImportedModel::materials (there is always at least one)
 };
 
+// One coarser level of detail of a model (modelio/model_lod.h): each mesh simplified by meshoptimizer to
+// about `ratio` of its triangles, its vertices the ones the simplified triangles still use.
+struct ModelLod {
+    float ratio = 1.0f;               // the fraction of the triangles asked for
+    std::size_t triangle_count = 0;   // what the simplifier reached (all meshes)
+    float error = 0.0f;               // meshoptimizer's largest deviation from the full model, in model units
+    std::vector<ImportedMesh> meshes; // ImportedMesh::material as in the full model; a mesh gone to nothing
+                                      // is left out
+};
+
 struct ImportedModel {
     std::filesystem::path path;
     std::vector<ImportedMesh> meshes;
+    std::vector<ModelLod> lods; // the coarser levels, finest first (level 0 is `meshes`); empty until
+                                // build_lods (import_cached builds them)
     std::vector<ImportedMaterial> materials;
     geometry::Aabb bounds;
     std::size_t triangle_count = 0;

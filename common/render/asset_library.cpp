@@ -19,21 +19,23 @@ const Model& AssetLibrary::model(const std::string& name_or_path) {
     return *models_.emplace(name_or_path, std::move(model)).first->second;
 }
 
-const Model& AssetLibrary::level_model(const std::string& file) {
+const ModelLevels& AssetLibrary::level_model(const std::string& file) {
     Result<std::shared_ptr<const modelio::ImportedModel>> imported =
         modelio::check_model_name(file)
             ? modelio::import_cached(modelio::resolve_model_file(file))
             : Result<std::shared_ptr<const modelio::ImportedModel>>(modelio::check_model_name(file).error());
     LevelModel& slot = level_models_[file];
     if (imported) {
-        if (slot.model && slot.source == *imported) return *slot.model;
-        slot = {*imported, {}, model_from_import(**imported, textures_, next_material_id_)};
-        return *slot.model;
+        if (!slot.model.levels.empty() && slot.source == *imported) return slot.model;
+        slot = {*imported, {}, model_levels_from_import(**imported, textures_, next_material_id_)};
+        return slot.model;
     }
-    if (slot.model && !slot.source && slot.error == imported.error().str()) return *slot.model;
+    if (!slot.model.levels.empty() && !slot.source && slot.error == imported.error().str()) return slot.model;
     log::warn(imported.error().str(), "; drawing a marker cube in its place");
-    slot = {nullptr, imported.error().str(), placeholder_model(file, textures_, next_material_id_)};
-    return *slot.model;
+    slot = {nullptr, imported.error().str(), {}};
+    slot.model.levels.push_back(placeholder_model(file, textures_, next_material_id_));
+    slot.model.relative_errors = {0.0f};
+    return slot.model;
 }
 
 const Material& AssetLibrary::surface(const std::string& name) {

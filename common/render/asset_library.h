@@ -20,9 +20,10 @@ class AssetLibrary {
     TextureCache& textures() { return textures_; }
     // A model by name or by path (ending in .gltf/.glb/.obj); a placeholder cube when it cannot load.
     const Model& model(const std::string& name_or_path);
-    // A model entity's file (level::ModelProps::file) read through modelio: rebuilt when the file changed on
-    // disk since (modelio's import cache says so); the marker cube, and one warning, when it cannot be read.
-    const Model& level_model(const std::string& file);
+    // A model entity's file (level::ModelProps::file) read through modelio, with its levels of detail:
+    // rebuilt when the file changed on disk since (modelio's import cache says so); the marker cube (one
+    // level), and one warning, when it cannot be read.
+    const ModelLevels& level_model(const std::string& file);
     // A level surface material; a missing base colour gives the placeholder (one warning).
     const Material& surface(const std::string& name);
     int next_material_id() { return next_material_id_++; }
@@ -37,7 +38,7 @@ class AssetLibrary {
     struct LevelModel {
         std::shared_ptr<const void> source; // the import it was built from; null for the marker
         std::string error;                  // the marker's reason
-        std::unique_ptr<Model> model;
+        ModelLevels model;
     };
     std::map<std::string, LevelModel> level_models_;
 };

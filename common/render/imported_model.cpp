@@ -1,5 +1,6 @@
 #include "render/imported_model.h"
 
+#include "modelio/model_lod.h"
 #include "render/texture_cache.h"
 
 namespace ks::render {
@@ -55,22 +56,17 @@ void add_tangents(MeshData& data) {
     }
 }
 
-} // namespace
-
-std::unique_ptr<Model> model_from_import(const modelio::ImportedModel& imported, TextureCache& textures,
-                                         int& next_material_id) {
+// One Model of `meshes` (a level of detail of `imported`) with the materials already converted.
+std::unique_ptr<Model> model_of_meshes(const modelio::ImportedModel& imported,
+                                       const std::vector<modelio::ImportedMesh>& meshes,
+                                       const std::vector<Material>& materials) {
     auto model = std::make_unique<Model>();
     model->path = imported.path.string();
-    const auto dir = imported.path.parent_path();
-    for (const modelio::ImportedMaterial& m : imported.materials) {
-        Material mat = convert(m, dir, textures);
-        mat.id = next_material_id++;
-        if (mat.placeholder) model->placeholder = true;
-        model->materials.push_back(std::move(mat));
-    }
+    model->materials = materials;
+    for (const Material& mat : materials) model->placeholder = model->placeholder || mat.placeholder;
     ModelNode root;
     root.name = imported.path.stem().string();
-    for (const modelio::ImportedMesh& mesh : imported.meshes) {
+    for (const modelio::ImportedMesh& mesh : meshes) {
         MeshData data;
         data.vertices.resize(mesh.positions.size());
         for (size_t v = 0; v < mesh.positions.size(); ++v)
@@ -81,8 +77,32 @@ std::unique_ptr<Model> model_from_import(const modelio::ImportedModel& imported,
         model->meshes.push_back({std::make_unique<GpuMesh>(data), mesh.material});
     }
     model->nodes.push_back(std::move(root));
-    model->bounds = imported.bounds;
+    model->bounds = imported.bounds; // every level is drawn, culled and placed by the full model's box
     return model;
+}
+
+std::vector<Material> materials_of(const modelio::ImportedModel& imported, TextureCache& textures,
+                                   int& next_material_id) {
+    std::vector<Material> materials;
+    for (const modelio::ImportedMaterial& m : imported.materials) {
+        Material mat = convert(m, imported.path.parent_path(), textures);
+        mat.id = next_material_id++;
+        materials.push_back(std::move(mat));
+    }
+    return materials;
+}
+
+} // namespace
+
+ModelLevels model_levels_from_import(const modelio::ImportedModel& imported, TextureCache& textures,
+                                     int& next_material_id) {
+    const std::vector<Material> materials = materials_of(imported, textures, next_material_id);
+    ModelLevels out;
+    out.levels.push_back(model_of_meshes(imported, imported.meshes, materials));
+    for (const modelio::ModelLod& lod : imported.lods)
+        out.levels.push_back(model_of_meshes(imported, lod.meshes, materials));
+    out.relative_errors = modelio::lod_relative_errors(imported);
+    return out;
 }
 
 std::unique_ptr<Model> marker_model(const std::string& name, TextureCache& textures, int& next_material_id) {

@@ -11,8 +11,10 @@ namespace ks::render {
 
 class TextureCache;
 
-std::unique_ptr<Model> model_from_import(const modelio::ImportedModel& imported, TextureCache& textures,
-                                         int& next_material_id);
+// The full model and one Model per level of detail the import holds (ImportedModel::lods), every level with
+// the same materials (the same ids, so the renderer batches them together).
+ModelLevels model_levels_from_import(const modelio::ImportedModel& imported, TextureCache& textures,
+                                     int& next_material_id);
 
 // The drawn marker of a model whose file cannot be read: the magenta-checker cube standing on its origin
 // (side 1, as level::model_bounding_shape's box).

@@ -3,6 +3,7 @@
 #include "core/log.h"
 #include "level/entity_shapes.h"
 #include "level/model_entity.h"
+#include "modelio/model_lod.h"
 #include "render/brush_mesh.h"
 #include "render/light_bake_cache.h"
 #include "render/scene_renderer.h"
@@ -10,6 +11,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <optional>
 
 namespace ks::render {
@@ -278,10 +281,13 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
                 make_prop(e, &assets.model("control_panel"), level::control_panel_model_matrix(e)));
             break;
         }
-        case EntityType::Model: // a designer's model; the marker cube when its file cannot be read
-            scene->props_.push_back(
-                make_prop(e, &assets.level_model(e.as<level::ModelProps>().file), level::model_matrix(e)));
+        case EntityType::Model: { // a designer's model; the marker cube when its file cannot be read
+            const ModelLevels& levels = assets.level_model(e.as<level::ModelProps>().file);
+            Prop p = make_prop(e, &levels.full(), level::model_matrix(e));
+            p.levels = &levels;
+            scene->props_.push_back(p);
             break;
+        }
         case EntityType::Sound:   // heard, not seen: the editor draws its own marker
         case EntityType::Trigger: // the logic entities are invisible in the game
         case EntityType::Spawner:
@@ -388,6 +394,37 @@ void mark_door_leaves(const Model& model, int left, int right, size_t first, std
 }
 } // namespace
 
+void LevelScene::set_view(const geometry::Camera& camera, int viewport_height) {
+    view_ = camera;
+    view_height_ = viewport_height;
+}
+
+int LevelScene::model_lod(int entity_id) const {
+    for (const Prop& p : props_)
+        if (p.entity_id == entity_id && p.levels) return p.lod;
+    return -1;
+}
+
+// The prop's bounds' diagonal on screen, in pixels, against each level's error (modelio::pick_lod).
+void LevelScene::pick_model_lod(Prop& p) const {
+    if (!model_lods_ || !view_ || p.levels->levels.size() < 2) {
+        p.lod = 0;
+        return;
+    }
+    const geometry::Aabb box = geometry::transform_aabb(p.levels->full().bounds, p.root);
+    const float diagonal = glm::length(box.max - box.min);
+    float pixels = 0.0f;
+    if (view_->ortho_height > 0.0f) {
+        pixels = diagonal / view_->ortho_height * static_cast<float>(view_height_);
+    } else {
+        const float distance = glm::length(box.center() - view_->position) - 0.5f * diagonal;
+        pixels = distance <= 0.0f ? std::numeric_limits<float>::infinity()
+                                  : diagonal / (2.0f * distance * std::tan(0.5f * view_->fov_y)) *
+                                        static_cast<float>(view_height_);
+    }
+    p.lod = modelio::pick_lod(p.levels->relative_errors, pixels, p.lod);
+}
+
 void LevelScene::emit(std::vector<MeshInstance>& instances, std::vector<Light>& lights,
                       std::vector<ShadowCaster>* casters) {
     instances.clear();
@@ -425,6 +462,9 @@ void LevelScene::emit(std::vector<MeshInstance>& instances, std::vector<Light>& 
             if (doors_occlude_) mark_door_leaves(*p.model, l, r, first, instances);
         } else if (p.pose) {
             p.model->emit(p.root, *p.pose, scratch_, instances);
+        } else if (p.levels) {
+            pick_model_lod(p);
+            p.levels->levels[static_cast<std::size_t>(p.lod)]->emit(p.root, scratch_, instances);
         } else {
             // Light fixtures glow with their light; they cast no sun shadow (thin stands, lamp heads).
             p.model->emit(p.root, scratch_, instances, is_light ? (p.light_on ? 1.5f : 0.0f) : 1.0f,

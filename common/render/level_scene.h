@@ -14,6 +14,7 @@
 #include "render/scene.h"
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace ks::render {
@@ -58,6 +59,13 @@ class LevelScene {
     void set_pose(int entity_id, const ModelPose* pose);
     // Door leaves are emitted as occluders (MeshInstance::occluder) unless this is off (benchmarks).
     void set_doors_occlude(bool on) { doors_occlude_ = on; }
+    // The view the next emit() draws for: a designer's model is drawn at the level of detail its size there
+    // asks for (modelio::pick_lod, on `viewport_height` pixels; each prop remembers its level for the
+    // hysteresis). Without a view, or with LODs off (benchmarks), every model is drawn in full.
+    void set_view(const geometry::Camera& camera, int viewport_height);
+    void set_model_lods(bool on) { model_lods_ = on; }
+    // The level of detail prop `entity_id` was last emitted at (0: full; -1: no such model prop).
+    int model_lod(int entity_id) const;
     // Clears and fills `instances` and `lights` for the current state, and `casters` (when given) with the
     // contact shadow casters of the props the game moves (robots, pickups, gas cylinders).
     void emit(std::vector<MeshInstance>& instances, std::vector<Light>& lights,
@@ -92,11 +100,13 @@ class LevelScene {
         Mat4 root{1.0f};
         bool light_on = true;
         float door_open = 0.0f;
-        const ModelPose* pose = nullptr; // set_pose
-        float ground = 0.0f;             // the entity's height: the floor it stands on
-        level::DoorProps door;           // for doors: the leaves slide as level::door_leaf_centre says
-        Light light;                     // for floor/top lights
-        int bake_light = -1;             // its index in the light bake
+        const ModelPose* pose = nullptr;     // set_pose
+        const ModelLevels* levels = nullptr; // a designer's model: its levels of detail
+        int lod = 0;                         // the level emitted last
+        float ground = 0.0f;                 // the entity's height: the floor it stands on
+        level::DoorProps door;               // for doors: the leaves slide as level::door_leaf_centre says
+        Light light;                         // for floor/top lights
+        int bake_light = -1;                 // its index in the light bake
     };
     static Prop make_prop(const level::Entity& e, const Model* model, const Mat4& root);
     std::vector<Surface> surfaces_;
@@ -111,6 +121,10 @@ class LevelScene {
     std::vector<Mat4> scratch_;
     ModelPose pose_;
     bool doors_occlude_ = true;
+    bool model_lods_ = true;
+    std::optional<geometry::Camera> view_;
+    int view_height_ = 0;
+    void pick_model_lod(Prop& p) const;
 };
 
 } // namespace ks::render

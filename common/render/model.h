@@ -56,6 +56,15 @@ class Model {
               float emissive_scale = 1.0f, bool casts_shadow = true) const;
 };
 
+// A model drawn at several levels of detail (a designer's model: modelio/model_lod.h), level 0 the full one;
+// each level's error as a fraction of the model's size says from what size on screen it may be drawn
+// (modelio::pick_lod). One level and error 0 for a model with none.
+struct ModelLevels {
+    std::vector<std::unique_ptr<Model>> levels;
+    std::vector<float> relative_errors;
+    const Model& full() const { return *levels.front(); }
+};
+
 // The magenta-checker cube (side 1, origin at its bottom centre) drawn for `path` when it cannot load.
 std::unique_ptr<Model> placeholder_model(const std::filesystem::path& path, TextureCache& textures,
                                          int& next_material_id);

@@ -7,6 +7,7 @@
 #include "level/texture_names.h"
 #include "model/ambush_validation.h"
 #include "model/logic_validation.h"
+#include "model/model_validation.h"
 #include "model/patrol_validation.h"
 #include "model/reachability.h"
 #include "model/sound_validation.h"
@@ -262,6 +263,8 @@ void check_format(const Level& level, std::vector<Issue>& out) {
             d.severity == level::Diagnostic::Severity::Error ? IssueSeverity::Error : IssueSeverity::Warning;
         issue.entity_id = entity_id_from_path(level, d.error.where.path);
         issue.message = d.error.str();
+        if (const level::Entity* e = issue.entity_id ? level.find(issue.entity_id) : nullptr)
+            issue.fix = model_quick_fix(*e, d);
         out.push_back(std::move(issue));
     }
 }

@@ -179,9 +179,16 @@ bool EditorApp::poll_background() {
         else if (*r)
             log_line("autosaved to " + (*r)->string());
     }
-    if (!dojo_tab_) prefabs_.rescan(editor_, log_, glfwGetWindowAttrib(shell_.window(), GLFW_FOCUSED) != 0);
+    const std::uint64_t models = models_.models_revision();
+    if (!dojo_tab_) {
+        const bool focused = glfwGetWindowAttrib(shell_.window(), GLFW_FOCUSED) != 0;
+        prefabs_.rescan(editor_, log_, focused);
+        models_.rescan(focused);
+        viewport_.set_models_revision(models_.models_revision()); // a model file changed: drawn anew
+    }
     return log_.revision() != logged || editor_.prefabs().revision() != prefabs ||
-           editor_.revision() != revision || play_.running() != playing || edit_waiting;
+           models_.models_revision() != models || editor_.revision() != revision ||
+           play_.running() != playing || edit_waiting;
 }
 
 void EditorApp::update_title() {
@@ -202,6 +209,7 @@ void EditorApp::render_views(const shell::FrameInfo& info) {
         viewport_.rebuild_scene();
         clip_preview_.pose(editor_, *dojo_, scene_.scene(), info.frame_dt);
         prefabs_.render_thumbnails(editor_.prefabs(), scene_.renderer(), assets_);
+        models_.render_thumbnails(scene_.renderer(), assets_);
         const int w = static_cast<int>(layout.centre.w), h = static_cast<int>(layout.centre.h - kViewportBar);
         viewport_.render(w, std::max(1, h));
     }

@@ -21,6 +21,7 @@
 #include "ui/inspector.h"
 #include "ui/level_viewport.h"
 #include "ui/logic_panels.h"
+#include "ui/model_browser.h"
 #include "ui/outliner.h"
 #include "ui/panel_context.h"
 #include "ui/place_palette.h"
@@ -131,6 +132,7 @@ class EditorApp final : private WindowServices {
     PlacePalette palette_;
     Outliner outliner_;
     PrefabPalette prefabs_;
+    ModelBrowser models_; // the Models tab
     Inspector inspector_;
     BrushMenu brush_menu_;
     ValidationPanel validation_;

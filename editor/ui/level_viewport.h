@@ -15,6 +15,7 @@
 #include "ui/layout.h"
 #include "ui/logic_overlay.h"
 #include "ui/logic_panels.h"
+#include "ui/model_overlay.h"
 #include "ui/place_tool.h"
 #include "ui/ui_spots.h"
 #include "ui/viewport_lines.h"
@@ -76,6 +77,8 @@ class LevelViewport {
     ViewCamera& camera() { return view_; }
     Overlays& overlays() { return overlays_; }
     PlaceTool& place_tool() { return place_; }
+    // The Models tab's revision (model_browser.h): a model file changed on disk rebuilds the scene.
+    void set_models_revision(std::uint64_t revision) { models_revision_ = revision; }
     bool flying() const { return flying_; }
     bool animating() const { return lines_.building(); } // the navigation mesh is being built
     // --status-file: the viewport's keys; `level_shown`: the Level tab is shown (not the dojo).
@@ -122,6 +125,8 @@ class LevelViewport {
     std::optional<geometry::Ray> place_ray_;   // the mouse's ray in the active view, while it is hovered
     Overlays overlays_;
     std::optional<SectionCut> section_; // this frame's cut while overlays_.section is on
+    std::uint64_t models_revision_ = 0;
+    ModelCollisionOverlay model_collision_; // the selected models' collision (model_overlay.h)
     ViewportLines lines_;
     LogicOverlay logic_overlay_; // trigger, spawner and message markers; link arrows
     Gizmo gizmo_;

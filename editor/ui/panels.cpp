@@ -66,6 +66,15 @@ void EditorApp::outliner_panel(float x, float y, float w, float h) {
         }
         ImGui::EndTabItem();
     }
+    if (ImGui::BeginTabItem("Models")) {
+        spots_.here("tab.models");
+        if (const auto name = models_.draw(ctx, viewport_.place_tool().model())) {
+            logic_.end_pick(); // placing takes the viewport's clicks
+            viewport_.disarm_tools();
+            viewport_.place_tool().arm_model(*name);
+        }
+        ImGui::EndTabItem();
+    }
     start_tab_ = LeftTab::Outliner;
     ImGui::EndTabBar();
     ImGui::End();

@@ -1,6 +1,7 @@
 // The viewport's place tool (place_tool.h): the preview boxes where a click would place, and the click.
 #include "ui/place_tool.h"
 #include "model/edit_entities.h"
+#include "model/edit_models.h"
 #include "model/edit_prefabs.h"
 
 #include <imgui.h>
@@ -9,6 +10,7 @@
 namespace ks::editor::ui {
 
 std::string PlaceTool::label() const {
+    if (!model_.empty()) return "model " + model_;
     return type_ ? std::string(level::type_name(*type_)) : "prefab " + prefab_;
 }
 
@@ -20,7 +22,11 @@ void PlaceTool::input(const ToolInput& in) {
     if (!in.hovered || !ImGui::IsMouseClicked(ImGuiMouseButton_Left)) return;
     const geometry::Ray ray = in.view.ray(in.mouse);
     const Vec3 at = place_point(in.editor.doc(), ray, in.shown, in.view.pivot);
-    if (type_) {
+    if (!model_.empty()) {
+        auto placed =
+            place_model(in.editor, model_, placement_for(in.editor.doc(), level::EntityType::Model, at));
+        if (!placed) in.log.line("place model: " + placed.error().str(), true);
+    } else if (type_) {
         auto placed = place(in.editor, *type_, placement_for(in.editor.doc(), *type_, at));
         if (!placed) in.log.line("place: " + placed.error().str(), true);
     } else {
@@ -35,10 +41,12 @@ void PlaceTool::input(const ToolInput& in) {
 void PlaceTool::draw_lines(render::DebugDraw& debug, const ToolView& view) const {
     if (!armed() || !view.mouse_ray) return;
     const Vec3 p = place_point(view.editor.doc(), *view.mouse_ray, view.shown, view.view.pivot);
-    if (type_) {
+    if (type_ || !model_.empty()) { // a model's box is its file's (the marker cube while it cannot be read)
+        const level::EntityType type = type_ ? *type_ : level::EntityType::Model;
         level::Entity preview;
-        preview.position = placement_for(view.editor.doc(), *type_, p);
-        preview.props = level::default_props(*type_);
+        preview.position = placement_for(view.editor.doc(), type, p);
+        preview.props = level::default_props(type);
+        if (!model_.empty()) preview.as<level::ModelProps>().file = model_;
         draw_obb(debug, entity_obb(preview), Vec4(0.4f, 1.0f, 0.5f, 0.9f));
     } else if (const PrefabEntry* entry = view.editor.prefabs().find(prefab_); entry && entry->prefab) {
         for (const level::Entity& local : entry->prefab->entities) {
@@ -52,6 +60,7 @@ void PlaceTool::draw_lines(render::DebugDraw& debug, const ToolView& view) const
 void PlaceTool::status(nlohmann::json& s) const {
     s["placing"] = type_ ? std::string(level::type_name(*type_)) : std::string();
     s["placing_prefab"] = prefab_;
+    s["placing_model"] = model_;
 }
 
 } // namespace ks::editor::ui

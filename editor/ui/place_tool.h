@@ -1,7 +1,8 @@
 #pragma once
 // The viewport's place tool (place_tool.cpp): armed by a click in the entity palette (place_palette.h) or the
-// Prefabs tab (prefab_palette.h), it shows where a click would place (every view) and places there: one
-// entity of the type, or the prefab's entities. Shift keeps it armed for several.
+// Prefabs tab (prefab_palette.h) or the Models tab (model_browser.h), it shows where a click would place
+// (every view) and places there: one entity of the type, or the prefab's entities. Shift keeps it armed for
+// several.
 #include "ui/viewport_tool.h"
 
 #include <optional>
@@ -13,14 +14,16 @@ class PlaceTool final : public ViewportTool {
   public:
     void arm(level::EntityType type) { disarm(), type_ = type; }
     void arm_prefab(std::string name) { disarm(), prefab_ = std::move(name); }
+    void arm_model(std::string file) { disarm(), model_ = std::move(file); } // the Models tab's
+    const std::string& model() const { return model_; }
     const std::optional<level::EntityType>& type() const { return type_; } // the palette's armed button
     const std::string& prefab() const { return prefab_; }                  // the Prefabs tab's armed row
 
-    bool armed() const override { return type_.has_value() || !prefab_.empty(); }
+    bool armed() const override { return type_.has_value() || !prefab_.empty() || !model_.empty(); }
     void input(const ToolInput& in) override;
     void draw_lines(render::DebugDraw& debug, const ToolView& view) const override;
     std::string hint() const override;
-    void disarm() override { type_.reset(), prefab_.clear(); }
+    void disarm() override { type_.reset(), prefab_.clear(), model_.clear(); }
     void status(nlohmann::json& status) const override; // "placing", "placing_prefab"
 
   private:
@@ -28,6 +31,7 @@ class PlaceTool final : public ViewportTool {
 
     std::optional<level::EntityType> type_;
     std::string prefab_; // a prefab's name
+    std::string model_;  // a model file's name (level::ModelProps::file)
 };
 
 } // namespace ks::editor::ui

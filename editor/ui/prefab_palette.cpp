@@ -11,6 +11,7 @@
 #include "render/debug_draw.h"
 #include "render/level_scene.h"
 #include "ui/panel_style.h"
+#include "ui/thumbnail_camera.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -24,22 +25,6 @@ namespace ks::editor::ui {
 namespace {
 constexpr int kThumbnailSize = 92; // two to a row in the narrowest left column (1280 wide)
 constexpr double kRescanSeconds = 2.0;
-
-// A three-quarter view from the front right, above, framing the prefab's bounds.
-geometry::Camera thumbnail_camera(Vec3 lo, Vec3 hi) {
-    geometry::Camera camera;
-    camera.aspect = 1.0f;
-    camera.fov_y = radians(40.0f);
-    camera.yaw = radians(35.0f);
-    camera.pitch = radians(-28.0f);
-    const Vec3 centre = (lo + hi) * 0.5f;
-    const float radius = std::max(0.5f, glm::length(hi - lo) * 0.5f);
-    const float distance = radius / std::sin(camera.fov_y * 0.5f) * 1.02f;
-    camera.position = centre - camera.forward() * distance;
-    camera.near_plane = std::max(0.05f, distance - radius * 2.0f);
-    camera.far_plane = distance + radius * 2.0f;
-    return camera;
-}
 } // namespace
 
 void PrefabPalette::rescan(Editor& editor, EditorLog& log, bool focused) {

@@ -36,7 +36,8 @@ void LevelViewport::sync_active_pane() {
 void LevelViewport::rebuild_scene() {
     section_ = overlays_.section ? section_cut(ctx_.editor, view_) : std::nullopt;
     scene_.rebuild_if_changed(ctx_.editor,
-                              section_key(section_) ^ (static_cast<std::uint64_t>(overlays_.ceilings) << 63),
+                              section_key(section_) ^ (static_cast<std::uint64_t>(overlays_.ceilings) << 63) ^
+                                  (models_revision_ * 0x9e3779b97f4a7c15ull),
                               shown_fn());
 }
 
@@ -44,6 +45,7 @@ void LevelViewport::rebuild_scene() {
 // group's box over them.
 void LevelViewport::draw_lines(render::DebugDraw& debug, const ViewCamera& view) {
     lines_.draw(debug, view, ctx_.editor, overlays_, logic_overlay_, ctx_.shell.screenshot_mode());
+    model_collision_.draw(debug, ctx_.editor);
     const ShownFn shown = shown_fn();
     const ToolView tool_view{ctx_.editor, view, place_ray_, shown};
     for (const ViewportTool* tool : tools()) tool->draw_lines(debug, tool_view);

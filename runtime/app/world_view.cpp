@@ -92,6 +92,8 @@ void WorldView::fill(const game::Game& game, float alpha, float fov_degrees, con
     // Doors and lights follow the game.
     for (const auto& d : game.doors()) scene_->set_door_open(d.entity_id, d.progress);
     for (const auto& l : game.lights()) scene_->set_light_on(l.entity_id, l.on);
+    // Designers' models pick their level of detail by the view (last frame's: set further down).
+    scene_->set_view(camera_, frame.height);
     scene_->emit(instances_, lights_, &casters_);
     add_muzzle_lights(feedback_, lights_, a * step_dt_); // muzzle flashes light their surroundings
 

@@ -280,6 +280,8 @@ Level random_level(Rng& rng, int entity_count) {
             for (Vec3& p : robot->patrol.points) p += e.position;
         if (robot && robot->eye_radius_min > robot->eye_radius_max)
             std::swap(robot->eye_radius_min, robot->eye_radius_max);
+        // A shipped model (3 to 9 units across) scaled into what validation calls a sensible size.
+        if (auto* model = e.try_as<ModelProps>()) model->scale = std::clamp(model->scale, 0.1f, 100.0f);
         level.entities.push_back(std::move(e));
     }
     add_random_links(rng, level);

@@ -1,11 +1,13 @@
 // Brush entities drawn by the level scene on both render paths: visible, textured face by face with their
 // materials, casting the sun's shadow onto a brush floor (shadow map on the full path, light map on the
-// fast path), and a level with 500 brushes against the same level without them.
+// fast path), and a level with 500 brushes against the same level without them; a designer's model emitted at
+// its level of detail.
 #include "gl_test_support.h"
 #include "test_support.h"
 
 #include "brush/brush_build.h"
 #include "core/log.h"
+#include "core/paths.h"
 #include "level/level.h"
 #include "level/level_io.h"
 #include "render/asset_library.h"
@@ -16,6 +18,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
 
 using namespace ks;
 using namespace ks::render;
@@ -232,4 +238,58 @@ TEST_CASE("brushes: the main level with 500 brushes added, against without (surf
         CHECK(surfaces[1] == surfaces[0] + 500);
         CHECK(median_ms[1] > 0.0);
     }
+}
+
+TEST_CASE("a designer's model is emitted at its level of detail by its size on screen") {
+    REQUIRE_MESSAGE(test::gl_context(), "no display: run the GL tests under xvfb-run (./run.sh test does)");
+    test::ScratchDir dir;
+    const char* old_home = std::getenv("XDG_DATA_HOME");
+    const std::string saved = old_home ? old_home : "";
+    setenv("XDG_DATA_HOME", dir.path().c_str(), 1);
+    { // a UV sphere of 64 x 32 quads, radius 1, in the user's models folder
+        std::string obj;
+        const int rings = 32, segments = 64;
+        for (int r = 0; r <= rings; ++r)
+            for (int s = 0; s < segments; ++s) {
+                const double t = kPi * r / rings, p = 2 * kPi * s / segments;
+                obj += "v " + std::to_string(std::sin(t) * std::cos(p)) + " " +
+                       std::to_string(1 + std::cos(t)) + " " + std::to_string(std::sin(t) * std::sin(p)) +
+                       "\n";
+            }
+        for (int r = 0; r < rings; ++r)
+            for (int s = 0; s < segments; ++s) {
+                const int a = r * segments + s + 1, b = r * segments + (s + 1) % segments + 1;
+                obj += "f " + std::to_string(a) + " " + std::to_string(a + segments) + " " +
+                       std::to_string(b + segments) + " " + std::to_string(b) + "\n";
+            }
+        std::filesystem::create_directories(dir / "killswitch/models");
+        test::write_file(dir / "killswitch/models/ball.obj", obj);
+    }
+    level::Level level;
+    level.add(level::EntityType::Model, {0, 0, 0}, "Ball").as<level::ModelProps>().file = "ball.obj";
+    const int id = level.entities.back().id;
+    AssetLibrary assets(paths::asset(""));
+    LevelSceneOptions options;
+    options.bake_light_map = false;
+    auto scene = LevelScene::build(level, assets, options);
+    std::vector<MeshInstance> instances;
+    std::vector<Light> lights;
+    auto triangles_at = [&](float distance) {
+        geometry::Camera camera;
+        camera.position = {0.0f, 1.0f, distance};
+        scene->set_view(camera, 720);
+        scene->emit(instances, lights);
+        int indices = 0;
+        for (const MeshInstance& inst : instances) indices += inst.mesh->index_count();
+        return indices / 3;
+    };
+    const int near = triangles_at(3.0f);
+    CHECK(scene->model_lod(id) == 0);
+    const int far = triangles_at(400.0f);
+    CHECK(scene->model_lod(id) == 3);
+    CHECK(far * 5 < near);
+    CHECK(triangles_at(3.0f) == near);
+    scene->set_model_lods(false);
+    CHECK(triangles_at(400.0f) == near);
+    old_home ? setenv("XDG_DATA_HOME", saved.c_str(), 1) : unsetenv("XDG_DATA_HOME");
 }
