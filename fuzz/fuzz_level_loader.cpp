@@ -1,4 +1,5 @@
-// libFuzzer target: level files (format v3 with its level logic and brushes, older versions migrated on load).
+// libFuzzer target: level files (format v3 with its level logic and brushes, older versions migrated on
+// load).
 #include "fuzz_oracle.h"
 #include "level/level_io.h"
 

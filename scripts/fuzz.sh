@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (fuzz/, clang) and runs each for a bounded time.
-#   scripts/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]      (default 60 s, all four targets)
+#   scripts/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]      (default 60 s, all seven targets)
 # Environment: KS_FUZZ_BUILD (build folder, default build-fuzz), KS_FUZZ_FLAGS (extra libFuzzer flags),
 # KS_FUZZ_NO_BUILD=1 (run the targets already built there), KS_FUZZ_TIMEOUT (seconds one input may take,
 # default 30: wall-clock, so generous on a shared machine), KS_FUZZ_MAX_LEN (default 32768 bytes: the largest
@@ -19,7 +19,8 @@ if ! [[ $seconds =~ ^[0-9]+$ ]] || (( seconds < 1 )); then
     exit 2
 fi
 targets=("$@")
-(( ${#targets[@]} )) || targets=(fuzz_level_loader fuzz_campaign_loader fuzz_clip_loader fuzz_editor_script)
+(( ${#targets[@]} )) || targets=(fuzz_level_loader fuzz_campaign_loader fuzz_clip_loader fuzz_editor_script fuzz_prefab_loader
+    fuzz_brush_ops fuzz_model_import)
 build=${KS_FUZZ_BUILD:-$root/build-fuzz}
 jobs=$(nproc 2>/dev/null || echo 2)
 
@@ -38,6 +39,9 @@ seeds_for() {
     fuzz_campaign_loader) echo "$root/levels $root/tests/data/campaign" ;;
     fuzz_clip_loader) echo "$root/assets/animations $root/tests/data/anim/bad" ;;
     fuzz_editor_script) echo "" ;;
+    fuzz_prefab_loader) echo "$root/prefabs" ;;
+    fuzz_brush_ops) echo "" ;;
+    fuzz_model_import) echo "" ;; # seeds: tests/data/fuzz/fuzz_model_import/seed-* (a format byte, then the file)
     *) echo "fuzz.sh: unknown target '$1'" >&2; exit 2 ;;
     esac
 }
@@ -47,6 +51,9 @@ dict_for() {
     fuzz_campaign_loader) echo "$root/fuzz/campaign.dict" ;;
     fuzz_clip_loader) echo "$root/fuzz/clip.dict" ;;
     fuzz_editor_script) echo "$root/fuzz/script.dict" ;;
+    fuzz_prefab_loader) echo "$root/fuzz/level.dict" ;;
+    fuzz_brush_ops) echo "" ;;
+    fuzz_model_import) echo "$root/fuzz/model.dict" ;;
     esac
 }
 
@@ -64,10 +71,11 @@ for target in "${targets[@]}"; do
     find "$regressions" -maxdepth 1 -type f -name 'seed-*' -exec cp -n {} "$corpus/" \;
     echo "== $target: ${seconds}s (log: $log)"
     # The first folder receives new inputs; the seed folders are only read.
+    dict=$(dict_for "$target")
     set +e
     # shellcheck disable=SC2046 # the seed list is meant to split into folders
-    "$build/bin/$target" "$corpus" $(seeds_for "$target") \
-        -dict="$(dict_for "$target")" -max_total_time="$seconds" -timeout="${KS_FUZZ_TIMEOUT:-30}" -max_len="${KS_FUZZ_MAX_LEN:-32768}" -rss_limit_mb=2048 \
+    "$build/bin/$target" "$corpus" $(seeds_for "$target") ${dict:+-dict="$dict"} \
+        -max_total_time="$seconds" -timeout="${KS_FUZZ_TIMEOUT:-30}" -max_len="${KS_FUZZ_MAX_LEN:-32768}" -rss_limit_mb=2048 \
         -artifact_prefix="$artifacts/" -print_final_stats=1 ${KS_FUZZ_FLAGS:-} >"$log" 2>&1
     rc=$?
     set -e
