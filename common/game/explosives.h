@@ -8,6 +8,7 @@
 
 namespace ks::game {
 
+class LevelEdit; // live_carry.h
 class PlayerSystem;
 class RobotSystem;
 
@@ -35,10 +36,12 @@ class Explosives {
     void explode(std::size_t index);
     // A character touched it: it explodes at the next step's fuse check.
     void touched(std::size_t index);
+    // The live play-test's rebuild (live_carry.h): cylinders the edit kept keep their fuse, or stay gone;
+    // returns how many.
+    int carry_from(const Explosives& previous, const LevelEdit& edit);
     std::span<const Cylinder> cylinders() const { return cylinders_; }
 
   private:
-    friend struct LiveCarry; // live_update.cpp
     GameCore& core_;
     PlayerSystem& player_;
     RobotSystem& robots_;

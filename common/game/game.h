@@ -35,6 +35,8 @@
 
 namespace ks::game {
 
+class LevelEdit; // live_carry.h
+
 struct GameOptions {
     std::uint64_t seed = 1;
     GameSettings settings;
@@ -115,8 +117,11 @@ class Game {
     bool run_action(level::LinkAction action, int target) { return logic_.run_action(action, target); }
     bool complete_objective(std::string_view id) { return logic_.complete_objective(id); }
 
+    // The live play-test's rebuild (live_update.h): this game, just built on the edited level, takes over
+    // `previous`'s state for everything `edit` kept, system by system. Returns how many entities kept it.
+    int carry_from(const Game& previous, const LevelEdit& edit);
+
   private:
-    friend struct LiveCarry; // live_update.cpp: the state an edit carries over
     explicit Game(GameOptions options);
     Result<void> build(const level::Level& level);
     // Walls, floors, props, lights, cylinders and panels: a static body each (and their systems' records).

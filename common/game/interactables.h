@@ -17,6 +17,8 @@ class NavMesh;
 
 namespace ks::game {
 
+class LevelEdit; // live_carry.h
+
 struct Door {
     int entity_id = 0;
     level::DoorProps props;
@@ -85,6 +87,9 @@ class Interactables {
     void set_door_opening(std::size_t door, bool opening);
     void set_door_locked(std::size_t door, bool locked) { doors_[door].locked = locked; }
     void set_light(std::size_t light, bool on);
+    // The live play-test's rebuild (live_carry.h): doors (how open, lock; their polygons opened in
+    // `navigation`), lights and pickups the edit kept take over their state in `previous`; returns how many.
+    int carry_from(const Interactables& previous, const LevelEdit& edit, nav::NavMesh* navigation);
 
     std::span<const Door> doors() const { return doors_; }
     std::span<const Light> lights() const { return lights_; }
@@ -95,7 +100,6 @@ class Interactables {
     int interact_target() const { return interact_target_; }
 
   private:
-    friend struct LiveCarry; // live_update.cpp
     void interact(int entity_id);
 
     GameCore& core_;

@@ -23,6 +23,7 @@
 
 namespace ks::game {
 
+class LevelEdit; // live_carry.h
 class Interactables;
 class PlayerSystem;
 class RobotSystem;
@@ -120,6 +121,9 @@ class LevelLogic {
     bool complete_objective(std::string_view id);
     // Says a run-time problem once (logged, and kept in problems()).
     void report(std::string problem);
+    // The live play-test's rebuild (live_carry.h, after the robots): objectives done, triggers, fired once
+    // links and the message on screen carry over; a carried robot already dead does not die again.
+    void carry_from(const LevelLogic& previous, const LevelEdit& edit);
 
     std::span<const ObjectiveState> objectives() const { return objectives_; }
     // The first objective not yet complete (the one the HUD shows), or -1.
@@ -157,7 +161,6 @@ class LevelLogic {
     void clear_records() { records_.clear(); }
 
   private:
-    friend struct LiveCarry; // live_update.cpp
     // Schedules every link in `range` whose event is `event`: a zero-delay link runs in this step, the
     // others wait in the queue. A fired once link is skipped.
     void fire(LinkRange range, level::LinkEvent event);

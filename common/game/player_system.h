@@ -8,6 +8,7 @@
 
 namespace ks::game {
 
+class LevelEdit; // live_carry.h
 class RobotSystem;
 class Explosives;
 
@@ -66,9 +67,11 @@ class PlayerSystem {
     std::optional<float> take(PickupKind kind, float amount);
     void teleport(const Vec3& feet, float yaw, float pitch);
     DeathCamera death_camera() const;
+    // The live play-test's rebuild (live_carry.h): the running game's player, all of it but the body (a
+    // moved player start does not move a player already playing).
+    void carry_from(const PlayerSystem& previous);
 
   private:
-    friend struct LiveCarry; // live_update.cpp
     void feet_events(bool was_grounded, const Vec3& old_velocity, const Vec3& ground_normal, float dt);
     void fire_shot();
 

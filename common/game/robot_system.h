@@ -20,6 +20,7 @@
 
 namespace ks::game {
 
+class LevelEdit; // live_carry.h
 class PlayerSystem;
 class Explosives;
 struct Door;
@@ -111,6 +112,13 @@ class RobotSystem {
     // A shot or an explosion at `source`: idle and searching robots whose hearing radius reaches it along
     // the mesh go to look.
     void hear_sound(const Vec3& source);
+    // The live play-test's rebuild (live_carry.h): the level's robots the edit kept take over their state
+    // in `previous` (their place too unless the edit moved them), and the kill count; returns how many.
+    int carry_from(const RobotSystem& previous, const LevelEdit& edit);
+    // Robot `index` takes over robot `previous_index` of `previous`: its state and animation, and its place
+    // unless not `keep_place` (then it stands where the level puts it); its path is planned again.
+    void carry_robot(std::size_t index, const RobotSystem& previous, std::size_t previous_index,
+                     bool keep_place);
 
     std::span<const Robot> robots() const { return robots_; }
     const anim::Player& animation(std::size_t index) const { return anims_[index]; }
@@ -124,7 +132,6 @@ class RobotSystem {
     const std::string& navigation_error() const { return navigation_error_; }
 
   private:
-    friend struct LiveCarry; // live_update.cpp
     void warn_missing_event_sounds(const std::string& source) const;
     void update_robot(std::size_t index, float dt);
     void hold_dormant(std::size_t index, float dt);

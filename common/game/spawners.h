@@ -14,6 +14,7 @@
 
 namespace ks::game {
 
+class LevelEdit; // live_carry.h
 class LevelLogic;
 class PlayerSystem;
 class RobotSystem;
@@ -50,10 +51,12 @@ class Spawners {
     void check_ground(LevelLogic& logic);
     // Makes the robots that are due; what can never work is said once in `logic`'s problems.
     void update(LevelLogic& logic);
+    // The live play-test's rebuild (live_carry.h): the spawners the edit kept go on with their wave, and
+    // their robots still alive in `previous` come along (added to this game's robots).
+    void carry_from(const Spawners& previous, const LevelEdit& edit);
     std::span<const SpawnerState> spawners() const { return spawners_; }
 
   private:
-    friend struct LiveCarry; // live_update.cpp
     bool spawn_robot(SpawnerState& s, LevelLogic& logic);
     // False (and `s` stuck, the reason reported) when no navigation mesh lies within reach of it.
     bool has_ground(SpawnerState& s, LevelLogic& logic);
