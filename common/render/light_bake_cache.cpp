@@ -15,7 +15,7 @@ constexpr std::uint64_t kMaxCount = 1ull << 28; // a sanity bound on any stored 
 // Guards against a silently incomplete cache: a new field in these types changes their size, and then what
 // the cache stores and hashes must be extended with it (and kLightBakeVersion bumped).
 static_assert(sizeof(BakeSettings) == 48, "BakeSettings changed: hash the new field in light_bake_key");
-static_assert(sizeof(BakeStats) == 56, "BakeStats changed: check what the cache stores");
+static_assert(sizeof(BakeStats) == 64, "BakeStats changed: check what the cache stores");
 static_assert(sizeof(BakedAtlas) == 2 * sizeof(int) + 5 * sizeof(std::vector<int>),
               "BakedAtlas gained a member: store it below and bump kLightBakeVersion");
 static_assert(sizeof(Vertex) == 14 * sizeof(float) && offsetof(Vertex, lightmap_uv) == 12 * sizeof(float),

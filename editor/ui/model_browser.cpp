@@ -1,7 +1,6 @@
 // The left column's Models tab (model_browser.h).
 #include "ui/model_browser.h"
 
-#include "render/debug_draw.h"
 #include "render/level_scene.h"
 #include "ui/thumbnail_camera.h"
 
@@ -44,7 +43,6 @@ void ModelBrowser::render_thumbnails(render::SceneRenderer& renderer, render::As
     options.bake_light_map = false; // lit per vertex: no bake for 92 pixels
     std::vector<render::MeshInstance> instances;
     std::vector<render::Light> lights;
-    render::DebugDraw no_debug;
     for (const ModelEntry& entry : library_.entries()) {
         if (entry.shadowed || thumbnail(entry.name) || drawn == kThumbnailsPerFrame) continue;
         ++drawn;
@@ -55,26 +53,9 @@ void ModelBrowser::render_thumbnails(render::SceneRenderer& renderer, render::As
         level.add(level::EntityType::Model, Vec3(0.0f), entry.name).as<level::ModelProps>().file = entry.name;
         auto scene = render::LevelScene::build(level, assets, options);
         scene->emit(instances, lights);
-        const Vec3 lo = scene->bounds().min, hi = scene->bounds().max;
-        const geometry::Camera camera = thumbnail_camera(lo, hi);
-        render::Light lamp; // over the camera's shoulder
-        lamp.position = camera.position + Vec3(0, glm::length(hi - lo) * 0.5f, 0);
-        lamp.range = glm::length(hi - lo) * 3.0f + 10.0f;
-        lamp.intensity = 1.6f;
-        lights.push_back(lamp);
-        render::SceneFrame frame;
-        frame.camera = camera;
-        frame.environment = scene->environment();
-        frame.environment.sky_color = glm::max(frame.environment.sky_color, Vec3(0.35f));
-        frame.instances = &instances;
-        frame.lights = &lights;
-        frame.debug = &no_debug;
-        frame.width = frame.height = kModelThumbnailSize;
-        if (!made->target.ensure(kModelThumbnailSize, kModelThumbnailSize)) continue;
-        renderer.invalidate_shadows(); // the cached shadow map is the level's
-        made->target.bind();
-        renderer.render(frame);
-        renderer.invalidate_shadows();
+        if (!render_thumbnail(renderer, made->target, kModelThumbnailSize, scene->bounds().min,
+                              scene->bounds().max, scene->environment(), instances, lights))
+            continue;
         thumbnails_.push_back(std::move(made));
     }
 }

@@ -8,7 +8,6 @@
 #include "model/edit_prefabs.h"
 
 #include "model/bounds.h"
-#include "render/debug_draw.h"
 #include "render/level_scene.h"
 #include "ui/panel_style.h"
 #include "ui/thumbnail_camera.h"
@@ -54,7 +53,6 @@ void PrefabPalette::render_thumbnails(const PrefabLibrary& library, render::Scen
     options.bake_light_map = false; // a thumbnail is lit per vertex: no bake for 96 pixels
     std::vector<render::MeshInstance> instances;
     std::vector<render::Light> lights;
-    render::DebugDraw no_debug;
     renderer.invalidate_shadows(); // the cached shadow map is the level's
     for (const PrefabEntry& entry : library.entries()) {
         if (!entry.prefab || entry.prefab->entities.empty()) continue;
@@ -69,26 +67,9 @@ void PrefabPalette::render_thumbnails(const PrefabLibrary& library, render::Scen
         auto scene = render::LevelScene::build(level, assets, options);
         scene->emit(instances, lights);
         // A prefab without lights of its own is lit by a lamp over the camera's shoulder.
-        const geometry::Camera camera = thumbnail_camera(lo, hi);
-        if (lights.empty()) {
-            render::Light lamp;
-            lamp.position = camera.position + Vec3(0, glm::length(hi - lo) * 0.5f, 0);
-            lamp.range = glm::length(hi - lo) * 3.0f + 10.0f;
-            lamp.intensity = 1.6f;
-            lights.push_back(lamp);
-        }
-        render::SceneFrame frame;
-        frame.camera = camera;
-        frame.environment = scene->environment();
-        frame.environment.sky_color = glm::max(frame.environment.sky_color, Vec3(0.35f));
-        frame.instances = &instances;
-        frame.lights = &lights;
-        frame.debug = &no_debug;
-        frame.width = frame.height = kThumbnailSize;
-        if (!thumbnail->target.ensure(kThumbnailSize, kThumbnailSize)) continue;
-        thumbnail->target.bind();
-        renderer.render(frame);
-        renderer.invalidate_shadows();
+        if (!render_thumbnail(renderer, thumbnail->target, kThumbnailSize, lo, hi, scene->environment(),
+                              instances, lights))
+            continue;
         thumbnail->drawn = true;
         kept.push_back(std::move(thumbnail));
     }

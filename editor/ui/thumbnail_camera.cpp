@@ -1,5 +1,8 @@
 #include "ui/thumbnail_camera.h"
 
+#include "render/debug_draw.h"
+#include "render/scene_renderer.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -18,6 +21,35 @@ geometry::Camera thumbnail_camera(Vec3 lo, Vec3 hi) {
     camera.near_plane = std::max(0.05f, distance - radius * 2.0f);
     camera.far_plane = distance + radius * 2.0f;
     return camera;
+}
+
+bool render_thumbnail(render::SceneRenderer& renderer, RenderTarget& target, int size, Vec3 lo, Vec3 hi,
+                      const render::Environment& environment,
+                      const std::vector<render::MeshInstance>& instances,
+                      std::vector<render::Light>& lights) {
+    const geometry::Camera camera = thumbnail_camera(lo, hi);
+    if (lights.empty()) {
+        render::Light lamp;
+        lamp.position = camera.position + Vec3(0, glm::length(hi - lo) * 0.5f, 0);
+        lamp.range = glm::length(hi - lo) * 3.0f + 10.0f;
+        lamp.intensity = 1.6f;
+        lights.push_back(lamp);
+    }
+    render::DebugDraw no_debug;
+    render::SceneFrame frame;
+    frame.camera = camera;
+    frame.environment = environment;
+    frame.environment.sky_color = glm::max(frame.environment.sky_color, Vec3(0.35f));
+    frame.instances = &instances;
+    frame.lights = &lights;
+    frame.debug = &no_debug;
+    frame.width = frame.height = size;
+    if (!target.ensure(size, size)) return false;
+    renderer.invalidate_shadows();
+    target.bind();
+    renderer.render(frame);
+    renderer.invalidate_shadows();
+    return true;
 }
 
 } // namespace ks::editor::ui

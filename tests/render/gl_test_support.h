@@ -1,5 +1,6 @@
 #pragma once
 // Shared GL context for the render tests (one hidden window for the whole run) and image checks.
+#include "render/level_scene.h"
 #include "render/scene_renderer.h"
 #include "shell/offscreen_context.h"
 
@@ -36,5 +37,13 @@ std::vector<unsigned char> render_offscreen(render::SceneRenderer& renderer, con
                                             const render::ViewModel* view_model = nullptr);
 // Mean absolute difference per channel (0..255) between two RGB images of the same size.
 double mean_abs_diff(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b);
+
+// The light map with the direct light alone: these pictures check the renderer, not the bake's bounce and
+// occlusion (test_light_bake.cpp), and the full bake would add seconds of CPU to each.
+inline render::LevelSceneOptions direct_light_only() {
+    render::LevelSceneOptions options;
+    options.bake = render::BakeSettings::direct_only();
+    return options;
+}
 
 } // namespace ks::test

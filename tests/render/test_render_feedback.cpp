@@ -17,13 +17,6 @@ using namespace ks;
 using namespace ks::render;
 
 namespace {
-// The light map with the direct light alone: these pictures check the renderer, not the bake's bounce and
-// occlusion (test_light_bake.cpp), and the full bake would add seconds of CPU to each.
-LevelSceneOptions direct_light_only() {
-    LevelSceneOptions options;
-    options.bake = BakeSettings::direct_only();
-    return options;
-}
 
 RendererSettings quality(RenderQuality q) {
     RendererSettings s;
@@ -107,7 +100,7 @@ TEST_CASE("a dynamic light lights the baked floor on the fast path; a level ligh
     flash.range = 8.0f;
     for (RenderQuality q : {RenderQuality::Full, RenderQuality::Fast}) {
         CAPTURE(static_cast<int>(q));
-        auto scene = LevelScene::build(*level, assets, direct_light_only());
+        auto scene = LevelScene::build(*level, assets, ks::test::direct_light_only());
         auto renderer = SceneRenderer::create(assets.textures(), quality(q));
         REQUIRE(renderer);
         std::vector<MeshInstance> instances;
@@ -140,7 +133,7 @@ TEST_CASE("the first-person rifle is lit and orange, not a near-black silhouette
     auto level = level::load_level_file(test::source_dir() / "levels" / "main.json");
     REQUIRE(level.ok());
     AssetLibrary assets(test::source_dir() / "assets");
-    auto scene = LevelScene::build(*level, assets, direct_light_only());
+    auto scene = LevelScene::build(*level, assets, ks::test::direct_light_only());
     std::vector<MeshInstance> instances;
     std::vector<Light> lights;
     scene->emit(instances, lights);

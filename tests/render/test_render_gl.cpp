@@ -34,13 +34,6 @@ using ks::test::render_offscreen;
                     "no display: run the GL tests under xvfb-run (./run.sh test does)")
 
 namespace {
-// The light map with the direct light alone: these pictures check the renderer, not the bake's bounce and
-// occlusion (test_light_bake.cpp), and the full bake would add seconds of CPU to each.
-LevelSceneOptions direct_light_only() {
-    LevelSceneOptions options;
-    options.bake = BakeSettings::direct_only();
-    return options;
-}
 fs::path assets_dir() {
     return ks::test::source_dir() / "assets";
 }
@@ -311,7 +304,7 @@ TEST_CASE(
     auto level = level::load_level_file(ks::test::source_dir() / "levels" / "main.json");
     REQUIRE(level.ok());
     AssetLibrary assets(assets_dir());
-    auto scene = LevelScene::build(*level, assets, direct_light_only());
+    auto scene = LevelScene::build(*level, assets, ks::test::direct_light_only());
     RendererSettings plain = fast_quality(1.0f);
     plain.occlusion_culling = false;
     plain.depth_prepass = false;
@@ -421,7 +414,7 @@ TEST_CASE("lights toggle: switching every level light off darkens the view, emis
     // Both paths: per-pixel lights (full) and the re-combined light map (fast).
     for (RenderQuality quality : {RenderQuality::Full, RenderQuality::Fast}) {
         CAPTURE(static_cast<int>(quality));
-        auto scene = LevelScene::build(*level, assets, direct_light_only());
+        auto scene = LevelScene::build(*level, assets, ks::test::direct_light_only());
         RendererSettings settings;
         settings.quality = quality;
         settings.render_scale = 1.0f;
