@@ -72,9 +72,14 @@ for target in "${targets[@]}"; do
     echo "== $target: ${seconds}s (log: $log)"
     # The first folder receives new inputs; the seed folders are only read.
     dict=$(dict_for "$target")
+    # assimp 5.2.5 (Debian's, not ours) leaks on malformed files; its leaks are reported in
+    # docs/reliability.md, and checking for them would stop the model target at its first bad file.
+    leaks=1
+    [[ $target == fuzz_model_import ]] && leaks=0
     set +e
     # shellcheck disable=SC2046 # the seed list is meant to split into folders
-    "$build/bin/$target" "$corpus" $(seeds_for "$target") ${dict:+-dict="$dict"} \
+    ASAN_OPTIONS=${ASAN_OPTIONS:-}:detect_leaks=$leaks "$build/bin/$target" "$corpus" $(seeds_for "$target") \
+        ${dict:+-dict="$dict"} -detect_leaks=$leaks \
         -max_total_time="$seconds" -timeout="${KS_FUZZ_TIMEOUT:-30}" -max_len="${KS_FUZZ_MAX_LEN:-32768}" -rss_limit_mb=2048 \
         -artifact_prefix="$artifacts/" -print_final_stats=1 ${KS_FUZZ_FLAGS:-} >"$log" 2>&1
     rc=$?
