@@ -104,13 +104,7 @@ std::optional<std::string> ModelBrowser::draw(const PanelContext& ctx, const std
                 "several.",
                 entry->name.c_str(), entry->path.string().c_str(),
                 entry->shipped ? "shipped" : "your models folder");
-        std::string label = entry->name.substr(entry->name.rfind('/') + 1);
-        while (label.size() > 3 && ImGui::CalcTextSize(label.c_str()).x > cell)
-            label.resize(label.size() - 4), label += "..";
-        ImGui::PushStyleColor(ImGuiCol_Text,
-                              armed ? ImVec4(0.55f, 1.0f, 0.65f, 1) : ImVec4(0.85f, 0.9f, 1, 1));
-        ImGui::TextUnformatted(label.c_str());
-        ImGui::PopStyleColor();
+        thumbnail_label(entry->name.substr(entry->name.rfind('/') + 1), cell, armed);
         ImGui::EndGroup();
         column = (column + 1) % columns;
         ImGui::PopID();

@@ -119,14 +119,7 @@ std::optional<std::string> PrefabPalette::draw(const PanelContext& ctx, const st
                               "linked instance; Shift+click places several.",
                               entry.prefab->title.empty() ? entry.name.c_str() : entry.prefab->title.c_str(),
                               entry.name.c_str(), entry.prefab->entities.size(), entry.path.string().c_str());
-        // The name under the picture, cut to the cell's width.
-        std::string label = entry.name;
-        while (label.size() > 3 && ImGui::CalcTextSize(label.c_str()).x > cell)
-            label.resize(label.size() - 4), label += "..";
-        ImGui::PushStyleColor(ImGuiCol_Text,
-                              armed ? ImVec4(0.55f, 1.0f, 0.65f, 1) : ImVec4(0.85f, 0.9f, 1, 1));
-        ImGui::TextUnformatted(label.c_str());
-        ImGui::PopStyleColor();
+        thumbnail_label(entry.name, cell, armed);
         ImGui::EndGroup();
         column = (column + 1) % columns;
         ImGui::PopID();

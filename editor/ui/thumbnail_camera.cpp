@@ -3,6 +3,8 @@
 #include "render/debug_draw.h"
 #include "render/scene_renderer.h"
 
+#include <imgui.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -50,6 +52,14 @@ bool render_thumbnail(render::SceneRenderer& renderer, RenderTarget& target, int
     renderer.render(frame);
     renderer.invalidate_shadows();
     return true;
+}
+
+void thumbnail_label(std::string label, float cell, bool armed) {
+    while (label.size() > 3 && ImGui::CalcTextSize(label.c_str()).x > cell)
+        label.resize(label.size() - 4), label += "..";
+    ImGui::PushStyleColor(ImGuiCol_Text, armed ? ImVec4(0.55f, 1.0f, 0.65f, 1) : ImVec4(0.85f, 0.9f, 1, 1));
+    ImGui::TextUnformatted(label.c_str());
+    ImGui::PopStyleColor();
 }
 
 } // namespace ks::editor::ui

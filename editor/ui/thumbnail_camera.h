@@ -5,6 +5,7 @@
 #include "render/scene.h"
 #include "ui/render_target.h"
 
+#include <string>
 #include <vector>
 
 namespace ks::render {
@@ -22,5 +23,8 @@ geometry::Camera thumbnail_camera(Vec3 lo, Vec3 hi);
 bool render_thumbnail(render::SceneRenderer& renderer, RenderTarget& target, int size, Vec3 lo, Vec3 hi,
                       const render::Environment& environment,
                       const std::vector<render::MeshInstance>& instances, std::vector<render::Light>& lights);
+
+// The name under a thumbnail, cut with ".." to the cell's width, green when it is the armed one.
+void thumbnail_label(std::string label, float cell, bool armed);
 
 } // namespace ks::editor::ui
