@@ -85,6 +85,7 @@ class Reader {
         std::uint64_t n = 0;
         if (!value(n) || n > max_count || n > (data_.size() - at_) / sizeof(T)) return ok_ = false;
         v.resize(static_cast<std::size_t>(n));
+        if (n == 0) return true; // an empty vector's data() may be null, which memcpy must not get
         std::memcpy(v.data(), data_.data() + at_, static_cast<std::size_t>(n) * sizeof(T));
         at_ += static_cast<std::size_t>(n) * sizeof(T);
         return true;
