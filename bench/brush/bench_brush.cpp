@@ -1,9 +1,10 @@
 // ks_bench brush: each convex-brush operation's cost (µs per brush, this thread's CPU time) against its
 // error, on random brushes near the origin and near (9000, -9000, 5000): deriving vertices from planes
 // against Qhull on the same vertices (the baseline, in the same run), clip, vertex move, subtract,
-// intersect, merge, hollow, snap and a texture-locked turn. Errors: the largest distance of a vertex from
-// the planes of its faces (long double), volume conservation, distance from the grid, texture coordinate
-// drift. Writes docs/bench/brush_ops.csv; --quick runs fewer brushes and leaves it alone.
+// intersect, merge, hollow, snap, a texture-locked turn and a level's placement (derived again or carried).
+// Errors: the largest distance of a vertex from the planes of its faces (long double), volume conservation,
+// distance from the grid, texture coordinate drift. Writes docs/bench/brush_ops.csv; --quick runs fewer
+// brushes and leaves it alone.
 #include "bench_registry.h"
 #include "physics/bench_util.h"
 
@@ -245,11 +246,29 @@ void measure_csg_and_turns(const std::string& where, const Inputs& in, int reps,
         }));
 }
 
+// A level's brush entity placed in the world (turned about y by a yaw, moved): deriving again after the
+// motion (transformed) against carrying the derived geometry through it (placed), same faces; the carried
+// row's off-plane error is the vertices' distance from the moved planes.
+void measure_placement(const std::string& where, const Inputs& in, int reps, std::vector<Row>& rows) {
+    const glm::dmat3 yaw = glm::mat3_cast(glm::angleAxis(0.6458, DVec3(0, 1, 0)));
+    const DVec3 offset(160, 0, -96);
+    const auto place = [&](bool carry) {
+        return [&, carry](const Brush& b, std::size_t, Row* row) {
+            auto moved = carry ? placed(b, yaw, offset) : transformed(b, yaw, offset);
+            if (moved && row) row->off_plane = std::max(row->off_plane, off_plane(*moved));
+            return moved.ok();
+        };
+    };
+    rows.push_back(measure(where, "place: derive again (transformed)", in.brushes, reps, place(false)));
+    rows.push_back(measure(where, "place: carry geometry (placed)", in.brushes, reps, place(true)));
+}
+
 std::vector<Row> run_set(const std::string& where, const DVec3& centre, int count, int reps) {
     const Inputs in = make_inputs(centre, count);
     std::vector<Row> rows;
     measure_edits(where, in, reps, rows);
     measure_csg_and_turns(where, in, reps, rows);
+    measure_placement(where, in, reps, rows);
     return rows;
 }
 

@@ -100,6 +100,52 @@ Result<Brush> Brush::with_attributes(std::vector<FaceAttributes> attributes) con
     return out;
 }
 
+Result<Brush> Brush::carried(const glm::dmat3& rotation, const DVec3& translation,
+                             std::vector<FaceAttributes> attributes) const {
+    if (auto rigid = check_rigid_motion(rotation, translation); !rigid) return rigid.error();
+    if (!attributes.empty() && attributes.size() != faces_.size())
+        return Error("the brush has " + std::to_string(faces_.size()) + " faces, not " +
+                         std::to_string(attributes.size()),
+                     Location({}, 0, 0, "faces"), "give one set of attributes per face");
+    // The anchor and planes as transformed() moves them, so both give the same faces.
+    const DVec3 moved_anchor = rotation * anchor_ + translation;
+    const DVec3 anchor = glm::round(moved_anchor);
+    if (!is_finite(anchor) || glm::any(glm::greaterThan(glm::abs(anchor), DVec3(kMaxCoordinate))))
+        return Error("the brush reaches beyond +-65536 units", Location({}, 0, 0, "faces"),
+                     "keep brushes within the world");
+    const DVec3 remainder = moved_anchor - anchor;
+    Brush out;
+    out.anchor_ = anchor;
+    out.faces_ = faces_;
+    out.local_planes_.reserve(local_planes_.size());
+    for (std::size_t i = 0; i < faces_.size(); ++i) {
+        Plane plane = local_planes_[i];
+        plane.normal = glm::normalize(rotation * plane.normal);
+        plane.distance += glm::dot(plane.normal, remainder);
+        out.local_planes_.push_back(plane);
+        out.faces_[i].plane = plane.translated(anchor);
+        if (attributes.empty()) continue;
+        if (auto r = check_attributes(attributes[i], i); !r) return r.error();
+        out.faces_[i].attributes = std::move(attributes[i]);
+    }
+    // Each vertex through the motion relative to the anchors, where the numbers are small.
+    out.vertices_.reserve(vertices_.size());
+    for (const DVec3& v : vertices_) out.vertices_.push_back(rotation * (v - anchor_) + remainder + anchor);
+    out.polygons_ = polygons_;
+    out.edges_ = edges_;
+    out.volume_ = volume_; // a rigid motion keeps it
+    out.bounds_min_ = out.bounds_max_ = out.vertices_[0];
+    for (const DVec3& v : out.vertices_) {
+        out.bounds_min_ = glm::min(out.bounds_min_, v);
+        out.bounds_max_ = glm::max(out.bounds_max_, v);
+    }
+    const DVec3 reach = glm::max(glm::abs(out.bounds_min_), glm::abs(out.bounds_max_));
+    if (!(std::max({reach.x, reach.y, reach.z}) <= kMaxCoordinate))
+        return Error("the brush reaches beyond +-65536 units", Location({}, 0, 0, "faces"),
+                     "keep brushes within the world");
+    return out;
+}
+
 DVec3 Brush::vertex_centre() const {
     DVec3 c(0.0);
     for (const DVec3& v : vertices_) c += v;

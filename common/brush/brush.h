@@ -44,6 +44,17 @@ class Brush {
     // Refused, naming the face, when the count differs from faces() or an attribute is not finite or a
     // scale is zero, as from_faces refuses them.
     Result<Brush> with_attributes(std::vector<FaceAttributes> attributes) const;
+    // The brush moved by p -> rotation * p + translation with its derived geometry carried through the
+    // motion instead of derived again: planes (and the anchor) exactly as transformed() computes them,
+    // vertices rotated (each within a few units in the last place of the re-derived ones), polygons and edges
+    // as they are. Linear in the size, where deriving is quadratic in the faces: for placing a stored brush
+    // in the world once (a level's brush entities), not for edits repeated on their own results (the rotated
+    // vertices are not re-derived from the rotated planes, so errors would add up). `attributes`, when not
+    // empty, replace the faces' (one per face, checked as with_attributes checks them). Refused like
+    // transformed(): a matrix that is not a proper rotation, a translation that is not finite, a result
+    // beyond the world.
+    Result<Brush> carried(const glm::dmat3& rotation, const DVec3& translation,
+                          std::vector<FaceAttributes> attributes = {}) const;
 
     // Faces with world planes (each rounded once from its anchored plane).
     const std::vector<Face>& faces() const { return faces_; }

@@ -30,6 +30,18 @@ Result<void> check_numbers(const Face& face, std::size_t i) {
 
 } // namespace
 
+Result<void> check_rigid_motion(const glm::dmat3& rotation, const DVec3& translation) {
+    const glm::dmat3 should_be_identity = glm::transpose(rotation) * rotation;
+    double off = std::abs(glm::determinant(rotation) - 1.0);
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r)
+            off = std::max(off, std::abs(should_be_identity[c][r] - (c == r ? 1.0 : 0.0)));
+    if (!(off < 1e-9) || !is_finite(translation))
+        return Error("the motion is not a rotation and a finite translation", Location({}, 0, 0, "rotation"),
+                     "give an orthonormal rotation matrix with determinant 1");
+    return ok();
+}
+
 Result<void> check_attributes(const FaceAttributes& a, std::size_t i) {
     if (!std::isfinite(a.offset.x) || !std::isfinite(a.offset.y))
         return Error("the texture offset is not finite", face_location(i, ".offset"),

@@ -1,5 +1,7 @@
 #include "brush/texture_mapping.h"
 
+#include "brush/brush_validate.h"
+
 #include <cmath>
 
 namespace ks::brush {
@@ -47,14 +49,7 @@ FaceAttributes locked_attributes(const Face& face, const glm::dmat3& rotation, c
 
 Result<Brush> transformed(const Brush& brush, const glm::dmat3& rotation, const DVec3& translation,
                           TextureLock lock) {
-    const glm::dmat3 should_be_identity = glm::transpose(rotation) * rotation;
-    double off = std::abs(glm::determinant(rotation) - 1.0);
-    for (int c = 0; c < 3; ++c)
-        for (int r = 0; r < 3; ++r)
-            off = std::max(off, std::abs(should_be_identity[c][r] - (c == r ? 1.0 : 0.0)));
-    if (!(off < 1e-9) || !is_finite(translation))
-        return Error("the motion is not a rotation and a finite translation", Location({}, 0, 0, "rotation"),
-                     "give an orthonormal rotation matrix with determinant 1");
+    if (auto rigid = check_rigid_motion(rotation, translation); !rigid) return rigid.error();
     // The anchor moves with the brush, rounded to whole units; the anchored planes absorb the remainder, a
     // small number, so a brush moved by grid steps keeps its planes' precision.
     const DVec3 moved_anchor = rotation * brush.anchor() + translation;
@@ -68,6 +63,14 @@ Result<Brush> transformed(const Brush& brush, const glm::dmat3& rotation, const 
             f.attributes = locked_attributes(brush.faces()[i], rotation, translation);
     }
     return Brush::from_anchored_faces(anchor, std::move(faces));
+}
+
+Result<Brush> placed(const Brush& brush, const glm::dmat3& rotation, const DVec3& translation) {
+    if (auto rigid = check_rigid_motion(rotation, translation); !rigid) return rigid.error();
+    std::vector<FaceAttributes> locked;
+    locked.reserve(brush.faces().size());
+    for (const Face& face : brush.faces()) locked.push_back(locked_attributes(face, rotation, translation));
+    return brush.carried(rotation, translation, std::move(locked));
 }
 
 Result<Brush> translated(const Brush& brush, const DVec3& delta, TextureLock lock) {

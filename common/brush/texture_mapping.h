@@ -35,6 +35,10 @@ enum class TextureLock { off, on };
 // texture stays put in the face's frame and slides over the world).
 Result<Brush> transformed(const Brush& brush, const glm::dmat3& rotation, const DVec3& translation,
                           TextureLock lock = TextureLock::on);
+// The same result as transformed(brush, rotation, translation, TextureLock::on) but with the geometry
+// carried through the motion (Brush::carried) instead of derived again: for placing a stored brush in the
+// world once, as the level does for each brush entity (see Brush::carried for the error it adds).
+Result<Brush> placed(const Brush& brush, const glm::dmat3& rotation, const DVec3& translation);
 Result<Brush> translated(const Brush& brush, const DVec3& delta, TextureLock lock = TextureLock::on);
 
 } // namespace ks::brush

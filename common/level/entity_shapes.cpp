@@ -111,7 +111,7 @@ Result<brush::Brush> world_brush(const Entity& entity) {
         return Error(std::string(type_name(entity.type())) + " " + std::to_string(entity.id) +
                      " is not a brush");
     const glm::dmat3 rotation = glm::mat3_cast(dquat_from_ypr_degrees(DVec3(entity.rotation)));
-    return brush::transformed(props->brush, rotation, DVec3(entity.position));
+    return brush::placed(props->brush, rotation, DVec3(entity.position));
 }
 
 bool is_ceiling(const Entity& entity) {
