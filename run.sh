@@ -17,7 +17,7 @@ cd "$(dirname "$(readlink -f "$0")")"
 
 # The one list of Debian packages the project needs (build, run, test, bench).
 PACKAGES=(
-    build-essential cmake pkg-config git
+    build-essential cmake pkg-config git ccache
     libglfw3-dev libepoxy-dev libgl-dev libimgui-dev libglm-dev libassimp-dev nlohmann-json3-dev
     libstb-dev doctest-dev zlib1g-dev librecast-dev libopenal-dev libqhull-dev libmeshoptimizer-dev
     xvfb xauth libgl1-mesa-dri mesa-utils xdotool
@@ -60,9 +60,22 @@ RELEASE_ONLY_TESTS="^tooling/|${PICTURE_TESTS}"
 
 njobs() { nproc 2>/dev/null || echo 2; }
 
+# The compiler cache (ccache, in PACKAGES). Paths are hashed relative to the tree (CCACHE_BASEDIR) and not by
+# the build folder (CCACHE_NOHASHDIR: the sanitized build's line tables then name the folder that compiled an
+# object first), so a clone in another folder (CI's) reuses what a build of the same sources here compiled;
+# an object's own absolute paths (KS_SOURCE_DIR, KS_BIN_DIR: only paths.cpp, test_support.cpp, ks_bench) are
+# in its flags and so in its hash. Only read at configure time: a build folder configured without it keeps
+# compiling without it.
+use_compiler_cache() {
+    command -v ccache >/dev/null || return 0
+    export CMAKE_C_COMPILER_LAUNCHER=ccache CMAKE_CXX_COMPILER_LAUNCHER=ccache
+    export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=1
+}
+
 build() { # build PRESET [TARGET...]
     local preset="$1"
     shift
+    use_compiler_cache
     if [ ! -f "$(preset_dir "$preset")/CMakeCache.txt" ]; then
         log "configuring ($preset)"
         cmake --preset "$preset" >/dev/null
