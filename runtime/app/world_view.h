@@ -34,9 +34,9 @@ struct DojoDummy {
 
 class WorldView {
   public:
-    // With scene_options.defer_bake the scene's light map is computed on a worker thread at
-    // scene_options.bake's quality and taken over by the first fill() after it is done (the live
-    // play-test's scenery edits: the edit shows at once, lit per vertex until then).
+    // With scene_options.defer_bake the scene's light map is computed on a worker thread, first at the
+    // preview quality, then at scene_options.bake's, each taken over by the first fill() after it is done
+    // (the live play-test's scenery edits: the edit shows at once, lit per vertex until the preview).
     static std::unique_ptr<WorldView> build(const level::Level& level, const game::Game& game,
                                             render::AssetLibrary& assets,
                                             const render::LevelSceneOptions& scene_options);
@@ -64,7 +64,9 @@ class WorldView {
     void on_event(const game::Game& game, const game::Event& e);
 
     std::unique_ptr<render::LevelScene> scene_;
-    render::BackgroundBake bake_; // the scene's deferred light map (build's defer_bake)
+    render::BackgroundBake bake_;       // the scene's deferred light map (build's defer_bake)
+    unsigned long long bake_build_ = 0; // 1: the preview is computing, 2: the final bake
+    render::BakeSettings final_bake_;   // the final bake's quality
     const render::Model* robot_model_ = nullptr;
     const render::Model* cylinder_model_ = nullptr;
     const render::Model* rifle_ = nullptr;
