@@ -82,10 +82,9 @@ Result<std::unique_ptr<NavMesh>> NavMesh::rebuild(const NavMesh& previous, const
 }
 
 namespace {
-// A copy of `mesh`'s tile at (column, row), for dtNavMesh::addTile with DT_TILE_FREE_DATA; empty when it
-// has none (its input held nothing walkable). Detour makes the links anew when the copy is added.
-Result<TileData> copy_tile(const dtNavMesh& mesh, int column, int row) {
-    const dtMeshTile* tile = mesh.getTileAt(column, row, 0);
+// A copy of a tile's data, for dtNavMesh::addTile with DT_TILE_FREE_DATA; empty when there is no tile (its
+// input held nothing walkable). Detour makes the links anew when the copy is added.
+Result<TileData> copy_tile(const dtMeshTile* tile) {
     if (!tile || !tile->header || !tile->data) return TileData{};
     auto* data = static_cast<unsigned char*>(dtAlloc(tile->dataSize, DT_ALLOC_PERM));
     if (!data) return Error("navigation mesh: out of memory copying a tile");
@@ -140,7 +139,7 @@ Result<std::unique_ptr<NavMesh>> NavMesh::build_tiles(const InputGeometry& input
             // Tiles are added in the same order either way, so they get the references a build gives.
             const bool copy =
                 previous && previous_input && same_tile_input(*previous_input, input, column, row, settings);
-            auto tile = copy ? copy_tile(*previous->mesh_, column, row)
+            auto tile = copy ? copy_tile(previous->mesh_->getTileAt(column, row, 0))
                              : build_tile(input, settings, column, row, scratch);
             if (!tile) return tile.error();
             built += copy ? 0 : 1;
@@ -194,13 +193,12 @@ Result<std::unique_ptr<NavMesh>> NavMesh::clone() const {
     // the links between tiles are made in the same order too.
     for (int i = 0; i < source.getMaxTiles(); ++i) {
         const dtMeshTile* tile = source.getTile(i);
-        if (!tile->header || !tile->data) continue;
-        auto* data = static_cast<unsigned char*>(dtAlloc(tile->dataSize, DT_ALLOC_PERM));
-        if (!data) return Error("navigation mesh: out of memory copying a tile");
-        std::memcpy(data, tile->data, static_cast<std::size_t>(tile->dataSize));
-        if (dtStatusFailed(copy->mesh_->addTile(data, tile->dataSize, DT_TILE_FREE_DATA,
+        auto data = copy_tile(tile);
+        if (!data) return data.error();
+        if (!data->data) continue;
+        if (dtStatusFailed(copy->mesh_->addTile(data->data, data->size, DT_TILE_FREE_DATA,
                                                 source.getTileRef(tile), nullptr))) {
-            dtFree(data);
+            dtFree(data->data);
             return Error("navigation mesh: Detour refused a copied tile");
         }
     }
