@@ -8,15 +8,6 @@
 #include <utility>
 
 namespace ks::game {
-namespace {
-
-// Orders the pending heap so its front is the earliest due action, first scheduled first.
-bool later(const LevelLogic::Pending& a, const LevelLogic::Pending& b) {
-    return a.due != b.due ? a.due > b.due : a.sequence > b.sequence;
-}
-
-} // namespace
-
 LevelLogic::LevelLogic(GameCore& core, PlayerSystem& player, RobotSystem& robots,
                        Interactables& interactables, Spawners& spawners)
     : core_(core), player_(player), robots_(robots), interactables_(interactables), spawners_(spawners) {}
@@ -49,7 +40,7 @@ void LevelLogic::fire(LinkRange range, level::LinkEvent event) {
                        " delayed actions wait at once; the newest are dropped");
         } else {
             pending_.push_back({core_.steps + link.delay_steps, sequence_++, k});
-            std::push_heap(pending_.begin(), pending_.end(), later);
+            std::push_heap(pending_.begin(), pending_.end(), Pending::later);
         }
     }
 }
@@ -71,7 +62,7 @@ void LevelLogic::begin_step() {
     // More due than one step may run wait for the next step rather than being dropped.
     while (!pending_.empty() && pending_.front().due <= core_.steps &&
            ready_.size() < static_cast<std::size_t>(kMaxActionsPerStep)) {
-        std::pop_heap(pending_.begin(), pending_.end(), later);
+        std::pop_heap(pending_.begin(), pending_.end(), Pending::later);
         ready_.push_back(pending_.back().link);
         pending_.pop_back();
     }

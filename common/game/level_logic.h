@@ -122,7 +122,8 @@ class LevelLogic {
     // Says a run-time problem once (logged, and kept in problems()).
     void report(std::string problem);
     // The live play-test's rebuild (live_carry.h, after the robots): objectives done, triggers, fired once
-    // links and the message on screen carry over; a carried robot already dead does not die again.
+    // links, delayed actions still waiting whose link the edit kept, and the message on screen carry over;
+    // a carried robot already dead does not die again.
     void carry_from(const LevelLogic& previous, const LevelEdit& edit);
 
     std::span<const ObjectiveState> objectives() const { return objectives_; }
@@ -151,6 +152,10 @@ class LevelLogic {
     struct Pending {
         std::int64_t due = 0;
         std::uint32_t sequence = 0, link = 0;
+        // The heap's order: its front is the earliest due action, the first scheduled first.
+        static bool later(const Pending& a, const Pending& b) {
+            return a.due != b.due ? a.due > b.due : a.sequence > b.sequence;
+        }
     };
     std::span<const Pending> pending() const { return pending_; }
     bool uses_locks() const { return uses_locks_; }

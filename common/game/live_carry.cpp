@@ -6,6 +6,7 @@
 
 #include "game/game.h"
 
+#include <algorithm>
 #include <memory>
 
 namespace ks::game {
@@ -185,12 +186,27 @@ void LevelLogic::carry_from(const LevelLogic& previous, const LevelEdit& edit) {
             t.enabled = was->enabled;
             t.occupied = was->occupied;
         }
-    // A once link that fired stays fired while the edit kept it (same owner, event, action and target).
+    // A link is kept when the edit left its owner, event, action and target as they were.
+    const auto same_link = [](const LogicLink& a, const LogicLink& b) {
+        return a.source_end == b.source_end && a.event == b.event && a.action == b.action &&
+               a.target_end == b.target_end;
+    };
+    // A once link that fired stays fired while the edit kept it.
     for (LogicLink& l : links_)
         for (const LogicLink& was : previous.links_)
-            if (was.fired && was.source_end == l.source_end && was.event == l.event &&
-                was.action == l.action && was.target_end == l.target_end)
-                l.fired = true;
+            if (was.fired && same_link(was, l)) l.fired = true;
+    // A delayed action still waiting goes on, at its due step and in its order, while its link is kept (the
+    // hall trigger's spawns when the designer moves a spawner at the break).
+    for (const Pending& p : previous.pending_) {
+        const LogicLink& was = previous.links_[p.link];
+        for (std::uint32_t k = 0; k < links_.size(); ++k)
+            if (same_link(was, links_[k])) {
+                pending_.push_back({p.due, p.sequence, k});
+                break;
+            }
+    }
+    std::make_heap(pending_.begin(), pending_.end(), Pending::later);
+    sequence_ = previous.sequence_;
     if (previous.message_.visible() && edit.remains(previous.message_.entity_id))
         for (const MessageEntity& m : messages_)
             if (m.entity_id == previous.message_.entity_id) {

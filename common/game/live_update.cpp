@@ -4,6 +4,7 @@
 #include "game/live_update.h"
 
 #include "game/live_carry.h"
+#include "nav/nav_mesh.h"
 
 #include <memory>
 
@@ -48,9 +49,15 @@ Result<LiveRebuild> rebuild_for_edit(const Game& running, const level::Level& be
                                      const level::Level& edited, GameOptions options) {
     // An edit that left the solids alone (robots, lights, links, spawners, triggers...) keeps the mesh:
     // the build copies the running game's (a view of it, not owned: it is copied before create returns).
-    if (!options.navigation && running.navigation() && same_navigation_input(before, edited))
-        options.navigation =
-            std::shared_ptr<const nav::NavMesh>(std::shared_ptr<void>(), running.navigation());
+    // One that moved a wall builds again only the tiles the change touches; the rest are copied.
+    if (!options.navigation && running.navigation()) {
+        if (same_navigation_input(before, edited)) {
+            options.navigation =
+                std::shared_ptr<const nav::NavMesh>(std::shared_ptr<void>(), running.navigation());
+        } else if (auto rebuilt = nav::NavMesh::rebuild(*running.navigation(), before, edited)) {
+            options.navigation = std::move(*rebuilt);
+        }
+    }
     auto built = Game::create(edited, std::move(options));
     if (!built) return built.error();
     LiveRebuild out;

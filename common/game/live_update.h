@@ -8,10 +8,11 @@
 // a trigger's state, a once link fired). The player keeps place, view, health, shield, ammo and statistics
 // (a moved player start does not move a player already playing); the step count, the random sequence and
 // the phase go on. Robots a spawner made come along while alive and their spawner still exists. Delayed
-// link actions still waiting are dropped (their link may be gone), and the message on screen is kept when
-// its entity is. A moved door keeps how open it is. The navigation mesh is built again when the edit
-// changed what it is made of (solids, doors, brushes, models, level settings), else copied from the running
-// game.
+// link actions still waiting go on at their due step while the edit kept their link (same owner, event,
+// action and target; dropped with it otherwise), and the message on screen is kept when
+// its entity is. A moved door keeps how open it is. The navigation mesh is copied from the running game
+// when the edit left what it is made of alone (solids, doors, brushes, models, level settings); else only
+// its tiles whose input changed are built again (nav::NavMesh::rebuild), the rest copied.
 #include "core/result.h"
 #include "game/game.h"
 #include "level/level.h"

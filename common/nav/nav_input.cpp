@@ -207,6 +207,63 @@ void bin_triangles(InputGeometry& in, const NavSettings& settings) {
 
 } // namespace
 
+namespace {
+
+bool same_grid(const TileGrid& a, const TileGrid& b) {
+    return a.origin == b.origin && a.tile_world == b.tile_world && a.columns == b.columns && a.rows == b.rows;
+}
+
+bool same_triangle(const InputGeometry& a, int s, const InputGeometry& b, int t) {
+    if (a.areas[static_cast<size_t>(s)] != b.areas[static_cast<size_t>(t)]) return false;
+    for (int k = 0; k < 3; ++k) {
+        const float* u = &a.vertices[static_cast<size_t>(a.triangles[static_cast<size_t>(s) * 3 + k]) * 3];
+        const float* v = &b.vertices[static_cast<size_t>(b.triangles[static_cast<size_t>(t) * 3 + k]) * 3];
+        if (u[0] != v[0] || u[1] != v[1] || u[2] != v[2]) return false;
+    }
+    return true;
+}
+
+// The doorways whose footprint reaches into the tile's area with its border (the ones its build marks).
+std::vector<const DoorFootprint*> doors_over(const InputGeometry& in, int column, int row, float border) {
+    const TileGrid& g = in.grid;
+    const float x0 = g.origin.x + static_cast<float>(column) * g.tile_world - border;
+    const float x1 = g.origin.x + static_cast<float>(column + 1) * g.tile_world + border;
+    const float z0 = g.origin.z + static_cast<float>(row) * g.tile_world - border;
+    const float z1 = g.origin.z + static_cast<float>(row + 1) * g.tile_world + border;
+    std::vector<const DoorFootprint*> out;
+    for (const DoorFootprint& d : in.doors) {
+        float min_x = 3e38f, max_x = -3e38f, min_z = 3e38f, max_z = -3e38f;
+        for (const Vec3& c : d.corners) {
+            min_x = std::min(min_x, c.x), max_x = std::max(max_x, c.x);
+            min_z = std::min(min_z, c.z), max_z = std::max(max_z, c.z);
+        }
+        if (max_x >= x0 && min_x <= x1 && max_z >= z0 && min_z <= z1) out.push_back(&d);
+    }
+    return out;
+}
+
+} // namespace
+
+bool same_tile_input(const InputGeometry& a, const InputGeometry& b, int column, int row,
+                     const NavSettings& settings) {
+    if (!same_grid(a.grid, b.grid) || a.bounds.min.y != b.bounds.min.y || a.bounds.max.y != b.bounds.max.y)
+        return false;
+    if (column < 0 || row < 0 || column >= a.grid.columns || row >= a.grid.rows) return false;
+    const size_t tile = static_cast<size_t>(row * a.grid.columns + column);
+    const std::vector<int>& ta = a.tile_triangles[tile];
+    const std::vector<int>& tb = b.tile_triangles[tile];
+    if (ta.size() != tb.size()) return false;
+    for (size_t i = 0; i < ta.size(); ++i)
+        if (!same_triangle(a, ta[i], b, tb[i])) return false;
+    const float border = static_cast<float>(tile_border_cells(settings)) * settings.cell_size;
+    const auto da = doors_over(a, column, row, border), db = doors_over(b, column, row, border);
+    if (da.size() != db.size()) return false;
+    for (size_t i = 0; i < da.size(); ++i)
+        if (da[i]->corners != db[i]->corners || da[i]->y_min != db[i]->y_min || da[i]->y_max != db[i]->y_max)
+            return false;
+    return true;
+}
+
 bool DoorFootprint::contains(const Vec3& p, float margin) const {
     if (p.y < y_min - margin || p.y > y_max + margin) return false;
     for (int i = 0; i < 4; ++i) { // inside every edge of the convex quad (either winding), within margin

@@ -46,6 +46,12 @@ struct InputGeometry {
 // level has no solid shape at all (nothing to walk on).
 Result<InputGeometry> collect_input(const level::Level& level, const NavSettings& settings);
 
+// Whether tile (column, row) is built from the same input in both: the same grid and height span, the same
+// triangles touching it (corners and areas, in order) and the same doorways over it (with its border). A
+// tile built from equal input is the same tile (the build is deterministic), so it may be copied.
+bool same_tile_input(const InputGeometry& a, const InputGeometry& b, int column, int row,
+                     const NavSettings& settings);
+
 // The border Recast adds around each tile, in cells: the agent radius plus a margin so that erosion near a
 // tile edge sees the neighbouring tile's obstacles.
 int tile_border_cells(const NavSettings& settings);

@@ -68,12 +68,51 @@ Result<std::unique_ptr<NavMesh>> NavMesh::build(const level::Level& level, const
     if (auto problem = check_settings(settings)) return *problem;
     auto input = collect_input(level, settings);
     if (!input) return input.error();
-    const TileGrid& grid = input->grid;
+    return build_tiles(*input, level.name, settings, nullptr, nullptr, nullptr);
+}
+
+Result<std::unique_ptr<NavMesh>> NavMesh::rebuild(const NavMesh& previous, const level::Level& before,
+                                                  const level::Level& edited, int* built_tiles) {
+    const NavSettings& settings = previous.settings_;
+    auto input = collect_input(edited, settings);
+    if (!input) return input.error();
+    auto previous_input = collect_input(before, settings);
+    return build_tiles(*input, edited.name, settings, previous_input ? &previous : nullptr,
+                       previous_input ? &*previous_input : nullptr, built_tiles);
+}
+
+namespace {
+// A copy of a tile's data, for dtNavMesh::addTile with DT_TILE_FREE_DATA; empty when there is no tile (its
+// input held nothing walkable). Detour makes the links anew when the copy is added.
+Result<TileData> copy_tile(const dtMeshTile* tile) {
+    if (!tile || !tile->header || !tile->data) return TileData{};
+    auto* data = static_cast<unsigned char*>(dtAlloc(tile->dataSize, DT_ALLOC_PERM));
+    if (!data) return Error("navigation mesh: out of memory copying a tile");
+    std::memcpy(data, tile->data, static_cast<std::size_t>(tile->dataSize));
+    return TileData{data, tile->dataSize};
+}
+
+// A copied tile's polygons get the flags the build gives them (its doors were opened and closed since).
+void reset_flags(dtNavMesh& mesh, int column, int row) {
+    const dtMeshTile* tile = mesh.getTileAt(column, row, 0);
+    if (!tile || !tile->header) return;
+    const dtPolyRef base = mesh.getPolyRefBase(tile);
+    for (int p = 0; p < tile->header->polyCount; ++p) {
+        const bool door = tile->polys[p].getArea() == kAreaDoor;
+        (void)mesh.setPolyFlags(base | static_cast<dtPolyRef>(p), door ? (kFlagWalk | kFlagDoor) : kFlagWalk);
+    }
+}
+} // namespace
+
+Result<std::unique_ptr<NavMesh>> NavMesh::build_tiles(const InputGeometry& input, const std::string& name,
+                                                      const NavSettings& settings, const NavMesh* previous,
+                                                      const InputGeometry* previous_input, int* built_tiles) {
+    const TileGrid& grid = input.grid;
     const int tile_count = grid.columns * grid.rows;
     const int tile_bits =
         std::max(1, static_cast<int>(std::bit_width(std::bit_ceil(static_cast<unsigned>(tile_count)))) - 1);
     if (tile_bits > kMaxTileBits)
-        return Error("level '" + level.name + "' needs " + std::to_string(tile_count) +
+        return Error("level '" + name + "' needs " + std::to_string(tile_count) +
                          " navigation tiles, more than Detour can address",
                      Location{}, "raise cell_size or tile_size_cells");
 
@@ -94,10 +133,16 @@ Result<std::unique_ptr<NavMesh>> NavMesh::build(const level::Level& level, const
         return Error("navigation mesh: Detour could not initialise the mesh");
 
     TileScratch scratch;
+    int built = 0;
     for (int row = 0; row < grid.rows; ++row)
         for (int column = 0; column < grid.columns; ++column) {
-            auto tile = build_tile(*input, settings, column, row, scratch);
+            // Tiles are added in the same order either way, so they get the references a build gives.
+            const bool copy =
+                previous && previous_input && same_tile_input(*previous_input, input, column, row, settings);
+            auto tile = copy ? copy_tile(previous->mesh_->getTileAt(column, row, 0))
+                             : build_tile(input, settings, column, row, scratch);
             if (!tile) return tile.error();
+            built += copy ? 0 : 1;
             if (!tile->data) continue;
             if (dtStatusFailed(nav->mesh_->addTile(tile->data, tile->size, DT_TILE_FREE_DATA, 0, nullptr))) {
                 dtFree(tile->data);
@@ -106,26 +151,28 @@ Result<std::unique_ptr<NavMesh>> NavMesh::build(const level::Level& level, const
                              Location{},
                              "raise cell_size: a tile has more polygons than the references address");
             }
+            if (copy) reset_flags(*nav->mesh_, column, row);
             ++nav->stats_.tiles_with_polygons;
         }
+    if (built_tiles) *built_tiles = built;
 
     const dtNavMesh& mesh = *nav->mesh_;
     for (int i = 0; i < mesh.getMaxTiles(); ++i)
         if (const dtMeshTile* t = mesh.getTile(i); t->header) nav->stats_.polygons += t->header->polyCount;
     if (nav->stats_.polygons == 0)
-        return Error("level '" + level.name + "' has no walkable floor for a robot (radius " +
+        return Error("level '" + name + "' has no walkable floor for a robot (radius " +
                          std::to_string(settings.agent_radius) + ", height " +
                          std::to_string(settings.agent_height) + ")",
                      Location{},
                      "add a floor entity, at least twice the robot radius wide, with headroom above it");
     nav->stats_.tile_columns = grid.columns;
     nav->stats_.tile_rows = grid.rows;
-    nav->stats_.input_triangles = static_cast<int>(input->triangles.size() / 3);
+    nav->stats_.input_triangles = static_cast<int>(input.triangles.size() / 3);
     if (dtStatusFailed(nav->query_->init(nav->mesh_.get(), settings.max_search_nodes)))
         return Error("navigation mesh: Detour could not set up its query (node pool)");
     nav->corridor_.assign(static_cast<size_t>(settings.max_path_polygons), 0);
     nav->straight_points_.assign(static_cast<size_t>(settings.max_path_polygons) * 3, 0.0f);
-    nav->index_door_polygons(input->doors);
+    nav->index_door_polygons(input.doors);
     return nav;
 }
 
@@ -146,13 +193,12 @@ Result<std::unique_ptr<NavMesh>> NavMesh::clone() const {
     // the links between tiles are made in the same order too.
     for (int i = 0; i < source.getMaxTiles(); ++i) {
         const dtMeshTile* tile = source.getTile(i);
-        if (!tile->header || !tile->data) continue;
-        auto* data = static_cast<unsigned char*>(dtAlloc(tile->dataSize, DT_ALLOC_PERM));
-        if (!data) return Error("navigation mesh: out of memory copying a tile");
-        std::memcpy(data, tile->data, static_cast<std::size_t>(tile->dataSize));
-        if (dtStatusFailed(copy->mesh_->addTile(data, tile->dataSize, DT_TILE_FREE_DATA,
+        auto data = copy_tile(tile);
+        if (!data) return data.error();
+        if (!data->data) continue;
+        if (dtStatusFailed(copy->mesh_->addTile(data->data, data->size, DT_TILE_FREE_DATA,
                                                 source.getTileRef(tile), nullptr))) {
-            dtFree(data);
+            dtFree(data->data);
             return Error("navigation mesh: Detour refused a copied tile");
         }
     }

@@ -25,6 +25,7 @@ class dtQueryFilter;
 namespace ks::nav {
 
 struct DoorFootprint;
+struct InputGeometry;
 
 enum class PathStatus : std::uint8_t {
     Found,        // the path reaches the end point
@@ -55,6 +56,15 @@ class NavMesh {
     // Builds the mesh for `level`. Errors: unusable settings, an entity with non-finite or absurd numbers
     // (named), a level with nothing walkable (named, with what to add), a Recast/Detour failure.
     static Result<std::unique_ptr<NavMesh>> build(const level::Level& level, const NavSettings& settings);
+    // The mesh build(edited, previous.settings()) makes, made from `previous` (a mesh built from `before`
+    // with those settings) where it can: each tile whose input is the same in both levels
+    // (same_tile_input: its triangles, its doorways, the grid) is copied, the others are built again, so an
+    // edit costs the tiles it touches (the live play-test's moved wall). Every query answers as on a fresh
+    // build: the same tiles at the same references, the doors as the level starts them. An edit that
+    // changes the level's bounds changes the grid: every tile is built. `built_tiles` (when given) is set
+    // to the number of tiles built rather than copied.
+    static Result<std::unique_ptr<NavMesh>> rebuild(const NavMesh& previous, const level::Level& before,
+                                                    const level::Level& edited, int* built_tiles = nullptr);
     // A copy with its own Detour mesh and query, every tile restored at its reference (so polygon references,
     // door state and every query answer are the original's): many games of one level build the mesh once
     // (game::GameOptions::navigation). Reads the original only, so threads may copy one mesh at once.
@@ -99,6 +109,12 @@ class NavMesh {
 
   private:
     NavMesh();
+    // The mesh of `input`: each tile copied from `previous` when its input is the same as in
+    // `previous_input` (both given), else built; counts the built tiles in `built_tiles` (when given).
+    static Result<std::unique_ptr<NavMesh>> build_tiles(const InputGeometry& input, const std::string& name,
+                                                        const NavSettings& settings, const NavMesh* previous,
+                                                        const InputGeometry* previous_input,
+                                                        int* built_tiles);
     struct Door {
         int entity_id = 0;
         bool open = false;

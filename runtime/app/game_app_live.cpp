@@ -37,11 +37,19 @@ void GameApp::poll_live() {
     Session& s = *session_;
     s.level = std::move(edit->level);
     s.game = std::move(edit->rebuild.game);
-    s.view = WorldView::build(s.level, *s.game, assets_, render::level_scene_options(renderer_.settings()));
+    if (edit->scenery_changed || !s.view) {
+        // The edit shows at once; its light map (the fast path's) follows from a worker thread.
+        auto scene_options = render::level_scene_options(renderer_.settings());
+        scene_options.defer_bake = scene_options.bake_light_map;
+        s.view = WorldView::build(s.level, *s.game, assets_, scene_options);
+    } else {
+        s.view->follow_game(*s.game);
+    }
     if (audio_) s.sounds = std::make_unique<soundscape::Soundscape>(audio_->engine(), s.level);
     logic_debug_.start(s.level, *s.game);
     auto ms = [](auto from, auto to) { return std::chrono::duration<double, std::milli>(to - from).count(); };
-    log::info("live edit: the game rebuilt in ", ms(started, rebuilt), " ms, the view in ",
+    log::info("live edit: the game rebuilt in ", ms(started, rebuilt), " ms, the view ",
+              edit->scenery_changed ? "rebuilt" : "kept its scene", " in ",
               ms(rebuilt, std::chrono::steady_clock::now()), " ms");
 }
 

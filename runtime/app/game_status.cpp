@@ -81,6 +81,7 @@ void GameApp::write_status(const shell::FrameInfo& info) {
         write_logic_status(s);
         if (session_->view) {
             add("camera_roll %.2f", degrees(session_->view->camera().roll));
+            add("view baking %d", session_->view->baking() ? 1 : 0); // a live edit's light map on a worker
             const auto& fb = session_->view->feedback();
             add("feedback arcs %d shakes %d lights %d", static_cast<int>(fb.live_arcs()),
                 static_cast<int>(fb.live_shakes()), static_cast<int>(fb.live_lights()));

@@ -26,6 +26,11 @@ std::unique_ptr<WorldView> WorldView::build(const level::Level& level, const gam
                                             const render::LevelSceneOptions& scene_options) {
     auto view = std::unique_ptr<WorldView>(new WorldView());
     view->scene_ = render::LevelScene::build(static_part(level), assets, scene_options);
+    if (scene_options.defer_bake) {
+        view->final_bake_ = scene_options.bake;
+        view->bake_build_ = 1;
+        view->bake_.start(*view->scene_, view->bake_build_, render::BakeSettings::preview());
+    }
     view->robot_model_ = &assets.model("robot");
     view->cylinder_model_ = &assets.model("gas_cylinder");
     view->rifle_ = &assets.model("rifle");
@@ -40,6 +45,13 @@ std::unique_ptr<WorldView> WorldView::build(const level::Level& level, const gam
     view->capture(game, view->current_);
     view->previous_ = view->current_;
     return view;
+}
+
+void WorldView::follow_game(const game::Game& game) {
+    // The new game's robots may be other ones, in another order: no interpolation from the old game's.
+    robot_binding_ = anim::RigBinding(game.animations().rig, robot_model_->node_names());
+    capture(game, current_);
+    previous_ = current_;
 }
 
 void WorldView::capture(const game::Game& game, Snapshot& s) const {
@@ -89,6 +101,11 @@ void WorldView::on_event(const game::Game& game, const game::Event& e) {
 void WorldView::fill(const game::Game& game, float alpha, float fov_degrees, const DojoDummy* dummy,
                      render::SceneFrame& frame) {
     const float a = std::clamp(is_finite(alpha) ? alpha : 1.0f, 0.0f, 1.0f);
+    // A deferred light map, once computed: the preview's, then the final one's.
+    if (bake_.finish(*scene_, bake_build_) && bake_build_ == 1) {
+        bake_build_ = 2;
+        bake_.start(*scene_, bake_build_, final_bake_);
+    }
     // Doors and lights follow the game.
     for (const auto& d : game.doors()) scene_->set_door_open(d.entity_id, d.progress);
     for (const auto& l : game.lights()) scene_->set_light_on(l.entity_id, l.on);

@@ -10,6 +10,7 @@
 #include "game/game.h"
 #include "level/level.h"
 #include "render/asset_library.h"
+#include "render/background_bake.h"
 #include "render/level_scene.h"
 #include "render/particles.h"
 #include "render/scene_renderer.h"
@@ -33,9 +34,16 @@ struct DojoDummy {
 
 class WorldView {
   public:
+    // With scene_options.defer_bake the scene's light map is computed on a worker thread, first at the
+    // preview quality, then at scene_options.bake's, each taken over by the first fill() after it is done
+    // (the live play-test's scenery edits: the edit shows at once, lit per vertex until the preview).
     static std::unique_ptr<WorldView> build(const level::Level& level, const game::Game& game,
                                             render::AssetLibrary& assets,
                                             const render::LevelSceneOptions& scene_options);
+
+    // The live play-test rebuilt the game on an edit that left the scenery alone (level/scenery.h): this
+    // view goes on drawing its scene and light bake, its particles and feedback, for `game` from now on.
+    void follow_game(const game::Game& game);
 
     // Call before each game step (keeps the previous state for interpolation) and after it (events).
     void before_step(const game::Game& game);
@@ -45,6 +53,7 @@ class WorldView {
     void fill(const game::Game& game, float alpha, float fov_degrees, const DojoDummy* dummy,
               render::SceneFrame& frame);
     const geometry::Camera& camera() const { return camera_; }
+    bool baking() const { return bake_.running(); } // a deferred light map still being computed
     int live_emitters() const { return static_cast<int>(emitters_.size()); }
     // Damage arcs, camera shake and muzzle lights running now (the HUD draws the arcs).
     const feedback::Feedback& feedback() const { return feedback_; }
@@ -55,6 +64,9 @@ class WorldView {
     void on_event(const game::Game& game, const game::Event& e);
 
     std::unique_ptr<render::LevelScene> scene_;
+    render::BackgroundBake bake_;       // the scene's deferred light map (build's defer_bake)
+    unsigned long long bake_build_ = 0; // 1: the preview is computing, 2: the final bake
+    render::BakeSettings final_bake_;   // the final bake's quality
     const render::Model* robot_model_ = nullptr;
     const render::Model* cylinder_model_ = nullptr;
     const render::Model* rifle_ = nullptr;

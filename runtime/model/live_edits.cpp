@@ -2,6 +2,7 @@
 #include "runtime/model/live_edits.h"
 
 #include "level/level_io.h"
+#include "level/scenery.h"
 
 namespace ks::runtime {
 
@@ -11,7 +12,8 @@ Result<LiveEdit> apply_live_level(std::string_view text, const game::Game& runni
     if (!loaded) return loaded.error();
     auto rebuilt = game::rebuild_for_edit(running, before, *loaded, options);
     if (!rebuilt) return rebuilt.error();
-    return LiveEdit{std::move(*loaded), std::move(*rebuilt)};
+    const bool scenery_changed = !level::same_scenery(before, *loaded);
+    return LiveEdit{std::move(*loaded), std::move(*rebuilt), scenery_changed};
 }
 
 std::optional<LiveEdits> LiveEdits::from_environment() {

@@ -20,6 +20,10 @@ namespace ks::runtime {
 struct LiveEdit {
     level::Level level;
     game::LiveRebuild rebuild;
+    // The edit changed the level's scenery (level/scenery.h): the view builds its scene and light bake
+    // again. When false (robots, pickups, spawners, triggers, links, lights switched...), the running
+    // view keeps its scene and bake and follows the new game.
+    bool scenery_changed = true;
 };
 
 // Reads `text` (a whole level document) with the level loader and rebuilds `running` on it. Errors are the

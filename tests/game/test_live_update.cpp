@@ -143,6 +143,47 @@ TEST_CASE("a moved spawner's next robot comes from its new place; the robots it 
     CHECK(now.logic().spawners()[0].left == 1);
 }
 
+TEST_CASE("a delayed spawn still waiting when the spawner is moved comes from its new place") {
+    auto lv = small_level();
+    auto& pen = lv.add(level::EntityType::Spawner, Vec3(0, 0, -40), "Pen").as<level::SpawnerProps>();
+    pen.count = 1;
+    pen.max_alive = 1;
+    pen.robot.eye_radius_min = pen.robot.eye_radius_max = pen.robot.hearing_radius = 0.0f;
+    pen.robot.dormant = true;
+    lv.links = {link("on_start", "Pen", "spawn", 1.0f)};
+    auto g = make_game(lv);
+    run_for(*g, 0.3); // on_start has fired: the spawn waits until 1 s
+    REQUIRE(g->robots().empty());
+    REQUIRE(g->logic().pending().size() == 1);
+
+    auto spawned_at = [](Game& now) {
+        std::optional<Vec3> at;
+        for (int i = 0; i < 240 && !at; ++i) {
+            now.step({});
+            for (const Event& e : now.events())
+                if (e.type == EventType::RobotSpawned) at = e.position;
+        }
+        return at;
+    };
+    SUBCASE("the link kept: the spawn runs when it was due, at the new place") {
+        auto edited = lv;
+        entity_named(edited, "Pen").position = Vec3(40, 0, 0);
+        LiveRebuild r = rebuild(*g, lv, edited);
+        CHECK(r.game->logic().pending().size() == 1);
+        const auto at = spawned_at(*r.game);
+        REQUIRE(at);
+        CHECK(glm::length(Vec2(at->x - 40.0f, at->z)) < 5.5f);
+        CHECK(r.game->steps() < g->steps() + 100); // due 1 s after the start, not 1 s after the edit
+    }
+    SUBCASE("the link deleted: its waiting action goes with it") {
+        auto edited = lv;
+        edited.links.clear();
+        LiveRebuild r = rebuild(*g, lv, edited);
+        CHECK(r.game->logic().pending().empty());
+        CHECK_FALSE(spawned_at(*r.game));
+    }
+}
+
 TEST_CASE("an edit the game cannot build is refused and the running game plays on") {
     auto lv = small_level();
     add_wall(lv, Vec3(0, 0, -10), Vec3(20, 4, 1)).name = "Wall";

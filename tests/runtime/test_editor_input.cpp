@@ -354,7 +354,27 @@ TEST_CASE(
     if (!test::sanitized_build()) CHECK(seconds < 2.0);
     st = s.wait("applied reported", [](const json& j) { return j["playtest"]["live"]["applied"] == 1; });
     CHECK(st["playtest"]["live"]["last_answer"].get<std::string>().find("1 removed") != std::string::npos);
+
+    // A scenery edit: everything nudged one unit (the floor, the wall, the panel): the game builds its
+    // navigation mesh and its scene again, the light map from a worker thread, and plays on.
+    s.key("ctrl+a");
+    s.wait("all selected", [](const json& j) { return j["selection"].size() >= 3; });
+    const auto nudged = std::chrono::steady_clock::now();
+    s.key("Right");
+    while (!game_says("live connected applied 2 refused 0") &&
+           std::chrono::steady_clock::now() - nudged < std::chrono::seconds(30))
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    const double wall_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - nudged).count();
+    MESSAGE("scenery edit to game: " << wall_seconds << " s");
+    CHECK(game_says("live connected applied 2 refused 0"));
+    if (!test::sanitized_build()) CHECK(wall_seconds < 2.0);
+    // The light map's bakes (preview, then full) finish on their worker and the game plays on.
+    for (int i = 0; i < 1200 && !game_says("view baking 0"); ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    CHECK(game_says("view baking 0"));
     const pid_t pid = std::stoi(test::read_file(game_pid));
+    CHECK(::kill(pid, 0) == 0); // still running
     ::kill(pid, SIGTERM);
     s.wait("play-test ended", [](const json& j) { return j["playtest"]["running"] == false; });
 }

@@ -1,0 +1,37 @@
+// A level scene's light map computed on a worker thread (background_bake.h).
+#include "render/background_bake.h"
+
+namespace ks::render {
+
+void BackgroundBake::start(const LevelScene& scene, unsigned long long build, const BakeSettings& settings) {
+    cancel();
+    if (!scene.light_bake().laid_out()) return;
+    job_ = std::make_unique<Job>();
+    job_->bake = scene.light_bake(); // a copy: the scene keeps drawing meanwhile
+    job_->build = build;
+    Job* job = job_.get();
+    job->thread = std::jthread([job, settings, env = scene.environment(), lights = scene.bake_lights()] {
+        job->stats = job->bake.compute(env, lights, settings, &job->progress);
+        job->done.store(true, std::memory_order_release);
+    });
+}
+
+void BackgroundBake::cancel() {
+    if (!job_) return;
+    job_->progress.cancel = true;
+    job_.reset(); // joins
+}
+
+bool BackgroundBake::finish(LevelScene& scene, unsigned long long build) {
+    if (!job_ || !job_->done.load(std::memory_order_acquire)) return false;
+    job_->thread.join();
+    const bool ours = job_->build == build && !job_->stats.cancelled;
+    if (ours) {
+        last_wall_ms_ = job_->stats.wall_ms;
+        scene.adopt_light_bake(std::move(job_->bake), job_->stats);
+    }
+    job_.reset();
+    return ours;
+}
+
+} // namespace ks::render
