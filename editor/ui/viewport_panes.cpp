@@ -99,6 +99,7 @@ void LevelViewport::quad_view(Vec2 origin, Vec2 size) {
                      ImVec2(pane.size.x, pane.size.y), ImVec2(0, 1), ImVec2(1, 0));
         ImGui::PopID();
         const bool hovered = ImGui::IsItemHovered() && !ctx_.shell.screenshot_mode();
+        model_drop(pane.origin); // before input(): a pane's picture is the last item
         if (active) {
             origin_ = pane.origin;
             size_ = pane.size;
