@@ -54,7 +54,6 @@ void LevelViewport::draw_lines(render::DebugDraw& debug, const ViewCamera& view)
 }
 
 void LevelViewport::render(int width, int height) {
-    scene_.emit();
     const auto lines = [this](render::DebugDraw& debug, const ViewCamera& view) { draw_lines(debug, view); };
     if (!quad_.on) {
         view_.set_viewport(Vec2(static_cast<float>(width), static_cast<float>(std::max(1, height))));
