@@ -21,6 +21,7 @@ const std::vector<Recipe>& catalog() {
             {"control_panel", "the simulation control console", make_control_panel},
             {"gas_cylinder", "explosive gas cylinder", make_gas_cylinder},
             {"pickups", "health, ammo and shield pickups", make_pickups},
+            {"archive_shelf", "a bookshelf prop (a designer's model in The Archive)", make_archive_shelf},
             {"icons", "application icons of the game and the editor (desktop menus)", make_icons},
         };
         for (const SoundRecipe& sound : sound_recipes())

@@ -33,6 +33,7 @@ Result<void> make_top_light(Output& out);
 Result<void> make_control_panel(Output& out);
 Result<void> make_gas_cylinder(Output& out);
 Result<void> make_pickups(Output& out);
+Result<void> make_archive_shelf(Output& out);
 Result<void> make_icons(Output& out);
 
 } // namespace ks::assetgen

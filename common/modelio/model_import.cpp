@@ -1,5 +1,6 @@
 #include "modelio/model_import.h"
 
+#include "modelio/embedded_textures.h"
 #include "modelio/scene_conventions.h"
 
 #include <assimp/DefaultLogger.hpp>
@@ -120,7 +121,8 @@ Result<ImportedMesh> bake_mesh(const aiMesh& src, const Mat4& to_level, bool mir
     return mesh;
 }
 
-// A texture the file names must exist beside it (embedded ones, "*N", are inside the file).
+// A texture the file names must exist beside it (embedded ones, "*N", are inside the file and already
+// decoded).
 Result<void> check_textures(const ImportedModel& model) {
     const auto dir = model.path.parent_path();
     for (const ImportedMaterial& m : model.materials)
@@ -196,6 +198,8 @@ Result<ImportedModel> import_model(const std::filesystem::path& path, const Impo
     for (unsigned i = 0; i < scene->mNumMaterials; ++i)
         model.materials.push_back(convert_material(*scene->mMaterials[i]));
     if (model.materials.empty()) model.materials.emplace_back();
+    if (Result<void> embedded = load_embedded_textures(*scene, model, limits); !embedded)
+        return embedded.error();
     const std::vector<PlacedMesh> placed = placed_meshes(*scene);
     if (std::size_t n = file_triangles(*scene, placed); n > limits.max_triangles)
         return file_error(path,

@@ -14,8 +14,9 @@
 
 namespace ks::modelio {
 
-// Texture files named by a material, as paths relative to the model file's folder (as the file writes them;
-// "*0" names a texture embedded in a .glb). Empty: none.
+// Texture files named by a material, as paths relative to the model file's folder (as the file writes them),
+// or "*N" for the texture inside the file at ImportedModel::images[N] (a .glb's images, an FBX's embedded
+// media). Empty: none.
 struct MaterialTextures {
     std::string base_color;
     std::string normal;
@@ -51,12 +52,22 @@ struct ModelLod {
                                       // is left out
 };
 
+// A texture stored inside the model file, decoded to 8-bit RGBA, top row first (modelio's
+// embedded_textures.h; stb_image for PNG/JPEG/..., assimp's raw texels as they are).
+struct EmbeddedImage {
+    std::string name; // as the material named it ("*0", or an FBX's file name), for messages
+    int width = 0, height = 0;
+    std::vector<std::uint8_t> rgba; // width * height * 4 bytes; empty for a texture no material uses
+    std::uint64_t hash = 0;         // of the size and pixels: a changed file gives a new texture-cache key
+};
+
 struct ImportedModel {
     std::filesystem::path path;
     std::vector<ImportedMesh> meshes;
     std::vector<ModelLod> lods; // the coarser levels, finest first (level 0 is `meshes`); empty until
                                 // build_lods (import_cached builds them)
     std::vector<ImportedMaterial> materials;
+    std::vector<EmbeddedImage> images; // one per texture inside the file, indexed by a material's "*N"
     geometry::Aabb bounds;
     std::size_t triangle_count = 0;
     float unit_scale = 1.0f; // what the file's units were multiplied by to become level units
@@ -68,6 +79,7 @@ struct ImportLimits {
     std::uintmax_t max_file_bytes = std::uintmax_t{256} << 20;
     float max_extent = 1.0e4f;  // level units along any axis: the level's own extent
     float min_extent = 1.0e-4f; // the largest side must be at least this: a model with no size is a mistake
+    std::uint64_t max_texture_pixels = std::uint64_t{4096} * 4096; // per embedded texture (64 MiB as RGBA)
 };
 
 // The extensions import_model reads, lower case with the dot.
@@ -77,7 +89,8 @@ bool has_supported_extension(const std::filesystem::path& path);
 // Reads `path`. An Error (its `where` is the file) for a missing, empty or too large file, an unsupported
 // extension, a file assimp cannot read (truncated, corrupt, a glTF whose buffer is missing), a mesh with a
 // non-finite vertex, no triangles at all, more than limits.max_triangles, a size outside the limits, a
-// material texture file that is missing.
+// material texture file that is missing, an embedded texture the file does not hold or that does not decode
+// (or has more than limits.max_texture_pixels pixels).
 Result<ImportedModel> import_model(const std::filesystem::path& path, const ImportLimits& limits = {});
 
 } // namespace ks::modelio

@@ -3,12 +3,28 @@
 #include "modelio/model_lod.h"
 #include "render/texture_cache.h"
 
+#include <cstdlib>
+#include <string>
+
 namespace ks::render {
 
 namespace {
 
-Material convert(const modelio::ImportedMaterial& src, const std::filesystem::path& dir,
+// A material's "*N": the model's embedded image N, keyed by the model file and the pixels' hash so a file
+// exported again with other pixels gets a new texture.
+const Texture& embedded(const modelio::ImportedModel& imported, const std::string& ref, ColorSpace space,
+                        TextureCache& textures) {
+    const std::size_t index = std::strtoull(ref.c_str() + 1, nullptr, 10);
+    if (index >= imported.images.size())
+        return textures.get_rgba(imported.path.string() + "#" + ref, 0, 0, {}, space);
+    const modelio::EmbeddedImage& image = imported.images[index];
+    return textures.get_rgba(imported.path.string() + "#" + ref + "#" + std::to_string(image.hash),
+                             image.width, image.height, image.rgba, space);
+}
+
+Material convert(const modelio::ImportedModel& imported, const modelio::ImportedMaterial& src,
                  TextureCache& textures) {
+    const std::filesystem::path dir = imported.path.parent_path();
     Material mat;
     mat.name = src.name;
     mat.base_factor = src.base_color;
@@ -16,8 +32,9 @@ Material convert(const modelio::ImportedMaterial& src, const std::filesystem::pa
     mat.metallic = src.metallic;
     mat.roughness = src.roughness;
     auto map = [&](const std::string& file, ColorSpace space) -> unsigned {
-        if (file.empty() || file[0] == '*') return 0;
-        const Texture& t = textures.get(dir / file, space);
+        if (file.empty()) return 0u;
+        const Texture& t =
+            file[0] == '*' ? embedded(imported, file, space, textures) : textures.get(dir / file, space);
         if (t.placeholder) mat.placeholder = true;
         return t.id;
     };
@@ -85,7 +102,7 @@ std::vector<Material> materials_of(const modelio::ImportedModel& imported, Textu
                                    int& next_material_id) {
     std::vector<Material> materials;
     for (const modelio::ImportedMaterial& m : imported.materials) {
-        Material mat = convert(m, imported.path.parent_path(), textures);
+        Material mat = convert(imported, m, textures);
         mat.id = next_material_id++;
         materials.push_back(std::move(mat));
     }

@@ -1,7 +1,7 @@
 #pragma once
 // A designer's model (modelio::ImportedModel, node transforms already baked) as a drawable Model: one root
 // node holding every mesh, its materials' factors and texture files (relative to the model's folder) through
-// the texture cache. Textures embedded in a .glb ("*0") are not drawn yet: such a material shows its factors.
+// the texture cache; textures embedded in the file ("*N": a .glb's images) from the import's decoded pixels.
 #include "modelio/model_import.h"
 #include "render/model.h"
 

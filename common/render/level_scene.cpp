@@ -405,6 +405,12 @@ int LevelScene::model_lod(int entity_id) const {
     return -1;
 }
 
+int LevelScene::coarse_model_count() const {
+    int n = 0;
+    for (const Prop& p : props_) n += p.levels && p.lod > 0 ? 1 : 0;
+    return n;
+}
+
 // The prop's bounds' diagonal on screen, in pixels, against each level's error (modelio::pick_lod).
 void LevelScene::pick_model_lod(Prop& p) const {
     if (!model_lods_ || !view_ || p.levels->levels.size() < 2) {

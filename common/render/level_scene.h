@@ -66,6 +66,8 @@ class LevelScene {
     void set_model_lods(bool on) { model_lods_ = on; }
     // The level of detail prop `entity_id` was last emitted at (0: full; -1: no such model prop).
     int model_lod(int entity_id) const;
+    // How many model props the last emit() drew at a coarser level than their full model.
+    int coarse_model_count() const;
     // Clears and fills `instances` and `lights` for the current state, and `casters` (when given) with the
     // contact shadow casters of the props the game moves (robots, pickups, gas cylinders).
     void emit(std::vector<MeshInstance>& instances, std::vector<Light>& lights,

@@ -111,6 +111,21 @@ const Texture& TextureCache::get(const std::filesystem::path& path, ColorSpace s
     return textures_.emplace(key, t).first->second;
 }
 
+const Texture& TextureCache::get_rgba(const std::string& key, int width, int height,
+                                      std::span<const std::uint8_t> rgba, ColorSpace space) {
+    const std::string full = key + (space == ColorSpace::Srgb ? "#srgb" : "#linear");
+    if (auto it = textures_.find(full); it != textures_.end()) return it->second;
+    if (width <= 0 || height <= 0 ||
+        rgba.size() != static_cast<size_t>(width) * static_cast<size_t>(height) * 4) {
+        log::warn(key, ": the embedded texture has no pixels; drawing the magenta checker instead");
+        ++placeholder_count_;
+        return textures_.emplace(full, placeholder_).first->second;
+    }
+    Texture t = upload(rgba.data(), width, height, space, true,
+                       driver_max_anisotropy_ > 1.0f ? max_anisotropy_ : 0.0f);
+    return textures_.emplace(full, t).first->second;
+}
+
 const TextureCache::OccludedBase& TextureCache::get_occluded_base(const std::filesystem::path& base,
                                                                   const std::filesystem::path& orm) {
     std::string key = base.lexically_normal().string() + "#" + orm.lexically_normal().string();

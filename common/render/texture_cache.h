@@ -1,7 +1,9 @@
 #pragma once
 // Textures loaded through stb_image with mipmaps and anisotropic filtering, cached by path. A missing or
 // corrupt image gives the magenta-checker placeholder and one warning naming the file, never a crash.
+#include <cstdint>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <unordered_map>
 
@@ -31,6 +33,12 @@ class TextureCache {
     TextureCache& operator=(const TextureCache&) = delete;
 
     const Texture& get(const std::filesystem::path& path, ColorSpace space);
+
+    // An image already decoded in memory (a model's embedded texture: modelio::EmbeddedImage), 8-bit RGBA,
+    // top row first, cached under `key` (make it change when the pixels do). Pixels that do not fill
+    // width x height give the placeholder and one warning naming `key`.
+    const Texture& get_rgba(const std::string& key, int width, int height, std::span<const std::uint8_t> rgba,
+                            ColorSpace space);
 
     // The fast path's level-surface colour map: the base colour (sRGB) times the ORM map's occlusion, with
     // the ORM map's mean metalness, so baked surfaces need one texture lookup instead of two. id 0 when

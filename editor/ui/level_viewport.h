@@ -96,6 +96,7 @@ class LevelViewport {
     bool drag(Vec2 mouse);  // a patrol point or gizmo drag going on; true: it had the mouse
     void click(Vec2 mouse); // a left click with no tool armed: a group, a patrol point, the gizmo, a box
     void end_box_select(Vec2 origin, Vec2 mouse);
+    void model_drop(Vec2 origin); // a Models tab thumbnail dragged over the view just drawn (view_'s)
     int pick(const geometry::Ray& ray) const;
     ShownFn shown_fn() const { // what the views show and picking finds
         return [this](const level::Entity& e) {

@@ -3,6 +3,7 @@
 
 #include "render/level_scene.h"
 #include "ui/thumbnail_camera.h"
+#include "view/model_drop.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -60,13 +61,25 @@ void ModelBrowser::render_thumbnails(render::SceneRenderer& renderer, render::As
     }
 }
 
+// The thumbnail just drawn as a drag-and-drop source: dragged onto the viewport, the model is placed where it
+// is let go (LevelViewport::model_drop); the small picture and the name follow the mouse.
+void ModelBrowser::drag_source(const ModelEntry& entry, const ModelThumbnail* t) const {
+    if (!ImGui::BeginDragDropSource()) return;
+    ImGui::SetDragDropPayload(kModelDragPayload, entry.name.c_str(), entry.name.size() + 1);
+    if (t)
+        ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(t->target.texture())),
+                     ImVec2(48.0f, 48.0f), ImVec2(0, 1), ImVec2(1, 0));
+    ImGui::TextUnformatted(entry.name.c_str());
+    ImGui::EndDragDropSource();
+}
+
 std::optional<std::string> ModelBrowser::draw(const PanelContext& ctx, const std::string& armed_name) {
     std::optional<std::string> picked;
     ImGui::SetNextItemWidth(-1.0f);
     ImGui::InputTextWithHint("##model_search", "Search models...", search_, sizeof(search_));
     ctx.spots.here("models.search");
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-    ImGui::TextWrapped("Click one, then click in the viewport (Shift: several)");
+    ImGui::TextWrapped("Drag one onto the viewport, or click it, then click there (Shift: several)");
     ImGui::PopStyleColor();
     const std::vector<const ModelEntry*> shown = library_.search(search_);
     if (library_.entries().empty()) {
@@ -89,19 +102,21 @@ std::optional<std::string> ModelBrowser::draw(const PanelContext& ctx, const std
         if (armed) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.25f, 0.55f, 0.3f, 1));
         const ImVec2 size(static_cast<float>(kModelThumbnailSize), static_cast<float>(kModelThumbnailSize));
         bool clicked = false;
-        if (const ModelThumbnail* t = thumbnail(entry->name))
+        const ModelThumbnail* t = thumbnail(entry->name);
+        if (t)
             clicked =
                 ImGui::ImageButton(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(t->target.texture())),
                                    size, ImVec2(0, 1), ImVec2(1, 0), 2);
         else
             clicked = ImGui::Button("...", ImVec2(size.x + 4, size.y + 4));
+        drag_source(*entry, t);
         if (armed) ImGui::PopStyleColor();
         ctx.spots.here("model:" + entry->name);
         if (clicked) picked = entry->name;
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(
-                "%s\n%s (%s)\nClick, then click in the viewport to place it; Shift+click places "
-                "several.",
+                "%s\n%s (%s)\nDrag it onto the viewport, or click it, then click in the viewport to "
+                "place it; Shift+click places several.",
                 entry->name.c_str(), entry->path.string().c_str(),
                 entry->shipped ? "shipped" : "your models folder");
         thumbnail_label(entry->name.substr(entry->name.rfind('/') + 1), cell, armed);

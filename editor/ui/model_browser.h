@@ -1,7 +1,8 @@
 #pragma once
 // The left column's Models tab (model_browser.cpp): every model file of the shipped and the designer's
 // models folders (model/model_library.h) with a rendered thumbnail and a search box; a click arms placing it
-// (the place tool puts a model entity on the surface under the next viewport click, one undo step). The
+// (the place tool puts a model entity on the surface under the next viewport click, one undo step), and a
+// thumbnail dragged onto the viewport places it where it is let go (view/model_drop.h, one undo step). The
 // folders are rescanned (file times only) every two seconds and when the window regains focus: a file added,
 // removed or exported again shows, and the level viewport draws the new file (models_revision()).
 #include "model/model_library.h"
@@ -39,6 +40,7 @@ class ModelBrowser {
 
   private:
     const ModelThumbnail* thumbnail(const std::string& name) const;
+    void drag_source(const ModelEntry& entry, const ModelThumbnail* t) const;
 
     ModelLibrary library_;
     std::vector<std::unique_ptr<ModelThumbnail>> thumbnails_;

@@ -66,8 +66,9 @@ void EditorApp::outliner_panel(float x, float y, float w, float h) {
         }
         ImGui::EndTabItem();
     }
-    if (ImGui::BeginTabItem("Models")) {
-        spots_.here("tab.models");
+    const bool models = ImGui::BeginTabItem("Models");
+    spots_.here("tab.models"); // where to click to open it, shown or not
+    if (models) {
         if (const auto name = models_.draw(ctx, viewport_.place_tool().model())) {
             logic_.end_pick(); // placing takes the viewport's clicks
             viewport_.disarm_tools();

@@ -86,6 +86,7 @@ void LevelViewport::panel(const Rect& rect, const OverPicture& over_picture) {
     const Vec2 area(static_cast<float>(static_cast<int>(rect.w)),
                     static_cast<float>(std::max(1, static_cast<int>(rect.h - kViewportBar))));
     area_ = {origin, area};
+    place_.end_drop_preview(); // a thumbnail still dragged over a view shows it again below
     if (quad_.on)
         quad_view(origin, area);
     else
@@ -136,6 +137,7 @@ void LevelViewport::single_view(Vec2 origin) {
     view_.set_viewport(size);
     // A screenshot does not depend on where the X pointer happens to rest (no hot gizmo handle).
     const bool hovered = ImGui::IsItemHovered() && !ctx_.shell.screenshot_mode();
+    model_drop(origin_); // the picture is the last item
     input(origin_, hovered);
     pane_overlays(ImGui::GetWindowDrawList(), origin_, true);
 }

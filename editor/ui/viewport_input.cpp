@@ -5,6 +5,7 @@
 #include "ui/structure_actions.h"
 #include "ui/view_input.h"
 #include "view/face_picking.h"
+#include "view/model_drop.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -51,6 +52,28 @@ void LevelViewport::input(Vec2 origin, bool hovered) {
     }
     if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) click(mouse);
     if (box_selecting_ && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) end_box_select(origin, mouse);
+}
+
+// A thumbnail of the Models tab dragged over the view whose picture was the last item (view_ is its camera):
+// the box where it would land while it hovers (the place tool draws it), the model placed there when it is
+// let go: one undo step, selected, as a click with the model armed would.
+void LevelViewport::model_drop(Vec2 origin) {
+    if (ctx_.shell.screenshot_mode() || !ImGui::BeginDragDropTarget()) return;
+    const ImGuiPayload* payload =
+        ImGui::AcceptDragDropPayload(kModelDragPayload, ImGuiDragDropFlags_AcceptBeforeDelivery);
+    const std::optional<std::string> file =
+        payload ? model_payload_file(payload->Data, payload->DataSize) : std::nullopt;
+    if (file) {
+        const ImGuiIO& io = ImGui::GetIO();
+        const geometry::Ray ray = view_.ray(Vec2(io.MousePos.x - origin.x, io.MousePos.y - origin.y));
+        place_.preview_drop(*file, ray);
+        if (payload->IsDelivery()) {
+            place_.end_drop_preview();
+            if (auto placed = place_model_at(ctx_.editor, *file, ray, shown_fn(), view_.pivot); !placed)
+                ctx_.log.line("place model: " + placed.error().str(), true);
+        }
+    }
+    ImGui::EndDragDropTarget();
 }
 
 bool LevelViewport::drag(Vec2 mouse) {

@@ -54,7 +54,6 @@ void LevelViewport::draw_lines(render::DebugDraw& debug, const ViewCamera& view)
 }
 
 void LevelViewport::render(int width, int height) {
-    scene_.emit();
     const auto lines = [this](render::DebugDraw& debug, const ViewCamera& view) { draw_lines(debug, view); };
     if (!quad_.on) {
         view_.set_viewport(Vec2(static_cast<float>(width), static_cast<float>(std::max(1, height))));
@@ -99,6 +98,7 @@ void LevelViewport::quad_view(Vec2 origin, Vec2 size) {
                      ImVec2(pane.size.x, pane.size.y), ImVec2(0, 1), ImVec2(1, 0));
         ImGui::PopID();
         const bool hovered = ImGui::IsItemHovered() && !ctx_.shell.screenshot_mode();
+        model_drop(pane.origin); // before input(): a pane's picture is the last item
         if (active) {
             origin_ = pane.origin;
             size_ = pane.size;

@@ -110,10 +110,6 @@ void ViewportScene::rebuild_if_changed(const Editor& editor, std::uint64_t shown
     scene_baked_ = bake;
 }
 
-void ViewportScene::emit() {
-    scene_->emit(instances_, lights_, &casters_);
-}
-
 bool ViewportScene::render_view(const ViewCamera& view, int width, int height, std::uint64_t& last_key,
                                 const DrawLines& lines) {
     debug_.clear();
@@ -121,6 +117,9 @@ bool ViewportScene::render_view(const ViewCamera& view, int width, int height, s
     render::SceneFrame frame;
     frame.camera = view.camera;
     frame.camera.aspect = static_cast<float>(width) / static_cast<float>(std::max(1, height));
+    scene_->set_view(frame.camera, height);
+    scene_->emit(instances_, lights_, &casters_);
+    scene_stats_.coarse_models = scene_->coarse_model_count();
     frame.environment = scene_->environment();
     frame.instances = &instances_;
     frame.lights = &lights_;
@@ -154,7 +153,8 @@ void ViewportScene::status(nlohmann::json& s) const {
                   {"bakes", scene_stats_.bakes},
                   {"bake_running", preview_bake_.running()},
                   {"last_bake_wall_ms", preview_bake_.last_wall_ms()},
-                  {"last_build_cpu_ms", scene_stats_.last_build_cpu_ms}};
+                  {"last_build_cpu_ms", scene_stats_.last_build_cpu_ms},
+                  {"coarse_models", scene_stats_.coarse_models}};
 }
 
 } // namespace ks::editor::ui

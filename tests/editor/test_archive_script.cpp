@@ -1,10 +1,11 @@
 // levels/archive.json is built by the editor script levels/source/archive.kss with the brush commands: the
 // script, run into a temporary folder, writes the shipped file byte for byte, the level it builds has no
 // validation issue, and its architecture is what the campaign's third level is meant to show (brushes cut
-// by subtract and clip, an extruded angled wall, a ramp).
+// by subtract and clip, an extruded angled wall, a ramp) with the generated bookshelf placed as a model.
 #include "editor_test_util.h"
 
 #include "level/entity_shapes.h"
+#include "level/model_entity.h"
 #include "model/script.h"
 
 #include <algorithm>
@@ -59,4 +60,26 @@ TEST_CASE("levels/source/archive.kss rebuilds levels/archive.json byte for byte,
     CHECK(leaning(faces_of("Ramp").second) == 1);
     CHECK(leaning(faces_of("Angled wall").second) == 1);
     CHECK(lv.objectives.size() == 2);
+
+    // The shelves: the generated prop read through the designers' model path, with box collision whose
+    // brush the game and the navigation mesh use, standing on the floor against the west wall.
+    int shelves = 0;
+    for (const level::Entity& e : lv.entities) {
+        if (e.type() != level::EntityType::Model) continue;
+        ++shelves;
+        CAPTURE(e.name);
+        CHECK(e.as<level::ModelProps>().file == "archive_shelf.gltf");
+        CHECK(e.as<level::ModelProps>().collision.value == "box");
+        auto model = level::entity_model(e);
+        REQUIRE_MESSAGE(model.ok(), (model.ok() ? std::string() : model.error().str()));
+        CHECK((*model)->triangle_count > 1000);
+        auto collision = level::model_collision(e);
+        REQUIRE(collision.ok());
+        REQUIRE(collision->has_value());
+        const DVec3 lo = (*collision)->bounds_min(), hi = (*collision)->bounds_max();
+        CHECK(lo.y == doctest::Approx(0.0).epsilon(0.01));
+        CHECK(lo.x > -16.0); // clear of the wall's inner face
+        CHECK(hi.x < -14.0);
+    }
+    CHECK(shelves == 2);
 }

@@ -10,6 +10,7 @@
 #include "model/quick_fix.h"
 #include "model/validation.h"
 #include "test_support.h"
+#include "view/model_drop.h"
 
 #include <cstdlib>
 #include <filesystem>
@@ -104,6 +105,67 @@ TEST_CASE("model browser: placing a model is one entity and one undo step; bad n
     CHECK_FALSE(place_model(ed, "../crate.obj", {0, 0, 0}).ok());
     CHECK_FALSE(place_model(ed, "crate.blend", {0, 0, 0}).ok());
     CHECK(ed.level().entities.size() == before);
+}
+
+TEST_CASE(
+    "model browser: a thumbnail dropped on a view stands on the surface under the mouse, one undo step") {
+    ScratchModels scratch;
+    test::write_file(scratch.user() / "props/crate.obj", kCubeObj);
+    Editor ed;
+    ed.grid().step = 0.5f;
+    REQUIRE(place(ed, level::EntityType::Floor, Vec3(0, 2, 0)).ok()); // a slab whose top is at y = 2
+    const std::size_t before = ed.level().entities.size();
+    const std::string history_before = ed.history().undo_name();
+    const ViewCamera top = editor_test::top_view();
+    Vec2 mouse;
+    REQUIRE(top.project(Vec3(1.3f, 2, -2.2f), mouse));
+
+    // The payload as the Models tab sends it: the name and its terminating zero.
+    const std::string name = "props/crate.obj";
+    const std::optional<std::string> file =
+        model_payload_file(name.c_str(), static_cast<int>(name.size() + 1));
+    REQUIRE(file);
+    CHECK(*file == name);
+    // The preview's box and the placed model agree: both are model_drop_point.
+    const Vec3 preview = model_drop_point(ed.doc(), top.ray(mouse), editor_test::all_shown, Vec3(0.0f));
+    Result<int> id = place_model_at(ed, *file, top.ray(mouse), editor_test::all_shown, Vec3(0.0f));
+    REQUIRE_MESSAGE(id.ok(), id.error().str());
+    const level::Entity* e = ed.level().find(*id);
+    REQUIRE(e != nullptr);
+    CHECK(e->type() == level::EntityType::Model);
+    CHECK(e->as<level::ModelProps>().file == name);
+    CHECK(e->position == preview);
+    CHECK(e->position.y == doctest::Approx(2.0f)); // on the slab, not the ground
+    CHECK(e->position.x == doctest::Approx(1.5f)); // snapped to the 0.5 grid
+    CHECK(e->position.z == doctest::Approx(-2.0f));
+    CHECK(ed.doc().selection == std::vector<int>{*id});
+    CHECK(ed.level().entities.size() == before + 1);
+    CHECK(ed.history().undo_name() == "Place model crate");
+    ed.undo(); // one step takes it all back
+    CHECK(ed.level().entities.size() == before);
+    CHECK(ed.history().undo_name() == history_before);
+
+    // Off the slab: the ground.
+    REQUIRE(top.project(Vec3(40.2f, 0, 20.1f), mouse));
+    id = place_model_at(ed, name, top.ray(mouse), editor_test::all_shown, Vec3(0.0f));
+    REQUIRE(id.ok());
+    CHECK(ed.level().find(*id)->position == Vec3(40.0f, 0.0f, 20.0f));
+    // A payload that is not a model name places nothing.
+    CHECK_FALSE(place_model_at(ed, "../crate.obj", top.ray(mouse), editor_test::all_shown, Vec3(0.0f)).ok());
+    CHECK(ed.level().entities.size() == before + 1);
+}
+
+TEST_CASE("model browser: a drag payload is a zero-terminated name or nothing") {
+    const char good[] = "props/crate.glb";
+    CHECK(model_payload_file(good, sizeof(good)) == std::optional<std::string>("props/crate.glb"));
+    CHECK_FALSE(model_payload_file(nullptr, 4));
+    CHECK_FALSE(model_payload_file(good, 0));
+    CHECK_FALSE(model_payload_file(good, 1));                                  // only the zero
+    CHECK_FALSE(model_payload_file(good, static_cast<int>(sizeof(good)) - 1)); // no zero at the end
+    const char inner[] = "props\0crate.glb";
+    CHECK_FALSE(model_payload_file(inner, sizeof(inner))); // a zero inside
+    const std::string huge(5000, 'a');
+    CHECK_FALSE(model_payload_file(huge.c_str(), static_cast<int>(huge.size() + 1)));
 }
 
 TEST_CASE("model browser: the collision overlay is the collision's own edges") {

@@ -1,6 +1,6 @@
 #pragma once
 // Small model files the modelio tests write themselves: a unit cube as glTF (external .bin buffer), as OBJ
-// with its MTL, and converted by assimp's own exporters to .glb and FBX.
+// with its MTL, a .glb with an embedded PNG, and converted by assimp's own exporters to .glb and FBX.
 #include "core/math.h"
 
 #include <filesystem>
@@ -27,6 +27,20 @@ std::filesystem::path write_gltf_cube(const std::filesystem::path& dir, const st
 // map_Kd `texture` when not empty). Returns the .obj.
 std::filesystem::path write_obj_cube(const std::filesystem::path& dir, const std::string& name,
                                      float half = 0.5f, const std::string& texture = {});
+
+struct GlbOptions {
+    std::string image;              // the embedded image file's bytes ("" = no texture)
+    std::string mime = "image/png"; // the image's mimeType
+    int texture_source = 0;         // the texture's image index (1: an image the file does not hold)
+};
+
+// Writes `name`.glb: a binary glTF holding a cube of half size 0.5 with UVs (each face the whole image) and
+// material "painted" whose base colour texture is options.image, embedded in the file's binary chunk.
+std::filesystem::path write_glb_cube(const std::filesystem::path& dir, const std::string& name,
+                                     const GlbOptions& options);
+
+// An RGBA image (4 bytes a pixel, top row first) encoded as a PNG file's bytes (stb_image_write).
+std::string png_bytes(int width, int height, const std::vector<unsigned char>& rgba);
 
 // Reads `source` with assimp and writes it with assimp's exporter `format_id` ("glb2", "fbx") to `target`;
 // false when assimp cannot.

@@ -375,6 +375,7 @@ TEST_CASE("generated models carry the node names and dimensions the conventions 
         {"pickup_health", {"pickup"}},
         {"pickup_ammo", {"pickup"}},
         {"pickup_shield", {"pickup"}},
+        {"archive_shelf", {"archive_shelf"}},
     };
     for (const auto& [model, names] : nodes) {
         CAPTURE(model);
@@ -557,6 +558,15 @@ TEST_CASE("generated models carry the node names and dimensions the conventions 
             CHECK(plo.y == doctest::Approx(-0.4).epsilon(0.01));
             CHECK(doc["materials"][0].contains("emissiveTexture"));
         }
+    }
+    SUBCASE("the archive shelf: a designer's prop standing on its origin, open to +Z") {
+        const json doc = load_model("archive_shelf").doc;
+        const auto [lo, hi] = model_bounds(doc);
+        CHECK(lo.y == doctest::Approx(0.0).epsilon(0.001));
+        CHECK(hi.y == doctest::Approx(4.5).epsilon(0.01));
+        CHECK(hi.x - lo.x == doctest::Approx(4.08).epsilon(0.01));
+        CHECK(hi.x == doctest::Approx(-lo.x).epsilon(0.001)); // centred on x and z
+        CHECK(hi.z == doctest::Approx(-lo.z).epsilon(0.001));
     }
 }
 

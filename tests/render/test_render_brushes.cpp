@@ -285,8 +285,10 @@ TEST_CASE("a designer's model is emitted at its level of detail by its size on s
     };
     const int near = triangles_at(3.0f);
     CHECK(scene->model_lod(id) == 0);
+    CHECK(scene->coarse_model_count() == 0);
     const int far = triangles_at(400.0f);
     CHECK(scene->model_lod(id) == 3);
+    CHECK(scene->coarse_model_count() == 1);
     CHECK(far * 5 < near);
     CHECK(triangles_at(3.0f) == near);
     scene->set_model_lods(false);
