@@ -7,6 +7,8 @@
 
 #include "core/startup_trace.h"
 
+#include <chrono>
+
 namespace ks::runtime {
 
 void GameApp::load(const std::filesystem::path& path, bool dojo, Screen then, Screen on_failure) {
@@ -45,6 +47,10 @@ void GameApp::load(const std::filesystem::path& path, bool dojo, Screen then, Sc
     loader_.steps.push_back({"Building the level scene", [this, s]() -> Result<void> {
                                  auto scene_options = render::level_scene_options(renderer_.settings());
                                  scene_options.cache_bake = true; // each launch would bake the same again
+                                 // A player's start shows the direct light until the full bake is done; a
+                                 // screenshot run (tests, benches) waits for it, its picture the same each
+                                 // run.
+                                 scene_options.background_bake = !shell_.screenshot_mode();
                                  s->view = WorldView::build(s->level, *s->game, assets_, scene_options);
                                  if (audio_)
                                      s->sounds =
@@ -94,6 +100,18 @@ void GameApp::step_loader() {
         else
             screen_ = loader_.then;
     }
+}
+
+void GameApp::step_loader_for_frame() {
+    // A screenshot run (tests' input scripts count frames) takes one step a frame, always the same frames.
+    if (shell_.screenshot_mode()) return step_loader();
+    // A player's: steps until a tenth of a second went on them, so the bar still moves but quick steps (a
+    // model whose textures come from the disk cache) do not each wait for a loading screen's frame.
+    const auto start = std::chrono::steady_clock::now();
+    do {
+        step_loader();
+    } while (screen_ == Screen::Loading && !loader_.done() && !freeze_loader_ &&
+             std::chrono::steady_clock::now() - start < std::chrono::milliseconds(100));
 }
 
 Result<void> GameApp::finish_loading_now() {

@@ -127,6 +127,7 @@ class GameApp {
     void load(const std::filesystem::path& path, bool dojo, Screen then, Screen on_failure = Screen::Menu);
     Result<void> finish_loading_now();
     void step_loader();
+    void step_loader_for_frame(); // the loading steps of one frame (render())
     // KS_STARTUP_TRACE (core/startup_trace.h): "frame: SCREEN" the first time each screen is drawn.
     void mark_first_frame_of_screen();
     void fixed_update(double dt);

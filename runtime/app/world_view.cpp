@@ -26,6 +26,8 @@ std::unique_ptr<WorldView> WorldView::build(const level::Level& level, const gam
                                             const render::LevelSceneOptions& scene_options) {
     auto view = std::unique_ptr<WorldView>(new WorldView());
     view->scene_ = render::LevelScene::build(static_part(level), assets, scene_options);
+    if (const auto& pending = view->scene_->pending_bake()) // a cold start: the full bake on a worker
+        view->bake_.start(*view->scene_, 1, *pending, view->scene_->pending_bake_store());
     view->robot_model_ = &assets.model("robot");
     view->cylinder_model_ = &assets.model("gas_cylinder");
     view->rifle_ = &assets.model("rifle");
@@ -89,6 +91,7 @@ void WorldView::on_event(const game::Game& game, const game::Event& e) {
 void WorldView::fill(const game::Game& game, float alpha, float fov_degrees, const DojoDummy* dummy,
                      render::SceneFrame& frame) {
     const float a = std::clamp(is_finite(alpha) ? alpha : 1.0f, 0.0f, 1.0f);
+    (void)bake_.finish(*scene_, 1); // the full bake replaces the direct light once it is done
     // Doors and lights follow the game.
     for (const auto& d : game.doors()) scene_->set_door_open(d.entity_id, d.progress);
     for (const auto& l : game.lights()) scene_->set_light_on(l.entity_id, l.on);

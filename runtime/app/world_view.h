@@ -10,6 +10,7 @@
 #include "game/game.h"
 #include "level/level.h"
 #include "render/asset_library.h"
+#include "render/background_bake.h"
 #include "render/level_scene.h"
 #include "render/particles.h"
 #include "render/scene_renderer.h"
@@ -55,6 +56,7 @@ class WorldView {
     void on_event(const game::Game& game, const game::Event& e);
 
     std::unique_ptr<render::LevelScene> scene_;
+    render::BackgroundBake bake_; // the scene's pending full bake (LevelSceneOptions::background_bake)
     const render::Model* robot_model_ = nullptr;
     const render::Model* cylinder_model_ = nullptr;
     const render::Model* rifle_ = nullptr;
