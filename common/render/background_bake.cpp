@@ -19,20 +19,21 @@ void lower_this_thread_priority() {
 } // namespace
 
 void BackgroundBake::start(const LevelScene& scene, unsigned long long build, const BakeSettings& settings,
-                           Done on_done) {
+                           Done on_done, std::function<void()> on_ready) {
     cancel();
     if (!scene.light_bake().laid_out()) return;
     job_ = std::make_unique<Job>();
     job_->bake = scene.light_bake(); // a copy: the scene keeps drawing meanwhile
     job_->build = build;
     Job* job = job_.get();
-    job->thread = std::jthread(
-        [job, settings, env = scene.environment(), lights = scene.bake_lights(), done = std::move(on_done)] {
-            lower_this_thread_priority();
-            job->stats = job->bake.compute(env, lights, settings, &job->progress);
-            if (done && !job->stats.cancelled) done(job->bake, job->stats);
-            job->done.store(true, std::memory_order_release);
-        });
+    job->thread = std::jthread([job, settings, env = scene.environment(), lights = scene.bake_lights(),
+                                done = std::move(on_done), ready = std::move(on_ready)] {
+        lower_this_thread_priority();
+        job->stats = job->bake.compute(env, lights, settings, &job->progress);
+        if (done && !job->stats.cancelled) done(job->bake, job->stats);
+        job->done.store(true, std::memory_order_release);
+        if (ready && !job->stats.cancelled) ready();
+    });
 }
 
 void BackgroundBake::cancel() {

@@ -23,8 +23,9 @@ class BackgroundBake {
 
     ~BackgroundBake() { cancel(); }
     // Starts computing `scene`'s light map (laid out) with `settings`, for the scene build `build`.
+    // `on_ready` runs on the worker once finish() can take the bake (the game wakes its idle frame loop).
     void start(const LevelScene& scene, unsigned long long build, const BakeSettings& settings,
-               Done on_done = {});
+               Done on_done = {}, std::function<void()> on_ready = {});
     void cancel();
     // Hands a finished bake of `build` to `scene`; true when it did.
     bool finish(LevelScene& scene, unsigned long long build);

@@ -6,6 +6,7 @@
 #include "game_app_internal.h"
 
 #include "core/startup_trace.h"
+#include "shell/app_shell.h"
 
 #include <chrono>
 
@@ -51,7 +52,9 @@ void GameApp::load(const std::filesystem::path& path, bool dojo, Screen then, Sc
                                  // screenshot run (tests, benches) waits for it, its picture the same each
                                  // run.
                                  scene_options.background_bake = !shell_.screenshot_mode();
-                                 s->view = WorldView::build(s->level, *s->game, assets_, scene_options);
+                                 // An idle menu draws once more when the full bake is ready, to show it.
+                                 s->view = WorldView::build(s->level, *s->game, assets_, scene_options,
+                                                            [] { shell::AppShell::wake(); });
                                  if (audio_)
                                      s->sounds =
                                          std::make_unique<soundscape::Soundscape>(audio_->engine(), s->level);
@@ -106,12 +109,15 @@ void GameApp::step_loader_for_frame() {
     // A screenshot run (tests' input scripts count frames) takes one step a frame, always the same frames.
     if (shell_.screenshot_mode()) return step_loader();
     // A player's: steps until a tenth of a second went on them, so the bar still moves but quick steps (a
-    // model whose textures come from the disk cache) do not each wait for a loading screen's frame.
+    // model whose textures come from the disk cache) do not each wait for a loading screen's frame; before
+    // the first loading screen, 0.4 s: a load that fits (a warm disk cache) shows none at all.
     const auto start = std::chrono::steady_clock::now();
+    const auto budget = std::chrono::milliseconds(loader_.frames == 0 ? 400 : 100);
     do {
         step_loader();
     } while (screen_ == Screen::Loading && !loader_.done() && !freeze_loader_ &&
-             std::chrono::steady_clock::now() - start < std::chrono::milliseconds(100));
+             std::chrono::steady_clock::now() - start < budget);
+    if (screen_ == Screen::Loading) ++loader_.frames;
 }
 
 Result<void> GameApp::finish_loading_now() {

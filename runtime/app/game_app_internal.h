@@ -77,6 +77,7 @@ struct Loader {
     std::size_t next = 0;
     Screen then = Screen::Menu;
     Screen on_failure = Screen::Menu; // where a file that fails to load sends the player (with the error)
+    int frames = 0; // loading screens drawn (a player's start: GameApp::step_loader_for_frame)
     float fraction() const { return steps.empty() ? 1.0f : static_cast<float>(next) / steps.size(); }
     bool done() const { return next >= steps.size(); }
     std::string label() const { return done() ? "Ready" : steps[next].label; }

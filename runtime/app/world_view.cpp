@@ -23,11 +23,13 @@ level::Level static_part(const level::Level& level) {
 
 std::unique_ptr<WorldView> WorldView::build(const level::Level& level, const game::Game& game,
                                             render::AssetLibrary& assets,
-                                            const render::LevelSceneOptions& scene_options) {
+                                            const render::LevelSceneOptions& scene_options,
+                                            std::function<void()> bake_ready) {
     auto view = std::unique_ptr<WorldView>(new WorldView());
     view->scene_ = render::LevelScene::build(static_part(level), assets, scene_options);
     if (const auto& pending = view->scene_->pending_bake()) // a cold start: the full bake on a worker
-        view->bake_.start(*view->scene_, 1, *pending, view->scene_->pending_bake_store());
+        view->bake_.start(*view->scene_, 1, *pending, view->scene_->pending_bake_store(),
+                          std::move(bake_ready));
     view->robot_model_ = &assets.model("robot");
     view->cylinder_model_ = &assets.model("gas_cylinder");
     view->rifle_ = &assets.model("rifle");

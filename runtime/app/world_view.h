@@ -16,6 +16,7 @@
 #include "render/scene_renderer.h"
 #include "runtime/model/feedback.h"
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -36,7 +37,8 @@ class WorldView {
   public:
     static std::unique_ptr<WorldView> build(const level::Level& level, const game::Game& game,
                                             render::AssetLibrary& assets,
-                                            const render::LevelSceneOptions& scene_options);
+                                            const render::LevelSceneOptions& scene_options,
+                                            std::function<void()> bake_ready = {});
 
     // Call before each game step (keeps the previous state for interpolation) and after it (events).
     void before_step(const game::Game& game);
