@@ -170,7 +170,7 @@ Texture TextureCache::load_through_disk(std::string_view tag, const std::vector<
     if (store_.enabled())
         if (auto chain = read_back_mip_chain(t.id, t.width, t.height)) {
             chain->extra = image.extra;
-            (void)store_.save(kDiskKind, key, write_mip_chain(*chain));
+            writer_.save(kDiskKind, key, std::move(*chain));
         }
     return t;
 }

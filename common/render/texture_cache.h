@@ -4,6 +4,7 @@
 // decoded image with the driver's mip chain also goes to the disk cache (render/texture_disk_cache.h), so a
 // later launch uploads the stored levels instead of decoding the PNG and generating mipmaps again.
 #include "core/disk_cache.h"
+#include "render/texture_disk_cache.h"
 
 #include <filesystem>
 #include <string>
@@ -62,6 +63,8 @@ class TextureCache {
         int hits = 0, misses = 0;
     };
     const DiskStats& disk_stats() const { return disk_stats_; }
+    // Waits until the mip chains decoded so far are in the disk cache (they are written on a worker).
+    void flush_disk_writes() { writer_.flush(); }
 
   private:
     // The image's mip chain from the disk cache (the key hashes `tag`, the files' bytes and `space`, not
@@ -74,6 +77,7 @@ class TextureCache {
     float anisotropy_to_set() const { return driver_max_anisotropy_ > 1.0f ? max_anisotropy_ : 0.0f; }
 
     disk_cache::Store store_;
+    ChainWriter writer_{store_};
     DiskStats disk_stats_;
     std::unordered_map<std::string, Texture> textures_;
     std::unordered_map<std::string, OccludedBase> occluded_;

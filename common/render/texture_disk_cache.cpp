@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <utility>
 
 namespace ks::render {
 
@@ -91,6 +92,46 @@ std::optional<MipChain> read_mip_chain(std::string_view payload) {
     }
     if (!r.at_end()) return std::nullopt;
     return chain;
+}
+
+ChainWriter::~ChainWriter() {
+    {
+        std::lock_guard lock(mutex_);
+        stop_ = true;
+    }
+    wake_.notify_all();
+    if (thread_.joinable()) thread_.join();
+}
+
+void ChainWriter::save(std::string_view kind, std::uint64_t key, MipChain chain) {
+    if (!store_.enabled()) return;
+    {
+        std::lock_guard lock(mutex_);
+        queue_.push_back({std::string(kind), key, std::move(chain)});
+        if (!thread_.joinable()) thread_ = std::thread([this] { run(); });
+    }
+    wake_.notify_one();
+}
+
+void ChainWriter::flush() {
+    std::unique_lock lock(mutex_);
+    idle_.wait(lock, [this] { return queue_.empty() && !busy_; });
+}
+
+void ChainWriter::run() {
+    std::unique_lock lock(mutex_);
+    for (;;) {
+        wake_.wait(lock, [this] { return stop_ || !queue_.empty(); });
+        if (queue_.empty()) return; // stopped, everything written
+        Job job = std::move(queue_.front());
+        queue_.pop_front();
+        busy_ = true;
+        lock.unlock();
+        (void)store_.save(job.kind, job.key, write_mip_chain(job.chain));
+        lock.lock();
+        busy_ = false;
+        if (queue_.empty()) idle_.notify_all();
+    }
 }
 
 disk_cache::Hasher texture_key_base() {

@@ -8,10 +8,14 @@
 // executable's identity. Anything that does not parse as a whole chain of the stated size is a miss.
 #include "core/disk_cache.h"
 
+#include <condition_variable>
 #include <cstdint>
+#include <deque>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <thread>
 #include <vector>
 
 namespace ks::render {
@@ -36,6 +40,32 @@ void upload_mip_chain(const MipChain& chain, unsigned internal_format);
 std::string write_mip_chain(const MipChain& chain);
 // nullopt when the payload is not one whole, consistent chain (sizes, level count, bytes per level).
 std::optional<MipChain> read_mip_chain(std::string_view payload);
+
+// Stores chains on a worker thread (serialising and the atomic write's flush to disk cost a cold start's
+// main thread more than the readback itself). The destructor writes what is queued, then returns.
+class ChainWriter {
+  public:
+    explicit ChainWriter(disk_cache::Store store) : store_(std::move(store)) {}
+    ~ChainWriter();
+    ChainWriter(const ChainWriter&) = delete;
+    ChainWriter& operator=(const ChainWriter&) = delete;
+    void save(std::string_view kind, std::uint64_t key, MipChain chain);
+    void flush(); // returns when everything queued so far is written
+
+  private:
+    void run();
+    struct Job {
+        std::string kind;
+        std::uint64_t key = 0;
+        MipChain chain;
+    };
+    disk_cache::Store store_;
+    std::mutex mutex_;
+    std::condition_variable wake_, idle_;
+    std::deque<Job> queue_;
+    bool busy_ = false, stop_ = false;
+    std::thread thread_; // started with the first save
+};
 
 // The hasher every texture key starts from: version, the current GL context's renderer and version strings.
 disk_cache::Hasher texture_key_base();

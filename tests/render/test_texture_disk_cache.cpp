@@ -101,6 +101,7 @@ TEST_CASE("texture disk cache: a hit uploads the driver's own mip chain, level f
     REQUIRE(occluded.id != 0);
     CHECK(first.disk_stats().misses == 3);
     CHECK(first.disk_stats().hits == 0);
+    first.flush_disk_writes(); // written on a worker thread
     CHECK(entries(store.folder()).size() == 3);
     // The stored level 0 is the PNG's pixels as they are (no sRGB conversion on the way back).
     const MipChain srgb_chain = chain_of(srgb);
