@@ -9,8 +9,9 @@ fresh config and data folders (default options); the cache folder (XDG_CACHE_HOM
 start, or one an earlier launch filled for a warm start. Launches are interleaved (one of each column per
 round) so the machine's load falls on all columns alike.
 
---before OLD_EXE adds same-run before/after rows for a build without the trace: the whole process of
-`--screen menu|play --screenshot FILE --frames 1` (window, load, one frame, PNG, exit), for both executables.
+--before OLD_EXE adds same-run before/after columns: the whole process of `--screen menu|play --screenshot
+FILE --frames 1` (window, load, one frame, PNG, exit) for both executables, and the traced first frames of
+both (the old one must write the trace too, as every build since the trace came does), each cold and warm.
 
 Run it under a display:
   xvfb-run -a -s "-screen 0 1280x720x24" scripts/startup_bench.py [--runs 5] [--before OLD_EXE] [--exe EXE]
@@ -110,57 +111,63 @@ def exit_launch(exe, args, home, cache):
 
 def table(title, columns, rows):
     print(f"\n{title}")
-    print(f"{'':50}" + "".join(f"{c:>12}" for c in columns))
+    print(f"{'':50}" + "".join(f"{c:>17}" for c in columns))
     for name, values in rows:
-        print(f"{name[:50]:50}" + "".join(f"{v:>12.0f}" for v in values))
+        print(f"{name[:50]:50}" + "".join(f"{v:>17.0f}" for v in values))
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--runs", type=int, default=5)
     parser.add_argument("--exe", default=os.path.join(ROOT, "build", "bin", "killswitch"))
-    parser.add_argument("--before", help="an older killswitch (no trace needed) for same-run before/after rows")
+    parser.add_argument("--before", help="an older killswitch (with the trace) for same-run before/after columns")
     opts = parser.parse_args()
     exe = os.path.abspath(opts.exe)
     root = tempfile.mkdtemp(prefix="ks_startup_")
+    # (label, executable): the build measured, and with --before the older one, each cold and warm.
+    builds = [("before", os.path.abspath(opts.before))] if opts.before else []
+    builds.append(("after" if opts.before else "", exe))
     try:
         if opts.before:
-            before = os.path.abspath(opts.before)
-            columns = ["before", "after, cold", "after, warm"]
+            columns = [f"{b} {c}" for b, _ in builds for c in ("cold", "warm")]
             for name, _, args in SCENARIOS:
                 shot_args = args if args else ["--screen", "menu"]
                 times = {c: [] for c in columns}
-                warm_cache = os.path.join(root, "warm_exit")
                 for r in range(opts.runs):
-                    for c in columns:
-                        home = os.path.join(root, "home_exit")
-                        shutil.rmtree(home, ignore_errors=True)
-                        os.makedirs(home)
-                        cold = os.path.join(root, "cold_exit")
-                        shutil.rmtree(cold, ignore_errors=True)
-                        if c == "after, warm" and r == 0:
-                            exit_launch(exe, shot_args, home, warm_cache)
-                        cache = warm_cache if c == "after, warm" else cold
-                        times[c].append(exit_launch(before if c == "before" else exe, shot_args, home, cache))
+                    for label, program in builds:
+                        for c in ("cold", "warm"):
+                            home = os.path.join(root, "home_exit")
+                            shutil.rmtree(home, ignore_errors=True)
+                            os.makedirs(home)
+                            cache = os.path.join(root, f"{label}_{c}_exit")
+                            if c == "cold":
+                                shutil.rmtree(cache, ignore_errors=True)
+                            elif r == 0:
+                                exit_launch(program, shot_args, home, cache)
+                            times[f"{label} {c}"].append(exit_launch(program, shot_args, home, cache))
                 med = [statistics.median(times[c]) for c in columns]
                 table(f"{name}: whole process of {' '.join(shot_args)} --screenshot F --frames 1, "
                       f"median of {opts.runs} (ms)", columns, [("launch to exit", med),
-                                                                ("ratio to before", [100 * m / med[0] for m in med])])
+                                                                ("ratio to before cold", [100 * m / med[0] for m in med])])
         for name, mark, args in SCENARIOS:
-            columns = ["cold cache", "warm cache"]
+            columns = [f"{b} {c}".strip() for b, _ in builds for c in ("cold", "warm")]
             results = {c: [] for c in columns}
-            shown = ["cold wall", "cold CPU", "warm wall", "warm CPU"]
-            warm_cache = os.path.join(root, "warm")
+            shown = [f"{c} {k}" for c in columns for k in ("wall", "CPU")]
+            shot_args = args if args else ["--screen", "menu"]
             for r in range(opts.runs):
-                for c in columns:
-                    home = os.path.join(root, "home")
-                    shutil.rmtree(home, ignore_errors=True)
-                    os.makedirs(home)
-                    cold = os.path.join(root, "cold")
-                    shutil.rmtree(cold, ignore_errors=True)
-                    if c == "warm cache" and r == 0:
-                        traced_launch(exe, args, mark, home, warm_cache)
-                    results[c].append(traced_launch(exe, args, mark, home, warm_cache if c == "warm cache" else cold))
+                for label, program in builds:
+                    for c in ("cold", "warm"):
+                        home = os.path.join(root, "home")
+                        shutil.rmtree(home, ignore_errors=True)
+                        os.makedirs(home)
+                        cache = os.path.join(root, f"{label}_{c}")
+                        if c == "cold":
+                            shutil.rmtree(cache, ignore_errors=True)
+                        elif r == 0:
+                            # Filled by a launch that runs to its end: an interactive start computes the full
+                            # light bake on a worker after the first frame and stores it when done.
+                            exit_launch(program, shot_args, home, cache)
+                        results[f"{label} {c}".strip()].append(traced_launch(program, args, mark, home, cache))
             rows = []
             def med(c, key):
                 return statistics.median(x[key] for x in results[c])

@@ -130,8 +130,10 @@ std::optional<std::string> Store::load(std::string_view kind, std::uint64_t key)
             why = "truncated";
         else if (got.payload_hash != hash_bytes(payload))
             why = "checksum mismatch";
-        else
-            return std::string(payload);
+        else {
+            text->erase(0, sizeof(Header)); // the payload, without a second copy of megabytes
+            return std::move(*text);
+        }
     }
     log::info(path.string(), ": cache entry ignored (", why, "), computing it again");
     return std::nullopt;

@@ -4,8 +4,6 @@
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
-#include <fstream>
-#include <sstream>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -60,12 +58,39 @@ Result<std::string> read_text(const std::filesystem::path& path) {
                      "check the path; it is resolved from the current folder");
     if (std::filesystem::is_directory(path, ec))
         return Error("is a folder, not a file", Location{path.string()});
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return io_error(path, "cannot open for reading", errno, "check the file's permissions");
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    if (in.bad()) return io_error(path, "read failed", errno);
-    return buffer.str();
+    // One read into a string of the file's size (the disk cache's entries are megabytes): no stream copies.
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return io_error(path, "cannot open for reading", errno, "check the file's permissions");
+    struct stat st {};
+    std::string data;
+    if (::fstat(fd, &st) == 0 && st.st_size > 0) data.reserve(static_cast<size_t>(st.st_size));
+    char chunk[1 << 16];
+    for (;;) {
+        // Straight into the string's reserved space while it lasts (files of a known size), else by chunks
+        // (a size of 0 is what /proc's files and pipes report).
+        const size_t room = data.capacity() - data.size();
+        if (room > 0) {
+            const size_t at = data.size();
+            data.resize(data.capacity());
+            const ssize_t n = ::read(fd, data.data() + at, room);
+            data.resize(at + static_cast<size_t>(std::max<ssize_t>(n, 0)));
+            if (n > 0) continue;
+            if (n == 0) break;
+        } else {
+            const ssize_t n = ::read(fd, chunk, sizeof chunk);
+            if (n > 0) {
+                data.append(chunk, static_cast<size_t>(n));
+                continue;
+            }
+            if (n == 0) break;
+        }
+        if (errno == EINTR) continue;
+        const int err = errno;
+        ::close(fd);
+        return io_error(path, "read failed", err);
+    }
+    ::close(fd);
+    return data;
 }
 
 Result<TempFile> create_temp_beside(const std::filesystem::path& path) {

@@ -1,18 +1,38 @@
-// A level scene's light map computed on a worker thread (background_bake.h).
+// A level scene's light map on a worker thread (background_bake.h).
 #include "render/background_bake.h"
+
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
+#include <utility>
 
 namespace ks::render {
 
-void BackgroundBake::start(const LevelScene& scene, unsigned long long build, const BakeSettings& settings) {
+namespace {
+// The calling thread (and the threads it starts: Linux's nice value is per thread and inherited) yields the
+// cores to the rest of the process: the first frames' shader compiles and rendering (llvmpipe's threads)
+// go first, the bake takes what they leave. Best effort: a refusal leaves the priority as it was.
+void lower_this_thread_priority() {
+    (void)::setpriority(PRIO_PROCESS, static_cast<id_t>(::syscall(SYS_gettid)), 19);
+}
+} // namespace
+
+void BackgroundBake::start(const LevelScene& scene, unsigned long long build, const BakeSettings& settings,
+                           Done on_done, std::function<void()> on_ready) {
     cancel();
     if (!scene.light_bake().laid_out()) return;
     job_ = std::make_unique<Job>();
     job_->bake = scene.light_bake(); // a copy: the scene keeps drawing meanwhile
     job_->build = build;
     Job* job = job_.get();
-    job->thread = std::jthread([job, settings, env = scene.environment(), lights = scene.bake_lights()] {
+    job->thread = std::jthread([job, settings, env = scene.environment(), lights = scene.bake_lights(),
+                                done = std::move(on_done), ready = std::move(on_ready)] {
+        lower_this_thread_priority();
         job->stats = job->bake.compute(env, lights, settings, &job->progress);
+        if (done && !job->stats.cancelled) done(job->bake, job->stats);
         job->done.store(true, std::memory_order_release);
+        if (ready && !job->stats.cancelled) ready();
     });
 }
 

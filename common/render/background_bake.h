@@ -1,14 +1,18 @@
 #pragma once
 // A level scene's light map computed on a worker thread. The scene is built with its light map laid out
-// but not computed (LevelSceneOptions::defer_bake); start() computes a copy at the given quality on
-// another thread while the scene is drawn (its level geometry lit per vertex meanwhile), finish() hands the
-// result to the scene. A newer start(), cancel() or the destructor stops the older bake. Used by the
-// editor's viewport (a preview bake after each edit) and by the game's live play-test (the full bake after
-// an edit that changed the scenery, so the edit shows before its lighting is done).
+// (render::LevelSceneOptions::defer_bake, or a game start whose bake was not in the disk cache); this
+// computes a copy at the given quality and hands it to the scene when it is done, so nothing waits for the
+// bake: meanwhile the scene draws what it has (the editor's geometry lit per vertex, the game's direct
+// light). The worker runs at the lowest priority (nice 19), so the frames drawn meanwhile are not slowed.
+// A newer start, cancel() or the destructor stops the bake before it. Used by the editor's viewport (the
+// preview quality after each edit) and the game: the full quality on a cold start (stored in the disk cache
+// when done) and after a live play-test edit that changed the scenery (preview first, then full), so the
+// edit shows before its lighting is done.
 #include "render/level_scene.h"
 #include "render/light_bake.h"
 
 #include <atomic>
+#include <functional>
 #include <memory>
 #include <thread>
 
@@ -16,13 +20,14 @@ namespace ks::render {
 
 class BackgroundBake {
   public:
-    BackgroundBake() = default;
-    BackgroundBake(const BackgroundBake&) = delete;
-    BackgroundBake& operator=(const BackgroundBake&) = delete;
+    // Runs on the worker once the bake is complete (not when cancelled): the game stores it in the cache.
+    using Done = std::function<void(const LightBake&, const BakeStats&)>;
+
     ~BackgroundBake() { cancel(); }
-    // Starts computing `scene`'s light map (laid out, not computed) for the scene build `build`; nothing
-    // when the scene's light map is not laid out (no bake asked).
-    void start(const LevelScene& scene, unsigned long long build, const BakeSettings& settings);
+    // Starts computing `scene`'s light map (laid out) with `settings`, for the scene build `build`.
+    // `on_ready` runs on the worker once finish() can take the bake (the game wakes its idle frame loop).
+    void start(const LevelScene& scene, unsigned long long build, const BakeSettings& settings,
+               Done on_done = {}, std::function<void()> on_ready = {});
     void cancel();
     // Hands a finished bake of `build` to `scene`; true when it did.
     bool finish(LevelScene& scene, unsigned long long build);

@@ -315,6 +315,8 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
             bake_surfaces.push_back({&geometry[i].mesh, geometry[i].casts_shadow, &albedo[i]});
         if (options.defer_bake)
             scene->bake_stats_ = scene->bake_.layout(bake_surfaces, options.bake);
+        else if (options.cache_bake && options.background_bake)
+            scene->restore_or_start_bake(bake_surfaces, options.bake);
         else if (options.cache_bake)
             scene->bake_stats_ =
                 bake_cached(scene->bake_, bake_surfaces, scene->environment_, bake_lights, options.bake);
@@ -338,9 +340,27 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
     return scene;
 }
 
+void LevelScene::restore_or_start_bake(const std::vector<BakeSurface>& surfaces,
+                                       const BakeSettings& settings) {
+    auto slot = restore_or_layout(bake_, surfaces, environment_, bake_lights_, settings,
+                                  disk_cache::Store::user(), bake_stats_);
+    if (!slot) return;
+    // The direct light now (the full bake computes it again, with the bounce and the occlusion, on a worker).
+    bake_stats_ = bake_.compute(environment_, bake_lights_, BakeSettings::direct_only());
+    pending_bake_ = settings;
+    pending_slot_ = std::make_shared<const LightBakeSlot>(std::move(*slot));
+}
+
+std::function<void(const LightBake&, const BakeStats&)> LevelScene::pending_bake_store() const {
+    return [slot = pending_slot_](const LightBake& bake, const BakeStats& stats) {
+        if (slot) (void)store_bake(bake, stats, *slot, disk_cache::Store::user());
+    };
+}
+
 void LevelScene::adopt_light_bake(LightBake bake, const BakeStats& stats) {
     bake_ = std::move(bake);
     bake_stats_ = stats;
+    pending_bake_.reset();
     for (const auto& p : props_)
         if (p.bake_light >= 0) bake_.set_light_on(p.bake_light, p.light_on);
     lightmap_stale_ = true;

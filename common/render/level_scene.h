@@ -13,11 +13,14 @@
 #include "render/renderer_settings.h"
 #include "render/scene.h"
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
 
 namespace ks::render {
+
+struct LightBakeSlot; // light_bake_cache.h
 
 // A wall's, floor's or stair's geometry in world space, drawn from box brushes (exposed for tests: no GL).
 MeshData build_surface_mesh(const level::Entity& entity);
@@ -43,6 +46,11 @@ struct LevelSceneOptions {
     // Read the bake from the user's disk cache and write it there (light_bake_cache.h): the game, whose
     // levels are baked again at every launch; not the editor, whose every edit would leave an entry.
     bool cache_bake = false;
+    // With cache_bake, when the bake is not in the cache: compute the direct light only (a tenth of the full
+    // bake's time) and leave the bake at `bake`'s quality to the caller, who runs it on a worker thread
+    // (render/background_bake.h: pending_bake(), pending_bake_store()); the game's interactive start, which
+    // then shows its first frame without waiting for the bounce and the occlusion.
+    bool background_bake = false;
 };
 // The options that match a renderer's resolved settings: bake only for the fast path, same encoding.
 LevelSceneOptions level_scene_options(const RendererSettings& resolved);
@@ -85,6 +93,12 @@ class LevelScene {
     // switches; uploaded on the next emit().
     void adopt_light_bake(LightBake bake, const BakeStats& stats);
     const BakeStats& bake_stats() const { return bake_stats_; }
+    // The bake left to the caller (LevelSceneOptions::background_bake on a cache miss): its quality, to give
+    // BackgroundBake::start; nullopt when there is none.
+    const std::optional<BakeSettings>& pending_bake() const { return pending_bake_; }
+    // Stores a finished pending bake in the disk cache (BackgroundBake's Done: runs on its worker; it holds
+    // nothing of the scene, which may be gone by then).
+    std::function<void(const LightBake&, const BakeStats&)> pending_bake_store() const;
     unsigned lightmap_texture() const { return lightmap_.id(); }
 
   private:
@@ -111,6 +125,8 @@ class LevelScene {
         int bake_light = -1;                 // its index in the light bake
     };
     static Prop make_prop(const level::Entity& e, const Model* model, const Mat4& root);
+    // background_bake: the cached bake, or the direct light now and pending_bake_ set.
+    void restore_or_start_bake(const std::vector<BakeSurface>& surfaces, const BakeSettings& settings);
     std::vector<Surface> surfaces_;
     std::vector<Prop> props_;
     Environment environment_;
@@ -118,7 +134,9 @@ class LevelScene {
     LightBake bake_;
     BakeStats bake_stats_;
     std::vector<Light> bake_lights_;
-    bool lightmap_stale_ = false; // a bake adopted since the last upload
+    std::optional<BakeSettings> pending_bake_;
+    std::shared_ptr<const LightBakeSlot> pending_slot_; // where pending_bake_store() stores it
+    bool lightmap_stale_ = false;                       // a bake adopted since the last upload
     LightmapTexture lightmap_;
     std::vector<Mat4> scratch_;
     ModelPose pose_;

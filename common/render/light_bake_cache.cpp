@@ -27,7 +27,14 @@ void hash_light(disk_cache::Hasher& h, const Light& l) {
     h.value(l.intensity).value(l.range).value(l.cos_outer).value(l.cos_inner).value(l.dynamic);
 }
 
-std::string write_entry(const LightBake& bake, const std::vector<BakeSurface>& surfaces,
+std::vector<std::vector<Vec2>> lightmap_uvs(const std::vector<BakeSurface>& surfaces) {
+    std::vector<std::vector<Vec2>> uvs(surfaces.size());
+    for (std::size_t i = 0; i < surfaces.size(); ++i)
+        for (const Vertex& v : surfaces[i].mesh->vertices) uvs[i].push_back(v.lightmap_uv);
+    return uvs;
+}
+
+std::string write_entry(const LightBake& bake, const std::vector<std::vector<Vec2>>& uvs,
                         const BakeStats& stats) {
     const BakedAtlas atlas = bake.atlas();
     disk_cache::Writer w;
@@ -41,12 +48,7 @@ std::string write_entry(const LightBake& bake, const std::vector<BakeSurface>& s
     for (const auto& s : atlas.bounce_shares) w.values(s);
     w.values(atlas.light_color);
     w.values(atlas.light_on);
-    std::vector<Vec2> uv;
-    for (const BakeSurface& s : surfaces) {
-        uv.clear();
-        for (const Vertex& v : s.mesh->vertices) uv.push_back(v.lightmap_uv);
-        w.values(uv);
-    }
+    for (const auto& uv : uvs) w.values(uv);
     return std::move(w.data());
 }
 
@@ -103,26 +105,56 @@ std::uint64_t light_bake_key(const std::vector<BakeSurface>& surfaces, const Env
     return h.digest();
 }
 
-BakeStats bake_cached(LightBake& bake, const std::vector<BakeSurface>& surfaces,
-                      const Environment& environment, const std::vector<Light>& lights,
-                      const BakeSettings& settings, const disk_cache::Store& store) {
-    if (!store.enabled()) return bake.bake(surfaces, environment, lights, settings);
+namespace {
+// The cached bake restored into `bake` (and the meshes' coordinates): true; else false and `key` set.
+bool restore(LightBake& bake, const std::vector<BakeSurface>& surfaces, const Environment& environment,
+             const std::vector<Light>& lights, const BakeSettings& settings, const disk_cache::Store& store,
+             BakeStats& stats, std::uint64_t& key) {
     const auto start = std::chrono::steady_clock::now();
-    const std::uint64_t key = light_bake_key(surfaces, environment, lights, settings);
+    key = light_bake_key(surfaces, environment, lights, settings);
     if (auto payload = store.load(kKind, key)) {
-        BakeStats stats;
         if (read_entry(*payload, bake, surfaces, lights.size(), stats)) {
             stats.bake_ms =
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
             startup::mark("light bake (from the cache)");
-            return stats;
+            return true;
         }
         log::info(store.file(kKind, key).string(), ": cache entry does not fit this level's bake, baking it");
     }
-    const BakeStats stats = bake.bake(surfaces, environment, lights, settings);
-    (void)store.save(kKind, key, write_entry(bake, surfaces, stats));
+    return false;
+}
+} // namespace
+
+BakeStats bake_cached(LightBake& bake, const std::vector<BakeSurface>& surfaces,
+                      const Environment& environment, const std::vector<Light>& lights,
+                      const BakeSettings& settings, const disk_cache::Store& store) {
+    if (!store.enabled()) return bake.bake(surfaces, environment, lights, settings);
+    BakeStats stats;
+    std::uint64_t key = 0;
+    if (restore(bake, surfaces, environment, lights, settings, store, stats, key)) return stats;
+    stats = bake.bake(surfaces, environment, lights, settings);
+    (void)store.save(kKind, key, write_entry(bake, lightmap_uvs(surfaces), stats));
     startup::mark("light bake (baked, cached)");
     return stats;
+}
+
+std::optional<LightBakeSlot> restore_or_layout(LightBake& bake, const std::vector<BakeSurface>& surfaces,
+                                               const Environment& environment,
+                                               const std::vector<Light>& lights, const BakeSettings& settings,
+                                               const disk_cache::Store& store, BakeStats& stats) {
+    LightBakeSlot slot;
+    if (store.enabled() && restore(bake, surfaces, environment, lights, settings, store, stats, slot.key))
+        return std::nullopt;
+    stats = bake.layout(surfaces, settings);
+    slot.uvs = lightmap_uvs(surfaces);
+    startup::mark("light bake (laid out, not in the cache)");
+    return slot;
+}
+
+bool store_bake(const LightBake& bake, const BakeStats& stats, const LightBakeSlot& slot,
+                const disk_cache::Store& store) {
+    if (!store.enabled() || stats.cancelled) return false;
+    return store.save(kKind, slot.key, write_entry(bake, slot.uvs, stats));
 }
 
 } // namespace ks::render

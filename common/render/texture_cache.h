@@ -1,11 +1,18 @@
 #pragma once
 // Textures loaded through stb_image with mipmaps and anisotropic filtering, cached by path. A missing or
-// corrupt image gives the magenta-checker placeholder and one warning naming the file, never a crash.
+// corrupt image gives the magenta-checker placeholder and one warning naming the file, never a crash. The
+// decoded image with the driver's mip chain also goes to the disk cache (render/texture_disk_cache.h), so a
+// later launch uploads the stored levels instead of decoding the PNG and generating mipmaps again.
+#include "core/disk_cache.h"
+#include "render/texture_disk_cache.h"
+
 #include <cstdint>
 #include <filesystem>
 #include <span>
 #include <string>
+#include <string_view>
 #include <unordered_map>
+#include <vector>
 
 namespace ks::render {
 
@@ -27,7 +34,8 @@ struct Texture {
 
 class TextureCache {
   public:
-    TextureCache();
+    // Mip chains are read from and written to `store` (none: Store({})).
+    explicit TextureCache(disk_cache::Store store = disk_cache::Store::user());
     ~TextureCache();
     TextureCache(const TextureCache&) = delete;
     TextureCache& operator=(const TextureCache&) = delete;
@@ -58,7 +66,27 @@ class TextureCache {
     void set_max_anisotropy(float anisotropy);
     float max_anisotropy() const { return max_anisotropy_; }
 
+    // Images (and occluded bases) uploaded from the disk cache / decoded, since construction.
+    struct DiskStats {
+        int hits = 0, misses = 0;
+    };
+    const DiskStats& disk_stats() const { return disk_stats_; }
+    // Waits until the mip chains decoded so far are in the disk cache (they are written on a worker).
+    void flush_disk_writes() { writer_.flush(); }
+
   private:
+    // The image's mip chain from the disk cache (the key hashes `tag`, the files' bytes and `space`, not
+    // their paths), else
+    // `decode`'s image uploaded with the driver's mipmaps and its chain stored; id 0 when `decode` fails.
+    // `extra` is the value stored with the chain (MipChain::extra).
+    template <class Decode>
+    Texture load_through_disk(std::string_view tag, const std::vector<std::string>& files, ColorSpace space,
+                              float& extra, Decode&& decode);
+    float anisotropy_to_set() const { return driver_max_anisotropy_ > 1.0f ? max_anisotropy_ : 0.0f; }
+
+    disk_cache::Store store_;
+    ChainWriter writer_{store_};
+    DiskStats disk_stats_;
     std::unordered_map<std::string, Texture> textures_;
     std::unordered_map<std::string, OccludedBase> occluded_;
     Texture placeholder_, white_, flat_normal_;

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 #include <ctime>
 #include <type_traits>
@@ -104,10 +105,19 @@ void ViewportScene::rebuild_if_changed(const Editor& editor, std::uint64_t shown
     }
     scene_stats_.last_build_cpu_ms = 1000.0 * static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
     ++scene_stats_.builds;
-    preview_bake_.start(*scene_, scene_stats_.builds); // nothing when not laid out (no bake asked)
+    preview_bake_.start(*scene_, scene_stats_.builds,
+                        options.bake); // nothing when not laid out (no bake asked)
     renderer_->invalidate_shadows();
     scene_revision_ = revision;
     scene_baked_ = bake;
+}
+
+std::string ViewportScene::bake_label() const {
+    if (!preview_bake_.running()) return {};
+    char text[32];
+    std::snprintf(text, sizeof(text), "  |  lighting %d%%",
+                  static_cast<int>(preview_bake_.progress() * 100.0f));
+    return text;
 }
 
 bool ViewportScene::render_view(const ViewCamera& view, int width, int height, std::uint64_t& last_key,

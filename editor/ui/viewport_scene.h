@@ -6,10 +6,10 @@
 // into each view's debug lines; it reaches the document only through the calls below.
 #include "model/editor.h"
 #include "render/asset_library.h"
+#include "render/background_bake.h"
 #include "render/debug_draw.h"
 #include "render/level_scene.h"
 #include "render/scene_renderer.h"
-#include "ui/preview_bake.h"
 #include "ui/render_target.h"
 #include "view/quad_view.h"
 #include "view/view_camera.h"
@@ -53,8 +53,8 @@ class ViewportScene {
     const RenderTarget& single_target() const { return single_target_; }
     const RenderTarget& pane_target(size_t pane) const { return pane_targets_[pane]; }
     unsigned long long pane_renders(size_t pane) const { return pane_renders_[pane]; }
-    void status(nlohmann::json& status) const;                       // "render_scale", "scene"
-    std::string bake_label() const { return preview_bake_.label(); } // the status line's bake progress
+    void status(nlohmann::json& status) const; // "render_scale", "scene"
+    std::string bake_label() const; // "  |  lighting 42%" while the bake runs (the status line), else empty
 
   private:
     // The picture into the bound target; false: skipped, `last_key` says it shows the same.
@@ -65,7 +65,7 @@ class ViewportScene {
     std::unique_ptr<render::SceneRenderer> renderer_;
     std::unique_ptr<render::LevelScene> scene_;
     std::uint64_t scene_revision_ = ~0ull;
-    PreviewBake preview_bake_; // the light map of scene_, computed on a worker thread
+    render::BackgroundBake preview_bake_; // the light map of scene_ at the preview quality, on a worker
     bool scene_baked_ = false; // built with the light-map bake requested (not during a continuous edit)
     struct SceneStats {
         unsigned long long builds = 0, bakes = 0; // bakes: light maps computed and shown

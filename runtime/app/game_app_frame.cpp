@@ -108,7 +108,7 @@ void GameApp::mark_first_frame_of_screen() {
 
 void GameApp::render(const shell::FrameInfo& info) {
     if (scripted_) run_script(info.frame_index);
-    step_loader();
+    step_loader_for_frame();
     mark_first_frame_of_screen();
     handle_keys();
     budget_.new_frame(); // the next frame's fixed steps come after this call

@@ -77,6 +77,7 @@ struct Loader {
     std::size_t next = 0;
     Screen then = Screen::Menu;
     Screen on_failure = Screen::Menu; // where a file that fails to load sends the player (with the error)
+    int frames = 0; // loading screens drawn (a player's start: GameApp::step_loader_for_frame)
     float fraction() const { return steps.empty() ? 1.0f : static_cast<float>(next) / steps.size(); }
     bool done() const { return next >= steps.size(); }
     std::string label() const { return done() ? "Ready" : steps[next].label; }
@@ -127,6 +128,7 @@ class GameApp {
     void load(const std::filesystem::path& path, bool dojo, Screen then, Screen on_failure = Screen::Menu);
     Result<void> finish_loading_now();
     void step_loader();
+    void step_loader_for_frame(); // the loading steps of one frame (render())
     // KS_STARTUP_TRACE (core/startup_trace.h): "frame: SCREEN" the first time each screen is drawn.
     void mark_first_frame_of_screen();
     void fixed_update(double dt);

@@ -23,13 +23,18 @@ level::Level static_part(const level::Level& level) {
 
 std::unique_ptr<WorldView> WorldView::build(const level::Level& level, const game::Game& game,
                                             render::AssetLibrary& assets,
-                                            const render::LevelSceneOptions& scene_options) {
+                                            const render::LevelSceneOptions& scene_options,
+                                            std::function<void()> bake_ready) {
     auto view = std::unique_ptr<WorldView>(new WorldView());
     view->scene_ = render::LevelScene::build(static_part(level), assets, scene_options);
-    if (scene_options.defer_bake) {
+    if (scene_options.defer_bake) { // a live scenery edit: the preview first, then the full bake
         view->final_bake_ = scene_options.bake;
         view->bake_build_ = 1;
         view->bake_.start(*view->scene_, view->bake_build_, render::BakeSettings::preview());
+    } else if (const auto& pending = view->scene_->pending_bake()) { // a cold start: the full bake on a worker
+        view->bake_build_ = 2;
+        view->bake_.start(*view->scene_, view->bake_build_, *pending, view->scene_->pending_bake_store(),
+                          std::move(bake_ready));
     }
     view->robot_model_ = &assets.model("robot");
     view->cylinder_model_ = &assets.model("gas_cylinder");
@@ -101,7 +106,8 @@ void WorldView::on_event(const game::Game& game, const game::Event& e) {
 void WorldView::fill(const game::Game& game, float alpha, float fov_degrees, const DojoDummy* dummy,
                      render::SceneFrame& frame) {
     const float a = std::clamp(is_finite(alpha) ? alpha : 1.0f, 0.0f, 1.0f);
-    // A deferred light map, once computed: the preview's, then the final one's.
+    // A light map computed on the worker, once done: a live edit's preview (then its full bake starts), or
+    // the full bake that replaces a cold start's direct light.
     if (bake_.finish(*scene_, bake_build_) && bake_build_ == 1) {
         bake_build_ = 2;
         bake_.start(*scene_, bake_build_, final_bake_);

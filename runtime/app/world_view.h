@@ -16,6 +16,7 @@
 #include "render/scene_renderer.h"
 #include "runtime/model/feedback.h"
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -39,7 +40,8 @@ class WorldView {
     // (the live play-test's scenery edits: the edit shows at once, lit per vertex until the preview).
     static std::unique_ptr<WorldView> build(const level::Level& level, const game::Game& game,
                                             render::AssetLibrary& assets,
-                                            const render::LevelSceneOptions& scene_options);
+                                            const render::LevelSceneOptions& scene_options,
+                                            std::function<void()> bake_ready = {});
 
     // The live play-test rebuilt the game on an edit that left the scenery alone (level/scenery.h): this
     // view goes on drawing its scene and light bake, its particles and feedback, for `game` from now on.
@@ -64,9 +66,9 @@ class WorldView {
     void on_event(const game::Game& game, const game::Event& e);
 
     std::unique_ptr<render::LevelScene> scene_;
-    render::BackgroundBake bake_;       // the scene's deferred light map (build's defer_bake)
-    unsigned long long bake_build_ = 0; // 1: the preview is computing, 2: the final bake
-    render::BakeSettings final_bake_;   // the final bake's quality
+    render::BackgroundBake bake_;       // the light map computed on a worker (defer_bake, background_bake)
+    unsigned long long bake_build_ = 0; // 1: a live edit's preview is computing, 2: the full bake
+    render::BakeSettings final_bake_;   // a live edit's full bake quality
     const render::Model* robot_model_ = nullptr;
     const render::Model* cylinder_model_ = nullptr;
     const render::Model* rifle_ = nullptr;

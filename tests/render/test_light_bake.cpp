@@ -500,3 +500,54 @@ TEST_CASE("light bake cache: a hit is the bake, changed input misses, a bad entr
     CHECK(bake_cached(uncached, room.surfaces(), env, {light}, {}, disk_cache::Store(dir / "blocked" / "c"))
               .texels == first.texels);
 }
+
+TEST_CASE("light bake cache: a bake laid out now and computed later (a worker) is stored and read back") {
+    Room room;
+    render::Light light;
+    light.position = Vec3(-5, 4, 0);
+    light.range = 10.0f;
+    const Environment env = dark_with_sun(Vec3(1, -1, 0.3f));
+    const BakeSettings bounce = indirect_settings(8, 4);
+    test::ScratchDir dir;
+    const disk_cache::Store store(dir / "cache");
+
+    LightBake reference; // bake() in one go, no cache
+    (void)reference.bake(room.surfaces(), env, {light}, bounce);
+    for (Vertex& v : room.wall.vertices) v.lightmap_uv = Vec2(0.0f);
+    for (Vertex& v : room.floor.vertices) v.lightmap_uv = Vec2(0.0f);
+
+    LightBake scene_bake;
+    BakeStats stats;
+    auto slot = restore_or_layout(scene_bake, room.surfaces(), env, {light}, bounce, store, stats);
+    REQUIRE(slot); // a miss: laid out only
+    CHECK(slot->key == light_bake_key(room.surfaces(), env, {light}, bounce));
+    CHECK(scene_bake.laid_out());
+    CHECK_FALSE(store.load("lightbake", slot->key).has_value());
+    LightBake worker = scene_bake; // what BackgroundBake computes
+    const BakeStats computed = worker.compute(env, {light}, bounce);
+    BakeStats cancelled = computed;
+    cancelled.cancelled = true;
+    CHECK_FALSE(store_bake(worker, cancelled, *slot, store)); // an unfinished bake is never stored
+    REQUIRE(store_bake(worker, computed, *slot, store));
+    worker.update();
+    reference.update();
+    CHECK(worker.texels() == reference.texels());
+
+    for (Vertex& v : room.wall.vertices) v.lightmap_uv = Vec2(0.0f); // a fresh level build
+    LightBake restored;
+    CHECK_FALSE(restore_or_layout(restored, room.surfaces(), env, {light}, bounce, store, stats)); // a hit
+    CHECK(stats.texels == computed.texels);
+    restored.update();
+    CHECK(restored.texels() == reference.texels());
+    // Another light set: the slot's entry does not fit, it is laid out again.
+    render::Light other = light;
+    other.position.x += 1.0f;
+    LightBake missed;
+    CHECK(restore_or_layout(missed, room.surfaces(), env, {other}, bounce, store, stats));
+    // No store: laid out, nothing stored.
+    LightBake no_cache;
+    auto none =
+        restore_or_layout(no_cache, room.surfaces(), env, {light}, bounce, disk_cache::Store({}), stats);
+    REQUIRE(none);
+    CHECK_FALSE(store_bake(worker, computed, *none, disk_cache::Store({})));
+}
