@@ -130,10 +130,12 @@ class DojoPanel {
         std::vector<std::string> blend_clips; // the blend grid's rows and columns, while it is shown
         std::vector<Vec2> blend_centres;      // its cells' centres, row-major ((0, 0): not drawn)
         std::vector<Vec2> curve_keys;         // the curve view's key handles, while it is shown
+        std::size_t curve_selected = 0;       // how many of its keys are selected
         std::vector<Vec2> event_flags;        // the event lane's flags (the event's time on the lane)
         std::string node;                     // the node selected in the preview
         std::size_t pose_edits = 0;           // nodes turned and not keyed yet
         bool auto_key = false;
+        bool ik = false;
         std::vector<std::pair<std::string, Vec2>> joints; // the rig's joints on screen
         std::array<Vec2, 3> rings{};                      // a point on each gizmo ring ((0, 0): none)
     };

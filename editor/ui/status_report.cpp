@@ -68,11 +68,13 @@ nlohmann::json dojo_status(const DojoPanel& dojo) {
             {"spots", spots},
             {"blend_cells", cells},
             {"curve_keys", curve_keys},
+            {"curve_selected", d.curve_selected},
             {"event_flags", event_flags},
             {"pose",
              {{"node", d.node},
               {"edits", d.pose_edits},
               {"auto_key", d.auto_key},
+              {"ik", d.ik},
               {"joints", joints},
               {"rings", rings}}},
             // Kept from before the spots map (older tests read them).
