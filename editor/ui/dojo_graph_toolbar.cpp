@@ -86,7 +86,7 @@ void DojoCurveView::frame_rate(const DojoContext& dojo) {
             "moved keys and events land on whole frames");
     if (!units.frames) return;
     ImGui::SameLine();
-    char rate[16];
+    char rate[48];
     std::snprintf(rate, sizeof(rate), "%g fps", units.fps);
     ImGui::SetNextItemWidth(ImGui::CalcTextSize("120 fps").x + ImGui::GetFrameHeight() * 1.5f);
     if (ImGui::BeginCombo("##fps", rate)) {
