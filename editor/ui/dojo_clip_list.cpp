@@ -181,6 +181,7 @@ void DojoClipList::loop_row(const DojoContext& dojo) {
                 [&, mode = kModes[m]](anim::AnimationFile& f) { return set_loop_mode(f, clip, mode, next); });
             return; // `def` may have moved
         }
+        dojo.named.here(std::string("loop:") + kLabels[m]);
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kTips[m]);
     }
     if (def->loop != anim::LoopMode::Next) return;

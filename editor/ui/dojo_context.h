@@ -9,6 +9,7 @@
 #include "model/dojo_frames.h"
 #include "model/dojo_playback.h"
 #include "ui/sound_widgets.h"
+#include "ui/ui_spots.h"
 
 #include <array>
 #include <cmath>
@@ -64,6 +65,9 @@ struct DojoContext {
     DojoPlayback& playback;
     DojoSelection& selection;
     DojoSpots& spots;
+    // Widgets a script or test clicks that come and go (a key's radio, a combo's entries, the timeline's
+    // diamonds): "key:2", "easing", "combo:Quadratic.InOut", "loop:next", "marker:3", "event_lane", ...
+    UiSpots& named;
     const DojoLogFn& log;
     const SoundAudition& audition; // may be unset: no Audition buttons, no event sounds
     const std::filesystem::path& clip_file;

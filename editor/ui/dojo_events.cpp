@@ -68,7 +68,8 @@ void DojoEvents::lane(const DojoContext& dojo, Vec2 origin, float width, float h
     // The lane itself: double-click adds an event there, right-click offers to.
     ImGui::SetCursorScreenPos(p);
     ImGui::InvisibleButton("event lane", ImVec2(width, height));
-    ImGui::SetItemAllowOverlap(); // the flags drawn over it take the mouse first
+    dojo.named.here("event_lane"); // its centre: a script double-clicks at a time's x on it
+    ImGui::SetItemAllowOverlap();  // the flags drawn over it take the mouse first
     const float mouse_x = ImGui::GetIO().MousePos.x;
     if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left))
         open_add(dojo, time_at(mouse_x));
@@ -231,15 +232,18 @@ void DojoEvents::popup(const DojoContext& dojo) {
     for (const char* common : kCommonNames) {
         ImGui::SameLine();
         if (ImGui::SmallButton(common)) std::snprintf(name_, sizeof(name_), "%s", common);
+        dojo.named.here(std::string("event.name:") + common);
     }
     ImGui::SetNextItemWidth(220);
-    sound_name_widget("sound", sound_, sound_names_);
+    sound_name_widget("sound", sound_, sound_names_, &dojo.named);
     ImGui::SameLine();
     ImGui::TextDisabled("sound (optional)");
     ImGui::Spacing();
     const bool named = name_[0] != '\0';
     ImGui::BeginDisabled(!named);
-    const bool add = ImGui::Button("Add", ImVec2(110, 0)) || (entered && named);
+    const bool add_clicked = ImGui::Button("Add", ImVec2(110, 0));
+    dojo.named.here("event.add");
+    const bool add = add_clicked || (entered && named);
     ImGui::EndDisabled();
     ImGui::SameLine();
     if (ImGui::Button("Cancel", ImVec2(110, 0))) ImGui::CloseCurrentPopup();

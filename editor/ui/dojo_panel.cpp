@@ -133,7 +133,7 @@ DojoPanel::DojoPanel(render::AssetLibrary& assets, render::SceneRenderer& render
 }
 
 DojoContext DojoPanel::context() {
-    return {edits_, playback_, selection_, spots_, log_, audition_, file_.path()};
+    return {edits_, playback_, selection_, spots_, named_spots_, log_, audition_, file_.path()};
 }
 
 void DojoPanel::load() {
@@ -236,6 +236,8 @@ void DojoPanel::render(float width, float height, double dt) {
 
 void DojoPanel::begin_frame() {
     spots_ = {};
+    named_spots_.enabled = true;
+    named_spots_.clear();
     curve_view_.begin_frame();
     events_.begin_frame();
 }
@@ -300,6 +302,7 @@ DojoPanel::Status DojoPanel::status() const {
     st.undo_name = edits_.history().undo_name();
     st.message = edits_.message();
     st.spots = spots_;
+    st.named = named_spots_.all();
     st.transition = playback_.transition();
     st.blend_from = blend_grid_.from();
     st.blend_to = blend_grid_.to();

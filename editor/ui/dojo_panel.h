@@ -31,6 +31,7 @@
 #include <array>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -127,6 +128,7 @@ class DojoPanel {
         int auditioned = 0;                 // event sounds played as the playhead passed them
         int blend_from = -1, blend_to = -1; // the selected blend cell
         DojoSpots spots{};
+        std::map<std::string, Vec2> named;    // DojoContext::named, reported among the spots
         std::vector<std::string> blend_clips; // the blend grid's rows and columns, while it is shown
         std::vector<Vec2> blend_centres;      // its cells' centres, row-major ((0, 0): not drawn)
         std::vector<Vec2> curve_keys;         // the curve view's key handles, while it is shown
@@ -156,6 +158,7 @@ class DojoPanel {
     DojoEdits edits_;
     DojoSelection selection_;
     DojoSpots spots_{};
+    UiSpots named_spots_;
 
     DojoPreview preview_;
     DojoTimeline timeline_;

@@ -77,6 +77,7 @@ void DojoTimeline::timeline(const DojoContext& dojo, float width, const DojoEven
             const float x = p.x + static_cast<float>((offset + t) / length) * width;
             if (x > p.x + width + 1) break;
             const bool sel = !plan.transition && static_cast<int>(i) == dojo.selection.phase;
+            if (!plan.transition) dojo.named.set("marker:" + std::to_string(i + 1), Vec2(x, p.y + 9));
             draw->AddQuadFilled(ImVec2(x, p.y + 3), ImVec2(x + 5, p.y + 9), ImVec2(x, p.y + 15),
                                 ImVec2(x - 5, p.y + 9), sel ? IM_COL32(255, 210, 80, 255) : colour);
         }
