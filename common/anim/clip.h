@@ -63,6 +63,9 @@ struct ClipDef {
     UnlistedRule unlisted = UnlistedRule::Rest;
     std::vector<PhaseDef> phases;
     std::vector<ClipEvent> events; // sorted by time when compiled
+    // The frame rate the animator works at (frames per second, 1..1000): the dojo shows this clip in frames
+    // and puts the times it writes on that grid. Absent: seconds (the game ignores it either way).
+    std::optional<double> frame_rate;
 
     double duration() const;
 };

@@ -224,7 +224,7 @@ class Reader {
             file.clips.push_back(std::move(clip));
             return;
         }
-        known_keys(j, path, {"name", "loop", "next", "unlisted", "phases", "events"}, "clip");
+        known_keys(j, path, {"name", "loop", "next", "unlisted", "frame_rate", "phases", "events"}, "clip");
         if (!j.contains("name"))
             problem(path, "clip has no \"name\"");
         else
@@ -258,6 +258,8 @@ class Reader {
                     problem(path / "unlisted", "unknown rule " + quoted_name(rule), "one of rest, hold");
             }
         }
+        if (double fps = 0; j.contains("frame_rate") && number(j["frame_rate"], path / "frame_rate", fps))
+            clip.frame_rate = fps; // its range is validate()'s
         if (!j.contains("phases"))
             problem(path, "clip has no \"phases\"", "at least one {\"duration\": s, \"targets\": {...}}");
         else if (is_array(j["phases"], path / "phases", "phases"))

@@ -16,6 +16,8 @@ constexpr double kMaxDuration = 600.0; // seconds per phase
 constexpr double kMaxBlend = 10.0;     // seconds
 constexpr double kMaxAngle = 36000.0;  // degrees: 100 turns
 constexpr double kMaxOffset = 10000.0; // world units
+// A clip's frame rate (frames per second): film's 24 to high-speed 1000; 0 or a negative rate has no grid.
+constexpr double kMinFrameRate = 1.0, kMaxFrameRate = 1000.0;
 // Events per clip: a walk cycle's footsteps, a burst's shots. Each event acts (a muzzle_flash is a shot), so
 // thousands are a mistake, not a clip.
 constexpr std::size_t kMaxClipEvents = 64;
@@ -129,6 +131,7 @@ class Validator {
             else if (!seen.insert(c.name).second)
                 problem(cp / "name", "duplicate clip " + quoted_name(c.name), "clip names must be unique");
             check_loop(c, cp);
+            check_frame_rate(c, cp);
             if (c.phases.empty())
                 problem(cp / "phases", "clip " + quoted_name(c.name) + " has no phases",
                         "at least one phase");
@@ -201,6 +204,18 @@ class Validator {
             problem(cp / "next", "\"next\" is only used with \"loop\": \"next\"",
                     "remove it or set the loop mode");
         }
+    }
+
+    void check_frame_rate(const ClipDef& c, const JsonPath& cp) {
+        if (!c.frame_rate) return;
+        const double fps = *c.frame_rate;
+        if (std::isfinite(fps) && fps >= kMinFrameRate && fps <= kMaxFrameRate) return;
+        problem(cp / "frame_rate",
+                "frame rate " + jsonio::shortest_text(fps) + " of clip " + quoted_name(c.name) + " is " +
+                    (fps <= 0 ? "not positive" : "out of range"),
+                "frames per second in [" + jsonio::shortest_text(kMinFrameRate) + ", " +
+                    jsonio::shortest_text(kMaxFrameRate) +
+                    "], e.g. 24, 30 or 60; remove \"frame_rate\" to work in seconds");
     }
 
     void check_phase(const PhaseDef& ph, const JsonPath& pp) {

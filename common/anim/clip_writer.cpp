@@ -89,6 +89,7 @@ std::string save_animation_string(const AnimationFile& file) {
         if (!c.next.empty()) out += "      \"next\": " + jsonio::json_string(c.next) + ",\n";
         out += std::string("      \"unlisted\": \"") + (c.unlisted == UnlistedRule::Rest ? "rest" : "hold") +
                "\",\n";
+        if (c.frame_rate) out += "      \"frame_rate\": " + jsonio::shortest_text(*c.frame_rate) + ",\n";
         out += "      \"phases\": [";
         for (std::size_t pi = 0; pi < c.phases.size(); ++pi) {
             const PhaseDef& ph = c.phases[pi];

@@ -1,7 +1,9 @@
 #include "model/dojo_frames.h"
 
+#include "model/dojo_edit_support.h"
 #include "model/dojo_keys.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -24,6 +26,7 @@ std::string TimeUnits::text(double seconds) const {
 }
 
 double clip_frame_rate(const anim::ClipDef& def) {
+    if (def.frame_rate) return *def.frame_rate;
     std::vector<double> times;
     double end = 0;
     for (const anim::PhaseDef& phase : def.phases) times.push_back(end += phase.duration);
@@ -34,6 +37,30 @@ double clip_frame_rate(const anim::ClipDef& def) {
         if (fits) return fps;
     }
     return kDefaultFrameRate;
+}
+
+TimeUnits clip_time_units(const anim::ClipDef& def) {
+    return {def.frame_rate.has_value(), clip_frame_rate(def)};
+}
+
+Result<void> set_clip_frame_rate(anim::AnimationFile& file, std::size_t clip, std::optional<double> fps) {
+    if (auto found = dojo_support::clip_at(file, clip); !found) return found.error();
+    anim::AnimationFile edited = file;
+    edited.clips[clip].frame_rate = fps;
+    // The rate's limits are the file's (anim::validate): refused with its message and hint.
+    if (auto valid = dojo_support::no_new_clip_issues(file, edited, clip); !valid) return valid.error();
+    file = std::move(edited);
+    return ok();
+}
+
+double scrub_time(const anim::ClipDef& def, const TimeUnits& units, double seconds, double reach) {
+    double best = seconds, nearest = reach, end = 0;
+    for (const anim::PhaseDef& phase : def.phases) {
+        end += phase.duration;
+        if (const double d = std::abs(end - seconds); d <= nearest) nearest = d, best = end;
+    }
+    if (best == seconds && units.frames) best = units.snap(seconds);
+    return std::clamp(best, 0.0, def.duration());
 }
 
 std::optional<double> parse_time_text(std::string_view text, const TimeUnits& units) {

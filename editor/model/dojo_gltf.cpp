@@ -106,8 +106,9 @@ Value value_at(const std::vector<double>& times, const std::vector<Value>& value
 }
 
 // The key times of every mapped track, put on the frame grid of the common rate that fits the most of them
-// (so 1/60 s keys are exactly k/60), the others on a microsecond grid.
-std::vector<double> key_times(const std::vector<const modelio::NodeTrack*>& tracks) {
+// (so 1/60 s keys are exactly k/60), the others on a microsecond grid; `grid` is that rate when it holds
+// every time and one is past 0 s (the clip is then stored at that frame rate), else 0.
+std::vector<double> key_times(const std::vector<const modelio::NodeTrack*>& tracks, double& grid) {
     std::vector<double> times;
     for (const modelio::NodeTrack* t : tracks) {
         times.insert(times.end(), t->rotation_times.begin(), t->rotation_times.end());
@@ -121,6 +122,9 @@ std::vector<double> key_times(const std::vector<const modelio::NodeTrack*>& trac
         }));
         if (fit > best_fit) best_fit = fit, best_fps = fps;
     }
+    // A clip whose only key is at 0 s says nothing of its rate.
+    const bool timed = std::any_of(times.begin(), times.end(), [](double t) { return t > 0; });
+    grid = timed && best_fit == times.size() ? best_fps : 0.0;
     for (double& t : times) {
         const bool on_grid = best_fps > 0 && std::abs(t * best_fps - std::round(t * best_fps)) < 1e-3;
         t = on_grid ? std::round(t * best_fps) / best_fps : std::round(t * 1e6) / 1e6;
@@ -190,19 +194,21 @@ bool has_step_at(const std::vector<MappedTrack>& mapped, double t) {
 }
 
 // Phases through every key time: the first key at once (0 s), then a linear phase to each next key; a step
-// key adds a 0 s phase after the hold.
+// key adds a 0 s phase after the hold. On a frame grid (`grid`, see key_times) durations are whole frames.
 std::vector<anim::PhaseDef> phases_of(const anim::AnimationFile& file, const anim::Rig& rig,
-                                      std::vector<MappedTrack>& mapped) {
+                                      std::vector<MappedTrack>& mapped, double& grid) {
     std::vector<const modelio::NodeTrack*> tracks;
     for (const MappedTrack& m : mapped) tracks.push_back(m.track);
-    const std::vector<double> times = key_times(tracks);
+    const std::vector<double> times = key_times(tracks, grid);
     std::vector<anim::PhaseDef> phases;
     phases.push_back(phase_at(file, rig, mapped, 0.0, times.front(), true));
     double previous = 0;
     for (std::size_t k = 0; k < times.size(); ++k) {
         const double t = times[k];
         if (k == 0 && t <= 0) continue;
-        phases.push_back(phase_at(file, rig, mapped, rounded(t - previous, 1e-12), t, false));
+        const double duration =
+            grid > 0 ? std::round((t - previous) * grid) / grid : rounded(t - previous, 1e-12);
+        phases.push_back(phase_at(file, rig, mapped, duration, t, false));
         if (has_step_at(mapped, t)) phases.push_back(phase_at(file, rig, mapped, 0.0, t, true));
         previous = t;
     }
@@ -284,12 +290,15 @@ Result<GltfImportReport> import_clips_gltf(anim::AnimationFile& file, const anim
         anim::ClipDef clip;
         clip.name = clip_name_from(animation.name);
         clip.unlisted = anim::UnlistedRule::Hold;
-        clip.phases = phases_of(file, rig, mapped);
+        double grid = 0;
+        clip.phases = phases_of(file, rig, mapped, grid);
+        if (grid > 0) clip.frame_rate = grid; // shown in frames at the rate its keys were made at
         auto existing = std::find_if(result.clips.begin(), result.clips.end(),
                                      [&](const anim::ClipDef& c) { return c.name == clip.name; });
         if (existing != result.clips.end()) {
             existing->phases = std::move(clip.phases);
             existing->unlisted = clip.unlisted;
+            if (clip.frame_rate) existing->frame_rate = clip.frame_rate;
             report.replaced.push_back(clip.name);
         } else {
             result.clips.push_back(std::move(clip));

@@ -54,7 +54,14 @@ Result<void> move_times(anim::AnimationFile& file, std::size_t clip, std::span<c
                              ": that is before the clip's start",
                          {}, "move the keys later, or less far");
     }
-    for (std::size_t p = 1; p < moved.size(); ++p)
+    for (std::size_t p = 1; p < moved.size(); ++p) {
+        // A scale squeezed so far that two keys meet cannot be undone by scaling back: refused.
+        if (how.time_scale != 1.0 && moved[p] == moved[p - 1] && ends[p] != ends[p - 1])
+            return Error(key_name(p - 1) + " and " + key_name(p) + " would meet at " + units.text(moved[p]),
+                         {},
+                         "scale the times less" + std::string(units.frames ? " (in frames, keys stay whole "
+                                                                             "frames apart)"
+                                                                           : ""));
         if (moved[p] < moved[p - 1]) {
             const bool later_moved = changed[p];
             const std::size_t mover = later_moved ? p : p - 1, other = later_moved ? p - 1 : p;
@@ -62,6 +69,7 @@ Result<void> move_times(anim::AnimationFile& file, std::size_t clip, std::span<c
                              ": it would pass " + key_name(other) + " at " + units.text(moved[other]),
                          {}, "keys keep their order: select both to move them together");
         }
+    }
     for (std::size_t p = 0; p < moved.size(); ++p) {
         if (!changed[p] && !(p + 1 < moved.size() && changed[p + 1])) continue;
         const double start = p == 0 ? 0.0 : moved[p - 1];
@@ -231,6 +239,33 @@ DragLock decide_drag_lock(float dx, float dy, bool free) {
     if (std::hypot(dx, dy) < kDragDecidePixels) return DragLock::Undecided;
     if (free) return DragLock::Both;
     return std::abs(dy) >= std::abs(dx) ? DragLock::ValueOnly : DragLock::TimeOnly;
+}
+
+std::optional<GraphRange> selection_bounds(std::span<const GraphPoint> points,
+                                           std::span<const GraphKey> keys) {
+    std::optional<GraphRange> box;
+    for (const GraphPoint& p : points) {
+        if (std::find(keys.begin(), keys.end(), p.key) == keys.end()) continue;
+        if (!box) box = GraphRange{p.time, p.time, p.value, p.value};
+        box->t0 = std::min(box->t0, p.time), box->t1 = std::max(box->t1, p.time);
+        box->v0 = std::min(box->v0, p.value), box->v1 = std::max(box->v1, p.value);
+    }
+    return box;
+}
+
+GraphTransform scale_drag(const GraphRange& bounds, DragLock lock, float dx, float dy) {
+    const auto factor = [](float pixels) {
+        const double f =
+            std::round(std::exp2(static_cast<double>(pixels) / kScaleDragPixels) * 100.0) / 100.0;
+        return std::clamp(f, 0.01, 100.0);
+    };
+    GraphTransform how;
+    how.pivot_time = (bounds.t0 + bounds.t1) * 0.5;
+    how.pivot_value = (bounds.v0 + bounds.v1) * 0.5;
+    if (lock == DragLock::TimeOnly || lock == DragLock::Both) how.time_scale = factor(dx);
+    if (lock == DragLock::ValueOnly || lock == DragLock::Both)
+        how.value_scale = factor(-dy); // screen y is down
+    return how;
 }
 
 namespace {

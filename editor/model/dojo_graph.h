@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -68,8 +69,9 @@ struct GraphTransform {
 // Applies `how` to `keys` of clip `clip`: each distinct key time moves once (snapped by `units`: a whole
 // frame, or a microsecond), each key's value is set (a key the node lacks is added first, at the value it
 // has, so only the moved channel changes). Values land on the key table's grids (1e-3 degree, 1e-5 unit).
-// Refused, file unchanged, when a key time would pass an unselected one or go below 0, a value is not finite,
-// or the clip would get an issue it did not have (an event outside it, a zero-length loop).
+// Refused, file unchanged, when a key time would pass an unselected one or go below 0, a scale would put two
+// keys of different times on one time, a value is not finite, or the clip would get an issue it did not
+// have (an event outside it, a zero-length loop).
 Result<void> transform_graph_keys(anim::AnimationFile& file, std::size_t clip, std::span<const GraphKey> keys,
                                   const GraphTransform& how, const TimeUnits& units);
 
@@ -89,6 +91,19 @@ DragLock decide_drag_lock(float dx_pixels, float dy_pixels, bool free);
 struct GraphRange {
     double t0 = 0, t1 = 1, v0 = -1, v1 = 1;
 };
+
+// The box around the selected keys among `points` (times and values); nullopt when none of them is shown.
+std::optional<GraphRange> selection_bounds(std::span<const GraphPoint> points,
+                                           std::span<const GraphKey> keys);
+
+// Drag-to-scale (Alt+drag in the graph): the selected keys scaled about their pivot, the centre of their
+// box `bounds`, by 2^(travel / kScaleDragPixels) along the drag's lock: right stretches times, left
+// squeezes them (TimeOnly), up spreads values, down flattens them (ValueOnly), both with Both. Factors are
+// rounded to hundredths (readable in the undo name) and kept in [0.01, 100]. Give the result to
+// transform_graph_keys from the file as it was when the drag began: one undo step, unselected keys stay,
+// times on the frame grid in frames mode, and a squeeze that would merge two keys is refused.
+inline constexpr float kScaleDragPixels = 100.0f;
+GraphTransform scale_drag(const GraphRange& bounds, DragLock lock, float dx_pixels, float dy_pixels);
 // Everything: the clip's time and every curve's values with a margin, at least `least_height` high (20
 // degrees, 0.2 units: a flat curve is not blown up).
 GraphRange fit_graph(std::span<const ClipCurve> curves, double least_height);

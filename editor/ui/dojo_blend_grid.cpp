@@ -140,10 +140,16 @@ void DojoBlendGrid::cell(const DojoContext& dojo, std::size_t from, std::size_t 
                                            &kBlendMax, "%.2f", ImGuiSliderFlags_AlwaysClamp);
     ImGui::PopStyleColor(cell.source == BlendCell::Source::Default ? 5 : 4);
     ImGui::PopStyleVar();
-    if (const std::size_t n = file.clips.size(); centres_.size() == n * n && ImGui::IsItemVisible()) {
-        const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-        centres_[from * n + to] = Vec2((min.x + max.x) * 0.5f, (min.y + max.y) * 0.5f);
-    }
+    // Reported only when its centre is inside the grid's visible part (a row half under the table's edge
+    // would take a click meant for it on what is drawn there).
+    const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+    const ImVec2 centre((min.x + max.x) * 0.5f, (min.y + max.y) * 0.5f);
+    const ImDrawList* draw = ImGui::GetWindowDrawList();
+    const ImVec2 clip_lo = draw->GetClipRectMin(), clip_hi = draw->GetClipRectMax();
+    if (const std::size_t n = file.clips.size(); centres_.size() == n * n && ImGui::IsItemVisible() &&
+                                                 centre.y > clip_lo.y && centre.y < clip_hi.y &&
+                                                 centre.x > clip_lo.x && centre.x < clip_hi.x)
+        centres_[from * n + to] = Vec2(centre.x, centre.y);
     if (ImGui::IsItemActivated() && !selected) select(dojo, static_cast<int>(from), static_cast<int>(to));
     if (changed) {
         dojo.edits.begin_drag("blend " + from_name + " -> " + to_name);

@@ -121,7 +121,7 @@ void DojoClipList::list(const DojoContext& dojo) {
                 if (ImGui::IsItemHovered()) ImGui::SetTooltip("Required: %s", protection.c_str());
             }
             ImGui::TableNextColumn();
-            const TimeUnits units{dojo.selection.frames, clip_frame_rate(def)};
+            const TimeUnits units = clip_time_units(def);
             ImGui::TextUnformatted(units.text(def.duration()).c_str());
             ImGui::TableNextColumn();
             if (def.loop == anim::LoopMode::Next)
@@ -181,6 +181,7 @@ void DojoClipList::loop_row(const DojoContext& dojo) {
                 [&, mode = kModes[m]](anim::AnimationFile& f) { return set_loop_mode(f, clip, mode, next); });
             return; // `def` may have moved
         }
+        dojo.named.here(std::string("loop:") + kLabels[m]);
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kTips[m]);
     }
     if (def->loop != anim::LoopMode::Next) return;

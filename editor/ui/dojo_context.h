@@ -9,8 +9,10 @@
 #include "model/dojo_frames.h"
 #include "model/dojo_playback.h"
 #include "ui/sound_widgets.h"
+#include "ui/ui_spots.h"
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -40,6 +42,7 @@ enum class DojoSpot : std::uint8_t {
     QuitDiscard,
     KeyPose,
     AutoKey,
+    Ik,
     Count
 };
 const char* dojo_spot_name(DojoSpot spot);
@@ -53,7 +56,6 @@ struct DojoSelection {
     DojoPage page = DojoPage::Keys;
     std::string node; // the node posed in the preview and highlighted in the key table (empty: none)
     bool page_requested = false; // select `page`'s tab on the next frame
-    bool frames = false;         // times shown (and dragged keys snapped) in frames, not seconds
 
     void request_page(DojoPage wanted) { page = wanted, page_requested = true; }
 };
@@ -63,6 +65,9 @@ struct DojoContext {
     DojoPlayback& playback;
     DojoSelection& selection;
     DojoSpots& spots;
+    // Widgets a script or test clicks that come and go (a key's radio, a combo's entries, the timeline's
+    // diamonds): "key:2", "easing", "combo:Quadratic.InOut", "loop:next", "marker:3", "event_lane", ...
+    UiSpots& named;
     const DojoLogFn& log;
     const SoundAudition& audition; // may be unset: no Audition buttons, no event sounds
     const std::filesystem::path& clip_file;
@@ -72,10 +77,16 @@ struct DojoContext {
     std::size_t clip_index() const { return static_cast<std::size_t>(playback.clip()); }
     // The playhead within the shown clip's pass (0 in the transition test).
     double clip_time() const;
-    // Seconds, or frames at the shown clip's frame rate (the graph editor's toggle).
+    // Frames at the shown clip's stored frame rate, or seconds when it stores none (clip_time_units).
     TimeUnits time_units() const {
         const anim::ClipDef* def = shown_def();
-        return {selection.frames, def ? clip_frame_rate(*def) : kDefaultFrameRate};
+        return def ? clip_time_units(*def) : TimeUnits{};
+    }
+    // An event time as the dojo writes it: a whole frame in frames mode, else a whole millisecond (both
+    // read well in the file).
+    double event_time(double seconds) const {
+        const TimeUnits units = time_units();
+        return units.frames ? units.snap(seconds) : std::round(seconds * 1000.0) / 1000.0;
     }
     // Plays clip `index` from the start with its first key and no event selected.
     void show_clip(int index) const;

@@ -277,6 +277,7 @@ void DojoCurveView::plot(const DojoContext& dojo, Vec2 origin, Vec2 size) {
                 draw->AddLine(line[i], line[i + 1], colour, 2.0f);
     }
     draw_handles(draw, plot);
+    draw_scale_box(draw, plot);
     // The keys: filled where the node's key sets the channel, hollow where it does not (moving one keys it).
     for (const GraphPoint& point : points_) {
         const ImVec2 c(plot.x(point.time), plot.y(point.value));
@@ -354,6 +355,7 @@ void DojoCurveView::mouse(const DojoContext& dojo, const Plot& plot) {
         drag_.start = m;
         drag_.range = range_;
         drag_.lock = DragLock::Undecided;
+        drag_.label.clear();
         if (ImGui::IsMouseClicked(ImGuiMouseButton_Left))
             press(dojo, plot, m);
         else
@@ -366,6 +368,9 @@ void DojoCurveView::mouse(const DojoContext& dojo, const Plot& plot) {
             break;
         case Gesture::Handle:
             drag_handle(dojo, plot, m);
+            break;
+        case Gesture::Scale:
+            drag_scale(dojo, m);
             break;
         case Gesture::Pan: {
             const double dt =
@@ -392,10 +397,17 @@ void DojoCurveView::mouse(const DojoContext& dojo, const Plot& plot) {
     }
 }
 
-// A press: on a tangent handle, shape it; on a key, select it (Shift: toggle) and start moving the
-// selection; elsewhere, a box.
+// A press: with Alt, scale the selected keys; on a tangent handle, shape it; on a key, select it (Shift:
+// toggle) and start moving the selection; elsewhere, a box.
 void DojoCurveView::press(const DojoContext& dojo, const Plot& plot, Vec2 m) {
     const bool shift = ImGui::GetIO().KeyShift;
+    if (ImGui::GetIO().KeyAlt)
+        if (const auto box = selection_bounds(points_, selection_.keys())) { // Alt: scale the selection
+            drag_.gesture = Gesture::Scale;
+            drag_.bounds = *box;
+            drag_.origin = dojo.edits.file();
+            return;
+        }
     double t0 = 0, v0 = 0, t1 = 0, v1 = 0;
     anim::Ease ease;
     if (!shift && handle_segment(t0, v0, t1, v1, ease)) {
@@ -454,6 +466,43 @@ void DojoCurveView::drag_keys(const DojoContext& dojo, const Plot& plot, Vec2 m)
                                  : "move " + std::to_string(selection_.keys().size()) + " keys";
     dojo.edits.record_drag(drag_.origin, name);
     dojo.edits.replace(std::move(edited));
+}
+
+// One frame of scaling the selected keys (Alt+drag): from the file when the drag began, by the factor the
+// mouse's travel gives along the drag's direction (Ctrl: both axes).
+void DojoCurveView::drag_scale(const DojoContext& dojo, Vec2 m) {
+    const Vec2 d(m.x - drag_.start.x, m.y - drag_.start.y);
+    if (drag_.lock == DragLock::Undecided) drag_.lock = decide_drag_lock(d.x, d.y, ImGui::GetIO().KeyCtrl);
+    if (drag_.lock == DragLock::Undecided) return;
+    const GraphTransform how = scale_drag(drag_.bounds, drag_.lock, d.x, d.y);
+    anim::AnimationFile edited = drag_.origin;
+    auto scaled = transform_graph_keys(edited, dojo.clip_index(), selection_.keys(), how, dojo.time_units());
+    if (!scaled) return dojo.edits.show_message(scaled.error().message); // not logged frame after frame
+    char factors[48];
+    std::snprintf(factors, sizeof(factors), "time x%g  value x%g", how.time_scale, how.value_scale);
+    drag_.label = factors; // drawn by the box
+    dojo.edits.show_message({});
+    dojo.edits.record_drag(drag_.origin, "scale " + std::to_string(selection_.keys().size()) + " keys");
+    dojo.edits.replace(std::move(edited));
+}
+
+// While Alt is held over the graph (or a scale drag runs): the selected keys' box and its centre, the pivot.
+void DojoCurveView::draw_scale_box(ImDrawList* draw, const Plot& plot) const {
+    const bool scaling = drag_.gesture == Gesture::Scale;
+    if (!scaling && !(ImGui::GetIO().KeyAlt && ImGui::IsItemHovered())) return;
+    const auto box =
+        scaling ? std::optional<GraphRange>(drag_.bounds) : selection_bounds(points_, selection_.keys());
+    if (!box) return;
+    const ImU32 colour = IM_COL32(255, 225, 90, 150);
+    const ImVec2 lo(plot.x(box->t0) - 6.0f, plot.y(box->v1) - 6.0f),
+        hi(plot.x(box->t1) + 6.0f, plot.y(box->v0) + 6.0f);
+    draw->AddRect(lo, hi, colour, 0.0f, 0, 1.0f);
+    const ImVec2 pivot((lo.x + hi.x) * 0.5f, (lo.y + hi.y) * 0.5f);
+    draw->AddLine(ImVec2(pivot.x - 6, pivot.y), ImVec2(pivot.x + 6, pivot.y), colour, 1.5f);
+    draw->AddLine(ImVec2(pivot.x, pivot.y - 6), ImVec2(pivot.x, pivot.y + 6), colour, 1.5f);
+    if (scaling && !drag_.label.empty())
+        draw->AddText(ImVec2(lo.x, lo.y - ImGui::GetTextLineHeight() - 2.0f), IM_COL32(255, 225, 90, 255),
+                      drag_.label.c_str());
 }
 
 // One frame of shaping the selected key's easing by a tangent handle (from the file when the drag began).

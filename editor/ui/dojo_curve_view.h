@@ -3,7 +3,9 @@
 // rotation and position axes toggled in a channel list (x red, y green, z blue; positions lighter and
 // dashed), with fit (F), zoom (wheel; Shift: values only, Ctrl: time only) and pan (middle or right drag).
 // Keys are selected by click, Shift+click, a box dragged on empty space, or A (all); dragging selected keys
-// moves them, along the direction the drag starts in (Ctrl: both), the whole drag one undo step. The toolbar
+// moves them, along the direction the drag starts in (Ctrl: both), the whole drag one undo step; Alt+drag
+// anywhere on the graph scales them about their centre (right/left: times, up/down: values, Ctrl: both),
+// their box and pivot drawn while Alt is held. The toolbar
 // has numeric entry (a key's time and value; offsets and scale around the selection's centre for several),
 // seconds or frames, and the selected key's easing: presets, and tangent handles drawn on the segment for
 // the format's custom curves (Bezier control points, a power curve's point). The model is
@@ -48,6 +50,7 @@ class DojoCurveView {
     };
     void channel_list(const DojoContext& dojo, float height);
     void toolbar(const DojoContext& dojo);
+    void frame_rate(const DojoContext& dojo);
     void key_fields(const DojoContext& dojo);
     void ease_menu(const DojoContext& dojo);
     bool refresh(const DojoContext& dojo, int samples);
@@ -56,6 +59,8 @@ class DojoCurveView {
     void press(const DojoContext& dojo, const Plot& plot, Vec2 mouse);
     void drag_keys(const DojoContext& dojo, const Plot& plot, Vec2 mouse);
     void drag_handle(const DojoContext& dojo, const Plot& plot, Vec2 mouse);
+    void drag_scale(const DojoContext& dojo, Vec2 mouse);
+    void draw_scale_box(ImDrawList* draw, const Plot& plot) const;
     void draw_handles(ImDrawList* draw, const Plot& plot);
     void zoom_and_pan(const Plot& plot);
     void edit(const DojoContext& dojo, const std::string& name, const GraphTransform& how);
@@ -82,7 +87,7 @@ class DojoCurveView {
     GraphSelection selection_;
     std::optional<std::size_t> pending_key_;
 
-    enum class Gesture : std::uint8_t { None, Keys, Box, Handle, Pan };
+    enum class Gesture : std::uint8_t { None, Keys, Box, Handle, Pan, Scale };
     struct Drag {
         Gesture gesture = Gesture::None;
         Vec2 start{0};
@@ -91,6 +96,8 @@ class DojoCurveView {
         GraphKey pressed;           // the key the drag began on
         anim::AnimationFile origin; // the file when the drag began: each frame edits from it
         GraphRange range;           // the view when the drag began
+        GraphRange bounds;          // Scale: the selected keys' box when it began (its centre: the pivot)
+        std::string label;          // Scale: the factors now ("time x1.5  value x1")
     } drag_;
     // Numeric fields' text (typed, applied on Enter).
     char time_text_[32] = "", value_text_[32] = "", time_scale_[16] = "1", value_scale_[16] = "1";

@@ -18,9 +18,9 @@ const ImU32 kSelectedColour = IM_COL32(255, 210, 80, 255);
 constexpr const char* kCommonNames[] = {"muzzle_flash", "footstep", "sound_cue"};
 } // namespace
 
-void DojoEvents::open_add(double seconds) {
+void DojoEvents::open_add(const DojoContext& dojo, double seconds) {
     open_add_ = true;
-    add_time_ = std::round(seconds * 1000.0) / 1000.0; // whole milliseconds read well in the file
+    add_time_ = dojo.event_time(seconds);
     name_[0] = '\0';
     sound_.clear();
 }
@@ -68,15 +68,16 @@ void DojoEvents::lane(const DojoContext& dojo, Vec2 origin, float width, float h
     // The lane itself: double-click adds an event there, right-click offers to.
     ImGui::SetCursorScreenPos(p);
     ImGui::InvisibleButton("event lane", ImVec2(width, height));
-    ImGui::SetItemAllowOverlap(); // the flags drawn over it take the mouse first
+    dojo.named.here("event_lane"); // its centre: a script double-clicks at a time's x on it
+    ImGui::SetItemAllowOverlap();  // the flags drawn over it take the mouse first
     const float mouse_x = ImGui::GetIO().MousePos.x;
     if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left))
-        open_add(time_at(mouse_x));
+        open_add(dojo, time_at(mouse_x));
     if (ImGui::BeginPopupContextItem("lane menu")) {
         const double t = time_at(ImGui::GetMousePosOnOpeningCurrentPopup().x);
         char label[48];
         std::snprintf(label, sizeof(label), "Add event at %.2f s...", t);
-        if (ImGui::MenuItem(label)) open_add(t);
+        if (ImGui::MenuItem(label)) open_add(dojo, t);
         ImGui::EndPopup();
     }
     if (def->events.empty()) {
@@ -125,7 +126,7 @@ void DojoEvents::lane(const DojoContext& dojo, Vec2 origin, float width, float h
         if (!ImGui::IsMouseDown(ImGuiMouseButton_Left))
             drag_ = false;
         else if (ImGui::GetIO().MouseDelta.x != 0.0f)
-            drag_selected(dojo, std::round(time_at(mouse_x) * 1000.0) / 1000.0);
+            drag_selected(dojo, dojo.event_time(time_at(mouse_x)));
     }
 }
 
@@ -136,7 +137,7 @@ void DojoEvents::list(const DojoContext& dojo) {
     const auto clip = dojo.clip_index();
     char add_label[64];
     std::snprintf(add_label, sizeof(add_label), "Add event at the playhead (%.2f s)...", dojo.clip_time());
-    if (ImGui::Button(add_label)) open_add(dojo.clip_time());
+    if (ImGui::Button(add_label)) open_add(dojo, dojo.clip_time());
     dojo.mark(DojoSpot::AddEvent);
     ImGui::SameLine();
     ImGui::TextDisabled("or double-click the event lane");
@@ -169,7 +170,7 @@ void DojoEvents::list(const DojoContext& dojo) {
         if (ImGui::IsItemDeactivatedAfterEdit()) {
             editing_ = -1;
             dojo.edits.apply("move event " + event.name, [&](anim::AnimationFile& file) -> Result<void> {
-                auto moved = move_event(file, clip, i, seconds);
+                auto moved = move_event(file, clip, i, dojo.event_time(seconds));
                 if (!moved) return moved.error();
                 dojo.selection.event = static_cast<int>(*moved);
                 return ok();
@@ -231,15 +232,18 @@ void DojoEvents::popup(const DojoContext& dojo) {
     for (const char* common : kCommonNames) {
         ImGui::SameLine();
         if (ImGui::SmallButton(common)) std::snprintf(name_, sizeof(name_), "%s", common);
+        dojo.named.here(std::string("event.name:") + common);
     }
     ImGui::SetNextItemWidth(220);
-    sound_name_widget("sound", sound_, sound_names_);
+    sound_name_widget("sound", sound_, sound_names_, &dojo.named);
     ImGui::SameLine();
     ImGui::TextDisabled("sound (optional)");
     ImGui::Spacing();
     const bool named = name_[0] != '\0';
     ImGui::BeginDisabled(!named);
-    const bool add = ImGui::Button("Add", ImVec2(110, 0)) || (entered && named);
+    const bool add_clicked = ImGui::Button("Add", ImVec2(110, 0));
+    dojo.named.here("event.add");
+    const bool add = add_clicked || (entered && named);
     ImGui::EndDisabled();
     ImGui::SameLine();
     if (ImGui::Button("Cancel", ImVec2(110, 0))) ImGui::CloseCurrentPopup();
@@ -247,7 +251,7 @@ void DojoEvents::popup(const DojoContext& dojo) {
         ImGui::CloseCurrentPopup();
         const std::string name = name_;
         dojo.edits.apply("add event " + name, [&](anim::AnimationFile& file) -> Result<void> {
-            auto index = add_event(file, dojo.clip_index(), add_time_, name, sound_);
+            auto index = add_event(file, dojo.clip_index(), dojo.event_time(add_time_), name, sound_);
             if (!index) return index.error();
             dojo.selection.event = static_cast<int>(*index);
             return ok();

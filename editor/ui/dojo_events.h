@@ -22,7 +22,7 @@ class DojoEvents {
     const std::vector<Vec2>& flags() const { return flags_; } // status: the lane's flags this frame
 
   private:
-    void open_add(double seconds);
+    void open_add(const DojoContext& dojo, double seconds);
     void drag_selected(const DojoContext& dojo, double seconds);
 
     bool drag_ = false, drag_moved_ = false; // a flag on the lane held / moved since pressed

@@ -1,6 +1,6 @@
-// The graph editor's toolbar (dojo_curve_view.h): the channel list's toggle, fit, seconds or frames, the
-// selected keys' numeric entry (time and value; offsets and scale for several) and easing (presets, a custom
-// curve's numbers).
+// The graph editor's toolbar (dojo_curve_view.h): the channel list's toggle, fit, seconds or frames (the
+// clip's stored frame rate), the selected keys' numeric entry (time and value; offsets and scale for
+// several) and easing (presets, a custom curve's numbers).
 #include "jsonio/number_text.h"
 #include "ui/dojo_curve_view.h"
 
@@ -59,25 +59,54 @@ void DojoCurveView::toolbar(const DojoContext& dojo) {
     if (ImGui::SmallButton("All")) selection_.all(points_);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Select every shown key (A over the graph)");
     ImGui::SameLine();
-    const TimeUnits units = dojo.time_units();
-    char unit_label[32];
-    std::snprintf(unit_label, sizeof(unit_label), units.frames ? "frames (%g fps)" : "seconds", units.fps);
-    if (ImGui::SmallButton(unit_label)) dojo.selection.frames = !dojo.selection.frames;
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
-            "Times in seconds or frames (the clip's rate: the common rate its keys fit, else 30); "
-            "in frames, moved keys land on whole frames");
+    frame_rate(dojo);
     ImGui::SameLine();
     ease_menu(dojo);
     key_fields(dojo);
+}
+
+// Seconds or frames: the clip stores its frame rate (saved with it, so frames mode survives save and load);
+// each change is one undo step.
+void DojoCurveView::frame_rate(const DojoContext& dojo) {
+    const TimeUnits units = dojo.time_units();
+    const auto clip = dojo.clip_index();
+    const anim::ClipDef* def = dojo.shown_def();
+    auto set = [&](std::optional<double> fps) {
+        char name[48];
+        std::snprintf(name, sizeof(name), fps ? "frames at %g fps" : "times in seconds", fps.value_or(0.0));
+        dojo.edits.apply(name,
+                         [&](anim::AnimationFile& file) { return set_clip_frame_rate(file, clip, fps); });
+    };
+    if (ImGui::SmallButton(units.frames ? "frames" : "seconds"))
+        set(units.frames ? std::nullopt
+                         : std::optional<double>(def ? clip_frame_rate(*def) : kDefaultFrameRate));
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "Times in seconds or frames. In frames the clip keeps its frame rate (saved with it) and "
+            "moved keys and events land on whole frames");
+    if (!units.frames) return;
+    ImGui::SameLine();
+    char rate[48];
+    std::snprintf(rate, sizeof(rate), "%g fps", units.fps);
+    ImGui::SetNextItemWidth(ImGui::CalcTextSize("120 fps").x + ImGui::GetFrameHeight() * 1.5f);
+    if (ImGui::BeginCombo("##fps", rate)) {
+        for (const double fps : kFrameRates) {
+            std::snprintf(rate, sizeof(rate), "%g fps", fps);
+            if (ImGui::Selectable(rate, fps == units.fps) && fps != units.fps) set(fps);
+        }
+        ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "The clip's frame rate (keys stay where they are; one between frames shows a fraction)");
 }
 
 // The selected keys' numbers: one key's time and value; several keys' offsets and scale around their centre.
 void DojoCurveView::key_fields(const DojoContext& dojo) {
     const auto& keys = selection_.keys();
     if (keys.empty()) {
-        ImGui::TextDisabled(
-            "Click a key (Shift: add), drag a box, A: all. Drag moves (Ctrl: free), wheel zooms.");
+        ImGui::TextDisabled("Click a key (Shift: add), drag a box, A: all. Drag moves (Ctrl: free), Alt+drag "
+                            "scales, wheel zooms.");
         return;
     }
     const TimeUnits units = dojo.time_units();
@@ -126,11 +155,13 @@ void DojoCurveView::key_fields(const DojoContext& dojo) {
     }
     if (one) return;
     ImGui::SameLine();
-    const bool scale_time = field("x time", time_scale_, sizeof(time_scale_), 44.0f,
-                                  "Scale the keys' times around their centre (Enter)");
+    const bool scale_time =
+        field("x time", time_scale_, sizeof(time_scale_), 44.0f,
+              "Scale the keys' times around their centre (Enter; or Alt+drag sideways on the graph)");
     ImGui::SameLine();
-    const bool scale_value = field("x value", value_scale_, sizeof(value_scale_), 44.0f,
-                                   "Scale the keys' values around their centre (Enter)");
+    const bool scale_value =
+        field("x value", value_scale_, sizeof(value_scale_), 44.0f,
+              "Scale the keys' values around their centre (Enter; or Alt+drag up or down on the graph)");
     if (scale_time || scale_value) {
         const auto ts = parse_number(time_scale_), vs = parse_number(value_scale_);
         if (ts && vs) {

@@ -104,6 +104,7 @@ void DojoKeyTable::draw(const DojoContext& dojo) {
         std::snprintf(label, sizeof(label), "key %d", i + 1);
         if (i) ImGui::SameLine();
         if (ImGui::RadioButton(label, selected == i)) selected = i;
+        dojo.named.here("key:" + std::to_string(i + 1));
     }
     // The key buttons on the keys' row when it has room (one row more for the table below).
     const ImGuiStyle& style = ImGui::GetStyle();
@@ -151,11 +152,15 @@ bool DojoKeyTable::phase_timing(const DojoContext& dojo, anim::PhaseDef& phase) 
     ImGui::SetNextItemWidth(150);
     const std::string current = anim::ease_name(phase.ease);
     if (ImGui::BeginCombo("easing", current.empty() ? "custom" : current.c_str())) {
-        for (const auto& name : anim::known_ease_names())
+        for (const auto& name : anim::known_ease_names()) {
             if (ImGui::Selectable(name.c_str(), name == current))
                 if (auto e = anim::parse_ease_name(name))
                     dojo.edits.begin_drag("key easing"), phase.ease = *e, edited = true;
+            dojo.named.here("combo:" + name);
+        }
         ImGui::EndCombo();
+    } else {
+        dojo.named.here("easing");
     }
     ImGui::EndGroup();
     ImGui::SameLine();

@@ -19,9 +19,9 @@ namespace ks::editor::ui {
 namespace {
 constexpr const char* kPageNames[] = {"keys", "curves", "blends", "events"};
 constexpr const char* kSpotNames[] = {
-    "add_key",     "duplicate_key", "new_clip",     "clip_name", "clip_ok", "page_keys",
-    "page_curves", "page_blends",   "page_events",  "save",      "reload",  "reload_notice",
-    "add_event",   "quit_cancel",   "quit_discard", "key_pose",  "auto_key"};
+    "add_key",     "duplicate_key", "new_clip",     "clip_name", "clip_ok",  "page_keys",
+    "page_curves", "page_blends",   "page_events",  "save",      "reload",   "reload_notice",
+    "add_event",   "quit_cancel",   "quit_discard", "key_pose",  "auto_key", "ik"};
 static_assert(std::size(kSpotNames) == static_cast<size_t>(DojoSpot::Count));
 
 Result<bool> parse_flag(const std::string& key, const std::string& value) {
@@ -133,7 +133,7 @@ DojoPanel::DojoPanel(render::AssetLibrary& assets, render::SceneRenderer& render
 }
 
 DojoContext DojoPanel::context() {
-    return {edits_, playback_, selection_, spots_, log_, audition_, file_.path()};
+    return {edits_, playback_, selection_, spots_, named_spots_, log_, audition_, file_.path()};
 }
 
 void DojoPanel::load() {
@@ -236,6 +236,8 @@ void DojoPanel::render(float width, float height, double dt) {
 
 void DojoPanel::begin_frame() {
     spots_ = {};
+    named_spots_.enabled = true;
+    named_spots_.clear();
     curve_view_.begin_frame();
     events_.begin_frame();
 }
@@ -300,6 +302,7 @@ DojoPanel::Status DojoPanel::status() const {
     st.undo_name = edits_.history().undo_name();
     st.message = edits_.message();
     st.spots = spots_;
+    st.named = named_spots_.all();
     st.transition = playback_.transition();
     st.blend_from = blend_grid_.from();
     st.blend_to = blend_grid_.to();
@@ -309,6 +312,7 @@ DojoPanel::Status DojoPanel::status() const {
         st.blend_centres = blend_grid_.centres();
     }
     if (selection_.page == DojoPage::Curves) st.curve_keys = curve_view_.handles();
+    st.curve_selected = curve_view_.selection().keys().size();
     st.event_flags = events_.flags();
     st.dirty = edits_.dirty();
     st.changed_on_disk = file_.changed_on_disk();
@@ -329,6 +333,7 @@ void DojoPanel::pose_status(Status& st) const {
     st.node = selection_.node;
     st.pose_edits = tools.edits().edits().size();
     st.auto_key = tools.settings().auto_key;
+    st.ik = tools.settings().ik;
     const anim::Rig& rig = playback_.rig();
     for (int i = 0; i < rig.size() && i < static_cast<int>(tools.joints().size()); ++i)
         st.joints.emplace_back(rig.node(i).name, tools.joints()[static_cast<std::size_t>(i)]);

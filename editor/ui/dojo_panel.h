@@ -31,6 +31,7 @@
 #include <array>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -127,13 +128,16 @@ class DojoPanel {
         int auditioned = 0;                 // event sounds played as the playhead passed them
         int blend_from = -1, blend_to = -1; // the selected blend cell
         DojoSpots spots{};
+        std::map<std::string, Vec2> named;    // DojoContext::named, reported among the spots
         std::vector<std::string> blend_clips; // the blend grid's rows and columns, while it is shown
         std::vector<Vec2> blend_centres;      // its cells' centres, row-major ((0, 0): not drawn)
         std::vector<Vec2> curve_keys;         // the curve view's key handles, while it is shown
+        std::size_t curve_selected = 0;       // how many of its keys are selected
         std::vector<Vec2> event_flags;        // the event lane's flags (the event's time on the lane)
         std::string node;                     // the node selected in the preview
         std::size_t pose_edits = 0;           // nodes turned and not keyed yet
         bool auto_key = false;
+        bool ik = false;
         std::vector<std::pair<std::string, Vec2>> joints; // the rig's joints on screen
         std::array<Vec2, 3> rings{};                      // a point on each gizmo ring ((0, 0): none)
     };
@@ -154,6 +158,7 @@ class DojoPanel {
     DojoEdits edits_;
     DojoSelection selection_;
     DojoSpots spots_{};
+    UiSpots named_spots_;
 
     DojoPreview preview_;
     DojoTimeline timeline_;

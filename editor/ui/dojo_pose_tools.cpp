@@ -157,6 +157,7 @@ void DojoPoseTools::bar(const DojoContext& dojo) {
         set.snap_degrees = kSteps[step];
     ImGui::SameLine();
     ImGui::Checkbox("IK", &set.ik);
+    dojo.mark(DojoSpot::Ik);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Drag the selected joint (a hand) and its parent and grandparent follow; the elbow "
                           "keeps its side");

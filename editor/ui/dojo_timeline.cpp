@@ -45,10 +45,14 @@ void DojoTimeline::timeline(const DojoContext& dojo, float width, const DojoEven
     const ImVec2 p = ImGui::GetCursorScreenPos();
     const float h = 34.0f;
     ImGui::InvisibleButton("timeline", ImVec2(width, h));
-    if (ImGui::IsItemActive()) { // scrub
+    if (ImGui::IsItemActive()) { // scrub: onto a key marker within 6 pixels, else whole frames in frames mode
         const float u = std::clamp((ImGui::GetIO().MousePos.x - p.x) / width, 0.0f, 1.0f);
         playback.set_playing(false);
-        playback.restart_at(u * length);
+        const anim::ClipDef* def = dojo.shown_def();
+        const double t = u * length;
+        playback.restart_at(def && !plan.transition && t <= def->duration() + 1e-9
+                                ? scrub_time(*def, dojo.time_units(), t, 6.0 * length / width)
+                                : t);
     }
     draw->AddRectFilled(p, ImVec2(p.x + width, p.y + h), IM_COL32(28, 31, 38, 255), 4.0f);
     for (int s = 0; s <= static_cast<int>(length * 10); ++s) { // ticks every 0.1 s, labels every second
@@ -73,6 +77,7 @@ void DojoTimeline::timeline(const DojoContext& dojo, float width, const DojoEven
             const float x = p.x + static_cast<float>((offset + t) / length) * width;
             if (x > p.x + width + 1) break;
             const bool sel = !plan.transition && static_cast<int>(i) == dojo.selection.phase;
+            if (!plan.transition) dojo.named.set("marker:" + std::to_string(i + 1), Vec2(x, p.y + 9));
             draw->AddQuadFilled(ImVec2(x, p.y + 3), ImVec2(x + 5, p.y + 9), ImVec2(x, p.y + 15),
                                 ImVec2(x - 5, p.y + 9), sel ? IM_COL32(255, 210, 80, 255) : colour);
         }

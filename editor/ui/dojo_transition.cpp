@@ -14,6 +14,7 @@ void dojo_transition_tester(const DojoContext& dojo) {
     int from = plan.from, to = plan.to;
     float switch_at = static_cast<float>(plan.switch_at), blend = plan.blend;
     const bool toggled = ImGui::Checkbox("Transition test", &on);
+    dojo.named.here("transition_test");
     if (toggled) {
         playback.set_transition(on, from, to, plan.switch_at, blend);
         playback.restart_at(0.0);

@@ -128,8 +128,11 @@ void Outliner::entity_row(const PanelContext& ctx, int index) {
     if (hidden) colour.w = 0.45f;
     ImGui::PushStyleColor(ImGuiCol_Text, colour);
     const float badge_w = (errors || warnings) ? 22.0f : 0.0f;
-    if (ImGui::Selectable(row, doc.is_selected(e.id), ImGuiSelectableFlags_AllowDoubleClick,
-                          ImVec2(ImGui::GetContentRegionAvail().x - badge_w, 0))) {
+    const bool row_clicked =
+        ImGui::Selectable(row, doc.is_selected(e.id), ImGuiSelectableFlags_AllowDoubleClick,
+                          ImVec2(ImGui::GetContentRegionAvail().x - badge_w, 0));
+    ctx.spots.here("outliner.entity:" + std::to_string(e.id));
+    if (row_clicked) {
         // A row is the entity itself, wherever its group is: the group it is in is entered.
         const int parent = parent_group_of_entity(doc.level.editor, e.id);
         if (parent != 0 && parent != ctx.editor.open_group())

@@ -1,6 +1,7 @@
 #include "ui/sound_widgets.h"
 
 #include "model/sound_names.h"
+#include "ui/ui_spots.h"
 
 #include <imgui.h>
 
@@ -9,7 +10,7 @@
 
 namespace ks::editor::ui {
 
-bool sound_name_widget(const char* id, std::string& name, std::vector<std::string>& known) {
+bool sound_name_widget(const char* id, std::string& name, std::vector<std::string>& known, UiSpots* spots) {
     ImGui::PushID(id);
     const float arrow = ImGui::GetFrameHeight();
     const float spacing = ImGui::GetStyle().ItemInnerSpacing.x;
@@ -23,9 +24,13 @@ bool sound_name_widget(const char* id, std::string& name, std::vector<std::strin
     if (ImGui::BeginCombo("##list", nullptr, ImGuiComboFlags_NoPreview | ImGuiComboFlags_PopupAlignLeft)) {
         if (ImGui::IsWindowAppearing()) known = shipped_sound_names();
         if (known.empty()) ImGui::TextDisabled("no .wav files in assets/sounds");
-        for (const std::string& option : known)
+        for (const std::string& option : known) {
             if (ImGui::Selectable(option.c_str(), option == name)) name = option, changed = true;
+            if (spots) spots->here("combo:" + option);
+        }
         ImGui::EndCombo();
+    } else if (spots) {
+        spots->here("sound_list");
     }
     ImGui::PopID();
     return changed;

@@ -30,6 +30,7 @@ nlohmann::json dojo_status(const DojoPanel& dojo) {
     nlohmann::json spots = nlohmann::json::object();
     for (size_t i = 0; i < d.spots.size(); ++i)
         if (d.spots[i] != Vec2(0.0f)) spots[dojo_spot_name(static_cast<DojoSpot>(i))] = point(d.spots[i]);
+    for (const auto& [name, at] : d.named) spots[name] = point(at);
     nlohmann::json cells = nlohmann::json::object(); // "from>to": centre, while the Blends page is shown
     const size_t n = d.blend_clips.size();
     if (d.blend_centres.size() == n * n)
@@ -68,11 +69,13 @@ nlohmann::json dojo_status(const DojoPanel& dojo) {
             {"spots", spots},
             {"blend_cells", cells},
             {"curve_keys", curve_keys},
+            {"curve_selected", d.curve_selected},
             {"event_flags", event_flags},
             {"pose",
              {{"node", d.node},
               {"edits", d.pose_edits},
               {"auto_key", d.auto_key},
+              {"ik", d.ik},
               {"joints", joints},
               {"rings", rings}}},
             // Kept from before the spots map (older tests read them).

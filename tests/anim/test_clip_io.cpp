@@ -6,6 +6,7 @@
 #include "jsonio/bad_documents.h"
 #include "test_support.h"
 
+#include <cmath>
 #include <doctest/doctest.h>
 #include <string>
 #include <vector>
@@ -62,6 +63,8 @@ TEST_CASE("load -> save -> load -> save is byte-identical for every feature of t
     three.name = "three";
     three.loop = LoopMode::PingPong;
     three.phases.push_back(PhaseDef{0.25, Ease::linear(), {}});
+    three.frame_rate = 24;
+    two.frame_rate = 30000.0 / 1001.0; // NTSC's 29.97: shortest round trip, not "29.97"
     f.clips = {one, two, three};
     f.clips[0].next = two.name;
     f.blends[1].to = two.name;
@@ -79,6 +82,10 @@ TEST_CASE("load -> save -> load -> save is byte-identical for every feature of t
     CHECK(reloaded->clips[1].events == f.clips[1].events);
     CHECK(reloaded->clips[0].events.empty());
     CHECK(reloaded->clips[2].loop == LoopMode::PingPong);
+    CHECK(reloaded->clips[2].frame_rate == 24.0);
+    CHECK(reloaded->clips[1].frame_rate == 30000.0 / 1001.0);
+    CHECK_FALSE(reloaded->clips[0].frame_rate); // none stored: seconds
+    CHECK(first.find("\"frame_rate\": 24,") != std::string::npos);
     CHECK_FALSE(reloaded->wrap_captured_angles);
     REQUIRE(reloaded->node_ease.size() == 2);
     CHECK(reloaded->node_ease[1].ease == Ease::power(1.5f, EaseMode::Out));
@@ -171,6 +178,16 @@ TEST_CASE("malformed clip files give clear errors: file, line:column, JSON path,
           "event 'muzzle_flash' is listed twice at 0.25 s in clip 'nod' (also events[0])", "two shots"}},
         {"too_many_events.json",
          {"too_many_events.json:17:17", "clips[0].events", "clip 'nod' has 65 events; at most 64"}},
+        {"frame_rate_zero.json",
+         {"frame_rate_zero.json:14:21", "clips[0].frame_rate", "frame rate 0 of clip 'nod' is not positive",
+          "frames per second in [1, 1000], e.g. 24, 30 or 60", "remove \"frame_rate\" to work in seconds"}},
+        {"frame_rate_negative.json",
+         {"frame_rate_negative.json:14:21", "frame rate -24 of clip 'nod' is not positive"}},
+        {"frame_rate_absurd.json",
+         {"frame_rate_absurd.json:14:21", "frame rate 1e+09 of clip 'nod' is out of range",
+          "[1, 1000]"}},
+        {"frame_rate_string.json",
+         {"frame_rate_string.json:14:21", "clips[0].frame_rate", "must be a number, not a string"}},
         {"many_problems.json",
          {"3 problems", "duration -1 s is negative", "unknown easing 'Springy.Out'", "unknown node 'neck'"}},
     };
@@ -236,4 +253,13 @@ TEST_CASE("validate() reports problems of an in-memory file with JSON paths (the
     CHECK(issues[1].path.str() == "clips[1].phases[0].duration");
     CHECK(issues[2].path.str() == "clips[2].phases[0].targets.tail");
     CHECK(issues[2].hint.find("arm_r") != std::string::npos);
+    // A frame rate that is not a number (only an in-memory file can hold NaN) is refused at its place.
+    f = ks::anim::test::robot_library().file;
+    f.clips[0].frame_rate = std::nan("");
+    issues = validate(f);
+    REQUIRE(issues.size() == 1);
+    CHECK(issues[0].path.str() == "clips[0].frame_rate");
+    CHECK(issues[0].message.find("out of range") != std::string::npos);
+    f.clips[0].frame_rate = 60;
+    CHECK(validate(f).empty());
 }

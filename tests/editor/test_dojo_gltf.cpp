@@ -91,6 +91,12 @@ TEST_CASE("dojo glTF: every shipped clip exported and imported back holds its po
         const anim::Clip& after = b->clips[c];
         INFO(before.name);
         CHECK(after.duration == doctest::Approx(before.duration).epsilon(1e-9));
+        // Every key on the 60 Hz grid: stored at 60 fps, each duration a whole number of frames (a clip of
+        // zero length, reset, has no rate to find).
+        CHECK(imported.clips[c].frame_rate ==
+              (before.duration > 0 ? std::optional<double>(60.0) : std::nullopt));
+        for (const anim::PhaseDef& phase : imported.clips[c].phases)
+            CHECK(phase.duration * 60.0 == std::round(phase.duration * 60.0));
         const PoseDifference at_frames =
             compare(before, after, rig, times_at(before.duration, editor::kGltfExportFps));
         CHECK(at_frames.angle < 1e-5);
