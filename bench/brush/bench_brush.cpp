@@ -6,6 +6,7 @@
 // distance from the grid, texture coordinate drift. Writes docs/bench/brush_ops.csv; --quick runs fewer
 // brushes and leaves it alone.
 #include "bench_registry.h"
+#include "brush/brush_error.h"
 #include "physics/bench_util.h"
 
 #include "brush/brush_build.h"
@@ -58,21 +59,6 @@ std::optional<Brush> random_brush(Rng& rng, const DVec3& centre) {
     auto snapped = snap_to_grid(*turned, kGrid);
     if (!snapped) return std::nullopt;
     return std::move(*snapped);
-}
-
-// The largest distance of a vertex from the plane of a face it belongs to, evaluated in long double.
-double off_plane(const Brush& b) {
-    long double worst = 0;
-    for (std::size_t f = 0; f < b.faces().size(); ++f) {
-        const Plane& p = b.faces()[f].plane;
-        for (int v : b.polygons()[f]) {
-            const DVec3& x = b.vertices()[v];
-            const long double d = (long double)p.normal.x * x.x + (long double)p.normal.y * x.y +
-                                  (long double)p.normal.z * x.z - (long double)p.distance;
-            worst = std::max(worst, d < 0 ? -d : d);
-        }
-    }
-    return static_cast<double>(worst);
 }
 
 double grid_distance(const Brush& b) {

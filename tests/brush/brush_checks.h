@@ -2,6 +2,7 @@
 // An independent audit of a brush for the tests: recomputes from its derived vertices and polygons, without
 // the module's derivation, whether it is a closed convex polyhedron on its own planes.
 #include "brush/brush.h"
+#include "core/random.h"
 
 #include <doctest/doctest.h>
 
@@ -42,6 +43,16 @@ inline std::string audit(const Brush& b, double tolerance = 1e-7) {
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return "non-finite vertex";
     if (!(polyhedron_volume(v, polys) > 0)) return "no volume";
     return {};
+}
+
+// A random unit vector (rejection sampling in the unit ball, away from its centre).
+inline DVec3 random_unit(Rng& rng) {
+    for (;;) {
+        const DVec3 v(rng.uniform_double() * 2 - 1, rng.uniform_double() * 2 - 1,
+                      rng.uniform_double() * 2 - 1);
+        const double l = glm::length(v);
+        if (l > 0.1 && l <= 1.0) return v / l;
+    }
 }
 
 inline double grid_distance(const Brush& b, double grid) {

@@ -2,6 +2,7 @@
 // rigid motion instead of derived again must give what deriving gives — the same faces bit for bit (planes,
 // anchor, locked texture attributes), the same topology, vertices within a few ulps of the world coordinate
 // — for random hulls, slivers, near-parallel faces, tiny turns, quarter turns and placements far out.
+#include "bench/brush/brush_error.h"
 #include "brush/brush_build.h"
 #include "brush/texture_mapping.h"
 #include "brush_checks.h"
@@ -16,17 +17,10 @@
 
 using namespace ks;
 using namespace ks::brush;
+using ks::brush::bench::off_plane;
+using ks::brush_test::random_unit;
 
 namespace placed_test {
-
-DVec3 random_unit(Rng& rng) {
-    for (;;) {
-        const DVec3 v(rng.uniform_double() * 2 - 1, rng.uniform_double() * 2 - 1,
-                      rng.uniform_double() * 2 - 1);
-        const double l = glm::length(v);
-        if (l > 0.1 && l <= 1.0) return v / l;
-    }
-}
 
 // The farthest vertex of `a` from its nearest vertex in `b`, relative to the coordinates' size (at least 1).
 double relative_vertex_distance(const Brush& a, const Brush& b) {
@@ -38,21 +32,6 @@ double relative_vertex_distance(const Brush& a, const Brush& b) {
         worst = std::max(worst, nearest / size);
     }
     return worst;
-}
-
-// The largest distance of a vertex from the plane of a face it belongs to, in long double.
-double off_plane(const Brush& b) {
-    long double worst = 0;
-    for (std::size_t f = 0; f < b.faces().size(); ++f) {
-        const Plane& p = b.faces()[f].plane;
-        for (int v : b.polygons()[f]) {
-            const DVec3& x = b.vertices()[v];
-            const long double d = (long double)p.normal.x * x.x + (long double)p.normal.y * x.y +
-                                  (long double)p.normal.z * x.z - (long double)p.distance;
-            worst = std::max(worst, d < 0 ? -d : d);
-        }
-    }
-    return static_cast<double>(worst);
 }
 
 struct Comparison {

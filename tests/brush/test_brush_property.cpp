@@ -22,6 +22,7 @@ using namespace ks;
 using namespace ks::brush;
 using ks::brush_test::audit;
 using ks::brush_test::grid_distance;
+using ks::brush_test::random_unit;
 
 namespace {
 
@@ -34,15 +35,6 @@ struct Tally {
     double worst_grid = 0, worst_volume = 0, worst_round_trip = 0;
     std::array<int, 3> accepted_by_kind{};
 };
-
-DVec3 random_unit(Rng& rng) {
-    for (;;) {
-        const DVec3 v(rng.uniform_double() * 2 - 1, rng.uniform_double() * 2 - 1,
-                      rng.uniform_double() * 2 - 1);
-        const double l = glm::length(v);
-        if (l > 0.1 && l <= 1.0) return v / l;
-    }
-}
 
 double grid_value(Rng& rng, int lo, int hi) {
     return kGrid * (lo + static_cast<int>(rng.below(static_cast<std::uint32_t>(hi - lo + 1))));
