@@ -44,7 +44,7 @@ WORK=$(cd "$WORK" && pwd)
 STATUS=$WORK/status.json
 PIDS=()
 cleanup() {
-    [ -s "$WORK/game.pid" ] && kill "$(cat "$WORK/game.pid")" 2>/dev/null
+    if [ -s "$WORK/game.pid" ]; then kill "$(cat "$WORK/game.pid")" 2>/dev/null || true; fi
     for pid in "${PIDS[@]}"; do kill "$pid" 2>/dev/null || true; done
 }
 trap cleanup EXIT
