@@ -1,9 +1,14 @@
 // libFuzzer target: convex brushes from arbitrary planes (near-parallel, near-duplicate, far from the origin,
 // unbounded sets) and CSG on pairs of them. Beyond "no sanitizer report": a refused brush says why, a made
 // brush is a closed convex polyhedron on its own planes, and subtract/intersect/merge keep volume as they
-// must (A = fragments + A n B; A n B no larger than either; the convex union no smaller than either).
+// must (A = fragments + A n B; A n B no larger than either; the convex union no smaller than either); a
+// brush placed in the world by carrying its geometry (brush::placed, as a level places its brush entities)
+// has exactly the faces that deriving again gives (transformed), is valid wherever that is, and is valid.
 #include "brush/brush_csg.h"
+#include "brush/texture_mapping.h"
 #include "fuzz_oracle.h"
+
+#include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -109,6 +114,25 @@ void check_csg(const Brush& a, const Brush& b) {
     }
 }
 
+// A level's placement: a turn of whole degrees about the three axes and a move in 1/8 units.
+void check_placement(const Brush& a, Bytes& bytes) {
+    const DVec3 degrees(bytes.next_short() % 360, bytes.next_short() % 360, bytes.next_short() % 360);
+    const glm::dmat3 turn = glm::mat3_cast(glm::dquat(glm::radians(degrees)));
+    const DVec3 move(bytes.next_short() / 8.0, bytes.next_short() / 8.0, bytes.next_short() / 8.0);
+    auto derived = ks::brush::transformed(a, turn, move, ks::brush::TextureLock::on);
+    auto carried = ks::brush::placed(a, turn, move);
+    (void)made(derived);
+    if (!made(carried)) {
+        if (derived.ok()) ks::fuzz::fail("placed refused a placement that deriving again made");
+        return;
+    }
+    audit(*carried, "placed: not a valid brush");
+    if (derived.ok() &&
+        (!(*carried == *derived) || carried->vertices().size() != derived->vertices().size() ||
+         carried->edges().size() != derived->edges().size()))
+        ks::fuzz::fail("placed and transformed differ in faces or topology");
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -131,5 +155,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (made(a)) audit(*a, "from_faces (drop): not a valid brush");
     if (made(b)) audit(*b, "from_faces (drop): not a valid brush");
     if (a.ok() && b.ok()) check_csg(*a, *b);
+    if (a.ok()) check_placement(*a, bytes);
     return 0;
 }

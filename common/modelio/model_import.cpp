@@ -1,6 +1,7 @@
 #include "modelio/model_import.h"
 
 #include "modelio/embedded_textures.h"
+#include "modelio/glb_container.h"
 #include "modelio/scene_conventions.h"
 
 #include <assimp/DefaultLogger.hpp>
@@ -168,6 +169,8 @@ bool has_supported_extension(const std::filesystem::path& path) {
 
 Result<ImportedModel> import_model(const std::filesystem::path& path, const ImportLimits& limits) {
     if (Result<void> file = check_file(path, limits); !file) return file.error();
+    if (lower(path.extension().string()) == ".glb")
+        if (Result<void> container = check_glb_container(path); !container) return container.error();
     Assimp::Importer importer;
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
     // Read first, count, then post-process: a file with millions of faces is refused before any work on them.
