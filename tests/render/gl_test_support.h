@@ -7,6 +7,11 @@
 #include <string>
 #include <vector>
 
+// The first line of every GL test case: without a display the case stops here with this message.
+#define KS_REQUIRE_GL()                                                                                      \
+    REQUIRE_MESSAGE(ks::test::gl_context(),                                                                  \
+                    "no display: run the GL tests under xvfb-run (./run.sh test does)")
+
 namespace ks::test {
 
 // The shared offscreen context of the given size (created on first use; null without a display, in which

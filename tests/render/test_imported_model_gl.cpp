@@ -14,9 +14,6 @@ using namespace ks;
 using namespace ks::render;
 
 #ifndef KS_REQUIRE_GL
-#define KS_REQUIRE_GL()                                                                                      \
-    REQUIRE_MESSAGE(ks::test::gl_context(),                                                                  \
-                    "no display: run the GL tests under xvfb-run (./run.sh test does)")
 #endif
 
 namespace {

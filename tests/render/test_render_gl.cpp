@@ -29,10 +29,6 @@ using namespace ks::render;
 namespace fs = std::filesystem;
 using ks::test::render_offscreen;
 
-#define KS_REQUIRE_GL()                                                                                      \
-    REQUIRE_MESSAGE(ks::test::gl_context(),                                                                  \
-                    "no display: run the GL tests under xvfb-run (./run.sh test does)")
-
 namespace {
 fs::path assets_dir() {
     return ks::test::source_dir() / "assets";

@@ -17,10 +17,6 @@ using namespace ks;
 using namespace ks::render;
 namespace fs = std::filesystem;
 
-#define KS_REQUIRE_GL()                                                                                      \
-    REQUIRE_MESSAGE(ks::test::gl_context(),                                                                  \
-                    "no display: run the GL tests under xvfb-run (./run.sh test does)")
-
 namespace {
 fs::path texture_file(const std::string& name) {
     return test::source_dir() / "assets" / "textures" / name;
