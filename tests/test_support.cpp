@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <sys/wait.h>
@@ -60,6 +61,16 @@ ScratchDir::~ScratchDir() {
     std::error_code ec;
     fs::permissions(path_, fs::perms::owner_all, fs::perm_options::add, ec);
     fs::remove_all(path_, ec);
+}
+
+ScratchDataHome::ScratchDataHome() {
+    if (const char* old = std::getenv("XDG_DATA_HOME")) old_ = old, had_ = true;
+    setenv("XDG_DATA_HOME", dir_.path().c_str(), 1);
+    fs::create_directories(models());
+}
+
+ScratchDataHome::~ScratchDataHome() {
+    had_ ? setenv("XDG_DATA_HOME", old_.c_str(), 1) : unsetenv("XDG_DATA_HOME");
 }
 
 CommandResult run_command(const std::string& command_line) {

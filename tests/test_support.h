@@ -35,6 +35,23 @@ class ScratchDir {
     std::filesystem::path path_;
 };
 
+// XDG_DATA_HOME pointed at a fresh folder for the object's life, so the user's models folder
+// (`models()`, created) is the test's own; the old value is put back.
+class ScratchDataHome {
+  public:
+    ScratchDataHome();
+    ~ScratchDataHome();
+    ScratchDataHome(const ScratchDataHome&) = delete;
+    ScratchDataHome& operator=(const ScratchDataHome&) = delete;
+    const std::filesystem::path& path() const { return dir_.path(); }
+    std::filesystem::path models() const { return dir_ / "killswitch/models"; }
+
+  private:
+    ScratchDir dir_;
+    std::string old_;
+    bool had_ = false;
+};
+
 struct CommandResult {
     int exit_code = -1;
     std::string output; // stdout and stderr together

@@ -49,8 +49,8 @@ std::optional<BrushBody> model_body(const level::Entity& e) {
         return BrushBody{body->shape, body->transform};
     }
     auto brush = level::model_collision(e);
-    if (!brush || !brush->has_value()) return std::nullopt;
-    return brush_body(**brush);
+    if (!brush || brush->size() != 1) return std::nullopt;
+    return brush_body(brush->front());
 }
 
 struct Measured {

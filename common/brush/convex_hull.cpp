@@ -1,5 +1,6 @@
 #include "brush/convex_hull.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -60,9 +61,8 @@ struct QhullRun {
     QhullRun& operator=(const QhullRun&) = delete;
 };
 
-} // namespace
-
-Result<Hull> convex_hull(std::span<const DVec3> points) {
+// The points as Qhull's coordinates, or the refusal convex_hull documents.
+Result<std::vector<coordT>> hull_input(std::span<const DVec3> points) {
     if (points.size() < 4)
         return Error("a convex hull needs at least 4 points, got " + std::to_string(points.size()),
                      Location({}, 0, 0, "points"), "give points that span a volume");
@@ -78,16 +78,50 @@ Result<Hull> convex_hull(std::span<const DVec3> points) {
                          Location({}, 0, 0, "points[" + std::to_string(i) + "]"), "give finite coordinates");
         coords.insert(coords.end(), {points[i].x, points[i].y, points[i].z});
     }
-    QhullRun run(coords);
-    if (run.exit_code != 0) {
-        std::fflush(run.err);
-        const std::string text = run.messages ? std::string(run.messages, run.message_size) : std::string();
-        const bool flat = text.find("QH6154") != std::string::npos ||
-                          text.find("flat") != std::string::npos || text.find("QH6214") != std::string::npos;
-        return Error(flat ? "the points span no volume (they are coplanar, collinear or equal)"
-                          : "Qhull failed: " + text.substr(0, text.find('\n')),
-                     Location({}, 0, 0, "points"), "give at least 4 points that are not in one plane");
-    }
+    return coords;
+}
+
+// Qhull's failure as an Error.
+Error qhull_failure(QhullRun& run) {
+    std::fflush(run.err);
+    const std::string text = run.messages ? std::string(run.messages, run.message_size) : std::string();
+    const bool flat = text.find("QH6154") != std::string::npos || text.find("flat") != std::string::npos ||
+                      text.find("QH6214") != std::string::npos;
+    return Error(flat ? "the points span no volume (they are coplanar, collinear or equal)"
+                      : "Qhull failed: " + text.substr(0, text.find('\n')),
+                 Location({}, 0, 0, "points"), "give at least 4 points that are not in one plane");
+}
+
+} // namespace
+
+Result<HullMeasure> convex_hull_measure(std::span<const DVec3> points) {
+    Result<std::vector<coordT>> coords = hull_input(points);
+    if (!coords) return coords.error();
+    QhullRun run(*coords);
+    if (run.exit_code != 0) return qhull_failure(run);
+    qhT* qh = run.qh;
+    qh_getarea(qh, qh->facet_list);
+    HullMeasure measure{static_cast<double>(qh->totvol), static_cast<double>(qh->totarea), {}};
+    vertexT* vertex;
+    FORALLvertices measure.corners.push_back(qh_pointid(qh, vertex->point));
+    std::sort(measure.corners.begin(), measure.corners.end());
+    return measure;
+}
+
+Result<double> convex_hull_volume(std::span<const DVec3> points) {
+    Result<std::vector<coordT>> coords = hull_input(points);
+    if (!coords) return coords.error();
+    QhullRun run(*coords);
+    if (run.exit_code != 0) return qhull_failure(run);
+    qh_getarea(run.qh, run.qh->facet_list);
+    return static_cast<double>(run.qh->totvol);
+}
+
+Result<Hull> convex_hull(std::span<const DVec3> points) {
+    Result<std::vector<coordT>> coords = hull_input(points);
+    if (!coords) return coords.error();
+    QhullRun run(*coords);
+    if (run.exit_code != 0) return qhull_failure(run);
     qhT* qh = run.qh;
     Hull hull;
     std::vector<char> is_corner(points.size(), 0);

@@ -26,4 +26,14 @@ inline constexpr std::size_t kMaxHullPoints = 100000;
 // (all coplanar, collinear or equal).
 Result<Hull> convex_hull(std::span<const DVec3> points);
 
+// The convex hull's size as Qhull sums it over its facets (no planes recomputed): the measure the convex
+// decomposition compares cuts and merges by. The same refusals as convex_hull.
+struct HullMeasure {
+    double volume = 0.0;
+    double area = 0.0;
+    std::vector<int> corners; // indices of the input points that are corners of the hull
+};
+Result<HullMeasure> convex_hull_measure(std::span<const DVec3> points);
+Result<double> convex_hull_volume(std::span<const DVec3> points);
+
 } // namespace ks::brush

@@ -31,32 +31,34 @@ Shape physics_shape(const level::PlacedShape& shape) {
 // Every static solid's collision shape and placement, through this one function: walls, floors, stairs,
 // lamp stands, cylinders and the panel as the level's boxes, wedges and cylinders (their bodies, and so the
 // bot's state hashes, are as they always were); a brush as a Hull from its world brush; a model as its
-// triangles (a Mesh) or the Hull of the collision it chose (level::model_collision; none where its file
-// cannot be read: the level's validation warned, and the game plays on with the marker drawn in its place).
-// nullopt: no body.
-Result<std::optional<physics::BrushBody>> static_body(const level::Entity& e) {
+// triangles (a Mesh) or the Hulls of the collision it chose (level::model_collision: one, or several for
+// "hulls"; none where its file cannot be read: the level's validation warned, and the game plays on with the
+// marker drawn in its place). Empty: no body.
+Result<std::vector<physics::BrushBody>> static_bodies(const level::Entity& e) {
+    using Bodies = std::vector<physics::BrushBody>;
     if (e.type() == level::EntityType::Model) {
         Result<std::optional<level::CollisionMesh>> mesh = level::model_mesh_collision(e);
         if (mesh && mesh->has_value()) { // "mesh": its triangles (physics/triangle_mesh.h)
             Result<physics::MeshBody> body =
                 physics::mesh_body((*mesh)->vertices, (*mesh)->triangles, "model " + std::to_string(e.id));
-            if (!body) return std::optional<physics::BrushBody>();
-            return std::optional<physics::BrushBody>(physics::BrushBody{body->shape, body->transform});
+            if (!body) return Bodies();
+            return Bodies{physics::BrushBody{body->shape, body->transform}};
         }
-        Result<std::optional<brush::Brush>> collision = level::model_collision(e);
-        if (!collision || !collision->has_value()) return std::optional<physics::BrushBody>();
-        return std::optional<physics::BrushBody>(physics::brush_body(**collision));
+        Result<std::vector<brush::Brush>> collision = level::model_collision(e);
+        Bodies bodies;
+        if (collision)
+            for (const brush::Brush& hull : *collision) bodies.push_back(physics::brush_body(hull));
+        return bodies;
     }
     if (e.type() == level::EntityType::Brush) {
         Result<brush::Brush> world = level::world_brush(e);
         if (!world)
             return Error(world.error().message, Location("level", 0, 0, entity_label(e)), world.error().hint);
-        return std::optional<physics::BrushBody>(physics::brush_body(*world));
+        return Bodies{physics::brush_body(*world)};
     }
     const auto shape = level::static_solid_shape(e);
-    if (!shape) return std::optional<physics::BrushBody>();
-    return std::optional<physics::BrushBody>(
-        physics::BrushBody{physics_shape(*shape), {shape->centre(), shape->rotation()}});
+    if (!shape) return Bodies();
+    return Bodies{physics::BrushBody{physics_shape(*shape), {shape->centre(), shape->rotation()}}};
 }
 
 } // namespace
@@ -137,23 +139,29 @@ Result<void> Game::add_entity(const level::Entity& e) {
         kind = BodyKind::Panel;
         index = interactables_.next_panel();
     }
-    Result<std::optional<physics::BrushBody>> solid = static_body(e);
-    if (!solid) return solid.error();
-    if (!*solid) return ok();
-    BodyDesc d;
-    d.shape = std::move((*solid)->shape);
-    d.transform = (*solid)->transform;
-    d.layers = layers;
-    d.user_data = pack_user(kind, index);
-    auto body = core_.world.add(d, entity_label(e));
-    if (!body) return body.error();
-    level_bounds_.grow(d.shape.bounds(d.transform));
+    Result<std::vector<physics::BrushBody>> solids = static_bodies(e);
+    if (!solids) return solids.error();
+    if (solids->empty()) return ok();
+    // A cylinder and a panel have one body; a model's several hulls are one body each.
+    std::optional<physics::BodyId> body;
+    const geometry::Transform first_transform = solids->front().transform;
+    for (physics::BrushBody& solid : *solids) {
+        BodyDesc d;
+        d.shape = std::move(solid.shape);
+        d.transform = solid.transform;
+        d.layers = layers;
+        d.user_data = pack_user(kind, index);
+        auto added = core_.world.add(d, entity_label(e));
+        if (!added) return added.error();
+        if (!body) body = *added;
+        level_bounds_.grow(d.shape.bounds(d.transform));
+    }
     const float yaw = radians(e.rotation.x);
     if (kind == BodyKind::Cylinder) {
         Cylinder c;
         c.entity_id = e.id;
         c.props = e.as<level::GasCylinderProps>();
-        c.centre = d.transform.position;
+        c.centre = first_transform.position;
         c.yaw = yaw;
         c.body = *body;
         explosives_.add(c);
@@ -161,7 +169,7 @@ Result<void> Game::add_entity(const level::Entity& e) {
         Panel k;
         k.entity_id = e.id;
         k.size = e.as<level::ControlPanelProps>().size;
-        k.centre = d.transform.position;
+        k.centre = first_transform.position;
         k.yaw = yaw;
         k.body = *body;
         interactables_.add_panel(k);

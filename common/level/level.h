@@ -390,9 +390,11 @@ struct BrushProps {
 // A model file (glTF, OBJ, FBX) placed like a brush (world = R * scale * model + position, the model's origin
 // on the entity's position), named relative to the shipped assets/models or the designer's models folder in
 // the user data folder (modelio/model_files.h). Its collision is chosen: none, the box around it, one
-// convex hull of its vertices, or its own triangles (static, level/model_entity.h). Several hulls are not
-// offered yet.
+// convex hull of its vertices, several hulls (a convex decomposition, at most `hulls` of them), or its own
+// triangles (static, level/model_entity.h).
 inline constexpr int kMaxModelFileLength = 200; // characters
+inline constexpr int kDefaultModelHulls = 8;
+inline constexpr int kMaxModelHulls = 32;
 
 inline constexpr std::string_view kDefaultModelFile =
     "control_panel.gltf"; // a shipped model, so a new one shows
@@ -400,7 +402,8 @@ inline constexpr std::string_view kDefaultModelFile =
 struct ModelProps {
     std::string file{kDefaultModelFile};
     float scale = 1.0f;
-    Choice collision{"hull", {"none", "box", "hull", "mesh"}};
+    Choice collision{"hull", {"none", "box", "hull", "hulls", "mesh"}};
+    int hulls = kDefaultModelHulls;
     template <class V>
     void visit(V& v) {
         v.field(file, {"file",
@@ -410,7 +413,16 @@ struct ModelProps {
         v.field(scale,
                 {"scale", "Multiplies the model's size (one metre in the file is one unit)", 0.001, 1000});
         v.field(collision, {"collision", "What the player, robots and shots collide with: nothing, the box "
-                                         "around the model, one convex hull of it, or its triangles"});
+                                         "around the model, one convex hull of it, several convex hulls "
+                                         "(a decomposition: for chairs, arches, shelves), or its triangles"});
+        v.field(hulls,
+                {.name = "hulls",
+                 .tooltip = "The most convex hulls \"hulls\" collision cuts the model into: more follow "
+                            "its shape closer and cost more in every contact test",
+                 .min = 1,
+                 .max = kMaxModelHulls,
+                 .omitted_at_default = true,
+                 .slider = true});
     }
     bool operator==(const ModelProps&) const = default;
 };

@@ -177,7 +177,7 @@ void check_model(const Entity& entity, const ModelProps& model, const std::strin
         return;
     }
     check_model_size(**file, model.scale, subject, member_path(props_path, "scale"), sink);
-    if (Result<std::optional<brush::Brush>> collision = model_collision(entity); !collision)
+    if (Result<std::vector<brush::Brush>> collision = model_collision(entity); !collision)
         sink.warning(member_path(props_path, "collision"), collision.error().message, collision.error().hint);
     if (Result<std::optional<CollisionMesh>> mesh = model_mesh_collision(entity); !mesh)
         sink.warning(member_path(props_path, "collision"), mesh.error().message, mesh.error().hint);

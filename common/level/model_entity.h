@@ -26,13 +26,14 @@ Result<std::shared_ptr<const modelio::ImportedModel>> entity_model(const Entity&
 // Model space to world: the entity's frame (full yaw, pitch, roll) times its scale.
 Mat4 model_matrix(const Entity& entity);
 
-// The collision the entity chose, as a convex brush in the world: "box" the box around the scaled model,
-// "hull" the convex hull of its scaled vertices (Qhull through brush::make_from_points; when it has more than
-// kMaxModelHullFaces faces the vertices are snapped to a grid of 64, 32, 16 or 8 cells along the model's
-// largest side, and the first hull under the cap is kept). nullopt for "none" and "mesh"
-// (model_mesh_collision). An Error when the model cannot be read or the hull cannot be built (flat models:
-// choose "box" or "none").
-Result<std::optional<brush::Brush>> model_collision(const Entity& entity);
+// The collision the entity chose, as convex brushes in the world: "box" the box around the scaled model,
+// "hull" the convex hull of its scaled vertices, "hulls" at most `hulls` convex hulls from the model's
+// convex decomposition (brush/convex_decomposition.h, made once per model file and cap in this process and
+// scaled), each hull built by Qhull through brush::make_from_points; when one has more than
+// kMaxModelHullFaces faces its points are snapped to a grid of 64, 32, 16 or 8 cells along its largest side,
+// and the first hull under the cap is kept. Empty for "none" and "mesh" (model_mesh_collision). An Error when
+// the model cannot be read or no hull can be built (flat models: choose "box" or "none").
+Result<std::vector<brush::Brush>> model_collision(const Entity& entity);
 
 // The most triangles a "mesh" collision takes (the import refuses more too: this says why for collision).
 inline constexpr std::size_t kMaxModelMeshTriangles = 1'000'000;

@@ -298,18 +298,22 @@ Error absurd(const level::Level& level, const level::Entity& e) {
 
 // Every solid the mesh is built from, through this one function: the level's boxes, wedges and cylinders
 // (static_solid_shape; obstacles drawn in by half a cell), a brush as its world brush, a model as its
-// collision brush (level::model_collision) or its triangles (level::model_mesh_collision). Brushes are not
-// drawn in: like floors and stairs they are walked on, and drawing in would open seams where they meet; a
-// brush wall grows by up to a cell instead, erring on the side of blocking. nullopt: no solid.
-Result<std::optional<ConvexSolid>> entity_solid(const level::Level& level, const level::Entity& e,
-                                                const NavSettings& settings) {
-    if (e.type() == level::EntityType::Model) { // its collision brush, walked on like a brush; none if unread
+// collision brushes (level::model_collision: one, or several for "hulls") or its triangles
+// (level::model_mesh_collision). Brushes are not drawn in: like floors and stairs they are walked on, and
+// drawing in would open seams where they meet; a brush wall grows by up to a cell instead, erring on the side
+// of blocking. Empty: no solid.
+Result<std::vector<ConvexSolid>> entity_solids(const level::Level& level, const level::Entity& e,
+                                               const NavSettings& settings) {
+    using Solids = std::vector<ConvexSolid>;
+    if (e.type() == level::EntityType::Model) { // its collision, walked on like a brush; none if unread
         if (!sane(e.position) || !sane(e.rotation)) return absurd(level, e);
         Result<std::optional<level::CollisionMesh>> mesh = level::model_mesh_collision(e);
-        if (mesh && mesh->has_value()) return std::optional<ConvexSolid>(mesh_surface(**mesh));
-        Result<std::optional<brush::Brush>> collision = level::model_collision(e);
-        if (!collision || !collision->has_value()) return std::optional<ConvexSolid>();
-        return std::optional<ConvexSolid>(brush_solid(**collision));
+        if (mesh && mesh->has_value()) return Solids{mesh_surface(**mesh)};
+        Result<std::vector<brush::Brush>> collision = level::model_collision(e);
+        Solids solids;
+        if (collision)
+            for (const brush::Brush& hull : *collision) solids.push_back(brush_solid(hull));
+        return solids;
     }
     if (e.type() == level::EntityType::Brush) {
         if (!sane(e.position) || !sane(e.rotation)) return absurd(level, e);
@@ -317,13 +321,12 @@ Result<std::optional<ConvexSolid>> entity_solid(const level::Level& level, const
         if (!world)
             return Error(entity_label(level, e) + ": " + world.error().message, Location{},
                          world.error().hint);
-        return std::optional<ConvexSolid>(brush_solid(*world));
+        return Solids{brush_solid(*world)};
     }
     const auto shape = level::static_solid_shape(e);
-    if (!shape) return std::optional<ConvexSolid>();
+    if (!shape) return Solids();
     if (!sane(e.rotation) || !sane_shape(*shape)) return absurd(level, e);
-    return std::optional<ConvexSolid>(
-        solid_of(is_obstacle(e.type()) ? drawn_in(*shape, settings.cell_size) : *shape));
+    return Solids{solid_of(is_obstacle(e.type()) ? drawn_in(*shape, settings.cell_size) : *shape)};
 }
 } // namespace
 
@@ -340,11 +343,11 @@ Result<InputGeometry> collect_input(const level::Level& level, const NavSettings
             in.doors.push_back(door_footprint(e, settings));
             continue;
         }
-        Result<std::optional<ConvexSolid>> solid = entity_solid(level, e, settings);
-        if (!solid) return solid.error();
-        if (!*solid) continue;
+        Result<std::vector<ConvexSolid>> solids = entity_solids(level, e, settings);
+        if (!solids) return solids.error();
+        if (solids->empty()) continue;
         const int first = static_cast<int>(in.triangles.size() / 3);
-        append_solid(**solid, in);
+        for (const ConvexSolid& solid : *solids) append_solid(solid, in);
         if (!walked_on(e)) never_walked.emplace_back(first, static_cast<int>(in.triangles.size() / 3));
     }
     if (in.triangles.empty())

@@ -47,12 +47,12 @@ Result<CollisionWire> model_collision_wire(const level::Entity& entity) {
         if (*mesh) mesh_edges(**mesh, wire);
         return wire;
     }
-    // "box" or "hull": the brush the game collides with.
-    Result<std::optional<brush::Brush>> hull = level::model_collision(entity);
-    if (!hull) return hull.error();
-    if (*hull) {
-        const std::vector<DVec3>& corners = (*hull)->vertices();
-        for (const brush::Edge& edge : (*hull)->edges())
+    // "box", "hull" or "hulls": the brushes the game collides with.
+    Result<std::vector<brush::Brush>> hulls = level::model_collision(entity);
+    if (!hulls) return hulls.error();
+    for (const brush::Brush& hull : *hulls) {
+        const std::vector<DVec3>& corners = hull.vertices();
+        for (const brush::Edge& edge : hull.edges())
             wire.segments.push_back(std::array<Vec3, 2>{Vec3(corners[static_cast<std::size_t>(edge.v0)]),
                                                         Vec3(corners[static_cast<std::size_t>(edge.v1)])});
     }

@@ -75,8 +75,8 @@ TEST_CASE("levels/source/archive.kss rebuilds levels/archive.json byte for byte,
         CHECK((*model)->triangle_count > 1000);
         auto collision = level::model_collision(e);
         REQUIRE(collision.ok());
-        REQUIRE(collision->has_value());
-        const DVec3 lo = (*collision)->bounds_min(), hi = (*collision)->bounds_max();
+        REQUIRE(collision->size() == 1);
+        const DVec3 lo = collision->front().bounds_min(), hi = collision->front().bounds_max();
         CHECK(lo.y == doctest::Approx(0.0).epsilon(0.01));
         CHECK(lo.x > -16.0); // clear of the wall's inner face
         CHECK(hi.x < -14.0);

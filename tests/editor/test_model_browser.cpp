@@ -20,23 +20,18 @@ using namespace ks::editor;
 
 namespace {
 
-// XDG_DATA_HOME pointed at a scratch folder for the test's life, so the user's models folder is ours.
+// The user's models folder (with a props/ folder) and a stand-in shipped folder, both scratch.
 class ScratchModels {
   public:
     ScratchModels() {
-        if (const char* old = std::getenv("XDG_DATA_HOME")) old_ = old, had_ = true;
-        setenv("XDG_DATA_HOME", dir_.path().c_str(), 1);
         std::filesystem::create_directories(user() / "props");
         std::filesystem::create_directories(shipped());
     }
-    ~ScratchModels() { had_ ? setenv("XDG_DATA_HOME", old_.c_str(), 1) : unsetenv("XDG_DATA_HOME"); }
-    std::filesystem::path user() const { return dir_ / "killswitch/models"; }
-    std::filesystem::path shipped() const { return dir_ / "shipped"; }
+    std::filesystem::path user() const { return home_.models(); }
+    std::filesystem::path shipped() const { return home_.path() / "shipped"; }
 
   private:
-    test::ScratchDir dir_;
-    std::string old_;
-    bool had_ = false;
+    test::ScratchDataHome home_;
 };
 
 // A box 2 wide, 2 tall, 2 deep standing on its origin, its faces' corners shared (8 vertices).

@@ -33,7 +33,9 @@ class DocLister {
     void field(float& v, const FieldInfo& info) {
         row(info, "number", range_text_of(info), ks::jsonio::format_number(ks::jsonio::float_to_double(v)));
     }
-    void field(int&, const FieldInfo& info) { row(info, "whole number", range_text_of(info)); }
+    void field(int& v, const FieldInfo& info) {
+        row(info, "whole number", range_text_of(info), std::to_string(v));
+    }
     void field(bool& v, const FieldInfo& info) { row(info, "true / false", "", v ? "true" : "false"); }
     // A text whose FieldInfo has a non-negative minimum bounds its length.
     void field(std::string&, const FieldInfo& info) {

@@ -1,5 +1,6 @@
 // The model entity: its fields in the file, its validation (a badly spelt file is an error, a missing or
 // broken one a warning so the level still opens), the designer's models folder, and its collision as a brush.
+#include "../../bench/brush/solid_meshes.h"
 #include "brush/brush.h"
 #include "level/level_io.h"
 #include "level/model_entity.h"
@@ -17,22 +18,7 @@ using namespace ks::level;
 
 namespace {
 
-// XDG_DATA_HOME pointed at a scratch folder for the test's life, so the user's models folder is ours.
-class ScratchDataHome {
-  public:
-    ScratchDataHome() {
-        if (const char* old = std::getenv("XDG_DATA_HOME")) old_ = old, had_ = true;
-        setenv("XDG_DATA_HOME", dir_.path().c_str(), 1);
-        std::filesystem::create_directories(models());
-    }
-    ~ScratchDataHome() { had_ ? setenv("XDG_DATA_HOME", old_.c_str(), 1) : unsetenv("XDG_DATA_HOME"); }
-    std::filesystem::path models() const { return dir_ / "killswitch/models"; }
-
-  private:
-    test::ScratchDir dir_;
-    std::string old_;
-    bool had_ = false;
-};
+using test::ScratchDataHome;
 
 // A UV sphere of `rings` x `segments` quads as OBJ text, radius 1 centred on (0, 1, 0).
 std::string sphere_obj(int rings, int segments) {
@@ -58,11 +44,80 @@ const char* const kCubeObj =
 Entity model_entity(const std::string& file, const std::string& collision, float scale = 1.0f) {
     Level level;
     Entity& e = level.add(EntityType::Model, {10, 0, 5}, "Prop");
-    e.as<ModelProps>() = {file, scale, {collision, {"none", "box", "hull", "mesh"}}};
+    e.as<ModelProps>().file = file;
+    e.as<ModelProps>().scale = scale;
+    e.as<ModelProps>().collision.value = collision;
     return e;
 }
 
+// A closed mesh as OBJ text.
+std::string mesh_obj(const brush::bench::SolidMesh& mesh) {
+    std::ostringstream obj;
+    obj.precision(17);
+    for (const DVec3& v : mesh.vertices) obj << "v " << v.x << " " << v.y << " " << v.z << "\n";
+    for (const auto& t : mesh.triangles)
+        obj << "f " << t[0] + 1 << " " << t[1] + 1 << " " << t[2] + 1 << "\n";
+    return obj.str();
+}
+
+bool inside_any(const std::vector<brush::Brush>& brushes, const DVec3& p) {
+    for (const brush::Brush& b : brushes) {
+        bool inside = true;
+        for (const brush::Face& f : b.faces()) inside &= f.plane.signed_distance(p) <= 1e-9;
+        if (inside) return true;
+    }
+    return false;
+}
+
 } // namespace
+
+TEST_CASE(
+    "model entity: \"hulls\" collision is the model's convex decomposition, capped, scaled and turned") {
+    ScratchDataHome home;
+    test::write_file(home.models() / "arch.obj", mesh_obj(brush::bench::arch())); // 4 wide, 4 tall, 1 deep
+    Entity arch = model_entity("arch.obj", "hulls", 2.0f);
+    arch.rotation = {90, 0, 0};
+    auto hulls = model_collision(arch);
+    REQUIRE_MESSAGE(hulls.ok(), hulls.error().str());
+    CHECK(hulls->size() == 3); // two pillars and the lintel
+    // Turned a quarter about y and doubled, standing on (10, 0, 5): the opening is under the lintel's middle.
+    const glm::dmat3 turn = glm::mat3_cast(dquat_from_ypr_degrees(DVec3(90, 0, 0)));
+    auto world = [&](const DVec3& model_point) { return turn * (model_point * 2.0) + DVec3(10, 0, 5); };
+    CHECK_FALSE(inside_any(*hulls, world({2.0, 1.0, 0.5}))); // the opening
+    CHECK(inside_any(*hulls, world({0.5, 1.0, 0.5})));       // a pillar
+    CHECK(inside_any(*hulls, world({2.0, 3.5, 0.5})));       // the lintel
+    CHECK_FALSE(inside_any(*hulls, world({2.0, 1.0, 1.5}))); // beside it
+
+    arch.as<ModelProps>().hulls = 1; // the cap: one hull, the opening filled
+    auto one = model_collision(arch);
+    REQUIRE(one.ok());
+    CHECK(one->size() == 1);
+    CHECK(inside_any(*one, world({2.0, 1.0, 0.5})));
+
+    test::write_file(home.models() / "flat.obj", "v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 3\n");
+    auto flat = model_collision(model_entity("flat.obj", "hulls"));
+    REQUIRE_FALSE(flat.ok());
+    CHECK(test::contains_text(flat.error().str(), "no volume"));
+    CHECK(test::contains_text(flat.error().str(), "choose collision"));
+
+    // The field is written only when it is not the default, and read back.
+    Level level;
+    Entity& saved = level.add(EntityType::Model, {0, 0, 0}, "Arch");
+    saved.as<ModelProps>().file = "arch.obj";
+    saved.as<ModelProps>().collision.value = "hulls";
+    CHECK(save_level_string(level).find("\"hulls\":") == std::string::npos);
+    saved.as<ModelProps>().hulls = 3;
+    const std::string text = save_level_string(level);
+    CHECK(text.find("\"hulls\": 3") != std::string::npos);
+    LoadReport report;
+    auto back = load_level_string(text, "arch.json", &report);
+    REQUIRE_MESSAGE(back.ok(), report.str());
+    CHECK(*back == level);
+    saved.as<ModelProps>().hulls = 0;
+    LoadReport refused;
+    CHECK_FALSE(load_level_string(save_level_string(level), "arch.json", &refused).ok());
+    CHECK(test::contains_text(refused.str(), "entities[0].props.hulls"));
+}
 
 TEST_CASE("model entity: saved and loaded with its fields; a version-3 file loads silently") {
     Level level;
@@ -124,16 +179,16 @@ TEST_CASE("model entity: the user's models folder; box and hull collision as bru
     Entity none = model_entity("cube.obj", "none");
     auto no_body = model_collision(none);
     REQUIRE(no_body.ok());
-    CHECK_FALSE(no_body->has_value());
+    CHECK(no_body->empty());
 
     Entity box = model_entity("cube.obj", "box", 2.0f);
     box.rotation = {90, 0, 0};
     auto box_brush = model_collision(box);
     REQUIRE_MESSAGE(box_brush.ok(), box_brush.error().str());
-    REQUIRE(box_brush->has_value());
-    CHECK((**box_brush).bounds_min().x == doctest::Approx(8.0));
-    CHECK((**box_brush).bounds_max().y == doctest::Approx(4.0));
-    CHECK((**box_brush).bounds_max().z == doctest::Approx(7.0));
+    REQUIRE(box_brush->size() == 1);
+    CHECK(box_brush->front().bounds_min().x == doctest::Approx(8.0));
+    CHECK(box_brush->front().bounds_max().y == doctest::Approx(4.0));
+    CHECK(box_brush->front().bounds_max().z == doctest::Approx(7.0));
     const PlacedShape picked = bounding_shape(box);
     CHECK(picked.half.x == doctest::Approx(2.0f));
     CHECK(picked.centre().y == doctest::Approx(2.0f));
@@ -142,8 +197,8 @@ TEST_CASE("model entity: the user's models folder; box and hull collision as bru
     Entity hull = model_entity("ball.obj", "hull");
     auto hull_brush = model_collision(hull);
     REQUIRE_MESSAGE(hull_brush.ok(), hull_brush.error().str());
-    REQUIRE(hull_brush->has_value());
-    const brush::Brush& b = **hull_brush;
+    REQUIRE(hull_brush->size() == 1);
+    const brush::Brush& b = hull_brush->front();
     CHECK(b.faces().size() <= kMaxModelHullFaces);
     CHECK(b.bounds_max().y == doctest::Approx(2.0).epsilon(0.05));
     CHECK(b.bounds_min().x == doctest::Approx(9.0).epsilon(0.05));
@@ -164,7 +219,7 @@ TEST_CASE("model entity: mesh collision is the model's triangles, turned, scaled
     cube.rotation = {90, 0, 0};
     auto none = model_collision(cube); // no brush: the triangles are the collision
     REQUIRE(none.ok());
-    CHECK_FALSE(none->has_value());
+    CHECK(none->empty());
     auto mesh = model_mesh_collision(cube);
     REQUIRE_MESSAGE(mesh.ok(), mesh.error().str());
     REQUIRE(mesh->has_value());

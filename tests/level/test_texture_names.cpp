@@ -144,9 +144,10 @@ TEST_CASE("the types that keep pitch and roll are those whose game body turns wi
             const auto tilted_model = model_collision(e);
             e.rotation = {30.0f, 0.0f, 0.0f};
             const auto yawed_model = model_collision(e);
-            REQUIRE((tilted_model.ok() && yawed_model.ok() && *tilted_model && *yawed_model));
-            body_turns =
-                glm::length((**tilted_model).vertex_centre() - (**yawed_model).vertex_centre()) > 1e-3;
+            REQUIRE((tilted_model.ok() && yawed_model.ok() && tilted_model->size() == 1 &&
+                     yawed_model->size() == 1));
+            body_turns = glm::length(tilted_model->front().vertex_centre() -
+                                     yawed_model->front().vertex_centre()) > 1e-3;
         }
         CAPTURE(type_name(type));
         CHECK(keeps_pitch_and_roll(type) == body_turns);

@@ -1,11 +1,15 @@
 // Brush entities in the navigation mesh: their faces are Recast input, walkable where their slope allows
 // (a ramp, a platform's top) and never on their undersides; a brush wall blocks like a wall entity.
 // Model entities come in through the same convex solids (their collision brush).
+#include "../../bench/brush/solid_meshes.h"
 #include "brush/brush_build.h"
 #include "level_brushes.h"
 #include "nav/nav_levels.h"
+#include "test_support.h"
 
 #include <doctest/doctest.h>
+
+#include <sstream>
 
 using namespace ks;
 using namespace ks::test;
@@ -106,4 +110,26 @@ TEST_CASE("a model entity's collision is in the mesh: its box, hull and triangle
     CHECK_FALSE(build_robot_mesh(room("hull"))->reachable(Vec3(0, 0, 8), Vec3(0, 0, -8)));
     CHECK_FALSE(build_robot_mesh(room("mesh"))->reachable(Vec3(0, 0, 8), Vec3(0, 0, -8))); // by its triangles
     CHECK(build_robot_mesh(room("none"))->reachable(Vec3(0, 0, 8), Vec3(0, 0, -8)));
+}
+
+TEST_CASE("a model's \"hulls\" collision opens the arch that its single hull fills") {
+    test::ScratchDataHome home;
+    std::ostringstream obj; // the arch of bench/brush/solid_meshes.h: 4 wide, 4 tall, 1 deep, opening 2 x 3
+    const brush::bench::SolidMesh arch = brush::bench::arch();
+    for (const DVec3& v : arch.vertices) obj << "v " << v.x << " " << v.y << " " << v.z << "\n";
+    for (const auto& t : arch.triangles)
+        obj << "f " << t[0] + 1 << " " << t[1] + 1 << " " << t[2] + 1 << "\n";
+    test::write_file(home.models() / "arch.obj", obj.str());
+    auto corridor = [](const char* collision) {
+        level::Level lv;
+        lv.name = "arch";
+        add_floor(lv, Vec3(0), Vec2(12, 30)); // x in [-6, 6]: the arch, scaled 3, spans it
+        auto& model = lv.add(level::EntityType::Model, Vec3(-6, 0, -1.5f), "Arch").as<level::ModelProps>();
+        model.file = "arch.obj";
+        model.scale = 3.0f;
+        model.collision.value = collision;
+        return lv;
+    };
+    CHECK_FALSE(build_robot_mesh(corridor("hull"))->reachable(Vec3(0, 0, 8), Vec3(0, 0, -8)));
+    CHECK(build_robot_mesh(corridor("hulls"))->reachable(Vec3(0, 0, 8), Vec3(0, 0, -8)));
 }
