@@ -5,8 +5,9 @@
 // here because Debian 12 packages no decomposition library. The mesh is voxelized (solid_voxels.h: surface
 // voxels by exact triangle/box overlap, the inside by a flood fill from outside). Phase one cuts: parts are
 // boxes of space; the part whose convex hull exceeds its voxels the most is cut, while some part's mean gap
-// (excess volume over the part's skin) is above `tolerance` times the mesh's largest side, at the
-// axis-aligned plane that minimises the two halves' hull volumes (ties go to the thinner section: a neck),
+// (excess volume over the part's skin) is above `tolerance` times the mesh's largest side or its hull is
+// more than `max_excess` empty, at the axis-aligned plane that minimises the two halves' hull volumes plus
+// V-HACD's balance term (ties go to the thinner section: a neck),
 // moved onto the mesh's nearest vertex coordinate within two voxels. Each part's hull is then built from the
 // mesh itself clipped to the part's box, plus the box corners inside the solid, so the hulls hold every
 // point of the surface exactly, not a voxel approximation. Phase two merges: the pair whose merged hull adds
@@ -27,6 +28,7 @@ struct DecompositionOptions {
     int resolution = 48;     // voxels along the mesh's largest side, 8..kMaxDecompositionResolution
     double tolerance = 0.02; // a part is convex enough when its hull's mean gap is below this fraction of the
                              // largest side (0..1)
+    double max_excess = 0.1; // and its hull is at most this share empty (0..1)
 };
 
 inline constexpr int kMaxDecompositionHulls = 64;

@@ -1,10 +1,13 @@
 // Brush entities in the game: each is a static Hull body made from its world brush (physics::brush_body),
 // so the player walks up a brush ramp onto a brush platform, a robot chases up it over the navigation mesh,
 // and a brush wall (turned by its entity's yaw) stops the player.
+#include "../../bench/brush/solid_meshes.h"
 #include "brush/brush_build.h"
 #include "game_test_levels.h"
 #include "level/entity_shapes.h"
 #include "level_brushes.h"
+
+#include <sstream>
 
 using namespace ks;
 using namespace ks::game;
@@ -43,4 +46,28 @@ TEST_CASE("a brush's body is the hull of its world brush, where the level places
     CHECK(glm::length(g->world().transform(id).position - Vec3(centre)) < 1e-5f);
     CHECK(g->line_blocked(Vec3(20, 2, -30), Vec3(20, 2, -10)));
     CHECK_FALSE(g->line_blocked(Vec3(30, 2, -30), Vec3(30, 2, -10)));
+}
+
+TEST_CASE("a model with \"hulls\" collision is one body per hull: the player walks through its arch") {
+    ScratchDataHome home;
+    std::ostringstream obj; // bench/brush/solid_meshes.h's arch: 4 wide, 4 tall, 1 deep, opening 2 x 3
+    const brush::bench::SolidMesh arch = brush::bench::arch();
+    for (const DVec3& v : arch.vertices) obj << "v " << v.x << " " << v.y << " " << v.z << "\n";
+    for (const auto& t : arch.triangles)
+        obj << "f " << t[0] + 1 << " " << t[1] + 1 << " " << t[2] + 1 << "\n";
+    write_file(home.models() / "arch.obj", obj.str());
+    auto walk = [](const char* collision) {
+        auto lv = flat_level();
+        // Scaled 3: x in [-6, 6], z in [-10, -7], the opening x in [-3, 3] and 9 tall, across the player's
+        // way.
+        auto& model = lv.add(level::EntityType::Model, Vec3(-6, 0, -10), "Arch").as<level::ModelProps>();
+        model.file = "arch.obj";
+        model.scale = 3.0f;
+        model.collision.value = collision;
+        auto g = make_game(lv);
+        run_for(*g, 3.0, Input{1.0f});
+        return g->player().feet.z;
+    };
+    CHECK(walk("hull") > -7.0f);   // one hull fills the opening: stopped at its face
+    CHECK(walk("hulls") < -11.0f); // two pillars and a lintel: through
 }

@@ -5,6 +5,7 @@
 #include "level/level_io.h"
 #include "level/model_entity.h"
 #include "modelio/model_files.h"
+#include "modelio/model_writers.h"
 #include "test_support.h"
 
 #include <doctest/doctest.h>
@@ -237,4 +238,23 @@ TEST_CASE("model entity: mesh collision is the model's triangles, turned, scaled
     auto missing = model_mesh_collision(model_entity("gone.obj", "mesh"));
     REQUIRE_FALSE(missing.ok());
     CHECK(test::contains_text(missing.error().str(), "gone.obj"));
+}
+
+TEST_CASE(
+    "model entity: a .glb whose embedded texture is broken loads as a warning naming file and texture") {
+    ScratchDataHome home;
+    test::write_glb_cube(home.models(), "painted", {.image = "definitely not a picture"});
+    const std::string text = R"({"format": "killswitch-level", "version": 4, "entities": [
+  {"id": 1, "type": "model", "name": "Crate", "position": [0, 0, 0], "props": {"file": "painted.glb"}}]})";
+    LoadReport report;
+    auto level = load_level_string(text, "painted.json", &report);
+    REQUIRE_MESSAGE(level.ok(), report.str()); // the level opens: the model is drawn as a marker
+    const std::string said = report.str();
+    INFO(said);
+    CHECK(test::contains_text(said, "warning"));
+    CHECK(test::contains_text(said, "painted.glb"));
+    CHECK(test::contains_text(said, "is not an image the game reads"));
+    CHECK(test::contains_text(said, "entities[0].props.file"));
+    auto none = model_collision(level->entities.at(0)); // no collision either: the same error, not a crash
+    CHECK_FALSE(none.ok());
 }
