@@ -1,8 +1,8 @@
 #include "level/model_entity.h"
 
 #include "brush/brush_build.h"
-#include "brush/convex_decomposition.h"
 #include "brush/convex_hull.h"
+#include "brush/decomposition_cache.h"
 #include "brush/texture_mapping.h"
 #include "modelio/model_files.h"
 
@@ -85,7 +85,8 @@ CollisionMesh model_triangles(const modelio::ImportedModel& m) {
 using SharedDecomposition = std::shared_ptr<const Result<brush::ConvexDecomposition>>;
 
 // The model's convex decomposition with at most `hulls` hulls, made once per imported model and cap: every
-// entity of a model shares it (scaled), and a changed file (a new import) makes a new one.
+// entity of a model shares it (scaled), and a changed file (a new import) makes a new one. Later launches
+// read it from the disk cache (brush/decomposition_cache.h).
 SharedDecomposition model_decomposition(const std::shared_ptr<const modelio::ImportedModel>& model,
                                         int hulls) {
     struct Entry {
@@ -104,7 +105,7 @@ SharedDecomposition model_decomposition(const std::shared_ptr<const modelio::Imp
     brush::DecompositionOptions options;
     options.max_hulls = hulls;
     auto made = std::make_shared<const Result<brush::ConvexDecomposition>>(
-        brush::decompose_convex(mesh.vertices, mesh.triangles, options));
+        brush::decompose_convex_cached(mesh.vertices, mesh.triangles, options));
     std::lock_guard lock(mutex);
     return cache.try_emplace(key, Entry{model, made}).first->second.decomposition;
 }

@@ -4,11 +4,14 @@
 #include "../../bench/brush/solid_meshes.h"
 #include "brush/brush_build.h"
 #include "brush/convex_decomposition.h"
+#include "brush/decomposition_cache.h"
+#include "test_support.h"
 
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 namespace ks::decomposition_test {
 namespace {
@@ -180,6 +183,38 @@ TEST_CASE("convex decomposition: bad input is refused, naming what is wrong") {
     options.resolution = 100000;
     CHECK(message(decompose_convex(l.vertices, l.triangles, options)).find("out of range") !=
           std::string::npos);
+}
+
+
+TEST_CASE(
+    "convex decomposition: the disk cache gives back the same hulls, and a damaged entry is made again") {
+    test::ScratchDir dir;
+    const disk_cache::Store store(dir.path());
+    const SolidMesh t = bench::table();
+    DecompositionOptions options;
+    options.max_hulls = 8;
+    auto first = decompose_convex_cached(t.vertices, t.triangles, options, store);
+    REQUIRE(first.ok());
+    const auto file = store.file("hulls", decomposition_cache_key(t.vertices, t.triangles, options));
+    REQUIRE(std::filesystem::exists(file));
+    auto again = decompose_convex_cached(t.vertices, t.triangles, options, store);
+    REQUIRE(again.ok());
+    CHECK(again->hulls == first->hulls);
+    CHECK(again->parts == first->parts);
+    CHECK(again->hull_volume == first->hull_volume);
+    // Another cap is another entry; a truncated entry is a miss, made and written again.
+    options.max_hulls = 2;
+    CHECK(decomposition_cache_key(t.vertices, t.triangles, options) !=
+          decomposition_cache_key(t.vertices, t.triangles, DecompositionOptions{}));
+    options.max_hulls = 8;
+    std::filesystem::resize_file(file, std::filesystem::file_size(file) / 2);
+    auto repaired = decompose_convex_cached(t.vertices, t.triangles, options, store);
+    REQUIRE(repaired.ok());
+    CHECK(repaired->hulls == first->hulls);
+    CHECK(std::filesystem::file_size(file) > 0);
+    auto reread = decompose_convex_cached(t.vertices, t.triangles, options, store);
+    REQUIRE(reread.ok());
+    CHECK(reread->hulls == first->hulls);
 }
 
 } // namespace ks::decomposition_test
