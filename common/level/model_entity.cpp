@@ -172,11 +172,15 @@ Result<std::vector<brush::Brush>> model_collision(const Entity& entity) {
     if (!local)
         return Error(model_subject(entity) + ": no " + choice + " collision: " + local.error().message,
                      Location((*model)->path.string()), "choose collision \"box\" or \"none\"");
+    // Placed by carrying each hull's geometry through the entity's motion, as a level places its brush
+    // entities: deriving a many-faced hull again after an arbitrary turn can find slivers that no longer
+    // close.
     std::vector<brush::Brush> world;
     for (const brush::Brush& brush : *local) {
-        Result<brush::Brush> placed =
-            brush::transformed(brush, entity_rotation(entity), DVec3(entity.position));
-        if (!placed) return placed.error();
+        Result<brush::Brush> placed = brush::placed(brush, entity_rotation(entity), DVec3(entity.position));
+        if (!placed)
+            return Error(model_subject(entity) + ": no " + choice + " collision: " + placed.error().message,
+                         Location((*model)->path.string()), "choose collision \"box\" or \"none\"");
         world.push_back(std::move(*placed));
     }
     return world;
