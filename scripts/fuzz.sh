@@ -6,7 +6,9 @@
 # default 30: wall-clock, so generous on a shared machine), KS_FUZZ_MAX_LEN (default 32768 bytes: the largest
 # shipped file is 18 KB; bigger seeds such as the 200 KB nesting bomb are cut to this for mutation).
 # The growing corpus stays in $KS_FUZZ_BUILD/corpus/<target>; seeds are read from the shipped files and the
-# test corpora. Any crash, timeout, leak or out-of-memory input is copied to tests/data/fuzz/<target>/,
+# test corpora, and the kept corpus fuzz/corpus/<target>.tar.xz (minimised, in the repository) is unpacked into
+# it first. KS_FUZZ_SAVE_CORPUS=1: after each run the corpus is minimised (libFuzzer -merge=1) and written
+# back to fuzz/corpus/<target>.tar.xz. Any crash, timeout, leak or out-of-memory input is copied to tests/data/fuzz/<target>/,
 # where the GCC regression tests (tests/{level,anim,editor}/test_fuzz_regressions.cpp) replay it; the script
 # then exits 1.
 set -euo pipefail
@@ -69,6 +71,8 @@ for target in "${targets[@]}"; do
     # Hand-written seeds join the corpus; known crash files stay out of it, or an unfixed bug would stop
     # every run at start-up (the regression tests replay them instead).
     find "$regressions" -maxdepth 1 -type f -name 'seed-*' -exec cp -n {} "$corpus/" \;
+    kept=$root/fuzz/corpus/$target.tar.xz
+    [[ -f $kept ]] && tar -xJf "$kept" -C "$corpus" --skip-old-files
     echo "== $target: ${seconds}s (log: $log)"
     # The first folder receives new inputs; the seed folders are only read.
     dict=$(dict_for "$target")
@@ -96,6 +100,15 @@ for target in "${targets[@]}"; do
     cov=$(grep -Eo 'cov: [0-9]+ ft: [0-9]+ corp: [0-9]+' "$log" | tail -1 || true)
     summary+=("$target: ${execs:-?} execs, ${speed:-?} exec/s, ${cov:-no coverage line}, exit $rc, $found new finding(s)")
     if (( rc != 0 || found > 0 )); then status=1; fi
+    if [[ ${KS_FUZZ_SAVE_CORPUS:-0} == 1 && $rc == 0 && $found == 0 ]]; then
+        minimised=$(mktemp -d)
+        ASAN_OPTIONS=${ASAN_OPTIONS:-}:detect_leaks=0 "$build/bin/$target" -merge=1 -rss_limit_mb=2048 \
+            -max_len="${KS_FUZZ_MAX_LEN:-32768}" "$minimised" "$corpus" >>"$log" 2>&1
+        mkdir -p "$root/fuzz/corpus"
+        tar --sort=name --mtime=@0 --owner=0 --group=0 --numeric-owner -cJf "$kept" -C "$minimised" .
+        echo "   kept: $kept ($(find "$minimised" -type f | wc -l) inputs)"
+        rm -rf "$minimised"
+    fi
 done
 
 echo "== summary"

@@ -9,20 +9,40 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <unistd.h>
 #include <vector>
 
 namespace ks::hardening {
 
-// Every file in tests/data/fuzz/<target>/ (seeds and crash/timeout/oom inputs found by scripts/fuzz.sh),
-// sorted so failures are reported in a stable order.
+// The kept corpus fuzz/corpus/<target>.tar.xz (minimised by scripts/fuzz.sh with KS_FUZZ_SAVE_CORPUS=1),
+// unpacked once per test process into a scratch folder that lives as long as the process; an empty path
+// when the target has none.
+inline std::filesystem::path kept_corpus(const std::string& target) {
+    static std::vector<std::pair<std::string, std::unique_ptr<ks::test::ScratchDir>>> unpacked;
+    for (const auto& [name, dir] : unpacked)
+        if (name == target) return dir->path();
+    const auto archive = ks::test::source_dir() / "fuzz" / "corpus" / (target + ".tar.xz");
+    if (!std::filesystem::exists(archive)) return {};
+    auto dir = std::make_unique<ks::test::ScratchDir>();
+    const auto result =
+        ks::test::run_command("tar -xJf '" + archive.string() + "' -C '" + dir->path().string() + "'");
+    REQUIRE_MESSAGE(result.exit_code == 0, result.output);
+    unpacked.emplace_back(target, std::move(dir));
+    return unpacked.back().second->path();
+}
+
+// Every file in tests/data/fuzz/<target>/ (seeds and crash/timeout/oom inputs found by scripts/fuzz.sh) and
+// in the target's kept corpus, sorted so failures are reported in a stable order.
 inline std::vector<std::filesystem::path> fuzz_inputs(const std::string& target) {
     std::vector<std::filesystem::path> out;
-    const auto dir = ks::test::data_dir() / "fuzz" / target;
-    std::error_code ec;
-    for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
-        if (entry.is_regular_file()) out.push_back(entry.path());
+    for (const auto& dir : {ks::test::data_dir() / "fuzz" / target, kept_corpus(target)}) {
+        if (dir.empty()) continue;
+        std::error_code ec;
+        for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
+            if (entry.is_regular_file()) out.push_back(entry.path());
+    }
     std::sort(out.begin(), out.end());
     return out;
 }
