@@ -1,5 +1,7 @@
 #include "jsonio/json_writer.h"
 
+#include <algorithm>
+
 #include "jsonio/number_text.h"
 
 namespace ks::jsonio {
@@ -73,6 +75,18 @@ std::string compact_text(const Json& value) {
 }
 
 std::string json_string(std::string_view text) {
+    // Plain printable ASCII needs no escaping (the serializer would give the same bytes): most names and
+    // messages, quoted on every load, without building a Json value.
+    const bool plain = std::all_of(text.begin(), text.end(),
+                                   [](char c) { return c >= 0x20 && c < 0x7f && c != '"' && c != '\\'; });
+    if (plain) {
+        std::string out;
+        out.reserve(text.size() + 2);
+        out += '"';
+        out += text;
+        out += '"';
+        return out;
+    }
     return compact_text(Json(std::string(text)));
 }
 

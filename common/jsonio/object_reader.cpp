@@ -73,8 +73,21 @@ bool read_finite(const Json& value, const std::string& path, ProblemSink& sink, 
     return false;
 }
 
+namespace {
+// The common case: a finite number in range, nothing marked reported in the document; read without
+// building the path or the messages a problem would need.
+bool read_plain_number(const Json& value, const ProblemSink& sink, double& out, const Range& range) {
+    if (!value.is_number() || sink.any_reported()) return false;
+    const double number = value.get<double>();
+    if (!std::isfinite(number) || !range.contains(number)) return false;
+    out = number;
+    return true;
+}
+} // namespace
+
 bool read_number(const Json& value, const std::string& path, ProblemSink& sink, double& out,
                  const Range& range) {
+    if (read_plain_number(value, sink, out, range)) return true;
     double number = 0;
     if (!read_finite(value, path, sink, number, range.text())) return false;
     if (!range.contains(number)) {
@@ -249,7 +262,8 @@ bool ObjectReader::numbers(std::string_view key, double* out, std::size_t count,
     std::vector<double> read(count);
     bool ok = true;
     for (std::size_t i = 0; i < count; ++i)
-        ok &= read_number((*value)[i], element_path(path, i), sink_, read[i], range);
+        if (!read_plain_number((*value)[i], sink_, read[i], range))
+            ok &= read_number((*value)[i], element_path(path, i), sink_, read[i], range);
     if (ok) std::copy(read.begin(), read.end(), out);
     return ok;
 }

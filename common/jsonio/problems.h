@@ -27,6 +27,8 @@ class ProblemSink {
     // nothing more about it, so one mistake gives one message.
     virtual void mark_reported(const std::string& path) { reported_.insert(path); }
     virtual bool already_reported(const std::string& path) const { return reported_.count(path) > 0; }
+    // Whether any path was marked: when none was, a reader may skip building a path to ask about it.
+    virtual bool any_reported() const { return !reported_.empty(); }
 
   private:
     std::set<std::string> reported_;

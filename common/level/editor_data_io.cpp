@@ -60,6 +60,7 @@ class AdvisorySink : public jsonio::ProblemSink {
     }
     void mark_reported(const std::string& path) override { sink_.mark_reported(path); }
     bool already_reported(const std::string& path) const override { return sink_.already_reported(path); }
+    bool any_reported() const override { return sink_.any_reported(); }
 
   private:
     static std::string with_consequence(std::string hint) {

@@ -35,6 +35,12 @@ void report_out_of_range(const std::string& shown, const std::string& path, cons
     sink.error(path, shown + " is out of range", hint);
 }
 
+// Whether a float field's value passes (finite, in range compared in float precision, as check_float):
+// the common case, checked before any message or path is built.
+bool float_passes(float v, const FieldInfo& info) {
+    return std::isfinite(v) && v >= static_cast<float>(info.min) && v <= static_cast<float>(info.max);
+}
+
 void check_int(int v, const std::string& path, const FieldInfo& info, DiagnosticSink& sink) {
     if (v < info.min || v > info.max) report_out_of_range(std::to_string(v), path, info, sink);
 }
@@ -59,9 +65,11 @@ class FieldChecker {
         : path_(std::move(path)), sink_(sink), subject_(std::move(subject)) {}
 
     void field(float& v, const FieldInfo& info) {
-        check_float(v, jsonio::readable_float(v), path_of(info), info, sink_);
+        if (!float_passes(v, info)) check_float(v, jsonio::readable_float(v), path_of(info), info, sink_);
     }
-    void field(int& v, const FieldInfo& info) { check_int(v, path_of(info), info, sink_); }
+    void field(int& v, const FieldInfo& info) {
+        if (v < info.min || v > info.max) check_int(v, path_of(info), info, sink_);
+    }
     void field(bool&, const FieldInfo&) {}
     // A text field with a non-negative minimum bounds its length (a message's text).
     void field(std::string& v, const FieldInfo& info) {
@@ -80,7 +88,8 @@ class FieldChecker {
     template <int N>
     void field(glm::vec<N, float>& v, const FieldInfo& info) {
         for (int i = 0; i < N; ++i)
-            check_float(v[i], jsonio::readable_float(v[i]), element_path(path_of(info), i), info, sink_);
+            if (!float_passes(v[i], info))
+                check_float(v[i], jsonio::readable_float(v[i]), element_path(path_of(info), i), info, sink_);
     }
     void field(Color& c, const FieldInfo& info) {
         const FieldInfo unit_range{info.name, info.tooltip, 0, 1, ""};
@@ -191,8 +200,8 @@ void check_entity(const Entity& entity, const std::string& path, DiagnosticSink&
                    "ids are whole numbers >= 1");
     check_placement(entity.position, entity.rotation, path, sink);
     const std::string props_path = member_path(path, "props");
-    std::visit([&](const auto& props) { check_fields(props, props_path, sink, entity_subject(entity)); },
-               entity.props);
+    const std::string subject = entity_subject(entity);
+    std::visit([&](const auto& props) { check_fields(props, props_path, sink, subject); }, entity.props);
 
     const auto* spawner = entity.try_as<SpawnerProps>();
     const RobotProps* robot = spawner ? &spawner->robot : entity.try_as<RobotProps>();
@@ -212,7 +221,7 @@ void check_entity(const Entity& entity, const std::string& path, DiagnosticSink&
         sink.error(member_path(props_path, "dummy"),
                    entity_subject(entity) + ": a spawner cannot make animation dummies",
                    "set \"dummy\": false; dummies belong in the dojo");
-    SubjectScope scope(sink, entity_subject(entity));
+    SubjectScope scope(sink, subject);
     check_links(entity.links, entity_events(entity.type()), with_article(type_name(entity.type())),
                 member_path(path, "links"), sink);
 }

@@ -33,8 +33,19 @@ bool read_double(const Json& value, const std::string& path, const std::string& 
     return jsonio::read_finite(value, path, sink, out, valid);
 }
 
+// The common case, a finite number in float range with nothing reported about the document's numbers,
+// read without building the messages a problem would need (the reads are most of a level's load).
+bool read_plain_float(const Json& value, const DiagnosticSink& sink, float& out) {
+    if (!value.is_number() || sink.any_reported()) return false;
+    const double d = value.get<double>();
+    if (!std::isfinite(d) || std::fabs(d) > FLT_MAX) return false;
+    out = static_cast<float>(d);
+    return true;
+}
+
 bool read_float(const Json& value, const std::string& path, const FieldInfo& info, DiagnosticSink& sink,
                 float& out) {
+    if (read_plain_float(value, sink, out)) return true;
     double d = 0;
     if (!read_double(value, path, range_text(info), sink, d)) return false;
     if (std::fabs(d) > FLT_MAX) {
@@ -73,7 +84,9 @@ bool read_vec(const Json& value, const std::string& path, const FieldInfo& info,
     }
     glm::vec<N, float> result = out;
     bool ok = true;
-    for (int i = 0; i < N; ++i) ok &= read_float(value[i], element_path(path, i), info, sink, result[i]);
+    for (int i = 0; i < N; ++i)
+        if (!read_plain_float(value[i], sink, result[i]))
+            ok &= read_float(value[i], element_path(path, i), info, sink, result[i]);
     if (ok) out = result;
     return ok;
 }

@@ -41,6 +41,20 @@ TEST_CASE("non-finite numbers are written as null, invalid UTF-8 is replaced, no
     CHECK(json_string("a\"b") == "\"a\\\"b\"");
 }
 
+TEST_CASE("json_string quotes exactly as the serializer does, with or without its plain-text shortcut") {
+    // Every byte alone and between letters, and a few mixed strings: the same text as nlohmann's dump.
+    std::vector<std::string> samples{"",     "Wall 3", "back\\slash", "tab\there",
+                                     "Café", "数字",   "\x7f",        "a\"b"};
+    for (int c = 1; c < 256; ++c) {
+        samples.push_back(std::string(1, static_cast<char>(c)));
+        samples.push_back("x" + std::string(1, static_cast<char>(c)) + "y");
+    }
+    for (const std::string& text : samples) {
+        CAPTURE(text);
+        CHECK(json_string(text) == Json(text).dump(-1, ' ', false, Json::error_handler_t::replace));
+    }
+}
+
 TEST_CASE("values are described the way messages need them") {
     CHECK(std::string(type_name(Json(1.5))) == "a number");
     CHECK(std::string(type_name(Json(3))) == "a number");
