@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <limits>
 #include <numbers>
+#include <sstream>
+#include <string>
 #include <vector>
 
 namespace ks::brush::bench {
@@ -91,6 +93,15 @@ inline SolidMesh ring(double big, double small, int around, int tube) {
             m.triangles.push_back({at(i + 1, j), at(i, j + 1), at(i + 1, j + 1)});
         }
     return m;
+}
+
+// The mesh as OBJ text (what a designer's exported file holds), vertices in full precision.
+inline std::string obj_text(const SolidMesh& m) {
+    std::ostringstream obj;
+    obj.precision(17);
+    for (const DVec3& v : m.vertices) obj << "v " << v.x << " " << v.y << " " << v.z << "\n";
+    for (const auto& t : m.triangles) obj << "f " << t[0] + 1 << " " << t[1] + 1 << " " << t[2] + 1 << "\n";
+    return obj.str();
 }
 
 // The volume the closed mesh encloses (divergence theorem), in long double.

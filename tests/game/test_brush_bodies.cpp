@@ -7,8 +7,6 @@
 #include "level/entity_shapes.h"
 #include "level_brushes.h"
 
-#include <sstream>
-
 using namespace ks;
 using namespace ks::game;
 using namespace ks::game_test;
@@ -50,12 +48,8 @@ TEST_CASE("a brush's body is the hull of its world brush, where the level places
 
 TEST_CASE("a model with \"hulls\" collision is one body per hull: the player walks through its arch") {
     ScratchDataHome home;
-    std::ostringstream obj; // bench/brush/solid_meshes.h's arch: 4 wide, 4 tall, 1 deep, opening 2 x 3
-    const brush::bench::SolidMesh arch = brush::bench::arch();
-    for (const DVec3& v : arch.vertices) obj << "v " << v.x << " " << v.y << " " << v.z << "\n";
-    for (const auto& t : arch.triangles)
-        obj << "f " << t[0] + 1 << " " << t[1] + 1 << " " << t[2] + 1 << "\n";
-    write_file(home.models() / "arch.obj", obj.str());
+    // bench/brush/solid_meshes.h's arch: 4 wide, 4 tall, 1 deep, the opening 2 wide and 3 tall
+    write_file(home.models() / "arch.obj", brush::bench::obj_text(brush::bench::arch()));
     auto walk = [](const char* collision) {
         auto lv = flat_level();
         // Scaled 3: x in [-6, 6], z in [-10, -7], the opening x in [-3, 3] and 9 tall, across the player's

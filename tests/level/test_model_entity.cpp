@@ -51,16 +51,6 @@ Entity model_entity(const std::string& file, const std::string& collision, float
     return e;
 }
 
-// A closed mesh as OBJ text.
-std::string mesh_obj(const brush::bench::SolidMesh& mesh) {
-    std::ostringstream obj;
-    obj.precision(17);
-    for (const DVec3& v : mesh.vertices) obj << "v " << v.x << " " << v.y << " " << v.z << "\n";
-    for (const auto& t : mesh.triangles)
-        obj << "f " << t[0] + 1 << " " << t[1] + 1 << " " << t[2] + 1 << "\n";
-    return obj.str();
-}
-
 bool inside_any(const std::vector<brush::Brush>& brushes, const DVec3& p) {
     for (const brush::Brush& b : brushes) {
         bool inside = true;
@@ -75,7 +65,8 @@ bool inside_any(const std::vector<brush::Brush>& brushes, const DVec3& p) {
 TEST_CASE(
     "model entity: \"hulls\" collision is the model's convex decomposition, capped, scaled and turned") {
     ScratchDataHome home;
-    test::write_file(home.models() / "arch.obj", mesh_obj(brush::bench::arch())); // 4 wide, 4 tall, 1 deep
+    test::write_file(home.models() / "arch.obj",
+                     brush::bench::obj_text(brush::bench::arch())); // 4 wide, 4 tall, 1 deep
     Entity arch = model_entity("arch.obj", "hulls", 2.0f);
     arch.rotation = {90, 0, 0};
     auto hulls = model_collision(arch);

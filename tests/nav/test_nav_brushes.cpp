@@ -9,8 +9,6 @@
 
 #include <doctest/doctest.h>
 
-#include <sstream>
-
 using namespace ks;
 using namespace ks::test;
 
@@ -114,12 +112,8 @@ TEST_CASE("a model entity's collision is in the mesh: its box, hull and triangle
 
 TEST_CASE("a model's \"hulls\" collision opens the arch that its single hull fills") {
     test::ScratchDataHome home;
-    std::ostringstream obj; // the arch of bench/brush/solid_meshes.h: 4 wide, 4 tall, 1 deep, opening 2 x 3
-    const brush::bench::SolidMesh arch = brush::bench::arch();
-    for (const DVec3& v : arch.vertices) obj << "v " << v.x << " " << v.y << " " << v.z << "\n";
-    for (const auto& t : arch.triangles)
-        obj << "f " << t[0] + 1 << " " << t[1] + 1 << " " << t[2] + 1 << "\n";
-    test::write_file(home.models() / "arch.obj", obj.str());
+    // bench/brush/solid_meshes.h's arch: 4 wide, 4 tall, 1 deep, the opening 2 wide and 3 tall
+    test::write_file(home.models() / "arch.obj", brush::bench::obj_text(brush::bench::arch()));
     auto corridor = [](const char* collision) {
         level::Level lv;
         lv.name = "arch";
