@@ -101,15 +101,9 @@ CpuRow measure_cpu(int sources, int frames) {
 }
 
 int run(int argc, const char* const* argv) {
-    bool quick = false;
-    for (int i = 1; i < argc; ++i) {
-        if (!std::strcmp(argv[i], "--quick")) {
-            quick = true;
-        } else {
-            std::fprintf(stderr, "ks_bench audio: unknown option '%s' (options: --quick)\n", argv[i]);
-            return 2;
-        }
-    }
+    const std::optional<bool> quick_given = ks::bench::quick_option(argc, argv);
+    if (!quick_given) return 2;
+    const bool quick = *quick_given;
     std::printf("load average %s\n\naudio CPU per 60 Hz frame (update + loopback mix of %d stereo samples)\n",
                 physics::bench::load_average().c_str(), kFrameSamples);
     std::printf("%8s %8s %10s %10s %10s %8s\n", "sources", "active", "cpu µs", "wall µs", "p99 µs", "vs 8");

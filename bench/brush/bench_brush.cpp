@@ -259,15 +259,9 @@ std::vector<Row> run_set(const std::string& where, const DVec3& centre, int coun
 }
 
 int run(int argc, const char* const* argv) {
-    bool quick = false;
-    for (int i = 1; i < argc; ++i) {
-        if (!std::strcmp(argv[i], "--quick"))
-            quick = true;
-        else {
-            std::fprintf(stderr, "ks_bench brush: unknown option '%s' (options: --quick)\n", argv[i]);
-            return 2;
-        }
-    }
+    const std::optional<bool> quick_given = ks::bench::quick_option(argc, argv);
+    if (!quick_given) return 2;
+    const bool quick = *quick_given;
     const int count = quick ? 100 : 1000, reps = quick ? 1 : 3;
     std::printf("load average %s; %d random snapped brushes (grid %g) per place, best of %d passes\n\n",
                 physics::bench::load_average().c_str(), count, kGrid, reps);

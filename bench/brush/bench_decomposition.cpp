@@ -62,15 +62,9 @@ double one_hull_volume(const SolidMesh& m) {
 }
 
 int run(int argc, const char* const* argv) {
-    bool quick = false;
-    for (int i = 1; i < argc; ++i) {
-        if (!std::strcmp(argv[i], "--quick"))
-            quick = true;
-        else {
-            std::fprintf(stderr, "ks_bench decomposition: unknown option '%s' (options: --quick)\n", argv[i]);
-            return 2;
-        }
-    }
+    const std::optional<bool> quick_given = ks::bench::quick_option(argc, argv);
+    if (!quick_given) return 2;
+    const bool quick = *quick_given;
     const std::vector<int> caps = quick ? std::vector<int>{8} : std::vector<int>{1, 2, 4, 8, 16};
     const std::vector<int> resolutions = quick ? std::vector<int>{48} : std::vector<int>{32, 48, 64};
     std::printf("load average %s; CPU time of one decomposition (best of %d)\n\n",

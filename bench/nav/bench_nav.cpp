@@ -146,14 +146,9 @@ void write_sweep(const std::vector<nav_sweep::SweepRow>& rows) {
 
 int run(int argc, const char* const* argv) {
     Options o;
-    for (int i = 1; i < argc; ++i) {
-        if (!std::strcmp(argv[i], "--quick"))
-            o.quick = true;
-        else {
-            std::fprintf(stderr, "ks_bench nav: unknown option '%s' (options: --quick)\n", argv[i]);
-            return 2;
-        }
-    }
+    const std::optional<bool> quick = ks::bench::quick_option(argc, argv);
+    if (!quick) return 2;
+    o.quick = *quick;
     const nav::NavSettings settings = robot_settings();
     auto main_level = level::load_level_file(paths::level("main.json"));
     if (!main_level) {

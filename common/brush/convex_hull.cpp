@@ -109,12 +109,9 @@ Result<HullMeasure> convex_hull_measure(std::span<const DVec3> points) {
 }
 
 Result<double> convex_hull_volume(std::span<const DVec3> points) {
-    Result<std::vector<coordT>> coords = hull_input(points);
-    if (!coords) return coords.error();
-    QhullRun run(*coords);
-    if (run.exit_code != 0) return qhull_failure(run);
-    qh_getarea(run.qh, run.qh->facet_list);
-    return static_cast<double>(run.qh->totvol);
+    Result<HullMeasure> measure = convex_hull_measure(points);
+    if (!measure) return measure.error();
+    return measure->volume;
 }
 
 Result<Hull> convex_hull(std::span<const DVec3> points) {
