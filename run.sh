@@ -51,7 +51,7 @@ install_missing_packages() { # [extra packages...]
 
 # When both passes run, every test runs once. The Release pass runs the suites a sanitizer cannot improve:
 # those that judge a picture or a timing (pixels of menus, views, particles, the rifle and its shadows, brushes and their frame times; idle
-# CPU), whose code paths run sanitized in the real-input suites and render/test_render_gl, and the build-system
+# CPU), whose code paths run sanitized in the real-input suites and render/test_render_gl(_main_level), and the build-system
 # checks (tooling/: module boundaries, the install tree), which test CMake rather than our code. The sanitized
 # pass runs all the others, the real-input window suites (xdotool) among them: their assertions, ImGui's
 # included, are on only there. docs/building.md, "Build times", has the measurements behind the split.
