@@ -51,6 +51,17 @@ TEST_CASE("scan finds duplicate keys and numbers that overflow a double") {
     CHECK(map.overflowing_numbers()[0].path == "b[0]");
     CHECK(map.overflowing_numbers()[0].token == "1e999");
     CHECK(map.overflowing_numbers()[1].token == "-2E+400");
+
+    // Without an exponent only 309 digits or more overflow; the index path is "[n]" for any n.
+    const std::string digits308 = "1" + std::string(307, '0'), digits320 = "9" + std::string(319, '0');
+    std::string many = "[";
+    for (int i = 0; i < 12; ++i) many += "0.5, ";
+    many += digits308 + ", " + digits320 + ", -" + digits320 + "]";
+    const PositionMap wide = PositionMap::scan(many);
+    REQUIRE(wide.overflowing_numbers().size() == 2);
+    CHECK(wide.overflowing_numbers()[0].path == "[13]");
+    CHECK(wide.overflowing_numbers()[1].path == "[14]");
+    CHECK(wide.overflowing_numbers()[1].token == "-" + digits320);
 }
 
 TEST_CASE("the lookup index is built from the map's own copy of the text, once, after a move") {
