@@ -37,6 +37,7 @@ std::vector<Shape> shapes() {
         {"table", table()},
         {"ring", ring(2.0, 0.5, 48, 16)},
         {"ball", ball(16, 32, 1.0)},
+        {"ring, 98 304 tris", ring(2.0, 0.5, 384, 128)},
         {"thin L (0.01)", boxes({{{0, 0, 0}, {4, 0.01, 1}}, {{0, 0.01, 0}, {0.01, 4, 1}}})}};
     for (Shape& s : out)
         if (s.mesh.volume == 0.0) s.mesh.volume = std::abs(enclosed_volume(s.mesh));
@@ -69,13 +70,13 @@ int run(int argc, const char* const* argv) {
     const std::vector<int> resolutions = quick ? std::vector<int>{48} : std::vector<int>{32, 48, 64};
     std::printf("load average %s; CPU time of one decomposition (best of %d)\n\n",
                 physics::bench::load_average().c_str(), quick ? 1 : 2);
-    std::printf("%-20s %5s %4s %9s %5s %5s %10s %10s %11s\n", "shape", "cap", "res", "ms", "hulls", "parts",
+    std::printf("%-22s %5s %4s %9s %5s %5s %10s %10s %11s\n", "shape", "cap", "res", "ms", "hulls", "parts",
                 "vs solid", "vs 1 hull", "outside");
     std::vector<std::string> csv;
     for (const Shape& s : shapes()) {
         const double one = one_hull_volume(s.mesh);
         if (s.closed)
-            std::printf("%-20s %5s %4s %9s %5s %5s %9.1f%% %10s %11s\n", s.name.c_str(), "1 hull", "-", "-",
+            std::printf("%-22s %5s %4s %9s %5s %5s %9.1f%% %10s %11s\n", s.name.c_str(), "1 hull", "-", "-",
                         "1", "-", 100.0 * (one / s.mesh.volume - 1.0), "100.0%", "0");
         for (int resolution : resolutions)
             for (int cap : caps) {
@@ -90,7 +91,7 @@ int run(int argc, const char* const* argv) {
                     best = std::min(best, cpu_seconds() - start);
                 }
                 if (!d) {
-                    std::printf("%-20s %5d %4d refused: %s\n", s.name.c_str(), cap, resolution,
+                    std::printf("%-22s %5d %4d refused: %s\n", s.name.c_str(), cap, resolution,
                                 d.error().str().c_str());
                     continue;
                 }
@@ -106,7 +107,7 @@ int run(int argc, const char* const* argv) {
                 const double outside = std::max(0.0, surface_outside(s.mesh, hulls, 20000, rng));
                 const double vs_solid = s.closed ? 100.0 * (d->hull_volume / s.mesh.volume - 1.0) : 0.0;
                 const double vs_one = one > 0 ? 100.0 * d->hull_volume / one : 0.0;
-                std::printf("%-20s %5d %4d %9.2f %5zu %5d %9s %9.1f%% %11.2g\n", s.name.c_str(), cap,
+                std::printf("%-22s %5d %4d %9.2f %5zu %5d %9s %9.1f%% %11.2g\n", s.name.c_str(), cap,
                             resolution, best * 1e3, d->hulls.size(), d->parts,
                             s.closed ? fmt("%.1f%%", vs_solid).c_str() : "-", vs_one, outside);
                 csv.push_back(s.name + "," + std::to_string(cap) + "," + std::to_string(resolution) + "," +

@@ -334,13 +334,43 @@ struct Piece {
     std::vector<DVec3> corners;
     double volume = 0.0;
     double area = 0.0;
+    // What merges are priced by: the corners themselves when there are few; for a dense hull (a part of a
+    // 100 000-triangle statue has thousands of corners) the hull of its corners snapped to a grid of
+    // kProxyCells along its largest side, so that pricing every pair stays cheap.
+    std::vector<DVec3> proxy;
+    double proxy_volume = 0.0;
 };
+
+constexpr std::size_t kProxyCorners = 64;
+constexpr double kProxyCells = 12.0;
+
+void make_proxy(Piece& piece) {
+    piece.proxy = piece.corners;
+    piece.proxy_volume = piece.volume;
+    if (piece.corners.size() <= kProxyCorners) return;
+    DVec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+    for (const DVec3& c : piece.corners) lo = glm::min(lo, c), hi = glm::max(hi, c);
+    const DVec3 extent = hi - lo;
+    const double step = std::max({extent.x, extent.y, extent.z}) / kProxyCells;
+    std::vector<DVec3> snapped;
+    for (const DVec3& c : piece.corners) snapped.push_back(lo + glm::round((c - lo) / step) * step);
+    std::sort(snapped.begin(), snapped.end(), [](const DVec3& a, const DVec3& b) {
+        return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+    });
+    snapped.erase(std::unique(snapped.begin(), snapped.end()), snapped.end());
+    Result<HullMeasure> measure = convex_hull_measure(snapped);
+    if (!measure) return; // a thin piece may snap flat: it keeps its own corners
+    piece.proxy.clear();
+    for (int i : measure->corners) piece.proxy.push_back(snapped[static_cast<std::size_t>(i)]);
+    piece.proxy_volume = measure->volume;
+}
 
 std::optional<Piece> piece_of(std::span<const DVec3> points) {
     Result<HullMeasure> measure = convex_hull_measure(points);
     if (!measure) return std::nullopt;
-    Piece piece{{}, measure->volume, measure->area};
+    Piece piece{{}, measure->volume, measure->area, {}, 0.0};
     for (int i : measure->corners) piece.corners.push_back(points[static_cast<std::size_t>(i)]);
+    make_proxy(piece);
     return piece;
 }
 
@@ -348,6 +378,14 @@ std::optional<Piece> merged(const Piece& a, const Piece& b) {
     std::vector<DVec3> points = a.corners;
     points.insert(points.end(), b.corners.begin(), b.corners.end());
     return piece_of(points);
+}
+
+// The volume of the hull of both pieces' proxies.
+std::optional<double> merged_proxy_volume(const Piece& a, const Piece& b) {
+    std::vector<DVec3> points = a.proxy;
+    points.insert(points.end(), b.proxy.begin(), b.proxy.end());
+    Result<double> volume = convex_hull_volume(points);
+    return volume ? std::optional<double>(*volume) : std::nullopt;
 }
 
 // Phase two: the pair whose merged hull adds the least volume to the two hulls is merged while there are
@@ -362,10 +400,10 @@ void merge(std::vector<Piece>& pieces, int cap, double convex_share) {
     };
     std::vector<std::vector<Cost>> costs(n, std::vector<Cost>(n));
     auto cost = [&](std::size_t i, std::size_t j) {
-        const std::optional<Piece> m = merged(pieces[i], pieces[j]);
-        if (!m) return Cost{};
-        const double added = m->volume - pieces[i].volume - pieces[j].volume;
-        return Cost{added, std::abs(added) <= convex_share * m->volume};
+        const std::optional<double> volume = merged_proxy_volume(pieces[i], pieces[j]);
+        if (!volume) return Cost{};
+        const double added = *volume - pieces[i].proxy_volume - pieces[j].proxy_volume;
+        return Cost{added, std::abs(added) <= convex_share * *volume};
     };
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t j = i + 1; j < n; ++j) costs[i][j] = cost(i, j);
@@ -389,6 +427,20 @@ void merge(std::vector<Piece>& pieces, int cap, double convex_share) {
         for (std::size_t k = 0; k < pieces.size(); ++k)
             if (k != bi) costs[std::min(k, bi)][std::max(k, bi)] = cost(std::min(k, bi), std::max(k, bi));
     }
+}
+
+// Several hulls whose volumes add up to more than one hull of them all (a ring in two pieces whose hulls
+// overlap) are worse collision than that one hull, and more of it: one hull instead.
+void one_hull_if_smaller(std::vector<Piece>& pieces) {
+    if (pieces.size() < 2) return;
+    std::vector<DVec3> all;
+    double total = 0.0;
+    for (const Piece& piece : pieces) {
+        all.insert(all.end(), piece.corners.begin(), piece.corners.end());
+        total += piece.volume;
+    }
+    std::optional<Piece> one = piece_of(all);
+    if (one && one->volume <= total) pieces = {std::move(*one)};
 }
 
 } // namespace
@@ -425,6 +477,7 @@ Result<ConvexDecomposition> decompose_convex(std::span<const DVec3> vertices, Tr
         return Error("the mesh spans no volume: every part's hull is flat", Location({}, 0, 0, "vertices"),
                      "give a mesh with volume (a flat model takes a box or no collision)");
     merge(pieces, options.max_hulls, 1e-6);
+    one_hull_if_smaller(pieces);
     for (Piece& piece : pieces) {
         out.hull_volume += piece.volume;
         out.hulls.push_back(std::move(piece.corners));

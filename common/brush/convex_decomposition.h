@@ -12,7 +12,9 @@
 // mesh itself clipped to the part's box, plus the box corners inside the solid, so the hulls hold every
 // point of the surface exactly, not a voxel approximation. Phase two merges: the pair whose merged hull adds
 // the least volume is merged while there are more hulls than the cap, and pairs whose union is convex anyway
-// (a table's top cut in two) are merged whatever the count. Merged hulls may overlap.
+// (a table's top cut in two) are merged whatever the count. Merged hulls may overlap; when the hulls add up
+// to more volume than one hull of the whole mesh (a ring in two overlapping pieces), that one hull is
+// returned.
 #include "core/math.h"
 #include "core/result.h"
 

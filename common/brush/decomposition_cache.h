@@ -10,7 +10,7 @@
 namespace ks::brush {
 
 // Bump when decompose_convex makes something else from the same input, or what the cache stores changes.
-inline constexpr std::uint32_t kDecompositionCacheVersion = 1;
+inline constexpr std::uint32_t kDecompositionCacheVersion = 2;
 
 Result<ConvexDecomposition> decompose_convex_cached(
     std::span<const DVec3> vertices, std::span<const std::array<std::uint32_t, 3>> triangles,
