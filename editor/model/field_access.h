@@ -27,7 +27,7 @@ struct FieldDescriptor {
     std::string unit;
     FieldKind kind = FieldKind::Float;
     std::vector<std::string> options; // Choice only
-    bool slider = false;              // Float: shown as a slider over [min, max] (FieldInfo::slider)
+    bool slider = false;              // Float, Int: shown as a slider over [min, max] (FieldInfo::slider)
     bool operator==(const FieldDescriptor&) const = default;
 };
 

@@ -120,8 +120,9 @@ bool FieldWidgets::edit(const PanelContext& ctx, const FieldDescriptor& field, F
     }
     case FieldKind::Int: {
         int v = static_cast<int>(std::get<double>(value));
-        changed = ImGui::DragInt(id, &v, 0.2f, static_cast<int>(field.min), static_cast<int>(field.max), "%d",
-                                 ImGuiSliderFlags_AlwaysClamp);
+        const int low = static_cast<int>(field.min), high = static_cast<int>(field.max);
+        changed = field.slider ? ImGui::SliderInt(id, &v, low, high, "%d", ImGuiSliderFlags_AlwaysClamp)
+                               : ImGui::DragInt(id, &v, 0.2f, low, high, "%d", ImGuiSliderFlags_AlwaysClamp);
         if (changed) value = static_cast<double>(v);
         break;
     }
