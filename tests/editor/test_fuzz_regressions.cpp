@@ -10,11 +10,14 @@
 
 #include "core/log.h"
 #include "model/autosave.h"
+#include "model/prefab.h"
 #include "model/prefab_library.h"
 #include "model/recent_files.h"
 #include "model/script.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -38,6 +41,38 @@ void age(const fs::path& file) {
     fs::last_write_time(file, fs::last_write_time(file) - std::chrono::seconds(10));
 }
 } // namespace
+
+TEST_CASE("fuzz regressions: every kept prefab loads, saves and loads back the same, or fails clearly") {
+    // The fuzz target's properties (fuzz/fuzz_prefab_loader.cpp) over its kept corpus.
+    const auto inputs = hardening::fuzz_inputs("fuzz_prefab_loader");
+    REQUIRE_MESSAGE(!inputs.empty(), "fuzz/corpus/fuzz_prefab_loader.tar.xz holds the kept corpus");
+    const Frame frame{Vec3(12.5f, 0.0f, -40.0f), 90.0f};
+    int loaded = 0;
+    for (const auto& path : inputs) {
+        CAPTURE(path);
+        const std::string name = path.filename().string();
+        std::vector<Error> warnings;
+        auto prefab = prefab_from_text(ks::test::read_file(path), name, &warnings);
+        if (!prefab.ok()) {
+            hardening::check_clear_error(prefab.error(), name);
+            continue;
+        }
+        ++loaded;
+        for (const Error& w : warnings) hardening::check_clear_error(w, name);
+        const std::string saved = prefab_to_text(*prefab);
+        auto again = prefab_from_text(saved, "resaved.prefab.json");
+        REQUIRE_MESSAGE(again.ok(), again.error().str());
+        CHECK(prefab_to_text(*again) == saved);
+        for (const level::Entity& entity : prefab->entities) {
+            const level::Entity back = entity_out_of_frame(entity_into_frame(entity, frame), frame);
+            const Vec3 d = back.position - entity.position;
+            const float size = std::max({1.0f, std::abs(entity.position.x), std::abs(entity.position.y),
+                                         std::abs(entity.position.z)});
+            CHECK(std::abs(d.x) + std::abs(d.y) + std::abs(d.z) <= 1e-4f * size);
+        }
+    }
+    MESSAGE(inputs.size() << " prefab fuzz inputs replayed, " << loaded << " loaded");
+}
 
 TEST_CASE("fuzz regressions: every kept script parses or fails with a clear error on a real line") {
     const auto inputs = hardening::fuzz_inputs("fuzz_editor_script");
