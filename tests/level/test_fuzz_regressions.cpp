@@ -3,6 +3,7 @@
 // level or a clear error naming the file, and a failed save leaves the previous file as it was.
 #include "core/log.h"
 #include "hardening/fault_support.h"
+#include "level/campaign.h"
 #include "level/level_io.h"
 #include "level_builders.h"
 
@@ -43,6 +44,31 @@ TEST_CASE("fuzz regressions: every kept level input loads or fails with a clear 
         check_level_input(ks::test::read_file(path), path.filename().string());
     }
     MESSAGE(inputs.size() << " level fuzz inputs replayed");
+}
+
+TEST_CASE(
+    "fuzz regressions: every kept campaign input loads, saves and loads back the same, or fails clearly") {
+    // The fuzz target's properties (fuzz/fuzz_campaign_loader.cpp): level names looked up in levels/.
+    const auto inputs = hardening::fuzz_inputs("fuzz_campaign_loader");
+    REQUIRE_MESSAGE(!inputs.empty(), "fuzz/corpus/fuzz_campaign_loader.tar.xz holds the kept corpus");
+    const fs::path folder = ks::test::source_dir() / "levels";
+    int loaded = 0;
+    for (const auto& path : inputs) {
+        CAPTURE(path);
+        const std::string name = path.filename().string();
+        auto campaign = load_campaign_string(ks::test::read_file(path), name, folder);
+        if (!campaign.ok()) {
+            hardening::check_clear_error(campaign.error(), name);
+            continue;
+        }
+        ++loaded;
+        CHECK_FALSE(campaign->levels.empty());
+        const std::string saved = save_campaign_string(*campaign);
+        auto again = load_campaign_string(saved, "resaved.json", folder);
+        REQUIRE_MESSAGE(again.ok(), again.error().str());
+        CHECK(save_campaign_string(*again) == saved);
+    }
+    MESSAGE(inputs.size() << " campaign fuzz inputs replayed, " << loaded << " loaded");
 }
 
 TEST_CASE("faults: damaged copies of the main level fail with an error naming the file") {
