@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -114,6 +115,14 @@ void check_csg(const Brush& a, const Brush& b) {
     }
 }
 
+double shortest_edge(const Brush& b) {
+    double shortest = std::numeric_limits<double>::max();
+    for (const ks::brush::Edge& e : b.edges())
+        shortest = std::min(shortest, glm::length(b.vertices()[static_cast<std::size_t>(e.v1)] -
+                                                  b.vertices()[static_cast<std::size_t>(e.v0)]));
+    return shortest;
+}
+
 // A level's placement: a turn of whole degrees about the three axes and a move in 1/8 units.
 void check_placement(const Brush& a, Bytes& bytes) {
     const DVec3 degrees(bytes.next_short() % 360, bytes.next_short() % 360, bytes.next_short() % 360);
@@ -127,10 +136,19 @@ void check_placement(const Brush& a, Bytes& bytes) {
         return;
     }
     audit(*carried, "placed: not a valid brush");
-    if (derived.ok() &&
-        (!(*carried == *derived) || carried->vertices().size() != derived->vertices().size() ||
-         carried->edges().size() != derived->edges().size()))
-        ks::fuzz::fail("placed and transformed differ in faces or topology");
+    if (!derived.ok()) return;
+    if (!(*carried == *derived)) ks::fuzz::fail("placed and transformed differ in faces");
+    // Deriving again may merge the ends of an edge near the 1e-8 tolerance that carrying keeps (a 5-face
+    // brush of 7 corners turned 42 degrees came back with 6; the volumes agreed to 1e-11): both are valid
+    // brushes of the same planes. The corners and edges must match only when no edge is that short.
+    const double size = glm::length(a.bounds_max() - a.bounds_min());
+    if (std::min(shortest_edge(*carried), shortest_edge(*derived)) > 1e-6 * size) {
+        if (carried->vertices().size() != derived->vertices().size() ||
+            carried->edges().size() != derived->edges().size())
+            ks::fuzz::fail("placed and transformed differ in topology");
+    } else if (std::abs(carried->volume() - derived->volume()) > 1e-9 * std::max(1.0, carried->volume())) {
+        ks::fuzz::fail("placed and transformed differ in volume");
+    }
 }
 
 } // namespace
