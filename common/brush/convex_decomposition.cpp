@@ -150,6 +150,14 @@ bool only_touches(const std::vector<DVec3>& piece, const std::array<DVec3, 3>& t
     return in_a_side && !keep_in_side;
 }
 
+// Sorts the points and drops repeats (Qhull's input, in a deterministic order).
+void keep_each_once(std::vector<DVec3>& points) {
+    std::sort(points.begin(), points.end(), [](const DVec3& a, const DVec3& b) {
+        return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+    });
+    points.erase(std::unique(points.begin(), points.end()), points.end());
+}
+
 // Whether `p` is inside the closed mesh: the parity of a ray's crossings (Möller-Trumbore), along a
 // direction no modelled surface is likely to graze.
 bool inside_by_parity(const DVec3& p, std::span<const DVec3> vertices, Triangles triangles) {
@@ -202,10 +210,7 @@ std::vector<DVec3> part_points(const SolidVoxels& voxels, const Part& part, std:
             (state == Voxel::Surface && inside_by_parity(nudged, vertices, triangles)))
             points.push_back(p);
     }
-    std::sort(points.begin(), points.end(), [](const DVec3& a, const DVec3& b) {
-        return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
-    });
-    points.erase(std::unique(points.begin(), points.end()), points.end());
+    keep_each_once(points);
     if (points.size() <= kMaxHullPoints && convex_hull_volume(points)) return points;
     std::vector<DVec3> grid;
     voxels.hull_points(box, grid);
@@ -354,10 +359,7 @@ void make_proxy(Piece& piece) {
     const double step = std::max({extent.x, extent.y, extent.z}) / kProxyCells;
     std::vector<DVec3> snapped;
     for (const DVec3& c : piece.corners) snapped.push_back(lo + glm::round((c - lo) / step) * step);
-    std::sort(snapped.begin(), snapped.end(), [](const DVec3& a, const DVec3& b) {
-        return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
-    });
-    snapped.erase(std::unique(snapped.begin(), snapped.end()), snapped.end());
+    keep_each_once(snapped);
     Result<HullMeasure> measure = convex_hull_measure(snapped);
     if (!measure) return; // a thin piece may snap flat: it keeps its own corners
     piece.proxy.clear();
