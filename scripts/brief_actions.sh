@@ -22,25 +22,10 @@ ROOT=$(cd "$(dirname "$0")/.." && pwd)
 BUILD=${BUILD:-$ROOT/build}
 EDITOR_BIN=$BUILD/bin/killswitch-editor
 GAME_BIN=$BUILD/bin/killswitch
-WORK="" SHOTS="" SLOW=0
-while [ $# -gt 0 ]; do
-    case $1 in
-    --keep) WORK=$2; shift 2 ;;
-    --shots) SHOTS=$2; shift 2 ;;
-    --slow) SLOW=1; shift ;;
-    -h | --help) sed -n 2,20p "$0"; exit 0 ;;
-    *) echo "brief_actions.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
-    esac
-done
-for tool in xdotool jq; do
-    command -v $tool >/dev/null || { echo "brief_actions.sh: needs $tool (apt-get install $tool)" >&2; exit 2; }
-done
-[ -x "$EDITOR_BIN" ] && [ -x "$GAME_BIN" ] ||
-    { echo "brief_actions.sh: build killswitch-editor and killswitch first ($BUILD/bin)" >&2; exit 2; }
-if [ -z "$WORK" ]; then WORK=$(mktemp -d /tmp/brief_actions.XXXXXX); fi
-mkdir -p "$WORK"
-WORK=$(cd "$WORK" && pwd)
-[ -n "$SHOTS" ] && mkdir -p "$SHOTS" && SHOTS=$(cd "$SHOTS" && pwd)
+# --- the editor's state and the counted actions: scripts/brief_lib.sh --------------------------------
+# shellcheck source=scripts/brief_lib.sh
+. "$ROOT/scripts/brief_lib.sh"
+brief_setup brief_actions.sh brief_actions "xdotool jq" "$@"
 STATUS=$WORK/status.json
 PIDS=()
 cleanup() {
@@ -60,9 +45,6 @@ if [ -z "${DISPLAY:-}" ] || [ "${KS_BRIEF_XVFB:-0}" = 1 ]; then
     for _ in $(seq 100); do [ -e /tmp/.X11-unix/X$n ] && break; sleep 0.1; done
 fi
 
-# --- the editor's state and the counted actions: scripts/brief_lib.sh --------------------------------
-# shellcheck source=scripts/brief_lib.sh
-. "$ROOT/scripts/brief_lib.sh"
 # world X Y Z: where a world point is in the current axis view (window coordinates "x y").
 world() {
     wait_for "an axis view" '.axes_on_screen != null'

@@ -2,8 +2,36 @@
 # Shared by the briefs replayed with real X input (scripts/brief_actions.sh: the level brief;
 # scripts/dojo_brief_actions.sh: the animator's): reading the editor's --status-file, waiting on it (never a
 # fixed sleep), and the counted actions (a click, a drag, a key chord or a typed value is one action).
-# Sourced, not run. Expects STATUS (the status file), EDITOR_PID, SLOW (1: a second after each action) and
-# SHOTS (a folder for screenshots, or empty).
+# Sourced, not run. brief_setup needs BUILD, EDITOR_BIN and GAME_BIN; the rest expects STATUS (the status
+# file), EDITOR_PID, SLOW (1: a second after each action) and SHOTS (a folder for screenshots, or empty).
+
+# --- the command line and the checks both briefs start with ---------------------------------------------
+# brief_setup NAME PREFIX "TOOLS" ARGS...: reads --keep DIR, --shots DIR, --slow and --help (the calling
+# script's header, lines 2-20) from ARGS; checks TOOLS and that $EDITOR_BIN and $GAME_BIN are built; sets
+# WORK (made and absolute: DIR, or a fresh /tmp/PREFIX.XXXXXX), SHOTS (made and absolute, or empty) and SLOW.
+brief_setup() {
+    local name=$1 prefix=$2 tools=$3 tool
+    shift 3
+    WORK="" SHOTS="" SLOW=0
+    while [ $# -gt 0 ]; do
+        case $1 in
+        --keep) WORK=$2; shift 2 ;;
+        --shots) SHOTS=$2; shift 2 ;;
+        --slow) SLOW=1; shift ;;
+        -h | --help) sed -n 2,20p "$0"; exit 0 ;;
+        *) echo "$name: unknown option $1 (see --help)" >&2; exit 2 ;;
+        esac
+    done
+    for tool in $tools; do
+        command -v "$tool" >/dev/null || { echo "$name: needs $tool (apt-get install $tool)" >&2; exit 2; }
+    done
+    [ -x "$EDITOR_BIN" ] && [ -x "$GAME_BIN" ] ||
+        { echo "$name: build killswitch-editor and killswitch first ($BUILD/bin)" >&2; exit 2; }
+    if [ -z "$WORK" ]; then WORK=$(mktemp -d "/tmp/$prefix.XXXXXX"); fi
+    mkdir -p "$WORK"
+    WORK=$(cd "$WORK" && pwd)
+    if [ -n "$SHOTS" ]; then mkdir -p "$SHOTS" && SHOTS=$(cd "$SHOTS" && pwd); fi
+}
 
 # --- reading the editor's state ------------------------------------------------------------------------
 status() { cat "$STATUS" 2>/dev/null || echo '{}'; }

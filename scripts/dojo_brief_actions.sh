@@ -24,25 +24,10 @@ ROOT=$(cd "$(dirname "$0")/.." && pwd)
 BUILD=${BUILD:-$ROOT/build}
 EDITOR_BIN=$BUILD/bin/killswitch-editor
 GAME_BIN=$BUILD/bin/killswitch
-WORK="" SHOTS="" SLOW=0
-while [ $# -gt 0 ]; do
-    case $1 in
-    --keep) WORK=$2; shift 2 ;;
-    --shots) SHOTS=$2; shift 2 ;;
-    --slow) SLOW=1; shift ;;
-    -h | --help) sed -n 2,20p "$0"; exit 0 ;;
-    *) echo "dojo_brief_actions.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
-    esac
-done
-for tool in xdotool jq bc; do
-    command -v $tool >/dev/null || { echo "dojo_brief_actions.sh: needs $tool (apt-get install $tool)" >&2; exit 2; }
-done
-[ -x "$EDITOR_BIN" ] && [ -x "$GAME_BIN" ] ||
-    { echo "dojo_brief_actions.sh: build killswitch-editor and killswitch first ($BUILD/bin)" >&2; exit 2; }
-if [ -z "$WORK" ]; then WORK=$(mktemp -d /tmp/dojo_brief.XXXXXX); fi
-mkdir -p "$WORK"
-WORK=$(cd "$WORK" && pwd)
-[ -n "$SHOTS" ] && mkdir -p "$SHOTS" && SHOTS=$(cd "$SHOTS" && pwd)
+# --- the editor's state and the counted actions: scripts/brief_lib.sh --------------------------------
+# shellcheck source=scripts/brief_lib.sh
+. "$ROOT/scripts/brief_lib.sh"
+brief_setup dojo_brief_actions.sh dojo_brief "xdotool jq bc" "$@"
 STATUS=$WORK/status.json
 GAME_STATUS=$WORK/game_status.txt
 PIDS=()
@@ -74,9 +59,6 @@ if [ -z "${DISPLAY:-}" ] || [ "${KS_BRIEF_XVFB:-0}" = 1 ]; then
     for _ in $(seq 100); do [ -e /tmp/.X11-unix/X$n ] && break; sleep 0.1; done
 fi
 
-# --- the editor's state and the counted actions: scripts/brief_lib.sh ------------------------------------
-# shellcheck source=scripts/brief_lib.sh
-. "$ROOT/scripts/brief_lib.sh"
 # dspot NAME: window coordinates of a widget of the Dojo tab ("x y").
 dspot() {
     wait_for "the dojo's spot $1" ".dojo.spots[\"$1\"] != null"
