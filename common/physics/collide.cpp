@@ -263,8 +263,8 @@ namespace {
 // `away` points from the shape to the core and is computed where it is exact — in the shape's frame, or
 // analytically — not as the difference of two world points: 4000 units from the origin a float world point
 // has lost 4e-4 of its digits, enough to tilt a normal by 10 % when the core is 0.003 from the shape.
-std::optional<Contact> from_distance(float distance, const Vec3& on_core, const Vec3& on_shape,
-                                     const Vec3& away, float r, float margin) {
+inline std::optional<Contact> from_distance(float distance, const Vec3& on_core, const Vec3& on_shape,
+                                            const Vec3& away, float r, float margin) {
     if (distance > r + margin) return std::nullopt;
     Contact c;
     const float len = glm::length(away);
@@ -351,6 +351,8 @@ std::optional<Contact> capsule_box_in(const Segment& s, float r, const Vec3& hal
     const Vec3 on_core(px, sy, pz), on_box(cx, cy, cz);
     const Vec3 delta = on_core - on_box;
     const float dist = glm::length(delta);
+    // from_distance's own refusal, before the frame changes
+    if (dist > kCoreTouch && dist > r + contact_margin) return std::nullopt;
     if (dist > kCoreTouch) {
         return from_distance(dist, xf.to_world(on_core), xf.to_world(on_box), xf.dir_to_world(delta), r,
                              contact_margin);

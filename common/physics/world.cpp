@@ -123,6 +123,7 @@ void World::set_enabled(BodyId id, bool enabled) {
         b->enabled = enabled;
         if (!static_dirty_ && id.index < static_slot_of_.size() && static_slot_of_[id.index] != kNone) {
             const std::uint32_t slot = static_slot_of_[id.index];
+            if (static_prims_[slot].enabled != enabled) ++enabled_epoch_;
             static_prims_[slot].enabled = enabled;
             BoxPacket& bp = static_packets_[static_leaf_of_[slot]];
             bp.layers[slot - bp.first_slot] = enabled ? b->layers : 0u;

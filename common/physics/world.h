@@ -11,6 +11,7 @@
 #include "core/result.h"
 #include "physics/bvh.h"
 #include "physics/character.h"
+#include "physics/mover_grid.h"
 
 #include <cstdint>
 #include <functional>
@@ -191,6 +192,11 @@ class World {
         std::uint64_t epoch = 0;      // static_epoch_ it was gathered in (0: never)
         const void* bodies = nullptr; // bodies_.data() then (the obstacles point into bodies_)
         std::vector<Entry> entries;   // static bodies whose bounds overlap `region`, in slot order
+        // The entries that pass the filters (enabled, layers & mask), for the mask and enabled_epoch_
+        // they were chosen with: a step reads only these, not every entry's body.
+        std::vector<Obstacle> usable;
+        std::uint64_t usable_epoch = ~std::uint64_t{0};
+        std::uint32_t usable_mask = 0;
     };
     static constexpr float kStaticCacheMargin = 1.0f;
     struct CharacterData {
@@ -267,31 +273,17 @@ class World {
                   const RayFilter& filter, BoxHit&& box, OtherHit&& other) const;
     mutable bool static_dirty_ = true;
     mutable std::uint64_t static_epoch_ = 0; // counts static rebuilds (invalidates the characters' caches)
+    std::uint64_t enabled_epoch_ = 0;        // counts static bodies switched on or off (refilters the caches)
     bool ray_static(const geometry::Ray& ray, const Vec3& inv_dir, const StaticPrim& prim,
                     ShapeHit& hit) const;
     // Moving set (kinematic bodies, characters, kinematic triggers).
     std::vector<std::uint32_t> movers_;
-    // Movers' broadphase: a hash grid over x/z rebuilt each step from the bounds at the start of the step
-    // (counting sort: no allocation once warm). Queries widen their box by how far a mover can travel in
-    // the step, so a mover's current bounds are always found. Entries are positions in movers_ and the
-    // bounds tested are a contiguous copy kept current through the step, so a candidate that misses costs
-    // two reads of small arrays; all of it is valid only inside a step (nothing is added or removed then).
-    static constexpr float kCell = 8.0f;        // a power of two: cell_of multiplies by its exact reciprocal
-    std::vector<std::uint32_t> grid_start_;     // bucket -> first entry in grid_items_ (size buckets + 1)
-    std::vector<std::uint32_t> grid_items_;     // positions in movers_, bucket by bucket
-    std::vector<std::uint32_t> grid_oversized_; // positions of movers spanning too many cells: always visited
-    std::vector<std::uint32_t> grid_count_;
-    struct CellRange {
-        int x0, x1, z0, z1;
-    };
-    std::vector<CellRange> mover_cells_;            // by position in movers_, rebuilt each step
-    std::vector<geometry::Aabb> mover_bounds_;      // by position in movers_: the bounds now
-    std::vector<std::uint32_t> mover_position_;     // by body index: its position in movers_ (this step)
-    mutable std::vector<std::uint32_t> grid_stamp_; // by position in movers_: last query that visited it
-    mutable std::uint32_t grid_query_ = 0;
-    std::uint32_t grid_mask_ = 0;
+    // Movers' broadphase (physics/mover_grid.h), rebuilt each step from the bounds at its start; valid only
+    // inside a step (nothing is added or removed then).
+    MoverGrid mover_grid_;
+    std::vector<geometry::Aabb> mover_start_bounds_; // by position in movers_, the grid's input
+    std::vector<std::uint32_t> mover_position_;      // by body index: its position in movers_ (this step)
     bool grid_valid_ = false;
-    float mover_slack_ = 0.0f; // how far a mover may travel in this step
     std::vector<std::uint32_t> static_triggers_;
     void index_movers(float dt);
     template <class Visit>

@@ -44,6 +44,7 @@ class World::Obstacles final : public ObstacleSource {
                 cache->epoch = w.static_epoch_;
                 cache->bodies = w.bodies_.data();
                 cache->entries.clear();
+                cache->usable_epoch = ~std::uint64_t{0};
                 w.static_bvh_.aabb_query(cache->region, [&](std::uint32_t slot) {
                     const StaticPrim& p = w.static_prims_[slot];
                     const Body& b = w.bodies_[p.body];
@@ -54,11 +55,17 @@ class World::Obstacles final : public ObstacleSource {
                     return true;
                 });
             }
-            for (const StaticCache::Entry& e : cache->entries) {
-                const StaticPrim& p = w.static_prims_[e.slot]; // enabled may change between steps
-                if (p.enabled && (p.layers & mask) && e.obstacle.bounds.overlaps(region))
-                    out.push_back(e.obstacle);
+            if (cache->usable_epoch != w.enabled_epoch_ || cache->usable_mask != mask) {
+                cache->usable.clear();
+                for (const StaticCache::Entry& e : cache->entries) {
+                    const StaticPrim& p = w.static_prims_[e.slot];
+                    if (p.enabled && (p.layers & mask)) cache->usable.push_back(e.obstacle);
+                }
+                cache->usable_epoch = w.enabled_epoch_;
+                cache->usable_mask = mask;
             }
+            for (const Obstacle& o : cache->usable)
+                if (o.bounds.overlaps(region)) out.push_back(o);
         }
         const std::size_t first_mover = out.size();
         w.movers_overlapping(region, [&](std::uint32_t index) {
@@ -89,18 +96,9 @@ class World::Obstacles final : public ObstacleSource {
     const World& world_;
 };
 
-// ---- movers: hash grid over x/z -----------------------------------------------------------------------
+// ---- movers: the grid (physics/mover_grid.h) or every mover -------------------------------------------
 
 namespace {
-std::uint32_t cell_hash(int ix, int iz) {
-    return static_cast<std::uint32_t>(ix) * 73856093u ^ static_cast<std::uint32_t>(iz) * 19349663u;
-}
-// Multiplies by the reciprocal, folded to a constant: for the power-of-two cell size used (4) that equals the
-// division exactly, without a division per cell bound in the broadphase.
-int cell_of(float v, float cell) {
-    return static_cast<int>(std::floor(v * (1.0f / cell)));
-}
-constexpr int kMaxCellsPerMover = 64;
 constexpr float kDepenetrationMargin = 0.5f; // x/z units a push may add to a step's travel
 } // namespace
 
@@ -117,46 +115,16 @@ void World::index_movers(float dt) {
         }
     }
     // Depenetration can push a character further than its velocity takes it. A small margin covers the
-    // usual push; a character pushed further is visited by every later query of the step (see step()), so
-    // the margin trades the query box's width against that list, never correctness (docs/performance.md).
-    mover_slack_ = max_speed * dt + kDepenetrationMargin;
-
-    std::uint32_t buckets = 16;
-    while (buckets < 2 * movers_.size()) buckets *= 2;
-    grid_mask_ = buckets - 1;
-    grid_count_.assign(buckets + 1, 0);
-    grid_oversized_.clear();
-    // Each mover's cell range, computed once for both passes (x0 > x1 marks an oversized mover).
-    mover_cells_.resize(movers_.size());
-    mover_bounds_.resize(movers_.size());
+    // usual push; a character pushed further leaves its cell for the list every query reads, so the margin
+    // trades the query box's width against that list, never correctness (docs/performance.md).
+    const float slack = max_speed * dt + kDepenetrationMargin;
+    mover_start_bounds_.resize(movers_.size());
     if (mover_position_.size() < bodies_.size()) mover_position_.resize(bodies_.size(), kNone);
     for (std::size_t i = 0; i < movers_.size(); ++i) {
-        const geometry::Aabb& b = bodies_[movers_[i]].bounds;
-        mover_bounds_[i] = b;
+        mover_start_bounds_[i] = bodies_[movers_[i]].bounds;
         mover_position_[movers_[i]] = static_cast<std::uint32_t>(i);
-        const double nx = std::floor(b.max.x * (1.0f / kCell)) - std::floor(b.min.x * (1.0f / kCell)) + 1.0;
-        const double nz = std::floor(b.max.z * (1.0f / kCell)) - std::floor(b.min.z * (1.0f / kCell)) + 1.0;
-        CellRange& r = mover_cells_[i];
-        if (nx * nz > kMaxCellsPerMover) {
-            r = {1, 0, 0, 0};
-            grid_oversized_.push_back(static_cast<std::uint32_t>(i));
-            continue;
-        }
-        r = {cell_of(b.min.x, kCell), cell_of(b.max.x, kCell), cell_of(b.min.z, kCell),
-             cell_of(b.max.z, kCell)};
-        for (int x = r.x0; x <= r.x1; ++x)
-            for (int z = r.z0; z <= r.z1; ++z) ++grid_count_[(cell_hash(x, z) & grid_mask_) + 1];
     }
-    for (std::uint32_t k = 0; k < buckets; ++k) grid_count_[k + 1] += grid_count_[k];
-    grid_start_.assign(grid_count_.begin(), grid_count_.end());
-    grid_items_.resize(grid_count_[buckets]);
-    for (std::size_t i = 0; i < movers_.size(); ++i) { // fill in mover order: deterministic
-        const CellRange& r = mover_cells_[i];
-        for (int x = r.x0; x <= r.x1; ++x)
-            for (int z = r.z0; z <= r.z1; ++z)
-                grid_items_[grid_count_[cell_hash(x, z) & grid_mask_]++] = static_cast<std::uint32_t>(i);
-    }
-    if (grid_stamp_.size() < movers_.size()) grid_stamp_.resize(movers_.size(), 0);
+    mover_grid_.build(mover_start_bounds_, slack);
     grid_valid_ = true;
 }
 
@@ -168,29 +136,7 @@ void World::movers_overlapping(const geometry::Aabb& region, Visit&& visit) cons
             if (bodies_[index].bounds.overlaps(region)) visit(index);
         return;
     }
-    if (++grid_query_ == 0) { // stamp wrap-around: clear once every 4 billion queries
-        std::fill(grid_stamp_.begin(), grid_stamp_.end(), 0u);
-        grid_query_ = 1;
-    }
-    auto consider = [&](std::uint32_t position) {
-        if (grid_stamp_[position] == grid_query_) return; // already seen through another cell
-        grid_stamp_[position] = grid_query_;
-        if (mover_bounds_[position].overlaps(region)) visit(movers_[position]);
-    };
-    const geometry::Aabb wide = region.expanded(mover_slack_);
-    const int x0 = cell_of(wide.min.x, kCell), x1 = cell_of(wide.max.x, kCell);
-    const int z0 = cell_of(wide.min.z, kCell), z1 = cell_of(wide.max.z, kCell);
-    if (static_cast<double>(x1 - x0 + 1) * (z1 - z0 + 1) > 4.0 * (grid_mask_ + 1)) {
-        for (std::uint32_t position = 0; position < movers_.size(); ++position)
-            consider(position); // a query wider than the whole grid
-    } else {
-        for (int x = x0; x <= x1; ++x)
-            for (int z = z0; z <= z1; ++z) {
-                const std::uint32_t k = cell_hash(x, z) & grid_mask_;
-                for (std::uint32_t i = grid_start_[k]; i < grid_start_[k + 1]; ++i) consider(grid_items_[i]);
-            }
-    }
-    for (std::uint32_t position : grid_oversized_) consider(position);
+    mover_grid_.query(region, [&](std::uint32_t position) { visit(movers_[position]); });
 }
 
 // ---- step ---------------------------------------------------------------------------------------------
@@ -213,16 +159,7 @@ void World::step(float dt) {
         move_character(obstacles, b.shape.radius, b.shape.half_height, cd.settings, cd.state,
                        b.transform.position, dt, scratch_);
         b.bounds = b.shape.bounds(b.transform);
-        // Queries find movers through the cells of their start-of-step bounds, widened by the slack. One
-        // pushed further than that (out of a door that closed on it, out of a packed crowd) is visited by
-        // every later query of this step instead, so no contact with it is missed.
-        if (grid_valid_) {
-            const std::uint32_t position = mover_position_[cd.body];
-            mover_bounds_[position] = b.bounds;
-            const Vec3 moved = b.transform.position - b.previous_position;
-            if (std::max(std::abs(moved.x), std::abs(moved.z)) > mover_slack_)
-                grid_oversized_.push_back(position);
-        }
+        if (grid_valid_) mover_grid_.update(mover_position_[cd.body], b.bounds);
         const BodyId self = id_of(cd.body);
         for (const CharacterContact& cc : scratch_.contacts) {
             const BodyId other = id_of(cc.obstacle_id);
