@@ -169,4 +169,17 @@ EditorWindow::EditorWindow(const std::string& level_json, const std::vector<std:
     session_ = std::make_unique<EditorSession>(status, *process_, display_);
 }
 
+DojoWindow::DojoWindow(const std::string& view) {
+    require_window_test_tools();
+    clips_ = dir_ / "clips.json";
+    std::filesystem::copy_file(source_dir() / "assets" / "animations" / "robot.json", clips_);
+    const auto status = dir_ / "status.json";
+    std::vector<std::string> args{"--dojo", "--dojo-file", clips_.string()};
+    if (!view.empty()) args.insert(args.end(), {"--dojo-view", view});
+    args.insert(args.end(), {"--width", "1280", "--height", "720", "--status-file", status.string()});
+    process_ = std::make_unique<EditorProcess>(
+        args, std::vector<std::string>{"XDG_CONFIG_HOME=" + (dir_ / "config").string()}, display_);
+    session_ = std::make_unique<EditorSession>(status, *process_, display_);
+}
+
 } // namespace ks::test

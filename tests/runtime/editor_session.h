@@ -98,4 +98,23 @@ class EditorWindow {
     std::unique_ptr<EditorSession> session_;
 };
 
+// The editor's Dojo tab on a scratch copy of the shipped clip file (assets/animations/robot.json) at
+// 1280×720, in a window on a display of its own; `view` is a --dojo-view spec (empty: none). The copy, the
+// status file and the editor's config folder live in one scratch folder.
+class DojoWindow {
+  public:
+    explicit DojoWindow(const std::string& view = "");
+    EditorSession& session() { return *session_; }
+    EditorProcess& process() { return *process_; }
+    const std::filesystem::path& clips() const { return clips_; }
+    const ScratchDir& dir() const { return dir_; }
+
+  private:
+    ScratchDir dir_;
+    std::filesystem::path clips_;
+    PrivateDisplay display_;
+    std::unique_ptr<EditorProcess> process_;
+    std::unique_ptr<EditorSession> session_;
+};
+
 } // namespace ks::test

@@ -16,16 +16,9 @@
 
 using namespace ks;
 using nlohmann::json;
-using test::EditorProcess;
 using Session = test::EditorSession;
 
 namespace {
-std::filesystem::path graph_input_clips(const test::ScratchDir& dir) {
-    const auto copy = dir / "clips.json";
-    std::filesystem::copy_file(test::source_dir() / "assets" / "animations" / "robot.json", copy);
-    return copy;
-}
-
 float coord(const json& point, int i) {
     return point[static_cast<std::size_t>(i)].get<float>();
 }
@@ -39,18 +32,10 @@ const anim::TargetDef* graph_input_target(const anim::PhaseDef& phase, const std
 
 TEST_CASE("dojo graph input: a box selects two keys, Alt+drag scales their times about their centre in one "
           "undo step, Save writes it") {
-    REQUIRE_MESSAGE((test::have_display() && test::have_xdotool()),
-                    "no DISPLAY or xdotool: dojo graph input test cannot run");
-    test::ScratchDir dir;
-    const auto clips = graph_input_clips(dir);
-    const auto status = dir / "status.json";
-    const test::PrivateDisplay display;
     // idle's arm_r z rotation: keys at 0.4 s (10), 0.8 s (0), 1.2 s (-10) and 1.6 s (0).
-    EditorProcess editor({"--dojo", "--dojo-file", clips.string(), "--dojo-view",
-                          "clip=idle,page=curves,node=arm_r,channel=rot.z", "--width", "1280", "--height",
-                          "720", "--status-file", status.string()},
-                         {"XDG_CONFIG_HOME=" + (dir / "config").string()}, display);
-    Session s(status, editor, display);
+    test::DojoWindow window("clip=idle,page=curves,node=arm_r,channel=rot.z");
+    Session& s = window.session();
+    const auto clips = window.clips();
     json st = s.wait("idle's four arm keys on the graph",
                      [](const json& j) { return j.contains("dojo") && j["dojo"]["curve_keys"].size() == 4; });
     const json keys = st["dojo"]["curve_keys"];
@@ -110,16 +95,9 @@ TEST_CASE("dojo graph input: a box selects two keys, Alt+drag scales their times
 }
 
 TEST_CASE("dojo graph input: the hand dragged with IK on turns the arm and forearm; K keys both") {
-    REQUIRE_MESSAGE((test::have_display() && test::have_xdotool()),
-                    "no DISPLAY or xdotool: dojo graph input test cannot run");
-    test::ScratchDir dir;
-    const auto clips = graph_input_clips(dir);
-    const auto status = dir / "status.json";
-    const test::PrivateDisplay display;
-    EditorProcess editor({"--dojo", "--dojo-file", clips.string(), "--dojo-view", "clip=shoot_pose,time=0.3",
-                          "--width", "1280", "--height", "720", "--status-file", status.string()},
-                         {"XDG_CONFIG_HOME=" + (dir / "config").string()}, display);
-    Session s(status, editor, display);
+    test::DojoWindow window("clip=shoot_pose,time=0.3");
+    Session& s = window.session();
+    const auto clips = window.clips();
     json st = s.wait("the rig's joints over the preview", [](const json& j) {
         return j.contains("dojo") && j["dojo"]["pose"]["joints"].contains("hand_r") &&
                j["dojo"]["spots"].contains("ik");

@@ -19,19 +19,11 @@
 
 using namespace ks;
 using nlohmann::json;
-using test::EditorProcess;
 using Session = test::EditorSession;
 
 namespace {
 std::filesystem::path shipped_clips() {
     return test::source_dir() / "assets" / "animations" / "robot.json";
-}
-
-// A scratch copy of the shipped clip file.
-std::filesystem::path copy_clips(const test::ScratchDir& dir) {
-    const auto copy = dir / "clips.json";
-    std::filesystem::copy_file(shipped_clips(), copy);
-    return copy;
 }
 
 const anim::BlendPair* find_pair(const anim::AnimationFile& file, const std::string& from,
@@ -47,18 +39,11 @@ bool has_dojo_spot(const json& j, const char* spot) {
 } // namespace
 
 TEST_CASE("dojo input: New clip typed into its dialog, a blend cell from idle typed, Save writes both") {
-    REQUIRE_MESSAGE((test::have_display() && test::have_xdotool()),
-                    "no DISPLAY or xdotool: dojo input test cannot run");
-    test::ScratchDir dir;
-    const auto clips = copy_clips(dir);
     const auto shipped_before = files::read_text(shipped_clips());
     REQUIRE(shipped_before);
-    const auto status = dir / "status.json";
-    const test::PrivateDisplay display;
-    EditorProcess editor({"--dojo", "--dojo-file", clips.string(), "--width", "1280", "--height", "720",
-                          "--status-file", status.string()},
-                         {"XDG_CONFIG_HOME=" + (dir / "config").string()}, display);
-    Session s(status, editor, display);
+    test::DojoWindow window;
+    Session& s = window.session();
+    const auto clips = window.clips();
     json st = s.wait("the dojo with its New clip button",
                      [](const json& j) { return has_dojo_spot(j, "new_clip"); });
     CHECK(st["dojo"]["file"] == clips.string());
@@ -127,7 +112,7 @@ TEST_CASE("dojo input: New clip typed into its dialog, a blend cell from idle ty
             CHECK(st["dojo"]["dirty"] == true); // still running, the edits kept
         }
     }
-    CHECK(editor.wait_exit(60) == 0);
+    CHECK(window.process().wait_exit(60) == 0);
     auto after = anim::load_animation_file(clips);
     REQUIRE(after);
     CHECK(find_pair(*after, "idle", "wave")); // the undone blend was not written
@@ -136,17 +121,9 @@ TEST_CASE("dojo input: New clip typed into its dialog, a blend cell from idle ty
 
 TEST_CASE("dojo input: an event added at the playhead, a curve key dragged (one undo step), Save; a change "
           "made outside is noticed and reloaded") {
-    REQUIRE_MESSAGE((test::have_display() && test::have_xdotool()),
-                    "no DISPLAY or xdotool: dojo input test cannot run");
-    test::ScratchDir dir;
-    const auto clips = copy_clips(dir);
-    const auto status = dir / "status.json";
-    const test::PrivateDisplay display;
-    EditorProcess editor({"--dojo", "--dojo-file", clips.string(), "--dojo-view",
-                          "clip=shoot_pose,page=events,node=arm_r,channel=rot.z,time=0.1", "--width", "1280",
-                          "--height", "720", "--status-file", status.string()},
-                         {"XDG_CONFIG_HOME=" + (dir / "config").string()}, display);
-    Session s(status, editor, display);
+    test::DojoWindow window("clip=shoot_pose,page=events,node=arm_r,channel=rot.z,time=0.1");
+    Session& s = window.session();
+    const auto clips = window.clips();
     json st = s.wait("the Events page", [](const json& j) { return has_dojo_spot(j, "add_event"); });
     CHECK(st["dojo"]["clip"] == "shoot_pose");
     CHECK(st["dojo"]["events"] == 0);
@@ -228,16 +205,9 @@ TEST_CASE("dojo input: an event added at the playhead, a curve key dragged (one 
 
 TEST_CASE("dojo input: a joint clicked in the preview, its gizmo ring dragged, K keys it; auto-key makes a "
           "drag one undo step") {
-    REQUIRE_MESSAGE((test::have_display() && test::have_xdotool()),
-                    "no DISPLAY or xdotool: dojo input test cannot run");
-    test::ScratchDir dir;
-    const auto clips = copy_clips(dir);
-    const auto status = dir / "status.json";
-    const test::PrivateDisplay display;
-    EditorProcess editor({"--dojo", "--dojo-file", clips.string(), "--dojo-view", "clip=shoot_pose,time=0.3",
-                          "--width", "1280", "--height", "720", "--status-file", status.string()},
-                         {"XDG_CONFIG_HOME=" + (dir / "config").string()}, display);
-    Session s(status, editor, display);
+    test::DojoWindow window("clip=shoot_pose,time=0.3");
+    Session& s = window.session();
+    const auto clips = window.clips();
     json st = s.wait("the rig's joints over the preview", [](const json& j) {
         return j.contains("dojo") && j["dojo"]["pose"]["joints"].contains("forearm_r");
     });
