@@ -155,31 +155,35 @@ bool has_spot(const nlohmann::json& status, const std::string& name) {
     return status.contains("spots") && status["spots"].contains(name);
 }
 
-EditorWindow::EditorWindow(const std::string& level_json, const std::vector<std::string>& args) {
+ScratchEditor::ScratchEditor() {
     require_window_test_tools();
-    level_file_ = write_file(dir_ / "level.json", level_json);
+}
+
+void ScratchEditor::start(std::vector<std::string> args) {
     const auto status = dir_ / "status.json";
-    std::vector<std::string> all{"--level", level_file_.string(), "--status-file", status.string()};
-    all.insert(all.end(), args.begin(), args.end());
+    args.insert(args.end(), {"--status-file", status.string()});
     process_ = std::make_unique<EditorProcess>(
-        all,
+        args,
         std::vector<std::string>{"XDG_CONFIG_HOME=" + (dir_ / "config").string(),
                                  "XDG_DATA_HOME=" + (dir_ / "data").string()},
         display_);
     session_ = std::make_unique<EditorSession>(status, *process_, display_);
 }
 
+EditorWindow::EditorWindow(const std::string& level_json, const std::vector<std::string>& args) {
+    level_file_ = write_file(dir_ / "level.json", level_json);
+    std::vector<std::string> all{"--level", level_file_.string()};
+    all.insert(all.end(), args.begin(), args.end());
+    start(std::move(all));
+}
+
 DojoWindow::DojoWindow(const std::string& view) {
-    require_window_test_tools();
     clips_ = dir_ / "clips.json";
     std::filesystem::copy_file(source_dir() / "assets" / "animations" / "robot.json", clips_);
-    const auto status = dir_ / "status.json";
     std::vector<std::string> args{"--dojo", "--dojo-file", clips_.string()};
     if (!view.empty()) args.insert(args.end(), {"--dojo-view", view});
-    args.insert(args.end(), {"--width", "1280", "--height", "720", "--status-file", status.string()});
-    process_ = std::make_unique<EditorProcess>(
-        args, std::vector<std::string>{"XDG_CONFIG_HOME=" + (dir_ / "config").string()}, display_);
-    session_ = std::make_unique<EditorSession>(status, *process_, display_);
+    args.insert(args.end(), {"--width", "1280", "--height", "720"});
+    start(std::move(args));
 }
 
 } // namespace ks::test

@@ -78,43 +78,46 @@ void require_window_test_tools();
 // The status names the widget spot `name` (its "spots" object).
 bool has_spot(const nlohmann::json& status, const std::string& name);
 
-// The editor opened on a level of the test's own, in a window on a display of its own: the level is written
-// to `level_file` in a scratch folder that also holds the status file and the editor's config and data
-// folders (so no test sees another's recent files or prefabs). `args` follow "--level FILE --status-file
-// FILE".
-class EditorWindow {
+// The editor in a window on a display of its own, with a scratch folder for what it reads and writes: the
+// status file and the editor's config and data folders (so no test sees another's recent files or prefabs).
+class ScratchEditor {
   public:
-    EditorWindow(const std::string& level_json, const std::vector<std::string>& args);
     EditorSession& session() { return *session_; }
+    EditorProcess& process() { return *process_; }
     const ScratchDir& dir() const { return dir_; }
-    const std::filesystem::path& level_file() const { return level_file_; }
-    const EditorProcess& process() const { return *process_; }
+
+  protected:
+    ScratchEditor(); // fails the test without a display and xdotool
+    // Starts the editor with `args` and "--status-file FILE".
+    void start(std::vector<std::string> args);
+    ScratchDir dir_;
 
   private:
-    ScratchDir dir_;
-    std::filesystem::path level_file_;
     PrivateDisplay display_;
     std::unique_ptr<EditorProcess> process_;
     std::unique_ptr<EditorSession> session_;
 };
 
-// The editor's Dojo tab on a scratch copy of the shipped clip file (assets/animations/robot.json) at
-// 1280×720, in a window on a display of its own; `view` is a --dojo-view spec (empty: none). The copy, the
-// status file and the editor's config folder live in one scratch folder.
-class DojoWindow {
+// The editor opened on a level of the test's own: the level is written to `level_file` in the scratch
+// folder. `args` follow "--level FILE".
+class EditorWindow : public ScratchEditor {
   public:
-    explicit DojoWindow(const std::string& view = "");
-    EditorSession& session() { return *session_; }
-    EditorProcess& process() { return *process_; }
-    const std::filesystem::path& clips() const { return clips_; }
-    const ScratchDir& dir() const { return dir_; }
+    EditorWindow(const std::string& level_json, const std::vector<std::string>& args);
+    const std::filesystem::path& level_file() const { return level_file_; }
 
   private:
-    ScratchDir dir_;
+    std::filesystem::path level_file_;
+};
+
+// The editor's Dojo tab on a scratch copy of the shipped clip file (assets/animations/robot.json) at
+// 1280×720; `view` is a --dojo-view spec (empty: none).
+class DojoWindow : public ScratchEditor {
+  public:
+    explicit DojoWindow(const std::string& view = "");
+    const std::filesystem::path& clips() const { return clips_; }
+
+  private:
     std::filesystem::path clips_;
-    PrivateDisplay display_;
-    std::unique_ptr<EditorProcess> process_;
-    std::unique_ptr<EditorSession> session_;
 };
 
 } // namespace ks::test
