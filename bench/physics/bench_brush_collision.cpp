@@ -218,7 +218,7 @@ std::vector<Row> run_set(const std::string& label, const std::vector<Target>& ta
     auto sweep = [&](const Shape& shape, std::size_t k) {
         const Sample& s = samples[clear[k]];
         const Target& t = targets[s.target];
-        Obstacle o{&shape, t.body.transform, 0, shape.kind == ShapeKind::Box, t.bounds};
+        Obstacle o{&shape, t.body.transform, 0, is_yaw_only(t.body.transform.rotation), t.bounds};
         Vec3 normal;
         toi[clear[k]] =
             sweep_capsule({s.capsule.p0, s.capsule.p1}, s.capsule.radius, s.motion, o, skin, normal);

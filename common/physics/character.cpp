@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace ks::physics {
 namespace {
@@ -50,7 +51,7 @@ Vec3 clip_to_planes(const Vec3& v, const Planes& planes) {
 geometry::Aabb swept_region(const Segment& s, float radius, const Vec3& motion, float skin);
 float sweep_capsule_in(const Segment& s, float radius, const Vec3& motion, float len,
                        const geometry::Aabb& region, const Obstacle& o, float skin, Vec3& normal,
-                       Vec3* surface);
+                       Vec3* surface, Contact* at_start = nullptr);
 
 struct Mover {
     const std::vector<Obstacle>& obstacles;
@@ -63,9 +64,12 @@ struct Mover {
         return {p - Vec3(0.0f, half, 0.0f), p + Vec3(0.0f, half, 0.0f)};
     }
 
-    // Earliest hit along `motion` from p: t in [0, 1], -1 index when free.
-    float sweep(const Vec3& p, const Vec3& motion, Vec3& normal, int& which, Vec3* surface = nullptr) const {
+    // Earliest hit along `motion` from p: t in [0, 1], -1 index when free. `at_start` (optional) gets the
+    // hit's contact when it is at t = 0 (the capsule where it is), else stays unset.
+    float sweep(const Vec3& p, const Vec3& motion, Vec3& normal, int& which, Vec3* surface = nullptr,
+                std::optional<Contact>* at_start = nullptr) const {
         which = -1;
+        if (at_start) at_start->reset();
         float best = 1.0f;
         const Segment s = segment_at(p);
         const float len = glm::length(motion);
@@ -74,13 +78,23 @@ struct Mover {
             if (!region.overlaps(obstacles[i].bounds))
                 continue; // (sweep_capsule_in would return 1: no change)
             Vec3 n(0.0f, 1.0f, 0.0f), sn(0.0f, 1.0f, 0.0f);
+            Contact start{Vec3(0.0f), -1.0f, Vec3(0.0f)}; // penetration -1: none captured
             const float t = sweep_capsule_in(s, radius, motion, len, region, obstacles[i], cs.skin, n,
-                                             surface ? &sn : nullptr);
+                                             surface ? &sn : nullptr, at_start ? &start : nullptr);
             const float sy = surface ? sn.y : n.y;
             if (t < best || (t == best && which >= 0 && t < 1.0f && sy > (surface ? surface->y : normal.y))) {
                 best = t, normal = n, which = static_cast<int>(i);
                 if (surface) *surface = sn;
+                if (at_start) {
+                    if (t == 0.0f && start.penetration != -1.0f)
+                        *at_start = start;
+                    else
+                        at_start->reset();
+                }
             }
+            // Nothing hits before t = 0, and a tie there only replaces the hit with a more upward normal:
+            // after an upward-facing one (standing on a floor) no later obstacle can change the answer.
+            if (best == 0.0f && which >= 0 && (surface ? surface->y : normal.y) >= 1.0f) break;
         }
         if (which < 0) best = 1.0f;
         return best;
@@ -176,7 +190,7 @@ geometry::Aabb swept_region(const Segment& s, float radius, const Vec3& motion, 
 // sweep_capsule with the motion's length and swept region precomputed.
 float sweep_capsule_in(const Segment& s, float radius, const Vec3& motion, float len,
                        const geometry::Aabb& region, const Obstacle& o, float skin, Vec3& normal,
-                       Vec3* surface) {
+                       Vec3* surface, Contact* at_start) {
     if (!(len > 0.0f)) return 1.0f;
     if (!region.overlaps(o.bounds)) return 1.0f;
     float t = 0.0f;
@@ -191,6 +205,7 @@ float sweep_capsule_in(const Segment& s, float radius, const Vec3& motion, float
         if (gap <= skin + kGapTolerance) {
             if (rate <= kApproachFraction * len) return 1.0f; // resting or leaving: not blocking
             normal = c->normal;
+            if (at_start && iter == 0) *at_start = *c;
             if (surface)
                 *surface = o.triangle != Obstacle::kWholeShape
                                ? triangle_normal(*o.shape->mesh, o.triangle, o.transform, c->normal)
@@ -212,6 +227,10 @@ std::optional<Contact> collide_capsule_obstacle(const Segment& s, float r, const
                                                 float contact_margin) {
     if (o.triangle != Obstacle::kWholeShape)
         return collide_capsule_triangle(s, r, *o.shape->mesh, o.triangle, o.transform, contact_margin);
+    // Most obstacles are walls and floors: straight to the box contact collide_capsule_shape would pick
+    // (the world keeps yaw_only in step with the body's rotation).
+    if (o.shape->kind == ShapeKind::Box && o.yaw_only)
+        return collide_capsule_box(s, r, o.shape->half_extents, o.transform, contact_margin);
     return collide_capsule_shape(s, r, *o.shape, o.transform, contact_margin);
 }
 
@@ -317,15 +336,18 @@ void move_character(const ObstacleSource& world, float radius, float half_segmen
 
     // Ground: probe (and snap while walking) unless rising from a jump.
     state.grounded = false;
+    std::optional<Contact> ground_contact; // the probe's contact where the capsule now is (a hit at t = 0)
+    int ground_index = -1;
     if (!(state.jumping && m.velocity.y > 0.0f)) {
         const float probe = was_grounded ? cs.ground_snap : 2.0f * cs.skin;
         Vec3 n(0.0f, 1.0f, 0.0f);
         int which;
         const Vec3 down(0.0f, -probe, 0.0f);
         Vec3 ground(0.0f, 1.0f, 0.0f);
-        const float t = mover.sweep(position, down, n, which, &ground);
+        const float t = mover.sweep(position, down, n, which, &ground, &ground_contact);
         if (which >= 0 && std::max(n.y, ground.y) >= cos_slope) {
             position += down * t;
+            ground_index = which;
             state.grounded = true;
             state.jumping = false;
             state.ground_normal = n.y >= ground.y ? n : ground;
@@ -336,9 +358,19 @@ void move_character(const ObstacleSource& world, float radius, float half_segmen
     if (!state.grounded) state.ground_normal = Vec3(0.0f, 1.0f, 0.0f);
 
     // Report each touched obstacle once, with the exact contact at the final position.
+    // The ground probe's contact at t = 0 is this very query (the same capsule, obstacle and function): only
+    // the margin differs, and it returned within skin + kGapTolerance, which the report's 4 skin also keeps
+    // for a box (whose contact is refused only beyond radius + margin) when 3 skin exceeds that tolerance and
+    // the rounding of radius + margin.
+    const bool reuse_ground = ground_contact && ground_index >= 0 &&
+                              scratch.obstacles[ground_index].triangle == Obstacle::kWholeShape &&
+                              scratch.obstacles[ground_index].shape->kind == ShapeKind::Box &&
+                              3.0f * cs.skin > kGapTolerance + 4e-7f * (radius + 4.0f * cs.skin);
     for (int i : touched) {
         const Obstacle& o = scratch.obstacles[i];
-        auto c = collide_capsule_obstacle(mover.segment_at(position), radius, o, 4.0f * cs.skin);
+        auto c = reuse_ground && i == ground_index
+                     ? ground_contact
+                     : collide_capsule_obstacle(mover.segment_at(position), radius, o, 4.0f * cs.skin);
         Contact contact;
         if (c)
             contact = *c;

@@ -35,7 +35,7 @@ struct Obstacle {
     const Shape* shape = nullptr;
     geometry::Transform transform;
     std::uint32_t id = 0;
-    bool yaw_only = false;
+    bool yaw_only = false; // the rotation turns about y only (is_yaw_only): boxes take the upright fast path
     geometry::Aabb bounds{Vec3(-3.4e38f),
                           Vec3(3.4e38f)}; // world bounds: lets sweeps skip far obstacles cheaply
     // A triangle mesh comes one triangle per obstacle (each convex, so the sweep's advancement holds):
