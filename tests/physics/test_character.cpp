@@ -256,3 +256,78 @@ TEST_CASE("frame time extremes: dt = 0, dt = 1e-6, dt = 1 s, NaN velocity") {
     CHECK(is_finite(w.transform(p).position));
     CHECK(is_finite(w.character(p).movement.velocity));
 }
+
+TEST_CASE("the contacts a step reports are the exact contacts where the character ended, on floors of every "
+          "kind") {
+    // The report reuses the ground probe's own contact when the probe hit at once; it must be the very
+    // contact a fresh query at the final position gives (a floor level, turned about y, tilted).
+    struct Floor {
+        const char* name;
+        Quat rotation;
+    };
+    for (const Floor& floor : {Floor{"level", Quat(1, 0, 0, 0)}, Floor{"turned", yaw(0.6f)},
+                               Floor{"tilted", glm::angleAxis(0.2f, glm::normalize(Vec3(1, 0, 0.3f)))}})
+        for (int hz : {60, 240}) {
+            CAPTURE(floor.name);
+            CAPTURE(hz);
+            World w(at_rate(hz));
+            BodyDesc d;
+            d.shape = Shape::box({60, 0.5f, 60});
+            d.transform.position = {0, -0.5f, 0};
+            d.transform.rotation = floor.rotation;
+            const auto added = w.add(d, "floor");
+            REQUIRE(added.ok());
+            const BodyId ground = *added;
+            const BodyId p = add_player(w, {0, 8, 0});
+            int checked = 0;
+            for (int i = 0; i < steps_for(hz, 2.0f); ++i) {
+                if (i == steps_for(hz, 1.0f)) walk(w, p, {9, 0, 4});
+                w.step(1.0f / hz);
+                const Vec3 centre = w.transform(p).position;
+                const Segment core{centre - Vec3(0, kPlayerHalfSegment, 0),
+                                   centre + Vec3(0, kPlayerHalfSegment, 0)};
+                for (const Collision& c : w.collisions()) {
+                    if (c.self != p || c.other != ground) continue;
+                    const auto fresh =
+                        collide_capsule_shape(core, kPlayerRadius, w.shape(ground), w.transform(ground),
+                                              4.0f * CharacterSettings{}.skin);
+                    REQUIRE(fresh);
+                    CHECK(c.normal == fresh->normal);
+                    CHECK(c.point == fresh->point);
+                    CHECK(c.penetration == std::max(0.0f, fresh->penetration));
+                    ++checked;
+                }
+            }
+            CHECK(checked > steps_for(hz, 1.0f)); // landed and standing, then walking on it
+        }
+    // Walking down 0.3-unit steps: the probe snaps down onto each (a hit after t = 0, not reused).
+    for (int hz : {60, 240}) {
+        CAPTURE(hz);
+        World w(at_rate(hz));
+        std::vector<BodyId> steps;
+        for (int k = 0; k < 8; ++k)
+            steps.push_back(add_box(w, {k * 2.0f, -0.5f - 0.3f * k, 0}, {1, 0.5f, 4}));
+        const BodyId p = add_player(w, {0, 0.01f, 0});
+        walk(w, p, {6, 0, 0});
+        int checked = 0;
+        for (int i = 0; i < steps_for(hz, 2.0f); ++i) {
+            w.step(1.0f / hz);
+            const Vec3 centre = w.transform(p).position;
+            const Segment core{centre - Vec3(0, kPlayerHalfSegment, 0),
+                               centre + Vec3(0, kPlayerHalfSegment, 0)};
+            for (const Collision& c : w.collisions()) {
+                if (c.self != p) continue;
+                const auto fresh =
+                    collide_capsule_shape(core, kPlayerRadius, w.shape(c.other), w.transform(c.other),
+                                          4.0f * CharacterSettings{}.skin);
+                if (!fresh) continue; // touched on the way, left behind
+                CHECK(c.normal == fresh->normal);
+                CHECK(c.point == fresh->point);
+                CHECK(c.penetration == std::max(0.0f, fresh->penetration));
+                ++checked;
+            }
+        }
+        CHECK(feet_y(w, p) < -1.5f); // went down the steps
+        CHECK(checked > steps_for(hz, 1.5f));
+    }
+}
