@@ -269,6 +269,8 @@ int run(int argc, const char* const* argv) {
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 1.0f, v.resolution_divisor = 2; });
     with("fast, scale 0.5, no pre-pass",
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.depth_prepass = false; });
+    with("fast, scale 1, no pre-pass",
+         [](Variant& v) { v.quality = Q::Fast, v.render_scale = 1.0f, v.depth_prepass = false; });
     with("fast, scale 0.5, no door occl.",
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.doors_occlude = false; });
     with("fast, scale 0.5, one shader",
