@@ -55,7 +55,7 @@ Result<ConvexDecomposition> decompose_convex_cached(std::span<const DVec3> verti
                                                     const disk_cache::Store& store) {
     const std::uint64_t key = store.enabled() ? decomposition_cache_key(vertices, triangles, options) : 0;
     if (store.enabled())
-        if (std::optional<std::string> payload = store.load(kKind, key))
+        if (std::optional<disk_cache::Payload> payload = store.load(kKind, key))
             if (std::optional<ConvexDecomposition> hit = read(*payload)) return std::move(*hit);
     Result<ConvexDecomposition> made = decompose_convex(vertices, triangles, options);
     if (made && store.enabled()) store.save(kKind, key, write(*made));

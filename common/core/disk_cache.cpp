@@ -55,6 +55,16 @@ std::atomic<bool> g_write_failure_logged{false};
 Hasher& Hasher::bytes(const void* data, std::size_t size) {
     const auto* p = static_cast<const unsigned char*>(data);
     std::size_t i = 0;
+    if (size >= 256) { // four lanes, folded into the state: a quarter of the multiplies' latency per byte
+        std::uint64_t lane[4] = {state_, state_ ^ kPrime1, state_ ^ kPrime2, ~state_};
+        for (; i + 32 <= size; i += 32)
+            for (int k = 0; k < 4; ++k) {
+                std::uint64_t w = 0;
+                std::memcpy(&w, p + i + 8 * static_cast<std::size_t>(k), 8);
+                lane[k] = std::rotl(lane[k] ^ (w * kPrime2), 31) * kPrime1;
+            }
+        for (std::uint64_t l : lane) state_ = std::rotl(state_ ^ mix(l), 27) * kPrime1;
+    }
     for (; i + 8 <= size; i += 8) {
         std::uint64_t w = 0;
         std::memcpy(&w, p + i, 8);
@@ -102,24 +112,25 @@ std::filesystem::path Store::file(std::string_view kind, std::uint64_t key) cons
     return folder_ / (std::string(kind) + "-" + hex + ".bin");
 }
 
-std::optional<std::string> Store::load(std::string_view kind, std::uint64_t key) const {
+std::optional<Payload> Store::load(std::string_view kind, std::uint64_t key) const {
     if (!enabled() || kind.size() > kKindBytes) return std::nullopt;
     const std::filesystem::path path = file(kind, key);
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) return std::nullopt;
-    auto text = files::read_text(path);
+    std::string error;
+    auto text = Payload::of_file(path, error);
     if (!text) {
-        log::info(path.string(), ": cache entry unreadable, computing it again (", text.error().message, ")");
+        log::info(path.string(), ": cache entry unreadable, computing it again (", error, ")");
         return std::nullopt;
     }
     const Header want = make_header(kind, key, {});
     Header got{};
     const char* why = nullptr;
-    if (text->size() < sizeof(Header)) {
+    if (text->bytes().size() < sizeof(Header)) {
         why = "truncated header";
     } else {
-        std::memcpy(&got, text->data(), sizeof got);
-        const std::string_view payload = std::string_view(*text).substr(sizeof(Header));
+        std::memcpy(&got, text->bytes().data(), sizeof got);
+        const std::string_view payload = text->bytes().substr(sizeof(Header));
         if (std::memcmp(got.magic, want.magic, sizeof got.magic) != 0)
             why = "not a Killswitch cache file";
         else if (std::memcmp(got.kind, want.kind, kKindBytes) != 0 || got.key != key)
@@ -131,7 +142,7 @@ std::optional<std::string> Store::load(std::string_view kind, std::uint64_t key)
         else if (got.payload_hash != hash_bytes(payload))
             why = "checksum mismatch";
         else {
-            text->erase(0, sizeof(Header)); // the payload, without a second copy of megabytes
+            text->drop_prefix(sizeof(Header));
             return std::move(*text);
         }
     }

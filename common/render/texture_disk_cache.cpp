@@ -56,7 +56,7 @@ std::optional<MipChain> read_back_mip_chain(unsigned texture, int width, int hei
     return chain;
 }
 
-void upload_mip_chain(const MipChain& chain, unsigned internal_format) {
+void upload_mip_chain(const MipChainView& chain, unsigned internal_format) {
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     for (std::size_t level = 0; level < chain.levels.size(); ++level) {
         const int l = static_cast<int>(level);
@@ -76,9 +76,9 @@ std::string write_mip_chain(const MipChain& chain) {
     return std::move(w.data());
 }
 
-std::optional<MipChain> read_mip_chain(std::string_view payload) {
+std::optional<MipChainView> read_mip_chain(std::string_view payload) {
     disk_cache::Reader r(payload);
-    MipChain chain;
+    MipChainView chain;
     std::uint64_t count = 0;
     if (!r.value(chain.width) || !r.value(chain.height) || !r.value(chain.extra) || !r.value(count))
         return std::nullopt;
@@ -88,7 +88,7 @@ std::optional<MipChain> read_mip_chain(std::string_view payload) {
     chain.levels.resize(static_cast<std::size_t>(count));
     for (std::size_t level = 0; level < chain.levels.size(); ++level) {
         const std::size_t want = level_bytes(chain.width, chain.height, static_cast<int>(level));
-        if (!r.values(chain.levels[level], want) || chain.levels[level].size() != want) return std::nullopt;
+        if (!r.bytes(chain.levels[level], want) || chain.levels[level].size() != want) return std::nullopt;
     }
     if (!r.at_end()) return std::nullopt;
     return chain;

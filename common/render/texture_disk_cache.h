@@ -27,6 +27,13 @@ struct MipChain {
     std::vector<std::vector<unsigned char>> levels; // RGBA8 rows, level 0 first, down to 1x1
     float extra = 0.0f;                             // a value computed with the image (the mean metalness)
 };
+// A chain read from a cache entry: its levels are views into the entry's bytes (uploaded from there, not
+// copied first), valid while the entry's disk_cache::Payload lives.
+struct MipChainView {
+    int width = 0, height = 0;
+    std::vector<std::string_view> levels;
+    float extra = 0.0f;
+};
 
 // The number of levels of a full chain for a w x h image (down to 1x1).
 int mip_level_count(int width, int height);
@@ -35,11 +42,11 @@ int mip_level_count(int width, int height);
 // driver reports an error or a level of an unexpected size.
 std::optional<MipChain> read_back_mip_chain(unsigned texture, int width, int height);
 // Uploads every level of `chain` into the bound GL_TEXTURE_2D with `internal_format`.
-void upload_mip_chain(const MipChain& chain, unsigned internal_format);
+void upload_mip_chain(const MipChainView& chain, unsigned internal_format);
 
 std::string write_mip_chain(const MipChain& chain);
 // nullopt when the payload is not one whole, consistent chain (sizes, level count, bytes per level).
-std::optional<MipChain> read_mip_chain(std::string_view payload);
+std::optional<MipChainView> read_mip_chain(std::string_view payload);
 
 // Stores chains on a worker thread (serialising and the atomic write's flush to disk cost a cold start's
 // main thread more than the readback itself). The destructor writes what is queued, then returns.

@@ -8,7 +8,7 @@ using namespace ks;
 TEST_CASE("disk_cache Writer/Reader round-trip values and vectors, empty ones included") {
     disk_cache::Writer w;
     w.value(std::uint32_t{7});
-    w.values(std::vector<float>{});          // an empty vector (its data() is null): a count of zero
+    w.values(std::vector<float>{}); // an empty vector (its data() is null): a count of zero
     w.values(std::vector<float>{1.5f, -2.0f});
     w.values(std::vector<std::uint64_t>{}); // two empties in a row
     const std::string payload = w.data();
@@ -52,8 +52,11 @@ TEST_CASE("disk_cache Store: an entry read back, an empty payload, and a corrupt
     CHECK_FALSE(store.load("test", 1).has_value()); // nothing yet, and no folder
     REQUIRE(store.save("test", 1, "payload"));
     REQUIRE(store.save("test", 2, ""));
-    CHECK(store.load("test", 1) == std::optional<std::string>("payload"));
-    CHECK(store.load("test", 2) == std::optional<std::string>(""));
+    const auto one = store.load("test", 1), two = store.load("test", 2);
+    REQUIRE(one);
+    REQUIRE(two);
+    CHECK(*one == "payload");
+    CHECK(*two == "");
     CHECK_FALSE(store.load("other", 1).has_value()); // another kind with the same key
     // One byte of the payload changed: the checksum no longer matches.
     auto bytes = test::read_file(store.file("test", 1));
@@ -61,4 +64,82 @@ TEST_CASE("disk_cache Store: an entry read back, an empty payload, and a corrupt
     test::write_file(store.file("test", 1), bytes);
     CHECK_FALSE(store.load("test", 1).has_value());
     CHECK_FALSE(disk_cache::Store(std::filesystem::path()).enabled());
+}
+
+TEST_CASE("disk_cache Payload: a mapped entry and a read one keep their bytes through moves") {
+    test::ScratchDir dir;
+    const disk_cache::Store store(dir.path() / "cache");
+    std::string big(3'000'000, '\0');
+    for (std::size_t i = 0; i < big.size(); ++i) big[i] = static_cast<char>((i * 2654435761u) >> 13);
+    REQUIRE(store.save("big", 7, big));
+    auto loaded = store.load("big", 7);
+    REQUIRE(loaded);
+    disk_cache::Payload moved = std::move(*loaded);
+    CHECK(moved.bytes() == big);
+    disk_cache::Payload again(std::string("x"));
+    again = std::move(moved);
+    CHECK(again.bytes() == big);
+    CHECK(moved.bytes().empty());
+    // Read into memory (where a file cannot be mapped) and moved: a short string lives inside the object.
+    disk_cache::Payload owned(std::string("short"));
+    owned.drop_prefix(1);
+    disk_cache::Payload owned_moved = std::move(owned);
+    CHECK(owned_moved.bytes() == "hort");
+    std::string error;
+    CHECK_FALSE(disk_cache::Payload::of_file(dir.path() / "no such file", error));
+    CHECK_FALSE(error.empty());
+    // Replaced while mapped (entries are written by rename): the mapping keeps the bytes it had.
+    REQUIRE(store.save("big", 7, "new"));
+    CHECK(again.bytes() == big);
+    const auto fresh = store.load("big", 7);
+    REQUIRE(fresh);
+    CHECK(*fresh == "new");
+}
+
+TEST_CASE("disk_cache Hasher: every byte of a long buffer counts, in every lane and the tail") {
+    std::string data(1000, '\0');
+    for (std::size_t i = 0; i < data.size(); ++i) data[i] = static_cast<char>(i * 7);
+    const std::uint64_t base = disk_cache::hash_bytes(data);
+    CHECK(disk_cache::hash_bytes(data) == base); // repeatable
+    int same = 0;
+    for (std::size_t i = 0; i < data.size(); ++i) {
+        std::string changed = data;
+        changed[i] ^= 0x10;
+        same += disk_cache::hash_bytes(changed) == base ? 1 : 0;
+    }
+    CHECK(same == 0);
+    // Two lanes' words swapped, and the same bytes shifted by one: different.
+    std::string swapped = data;
+    std::swap_ranges(swapped.begin(), swapped.begin() + 8, swapped.begin() + 8);
+    CHECK(disk_cache::hash_bytes(swapped) != base);
+    CHECK(disk_cache::hash_bytes(std::string_view(data).substr(1)) !=
+          disk_cache::hash_bytes(data.substr(0, 999)));
+    // Lengths around the lanes' threshold and block size all differ from their neighbours.
+    std::uint64_t previous = 0;
+    for (std::size_t n = 240; n < 300; ++n) {
+        const std::uint64_t h = disk_cache::hash_bytes(std::string_view(data).substr(0, n));
+        CHECK(h != previous);
+        previous = h;
+    }
+}
+
+TEST_CASE("disk_cache Reader::bytes views the data read from, within its bounds") {
+    disk_cache::Writer w;
+    w.values(std::vector<unsigned char>{1, 2, 3, 4});
+    w.value(std::uint32_t{9});
+    disk_cache::Reader r(w.data());
+    std::string_view view;
+    REQUIRE(r.bytes(view, 4));
+    CHECK(view.size() == 4);
+    CHECK(view.data() == w.data().data() + 8); // after the count: no copy
+    CHECK(view[3] == 4);
+    std::uint32_t tail = 0;
+    CHECK(r.value(tail));
+    CHECK(tail == 9);
+    CHECK(r.at_end());
+    disk_cache::Reader limited(w.data());
+    CHECK_FALSE(limited.bytes(view, 3)); // four stored, at most three allowed
+    std::string truncated = w.data().substr(0, 10);
+    disk_cache::Reader short_reader(truncated);
+    CHECK_FALSE(short_reader.bytes(view, 100)); // the count says 4, only 2 are there
 }
