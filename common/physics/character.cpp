@@ -155,6 +155,9 @@ Vec3 surface_normal(const Shape& shape, const geometry::Transform& xf, const Vec
     };
     switch (shape.kind) {
     case ShapeKind::Box:
+        // A floor's top face (the usual answer): nothing is more upward, so the other faces need no look.
+        if (unrotated && std::abs(p.y - shape.half_extents.y) <= tol + 1e-6f * shape.half_extents.y)
+            return Vec3(0.0f, 1.0f, 0.0f);
         for (int i = 0; i < 3; ++i)
             for (float side : {-1.0f, 1.0f})
                 if (std::abs(p[i] - side * shape.half_extents[i]) <= tol + 1e-6f * shape.half_extents[i]) {
