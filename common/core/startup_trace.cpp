@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <ctime>
 #include <mutex>
+#include <optional>
+#include <thread>
 
 namespace ks::startup {
 namespace {
@@ -11,6 +13,7 @@ namespace {
 struct Trace {
     std::mutex mutex;
     std::FILE* file = nullptr;
+    std::optional<std::thread::id> main; // the thread of the first mark: the only one traced
     Trace() {
         if (const char* path = std::getenv("KS_STARTUP_TRACE"); path && *path) file = std::fopen(path, "a");
     }
@@ -40,6 +43,8 @@ void mark(std::string_view phase) {
                     process = now_ns(CLOCK_PROCESS_CPUTIME_ID);
     const std::lock_guard lock(t.mutex);
     if (!t.file) return;
+    if (!t.main) t.main = std::this_thread::get_id();
+    if (*t.main != std::this_thread::get_id()) return;
     const int written = std::fprintf(t.file, "%.*s\t%lld\t%lld\t%lld\n", static_cast<int>(phase.size()),
                                      phase.data(), mono, thread, process);
     if (written < 0 || std::fflush(t.file) != 0) {

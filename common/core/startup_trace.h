@@ -10,8 +10,10 @@ namespace ks::startup {
 
 // True when KS_STARTUP_TRACE was set when the process first asked.
 bool enabled();
-// Appends PHASE's line (a phase name without tabs or newlines). Thread-safe; never fails loudly: a file that
-// cannot be written turns the trace off.
+// Appends PHASE's line (a phase name without tabs or newlines). The trace follows the thread of the first
+// mark (main()): marks from other threads (work started early on a worker) are left out, so every line's CPU
+// column is that thread's. Thread-safe; never fails loudly: a file that cannot be written turns the trace
+// off.
 void mark(std::string_view phase);
 
 } // namespace ks::startup

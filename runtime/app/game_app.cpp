@@ -6,6 +6,7 @@
 #include "game_app_internal.h"
 
 #include "core/startup_trace.h"
+#include "game/robot_system.h"
 #include "shell/app_shell.h"
 
 #include <chrono>
@@ -26,15 +27,11 @@ void GameApp::load(const std::filesystem::path& path, bool dojo, Screen then, Sc
                                  if (!loaded) return loaded.error();
                                  for (const auto& d : report.diagnostics) log::warn(d.error.str());
                                  s->level = std::move(*loaded);
-                                 return {};
-                             }});
-    loader_.steps.push_back({"Building the simulation", [this, s]() -> Result<void> {
-                                 game::GameOptions go;
-                                 go.seed = seed_;
-                                 go.settings.difficulty = options_.difficulty;
-                                 auto g = game::Game::create(s->level, go);
-                                 if (!g) return g.error();
-                                 s->game = std::move(*g);
+                                 // The navigation mesh (on a cold start a third of a second of Recast) is
+                                 // built on a worker while the models load on this thread.
+                                 s->navigation = std::async(std::launch::async, [s] {
+                                     return game::build_robot_navigation(s->level);
+                                 });
                                  return {};
                              }});
     // Models one per frame: their textures are the slow part of loading.
@@ -45,6 +42,21 @@ void GameApp::load(const std::filesystem::path& path, bool dojo, Screen then, Sc
                                      return {};
                                  }});
     }
+    loader_.steps.push_back({"Building the simulation", [this, s]() -> Result<void> {
+                                 game::GameOptions go;
+                                 go.seed = seed_;
+                                 go.settings.difficulty = options_.difficulty;
+                                 if (s->navigation.valid()) {
+                                     auto mesh = s->navigation.get();
+                                     startup::mark("navigation mesh (waited for)");
+                                     // A mesh that failed is built again by the game, which reports why.
+                                     if (mesh) go.navigation = std::move(*mesh);
+                                 }
+                                 auto g = game::Game::create(s->level, go);
+                                 if (!g) return g.error();
+                                 s->game = std::move(*g);
+                                 return {};
+                             }});
     loader_.steps.push_back({"Building the level scene", [this, s]() -> Result<void> {
                                  auto scene_options = render::level_scene_options(renderer_.settings());
                                  scene_options.cache_bake = true; // each launch would bake the same again

@@ -38,6 +38,8 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+
+#include <future>
 #include <imgui.h>
 
 #include <algorithm>
@@ -56,6 +58,9 @@ constexpr int kMaxStepsPerFrame = 30;
 struct Session {
     std::filesystem::path file; // the level file (Retry loads it again)
     level::Level level;
+    // The robots' navigation mesh, built on a worker from the moment the level is read while the models load
+    // (declared after `level`, which it reads: destroyed first, so it waits for the worker).
+    std::future<Result<std::unique_ptr<nav::NavMesh>>> navigation;
     bool dojo = false;
     std::unique_ptr<game::Game> game;
     std::unique_ptr<WorldView> view;
