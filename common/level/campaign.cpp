@@ -108,8 +108,9 @@ void check_level_files_exist(const std::vector<ListedLevel>& levels, const fs::p
                              DiagnosticSink& sink) {
     // The same file by two spellings ("lvl.json" and "../dir/lvl.json" from dir/): the lexical check in
     // check_content cannot see it, the file system can.
-    std::map<std::string, size_t> first_file;
-    for (const ListedLevel& listed : levels) {
+    std::map<std::string, size_t> first_file; // the file on disk -> its first position in `levels`
+    for (size_t position = 0; position < levels.size(); ++position) {
+        const ListedLevel& listed = levels[position];
         const fs::path relative(listed.level.file);
         if (is_blank(listed.level.file) || relative.is_absolute()) continue; // already reported
         const fs::path full = folder / relative;
@@ -117,12 +118,14 @@ void check_level_files_exist(const std::vector<ListedLevel>& levels, const fs::p
         if (fs::is_regular_file(full, ec)) {
             const fs::path real = fs::canonical(full, ec);
             if (ec) continue;
-            auto [first, inserted] = first_file.emplace(real.string(), listed.index);
-            const std::string& first_spelling = levels[first->second].level.file;
+            // A position in `levels`, not the array index: entries that could not be read are not in it.
+            auto [first, inserted] = first_file.emplace(real.string(), position);
+            const ListedLevel& first_listed = levels[first->second];
+            const std::string& first_spelling = first_listed.level.file;
             if (!inserted && fs::path(first_spelling).lexically_normal() != relative.lexically_normal())
                 sink.error(member_path(element_path("levels", listed.index), "file"),
                            "level " + jsonio::quote_text(listed.level.file) + " is the same file as " +
-                               element_path("levels", first->second) + " (" +
+                               element_path("levels", first_listed.index) + " (" +
                                jsonio::quote_text(first_spelling) + ")",
                            "a campaign plays each level once: remove one of them");
             continue;

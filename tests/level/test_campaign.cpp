@@ -203,6 +203,18 @@ TEST_CASE("campaign: malformed files give every problem with file, line:column, 
             {":3:4: levels[1].file: level \"" + again + "\" is the same file as levels[0] (\"first.json\")",
              "plays each level once"});
     }
+    SUBCASE("the same level by two spellings after entries that could not be read (fuzz finding)") {
+        // Entries refused before the two (not objects) are not in the list the check walks: the message
+        // must still name the array's indices, and the check must not index that list by them (it read
+        // past the end, found by fuzz_campaign_loader: tests/data/fuzz/fuzz_campaign_loader/).
+        const std::string again = "../" + folder.dir.path().filename().string() + "/first.json";
+        check_contains(
+            failure_of(folder, "{\"name\": \"C\", \"levels\": [1, 2, 3,\n  {\"file\": \"first.json\", "
+                               "\"title\": \"A\"},\n  {\"file\": \"" +
+                                   again + "\", \"title\": \"B\"}]}"),
+            {"levels[4].file: level \"" + again + "\" is the same file as levels[3] (\"first.json\")",
+             "levels[0]"});
+    }
     SUBCASE("a control character in a level's file name") {
         check_contains(
             failure_of(folder, "{\"name\": \"C\", \"levels\": [{\"file\": \"first\\u0007.json\", "
