@@ -27,7 +27,7 @@ void GameApp::load(const std::filesystem::path& path, bool dojo, Screen then, Sc
                                  if (!loaded) return loaded.error();
                                  for (const auto& d : report.diagnostics) log::warn(d.error.str());
                                  s->level = std::move(*loaded);
-                                 // The navigation mesh (on a cold start a third of a second of Recast) is
+                                 // The navigation mesh (on a cold start, Recast's whole build) is
                                  // built on a worker while the models load on this thread.
                                  s->navigation = std::async(std::launch::async, [s] {
                                      return game::build_robot_navigation(s->level);
