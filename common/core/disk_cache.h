@@ -135,7 +135,6 @@ class Payload {
     std::string owned_;
     std::string_view view_;
 };
-bool operator==(const Payload& a, std::string_view b);
 
 class Store {
   public:

@@ -75,8 +75,4 @@ void Payload::unmap() {
     map_size_ = 0;
 }
 
-bool operator==(const Payload& a, std::string_view b) {
-    return a.bytes() == b;
-}
-
 } // namespace ks::disk_cache

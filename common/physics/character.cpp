@@ -51,7 +51,7 @@ Vec3 clip_to_planes(const Vec3& v, const Planes& planes) {
 geometry::Aabb swept_region(const Segment& s, float radius, const Vec3& motion, float skin);
 float sweep_capsule_in(const Segment& s, float radius, const Vec3& motion, float len,
                        const geometry::Aabb& region, const Obstacle& o, float skin, Vec3& normal,
-                       Vec3* surface, Contact* at_start = nullptr);
+                       Vec3* surface, std::optional<Contact>* at_start = nullptr);
 
 struct Mover {
     const std::vector<Obstacle>& obstacles;
@@ -78,19 +78,14 @@ struct Mover {
             if (!region.overlaps(obstacles[i].bounds))
                 continue; // (sweep_capsule_in would return 1: no change)
             Vec3 n(0.0f, 1.0f, 0.0f), sn(0.0f, 1.0f, 0.0f);
-            Contact start{Vec3(0.0f), -1.0f, Vec3(0.0f)}; // penetration -1: none captured
+            std::optional<Contact> start; // set only by a hit at t = 0
             const float t = sweep_capsule_in(s, radius, motion, len, region, obstacles[i], cs.skin, n,
                                              surface ? &sn : nullptr, at_start ? &start : nullptr);
             const float sy = surface ? sn.y : n.y;
             if (t < best || (t == best && which >= 0 && t < 1.0f && sy > (surface ? surface->y : normal.y))) {
                 best = t, normal = n, which = static_cast<int>(i);
                 if (surface) *surface = sn;
-                if (at_start) {
-                    if (t == 0.0f && start.penetration != -1.0f)
-                        *at_start = start;
-                    else
-                        at_start->reset();
-                }
+                if (at_start) *at_start = start;
             }
             // Nothing hits before t = 0, and a tie there only replaces the hit with a more upward normal:
             // after an upward-facing one (standing on a floor) no later obstacle can change the answer.
@@ -193,7 +188,7 @@ geometry::Aabb swept_region(const Segment& s, float radius, const Vec3& motion, 
 // sweep_capsule with the motion's length and swept region precomputed.
 float sweep_capsule_in(const Segment& s, float radius, const Vec3& motion, float len,
                        const geometry::Aabb& region, const Obstacle& o, float skin, Vec3& normal,
-                       Vec3* surface, Contact* at_start) {
+                       Vec3* surface, std::optional<Contact>* at_start) {
     if (!(len > 0.0f)) return 1.0f;
     if (!region.overlaps(o.bounds)) return 1.0f;
     float t = 0.0f;
@@ -208,7 +203,7 @@ float sweep_capsule_in(const Segment& s, float radius, const Vec3& motion, float
         if (gap <= skin + kGapTolerance) {
             if (rate <= kApproachFraction * len) return 1.0f; // resting or leaving: not blocking
             normal = c->normal;
-            if (at_start && iter == 0) *at_start = *c;
+            if (at_start && iter == 0) *at_start = c; // the capsule where it is: t = 0
             if (surface)
                 *surface = o.triangle != Obstacle::kWholeShape
                                ? triangle_normal(*o.shape->mesh, o.triangle, o.transform, c->normal)

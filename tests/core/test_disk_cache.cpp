@@ -55,8 +55,8 @@ TEST_CASE("disk_cache Store: an entry read back, an empty payload, and a corrupt
     const auto one = store.load("test", 1), two = store.load("test", 2);
     REQUIRE(one);
     REQUIRE(two);
-    CHECK(*one == "payload");
-    CHECK(*two == "");
+    CHECK(one->bytes() == "payload");
+    CHECK(two->bytes().empty());
     CHECK_FALSE(store.load("other", 1).has_value()); // another kind with the same key
     // One byte of the payload changed: the checksum no longer matches.
     auto bytes = test::read_file(store.file("test", 1));
@@ -93,7 +93,7 @@ TEST_CASE("disk_cache Payload: a mapped entry and a read one keep their bytes th
     CHECK(again.bytes() == big);
     const auto fresh = store.load("big", 7);
     REQUIRE(fresh);
-    CHECK(*fresh == "new");
+    CHECK(fresh->bytes() == "new");
 }
 
 TEST_CASE("disk_cache Hasher: every byte of a long buffer counts, in every lane and the tail") {
