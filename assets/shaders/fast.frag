@@ -30,20 +30,34 @@ vec3 aces(vec3 x) { // Narkowicz 2015 fit
 // 9/255 of sRGB in the mid-tones; a texture shown at unit light round-trips exactly).
 vec3 encode(vec3 c) { return sqrt(c); }
 
+// Which maps a draw reads. The general program ("fast") decides per draw from u_map_flags; the model
+// programs ("fast_model", "fast_model_orm", ...) are this file built with FIXED_MAPS and fix them at compile
+// time, because llvmpipe runs both sides of a branch on a uniform, texture lookups included: a rifle pixel
+// paid for four lookups (base, ORM, light map, emissive) where it needs one or two.
+#ifdef FIXED_MAPS
+#define ORM_MAP FIXED_ORM
+#define EMISSIVE_MAP FIXED_EMISSIVE
+#define BAKED false
+#else
+#define ORM_MAP ((u_map_flags & 2) != 0)
+#define EMISSIVE_MAP ((u_map_flags & 4) != 0)
+#define BAKED ((u_map_flags & 32) != 0)
+#endif
+
 void main() {
     vec4 base = texture(u_base_map, v_uv);
     bool raw = (u_map_flags & 64) != 0;
     if (raw) base.rgb *= base.rgb;
     base *= u_base_factor;
     float metallic = u_metal_rough.x, ao = 1.0;
-    if ((u_map_flags & 2) != 0) {
+    if (ORM_MAP) {
         vec3 orm = texture(u_orm_map, v_uv).rgb;
         ao = orm.r;
         metallic *= orm.b;
     }
     vec3 f0 = mix(vec3(0.04), base.rgb, metallic);
     vec3 color;
-    if ((u_map_flags & 32) != 0) {
+    if (BAKED) {
         // The light map holds irradiance (ambient + sun + lights, diffuse); metals get a rough
         // specular share of it.
         vec3 light = texture(u_lightmap, v_lightmap_uv).rgb;
@@ -54,7 +68,7 @@ void main() {
         color = base.rgb * (1.0 - metallic) * v_diffuse * ao + f0 * v_specular;
     }
     vec3 emissive = u_emissive_factor * v_emissive_scale;
-    if ((u_map_flags & 4) != 0) {
+    if (EMISSIVE_MAP) {
         vec3 e = texture(u_emissive_map, v_uv).rgb;
         emissive *= raw ? e * e : e;
     }

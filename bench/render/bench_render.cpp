@@ -17,6 +17,13 @@
 #include "shell/offscreen_context.h"
 
 #include <epoxy/gl.h>
+#if __has_include(<valgrind/callgrind.h>)
+#include <valgrind/callgrind.h>
+#else
+#define CALLGRIND_START_INSTRUMENTATION
+#define CALLGRIND_STOP_INSTRUMENTATION
+#define CALLGRIND_DUMP_STATS_AT(name)
+#endif
 
 #include <algorithm>
 #include <cctype>
@@ -49,7 +56,10 @@ struct Variant {
     bool fast_trilinear = false;
     int view_model_msaa = render::RendererSettings{}.view_model_msaa;
     bool contact_shadows = true;
-    bool model_lods = true; // designers' models drawn at their levels of detail
+    bool model_lods = true;      // designers' models drawn at their levels of detail
+    bool model_shaders = true;   // RendererSettings::fast_model_shaders
+    bool prepass_floors = false; // !RendererSettings::prepass_skips_floors
+    bool rifle = true;           // the first-person rifle drawn
 };
 
 struct Measurement {
@@ -101,6 +111,8 @@ void measure(Measurement& m, shell::OffscreenContext& ctx, render::AssetLibrary&
     settings.fast_trilinear = v.fast_trilinear;
     settings.view_model_msaa = v.view_model_msaa;
     settings.contact_shadows = v.contact_shadows;
+    settings.fast_model_shaders = v.model_shaders;
+    settings.prepass_skips_floors = !v.prepass_floors;
     scene.set_doors_occlude(v.doors_occlude);
     scene.set_model_lods(v.model_lods);
     const float default_anisotropy = assets.textures().max_anisotropy();
@@ -125,7 +137,12 @@ void measure(Measurement& m, shell::OffscreenContext& ctx, render::AssetLibrary&
     GLuint query = 0;
     glGenQueries(1, &query);
     for (int i = -warmup; i < frames; ++i) {
-        if (i == 0) cpu_start = cpu_now_ms();
+        if (i == 0) {
+            cpu_start = cpu_now_ms();
+            // Under `valgrind --tool=callgrind --instr-atstart=no` only the timed frames are counted, one
+            // dump per variant and round (instructions do not depend on the machine's load).
+            CALLGRIND_START_INSTRUMENTATION;
+        }
         auto t0 = std::chrono::steady_clock::now();
         render::SceneFrame frame;
         frame.camera = path_camera(start, std::max(i, 0), frames);
@@ -135,7 +152,7 @@ void measure(Measurement& m, shell::OffscreenContext& ctx, render::AssetLibrary&
         frame.environment = scene.environment();
         frame.instances = &instances;
         frame.lights = &lights;
-        frame.view_model = &view_model;
+        frame.view_model = v.rifle ? &view_model : nullptr;
         frame.width = width;
         frame.height = height;
         if (v.shadow_every_frame) (*renderer)->invalidate_shadows();
@@ -161,6 +178,8 @@ void measure(Measurement& m, shell::OffscreenContext& ctx, render::AssetLibrary&
         }
     }
     m.cpu_total_ms += cpu_now_ms() - cpu_start;
+    CALLGRIND_STOP_INSTRUMENTATION;
+    CALLGRIND_DUMP_STATS_AT(v.name);
     glDeleteQueries(1, &query);
     if (!shot_path.empty()) { // the start view, for side-by-side comparisons of the variants
         render::SceneFrame frame;
@@ -275,6 +294,12 @@ int run(int argc, const char* const* argv) {
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.doors_occlude = false; });
     with("fast, scale 0.5, one shader",
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.fast_level_shader = false; });
+    with("fast, scale 1, floors in pre-pass",
+         [](Variant& v) { v.quality = Q::Fast, v.render_scale = 1.0f, v.prepass_floors = true; });
+    with("fast, scale 1, no rifle",
+         [](Variant& v) { v.quality = Q::Fast, v.render_scale = 1.0f, v.rifle = false; });
+    with("fast, scale 1, one model shader",
+         [](Variant& v) { v.quality = Q::Fast, v.render_scale = 1.0f, v.model_shaders = false; });
     with("fast, scale 0.5, trilinear",
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.fast_trilinear = true; });
     // The rifle's own antialiased layer (render/view_model_layer.h) against drawing it into the scene.

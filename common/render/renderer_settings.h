@@ -42,10 +42,19 @@ struct RendererSettings {
     // then models and the level are shaded against that depth, so each pixel runs the fragment shader
     // about once (without it, the floor and ceiling are shaded where the walls later cover them).
     bool depth_prepass = true;
+    // Fast path: the pre-pass leaves out the baked floors and ceilings the eye stands over or under (a box
+    // that spans the eye's x and z): they can hide only what lies beyond their own plane, so they are drawn
+    // last instead, against the walls' depth. The pre-pass then costs the walls' pixels, not the whole
+    // screen.
+    bool prepass_skips_floors = true;
     // Fast path: baked level surfaces use fast_level (two texture lookups, no branches) instead of the
     // general fast shader, whose uniform branches llvmpipe executes on both sides (ORM and emissive lookups
     // on every pixel).
     bool fast_level_shader = true;
+    // Fast path: models (robots, props, the rifle) drawn by programs whose ORM and emissive lookups are fixed
+    // at compile time (fast_model_program) instead of the general fast shader, which looks up the light map,
+    // ORM and emissive maps on every pixel whether the draw has them or not.
+    bool fast_model_shaders = true;
     // Fast path: colour maps sample the nearest mip level only (one bilinear lookup; a faint seam runs across
     // floors and ceilings where the level switches). true: blend the two nearest (trilinear): no seam and a
     // little closer to the full path (4.1 vs 4.3/255), for ~0.9 ms median and ~2 ms p99 more per 1280x720

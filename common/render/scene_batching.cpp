@@ -32,6 +32,12 @@ float distance_to_box(const Vec3& p, const geometry::Aabb& b) {
     Vec3 d = glm::max(glm::max(b.min - p, p - b.max), Vec3(0.0f));
     return glm::length(d);
 }
+
+// A box the eye stands over or under (it spans the eye's x and z): a floor or a ceiling of the room the eye
+// is in, which can hide only what lies beyond its own plane.
+bool eye_over_or_under(const Vec3& eye, const geometry::Aabb& b) {
+    return eye.x >= b.min.x && eye.x <= b.max.x && eye.z >= b.min.z && eye.z <= b.max.z;
+}
 } // namespace
 
 std::uint32_t SceneRenderer::light_mask(const SceneFrame& frame, const geometry::Aabb& box, int cap,
@@ -104,7 +110,8 @@ void SceneRenderer::cull_and_batch(const SceneFrame& frame, FrameStats& stats) {
         // added to it.
         const bool baked = fast_ && inst.lightmap != 0;
         const std::uint32_t mask = light_mask(frame, box, light_cap, baked);
-        visible_.push_back({&inst, distance_to_box(eye, box), mask, box, baked ? inst.lightmap : 0u});
+        visible_.push_back({&inst, distance_to_box(eye, box), mask, box, baked ? inst.lightmap : 0u,
+                            baked && eye_over_or_under(eye, box)});
     }
     // Group identical (material, mesh, lights) together; each group is drawn at its nearest member's
     // distance.
@@ -114,6 +121,7 @@ void SceneRenderer::cull_and_batch(const SceneFrame& frame, FrameStats& stats) {
         if (a.instance->mesh != b.instance->mesh) return a.instance->mesh < b.instance->mesh;
         if (a.light_mask != b.light_mask) return a.light_mask < b.light_mask;
         if (a.lightmap != b.lightmap) return a.lightmap < b.lightmap;
+        if (a.floor_or_ceiling != b.floor_or_ceiling) return b.floor_or_ceiling;
         return a.distance < b.distance;
     });
     std::vector<float>& batch_distance = batch_distance_;
@@ -123,18 +131,26 @@ void SceneRenderer::cull_and_batch(const SceneFrame& frame, FrameStats& stats) {
         const Visible& head = visible_[i];
         while (j < visible_.size() && visible_[j].instance->material == head.instance->material &&
                visible_[j].instance->mesh == head.instance->mesh &&
-               visible_[j].light_mask == head.light_mask && visible_[j].lightmap == head.lightmap)
+               visible_[j].light_mask == head.light_mask && visible_[j].lightmap == head.lightmap &&
+               visible_[j].floor_or_ceiling == head.floor_or_ceiling)
             ++j;
         batches_.push_back({head.instance->mesh, head.instance->material, head.light_mask,
-                            static_cast<int>(i), static_cast<int>(j - i), head.lightmap});
+                            static_cast<int>(i), static_cast<int>(j - i), head.lightmap,
+                            head.floor_or_ceiling});
         batch_distance.push_back(head.distance);
         i = j;
     }
-    // Nearest batch first (front to back); ties keep material order.
+    // Nearest batch first (front to back); ties keep material order. Floors and ceilings after everything
+    // else: in front of nothing the eye sees, so drawn last they are shaded only where nothing else covers
+    // them (no overdraw under the walls, even without the pre-pass).
     order_.resize(batches_.size());
     for (size_t i = 0; i < order_.size(); ++i) order_[i] = static_cast<int>(i);
-    std::stable_sort(order_.begin(), order_.end(),
-                     [&](int a, int b) { return batch_distance[a] < batch_distance[b]; });
+    std::stable_sort(order_.begin(), order_.end(), [&](int a, int b) {
+        const bool floor_a = batches_[static_cast<size_t>(a)].floor_or_ceiling;
+        const bool floor_b = batches_[static_cast<size_t>(b)].floor_or_ceiling;
+        if (floor_a != floor_b) return floor_b;
+        return batch_distance[a] < batch_distance[b];
+    });
     sorted_batches_.clear();
     for (int b : order_) {
         Batch batch = batches_[static_cast<size_t>(b)];

@@ -30,6 +30,9 @@ class TextureCache;
 struct ViewModel {
     std::vector<MeshInstance> instances; // in camera space (x right, y up, -z forward)
     float fov_y = radians(50.0f);
+    // Closed meshes wound counter-clockwise (the generated rifle): back faces are culled, which on a
+    // software rasteriser saves the setup of half its triangles and the pixels of its far side.
+    bool cull_back_faces = true;
 };
 
 struct SceneFrame {
@@ -109,6 +112,7 @@ class SceneRenderer {
     RendererSettings settings_;
     ShaderProgram pbr_, fast_program_, fast_level_, fast_level_lit_, shadow_, particle_, line_,
         contact_shadow_;
+    ShaderProgram fast_model_[4]; // fast_model_program(orm, emissive) at [orm + 2 * emissive]
     std::unique_ptr<ShaderLibrary> shaders_;
     std::string gl_renderer_;
     bool fast_ = false;
@@ -132,7 +136,8 @@ class SceneRenderer {
         float distance;
         std::uint32_t light_mask;
         geometry::Aabb bounds;
-        unsigned lightmap; // 0 unless the fast path reads this instance's light map
+        unsigned lightmap;     // 0 unless the fast path reads this instance's light map
+        bool floor_or_ceiling; // baked, and its box spans the eye's x and z (eye_over_or_under)
     };
     struct Batch {
         const GpuMesh* mesh;
@@ -140,6 +145,7 @@ class SceneRenderer {
         std::uint32_t light_mask;
         int first, count; // into instance_data_
         unsigned lightmap;
+        bool floor_or_ceiling; // drawn after the other batches, left out of the depth pre-pass
     };
     std::vector<Visible> visible_;
     std::vector<OccluderFace> occluder_faces_;

@@ -117,13 +117,17 @@ void SceneRenderer::draw_batches_fast(const geometry::Camera& camera, const Scen
     const bool fog = !view_model && !camera.orthographic();
     const float n = camera.near_plane, f = camera.far_plane;
     // The frame's uniforms, in every fast program (a uniform a program does not have is location -1, which
-    // GL ignores): fast (models, and any surface fast_level cannot draw), fast_level (baked level surfaces,
-    // no branches) and fast_level_lit (those a dynamic light reaches).
+    // GL ignores): fast (any surface the others cannot draw), fast_level (baked level surfaces, no branches),
+    // fast_level_lit (those a dynamic light reaches) and the four fast_model programs (models, their ORM and
+    // emissive lookups fixed at compile time).
+    constexpr int kPrograms = 7, kFirstModel = 3;
     struct Locations {
         GLint flags, baked, receive, base, emissive, metal_rough;
-    } loc[3];
-    const ShaderProgram* programs[3] = {&fast_program_, &fast_level_, &fast_level_lit_};
-    for (int i = 0; i < 3; ++i) {
+    } loc[kPrograms];
+    const ShaderProgram* programs[kPrograms] = {&fast_program_,  &fast_level_,    &fast_level_lit_,
+                                                &fast_model_[0], &fast_model_[1], &fast_model_[2],
+                                                &fast_model_[3]};
+    for (int i = 0; i < kPrograms; ++i) {
         const ShaderProgram& p = *programs[i];
         p.use();
         glUniformMatrix4fv(p.location("u_view_projection"), 1, GL_FALSE, glm::value_ptr(view_projection));
@@ -146,11 +150,12 @@ void SceneRenderer::draw_batches_fast(const geometry::Camera& camera, const Scen
     glBindTexture(GL_TEXTURE_2D, shadow_texture_);
     const bool shadows = settings_.shadows && shadow_texture_ != 0 && !view_model;
 
-    // Depth pre-pass of the baked level geometry (walls, floors, stairs: a few hundred triangles), position
-    // only, pushed back by a polygon offset so that the shaded pass's own fragments still pass GL_LESS
-    // even if the two programs round a vertex differently (and a model touching a wall wins the tie). Then
-    // models are shaded first (nearest first), the level last: every level pixel and most model pixels are
-    // shaded once.
+    // Depth pre-pass of the baked level geometry (walls, stairs: a few hundred triangles), position only,
+    // pushed back by a polygon offset so that the shaded pass's own fragments still pass GL_LESS even if the
+    // two programs round a vertex differently (and a model touching a wall wins the tie). The floors and
+    // ceilings the eye stands over or under are left out (prepass_skips_floors): drawn last, against the
+    // walls' depth, they are shaded only where visible anyway. Then models are shaded first (nearest
+    // first), the level last: every level pixel and most model pixels are shaded once.
     const bool prepass = settings_.depth_prepass && !view_model;
     if (prepass) {
         shadow_.use();
@@ -160,7 +165,8 @@ void SceneRenderer::draw_batches_fast(const geometry::Camera& camera, const Scen
         glEnable(GL_POLYGON_OFFSET_FILL);
         glPolygonOffset(1.0f, 2.0f);
         for (const Batch& b : batches_)
-            if (b.lightmap != 0) draw_instanced(b, stats);
+            if (b.lightmap != 0 && !(b.floor_or_ceiling && settings_.prepass_skips_floors))
+                draw_instanced(b, stats);
         glDisable(GL_POLYGON_OFFSET_FILL);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     }
@@ -183,7 +189,10 @@ void SceneRenderer::draw_batches_fast(const geometry::Camera& camera, const Scen
             // surfaces, rare, leave dynamic lights out).
             const bool level_program = baked && occluded_base && !m.emissive_map && raw_srgb_ &&
                                        !m.placeholder && settings_.fast_level_shader;
-            const int program = level_program ? (b.light_mask != 0 ? 2 : 1) : 0;
+            const bool model_program = !baked && settings_.fast_model_shaders;
+            const int program = level_program   ? (b.light_mask != 0 ? 2 : 1)
+                                : model_program ? kFirstModel + (m.orm_map ? 1 : 0) + (m.emissive_map ? 2 : 0)
+                                                : 0;
             if (program != current) {
                 programs[program]->use();
                 current = program;

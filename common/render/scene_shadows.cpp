@@ -58,7 +58,7 @@ void SceneRenderer::render_shadows(const SceneFrame& frame, FrameStats& stats) {
             ++j;
         }
         shadow_batches_.push_back(
-            {shadow_order_[i]->mesh, nullptr, 0, static_cast<int>(i), static_cast<int>(j - i), 0u});
+            {shadow_order_[i]->mesh, nullptr, 0, static_cast<int>(i), static_cast<int>(j - i), 0u, false});
         i = j;
     }
     Vec3 center = bounds.center();

@@ -22,6 +22,18 @@ const ProgramFiles& fast_level_lit_program() {
                                 "#define DYNAMIC_LIGHTS\n"};
     return p;
 }
+const ProgramFiles& fast_model_program(bool orm_map, bool emissive_map) {
+    static const ProgramFiles p[4] = {
+        {"fast_model", "fast.vert", "fast.frag",
+         "#define FIXED_MAPS\n#define FIXED_ORM false\n#define FIXED_EMISSIVE false\n"},
+        {"fast_model_orm", "fast.vert", "fast.frag",
+         "#define FIXED_MAPS\n#define FIXED_ORM true\n#define FIXED_EMISSIVE false\n"},
+        {"fast_model_emissive", "fast.vert", "fast.frag",
+         "#define FIXED_MAPS\n#define FIXED_ORM false\n#define FIXED_EMISSIVE true\n"},
+        {"fast_model_orm_emissive", "fast.vert", "fast.frag",
+         "#define FIXED_MAPS\n#define FIXED_ORM true\n#define FIXED_EMISSIVE true\n"}};
+    return p[(orm_map ? 1 : 0) + (emissive_map ? 2 : 0)];
+}
 const ProgramFiles& shadow_program() {
     static const ProgramFiles p{"shadow", "shadow.vert", "shadow.frag"};
     return p;
@@ -44,10 +56,19 @@ const ProgramFiles& contact_shadow_program() {
     return p;
 }
 std::vector<const ProgramFiles*> all_programs() {
-    return {
-        &pbr_program(),           &fast_program(),     &fast_level_program(), &fast_level_lit_program(),
-        &shadow_program(),        &particle_program(), &line_program(),       &view_model_composite_program(),
-        &contact_shadow_program()};
+    return {&pbr_program(),
+            &fast_program(),
+            &fast_level_program(),
+            &fast_level_lit_program(),
+            &shadow_program(),
+            &particle_program(),
+            &line_program(),
+            &view_model_composite_program(),
+            &contact_shadow_program(),
+            &fast_model_program(false, false),
+            &fast_model_program(true, false),
+            &fast_model_program(false, true),
+            &fast_model_program(true, true)};
 }
 
 std::filesystem::path default_shader_dir() {

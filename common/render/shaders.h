@@ -34,6 +34,9 @@ const ProgramFiles& pbr_program();
 const ProgramFiles& fast_program();
 const ProgramFiles& fast_level_program();     // the fast path's baked level surfaces (no branches)
 const ProgramFiles& fast_level_lit_program(); // ... with Light::dynamic lights added per pixel
+// The fast path's models (no light map) with the ORM and emissive maps fixed at compile time: llvmpipe pays
+// for every lookup in a branch on a uniform, taken or not.
+const ProgramFiles& fast_model_program(bool orm_map, bool emissive_map);
 const ProgramFiles& shadow_program();
 const ProgramFiles& particle_program();
 const ProgramFiles& line_program();

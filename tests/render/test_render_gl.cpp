@@ -50,8 +50,9 @@ TEST_CASE("every shader program compiles and links on this driver") {
         CHECK_MESSAGE(program.ok(), (program.ok() ? "" : program.error().str()));
         ++count;
     }
-    CHECK(count == 9); // pbr, fast, fast_level, fast_level_lit, shadow, particle, line, view_model_composite,
-                       // contact_shadow
+    // pbr, fast, fast_level, fast_level_lit, shadow, particle, line, view_model_composite, contact_shadow and
+    // the four fast_model programs
+    CHECK(count == 13);
 }
 
 TEST_CASE("a broken shader reports file:line: message") {

@@ -161,8 +161,8 @@ TEST_CASE("fast path: trilinear mips (an option; nearest mip by default) change 
 }
 
 TEST_CASE(
-    "fast path: occlusion culling, the depth pre-pass and fast_level change no pixel, anywhere in the main "
-    "level") {
+    "fast path: occlusion culling, the depth pre-pass (floors left out), fast_level, the model programs and "
+    "the rifle's back-face culling change no pixel, anywhere in the main level") {
     KS_REQUIRE_GL();
     auto level = level::load_level_file(ks::test::source_dir() / "levels" / "main.json");
     REQUIRE(level.ok());
@@ -172,7 +172,14 @@ TEST_CASE(
     plain.occlusion_culling = false;
     plain.depth_prepass = false;
     plain.fast_level_shader = false;
+    plain.fast_model_shaders = false;
+    RendererSettings floors_in_prepass = fast_quality(1.0f);
+    floors_in_prepass.prepass_skips_floors = false;
+    CHECK(fast_quality(1.0f).prepass_skips_floors);
+    CHECK(fast_quality(1.0f).fast_model_shaders);
     auto fast = SceneRenderer::create(assets.textures(), fast_quality(1.0f));
+    auto whole_prepass = SceneRenderer::create(assets.textures(), floors_in_prepass);
+    REQUIRE(whole_prepass);
     auto reference = SceneRenderer::create(assets.textures(), plain);
     REQUIRE(fast);
     REQUIRE(reference);
@@ -188,9 +195,14 @@ TEST_CASE(
     frame.width = ctx->width();
     frame.height = ctx->height();
     frame.camera = player_start_camera(*level, 16.0f / 9.0f);
+    // The rifle in view: the model programs draw it, culled on one side and not on the other.
+    ViewModel rifle;
+    std::vector<Mat4> scratch;
+    assets.model("rifle").emit(rifle_view_transform(0.0f), scratch, rifle.instances);
+    frame.view_model = &rifle;
     // Eyes on a grid over the whole level (in rooms, in walls' ends, outside), four headings each, looking
     // slightly down and up: the images must match (the pre-pass may move a depth-tied pixel by rounding).
-    int views = 0, occluded_views = 0;
+    int views = 0, occluded_views = 0, floors_skipped = 0;
     long long drawn = 0, drawn_reference = 0;
     double worst = 0.0;
     for (float x = -6.0f; x <= 96.0f; x += 17.0f)
@@ -199,11 +211,19 @@ TEST_CASE(
                 frame.camera.position = Vec3(x, heading % 2 ? 3.0f : 9.0f, z);
                 frame.camera.yaw = heading * kPi * 0.5f + 0.3f;
                 frame.camera.pitch = heading % 2 ? -0.15f : 0.2f;
+                rifle.cull_back_faces = true;
                 FrameStats a = (*fast)->render(frame);
                 std::vector<unsigned char> img = ctx->read_rgb();
+                FrameStats w = (*whole_prepass)->render(frame);
+                std::vector<unsigned char> whole = ctx->read_rgb();
+                rifle.cull_back_faces = false;
                 FrameStats b = (*reference)->render(frame);
                 std::vector<unsigned char> ref = ctx->read_rgb();
                 const double diff = ks::test::mean_abs_diff(img, ref);
+                CHECK(ks::test::mean_abs_diff(img, whole) < 0.05);
+                // The floor or ceiling under or over the eye is not in the pre-pass: fewer draws.
+                CHECK(a.draw_calls <= w.draw_calls);
+                floors_skipped += a.draw_calls < w.draw_calls ? 1 : 0;
                 CAPTURE(x);
                 CAPTURE(z);
                 CAPTURE(heading);
@@ -220,6 +240,8 @@ TEST_CASE(
                   << " views culled something");
     CHECK(occluded_views > views / 4);
     CHECK(drawn < drawn_reference);
+    MESSAGE(floors_skipped << " views left a floor or ceiling out of the pre-pass");
+    CHECK(floors_skipped > views / 4);
 }
 
 TEST_CASE("lights toggle: switching every level light off darkens the view, emissive lenses follow") {
