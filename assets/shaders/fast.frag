@@ -1,12 +1,13 @@
 #version 330 core
-// The fast path's pixels: base colour x (light map or per-vertex light) + emissive, fog from the depth
-// buffer's value (no extra varying), ACES and sRGB like pbr.frag.
+// The fast path's pixels: base colour x (light map or per-vertex light) + emissive, fog from the view depth
+// (fog_amount), ACES and a gamma-2 encoding like pbr.frag's sRGB.
 in vec2 v_uv;
 in vec2 v_lightmap_uv;
+in float v_fog_half;
 in vec3 v_diffuse;
 in vec3 v_specular;
-in float v_emissive_scale;
-in vec3 v_tint; // MeshInstance::tint: its colour replaces part of the shading
+flat in float v_emissive_scale;
+flat in vec3 v_tint; // MeshInstance::tint: its colour replaces part of the shading
 out vec4 o_color;
 
 uniform sampler2D u_base_map;
@@ -19,9 +20,7 @@ uniform vec2 u_metal_rough;
 uniform int u_map_flags;       // 2 orm, 4 emissive, 32 light map, 64 sRGB maps read raw (decode here)
 uniform float u_lightmap_range; // > 0: the light map is 8-bit, sqrt-encoded over 0..range
 uniform vec3 u_fog_color;
-uniform float u_fog_density;
 uniform float u_exposure;
-uniform vec2 u_depth_to_view;  // view depth = x / (y - window depth): x = n f / (f - n), y = f / (f - n)
 
 vec3 aces(vec3 x) { // Narkowicz 2015 fit
     return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
@@ -29,6 +28,16 @@ vec3 aces(vec3 x) { // Narkowicz 2015 fit
 // Gamma 2 instead of the sRGB curve: a square root and a square instead of pow() per channel (within
 // 9/255 of sRGB in the mid-tones; a texture shown at unit light round-trips exactly).
 vec3 encode(vec3 c) { return sqrt(c); }
+
+// Exponential-squared fog, 1 - exp(-(density x view depth)^2), from v_fog_half = density x depth / 2:
+// exp(-4s) as (1 / (1 + s + s^2/2 + s^3/6))^4 with s = v_fog_half^2, within 0.0015 of exp everywhere
+// (0.4/255), where llvmpipe's exp() and the depth buffer's division cost a sixth of a level pixel.
+float fog_amount() {
+    float s = v_fog_half * v_fog_half;
+    float e = 1.0 / (1.0 + s * (1.0 + s * (0.5 + s * (1.0 / 6.0))));
+    e *= e;
+    return 1.0 - e * e;
+}
 
 // Which maps a draw reads. The general program ("fast") decides per draw from u_map_flags; the model
 // programs ("fast_model", "fast_model_orm", ...) are this file built with FIXED_MAPS and fix them at compile
@@ -77,8 +86,6 @@ void main() {
     // red, not orange); no tint leaves the colour as it was.
     color = color * (1.0 - 0.6 * clamp(max(v_tint.r, max(v_tint.g, v_tint.b)), 0.0, 1.0)) + v_tint;
 
-    float dist = u_depth_to_view.x / (u_depth_to_view.y - gl_FragCoord.z);
-    float fog = 1.0 - exp(-u_fog_density * u_fog_density * dist * dist);
-    color = mix(color, u_fog_color, clamp(fog, 0.0, 1.0));
+    color = mix(color, u_fog_color, fog_amount());
     o_color = vec4(encode(aces(color * u_exposure)), base.a);
 }

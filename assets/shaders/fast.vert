@@ -11,6 +11,7 @@ layout(location = 4) in mat4 i_model;
 layout(location = 8) in vec4 i_params;
 layout(location = 9) in vec2 a_lightmap_uv;
 uniform mat4 u_view_projection;
+uniform float u_fog_density; // 0: no fog (orthographic views, the view model)
 uniform mat4 u_shadow_matrix;
 uniform sampler2DShadow u_shadow_map;
 uniform int u_baked;          // 1: the light map lights this draw
@@ -28,16 +29,18 @@ uniform vec4 u_light_direction[MAX_LIGHTS]; // spot axis xyz, w = cos(outer)
 uniform float u_light_inner[MAX_LIGHTS];    // cos(inner)
 out vec2 v_uv;
 out vec2 v_lightmap_uv;
+out float v_fog_half; // fog density x view depth / 2: affine in space, so interpolated exactly
 out vec3 v_diffuse;  // times albedo * (1 - metallic) in the fragment shader
 out vec3 v_specular; // times F0
-out float v_emissive_scale;
-out vec3 v_tint; // MeshInstance::tint
+flat out float v_emissive_scale; // per instance: flat costs no interpolation per pixel
+flat out vec3 v_tint; // MeshInstance::tint (per instance, flat)
 
 const float PI = 3.14159265;
 
 void main() {
     vec4 world = i_model * vec4(a_position, 1.0);
     gl_Position = u_view_projection * world;
+    v_fog_half = 0.5 * u_fog_density * gl_Position.w; // w = view depth (perspective)
     v_uv = a_uv;
     v_lightmap_uv = a_lightmap_uv;
     v_emissive_scale = i_params.x;

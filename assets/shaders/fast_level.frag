@@ -7,6 +7,7 @@
 // (muzzle flashes) per pixel, in fast.vert's units: the renderer uses it only for surfaces one reaches.
 in vec2 v_uv;
 in vec2 v_lightmap_uv;
+in float v_fog_half;
 out vec4 o_color;
 #ifdef DYNAMIC_LIGHTS
 #define MAX_LIGHTS 8
@@ -45,12 +46,20 @@ uniform vec3 u_emissive_factor;
 uniform vec2 u_metal_rough;
 uniform float u_lightmap_range; // > 0: the light map is 8-bit, sqrt-encoded over 0..range; 0: linear float
 uniform vec3 u_fog_color;
-uniform float u_fog_density;
 uniform float u_exposure;
-uniform vec2 u_depth_to_view;  // view depth = x / (y - window depth): x = n f / (f - n), y = f / (f - n)
 
 vec3 aces(vec3 x) { // Narkowicz 2015 fit
     return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
+}
+
+// Exponential-squared fog, 1 - exp(-(density x view depth)^2), from v_fog_half = density x depth / 2:
+// exp(-4s) as (1 / (1 + s + s^2/2 + s^3/6))^4 with s = v_fog_half^2, within 0.0015 of exp everywhere
+// (0.4/255), where llvmpipe's exp() and the depth buffer's division cost a sixth of a level pixel.
+float fog_amount() {
+    float s = v_fog_half * v_fog_half;
+    float e = 1.0 / (1.0 + s * (1.0 + s * (0.5 + s * (1.0 / 6.0))));
+    e *= e;
+    return 1.0 - e * e;
 }
 
 void main() {
@@ -66,8 +75,6 @@ void main() {
 #endif
     vec3 color = light * (base.rgb * (1.0 - metallic) + f0 * 0.5) + u_emissive_factor;
 
-    float dist = u_depth_to_view.x / (u_depth_to_view.y - gl_FragCoord.z);
-    float fog = 1.0 - exp(-u_fog_density * u_fog_density * dist * dist);
-    color = mix(color, u_fog_color, clamp(fog, 0.0, 1.0));
+    color = mix(color, u_fog_color, fog_amount());
     o_color = vec4(sqrt(aces(color * u_exposure)), base.a);
 }

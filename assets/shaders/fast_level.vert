@@ -8,8 +8,10 @@ layout(location = 2) in vec2 a_uv;
 layout(location = 4) in mat4 i_model;
 layout(location = 9) in vec2 a_lightmap_uv;
 uniform mat4 u_view_projection;
+uniform float u_fog_density; // 0: no fog (orthographic views, the view model)
 out vec2 v_uv;
 out vec2 v_lightmap_uv;
+out float v_fog_half; // fog density x view depth / 2: affine in space, so interpolated exactly
 #ifdef DYNAMIC_LIGHTS
 layout(location = 1) in vec3 a_normal;
 out vec3 v_world;
@@ -19,6 +21,7 @@ out vec3 v_normal;
 void main() {
     vec4 world = i_model * vec4(a_position, 1.0);
     gl_Position = u_view_projection * world;
+    v_fog_half = 0.5 * u_fog_density * gl_Position.w; // w = view depth (perspective)
     v_uv = a_uv;
     v_lightmap_uv = a_lightmap_uv;
 #ifdef DYNAMIC_LIGHTS

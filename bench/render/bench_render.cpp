@@ -29,6 +29,7 @@
 #include <cctype>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <string>
@@ -112,6 +113,8 @@ void measure(Measurement& m, shell::OffscreenContext& ctx, render::AssetLibrary&
     settings.view_model_msaa = v.view_model_msaa;
     settings.contact_shadows = v.contact_shadows;
     settings.fast_model_shaders = v.model_shaders;
+    // A scratch copy of the shaders, for trying a change without touching assets/shaders/.
+    if (const char* dir = std::getenv("KS_SHADER_DIR"); dir && *dir) settings.shader_dir = dir;
     settings.prepass_skips_floors = !v.prepass_floors;
     scene.set_doors_occlude(v.doors_occlude);
     scene.set_model_lods(v.model_lods);

@@ -113,9 +113,8 @@ void SceneRenderer::draw_batches_fast(const geometry::Camera& camera, const Scen
     const Mat4 view_projection = camera.projection() * camera.view();
     const Vec3 to_sun = -glm::normalize(env.sun_direction);
     const Vec3 sun = env.sun_color * kLegacyLightScale;
-    // Fog from the depth buffer's value (perspective only; orthographic views have no fog here).
+    // Fog from the view depth (perspective only; orthographic views have no fog here).
     const bool fog = !view_model && !camera.orthographic();
-    const float n = camera.near_plane, f = camera.far_plane;
     // The frame's uniforms, in every fast program (a uniform a program does not have is location -1, which
     // GL ignores): fast (any surface the others cannot draw), fast_level (baked level surfaces, no branches),
     // fast_level_lit (those a dynamic light reaches) and the four fast_model programs (models, their ORM and
@@ -139,7 +138,6 @@ void SceneRenderer::draw_batches_fast(const geometry::Camera& camera, const Scen
         glUniform3fv(p.location("u_ground_color"), 1, glm::value_ptr(env.ground_color));
         glUniform3fv(p.location("u_fog_color"), 1, glm::value_ptr(env.fog_color));
         glUniform1f(p.location("u_fog_density"), fog ? env.fog_density : 0.0f);
-        glUniform2f(p.location("u_depth_to_view"), n * f / (f - n), f / (f - n));
         glUniform1f(p.location("u_exposure"), env.exposure);
         glUniform1f(p.location("u_lightmap_range"), lightmap_encoding_range(settings_.lightmap_float));
         loc[i] = {p.location("u_map_flags"),       p.location("u_baked"),

@@ -46,7 +46,8 @@ RendererSettings fast_quality(float scale = 1.0f) {
     return s;
 }
 
-MainLevelView render_main_level_start(RendererSettings settings = full_quality()) {
+// `fog_density` < 0: the level's own fog.
+MainLevelView render_main_level_start(RendererSettings settings = full_quality(), float fog_density = -1.0f) {
     auto level = level::load_level_file(ks::test::source_dir() / "levels" / "main.json");
     REQUIRE_MESSAGE(level.ok(), (level.ok() ? "" : level.error().str()));
     AssetLibrary assets(assets_dir());
@@ -69,6 +70,7 @@ MainLevelView render_main_level_start(RendererSettings settings = full_quality()
     SceneFrame frame;
     frame.camera = cam;
     frame.environment = scene->environment();
+    if (fog_density >= 0.0f) frame.environment.fog_density = fog_density;
     frame.instances = &instances;
     frame.lights = &lights;
     frame.view_model = &vm;
@@ -140,6 +142,29 @@ TEST_CASE("fast path (software rasterisers): the main level start looks like the
     CHECK(std::abs(a.mean_luma - b.mean_luma) < 6.0);
     CHECK(b.luma_stddev > 15.0);
     CHECK(b.magenta_fraction < 0.001);
+}
+
+TEST_CASE(
+    "fast path: fog thickens with density as the full path's does (the cheap exponential in the shader)") {
+    KS_REQUIRE_GL();
+    auto mean_luma = [](const std::vector<unsigned char>& rgb) {
+        return ks::test::image_stats(rgb, ks::test::kGlWidth, ks::test::kGlHeight).mean_luma;
+    };
+    // Down the first room to its far wall (~50 units): density 0.02 hides about two thirds of it, a darkening
+    // of 11-13 in mean luma.
+    const double clear_fast = mean_luma(render_main_level_start(fast_quality(1.0f), 0.0f).rgb);
+    const double clear_full = mean_luma(render_main_level_start(full_quality(), 0.0f).rgb);
+    const double foggy_fast = mean_luma(render_main_level_start(fast_quality(1.0f), 0.02f).rgb);
+    const double foggy_full = mean_luma(render_main_level_start(full_quality(), 0.02f).rgb);
+    const double level_fast = mean_luma(render_main_level_start(fast_quality(1.0f)).rgb);
+    MESSAGE("mean luma, no fog / the level's 0.004 / 0.02: fast "
+            << clear_fast << " / " << level_fast << " / " << foggy_fast << ", full " << clear_full
+            << " / - / " << foggy_full);
+    CHECK(foggy_fast < clear_fast - 8.0); // the fog reaches the pixels
+    CHECK(level_fast < clear_fast);       // the level's own light fog too
+    CHECK(level_fast > foggy_fast);
+    // The same darkening as the full path's exact exp() (which fogs by radial distance, not view depth).
+    CHECK(std::abs((clear_fast - foggy_fast) - (clear_full - foggy_full)) < 6.0);
 }
 
 TEST_CASE("fast path: trilinear mips (an option; nearest mip by default) change the floor, closer to full") {
