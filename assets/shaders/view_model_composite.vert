@@ -1,6 +1,6 @@
 #version 330 core
-// One triangle that covers the viewport (no vertex buffer: positions from gl_VertexID).
+// The view model's footprint (its convex hull on screen, or its rectangle) as a triangle fan in clip space.
+layout(location = 0) in vec2 a_position;
 void main() {
-    vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
-    gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
+    gl_Position = vec4(a_position, 0.0, 1.0);
 }

@@ -251,8 +251,9 @@ void SceneRenderer::draw_view_model(const SceneFrame& frame, FrameStats& stats) 
 }
 
 void SceneRenderer::draw_view_model_layer(const SceneFrame& frame, FrameStats& stats, unsigned target_fbo) {
-    const PixelRect rect = view_model_screen_rect(
+    const ScreenFootprint where = view_model_footprint(
         frame.view_model->instances, view_model_camera(frame).projection(), frame.width, frame.height);
+    const PixelRect& rect = where.rect;
     if (rect.empty()) return;
     if (auto begun = view_model_layer_.begin(frame.width, frame.height, settings_.view_model_msaa, rect);
         !begun) {
@@ -266,7 +267,7 @@ void SceneRenderer::draw_view_model_layer(const SceneFrame& frame, FrameStats& s
         return;
     }
     draw_view_model(frame, stats);
-    view_model_layer_.composite(target_fbo, rect);
+    view_model_layer_.composite(target_fbo, where);
 }
 
 FrameStats SceneRenderer::render(const SceneFrame& frame) {

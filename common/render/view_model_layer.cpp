@@ -1,5 +1,6 @@
 #include "render/view_model_layer.h"
 
+#include "geometry/convex_hull_2d.h"
 #include "render/gpu_mesh.h"
 
 #include <epoxy/gl.h>
@@ -9,8 +10,10 @@
 
 namespace ks::render {
 
-PixelRect view_model_screen_rect(const std::vector<MeshInstance>& instances, const Mat4& projection,
-                                 int width, int height) {
+ScreenFootprint view_model_footprint(const std::vector<MeshInstance>& instances, const Mat4& projection,
+                                     int width, int height) {
+    constexpr float kRim = 1.5f; // pixels around each corner: the edge filter reads one pixel around
+    ScreenFootprint out;
     float lo_x = 1e30f, lo_y = 1e30f, hi_x = -1e30f, hi_y = -1e30f;
     for (const MeshInstance& inst : instances) {
         if (!inst.mesh) continue;
@@ -20,28 +23,44 @@ PixelRect view_model_screen_rect(const std::vector<MeshInstance>& instances, con
                              (corner & 4) ? b.max.z : b.min.z);
             const Vec4 clip = projection * (inst.world * Vec4(local, 1.0f));
             // A corner behind the eye projects nowhere useful: the whole target may be covered.
-            if (clip.w <= 1e-4f) return PixelRect{0, 0, width, height};
+            if (clip.w <= 1e-4f) return {PixelRect{0, 0, width, height}, {}};
             const float x = (clip.x / clip.w * 0.5f + 0.5f) * static_cast<float>(width);
             const float y = (clip.y / clip.w * 0.5f + 0.5f) * static_cast<float>(height);
             lo_x = std::min(lo_x, x);
             lo_y = std::min(lo_y, y);
             hi_x = std::max(hi_x, x);
             hi_y = std::max(hi_y, y);
+            for (float dx : {-kRim, kRim})
+                for (float dy : {-kRim, kRim}) out.hull.push_back(Vec2(x + dx, y + dy));
         }
     }
     if (lo_x > hi_x) return {};
-    const int x0 = std::clamp(static_cast<int>(std::floor(lo_x)) - 1, 0, width);
-    const int y0 = std::clamp(static_cast<int>(std::floor(lo_y)) - 1, 0, height);
-    const int x1 = std::clamp(static_cast<int>(std::ceil(hi_x)) + 1, 0, width);
-    const int y1 = std::clamp(static_cast<int>(std::ceil(hi_y)) + 1, 0, height);
-    return PixelRect{x0, y0, x1 - x0, y1 - y0};
+    const int x0 = std::clamp(static_cast<int>(std::floor(lo_x - kRim)), 0, width);
+    const int y0 = std::clamp(static_cast<int>(std::floor(lo_y - kRim)), 0, height);
+    const int x1 = std::clamp(static_cast<int>(std::ceil(hi_x + kRim)), 0, width);
+    const int y1 = std::clamp(static_cast<int>(std::ceil(hi_y + kRim)), 0, height);
+    out.rect = PixelRect{x0, y0, x1 - x0, y1 - y0};
+    geometry::convex_hull_2d(out.hull);
+    if (out.hull.size() >= 3)
+        geometry::clip_convex_polygon(out.hull, Vec2(static_cast<float>(x0), static_cast<float>(y0)),
+                                      Vec2(static_cast<float>(x1), static_cast<float>(y1)));
+    else
+        out.hull.clear();
+    return out;
 }
 
 ViewModelLayer::ViewModelLayer() {
     glGenVertexArrays(1, &vao_);
+    glGenBuffers(1, &vertex_buffer_);
+    glBindVertexArray(vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, sizeof(Vec2), nullptr);
+    glBindVertexArray(0);
 }
 
 ViewModelLayer::~ViewModelLayer() {
+    glDeleteBuffers(1, &vertex_buffer_);
     glDeleteVertexArrays(1, &vao_);
 }
 
@@ -74,7 +93,8 @@ Result<void> ViewModelLayer::begin(int width, int height, int samples, const Pix
     return ok();
 }
 
-void ViewModelLayer::composite(unsigned target_framebuffer, const PixelRect& rect) {
+void ViewModelLayer::composite(unsigned target_framebuffer, const ScreenFootprint& where) {
+    const PixelRect& rect = where.rect;
     glDisable(GL_SCISSOR_TEST);
     if (samples_ > 1) {
         glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampled_->framebuffer());
@@ -96,8 +116,24 @@ void ViewModelLayer::composite(unsigned target_framebuffer, const PixelRect& rec
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, resolved_.texture());
     glBindSampler(0, 0);
+    // The hull (or the rectangle) as a triangle fan in clip space.
+    fan_.clear();
+    auto to_clip = [&](float x, float y) {
+        fan_.push_back(Vec2(x / static_cast<float>(width_) * 2.0f - 1.0f,
+                            y / static_cast<float>(height_) * 2.0f - 1.0f));
+    };
+    if (!where.hull.empty())
+        for (const Vec2& p : where.hull) to_clip(p.x, p.y);
+    else {
+        const float x0 = static_cast<float>(rect.x), y0 = static_cast<float>(rect.y);
+        const float x1 = x0 + static_cast<float>(rect.width), y1 = y0 + static_cast<float>(rect.height);
+        to_clip(x0, y0), to_clip(x1, y0), to_clip(x1, y1), to_clip(x0, y1);
+    }
     glBindVertexArray(vao_);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(fan_.size() * sizeof(Vec2)), fan_.data(),
+                 GL_STREAM_DRAW);
+    glDrawArrays(GL_TRIANGLE_FAN, 0, static_cast<GLsizei>(fan_.size()));
     glDisable(GL_BLEND);
     glDisable(GL_SCISSOR_TEST);
     glEnable(GL_DEPTH_TEST);

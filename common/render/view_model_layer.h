@@ -21,10 +21,18 @@ struct PixelRect {
 };
 
 // The pixels that `instances` (camera-space placements) can cover under `projection` in a width x height
-// target: their mesh bounds' corners projected, widened by a pixel for the antialiased rim and clipped to
-// the target. Empty when nothing lies in front of the camera.
-PixelRect view_model_screen_rect(const std::vector<MeshInstance>& instances, const Mat4& projection,
-                                 int width, int height);
+// target: their mesh bounds' corners projected, widened by a pixel and a half for the antialiased rim. The
+// rectangle is clipped to the target (empty when nothing lies in front of the camera); the hull is the
+// corners' convex hull cut to that rectangle (window coordinates, counter-clockwise), empty when a corner
+// lies behind the eye
+// (then the rectangle is all there is). The rifle's hull is about four fifths of its rectangle: the composite
+// draws the hull.
+struct ScreenFootprint {
+    PixelRect rect;
+    std::vector<Vec2> hull;
+};
+ScreenFootprint view_model_footprint(const std::vector<MeshInstance>& instances, const Mat4& projection,
+                                     int width, int height);
 
 class ViewModelLayer {
   public:
@@ -38,14 +46,16 @@ class ViewModelLayer {
     // `rect` to transparent black, with the scissor left on it for the view model's draws. An error when the
     // driver cannot make the target.
     Result<void> begin(int width, int height, int samples, const PixelRect& rect);
-    // Resolves `rect` and blends it over `target_framebuffer` (left bound, blending and scissor off).
-    void composite(unsigned target_framebuffer, const PixelRect& rect);
+    // Resolves `where.rect` and blends the pixels inside `where.hull` (the rectangle's when it has none) over
+    // `target_framebuffer` (left bound, blending and scissor off).
+    void composite(unsigned target_framebuffer, const ScreenFootprint& where);
 
   private:
     std::unique_ptr<RenderTarget> multisampled_;
     RenderTarget resolved_{{ColourStorage::Texture, 0}};
     ShaderProgram composite_;
-    unsigned vao_ = 0;
+    unsigned vao_ = 0, vertex_buffer_ = 0;
+    std::vector<Vec2> fan_; // the composite's polygon in clip space, reused
     int width_ = 0, height_ = 0, samples_ = 1;
 };
 

@@ -4,11 +4,13 @@
 #include "gl_test_support.h"
 #include "test_support.h"
 
+#include "geometry/convex_hull_2d.h"
 #include "level/level_io.h"
 #include "render/asset_library.h"
 #include "render/level_scene.h"
 #include "render/scene_renderer.h"
 #include "render/view_model.h"
+#include "render/view_model_layer.h"
 
 #include <doctest/doctest.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -162,12 +164,14 @@ TEST_CASE("the first-person rifle is lit and orange, not a near-black silhouette
     };
     // The rifle's pixels: where drawing it changed the frame. Edge pixels: where the layer's coverage blend
     // differs from the aliased draw (the interior is shaded alike at pixel centres).
-    long rifle_pixels = 0, edge_pixels = 0;
+    long rifle_pixels = 0, edge_pixels = 0, lost_pixels = 0;
     Vec3 rifle_rgb(0.0f);
     for (size_t i = 0; i + 2 < smooth.size(); i += 3) {
         if (difference(hard, none, i) > 24) {
             ++rifle_pixels;
             rifle_rgb += Vec3(smooth[i], smooth[i + 1], smooth[i + 2]);
+            // A rifle pixel the layer left out (its composite covers the rifle's hull on screen).
+            if (difference(smooth, none, i) <= 6 && difference(smooth, hard, i) > 24) ++lost_pixels;
         }
         if (difference(smooth, hard, i) > 24) ++edge_pixels;
     }
@@ -184,6 +188,28 @@ TEST_CASE("the first-person rifle is lit and orange, not a near-black silhouette
     CHECK(rifle_rgb.x > rifle_rgb.z + 10.0f); // orange paint shows (before: 25 vs 20)
     CHECK(edge_pixels > rifle_pixels / 50);   // the silhouette is blended ...
     CHECK(edge_pixels < rifle_pixels / 2);    // ... and only the silhouette
+    CHECK(lost_pixels == 0);
+    // The composite's footprint: the hull of the rifle's parts on screen, well inside its rectangle.
+    geometry::Camera vm = player_start_camera(*level, 16.0f / 9.0f);
+    vm.near_plane = 0.01f;
+    vm.far_plane = 20.0f;
+    vm.fov_y = rifle.fov_y;
+    const ScreenFootprint where =
+        view_model_footprint(rifle.instances, vm.projection(), ctx->width(), ctx->height());
+    const double hull_area = 0.5 * geometry::polygon_area2(where.hull);
+    const double rect_area = static_cast<double>(where.rect.width) * where.rect.height;
+    MESSAGE("composite footprint: hull " << hull_area << " px, rectangle " << rect_area << " px");
+    CHECK(where.hull.size() >= 3);
+    CHECK(hull_area > static_cast<double>(rifle_pixels));
+    CHECK(hull_area < 0.9 * rect_area); // measured: 0.81
+    // A part behind the eye: no hull, the whole target.
+    std::vector<MeshInstance> behind = rifle.instances;
+    behind.front().world = glm::translate(Mat4(1.0f), Vec3(0.0f, 0.0f, 5.0f)) * behind.front().world;
+    const ScreenFootprint everywhere =
+        view_model_footprint(behind, vm.projection(), ctx->width(), ctx->height());
+    CHECK(everywhere.hull.empty());
+    CHECK(everywhere.rect.width == ctx->width());
+    CHECK(everywhere.rect.height == ctx->height());
 }
 
 TEST_CASE("contact shadows: a robot darkens the lit floor beside it, away from the lamp, on both paths") {
