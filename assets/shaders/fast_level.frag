@@ -65,16 +65,16 @@ float fog_amount() {
 void main() {
     vec4 base = texture(u_base_map, v_uv);
     base.rgb *= base.rgb; // sRGB map read raw: gamma 2
-    base *= u_base_factor;
     float metallic = u_metal_rough.x;
-    vec3 f0 = mix(vec3(0.04), base.rgb, metallic);
     vec3 light = texture(u_lightmap, v_lightmap_uv).rgb;
     light *= mix(vec3(1.0), light * u_lightmap_range, float(u_lightmap_range > 0.0));
 #ifdef DYNAMIC_LIGHTS
     light += dynamic_light();
 #endif
-    vec3 color = light * (base.rgb * (1.0 - metallic) + f0 * 0.5) + u_emissive_factor;
+    // fast.frag's light x (base (1 - metallic) + F0 / 2) with F0 = mix(0.04, base, metallic), multiplied out.
+    vec3 color = light * (base.rgb * u_base_factor.rgb * (1.0 - 0.5 * metallic) + 0.02 * (1.0 - metallic)) +
+                 u_emissive_factor;
 
     color = mix(color, u_fog_color, fog_amount());
-    o_color = vec4(sqrt(aces(color * u_exposure)), base.a);
+    o_color = vec4(sqrt(aces(color * u_exposure)), 1.0); // opaque: nothing reads the level's alpha
 }
