@@ -19,7 +19,9 @@ void convex_hull_2d(std::vector<Vec2>& points) {
     points.erase(std::unique(points.begin(), points.end()), points.end());
     const size_t n = points.size();
     if (n < 3) return;
-    std::vector<Vec2> hull(2 * n);
+    // Reused between calls (the renderer asks once a frame): no allocation once it has grown.
+    static thread_local std::vector<Vec2> hull;
+    hull.resize(2 * n);
     size_t k = 0;
     for (size_t i = 0; i < n; ++i) { // lower chain
         while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0) --k;
