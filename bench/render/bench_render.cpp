@@ -355,9 +355,9 @@ int run(int argc, const char* const* argv) {
         std::erase_if(variants, [&](const Variant& v) {
             return std::string(v.name).find(*only) == std::string::npos && v.name != variants[0].name;
         });
-    std::printf("render benchmark: %s, %dx%d, %d frames on a fixed path, GL renderer: %s, default "
+    std::printf("render benchmark: %s, %dx%d, %d frames on a fixed path, GL renderer: %s (%s), default "
                 "anisotropy %.0fx, msaa %dx\n",
-                path.string().c_str(), *width, *height, *frames, renderer.c_str(),
+                path.string().c_str(), *width, *height, *frames, renderer.c_str(), (*ctx)->platform().c_str(),
                 assets.textures().max_anisotropy(), default_msaa);
     std::printf("%-28s %5s %9s %10s %10s %8s %10s %6s %9s %9s %6s %11s\n", "variant", "path", "internal",
                 "median ms", "p99 ms", "fps", "cpu ms", "draws", "triangles", "shaded/px", "hidden",

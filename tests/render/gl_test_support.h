@@ -7,15 +7,16 @@
 #include <string>
 #include <vector>
 
-// The first line of every GL test case: without a display the case stops here with this message.
+// The first line of every GL test case: without a GL context the case stops here with this message.
 #define KS_REQUIRE_GL()                                                                                      \
     REQUIRE_MESSAGE(ks::test::gl_context(),                                                                  \
-                    "no display: run the GL tests under xvfb-run (./run.sh test does)")
+                    "no OpenGL 3.3 context (no display, and EGL failed): run the GL tests under xvfb-run "   \
+                    "(./run.sh test does)")
 
 namespace ks::test {
 
-// The shared offscreen context of the given size (created on first use; null without a display, in which
-// case the GL tests report a skip and pass: CI runs them under xvfb-run).
+// The shared offscreen context of the given size (created on first use: a hidden window, or headless EGL with
+// no display; null when neither works, and the GL tests then fail with KS_REQUIRE_GL's advice).
 shell::OffscreenContext* gl_context();
 inline constexpr int kGlWidth = 320, kGlHeight = 180;
 
