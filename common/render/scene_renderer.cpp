@@ -251,8 +251,9 @@ void SceneRenderer::draw_view_model(const SceneFrame& frame, FrameStats& stats) 
 }
 
 void SceneRenderer::draw_view_model_layer(const SceneFrame& frame, FrameStats& stats, unsigned target_fbo) {
-    const ScreenFootprint where = view_model_footprint(
-        frame.view_model->instances, view_model_camera(frame).projection(), frame.width, frame.height);
+    ScreenFootprint& where = view_model_footprint_;
+    view_model_footprint(frame.view_model->instances, view_model_camera(frame).projection(), frame.width,
+                         frame.height, where);
     const PixelRect& rect = where.rect;
     if (rect.empty()) return;
     if (auto begun = view_model_layer_.begin(frame.width, frame.height, settings_.view_model_msaa, rect);

@@ -127,6 +127,7 @@ class SceneRenderer {
     unsigned shadow_fbo_ = 0, shadow_texture_ = 0;
     std::unique_ptr<RenderTarget> msaa_target_; // made for settings_.msaa_samples on first use
     ViewModelLayer view_model_layer_;           // the view model's antialiased layer (view_model_msaa)
+    ScreenFootprint view_model_footprint_;      // where the layer is composited, refilled each frame
     std::uint64_t shadow_hash_ = 0;
     Mat4 shadow_matrix_{1.0f};
 

@@ -10,10 +10,11 @@
 
 namespace ks::render {
 
-ScreenFootprint view_model_footprint(const std::vector<MeshInstance>& instances, const Mat4& projection,
-                                     int width, int height) {
+void view_model_footprint(const std::vector<MeshInstance>& instances, const Mat4& projection, int width,
+                          int height, ScreenFootprint& out) {
     constexpr float kRim = 1.5f; // pixels around each corner: the edge filter reads one pixel around
-    ScreenFootprint out;
+    out.rect = {};
+    out.hull.clear();
     float lo_x = 1e30f, lo_y = 1e30f, hi_x = -1e30f, hi_y = -1e30f;
     for (const MeshInstance& inst : instances) {
         if (!inst.mesh) continue;
@@ -23,7 +24,11 @@ ScreenFootprint view_model_footprint(const std::vector<MeshInstance>& instances,
                              (corner & 4) ? b.max.z : b.min.z);
             const Vec4 clip = projection * (inst.world * Vec4(local, 1.0f));
             // A corner behind the eye projects nowhere useful: the whole target may be covered.
-            if (clip.w <= 1e-4f) return {PixelRect{0, 0, width, height}, {}};
+            if (clip.w <= 1e-4f) {
+                out.rect = PixelRect{0, 0, width, height};
+                out.hull.clear();
+                return;
+            }
             const float x = (clip.x / clip.w * 0.5f + 0.5f) * static_cast<float>(width);
             const float y = (clip.y / clip.w * 0.5f + 0.5f) * static_cast<float>(height);
             lo_x = std::min(lo_x, x);
@@ -34,7 +39,10 @@ ScreenFootprint view_model_footprint(const std::vector<MeshInstance>& instances,
                 for (float dy : {-kRim, kRim}) out.hull.push_back(Vec2(x + dx, y + dy));
         }
     }
-    if (lo_x > hi_x) return {};
+    if (lo_x > hi_x) {
+        out.hull.clear();
+        return;
+    }
     const int x0 = std::clamp(static_cast<int>(std::floor(lo_x - kRim)), 0, width);
     const int y0 = std::clamp(static_cast<int>(std::floor(lo_y - kRim)), 0, height);
     const int x1 = std::clamp(static_cast<int>(std::ceil(hi_x + kRim)), 0, width);
@@ -46,7 +54,6 @@ ScreenFootprint view_model_footprint(const std::vector<MeshInstance>& instances,
                                       Vec2(static_cast<float>(x1), static_cast<float>(y1)));
     else
         out.hull.clear();
-    return out;
 }
 
 ViewModelLayer::ViewModelLayer() {

@@ -31,8 +31,10 @@ struct ScreenFootprint {
     PixelRect rect;
     std::vector<Vec2> hull;
 };
-ScreenFootprint view_model_footprint(const std::vector<MeshInstance>& instances, const Mat4& projection,
-                                     int width, int height);
+// Fills `out`; its hull's storage is kept between calls, so a renderer that keeps one allocates nothing per
+// frame.
+void view_model_footprint(const std::vector<MeshInstance>& instances, const Mat4& projection, int width,
+                          int height, ScreenFootprint& out);
 
 class ViewModelLayer {
   public:

@@ -194,8 +194,8 @@ TEST_CASE("the first-person rifle is lit and orange, not a near-black silhouette
     vm.near_plane = 0.01f;
     vm.far_plane = 20.0f;
     vm.fov_y = rifle.fov_y;
-    const ScreenFootprint where =
-        view_model_footprint(rifle.instances, vm.projection(), ctx->width(), ctx->height());
+    ScreenFootprint where;
+    view_model_footprint(rifle.instances, vm.projection(), ctx->width(), ctx->height(), where);
     const double hull_area = 0.5 * geometry::polygon_area2(where.hull);
     const double rect_area = static_cast<double>(where.rect.width) * where.rect.height;
     MESSAGE("composite footprint: hull " << hull_area << " px, rectangle " << rect_area << " px");
@@ -205,11 +205,14 @@ TEST_CASE("the first-person rifle is lit and orange, not a near-black silhouette
     // A part behind the eye: no hull, the whole target.
     std::vector<MeshInstance> behind = rifle.instances;
     behind.front().world = glm::translate(Mat4(1.0f), Vec3(0.0f, 0.0f, 5.0f)) * behind.front().world;
-    const ScreenFootprint everywhere =
-        view_model_footprint(behind, vm.projection(), ctx->width(), ctx->height());
+    ScreenFootprint everywhere = where; // filled again in place, as the renderer does each frame
+    view_model_footprint(behind, vm.projection(), ctx->width(), ctx->height(), everywhere);
     CHECK(everywhere.hull.empty());
     CHECK(everywhere.rect.width == ctx->width());
     CHECK(everywhere.rect.height == ctx->height());
+    view_model_footprint(rifle.instances, vm.projection(), ctx->width(), ctx->height(), everywhere);
+    CHECK(everywhere.hull == where.hull); // and back: nothing left over from the call before
+    CHECK(everywhere.rect.width == where.rect.width);
 }
 
 TEST_CASE("contact shadows: a robot darkens the lit floor beside it, away from the lamp, on both paths") {
