@@ -13,11 +13,12 @@ namespace {
 // How much worse than the best order overdraw ordering may make the vertex cache (meshoptimizer's advice).
 constexpr float kOverdrawThreshold = 1.05f;
 
-void order_for_drawing(std::vector<std::uint32_t>& indices, const std::vector<Vec3>& positions) {
+void order_for_drawing(std::vector<std::uint32_t>& indices, const Vec3* positions, std::size_t vertex_count,
+                       std::size_t stride) {
     if (indices.empty()) return;
-    meshopt_optimizeVertexCache(indices.data(), indices.data(), indices.size(), positions.size());
-    meshopt_optimizeOverdraw(indices.data(), indices.data(), indices.size(), &positions[0].x,
-                             positions.size(), sizeof(Vec3), kOverdrawThreshold);
+    meshopt_optimizeVertexCache(indices.data(), indices.data(), indices.size(), vertex_count);
+    meshopt_optimizeOverdraw(indices.data(), indices.data(), indices.size(), &positions->x, vertex_count,
+                             stride, kOverdrawThreshold);
 }
 
 // Keeps only the vertices `mesh.indices` uses, in the order the triangles first use them.
@@ -37,35 +38,58 @@ void compact_vertices(ImportedMesh& mesh) {
     remap_stream(mesh.uvs);
 }
 
-// One mesh simplified toward `ratio` of its triangles; `error` gets the deviation in model units.
+// One mesh simplified toward `ratio` of its triangles; `error` gets the deviation in model units. No
+// triangles when the simplification bends its normals too far (simplify_triangles).
 ImportedMesh simplify_mesh(const ImportedMesh& full, float ratio, float& error) {
     ImportedMesh out;
     out.material = full.material;
     error = 0.0f;
     if (full.indices.empty()) return out;
-    const std::size_t target = std::max<std::size_t>(
-        3, static_cast<std::size_t>(static_cast<float>(full.indices.size() / 3) * ratio) * 3);
-    std::vector<std::uint32_t> indices(full.indices.size());
-    float relative = 0.0f;
-    // The error limit is the whole model (1.0): the ratio decides, and the error says what it cost.
-    const std::size_t count =
-        meshopt_simplify(indices.data(), full.indices.data(), full.indices.size(), &full.positions[0].x,
-                         full.positions.size(), sizeof(Vec3), target, 1.0f, 0, &relative);
-    error = relative * meshopt_simplifyScale(&full.positions[0].x, full.positions.size(), sizeof(Vec3));
-    indices.resize(count);
-    out.indices = std::move(indices);
+    VertexStreams streams;
+    streams.positions = full.positions.data();
+    streams.normals = full.normals.size() == full.positions.size() ? full.normals.data() : nullptr;
+    streams.uvs = full.uvs.size() == full.positions.size() ? full.uvs.data() : nullptr;
+    streams.count = full.positions.size();
+    out.indices = simplify_triangles(streams, full.indices, ratio, error);
+    if (out.indices.empty()) return out;
     out.positions = full.positions;
     out.normals = full.normals;
     out.uvs = full.uvs;
-    order_for_drawing(out.indices, out.positions);
     compact_vertices(out);
     return out;
 }
 
 } // namespace
 
+std::vector<std::uint32_t> simplify_triangles(const VertexStreams& vertices,
+                                              std::span<const std::uint32_t> indices, float ratio,
+                                              float& error) {
+    error = 0.0f;
+    if (indices.empty() || vertices.count == 0 || !vertices.positions) return {};
+    const std::size_t target = std::max<std::size_t>(
+        3, static_cast<std::size_t>(static_cast<float>(indices.size() / 3) * ratio) * 3);
+    std::vector<std::uint32_t> out(indices.size());
+    float relative = 0.0f;
+    const float* positions = &vertices.positions->x;
+    // The error limit is the whole model (1.0): the ratio decides, and the error says what it cost.
+    const std::size_t count =
+        meshopt_simplify(out.data(), indices.data(), indices.size(), positions, vertices.count,
+                         vertices.position_stride, target, 1.0f, 0, &relative);
+    const float scale = meshopt_simplifyScale(positions, vertices.count, vertices.position_stride);
+    error = relative * scale;
+    out.resize(count);
+    // Samples may lie off the original surface by the deviation (meshoptimizer's is an estimate): search
+    // twice as far, and a little more for a level that moved nothing.
+    const LevelFidelity fidelity =
+        measure_level_fidelity(vertices, indices, out, 2.0f * error + 1e-4f * scale, kLodMaxNormalBend);
+    error = std::max({error, fidelity.texture_shift, fidelity.normal_extent});
+    order_for_drawing(out, vertices.positions, vertices.count, vertices.position_stride);
+    return out;
+}
+
 void optimize_draw_order(ImportedModel& model) {
-    for (ImportedMesh& mesh : model.meshes) order_for_drawing(mesh.indices, mesh.positions);
+    for (ImportedMesh& mesh : model.meshes)
+        order_for_drawing(mesh.indices, mesh.positions.data(), mesh.positions.size(), sizeof(Vec3));
 }
 
 void build_lods(ImportedModel& model, std::span<const float> ratios) {

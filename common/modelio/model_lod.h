@@ -3,8 +3,10 @@
 // fractions of its triangles once, when the file is imported (import_cached keeps them with the import), and
 // each drawn instance picks the coarsest level whose error would cover at most about a pixel on screen, with
 // a band of hysteresis so an instance at a threshold does not switch every frame.
+#include "modelio/lod_fidelity.h"
 #include "modelio/model_import.h"
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -12,9 +14,22 @@ namespace ks::modelio {
 
 // The fractions of the triangles the coarser levels aim for (level 0 is the model itself).
 inline constexpr float kLodRatios[] = {0.5f, 0.25f, 0.1f};
+// Shading normals that bend by more than this (radians) count as an error as wide as the region they bend
+// over (LevelFidelity::normal_extent).
+inline constexpr float kLodMaxNormalBend = 0.26f;
 // A level that keeps more than this fraction of the previous level's triangles is not kept: it would cost a
 // draw's worth of memory for no saving (a 12-triangle crate has no coarser levels).
 inline constexpr float kLodMinSaving = 0.85f;
+
+// One triangle list simplified toward `ratio` of its triangles by meshopt_simplify (vertices it does not
+// collapse stay where they were; attribute seams are kept), then put in vertex-cache and overdraw order.
+// `vertices` is read in place (an interleaved buffer or separate arrays). `error`, in the positions' units,
+// is the larger of the surface's deviation (meshoptimizer's) and how far the texture slid along it
+// (lod_fidelity.h: meshoptimizer 0.18 sees neither texture coordinates nor normals), or the width of any
+// region whose normals bend by more than kLodMaxNormalBend. The indices refer to the same vertices.
+std::vector<std::uint32_t> simplify_triangles(const VertexStreams& vertices,
+                                              std::span<const std::uint32_t> indices, float ratio,
+                                              float& error);
 
 // Orders every mesh's triangles for the vertex cache and then for overdraw (meshopt_optimizeVertexCache,
 // meshopt_optimizeOverdraw), in place: the same triangles, drawn in a cheaper order.

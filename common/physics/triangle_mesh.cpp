@@ -1,5 +1,7 @@
 #include "physics/triangle_mesh.h"
 
+#include "geometry/closest_on_triangle.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -16,26 +18,9 @@ glm::dquat rotation_of(const geometry::Transform& xf) {
                       static_cast<double>(xf.rotation.y), static_cast<double>(xf.rotation.z));
 }
 
-// Ericson, Real-Time Collision Detection 5.1.5: the point of the triangle nearest p, by Voronoi regions.
+// The shared algorithm (geometry/closest_on_triangle.h), in double.
 DVec3 closest_on_triangle(const DVec3& p, const DVec3& a, const DVec3& b, const DVec3& c) {
-    const DVec3 ab = b - a, ac = c - a, ap = p - a;
-    const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
-    if (d1 <= 0.0 && d2 <= 0.0) return a;
-    const DVec3 bp = p - b;
-    const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
-    if (d3 >= 0.0 && d4 <= d3) return b;
-    const double vc = d1 * d4 - d3 * d2;
-    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + ab * (d1 / (d1 - d3));
-    const DVec3 cp = p - c;
-    const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
-    if (d6 >= 0.0 && d5 <= d6) return c;
-    const double vb = d5 * d2 - d1 * d6;
-    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + ac * (d2 / (d2 - d6));
-    const double va = d3 * d6 - d5 * d4;
-    if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0)
-        return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
-    const double denom = 1.0 / (va + vb + vc);
-    return a + ab * (vb * denom) + ac * (vc * denom);
+    return geometry::closest_on_triangle(p, a, b, c).point;
 }
 
 // Ericson 5.1.9 in double, the parallel case included: parameters of the closest points of two segments.

@@ -26,7 +26,7 @@ const char* kModelsLevel = R"({
   "next_id": 3,
   "entities": [
     {"id": 1, "type": "floor", "name": "Ground", "position": [0, 0, 0], "props": {"size": [60, 60]}},
-    {"id": 2, "type": "model", "name": "Far shelf", "position": [300, 0, 300],
+    {"id": 2, "type": "model", "name": "Far shelf", "position": [2000, 0, 2000],
      "props": {"file": "archive_shelf.gltf", "collision": "box"}}
   ]
 })";
