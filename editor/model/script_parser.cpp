@@ -8,13 +8,22 @@ namespace ks::editor {
 namespace {
 using namespace script_tokens;
 
+// Every registered word of one kind (commands or expectations), in table order; built once.
+const std::vector<std::string>& registered_words(bool expectation) {
+    static const auto build = [](bool which) {
+        std::vector<std::string> words;
+        for (const CommandTable& table : script_command_tables())
+            for (const CommandSpec& command : table.commands)
+                if (command.expectation == which) words.emplace_back(command.word);
+        return words;
+    };
+    static const std::vector<std::string> commands = build(false), expectations = build(true);
+    return expectation ? expectations : commands;
+}
+
 // "did you mean 'place'? " when a registered word of the kind is close to `word`.
 std::string did_you_mean(std::string_view word, bool expectation) {
-    std::vector<std::string> words;
-    for (const CommandTable& table : script_command_tables())
-        for (const CommandSpec& command : table.commands)
-            if (command.expectation == expectation) words.emplace_back(command.word);
-    const std::string near = jsonio::closest_match(word, words);
+    const std::string near = jsonio::closest_match(word, registered_words(expectation));
     return near.empty() ? std::string() : "did you mean '" + near + "'? ";
 }
 

@@ -41,12 +41,16 @@ std::string words_by_label(bool expectation) {
 
 } // namespace
 
+// The tables never change after start-up: the hints are built once (a script of many bad lines asks for one
+// per line).
 std::string script_command_words() {
-    return words_by_label(false) + "; assertions: expect WORD ...";
+    static const std::string words = words_by_label(false) + "; assertions: expect WORD ...";
+    return words;
 }
 
 std::string script_expectation_words() {
-    return words_by_label(true);
+    static const std::string words = words_by_label(true);
+    return words;
 }
 
 std::string script_usage_listing() {
