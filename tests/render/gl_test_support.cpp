@@ -1,6 +1,12 @@
 #include "gl_test_support.h"
 
+#include "level/level_io.h"
+#include "render/asset_library.h"
+#include "render/view_model.h"
 #include "shell/app_shell.h"
+#include "test_support.h"
+
+#include <doctest/doctest.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -70,6 +76,33 @@ std::vector<unsigned char> render_offscreen(render::SceneRenderer& renderer, con
     frame.lights = &lights;
     frame.view_model = view_model;
     return render_frame_offscreen(renderer, frame).rgb;
+}
+
+OffscreenShot render_main_level_start(const render::RendererSettings& settings, float fog_density) {
+    using namespace render;
+    auto level = level::load_level_file(source_dir() / "levels" / "main.json");
+    REQUIRE_MESSAGE(level.ok(), (level.ok() ? "" : level.error().str()));
+    AssetLibrary assets(source_dir() / "assets");
+    auto renderer = SceneRenderer::create(assets.textures(), settings);
+    REQUIRE(renderer);
+    LevelSceneOptions options = level_scene_options((*renderer)->settings());
+    options.bake = BakeSettings::direct_only();
+    auto scene = LevelScene::build(*level, assets, options);
+    std::vector<MeshInstance> instances;
+    std::vector<Light> lights;
+    scene->emit(instances, lights);
+    CHECK(lights.size() >= 8);
+    ViewModel vm;
+    std::vector<Mat4> scratch;
+    assets.model("rifle").emit(rifle_view_transform(0.0f), scratch, vm.instances);
+    SceneFrame frame;
+    frame.camera = player_start_camera(*level, 16.0f / 9.0f);
+    frame.environment = scene->environment();
+    if (fog_density >= 0.0f) frame.environment.fog_density = fog_density;
+    frame.instances = &instances;
+    frame.lights = &lights;
+    frame.view_model = &vm;
+    return render_frame_offscreen(**renderer, frame);
 }
 
 } // namespace ks::test

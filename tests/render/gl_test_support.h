@@ -34,6 +34,11 @@ struct OffscreenShot {
     render::FrameStats stats;
 };
 OffscreenShot render_frame_offscreen(render::SceneRenderer& renderer, render::SceneFrame frame);
+// The main level's start view with the rifle, drawn in the shared context by a renderer with `settings`, the
+// level built as the game builds it for that renderer but with the direct light alone in its bake (the
+// bounce and occlusion are test_light_bake.cpp's; the full bake would add seconds to each picture);
+// `fog_density` < 0: the level's own fog.
+OffscreenShot render_main_level_start(const render::RendererSettings& settings, float fog_density = -1.0f);
 // Renders `instances` in the shared context at its size (the camera's aspect made the context's) and
 // returns RGB rows (top-down).
 std::vector<unsigned char> render_offscreen(render::SceneRenderer& renderer, const geometry::Camera& camera,

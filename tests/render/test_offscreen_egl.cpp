@@ -3,15 +3,10 @@
 // benchmarks. The drawing case runs in a child of this test program, with no display in its environment, so
 // it gets a context of its own whatever the parent has.
 #include "gl_test_support.h"
-#include "render_gl_support.h"
 #include "test_support.h"
 
-#include "level/level_io.h"
-#include "render/asset_library.h"
-#include "render/level_scene.h"
 #include "render/scene_renderer.h"
 #include "render/shaders.h"
-#include "render/view_model.h"
 #include "shell/offscreen_context.h"
 
 #include <doctest/doctest.h>
@@ -21,7 +16,6 @@
 
 using namespace ks;
 using namespace ks::render;
-using ks::test::render_gl::assets_dir;
 
 TEST_CASE("offscreen context: KS_GL_PLATFORM picks EGL or a window, and no display means EGL") {
     CHECK(shell::offscreen_wants_egl("egl", true));
@@ -48,23 +42,7 @@ TEST_CASE("EGL child: headless context compiles the shaders and draws the main l
         ++programs;
     }
     CHECK(programs == 13);
-    auto level = level::load_level_file(test::source_dir() / "levels" / "main.json");
-    REQUIRE(level.ok());
-    AssetLibrary assets(assets_dir());
-    auto renderer = SceneRenderer::create(assets.textures(), RendererSettings{});
-    REQUIRE(renderer);
-    LevelSceneOptions options = level_scene_options((*renderer)->settings());
-    options.bake = BakeSettings::direct_only();
-    auto scene = LevelScene::build(*level, assets, options);
-    std::vector<MeshInstance> instances;
-    std::vector<Light> lights;
-    scene->emit(instances, lights);
-    SceneFrame frame;
-    frame.camera = player_start_camera(*level, 16.0f / 9.0f);
-    frame.environment = scene->environment();
-    frame.instances = &instances;
-    frame.lights = &lights;
-    const test::OffscreenShot shot = test::render_frame_offscreen(**renderer, frame);
+    const test::OffscreenShot shot = test::render_main_level_start(RendererSettings{});
     const test::ImageStats stats = test::image_stats(shot.rgb, test::kGlWidth, test::kGlHeight);
     MESSAGE("EGL start view: mean luma " << stats.mean_luma << ", " << shot.stats.draw_calls << " draws");
     CHECK(stats.mean_luma > 20.0);        // lit walls and floor, not a cleared or black target

@@ -46,35 +46,8 @@ RendererSettings fast_quality(float scale = 1.0f) {
     return s;
 }
 
-// `fog_density` < 0: the level's own fog.
 MainLevelView render_main_level_start(RendererSettings settings = full_quality(), float fog_density = -1.0f) {
-    auto level = level::load_level_file(ks::test::source_dir() / "levels" / "main.json");
-    REQUIRE_MESSAGE(level.ok(), (level.ok() ? "" : level.error().str()));
-    AssetLibrary assets(assets_dir());
-    auto renderer = SceneRenderer::create(assets.textures(), settings);
-    REQUIRE(renderer);
-    // As the game builds it for this renderer (a light map only on the fast path), with the direct light
-    // alone: these cases check the renderer's switches, test_light_bake.cpp the bounce and occlusion, and
-    // the full bake would add seconds of CPU to each picture here.
-    LevelSceneOptions options = level_scene_options((*renderer)->settings());
-    options.bake = BakeSettings::direct_only();
-    auto scene = LevelScene::build(*level, assets, options);
-    std::vector<MeshInstance> instances;
-    std::vector<Light> lights;
-    scene->emit(instances, lights);
-    CHECK(lights.size() >= 8);
-    geometry::Camera cam = player_start_camera(*level, 16.0f / 9.0f);
-    ViewModel vm;
-    std::vector<Mat4> scratch;
-    assets.model("rifle").emit(rifle_view_transform(0.0f), scratch, vm.instances);
-    SceneFrame frame;
-    frame.camera = cam;
-    frame.environment = scene->environment();
-    if (fog_density >= 0.0f) frame.environment.fog_density = fog_density;
-    frame.instances = &instances;
-    frame.lights = &lights;
-    frame.view_model = &vm;
-    return ks::test::render_frame_offscreen(**renderer, frame);
+    return ks::test::render_main_level_start(settings, fog_density);
 }
 } // namespace
 
