@@ -133,15 +133,22 @@ LevelFidelity measure_level_fidelity(const VertexStreams& v, std::span<const std
             }
     const TriangleGrid grid(v, original, search);
     const float density = v.uvs ? texture_density(v, original) : 0.0f;
-    std::vector<float> distances; // per sample: to each original triangle near it
+    // The point of an original triangle nearest a sample, and how far it is (a triangle facing away counts as
+    // a search farther).
+    struct Near {
+        geometry::TriangleClosest<Vec3> hit;
+        float distance;
+    };
+    std::vector<Near> nearby; // per sample: each original triangle near it
     auto position = [&](std::uint32_t i) { return element(v.positions, v.position_stride, i); };
     auto normal = [&](std::uint32_t i) { return element(v.normals, v.normal_stride, i); };
     auto uv = [&](std::uint32_t i) { return element(v.uvs, v.uv_stride, i); };
-    auto distance_to = [&](std::uint32_t o, const Vec3& p, const Vec3& face) {
+    auto nearest_on = [&](std::uint32_t o, const Vec3& p, const Vec3& face) {
         const std::uint32_t* q = &original[static_cast<std::size_t>(o) * 3];
         const Vec3 a = position(q[0]), b = position(q[1]), c = position(q[2]);
-        const float d = glm::length(geometry::closest_on_triangle(p, a, b, c).point - p);
-        return glm::dot(glm::cross(b - a, c - a), face) < 0.0f ? d + search : d;
+        const auto hit = geometry::closest_on_triangle(p, a, b, c);
+        const float d = glm::length(hit.point - p);
+        return Near{hit, glm::dot(glm::cross(b - a, c - a), face) < 0.0f ? d + search : d};
     };
     // Corners, edge midpoints and the centre, as weights of (a, b, c).
     static constexpr float kSamples[7][3] = {{1, 0, 0},
@@ -161,22 +168,20 @@ LevelFidelity measure_level_fidelity(const VertexStreams& v, std::span<const std
             // farther); where several are as near (a shared edge, a texture seam, stacked layers) the sample
             // is taken to lie on the one that agrees best with it.
             const std::span<const std::uint32_t> near = grid.near(p);
-            distances.resize(near.size());
+            nearby.resize(near.size());
             float best = std::numeric_limits<float>::infinity();
             for (std::size_t k = 0; k < near.size(); ++k) {
-                distances[k] = distance_to(near[k], p, face);
-                best = std::min(best, distances[k]);
+                nearby[k] = nearest_on(near[k], p, face);
+                best = std::min(best, nearby[k].distance);
             }
             if (!std::isfinite(best)) continue;      // farther than the search: the position error says it
             const float tie = best + 0.05f * search; // float rounding of a point on an edge is far smaller
             float shift = std::numeric_limits<float>::infinity(),
                   angle = std::numeric_limits<float>::infinity();
             for (std::size_t k = 0; k < near.size(); ++k) {
-                if (distances[k] > tie) continue;
-                const std::uint32_t o = near[k];
-                const std::uint32_t* q = &original[static_cast<std::size_t>(o) * 3];
-                const auto hit =
-                    geometry::closest_on_triangle(p, position(q[0]), position(q[1]), position(q[2]));
+                if (nearby[k].distance > tie) continue;
+                const std::uint32_t* q = &original[static_cast<std::size_t>(near[k]) * 3];
+                const geometry::TriangleClosest<Vec3>& hit = nearby[k].hit;
                 const float wa = 1.0f - hit.along_ab - hit.along_ac;
                 if (v.uvs) {
                     const Vec2 here = uv(s[0]) * w[0] + uv(s[1]) * w[1] + uv(s[2]) * w[2];
