@@ -2,6 +2,7 @@
 
 #include "level/level_io.h"
 #include "render/asset_library.h"
+#include "render/shaders.h"
 #include "render/view_model.h"
 #include "shell/app_shell.h"
 #include "test_support.h"
@@ -76,6 +77,17 @@ std::vector<unsigned char> render_offscreen(render::SceneRenderer& renderer, con
     frame.lights = &lights;
     frame.view_model = view_model;
     return render_frame_offscreen(renderer, frame).rgb;
+}
+
+int check_every_program_builds() {
+    int count = 0;
+    for (const render::ProgramFiles* p : render::all_programs()) {
+        CAPTURE(p->name);
+        auto program = render::build_program(*p, render::default_shader_dir());
+        CHECK_MESSAGE(program.ok(), (program.ok() ? "" : program.error().str()));
+        ++count;
+    }
+    return count;
 }
 
 OffscreenShot render_main_level_start(const render::RendererSettings& settings, float fog_density) {

@@ -38,6 +38,9 @@ OffscreenShot render_frame_offscreen(render::SceneRenderer& renderer, render::Sc
 // level built as the game builds it for that renderer but with the direct light alone in its bake (the
 // bounce and occlusion are test_light_bake.cpp's; the full bake would add seconds to each picture);
 // `fog_density` < 0: the level's own fog.
+// Builds every shader program in the shared context, checking each links (its error in the message); the
+// number built.
+int check_every_program_builds();
 OffscreenShot render_main_level_start(const render::RendererSettings& settings, float fog_density = -1.0f);
 // Renders `instances` in the shared context at its size (the camera's aspect made the context's) and
 // returns RGB rows (top-down).

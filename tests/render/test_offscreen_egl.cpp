@@ -6,7 +6,6 @@
 #include "test_support.h"
 
 #include "render/scene_renderer.h"
-#include "render/shaders.h"
 #include "shell/offscreen_context.h"
 
 #include <doctest/doctest.h>
@@ -34,13 +33,7 @@ TEST_CASE("offscreen context: KS_GL_PLATFORM picks EGL or a window, and no displ
 TEST_CASE("EGL child: headless context compiles the shaders and draws the main level" * doctest::skip()) {
     KS_REQUIRE_GL();
     CHECK(test::gl_context()->platform().rfind("EGL ", 0) == 0);
-    int programs = 0;
-    for (const ProgramFiles* p : all_programs()) {
-        CAPTURE(p->name);
-        auto program = build_program(*p, default_shader_dir());
-        CHECK_MESSAGE(program.ok(), (program.ok() ? "" : program.error().str()));
-        ++programs;
-    }
+    const int programs = ks::test::check_every_program_builds();
     CHECK(programs == 13);
     const test::OffscreenShot shot = test::render_main_level_start(RendererSettings{});
     const test::ImageStats stats = test::image_stats(shot.rgb, test::kGlWidth, test::kGlHeight);

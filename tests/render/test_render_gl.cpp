@@ -43,13 +43,7 @@ auto full_resolution_renderer(AssetLibrary& assets) {
 
 TEST_CASE("every shader program compiles and links on this driver") {
     KS_REQUIRE_GL();
-    int count = 0;
-    for (const ProgramFiles* p : all_programs()) {
-        CAPTURE(p->name);
-        auto program = build_program(*p, default_shader_dir());
-        CHECK_MESSAGE(program.ok(), (program.ok() ? "" : program.error().str()));
-        ++count;
-    }
+    const int count = ks::test::check_every_program_builds();
     // pbr, fast, fast_level, fast_level_lit, shadow, particle, line, view_model_composite, contact_shadow and
     // the four fast_model programs
     CHECK(count == 13);
