@@ -205,12 +205,19 @@ void input_status(nlohmann::json& s, GLFWwindow* window) {
     int keys_down = 0;
     for (int k = 0; k < IM_ARRAYSIZE(io.KeysDown); ++k)
         if (io.KeysDown[k] && (k < GLFW_KEY_LEFT_SHIFT || k > GLFW_KEY_RIGHT_SUPER)) ++keys_down;
-    s["input"] = {{"focused", glfwGetWindowAttrib(window, GLFW_FOCUSED) != 0},
-                  {"keys_down", keys_down},
-                  {"ctrl", io.KeyCtrl},
-                  {"shift", io.KeyShift},
-                  {"text_input", io.WantTextInput},
-                  {"active_item", ImGui::IsAnyItemActive()}};
+    s["input"] = {
+        {"focused", glfwGetWindowAttrib(window, GLFW_FOCUSED) != 0},
+        {"keys_down", keys_down},
+        {"ctrl", io.KeyCtrl},
+        {"shift", io.KeyShift},
+        {"alt", io.KeyAlt},
+        // Where ImGui saw the pointer this frame and which buttons it saw held: a test waits on
+        // these between the steps of a drag, since ImGui 1.86 polls the pointer once a frame and a
+        // move and a release that land in one frame lose the move.
+        {"mouse", {io.MousePos.x, io.MousePos.y}},
+        {"buttons", (io.MouseDown[0] ? 1 : 0) | (io.MouseDown[1] ? 2 : 0) | (io.MouseDown[2] ? 4 : 0)},
+        {"text_input", io.WantTextInput},
+        {"active_item", ImGui::IsAnyItemActive()}};
 }
 
 // Temp file and rename, so a reader never sees half of it; false: not written (tried again next frame). A

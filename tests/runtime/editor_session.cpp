@@ -4,6 +4,7 @@
 
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <csignal>
 #include <cstdlib>
 #include <fstream>
@@ -116,26 +117,43 @@ void EditorSession::focus() {
     xdo("windowfocus --sync " + window_);
 }
 
-void EditorSession::click(const json& point) {
+void EditorSession::move_to(const json& point) {
     focus();
     xdo("mousemove " + at(point));
-    frames(2);
+    // Window coordinates as at() sends them (truncated); the editor reports where ImGui saw the pointer.
+    const float x = std::trunc(point[0].get<float>()), y = std::trunc(point[1].get<float>());
+    wait("the pointer seen where it was moved", [&](const json& j) {
+        const json& mouse = j["input"]["mouse"];
+        return std::fabs(mouse[0].get<float>() - x) <= 1.0f && std::fabs(mouse[1].get<float>() - y) <= 1.0f;
+    });
+}
+
+void EditorSession::click(const json& point) {
+    move_to(point);
+    frames(1);
     xdo("click 1");
 }
 
 void EditorSession::drag(const json& from, float dx, float dy, int steps) {
-    focus();
-    xdo("mousemove " + at(from));
-    frames(2);
-    xdo("mousedown 1");
-    frames(2);
+    move_to(from);
+    frames(1);
+    press();
     for (int i = 1; i <= steps; ++i) {
         const float u = static_cast<float>(i) / static_cast<float>(steps);
-        xdo("mousemove " + at(json{from[0].get<float>() + dx * u, from[1].get<float>() + dy * u}));
-        frames(1);
+        move_to(json{from[0].get<float>() + dx * u, from[1].get<float>() + dy * u});
     }
+    release();
+    frames(1);
+}
+
+void EditorSession::press() {
+    xdo("mousedown 1");
+    wait("the button seen held", [](const json& j) { return (j["input"]["buttons"].get<int>() & 1) != 0; });
+}
+
+void EditorSession::release() {
     xdo("mouseup 1");
-    frames(2);
+    wait("the button seen let go", [](const json& j) { return (j["input"]["buttons"].get<int>() & 1) == 0; });
 }
 
 std::string EditorSession::xdo(const std::string& args, int timeout_s) const {

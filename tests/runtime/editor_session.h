@@ -57,10 +57,17 @@ class EditorSession {
     // Gives the editor's window the keyboard focus (no window manager under Xvfb does it) and waits until
     // the X server has done so.
     void focus();
-    // Moves the pointer to `point` (window coordinates), lets the editor see it for two frames, then clicks.
+    // Moves the pointer to `point` (window coordinates) and waits until a frame has seen it there.
+    void move_to(const json& point);
+    // Moves the pointer to `point` (window coordinates), waits until the editor has seen it there, then
+    // clicks.
     void click(const json& point);
-    // A left-button drag from `from` by (dx, dy) pixels in `steps` moves, a frame each.
+    // A left-button drag from `from` by (dx, dy) pixels in `steps` moves, each seen by the editor before the
+    // next (ImGui 1.86 polls the pointer once a frame: a move and the release in one frame lose the move).
     void drag(const json& from, float dx, float dy, int steps = 4);
+    // The left button pressed (released) where the pointer is, once a frame has seen it so.
+    void press();
+    void release();
     std::string xdo(const std::string& args, int timeout_s = 30) const;
     const json& last() const { return last_; }
 

@@ -56,7 +56,7 @@ TEST_CASE("dojo graph input: a box selects two keys, Alt+drag scales their times
                        std::round((coord(keys[1], 1) + coord(keys[2], 1)) * 0.5f) + 20.0f};
     s.focus();
     s.xdo("keydown alt");
-    s.frames(2);
+    s.wait("Alt seen", [](const json& j) { return j["input"]["alt"] == true; });
     s.drag(between, 100.0f, 0.0f, 5);
     s.xdo("keyup alt");
     st = s.wait("the keys scaled", [](const json& j) { return j["dojo"]["undo"] == 1; });

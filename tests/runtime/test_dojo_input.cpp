@@ -67,10 +67,9 @@ TEST_CASE("dojo input: New clip typed into its dialog, a blend cell from idle ty
                 [](const json& j) { return j["dojo"]["blend_cells"].contains("idle>wave"); });
     const json cell = st["dojo"]["blend_cells"]["idle>wave"];
     s.focus();
-    s.xdo("mousemove " + s.at(cell));
-    s.frames(2);
+    s.move_to(cell);
     s.xdo("keydown ctrl");
-    s.frames(2);
+    s.wait("Ctrl seen", [](const json& j) { return j["input"]["ctrl"] == true; });
     s.xdo("click 1");
     s.frames(2);
     s.xdo("keyup ctrl");

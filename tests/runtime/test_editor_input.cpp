@@ -105,13 +105,11 @@ TEST_CASE("editor input: place from the palette, select, drag the gizmo, undo, r
     const unsigned long long builds_before = st["scene"]["builds"], bakes_before = st["scene"]["bakes"];
     const json grab = st["gizmo_handles"]["x"];
     s.focus();
-    s.xdo("mousemove " + s.at(grab));
-    s.frames(2);
+    s.move_to(grab);
     s.xdo("mousedown 1");
     s.wait("drag started", [](const json& j) { return j["dragging"] == true; });
     for (int dx = 30; dx <= 90; dx += 30) {
-        s.xdo("mousemove " + s.at(json{grab[0].get<float>() + dx, grab[1].get<float>()}));
-        s.frames(1);
+        s.move_to(json{grab[0].get<float>() + dx, grab[1].get<float>()});
     }
     s.xdo("mouseup 1");
     st = s.wait("drag ended", [](const json& j) { return j["dragging"] == false; });

@@ -111,8 +111,7 @@ TEST_CASE("editor logic input: add a link, choose its event, pick its target in 
     click_spot(s, "link0.pick");
     st = s.wait("pick mode again", [](const json& j) { return j["pick"]["active"] == true; });
     s.focus();
-    s.xdo("mousemove " + s.at(st["screen"][std::to_string(kRobot)]));
-    s.frames(2);
+    s.move_to(st["screen"][std::to_string(kRobot)]);
     s.xdo("click 3");
     st =
         s.wait("pick cancelled by a right click", [](const json& j) { return j["pick"]["active"] == false; });

@@ -123,8 +123,7 @@ void typed_fields_and_taps(Session& s) {
     // frame has seen it, and let go once the field is being typed into.
     auto type_into = [&](const std::string& spot) {
         s.focus();
-        s.xdo("mousemove " + s.at(s.last()["spots"][spot]));
-        s.frames(2);
+        s.move_to(s.last()["spots"][spot]);
         s.xdo("keydown ctrl");
         s.wait("Ctrl seen", [](const json& j) { return j["input"]["ctrl"] == true; });
         s.xdo("click 1");
@@ -288,7 +287,8 @@ TEST_CASE("editor objects input: Ctrl+Shift+click picks a brush's top face in th
     CHECK(st["faces"]["selected"].empty());
     s.focus();
     s.xdo("keydown ctrl+shift");
-    s.frames(2);
+    s.wait("Ctrl+Shift seen",
+           [](const json& j) { return j["input"]["ctrl"] == true && j["input"]["shift"] == true; });
     s.click(st["screen"]["1"]);
     s.frames(2);
     s.xdo("keyup ctrl+shift");

@@ -160,10 +160,8 @@ TEST_CASE("editor 4-up view: select, drag the gizmo and box select in different 
     const json robot = st["screen"][std::to_string(kQuadRobot)], panel = st["screen"]["3"];
     const json start{(robot[0].get<float>() + panel[0].get<float>()) * 0.5f + 30.0f,
                      (robot[1].get<float>() + panel[1].get<float>()) * 0.5f};
-    s.xdo("mousemove " + s.at(start));
-    s.frames(2);
-    s.xdo("mousedown 1");
-    s.frames(2);
+    s.move_to(start);
+    s.press();
     s.xdo("mousemove " + s.at(json{start[0].get<float>() + 90.0f, start[1].get<float>() + 70.0f}));
     st = s.wait("the box's live dimensions", [](const json& j) {
         return j["tool"]["draw"]["stage"] == "dragging" && j["tool"]["draw"].contains("dimensions") &&
@@ -215,10 +213,8 @@ TEST_CASE("editor 4-up view: select, drag the gizmo and box select in different 
                                      corner[0].get<float>() + corner[1].get<float>() + 0.5f))
             corner = h["screen"];
     REQUIRE_FALSE(corner.is_null());
-    s.xdo("mousemove " + s.at(corner));
-    s.frames(2);
-    s.xdo("mousedown 1");
-    s.frames(2);
+    s.move_to(corner);
+    s.press();
     s.xdo("mousemove " + s.at(json{corner[0].get<float>() + 40.0f, corner[1].get<float>() + 30.0f}));
     st = s.wait("the vertex drag previewed", [](const json& j) {
         return j["tool"]["vertex"]["dragging"] == true && j["tool"]["vertex"]["moved"] == 1 &&
@@ -252,12 +248,9 @@ TEST_CASE("editor 4-up view: select, drag the gizmo and box select in different 
     s.key("b");
     s.wait("the draw tool again", [](const json& j) { return j["tool"]["active"] == "draw"; });
     const json cut_from{start[0].get<float>() + 15.0f, start[1].get<float>() + 15.0f};
-    s.xdo("mousemove " + s.at(cut_from));
-    s.frames(2);
-    s.xdo("mousedown 1");
-    s.frames(2);
-    s.xdo("mousemove " + s.at(json{cut_from[0].get<float>() + 60.0f, cut_from[1].get<float>() + 40.0f}));
-    s.frames(2);
+    s.move_to(cut_from);
+    s.press();
+    s.move_to(json{cut_from[0].get<float>() + 60.0f, cut_from[1].get<float>() + 40.0f});
     s.xdo("mouseup 1");
     st = s.wait("the cutter placed", [&](const json& j) { return j["undo"] == undo_draw + 4; });
     REQUIRE(st["selection"].size() == 1);

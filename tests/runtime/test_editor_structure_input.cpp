@@ -44,7 +44,7 @@ json ids(std::initializer_list<int> list) {
 void ctrl_click(Session& s, const json& point) {
     s.focus();
     s.xdo("keydown ctrl");
-    s.frames(2);
+    s.wait("Ctrl seen", [](const json& j) { return j["input"]["ctrl"] == true; });
     s.click(point);
     s.frames(2);
     s.xdo("keyup ctrl");
@@ -57,8 +57,7 @@ void ctrl_click(Session& s, const json& point) {
 bool double_click_enters(Session& s, const json& point) {
     for (int attempt = 0; attempt < 5; ++attempt) {
         s.focus();
-        s.xdo("mousemove " + s.at(point));
-        s.frames(2);
+        s.move_to(point);
         s.xdo("click --repeat 2 --delay 90 1");
         const json st = s.frames(3);
         if (st["open_group"] != 0) return true;
@@ -139,8 +138,7 @@ TEST_CASE("editor structure input: add a layer, move the selection to it from it
     CHECK(st["layers"][1]["count"] == 0);
 
     s.focus();
-    s.xdo("mousemove " + s.at(st["spots"]["layer1.name"]));
-    s.frames(2);
+    s.move_to(st["spots"]["layer1.name"]);
     s.xdo("click 3");
     st = s.wait("the layer's menu", [](const json& j) { return j["spots"].contains("layer_menu.move"); });
     s.click(st["spots"]["layer_menu.move"]);
