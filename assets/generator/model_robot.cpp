@@ -99,7 +99,11 @@ Result<void> make_robot(Output& out) {
     // Body parts tile the paint map once per 2 units so panel seams stay sparse on small parts.
     const float uv = 0.5f;
     const int dark = model.add_material(textured("robot_joint", "metal", vec4(vec3(0.5f), 1.0f), 0.5f, 1.0f));
-    const int rubber = model.add_material(plain("robot_rubber", vec3(0.07f), 0.0f, 0.88f));
+    // The tyres are open toward the axle (the hub covers it from the side): seen from below, their inside
+    // shows, so the renderer must not cull their back faces.
+    Material rubber_material = plain("robot_rubber", vec3(0.07f), 0.0f, 0.88f);
+    rubber_material.double_sided = true;
+    const int rubber = model.add_material(rubber_material);
     const int visor = model.add_material(
         plain("robot_visor", vec3(0.15f, 0.02f, 0.02f), 0.0f, 0.2f, vec3(1.0f, 0.12f, 0.04f)));
     const int steel = model.add_material(plain("robot_steel", vec3(0.72f), 1.0f, 0.3f));

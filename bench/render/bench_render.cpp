@@ -57,10 +57,11 @@ struct Variant {
     bool fast_trilinear = false;
     int view_model_msaa = render::RendererSettings{}.view_model_msaa;
     bool contact_shadows = true;
-    bool model_lods = true;      // designers' models drawn at their levels of detail
-    bool model_shaders = true;   // RendererSettings::fast_model_shaders
-    bool prepass_floors = false; // !RendererSettings::prepass_skips_floors
-    bool rifle = true;           // the first-person rifle drawn
+    bool model_lods = true;        // designers' models drawn at their levels of detail
+    bool model_shaders = true;     // RendererSettings::fast_model_shaders
+    bool prepass_floors = false;   // !RendererSettings::prepass_skips_floors
+    bool rifle = true;             // the first-person rifle drawn
+    bool cull_single_sided = true; // RendererSettings::cull_single_sided
 };
 
 struct Measurement {
@@ -116,6 +117,7 @@ void measure(Measurement& m, shell::OffscreenContext& ctx, render::AssetLibrary&
     // A scratch copy of the shaders, for trying a change without touching assets/shaders/.
     if (const char* dir = std::getenv("KS_SHADER_DIR"); dir && *dir) settings.shader_dir = dir;
     settings.prepass_skips_floors = !v.prepass_floors;
+    settings.cull_single_sided = v.cull_single_sided;
     scene.set_doors_occlude(v.doors_occlude);
     scene.set_model_lods(v.model_lods);
     const float default_anisotropy = assets.textures().max_anisotropy();
@@ -301,6 +303,8 @@ int run(int argc, const char* const* argv) {
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 1.0f, v.prepass_floors = true; });
     with("fast, scale 1, no rifle",
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 1.0f, v.rifle = false; });
+    with("fast, scale 1, no back-face culling",
+         [](Variant& v) { v.quality = Q::Fast, v.render_scale = 1.0f, v.cull_single_sided = false; });
     with("fast, scale 1, one model shader",
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 1.0f, v.model_shaders = false; });
     with("fast, scale 0.5, trilinear",

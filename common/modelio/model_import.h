@@ -30,6 +30,8 @@ struct ImportedMaterial {
     float metallic = 0.0f;
     float roughness = 1.0f;
     Vec3 emissive{0.0f};
+    // glTF's doubleSided (assimp's AI_MATKEY_TWOSIDED); true where the file cannot say (OBJ, most FBX).
+    bool double_sided = true;
     MaterialTextures textures;
 };
 

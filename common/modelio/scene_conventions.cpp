@@ -130,6 +130,8 @@ ImportedMaterial convert_material(const aiMaterial& src) {
     float f = 0;
     if (src.Get(AI_MATKEY_METALLIC_FACTOR, f) == AI_SUCCESS) mat.metallic = f;
     if (src.Get(AI_MATKEY_ROUGHNESS_FACTOR, f) == AI_SUCCESS) mat.roughness = f;
+    int two_sided = 1; // absent (OBJ): both sides, the safe reading
+    if (src.Get(AI_MATKEY_TWOSIDED, two_sided) == AI_SUCCESS) mat.double_sided = two_sided != 0;
     mat.textures.base_color = texture_of(src, {aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE});
     mat.textures.normal = texture_of(src, {aiTextureType_NORMALS, aiTextureType_NORMAL_CAMERA});
     // glTF's metallicRoughness texture comes as UNKNOWN from assimp 5.2's glTF 2 reader.

@@ -31,6 +31,7 @@ Material convert(const modelio::ImportedModel& imported, const modelio::Imported
     mat.emissive_factor = src.emissive;
     mat.metallic = src.metallic;
     mat.roughness = src.roughness;
+    mat.double_sided = src.double_sided;
     auto map = [&](const std::string& file, ColorSpace space) -> unsigned {
         if (file.empty()) return 0u;
         const Texture& t =

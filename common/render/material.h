@@ -19,7 +19,11 @@ struct Material {
     unsigned fast_base_map = 0;
     float fast_metallic = 0.0f;
     bool placeholder = false; // some map failed to load (magenta checker)
-    int id = 0;               // unique per material, the renderer's sort key
+    // Both sides of each triangle are seen (glTF's doubleSided; files that cannot say so, OBJ's, are). A
+    // single-sided material's back faces are culled where the renderer draws models (RendererSettings::
+    // cull_single_sided): they cost llvmpipe setup and binning and are hidden by the front faces anyway.
+    bool double_sided = true;
+    int id = 0; // unique per material, the renderer's sort key
 };
 
 } // namespace ks::render

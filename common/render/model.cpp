@@ -87,6 +87,8 @@ Material convert_material(const aiMaterial* src, const std::filesystem::path& di
     float f = 0;
     if (src->Get(AI_MATKEY_METALLIC_FACTOR, f) == AI_SUCCESS) mat.metallic = f;
     if (src->Get(AI_MATKEY_ROUGHNESS_FACTOR, f) == AI_SUCCESS) mat.roughness = f;
+    int two_sided = 1; // absent (OBJ): both sides, the safe reading
+    if (src->Get(AI_MATKEY_TWOSIDED, two_sided) == AI_SUCCESS) mat.double_sided = two_sided != 0;
 
     auto map = [&](std::initializer_list<aiTextureType> types, ColorSpace space) -> unsigned {
         for (aiTextureType type : types) {

@@ -26,6 +26,10 @@ struct RendererSettings {
     // llvmpipe); 2/4/8: multisampled; 0: drawn into the scene's target, aliased
     // (KS_VIEW_MODEL_MSAA=0|1|2|4|8).
     int view_model_msaa = 1;
+    // Back faces of single-sided materials (Material::double_sided false: glTF's default, every generated
+    // model) culled in the shaded passes; off: every face drawn (the bench's "no back-face culling" row and
+    // the test that culling hides nothing).
+    bool cull_single_sided = true;
     int shadow_map_size = 2048;
     bool shadows = true;
     // Movers' contact shadows on the floor (SceneFrame::shadow_casters; contact_shadows.h), both paths.

@@ -111,10 +111,10 @@ void SceneRenderer::cull_and_batch(const SceneFrame& frame, FrameStats& stats) {
         const bool baked = fast_ && inst.lightmap != 0;
         const std::uint32_t mask = light_mask(frame, box, light_cap, baked);
         visible_.push_back({&inst, distance_to_box(eye, box), mask, box, baked ? inst.lightmap : 0u,
-                            baked && eye_over_or_under(eye, box)});
+                            baked && eye_over_or_under(eye, box), glm::determinant(Mat3(inst.world)) < 0.0f});
     }
-    // Group identical (material, mesh, lights) together; each group is drawn at its nearest member's
-    // distance.
+    // Group identical (material, mesh, lights, handedness) together; each group is drawn at its nearest
+    // member's distance.
     std::sort(visible_.begin(), visible_.end(), [](const Visible& a, const Visible& b) {
         if (a.instance->material->id != b.instance->material->id)
             return a.instance->material->id < b.instance->material->id;
@@ -122,6 +122,7 @@ void SceneRenderer::cull_and_batch(const SceneFrame& frame, FrameStats& stats) {
         if (a.light_mask != b.light_mask) return a.light_mask < b.light_mask;
         if (a.lightmap != b.lightmap) return a.lightmap < b.lightmap;
         if (a.floor_or_ceiling != b.floor_or_ceiling) return b.floor_or_ceiling;
+        if (a.mirrored != b.mirrored) return b.mirrored;
         return a.distance < b.distance;
     });
     std::vector<float>& batch_distance = batch_distance_;
@@ -132,11 +133,11 @@ void SceneRenderer::cull_and_batch(const SceneFrame& frame, FrameStats& stats) {
         while (j < visible_.size() && visible_[j].instance->material == head.instance->material &&
                visible_[j].instance->mesh == head.instance->mesh &&
                visible_[j].light_mask == head.light_mask && visible_[j].lightmap == head.lightmap &&
-               visible_[j].floor_or_ceiling == head.floor_or_ceiling)
+               visible_[j].floor_or_ceiling == head.floor_or_ceiling && visible_[j].mirrored == head.mirrored)
             ++j;
         batches_.push_back({head.instance->mesh, head.instance->material, head.light_mask,
                             static_cast<int>(i), static_cast<int>(j - i), head.lightmap,
-                            head.floor_or_ceiling});
+                            head.floor_or_ceiling, head.mirrored});
         batch_distance.push_back(head.distance);
         i = j;
     }

@@ -241,12 +241,10 @@ void SceneRenderer::draw_view_model(const SceneFrame& frame, FrameStats& stats) 
     glClear(GL_DEPTH_BUFFER_BIT);
     cull_and_batch(frame, stats);
     const geometry::Camera vm = view_model_camera(frame);
-    if (frame.view_model->cull_back_faces) glEnable(GL_CULL_FACE);
     if (fast_)
         draw_batches_fast(vm, frame, stats, true);
     else
         draw_batches(vm.projection() * vm.view(), vm.position, frame, stats, true);
-    glDisable(GL_CULL_FACE);
     view_world_.clear();
 }
 
@@ -309,7 +307,7 @@ FrameStats SceneRenderer::render(const SceneFrame& frame) {
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE); // level slabs are seen from both sides in the editor; models are not all closed
+    reset_face_culling(); // level slabs are seen from both sides; single-sided materials cull per batch
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
     if (frame.instances) {

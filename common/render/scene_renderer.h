@@ -30,9 +30,6 @@ class TextureCache;
 struct ViewModel {
     std::vector<MeshInstance> instances; // in camera space (x right, y up, -z forward)
     float fov_y = radians(50.0f);
-    // Closed meshes wound counter-clockwise (the generated rifle): back faces are culled, which on a
-    // software rasteriser saves the setup of half its triangles and the pixels of its far side.
-    bool cull_back_faces = true;
 };
 
 struct SceneFrame {
@@ -91,6 +88,10 @@ class SceneRenderer {
                              bool dynamic_only) const;
     struct Batch;
     void draw_instanced(const Batch& b, FrameStats& stats); // one batch: a draw call and its triangles
+    // Face state for a shaded batch: back faces culled for a single-sided material, front faces clockwise
+    // for a mirrored instance matrix; reset_face_culling before a pass and after it (no culling, CCW).
+    void cull_faces_for(const Batch& b);
+    void reset_face_culling();
     bool casts_shadow(const MeshInstance& inst) const {
         // The fast path bakes the level's sun shadows; its shadow map (for models, per vertex) holds only
         // static level geometry, so moving robots never force a redraw.
@@ -129,6 +130,7 @@ class SceneRenderer {
     ViewModelLayer view_model_layer_;           // the view model's antialiased layer (view_model_msaa)
     ScreenFootprint view_model_footprint_;      // where the layer is composited, refilled each frame
     std::uint64_t shadow_hash_ = 0;
+    int face_culling_ = 0; // the GL state cull_faces_for set: 1 back faces culled, 2 fronts clockwise
     Mat4 shadow_matrix_{1.0f};
 
     // Per-frame scratch, reused (capacity grows to the largest frame, then stays).
@@ -139,6 +141,7 @@ class SceneRenderer {
         geometry::Aabb bounds;
         unsigned lightmap;     // 0 unless the fast path reads this instance's light map
         bool floor_or_ceiling; // baked, and its box spans the eye's x and z (eye_over_or_under)
+        bool mirrored;         // its matrix's determinant is negative
     };
     struct Batch {
         const GpuMesh* mesh;
@@ -147,6 +150,7 @@ class SceneRenderer {
         int first, count; // into instance_data_
         unsigned lightmap;
         bool floor_or_ceiling; // drawn after the other batches, left out of the depth pre-pass
+        bool mirrored;         // the instances' matrices flip handedness: front faces wind clockwise
     };
     std::vector<Visible> visible_;
     std::vector<OccluderFace> occluder_faces_;

@@ -70,9 +70,11 @@ void SceneRenderer::draw_batches(const Mat4& view_projection, const Vec3& eye, c
             upload_lights(pbr_, b.light_mask, frame);
             bound_mask = b.light_mask;
         }
+        cull_faces_for(b);
         draw_instanced(b, stats);
         stats.instances_drawn += b.count;
     }
+    reset_face_culling();
 }
 
 void SceneRenderer::draw_instanced(const Batch& b, FrameStats& stats) {
@@ -81,6 +83,28 @@ void SceneRenderer::draw_instanced(const Batch& b, FrameStats& stats) {
     glDrawElementsInstanced(GL_TRIANGLES, b.mesh->index_count(), GL_UNSIGNED_INT, nullptr, b.count);
     ++stats.draw_calls;
     stats.triangles += static_cast<long long>(b.mesh->index_count() / 3) * b.count;
+}
+
+void SceneRenderer::cull_faces_for(const Batch& b) {
+    // Bit 1: cull back faces; bit 2: front faces wind clockwise (a mirrored matrix), which also keeps
+    // gl_FrontFacing true on a mirrored instance's fronts (pbr.frag turns the normal of back faces).
+    const int wanted =
+        (settings_.cull_single_sided && !b.material->double_sided ? 1 : 0) | (b.mirrored ? 2 : 0);
+    if (wanted == face_culling_) return;
+    if ((wanted & 1) != (face_culling_ & 1)) {
+        if (wanted & 1)
+            glEnable(GL_CULL_FACE);
+        else
+            glDisable(GL_CULL_FACE);
+    }
+    if ((wanted & 2) != (face_culling_ & 2)) glFrontFace(wanted & 2 ? GL_CW : GL_CCW);
+    face_culling_ = wanted;
+}
+
+void SceneRenderer::reset_face_culling() {
+    glDisable(GL_CULL_FACE);
+    glFrontFace(GL_CCW);
+    face_culling_ = 0;
 }
 
 void SceneRenderer::upload_lights(const ShaderProgram& program, std::uint32_t light_mask,
@@ -232,9 +256,11 @@ void SceneRenderer::draw_batches_fast(const geometry::Camera& camera, const Scen
                 upload_lights(*programs[program], b.light_mask, frame);
                 bound_mask = b.light_mask;
             }
+            cull_faces_for(b);
             draw_instanced(b, stats);
             stats.instances_drawn += b.count;
         }
+    reset_face_culling();
     glBindSampler(kBase, 0);
     glBindSampler(kEmissive, 0);
 }

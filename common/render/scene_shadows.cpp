@@ -57,8 +57,8 @@ void SceneRenderer::render_shadows(const SceneFrame& frame, FrameStats& stats) {
             instance_data_.push_back({shadow_order_[j]->world, Vec4(0.0f)});
             ++j;
         }
-        shadow_batches_.push_back(
-            {shadow_order_[i]->mesh, nullptr, 0, static_cast<int>(i), static_cast<int>(j - i), 0u, false});
+        shadow_batches_.push_back({shadow_order_[i]->mesh, nullptr, 0, static_cast<int>(i),
+                                   static_cast<int>(j - i), 0u, false, false});
         i = j;
     }
     Vec3 center = bounds.center();

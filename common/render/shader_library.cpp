@@ -2,7 +2,6 @@
 
 #include "core/log.h"
 
-
 namespace ks::render {
 
 bool default_shader_hot_reload() {

@@ -59,7 +59,9 @@ std::filesystem::path write_gltf_cube(const std::filesystem::path& dir, const st
     j << R"("materials":[{"name":"paint","pbrMetallicRoughness":{"baseColorFactor":[0.8,0.2,0.1,1],)"
       << R"("metallicFactor":0.25,"roughnessFactor":0.5)";
     if (!o.texture.empty()) j << R"(,"baseColorTexture":{"index":0})";
-    j << "}}],";
+    j << "}";
+    if (o.double_sided) j << R"(,"doubleSided":true)";
+    j << "}],";
     if (!o.texture.empty()) j << R"("textures":[{"source":0}],"images":[{"uri":")" << o.texture << R"("}],)";
     j << R"("buffers":[{"uri":")" << name << ".bin\",\"byteLength\":" << pos_bytes + idx_bytes << "}],";
     j << R"("bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":)" << pos_bytes

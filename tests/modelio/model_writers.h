@@ -16,6 +16,8 @@ struct CubeOptions {
     std::string texture;      // base colour texture uri ("" = none)
     bool write_buffer = true; // false: the .bin the glTF names is not written
     float poison = 0.0f;      // added to the first vertex's x (a NaN makes it non-finite)
+    bool double_sided =
+        false; // the material's doubleSided (written only when true, as glTF's default is false)
 };
 
 // Writes `name`.gltf and `name`.bin into `dir`: a cube (24 vertices, 12 triangles) under one node, with a

@@ -67,6 +67,13 @@ TEST_CASE("modelio: a glTF cube with its node transform baked, its material and 
     CHECK(mat.metallic == doctest::Approx(0.25f));
     CHECK(mat.roughness == doctest::Approx(0.5f));
     CHECK(mat.textures.base_color == "crate.png");
+    CHECK_FALSE(mat.double_sided); // glTF's default: the renderer culls its back faces
+    test::CubeOptions leaf_options;
+    leaf_options.double_sided = true;
+    const auto two_sided = test::write_gltf_cube(dir.path(), "leaf", leaf_options);
+    Result<ImportedModel> leaf = import_model(two_sided);
+    REQUIRE_MESSAGE(leaf.ok(), leaf.error().str());
+    CHECK(leaf->materials[static_cast<size_t>(leaf->meshes[0].material)].double_sided);
     // Normals point out of the cube: each triangle's normal agrees with its winding.
     const ImportedMesh& mesh = m->meshes[0];
     for (size_t i = 0; i < mesh.indices.size(); i += 3) {
@@ -105,6 +112,7 @@ TEST_CASE("modelio: OBJ with its MTL; a texture the MTL names must be there") {
     const ImportedMaterial& mat = m->materials[static_cast<size_t>(m->meshes[0].material)];
     CHECK(mat.name == "paint");
     CHECK(mat.base_color.g == doctest::Approx(0.6f));
+    CHECK(mat.double_sided); // OBJ cannot say: both sides drawn
 
     const auto textured = test::write_obj_cube(dir.path(), "painted", 1.0f, "paint.png");
     check_refused(import_model(textured), textured, "\"paint.png\", which is missing");
