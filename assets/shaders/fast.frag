@@ -17,7 +17,7 @@ uniform sampler2D u_lightmap;
 uniform vec4 u_base_factor;
 uniform vec3 u_emissive_factor;
 uniform vec2 u_metal_rough;
-uniform int u_map_flags;       // 2 orm, 4 emissive, 32 light map, 64 sRGB maps read raw (decode here)
+uniform int u_map_flags; // 2 orm, 4 emissive, 32 light map, 64 sRGB maps read raw, 128 orm in base (alpha)
 uniform float u_lightmap_range; // > 0: the light map is 8-bit, sqrt-encoded over 0..range
 uniform vec3 u_fog_color;
 uniform float u_exposure;
@@ -44,10 +44,12 @@ float fog_amount() {
 // time, because llvmpipe runs both sides of a branch on a uniform, texture lookups included: a rifle pixel
 // paid for four lookups (base, ORM, light map, emissive) where it needs one or two.
 #ifdef FIXED_MAPS
-#define ORM_MAP FIXED_ORM
+#define ORM_MAP (FIXED_ORM == 1)
+#define ORM_IN_BASE (FIXED_ORM == 2) // base x occlusion in rgb, metalness in alpha (one lookup)
 #define EMISSIVE_MAP FIXED_EMISSIVE
 #define BAKED false
 #else
+#define ORM_IN_BASE ((u_map_flags & 128) != 0)
 #define ORM_MAP ((u_map_flags & 2) != 0)
 #define EMISSIVE_MAP ((u_map_flags & 4) != 0)
 #define BAKED ((u_map_flags & 32) != 0)
@@ -57,8 +59,12 @@ void main() {
     vec4 base = texture(u_base_map, v_uv);
     bool raw = (u_map_flags & 64) != 0;
     if (raw) base.rgb *= base.rgb;
-    base *= u_base_factor;
     float metallic = u_metal_rough.x, ao = 1.0;
+    if (ORM_IN_BASE) {
+        metallic *= base.a;
+        base.a = 1.0;
+    }
+    base *= u_base_factor;
     if (ORM_MAP) {
         vec3 orm = texture(u_orm_map, v_uv).rgb;
         ao = orm.r;

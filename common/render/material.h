@@ -18,6 +18,9 @@ struct Material {
     // (TextureCache::get_occluded_base); 0 when not made.
     unsigned fast_base_map = 0;
     float fast_metallic = 0.0f;
+    // fast_base_map's alpha holds the ORM map's metalness (the base map was opaque): a fast-path model reads
+    // occlusion and metalness from its one base lookup (the fast_model "orm in base" programs).
+    bool fast_metal_in_alpha = false;
     bool placeholder = false; // some map failed to load (magenta checker)
     // Both sides of each triangle are seen (glTF's doubleSided; files that cannot say so, OBJ's, are). A
     // single-sided material's back faces are culled where the renderer draws models (RendererSettings::

@@ -90,22 +90,35 @@ Material convert_material(const aiMaterial* src, const std::filesystem::path& di
     int two_sided = 1; // absent (OBJ): both sides, the safe reading
     if (src->Get(AI_MATKEY_TWOSIDED, two_sided) == AI_SUCCESS) mat.double_sided = two_sided != 0;
 
-    auto map = [&](std::initializer_list<aiTextureType> types, ColorSpace space) -> unsigned {
+    // The file a map comes from (empty: none), and the map loaded from it.
+    auto file_of = [&](std::initializer_list<aiTextureType> types) -> std::filesystem::path {
         for (aiTextureType type : types) {
             aiString file;
-            if (src->GetTextureCount(type) > 0 && src->GetTexture(type, 0, &file) == AI_SUCCESS) {
-                const Texture& t = textures.get(dir / file.C_Str(), space);
-                if (t.placeholder) mat.placeholder = true;
-                return t.id;
-            }
+            if (src->GetTextureCount(type) > 0 && src->GetTexture(type, 0, &file) == AI_SUCCESS)
+                return dir / file.C_Str();
         }
-        return 0;
+        return {};
     };
-    mat.base_map = map({aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE}, ColorSpace::Srgb);
-    mat.normal_map = map({aiTextureType_NORMALS}, ColorSpace::Linear);
-    mat.orm_map = map({aiTextureType_UNKNOWN, aiTextureType_METALNESS, aiTextureType_DIFFUSE_ROUGHNESS},
-                      ColorSpace::Linear);
-    mat.emissive_map = map({aiTextureType_EMISSIVE}, ColorSpace::Srgb);
+    auto map = [&](const std::filesystem::path& file, ColorSpace space) -> unsigned {
+        if (file.empty()) return 0;
+        const Texture& t = textures.get(file, space);
+        if (t.placeholder) mat.placeholder = true;
+        return t.id;
+    };
+    const auto base_file = file_of({aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE});
+    const auto orm_file =
+        file_of({aiTextureType_UNKNOWN, aiTextureType_METALNESS, aiTextureType_DIFFUSE_ROUGHNESS});
+    mat.base_map = map(base_file, ColorSpace::Srgb);
+    mat.normal_map = map(file_of({aiTextureType_NORMALS}), ColorSpace::Linear);
+    mat.orm_map = map(orm_file, ColorSpace::Linear);
+    mat.emissive_map = map(file_of({aiTextureType_EMISSIVE}), ColorSpace::Srgb);
+    // The fast path's one-lookup map: base x occlusion, metalness in alpha (when the base is opaque).
+    if (mat.base_map && mat.orm_map && !mat.placeholder) {
+        const TextureCache::OccludedBase& packed = textures.get_occluded_base(base_file, orm_file);
+        mat.fast_base_map = packed.id;
+        mat.fast_metallic = packed.mean_metallic;
+        mat.fast_metal_in_alpha = packed.id != 0 && packed.metal_in_alpha;
+    }
     return mat;
 }
 } // namespace

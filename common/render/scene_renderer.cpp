@@ -57,8 +57,8 @@ unsigned SceneRenderer::program_id(const std::string& name) const {
     if (name == "fast") return fast_program_.id();
     if (name == "fast_level") return fast_level_.id();
     if (name == "fast_level_lit") return fast_level_lit_.id();
-    for (int i = 0; i < 4; ++i)
-        if (name == fast_model_program(i & 1, i & 2).name) return fast_model_[i].id();
+    for (int i = 0; i < kFastModelPrograms; ++i)
+        if (name == fast_model_program(i).name) return fast_model_[i].id();
     if (name == "shadow") return shadow_.id();
     if (name == "particle") return particle_.id();
     if (name == "line") return line_.id();
@@ -94,9 +94,8 @@ Result<void> SceneRenderer::init() {
           std::tuple{&line_program(), &line_, std::function<void(ShaderProgram&)>()},
           std::tuple{&contact_shadow_program(), &contact_shadow_, std::function<void(ShaderProgram&)>()}})
         if (auto r = shaders_->add(*files, *target, units); !r) return r.error();
-    for (int i = 0; i < 4; ++i)
-        if (auto r = shaders_->add(fast_model_program(i & 1, i & 2), fast_model_[i], pbr_units); !r)
-            return r.error();
+    for (int i = 0; i < kFastModelPrograms; ++i)
+        if (auto r = shaders_->add(fast_model_program(i), fast_model_[i], pbr_units); !r) return r.error();
     if (auto r = shaders_->add(view_model_composite_program(), view_model_layer_.program(),
                                [](ShaderProgram& p) { glUniform1i(p.location("u_layer"), 0); });
         !r)

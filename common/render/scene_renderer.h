@@ -113,7 +113,7 @@ class SceneRenderer {
     RendererSettings settings_;
     ShaderProgram pbr_, fast_program_, fast_level_, fast_level_lit_, shadow_, particle_, line_,
         contact_shadow_;
-    ShaderProgram fast_model_[4]; // fast_model_program(orm, emissive) at [orm + 2 * emissive]
+    ShaderProgram fast_model_[kFastModelPrograms]; // fast_model_program(i) at [i]
     std::unique_ptr<ShaderLibrary> shaders_;
     std::string gl_renderer_;
     bool fast_ = false;

@@ -141,15 +141,15 @@ void SceneRenderer::draw_batches_fast(const geometry::Camera& camera, const Scen
     const bool fog = !view_model && !camera.orthographic();
     // The frame's uniforms, in every fast program (a uniform a program does not have is location -1, which
     // GL ignores): fast (any surface the others cannot draw), fast_level (baked level surfaces, no branches),
-    // fast_level_lit (those a dynamic light reaches) and the four fast_model programs (models, their ORM and
-    // emissive lookups fixed at compile time).
-    constexpr int kPrograms = 7, kFirstModel = 3;
+    // fast_level_lit (those a dynamic light reaches) and the six fast_model programs (models, where their
+    // occlusion and metalness come from and their emissive lookup fixed at compile time).
+    constexpr int kFirstModel = 3, kPrograms = kFirstModel + kFastModelPrograms;
     struct Locations {
         GLint flags, baked, receive, base, emissive, metal_rough;
     } loc[kPrograms];
     const ShaderProgram* programs[kPrograms] = {&fast_program_,  &fast_level_,    &fast_level_lit_,
                                                 &fast_model_[0], &fast_model_[1], &fast_model_[2],
-                                                &fast_model_[3]};
+                                                &fast_model_[3], &fast_model_[4], &fast_model_[5]};
     for (int i = 0; i < kPrograms; ++i) {
         const ShaderProgram& p = *programs[i];
         p.use();
@@ -212,9 +212,14 @@ void SceneRenderer::draw_batches_fast(const geometry::Camera& camera, const Scen
             const bool level_program = baked && occluded_base && !m.emissive_map && raw_srgb_ &&
                                        !m.placeholder && settings_.fast_level_shader;
             const bool model_program = !baked && settings_.fast_model_shaders;
-            const int program = level_program   ? (b.light_mask != 0 ? 2 : 1)
-                                : model_program ? kFirstModel + (m.orm_map ? 1 : 0) + (m.emissive_map ? 2 : 0)
-                                                : 0;
+            // A model whose base map also carries its occlusion (rgb) and metalness (alpha): one lookup.
+            const bool orm_in_base = !baked && m.fast_base_map != 0 && m.fast_metal_in_alpha && raw_srgb_ &&
+                                     !m.placeholder && settings_.fast_occluded_base;
+            const ModelOrm orm = orm_in_base ? ModelOrm::InBase : m.orm_map ? ModelOrm::Map : ModelOrm::None;
+            const int program = level_program ? (b.light_mask != 0 ? 2 : 1)
+                                : model_program
+                                    ? kFirstModel + static_cast<int>(orm) + (m.emissive_map ? 3 : 0)
+                                    : 0;
             if (program != current) {
                 programs[program]->use();
                 current = program;
@@ -229,7 +234,8 @@ void SceneRenderer::draw_batches_fast(const geometry::Camera& camera, const Scen
                         glActiveTexture(GL_TEXTURE0 + unit);
                         glBindTexture(GL_TEXTURE_2D, id ? id : fallback);
                     };
-                    bind(kBase, occluded_base ? m.fast_base_map : m.base_map, textures_.white().id);
+                    bind(kBase, occluded_base || orm_in_base ? m.fast_base_map : m.base_map,
+                         textures_.white().id);
                     bind(kOrm, m.orm_map, textures_.white().id);
                     bind(kEmissive, m.emissive_map, textures_.white().id);
                     // The placeholder checker has no mipmaps (a mip filter would make it incomplete): it
@@ -245,8 +251,9 @@ void SceneRenderer::draw_batches_fast(const geometry::Camera& camera, const Scen
                     glActiveTexture(GL_TEXTURE0 + kLightmap);
                     glBindTexture(GL_TEXTURE_2D, b.lightmap);
                 }
-                glUniform1i(l.flags, (m.orm_map && !occluded_base ? 2 : 0) | (m.emissive_map ? 4 : 0) |
-                                         (baked ? 32 : 0) | (raw_srgb_ && !m.placeholder ? 64 : 0));
+                glUniform1i(l.flags, (m.orm_map && !occluded_base && !orm_in_base ? 2 : 0) |
+                                         (m.emissive_map ? 4 : 0) | (baked ? 32 : 0) |
+                                         (raw_srgb_ && !m.placeholder ? 64 : 0) | (orm_in_base ? 128 : 0));
                 glUniform1i(l.baked, baked ? 1 : 0);
                 glUniform1i(l.receive, shadows && !baked ? 1 : 0);
                 bound_material = b.material;

@@ -22,17 +22,24 @@ const ProgramFiles& fast_level_lit_program() {
                                 "#define DYNAMIC_LIGHTS\n"};
     return p;
 }
-const ProgramFiles& fast_model_program(bool orm_map, bool emissive_map) {
-    static const ProgramFiles p[4] = {
+const ProgramFiles& fast_model_program(int index) {
+    static const ProgramFiles p[kFastModelPrograms] = {
         {"fast_model", "fast.vert", "fast.frag",
-         "#define FIXED_MAPS\n#define FIXED_ORM false\n#define FIXED_EMISSIVE false\n"},
+         "#define FIXED_MAPS\n#define FIXED_ORM 0\n#define FIXED_EMISSIVE false\n"},
         {"fast_model_orm", "fast.vert", "fast.frag",
-         "#define FIXED_MAPS\n#define FIXED_ORM true\n#define FIXED_EMISSIVE false\n"},
+         "#define FIXED_MAPS\n#define FIXED_ORM 1\n#define FIXED_EMISSIVE false\n"},
+        {"fast_model_orm_in_base", "fast.vert", "fast.frag",
+         "#define FIXED_MAPS\n#define FIXED_ORM 2\n#define FIXED_EMISSIVE false\n"},
         {"fast_model_emissive", "fast.vert", "fast.frag",
-         "#define FIXED_MAPS\n#define FIXED_ORM false\n#define FIXED_EMISSIVE true\n"},
+         "#define FIXED_MAPS\n#define FIXED_ORM 0\n#define FIXED_EMISSIVE true\n"},
         {"fast_model_orm_emissive", "fast.vert", "fast.frag",
-         "#define FIXED_MAPS\n#define FIXED_ORM true\n#define FIXED_EMISSIVE true\n"}};
-    return p[(orm_map ? 1 : 0) + (emissive_map ? 2 : 0)];
+         "#define FIXED_MAPS\n#define FIXED_ORM 1\n#define FIXED_EMISSIVE true\n"},
+        {"fast_model_orm_in_base_emissive", "fast.vert", "fast.frag",
+         "#define FIXED_MAPS\n#define FIXED_ORM 2\n#define FIXED_EMISSIVE true\n"}};
+    return p[index];
+}
+const ProgramFiles& fast_model_program(ModelOrm orm, bool emissive_map) {
+    return fast_model_program(static_cast<int>(orm) + (emissive_map ? 3 : 0));
 }
 const ProgramFiles& shadow_program() {
     static const ProgramFiles p{"shadow", "shadow.vert", "shadow.frag"};
@@ -65,10 +72,12 @@ std::vector<const ProgramFiles*> all_programs() {
             &line_program(),
             &view_model_composite_program(),
             &contact_shadow_program(),
-            &fast_model_program(false, false),
-            &fast_model_program(true, false),
-            &fast_model_program(false, true),
-            &fast_model_program(true, true)};
+            &fast_model_program(0),
+            &fast_model_program(1),
+            &fast_model_program(2),
+            &fast_model_program(3),
+            &fast_model_program(4),
+            &fast_model_program(5)};
 }
 
 std::filesystem::path default_shader_dir() {

@@ -34,9 +34,14 @@ const ProgramFiles& pbr_program();
 const ProgramFiles& fast_program();
 const ProgramFiles& fast_level_program();     // the fast path's baked level surfaces (no branches)
 const ProgramFiles& fast_level_lit_program(); // ... with Light::dynamic lights added per pixel
+// Where a fast-path model's occlusion and metalness come from: nowhere (the factors), the ORM map, or the
+// base map itself (TextureCache::get_occluded_base: base x occlusion in rgb, metalness in alpha; one lookup).
+enum class ModelOrm { None = 0, Map = 1, InBase = 2 };
+inline constexpr int kFastModelPrograms = 6;
 // The fast path's models (no light map) with the ORM and emissive maps fixed at compile time: llvmpipe pays
-// for every lookup in a branch on a uniform, taken or not.
-const ProgramFiles& fast_model_program(bool orm_map, bool emissive_map);
+// for every lookup in a branch on a uniform, taken or not. Index of a variant: int(orm) + 3 * emissive.
+const ProgramFiles& fast_model_program(ModelOrm orm, bool emissive_map);
+const ProgramFiles& fast_model_program(int index);
 const ProgramFiles& shadow_program();
 const ProgramFiles& particle_program();
 const ProgramFiles& line_program();

@@ -82,16 +82,25 @@ Texture solid(unsigned char r, unsigned char g, unsigned char b) {
 }
 // In the sRGB-encoded domain (the fast path decodes with a square): encoded * sqrt(ao) squares to linear
 // base * ao. Returns the ORM map's mean metalness.
+// The occluded base's `extra` (kept with its mip chain in the disk cache): the mean metalness, plus
+// kAlphaKept when the base colour had an alpha of its own (not opaque), which then stays in place of the
+// metalness.
+constexpr float kAlphaKept = 2.0f;
+
 float occlude(unsigned char* colour, const unsigned char* occlusion, size_t n) {
     double metal = 0.0;
+    bool opaque = true;
+    for (size_t i = 0; i < n && opaque; ++i) opaque = colour[i * 4 + 3] == 255;
     for (size_t i = 0; i < n; ++i) {
         float ao = std::sqrt(occlusion[i * 4] / 255.0f);
         for (int c = 0; c < 3; ++c)
             colour[i * 4 + static_cast<size_t>(c)] =
                 static_cast<unsigned char>(std::lround(colour[i * 4 + static_cast<size_t>(c)] * ao));
+        if (opaque) colour[i * 4 + 3] = occlusion[i * 4 + 2];
         metal += occlusion[i * 4 + 2] / 255.0;
     }
-    return static_cast<float>(metal / static_cast<double>(std::max<size_t>(n, 1)));
+    const float mean = static_cast<float>(metal / static_cast<double>(std::max<size_t>(n, 1)));
+    return opaque ? mean : mean + kAlphaKept;
 }
 } // namespace
 
@@ -225,7 +234,8 @@ const TextureCache::OccludedBase& TextureCache::get_occluded_base(const std::fil
     auto orm_bytes = files::read_text(orm);
     if (base_bytes && orm_bytes) {
         const std::vector<std::string> images{std::move(*base_bytes), std::move(*orm_bytes)};
-        out.id = load_through_disk("occluded base", images, ColorSpace::Srgb, out.mean_metallic, [&] {
+        float extra = 0.0f;
+        out.id = load_through_disk("occluded base, metalness in alpha", images, ColorSpace::Srgb, extra, [&] {
                      Decoded colour = decode(images[0]);
                      const Decoded occlusion = decode(images[1]);
                      if (!colour.rgba || !occlusion.rgba || colour.width != occlusion.width ||
@@ -236,6 +246,8 @@ const TextureCache::OccludedBase& TextureCache::get_occluded_base(const std::fil
                                  static_cast<size_t>(colour.width) * static_cast<size_t>(colour.height));
                      return colour;
                  }).id;
+        out.metal_in_alpha = extra < kAlphaKept;
+        out.mean_metallic = out.metal_in_alpha ? extra : extra - kAlphaKept;
     }
     return occluded_.emplace(key, out).first->second;
 }

@@ -48,12 +48,14 @@ class TextureCache {
     const Texture& get_rgba(const std::string& key, int width, int height, std::span<const std::uint8_t> rgba,
                             ColorSpace space);
 
-    // The fast path's level-surface colour map: the base colour (sRGB) times the ORM map's occlusion, with
-    // the ORM map's mean metalness, so baked surfaces need one texture lookup instead of two. id 0 when
-    // either image is missing or their sizes differ (the renderer then reads the ORM map as usual).
+    // The fast path's colour map: the base colour (sRGB) times the ORM map's occlusion, with the ORM map's
+    // metalness in alpha (when the base colour is opaque) and its mean, so a surface needs one texture
+    // lookup instead of two (level surfaces use the mean, models the alpha). id 0 when either image is
+    // missing or their sizes differ (the renderer then reads the ORM map as usual).
     struct OccludedBase {
         unsigned id = 0;
         float mean_metallic = 0.0f;
+        bool metal_in_alpha = false; // false: the base colour's own alpha was kept
     };
     const OccludedBase& get_occluded_base(const std::filesystem::path& base,
                                           const std::filesystem::path& orm);

@@ -46,7 +46,7 @@ TEST_CASE("every shader program compiles and links on this driver") {
     const int count = ks::test::check_every_program_builds();
     // pbr, fast, fast_level, fast_level_lit, shadow, particle, line, view_model_composite, contact_shadow and
     // the four fast_model programs
-    CHECK(count == 13);
+    CHECK(count == 15);
 }
 
 TEST_CASE("a broken shader reports file:line: message") {
