@@ -303,6 +303,8 @@ int run(int argc, const char* const* argv) {
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 1.0f, v.prepass_floors = true; });
     with("fast, scale 1, no rifle",
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 1.0f, v.rifle = false; });
+    with("fast, scale 1, ORM lookup",
+         [](Variant& v) { v.quality = Q::Fast, v.render_scale = 1.0f, v.occluded_base = false; });
     with("fast, scale 1, no back-face culling",
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 1.0f, v.cull_single_sided = false; });
     with("fast, scale 1, one model shader",
