@@ -31,7 +31,9 @@ TEST_CASE("editor input: an untitled level's Save offers the user levels folder,
     CHECK(st["file"] == "");
     CHECK_FALSE(std::filesystem::exists(levels));
     s.key("ctrl+s"); // untitled: the path prompt, with the user levels folder filled in
-    s.frames(3);
+    // Return goes to the prompt's field once it has the keyboard (a frame after it opens; on a slow frame
+    // an earlier Return went nowhere and nothing was saved).
+    s.wait("the path prompt taking text", [](const json& j) { return j["input"]["text_input"] == true; });
     CHECK(std::filesystem::is_directory(levels)); // made when the prompt opened
     s.key("Return");
     st = s.wait("saved", [](const json& j) { return j["file"] != ""; });
