@@ -114,7 +114,11 @@ void EditorSession::focus() {
         window_ = xdo("search --sync --onlyvisible --pid " + std::to_string(last_["pid"].get<long>()), 60);
         window_ = window_.substr(0, window_.find('\n'));
     }
-    xdo("windowfocus --sync " + window_);
+    // Only when another window has it: refocusing the focused window can send it a focus-out and focus-in
+    // that ImGui sees in different frames, and a focus loss releases every key ImGui holds.
+    std::string focused = xdo("getwindowfocus");
+    focused = focused.substr(0, focused.find('\n'));
+    if (focused != window_) xdo("windowfocus --sync " + window_);
 }
 
 void EditorSession::move_to(const json& point) {

@@ -195,8 +195,11 @@ PrivateDisplay::PrivateDisplay() {
             ::dup2(null, 2);
         }
         const std::string fd = std::to_string(fds[1]);
+        // -r: no key autorepeat. A test holds a key until a frame has seen it, which on a loaded machine
+        // can outlast the server's repeat delay: the repeats then typed into whatever took the keyboard
+        // next (Ctrl+S's "s" into the Save prompt's path, which then saved to a file named "s").
         ::execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1280x720x24", "-nolisten", "tcp",
-                 "-noreset", static_cast<char*>(nullptr));
+                 "-noreset", "-r", static_cast<char*>(nullptr));
         std::_Exit(127);
     }
     ::close(fds[1]);
