@@ -43,6 +43,16 @@ Material convert(const modelio::ImportedModel& imported, const modelio::Imported
     mat.normal_map = map(src.textures.normal, ColorSpace::Linear);
     mat.orm_map = map(src.textures.metal_rough, ColorSpace::Linear);
     mat.emissive_map = map(src.textures.emissive, ColorSpace::Srgb);
+    // The fast path's one-lookup map (base x occlusion, metalness in alpha) from texture files; a file's
+    // own images ("*N") keep the two lookups.
+    const std::string& base = src.textures.base_color;
+    const std::string& orm = src.textures.metal_rough;
+    if (mat.base_map && mat.orm_map && !mat.placeholder && base[0] != '*' && orm[0] != '*') {
+        const TextureCache::OccludedBase& packed = textures.get_occluded_base(dir / base, dir / orm);
+        mat.fast_base_map = packed.id;
+        mat.fast_metallic = packed.mean_metallic;
+        mat.fast_metal_in_alpha = packed.id != 0 && packed.metal_in_alpha;
+    }
     return mat;
 }
 

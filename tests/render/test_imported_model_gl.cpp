@@ -1,7 +1,9 @@
 // A designer's model's textures inside its file (a .glb's images, modelio::EmbeddedImage) become GL textures
 // through the texture cache: the pixels as decoded, one texture per image however many materials use it, and
-// a reference to an image the import does not hold drawn as the magenta checker, never a crash.
+// a reference to an image the import does not hold drawn as the magenta checker, never a crash. Texture files
+// beside the model give the fast path's one-lookup map (metalness in alpha) when the base colour is opaque.
 #include "gl_test_support.h"
+#include "modelio/model_writers.h"
 #include "test_support.h"
 
 #include "render/imported_model.h"
@@ -83,4 +85,41 @@ TEST_CASE("imported model: a texture inside the file is uploaded from its decode
     changed.images[0].hash = 43;
     ModelLevels again = model_levels_from_import(changed, textures, next_id);
     CHECK(again.full().materials[0].base_map != mats[0].base_map);
+}
+
+TEST_CASE("imported model: base and metal-roughness files give the fast path's one-lookup map, an opaque "
+          "base's alpha the metalness") {
+    KS_REQUIRE_GL();
+    test::ScratchDir dir;
+    // 2x1 texels: ORM (occlusion, roughness, metalness) = (255, 128, 0) and (64, 128, 200).
+    test::write_file(dir / "orm.png", test::png_bytes(2, 1, {255, 128, 0, 255, 64, 128, 200, 255}));
+    test::write_file(dir / "opaque.png", test::png_bytes(2, 1, {200, 100, 50, 255, 100, 200, 50, 255}));
+    test::write_file(dir / "clear.png", test::png_bytes(2, 1, {200, 100, 50, 255, 100, 200, 50, 90}));
+    modelio::ImportedModel m = embedded_texture_model();
+    m.path = dir / "prop.gltf";
+    m.images.clear();
+    m.materials.clear();
+    for (const char* base : {"opaque.png", "clear.png"}) {
+        modelio::ImportedMaterial mat;
+        mat.textures.base_color = base;
+        mat.textures.metal_rough = "orm.png";
+        m.materials.push_back(mat);
+    }
+    TextureCache textures(disk_cache::Store({}));
+    int next_id = 1;
+    ModelLevels levels = model_levels_from_import(m, textures, next_id);
+    const std::vector<Material>& mats = levels.full().materials;
+    REQUIRE(mats.size() == 2);
+    REQUIRE(mats[0].fast_base_map != 0);
+    CHECK(mats[0].fast_metal_in_alpha);
+    CHECK(mats[0].fast_metallic == doctest::Approx(100.0 / 255.0).epsilon(1e-4));
+    std::vector<unsigned char> back(8, 7);
+    glBindTexture(GL_TEXTURE_2D, mats[0].fast_base_map);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, back.data());
+    CHECK(back[3] == 0);   // the first texel's metalness
+    CHECK(back[7] == 200); // the second's
+    CHECK(back[4] == 50);  // 100 x sqrt(64 / 255): occlusion in the colour (gamma 2)
+    // A base colour with an alpha of its own keeps it: the model reads its ORM map as before.
+    CHECK_FALSE(mats[1].fast_metal_in_alpha);
 }
