@@ -1,6 +1,7 @@
 #include "modelio/model_import.h"
 
 #include "modelio/embedded_textures.h"
+#include "modelio/fbx_connections.h"
 #include "modelio/glb_container.h"
 #include "modelio/scene_conventions.h"
 
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <system_error>
 #include <utility>
 
@@ -171,6 +173,11 @@ Result<ImportedModel> import_model(const std::filesystem::path& path, const Impo
     if (Result<void> file = check_file(path, limits); !file) return file.error();
     if (lower(path.extension().string()) == ".glb")
         if (Result<void> container = check_glb_container(path); !container) return container.error();
+    if (lower(path.extension().string()) == ".fbx") {
+        std::ifstream in(path, std::ios::binary);
+        const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        if (Result<void> links = check_fbx_connections(text, path); !links) return links.error();
+    }
     Assimp::Importer importer;
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
     // Read first, count, then post-process: a file with millions of faces is refused before any work on them.
