@@ -1,6 +1,7 @@
 #include "modelio/model_import.h"
 
 #include "modelio/embedded_textures.h"
+#include "modelio/assimp_material.h"
 #include "modelio/fbx_connections.h"
 #include "modelio/glb_container.h"
 #include "modelio/scene_conventions.h"
@@ -206,7 +207,7 @@ Result<ImportedModel> import_model(const std::filesystem::path& path, const Impo
     model.unit_scale = basis->unit_scale;
     model.axes = basis->axes;
     for (unsigned i = 0; i < scene->mNumMaterials; ++i)
-        model.materials.push_back(convert_material(*scene->mMaterials[i]));
+        model.materials.push_back(read_material(*scene->mMaterials[i]));
     if (model.materials.empty()) model.materials.emplace_back();
     if (Result<void> embedded = load_embedded_textures(*scene, model, limits); !embedded)
         return embedded.error();

@@ -1,12 +1,11 @@
 #pragma once
 // What an assimp scene says about itself, turned into the level's terms: the file's units and axes as one
-// matrix into level units with +Y up, and its materials. Internal to modelio (model_import.cpp uses it).
+// matrix into level units with +Y up. Internal to modelio (model_import.cpp uses it).
 #include "modelio/model_import.h"
 
 #include <filesystem>
 
 struct aiScene;
-struct aiMaterial;
 
 namespace ks::modelio {
 
@@ -22,7 +21,5 @@ struct SceneBasis {
 // UnitScaleFactor in centimetres per file unit), which assimp passes on as scene metadata but does not apply.
 // An FBX whose axes are not three distinct ones is an Error.
 Result<SceneBasis> scene_basis(const aiScene& scene, const std::filesystem::path& path);
-
-ImportedMaterial convert_material(const aiMaterial& material);
 
 } // namespace ks::modelio

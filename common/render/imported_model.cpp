@@ -1,6 +1,7 @@
 #include "render/imported_model.h"
 
 #include "modelio/model_lod.h"
+#include "render/model_material.h"
 #include "render/texture_cache.h"
 
 #include <cstdlib>
@@ -25,35 +26,11 @@ const Texture& embedded(const modelio::ImportedModel& imported, const std::strin
 Material convert(const modelio::ImportedModel& imported, const modelio::ImportedMaterial& src,
                  TextureCache& textures) {
     const std::filesystem::path dir = imported.path.parent_path();
-    Material mat;
-    mat.name = src.name;
-    mat.base_factor = src.base_color;
-    mat.emissive_factor = src.emissive;
-    mat.metallic = src.metallic;
-    mat.roughness = src.roughness;
-    mat.double_sided = src.double_sided;
-    auto map = [&](const std::string& file, ColorSpace space) -> unsigned {
-        if (file.empty()) return 0u;
-        const Texture& t =
-            file[0] == '*' ? embedded(imported, file, space, textures) : textures.get(dir / file, space);
-        if (t.placeholder) mat.placeholder = true;
-        return t.id;
-    };
-    mat.base_map = map(src.textures.base_color, ColorSpace::Srgb);
-    mat.normal_map = map(src.textures.normal, ColorSpace::Linear);
-    mat.orm_map = map(src.textures.metal_rough, ColorSpace::Linear);
-    mat.emissive_map = map(src.textures.emissive, ColorSpace::Srgb);
-    // The fast path's one-lookup map (base x occlusion, metalness in alpha) from texture files; a file's
-    // own images ("*N") keep the two lookups.
-    const std::string& base = src.textures.base_color;
-    const std::string& orm = src.textures.metal_rough;
-    if (mat.base_map && mat.orm_map && !mat.placeholder && base[0] != '*' && orm[0] != '*') {
-        const TextureCache::OccludedBase& packed = textures.get_occluded_base(dir / base, dir / orm);
-        mat.fast_base_map = packed.id;
-        mat.fast_metallic = packed.mean_metallic;
-        mat.fast_metal_in_alpha = packed.id != 0 && packed.metal_in_alpha;
-    }
-    return mat;
+    return make_model_material(src, dir, textures,
+                               [&](const std::string& name, ColorSpace space) -> const Texture& {
+                                   return name[0] == '*' ? embedded(imported, name, space, textures)
+                                                         : textures.get(dir / name, space);
+                               });
 }
 
 // Per-vertex tangents from each triangle's UV directions (normal maps need them), made orthogonal to the

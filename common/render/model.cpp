@@ -1,10 +1,11 @@
 #include "render/model.h"
 
 #include "core/log.h"
+#include "modelio/assimp_material.h"
+#include "render/model_material.h"
 #include "render/scene.h"
 #include "render/texture_cache.h"
 
-#include <assimp/GltfMaterial.h>
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -72,54 +73,10 @@ Mat4 to_mat4(const aiMatrix4x4& m) {
 }
 
 Material convert_material(const aiMaterial* src, const std::filesystem::path& dir, TextureCache& textures) {
-    Material mat;
-    aiString name;
-    if (src->Get(AI_MATKEY_NAME, name) == AI_SUCCESS) mat.name = name.C_Str();
-    aiColor4D base(1, 1, 1, 1);
-    if (src->Get(AI_MATKEY_BASE_COLOR, base) == AI_SUCCESS ||
-        src->Get(AI_MATKEY_COLOR_DIFFUSE, base) == AI_SUCCESS)
-        mat.base_factor = Vec4(base.r, base.g, base.b, base.a);
-    aiColor3D emissive(0, 0, 0);
-    if (src->Get(AI_MATKEY_COLOR_EMISSIVE, emissive) == AI_SUCCESS)
-        mat.emissive_factor = Vec3(emissive.r, emissive.g, emissive.b);
-    float strength = 1.0f;
-    if (src->Get(AI_MATKEY_EMISSIVE_INTENSITY, strength) == AI_SUCCESS) mat.emissive_factor *= strength;
-    float f = 0;
-    if (src->Get(AI_MATKEY_METALLIC_FACTOR, f) == AI_SUCCESS) mat.metallic = f;
-    if (src->Get(AI_MATKEY_ROUGHNESS_FACTOR, f) == AI_SUCCESS) mat.roughness = f;
-    int two_sided = 1; // absent (OBJ): both sides, the safe reading
-    if (src->Get(AI_MATKEY_TWOSIDED, two_sided) == AI_SUCCESS) mat.double_sided = two_sided != 0;
-
-    // The file a map comes from (empty: none), and the map loaded from it.
-    auto file_of = [&](std::initializer_list<aiTextureType> types) -> std::filesystem::path {
-        for (aiTextureType type : types) {
-            aiString file;
-            if (src->GetTextureCount(type) > 0 && src->GetTexture(type, 0, &file) == AI_SUCCESS)
-                return dir / file.C_Str();
-        }
-        return {};
-    };
-    auto map = [&](const std::filesystem::path& file, ColorSpace space) -> unsigned {
-        if (file.empty()) return 0;
-        const Texture& t = textures.get(file, space);
-        if (t.placeholder) mat.placeholder = true;
-        return t.id;
-    };
-    const auto base_file = file_of({aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE});
-    const auto orm_file =
-        file_of({aiTextureType_UNKNOWN, aiTextureType_METALNESS, aiTextureType_DIFFUSE_ROUGHNESS});
-    mat.base_map = map(base_file, ColorSpace::Srgb);
-    mat.normal_map = map(file_of({aiTextureType_NORMALS}), ColorSpace::Linear);
-    mat.orm_map = map(orm_file, ColorSpace::Linear);
-    mat.emissive_map = map(file_of({aiTextureType_EMISSIVE}), ColorSpace::Srgb);
-    // The fast path's one-lookup map: base x occlusion, metalness in alpha (when the base is opaque).
-    if (mat.base_map && mat.orm_map && !mat.placeholder) {
-        const TextureCache::OccludedBase& packed = textures.get_occluded_base(base_file, orm_file);
-        mat.fast_base_map = packed.id;
-        mat.fast_metallic = packed.mean_metallic;
-        mat.fast_metal_in_alpha = packed.id != 0 && packed.metal_in_alpha;
-    }
-    return mat;
+    return make_model_material(modelio::read_material(*src), dir, textures,
+                               [&](const std::string& name, ColorSpace space) -> const Texture& {
+                                   return textures.get(dir / name, space);
+                               });
 }
 } // namespace
 
