@@ -1,5 +1,7 @@
 #include "render/gpu_mesh.h"
 
+#include "brush/convex_hull.h"
+
 #include <epoxy/gl.h>
 
 #include <cstddef>
@@ -7,7 +9,8 @@
 namespace ks::render {
 
 GpuMesh::GpuMesh(const MeshData& data)
-    : index_count_(static_cast<int>(data.indices.size())), bounds_(data.bounds()) {
+    : index_count_(static_cast<int>(data.indices.size())),
+      vertex_count_(static_cast<int>(data.vertices.size())), bounds_(data.bounds()) {
     glGenVertexArrays(1, &vao_);
     glGenBuffers(1, &vbo_);
     glGenBuffers(1, &ebo_);
@@ -40,6 +43,29 @@ GpuMesh::~GpuMesh() {
     if (vao_) glDeleteVertexArrays(1, &vao_);
     if (vbo_) glDeleteBuffers(1, &vbo_);
     if (ebo_) glDeleteBuffers(1, &ebo_);
+}
+
+const std::vector<Vec3>& GpuMesh::hull_corners() const {
+    if (!hull_corners_.empty()) return hull_corners_;
+    std::vector<Vertex> vertices(static_cast<std::size_t>(vertex_count_));
+    if (vbo_ && !vertices.empty()) {
+        glBindBuffer(GL_COPY_READ_BUFFER, vbo_);
+        glGetBufferSubData(GL_COPY_READ_BUFFER, 0, static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)),
+                           vertices.data());
+        glBindBuffer(GL_COPY_READ_BUFFER, 0);
+    }
+    std::vector<DVec3> points;
+    points.reserve(vertices.size());
+    for (const Vertex& v : vertices) points.push_back(exact_double(v.position));
+    if (auto hull = brush::convex_hull_measure(points); hull)
+        for (int corner : hull->corners)
+            hull_corners_.push_back(vertices[static_cast<std::size_t>(corner)].position);
+    if (hull_corners_.empty() && bounds_.valid())
+        for (int corner = 0; corner < 8; ++corner)
+            hull_corners_.push_back(Vec3((corner & 1) ? bounds_.max.x : bounds_.min.x,
+                                         (corner & 2) ? bounds_.max.y : bounds_.min.y,
+                                         (corner & 4) ? bounds_.max.z : bounds_.min.z));
+    return hull_corners_;
 }
 
 void GpuMesh::bind_instances(unsigned instance_buffer, std::size_t byte_offset) const {

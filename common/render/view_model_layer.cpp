@@ -12,17 +12,15 @@ namespace ks::render {
 
 void view_model_footprint(const std::vector<MeshInstance>& instances, const Mat4& projection, int width,
                           int height, ScreenFootprint& out) {
-    constexpr float kRim = 1.5f; // pixels around each corner: the edge filter reads one pixel around
+    constexpr float kRim = 1.5f; // pixels around the outline: the edge filter reads one pixel around
     out.rect = {};
     out.hull.clear();
     float lo_x = 1e30f, lo_y = 1e30f, hi_x = -1e30f, hi_y = -1e30f;
     for (const MeshInstance& inst : instances) {
         if (!inst.mesh) continue;
-        const geometry::Aabb& b = inst.mesh->bounds();
-        for (int corner = 0; corner < 8; ++corner) {
-            const Vec3 local((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
-                             (corner & 4) ? b.max.z : b.min.z);
-            const Vec4 clip = projection * (inst.world * Vec4(local, 1.0f));
+        const Mat4 to_clip = projection * inst.world;
+        for (const Vec3& corner : inst.mesh->hull_corners()) {
+            const Vec4 clip = to_clip * Vec4(corner, 1.0f);
             // A corner behind the eye projects nowhere useful: the whole target may be covered.
             if (clip.w <= 1e-4f) {
                 out.rect = PixelRect{0, 0, width, height};
@@ -35,8 +33,7 @@ void view_model_footprint(const std::vector<MeshInstance>& instances, const Mat4
             lo_y = std::min(lo_y, y);
             hi_x = std::max(hi_x, x);
             hi_y = std::max(hi_y, y);
-            for (float dx : {-kRim, kRim})
-                for (float dy : {-kRim, kRim}) out.hull.push_back(Vec2(x + dx, y + dy));
+            out.hull.push_back(Vec2(x, y));
         }
     }
     if (lo_x > hi_x) {
@@ -48,6 +45,18 @@ void view_model_footprint(const std::vector<MeshInstance>& instances, const Mat4
     const int x1 = std::clamp(static_cast<int>(std::ceil(hi_x + kRim)), 0, width);
     const int y1 = std::clamp(static_cast<int>(std::ceil(hi_y + kRim)), 0, height);
     out.rect = PixelRect{x0, y0, x1 - x0, y1 - y0};
+    // The outline widened by the rim: the hull of each outline corner's rim square (the hull of a sum of
+    // convex sets is the sum of their hulls), in place from the back.
+    geometry::convex_hull_2d(out.hull);
+    const std::size_t n = out.hull.size();
+    out.hull.resize(4 * n);
+    for (std::size_t i = n; i-- > 0;) {
+        const Vec2 p = out.hull[i];
+        out.hull[4 * i + 0] = p + Vec2(-kRim, -kRim);
+        out.hull[4 * i + 1] = p + Vec2(kRim, -kRim);
+        out.hull[4 * i + 2] = p + Vec2(kRim, kRim);
+        out.hull[4 * i + 3] = p + Vec2(-kRim, kRim);
+    }
     geometry::convex_hull_2d(out.hull);
     if (out.hull.size() >= 3)
         geometry::clip_convex_polygon(out.hull, Vec2(static_cast<float>(x0), static_cast<float>(y0)),

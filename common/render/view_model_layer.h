@@ -21,12 +21,12 @@ struct PixelRect {
 };
 
 // The pixels that `instances` (camera-space placements) can cover under `projection` in a width x height
-// target: their mesh bounds' corners projected, widened by a pixel and a half for the antialiased rim. The
-// rectangle is clipped to the target (empty when nothing lies in front of the camera); the hull is the
-// corners' convex hull cut to that rectangle (window coordinates, counter-clockwise), empty when a corner
-// lies behind the eye
-// (then the rectangle is all there is). The rifle's hull is about four fifths of its rectangle: the composite
-// draws the hull.
+// target: the corners of each mesh's convex hull (GpuMesh::hull_corners) projected, widened by a pixel and a
+// half for the antialiased rim. The rectangle is clipped to the target (empty when nothing lies in front of
+// the camera); the hull is the projected corners' convex hull, widened, cut to that rectangle (window
+// coordinates, counter-clockwise), empty when a corner lies behind the eye (then the rectangle is all there
+// is). The composite draws the hull: for the rifle about three fifths of its rectangle (its bounding box's
+// corners gave four fifths).
 struct ScreenFootprint {
     PixelRect rect;
     std::vector<Vec2> hull;

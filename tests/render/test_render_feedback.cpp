@@ -201,7 +201,7 @@ TEST_CASE("the first-person rifle is lit and orange, not a near-black silhouette
     MESSAGE("composite footprint: hull " << hull_area << " px, rectangle " << rect_area << " px");
     CHECK(where.hull.size() >= 3);
     CHECK(hull_area > static_cast<double>(rifle_pixels));
-    CHECK(hull_area < 0.9 * rect_area); // measured: 0.81
+    CHECK(hull_area < 0.7 * rect_area); // measured: 0.81 with the bounds' corners, 0.59 with the mesh's hull
     // A part behind the eye: no hull, the whole target.
     std::vector<MeshInstance> behind = rifle.instances;
     behind.front().world = glm::translate(Mat4(1.0f), Vec3(0.0f, 0.0f, 5.0f)) * behind.front().world;
