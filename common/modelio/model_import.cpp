@@ -2,7 +2,7 @@
 
 #include "modelio/embedded_textures.h"
 #include "modelio/assimp_material.h"
-#include "modelio/fbx_connections.h"
+#include "modelio/fbx_checks.h"
 #include "modelio/glb_container.h"
 #include "modelio/scene_conventions.h"
 
@@ -177,7 +177,7 @@ Result<ImportedModel> import_model(const std::filesystem::path& path, const Impo
     if (lower(path.extension().string()) == ".fbx") {
         std::ifstream in(path, std::ios::binary);
         const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-        if (Result<void> links = check_fbx_connections(text, path); !links) return links.error();
+        if (Result<void> links = check_fbx_file(text, path); !links) return links.error();
     }
     Assimp::Importer importer;
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);

@@ -26,13 +26,13 @@ struct FbxLinks {
     bool binary = false;
 };
 
-// The links of an ASCII or binary FBX file. What cannot be read (a malformed line, a record whose lengths
-// leave the file) is skipped or ends the reading: the file's structure is assimp's to judge, and it refuses
-// what it cannot tokenise before it converts anything.
+// The links of an ASCII or binary FBX file. A malformed line is skipped; in a binary file, the links before
+// the first damaged record (check_fbx_file refuses the file).
 FbxLinks read_fbx_links(std::string_view file);
 
-// Refuses a cycle of object-to-object or object-to-property links, naming the file, the line (ASCII) or
-// byte (binary) of the link that closes it and the objects on it.
-Result<void> check_fbx_connections(std::string_view file, const std::filesystem::path& path);
+// What assimp's FBX reader would crash on, refused with the file and the line (ASCII) or byte (binary): a
+// binary file's damaged records (fbx_records.h), scopes nested more than kMaxFbxNesting deep, and a cycle of
+// object-to-object or object-to-property links (naming the link that closes it and its objects).
+Result<void> check_fbx_file(std::string_view file, const std::filesystem::path& path);
 
 } // namespace ks::modelio

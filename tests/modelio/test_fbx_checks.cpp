@@ -1,6 +1,7 @@
-// An FBX file's connection cycles refused before assimp reads it (modelio/fbx_connections.h), ASCII and
+// An FBX file's connection cycles refused before assimp reads it (modelio/fbx_checks.h), ASCII and
 // binary: assimp's FBX converter follows them by recursion until the stack overflows (a fuzz finding).
-#include "modelio/fbx_connections.h"
+#include "modelio/fbx_checks.h"
+#include "modelio/fbx_records.h"
 #include "modelio/model_import.h"
 #include "modelio/model_writers.h"
 #include "test_support.h"
@@ -29,9 +30,9 @@ std::string with_connections(const std::string& links) {
 
 TEST_CASE("fbx connections: a loop of links is refused with the file and the line, anything else passes") {
     const std::filesystem::path file = "props/crate.fbx";
-    CHECK(modelio::check_fbx_connections(with_connections("\tC: \"OO\",2,0\n\tC: \"OO\",3,2\n"), file).ok());
+    CHECK(modelio::check_fbx_file(with_connections("\tC: \"OO\",2,0\n\tC: \"OO\",3,2\n"), file).ok());
     // Two children of one parent, a property link, a diamond: no loop.
-    CHECK(modelio::check_fbx_connections(
+    CHECK(modelio::check_fbx_file(
               with_connections("\tC: \"OO\",2,0\n\tC: \"OO\",3,0\n\tC: \"OP\",4,2, \"DiffuseColor\"\n"
                                "\tC: \"OO\",5,3\n\tC: \"OO\",5,2\n"),
               file)
@@ -40,7 +41,7 @@ TEST_CASE("fbx connections: a loop of links is refused with the file and the lin
                                     std::string("\tC: \"OO\",2,3\n\tC: \"OO\",3,4\n\tC: \"OO\",4,2\n"),
                                     std::string("\tC: \"OP\",7,8, \"X\"\n\tC:\"OO\",8,7\n")}) {
         CAPTURE(loop);
-        auto r = modelio::check_fbx_connections(with_connections(loop), file);
+        auto r = modelio::check_fbx_file(with_connections(loop), file);
         REQUIRE_FALSE(r.ok());
         const std::string message = r.error().str();
         CHECK(message.find("props/crate.fbx") != std::string::npos);
@@ -48,21 +49,23 @@ TEST_CASE("fbx connections: a loop of links is refused with the file and the lin
         CHECK(message.find("line ") != std::string::npos);
     }
     // Huge ids, and a chain of 200 000 links (no recursion here either).
-    CHECK(modelio::check_fbx_connections(
-              with_connections("\tC: \"OO\",9223372036854775807,-9223372036854775807\n"), file)
+    CHECK(modelio::check_fbx_file(with_connections("\tC: \"OO\",9223372036854775807,-9223372036854775807\n"),
+                                  file)
               .ok());
     std::string chain;
     for (int i = 1; i <= 200000; ++i)
         chain += "\tC: \"OO\"," + std::to_string(i) + "," + std::to_string(i - 1) + "\n";
-    CHECK(modelio::check_fbx_connections(with_connections(chain), file).ok());
+    CHECK(modelio::check_fbx_file(with_connections(chain), file).ok());
     chain += "\tC: \"OO\",0,200000\n";
-    CHECK_FALSE(modelio::check_fbx_connections(with_connections(chain), file).ok());
-    // Text after a binary file's magic is not read as ASCII; malformed link lines are not links.
-    CHECK(modelio::check_fbx_connections(std::string("Kaydara FBX Binary  \0\x1a\0", 23) + "C: \"OO\",2,2",
-                                         file)
-              .ok());
-    CHECK(modelio::check_fbx_connections(with_connections("\tC: \"OO\",x,2\n\tC: \"OO\"\n\tC: \"QQ\",2,2\n"),
-                                         file)
+    CHECK_FALSE(modelio::check_fbx_file(with_connections(chain), file).ok());
+    // Text after a binary file's magic is not read as ASCII (it is a damaged binary file); malformed link
+    // lines are not links.
+    auto text_as_binary =
+        modelio::check_fbx_file(std::string("Kaydara FBX Binary  \0\x1a\0", 23) + "C: \"OO\",2,2", file);
+    REQUIRE_FALSE(text_as_binary.ok());
+    CHECK(text_as_binary.error().str().find("closes a loop") == std::string::npos);
+    CHECK(text_as_binary.error().str().find("damaged") != std::string::npos);
+    CHECK(modelio::check_fbx_file(with_connections("\tC: \"OO\",x,2\n\tC: \"OO\"\n\tC: \"QQ\",2,2\n"), file)
               .ok());
 }
 
@@ -88,6 +91,10 @@ struct Node {
 
 void put(std::string& out, std::uint64_t value, size_t bytes) {
     for (size_t i = 0; i < bytes; ++i) out += static_cast<char>((value >> (8 * i)) & 0xff);
+}
+
+void put_at(std::string& out, size_t at, std::uint64_t value, size_t bytes) {
+    for (size_t i = 0; i < bytes; ++i) out[at + i] = static_cast<char>((value >> (8 * i)) & 0xff);
 }
 
 std::string string_property(const std::string& s) {
@@ -218,7 +225,7 @@ TEST_CASE("fbx connections: a binary file's links are read through its records, 
         CHECK(read.links[1].child == 3);
         CHECK(read.links[1].parent == 2);
         for (const modelio::FbxLink& l : read.links) CHECK(scene.substr(l.place + 3 * word, 2) == "\1C");
-        CHECK(modelio::check_fbx_connections(scene, file).ok());
+        CHECK(modelio::check_fbx_file(scene, file).ok());
 
         for (const std::vector<Node>& loop :
              {std::vector<Node>{link("OO", 2, 0), link("OO", 5, 5)},
@@ -226,7 +233,7 @@ TEST_CASE("fbx connections: a binary file's links are read through its records, 
               std::vector<Node>{link("OO", -1, std::numeric_limits<std::int64_t>::min()),
                                 link("OP", std::numeric_limits<std::int64_t>::min(), -1)}}) {
             const std::string looped = binary_scene(loop, version);
-            auto r = modelio::check_fbx_connections(looped, file);
+            auto r = modelio::check_fbx_file(looped, file);
             REQUIRE_FALSE(r.ok());
             const std::string message = r.error().str();
             CHECK(message.find("props/crate.fbx") != std::string::npos);
@@ -260,7 +267,7 @@ TEST_CASE(
                 broken[i] = c;
                 const auto read = modelio::read_fbx_links(broken);
                 CHECK(read.links.size() <= 3); // a string id made a long one may read as a link
-                (void)modelio::check_fbx_connections(broken, "broken.fbx");
+                (void)modelio::check_fbx_file(broken, "broken.fbx");
             }
     }
 }
@@ -286,19 +293,100 @@ TEST_CASE("fbx connections: a binary model with a self-linked object is refused 
           std::string::npos);
 }
 
-TEST_CASE("fbx connections: assimp's own binary export is read whole") {
-    // assimp 5.2.5 cannot read back the binary FBX its exporter writes (its tokenizer refuses a record's end
-    // offset), so only the links are checked here: the reader walks a real exporter's records.
+TEST_CASE("fbx checks: assimp's own binary export is refused where assimp's reader refuses it") {
+    // assimp 5.2.5 cannot read back the binary FBX its exporter writes: a record's end offset leaves its
+    // parent's children. The walk finds the same record; the links before it are read.
     test::ScratchDir dir;
     const auto gltf = test::write_gltf_cube(dir.path(), "cube");
     const auto fbx = dir / "cube.fbx";
     REQUIRE(test::convert_with_assimp(gltf, fbx, "fbx"));
     const std::string file = read_all(fbx);
-    const modelio::FbxLinks read = modelio::read_fbx_links(file);
-    REQUIRE(read.binary);
-    REQUIRE(read.links.size() >= 3); // the geometry and the material to the model, the model to the root
-    bool root = false;
-    for (const modelio::FbxLink& l : read.links) root = root || l.parent == 0;
-    CHECK(root);
-    CHECK(modelio::check_fbx_connections(file, fbx).ok());
+    REQUIRE(modelio::read_fbx_links(file).binary);
+    auto checked = modelio::check_fbx_file(file, fbx);
+    REQUIRE_FALSE(checked.ok());
+    MESSAGE(checked.error().str());
+    auto imported = modelio::import_model(fbx, modelio::ImportLimits{});
+    REQUIRE_FALSE(imported.ok());
+    CHECK(imported.error().str() == checked.error().str());
+}
+
+TEST_CASE("fbx checks: damaged binary records are refused with their byte, before assimp can abort on them") {
+    test::ScratchDir dir;
+    const std::string good = binary_triangle(false);
+    REQUIRE(modelio::check_fbx_file(good, "good.fbx").ok());
+    // The records of the triangle: the header extension's first child is "FBXHeaderVersion".
+    const size_t header_version =
+        good.find("FBXHeaderVersion") - 25; // 7.5: three 8-byte words, a length byte
+    const auto refused_with = [&](std::string bytes, const std::string& what) {
+        CAPTURE(what);
+        auto r = modelio::check_fbx_file(bytes, "damaged.fbx");
+        REQUIRE_FALSE(r.ok());
+        CHECK(r.error().str().find(what) != std::string::npos);
+        CHECK(r.error().str().find("damaged.fbx") != std::string::npos);
+        // And the import refuses it without crashing (assimp never sees it).
+        const auto file = test::write_file(dir / "damaged.fbx", bytes);
+        CHECK_FALSE(modelio::import_model(file, modelio::ImportLimits{}).ok());
+    };
+    // The fuzz finding: a property length near 2^64, which wrapped assimp's pointer (an assertion aborted).
+    std::string wrapped = good;
+    put_at(wrapped, header_version + 16, 0xfffffff700000005ull, 8);
+    refused_with(wrapped,
+                 "byte " + std::to_string(header_version) +
+                     ": the record \"FBXHeaderVersion\" says its properties take 18446744035054845957 bytes");
+    // A record that ends past its parent's children, or before it begins.
+    std::string past = good;
+    put_at(past, header_version, good.size() + 100, 8);
+    refused_with(past, "past the children of \"FBXHeaderExtension\"");
+    std::string before = good;
+    put_at(before, header_version, 3, 8);
+    refused_with(before, "before it begins");
+    // An unknown property type, a name with a NUL, a null record that is not zeros.
+    std::string type = good;
+    type[good.find("FBXHeaderVersion") + 16] = 'Q';
+    refused_with(type, "unknown property type code 81");
+    std::string name = good;
+    name[good.find("FBXHeaderVersion") + 3] = '\0';
+    refused_with(name, "NUL");
+    const size_t vertices = good.find("Vertices");
+    std::string array_size = good;
+    put_at(array_size, vertices + 9, 0x40000001u, 4); // 9 doubles claimed 2^30 + 1: 8 GiB, wraps in 32 bits
+    refused_with(array_size, "larger than 4 GiB");
+    std::string array_bytes = good;
+    put_at(array_bytes, vertices + 9, 8u, 4); // 8 doubles in 72 bytes
+    refused_with(array_bytes, "an array of 8 elements says it takes 72 bytes");
+    std::string sentinel = good;
+    sentinel[good.find("Connections") - 26] = '\x01'; // the last byte of the Objects record's null record
+    refused_with(sentinel, "not all zeros");
+    std::string cut = good.substr(0, good.size() / 2);
+    refused_with(cut, "past the end of the file");
+}
+
+TEST_CASE("fbx checks: records and scopes nested deeper than assimp should recurse are refused") {
+    for (std::uint32_t version : {7400u, 7500u}) {
+        CAPTURE(version);
+        const auto nested = [&](size_t depth) {
+            Node inner{"P", int_property(1), 1, {}};
+            for (size_t i = 1; i < depth; ++i) {
+                Node outer{"N", "", 0, {}};
+                outer.children.push_back(std::move(inner));
+                inner = std::move(outer);
+            }
+            return binary_fbx({inner}, version);
+        };
+        CHECK(modelio::check_fbx_file(nested(modelio::kMaxFbxNesting), "deep.fbx").ok());
+        auto r = modelio::check_fbx_file(nested(modelio::kMaxFbxNesting + 1), "deep.fbx");
+        REQUIRE_FALSE(r.ok());
+        CHECK(r.error().str().find("nested more than 64 deep") != std::string::npos);
+        CHECK_FALSE(modelio::check_fbx_file(nested(2000), "deep.fbx").ok());
+    }
+    const auto ascii = [](size_t depth) {
+        std::string text = "; a comment { { {\nA: \"{{{\" ";
+        for (size_t i = 0; i < depth; ++i) text += "N: {\n";
+        for (size_t i = 0; i < depth; ++i) text += "}\n";
+        return text;
+    };
+    CHECK(modelio::check_fbx_file(ascii(modelio::kMaxFbxNesting - 1), "deep.fbx").ok());
+    auto r = modelio::check_fbx_file(ascii(200000), "deep.fbx");
+    REQUIRE_FALSE(r.ok());
+    CHECK(r.error().str().find("line 65: scopes are nested more than 64 deep") != std::string::npos);
 }
