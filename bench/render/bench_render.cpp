@@ -62,6 +62,7 @@ struct Variant {
     bool prepass_floors = false;   // !RendererSettings::prepass_skips_floors
     bool rifle = true;             // the first-person rifle drawn
     bool cull_single_sided = true; // RendererSettings::cull_single_sided
+    bool view_model_mask = true;   // RendererSettings::view_model_depth_mask
 };
 
 struct Measurement {
@@ -118,6 +119,7 @@ void measure(Measurement& m, shell::OffscreenContext& ctx, render::AssetLibrary&
     if (const char* dir = std::getenv("KS_SHADER_DIR"); dir && *dir) settings.shader_dir = dir;
     settings.prepass_skips_floors = !v.prepass_floors;
     settings.cull_single_sided = v.cull_single_sided;
+    settings.view_model_depth_mask = v.view_model_mask;
     scene.set_doors_occlude(v.doors_occlude);
     scene.set_model_lods(v.model_lods);
     const float default_anisotropy = assets.textures().max_anisotropy();
@@ -316,6 +318,8 @@ int run(int argc, const char* const* argv) {
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.view_model_msaa = 0; });
     with("fast, scale 1, aliased rifle",
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 1.0f, v.view_model_msaa = 0; });
+    with("fast, scale 1, scene under the rifle",
+         [](Variant& v) { v.quality = Q::Fast, v.render_scale = 1.0f, v.view_model_mask = false; });
     with("fast, scale 0.5, rifle msaa 4x",
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.view_model_msaa = 4; });
     with("fast, scale 0.5, no contact shadows",

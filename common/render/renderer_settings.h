@@ -26,6 +26,11 @@ struct RendererSettings {
     // llvmpipe); 2/4/8: multisampled; 0: drawn into the scene's target, aliased
     // (KS_VIEW_MODEL_MSAA=0|1|2|4|8).
     int view_model_msaa = 1;
+    // When the scene is drawn at the target's size without MSAA, the view model's layer is drawn first and
+    // its opaque pixels go into the scene's depth buffer at the near plane (ViewModelLayer::
+    // write_depth_mask): the scene is not shaded under what the composite covers. Off: the scene is drawn
+    // everywhere and the layer over it (the bench's "scene under the rifle" row).
+    bool view_model_depth_mask = true;
     // Back faces of single-sided materials (Material::double_sided false: glTF's default, every generated
     // model) culled in the shaded passes; off: every face drawn (the bench's "no back-face culling" row and
     // the test that culling hides nothing).

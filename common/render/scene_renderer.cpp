@@ -96,10 +96,12 @@ Result<void> SceneRenderer::init() {
         if (auto r = shaders_->add(*files, *target, units); !r) return r.error();
     for (int i = 0; i < kFastModelPrograms; ++i)
         if (auto r = shaders_->add(fast_model_program(i), fast_model_[i], pbr_units); !r) return r.error();
-    if (auto r = shaders_->add(view_model_composite_program(), view_model_layer_.program(),
-                               [](ShaderProgram& p) { glUniform1i(p.location("u_layer"), 0); });
-        !r)
-        return r.error();
+    for (auto [files, program] : {std::pair{&view_model_composite_program(), &view_model_layer_.program()},
+                                  std::pair{&view_model_mask_program(), &view_model_layer_.mask_program()}})
+        if (auto r = shaders_->add(*files, *program,
+                                   [](ShaderProgram& p) { glUniform1i(p.location("u_layer"), 0); });
+            !r)
+            return r.error();
 
     glGenBuffers(1, &instance_buffer_);
 
@@ -247,25 +249,24 @@ void SceneRenderer::draw_view_model(const SceneFrame& frame, FrameStats& stats) 
     view_world_.clear();
 }
 
-void SceneRenderer::draw_view_model_layer(const SceneFrame& frame, FrameStats& stats, unsigned target_fbo) {
+SceneRenderer::LayerState SceneRenderer::draw_view_model_into_layer(const SceneFrame& frame,
+                                                                    FrameStats& stats) {
     ScreenFootprint& where = view_model_footprint_;
     view_model_footprint(frame.view_model->instances, view_model_camera(frame).projection(), frame.width,
                          frame.height, where);
-    const PixelRect& rect = where.rect;
-    if (rect.empty()) return;
-    if (auto begun = view_model_layer_.begin(frame.width, frame.height, settings_.view_model_msaa, rect);
+    if (where.rect.empty()) return LayerState::Empty;
+    if (auto begun =
+            view_model_layer_.begin(frame.width, frame.height, settings_.view_model_msaa, where.rect);
         !begun) {
         log::warn("view model MSAA ", settings_.view_model_msaa, "x layer unsupported (",
                   begun.error().message, "); drawing it without antialiasing");
         settings_.view_model_msaa = 0;
         glDisable(GL_SCISSOR_TEST);
-        glBindFramebuffer(GL_FRAMEBUFFER, target_fbo);
-        glViewport(0, 0, frame.width, frame.height);
-        draw_view_model(frame, stats);
-        return;
+        return LayerState::Unsupported;
     }
     draw_view_model(frame, stats);
-    view_model_layer_.composite(target_fbo, where);
+    glDisable(GL_SCISSOR_TEST); // begin left it on the footprint for the view model's draws
+    return LayerState::Drawn;
 }
 
 FrameStats SceneRenderer::render(const SceneFrame& frame) {
@@ -290,11 +291,24 @@ FrameStats SceneRenderer::render(const SceneFrame& frame) {
     stats.internal_height = internal_height_;
     stats.fast_path = fast_;
     render_shadows(frame, stats);
+    // The view model: in the scene's target when that is multisampled at full size, else in its own
+    // antialiased layer composited over the finished scene. At the target's size without MSAA the layer is
+    // drawn first and its opaque pixels masked in the scene's depth, so the scene is not shaded under it.
+    const bool view_model = frame.view_model && !frame.view_model->instances.empty();
+    const bool view_model_layer =
+        view_model && settings_.view_model_msaa > 0 && (settings_.msaa_samples == 0 || scaled);
+    const bool layer_first =
+        view_model_layer && !scaled && settings_.msaa_samples == 0 && settings_.view_model_depth_mask;
+    if (frame.instances) pick_lights(frame, stats);
+    LayerState layer = LayerState::Empty;
+    if (layer_first) layer = draw_view_model_into_layer(frame, stats);
     if (settings_.msaa_samples > 0) ensure_msaa_target(internal_width_, internal_height_);
     if (settings_.msaa_samples > 0)
         msaa_target_->bind();
     else if (scaled)
         scale_target_.bind();
+    else
+        glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target_fbo));
     glViewport(0, 0, internal_width_, internal_height_);
     const Vec3 fog_srgb =
         frame.environment.fog_color; // the clear shows the fog colour, encoded like the shader
@@ -308,9 +322,10 @@ FrameStats SceneRenderer::render(const SceneFrame& frame) {
     glDisable(GL_BLEND);
     reset_face_culling(); // level slabs are seen from both sides; single-sided materials cull per batch
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (layer == LayerState::Drawn)
+        view_model_layer_.write_depth_mask(static_cast<unsigned>(target_fbo), view_model_footprint_);
 
     if (frame.instances) {
-        pick_lights(frame, stats);
         view_world_.clear();
         cull_and_batch(frame, stats);
         if (fast_)
@@ -322,12 +337,6 @@ FrameStats SceneRenderer::render(const SceneFrame& frame) {
     }
     draw_particles(frame, stats);
     draw_debug(frame, stats);
-
-    // The view model: in the scene's target when that is multisampled at full size, else in its own
-    // antialiased layer over the finished scene (below).
-    const bool view_model = frame.view_model && !frame.view_model->instances.empty();
-    const bool view_model_layer =
-        view_model && settings_.view_model_msaa > 0 && (settings_.msaa_samples == 0 || scaled);
     if (view_model && !view_model_layer) draw_view_model(frame, stats);
 
     if (settings_.msaa_samples > 0) {
@@ -337,7 +346,16 @@ FrameStats SceneRenderer::render(const SceneFrame& frame) {
     }
     if (scaled) scale_target_.blit_to(static_cast<GLuint>(target_fbo), frame.width, frame.height, true);
     glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target_fbo));
-    if (view_model_layer) draw_view_model_layer(frame, stats, static_cast<unsigned>(target_fbo));
+    if (view_model_layer) {
+        if (!layer_first) layer = draw_view_model_into_layer(frame, stats);
+        if (layer == LayerState::Drawn) {
+            view_model_layer_.composite(static_cast<unsigned>(target_fbo), view_model_footprint_);
+        } else if (layer == LayerState::Unsupported) {
+            glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target_fbo));
+            glViewport(0, 0, frame.width, frame.height);
+            draw_view_model(frame, stats);
+        }
+    }
     glViewport(0, 0, frame.width, frame.height);
     glBindVertexArray(0);
     glUseProgram(0);

@@ -105,7 +105,11 @@ class SceneRenderer {
     void ensure_msaa_target(int width, int height);
     geometry::Camera view_model_camera(const SceneFrame& frame) const;
     void draw_view_model(const SceneFrame& frame, FrameStats& stats);
-    void draw_view_model_layer(const SceneFrame& frame, FrameStats& stats, unsigned target_fbo);
+    // The view model drawn into its layer (ViewModelLayer::begin): Drawn (to composite), Empty (nothing on
+    // screen) or Unsupported (the driver cannot make the layer; view_model_msaa is now 0 and the caller draws
+    // it aliased).
+    enum class LayerState { Empty, Drawn, Unsupported };
+    LayerState draw_view_model_into_layer(const SceneFrame& frame, FrameStats& stats);
     std::uint64_t shadow_caster_hash(const std::vector<MeshInstance>& instances) const;
     void upload_instances();
 

@@ -58,6 +58,11 @@ const ProgramFiles& view_model_composite_program() {
                                 "view_model_composite.frag"};
     return p;
 }
+const ProgramFiles& view_model_mask_program() {
+    static const ProgramFiles p{"view_model_mask", "view_model_composite.vert", "view_model_mask.frag",
+                                "#define NEAR_DEPTH\n"};
+    return p;
+}
 const ProgramFiles& contact_shadow_program() {
     static const ProgramFiles p{"contact_shadow", "contact_shadow.vert", "contact_shadow.frag"};
     return p;
@@ -71,6 +76,7 @@ std::vector<const ProgramFiles*> all_programs() {
             &particle_program(),
             &line_program(),
             &view_model_composite_program(),
+            &view_model_mask_program(),
             &contact_shadow_program(),
             &fast_model_program(0),
             &fast_model_program(1),

@@ -82,6 +82,7 @@ ViewModelLayer::~ViewModelLayer() {
 
 Result<void> ViewModelLayer::begin(int width, int height, int samples, const PixelRect& rect) {
     samples_ = samples;
+    resolved_this_frame_ = false;
     if (samples > 1) {
         if (!multisampled_ || multisampled_->format().samples != samples)
             multisampled_ =
@@ -109,26 +110,21 @@ Result<void> ViewModelLayer::begin(int width, int height, int samples, const Pix
     return ok();
 }
 
-void ViewModelLayer::composite(unsigned target_framebuffer, const ScreenFootprint& where) {
-    const PixelRect& rect = where.rect;
+void ViewModelLayer::resolve(const PixelRect& rect) {
+    if (resolved_this_frame_) return;
+    resolved_this_frame_ = true;
+    if (samples_ <= 1) return;
     glDisable(GL_SCISSOR_TEST);
-    if (samples_ > 1) {
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampled_->framebuffer());
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolved_.framebuffer());
-        const int x1 = rect.x + rect.width, y1 = rect.y + rect.height;
-        glBlitFramebuffer(rect.x, rect.y, x1, y1, rect.x, rect.y, x1, y1, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, target_framebuffer);
-    glViewport(0, 0, width_, height_);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampled_->framebuffer());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolved_.framebuffer());
+    const int x1 = rect.x + rect.width, y1 = rect.y + rect.height;
+    glBlitFramebuffer(rect.x, rect.y, x1, y1, rect.x, rect.y, x1, y1, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+}
+
+void ViewModelLayer::draw_footprint(const ScreenFootprint& where) {
+    const PixelRect& rect = where.rect;
     glEnable(GL_SCISSOR_TEST);
     glScissor(rect.x, rect.y, rect.width, rect.height);
-    glDisable(GL_DEPTH_TEST);
-    glDepthMask(GL_FALSE);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    composite_.use();
-    glUniform1i(composite_.location("u_edge_filter"), samples_ > 1 ? 0 : 1);
-    glUniform2i(composite_.location("u_last_texel"), width_ - 1, height_ - 1);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, resolved_.texture());
     glBindSampler(0, 0);
@@ -150,8 +146,37 @@ void ViewModelLayer::composite(unsigned target_framebuffer, const ScreenFootprin
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(fan_.size() * sizeof(Vec2)), fan_.data(),
                  GL_STREAM_DRAW);
     glDrawArrays(GL_TRIANGLE_FAN, 0, static_cast<GLsizei>(fan_.size()));
-    glDisable(GL_BLEND);
     glDisable(GL_SCISSOR_TEST);
+}
+
+void ViewModelLayer::write_depth_mask(unsigned target_framebuffer, const ScreenFootprint& where) {
+    resolve(where.rect);
+    glBindFramebuffer(GL_FRAMEBUFFER, target_framebuffer);
+    glViewport(0, 0, width_, height_);
+    glDisable(GL_BLEND);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glDepthMask(GL_TRUE);
+    mask_.use();
+    draw_footprint(where);
+    glDepthFunc(GL_LESS);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+void ViewModelLayer::composite(unsigned target_framebuffer, const ScreenFootprint& where) {
+    resolve(where.rect);
+    glBindFramebuffer(GL_FRAMEBUFFER, target_framebuffer);
+    glViewport(0, 0, width_, height_);
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    composite_.use();
+    glUniform1i(composite_.location("u_edge_filter"), samples_ > 1 ? 0 : 1);
+    glUniform2i(composite_.location("u_last_texel"), width_ - 1, height_ - 1);
+    draw_footprint(where);
+    glDisable(GL_BLEND);
     glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_TRUE);
 }

@@ -43,22 +43,33 @@ class ViewModelLayer {
     ViewModelLayer(const ViewModelLayer&) = delete;
     ViewModelLayer& operator=(const ViewModelLayer&) = delete;
 
-    ShaderProgram& program() { return composite_; } // built by the SceneRenderer's shader library
+    // Built by the SceneRenderer's shader library.
+    ShaderProgram& program() { return composite_; }
+    ShaderProgram& mask_program() { return mask_; }
     // Binds the layer (width x height, `samples` per pixel; 1: single-sample with the edge filter) and clears
     // `rect` to transparent black, with the scissor left on it for the view model's draws. An error when the
     // driver cannot make the target.
     Result<void> begin(int width, int height, int samples, const PixelRect& rect);
+    // Resolves `where.rect` of a multisampled layer (once per begin; composite calls it when not yet done).
+    void resolve(const PixelRect& rect);
+    // Writes depth 0 into `target_framebuffer`'s depth buffer (colour writes off) at the layer's opaque
+    // pixels inside `where`: drawn before the scene, the scene is not shaded under what the composite will
+    // cover. Leaves the target bound, depth test on with GL_LESS and writes on, colour writes on.
+    void write_depth_mask(unsigned target_framebuffer, const ScreenFootprint& where);
     // Resolves `where.rect` and blends the pixels inside `where.hull` (the rectangle's when it has none) over
     // `target_framebuffer` (left bound, blending and scissor off).
     void composite(unsigned target_framebuffer, const ScreenFootprint& where);
 
   private:
+    void
+    draw_footprint(const ScreenFootprint& where); // the hull (or rectangle) as a fan, in the bound target
     std::unique_ptr<RenderTarget> multisampled_;
     RenderTarget resolved_{{ColourStorage::Texture, 0}};
-    ShaderProgram composite_;
+    ShaderProgram composite_, mask_;
     unsigned vao_ = 0, vertex_buffer_ = 0;
     std::vector<Vec2> fan_; // the composite's polygon in clip space, reused
     int width_ = 0, height_ = 0, samples_ = 1;
+    bool resolved_this_frame_ = false;
 };
 
 } // namespace ks::render

@@ -12,8 +12,11 @@
 #include "render/view_model.h"
 #include "render/view_model_layer.h"
 
+#include <epoxy/gl.h>
 #include <doctest/doctest.h>
 #include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
 
 using namespace ks;
 using namespace ks::render;
@@ -268,4 +271,57 @@ TEST_CASE("contact shadows: a robot darkens the lit floor beside it, away from t
         CHECK(shadow_on < shadow_off * 0.85); // darker where the shadow falls ...
         CHECK(lamp_on > lamp_off - 1.0);      // ... and not toward the lamp
     }
+}
+
+TEST_CASE("the scene is not drawn under the rifle's opaque pixels, and the picture is the same") {
+    REQUIRE_MESSAGE(test::gl_context(), "cannot run: no display (run under xvfb-run, as ./run.sh test does)");
+    auto level = level::load_level_file(test::source_dir() / "levels" / "main.json");
+    REQUIRE(level.ok());
+    AssetLibrary assets(test::source_dir() / "assets");
+    auto scene = LevelScene::build(*level, assets, ks::test::direct_light_only());
+    std::vector<MeshInstance> instances;
+    std::vector<Light> lights;
+    scene->emit(instances, lights);
+    ViewModel rifle;
+    std::vector<Mat4> scratch;
+    assets.model("rifle").emit(rifle_view_transform(0.0f), scratch, rifle.instances);
+    auto* ctx = test::gl_context();
+    // Depth 0 is the view model's mask (ViewModelLayer::write_depth_mask): nothing the scene draws is there.
+    auto masked_pixels = [&] {
+        std::vector<float> depth(static_cast<size_t>(ctx->width()) * ctx->height());
+        ctx->bind();
+        glReadPixels(0, 0, ctx->width(), ctx->height(), GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+        return std::count(depth.begin(), depth.end(), 0.0f);
+    };
+    RendererSettings masked = quality(RenderQuality::Fast), unmasked = masked;
+    CHECK(masked.view_model_depth_mask);
+    unmasked.view_model_depth_mask = false;
+    auto with_mask = SceneRenderer::create(assets.textures(), masked);
+    auto without_mask = SceneRenderer::create(assets.textures(), unmasked);
+    REQUIRE(with_mask);
+    REQUIRE(without_mask);
+    const auto render = [&](SceneRenderer& renderer) {
+        return test::render_offscreen(renderer, player_start_camera(*level, 16.0f / 9.0f),
+                                      scene->environment(), instances, lights, &rifle);
+    };
+    const auto plain = render(**without_mask);
+    const long plain_masked = masked_pixels();
+    const auto fast = render(**with_mask);
+    const long fast_masked = masked_pixels();
+    const long pixels = static_cast<long>(ctx->width()) * ctx->height();
+    MESSAGE("pixels masked from the scene: " << fast_masked << " of " << pixels);
+    CHECK(plain_masked == 0);
+    CHECK(fast_masked > pixels / 25); // the rifle covers about a twentieth of the start view
+    CHECK(fast == plain);             // byte for byte: the scene under the rifle was never seen
+    // A multisampled layer is resolved before its opaque pixels are masked: the same picture either way.
+    RendererSettings msaa_layer = masked;
+    msaa_layer.view_model_msaa = 4;
+    auto msaa_renderer = SceneRenderer::create(assets.textures(), msaa_layer);
+    REQUIRE(msaa_renderer);
+    const auto msaa = render(**msaa_renderer);
+    CHECK(masked_pixels() > pixels / 25); // the resolved layer's opaque pixels
+    msaa_layer.view_model_depth_mask = false;
+    auto msaa_plain_renderer = SceneRenderer::create(assets.textures(), msaa_layer);
+    REQUIRE(msaa_plain_renderer);
+    CHECK(render(**msaa_plain_renderer) == msaa);
 }
