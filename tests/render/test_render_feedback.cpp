@@ -47,6 +47,33 @@ Vec3 mean_rgb(const std::vector<unsigned char>& rgb, float x0 = 1.0f / 3.0f, flo
     return sum / static_cast<float>(n);
 }
 
+// The main level's start view with the rifle at rest: the scene's instances and lights, the view model.
+struct RifleView {
+    level::Level level;
+    AssetLibrary assets{test::source_dir() / "assets"};
+    std::unique_ptr<LevelScene> scene;
+    std::vector<MeshInstance> instances;
+    std::vector<Light> lights;
+    ViewModel rifle;
+
+    explicit RifleView(level::Level l) : level(std::move(l)) {
+        scene = LevelScene::build(level, assets, ks::test::direct_light_only());
+        scene->emit(instances, lights);
+        std::vector<Mat4> scratch;
+        assets.model("rifle").emit(rifle_view_transform(0.0f), scratch, rifle.instances);
+    }
+    std::vector<unsigned char> render(SceneRenderer& renderer, const ViewModel* view_model) const {
+        return test::render_offscreen(renderer, player_start_camera(level, 16.0f / 9.0f),
+                                      scene->environment(), instances, lights, view_model);
+    }
+};
+
+std::unique_ptr<RifleView> rifle_view() {
+    auto level = level::load_level_file(test::source_dir() / "levels" / "main.json");
+    REQUIRE(level.ok());
+    return std::make_unique<RifleView>(std::move(*level));
+}
+
 } // namespace
 
 TEST_CASE("a tinted instance turns red on both paths; an untinted copy beside it does not") {
@@ -135,20 +162,12 @@ TEST_CASE("a dynamic light lights the baked floor on the fast path; a level ligh
 
 TEST_CASE("the first-person rifle is lit and orange, not a near-black silhouette, with antialiased edges") {
     REQUIRE_MESSAGE(test::gl_context(), "cannot run: no display (run under xvfb-run, as ./run.sh test does)");
-    auto level = level::load_level_file(test::source_dir() / "levels" / "main.json");
-    REQUIRE(level.ok());
-    AssetLibrary assets(test::source_dir() / "assets");
-    auto scene = LevelScene::build(*level, assets, ks::test::direct_light_only());
-    std::vector<MeshInstance> instances;
-    std::vector<Light> lights;
-    scene->emit(instances, lights);
-    ViewModel rifle;
-    std::vector<Mat4> scratch;
-    assets.model("rifle").emit(rifle_view_transform(0.0f), scratch, rifle.instances);
+    const auto view = rifle_view();
+    AssetLibrary& assets = view->assets;
+    const ViewModel& rifle = view->rifle;
     auto* ctx = test::gl_context();
     auto render = [&](SceneRenderer& renderer, const ViewModel* view_model) {
-        return test::render_offscreen(renderer, player_start_camera(*level, 16.0f / 9.0f),
-                                      scene->environment(), instances, lights, view_model);
+        return view->render(renderer, view_model);
     };
     // The fast path (what the software rasterisers the game targets draw) at full size, the rifle in its own
     // filtered layer (the default) and drawn straight into the scene (view_model_msaa 0).
@@ -193,7 +212,7 @@ TEST_CASE("the first-person rifle is lit and orange, not a near-black silhouette
     CHECK(edge_pixels < rifle_pixels / 2);    // ... and only the silhouette
     CHECK(lost_pixels == 0);
     // The composite's footprint: the hull of the rifle's parts on screen, well inside its rectangle.
-    geometry::Camera vm = player_start_camera(*level, 16.0f / 9.0f);
+    geometry::Camera vm = player_start_camera(view->level, 16.0f / 9.0f);
     vm.near_plane = 0.01f;
     vm.far_plane = 20.0f;
     vm.fov_y = rifle.fov_y;
@@ -275,16 +294,9 @@ TEST_CASE("contact shadows: a robot darkens the lit floor beside it, away from t
 
 TEST_CASE("the scene is not drawn under the rifle's opaque pixels, and the picture is the same") {
     REQUIRE_MESSAGE(test::gl_context(), "cannot run: no display (run under xvfb-run, as ./run.sh test does)");
-    auto level = level::load_level_file(test::source_dir() / "levels" / "main.json");
-    REQUIRE(level.ok());
-    AssetLibrary assets(test::source_dir() / "assets");
-    auto scene = LevelScene::build(*level, assets, ks::test::direct_light_only());
-    std::vector<MeshInstance> instances;
-    std::vector<Light> lights;
-    scene->emit(instances, lights);
-    ViewModel rifle;
-    std::vector<Mat4> scratch;
-    assets.model("rifle").emit(rifle_view_transform(0.0f), scratch, rifle.instances);
+    const auto view = rifle_view();
+    AssetLibrary& assets = view->assets;
+    const ViewModel& rifle = view->rifle;
     auto* ctx = test::gl_context();
     // Depth 0 is the view model's mask (ViewModelLayer::write_depth_mask): nothing the scene draws is there.
     auto masked_pixels = [&] {
@@ -300,10 +312,7 @@ TEST_CASE("the scene is not drawn under the rifle's opaque pixels, and the pictu
     auto without_mask = SceneRenderer::create(assets.textures(), unmasked);
     REQUIRE(with_mask);
     REQUIRE(without_mask);
-    const auto render = [&](SceneRenderer& renderer) {
-        return test::render_offscreen(renderer, player_start_camera(*level, 16.0f / 9.0f),
-                                      scene->environment(), instances, lights, &rifle);
-    };
+    const auto render = [&](SceneRenderer& renderer) { return view->render(renderer, &rifle); };
     const auto plain = render(**without_mask);
     const long plain_masked = masked_pixels();
     const auto fast = render(**with_mask);
