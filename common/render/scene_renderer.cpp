@@ -97,7 +97,8 @@ Result<void> SceneRenderer::init() {
     for (int i = 0; i < kFastModelPrograms; ++i)
         if (auto r = shaders_->add(fast_model_program(i), fast_model_[i], pbr_units); !r) return r.error();
     for (auto [files, program] : {std::pair{&view_model_composite_program(), &view_model_layer_.program()},
-                                  std::pair{&view_model_mask_program(), &view_model_layer_.mask_program()}})
+                                  std::pair{&view_model_mask_program(), &view_model_layer_.mask_program()},
+                                  std::pair{&view_model_copy_program(), &view_model_layer_.copy_program()}})
         if (auto r = shaders_->add(*files, *program,
                                    [](ShaderProgram& p) { glUniform1i(p.location("u_layer"), 0); });
             !r)
@@ -349,7 +350,8 @@ FrameStats SceneRenderer::render(const SceneFrame& frame) {
     if (view_model_layer) {
         if (!layer_first) layer = draw_view_model_into_layer(frame, stats);
         if (layer == LayerState::Drawn) {
-            view_model_layer_.composite(static_cast<unsigned>(target_fbo), view_model_footprint_);
+            view_model_layer_.composite(static_cast<unsigned>(target_fbo), view_model_footprint_,
+                                        layer_first);
         } else if (layer == LayerState::Unsupported) {
             glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target_fbo));
             glViewport(0, 0, frame.width, frame.height);

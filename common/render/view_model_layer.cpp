@@ -164,12 +164,21 @@ void ViewModelLayer::write_depth_mask(unsigned target_framebuffer, const ScreenF
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
-void ViewModelLayer::composite(unsigned target_framebuffer, const ScreenFootprint& where) {
+void ViewModelLayer::composite(unsigned target_framebuffer, const ScreenFootprint& where, bool masked) {
     resolve(where.rect);
     glBindFramebuffer(GL_FRAMEBUFFER, target_framebuffer);
     glViewport(0, 0, width_, height_);
-    glDisable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);
+    if (masked) {
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_EQUAL);
+        glDisable(GL_BLEND);
+        copy_.use();
+        draw_footprint(where);
+        glDepthFunc(GL_LESS);
+    } else {
+        glDisable(GL_DEPTH_TEST);
+    }
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     composite_.use();
@@ -178,6 +187,7 @@ void ViewModelLayer::composite(unsigned target_framebuffer, const ScreenFootprin
     draw_footprint(where);
     glDisable(GL_BLEND);
     glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
 }
 

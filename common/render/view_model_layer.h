@@ -46,6 +46,7 @@ class ViewModelLayer {
     // Built by the SceneRenderer's shader library.
     ShaderProgram& program() { return composite_; }
     ShaderProgram& mask_program() { return mask_; }
+    ShaderProgram& copy_program() { return copy_; }
     // Binds the layer (width x height, `samples` per pixel; 1: single-sample with the edge filter) and clears
     // `rect` to transparent black, with the scissor left on it for the view model's draws. An error when the
     // driver cannot make the target.
@@ -57,15 +58,17 @@ class ViewModelLayer {
     // cover. Leaves the target bound, depth test on with GL_LESS and writes on, colour writes on.
     void write_depth_mask(unsigned target_framebuffer, const ScreenFootprint& where);
     // Resolves `where.rect` and blends the pixels inside `where.hull` (the rectangle's when it has none) over
-    // `target_framebuffer` (left bound, blending and scissor off).
-    void composite(unsigned target_framebuffer, const ScreenFootprint& where);
+    // `target_framebuffer` (left bound, blending and scissor off). `masked`: write_depth_mask ran on this
+    // target before the scene, so its depth is 0 exactly at the opaque pixels: those are copied (one lookup,
+    // depth EQUAL) and only the others go through the edge filter (depth LESS).
+    void composite(unsigned target_framebuffer, const ScreenFootprint& where, bool masked);
 
   private:
     void
     draw_footprint(const ScreenFootprint& where); // the hull (or rectangle) as a fan, in the bound target
     std::unique_ptr<RenderTarget> multisampled_;
     RenderTarget resolved_{{ColourStorage::Texture, 0}};
-    ShaderProgram composite_, mask_;
+    ShaderProgram composite_, mask_, copy_;
     unsigned vao_ = 0, vertex_buffer_ = 0;
     std::vector<Vec2> fan_; // the composite's polygon in clip space, reused
     int width_ = 0, height_ = 0, samples_ = 1;
