@@ -52,6 +52,16 @@ std::pair<vec3, vec3> Model::bounds() const {
     return {lo, hi};
 }
 
+float Model::deviation() const {
+    float worst = 0.0f;
+    for (size_t i = 0; i < nodes_.size(); ++i) {
+        const float stretch = largest_stretch(glm::mat3(world_transform(static_cast<int>(i))));
+        for (const auto& [material, mesh] : nodes_[i].parts)
+            worst = std::max(worst, mesh.deviation * stretch);
+    }
+    return worst;
+}
+
 mat4 Model::world_transform(int index) const {
     mat4 m(1.0f);
     for (int i = index; i >= 0; i = nodes_[static_cast<size_t>(i)].parent) {

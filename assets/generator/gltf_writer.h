@@ -50,11 +50,15 @@ class Model {
     int find_node(const std::string& name) const;
 
     const std::string& name() const { return name_; }
+    void set_name(std::string name) { name_ = std::move(name); }
     const std::deque<Node>& nodes() const { return nodes_; }
     const std::vector<Material>& materials() const { return materials_; }
     size_t triangle_count() const;
     // Axis-aligned bounds of all geometry in the root frame (min, max).
     std::pair<vec3, vec3> bounds() const;
+    // The largest of its meshes' deviations (Mesh::deviation), in the root frame: how far this model, built
+    // at a coarser Detail, may lie from itself built in full.
+    float deviation() const;
     // The node's transform relative to the model root (parents applied).
     mat4 world_transform(int node) const;
 

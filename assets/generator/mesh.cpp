@@ -1,9 +1,23 @@
 #include "mesh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace ks::assetgen {
+
+float largest_stretch(const glm::mat3& linear) {
+    // The largest singular value. Columns all as long as the cube root of the determinant are orthogonal
+    // (Hadamard's inequality is then an equality): a similarity, the shapes' usual placement.
+    const float uniform = std::cbrt(std::abs(glm::determinant(linear)));
+    float frobenius = 0.0f;
+    for (int c = 0; c < 3; ++c) frobenius += glm::dot(linear[c], linear[c]);
+    frobenius = std::sqrt(frobenius);
+    float longest = 0.0f;
+    for (int c = 0; c < 3; ++c) longest = std::max(longest, glm::length(linear[c]));
+    const bool similarity = std::abs(longest - uniform) <= 1e-5f * std::max(longest, 1e-30f);
+    return similarity ? longest : frobenius;
+}
 
 void Mesh::append(const Mesh& other, const mat4& transform) {
     const auto base = static_cast<std::uint32_t>(vertices.size());
@@ -28,6 +42,7 @@ void Mesh::append(const Mesh& other, const mat4& transform) {
         else
             triangle(a, b, c);
     }
+    if (other.deviation > 0.0f) deviation = std::max(deviation, other.deviation * largest_stretch(linear));
 }
 
 void Mesh::compute_tangents() {

@@ -26,6 +26,10 @@ struct Vertex {
 struct Mesh {
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;
+    // At a coarser level of detail (shapes.h: Detail), the most any point of this mesh lies from the same
+    // mesh built in full, and any point of that from this (a bound on their Hausdorff distance, in this
+    // mesh's units); 0 at full detail. append() carries it through transforms.
+    float deviation = 0.0f;
 
     std::uint32_t add(const Vertex& v) {
         vertices.push_back(v);
@@ -37,7 +41,8 @@ struct Mesh {
     size_t triangle_count() const { return indices.size() / 3; }
 
     // Appends `other` transformed by `transform` (normals by its inverse transpose; a mirroring transform
-    // flips the winding and the tangent handedness so faces stay outward).
+    // flips the winding and the tangent handedness so faces stay outward). The deviation becomes the larger
+    // of the two, `other`'s scaled by the transform's largest stretch.
     void append(const Mesh& other, const mat4& transform = mat4(1.0f));
     // Per-vertex tangents from positions and uvs (accumulated over triangles, Gram-Schmidt against the
     // normal). The bitangent points toward the image top (-v in glTF uv), matching +Y-up normal maps.
@@ -45,6 +50,10 @@ struct Mesh {
     // Multiplies every uv by `scale` and adds `offset`.
     void transform_uvs(vec2 scale, vec2 offset = vec2(0.0f));
 };
+
+// The most `linear` stretches any vector: exact for a rotation times a uniform scale (to 1e-5), else the
+// Frobenius norm, which bounds it from above.
+float largest_stretch(const glm::mat3& linear);
 
 // Translation * rotation (Euler XYZ radians, applied x then y then z like the reference's nodes) * scale.
 mat4 trs(vec3 translation, vec3 euler_xyz = vec3(0.0f), vec3 scale = vec3(1.0f));

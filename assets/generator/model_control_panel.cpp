@@ -69,82 +69,88 @@ Result<void> make_control_panel(Output& out) {
     KS_ASSETGEN_TRY(out.texture("control_desk_basecolor", desk.basecolor, PngChannels::Rgb));
     KS_ASSETGEN_TRY(out.texture("control_desk_emissive", desk.emissive, PngChannels::Rgb));
 
-    Model model("control_panel");
-    const int body = model.add_material(textured("panel_body", "control_panel", vec4(1.0f), 1.0f, 1.0f));
-    const int trim =
-        model.add_material(textured("panel_trim", "metal", vec4(0.2f, 0.21f, 0.23f, 1.0f), 1.0f, 1.0f));
-    const int screen_mat = model.add_material(display_material("screen_emissive", "screen"));
-    const int desk_mat = model.add_material(display_material("desk_emissive", "control_desk"));
-    const int button_mat = model.add_material(
-        plain("shutdown_button", vec3(0.8f, 0.05f, 0.03f), 0.0f, 0.3f, vec3(0.9f, 0.05f, 0.02f)));
-    const int hazard_mat = model.add_material(plain("hazard_yellow", vec3(0.95f, 0.72f, 0.05f), 0.0f, 0.5f));
-    const int lamp =
-        model.add_material(plain("panel_lamp", vec3(0.2f, 0.6f, 0.7f), 0.0f, 0.3f, vec3(0.3f, 0.85f, 1.0f)));
+    // Built again under each coarser Detail for the levels of detail (Output::model_levels).
+    const auto build = [&] {
+        Model model("control_panel");
+        const int body = model.add_material(textured("panel_body", "control_panel", vec4(1.0f), 1.0f, 1.0f));
+        const int trim =
+            model.add_material(textured("panel_trim", "metal", vec4(0.2f, 0.21f, 0.23f, 1.0f), 1.0f, 1.0f));
+        const int screen_mat = model.add_material(display_material("screen_emissive", "screen"));
+        const int desk_mat = model.add_material(display_material("desk_emissive", "control_desk"));
+        const int button_mat = model.add_material(
+            plain("shutdown_button", vec3(0.8f, 0.05f, 0.03f), 0.0f, 0.3f, vec3(0.9f, 0.05f, 0.02f)));
+        const int hazard_mat =
+            model.add_material(plain("hazard_yellow", vec3(0.95f, 0.72f, 0.05f), 0.0f, 0.5f));
+        const int lamp = model.add_material(
+            plain("panel_lamp", vec3(0.2f, 0.6f, 0.7f), 0.0f, 0.3f, vec3(0.3f, 0.85f, 1.0f)));
 
-    const int root = model.add_node("control_panel", -1);
-    Node& n = model.node(root);
-    const float uv = 0.5f;
-    const float tower_front = 0.25f; // x of the tower's screen face
-    // Tower at the back holding the screen, with a cap that overhangs a little.
-    n.part(body).append(
-        rounded_box(vec3(kHalfX - tower_front, kPanelHeight - 0.12f, 2 * kHalfZ), 0.06f, 1, uv),
-        at(vec3((kHalfX + tower_front) * 0.5f, (kPanelHeight - 0.12f) * 0.5f, 0)));
-    n.part(trim).append(rounded_box(vec3(kHalfX - tower_front + 0.04f, 0.12f, 2 * kHalfZ), 0.04f, 1, uv),
-                        at(vec3((kHalfX + tower_front) * 0.5f - 0.02f, kPanelHeight - 0.06f, 0)));
-    n.part(lamp).append(rounded_box(vec3(0.03f, 0.05f, 2 * kHalfZ - 0.4f), 0.01f, 1),
-                        at(vec3(tower_front - 0.005f, kPanelHeight - 0.2f, 0)));
-    // Screen bezel and the screen, 4.4 x 2.1, facing -X.
-    n.part(trim).append(rounded_box(vec3(0.08f, 2.3f, 4.6f), 0.05f, 2, uv),
-                        at(vec3(tower_front - 0.02f, 2.65f, 0)));
-    Mesh glass = rounded_box(vec3(0.02f, 2.1f, 4.4f), 0.0f, 0, 1.0f, UvMode::PerFace);
-    n.part(screen_mat).append(glass, at(vec3(tower_front - 0.065f, 2.65f, 0)));
-    // Lower cabinet in front of the tower, with a kick plate.
-    const float cab_top = 1.0f;
-    n.part(body).append(rounded_box(vec3(kHalfX + tower_front, cab_top, 2 * kHalfZ - 0.1f), 0.05f, 1, uv),
-                        at(vec3((tower_front - kHalfX) * 0.5f, cab_top * 0.5f, 0)));
-    n.part(trim).append(
-        rounded_box(vec3(kHalfX + tower_front - 0.1f, 0.12f, 2 * kHalfZ - 0.2f), 0.02f, 1, uv),
-        at(vec3((tower_front - kHalfX) * 0.5f - 0.02f, 0.06f, 0)));
-    // Sloped desk: a wedge rising toward the tower, topped by the button desk display.
-    const float slope_front = -kHalfX, slope_back = tower_front, rise = 0.38f;
-    n.part(body).append(extrude({{slope_front, cab_top},
-                                 {slope_back, cab_top},
-                                 {slope_back, cab_top + rise},
-                                 {slope_front, cab_top + 0.08f}},
-                                2 * kHalfZ - 0.1f, uv),
-                        mat4(1.0f));
-    const float angle = std::atan2(rise - 0.08f, slope_back - slope_front);
-    const float desk_len = std::hypot(rise - 0.08f, slope_back - slope_front);
-    const mat4 desk_frame =
-        at(vec3((slope_front + slope_back) * 0.5f, cab_top + (0.08f + rise) * 0.5f + 0.005f, 0)) *
-        glm::rotate(mat4(1.0f), angle, vec3(0, 0, 1));
-    // The desk display: its +Y face carries the map; uv rotated so the labels read from the -X side.
-    Mesh desk_panel = rounded_box(vec3(desk_len - 0.3f, 0.02f, 3.0f), 0.0f, 0, 1.0f, UvMode::PerFace);
-    for (Vertex& v : desk_panel.vertices)
-        v.uv = vec2(1.0f - (v.position.z / 3.0f + 0.5f), 1.0f - (v.position.x / (desk_len - 0.3f) + 0.5f));
-    desk_panel.compute_tangents();
-    n.part(desk_mat).append(desk_panel, desk_frame * at(vec3(0, 0.01f, -0.7f)));
-    // The shutdown button: hazard collar, guard ring, big red mushroom cap.
-    const mat4 button_at = desk_frame * at(vec3(0.05f, 0.02f, 1.65f));
-    n.part(hazard_mat).append(cylinder(0.42f, 0.04f, 32, 0.01f), button_at);
-    n.part(trim).append(tube(0.34f, 0.3f, 0.1f, 32), button_at);
-    n.part(button_mat)
-        .append(lathe({{0.0f, 0.0f},
-                       {0.22f, 0.0f},
-                       {0.22f, 0.1f},
-                       {0.28f, 0.12f},
-                       {0.29f, 0.17f},
-                       {0.22f, 0.23f},
-                       {0.0f, 0.24f}}),
-                button_at);
-    // Side handles and a hazard edge on the desk front.
-    n.part(hazard_mat)
-        .append(rounded_box(vec3(0.06f, 0.06f, 2 * kHalfZ - 0.2f), 0.02f, 1),
-                at(vec3(-kHalfX + 0.03f, cab_top + 0.05f, 0)));
-    for (float z : {-1.0f, 1.0f})
-        n.part(trim).append(rounded_box(vec3(1.0f, 0.08f, 0.06f), 0.03f, 1),
-                            at(vec3(0.85f, 2.0f, z * (kHalfZ - 0.02f))));
-    return out.model(model);
+        const int root = model.add_node("control_panel", -1);
+        Node& n = model.node(root);
+        const float uv = 0.5f;
+        const float tower_front = 0.25f; // x of the tower's screen face
+        // Tower at the back holding the screen, with a cap that overhangs a little.
+        n.part(body).append(
+            rounded_box(vec3(kHalfX - tower_front, kPanelHeight - 0.12f, 2 * kHalfZ), 0.06f, 1, uv),
+            at(vec3((kHalfX + tower_front) * 0.5f, (kPanelHeight - 0.12f) * 0.5f, 0)));
+        n.part(trim).append(rounded_box(vec3(kHalfX - tower_front + 0.04f, 0.12f, 2 * kHalfZ), 0.04f, 1, uv),
+                            at(vec3((kHalfX + tower_front) * 0.5f - 0.02f, kPanelHeight - 0.06f, 0)));
+        n.part(lamp).append(rounded_box(vec3(0.03f, 0.05f, 2 * kHalfZ - 0.4f), 0.01f, 1),
+                            at(vec3(tower_front - 0.005f, kPanelHeight - 0.2f, 0)));
+        // Screen bezel and the screen, 4.4 x 2.1, facing -X.
+        n.part(trim).append(rounded_box(vec3(0.08f, 2.3f, 4.6f), 0.05f, 2, uv),
+                            at(vec3(tower_front - 0.02f, 2.65f, 0)));
+        Mesh glass = rounded_box(vec3(0.02f, 2.1f, 4.4f), 0.0f, 0, 1.0f, UvMode::PerFace);
+        n.part(screen_mat).append(glass, at(vec3(tower_front - 0.065f, 2.65f, 0)));
+        // Lower cabinet in front of the tower, with a kick plate.
+        const float cab_top = 1.0f;
+        n.part(body).append(rounded_box(vec3(kHalfX + tower_front, cab_top, 2 * kHalfZ - 0.1f), 0.05f, 1, uv),
+                            at(vec3((tower_front - kHalfX) * 0.5f, cab_top * 0.5f, 0)));
+        n.part(trim).append(
+            rounded_box(vec3(kHalfX + tower_front - 0.1f, 0.12f, 2 * kHalfZ - 0.2f), 0.02f, 1, uv),
+            at(vec3((tower_front - kHalfX) * 0.5f - 0.02f, 0.06f, 0)));
+        // Sloped desk: a wedge rising toward the tower, topped by the button desk display.
+        const float slope_front = -kHalfX, slope_back = tower_front, rise = 0.38f;
+        n.part(body).append(extrude({{slope_front, cab_top},
+                                     {slope_back, cab_top},
+                                     {slope_back, cab_top + rise},
+                                     {slope_front, cab_top + 0.08f}},
+                                    2 * kHalfZ - 0.1f, uv),
+                            mat4(1.0f));
+        const float angle = std::atan2(rise - 0.08f, slope_back - slope_front);
+        const float desk_len = std::hypot(rise - 0.08f, slope_back - slope_front);
+        const mat4 desk_frame =
+            at(vec3((slope_front + slope_back) * 0.5f, cab_top + (0.08f + rise) * 0.5f + 0.005f, 0)) *
+            glm::rotate(mat4(1.0f), angle, vec3(0, 0, 1));
+        // The desk display: its +Y face carries the map; uv rotated so the labels read from the -X side.
+        Mesh desk_panel = rounded_box(vec3(desk_len - 0.3f, 0.02f, 3.0f), 0.0f, 0, 1.0f, UvMode::PerFace);
+        for (Vertex& v : desk_panel.vertices)
+            v.uv =
+                vec2(1.0f - (v.position.z / 3.0f + 0.5f), 1.0f - (v.position.x / (desk_len - 0.3f) + 0.5f));
+        desk_panel.compute_tangents();
+        n.part(desk_mat).append(desk_panel, desk_frame * at(vec3(0, 0.01f, -0.7f)));
+        // The shutdown button: hazard collar, guard ring, big red mushroom cap.
+        const mat4 button_at = desk_frame * at(vec3(0.05f, 0.02f, 1.65f));
+        n.part(hazard_mat).append(cylinder(0.42f, 0.04f, 32, 0.01f), button_at);
+        n.part(trim).append(tube(0.34f, 0.3f, 0.1f, 32), button_at);
+        n.part(button_mat)
+            .append(lathe({{0.0f, 0.0f},
+                           {0.22f, 0.0f},
+                           {0.22f, 0.1f},
+                           {0.28f, 0.12f},
+                           {0.29f, 0.17f},
+                           {0.22f, 0.23f},
+                           {0.0f, 0.24f}}),
+                    button_at);
+        // Side handles and a hazard edge on the desk front.
+        n.part(hazard_mat)
+            .append(rounded_box(vec3(0.06f, 0.06f, 2 * kHalfZ - 0.2f), 0.02f, 1),
+                    at(vec3(-kHalfX + 0.03f, cab_top + 0.05f, 0)));
+        for (float z : {-1.0f, 1.0f})
+            n.part(trim).append(rounded_box(vec3(1.0f, 0.08f, 0.06f), 0.03f, 1),
+                                at(vec3(0.85f, 2.0f, z * (kHalfZ - 0.02f))));
+        return model;
+    };
+    return out.model_levels(build);
 }
 
 } // namespace ks::assetgen

@@ -78,56 +78,63 @@ MaterialMaps door_leaf() {
 
 Result<void> make_door(Output& out) {
     KS_ASSETGEN_TRY(out.material("door", door_leaf()));
-    Model model("door");
-    Material leaf_material = textured("door_leaf", "door", vec4(1.0f), 1.0f, 1.0f);
-    leaf_material.emissive_texture = "door_emissive";
-    leaf_material.emissive = vec3(1.0f);
-    const int leaf = model.add_material(leaf_material);
-    // Painted steel casings (the diamond-plate relief under a light grey enamel). Bare metal here read as a
-    // near-black slab: a dark metallic surface only reflects its surroundings, and the fast path's per-vertex
-    // light has little of them to reflect.
-    const int frame_mat = model.add_material(textured("door_frame", "metal", vec4(1.0f), 0.0f, 1.0f));
-    const int handle_mat = model.add_material(plain("door_handle", vec3(0.7f), 1.0f, 0.25f));
-    const int lamp =
-        model.add_material(plain("door_lamp", vec3(0.1f, 0.4f, 0.15f), 0.0f, 0.3f, vec3(0.2f, 1.0f, 0.35f)));
-    const int stripes = model.add_material(textured("door_frame_hazard", "door", vec4(1.0f), 1.0f, 1.0f));
+    // Built again under each coarser Detail for the levels of detail (Output::model_levels).
+    const auto build = [&] {
+        Model model("door");
+        Material leaf_material = textured("door_leaf", "door", vec4(1.0f), 1.0f, 1.0f);
+        leaf_material.emissive_texture = "door_emissive";
+        leaf_material.emissive = vec3(1.0f);
+        const int leaf = model.add_material(leaf_material);
+        // Painted steel casings (the diamond-plate relief under a light grey enamel). Bare metal here read as
+        // a near-black slab: a dark metallic surface only reflects its surroundings, and the fast path's
+        // per-vertex light has little of them to reflect.
+        const int frame_mat = model.add_material(textured("door_frame", "metal", vec4(1.0f), 0.0f, 1.0f));
+        const int handle_mat = model.add_material(plain("door_handle", vec3(0.7f), 1.0f, 0.25f));
+        const int lamp = model.add_material(
+            plain("door_lamp", vec3(0.1f, 0.4f, 0.15f), 0.0f, 0.3f, vec3(0.2f, 1.0f, 0.35f)));
+        const int stripes = model.add_material(textured("door_frame_hazard", "door", vec4(1.0f), 1.0f, 1.0f));
 
-    const int root = model.add_node("door", -1);
-    // Frame: trims in front of and behind the leaves (|z| 0.09..0.3) so the leaves can slide between them.
-    const int frame = model.add_node("frame", root);
-    Mesh& f = model.node(frame).part(frame_mat);
-    for (float zs : {-1.0f, 1.0f}) {
-        const float z = zs * 0.195f;
-        // Pocket casings (x 2.5..4.5) cover the leaves when they slide open; a raised jamb frames the
-        // opening.
-        for (float xs : {-1.0f, 1.0f}) {
-            f.append(rounded_box(vec3(2.0f, 5.55f, 0.21f), 0.04f, 1, 0.5f), at(vec3(xs * 3.5f, 2.775f, z)));
-            f.append(rounded_box(vec3(0.24f, 5.2f, 0.27f), 0.05f, 1, 0.5f),
-                     at(vec3(xs * 2.62f, 2.6f, z + zs * 0.03f)));
+        const int root = model.add_node("door", -1);
+        // Frame: trims in front of and behind the leaves (|z| 0.09..0.3) so the leaves can slide between
+        // them.
+        const int frame = model.add_node("frame", root);
+        Mesh& f = model.node(frame).part(frame_mat);
+        for (float zs : {-1.0f, 1.0f}) {
+            const float z = zs * 0.195f;
+            // Pocket casings (x 2.5..4.5) cover the leaves when they slide open; a raised jamb frames the
+            // opening.
+            for (float xs : {-1.0f, 1.0f}) {
+                f.append(rounded_box(vec3(2.0f, 5.55f, 0.21f), 0.04f, 1, 0.5f),
+                         at(vec3(xs * 3.5f, 2.775f, z)));
+                f.append(rounded_box(vec3(0.24f, 5.2f, 0.27f), 0.05f, 1, 0.5f),
+                         at(vec3(xs * 2.62f, 2.6f, z + zs * 0.03f)));
+            }
+            f.append(rounded_box(vec3(9.0f, 0.55f, 0.21f), 0.04f, 1, 0.5f), at(vec3(0, 5.275f, z)));
+            f.append(rounded_box(vec3(5.48f, 0.24f, 0.27f), 0.05f, 1, 0.5f),
+                     at(vec3(0, 5.12f, z + zs * 0.03f)));
+            model.node(frame).part(lamp).append(rounded_box(vec3(0.6f, 0.12f, 0.06f), 0.03f, 1),
+                                                at(vec3(0, 5.3f, zs * 0.32f)));
+            // A hazard-striped sill plate: the leaf map's foot band, uv-placed on this strip.
+            Mesh sill = rounded_box(vec3(5.0f, 0.04f, 0.21f), 0.01f, 1, 1.0f, UvMode::PerFace);
+            sill.transform_uvs(vec2(0.9f, 0.1f), vec2(0.05f, 0.86f));
+            model.node(frame).part(stripes).append(sill, at(vec3(0, 0.02f, z)));
         }
-        f.append(rounded_box(vec3(9.0f, 0.55f, 0.21f), 0.04f, 1, 0.5f), at(vec3(0, 5.275f, z)));
-        f.append(rounded_box(vec3(5.48f, 0.24f, 0.27f), 0.05f, 1, 0.5f), at(vec3(0, 5.12f, z + zs * 0.03f)));
-        model.node(frame).part(lamp).append(rounded_box(vec3(0.6f, 0.12f, 0.06f), 0.03f, 1),
-                                            at(vec3(0, 5.3f, zs * 0.32f)));
-        // A hazard-striped sill plate: the leaf map's foot band, uv-placed on this strip.
-        Mesh sill = rounded_box(vec3(5.0f, 0.04f, 0.21f), 0.01f, 1, 1.0f, UvMode::PerFace);
-        sill.transform_uvs(vec2(0.9f, 0.1f), vec2(0.05f, 0.86f));
-        model.node(frame).part(stripes).append(sill, at(vec3(0, 0.02f, z)));
-    }
-    // Leaves: built once for door_l, mirrored for door_r so the hazard stripes meet as a chevron.
-    Mesh leaf_mesh = rounded_box(vec3(kLeafW, kLeafH, kLeafD), 0.02f, 1, 1.0f, UvMode::PerFace);
-    Mesh leaf_handles;
-    for (float z : {-1.0f, 1.0f})
-        leaf_handles.append(rounded_box(vec3(0.07f, 0.9f, 0.05f), 0.02f, 1),
-                            at(vec3(-kLeafW * 0.5f + 0.35f, 2.4f - kLeafH * 0.5f, z * 0.085f)));
-    const int door_l = model.add_node("door_l", root, vec3(kLeafW * 0.5f, 0, 0));
-    model.node(door_l).part(leaf).append(leaf_mesh, at(vec3(0, kLeafH * 0.5f, 0)));
-    model.node(door_l).part(handle_mat).append(leaf_handles, at(vec3(0, kLeafH * 0.5f, 0)));
-    const int door_r = model.add_node("door_r", root, vec3(-kLeafW * 0.5f, 0, 0));
-    const mat4 mirror = glm::scale(mat4(1.0f), vec3(-1, 1, 1));
-    model.node(door_r).part(leaf).append(leaf_mesh, mirror * at(vec3(0, kLeafH * 0.5f, 0)));
-    model.node(door_r).part(handle_mat).append(leaf_handles, mirror * at(vec3(0, kLeafH * 0.5f, 0)));
-    return out.model(model);
+        // Leaves: built once for door_l, mirrored for door_r so the hazard stripes meet as a chevron.
+        Mesh leaf_mesh = rounded_box(vec3(kLeafW, kLeafH, kLeafD), 0.02f, 1, 1.0f, UvMode::PerFace);
+        Mesh leaf_handles;
+        for (float z : {-1.0f, 1.0f})
+            leaf_handles.append(rounded_box(vec3(0.07f, 0.9f, 0.05f), 0.02f, 1),
+                                at(vec3(-kLeafW * 0.5f + 0.35f, 2.4f - kLeafH * 0.5f, z * 0.085f)));
+        const int door_l = model.add_node("door_l", root, vec3(kLeafW * 0.5f, 0, 0));
+        model.node(door_l).part(leaf).append(leaf_mesh, at(vec3(0, kLeafH * 0.5f, 0)));
+        model.node(door_l).part(handle_mat).append(leaf_handles, at(vec3(0, kLeafH * 0.5f, 0)));
+        const int door_r = model.add_node("door_r", root, vec3(-kLeafW * 0.5f, 0, 0));
+        const mat4 mirror = glm::scale(mat4(1.0f), vec3(-1, 1, 1));
+        model.node(door_r).part(leaf).append(leaf_mesh, mirror * at(vec3(0, kLeafH * 0.5f, 0)));
+        model.node(door_r).part(handle_mat).append(leaf_handles, mirror * at(vec3(0, kLeafH * 0.5f, 0)));
+        return model;
+    };
+    return out.model_levels(build);
 }
 
 } // namespace ks::assetgen

@@ -98,45 +98,50 @@ MaterialMaps cylinder_paint(const Font& font) {
 
 Result<void> make_gas_cylinder(Output& out) {
     KS_ASSETGEN_TRY(out.material("gas_cylinder", cylinder_paint(out.font())));
-    Model model("gas_cylinder");
-    const int paint =
-        model.add_material(textured("gas_cylinder_paint", "gas_cylinder", vec4(1.0f), 1.0f, 1.0f));
-    const int brass = model.add_material(plain("brass", vec3(0.85f, 0.66f, 0.3f), 1.0f, 0.3f));
-    const int steel =
-        model.add_material(textured("valve_steel", "metal", vec4(0.6f, 0.6f, 0.62f, 1.0f), 1.0f, 1.0f));
-    const int wheel_mat = model.add_material(plain("valve_wheel", vec3(0.1f, 0.1f, 0.11f), 0.0f, 0.6f));
-    const int root = model.add_node("gas_cylinder", -1);
-    Node& n = model.node(root);
-    LatheOptions body;
-    body.segments = 32;
-    body.v_by_height = true;
-    body.v_scale = 1.0f / kCylinderHeight;
-    body.crease_degrees = 30.0f;
-    // Foot ring, body, domed shoulder, neck; uv u starts at +Z so the label (u 0.34..0.66) faces -Z... the
-    // lathe's u = 0.5 is at angle pi, i.e. the -Z side: rotate by pi so the label faces +Z (the model front).
-    std::vector<vec2> profile = {{0.0f, 0.02f}, {0.4f, 0.02f},    {0.43f, 0.0f},   {0.47f, 0.0f},
-                                 {0.47f, 0.1f}, {kRadius, 0.12f}, {kRadius, 1.55f}};
-    for (int k = 1; k <= 8; ++k) {
-        const float a = static_cast<float>(k) / 8.0f * (kPiF / 2.0f) * 0.92f;
-        profile.push_back({0.14f + (kRadius - 0.14f) * std::cos(a), 1.55f + 0.27f * std::sin(a)});
-    }
-    profile.insert(profile.end(), {{0.12f, 1.84f}, {0.0f, 1.84f}});
-    n.part(paint).append(lathe(profile, body), glm::rotate(mat4(1.0f), kPiF, vec3(0, 1, 0)));
-    // Valve: brass body, side outlet, spindle, hand wheel with spokes, safety cap ring.
-    n.part(brass).append(cylinder(0.1f, 0.1f, 16, 0.015f), at(vec3(0, 1.83f, 0)));
-    n.part(brass).append(rounded_box(vec3(0.12f, 0.1f, 0.12f), 0.02f, 1),
-                         at(vec3(0, 1.97f - 0.05f - 0.03f, 0)));
-    n.part(brass).append(cylinder(0.03f, 0.12f, 12, 0.005f), at(vec3(0.05f, 1.9f, 0)) * y_to_x());
-    n.part(brass).append(cylinder(0.04f, 0.03f, 12, 0.005f), at(vec3(0.16f, 1.9f, 0)) * y_to_x());
-    n.part(steel).append(cylinder(0.018f, 0.06f, 10), at(vec3(0, 1.94f, 0)));
-    n.part(wheel_mat).append(torus(0.075f, 0.012f, 20, 6), at(vec3(0, 1.985f, 0)));
-    for (int k = 0; k < 3; ++k)
-        n.part(wheel_mat).append(rounded_box(vec3(0.15f, 0.012f, 0.016f)),
-                                 at(vec3(0, 1.985f, 0)) * glm::rotate(mat4(1.0f),
-                                                                      static_cast<float>(k) * kPiF / 3.0f,
-                                                                      vec3(0, 1, 0)));
-    n.part(steel).append(tube(0.2f, 0.17f, 0.08f, 24), at(vec3(0, 1.76f, 0)));
-    return out.model(model);
+    // Built again under each coarser Detail for the levels of detail (Output::model_levels).
+    const auto build = [&] {
+        Model model("gas_cylinder");
+        const int paint =
+            model.add_material(textured("gas_cylinder_paint", "gas_cylinder", vec4(1.0f), 1.0f, 1.0f));
+        const int brass = model.add_material(plain("brass", vec3(0.85f, 0.66f, 0.3f), 1.0f, 0.3f));
+        const int steel =
+            model.add_material(textured("valve_steel", "metal", vec4(0.6f, 0.6f, 0.62f, 1.0f), 1.0f, 1.0f));
+        const int wheel_mat = model.add_material(plain("valve_wheel", vec3(0.1f, 0.1f, 0.11f), 0.0f, 0.6f));
+        const int root = model.add_node("gas_cylinder", -1);
+        Node& n = model.node(root);
+        LatheOptions body;
+        body.segments = 32;
+        body.v_by_height = true;
+        body.v_scale = 1.0f / kCylinderHeight;
+        body.crease_degrees = 30.0f;
+        // Foot ring, body, domed shoulder, neck; uv u starts at +Z so the label (u 0.34..0.66) faces -Z...
+        // the lathe's u = 0.5 is at angle pi, i.e. the -Z side: rotate by pi so the label faces +Z (the model
+        // front).
+        std::vector<vec2> profile = {{0.0f, 0.02f}, {0.4f, 0.02f},    {0.43f, 0.0f},   {0.47f, 0.0f},
+                                     {0.47f, 0.1f}, {kRadius, 0.12f}, {kRadius, 1.55f}};
+        for (int k = 1; k <= 8; ++k) {
+            const float a = static_cast<float>(k) / 8.0f * (kPiF / 2.0f) * 0.92f;
+            profile.push_back({0.14f + (kRadius - 0.14f) * std::cos(a), 1.55f + 0.27f * std::sin(a)});
+        }
+        profile.insert(profile.end(), {{0.12f, 1.84f}, {0.0f, 1.84f}});
+        n.part(paint).append(lathe(profile, body), glm::rotate(mat4(1.0f), kPiF, vec3(0, 1, 0)));
+        // Valve: brass body, side outlet, spindle, hand wheel with spokes, safety cap ring.
+        n.part(brass).append(cylinder(0.1f, 0.1f, 16, 0.015f), at(vec3(0, 1.83f, 0)));
+        n.part(brass).append(rounded_box(vec3(0.12f, 0.1f, 0.12f), 0.02f, 1),
+                             at(vec3(0, 1.97f - 0.05f - 0.03f, 0)));
+        n.part(brass).append(cylinder(0.03f, 0.12f, 12, 0.005f), at(vec3(0.05f, 1.9f, 0)) * y_to_x());
+        n.part(brass).append(cylinder(0.04f, 0.03f, 12, 0.005f), at(vec3(0.16f, 1.9f, 0)) * y_to_x());
+        n.part(steel).append(cylinder(0.018f, 0.06f, 10), at(vec3(0, 1.94f, 0)));
+        n.part(wheel_mat).append(torus(0.075f, 0.012f, 20, 6), at(vec3(0, 1.985f, 0)));
+        for (int k = 0; k < 3; ++k)
+            n.part(wheel_mat).append(rounded_box(vec3(0.15f, 0.012f, 0.016f)),
+                                     at(vec3(0, 1.985f, 0)) * glm::rotate(mat4(1.0f),
+                                                                          static_cast<float>(k) * kPiF / 3.0f,
+                                                                          vec3(0, 1, 0)));
+        n.part(steel).append(tube(0.2f, 0.17f, 0.08f, 24), at(vec3(0, 1.76f, 0)));
+        return model;
+    };
+    return out.model_levels(build);
 }
 
 } // namespace ks::assetgen

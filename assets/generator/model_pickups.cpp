@@ -105,14 +105,17 @@ Result<void> make_pickups(Output& out) {
     };
     for (const PickupStyle& s : styles) {
         KS_ASSETGEN_TRY(out.material(s.name, pickup_maps(s)));
-        Model model(s.name);
-        Material mat = textured(s.name, s.name, vec4(1.0f), 1.0f, 1.0f);
-        mat.emissive_texture = s.name + "_emissive";
-        mat.emissive = vec3(1.0f);
-        const int material = model.add_material(mat);
-        const int root = model.add_node("pickup", -1);
-        model.node(root).part(material).append(rounded_box(vec3(0.8f), 0.06f, 2, 1.0f, UvMode::PerFace));
-        KS_ASSETGEN_TRY(out.model(model));
+        const auto build = [&] {
+            Model model(s.name);
+            Material mat = textured(s.name, s.name, vec4(1.0f), 1.0f, 1.0f);
+            mat.emissive_texture = s.name + "_emissive";
+            mat.emissive = vec3(1.0f);
+            const int material = model.add_material(mat);
+            const int root = model.add_node("pickup", -1);
+            model.node(root).part(material).append(rounded_box(vec3(0.8f), 0.06f, 2, 1.0f, UvMode::PerFace));
+            return model;
+        };
+        KS_ASSETGEN_TRY(out.model_levels(build));
     }
     return ok();
 }

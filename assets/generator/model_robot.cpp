@@ -89,11 +89,9 @@ void add_painted(Mesh& dst, Mesh part, const mat4& place) {
     part.transform_uvs(vec2(1.0f), vec2(0.31f + p.x * 0.37f + p.z * 0.53f, 0.17f - p.y * 0.5f));
     dst.append(part, place);
 }
-} // namespace
 
-Result<void> make_robot(Output& out) {
-    KS_ASSETGEN_TRY(out.material("robot", robot_paint()));
-    KS_ASSETGEN_TRY(out.texture("robot_decals_basecolor", robot_decals(out.font()), PngChannels::Rgb));
+// The robot's geometry at the thread's Detail (shapes.h): its levels of detail are this run again.
+Model robot_model() {
     Model model("robot");
     const int paint = model.add_material(textured("robot_paint", "robot", vec4(1.0f), 1.0f, 1.0f));
     // Body parts tile the paint map once per 2 units so panel seams stay sparse on small parts.
@@ -235,8 +233,14 @@ Result<void> make_robot(Output& out) {
                                         at(vec3(0.3f, 0.31f, 0)));
     model.node(head).part(visor).append(capsule(0.035f, 0.1f, 8, 3),
                                         at(vec3(-0.12f, 0.62f, 0.18f))); // beacon; top = 3.0
+    return model;
+}
+} // namespace
 
-    return out.model(model);
+Result<void> make_robot(Output& out) {
+    KS_ASSETGEN_TRY(out.material("robot", robot_paint()));
+    KS_ASSETGEN_TRY(out.texture("robot_decals_basecolor", robot_decals(out.font()), PngChannels::Rgb));
+    return out.model_levels(robot_model);
 }
 
 } // namespace ks::assetgen

@@ -1,6 +1,12 @@
 #include "output.h"
 
+#include "shapes.h"
+
 #include "audio/wav.h"
+#include "core/files.h"
+
+#include <cmath>
+#include <cstdio>
 
 namespace ks::assetgen {
 namespace fs = std::filesystem;
@@ -51,6 +57,52 @@ Result<void> Output::model(const Model& model) {
     written_.push_back(folder / (model.name() + ".gltf"));
     written_.push_back(folder / (model.name() + ".bin"));
     models_.push_back(model);
+    return ok();
+}
+
+namespace {
+// A deviation in the sidecar: rounded up to 1e-5 units, so the written figure still bounds it, and printed
+// the same by every build of the generator.
+std::string deviation_text(float deviation) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.5f", std::ceil(static_cast<double>(deviation) * 1e5 - 1e-6) / 1e5);
+    return text;
+}
+} // namespace
+
+Result<void> Output::model_levels(const std::function<Model()>& build) {
+    Model full = build();
+    const std::string name = full.name();
+    KS_ASSETGEN_TRY(model(full));
+    std::size_t kept_triangles = full.triangle_count();
+    std::string levels = "    {\"file\": \"" + name +
+                         ".gltf\", \"deviation\": 0, \"triangles\": " + std::to_string(kept_triangles) + "}";
+    int written_levels = 0;
+    const auto [low, high] = full.bounds();
+    const float diagonal = glm::length(high - low);
+    for (const float fraction : kLevelTolerances) {
+        Model coarse = [&] {
+            const DetailScope scope(Detail{fraction * diagonal});
+            return build();
+        }();
+        const std::size_t triangles = coarse.triangle_count();
+        if (static_cast<double>(triangles) >= kLevelMinSaving * static_cast<double>(kept_triangles)) continue;
+        kept_triangles = triangles;
+        coarse.set_name(name + "_lod" + std::to_string(++written_levels));
+        const fs::path folder = root_ / "models";
+        KS_ASSETGEN_TRY(write_gltf(coarse, folder));
+        written_.push_back(folder / (coarse.name() + ".gltf"));
+        written_.push_back(folder / (coarse.name() + ".bin"));
+        levels += ",\n    {\"file\": \"" + coarse.name() +
+                  ".gltf\", \"deviation\": " + deviation_text(coarse.deviation()) +
+                  ", \"triangles\": " + std::to_string(triangles) + "}";
+    }
+    const fs::path sidecar = root_ / "models" / (name + ".lods.json");
+    const std::string text =
+        "{\n  \"format\": \"killswitch-model-lods\",\n  \"version\": 1,\n  \"model\": \"" + name +
+        ".gltf\",\n  \"levels\": [\n" + levels + "\n  ]\n}\n";
+    if (auto written = files::write_atomic(sidecar, text); !written) return written.error();
+    written_.push_back(sidecar);
     return ok();
 }
 

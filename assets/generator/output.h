@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <optional>
 #include <set>
@@ -48,6 +49,12 @@ class Output {
     // Writes <name>_basecolor, _normal, _orm (+ _emissive, _height when present).
     Result<void> material(const std::string& name, const MaterialMaps& maps);
     Result<void> model(const Model& model);
+    // A model with its levels of detail: `build` (one recipe's geometry) run in full and then under a Detail
+    // of each of kLevelTolerances (shapes.h) times its bounds' diagonal. A level is kept when it has under
+    // kLevelMinSaving of the last kept one's triangles and written as <name>_lod<k>.gltf|.bin;
+    // <name>.lods.json lists the levels with each one's deviation bound (Model::deviation, rounded up) and
+    // triangle count (docs/assets.md).
+    Result<void> model_levels(const std::function<Model()>& build);
     // Writes DIR/sounds/<name>.wav: 16-bit PCM, mono, 48 kHz; unless the name is one of the designer's
     // sounds, whose file is left as it is.
     Result<void> sound(const std::string& name, std::vector<std::int16_t> samples);

@@ -15,6 +15,30 @@ float dcos(double a) {
     return static_cast<float>(std::cos(a));
 }
 
+thread_local Detail g_detail;
+
+// How far inside its circle a chord spanning `angle` radians of a circle of `radius` comes (its sag).
+float chord_sag(double radius, double angle) {
+    return static_cast<float>(radius * (1.0 - std::cos(0.5 * angle)));
+}
+// The fewest sides (3 up to `designed`) of a polygon inscribed in a circle of `radius` that sags at most
+// `budget` inside it; `designed` when the budget is 0 (full detail).
+int segments_within(int designed, double radius, double budget) {
+    if (budget <= 0.0) return designed;
+    for (int m = 3; m < designed; ++m)
+        if (chord_sag(radius, 2.0 * kPiD / m) <= budget) return m;
+    return designed;
+}
+// The fewest steps (1 up to `designed`) over an arc of `arc` radians of a circle of `radius` whose chords,
+// with the designed ones', stay within `budget` of each other (each within its sag of the circle).
+int arc_steps_within(int designed, double radius, double arc, double budget) {
+    if (budget <= 0.0) return designed;
+    const float designed_sag = chord_sag(radius, arc / designed);
+    for (int k = 1; k < designed; ++k)
+        if (chord_sag(radius, arc / k) + designed_sag <= budget) return k;
+    return designed;
+}
+
 struct Face {
     vec3 n, a, b; // outward normal, image-right axis, image-up axis (a x b = n)
 };
@@ -36,11 +60,28 @@ std::vector<float> face_stops(float half, float inner, float radius, int segment
         stops.push_back(inner + radius * static_cast<float>(std::tan(k * kPiD / (4.0 * segments))));
     return stops;
 }
-} // namespace
 
-Mesh rounded_box(vec3 size, float radius, int segments, float uv_scale, UvMode mode) {
+// How far a rounded box's facets lie inside its ideal surface (the inner box grown by `radius`): each
+// triangle's vertices are inner-box points plus radius times their normals, and every point of the triangle
+// is at least radius * min_i(n_i . u) from that centre along u, the mean of the normals, so the triangle
+// sits at most radius * (1 - min_i n_i . u) inside the rounding (and the rounding over it as far outside).
+float rounded_facet_deviation(const Mesh& mesh, float radius) {
+    float worst = 0.0f;
+    for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+        const vec3 n[3] = {mesh.vertices[mesh.indices[i]].normal, mesh.vertices[mesh.indices[i + 1]].normal,
+                           mesh.vertices[mesh.indices[i + 2]].normal};
+        const vec3 sum = n[0] + n[1] + n[2];
+        const float len = glm::length(sum);
+        if (len <= 0.0f) continue;
+        const vec3 u = sum / len;
+        const float least = std::min({glm::dot(n[0], u), glm::dot(n[1], u), glm::dot(n[2], u)});
+        worst = std::max(worst, radius * (1.0f - least));
+    }
+    return worst;
+}
+
+Mesh build_rounded_box(vec3 size, float radius, int segments, float uv_scale, UvMode mode) {
     const vec3 half = size * 0.5f;
-    radius = std::clamp(radius, 0.0f, std::min({half.x, half.y, half.z}) * 0.98f);
     const vec3 inner = half - vec3(radius);
     Mesh mesh;
     for (const Face& f : kFaces) {
@@ -74,11 +115,51 @@ Mesh rounded_box(vec3 size, float radius, int segments, float uv_scale, UvMode m
     mesh.compute_tangents();
     return mesh;
 }
+} // namespace
 
-Mesh lathe(const std::vector<vec2>& profile, const LatheOptions& o) {
+const Detail& current_detail() {
+    return g_detail;
+}
+
+DetailScope::DetailScope(const Detail& detail) : previous_(g_detail) {
+    g_detail = detail;
+}
+
+DetailScope::~DetailScope() {
+    g_detail = previous_;
+}
+
+Mesh rounded_box(vec3 size, float radius, int segments, float uv_scale, UvMode mode) {
+    const vec3 half = size * 0.5f;
+    radius = std::clamp(radius, 0.0f, std::min({half.x, half.y, half.z}) * 0.98f);
+    const float budget = g_detail.tolerance;
+    if (radius <= 0.0f || segments <= 0 || budget <= 0.0f)
+        return build_rounded_box(size, radius, segments, uv_scale, mode);
+    const float full =
+        rounded_facet_deviation(build_rounded_box(size, radius, segments, uv_scale, mode), radius);
+    for (int steps = 0; steps < segments; ++steps) {
+        // Sharp edges (no steps): the box's corners stand (sqrt 3 - 1) radius off the rounding, the farthest
+        // apart the two surfaces come; faces keep their planar texture mapping.
+        Mesh mesh = build_rounded_box(size, steps == 0 ? 0.0f : radius, steps, uv_scale, mode);
+        const float own =
+            steps == 0 ? radius * (std::sqrt(3.0f) - 1.0f) : rounded_facet_deviation(mesh, radius);
+        if (own + full <= budget) {
+            mesh.deviation = own + full;
+            return mesh;
+        }
+    }
+    return build_rounded_box(size, radius, segments, uv_scale, mode);
+}
+
+namespace {
+// lathe() with at most `budget` of deviation to spend on fewer segments around the axis.
+Mesh lathe_within(const std::vector<vec2>& profile, const LatheOptions& o, double budget) {
     Mesh mesh;
     if (profile.size() < 2) return mesh;
-    const int segs = std::max(3, o.segments);
+    float widest = 0.0f;
+    for (const vec2& p : profile) widest = std::max(widest, p.x);
+    const int designed = std::max(3, o.segments);
+    const int segs = segments_within(designed, widest, budget);
     float y_top = profile[0].y;
     for (const vec2& p : profile) y_top = std::max(y_top, p.y);
 
@@ -124,12 +205,31 @@ Mesh lathe(const std::vector<vec2>& profile, const LatheOptions& o) {
         }
     }
     mesh.compute_tangents();
+    // Each quad between two rings is planar, so a point at angle phi and profile radius r lies at r * f(phi)
+    // from the axis, f the polygon's radial factor (between cos(pi / segments) and 1) at either detail: the
+    // two surfaces differ by at most the coarser polygon's sag at the widest radius.
+    if (segs < designed) mesh.deviation = chord_sag(widest, 2.0 * kPiD / segs);
     return mesh;
+}
+} // namespace
+
+Mesh lathe(const std::vector<vec2>& profile, const LatheOptions& o) {
+    return lathe_within(profile, o, g_detail.tolerance);
 }
 
 Mesh cylinder(float radius, float height, int segments, float bevel, LatheOptions o) {
     o.segments = segments;
     bevel = std::clamp(bevel, 0.0f, std::min(radius, height * 0.5f) * 0.9f);
+    double budget = g_detail.tolerance;
+    // Without its rim bevels the profile's corners stand bevel / sqrt 2 off the chamfers (the wall's texture,
+    // mapped by arc length, slides by (sqrt 2 - 1) bevel, less): dropped when that is at most half the
+    // budget.
+    const float bevel_deviation = bevel / std::sqrt(2.0f);
+    const bool drop_bevel = bevel > 0.0f && budget > 0.0 && bevel_deviation <= 0.5 * budget;
+    if (drop_bevel) {
+        budget -= bevel_deviation;
+        bevel = 0.0f;
+    }
     std::vector<vec2> profile = {{0, 0}};
     if (bevel > 0.0f) {
         profile.insert(
@@ -139,7 +239,9 @@ Mesh cylinder(float radius, float height, int segments, float bevel, LatheOption
         profile.insert(profile.end(), {{radius, 0}, {radius, height}});
     }
     profile.push_back({0, height});
-    return lathe(profile, o);
+    Mesh mesh = lathe_within(profile, o, budget);
+    if (drop_bevel) mesh.deviation += bevel_deviation;
+    return mesh;
 }
 
 Mesh tube(float outer, float inner, float height, int segments, LatheOptions o) {
@@ -150,6 +252,13 @@ Mesh tube(float outer, float inner, float height, int segments, LatheOptions o) 
 }
 
 Mesh capsule(float radius, float height, int segments, int cap_rings) {
+    const int designed_rings = std::max(1, cap_rings);
+    // Half the budget for the caps' arcs (each within its chords' sag of the circle), the rest around.
+    cap_rings = arc_steps_within(designed_rings, radius, 0.5 * kPiD, 0.5 * g_detail.tolerance);
+    const float arc_deviation =
+        cap_rings < designed_rings
+            ? chord_sag(radius, 0.5 * kPiD / cap_rings) + chord_sag(radius, 0.5 * kPiD / designed_rings)
+            : 0.0f;
     std::vector<vec2> profile;
     const float straight = std::max(0.0f, height - 2.0f * radius);
     for (int i = 0; i <= cap_rings; ++i) {
@@ -164,10 +273,18 @@ Mesh capsule(float radius, float height, int segments, int cap_rings) {
     profile.back().x = 0.0f;
     LatheOptions o;
     o.segments = segments;
-    return lathe(profile, o);
+    Mesh mesh = lathe_within(profile, o, g_detail.tolerance - arc_deviation);
+    mesh.deviation += arc_deviation;
+    return mesh;
 }
 
 Mesh torus(float major_radius, float minor_radius, int segments, int rings) {
+    const int designed_rings = std::max(3, rings);
+    rings = std::max(3, arc_steps_within(designed_rings, minor_radius, 2.0 * kPiD, 0.5 * g_detail.tolerance));
+    const float arc_deviation = rings < designed_rings
+                                    ? chord_sag(minor_radius, 2.0 * kPiD / rings) +
+                                          chord_sag(minor_radius, 2.0 * kPiD / designed_rings)
+                                    : 0.0f;
     std::vector<vec2> profile;
     for (int i = 0; i <= rings; ++i) {
         const double a = -kPiD / 2 + 2.0 * kPiD * i / rings;
@@ -176,7 +293,9 @@ Mesh torus(float major_radius, float minor_radius, int segments, int rings) {
     LatheOptions o;
     o.segments = segments;
     o.crease_degrees = 80.0f;
-    return lathe(profile, o);
+    Mesh mesh = lathe_within(profile, o, g_detail.tolerance - arc_deviation);
+    mesh.deviation += arc_deviation;
+    return mesh;
 }
 
 Mesh frustum(float r0, float r1, float height, int segments, LatheOptions o) {

@@ -8,6 +8,36 @@
 
 namespace ks::assetgen {
 
+// How finely the shapes below are tessellated. The default is each model as designed (level 0); a model's
+// coarser levels of detail (Output::model_levels) are the same recipe run again under a Detail with a
+// tolerance: every shape then takes the fewest segments around its axis, the fewest rounded steps on its
+// edges (or sharp edges) and drops the rim bevels that keep it within the tolerance of its full-detail self
+// (in its own units), and sets Mesh::deviation to that bound. Parts, nodes, materials and texture mapping
+// stay as designed (docs/assets.md, "Levels of detail").
+struct Detail {
+    float tolerance = 0.0f; // 0: full detail
+};
+// The coarser levels' tolerances as fractions of the model's bounds' diagonal, finest first: a level is
+// drawn while its error covers at most about a pixel, so while the model is under about 200, 60 and 20
+// pixels across. kLevelMinSaving: a level is kept only when it has fewer than this fraction of the last
+// kept level's triangles.
+inline constexpr float kLevelTolerances[] = {0.005f, 0.0167f, 0.05f};
+inline constexpr double kLevelMinSaving = 0.85;
+
+// The Detail the shapes read on this thread (the default outside any DetailScope).
+const Detail& current_detail();
+// Sets the thread's Detail while it lives (scopes nest; the previous one comes back).
+class DetailScope {
+  public:
+    explicit DetailScope(const Detail& detail);
+    ~DetailScope();
+    DetailScope(const DetailScope&) = delete;
+    DetailScope& operator=(const DetailScope&) = delete;
+
+  private:
+    Detail previous_;
+};
+
 enum class UvMode {
     World,   // planar per face, `uv_scale` repeats per world unit (tiling materials)
     PerFace, // each face spans 0..1 (decals and icons)

@@ -191,6 +191,8 @@ void measure(Measurement& m, shell::OffscreenContext& ctx, render::AssetLibrary&
     if (!shot_path.empty()) { // the start view, for side-by-side comparisons of the variants
         render::SceneFrame frame;
         frame.camera = start;
+        scene.set_view(start, height); // the props' levels of detail for this view
+        scene.emit(instances, lights, &casters);
         frame.shadow_casters = &casters;
         frame.environment = scene.environment();
         frame.instances = &instances;
@@ -331,17 +333,14 @@ int run(int argc, const char* const* argv) {
         v.fast_level_shader = false, v.doors_occlude = false;
     });
     with("full, scale 0.5", [](Variant& v) { v.quality = Q::Full, v.render_scale = 0.5f; });
-    if (std::ranges::any_of(level->entities,
-                            [](const level::Entity& e) { return e.type() == level::EntityType::Model; })) {
-        // Designers' models at their levels of detail and in full at every distance (issue 27 item 4).
-        with("fast, scale 0.5, no model LODs",
-             [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.model_lods = false; });
-        with("fast, scale 1, no model LODs",
-             [](Variant& v) { v.quality = Q::Fast, v.render_scale = 1.0f, v.model_lods = false; });
-        with("full, scale 1, model LODs", [](Variant& v) { v.quality = Q::Full, v.render_scale = 1.0f; });
-        with("full, scale 1, no model LODs",
-             [](Variant& v) { v.quality = Q::Full, v.render_scale = 1.0f, v.model_lods = false; });
-    }
+    // Every prop at its levels of detail (the shipped models' from the asset generator, designers' models'
+    // from meshoptimizer) against every prop in full at every distance.
+    with("fast, scale 0.5, no model LODs",
+         [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.model_lods = false; });
+    with("fast, scale 1, no model LODs",
+         [](Variant& v) { v.quality = Q::Fast, v.render_scale = 1.0f, v.model_lods = false; });
+    with("full, scale 1, no model LODs",
+         [](Variant& v) { v.quality = Q::Full, v.render_scale = 1.0f, v.model_lods = false; });
     if (!cl->has("quick")) {
         // The full path's features, one at a time (session 1's table).
         auto full = [&](const char* name, auto change) {

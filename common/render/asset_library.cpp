@@ -1,8 +1,12 @@
 #include "render/asset_library.h"
 
+#include "core/files.h"
 #include "core/log.h"
 #include "modelio/model_files.h"
 #include "render/imported_model.h"
+#include "render/model_lod_list.h"
+
+#include <cmath>
 
 namespace ks::render {
 
@@ -10,13 +14,57 @@ namespace fs = std::filesystem;
 
 AssetLibrary::AssetLibrary(fs::path assets_root) : root_(std::move(assets_root)) {}
 
-const Model& AssetLibrary::model(const std::string& name_or_path) {
-    if (auto it = models_.find(name_or_path); it != models_.end()) return *it->second;
+namespace {
+// Adds the coarser levels `path`'s level list names to `levels` (holding the model itself), as far as they
+// load with the model's nodes.
+void add_listed_levels(const fs::path& path, ModelLevels& levels, TextureCache& textures,
+                       int& next_material_id) {
+    const fs::path list_path = model_lods_path(path);
+    std::error_code ec;
+    if (!fs::exists(list_path, ec)) return;
+    const Model& full = levels.full();
+    const float diagonal = glm::length(full.bounds.max - full.bounds.min);
+    if (full.placeholder || !(diagonal > 0.0f) || !std::isfinite(diagonal)) return;
+    auto text = files::read_text(list_path);
+    auto list = text ? parse_model_lods(*text, list_path.string(), path.filename().string())
+                     : Result<std::vector<ModelLodEntry>>(text.error());
+    if (!list) {
+        log::warn(list.error().str(), "; drawing ", path.string(), " without its levels of detail");
+        return;
+    }
+    const std::vector<std::string> nodes = full.node_names();
+    for (std::size_t i = 1; i < list->size(); ++i) {
+        const ModelLodEntry& entry = (*list)[i];
+        const fs::path level_path = path.parent_path() / entry.file;
+        auto level = load_model(level_path, textures, next_material_id);
+        if (level->placeholder) { // load_model has warned, naming the file
+            log::warn(list_path.string(), ": level ", i, " (", entry.file,
+                      ") cannot be drawn; the model keeps its finer levels only");
+            return;
+        }
+        if (level->node_names() != nodes) {
+            log::warn(
+                level_path.string(), ": its nodes differ from ", path.filename().string(),
+                "'s, so a pose could not move it; the model keeps its finer levels only (regenerate the "
+                "models: ks_assetgen --out assets)");
+            return;
+        }
+        levels.levels.push_back(std::move(level));
+        levels.relative_errors.push_back(entry.deviation / diagonal);
+    }
+}
+} // namespace
+
+const ModelLevels& AssetLibrary::model_levels(const std::string& name_or_path) {
+    if (auto it = models_.find(name_or_path); it != models_.end()) return it->second;
     fs::path path(name_or_path);
     bool is_path = path.has_extension();
     if (!is_path) path = root_ / "models" / (name_or_path + ".gltf");
-    auto model = load_model(path, textures_, next_material_id_);
-    return *models_.emplace(name_or_path, std::move(model)).first->second;
+    ModelLevels levels;
+    levels.levels.push_back(load_model(path, textures_, next_material_id_));
+    levels.relative_errors.push_back(0.0f);
+    add_listed_levels(path, levels, textures_, next_material_id_);
+    return models_.emplace(name_or_path, std::move(levels)).first->second;
 }
 
 const ModelLevels& AssetLibrary::level_model(const std::string& file) {

@@ -19,7 +19,12 @@ class AssetLibrary {
 
     TextureCache& textures() { return textures_; }
     // A model by name or by path (ending in .gltf/.glb/.obj); a placeholder cube when it cannot load.
-    const Model& model(const std::string& name_or_path);
+    const Model& model(const std::string& name_or_path) { return model_levels(name_or_path).full(); }
+    // The same with its levels of detail: those its level list (model_lod_list.h: robot.lods.json beside
+    // robot.gltf, written by the asset generator) names, each with the same nodes as the model. No list:
+    // one level. A list or a level that cannot be read, or a level with other nodes, is one warning naming
+    // the file, and the model is drawn with the levels before it.
+    const ModelLevels& model_levels(const std::string& name_or_path);
     // A model entity's file (level::ModelProps::file) read through modelio, with its levels of detail:
     // rebuilt when the file changed on disk since (modelio's import cache says so); the marker cube (one
     // level), and one warning, when it cannot be read.
@@ -33,7 +38,7 @@ class AssetLibrary {
     std::filesystem::path root_;
     TextureCache textures_;
     int next_material_id_ = 1;
-    std::map<std::string, std::unique_ptr<Model>> models_;
+    std::map<std::string, ModelLevels> models_;
     std::map<std::string, std::unique_ptr<Material>> surfaces_;
     struct LevelModel {
         std::shared_ptr<const void> source; // the import it was built from; null for the marker

@@ -194,11 +194,12 @@ std::vector<std::vector<Vec3>> surface_albedo(const std::vector<SolidGeometry>& 
 }
 } // namespace
 
-LevelScene::Prop LevelScene::make_prop(const level::Entity& e, const Model* model, const Mat4& root) {
+LevelScene::Prop LevelScene::make_prop(const level::Entity& e, const ModelLevels& levels, const Mat4& root) {
     Prop p;
     p.entity_id = e.id;
     p.type = e.type();
-    p.model = model;
+    p.model = &levels.full();
+    p.levels = &levels;
     p.root = root;
     p.ground = e.position.y;
     return p;
@@ -226,7 +227,7 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
             break;
         case EntityType::Door: {
             const auto& d = e.as<level::DoorProps>();
-            Prop p = make_prop(e, &assets.model("door"), level::door_model_matrix(e));
+            Prop p = make_prop(e, assets.model_levels("door"), level::door_model_matrix(e));
             p.door_open = d.open ? 1.0f : 0.0f;
             p.door = d;
             scene->props_.push_back(p);
@@ -234,7 +235,7 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
         }
         case EntityType::FloorLight: {
             const auto& f = e.as<level::FloorLightProps>();
-            Prop p = make_prop(e, &assets.model("floor_light"), level::floor_light_model_matrix(e));
+            Prop p = make_prop(e, assets.model_levels("floor_light"), level::floor_light_model_matrix(e));
             p.light_on = f.light.on;
             p.light = light_from(f.light, Light::Type::Spot);
             p.light.cos_outer = std::cos(radians(f.cone_angle));
@@ -251,7 +252,7 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
         }
         case EntityType::TopLight: {
             const auto& t = e.as<level::TopLightProps>();
-            Prop p = make_prop(e, &assets.model("top_light"), level::top_light_model_matrix(e));
+            Prop p = make_prop(e, assets.model_levels("top_light"), level::top_light_model_matrix(e));
             p.light_on = t.light.on;
             p.light = light_from(t.light, Light::Type::Point);
             p.light.position = e.position - Vec3(0.0f, t.hang, 0.0f);
@@ -260,32 +261,30 @@ std::unique_ptr<LevelScene> LevelScene::build(const level::Level& level, AssetLi
         }
         case EntityType::Robot:
             // The same placement as the game view's robots (tests/runtime/test_play_views.cpp).
-            scene->props_.push_back(make_prop(e, &assets.model("robot"),
+            scene->props_.push_back(make_prop(e, assets.model_levels("robot"),
                                               level::robot_model_matrix(e.position, radians(e.rotation.x))));
             break;
         case EntityType::Pickup: {
             const auto& k = e.as<level::PickupProps>();
             const Mat4 root = level::pickup_model_matrix(level::pickup_centre(e.position), e.orientation());
-            scene->props_.push_back(make_prop(e, &assets.model("pickup_" + k.kind.value), root));
+            scene->props_.push_back(make_prop(e, assets.model_levels("pickup_" + k.kind.value), root));
             break;
         }
         case EntityType::GasCylinder: {
             const auto& g = e.as<level::GasCylinderProps>();
             const Mat4 root = level::gas_cylinder_model_matrix(level::gas_cylinder_centre(e.position, g),
                                                                radians(e.rotation.x), g);
-            scene->props_.push_back(make_prop(e, &assets.model("gas_cylinder"), root));
+            scene->props_.push_back(make_prop(e, assets.model_levels("gas_cylinder"), root));
             break;
         }
         case EntityType::ControlPanel: {
             scene->props_.push_back(
-                make_prop(e, &assets.model("control_panel"), level::control_panel_model_matrix(e)));
+                make_prop(e, assets.model_levels("control_panel"), level::control_panel_model_matrix(e)));
             break;
         }
         case EntityType::Model: { // a designer's model; the marker cube when its file cannot be read
-            const ModelLevels& levels = assets.level_model(e.as<level::ModelProps>().file);
-            Prop p = make_prop(e, &levels.full(), level::model_matrix(e));
-            p.levels = &levels;
-            scene->props_.push_back(p);
+            scene->props_.push_back(
+                make_prop(e, assets.level_model(e.as<level::ModelProps>().file), level::model_matrix(e)));
             break;
         }
         case EntityType::Sound:   // heard, not seen: the editor draws its own marker
@@ -421,34 +420,18 @@ void LevelScene::set_view(const geometry::Camera& camera, int viewport_height) {
 
 int LevelScene::model_lod(int entity_id) const {
     for (const Prop& p : props_)
-        if (p.entity_id == entity_id && p.levels) return p.lod;
+        if (p.entity_id == entity_id) return p.lod;
     return -1;
 }
 
 int LevelScene::coarse_model_count() const {
     int n = 0;
-    for (const Prop& p : props_) n += p.levels && p.lod > 0 ? 1 : 0;
+    for (const Prop& p : props_) n += p.lod > 0 ? 1 : 0;
     return n;
 }
 
-// The prop's bounds' diagonal on screen, in pixels, against each level's error (modelio::pick_lod).
 void LevelScene::pick_model_lod(Prop& p) const {
-    if (!model_lods_ || !view_ || p.levels->levels.size() < 2) {
-        p.lod = 0;
-        return;
-    }
-    const geometry::Aabb box = geometry::transform_aabb(p.levels->full().bounds, p.root);
-    const float diagonal = glm::length(box.max - box.min);
-    float pixels = 0.0f;
-    if (view_->ortho_height > 0.0f) {
-        pixels = diagonal / view_->ortho_height * static_cast<float>(view_height_);
-    } else {
-        const float distance = glm::length(box.center() - view_->position) - 0.5f * diagonal;
-        pixels = distance <= 0.0f ? std::numeric_limits<float>::infinity()
-                                  : diagonal / (2.0f * distance * std::tan(0.5f * view_->fov_y)) *
-                                        static_cast<float>(view_height_);
-    }
-    p.lod = modelio::pick_lod(p.levels->relative_errors, pixels, p.lod);
+    p.lod = model_lods_ && view_ ? pick_model_level(*p.levels, p.root, *view_, view_height_, p.lod) : 0;
 }
 
 void LevelScene::emit(std::vector<MeshInstance>& instances, std::vector<Light>& lights,
@@ -472,11 +455,13 @@ void LevelScene::emit(std::vector<MeshInstance>& instances, std::vector<Light>& 
     for (auto& p : props_) {
         const bool is_light = p.type == EntityType::FloorLight || p.type == EntityType::TopLight;
         const std::size_t first = instances.size();
+        pick_model_lod(p);
+        const Model& model = p.levels->level(p.lod); // every level has the full model's nodes
         if (p.type == EntityType::Door) {
             // Slide the leaves: door_l toward +x, door_r toward -x (the asset convention).
-            if (pose_.local.size() != p.model->nodes.size()) pose_ = p.model->rest_pose();
-            for (size_t i = 0; i < p.model->nodes.size(); ++i) pose_.local[i] = p.model->nodes[i].local;
-            int l = p.model->find_node("door_l"), r = p.model->find_node("door_r");
+            if (pose_.local.size() != model.nodes.size()) pose_ = model.rest_pose();
+            for (size_t i = 0; i < model.nodes.size(); ++i) pose_.local[i] = model.nodes[i].local;
+            int l = model.find_node("door_l"), r = model.find_node("door_r");
             const float shift = level::door_model_leaf_shift(p.door, p.door_open);
             if (l >= 0)
                 pose_.local[size_t(l)] =
@@ -484,17 +469,13 @@ void LevelScene::emit(std::vector<MeshInstance>& instances, std::vector<Light>& 
             if (r >= 0)
                 pose_.local[size_t(r)] =
                     glm::translate(Mat4(1.0f), Vec3(-shift, 0, 0)) * pose_.local[size_t(r)];
-            p.model->emit(p.root, pose_, scratch_, instances);
-            if (doors_occlude_) mark_door_leaves(*p.model, l, r, first, instances);
+            model.emit(p.root, pose_, scratch_, instances);
+            if (doors_occlude_) mark_door_leaves(model, l, r, first, instances);
         } else if (p.pose) {
-            p.model->emit(p.root, *p.pose, scratch_, instances);
-        } else if (p.levels) {
-            pick_model_lod(p);
-            p.levels->levels[static_cast<std::size_t>(p.lod)]->emit(p.root, scratch_, instances);
+            model.emit(p.root, *p.pose, scratch_, instances);
         } else {
             // Light fixtures glow with their light; they cast no sun shadow (thin stands, lamp heads).
-            p.model->emit(p.root, scratch_, instances, is_light ? (p.light_on ? 1.5f : 0.0f) : 1.0f,
-                          !is_light);
+            model.emit(p.root, scratch_, instances, is_light ? (p.light_on ? 1.5f : 0.0f) : 1.0f, !is_light);
         }
         if (is_light && p.light_on) lights.push_back(p.light);
         // What the game moves (robots, pickups, gas cylinders) casts contact shadows, as the game's view

@@ -67,12 +67,13 @@ class LevelScene {
     void set_pose(int entity_id, const ModelPose* pose);
     // Door leaves are emitted as occluders (MeshInstance::occluder) unless this is off (benchmarks).
     void set_doors_occlude(bool on) { doors_occlude_ = on; }
-    // The view the next emit() draws for: a designer's model is drawn at the level of detail its size there
-    // asks for (modelio::pick_lod, on `viewport_height` pixels; each prop remembers its level for the
-    // hysteresis). Without a view, or with LODs off (benchmarks), every model is drawn in full.
+    // The view the next emit() draws for: every prop's model (a designer's, or a shipped one with the asset
+    // generator's levels) is drawn at the level of detail its size there asks for (pick_model_level, on
+    // `viewport_height` pixels; each prop remembers its level for the hysteresis). Without a view, or with
+    // LODs off (benchmarks), every model is drawn in full.
     void set_view(const geometry::Camera& camera, int viewport_height);
     void set_model_lods(bool on) { model_lods_ = on; }
-    // The level of detail prop `entity_id` was last emitted at (0: full; -1: no such model prop).
+    // The level of detail prop `entity_id` was last emitted at (0: full; -1: no such prop).
     int model_lod(int entity_id) const;
     // How many model props the last emit() drew at a coarser level than their full model.
     int coarse_model_count() const;
@@ -117,14 +118,14 @@ class LevelScene {
         bool light_on = true;
         float door_open = 0.0f;
         const ModelPose* pose = nullptr;     // set_pose
-        const ModelLevels* levels = nullptr; // a designer's model: its levels of detail
+        const ModelLevels* levels = nullptr; // its levels of detail (model: the full one)
         int lod = 0;                         // the level emitted last
         float ground = 0.0f;                 // the entity's height: the floor it stands on
         level::DoorProps door;               // for doors: the leaves slide as level::door_leaf_centre says
         Light light;                         // for floor/top lights
         int bake_light = -1;                 // its index in the light bake
     };
-    static Prop make_prop(const level::Entity& e, const Model* model, const Mat4& root);
+    static Prop make_prop(const level::Entity& e, const ModelLevels& levels, const Mat4& root);
     // background_bake: the cached bake, or the direct light now and pending_bake_ set.
     void restore_or_start_bake(const std::vector<BakeSurface>& surfaces, const BakeSettings& settings);
     std::vector<Surface> surfaces_;

@@ -2,6 +2,7 @@
 
 #include "core/log.h"
 #include "modelio/assimp_material.h"
+#include "modelio/model_lod.h"
 #include "render/model_material.h"
 #include "render/scene.h"
 #include "render/texture_cache.h"
@@ -10,7 +11,10 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
+#include <limits>
 
 namespace ks::render {
 
@@ -62,6 +66,26 @@ void Model::emit(const Mat4& root, std::vector<Mat4>& scratch, std::vector<MeshI
     // The rest pose without building a ModelPose: node_transforms falls back to each node's rest transform.
     static const ModelPose kRest;
     emit(root, kRest, scratch, out, emissive_scale, casts_shadow);
+}
+
+const Model& ModelLevels::level(int index) const {
+    return *levels[static_cast<std::size_t>(std::clamp(index, 0, static_cast<int>(levels.size()) - 1))];
+}
+
+float model_pixels(const Model& model, const Mat4& root, const geometry::Camera& view, int viewport_height) {
+    const geometry::Aabb box = geometry::transform_aabb(model.bounds, root);
+    const float diagonal = glm::length(box.max - box.min);
+    if (view.ortho_height > 0.0f) return diagonal / view.ortho_height * static_cast<float>(viewport_height);
+    const float distance = glm::length(box.center() - view.position) - 0.5f * diagonal;
+    if (distance <= 0.0f) return std::numeric_limits<float>::infinity();
+    return diagonal / (2.0f * distance * std::tan(0.5f * view.fov_y)) * static_cast<float>(viewport_height);
+}
+
+int pick_model_level(const ModelLevels& levels, const Mat4& root, const geometry::Camera& view,
+                     int viewport_height, int current) {
+    if (levels.levels.size() < 2) return 0;
+    return modelio::pick_lod(levels.relative_errors, model_pixels(levels.full(), root, view, viewport_height),
+                             current);
 }
 
 namespace {

@@ -1,5 +1,7 @@
 #include "render/texture_disk_cache.h"
 
+#include "render/window_target.h"
+
 #include <epoxy/gl.h>
 
 #include <algorithm>
@@ -14,11 +16,6 @@ constexpr int kMaxSize = 16384; // no texture is larger; a bigger stated size is
 std::size_t level_bytes(int width, int height, int level) {
     return static_cast<std::size_t>(std::max(1, width >> level)) *
            static_cast<std::size_t>(std::max(1, height >> level)) * 4;
-}
-
-std::string gl_string(GLenum name) {
-    const GLubyte* s = glGetString(name);
-    return s ? reinterpret_cast<const char*>(s) : "";
 }
 } // namespace
 
@@ -136,7 +133,7 @@ void ChainWriter::run() {
 
 disk_cache::Hasher texture_key_base() {
     disk_cache::Hasher h;
-    h.value(kTextureCacheVersion).text(gl_string(GL_RENDERER)).text(gl_string(GL_VERSION));
+    h.value(kTextureCacheVersion).text(gl_renderer_name()).text(gl_version_name());
     return h;
 }
 

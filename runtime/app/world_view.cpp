@@ -31,19 +31,20 @@ std::unique_ptr<WorldView> WorldView::build(const level::Level& level, const gam
         view->final_bake_ = scene_options.bake;
         view->bake_build_ = 1;
         view->bake_.start(*view->scene_, view->bake_build_, render::BakeSettings::preview());
-    } else if (const auto& pending = view->scene_->pending_bake()) { // a cold start: the full bake on a worker
+    } else if (const auto& pending =
+                   view->scene_->pending_bake()) { // a cold start: the full bake on a worker
         view->bake_build_ = 2;
         view->bake_.start(*view->scene_, view->bake_build_, *pending, view->scene_->pending_bake_store(),
                           std::move(bake_ready));
     }
-    view->robot_model_ = &assets.model("robot");
-    view->cylinder_model_ = &assets.model("gas_cylinder");
+    view->robot_model_ = &assets.model_levels("robot");
+    view->cylinder_model_ = &assets.model_levels("gas_cylinder");
     view->rifle_ = &assets.model("rifle");
-    view->pickup_models_[0] = &assets.model("pickup_health");
-    view->pickup_models_[1] = &assets.model("pickup_ammo");
-    view->pickup_models_[2] = &assets.model("pickup_shield");
-    view->robot_binding_ = anim::RigBinding(game.animations().rig, view->robot_model_->node_names());
-    view->robot_pose_ = view->robot_model_->rest_pose();
+    view->pickup_models_[0] = &assets.model_levels("pickup_health");
+    view->pickup_models_[1] = &assets.model_levels("pickup_ammo");
+    view->pickup_models_[2] = &assets.model_levels("pickup_shield");
+    view->robot_binding_ = anim::RigBinding(game.animations().rig, view->robot_model_->full().node_names());
+    view->robot_pose_ = view->robot_model_->full().rest_pose();
     view->emitters_.reserve(64);
     view->lights_.reserve(64 + feedback::Feedback::kMaxLights);
     view->emitter_list_.reserve(64);
@@ -54,7 +55,10 @@ std::unique_ptr<WorldView> WorldView::build(const level::Level& level, const gam
 
 void WorldView::follow_game(const game::Game& game) {
     // The new game's robots may be other ones, in another order: no interpolation from the old game's.
-    robot_binding_ = anim::RigBinding(game.animations().rig, robot_model_->node_names());
+    robot_binding_ = anim::RigBinding(game.animations().rig, robot_model_->full().node_names());
+    robot_lods_.clear();
+    pickup_lods_.clear();
+    cylinder_lods_.clear();
     capture(game, current_);
     previous_ = current_;
 }
@@ -132,7 +136,8 @@ void WorldView::fill(const game::Game& game, float alpha, float fov_degrees, con
         robot_binding_.write_locals(game.robot_pose(i), robot_pose_.local);
         // A robot just hit flashes red all over, fading over its hit flash.
         const std::size_t first = instances_.size();
-        robot_model_->emit(root, robot_pose_, scratch_, instances_);
+        level_for(*robot_model_, root, robot_lods_, i, frame.height)
+            .emit(root, robot_pose_, scratch_, instances_);
         const Vec3 tint = feedback::hit_tint(robots[i].hit_flash);
         for (std::size_t k = first; k < instances_.size(); ++k) instances_[k].tint = tint;
         casters_.push_back(render::shadow_caster_of(instances_, first, feet.y));
@@ -141,26 +146,33 @@ void WorldView::fill(const game::Game& game, float alpha, float fov_degrees, con
         const Mat4 root = level::robot_model_matrix(dummy->feet, dummy->yaw);
         robot_binding_.write_locals(*dummy->pose, robot_pose_.local);
         const std::size_t first = instances_.size();
-        robot_model_->emit(root, robot_pose_, scratch_, instances_);
+        dummy_lod_ = render::pick_model_level(*robot_model_, root, camera_, frame.height, dummy_lod_);
+        robot_model_->level(dummy_lod_).emit(root, robot_pose_, scratch_, instances_);
         casters_.push_back(render::shadow_caster_of(instances_, first, dummy->feet.y));
     }
     // Pickups float and spin around the game's trigger centre.
     const Quat spin = glm::angleAxis(game.pickup_spin(), Vec3(0, 1, 0));
-    for (const auto& p : game.pickups()) {
+    const auto pickups = game.pickups();
+    for (std::size_t i = 0; i < pickups.size(); ++i) {
+        const auto& p = pickups[i];
         if (p.taken) continue;
         const float bob = 0.2f * std::sin(static_cast<float>(time_) * 2.5f + static_cast<float>(p.entity_id));
         const Mat4 root = level::pickup_model_matrix(p.centre + Vec3(0.0f, bob, 0.0f), spin);
         const std::size_t first = instances_.size();
-        pickup_models_[static_cast<int>(p.kind)]->emit(root, scratch_, instances_);
+        level_for(*pickup_models_[static_cast<int>(p.kind)], root, pickup_lods_, i, frame.height)
+            .emit(root, scratch_, instances_);
         casters_.push_back(
             render::shadow_caster_of(instances_, first, p.centre.y - level::kPickupCentreHeight));
     }
-    for (const auto& c : game.cylinders()) {
+    const auto cylinders = game.cylinders();
+    for (std::size_t i = 0; i < cylinders.size(); ++i) {
+        const auto& c = cylinders[i];
         if (c.exploded) continue;
         const Mat4 root = level::gas_cylinder_model_matrix(c.centre, c.yaw, c.props);
         // A lit fuse makes the cylinder glow before it goes.
         const std::size_t first = instances_.size();
-        cylinder_model_->emit(root, scratch_, instances_, c.fuse >= 0.0f ? 3.0f : 1.0f);
+        level_for(*cylinder_model_, root, cylinder_lods_, i, frame.height)
+            .emit(root, scratch_, instances_, c.fuse >= 0.0f ? 3.0f : 1.0f);
         render::ShadowCaster caster = render::shadow_caster_of(instances_, first, 0.0f);
         caster.ground = caster.bounds.min.y; // it stands on its floor
         casters_.push_back(caster);
@@ -194,6 +206,13 @@ void WorldView::fill(const game::Game& game, float alpha, float fov_degrees, con
     frame.particles = &emitter_list_;
     frame.view_model = &view_model_;
     frame.shadow_casters = &casters_;
+}
+
+const render::Model& WorldView::level_for(const render::ModelLevels& levels, const Mat4& root,
+                                          std::vector<int>& lods, std::size_t index, int height) {
+    if (lods.size() <= index) lods.resize(index + 1, 0); // grows once per new mover, not per frame
+    lods[index] = render::pick_model_level(levels, root, camera_, height, lods[index]);
+    return levels.level(lods[index]);
 }
 
 void WorldView::add_rifle_caster(bool grounded) {

@@ -69,10 +69,19 @@ class WorldView {
     render::BackgroundBake bake_;       // the light map computed on a worker (defer_bake, background_bake)
     unsigned long long bake_build_ = 0; // 1: a live edit's preview is computing, 2: the full bake
     render::BakeSettings final_bake_;   // a live edit's full bake quality
-    const render::Model* robot_model_ = nullptr;
-    const render::Model* cylinder_model_ = nullptr;
+    // The movers' models with their levels of detail (every level has the full model's nodes), and the level
+    // each robot, pickup and cylinder (by its index in the game's lists) and the Dojo's dummy was drawn at
+    // last, for the hysteresis of render::pick_model_level.
+    const render::ModelLevels* robot_model_ = nullptr;
+    const render::ModelLevels* cylinder_model_ = nullptr;
     const render::Model* rifle_ = nullptr;
-    const render::Model* pickup_models_[3] = {nullptr, nullptr, nullptr};
+    const render::ModelLevels* pickup_models_[3] = {nullptr, nullptr, nullptr};
+    std::vector<int> robot_lods_, pickup_lods_, cylinder_lods_;
+    int dummy_lod_ = 0;
+    // The level of `levels` to draw at `root` by the last frame's camera on a `height`-pixel view; `lod`
+    // (grown to hold `index`) is updated.
+    const render::Model& level_for(const render::ModelLevels& levels, const Mat4& root,
+                                   std::vector<int>& lods, std::size_t index, int height);
     anim::RigBinding robot_binding_; // the game's robot rig onto robot_model_'s nodes
     render::ModelPose robot_pose_;
 

@@ -22,7 +22,7 @@ fs::path generator() {
     return ks::test::bin_dir() / "ks_assetgen";
 }
 
-// The generated folders: models/*.gltf|*.bin, textures/**.png, sounds/*.wav and icons/**.png.
+// The generated folders: models/*.gltf|*.bin|*.lods.json, textures/**.png, sounds/*.wav and icons/**.png.
 std::set<std::string> generated_files(const fs::path& root) {
     std::set<std::string> out;
     for (const char* folder : {"models", "textures", "sounds", "icons"}) {
@@ -30,7 +30,7 @@ std::set<std::string> generated_files(const fs::path& root) {
         for (const auto& entry : fs::recursive_directory_iterator(root / folder)) {
             if (!entry.is_regular_file()) continue;
             const std::string ext = entry.path().extension().string();
-            if (ext == ".gltf" || ext == ".bin" || ext == ".png" || ext == ".wav")
+            if (ext == ".gltf" || ext == ".bin" || ext == ".png" || ext == ".wav" || ext == ".json")
                 out.insert(fs::relative(entry.path(), root).generic_string());
         }
     }
