@@ -230,7 +230,7 @@ int run(int argc, const char* const* argv) {
             {"level", "json", "frames", "width", "height", "quick", "only", "shots", "rounds", "models"});
         !unknown.empty()) {
         log::error("ks_bench render: unknown option --", unknown.front(),
-                   " (use --level FILE --frames N --width W --height H --json --quick --only TEXT --shots "
+                   " (use --level FILE --frames N --width W --height H --json --quick --only TEXT[|TEXT...] (=NAME: exactly) --shots "
                    "DIR --rounds R --models N)");
         return 2;
     }
@@ -360,10 +360,22 @@ int run(int argc, const char* const* argv) {
         with("fast: shadow each frame",
              [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.shadow_every_frame = true; });
     }
-    if (auto only = cl->get("only"))
-        std::erase_if(variants, [&](const Variant& v) {
-            return std::string(v.name).find(*only) == std::string::npos && v.name != variants[0].name;
-        });
+    if (auto only = cl->get("only")) {
+        // Alternatives split at '|'; each a part of the row's name, or with a leading '=' the whole name.
+        std::vector<std::string> wanted;
+        for (std::size_t at = 0; at <= only->size();) {
+            const std::size_t bar = std::min(only->find('|', at), only->size());
+            wanted.push_back(only->substr(at, bar - at));
+            at = bar + 1;
+        }
+        auto matches = [&](const std::string& name) {
+            return std::ranges::any_of(wanted, [&](const std::string& w) {
+                return w.starts_with('=') ? name == w.substr(1) : name.find(w) != std::string::npos;
+            });
+        };
+        const std::string first = variants[0].name;
+        std::erase_if(variants, [&](const Variant& v) { return !matches(v.name) && v.name != first; });
+    }
     std::printf("render benchmark: %s, %dx%d, %d frames on a fixed path, GL renderer: %s (%s), default "
                 "anisotropy %.0fx, msaa %dx\n",
                 path.string().c_str(), *width, *height, *frames, renderer.c_str(), (*ctx)->platform().c_str(),

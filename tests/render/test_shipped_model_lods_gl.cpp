@@ -31,7 +31,7 @@ int triangles(const Model& model) {
 }
 
 // Pixels whose largest channel difference is over `threshold` (0..255).
-int differing_pixels(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b,
+int pixels_changed_over(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b,
                      int threshold) {
     int n = 0;
     for (std::size_t i = 0; i + 2 < a.size() && i + 2 < b.size(); i += 3) {
@@ -43,8 +43,8 @@ int differing_pixels(const std::vector<unsigned char>& a, const std::vector<unsi
 }
 
 // Pixels that differ from the backdrop (the robot's coverage).
-int covered_pixels(const std::vector<unsigned char>& image, const std::vector<unsigned char>& empty) {
-    return differing_pixels(image, empty, 8);
+int pixels_covered(const std::vector<unsigned char>& image, const std::vector<unsigned char>& empty) {
+    return pixels_changed_over(image, empty, 8);
 }
 
 } // namespace
@@ -120,8 +120,8 @@ TEST_CASE("a robot far away is drawn at a coarser level and looks the same withi
         CHECK(scene->model_lod(id) == 0);
         const auto full = draw(camera, instances);
         const auto empty = draw(camera, none);
-        const int covered = covered_pixels(full, empty);
-        const int changed = differing_pixels(coarse, full, 48);
+        const int covered = pixels_covered(full, empty);
+        const int changed = pixels_changed_over(coarse, full, 48);
         MESSAGE("distance " << distance << ": level " << lod << ", " << covered << " robot pixels, "
                             << changed << " changed by more than 48/255, mean difference "
                             << test::mean_abs_diff(coarse, full));
