@@ -42,9 +42,10 @@ class ViewportScene {
     // shown, the section's cut).
     void rebuild_if_changed(const Editor& editor, std::uint64_t shown_key, const Shown& shown);
     // Each view emits the level's instances and lights for its own camera (after the clip preview's pose):
-    // a designer's model is drawn at the level of detail the game would draw it at from there
-    // (LevelScene::set_view, modelio::pick_lod), so a pane far from a model draws a coarser level while a
-    // close one draws it in full. With --status-file, "scene.coarse_models" counts them in the last view.
+    // every prop (a designer's model, or a shipped one with the asset generator's levels) is drawn at the
+    // level of detail the game would draw it at from there (LevelScene::set_view, pick_model_level), so a
+    // pane far from a model draws a coarser level while a close one draws it in full. With --status-file,
+    // "scene.coarse_models" counts them in the last view.
     // `view` into the single view's target of width x height pixels, unless its picture would not change.
     void render_single(const ViewCamera& view, int width, int height, const DrawLines& lines);
     // `view` into pane `pane`'s target of `size` pixels, unless its picture would not change.
@@ -70,7 +71,7 @@ class ViewportScene {
     struct SceneStats {
         unsigned long long builds = 0, bakes = 0; // bakes: light maps computed and shown
         double last_build_cpu_ms = 0.0;
-        int coarse_models = 0; // model props the last view drew below their full level of detail
+        int coarse_models = 0; // props the last view drew below their full level of detail
     } scene_stats_;
     std::vector<render::MeshInstance> instances_;
     std::vector<render::Light> lights_;
