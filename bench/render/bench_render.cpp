@@ -229,9 +229,11 @@ int run(int argc, const char* const* argv) {
     if (auto unknown = cl->unknown(
             {"level", "json", "frames", "width", "height", "quick", "only", "shots", "rounds", "models"});
         !unknown.empty()) {
-        log::error("ks_bench render: unknown option --", unknown.front(),
-                   " (use --level FILE --frames N --width W --height H --json --quick --only TEXT[|TEXT...] (=NAME: exactly) --shots "
-                   "DIR --rounds R --models N)");
+        log::error(
+            "ks_bench render: unknown option --", unknown.front(),
+            " (use --level FILE --frames N --width W --height H --json --quick --only TEXT[|TEXT...] (=NAME: "
+            "exactly) --shots "
+            "DIR --rounds R --models N)");
         return 2;
     }
     auto frames = cl->get_int("frames", 200, 10, 100000);

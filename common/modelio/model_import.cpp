@@ -1,7 +1,7 @@
 #include "modelio/model_import.h"
 
-#include "modelio/embedded_textures.h"
 #include "modelio/assimp_material.h"
+#include "modelio/embedded_textures.h"
 #include "modelio/fbx_checks.h"
 #include "modelio/glb_container.h"
 #include "modelio/scene_conventions.h"

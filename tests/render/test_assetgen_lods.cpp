@@ -120,7 +120,8 @@ TEST_CASE("every shipped model's levels of detail keep its nodes and lie within 
                 measured = std::max(measured, d);
             }
             // The bound is not idle: the farthest part comes to a good share of it (it adds both levels'
-            // distances from the ideal shape, so it could be up to about twice the real distance; it comes to 0.7-1.0 of it on the shipped models).
+            // distances from the ideal shape, so it could be up to about twice the real distance; the
+            // measured distance is 0.7-1.0 of it on the shipped models).
             MESSAGE(file << ": " << triangles << " triangles, listed deviation " << deviation << ", measured "
                          << measured);
             CHECK(measured >= 0.5 * deviation);

@@ -32,7 +32,7 @@ int triangles(const Model& model) {
 
 // Pixels whose largest channel difference is over `threshold` (0..255).
 int pixels_changed_over(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b,
-                     int threshold) {
+                        int threshold) {
     int n = 0;
     for (std::size_t i = 0; i + 2 < a.size() && i + 2 < b.size(); i += 3) {
         int worst = 0;
