@@ -82,6 +82,8 @@ void GameApp::write_status(const shell::FrameInfo& info) {
         if (session_->view) {
             add("camera_roll %.2f", degrees(session_->view->camera().roll));
             add("view baking %d", session_->view->baking() ? 1 : 0); // a live edit's light map on a worker
+            // The last frame's draws and triangles (props at their levels of detail).
+            add("view draws %d triangles %lld", stats_.draw_calls, stats_.triangles);
             const auto& fb = session_->view->feedback();
             add("feedback arcs %d shakes %d lights %d", static_cast<int>(fb.live_arcs()),
                 static_cast<int>(fb.live_shakes()), static_cast<int>(fb.live_lights()));
