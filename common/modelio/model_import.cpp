@@ -1,6 +1,7 @@
 #include "modelio/model_import.h"
 
 #include "modelio/assimp_material.h"
+#include "modelio/assimp_readers.h"
 #include "modelio/embedded_textures.h"
 #include "modelio/fbx_checks.h"
 #include "modelio/glb_container.h"
@@ -180,6 +181,7 @@ Result<ImportedModel> import_model(const std::filesystem::path& path, const Impo
         if (Result<void> links = check_fbx_file(text, path); !links) return links.error();
     }
     Assimp::Importer importer;
+    keep_extension_readers(importer, path);
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
     // Read first, count, then post-process: a file with millions of faces is refused before any work on them.
     const aiScene* raw = importer.ReadFile(path.string(), aiProcess_ValidateDataStructure);

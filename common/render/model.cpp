@@ -2,6 +2,7 @@
 
 #include "core/log.h"
 #include "modelio/assimp_material.h"
+#include "modelio/assimp_readers.h"
 #include "modelio/model_lod.h"
 #include "render/model_material.h"
 #include "render/scene.h"
@@ -130,6 +131,7 @@ std::unique_ptr<Model> placeholder_model(const std::filesystem::path& path, Text
 std::unique_ptr<Model> load_model(const std::filesystem::path& path, TextureCache& textures,
                                   int& next_material_id) {
     Assimp::Importer importer;
+    modelio::keep_extension_readers(importer, path); // a damaged file goes to no other format's reader
     const unsigned flags = aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_CalcTangentSpace |
                            aiProcess_JoinIdenticalVertices | aiProcess_ValidateDataStructure;
     const aiScene* scene = importer.ReadFile(path.string(), flags);

@@ -179,6 +179,19 @@ TEST_CASE("modelio: bad files are refused with the file and what is wrong") {
     const auto cube = test::write_obj_cube(dir.path(), "cube");
     check_refused(import_model(cube, {.max_triangles = 11}), cube, "more than the 11");
     check_refused(import_model(cube, {.max_file_bytes = 16}), cube, "MiB");
+
+    // A file its extension's reader declines goes to no other format's reader: assimp offered a ".gltf"
+    // holding "geometrynode" to its OpenGEX reader, which read past the end of its buffer (fuzz finding,
+    // crash-cb2d9cce…), and would read an STL or PLY text named .gltf as one.
+    const char* stl_triangle =
+        "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+        "endloop\nendfacet\nendsolid t\n";
+    for (const char* text : {"geometrynode ", "Metric {} GeometryNode { }", stl_triangle,
+                             "ply\nformat ascii 1.0\nelement vertex 0\nend_header\n"}) {
+        CAPTURE(text);
+        const auto other = test::write_file(dir / "other.gltf", text);
+        check_refused(import_model(other), other, "cannot read the model");
+    }
 }
 
 TEST_CASE("modelio: truncated and corrupted files of every format never crash") {
