@@ -36,13 +36,16 @@ void RenderTarget::allocate_colour(int width, int height) const {
         glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
 }
 
+// 32-bit float depth: llvmpipe compares it as it comes from the rasteriser, where 24-bit depth is converted
+// per fragment (and 24-bit with stencil also keeps the stencil bits on every write): docs/performance.md,
+// "Session 24". GPUs handle either at the same speed.
 void RenderTarget::allocate_depth(int width, int height) const {
     glBindRenderbuffer(GL_RENDERBUFFER, depth_);
     if (format_.samples > 0)
-        glRenderbufferStorageMultisample(GL_RENDERBUFFER, format_.samples, GL_DEPTH_COMPONENT24, width,
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, format_.samples, GL_DEPTH_COMPONENT32F, width,
                                          height);
     else
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, width, height);
     glBindRenderbuffer(GL_RENDERBUFFER, 0);
 }
 

@@ -197,6 +197,7 @@ int AppShell::run(const ShellHooks& hooks) {
         glfwPollEvents();
         if (!gamepad_injected_) poll_gamepad(gamepad_);
         double now = glfwGetTime();
+        const double work_start = now;
         pacer.drew(now);
         // After a wait the time spent idle is no frame time: a clip or the world resumes where it stood.
         if (waited) last = std::max(last, now - pacer.frame_interval());
@@ -236,6 +237,7 @@ int AppShell::run(const ShellHooks& hooks) {
             break;
         }
         glfwSwapBuffers(window_);
+        info.previous_work = glfwGetTime() - work_start;
         // The start-up trace's frames, each once it is on screen (a launcher stops the game at the one it
         // waits for).
         if (startup::enabled() && info.frame_index <= kTracedFrames) startup::mark("presented");

@@ -61,6 +61,10 @@ struct FrameInfo {
     double frame_dt = 0.0;     // real (or, in screenshot mode, fixed 1/60 s) frame time
     double alpha = 0.0;        // interpolation between the last two fixed steps
     long long frame_index = 0;
+    // The last frame's work: from the end of its wait to the end of its buffer swap (s; 0 before the first).
+    // Unlike frame_dt it leaves out the pacing's waits, so it says how long the machine needs for a frame
+    // (the game's dynamic resolution reads it; a software rasteriser draws during the swap).
+    double previous_work = 0.0;
 };
 
 struct ShellHooks {

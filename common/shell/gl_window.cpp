@@ -28,6 +28,10 @@ Result<GLFWwindow*> open_gl_window(const GlWindowRequest& request) {
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     if (request.srgb) glfwWindowHint(GLFW_SRGB_CAPABLE, GLFW_TRUE);
     glfwWindowHint(GLFW_SAMPLES, 0); // MSAA is done in the renderer's own framebuffer
+    // Depth without stencil (nothing draws with a stencil test): on llvmpipe a depth buffer with stencil
+    // keeps the stencil bits on every depth write (docs/performance.md, "Session 24").
+    glfwWindowHint(GLFW_DEPTH_BITS, 24);
+    glfwWindowHint(GLFW_STENCIL_BITS, 0);
     glfwWindowHint(GLFW_VISIBLE, request.visible ? GLFW_TRUE : GLFW_FALSE);
     GLFWwindow* window =
         glfwCreateWindow(request.width, request.height, request.title.c_str(), nullptr, nullptr);

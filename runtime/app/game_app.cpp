@@ -207,7 +207,7 @@ void GameApp::retry() {
 
 // The options a slow machine needs, passed to the renderer (at start and whenever the panel changes them).
 void GameApp::apply_render_options() {
-    renderer_.set_render_scale(options_.render_scale);
+    scale_control_.apply(renderer_, options_.render_scale);
     renderer_.set_quality(options_.quality == QualityOption::Full   ? render::RenderQuality::Full
                           : options_.quality == QualityOption::Fast ? render::RenderQuality::Fast
                                                                     : render::RenderQuality::Auto);

@@ -112,6 +112,7 @@ void GameApp::render(const shell::FrameInfo& info) {
     mark_first_frame_of_screen();
     handle_keys();
     budget_.new_frame(); // the next frame's fixed steps come after this call
+    scale_control_.frame(renderer_, info.previous_work, info.frame_dt);
     if (!session_ || !session_->view || screen_ == Screen::Loading) {
         // Nothing loaded yet: an empty scene clears to the fog colour behind the loading panel.
         render::SceneFrame empty;

@@ -24,6 +24,7 @@
 #include "menu_style.h"
 #include "player_input.h"
 #include "render/scene_renderer.h"
+#include "render_scale_control.h"
 #include "runtime/model/campaign_progress.h"
 #include "runtime/model/campaign_save.h"
 #include "runtime/model/input_script.h"
@@ -124,6 +125,9 @@ class GameApp {
         // --difficulty: played instead of the options' choice (the Options screen shows it; it is written to
         // the file only when the player changes the options there).
         std::optional<game::Difficulty> difficulty;
+        // --target-fps: the frame rate Auto's dynamic resolution holds (default 60); it also turns the
+        // dynamic resolution on in a screenshot run, whose pictures otherwise keep a fixed scale.
+        std::optional<double> target_fps;
     };
     Result<void> start(const Automation& a);
     Result<void> set_up_scenario(const Automation& a, std::optional<Screen> screen);
@@ -224,7 +228,8 @@ class GameApp {
     bool quit_ = false;
     bool pause_requested_ = false;
     render::FrameStats stats_;
-    LevelResult win_; // the level just won (the win screen; the campaign keeps its own)
+    RenderScaleControl scale_control_; // the options' render scale, or Auto's dynamic resolution
+    LevelResult win_;                  // the level just won (the win screen; the campaign keeps its own)
     std::filesystem::path campaign_path_;
     std::optional<CampaignProgress> campaign_;  // while a campaign is played
     std::optional<CampaignSave> campaign_save_; // the saved run (campaign_save.h), if it read

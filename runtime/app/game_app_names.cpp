@@ -8,7 +8,7 @@ const std::vector<std::string>& game_app_options() {
     static const std::vector<std::string> names = {
         "level",     "dojo",     "screen",      "warp",        "dojo-key",    "dojo-time",
         "seed",      "msaa",     "help",        "fire",        "status-file", "input-script",
-        "audio-out", "campaign", "logic-trace", "logic-break", "difficulty"};
+        "audio-out", "campaign", "logic-trace", "logic-break", "difficulty", "target-fps"};
     return names;
 }
 const std::vector<std::string>& game_app_flags() {

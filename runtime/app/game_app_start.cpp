@@ -26,6 +26,8 @@ Result<void> GameApp::start(const Automation& a) {
     audio_ = std::move(*opened);
     audio_->apply_options(options_);
     status_path_ = a.status_file;
+    scale_control_.configure(!shell_.screenshot_mode() || a.target_fps, a.target_fps.value_or(60.0));
+    apply_render_options();
     logic_debug_.configure(a.logic_trace, a.logic_break);
     if (a.logic_break) logic_debug_visible_ = true;
     if (a.difficulty) options_.difficulty = *a.difficulty;

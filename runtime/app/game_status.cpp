@@ -27,8 +27,9 @@ void GameApp::write_status(const shell::FrameInfo& info) {
         options_.mouse_sensitivity, options_.fov_degrees, options_.invert_y ? 1 : 0, options_.render_scale,
         quality_name(options_.quality));
     // What the renderer made of them (automatic values resolved for this GL driver).
-    add("renderer render_scale %.2f quality %s", renderer_.render_scale(),
-        renderer_.quality() == render::RenderQuality::Fast ? "fast" : "full");
+    add("renderer render_scale %.2f quality %s dynamic %d", renderer_.render_scale(),
+        renderer_.quality() == render::RenderQuality::Fast ? "fast" : "full",
+        scale_control_.dynamic() ? 1 : 0);
     add("pad connected %d look %.2f dead_zone %.2f", shell_.gamepad().connected ? 1 : 0,
         options_.pad_look_sensitivity, options_.pad_dead_zone);
     add("controls waiting %s",

@@ -43,6 +43,9 @@ void print_help() {
         "  --dojo-key K      in the Dojo, press key K (0-9) before the first frame\n"
         "  --dojo-time S     ... and advance the animation S seconds, then hold it (for screenshots)\n"
         "  --seed N          the game's random seed (default 1)\n"
+        "  --target-fps N    the frame rate the automatic render scale holds on a software rasteriser\n"
+        "                    (default 60: full resolution whenever the machine keeps up); also turns it on\n"
+        "                    for a --screenshot run, which otherwise keeps a fixed scale\n"
         "  --difficulty D    easy, normal or hard for this run (default: the options' choice)\n"
         "  --status-file F   rewrite F each frame the state changes: screen, buttons, player, doors, ...\n"
         "  --audio-out F.wav record the sound mix to a 48 kHz stereo WAV instead of playing it (with\n"
@@ -99,6 +102,15 @@ int run_game_app(const CommandLine& cl, const shell::ShellConfig& shell_config) 
         automation.scripted = true;
     }
     automation.fire = cl.has("fire");
+    if (cl.has("target-fps")) {
+        auto fps = cl.get_double("target-fps", 60.0);
+        if (!fps || !std::isfinite(*fps) || *fps < 10.0 || *fps > 1000.0) {
+            log::error("--target-fps '", cl.get_or("target-fps", ""),
+                       "': give the frame rate to hold, 10 .. 1000 (e.g. --target-fps 60)");
+            return 2;
+        }
+        automation.target_fps = *fps;
+    }
     if (auto out = cl.get("audio-out")) {
         if (out->empty()) {
             log::error("--audio-out: give a file name, e.g. --audio-out run.wav");
