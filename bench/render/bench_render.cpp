@@ -9,6 +9,7 @@
 #include "core/paths.h"
 #include "level/level_io.h"
 #include "render/asset_library.h"
+#include "render/dynamic_resolution.h"
 #include "render/level_scene.h"
 #include "render/model_field.h"
 #include "render/scene_renderer.h"
@@ -32,6 +33,8 @@
 #include <cstdlib>
 #include <ctime>
 #include <filesystem>
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -58,6 +61,7 @@ struct Variant {
     int view_model_msaa = render::RendererSettings{}.view_model_msaa;
     bool contact_shadows = true;
     bool model_lods = true;        // designers' models drawn at their levels of detail
+    bool dynamic = false;          // the render scale picked each frame as the game's Auto does on software
     bool model_shaders = true;     // RendererSettings::fast_model_shaders
     bool prepass_floors = false;   // !RendererSettings::prepass_skips_floors
     bool rifle = true;             // the first-person rifle drawn
@@ -77,6 +81,9 @@ struct Measurement {
     long long occluded = 0;    // instances skipped behind occluder boxes, summed over the timed frames
     double samples_passed = 0; // fragments that passed the depth test, summed over the timed frames
     double overdraw = 0;       // samples_passed per internal pixel per frame (1.0: every pixel shaded once)
+    // Variant::dynamic: the game's controller, kept across rounds, and the frames drawn at each of its steps.
+    std::optional<render::DynamicResolution> dynamic;
+    std::map<float, int> frames_at_scale;
 };
 
 double cpu_now_ms() {
@@ -143,7 +150,9 @@ void measure(Measurement& m, shell::OffscreenContext& ctx, render::AssetLibrary&
     double cpu_start = 0;
     GLuint query = 0;
     glGenQueries(1, &query);
+    if (v.dynamic && !m.dynamic) m.dynamic.emplace(); // from 0.5 up, holding 60 fps
     for (int i = -warmup; i < frames; ++i) {
+        if (m.dynamic) (*renderer)->set_render_scale(m.dynamic->scale());
         if (i == 0) {
             cpu_start = cpu_now_ms();
             // Under `valgrind --tool=callgrind --instr-atstart=no` only the timed frames are counted, one
@@ -171,6 +180,10 @@ void measure(Measurement& m, shell::OffscreenContext& ctx, render::AssetLibrary&
         glEndQuery(GL_SAMPLES_PASSED);
         ctx.finish();
         double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        if (m.dynamic) {
+            if (i >= 0) ++m.frames_at_scale[m.dynamic->scale()];
+            m.dynamic->update(ms, ms / 1000.0);
+        }
         if (i >= 0) {
             GLuint64 samples = 0;
             glGetQueryObjectui64v(query, GL_QUERY_RESULT, &samples); // after glFinish: no wait
@@ -283,7 +296,11 @@ int run(int argc, const char* const* argv) {
     // The two paths and what each step of the fast one buys, always measured (ratios in one run).
     with("full, scale 1", [](Variant& v) { v.quality = Q::Full, v.render_scale = 1.0f; });
     with("fast, scale 1", [](Variant& v) { v.quality = Q::Fast, v.render_scale = 1.0f; });
+    with("fast, scale 0.875", [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.875f; });
     with("fast, scale 0.75", [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.75f; });
+    with("fast, scale 0.625", [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.625f; });
+    // The game's Auto on a software rasteriser: render/dynamic_resolution.h fed with the measured frames.
+    with("fast, dynamic", [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.dynamic = true; });
     with("fast, scale 0.5", [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f; });
     with("fast, scale 0.5, ORM lookup",
          [](Variant& v) { v.quality = Q::Fast, v.render_scale = 0.5f, v.occluded_base = false; });
@@ -416,6 +433,13 @@ int run(int argc, const char* const* argv) {
                     m.median_ms / base.median_ms);
         std::fflush(stdout);
     }
+    for (size_t i = 0; i < variants.size(); ++i)
+        if (!results[i].frames_at_scale.empty()) {
+            std::printf("%s: frames per render scale:", variants[i].name);
+            for (const auto& [scale, count] : results[i].frames_at_scale)
+                std::printf(" %.3f %d", scale, count);
+            std::printf("\n");
+        }
     if (cl->has("json"))
         std::printf("{\"level\":\"%s\",\"width\":%d,\"height\":%d,\"msaa\":%d,\"quality\":\"%s\","
                     "\"internal_width\":%d,\"internal_height\":%d,\"frame_ms_median\":%.3f,"
