@@ -97,8 +97,7 @@ Result<void> SceneRenderer::init() {
     for (int i = 0; i < kFastModelPrograms; ++i)
         if (auto r = shaders_->add(fast_model_program(i), fast_model_[i], pbr_units); !r) return r.error();
     for (auto [files, program] : {std::pair{&view_model_composite_program(), &view_model_layer_.program()},
-                                  std::pair{&view_model_mask_program(), &view_model_layer_.mask_program()},
-                                  std::pair{&view_model_copy_program(), &view_model_layer_.copy_program()}})
+                                  std::pair{&view_model_mask_program(), &view_model_layer_.mask_program()}})
         if (auto r = shaders_->add(*files, *program,
                                    [](ShaderProgram& p) { glUniform1i(p.location("u_layer"), 0); });
             !r)

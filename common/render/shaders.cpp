@@ -62,11 +62,6 @@ const ProgramFiles& view_model_mask_program() {
     static const ProgramFiles p{"view_model_mask", "view_model_composite.vert", "view_model_mask.frag"};
     return p;
 }
-const ProgramFiles& view_model_copy_program() {
-    static const ProgramFiles p{"view_model_copy", "view_model_composite.vert", "view_model_mask.frag",
-                                "#define COPY\n"};
-    return p;
-}
 const ProgramFiles& contact_shadow_program() {
     static const ProgramFiles p{"contact_shadow", "contact_shadow.vert", "contact_shadow.frag"};
     return p;
@@ -81,7 +76,6 @@ std::vector<const ProgramFiles*> all_programs() {
             &line_program(),
             &view_model_composite_program(),
             &view_model_mask_program(),
-            &view_model_copy_program(),
             &contact_shadow_program(),
             &fast_model_program(0),
             &fast_model_program(1),

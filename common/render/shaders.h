@@ -29,8 +29,8 @@ struct ProgramSources {
 // The programs: pbr (full quality), fast (software rasterisers: baked light + per-vertex light), fast_level
 // (fast, specialised for baked level surfaces), fast_level_lit (fast_level plus per-pixel dynamic lights, for
 // the baked surfaces a muzzle flash reaches), shadow, particle, line, view_model_composite, view_model_mask
-// and view_model_copy (the view model's opaque pixels masked in the scene's depth, then copied over it:
-// view_model_layer.h), contact_shadow
+// (the view model's opaque pixels written into the scene, depth 0, before the scene: view_model_layer.h),
+// contact_shadow
 // (movers' shadows on the floor, contact_shadows.h).
 const ProgramFiles& pbr_program();
 const ProgramFiles& fast_program();
@@ -50,7 +50,6 @@ const ProgramFiles& line_program();
 // The antialiased view model's resolved layer blended over the scene (render/view_model_layer.h).
 const ProgramFiles& view_model_composite_program();
 const ProgramFiles& view_model_mask_program();
-const ProgramFiles& view_model_copy_program();
 const ProgramFiles& contact_shadow_program();
 // All of the above (the shader compile test walks this list).
 std::vector<const ProgramFiles*> all_programs();

@@ -154,14 +154,12 @@ void ViewModelLayer::write_depth_mask(unsigned target_framebuffer, const ScreenF
     glBindFramebuffer(GL_FRAMEBUFFER, target_framebuffer);
     glViewport(0, 0, width_, height_);
     glDisable(GL_BLEND);
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_ALWAYS);
     glDepthMask(GL_TRUE);
     mask_.use();
     draw_footprint(where);
     glDepthFunc(GL_LESS);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
 void ViewModelLayer::composite(unsigned target_framebuffer, const ScreenFootprint& where, bool masked) {
@@ -170,11 +168,7 @@ void ViewModelLayer::composite(unsigned target_framebuffer, const ScreenFootprin
     glViewport(0, 0, width_, height_);
     glDepthMask(GL_FALSE);
     if (masked) {
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_EQUAL);
-        glDisable(GL_BLEND);
-        copy_.use();
-        draw_footprint(where);
+        glEnable(GL_DEPTH_TEST); // the opaque pixels (depth 0) hold the layer already
         glDepthFunc(GL_LESS);
     } else {
         glDisable(GL_DEPTH_TEST);

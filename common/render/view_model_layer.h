@@ -46,21 +46,20 @@ class ViewModelLayer {
     // Built by the SceneRenderer's shader library.
     ShaderProgram& program() { return composite_; }
     ShaderProgram& mask_program() { return mask_; }
-    ShaderProgram& copy_program() { return copy_; }
     // Binds the layer (width x height, `samples` per pixel; 1: single-sample with the edge filter) and clears
     // `rect` to transparent black, with the scissor left on it for the view model's draws. An error when the
     // driver cannot make the target.
     Result<void> begin(int width, int height, int samples, const PixelRect& rect);
     // Resolves `where.rect` of a multisampled layer (once per begin; composite calls it when not yet done).
     void resolve(const PixelRect& rect);
-    // Writes depth 0 into `target_framebuffer`'s depth buffer (colour writes off) at the layer's opaque
-    // pixels inside `where`: drawn before the scene, the scene is not shaded under what the composite will
-    // cover. Leaves the target bound, depth test on with GL_LESS and writes on, colour writes on.
+    // Writes the layer's opaque pixels inside `where` into `target_framebuffer`, colour and depth 0: drawn
+    // before the scene, the scene is not shaded under them and they need no composite. Leaves the target
+    // bound, depth test on with GL_LESS and writes on.
     void write_depth_mask(unsigned target_framebuffer, const ScreenFootprint& where);
     // Resolves `where.rect` and blends the pixels inside `where.hull` (the rectangle's when it has none) over
     // `target_framebuffer` (left bound, blending and scissor off). `masked`: write_depth_mask ran on this
-    // target before the scene, so its depth is 0 exactly at the opaque pixels: those are copied (one lookup,
-    // depth EQUAL) and only the others go through the edge filter (depth LESS).
+    // target before the scene, so its depth is 0 exactly at the opaque pixels, which hold the layer's colour
+    // already: only the others go through the edge filter (depth LESS).
     void composite(unsigned target_framebuffer, const ScreenFootprint& where, bool masked);
 
   private:
@@ -68,7 +67,7 @@ class ViewModelLayer {
     draw_footprint(const ScreenFootprint& where); // the hull (or rectangle) as a fan, in the bound target
     std::unique_ptr<RenderTarget> multisampled_;
     RenderTarget resolved_{{ColourStorage::Texture, 0}};
-    ShaderProgram composite_, mask_, copy_;
+    ShaderProgram composite_, mask_;
     unsigned vao_ = 0, vertex_buffer_ = 0;
     std::vector<Vec2> fan_; // the composite's polygon in clip space, reused
     int width_ = 0, height_ = 0, samples_ = 1;

@@ -45,8 +45,8 @@ TEST_CASE("every shader program compiles and links on this driver") {
     KS_REQUIRE_GL();
     const int count = ks::test::check_every_program_builds();
     // pbr, fast, fast_level, fast_level_lit, shadow, particle, line, view_model_composite, view_model_mask,
-    // view_model_copy, contact_shadow and the six fast_model programs
-    CHECK(count == 17);
+    // contact_shadow and the six fast_model programs
+    CHECK(count == 16);
 }
 
 TEST_CASE("a broken shader reports file:line: message") {
