@@ -7,7 +7,8 @@
 # shipped file is 18 KB; bigger seeds such as the 200 KB nesting bomb are cut to this for mutation).
 # The growing corpus stays in $KS_FUZZ_BUILD/corpus/<target>; seeds are read from the shipped files and the
 # test corpora, and the kept corpus fuzz/corpus/<target>.tar.xz (minimised, in the repository) is unpacked into
-# it first. KS_FUZZ_SAVE_CORPUS=1: after each run the corpus is minimised (libFuzzer -merge=1) and written
+# it first. A "slow unit" (an input over 10 s) is replayed alone and kept only if it is slow again (one in
+# flight while the fuzzer was paused is not a finding). KS_FUZZ_SAVE_CORPUS=1: after each run the corpus is minimised (libFuzzer -merge=1) and written
 # back to fuzz/corpus/<target>.tar.xz. Any crash, timeout, leak or out-of-memory input is copied to tests/data/fuzz/<target>/,
 # where the GCC regression tests (tests/{level,anim,editor}/test_fuzz_regressions.cpp) replay it; the script
 # then exits 1.
@@ -91,6 +92,18 @@ for target in "${targets[@]}"; do
     found=0
     for artifact in "$artifacts"/crash-* "$artifacts"/timeout-* "$artifacts"/leak-* "$artifacts"/oom-* "$artifacts"/slow-unit-*; do
         [[ -e $artifact ]] || continue
+        # libFuzzer reports an input over 10 s of wall time as slow; one that was in flight while the machine
+        # was paused or busy (a benchmark stopping the fuzzer) is not: it is kept only if it is slow again alone.
+        if [[ $(basename "$artifact") == slow-unit-* ]]; then
+            started=$(date +%s%N)
+            ASAN_OPTIONS=${ASAN_OPTIONS:-}:detect_leaks=0 "$build/bin/$target" "$artifact" >/dev/null 2>&1 || true
+            took_ms=$((($(date +%s%N) - started) / 1000000))
+            if ((took_ms < 10000)); then
+                echo "   not kept: $(basename "$artifact") (replays in $took_ms ms: slow only in the run)"
+                rm -f "$artifact"
+                continue
+            fi
+        fi
         cp -n "$artifact" "$regressions/"
         echo "   found: $regressions/$(basename "$artifact")"
         found=$((found + 1))
