@@ -163,7 +163,9 @@ void GameApp::imgui(const shell::FrameInfo& info) {
     write_status(info);
     if (!shell_.screenshot_mode() && screen_ == Screen::Playing) {
         char text[128];
-        std::snprintf(text, sizeof(text), "%.1f ms  %d draws", info.frame_dt * 1000.0, stats_.draw_calls);
+        // The 3D scene's share of the window's pixels each way: the dynamic resolution's pick under Auto.
+        std::snprintf(text, sizeof(text), "%.1f ms  %d draws  %.0f %%", info.frame_dt * 1000.0,
+                      stats_.draw_calls, renderer_.render_scale() * 100.0f);
         ImGui::GetForegroundDrawList()->AddText(shell_.fonts().mono, 0.0f, ImVec2(10.0f, h - 22.0f),
                                                 IM_COL32(255, 255, 255, 140), text);
     }
