@@ -28,7 +28,7 @@ void DynamicResolution::reset() {
     retry_wait_.fill(0.0);
 }
 
-double DynamicResolution::window_median() {
+double DynamicResolution::window_median() const {
     std::array<double, 64> sorted = samples_;
     const auto n = static_cast<std::ptrdiff_t>(sample_count_);
     std::nth_element(sorted.begin(), sorted.begin() + n / 2, sorted.begin() + n);

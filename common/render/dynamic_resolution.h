@@ -38,14 +38,14 @@ class DynamicResolution {
     // NaN, negative or infinite inputs are ignored.
     float update(double work_ms, double frame_seconds);
     float scale() const { return kSteps[static_cast<std::size_t>(step_)]; }
-    // Back to the lowest step with nothing measured (a new level, the option switched back to automatic).
+    // Back to the lowest step with nothing measured and no step waiting to be retried.
     void reset();
     // Steps taken since construction (tests count oscillation with it).
     long long changes() const { return changes_; }
     const DynamicResolutionSettings& settings() const { return settings_; }
 
   private:
-    double window_median();
+    double window_median() const;
     void move_to(int step);
 
     DynamicResolutionSettings settings_;
