@@ -26,7 +26,7 @@ class RenderScaleControl {
     double target_fps() const { return target_fps_; }
 
   private:
-    bool enabled_ = true;
+    bool enabled_ = false; // until configure(): the app decides once it knows whether it takes screenshots
     double target_fps_ = 60.0;
     std::optional<render::DynamicResolution> controller_;
 };
