@@ -5,6 +5,7 @@
 #include "modelio/embedded_textures.h"
 #include "modelio/fbx_checks.h"
 #include "modelio/glb_container.h"
+#include "modelio/obj_checks.h"
 #include "modelio/scene_conventions.h"
 
 #include <assimp/DefaultLogger.hpp>
@@ -175,10 +176,12 @@ Result<ImportedModel> import_model(const std::filesystem::path& path, const Impo
     if (Result<void> file = check_file(path, limits); !file) return file.error();
     if (lower(path.extension().string()) == ".glb")
         if (Result<void> container = check_glb_container(path); !container) return container.error();
-    if (lower(path.extension().string()) == ".fbx") {
+    if (const std::string ext = lower(path.extension().string()); ext == ".fbx" || ext == ".obj") {
         std::ifstream in(path, std::ios::binary);
         const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-        if (Result<void> links = check_fbx_file(text, path); !links) return links.error();
+        if (Result<void> checked = ext == ".fbx" ? check_fbx_file(text, path) : check_obj_file(text, path);
+            !checked)
+            return checked.error();
     }
     Assimp::Importer importer;
     keep_extension_readers(importer, path);
