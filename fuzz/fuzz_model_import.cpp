@@ -1,6 +1,9 @@
 // libFuzzer target: designers' model files through assimp (common/modelio). The first byte picks the format
-// (.glb, .gltf, .obj, .fbx), the rest is the file, written to a RAM folder because assimp reads by path
-// (the importer is what the editor and the game run). Assimp is Debian's and not instrumented: coverage
+// (.glb, .gltf, .obj, .fbx: its value modulo 4), the rest is the file, written to a RAM folder because
+// assimp reads by path (the importer is what the editor and the game run). For an OBJ whose first byte has
+// its top bit set, the same bytes are also its material library model.mtl, which any `mtllib` line opens
+// (by name, or as the reader's fallback to the OBJ's own name): one text holds both files' statements, and
+// each reader skips the other's. Assimp is Debian's and not instrumented: coverage
 // guides the fuzzer through our checks, and a crash inside assimp is still a finding, since it would take
 // the editor down with a designer's unsaved work.
 #include "fuzz_oracle.h"
@@ -37,8 +40,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (size < 1) return 0;
     static const char* kExtensions[] = {".glb", ".gltf", ".obj", ".fbx"};
     const std::filesystem::path file = scratch_folder() / (std::string("model") + kExtensions[data[0] % 4]);
-    {
-        std::ofstream out(file, std::ios::binary | std::ios::trunc);
+    const std::filesystem::path library = scratch_folder() / "model.mtl";
+    const bool with_library = data[0] % 4 == 2 && (data[0] & 0x80) != 0;
+    for (const std::filesystem::path& written : {file, library}) {
+        if (written == library && !with_library) {
+            std::error_code ignored;
+            std::filesystem::remove(library, ignored);
+            continue;
+        }
+        std::ofstream out(written, std::ios::binary | std::ios::trunc);
         out.write(reinterpret_cast<const char*>(data + 1), static_cast<std::streamsize>(size - 1));
     }
     const ks::modelio::ImportLimits limits;

@@ -3,8 +3,13 @@
 // line, the file is refused instead.
 #include "modelio/obj_checks.h"
 
+#include "modelio/mtl_checks.h"
+#include "modelio/obj_text.h"
+
 #include <climits>
 #include <cstdint>
+#include <fstream>
+#include <iterator>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,14 +17,6 @@
 namespace ks::modelio {
 
 namespace {
-
-bool is_line_end(char c) {
-    return c == '\n' || c == '\r' || c == '\f' || c == '\0';
-}
-
-bool is_space(char c) {
-    return c == ' ' || c == '\t';
-}
 
 bool is_digit(char c) {
     return c >= '0' && c <= '9';
@@ -37,11 +34,11 @@ class ReaderLines {
         text_.clear();
         offsets_.clear();
         for (;;) {
-            if (at(pos_) == '\\' && is_line_end(at(pos_ + 1))) {
+            if (at(pos_) == '\\' && is_obj_line_end(at(pos_ + 1))) {
                 ++pos_;
                 while (at(pos_) != '\n') ++pos_;
                 ++pos_;
-            } else if (is_line_end(at(pos_))) {
+            } else if (is_obj_line_end(at(pos_))) {
                 break;
             }
             text_.push_back(at(pos_));
@@ -73,8 +70,8 @@ struct FaceFinding {
 // The corner (space-separated word) around index `at`, for the message.
 std::string corner_at(std::string_view line, std::size_t at) {
     std::size_t begin = at, end = at;
-    while (begin > 0 && !is_space(line[begin - 1]) && !is_line_end(line[begin - 1])) --begin;
-    while (end < line.size() && !is_space(line[end]) && !is_line_end(line[end])) ++end;
+    while (begin > 0 && !is_obj_space(line[begin - 1]) && !is_obj_line_end(line[begin - 1])) --begin;
+    while (end < line.size() && !is_obj_space(line[end]) && !is_obj_line_end(line[end])) ++end;
     std::string corner(line.substr(begin, end - begin));
     if (corner.size() > 40) corner = corner.substr(0, 40) + "…";
     for (char& c : corner)
@@ -86,10 +83,10 @@ std::string corner_at(std::string_view line, std::size_t at) {
 // read by atoi and stepped over by the digits of the value read.
 std::optional<FaceFinding> check_face(std::string_view line) {
     std::size_t end = 0;
-    while (end < line.size() && !is_line_end(line[end])) ++end;
+    while (end < line.size() && !is_obj_line_end(line[end])) ++end;
     std::size_t p = 0;
-    while (p < end && !is_space(line[p])) ++p;
-    while (p < end && is_space(line[p])) ++p;
+    while (p < end && !is_obj_space(line[p])) ++p;
+    while (p < end && is_obj_space(line[p])) ++p;
     int parts = 0;
     while (p < end) {
         const char c = line[p];
@@ -98,7 +95,7 @@ std::optional<FaceFinding> check_face(std::string_view line) {
             ++p;
             continue;
         }
-        if (is_space(c)) {
+        if (is_obj_space(c)) {
             parts = 0;
             ++p;
             continue;
@@ -137,10 +134,53 @@ std::optional<FaceFinding> check_face(std::string_view line) {
     return std::nullopt;
 }
 
+std::string_view trimmed(std::string_view s) {
+    while (!s.empty() && is_obj_space(s.front())) s.remove_prefix(1);
+    while (!s.empty() && is_obj_space(s.back())) s.remove_suffix(1);
+    return s;
+}
+
 std::string_view first_word(std::string_view line) {
     std::size_t n = 0;
-    while (n < line.size() && !is_space(line[n]) && !is_line_end(line[n])) ++n;
+    while (n < line.size() && !is_obj_space(line[n]) && !is_obj_line_end(line[n])) ++n;
     return line.substr(0, n);
+}
+
+// What follows a statement's keyword and its spaces, to the line's end (the reader's getNextToken, then
+// the line's rest: a `usemtl` or `mtllib` name, spaces inside and after it kept).
+std::string_view statement_rest(std::string_view line) {
+    std::size_t p = first_word(line).size();
+    while (p < line.size() && is_obj_space(line[p])) ++p;
+    std::size_t end = p;
+    while (end < line.size() && !is_obj_line_end(line[end])) ++end;
+    return line.substr(p, end - p);
+}
+
+// The library file the reader opens for `mtllib name`: the name after the OBJ's folder, or, when that is
+// not there, the OBJ's own name with "mtl" for its extension's last three letters.
+std::optional<std::filesystem::path> material_library(const std::filesystem::path& obj,
+                                                      std::string_view name) {
+    const std::string obj_name = obj.string();
+    const std::size_t slash = obj_name.find_last_of("\\/");
+    std::string named(name);
+    if (slash != std::string::npos && slash > 0) named = obj_name.substr(0, slash) + "/" + named;
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(named, ec)) return std::filesystem::path(named);
+    if (obj_name.size() < 3) return std::nullopt;
+    const std::string fallback = obj_name.substr(0, obj_name.size() - 3) + "mtl";
+    if (std::filesystem::is_regular_file(fallback, ec)) return std::filesystem::path(fallback);
+    return std::nullopt;
+}
+
+// A material library the OBJ names, read and checked (mtl_checks.h); whether a material is current after it.
+Result<bool> check_material_library(const std::filesystem::path& obj, std::string_view name,
+                                    bool material_current) {
+    if (name.empty()) return material_current;
+    const std::optional<std::filesystem::path> library = material_library(obj, name);
+    if (!library) return material_current; // the reader reads no library
+    std::ifstream in(*library, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return check_mtl_file(text, *library, material_current);
 }
 
 } // namespace
@@ -148,6 +188,7 @@ std::string_view first_word(std::string_view line) {
 Result<void> check_obj_file(std::string_view file, const std::filesystem::path& path) {
     ReaderLines lines(file);
     bool inside_curve_section = false; // `cstype` … `end`: free-form geometry, whose lines the reader skips
+    bool material_current = false;     // set by `usemtl` or a library's `newmtl`, never unset
     while (lines.next()) {
         const std::string_view line = lines.text();
         if (line.empty()) continue;
@@ -157,6 +198,16 @@ Result<void> check_obj_file(std::string_view file, const std::filesystem::path& 
         }
         if (line[0] == 'c') {
             inside_curve_section = first_word(line) == "cstype";
+            continue;
+        }
+        if (line[0] == 'u' && first_word(line) == "usemtl" && !trimmed(statement_rest(line)).empty()) {
+            material_current = true;
+            continue;
+        }
+        if (line[0] == 'm' && first_word(line) == "mtllib") {
+            Result<bool> library = check_material_library(path, statement_rest(line), material_current);
+            if (!library) return library.error();
+            material_current = *library;
             continue;
         }
         if (line[0] != 'f' && line[0] != 'l' && line[0] != 'p') continue;

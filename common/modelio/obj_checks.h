@@ -9,7 +9,9 @@
 //  - a vertical tab (0x0b), which the reader takes for part of an index but `atoi` skips as white space,
 //    past the line's end when nothing follows.
 // Lines are split as the reader splits them: at \n, \r, \f and NUL, a backslash before one of them joining
-// the next line; statements inside a `cstype` … `end` section are not faces.
+// the next line; statements inside a `cstype` … `end` section are not faces. Each `mtllib` library the
+// reader would open (the name beside the OBJ, else the OBJ's own name with .mtl) is checked too
+// (mtl_checks.h), knowing whether a `usemtl` came before it.
 #include "core/result.h"
 
 #include <cstddef>
@@ -18,8 +20,9 @@
 
 namespace ks::modelio {
 
-// The first face statement the reader would read past, refused with the file, the line and the column
-// (1-based, counted in \n lines) and how to write it; any other text passes (assimp refuses or reads it).
+// The first face statement the reader would read past, or library statement it would crash on, refused
+// with the file (the OBJ or the library), the line and the column (1-based, counted in \n lines) and how to
+// write it; any other text passes (assimp refuses or reads it).
 Result<void> check_obj_file(std::string_view file, const std::filesystem::path& path);
 
 } // namespace ks::modelio
