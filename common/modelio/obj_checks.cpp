@@ -180,7 +180,11 @@ Result<bool> check_material_library(const std::filesystem::path& obj, std::strin
     if (!library) return material_current; // the reader reads no library
     std::ifstream in(*library, std::ios::binary);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    return check_mtl_file(text, *library, material_current);
+    Result<bool> checked = check_mtl_file(text, *library, material_current);
+    if (checked) return checked;
+    Error error = checked.error(); // placed in the library; the message names the model it serves
+    error.message = "in " + obj.filename().string() + "'s material library: " + error.message;
+    return error;
 }
 
 } // namespace

@@ -132,7 +132,9 @@ TEST_CASE("mtl checks: the import reads the library the reader would, knowing a 
     REQUIRE_FALSE(model.ok());
     CHECK(model.error().where.file == (dir / "crate.mtl").string());
     CHECK(model.error().where.line == 1);
-    CHECK(model.error().message.find("\"map_Kd\" comes before the file's first newmtl") != std::string::npos);
+    CHECK(model.error().message.find(
+              "in named.obj's material library: \"map_Kd\" comes before the file's first "
+              "newmtl") != std::string::npos);
     // A usemtl first makes a material current: the reader writes the texture there, and the import goes on
     // (to the missing texture, which it names).
     const auto used = test::write_file(dir / "used.obj", "usemtl wood\nmtllib crate.mtl\n" + kTriangle);
