@@ -7,7 +7,8 @@
 #                     (./run.sh test --release: Release only; ./run.sh test --sanitize: ASan+UBSan only)
 #   ./run.sh editor   build the level editor (and the game, which its play-test starts) and start it
 #   ./run.sh bench    build and run the benchmarks (tables on stdout, plots in docs/bench/)
-#                     (./run.sh bench fuzz [SECONDS]: each libFuzzer target for SECONDS, default 60)
+#                     (./run.sh bench fuzz [SECONDS]: each libFuzzer target for SECONDS, default 60;
+#                     ./run.sh bench fuzz-valgrind [TARGET...]: the kept fuzz corpora replayed under valgrind)
 #   ./run.sh package  build (Release) and make the Debian package build/package/killswitch_<version>_amd64.deb,
 #                     then check it with lintian (./run.sh package --check: also install it with apt, run
 #                     both programs from it, validate its desktop files and remove it again; needs root/sudo)
@@ -24,8 +25,9 @@ PACKAGES=(
     gnuplot-nox
     desktop-file-utils appstream groff-base
 )
-# Only for `./run.sh bench fuzz` (libFuzzer needs clang and its runtime); installed on first use.
-FUZZ_PACKAGES=(clang libclang-rt-14-dev)
+# Only for `./run.sh bench fuzz` (libFuzzer needs clang and its runtime) and `./run.sh bench fuzz-valgrind`
+# (the same targets built plainly, under valgrind); installed on first use.
+FUZZ_PACKAGES=(clang libclang-rt-14-dev valgrind)
 # Only for `./run.sh package`: CPack's dependency lookup (dpkg-shlibdeps), fakeroot and the package checker.
 PACKAGE_PACKAGES=(dpkg-dev fakeroot file lintian)
 
@@ -168,6 +170,11 @@ case "$cmd" in
             install_missing_packages "${FUZZ_PACKAGES[@]}"
             shift
             exec scripts/fuzz.sh "${1:-60}"
+        fi
+        if [ "${1:-}" = "fuzz-valgrind" ]; then # ./run.sh bench fuzz-valgrind [TARGET...]: the kept corpora under valgrind
+            install_missing_packages "${FUZZ_PACKAGES[@]}"
+            shift
+            exec scripts/fuzz_valgrind.sh "$@"
         fi
         install_missing_packages
         build release
