@@ -40,17 +40,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (size < 1) return 0;
     static const char* kExtensions[] = {".glb", ".gltf", ".obj", ".fbx"};
     const std::filesystem::path file = scratch_folder() / (std::string("model") + kExtensions[data[0] % 4]);
-    const std::filesystem::path library = scratch_folder() / "model.mtl";
-    const bool with_library = data[0] % 4 == 2 && (data[0] & 0x80) != 0;
-    for (const std::filesystem::path& written : {file, library}) {
-        if (written == library && !with_library) {
-            std::error_code ignored;
-            std::filesystem::remove(library, ignored);
-            continue;
-        }
-        std::ofstream out(written, std::ios::binary | std::ios::trunc);
+    const auto write = [&](const std::filesystem::path& to) {
+        std::ofstream out(to, std::ios::binary | std::ios::trunc);
         out.write(reinterpret_cast<const char*>(data + 1), static_cast<std::streamsize>(size - 1));
-    }
+    };
+    write(file);
+    const std::filesystem::path library = scratch_folder() / "model.mtl";
+    std::error_code absent;
+    if (data[0] % 4 == 2 && (data[0] & 0x80) != 0)
+        write(library);
+    else
+        std::filesystem::remove(library, absent);
     const ks::modelio::ImportLimits limits;
     auto model = ks::modelio::import_model(file, limits);
     if (!model.ok()) {

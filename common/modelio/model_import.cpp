@@ -174,9 +174,10 @@ bool has_supported_extension(const std::filesystem::path& path) {
 
 Result<ImportedModel> import_model(const std::filesystem::path& path, const ImportLimits& limits) {
     if (Result<void> file = check_file(path, limits); !file) return file.error();
-    if (lower(path.extension().string()) == ".glb")
+    const std::string ext = lower(path.extension().string());
+    if (ext == ".glb")
         if (Result<void> container = check_glb_container(path); !container) return container.error();
-    if (const std::string ext = lower(path.extension().string()); ext == ".fbx" || ext == ".obj") {
+    if (ext == ".fbx" || ext == ".obj") {
         std::ifstream in(path, std::ios::binary);
         const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
         if (Result<void> checked = ext == ".fbx" ? check_fbx_file(text, path) : check_obj_file(text, path);

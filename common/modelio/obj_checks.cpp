@@ -3,13 +3,12 @@
 // line, the file is refused instead.
 #include "modelio/obj_checks.h"
 
+#include "core/files.h"
 #include "modelio/mtl_checks.h"
 #include "modelio/obj_text.h"
 
 #include <climits>
 #include <cstdint>
-#include <fstream>
-#include <iterator>
 #include <optional>
 #include <string>
 #include <vector>
@@ -178,9 +177,9 @@ Result<bool> check_material_library(const std::filesystem::path& obj, std::strin
     if (name.empty()) return material_current;
     const std::optional<std::filesystem::path> library = material_library(obj, name);
     if (!library) return material_current; // the reader reads no library
-    std::ifstream in(*library, std::ios::binary);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    Result<bool> checked = check_mtl_file(text, *library, material_current);
+    const Result<std::string> text = files::read_text(*library);
+    if (!text) return material_current; // unreadable: the reader cannot read it either
+    Result<bool> checked = check_mtl_file(*text, *library, material_current);
     if (checked) return checked;
     Error error = checked.error(); // placed in the library; the message names the model it serves
     error.message = "in " + obj.filename().string() + "'s material library: " + error.message;
