@@ -25,7 +25,7 @@ namespace {
 const std::filesystem::path kLibrary = "props/crate.mtl";
 const std::string kTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
 
-std::string refusal(const std::string& text, bool material_current = false) {
+std::string mtl_refusal(const std::string& text, bool material_current = false) {
     const auto r = modelio::check_mtl_file(text, kLibrary, material_current);
     return r.ok() ? std::string() : r.error().str();
 }
@@ -51,13 +51,13 @@ bool assimp_crashes_on(const std::filesystem::path& obj) {
 } // namespace
 
 TEST_CASE("mtl checks: a texture or anisotropy before the first newmtl is refused with its place") {
-    CHECK(refusal("map_Kd crate.png\nnewmtl wood\n").find("crate.mtl:1:1: \"map_Kd\" comes before") !=
+    CHECK(mtl_refusal("map_Kd crate.png\nnewmtl wood\n").find("crate.mtl:1:1: \"map_Kd\" comes before") !=
           std::string::npos);
-    CHECK(refusal("# exported\n\n  bump crate_n.png\n").find("crate.mtl:3:3: \"bump\"") != std::string::npos);
-    CHECK(refusal("Kd 1 1 1\r\ndisp h.png\r\n").find(":2:1: \"disp\"") != std::string::npos);
-    CHECK(refusal("Ns 10\nnorm n.png\n").find(":2:1:") != std::string::npos);
-    CHECK(refusal("a 0.5\n\n\n").find("newmtl <name>") != std::string::npos);
-    CHECK_FALSE(refusal("map_pr r.png\n").empty()); // the reader compares keywords ignoring case
+    CHECK(mtl_refusal("# exported\n\n  bump crate_n.png\n").find("crate.mtl:3:3: \"bump\"") != std::string::npos);
+    CHECK(mtl_refusal("Kd 1 1 1\r\ndisp h.png\r\n").find(":2:1: \"disp\"") != std::string::npos);
+    CHECK(mtl_refusal("Ns 10\nnorm n.png\n").find(":2:1:") != std::string::npos);
+    CHECK(mtl_refusal("a 0.5\n\n\n").find("newmtl <name>") != std::string::npos);
+    CHECK_FALSE(mtl_refusal("map_pr r.png\n").empty()); // the reader compares keywords ignoring case
     // Statements the reader reads without a material, or does not dispatch.
     CHECK(
         modelio::check_mtl_file("Kd 1 1 1\nKa 0 0 0\nd 0.5\nTr 0.1\nNs 3\nillum 2\nrefl -type sphere r.png\n"
@@ -77,11 +77,11 @@ TEST_CASE("mtl checks: a texture or anisotropy before the first newmtl is refuse
     // What the reader's text conversion does first: a file under 8 bytes is refused by the reader itself, a
     // UTF-8 byte order mark is dropped, UTF-16 and UTF-32 are refused here (the reader parses raw bytes).
     CHECK(modelio::check_mtl_file("a 0.5\n", kLibrary, false).ok());
-    CHECK(refusal("\xEF\xBB\xBFmap_Kd x.png\n").find("crate.mtl:1:4: \"map_Kd\"") != std::string::npos);
+    CHECK(mtl_refusal("\xEF\xBB\xBFmap_Kd x.png\n").find("crate.mtl:1:4: \"map_Kd\"") != std::string::npos);
     for (const std::string& bom : {std::string("\xFE\xFF"), std::string("\xFF\xFE"),
                                    std::string("\0\0\xFE\xFF", 4), std::string("\xFF\xFE\0\0", 4)}) {
         CAPTURE(bom.size());
-        CHECK(refusal(bom + "newmtl a\nKd 1 1 1\n")
+        CHECK(mtl_refusal(bom + "newmtl a\nKd 1 1 1\n")
                   .find("crate.mtl:1:1: the material library is UTF-16 or UTF-32") != std::string::npos);
     }
 }

@@ -71,7 +71,7 @@ bool has_ten_digits(const std::string& line) {
     return false;
 }
 
-std::string refusal(const std::string& text) {
+std::string obj_refusal(const std::string& text) {
     const auto r = modelio::check_obj_file(text, kFile);
     return r.ok() ? std::string() : r.error().str();
 }
@@ -81,23 +81,23 @@ std::string refusal(const std::string& text) {
 TEST_CASE("obj checks: faces the reader reads past are refused with the line and column") {
     CHECK(modelio::check_obj_file(kCube, kFile).ok());
     // The fuzz finding: a line statement ('l' starts the keyword) whose first corner has a fourth part.
-    const std::string found = refusal("lliobCnnections: ///63 2//6\n");
+    const std::string found = obj_refusal("lliobCnnections: ///63 2//6\n");
     CHECK(found.find("crate.obj:1:21") != std::string::npos);
     CHECK(found.find("\"///63\" has more than three parts") != std::string::npos);
     CHECK(found.find("v/vt/vn") != std::string::npos);
-    CHECK(refusal(kCube + "f 1/1/1/1 2/2/1 3/3/1\n").find("crate.obj:13:9:") != std::string::npos);
-    CHECK(refusal(kCube + "p 1 2/2/2/2\n").find(":13:11:") != std::string::npos);
+    CHECK(obj_refusal(kCube + "f 1/1/1/1 2/2/1 3/3/1\n").find("crate.obj:13:9:") != std::string::npos);
+    CHECK(obj_refusal(kCube + "p 1 2/2/2/2\n").find(":13:11:") != std::string::npos);
     // 2147483648 is -2147483648 to atoi, eleven characters' worth of step: past the line's end.
-    CHECK(refusal(kCube + "f 1 2 2147483648\n").find(":13:7: the face index in \"2147483648\" is outside") !=
+    CHECK(obj_refusal(kCube + "f 1 2 2147483648\n").find(":13:7: the face index in \"2147483648\" is outside") !=
           std::string::npos);
-    CHECK_FALSE(refusal(kCube + "f 1 2 -2147483649\n").empty());
-    CHECK_FALSE(refusal(kCube + "f 1 2 99999999999999999999999\n").empty());
+    CHECK_FALSE(obj_refusal(kCube + "f 1 2 -2147483649\n").empty());
+    CHECK_FALSE(obj_refusal(kCube + "f 1 2 99999999999999999999999\n").empty());
     CHECK(
         modelio::check_obj_file(kCube + "f 1 2 -2147483648\n", kFile).ok()); // an int: the reader's to refuse
-    CHECK(refusal(kCube + "f 1 2 \v\n").find(":13:7: a vertical tab") != std::string::npos);
+    CHECK(obj_refusal(kCube + "f 1 2 \v\n").find(":13:7: a vertical tab") != std::string::npos);
     // A backslash joins the next line: the place named is the byte's own line and column.
-    CHECK(refusal(kCube + "f 1 2 \\\n 3/1/1/1\n").find(":14:8:") != std::string::npos);
-    CHECK(refusal(kCube + "f 1 2 3\r\nf 1/2/3/4\r\n").find(":14:9:") != std::string::npos);
+    CHECK(obj_refusal(kCube + "f 1 2 \\\n 3/1/1/1\n").find(":14:8:") != std::string::npos);
+    CHECK(obj_refusal(kCube + "f 1 2 3\r\nf 1/2/3/4\r\n").find(":14:9:") != std::string::npos);
 }
 
 TEST_CASE("obj checks: what the reader does not walk as a face passes") {
