@@ -1,4 +1,5 @@
 #include "core/disk_cache.h"
+#include "core/files.h"
 #include "test_support.h"
 
 #include <doctest/doctest.h>
@@ -142,4 +143,35 @@ TEST_CASE("disk_cache Reader::bytes views the data read from, within its bounds"
     std::string truncated = w.data().substr(0, 10);
     disk_cache::Reader short_reader(truncated);
     CHECK_FALSE(short_reader.bytes(view, 100)); // the count says 4, only 2 are there
+}
+
+namespace {
+struct CacheWriteFault {
+    explicit CacheWriteFault(files::Fault f) { files::inject_fault(f); }
+    ~CacheWriteFault() { files::inject_fault(files::Fault::None); }
+};
+} // namespace
+
+TEST_CASE(
+    "disk_cache Store: under each write fault the save fails, the previous entry stays, the next save goes "
+    "through") {
+    test::ScratchDir dir;
+    const disk_cache::Store store(dir.path() / "cache");
+    REQUIRE(store.save("test", 7, "previous"));
+    const auto before = test::read_file(store.file("test", 7));
+    for (const auto fault : {files::Fault::OpenTemp, files::Fault::ShortWrite, files::Fault::BeforeRename}) {
+        CAPTURE(static_cast<int>(fault));
+        {
+            const CacheWriteFault scope(fault);
+            CHECK_FALSE(store.save("test", 7, "replacement that must not land"));
+        }
+        CHECK(test::read_file(store.file("test", 7)) == before);
+        const auto kept = store.load("test", 7);
+        REQUIRE(kept);
+        CHECK(kept->bytes() == "previous");
+    }
+    REQUIRE(store.save("test", 7, "next"));
+    const auto next = store.load("test", 7);
+    REQUIRE(next);
+    CHECK(next->bytes() == "next");
 }
