@@ -1,5 +1,6 @@
 #include "core/disk_cache.h"
 #include "core/files.h"
+#include "hardening/fault_support.h"
 #include "test_support.h"
 
 #include <doctest/doctest.h>
@@ -145,13 +146,6 @@ TEST_CASE("disk_cache Reader::bytes views the data read from, within its bounds"
     CHECK_FALSE(short_reader.bytes(view, 100)); // the count says 4, only 2 are there
 }
 
-namespace {
-struct CacheWriteFault {
-    explicit CacheWriteFault(files::Fault f) { files::inject_fault(f); }
-    ~CacheWriteFault() { files::inject_fault(files::Fault::None); }
-};
-} // namespace
-
 TEST_CASE(
     "disk_cache Store: under each write fault the save fails, the previous entry stays, the next save goes "
     "through") {
@@ -162,7 +156,7 @@ TEST_CASE(
     for (const auto fault : {files::Fault::OpenTemp, files::Fault::ShortWrite, files::Fault::BeforeRename}) {
         CAPTURE(static_cast<int>(fault));
         {
-            const CacheWriteFault scope(fault);
+            const hardening::FaultGuard scope(fault);
             CHECK_FALSE(store.save("test", 7, "replacement that must not land"));
         }
         CHECK(test::read_file(store.file("test", 7)) == before);

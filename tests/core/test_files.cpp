@@ -1,4 +1,5 @@
 #include "core/files.h"
+#include "hardening/fault_support.h"
 #include "test_support.h"
 
 #include <doctest/doctest.h>
@@ -16,10 +17,6 @@ int leftover_temp_files(const fs::path& dir) {
         if (entry.path().filename().string().find(".tmp-") != std::string::npos) ++n;
     return n;
 }
-struct FaultGuard {
-    explicit FaultGuard(files::Fault f) { files::inject_fault(f); }
-    ~FaultGuard() { files::inject_fault(files::Fault::None); }
-};
 } // namespace
 
 TEST_CASE("atomic write creates and replaces files") {
@@ -44,7 +41,7 @@ TEST_CASE("atomic write keeps the previous file intact when a save fails at any 
     for (files::Fault fault :
          {files::Fault::OpenTemp, files::Fault::ShortWrite, files::Fault::BeforeRename}) {
         CAPTURE(static_cast<int>(fault));
-        FaultGuard guard(fault);
+        const hardening::FaultGuard guard(fault);
         auto result = files::write_atomic(target, "replacement that must not appear half-written");
         REQUIRE_FALSE(result.ok());
         CHECK(result.error().where.file == target.string());
